@@ -1,0 +1,27 @@
+// Exceptions thrown by the core (STYLE.md #8): every message names the file, key or index at fault.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace tracked_vehicle_dynamics {
+
+/// Base of all errors raised by the core.
+class Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Invalid model, description or parameter (a user error, reported and never repaired silently).
+class InputError : public Error {
+ public:
+  using Error::Error;
+};
+
+/// A linear system that cannot be solved as posed (e.g. a singular stiffness matrix).
+class SolverError : public Error {
+ public:
+  using Error::Error;
+};
+
+}  // namespace tracked_vehicle_dynamics

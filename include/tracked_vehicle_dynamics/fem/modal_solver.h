@@ -1,0 +1,47 @@
+// Generalised symmetric eigenproblem K phi = omega^2 M phi by shift-invert Lanczos (Spectra).
+#pragma once
+
+#include <string>
+
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace fem {
+
+/// What to compute: the lowest `count` modes, or every mode below `max_frequency_hz` (when > 0).
+struct ModalRequest {
+  int count = 20;                   ///< number of modes (upper bound when max_frequency_hz > 0)
+  double max_frequency_hz = 0.0;    ///< 0: use count only
+  /// Shift sigma [rad^2/s^2]; negative so that rigid-body modes (omega = 0) are found and
+  /// K - sigma M is positive definite. 0: chosen automatically from the matrix scales.
+  double shift = 0.0;
+  double tolerance = 1e-10;
+  int max_iterations = 1000;
+};
+
+enum class ModalStatus { Converged, NotConverged, NumericalIssue };
+
+/// Modes sorted by increasing frequency; shapes are mass-normalised (Phi^T M Phi = I).
+struct ModalBasis {
+  Vector eigenvalues;      ///< omega^2 [rad^2/s^2]
+  Vector frequencies_hz;   ///< omega / 2 pi [Hz]; rigid-body modes give ~0
+  ModeShapes shapes;       ///< [n x modes]
+  ModalStatus status = ModalStatus::Converged;
+  int converged = 0;       ///< number of converged Ritz pairs
+  int iterations = 0;
+  double seconds = 0.0;    ///< wall time of the solve [s]
+
+  int count() const { return static_cast<int>(eigenvalues.size()); }
+};
+
+/// Solves the lowest modes of (K, M). Throws SolverError when the solver fails, naming the
+/// reason (factorisation failure, no convergence after max_iterations, numerical issue) and
+/// InputError for mismatched sizes or a non-positive count.
+ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
+                      const ModalRequest& request);
+
+/// Dense generalised eigenproblem of all modes (small systems, references in tests).
+ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass);
+
+}  // namespace fem
+}  // namespace tracked_vehicle_dynamics

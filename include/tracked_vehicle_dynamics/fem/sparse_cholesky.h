@@ -1,0 +1,41 @@
+// Sparse Cholesky factorisation A = L L^T of a symmetric positive definite matrix (CHOLMOD,
+// supernodal), kept behind one narrow class so that solvers share one factorisation and check
+// its status (STYLE.md #9).
+#pragma once
+
+#include <memory>
+
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace fem {
+
+class SparseCholesky {
+ public:
+  SparseCholesky();
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  /// Symbolic analysis (fill-reducing ordering) of the pattern of A (full symmetric storage).
+  void analyze(const SparseMatrix& a);
+  /// Numeric factorisation; returns false if A is not positive definite. analyze() is called
+  /// first if it was not.
+  bool factorize(const SparseMatrix& a);
+  /// Reciprocal condition estimate (min diag L / max diag L)^2; 0 when not factorised.
+  double rcond() const;
+  /// x = A^-1 b for one or many right-hand sides.
+  Matrix solve(const Matrix& b) const;
+  Vector solve(const Vector& b) const;
+  /// y = A^-1 x on raw buffers of length rows() (the Lanczos hot path).
+  void solveInPlace(const double* x, double* y) const;
+  DofIndex rows() const { return rows_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  DofIndex rows_ = 0;
+};
+
+}  // namespace fem
+}  // namespace tracked_vehicle_dynamics

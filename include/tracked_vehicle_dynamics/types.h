@@ -1,0 +1,44 @@
+// Type aliases shared by every stage of the core (STYLE.md #6).
+#pragma once
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+
+#include <cstdint>
+#include <string>
+
+namespace tracked_vehicle_dynamics {
+
+using Vector = Eigen::VectorXd;
+using Matrix = Eigen::MatrixXd;
+using Vector3 = Eigen::Vector3d;
+using Matrix3 = Eigen::Matrix3d;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Matrix12 = Eigen::Matrix<double, 12, 12>;
+/// Column-major sparse matrix; all assembled system matrices use it.
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Triplet = Eigen::Triplet<double>;
+/// Mass-normalised mode shapes, one column per mode [n_dof x n_modes].
+using ModeShapes = Eigen::MatrixXd;
+
+/// User-visible node identifier (any integer the model file chooses).
+using NodeId = std::int64_t;
+/// Index of a DOF in a vector or matrix.
+using DofIndex = Eigen::Index;
+
+/// Degrees of freedom per node: three translations then three rotations.
+constexpr int kDofsPerNode = 6;
+
+/// Nodal direction, in the global frame: x forward, y left, z up (REP-103).
+enum class Direction : int { Ux = 0, Uy = 1, Uz = 2, Rx = 3, Ry = 4, Rz = 5 };
+
+/// "ux", "uy", "uz", "rx", "ry", "rz".
+const char* directionName(int direction);
+/// Parses a direction name (case-insensitive); returns -1 when unknown.
+int parseDirection(const std::string& name);
+
+/// Standard gravity [m/s^2].
+constexpr double kStandardGravity = 9.80665;
+
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,119 @@
+#include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
+
+#include <cholmod.h>
+
+#include <cstring>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace fem {
+
+struct SparseCholesky::Impl {
+  cholmod_common common;
+  cholmod_factor* factor = nullptr;
+  bool factorised = false;
+  // Work buffers reused by solveInPlace (cholmod_solve2 keeps them allocated).
+  mutable cholmod_dense* x = nullptr;
+  mutable cholmod_dense* y = nullptr;
+  mutable cholmod_dense* e = nullptr;
+  mutable cholmod_dense* b = nullptr;
+
+  Impl() {
+    cholmod_start(&common);
+    common.supernodal = CHOLMOD_SUPERNODAL;
+    common.final_ll = 1;
+    common.print = 0;
+    common.error_handler = nullptr;
+  }
+  ~Impl() {
+    if (factor) cholmod_free_factor(&factor, &common);
+    for (cholmod_dense** d : {&x, &y, &e, &b})
+      if (*d) cholmod_free_dense(d, &common);
+    cholmod_finish(&common);
+  }
+
+  // A view of the lower triangle of a full symmetric Eigen matrix, without copying values.
+  static cholmod_sparse view(const SparseMatrix& a) {
+    cholmod_sparse s;
+    std::memset(&s, 0, sizeof(s));
+    s.nrow = a.rows();
+    s.ncol = a.cols();
+    s.nzmax = a.nonZeros();
+    s.p = const_cast<int*>(a.outerIndexPtr());
+    s.i = const_cast<int*>(a.innerIndexPtr());
+    s.x = const_cast<double*>(a.valuePtr());
+    s.stype = -1;  // use the lower triangle
+    s.itype = CHOLMOD_INT;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    return s;
+  }
+};
+
+SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
+SparseCholesky::~SparseCholesky() = default;
+
+void SparseCholesky::analyze(const SparseMatrix& a) {
+  if (a.rows() != a.cols())
+    throw InputError("sparse Cholesky: matrix is " + std::to_string(a.rows()) + "x" +
+                     std::to_string(a.cols()) + ", not square");
+  if (!a.isCompressed()) throw InputError("sparse Cholesky: matrix must be compressed");
+  if (impl_->factor) cholmod_free_factor(&impl_->factor, &impl_->common);
+  cholmod_sparse s = Impl::view(a);
+  impl_->factor = cholmod_analyze(&s, &impl_->common);
+  if (!impl_->factor) throw SolverError("sparse Cholesky: symbolic analysis failed (CHOLMOD)");
+  impl_->factorised = false;
+  rows_ = a.rows();
+}
+
+bool SparseCholesky::factorize(const SparseMatrix& a) {
+  if (!impl_->factor || a.rows() != rows_) analyze(a);
+  cholmod_sparse s = Impl::view(a);
+  cholmod_factorize(&s, impl_->factor, &impl_->common);
+  impl_->factorised = impl_->common.status == CHOLMOD_OK && impl_->factor->minor == static_cast<std::size_t>(a.rows());
+  return impl_->factorised;
+}
+
+double SparseCholesky::rcond() const {
+  if (!impl_->factorised) return 0.0;
+  return cholmod_rcond(impl_->factor, &impl_->common);
+}
+
+Matrix SparseCholesky::solve(const Matrix& rhs) const {
+  if (!impl_->factorised) throw SolverError("sparse Cholesky: solve before a successful factorisation");
+  if (rhs.rows() != rows_)
+    throw InputError("sparse Cholesky: right-hand side has " + std::to_string(rhs.rows()) +
+                     " rows, expected " + std::to_string(rows_));
+  cholmod_dense b;
+  std::memset(&b, 0, sizeof(b));
+  b.nrow = rhs.rows();
+  b.ncol = rhs.cols();
+  b.nzmax = rhs.size();
+  b.d = rhs.rows();
+  b.x = const_cast<double*>(rhs.data());
+  b.xtype = CHOLMOD_REAL;
+  b.dtype = CHOLMOD_DOUBLE;
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
+  if (!x) throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
+  Matrix out = Eigen::Map<Matrix>(static_cast<double*>(x->x), rhs.rows(), rhs.cols());
+  cholmod_free_dense(&x, &impl_->common);
+  return out;
+}
+
+Vector SparseCholesky::solve(const Vector& rhs) const {
+  return solve(Matrix(rhs)).col(0);
+}
+
+void SparseCholesky::solveInPlace(const double* in, double* out) const {
+  if (!impl_->b) impl_->b = cholmod_allocate_dense(rows_, 1, rows_, CHOLMOD_REAL, &impl_->common);
+  std::memcpy(impl_->b->x, in, sizeof(double) * rows_);
+  cholmod_solve2(CHOLMOD_A, impl_->factor, impl_->b, nullptr, &impl_->x, nullptr, &impl_->y,
+                 &impl_->e, &impl_->common);
+  std::memcpy(out, impl_->x->x, sizeof(double) * rows_);
+}
+
+}  // namespace fem
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,374 @@
+// fem::validate(): every consistency check on a Model, in file order, throwing at the first
+// failure with "<where>: <item>[<index>]: <what is wrong>".
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace fem {
+namespace {
+
+/// A beam shorter than this fraction of the model's coordinate scale (at least 1 m) has
+/// coincident nodes: its stiffness would scale with 1/L^3 and swamp the system.
+constexpr double kCoincidentTolerance = 1e-12;
+/// sin(angle) between a beam axis and its orientation vector below which the local frame is
+/// undefined (the orientation is "parallel").
+constexpr double kParallelSineTolerance = 1e-6;
+/// Largest |R^T R - I| entry accepted for a spring frame; frames typed by hand with ~9 digits
+/// pass, a frame that is merely "nearly" a rotation does not.
+constexpr double kOrthonormalTolerance = 1e-6;
+/// Relative tolerance for the symmetry and semi-definiteness of an inertia tensor.
+constexpr double kInertiaTolerance = 1e-9;
+
+const char* const kStiffnessNames[kDofsPerNode] = {"kx", "ky", "kz", "krx", "kry", "krz"};
+const char* const kDampingNames[kDofsPerNode] = {"cx", "cy", "cz", "crx", "cry", "crz"};
+const char* const kInertiaNames[3] = {"Ixx", "Iyy", "Izz"};
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+std::string dofLabel(NodeId node, int direction) {
+  return "node " + std::to_string(node) + " " + directionName(direction);
+}
+
+class Validator {
+ public:
+  Validator(const Model& model, const std::string& where) : model_(model), where_(where) {}
+
+  void run() {
+    checkGravity();
+    checkNodes();
+    checkMaterials();
+    checkSections();
+    for (std::size_t i = 0; i < model_.beams.size(); ++i) checkBeam(i);
+    for (std::size_t i = 0; i < model_.springs.size(); ++i) checkSpring(i);
+    for (std::size_t i = 0; i < model_.masses.size(); ++i) checkMass(i);
+    for (std::size_t i = 0; i < model_.rigid_joints.size(); ++i) checkRigidJoint(i);
+    checkRigidJointCycles();
+    for (std::size_t i = 0; i < model_.fixed.size(); ++i) checkFixed(i);
+    for (const auto& [name, dofs] : model_.dof_sets) checkSet(name, dofs);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& item, const std::string& what) const {
+    throw InputError(where_ + ": " + item + ": " + what);
+  }
+  static std::string item(const char* list, std::size_t index) {
+    return std::string(list) + "[" + std::to_string(index) + "]";
+  }
+
+  void requireNode(const std::string& label, NodeId id) const {
+    if (node_index_.count(id) == 0) {
+      fail(label, "node " + std::to_string(id) + " does not exist");
+    }
+  }
+  void requireFinite(const std::string& label, double value, const std::string& what) const {
+    if (!std::isfinite(value)) {
+      fail(label, "non-finite " + what + " (" + number(value) + ")");
+    }
+  }
+  void requirePositive(const std::string& label, double value, const std::string& what,
+                       const char* unit) const {
+    requireFinite(label, value, what);
+    if (value <= 0.0) {
+      fail(label, "non-positive " + what + " " + number(value) + (*unit ? " " : "") + unit);
+    }
+  }
+  void requireNonNegative(const std::string& label, double value, const std::string& what,
+                          const char* unit) const {
+    requireFinite(label, value, what);
+    if (value < 0.0) {
+      fail(label, "negative " + what + " " + number(value) + (*unit ? " " : "") + unit);
+    }
+  }
+
+  void checkGravity() const {
+    if (!model_.gravity.allFinite()) {
+      fail("gravity", "non-finite gravity vector");
+    }
+  }
+
+  void checkNodes() {
+    for (std::size_t i = 0; i < model_.nodes.size(); ++i) {
+      const Node& node = model_.nodes[i];
+      if (node.id == kGround) {
+        // kGround is how springs say "the ground"; a node with that id would be ambiguous.
+        fail(item("nodes", i), "node id " + std::to_string(kGround) + " is reserved for the ground");
+      }
+      const auto [it, inserted] = node_index_.emplace(node.id, i);
+      if (!inserted) {
+        fail(item("nodes", i), "duplicate node id " + std::to_string(node.id) + " (also nodes[" +
+                                   std::to_string(it->second) + "])");
+      }
+      if (!node.position.allFinite()) {
+        fail(item("nodes", i), "non-finite coordinates of node " + std::to_string(node.id));
+      }
+      scale_ = std::max(scale_, node.position.cwiseAbs().maxCoeff());
+    }
+  }
+
+  void checkMaterials() const {
+    std::map<std::string, std::size_t> seen;
+    for (std::size_t i = 0; i < model_.materials.size(); ++i) {
+      const Material& material = model_.materials[i];
+      const std::string label = item("materials", i);
+      if (material.name.empty()) {
+        fail(label, "material has no name");
+      }
+      if (!seen.emplace(material.name, i).second) {
+        fail(label, "duplicate material name '" + material.name + "' (also materials[" +
+                        std::to_string(seen[material.name]) + "])");
+      }
+      requirePositive(label, material.young_modulus, "Young's modulus E", "Pa");
+      requirePositive(label, material.shear_modulus, "shear modulus G", "Pa");
+      requireNonNegative(label, material.density, "density rho", "kg/m^3");
+    }
+  }
+
+  void checkSections() const {
+    std::map<std::string, std::size_t> seen;
+    for (std::size_t i = 0; i < model_.sections.size(); ++i) {
+      const Section& section = model_.sections[i];
+      const std::string label = item("sections", i);
+      if (section.name.empty()) {
+        fail(label, "section has no name");
+      }
+      if (!seen.emplace(section.name, i).second) {
+        fail(label, "duplicate section name '" + section.name + "' (also sections[" +
+                        std::to_string(seen[section.name]) + "])");
+      }
+      requirePositive(label, section.area, "area A", "m^2");
+      requirePositive(label, section.iy, "second moment Iy", "m^4");
+      requirePositive(label, section.iz, "second moment Iz", "m^4");
+      requirePositive(label, section.torsion, "torsion constant J", "m^4");
+      requireNonNegative(label, section.shear_factor_y, "shear factor shear_factor_y", "");
+      requireNonNegative(label, section.shear_factor_z, "shear factor shear_factor_z", "");
+    }
+  }
+
+  void checkBeam(std::size_t i) const {
+    const Beam& beam = model_.beams[i];
+    const std::string label = item("beams", i);
+    requireNode(label, beam.n1);
+    requireNode(label, beam.n2);
+    if (model_.findMaterial(beam.material) == nullptr) {
+      fail(label, "material '" + beam.material + "' does not exist");
+    }
+    if (model_.findSection(beam.section) == nullptr) {
+      fail(label, "section '" + beam.section + "' does not exist");
+    }
+    const Vector3 axis = model_.nodes[node_index_.at(beam.n2)].position -
+                         model_.nodes[node_index_.at(beam.n1)].position;
+    if (axis.norm() <= kCoincidentTolerance * scale_) {
+      fail(label, "zero-length beam: nodes " + std::to_string(beam.n1) + " and " +
+                      std::to_string(beam.n2) + " coincide");
+    }
+    if (!beam.orientation.allFinite()) {
+      fail(label, "non-finite orientation vector");
+    }
+    if (beam.orientation.norm() == 0.0) {
+      fail(label, "orientation vector is zero");
+    }
+    const double sine = axis.normalized().cross(beam.orientation.normalized()).norm();
+    if (sine < kParallelSineTolerance) {
+      fail(label, "orientation vector is parallel to the beam axis (nodes " +
+                      std::to_string(beam.n1) + " -> " + std::to_string(beam.n2) + ")");
+    }
+  }
+
+  void checkSpring(std::size_t i) const {
+    const Spring& spring = model_.springs[i];
+    const std::string label = item("springs", i);
+    if (spring.n1 == kGround) {
+      fail(label, "the first node must be a node, not the ground");
+    }
+    requireNode(label, spring.n1);
+    if (spring.n2 != kGround) {
+      requireNode(label, spring.n2);
+    }
+    if (spring.n1 == spring.n2) {
+      fail(label, "spring connects node " + std::to_string(spring.n1) + " to itself");
+    }
+    for (int d = 0; d < kDofsPerNode; ++d) {
+      requireNonNegative(label, spring.stiffness[d], std::string("stiffness ") + kStiffnessNames[d],
+                         d < 3 ? "N/m" : "N m/rad");
+      requireNonNegative(label, spring.damping[d], std::string("damping ") + kDampingNames[d],
+                         d < 3 ? "N s/m" : "N m s/rad");
+    }
+    if (!spring.frame.allFinite()) {
+      fail(label, "non-finite frame");
+    }
+    const double orthonormality_error =
+        (spring.frame.transpose() * spring.frame - Matrix3::Identity()).cwiseAbs().maxCoeff();
+    if (orthonormality_error > kOrthonormalTolerance) {
+      fail(label, "frame is not orthonormal (its axes must be unit vectors at right angles; "
+                  "max |R^T R - I| = " + number(orthonormality_error) + ")");
+    }
+    if (spring.frame.determinant() < 0.0) {
+      fail(label, "frame is left-handed (z must equal x cross y)");
+    }
+  }
+
+  void checkMass(std::size_t i) const {
+    const Mass& mass = model_.masses[i];
+    const std::string label = item("masses", i);
+    requireNode(label, mass.node);
+    requireNonNegative(label, mass.mass, "mass", "kg");
+    if (!mass.offset.allFinite()) {
+      fail(label, "non-finite offset");
+    }
+    if (!mass.inertia.allFinite()) {
+      fail(label, "non-finite inertia tensor");
+    }
+    for (int d = 0; d < 3; ++d) {
+      if (mass.inertia(d, d) < 0.0) {
+        fail(label, std::string("negative inertia ") + kInertiaNames[d] + " " +
+                        number(mass.inertia(d, d)) + " kg m^2");
+      }
+    }
+    const double magnitude = mass.inertia.cwiseAbs().maxCoeff();
+    if ((mass.inertia - mass.inertia.transpose()).cwiseAbs().maxCoeff() >
+        kInertiaTolerance * magnitude) {
+      fail(label, "inertia tensor is not symmetric");
+    }
+    const Eigen::SelfAdjointEigenSolver<Matrix3> eigen(mass.inertia, Eigen::EigenvaluesOnly);
+    const double smallest = eigen.eigenvalues().minCoeff();
+    if (smallest < -kInertiaTolerance * magnitude) {
+      fail(label, "inertia tensor is not positive semi-definite (principal moment " +
+                      number(smallest) + " kg m^2)");
+    }
+  }
+
+  void checkRigidJoint(std::size_t i) {
+    const RigidJoint& joint = model_.rigid_joints[i];
+    const std::string label = item("rigid_joints", i);
+    requireNode(label, joint.master);
+    if (joint.slaves.empty()) {
+      fail(label, "rigid joint has no slaves");
+    }
+    if (std::none_of(joint.dofs.begin(), joint.dofs.end(), [](bool b) { return b; })) {
+      fail(label, "rigid joint constrains no DOFs");
+    }
+    std::set<NodeId> slaves;
+    for (const NodeId slave : joint.slaves) {
+      requireNode(label, slave);
+      if (slave == joint.master) {
+        fail(label, "master node " + std::to_string(slave) + " is also its own slave");
+      }
+      if (!slaves.insert(slave).second) {
+        fail(label, "slave node " + std::to_string(slave) + " is listed twice");
+      }
+      for (int d = 0; d < kDofsPerNode; ++d) {
+        if (!joint.dofs[static_cast<std::size_t>(d)]) continue;
+        const auto [it, inserted] = slave_joint_.emplace(DofRef{slave, d}, i);
+        if (!inserted) {
+          fail(label, "slave " + dofLabel(slave, d) + " is already driven by rigid_joints[" +
+                          std::to_string(it->second) + "]");
+        }
+      }
+      children_[joint.master].push_back({slave, i});
+    }
+  }
+
+  // A cycle (A slave of B, B slave of A, possibly through intermediate joints) leaves no
+  // independent master to express the slaves in, so the constraint cannot be eliminated.
+  void checkRigidJointCycles() const {
+    std::map<NodeId, char> state;  // absent: unvisited, 'g': on the current path, 'b': done
+    std::vector<NodeId> path;
+    for (const RigidJoint& joint : model_.rigid_joints) {
+      if (state.count(joint.master) == 0) {
+        visit(joint.master, state, path);
+      }
+    }
+  }
+  void visit(NodeId node, std::map<NodeId, char>& state, std::vector<NodeId>& path) const {
+    state[node] = 'g';
+    path.push_back(node);
+    const auto children = children_.find(node);
+    if (children != children_.end()) {
+      for (const auto& [slave, joint] : children->second) {
+        const auto it = state.find(slave);
+        if (it == state.end()) {
+          visit(slave, state, path);
+        } else if (it->second == 'g') {
+          std::string cycle;
+          const auto start = std::find(path.begin(), path.end(), slave);
+          for (auto p = start; p != path.end(); ++p) {
+            cycle += "node " + std::to_string(*p) + " -> ";
+          }
+          fail(item("rigid_joints", joint),
+               "rigid joints form a cycle (master -> slave): " + cycle + "node " +
+                   std::to_string(slave));
+        }
+      }
+    }
+    path.pop_back();
+    state[node] = 'b';
+  }
+
+  void checkFixed(std::size_t i) const {
+    const FixedDofs& fixed = model_.fixed[i];
+    const std::string label = item("fixed", i);
+    requireNode(label, fixed.node);
+    if (std::none_of(fixed.dofs.begin(), fixed.dofs.end(), [](bool b) { return b; })) {
+      fail(label, "no DOFs selected");
+    }
+    for (int d = 0; d < kDofsPerNode; ++d) {
+      if (!fixed.dofs[static_cast<std::size_t>(d)]) continue;
+      const auto it = slave_joint_.find(DofRef{fixed.node, d});
+      if (it != slave_joint_.end()) {
+        // A fixed slave would silently constrain its master; fix the master instead.
+        fail(label, dofLabel(fixed.node, d) + " is a slave of rigid_joints[" +
+                        std::to_string(it->second) + "] and cannot also be fixed");
+      }
+    }
+  }
+
+  void checkSet(const std::string& name, const std::vector<DofRef>& dofs) const {
+    if (name.empty()) {
+      fail("sets", "a DOF set has an empty name");
+    }
+    std::set<DofRef> seen;
+    for (std::size_t k = 0; k < dofs.size(); ++k) {
+      const std::string label = "sets." + name + "[" + std::to_string(k) + "]";
+      requireNode(label, dofs[k].node);
+      if (dofs[k].direction < 0 || dofs[k].direction >= kDofsPerNode) {
+        fail(label, "direction " + std::to_string(dofs[k].direction) +
+                        " is out of range 0..5 (ux, uy, uz, rx, ry, rz)");
+      }
+      // A repeated DOF would give two identical columns in an input or master set.
+      if (!seen.insert(dofs[k]).second) {
+        fail(label, dofLabel(dofs[k].node, dofs[k].direction) + " is listed twice");
+      }
+    }
+  }
+
+  const Model& model_;
+  const std::string& where_;
+  std::unordered_map<NodeId, std::size_t> node_index_;
+  double scale_ = 1.0;                                  // [m], largest |coordinate|, at least 1
+  std::map<DofRef, std::size_t> slave_joint_;           // slave DOF -> joint driving it
+  std::map<NodeId, std::vector<std::pair<NodeId, std::size_t>>> children_;  // master -> slaves
+};
+
+}  // namespace
+
+void validate(const Model& model, const std::string& where) {
+  Validator(model, where).run();
+}
+
+}  // namespace fem
+}  // namespace tracked_vehicle_dynamics

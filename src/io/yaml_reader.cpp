@@ -1,0 +1,284 @@
+#include "tracked_vehicle_dynamics/io/yaml_reader.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace io {
+namespace {
+
+// Tags yaml-cpp gives scalars: "?" plain, "!" quoted; explicit numeric tags are accepted too.
+const char* const kPlainTag = "?";
+const char* const kIntTag = "tag:yaml.org,2002:int";
+const char* const kFloatTag = "tag:yaml.org,2002:float";
+
+std::string lowercase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+bool isNumericTag(const std::string& tag) {
+  return tag == kPlainTag || tag == kIntTag || tag == kFloatTag;
+}
+
+/// from_chars rejects a leading '+', which YAML allows.
+std::string_view unsigned_part(const std::string& text) {
+  std::string_view view(text);
+  if (!view.empty() && view.front() == '+') view.remove_prefix(1);
+  return view;
+}
+
+std::string joined(std::initializer_list<const char*> words) {
+  std::string out;
+  for (const char* word : words) {
+    if (!out.empty()) out += ", ";
+    out += word;
+  }
+  return out;
+}
+
+}  // namespace
+
+YamlValue::YamlValue(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+
+YamlValue YamlValue::loadFile(const std::string& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) {
+    throw InputError(path + ": file not found");
+  }
+  if (std::filesystem::is_directory(status)) {
+    throw InputError(path + ": is a directory, not a YAML file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InputError(path + ": cannot be opened: " + std::strerror(errno));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    throw InputError(path + ": cannot be read: " + std::strerror(errno));
+  }
+  return parse(text.str(), path);
+}
+
+YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
+  if (text.find('\0') != std::string::npos) {
+    throw InputError(file + ": not a YAML text file (binary content)");
+  }
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(file + ": line " + std::to_string(e.mark.line + 1) + ", column " +
+                     std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg);
+  }
+  if (documents.empty() || documents.front().IsNull()) {
+    throw InputError(file + ": the file is empty (no YAML document)");
+  }
+  if (documents.size() > 1) {
+    throw InputError(file + ": holds " + std::to_string(documents.size()) +
+                     " YAML documents ('---'); expected one");
+  }
+  return YamlValue(documents.front(), file, "");
+}
+
+int YamlValue::line() const {
+  if (node_.IsDefined() && !node_.Mark().is_null()) {
+    return node_.Mark().line + 1;
+  }
+  return fallback_line_;
+}
+
+void YamlValue::fail(const std::string& what) const {
+  std::string message = file_ + ": ";
+  if (!path_.empty()) message += path_ + ": ";
+  message += what;
+  if (line() > 0) message += " (line " + std::to_string(line()) + ")";
+  throw InputError(message);
+}
+
+YamlValue YamlValue::child(const YAML::Node& node, const std::string& path) const {
+  YamlValue value(node, file_, path);
+  value.fallback_line_ = line();
+  return value;
+}
+
+std::string YamlValue::describe() const {
+  if (isNull()) return "nothing (an empty value)";
+  if (node_.IsSequence()) return "a list";
+  if (node_.IsMap()) return "a map";
+  if (node_.Tag() == "!") return "the string \"" + node_.Scalar() + "\"";
+  return "'" + node_.Scalar() + "'";
+}
+
+void YamlValue::expectMap() const {
+  if (!node_.IsMap()) {
+    fail("expected a map (key: value pairs), got " + describe());
+  }
+  std::map<std::string, int> lines;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    if (!it->first.IsScalar()) {
+      child(it->first, path_).fail("map keys must be plain names");
+    }
+    const std::string key = it->first.Scalar();
+    const YamlValue key_value = child(it->first, path_.empty() ? key : path_ + "." + key);
+    const auto [previous, inserted] = lines.emplace(key, key_value.line());
+    if (!inserted) {
+      key_value.fail("key given twice (also on line " + std::to_string(previous->second) + ")");
+    }
+  }
+}
+
+void YamlValue::expectMap(std::initializer_list<const char*> allowed) const {
+  if (!node_.IsMap()) {
+    fail("expected a map with keys " + joined(allowed) + ", got " + describe());
+  }
+  expectMap();
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    bool known = false;
+    for (const char* name : allowed) known = known || key == name;
+    if (!known) {
+      child(it->first, path_.empty() ? key : path_ + "." + key)
+          .fail("unknown key (allowed keys: " + joined(allowed) + ")");
+    }
+  }
+}
+
+bool YamlValue::has(const std::string& key) const { return find(key).has_value(); }
+
+std::optional<YamlValue> YamlValue::find(const std::string& key) const {
+  if (!node_.IsMap()) {
+    fail("expected a map (key: value pairs), got " + describe());
+  }
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    if (it->first.IsScalar() && it->first.Scalar() == key) {
+      return child(it->second, path_.empty() ? key : path_ + "." + key);
+    }
+  }
+  return std::nullopt;
+}
+
+YamlValue YamlValue::operator[](const std::string& key) const {
+  std::optional<YamlValue> value = find(key);
+  if (!value) {
+    child(YAML::Node(), path_.empty() ? key : path_ + "." + key)
+        .fail("required key is missing");
+  }
+  return *value;
+}
+
+std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
+  expectMap();
+  std::vector<std::pair<std::string, YamlValue>> out;
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    out.emplace_back(key, child(it->second, path_.empty() ? key : path_ + "." + key));
+  }
+  return out;
+}
+
+std::vector<YamlValue> YamlValue::elements(const std::string& what) const {
+  if (!node_.IsSequence()) {
+    fail("expected " + what + ", got " + describe());
+  }
+  std::vector<YamlValue> out;
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    out.push_back(child(node_[i], path_ + "[" + std::to_string(i) + "]"));
+  }
+  return out;
+}
+
+std::vector<YamlValue> YamlValue::elements(std::size_t count, const std::string& what) const {
+  std::vector<YamlValue> out = elements(what);
+  if (out.size() != count) {
+    fail("expected " + what + ", got " + std::to_string(out.size()) + " entries");
+  }
+  return out;
+}
+
+double YamlValue::asNumber() const {
+  if (!node_.IsScalar()) {
+    fail("expected a number, got " + describe());
+  }
+  const std::string& text = node_.Scalar();
+  if (!isNumericTag(node_.Tag())) {
+    fail("expected a number, got " + describe() + " (write numbers without quotes)");
+  }
+  const std::string lower = lowercase(text);
+  if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos) {
+    fail("value " + text + " is not a finite number");
+  }
+  const std::string_view digits = unsigned_part(text);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error == std::errc::result_out_of_range) {
+    // Subnormal values (e.g. written by a save) are representable; only overflow is an error.
+    char* strtod_end = nullptr;
+    const double subnormal = std::strtod(text.c_str(), &strtod_end);
+    if (*strtod_end == '\0' && std::isfinite(subnormal) && std::abs(subnormal) < 1.0) {
+      return subnormal;
+    }
+    fail("number " + text + " is out of range");
+  }
+  if (error != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
+    fail("expected a number, got " + describe());
+  }
+  if (!std::isfinite(value)) {
+    fail("value " + text + " is not a finite number");
+  }
+  return value;
+}
+
+std::int64_t YamlValue::asInteger() const {
+  if (!node_.IsScalar()) {
+    fail("expected an integer, got " + describe());
+  }
+  const std::string& text = node_.Scalar();
+  if (!isNumericTag(node_.Tag())) {
+    fail("expected an integer, got " + describe() + " (write numbers without quotes)");
+  }
+  const std::string_view digits = unsigned_part(text);
+  std::int64_t value = 0;
+  const auto [end, error] =
+      std::from_chars(digits.data(), digits.data() + digits.size(), value, 10);
+  if (error == std::errc::result_out_of_range) {
+    fail("integer " + text + " is out of range");
+  }
+  if (error != std::errc() || end != digits.data() + digits.size() || digits.empty()) {
+    fail("expected an integer, got " + describe());
+  }
+  return value;
+}
+
+std::string YamlValue::asString() const {
+  if (!node_.IsScalar()) {
+    fail("expected a string, got " + describe());
+  }
+  return node_.Scalar();
+}
+
+Vector3 YamlValue::asVector3() const {
+  const std::vector<YamlValue> items = elements(3, "a list of 3 numbers [x, y, z]");
+  return Vector3(items[0].asNumber(), items[1].asNumber(), items[2].asNumber());
+}
+
+std::vector<double> YamlValue::asNumbers() const {
+  std::vector<double> out;
+  for (const YamlValue& item : elements("a list of numbers")) out.push_back(item.asNumber());
+  return out;
+}
+
+}  // namespace io
+}  // namespace tracked_vehicle_dynamics
