@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <tuple>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
@@ -16,6 +18,11 @@ namespace fem {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
+// Deflated verification runs for repeated eigenvalues: how many, how many modes each, and the
+// relative gap (to the distance from the shift) under which an eigenvalue counts as new.
+constexpr int kMaxDeflationPasses = 6;
+constexpr int kVerificationModes = 6;
+constexpr double kRepeatedTolerance = 1e-6;
 
 // y = (K - sigma M)^-1 x for Spectra's shift-invert mode, with one CHOLMOD factorisation
 // (K - sigma M is positive definite for sigma < 0 when M is positive semi-definite and K + |sigma|M
@@ -27,19 +34,47 @@ class ShiftInvertOp {
   Eigen::Index rows() const { return k_.rows(); }
   Eigen::Index cols() const { return k_.cols(); }
   void set_shift(double sigma) {
+    // Spectra sets the shift on every solver construction; factorise once per distinct shift.
+    if (factorised_ && sigma == sigma_) return;
     SparseMatrix a = k_ - sigma * m_;
     a.makeCompressed();
     if (!chol_.factorize(a))
       throw SolverError("modal solver: K - sigma M is not positive definite for sigma = " +
                         std::to_string(sigma) +
                         " (a DOF without stiffness and mass, or a negative stiffness)");
+    sigma_ = sigma;
+    factorised_ = true;
   }
-  void perform_op(const double* x, double* y) const { chol_.solveInPlace(x, y); }
+  void perform_op(const double* x, double* y) const {
+    chol_.solveInPlace(x, y);
+    if (deflation_.cols() == 0) return;
+    // y <- P y with the M-orthogonal projector P = I - Phi Phi^T M onto the complement of the
+    // modes already found: they get nu = 0 and the Lanczos run finds the next ones, including
+    // further copies of a repeated eigenvalue (rigid-body modes) that one Krylov space misses.
+    Eigen::Map<Vector> out(y, rows());
+    coeffs_.noalias() = mass_deflation_.transpose() * out;
+    out.noalias() -= deflation_ * coeffs_;
+  }
+  /// Restricts the operator to the M-orthogonal complement of `shapes` (mass-normalised).
+  void deflate(const Matrix& shapes) {
+    if (shapes.cols() == 0) {
+      deflation_.resize(0, 0);
+      return;
+    }
+    deflation_ = shapes;
+    mass_deflation_ = m_ * shapes;
+    coeffs_.resize(shapes.cols());
+  }
 
  private:
   const SparseMatrix& k_;
   const SparseMatrix& m_;
   SparseCholesky chol_;
+  double sigma_ = 0.0;
+  bool factorised_ = false;
+  Matrix deflation_;
+  Matrix mass_deflation_;
+  mutable Vector coeffs_;
 };
 
 void checkInputs(const SparseMatrix& k, const SparseMatrix& m, int count) {
@@ -120,11 +155,10 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
 
   ShiftInvertOp op(stiffness, mass);
   Spectra::SparseSymMatProd<double> bop(mass);
-  // With a frequency limit, grow the number of requested modes until the highest one found lies
-  // above the limit (or the count bound is reached); the factorisation is redone per attempt but
-  // is cheap compared with the Lanczos iterations.
-  int nev = request.max_frequency_hz > 0 ? std::min(request.count, 20) : request.count;
-  while (true) {
+  int iterations = 0;
+
+  // One implicitly restarted Lanczos run for the `nev` eigenvalues closest to sigma.
+  auto lanczos = [&](int nev) {
     nev = static_cast<int>(std::min<Eigen::Index>(nev, n - 1));
     const int ncv = static_cast<int>(std::min<Eigen::Index>(std::max(2 * nev + 1, 20), n));
     Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>,
@@ -134,6 +168,7 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     const int converged = static_cast<int>(
         solver.compute(Spectra::SortRule::LargestMagn, request.max_iterations, request.tolerance,
                        Spectra::SortRule::SmallestAlge));
+    iterations += static_cast<int>(solver.num_iterations());
     if (solver.info() != Spectra::CompInfo::Successful) {
       const bool not_converging = solver.info() == Spectra::CompInfo::NotConverging;
       throw SolverError(std::string("modal solver (shift-invert Lanczos): ") +
@@ -142,24 +177,68 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
                         " modes converged after " + std::to_string(solver.num_iterations()) +
                         " iterations (tolerance " + std::to_string(request.tolerance) + ")");
     }
-    ModalBasis basis = sortAndNormalise(solver.eigenvalues(), solver.eigenvectors(), &mass, nullptr);
-    basis.converged = converged;
-    basis.iterations = static_cast<int>(solver.num_iterations());
-    const bool limit_reached = request.max_frequency_hz > 0 &&
-                               basis.frequencies_hz(basis.count() - 1) > request.max_frequency_hz;
-    if (request.max_frequency_hz <= 0 || limit_reached || nev >= request.count || nev >= n - 1) {
-      if (request.max_frequency_hz > 0) {
-        int keep = 0;
-        while (keep < basis.count() && basis.frequencies_hz(keep) <= request.max_frequency_hz) ++keep;
-        basis.eigenvalues.conservativeResize(keep);
-        basis.frequencies_hz.conservativeResize(keep);
-        basis.shapes.conservativeResize(Eigen::NoChange, keep);
-      }
-      basis.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return basis;
-    }
+    return std::make_pair(Vector(solver.eigenvalues()), Matrix(solver.eigenvectors()));
+  };
+
+  // With a frequency limit, grow the number of requested modes until the highest one found lies
+  // above the limit (or the count bound is reached).
+  int nev = request.max_frequency_hz > 0 ? std::min(request.count, 20) : request.count;
+  const double limit = request.max_frequency_hz > 0
+                           ? std::pow(kTwoPi * request.max_frequency_hz, 2)
+                           : std::numeric_limits<double>::infinity();
+  Vector values;
+  Matrix vectors;
+  while (true) {
+    std::tie(values, vectors) = lanczos(nev);
+    if (values.size() == 0 || values.maxCoeff() > limit || nev >= request.count || nev >= n - 1)
+      break;
     nev = std::min(request.count, 2 * nev);
   }
+
+  // Verification passes on the deflated operator: a Krylov space holds one vector per distinct
+  // eigenvalue, so repeated eigenvalues (the six rigid-body modes of a free structure, symmetric
+  // left/right pairs) may be missed. Any eigenvalue of the deflated problem below the highest one
+  // kept belongs to the wanted set; repeat until a pass adds nothing.
+  for (int pass = 0; pass < kMaxDeflationPasses; ++pass) {
+    const Eigen::Index found = values.size();
+    if (found == 0 || found >= n - 1) break;
+    ModalBasis current = sortAndNormalise(values, vectors, &mass, nullptr);
+    op.deflate(current.shapes);
+    const double highest = current.eigenvalues(found - 1);
+    const auto extra = lanczos(static_cast<int>(std::min<Eigen::Index>(kVerificationModes, n - found - 1)));
+    std::vector<Eigen::Index> added;
+    for (Eigen::Index i = 0; i < extra.first.size(); ++i)
+      if (extra.first(i) < highest - kRepeatedTolerance * std::abs(highest - sigma)) added.push_back(i);
+    op.deflate(Matrix());
+    if (added.empty()) break;
+    Vector merged_values(found + static_cast<Eigen::Index>(added.size()));
+    Matrix merged_vectors(n, merged_values.size());
+    merged_values.head(found) = current.eigenvalues;
+    merged_vectors.leftCols(found) = current.shapes;
+    for (std::size_t j = 0; j < added.size(); ++j) {
+      merged_values(found + j) = extra.first(added[j]);
+      merged_vectors.col(found + j) = extra.second.col(added[j]);
+    }
+    // Keep the lowest `found` of the union: the added ones displace the highest.
+    ModalBasis merged = sortAndNormalise(merged_values, merged_vectors, &mass, nullptr);
+    values = merged.eigenvalues.head(found);
+    vectors = merged.shapes.leftCols(found);
+  }
+
+  ModalBasis basis = sortAndNormalise(values, vectors, &mass, nullptr);
+  basis.converged = basis.count();
+  basis.iterations = iterations;
+  if (request.max_frequency_hz > 0) {
+    int keep = 0;
+    while (keep < basis.count() && keep < request.count &&
+           basis.frequencies_hz(keep) <= request.max_frequency_hz)
+      ++keep;
+    basis.eigenvalues.conservativeResize(keep);
+    basis.frequencies_hz.conservativeResize(keep);
+    basis.shapes.conservativeResize(Eigen::NoChange, keep);
+  }
+  basis.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return basis;
 }
 
 ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass) {

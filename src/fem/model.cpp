@@ -19,8 +19,8 @@ std::unordered_map<NodeId, std::size_t> Model::nodeIndex() const {
     const auto [it, inserted] = index.emplace(nodes[i].id, i);
     if (!inserted) {
       throw InputError("model: nodes[" + std::to_string(i) + "]: duplicate node id " +
-                       std::to_string(nodes[i].id) + " (also nodes[" +
-                       std::to_string(it->second) + "])");
+                       std::to_string(nodes[i].id) + " (also nodes[" + std::to_string(it->second) +
+                       "])");
     }
   }
   return index;

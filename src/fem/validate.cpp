@@ -1,7 +1,6 @@
 // fem::validate(): every consistency check on a Model, in file order, throwing at the first
 // failure with "<where>: <item>[<index>]: <what is wrong>".
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -106,7 +105,8 @@ class Validator {
       const Node& node = model_.nodes[i];
       if (node.id == kGround) {
         // kGround is how springs say "the ground"; a node with that id would be ambiguous.
-        fail(item("nodes", i), "node id " + std::to_string(kGround) + " is reserved for the ground");
+        fail(item("nodes", i),
+             "node id " + std::to_string(kGround) + " is reserved for the ground");
       }
       const auto [it, inserted] = node_index_.emplace(node.id, i);
       if (!inserted) {
@@ -214,8 +214,8 @@ class Validator {
     const double orthonormality_error =
         (spring.frame.transpose() * spring.frame - Matrix3::Identity()).cwiseAbs().maxCoeff();
     if (orthonormality_error > kOrthonormalTolerance) {
-      fail(label, "frame is not orthonormal (its axes must be unit vectors at right angles; "
-                  "max |R^T R - I| = " + number(orthonormality_error) + ")");
+      fail(label, "frame is not orthonormal (max |R^T R - I| = " + number(orthonormality_error) +
+                      "; the axes must be unit vectors at right angles)");
     }
     if (spring.frame.determinant() < 0.0) {
       fail(label, "frame is left-handed (z must equal x cross y)");
@@ -309,9 +309,8 @@ class Validator {
           for (auto p = start; p != path.end(); ++p) {
             cycle += "node " + std::to_string(*p) + " -> ";
           }
-          fail(item("rigid_joints", joint),
-               "rigid joints form a cycle (master -> slave): " + cycle + "node " +
-                   std::to_string(slave));
+          fail(item("rigid_joints", joint), "rigid joints form a cycle (master -> slave): " +
+                                                cycle + "node " + std::to_string(slave));
         }
       }
     }
@@ -331,8 +330,9 @@ class Validator {
       const auto it = slave_joint_.find(DofRef{fixed.node, d});
       if (it != slave_joint_.end()) {
         // A fixed slave would silently constrain its master; fix the master instead.
-        fail(label, dofLabel(fixed.node, d) + " is a slave of rigid_joints[" +
-                        std::to_string(it->second) + "] and cannot also be fixed");
+        fail(label, dofLabel(fixed.node, d) +
+                        " is both fixed and a rigid-joint slave (of rigid_joints[" +
+                        std::to_string(it->second) + "]); fix the master instead");
       }
     }
   }
@@ -359,16 +359,14 @@ class Validator {
   const Model& model_;
   const std::string& where_;
   std::unordered_map<NodeId, std::size_t> node_index_;
-  double scale_ = 1.0;                                  // [m], largest |coordinate|, at least 1
-  std::map<DofRef, std::size_t> slave_joint_;           // slave DOF -> joint driving it
+  double scale_ = 1.0;                         // [m], largest |coordinate|, at least 1
+  std::map<DofRef, std::size_t> slave_joint_;  // slave DOF -> joint driving it
   std::map<NodeId, std::vector<std::pair<NodeId, std::size_t>>> children_;  // master -> slaves
 };
 
 }  // namespace
 
-void validate(const Model& model, const std::string& where) {
-  Validator(model, where).run();
-}
+void validate(const Model& model, const std::string& where) { Validator(model, where).run(); }
 
 }  // namespace fem
 }  // namespace tracked_vehicle_dynamics

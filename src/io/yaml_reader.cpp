@@ -30,11 +30,22 @@ bool isNumericTag(const std::string& tag) {
   return tag == kPlainTag || tag == kIntTag || tag == kFloatTag;
 }
 
-/// from_chars rejects a leading '+', which YAML allows.
-std::string_view unsigned_part(const std::string& text) {
+/// from_chars rejects a leading '+', which YAML allows; "+-1" stays invalid.
+std::string_view withoutPlus(const std::string& text) {
   std::string_view view(text);
-  if (!view.empty() && view.front() == '+') view.remove_prefix(1);
+  if (view.size() > 1 && view.front() == '+' && view[1] != '-' && view[1] != '+') {
+    view.remove_prefix(1);
+  }
   return view;
+}
+
+/// YAML (.nan, .inf) and C (nan, inf, infinity) spellings of non-finite values, any case/sign.
+bool isNonFiniteSpelling(const std::string& text) {
+  std::string_view word(text);
+  if (!word.empty() && (word.front() == '+' || word.front() == '-')) word.remove_prefix(1);
+  const std::string lower = lowercase(std::string(word));
+  return lower == ".nan" || lower == "nan" || lower == ".inf" || lower == "inf" ||
+         lower == "infinity";
 }
 
 std::string joined(std::initializer_list<const char*> words) {
@@ -94,7 +105,8 @@ YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
 }
 
 int YamlValue::line() const {
-  if (node_.IsDefined() && !node_.Mark().is_null()) {
+  // An empty value's mark points at the next token, so it takes its key's line instead.
+  if (node_.IsDefined() && !node_.IsNull() && !node_.Mark().is_null()) {
     return node_.Mark().line + 1;
   }
   return fallback_line_;
@@ -108,10 +120,18 @@ void YamlValue::fail(const std::string& what) const {
   throw InputError(message);
 }
 
-YamlValue YamlValue::child(const YAML::Node& node, const std::string& path) const {
+YamlValue YamlValue::child(const YAML::Node& node, const std::string& path, int line) const {
   YamlValue value(node, file_, path);
-  value.fallback_line_ = line();
+  value.fallback_line_ = line > 0 ? line : this->line();
   return value;
+}
+
+std::string YamlValue::keyPath(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+int YamlValue::keyLine(const YAML::Node& key) {
+  return key.Mark().is_null() ? 0 : key.Mark().line + 1;
 }
 
 std::string YamlValue::describe() const {
@@ -132,7 +152,7 @@ void YamlValue::expectMap() const {
       child(it->first, path_).fail("map keys must be plain names");
     }
     const std::string key = it->first.Scalar();
-    const YamlValue key_value = child(it->first, path_.empty() ? key : path_ + "." + key);
+    const YamlValue key_value = child(it->first, keyPath(key));
     const auto [previous, inserted] = lines.emplace(key, key_value.line());
     if (!inserted) {
       key_value.fail("key given twice (also on line " + std::to_string(previous->second) + ")");
@@ -150,8 +170,7 @@ void YamlValue::expectMap(std::initializer_list<const char*> allowed) const {
     bool known = false;
     for (const char* name : allowed) known = known || key == name;
     if (!known) {
-      child(it->first, path_.empty() ? key : path_ + "." + key)
-          .fail("unknown key (allowed keys: " + joined(allowed) + ")");
+      child(it->first, keyPath(key)).fail("unknown key (allowed keys: " + joined(allowed) + ")");
     }
   }
 }
@@ -164,7 +183,7 @@ std::optional<YamlValue> YamlValue::find(const std::string& key) const {
   }
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     if (it->first.IsScalar() && it->first.Scalar() == key) {
-      return child(it->second, path_.empty() ? key : path_ + "." + key);
+      return child(it->second, keyPath(key), keyLine(it->first));
     }
   }
   return std::nullopt;
@@ -173,8 +192,7 @@ std::optional<YamlValue> YamlValue::find(const std::string& key) const {
 YamlValue YamlValue::operator[](const std::string& key) const {
   std::optional<YamlValue> value = find(key);
   if (!value) {
-    child(YAML::Node(), path_.empty() ? key : path_ + "." + key)
-        .fail("required key is missing");
+    child(YAML::Node(), keyPath(key)).fail("required key is missing");
   }
   return *value;
 }
@@ -184,7 +202,7 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   std::vector<std::pair<std::string, YamlValue>> out;
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string key = it->first.Scalar();
-    out.emplace_back(key, child(it->second, path_.empty() ? key : path_ + "." + key));
+    out.emplace_back(key, child(it->second, keyPath(key), keyLine(it->first)));
   }
   return out;
 }
@@ -216,18 +234,17 @@ double YamlValue::asNumber() const {
   if (!isNumericTag(node_.Tag())) {
     fail("expected a number, got " + describe() + " (write numbers without quotes)");
   }
-  const std::string lower = lowercase(text);
-  if (lower.find("nan") != std::string::npos || lower.find("inf") != std::string::npos) {
+  if (isNonFiniteSpelling(text)) {
     fail("value " + text + " is not a finite number");
   }
-  const std::string_view digits = unsigned_part(text);
+  const std::string_view digits = withoutPlus(text);
   double value = 0.0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
   if (error == std::errc::result_out_of_range) {
     // Subnormal values (e.g. written by a save) are representable; only overflow is an error.
     char* strtod_end = nullptr;
     const double subnormal = std::strtod(text.c_str(), &strtod_end);
-    if (*strtod_end == '\0' && std::isfinite(subnormal) && std::abs(subnormal) < 1.0) {
+    if (*strtod_end == '\0' && subnormal != 0.0 && std::abs(subnormal) < 1.0) {
       return subnormal;
     }
     fail("number " + text + " is out of range");
@@ -249,7 +266,7 @@ std::int64_t YamlValue::asInteger() const {
   if (!isNumericTag(node_.Tag())) {
     fail("expected an integer, got " + describe() + " (write numbers without quotes)");
   }
-  const std::string_view digits = unsigned_part(text);
+  const std::string_view digits = withoutPlus(text);
   std::int64_t value = 0;
   const auto [end, error] =
       std::from_chars(digits.data(), digits.data() + digits.size(), value, 10);

@@ -77,7 +77,10 @@ class YamlValue {
   [[noreturn]] void fail(const std::string& what) const;
 
  private:
-  YamlValue child(const YAML::Node& node, const std::string& path) const;
+  /// A value below this one; `line` (when > 0) is its key's line, used for empty values.
+  YamlValue child(const YAML::Node& node, const std::string& path, int line = 0) const;
+  std::string keyPath(const std::string& key) const;
+  static int keyLine(const YAML::Node& key);
   /// "a list", "a map", "nothing", "the string \"abc\"", ... for "expected X, got Y" messages.
   std::string describe() const;
 

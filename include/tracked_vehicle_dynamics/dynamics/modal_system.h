@@ -1,0 +1,72 @@
+// Modal form of a second-order system (paper eq. 20), used by the modal-decoupled simulator and
+// the modal FRF. With K phi_r = omega_r^2 M phi_r, Phi^T M Phi = I and q = Phi eta:
+//
+//   eta_r'' + d_r eta_r' + omega_r^2 eta_r = phi_r^T (K_u u + C_u u' + f_g),   d_r = 2 zeta_r omega_r
+//
+// Exact when Phi^T C Phi is diagonal (proportional/Rayleigh damping, C = a M + b K). Otherwise the
+// modal damping approximation d_r = phi_r^T C phi_r (zeta_r = phi_r^T C phi_r / (2 omega_r))
+// drops the off-diagonal coupling; maxOffDiagonalDampingRatio() tells how much was dropped.
+// All n modes are kept (no truncation), so sum_r phi_r phi_r^T = M^-1 exactly.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/dynamics/second_order_system.h"
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+class ModalSystem {
+ public:
+  /// Solves the dense generalised eigenproblem K phi = omega^2 M phi (O(n^3)).
+  /// damping_ratios: zeta_r per mode [-], ascending-frequency order; empty = derived from C.
+  /// Throws InputError for inconsistent sizes, a wrong number of or negative damping ratios, or
+  /// M/K not symmetric; SolverError when M is not positive definite, K has a clearly negative
+  /// eigenvalue, or the eigensolver fails.
+  explicit ModalSystem(const SecondOrderSystem& system, const Vector& damping_ratios = Vector());
+
+  DofIndex modeCount() const { return frequencies_.size(); }
+  DofIndex inputCount() const { return modal_input_stiffness_.cols(); }
+  DofIndex outputCount() const { return modal_output_.rows(); }
+
+  /// omega_r [rad/s], ascending; rigid-body modes (|omega^2| < 1e-10 max omega^2) are exactly 0.
+  const Vector& naturalFrequencies() const { return frequencies_; }
+  /// d_r = 2 zeta_r omega_r [1/s]: the modal damping coefficient (defined for rigid modes too).
+  const Vector& dampingCoefficients() const { return damping_coefficients_; }
+  /// zeta_r = d_r / (2 omega_r) [-]; 0 for a rigid-body mode.
+  Vector dampingRatios() const;
+  /// Phi [n x n], mass-normalised: Phi^T M Phi = I, Phi^T K Phi = diag(omega^2).
+  const ModeShapes& shapes() const { return shapes_; }
+  /// Phi^T K_u [n_modes x n_inputs] [N/m per unit modal mass].
+  const Matrix& modalInputStiffness() const { return modal_input_stiffness_; }
+  /// Phi^T C_u [n_modes x n_inputs].
+  const Matrix& modalInputDamping() const { return modal_input_damping_; }
+  /// H Phi [n_outputs x n_modes].
+  const Matrix& modalOutput() const { return modal_output_; }
+  /// Phi^T M [n_modes x n]: modal coordinates of a physical vector, eta = Phi^T M q.
+  const Matrix& massProjection() const { return mass_projection_; }
+  /// max over r != s of |c_rs| / sqrt(c_rr c_ss) with c = Phi^T C Phi: 0 for proportional
+  /// damping; the size of the coupling neglected by the modal damping approximation.
+  double maxOffDiagonalDampingRatio() const { return max_off_diagonal_damping_ratio_; }
+  /// One name per row of H (from the system, or "output i").
+  const std::vector<std::string>& outputNames() const { return output_names_; }
+  /// Input stations [m] copied from the system (may be empty).
+  const Vector& inputStations() const { return input_stations_; }
+
+ private:
+  Vector frequencies_;
+  Vector damping_coefficients_;
+  ModeShapes shapes_;
+  Matrix modal_input_stiffness_;
+  Matrix modal_input_damping_;
+  Matrix modal_output_;
+  Matrix mass_projection_;
+  double max_off_diagonal_damping_ratio_ = 0.0;
+  std::vector<std::string> output_names_;
+  Vector input_stations_;
+};
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics

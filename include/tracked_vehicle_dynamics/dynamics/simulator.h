@@ -1,0 +1,114 @@
+// Fixed-step time simulation of a linear model with an exact discretisation (paper §4.2: the
+// state-space approach on the reduced model).
+//
+// Time convention: the simulator sits at a sample t_k with state z_k and input w_k (w = [u; u']).
+// step(w_{k+1}) advances to t_{k+1}:
+//   zero-order hold:  z_{k+1} = Phi z_k + Gamma w_k + f_d            (w_k held over the step)
+//   first-order hold: z_{k+1} = Phi z_k + Gamma0 w_k + Gamma1 w_{k+1} + f_d
+// and then evaluates the outputs at t_{k+1}: y_{k+1} = C z_{k+1} + D w_{k+1} + y0.
+// So a fixed-rate loop passes the input sampled at the new time, for both holds.
+//
+// Two interchangeable engines (DiscretizationMethod):
+//   AugmentedExponential: dense Phi [2n x 2n] from discretize(); O(n^2) per step; any C.
+//   ModalDecoupled: q = Phi eta with mass-normalised modes; each mode an exact 2x2 discrete
+//     system (discrete_modes.h), modal forces p = Phi^T (K_u u + C_u u' + f_g) and outputs
+//     H Phi eta; O(n (n_w + n_y)) per step. Exact for proportional damping; for any other C it
+//     uses the modal damping approximation zeta_r = phi_r^T C phi_r / (2 omega_r)
+//     (maxOffDiagonalDampingRatio() reports the neglected coupling).
+// step() allocates no memory.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/dynamics/output_layout.h"
+#include "tracked_vehicle_dynamics/dynamics/second_order_system.h"
+#include "tracked_vehicle_dynamics/dynamics/state_space.h"
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+/// How a SecondOrderSystem is turned into a discrete-time stepper.
+enum class DiscretizationMethod {
+  /// exp([A B; 0 0] h) on the full first-order system (Van Loan); exact for any damping.
+  AugmentedExponential,
+  /// Exact 2x2 discretisation per mode; exact for proportional/modal damping, approximate
+  /// (modal damping zeta_r = phi_r^T C phi_r / (2 omega_r)) otherwise. Much faster per step.
+  ModalDecoupled,
+};
+
+struct SimulatorOptions {
+  double time_step = 1e-3;  ///< h [s]
+  InputHold hold = InputHold::ZeroOrder;
+  DiscretizationMethod method = DiscretizationMethod::AugmentedExponential;
+  /// Output blocks, in row order (see OutputLayout).
+  std::vector<OutputQuantity> quantities = {OutputQuantity::Displacement};
+  /// Constant generalised force f_g [n] [N, N m] added to the right-hand side (e.g. gravity);
+  /// empty means none.
+  Vector generalized_force;
+  /// ModalDecoupled only: zeta_r per mode (ascending frequency); empty means from C.
+  Vector modal_damping_ratios;
+};
+
+class SimulatorEngine;
+
+class Simulator {
+ public:
+  /// From a discrete StateSpace (sample_time > 0, any hold): dense engine.
+  /// Throws InputError when the system is invalid or continuous.
+  explicit Simulator(const StateSpace& discrete);
+  /// Discretises `system` as the options say. Throws InputError for inconsistent sizes or
+  /// options, SolverError when M is not positive definite (or K indefinite, modal method).
+  Simulator(const SecondOrderSystem& system, const SimulatorOptions& options);
+  ~Simulator();
+  Simulator(Simulator&&) noexcept;
+  Simulator& operator=(Simulator&&) noexcept;
+
+  /// t = 0, z = 0, w = 0.
+  void reset();
+  /// t = 0, state z0 = [q; q'] [2n] (e.g. staticEquilibrium()), current input w0 [n_w] (empty
+  /// means zero). For the modal engine z0 is projected on the modes (exact: all modes kept).
+  /// Throws InputError for wrong lengths.
+  void reset(const Vector& state, const Vector& input = Vector());
+  /// Advances one step to the input sample w_next [n_w] at the end of the step (see the time
+  /// convention above). No allocation. Throws InputError for a wrong length.
+  void step(const Vector& input_next);
+  /// Same, first replacing the current input by `input_begin` (the value at the start of the
+  /// step, for a first-order hold whose previous end value differs).
+  void step(const Vector& input_begin, const Vector& input_end);
+  /// Runs the whole input series W [n_samples x n_w], row k sampled at t + k h, from the current
+  /// state: row 0 replaces the current input, then one step per further row. Returns the outputs
+  /// Y [n_samples x n_y], row k at t + k h. The simulator ends at the last sample.
+  /// Throws InputError for a wrong number of columns.
+  Matrix simulate(const Matrix& inputs);
+
+  /// Outputs y at the current sample [n_y], rows as outputNames().
+  const Vector& outputs() const;
+  /// Current state z = [q; q'] [2n] (O(n^2) for the modal engine: q = Phi eta).
+  Vector state() const;
+  /// Current input w [n_w].
+  const Vector& input() const;
+  /// Current time [s] since reset.
+  double time() const;
+  /// Steps taken since reset.
+  long stepCount() const;
+
+  DofIndex stateCount() const;
+  DofIndex inputCount() const;
+  DofIndex outputCount() const;
+  const std::vector<std::string>& outputNames() const;
+  double timeStep() const;
+  InputHold hold() const;
+  DiscretizationMethod method() const;
+  /// ModalDecoupled: max_{r != s} |c_rs| / sqrt(c_rr c_ss) of Phi^T C Phi (0 when exact);
+  /// AugmentedExponential: 0.
+  double maxOffDiagonalDampingRatio() const;
+
+ private:
+  std::unique_ptr<SimulatorEngine> engine_;
+};
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,49 @@
+// Modal Assurance Criterion (paper eq. 11; Allemang 1982) and the correlation list built from it
+// (paper §3.1.1, Fig. 9-10, Table 4).
+#pragma once
+
+#include <vector>
+
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+/// MAC above which two modes are taken as the same shape (paper §3.1.1: "MAC >= 70 %").
+constexpr double kPaperMacThreshold = 0.7;
+
+/// Relative norm below which a restricted mode shape is round-off rather than motion.
+constexpr double kNegligibleShape = 1e-8;
+
+/// MAC between every column of phi_a [n x a] and every column of phi_b [n x b] (paper eq. 11):
+///   MAC_jk = (phi_j^T phi_k)^2 / ((phi_j^T phi_j) (phi_k^T phi_k))   in [0, 1], result [a x b].
+/// It is invariant to the scaling (and sign) of each shape, and it is NOT mass-weighted: two
+/// M-orthogonal modes can have a non-zero MAC. Both sets must be given over the same DOFs in the
+/// same order (see commonTranslationalDofs()).
+/// A shape whose norm is at most kNegligibleShape times the largest norm of its set has MAC 0
+/// with every shape: it does not move on these DOFs, and the round-off left there (a lateral
+/// mode seen on vertical DOFs, say) would otherwise, being scale-invariant, correlate with
+/// anything. Throws InputError when the row counts differ or an entry is not finite.
+Matrix mac(const Matrix& phi_a, const Matrix& phi_b);
+
+/// One mode of A with its matches among the modes of B.
+struct ModeMatch {
+  int mode = 0;       ///< 0-based column of phi_b
+  double mac = 0.0;
+};
+
+struct ModeCorrelation {
+  int mode = 0;                    ///< 0-based column of phi_a
+  int best_match = -1;             ///< mode of B with the largest MAC (lowest index on ties); -1 when B is empty
+  double best_mac = 0.0;
+  std::vector<ModeMatch> matches;  ///< every mode of B with MAC >= threshold, by decreasing MAC
+};
+
+/// For each mode of A (each row of `mac_ab` = mac(phi_a, phi_b)): its best-matching mode of B and
+/// every mode of B with MAC >= threshold, the paper's correlation list (Table 4 lists the best
+/// match plain and the others in brackets). Throws InputError when threshold is not in (0, 1].
+std::vector<ModeCorrelation> correlateModes(const Matrix& mac_ab,
+                                            double threshold = kPaperMacThreshold);
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,71 @@
+// A terrain height field h(x, y) on a grid: x is the station along the vehicle path [m]
+// (strictly increasing, usually uniform), y the lateral position [m] (y left, REP-103).
+//
+// Between grid points h is bilinear. Outside the grid it is held constant: in x this gives a flat
+// run-in and run-out at the edge heights, in y the nearest lateral line is used (clamp). A grid
+// with a single lateral line is uniform across the width.
+//
+// The road input of the dynamics is u = h(x_q(t), y_q) at each contact point q, and its rate
+// u' = v dh/dx (vehicle speed v), hence slope().
+#pragma once
+
+#include <string>
+
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+
+class Terrain {
+ public:
+  /// stations [n_x] strictly increasing [m]; lateral [n_y] strictly increasing [m];
+  /// heights [n_y x n_x] [m], row j is the longitudinal profile at y = lateral(j).
+  /// Throws InputError (naming the offending index) for empty or mismatched sizes, non-finite
+  /// values, duplicate or decreasing stations or lateral positions.
+  Terrain(Vector stations, Vector lateral, Matrix heights, std::string name = "terrain");
+
+  /// Height at station x [m], lateral position y [m] -> [m]. NaN in either gives NaN.
+  double height(double x, double y) const;
+  /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
+  double slope(double x, double y) const;
+  /// The longitudinal profile at lateral position y [m], one value per station [m].
+  Vector profile(double y) const;
+
+  const std::string& name() const { return name_; }
+  void setName(std::string name) { name_ = std::move(name); }
+  const Vector& stations() const { return stations_; }
+  const Vector& lateral() const { return lateral_; }
+  /// [n_y x n_x] [m].
+  const Matrix& heights() const { return heights_; }
+  double startStation() const { return stations_(0); }
+  double endStation() const { return stations_(stations_.size() - 1); }
+  /// endStation() - startStation() [m].
+  double length() const { return endStation() - startStation(); }
+  /// True when the stations are equally spaced (to 1e-9 relative); spacing() is then valid.
+  bool isUniform() const { return uniform_; }
+  /// Station spacing [m] of a uniform grid, the mean spacing otherwise (0 for one station).
+  double spacing() const { return spacing_; }
+
+  /// Writes the CSV format read by loadTerrainCsv() (terrain_io.h), at full precision.
+  /// Throws InputError when the file cannot be written.
+  void saveCsv(const std::string& path) const;
+  /// Writes the YAML format read by loadTerrainYaml() (terrain_io.h), at full precision.
+  /// Throws InputError when the file cannot be written.
+  void saveYaml(const std::string& path) const;
+
+ private:
+  /// Index i of the station cell [x_i, x_{i+1}] holding x, for x inside the stations.
+  Eigen::Index stationCell(double x) const;
+  /// Lateral cell index j and weight w of line j+1 (0 <= w <= 1), y clamped to the lines.
+  void lateralCell(double y, Eigen::Index* j, double* w) const;
+
+  Vector stations_;
+  Vector lateral_;
+  Matrix heights_;
+  std::string name_;
+  bool uniform_ = false;
+  double spacing_ = 0.0;
+};
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,75 @@
+// A station-indexed store of terrain patches as they arrive online (the ROS node feeds it from
+// TerrainProfile messages; the class itself is ROS-free).
+//
+// A patch is a regular grid: stations start + k spacing (k = 0..n-1) [m] along the path,
+// lateral positions y_j [m] (y left), heights [n_y x n]. Queries interpolate bilinearly inside
+// the newest patch that covers the station (overlapping patches: newer wins). Consecutive
+// patches leave a gap of one spacing between the last sample of one and the first of the next;
+// a gap up to kBridgeFactor times the larger spacing is bridged by linear interpolation in x, so
+// contiguous patches behave as one grid. Laterally, positions outside a patch's lines take the
+// nearest line (clamp), as in Terrain.
+//
+// Not thread-safe: the owner serialises access.
+#pragma once
+
+#include <cstdint>
+#include <map>
+
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+
+class TerrainBuffer {
+ public:
+  /// Largest gap between patches bridged, in spacings.
+  static constexpr double kBridgeFactor = 1.5;
+
+  /// Stores a patch; the newest patch wins where patches overlap, and older patches it covers
+  /// entirely are freed. start_station [m], spacing [m] > 0, lateral [n_y] strictly increasing
+  /// [m], heights [n_y x n_samples] [m], n_samples >= 1. Throws InputError (naming the patch
+  /// start and the offending index) for non-finite values, size mismatches, spacing <= 0.
+  void addPatch(double start_station, double spacing, const Vector& lateral, const Matrix& heights);
+
+  /// True when height(x, ·) is defined: x inside a patch or inside a bridged gap.
+  bool covers(double x) const;
+  /// Height [m] at station x [m], lateral y [m]. Throws InputError when x is not covered.
+  double height(double x, double y) const;
+
+  /// Frees data behind `station` [m]: patches ending before it are dropped and a patch straddling
+  /// it is cut to its samples from the last one at or before `station`; queries at stations
+  /// >= station keep their values.
+  void dropBehind(double station);
+  /// End of the contiguous coverage (bridged gaps included) that starts at coveredFrom() [m];
+  /// -infinity when empty.
+  double coveredUntil() const;
+  /// First covered station [m]; +infinity when empty.
+  double coveredFrom() const;
+
+  std::size_t patchCount() const { return patches_.size(); }
+  bool empty() const { return patches_.empty(); }
+  void clear();
+
+ private:
+  struct Patch {
+    Terrain grid;
+    double spacing;
+    std::uint64_t sequence;
+    double end() const { return grid.endStation(); }
+  };
+  using PatchMap = std::multimap<double, Patch>;
+
+  /// The newest patch containing x, nullptr if none.
+  const Patch* containing(double x) const;
+  /// Patches bounding a bridgeable gap around x, false if x is not in one.
+  bool bridge(double x, const Patch** left, const Patch** right) const;
+  void updateExtents();
+
+  PatchMap patches_;  // keyed by start station
+  std::uint64_t next_sequence_ = 0;
+  double max_length_ = 0.0;   // longest stored patch [m], bounds the backward search
+  double max_spacing_ = 0.0;  // largest stored spacing [m]
+};
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics

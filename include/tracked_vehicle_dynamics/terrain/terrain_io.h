@@ -1,0 +1,46 @@
+// Terrain files. Every error throws InputError naming the file and the row (CSV) or key (YAML):
+//   "<file>: row 7, column 3: height 'nan' is not a finite number"
+//   "<file>: heights[1]: expected 3001 heights (one per station), got 3000 entries (line 9)"
+//
+// CSV (comma separated; blank lines and lines starting with '#' are ignored; "row" counts file
+// lines from 1):
+//   x,-2.5,0,2.5        header: a label, then the lateral position y [m] of each column
+//   0.00,0,0,0          station x [m], then one height [m] per lateral line
+//   0.01,0,0.001,0
+// A two-column file (x,h) is uniform across the width; its header is optional ("x,h"), and a
+// numeric second header cell is read as the y of that single line.
+//
+// YAML:
+//   name: bump                # optional
+//   spacing: 0.01             # [m] uniform stations start + k spacing ...
+//   start: 0.0                # [m] optional, with spacing
+//   x: [0.0, 0.01, ...]       # ... or explicit stations [m] (exactly one of spacing / x)
+//   y: [-2.5, 0.0, 2.5]       # [m] optional: omitted = uniform across the width
+//   heights:                  # [m] one list per y, each one value per station; a flat list
+//     - [0.0, 0.0, ...]       #     when y is omitted
+//
+// Stations and lateral positions must be strictly increasing and all values finite.
+#pragma once
+
+#include <string>
+
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+
+/// Reads a CSV terrain; the Terrain is named after the file stem. Throws InputError.
+Terrain loadTerrainCsv(const std::string& path);
+/// Reads a YAML terrain; named by its `name` key, else the file stem. Throws InputError.
+Terrain loadTerrainYaml(const std::string& path);
+/// loadTerrainCsv() for ".csv", loadTerrainYaml() for ".yaml"/".yml"; InputError otherwise.
+Terrain loadTerrain(const std::string& path);
+
+/// Writes `terrain` as CSV (17 significant digits: a save/load round trip is exact).
+/// Throws InputError when the file cannot be written.
+void saveTerrainCsv(const Terrain& terrain, const std::string& path);
+/// Writes `terrain` as YAML (17 significant digits). Throws InputError when it cannot be written.
+void saveTerrainYaml(const Terrain& terrain, const std::string& path);
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,100 @@
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
+
+#include <cmath>
+#include <limits>
+
+#include "checks.h"
+#include "tracked_vehicle_dynamics/dynamics/validation.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+namespace {
+
+// Relative asymmetry tolerated in M and K (rounding of a reduction), ||X - X^T|| / ||X||.
+constexpr double kSymmetryTolerance = 1e-8;
+// Eigenvalues with |omega^2| below this fraction of the largest are rigid-body modes (set to 0);
+// clearly negative ones mean K is indefinite.
+constexpr double kRigidBodyTolerance = 1e-10;
+
+void requireSymmetric(const Matrix& x, const std::string& what) {
+  const double norm = x.norm();
+  if (norm > 0.0 && (x - x.transpose()).norm() > kSymmetryTolerance * norm)
+    throw InputError("ModalSystem: " + what + " is not symmetric (relative asymmetry " +
+                     std::to_string((x - x.transpose()).norm() / norm) + ")");
+}
+
+}  // namespace
+
+ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_ratios) {
+  validateSystem(system);
+  const DofIndex n = system.size();
+  if (damping_ratios.size() != 0) {
+    detail::requireLength("ModalSystem", "damping ratios", damping_ratios, n);
+    if (!(damping_ratios.array() >= 0.0).all() || !damping_ratios.allFinite())
+      throw InputError("ModalSystem: damping ratios must be finite and >= 0");
+  }
+  requireSymmetric(system.mass, "mass M");
+  requireSymmetric(system.stiffness, "stiffness K");
+  const Matrix mass = 0.5 * (system.mass + system.mass.transpose());
+  const Matrix stiffness = 0.5 * (system.stiffness + system.stiffness.transpose());
+  if (Eigen::LLT<Matrix>(mass).info() != Eigen::Success)
+    throw SolverError("ModalSystem: mass matrix M (" + detail::sizeText(n, n) +
+                      ") is not positive definite");
+
+  // K phi = lambda M phi, eigenvectors M-normalised, eigenvalues ascending.
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> solver(
+      stiffness, mass, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
+  if (solver.info() != Eigen::Success)
+    throw SolverError("ModalSystem: the dense generalised eigensolver did not converge");
+  Vector lambda = solver.eigenvalues();
+  const double lambda_max = std::max(lambda.cwiseAbs().maxCoeff(), 0.0);
+  for (DofIndex r = 0; r < n; ++r) {
+    if (std::abs(lambda(r)) <= kRigidBodyTolerance * lambda_max) {
+      lambda(r) = 0.0;
+    } else if (lambda(r) < 0.0) {
+      throw SolverError("ModalSystem: stiffness K is indefinite: mode " + std::to_string(r) +
+                        " has omega^2 = " + std::to_string(lambda(r)) + " rad^2/s^2");
+    }
+  }
+  frequencies_ = lambda.cwiseSqrt();
+  shapes_ = solver.eigenvectors();
+
+  // c = Phi^T C Phi; its diagonal gives the modal damping d_r = 2 zeta_r omega_r.
+  const Matrix modal_damping = shapes_.transpose() * system.damping * shapes_;
+  max_off_diagonal_damping_ratio_ = 0.0;
+  for (DofIndex s = 0; s < n; ++s)
+    for (DofIndex r = 0; r < n; ++r) {
+      if (r == s || modal_damping(r, s) == 0.0) continue;
+      const double diagonal = std::sqrt(std::abs(modal_damping(r, r) * modal_damping(s, s)));
+      const double ratio = diagonal > 0.0 ? std::abs(modal_damping(r, s)) / diagonal
+                                          : std::numeric_limits<double>::infinity();
+      max_off_diagonal_damping_ratio_ = std::max(max_off_diagonal_damping_ratio_, ratio);
+    }
+  if (damping_ratios.size() != 0)
+    damping_coefficients_ = 2.0 * damping_ratios.cwiseProduct(frequencies_);
+  else
+    damping_coefficients_ = modal_damping.diagonal();
+  if ((damping_coefficients_.array() < 0.0).any())
+    throw InputError("ModalSystem: damping C gives a negative modal damping phi^T C phi");
+
+  modal_input_stiffness_ = shapes_.transpose() * system.input_stiffness;
+  modal_input_damping_ = shapes_.transpose() * system.input_damping;
+  modal_output_ = system.output * shapes_;
+  mass_projection_ = shapes_.transpose() * mass;
+  output_names_ = system.output_names;
+  if (output_names_.empty())
+    for (DofIndex i = 0; i < system.outputCount(); ++i)
+      output_names_.push_back("output " + std::to_string(i));
+  input_stations_ = system.input_stations;
+}
+
+Vector ModalSystem::dampingRatios() const {
+  Vector zeta = Vector::Zero(modeCount());
+  for (DofIndex r = 0; r < modeCount(); ++r)
+    if (frequencies_(r) > 0.0) zeta(r) = damping_coefficients_(r) / (2.0 * frequencies_(r));
+  return zeta;
+}
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,352 @@
+#include "tracked_vehicle_dynamics/io/mat_file.h"
+
+#include <matio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sys/stat.h>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace io {
+
+namespace {
+
+// MATLAB's limit on identifier length (namelengthmax).
+constexpr std::size_t kMaxNameLength = 63;
+// MAT 5 layout (MathWorks, "MAT-File Format", 2023): a 128-byte header whose last four bytes
+// hold the version (0x0100, or 0x0200 for a 7.3 HDF5 file) and the endian indicator "IM",
+// followed by top-level data elements, each an 8-byte tag (type, byte count) and its data.
+constexpr std::size_t kMat5HeaderBytes = 128;
+constexpr std::uint32_t kMiMatrix = 14;
+constexpr std::uint32_t kMiCompressed = 15;
+constexpr const char* kMat5HeaderText = "MATLAB 5.0 MAT-file, written by tracked_vehicle_dynamics";
+
+std::string dims(std::size_t rows, std::size_t cols) {
+  return std::to_string(rows) + "x" + std::to_string(cols);
+}
+
+bool isIdentifier(const std::string& name) {
+  if (name.empty() || name.size() > kMaxNameLength) return false;
+  if (!std::isalpha(static_cast<unsigned char>(name[0]))) return false;
+  return std::all_of(name.begin(), name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+  });
+}
+
+// Appends the UTF-8 encoding of a UTF-16 code unit (surrogates, which no name or label of ours
+// uses, become '?').
+void appendUtf8(std::string& out, std::uint16_t unit) {
+  if (unit < 0x80) {
+    out.push_back(static_cast<char>(unit));
+  } else if (unit < 0x800) {
+    out.push_back(static_cast<char>(0xC0 | (unit >> 6)));
+    out.push_back(static_cast<char>(0x80 | (unit & 0x3F)));
+  } else if (unit >= 0xD800 && unit <= 0xDFFF) {
+    out.push_back('?');
+  } else {
+    out.push_back(static_cast<char>(0xE0 | (unit >> 12)));
+    out.push_back(static_cast<char>(0x80 | ((unit >> 6) & 0x3F)));
+    out.push_back(static_cast<char>(0x80 | (unit & 0x3F)));
+  }
+}
+
+struct VarDeleter {
+  void operator()(matvar_t* v) const {
+    if (v) Mat_VarFree(v);
+  }
+};
+using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
+
+std::uint32_t readU32(const unsigned char* p, bool swap) {
+  std::uint32_t v = static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+                    static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+  if (swap)
+    v = (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
+  return v;
+}
+
+// Walks the top-level element tags of a MAT 5 file and checks that every element lies inside
+// the file. matio trusts these byte counts, so a truncated or overwritten file is refused here,
+// before matio reads past the end. 7.3 files are left to the HDF5 library's own checks.
+void checkMat5Structure(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw InputError(path + ": cannot be opened for reading");
+  const auto size = static_cast<std::uint64_t>(in.tellg());
+  if (size < kMat5HeaderBytes)
+    throw InputError(path + ": not a MAT file (" + std::to_string(size) +
+                     " bytes, shorter than the 128-byte MAT header)");
+  unsigned char header[kMat5HeaderBytes];
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(header), kMat5HeaderBytes);
+  const bool little = header[126] == 'I' && header[127] == 'M';
+  const bool big = header[126] == 'M' && header[127] == 'I';
+  if (!little && !big)
+    throw InputError(path + ": not a MAT 5 or 7.3 file (no endian indicator in the header)");
+  const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
+  if (version == 0x0200) return;
+  if (version != 0x0100)
+    throw InputError(path + ": unsupported MAT file version 0x" + std::to_string(version));
+  std::uint64_t offset = kMat5HeaderBytes;
+  while (offset < size) {
+    unsigned char tag[8];
+    if (offset + 8 > size)
+      throw InputError(path + ": truncated: a data element starts at byte " +
+                       std::to_string(offset) + " but the file ends at byte " +
+                       std::to_string(size));
+    in.seekg(static_cast<std::streamoff>(offset));
+    in.read(reinterpret_cast<char*>(tag), 8);
+    const std::uint32_t type = readU32(tag, big);
+    const std::uint64_t bytes = readU32(tag + 4, big);
+    if (type != kMiMatrix && type != kMiCompressed)
+      throw InputError(path + ": corrupted: data element at byte " + std::to_string(offset) +
+                       " has type " + std::to_string(type) + " (expected a matrix)");
+    std::uint64_t end = offset + 8 + bytes;
+    if (type == kMiMatrix) end = (end + 7) / 8 * 8;  // uncompressed elements are 8-byte aligned
+    if (offset + 8 + bytes > size)
+      throw InputError(path + ": truncated: the data element at byte " + std::to_string(offset) +
+                       " needs " + std::to_string(bytes) + " bytes but the file ends at byte " +
+                       std::to_string(size));
+    offset = std::min(end, size);
+  }
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// MatWriter
+// ---------------------------------------------------------------------------------------------
+
+struct MatWriter::Impl {
+  mat_t* mat = nullptr;
+  std::string temporary;
+  matio_compression compression = MAT_COMPRESSION_NONE;
+  std::set<std::string> names;
+
+  void write(matvar_t* var, const std::string& name, const std::string& path) {
+    if (!var) throw InputError(path + ": cannot create variable '" + name + "' (matio)");
+    VarPtr owned(var);
+    if (Mat_VarWrite(mat, var, compression) != 0)
+      throw InputError(path + ": cannot write variable '" + name + "' (disk full or not writable?)");
+  }
+};
+
+MatWriter::MatWriter(const std::string& path, MatFormat format, bool compress)
+    : impl_(std::make_unique<Impl>()), path_(path) {
+  impl_->temporary = path + ".tmp" + std::to_string(::getpid());
+  impl_->compression = compress ? MAT_COMPRESSION_ZLIB : MAT_COMPRESSION_NONE;
+  impl_->mat = Mat_CreateVer(impl_->temporary.c_str(), kMat5HeaderText,
+                             format == MatFormat::Mat73 ? MAT_FT_MAT73 : MAT_FT_MAT5);
+  if (!impl_->mat)
+    throw InputError(path + ": cannot create the file (directory missing or not writable?)");
+}
+
+MatWriter::~MatWriter() {
+  if (impl_->mat) {
+    Mat_Close(impl_->mat);
+    std::remove(impl_->temporary.c_str());
+  }
+}
+
+void MatWriter::checkName(const std::string& name) {
+  if (!impl_->mat) throw InputError(path_ + ": write after close()");
+  if (!isIdentifier(name))
+    throw InputError(path_ + ": '" + name +
+                     "' is not a valid MAT variable name (a letter, then letters, digits or _, "
+                     "at most 63 characters)");
+  if (!impl_->names.insert(name).second)
+    throw InputError(path_ + ": variable '" + name + "' written twice");
+}
+
+void MatWriter::writeMatrix(const std::string& name, const Matrix& value) {
+  checkName(name);
+  std::size_t d[2] = {static_cast<std::size_t>(value.rows()), static_cast<std::size_t>(value.cols())};
+  void* data = value.size() ? const_cast<double*>(value.data()) : nullptr;
+  impl_->write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, data,
+                             MAT_F_DONT_COPY_DATA),
+               name, path_);
+}
+
+void MatWriter::writeScalar(const std::string& name, double value) {
+  writeMatrix(name, Matrix::Constant(1, 1, value));
+}
+
+namespace {
+matvar_t* charVariable(const char* name, const std::string& value, int options) {
+  // MATLAB writes '' as 0x0; a 1x0 char would read back as a 1x0 array.
+  std::size_t d[2] = {value.empty() ? 0u : 1u, value.size()};
+  void* data = value.empty() ? nullptr : const_cast<char*>(value.data());
+  return Mat_VarCreate(name, MAT_C_CHAR, MAT_T_UTF8, 2, d, data, options);
+}
+}  // namespace
+
+void MatWriter::writeString(const std::string& name, const std::string& value) {
+  checkName(name);
+  impl_->write(charVariable(name.c_str(), value, MAT_F_DONT_COPY_DATA), name, path_);
+}
+
+void MatWriter::writeStrings(const std::string& name, const std::vector<std::string>& values) {
+  checkName(name);
+  std::size_t d[2] = {values.size(), 1};
+  matvar_t* cell = Mat_VarCreate(name.c_str(), MAT_C_CELL, MAT_T_CELL, 2, d, nullptr, 0);
+  if (!cell) throw InputError(path_ + ": cannot create variable '" + name + "' (matio)");
+  VarPtr owned(cell);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    // Copied (options 0): the cell owns its elements and frees them with itself.
+    matvar_t* element = charVariable(nullptr, values[i], 0);
+    if (!element) throw InputError(path_ + ": cannot create '" + name + "'{" + std::to_string(i + 1) + "}");
+    Mat_VarSetCell(cell, static_cast<int>(i), element);
+  }
+  impl_->write(owned.release(), name, path_);
+}
+
+void MatWriter::close() {
+  if (!impl_->mat) throw InputError(path_ + ": close() called twice");
+  const int status = Mat_Close(impl_->mat);
+  impl_->mat = nullptr;
+  if (status != 0) {
+    std::remove(impl_->temporary.c_str());
+    throw InputError(path_ + ": error while closing the file (disk full?)");
+  }
+  if (std::rename(impl_->temporary.c_str(), path_.c_str()) != 0) {
+    std::remove(impl_->temporary.c_str());
+    throw InputError(path_ + ": cannot move the written file into place");
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// MatReader
+// ---------------------------------------------------------------------------------------------
+
+struct MatReader::Impl {
+  mat_t* mat = nullptr;
+  ~Impl() {
+    if (mat) Mat_Close(mat);
+  }
+};
+
+MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()), path_(path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) throw InputError(path + ": file does not exist");
+  if (!S_ISREG(info.st_mode)) throw InputError(path + ": not a regular file");
+  checkMat5Structure(path);
+  impl_->mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+  if (!impl_->mat) throw InputError(path + ": not a readable MAT file");
+  std::size_t count = 0;
+  char** dir = Mat_GetDir(impl_->mat, &count);
+  if (!dir && count > 0) throw InputError(path + ": the list of variables cannot be read");
+  for (std::size_t i = 0; i < count; ++i)
+    if (dir[i]) names_.emplace_back(dir[i]);
+}
+
+MatReader::~MatReader() = default;
+
+bool MatReader::has(const std::string& name) const {
+  return std::find(names_.begin(), names_.end(), name) != names_.end();
+}
+
+namespace {
+
+VarPtr readVariable(mat_t* mat, const std::string& path, const std::string& name, bool present) {
+  if (!present) throw InputError(path + ": variable '" + name + "' is missing");
+  VarPtr var(Mat_VarRead(mat, name.c_str()));
+  if (!var) throw InputError(path + ": variable '" + name + "' cannot be read (corrupted file)");
+  return var;
+}
+
+// The text of a char variable (or cell element); empty numeric arrays count as ''.
+std::string charData(const matvar_t* var, const std::string& where) {
+  const std::size_t rows = var->rank >= 1 ? var->dims[0] : 0;
+  const std::size_t cols = var->rank >= 2 ? var->dims[1] : 0;
+  if (rows * cols == 0) return {};
+  if (var->class_type != MAT_C_CHAR) throw InputError(where + " is not a character array");
+  if (var->rank != 2 || rows != 1)
+    throw InputError(where + " is a " + dims(rows, cols) + " character array, expected one row");
+  if (!var->data) throw InputError(where + " has no data (corrupted file)");
+  std::string out;
+  switch (var->data_type) {
+    case MAT_T_UTF8:
+    case MAT_T_UINT8:
+    case MAT_T_INT8:
+      out.assign(static_cast<const char*>(var->data), var->nbytes);
+      // matio counts a terminating NUL in nbytes of UTF-8 data; no text of ours contains NUL.
+      out.erase(std::find(out.begin(), out.end(), '\0'), out.end());
+      break;
+    case MAT_T_UINT16:
+    case MAT_T_UTF16:
+    case MAT_T_INT16: {
+      const auto* units = static_cast<const std::uint16_t*>(var->data);
+      for (std::size_t i = 0; i < var->nbytes / 2 && units[i] != 0; ++i) appendUtf8(out, units[i]);
+      break;
+    }
+    default:
+      throw InputError(where + " has an unsupported character encoding");
+  }
+  return out;
+}
+
+}  // namespace
+
+Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex cols) const {
+  const VarPtr var = readVariable(impl_->mat, path_, name, has(name));
+  const std::string where = path_ + ": variable '" + name + "'";
+  if (var->class_type != MAT_C_DOUBLE || var->isComplex || var->isLogical)
+    throw InputError(where + " is not a real double matrix");
+  if (var->rank != 2) throw InputError(where + " has " + std::to_string(var->rank) + " dimensions, expected 2");
+  const auto r = static_cast<DofIndex>(var->dims[0]);
+  const auto c = static_cast<DofIndex>(var->dims[1]);
+  if ((rows != kAnySize && r != rows) || (cols != kAnySize && c != cols))
+    throw InputError(where + " is " + dims(r, c) + ", expected " +
+                     (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
+                     (cols == kAnySize ? std::string("any") : std::to_string(cols)));
+  Matrix out(r, c);
+  if (out.size() == 0) return out;
+  if (!var->data || var->nbytes < static_cast<std::size_t>(out.size()) * sizeof(double))
+    throw InputError(where + " has fewer values than its " + dims(r, c) + " size (corrupted file)");
+  out = Eigen::Map<const Matrix>(static_cast<const double*>(var->data), r, c);
+  for (DofIndex j = 0; j < c; ++j)
+    for (DofIndex i = 0; i < r; ++i)
+      if (!std::isfinite(out(i, j)))
+        throw InputError(where + " has a non-finite entry at (" + std::to_string(i + 1) + ", " +
+                         std::to_string(j + 1) + ")");
+  return out;
+}
+
+double MatReader::readScalar(const std::string& name) const {
+  return readMatrix(name, 1, 1)(0, 0);
+}
+
+std::string MatReader::readString(const std::string& name) const {
+  const VarPtr var = readVariable(impl_->mat, path_, name, has(name));
+  return charData(var.get(), path_ + ": variable '" + name + "'");
+}
+
+std::vector<std::string> MatReader::readStrings(const std::string& name, DofIndex count) const {
+  const VarPtr var = readVariable(impl_->mat, path_, name, has(name));
+  const std::string where = path_ + ": variable '" + name + "'";
+  if (var->class_type != MAT_C_CELL) throw InputError(where + " is not a cell array of strings");
+  std::size_t total = 1;
+  for (int d = 0; d < var->rank; ++d) total *= var->dims[d];
+  if (count != kAnySize && static_cast<DofIndex>(total) != count)
+    throw InputError(where + " has " + std::to_string(total) + " entries, expected " +
+                     std::to_string(count));
+  std::vector<std::string> out;
+  out.reserve(total);
+  for (std::size_t i = 0; i < total; ++i) {
+    const matvar_t* element = Mat_VarGetCell(var.get(), static_cast<int>(i));
+    const std::string element_where = where + "{" + std::to_string(i + 1) + "}";
+    if (!element) throw InputError(element_where + " cannot be read (corrupted file)");
+    out.push_back(charData(element, element_where));
+  }
+  return out;
+}
+
+}  // namespace io
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,79 @@
+#include "tracked_vehicle_dynamics/reduction/reduced_damping.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+namespace {
+
+void checkCoefficient(double value, const char* name) {
+  if (!std::isfinite(value) || value < 0.0)
+    throw InputError(std::string("reducedDamping: ") + name + " = " + std::to_string(value) +
+                     " must be finite and non-negative");
+}
+
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%g", value);
+  return buffer;
+}
+
+}  // namespace
+
+Matrix reducedDamping(const Matrix& m_r, const Matrix& k_r, const Matrix& c_discrete,
+                      const DampingOptions& options) {
+  const DofIndex k = m_r.rows();
+  if (m_r.cols() != k || k_r.rows() != k || k_r.cols() != k || c_discrete.rows() != k ||
+      c_discrete.cols() != k)
+    throw InputError("reducedDamping: M_R " + std::to_string(m_r.rows()) + "x" +
+                     std::to_string(m_r.cols()) + ", K_R " + std::to_string(k_r.rows()) + "x" +
+                     std::to_string(k_r.cols()) + " and C_R " + std::to_string(c_discrete.rows()) +
+                     "x" + std::to_string(c_discrete.cols()) + " must be square of one size");
+  switch (options.model) {
+    case DampingModel::Discrete:
+      return c_discrete;
+    case DampingModel::Rayleigh:
+      checkCoefficient(options.alpha, "alpha");
+      checkCoefficient(options.beta, "beta");
+      return c_discrete + options.alpha * m_r + options.beta * k_r;
+    case DampingModel::Modal: {
+      Vector zeta = options.modal_ratios.size() ? options.modal_ratios
+                                                : Vector::Constant(k, options.modal_ratio);
+      if (zeta.size() != k)
+        throw InputError("reducedDamping: " + std::to_string(zeta.size()) +
+                         " modal damping ratios for " + std::to_string(k) + " reduced modes");
+      for (DofIndex i = 0; i < k; ++i) checkCoefficient(zeta(i), "modal damping ratio");
+      const fem::ModalBasis modes = fem::solveModesDense(k_r, m_r);
+      const Vector omega = modes.eigenvalues.cwiseMax(0.0).cwiseSqrt();
+      const Matrix mphi = m_r * modes.shapes;
+      Matrix c = mphi * (2.0 * zeta.cwiseProduct(omega)).asDiagonal() * mphi.transpose();
+      c = 0.5 * (c + c.transpose());
+      return c_discrete + c;
+    }
+  }
+  return c_discrete;
+}
+
+std::string describe(const DampingOptions& options) {
+  switch (options.model) {
+    case DampingModel::Discrete:
+      return "discrete dampers only";
+    case DampingModel::Rayleigh:
+      return "Rayleigh alpha=" + number(options.alpha) + " 1/s beta=" + number(options.beta) +
+             " s + discrete dampers";
+    case DampingModel::Modal:
+      return options.modal_ratios.size()
+                 ? "modal, zeta per mode (" + std::to_string(options.modal_ratios.size()) +
+                       " ratios) + discrete dampers"
+                 : "modal zeta=" + number(options.modal_ratio) + " + discrete dampers";
+  }
+  return "unknown";
+}
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

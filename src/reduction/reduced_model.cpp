@@ -1,0 +1,139 @@
+#include "tracked_vehicle_dynamics/reduction/reduced_model.h"
+
+#include <cstdio>
+#include <ctime>
+#include <map>
+#include <set>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+namespace {
+
+std::string label(const fem::DofRef& d) {
+  return "node " + std::to_string(d.node) + " " + directionName(d.direction);
+}
+
+std::string modeLabel(DofIndex mode, double frequency_hz) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "mode %ld (%.3g Hz)", static_cast<long>(mode + 1),
+                frequency_hz);
+  return buffer;
+}
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char buffer[32];
+  std::strftime(buffer, sizeof(buffer), "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buffer;
+}
+
+// Each output as a combination of active DOFs: the row of the constraint transformation
+// u_phys = T u_active (a fixed DOF has an empty row, a rigid-joint slave its master's terms).
+std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
+    const fem::DofMap& dofs, const std::vector<OutputDof>& outputs) {
+  const SparseMatrix by_row = dofs.transformation().transpose();  // column p = physical row p
+  std::vector<std::vector<std::pair<DofIndex, double>>> terms(outputs.size());
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    const fem::DofRef& d = outputs[i].dof;
+    DofIndex p = 0;
+    try {
+      p = dofs.physical(d.node, d.direction);
+    } catch (const InputError& e) {
+      throw InputError("buildReducedModel: output [" + std::to_string(i) + "] '" + outputs[i].name +
+                       "': " + e.what());
+    }
+    for (SparseMatrix::InnerIterator it(by_row, p); it; ++it) terms[i].emplace_back(it.row(), it.value());
+  }
+  return terms;
+}
+
+}  // namespace
+
+const char* softwareVersion() {
+#ifdef TVD_VERSION
+  return TVD_VERSION;
+#else
+  return "0.1.0";
+#endif
+}
+
+ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request) {
+  const fem::DofMap& dofs = system.dofs;
+  const auto terms = outputTerms(dofs, request.outputs);
+  std::set<std::string> names;
+  std::vector<std::string> output_names;
+  for (std::size_t i = 0; i < request.outputs.size(); ++i) {
+    const std::string name =
+        request.outputs[i].name.empty() ? label(request.outputs[i].dof) : request.outputs[i].name;
+    if (!names.insert(name).second)
+      throw InputError("buildReducedModel: output name '" + name + "' is used twice");
+    output_names.push_back(name);
+  }
+
+  // One recovery row per active DOF the outputs need.
+  CraigBamptonOptions options = request.craig_bampton;
+  std::map<DofIndex, DofIndex> recovery_row;
+  options.recovery_dofs.clear();
+  for (const auto& output : terms)
+    for (const auto& [active, coefficient] : output)
+      if (recovery_row.emplace(active, static_cast<DofIndex>(options.recovery_dofs.size())).second)
+        options.recovery_dofs.push_back(active);
+  const CraigBamptonResult cb = craigBampton(system, request.masters, options);
+
+  ReducedModel model;
+  dynamics::SecondOrderSystem& s = model.system;
+  s.mass = cb.mass;
+  s.stiffness = cb.stiffness;
+  s.damping = cb.damping;
+  s.input_stiffness = cb.input_stiffness;
+  s.input_damping = cb.input_damping;
+  s.output = Matrix::Zero(static_cast<DofIndex>(terms.size()), cb.size());
+  for (std::size_t i = 0; i < terms.size(); ++i)
+    for (const auto& [active, coefficient] : terms[i])
+      s.output.row(static_cast<DofIndex>(i)) += coefficient * cb.recovery.row(recovery_row.at(active));
+  s.output_names = output_names;
+
+  const auto inputs = static_cast<DofIndex>(system.ground_inputs.size());
+  Vector stations(inputs), lateral(inputs);
+  bool located = true;
+  for (DofIndex q = 0; q < inputs; ++q) {
+    const fem::DofRef& d = system.ground_inputs[static_cast<std::size_t>(q)];
+    model.input_labels.push_back(label(d));
+    DofIndex active = -1;
+    for (int direction = 0; direction < kDofsPerNode && active < 0; ++direction)
+      active = dofs.active(d.node, direction);
+    if (active < 0) {
+      located = false;
+      continue;
+    }
+    stations(q) = dofs.positionOf(active).x();
+    lateral(q) = dofs.positionOf(active).y();
+  }
+  s.input_stations = located ? stations : Vector();
+  s.input_lateral = located ? lateral : Vector();
+
+  model.gravity_load = cb.gravity_load;
+  for (const DofIndex master : cb.masters) {
+    model.masters.push_back(dofs.dofOf(master));
+    model.dof_labels.push_back(dofs.label(master));
+  }
+  model.fixed_interface_frequencies_hz = cb.fixed_interface_frequencies_hz;
+  for (DofIndex j = 0; j < cb.modeCount(); ++j)
+    model.dof_labels.push_back(modeLabel(j, cb.fixed_interface_frequencies_hz(j)));
+  model.selected_modes = request.selection.modes;
+  model.damping = describe(options.damping);
+  model.description_hash = request.description_hash;
+  model.version = softwareVersion();
+  model.created_utc = utcNow();
+  model.creator = request.creator;
+  model.full_dof_count = system.size();
+  return model;
+}
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,316 @@
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+
+#include "tracked_vehicle_dynamics/io/mat_file.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+namespace {
+
+// Node ids and mode numbers travel as doubles; they are exact below 2^53.
+constexpr double kMaxExactInteger = 9007199254740992.0;
+
+// One variable of the file, in file order (the checksum depends on the order).
+struct Variable {
+  std::string name;
+  enum class Kind { Numeric, Text, TextList } kind = Kind::Numeric;
+  Matrix numeric;
+  std::string text;
+  std::vector<std::string> texts;
+};
+
+Variable numeric(const std::string& name, Matrix value) {
+  Variable v;
+  v.name = name;
+  v.numeric = std::move(value);
+  return v;
+}
+Variable text(const std::string& name, const std::string& value) {
+  Variable v;
+  v.name = name;
+  v.kind = Variable::Kind::Text;
+  v.text = value;
+  return v;
+}
+Variable texts(const std::string& name, const std::vector<std::string>& value) {
+  Variable v;
+  v.name = name;
+  v.kind = Variable::Kind::TextList;
+  v.texts = value;
+  return v;
+}
+
+Matrix column(const Vector& v) { return v.size() ? Matrix(v) : Matrix(0, 1); }
+
+std::vector<Variable> toVariables(const ReducedModel& model) {
+  const dynamics::SecondOrderSystem& s = model.system;
+  Matrix masters(model.masterCount(), 2);
+  for (DofIndex i = 0; i < model.masterCount(); ++i) {
+    masters(i, 0) = static_cast<double>(model.masters[static_cast<std::size_t>(i)].node);
+    masters(i, 1) = model.masters[static_cast<std::size_t>(i)].direction;
+  }
+  const auto selected = static_cast<DofIndex>(model.selected_modes.size());
+  Matrix numbers(selected, 1), frequencies(selected, 1);
+  std::vector<std::string> reasons;
+  for (DofIndex i = 0; i < selected; ++i) {
+    const SelectedMode& mode = model.selected_modes[static_cast<std::size_t>(i)];
+    numbers(i, 0) = mode.mode + 1;
+    frequencies(i, 0) = mode.frequency_hz;
+    reasons.push_back(mode.reason);
+  }
+  return {numeric("format_version", Matrix::Constant(1, 1, kReducedModelFormatVersion)),
+          text("version", model.version),
+          text("description_hash", model.description_hash),
+          text("created_utc", model.created_utc),
+          text("creator", model.creator),
+          text("damping_model", model.damping),
+          numeric("full_dof_count", Matrix::Constant(1, 1, static_cast<double>(model.full_dof_count))),
+          numeric("M_R", s.mass),
+          numeric("K_R", s.stiffness),
+          numeric("C_R", s.damping),
+          numeric("K_u", s.input_stiffness),
+          numeric("C_u", s.input_damping),
+          numeric("gravity_load", column(model.gravity_load)),
+          numeric("H", s.output),
+          texts("output_names", s.output_names),
+          texts("dof_labels", model.dof_labels),
+          texts("input_labels", model.input_labels),
+          numeric("input_stations", column(s.input_stations)),
+          numeric("input_lateral", column(s.input_lateral)),
+          numeric("masters", masters),
+          numeric("fixed_interface_frequencies_hz", column(model.fixed_interface_frequencies_hz)),
+          numeric("selected_mode_numbers", numbers),
+          numeric("selected_mode_frequencies_hz", frequencies),
+          texts("selected_mode_reasons", reasons)};
+}
+
+// FNV-1a, 64 bit: not cryptographic, but any changed, missing or reordered byte changes it.
+class Checksum {
+ public:
+  void add(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;
+  }
+  void add(const std::string& s) {
+    add(static_cast<std::uint64_t>(s.size()));
+    add(s.data(), s.size());
+  }
+  void add(std::uint64_t v) { add(&v, sizeof(v)); }
+  std::string hex() const {
+    char buffer[17];
+    std::snprintf(buffer, sizeof(buffer), "%016llx", static_cast<unsigned long long>(hash_));
+    return buffer;
+  }
+
+ private:
+  std::uint64_t hash_ = 14695981039346656037ull;
+};
+
+std::string checksum(const std::vector<Variable>& variables) {
+  Checksum c;
+  for (const Variable& v : variables) {
+    c.add(v.name);
+    c.add(static_cast<std::uint64_t>(v.kind));
+    switch (v.kind) {
+      case Variable::Kind::Numeric:
+        c.add(static_cast<std::uint64_t>(v.numeric.rows()));
+        c.add(static_cast<std::uint64_t>(v.numeric.cols()));
+        c.add(v.numeric.data(), sizeof(double) * static_cast<std::size_t>(v.numeric.size()));
+        break;
+      case Variable::Kind::Text:
+        c.add(v.text);
+        break;
+      case Variable::Kind::TextList:
+        c.add(static_cast<std::uint64_t>(v.texts.size()));
+        for (const std::string& s : v.texts) c.add(s);
+        break;
+    }
+  }
+  return c.hex();
+}
+
+std::string dims(const Matrix& a) {
+  return std::to_string(a.rows()) + "x" + std::to_string(a.cols());
+}
+
+void checkSize(const std::string& where, const char* name, const Matrix& a, DofIndex rows,
+               DofIndex cols) {
+  if (a.rows() != rows || a.cols() != cols)
+    throw InputError(where + ": " + name + " is " + dims(a) + ", expected " +
+                     std::to_string(rows) + "x" + std::to_string(cols));
+}
+
+void checkCount(const std::string& where, const char* name, std::size_t count, DofIndex expected) {
+  if (static_cast<DofIndex>(count) != expected)
+    throw InputError(where + ": " + name + " has " + std::to_string(count) + " entries, expected " +
+                     std::to_string(expected));
+}
+
+void checkSymmetric(const std::string& where, const char* name, const Matrix& a, double tolerance) {
+  const double scale = a.cwiseAbs().maxCoeff();
+  const double asymmetry = (a - a.transpose()).cwiseAbs().maxCoeff();
+  if (asymmetry > tolerance * scale)
+    throw InputError(where + ": " + name + " is not symmetric (max |A - A^T| = " +
+                     std::to_string(asymmetry) + " for max |A| = " + std::to_string(scale) + ")");
+}
+
+// Everything a usable model must satisfy; `where` starts each message (the file name).
+void checkConsistency(const ReducedModel& model, const std::string& where, double symmetry_tolerance) {
+  const dynamics::SecondOrderSystem& s = model.system;
+  const DofIndex k = s.mass.rows();
+  const DofIndex inputs = s.input_stiffness.cols();
+  if (k == 0) throw InputError(where + ": M_R is empty");
+  checkSize(where, "M_R", s.mass, k, k);
+  checkSize(where, "K_R", s.stiffness, k, k);
+  checkSize(where, "C_R", s.damping, k, k);
+  checkSize(where, "K_u", s.input_stiffness, k, inputs);
+  checkSize(where, "C_u", s.input_damping, k, inputs);
+  checkSize(where, "H", s.output, s.output.rows(), k);
+  checkCount(where, "gravity_load", static_cast<std::size_t>(model.gravity_load.size()), k);
+  checkCount(where, "output_names", s.output_names.size(), s.output.rows());
+  checkCount(where, "dof_labels", model.dof_labels.size(), k);
+  checkCount(where, "input_labels", model.input_labels.size(), inputs);
+  if (s.input_stations.size() != 0 || s.input_lateral.size() != 0) {
+    checkCount(where, "input_stations", static_cast<std::size_t>(s.input_stations.size()), inputs);
+    checkCount(where, "input_lateral", static_cast<std::size_t>(s.input_lateral.size()), inputs);
+  }
+  if (model.masterCount() + model.modeCount() != k)
+    throw InputError(where + ": " + std::to_string(model.masterCount()) + " masters and " +
+                     std::to_string(model.modeCount()) + " fixed-interface modes for " +
+                     std::to_string(k) + " reduced coordinates");
+  for (const fem::DofRef& d : model.masters)
+    if (d.direction < 0 || d.direction >= kDofsPerNode)
+      throw InputError(where + ": master of node " + std::to_string(d.node) + " has direction " +
+                       std::to_string(d.direction));
+  for (const Matrix* a : {&s.mass, &s.stiffness, &s.damping, &s.input_stiffness,
+                          &s.input_damping, &s.output})
+    if (!a->allFinite()) throw InputError(where + ": a system matrix has a non-finite entry");
+  checkSymmetric(where, "M_R", s.mass, symmetry_tolerance);
+  checkSymmetric(where, "K_R", s.stiffness, symmetry_tolerance);
+  checkSymmetric(where, "C_R", s.damping, symmetry_tolerance);
+  if (Eigen::LLT<Matrix>(s.mass).info() != Eigen::Success)
+    throw InputError(where + ": M_R is not positive definite");
+}
+
+double integer(const std::string& where, const char* name, double value) {
+  if (value != std::floor(value) || std::abs(value) > kMaxExactInteger)
+    throw InputError(where + ": " + name + " holds " + std::to_string(value) +
+                     ", not an integer");
+  return value;
+}
+
+Vector vectorOf(const io::MatReader& in, const std::string& name) {
+  const Matrix m = in.readMatrix(name, io::kAnySize, 1);
+  return m.col(0);
+}
+
+ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash,
+                       const ReducedModelLoadOptions& options) {
+  const std::string& where = in.path();
+  // The stale checks first: they give the most useful message.
+  const double format = in.readScalar("format_version");
+  if (format != kReducedModelFormatVersion)
+    throw InputError(where + ": stale cache: format version " + std::to_string(format) +
+                     ", this software reads " + std::to_string(kReducedModelFormatVersion));
+  ReducedModel model;
+  model.version = in.readString("version");
+  if (options.require_same_version && model.version != softwareVersion())
+    throw InputError(where + ": stale cache: written by version " + model.version +
+                     ", this is version " + softwareVersion());
+  model.description_hash = in.readString("description_hash");
+  if (model.description_hash != expected_hash)
+    throw InputError(where + ": stale cache: built from description hash '" +
+                     model.description_hash + "', expected '" + expected_hash +
+                     "' (the description changed)");
+  if (!in.has("checksum"))
+    throw InputError(where + ": incomplete file: the final 'checksum' variable is missing "
+                     "(truncated or interrupted write)");
+
+  model.created_utc = in.readString("created_utc");
+  model.creator = in.readString("creator");
+  model.damping = in.readString("damping_model");
+  model.full_dof_count = static_cast<DofIndex>(
+      integer(where, "full_dof_count", in.readScalar("full_dof_count")));
+  dynamics::SecondOrderSystem& s = model.system;
+  s.mass = in.readMatrix("M_R");
+  s.stiffness = in.readMatrix("K_R");
+  s.damping = in.readMatrix("C_R");
+  s.input_stiffness = in.readMatrix("K_u");
+  s.input_damping = in.readMatrix("C_u");
+  model.gravity_load = vectorOf(in, "gravity_load");
+  s.output = in.readMatrix("H");
+  s.output_names = in.readStrings("output_names");
+  model.dof_labels = in.readStrings("dof_labels");
+  model.input_labels = in.readStrings("input_labels");
+  s.input_stations = vectorOf(in, "input_stations");
+  s.input_lateral = vectorOf(in, "input_lateral");
+  const Matrix masters = in.readMatrix("masters", io::kAnySize, 2);
+  for (DofIndex i = 0; i < masters.rows(); ++i)
+    model.masters.push_back(fem::DofRef{
+        static_cast<NodeId>(integer(where, "masters", masters(i, 0))),
+        static_cast<int>(integer(where, "masters", masters(i, 1)))});
+  model.fixed_interface_frequencies_hz = vectorOf(in, "fixed_interface_frequencies_hz");
+  const Vector numbers = vectorOf(in, "selected_mode_numbers");
+  const Vector frequencies = vectorOf(in, "selected_mode_frequencies_hz");
+  const std::vector<std::string> reasons =
+      in.readStrings("selected_mode_reasons", numbers.size());
+  if (frequencies.size() != numbers.size())
+    throw InputError(where + ": " + std::to_string(numbers.size()) + " selected modes but " +
+                     std::to_string(frequencies.size()) + " frequencies");
+  for (DofIndex i = 0; i < numbers.size(); ++i) {
+    const double number = integer(where, "selected_mode_numbers", numbers(i));
+    if (number < 1) throw InputError(where + ": selected_mode_numbers has mode " + std::to_string(number));
+    model.selected_modes.push_back(SelectedMode{static_cast<int>(number) - 1, frequencies(i),
+                                                reasons[static_cast<std::size_t>(i)]});
+  }
+  checkConsistency(model, where, options.symmetry_tolerance);
+  const std::string stored = in.readString("checksum");
+  const std::string computed = checksum(toVariables(model));
+  if (stored != computed)
+    throw InputError(where + ": corrupted: checksum " + computed + " of the content differs from "
+                     "the stored " + stored);
+  return model;
+}
+
+}  // namespace
+
+void saveReducedModel(const ReducedModel& model, const std::string& path) {
+  checkConsistency(model, path + " (saving)", ReducedModelLoadOptions{}.symmetry_tolerance);
+  const std::vector<Variable> variables = toVariables(model);
+  io::MatWriter out(path);
+  for (const Variable& v : variables) {
+    switch (v.kind) {
+      case Variable::Kind::Numeric:
+        out.writeMatrix(v.name, v.numeric);
+        break;
+      case Variable::Kind::Text:
+        out.writeString(v.name, v.text);
+        break;
+      case Variable::Kind::TextList:
+        out.writeStrings(v.name, v.texts);
+        break;
+    }
+  }
+  out.writeString("checksum", checksum(variables));
+  out.close();
+}
+
+ReducedModel loadReducedModel(const std::string& path, const std::string& expected_hash,
+                              const ReducedModelLoadOptions& options) {
+  try {
+    const io::MatReader in(path);
+    return readModel(in, expected_hash, options);
+  } catch (const StaleCacheError&) {
+    throw;
+  } catch (const InputError& e) {
+    throw StaleCacheError(e.what());
+  }
+}
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,154 @@
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+namespace {
+
+// Stations closer to equal spacing than this (relative) use the O(1) cell lookup.
+constexpr double kUniformTolerance = 1e-9;
+
+std::string number(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+void checkIncreasing(const Vector& values, const std::string& what, const std::string& name) {
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    if (!std::isfinite(values(i))) {
+      throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " is " +
+                       number(values(i)) + ", not a finite number");
+    }
+    if (i > 0 && values(i) <= values(i - 1)) {
+      throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " (" +
+                       number(values(i)) + " m) is not greater than " + what + " " +
+                       std::to_string(i - 1) + " (" + number(values(i - 1)) +
+                       " m); they must be strictly increasing");
+    }
+  }
+}
+
+}  // namespace
+
+Terrain::Terrain(Vector stations, Vector lateral, Matrix heights, std::string name)
+    : stations_(std::move(stations)),
+      lateral_(std::move(lateral)),
+      heights_(std::move(heights)),
+      name_(std::move(name)) {
+  if (stations_.size() == 0) throw InputError("terrain '" + name_ + "': no stations");
+  if (lateral_.size() == 0) throw InputError("terrain '" + name_ + "': no lateral lines");
+  if (heights_.rows() != lateral_.size() || heights_.cols() != stations_.size()) {
+    throw InputError("terrain '" + name_ + "': heights are " + std::to_string(heights_.rows()) +
+                     " x " + std::to_string(heights_.cols()) + ", expected " +
+                     std::to_string(lateral_.size()) + " lateral lines x " +
+                     std::to_string(stations_.size()) + " stations");
+  }
+  checkIncreasing(stations_, "station", name_);
+  checkIncreasing(lateral_, "lateral line", name_);
+  for (Eigen::Index j = 0; j < heights_.rows(); ++j) {
+    for (Eigen::Index i = 0; i < heights_.cols(); ++i) {
+      if (!std::isfinite(heights_(j, i))) {
+        throw InputError("terrain '" + name_ + "': height at lateral line " + std::to_string(j) +
+                         " (y = " + number(lateral_(j)) + " m), station " + std::to_string(i) +
+                         " (x = " + number(stations_(i)) + " m) is not finite");
+      }
+    }
+  }
+  const Eigen::Index n = stations_.size();
+  if (n > 1) {
+    spacing_ = (stations_(n - 1) - stations_(0)) / static_cast<double>(n - 1);
+    uniform_ = true;
+    for (Eigen::Index i = 1; i < n && uniform_; ++i) {
+      const double expected = stations_(0) + static_cast<double>(i) * spacing_;
+      uniform_ = std::abs(stations_(i) - expected) <= kUniformTolerance * spacing_ * n;
+    }
+  }
+}
+
+Eigen::Index Terrain::stationCell(double x) const {
+  const Eigen::Index last_cell = stations_.size() - 2;
+  Eigen::Index i = 0;
+  if (uniform_) {
+    i = static_cast<Eigen::Index>(std::floor((x - stations_(0)) / spacing_));
+    i = std::clamp<Eigen::Index>(i, 0, last_cell);
+    // Rounding of (x - x0) / dx may land one cell off; the grid values decide.
+    if (i < last_cell && x >= stations_(i + 1)) ++i;
+    if (i > 0 && x < stations_(i)) --i;
+  } else {
+    const double* begin = stations_.data();
+    const double* end = begin + stations_.size();
+    i = static_cast<Eigen::Index>(std::upper_bound(begin, end, x) - begin) - 1;
+    i = std::clamp<Eigen::Index>(i, 0, last_cell);
+  }
+  return i;
+}
+
+void Terrain::lateralCell(double y, Eigen::Index* j, double* w) const {
+  const Eigen::Index n = lateral_.size();
+  if (n == 1 || y <= lateral_(0)) {
+    *j = 0;
+    *w = 0.0;
+    return;
+  }
+  if (y >= lateral_(n - 1)) {
+    *j = n - 2;
+    *w = 1.0;
+    return;
+  }
+  const double* begin = lateral_.data();
+  *j = static_cast<Eigen::Index>(std::upper_bound(begin, begin + n, y) - begin) - 1;
+  *w = (y - lateral_(*j)) / (lateral_(*j + 1) - lateral_(*j));
+}
+
+double Terrain::height(double x, double y) const {
+  if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+  Eigen::Index j = 0;
+  double wy = 0.0;
+  lateralCell(y, &j, &wy);
+  const auto at = [&](Eigen::Index i) {
+    return wy == 0.0 ? heights_(j, i) : (1.0 - wy) * heights_(j, i) + wy * heights_(j + 1, i);
+  };
+  const Eigen::Index n = stations_.size();
+  if (x <= stations_(0)) return at(0);
+  if (x >= stations_(n - 1)) return at(n - 1);
+  const Eigen::Index i = stationCell(x);
+  const double wx = (x - stations_(i)) / (stations_(i + 1) - stations_(i));
+  return (1.0 - wx) * at(i) + wx * at(i + 1);
+}
+
+double Terrain::slope(double x, double y) const {
+  if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Index n = stations_.size();
+  if (n == 1 || x < stations_(0) || x >= stations_(n - 1)) return 0.0;
+  Eigen::Index j = 0;
+  double wy = 0.0;
+  lateralCell(y, &j, &wy);
+  const Eigen::Index i = stationCell(x);
+  const auto cell_slope = [&](Eigen::Index line) {
+    return (heights_(line, i + 1) - heights_(line, i)) / (stations_(i + 1) - stations_(i));
+  };
+  return wy == 0.0 ? cell_slope(j) : (1.0 - wy) * cell_slope(j) + wy * cell_slope(j + 1);
+}
+
+Vector Terrain::profile(double y) const {
+  Eigen::Index j = 0;
+  double wy = 0.0;
+  lateralCell(y, &j, &wy);
+  if (wy == 0.0) return heights_.row(j).transpose();
+  return ((1.0 - wy) * heights_.row(j) + wy * heights_.row(j + 1)).transpose();
+}
+
+void Terrain::saveCsv(const std::string& path) const { saveTerrainCsv(*this, path); }
+
+void Terrain::saveYaml(const std::string& path) const { saveTerrainYaml(*this, path); }
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,198 @@
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+namespace {
+
+// Relative slack on lengths compared in the searches (stations are sums of rounded products).
+constexpr double kSlack = 1e-9;
+
+std::string format(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+void TerrainBuffer::addPatch(double start_station, double spacing, const Vector& lateral,
+                             const Matrix& heights) {
+  const std::string where = "terrain patch at station " + format(start_station) + " m: ";
+  if (!std::isfinite(start_station)) throw InputError(where + "start station is not finite");
+  if (!std::isfinite(spacing) || spacing <= 0.0) {
+    throw InputError(where + "spacing " + format(spacing) + " m must be positive and finite");
+  }
+  if (lateral.size() == 0) throw InputError(where + "no lateral positions");
+  if (heights.rows() != lateral.size()) {
+    throw InputError(where + "heights have " + std::to_string(heights.rows()) +
+                     " lines but there are " + std::to_string(lateral.size()) +
+                     " lateral positions");
+  }
+  if (heights.cols() == 0) throw InputError(where + "no samples");
+  for (Eigen::Index j = 0; j < lateral.size(); ++j) {
+    if (!std::isfinite(lateral(j))) {
+      throw InputError(where + "lateral position " + std::to_string(j) + " is not finite");
+    }
+    if (j > 0 && lateral(j) <= lateral(j - 1)) {
+      throw InputError(where + "lateral position " + std::to_string(j) + " (" + format(lateral(j)) +
+                       " m) is not greater than the previous one (" + format(lateral(j - 1)) +
+                       " m)");
+    }
+  }
+  for (Eigen::Index j = 0; j < heights.rows(); ++j) {
+    for (Eigen::Index k = 0; k < heights.cols(); ++k) {
+      if (!std::isfinite(heights(j, k))) {
+        throw InputError(where + "height at line " + std::to_string(j) + ", sample " +
+                         std::to_string(k) + " is not finite");
+      }
+    }
+  }
+
+  Vector stations(heights.cols());
+  for (Eigen::Index k = 0; k < stations.size(); ++k) {
+    stations(k) = start_station + static_cast<double>(k) * spacing;
+  }
+  Patch patch{Terrain(stations, lateral, heights, "terrain_patch"), spacing, next_sequence_++};
+  const double end = patch.end();
+  // Older patches lying entirely under the new one can never win a query again.
+  for (auto it = patches_.lower_bound(start_station); it != patches_.end() && it->first <= end;) {
+    it = it->second.end() <= end ? patches_.erase(it) : std::next(it);
+  }
+  patches_.emplace(start_station, std::move(patch));
+  updateExtents();
+}
+
+const TerrainBuffer::Patch* TerrainBuffer::containing(double x) const {
+  const Patch* best = nullptr;
+  const double reach = max_length_ * (1.0 + kSlack);
+  for (auto it = patches_.upper_bound(x); it != patches_.begin();) {
+    --it;
+    if (it->first < x - reach) break;
+    const Patch& patch = it->second;
+    if (patch.end() >= x && (best == nullptr || patch.sequence > best->sequence)) best = &patch;
+  }
+  return best;
+}
+
+bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) const {
+  *left = nullptr;
+  *right = nullptr;
+  const double gap_limit = kBridgeFactor * max_spacing_ * (1.0 + kSlack);
+  for (auto it = patches_.upper_bound(x); it != patches_.begin();) {
+    --it;
+    if (it->first < x - max_length_ - gap_limit) break;
+    const Patch& patch = it->second;
+    if (patch.end() < x && patch.end() >= x - gap_limit &&
+        (*left == nullptr || patch.end() > (*left)->end() ||
+         (patch.end() == (*left)->end() && patch.sequence > (*left)->sequence))) {
+      *left = &patch;
+    }
+  }
+  const auto next = patches_.upper_bound(x);
+  if (*left == nullptr || next == patches_.end()) return false;
+  for (auto it = next; it != patches_.end() && it->first == next->first; ++it) {
+    if (*right == nullptr || it->second.sequence > (*right)->sequence) *right = &it->second;
+  }
+  const double gap = (*right)->grid.startStation() - (*left)->end();
+  return gap <= kBridgeFactor * std::max((*left)->spacing, (*right)->spacing) * (1.0 + kSlack);
+}
+
+bool TerrainBuffer::covers(double x) const {
+  if (std::isnan(x)) return false;
+  const Patch* left = nullptr;
+  const Patch* right = nullptr;
+  return containing(x) != nullptr || bridge(x, &left, &right);
+}
+
+double TerrainBuffer::height(double x, double y) const {
+  if (const Patch* patch = std::isnan(x) ? nullptr : containing(x)) return patch->grid.height(x, y);
+  const Patch* left = nullptr;
+  const Patch* right = nullptr;
+  if (!std::isnan(x) && bridge(x, &left, &right)) {
+    // Linear in x across the gap, between the last sample of one patch and the first of the next.
+    const double x0 = left->end();
+    const double x1 = right->grid.startStation();
+    const double w = (x - x0) / (x1 - x0);
+    return (1.0 - w) * left->grid.height(x0, y) + w * right->grid.height(x1, y);
+  }
+  throw InputError("terrain buffer: station x = " + format(x) + " m is not covered (" +
+                   (empty() ? std::string("no terrain received")
+                            : "coverage starts at " + format(coveredFrom()) +
+                                  " m, contiguous until " + format(coveredUntil()) + " m") +
+                   ")");
+}
+
+void TerrainBuffer::dropBehind(double station) {
+  if (std::isnan(station)) return;
+  std::vector<Patch> trimmed;
+  for (auto it = patches_.begin(); it != patches_.end() && it->first < station;) {
+    Patch& patch = it->second;
+    // A patch ending within a bridgeable gap of `station` still anchors the bridge.
+    if (patch.end() < station - kBridgeFactor * patch.spacing * (1.0 + kSlack)) {
+      it = patches_.erase(it);
+      continue;
+    }
+    const Vector& x = patch.grid.stations();
+    const auto* last_behind = std::upper_bound(x.data(), x.data() + x.size(), station) - 1;
+    const Eigen::Index keep_from = std::max<Eigen::Index>(0, last_behind - x.data());
+    if (keep_from == 0) {
+      ++it;
+      continue;
+    }
+    const Eigen::Index kept = x.size() - keep_from;
+    trimmed.push_back(Patch{Terrain(x.tail(kept), patch.grid.lateral(),
+                                    patch.grid.heights().rightCols(kept), patch.grid.name()),
+                            patch.spacing, patch.sequence});
+    it = patches_.erase(it);
+  }
+  for (Patch& patch : trimmed) {
+    const double start = patch.grid.startStation();
+    patches_.emplace(start, std::move(patch));
+  }
+  updateExtents();
+}
+
+double TerrainBuffer::coveredFrom() const {
+  return empty() ? std::numeric_limits<double>::infinity() : patches_.begin()->first;
+}
+
+double TerrainBuffer::coveredUntil() const {
+  if (empty()) return -std::numeric_limits<double>::infinity();
+  double reach = patches_.begin()->first;
+  double reach_spacing = patches_.begin()->second.spacing;
+  for (const auto& [start, patch] : patches_) {
+    const double gap_limit =
+        kBridgeFactor * std::max(reach_spacing, patch.spacing) * (1.0 + kSlack);
+    if (start > reach + gap_limit) break;
+    if (patch.end() > reach) {
+      reach = patch.end();
+      reach_spacing = patch.spacing;
+    }
+  }
+  return reach;
+}
+
+void TerrainBuffer::clear() {
+  patches_.clear();
+  updateExtents();
+}
+
+void TerrainBuffer::updateExtents() {
+  max_length_ = 0.0;
+  max_spacing_ = 0.0;
+  for (const auto& [start, patch] : patches_) {
+    max_length_ = std::max(max_length_, patch.end() - start);
+    max_spacing_ = std::max(max_spacing_, patch.spacing);
+  }
+}
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics

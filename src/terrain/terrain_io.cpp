@@ -1,0 +1,322 @@
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/yaml_reader.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+namespace {
+
+constexpr int kFullPrecision = std::numeric_limits<double>::max_digits10;
+
+std::string format(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+/// A YAML double-quoted scalar.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + '"';
+}
+
+std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+
+std::string trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return "";
+  const auto last = text.find_last_not_of(" \t\r");
+  return std::string(text.substr(first, last - first + 1));
+}
+
+/// Parses a whole cell as a number (locale-independent); non-finite spellings parse too, so the
+/// caller can report them as such rather than as "not a number".
+std::optional<double> parseNumber(const std::string& cell) {
+  std::string_view digits(cell);
+  if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
+  if (digits.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  if (error != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
+  return value;
+}
+
+/// One CSV line that is neither blank nor a comment.
+struct CsvRow {
+  int line;  // 1-based line in the file
+  std::vector<std::string> cells;
+};
+
+class CsvReader {
+ public:
+  explicit CsvReader(std::string path) : path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(path_ + ": " + what); }
+  [[noreturn]] void fail(const CsvRow& row, const std::string& what) const {
+    fail("row " + std::to_string(row.line) + ": " + what);
+  }
+  [[noreturn]] void fail(const CsvRow& row, std::size_t column, const std::string& what) const {
+    fail("row " + std::to_string(row.line) + ", column " + std::to_string(column + 1) + ": " +
+         what);
+  }
+
+  std::vector<CsvRow> readRows() const {
+    std::error_code error;
+    if (!std::filesystem::exists(path_, error)) fail("file not found");
+    std::ifstream in(path_);
+    if (!in) fail("cannot be opened");
+    std::vector<CsvRow> rows;
+    std::string text;
+    for (int line = 1; std::getline(in, text); ++line) {
+      const std::string content = trim(text);
+      if (content.empty() || content.front() == '#') continue;
+      CsvRow row{line, {}};
+      std::size_t begin = 0;
+      while (true) {
+        const std::size_t comma = content.find(',', begin);
+        row.cells.push_back(trim(std::string_view(content).substr(begin, comma - begin)));
+        if (comma == std::string::npos) break;
+        begin = comma + 1;
+      }
+      rows.push_back(std::move(row));
+    }
+    if (in.bad()) fail("cannot be read");
+    return rows;
+  }
+
+  /// A finite number from a cell; `what` names the quantity ("station", "height", ...).
+  double number(const CsvRow& row, std::size_t column, const std::string& what) const {
+    const std::string& cell = row.cells[column];
+    const std::optional<double> value = parseNumber(cell);
+    if (!value) fail(row, column, what + " '" + cell + "' is not a number");
+    if (!std::isfinite(*value)) fail(row, column, what + " '" + cell + "' is not a finite number");
+    return *value;
+  }
+
+ private:
+  std::string path_;
+};
+
+std::ofstream openForWriting(const std::string& path) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot be opened for writing");
+  out << std::setprecision(kFullPrecision);
+  return out;
+}
+
+void finishWriting(std::ofstream& out, const std::string& path) {
+  out.close();
+  if (!out) throw InputError(path + ": write failed");
+}
+
+void writeFlowList(std::ostream& out, const Eigen::Ref<const Eigen::RowVectorXd>& values) {
+  out << '[';
+  for (Eigen::Index i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values(i);
+  out << ']';
+}
+
+/// Checks a strictly increasing YAML list, failing on the offending element.
+void checkIncreasing(const std::vector<io::YamlValue>& items, const std::vector<double>& values,
+                     const std::string& what) {
+  for (std::size_t i = 1; i < values.size(); ++i) {
+    if (values[i] == values[i - 1]) {
+      items[i].fail("duplicate " + what + " " + format(values[i]) + " m (same as entry " +
+                    std::to_string(i - 1) + ")");
+    }
+    if (values[i] < values[i - 1]) {
+      items[i].fail(what + " " + format(values[i]) + " m is less than the previous one (" +
+                    format(values[i - 1]) + " m); " + what + "s must be strictly increasing");
+    }
+  }
+}
+
+}  // namespace
+
+Terrain loadTerrainCsv(const std::string& path) {
+  const CsvReader reader(path);
+  const std::vector<CsvRow> rows = reader.readRows();
+  if (rows.empty()) reader.fail("empty (no header or data rows)");
+
+  const CsvRow& first = rows.front();
+  const bool has_header = !parseNumber(first.cells.front()).has_value();
+  const std::size_t columns = first.cells.size();
+  Vector lateral = Vector::Zero(1);
+  if (has_header) {
+    if (columns < 2) {
+      reader.fail(first, "the header needs a station label and at least one height column");
+    }
+    const bool labelled_single_line = columns == 2 && !parseNumber(first.cells[1]).has_value();
+    if (!labelled_single_line) {
+      lateral.resize(static_cast<Eigen::Index>(columns - 1));
+      for (std::size_t c = 1; c < columns; ++c) {
+        lateral(static_cast<Eigen::Index>(c - 1)) = reader.number(first, c, "lateral position");
+        if (c > 1 && lateral(c - 1) <= lateral(c - 2)) {
+          reader.fail(first, c,
+                      "lateral position " + format(lateral(c - 1)) + " m is not greater than " +
+                          format(lateral(c - 2)) +
+                          " m; lateral positions must be strictly increasing");
+        }
+      }
+    }
+  } else if (columns != 2) {
+    reader.fail(first, std::to_string(columns) +
+                           " columns need a header row giving the lateral position y [m] of each "
+                           "height column (only a 2-column x,h file may omit it)");
+  }
+
+  const std::size_t first_data = has_header ? 1 : 0;
+  if (rows.size() <= first_data) reader.fail("no data rows (only a header)");
+  const auto stations = static_cast<Eigen::Index>(rows.size() - first_data);
+  Vector x(stations);
+  Matrix h(lateral.size(), stations);
+  for (Eigen::Index i = 0; i < stations; ++i) {
+    const CsvRow& row = rows[first_data + static_cast<std::size_t>(i)];
+    if (row.cells.size() != columns) {
+      reader.fail(row, "expected " + std::to_string(columns) + " columns (x and " +
+                           std::to_string(columns - 1) + " heights), got " +
+                           std::to_string(row.cells.size()));
+    }
+    x(i) = reader.number(row, 0, "station");
+    if (i > 0 && x(i) == x(i - 1)) {
+      reader.fail(row, "duplicate station x = " + format(x(i)) + " m (also on row " +
+                           std::to_string(rows[first_data + i - 1].line) + ")");
+    }
+    if (i > 0 && x(i) < x(i - 1)) {
+      reader.fail(row, "station x = " + format(x(i)) + " m is less than the previous station " +
+                           format(x(i - 1)) + " m; stations must be strictly increasing");
+    }
+    for (std::size_t c = 1; c < columns; ++c) {
+      h(static_cast<Eigen::Index>(c - 1), i) = reader.number(row, c, "height");
+    }
+  }
+  return Terrain(x, lateral, h, stem(path));
+}
+
+Terrain loadTerrainYaml(const std::string& path) {
+  const io::YamlValue root = io::YamlValue::loadFile(path);
+  root.expectMap({"name", "spacing", "start", "x", "y", "heights"});
+  const std::string name = root.has("name") ? root["name"].asString() : stem(path);
+  const bool has_spacing = root.has("spacing");
+  const bool has_x = root.has("x");
+  if (has_spacing == has_x) {
+    root.fail("give exactly one of 'spacing' (uniform stations) and 'x' (explicit stations)");
+  }
+  if (has_x && root.has("start")) root["start"].fail("'start' applies only with 'spacing'");
+
+  // Lateral lines, then one height row per line.
+  Vector lateral = Vector::Zero(1);
+  std::vector<std::vector<double>> rows;
+  const io::YamlValue heights = root["heights"];
+  if (const std::optional<io::YamlValue> y = root.find("y")) {
+    const std::vector<io::YamlValue> items = y->elements("a list of lateral positions [m]");
+    if (items.empty()) y->fail("expected at least one lateral position");
+    std::vector<double> values;
+    for (const io::YamlValue& item : items) values.push_back(item.asNumber());
+    checkIncreasing(items, values, "lateral position");
+    lateral = Eigen::Map<const Vector>(values.data(), static_cast<Eigen::Index>(values.size()));
+    for (const io::YamlValue& row :
+         heights.elements(items.size(), "one list of heights per lateral position in 'y'")) {
+      rows.push_back(row.asNumbers());
+    }
+  } else {
+    rows.push_back(heights.asNumbers());
+  }
+  const std::size_t count = rows.front().size();
+  if (count == 0) heights.fail("expected at least one height");
+  for (std::size_t j = 1; j < rows.size(); ++j) {
+    if (rows[j].size() != count) {
+      heights.elements()[j].fail("expected " + std::to_string(count) +
+                                 " heights (one per station, as heights[0]), got " +
+                                 std::to_string(rows[j].size()));
+    }
+  }
+
+  Vector x(static_cast<Eigen::Index>(count));
+  if (has_spacing) {
+    const io::YamlValue spacing_value = root["spacing"];
+    const double spacing = spacing_value.asNumber();
+    if (spacing <= 0.0) spacing_value.fail("spacing " + format(spacing) + " m must be > 0");
+    const double start = root.has("start") ? root["start"].asNumber() : 0.0;
+    for (std::size_t i = 0; i < count; ++i) x(static_cast<Eigen::Index>(i)) = start + i * spacing;
+  } else {
+    const std::vector<io::YamlValue> items =
+        root["x"].elements(count, "one station [m] per height (" + std::to_string(count) + ")");
+    std::vector<double> values;
+    for (const io::YamlValue& item : items) values.push_back(item.asNumber());
+    checkIncreasing(items, values, "station");
+    x = Eigen::Map<const Vector>(values.data(), static_cast<Eigen::Index>(count));
+  }
+
+  Matrix h(lateral.size(), static_cast<Eigen::Index>(count));
+  for (std::size_t j = 0; j < rows.size(); ++j) {
+    h.row(static_cast<Eigen::Index>(j)) =
+        Eigen::Map<const Eigen::RowVectorXd>(rows[j].data(), static_cast<Eigen::Index>(count));
+  }
+  return Terrain(x, lateral, h, name);
+}
+
+Terrain loadTerrain(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".csv") return loadTerrainCsv(path);
+  if (extension == ".yaml" || extension == ".yml") return loadTerrainYaml(path);
+  throw InputError(path + ": unknown terrain file type '" + extension +
+                   "' (expected .csv, .yaml or .yml)");
+}
+
+void saveTerrainCsv(const Terrain& terrain, const std::string& path) {
+  std::ofstream out = openForWriting(path);
+  out << "# tracked_vehicle_dynamics terrain '" << terrain.name()
+      << "': station x [m], then the height [m] of each lateral line y [m]\n";
+  out << 'x';
+  for (Eigen::Index j = 0; j < terrain.lateral().size(); ++j) out << ',' << terrain.lateral()(j);
+  out << '\n';
+  for (Eigen::Index i = 0; i < terrain.stations().size(); ++i) {
+    out << terrain.stations()(i);
+    for (Eigen::Index j = 0; j < terrain.lateral().size(); ++j) {
+      out << ',' << terrain.heights()(j, i);
+    }
+    out << '\n';
+  }
+  finishWriting(out, path);
+}
+
+void saveTerrainYaml(const Terrain& terrain, const std::string& path) {
+  std::ofstream out = openForWriting(path);
+  out << "# tracked_vehicle_dynamics terrain: stations x [m], lateral lines y [m] (y left),\n"
+         "# heights [m], one list per y with one value per station.\n";
+  out << "name: " << quoted(terrain.name()) << '\n';
+  out << "x: ";
+  writeFlowList(out, terrain.stations().transpose());
+  out << "\ny: ";
+  writeFlowList(out, terrain.lateral().transpose());
+  out << "\nheights:\n";
+  for (Eigen::Index j = 0; j < terrain.heights().rows(); ++j) {
+    out << "  - ";
+    writeFlowList(out, terrain.heights().row(j));
+    out << '\n';
+  }
+  finishWriting(out, path);
+}
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,12 @@
+// Subcommands of the `tvd` command-line tool; each registers itself on the CLI11 app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+void registerModesCommand(CLI::App& app);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,18 @@
+// Result files shared by the CLI subcommands (CSV for spreadsheets, .mat for MATLAB/Octave/SciPy).
+#pragma once
+
+#include <string>
+
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+/// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue), DIR/shapes.csv (one row per active DOF:
+/// node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz, eigenvalues,
+/// shapes, dof_node, dof_direction). Creates DIR. Throws InputError if it cannot write.
+void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,30 @@
+// tvd: the offline command-line tool (modes, MAC, reduction, FRF, simulation).
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "commands.h"
+#include "tracked_vehicle_dynamics/error.h"
+
+int main(int argc, char** argv) {
+  namespace tvd = tracked_vehicle_dynamics;
+  CLI::App app{"tvd: tracked vehicle vertical dynamics from a reduced finite-element model"};
+  app.set_version_flag("--version", std::string(TVD_VERSION));
+  app.require_subcommand(1);
+  tvd::tools::registerModesCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const tvd::InputError& e) {
+    std::cerr << "tvd: error: " << e.what() << "\n";
+    return 2;
+  } catch (const tvd::SolverError& e) {
+    std::cerr << "tvd: solver error: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "tvd: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,267 @@
+#include "tracked_vehicle_dynamics/vehicle/track_assembly.h"
+
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Calibration stops when every stiffness matches its target to this relative error.
+constexpr double kCalibrationTolerance = 1e-9;
+constexpr int kMaxCalibrationIterations = 100;
+
+// Local node numbers inside an assembly's id span.
+constexpr NodeId kLink = 0, kFrontPin = 10, kRearPin = 20, kSole = 30, kCore = 40, kTop = 50;
+
+const char* const kSteel = "track_steel";
+const char* const kLinkSteel = "track_link_steel";
+const char* const kPinSection = "track_pin";
+const char* const kMemberSection = "track_link_member";
+const char* const kBeamSection = "track_link_beam";
+
+double pinDistance(const TrackAssemblyDescription& t) { return t.pitch - t.pin_joint_distance; }
+
+double pinMass(const TrackAssemblyDescription& t) {
+  return 2.0 * t.steel_density * 0.25 * kPi * t.pin_diameter * t.pin_diameter * t.width;
+}
+
+// Total length x area of the link's beams (members and transverse beam), to spread the link mass.
+double linkVolume(const TrackAssemblyDescription& t) {
+  return 6.0 * 0.5 * pinDistance(t) * t.link_member_area + t.width * t.link_beam_area;
+}
+
+double linkMass(const TrackAssemblyDescription& t) {
+  return t.mass - 2.0 * t.pad_mass - pinMass(t);
+}
+
+double padHeight(const TrackAssemblyDescription& t) {
+  return t.pad_rubber_below_core + t.pad_core_thickness + t.pad_rubber_above_core;
+}
+
+}  // namespace
+
+void addTrackAssemblyProperties(fem::Model& model, const TrackAssemblyDescription& t) {
+  if (model.findMaterial(kSteel)) return;
+  if (!(linkMass(t) > 0.0))
+    throw InputError("track_assembly.mass: " + std::to_string(t.mass) +
+                     " kg does not cover the pads and pins (" +
+                     std::to_string(2.0 * t.pad_mass + pinMass(t)) + " kg)");
+  const double g = t.steel_young_modulus / (2.0 * (1.0 + t.steel_poisson_ratio));
+  model.materials.push_back({kSteel, t.steel_young_modulus, g, t.steel_density});
+  // The link's beams carry the link's mass (cast body, guide horn, bushings): an equivalent
+  // density over their volume.
+  model.materials.push_back({kLinkSteel, t.steel_young_modulus, g, linkMass(t) / linkVolume(t)});
+  const double d = t.pin_diameter;
+  const double i_pin = kPi * std::pow(d, 4) / 64.0;
+  model.sections.push_back({kPinSection, 0.25 * kPi * d * d, i_pin, i_pin, 2.0 * i_pin, 0.0, 0.0});
+  // Members run along e1 with orientation e3: local y = e2 (chain bending), local z = e3.
+  model.sections.push_back({kMemberSection, t.link_member_area, t.link_member_bending_inertia,
+                            t.link_member_lateral_inertia, t.link_member_torsion_constant, 0.0,
+                            0.0});
+  // The transverse beam runs along e2 with orientation e3: local y = -e1, bending under the pad
+  // loads is about local y.
+  model.sections.push_back({kBeamSection, t.link_beam_area, t.link_beam_bending_inertia,
+                            t.link_beam_inplane_inertia, t.link_beam_torsion_constant, 0.0, 0.0});
+}
+
+TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescription& t,
+                                    const PadSprings& springs, const AssemblyFrame& frame,
+                                    NodeId base, const std::string& name) {
+  const Matrix3& r = frame.axes;
+  auto at = [&](double xi, double eta, double zeta) {
+    return Vector3(frame.origin + r * Vector3(xi, eta, zeta));
+  };
+  const double w = t.width, ep = t.pad_lateral_offset, c = t.pad_column_offset;
+  const double hp = t.pitch_line_height, half_d = 0.5 * pinDistance(t);
+  const double z_core = t.pad_rubber_below_core + 0.5 * t.pad_core_thickness;
+  const double z_top = padHeight(t);
+  const Vector3 e3 = r.col(2);
+
+  TrackAssemblyNodes n;
+  n.base = base;
+  const double link_eta[5] = {-0.5 * w, -ep, 0.0, ep, 0.5 * w};
+  const double pin_eta[3] = {-0.5 * w, 0.0, 0.5 * w};
+  const double column_xi[3] = {-c, 0.0, c};
+  for (int i = 0; i < 5; ++i) n.link[i] = model.addNode(base + kLink + i, at(0, link_eta[i], hp));
+  for (int i = 0; i < 3; ++i) {
+    n.front_pin[i] = model.addNode(base + kFrontPin + i, at(half_d, pin_eta[i], hp));
+    n.rear_pin[i] = model.addNode(base + kRearPin + i, at(-half_d, pin_eta[i], hp));
+  }
+  for (int p = 0; p < 2; ++p)
+    for (int k = 0; k < 3; ++k) {
+      const int j = 3 * p + k;
+      const double eta = p == 0 ? -ep : ep;
+      n.soles[j] = model.addNode(base + kSole + j, at(column_xi[k], eta, 0.0));
+      n.cores[j] = model.addNode(base + kCore + j, at(column_xi[k], eta, z_core));
+      n.tops[j] = model.addNode(base + kTop + j, at(column_xi[k], eta, z_top));
+    }
+
+  // Link: transverse beam and the fore/aft members to the pins; pins across the track.
+  for (int i = 0; i < 4; ++i) model.beams.push_back({n.link[i], n.link[i + 1], kLinkSteel, kBeamSection, e3});
+  const int member_link[3] = {0, 2, 4};
+  for (int i = 0; i < 3; ++i) {
+    model.beams.push_back({n.rear_pin[i], n.link[member_link[i]], kLinkSteel, kMemberSection, e3});
+    model.beams.push_back({n.link[member_link[i]], n.front_pin[i], kLinkSteel, kMemberSection, e3});
+  }
+  for (int i = 0; i < 2; ++i) {
+    model.beams.push_back({n.front_pin[i], n.front_pin[i + 1], kSteel, kPinSection, e3});
+    model.beams.push_back({n.rear_pin[i], n.rear_pin[i + 1], kSteel, kPinSection, e3});
+  }
+
+  // Pads: per column a lower layer (sole -> core) and an upper layer (core -> top), whose series
+  // stiffness is the column's; each layer's share follows its rubber thickness (k ~ 1/h).
+  const double h_total = t.pad_rubber_below_core + t.pad_rubber_above_core;
+  const double lower_factor = h_total / t.pad_rubber_below_core;
+  const double upper_factor = h_total / t.pad_rubber_above_core;
+  for (int j = 0; j < 6; ++j) {
+    const double kn = (j % 3 == 1) ? springs.normal_middle : springs.normal_end;
+    Vector6 k = Vector6::Zero();
+    k << springs.shear_x, springs.shear_y, kn, 0.0, 0.0, 0.0;
+    fem::Spring lower;
+    lower.n1 = n.soles[j];
+    lower.n2 = n.cores[j];
+    lower.stiffness = lower_factor * k;
+    lower.frame = r;
+    lower.name = name + "/pad_lower_" + std::to_string(j);
+    model.springs.push_back(lower);
+    fem::Spring upper = lower;
+    upper.n1 = n.cores[j];
+    upper.n2 = n.tops[j];
+    upper.stiffness = upper_factor * k;
+    upper.name = name + "/pad_upper_" + std::to_string(j);
+    model.springs.push_back(upper);
+  }
+
+  // Rigid joints: each pad's steel core is rigid; the pad tops sit in the link's cavities; the
+  // soles' rotations follow the core (the pad bottom stays parallel to the core plate).
+  for (int p = 0; p < 2; ++p) {
+    const NodeId core_master = n.cores[3 * p + 1];
+    fem::RigidJoint core;
+    core.master = core_master;
+    core.slaves = {n.cores[3 * p], n.cores[3 * p + 2]};
+    core.name = name + "/pad_core_" + std::to_string(p);
+    model.rigid_joints.push_back(core);
+    fem::RigidJoint top;
+    top.master = n.link[p == 0 ? 1 : 3];
+    top.slaves = {n.tops[3 * p], n.tops[3 * p + 1], n.tops[3 * p + 2]};
+    top.name = name + "/pad_top_" + std::to_string(p);
+    model.rigid_joints.push_back(top);
+    fem::RigidJoint sole;
+    sole.master = core_master;
+    sole.slaves = {n.soles[3 * p], n.soles[3 * p + 1], n.soles[3 * p + 2]};
+    sole.dofs = {{false, false, false, true, true, true}};
+    sole.name = name + "/pad_sole_" + std::to_string(p);
+    model.rigid_joints.push_back(sole);
+  }
+
+  // Pad masses: a share at the soles (so every translational DOF has mass), the rest on the core
+  // as a rigid plate spanning the columns and half the track width.
+  const double sole_mass = t.pad_sole_mass_fraction * t.pad_mass / 3.0;
+  const double core_mass = (1.0 - t.pad_sole_mass_fraction) * t.pad_mass;
+  const double len = 2.0 * c, wid = w - 2.0 * ep > 0 ? 2.0 * (0.5 * w - ep) : ep, hgt = padHeight(t);
+  const Vector3 local_inertia(core_mass * (wid * wid + hgt * hgt) / 12.0,
+                              core_mass * (len * len + hgt * hgt) / 12.0,
+                              core_mass * (len * len + wid * wid) / 12.0);
+  for (int p = 0; p < 2; ++p) {
+    fem::Mass core;
+    core.node = n.cores[3 * p + 1];
+    core.mass = core_mass;
+    core.inertia = r * local_inertia.asDiagonal() * r.transpose();
+    core.name = name + "/pad_" + std::to_string(p);
+    model.masses.push_back(core);
+    for (int k = 0; k < 3; ++k) {
+      fem::Mass sole;
+      sole.node = n.soles[3 * p + k];
+      sole.mass = sole_mass;
+      sole.name = name + "/pad_sole_" + std::to_string(3 * p + k);
+      model.masses.push_back(sole);
+    }
+  }
+  return n;
+}
+
+namespace {
+
+fem::Model standaloneModel(const TrackAssemblyDescription& t, const PadSprings& springs,
+                           TrackAssemblyNodes& nodes) {
+  fem::Model model;
+  model.name = "track_assembly";
+  addTrackAssemblyProperties(model, t);
+  nodes = addTrackAssembly(model, t, springs, AssemblyFrame{}, 0, "track_assembly");
+  for (NodeId sole : nodes.soles) model.fixed.push_back({sole, {{true, true, true, false, false, false}}});
+  return model;
+}
+
+}  // namespace
+
+TrackAssemblyStiffness measureTrackAssembly(const fem::Model& model,
+                                            const TrackAssemblyNodes& nodes) {
+  const fem::System sys = fem::assemble(model);
+  fem::SparseCholesky chol;
+  if (!chol.factorize(sys.stiffness))
+    throw SolverError("track assembly: the stiffness matrix is not positive definite");
+  // Unit total load shared over the link nodes, in x, y, z and as a moment about y.
+  const int directions[4] = {0, 1, 2, 4};
+  Matrix loads = Matrix::Zero(sys.size(), 4);
+  for (int c = 0; c < 4; ++c)
+    for (NodeId id : nodes.link)
+      loads(sys.dofs.requireActive(id, directions[c]), c) = 1.0 / nodes.link.size();
+  const Matrix x = chol.solve(loads);
+  double mean[4] = {0, 0, 0, 0};
+  for (int c = 0; c < 4; ++c)
+    for (NodeId id : nodes.link) mean[c] += x(sys.dofs.active(id, directions[c]), c) / nodes.link.size();
+  return TrackAssemblyStiffness{1.0 / mean[0], 1.0 / mean[1], 1.0 / mean[2], 1.0 / mean[3]};
+}
+
+PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
+  // Start from the rigid-link estimate: 6 columns share k_z and the shears; the fore/aft columns
+  // carry the share f of the normal stiffness that gives k_ry = f k_z c^2.
+  const double c2 = t.pad_column_offset * t.pad_column_offset;
+  double normal_sum = t.compression_stiffness;  // sum over the 6 columns
+  double end_share = std::min(1.0, t.torsional_stiffness_y / (t.compression_stiffness * c2));
+  PadSprings s;
+  s.shear_x = t.shear_stiffness_x / 6.0;
+  s.shear_y = t.shear_stiffness_y / 6.0;
+  for (int it = 1; it <= kMaxCalibrationIterations; ++it) {
+    s.normal_end = end_share * normal_sum / 4.0;
+    s.normal_middle = (1.0 - end_share) * normal_sum / 2.0;
+    s.iterations = it;
+    TrackAssemblyNodes nodes;
+    const TrackAssemblyStiffness k = measureTrackAssembly(standaloneModel(t, s, nodes), nodes);
+    const double rx = t.shear_stiffness_x / k.kx, ry = t.shear_stiffness_y / k.ky;
+    const double rz = t.compression_stiffness / k.kz, rr = t.torsional_stiffness_y / k.kry;
+    if (std::max({std::abs(rx - 1), std::abs(ry - 1), std::abs(rz - 1), std::abs(rr - 1)}) <
+        kCalibrationTolerance)
+      return s;
+    // Each stiffness is governed mainly by its own spring group (series with the nearly rigid
+    // link): scale the group by target / measured.
+    s.shear_x *= rx;
+    s.shear_y *= ry;
+    normal_sum *= rz;
+    end_share *= rr;
+    if (end_share > 1.0)
+      throw InputError("track_assembly.pad_column_offset: the spring columns (" +
+                       std::to_string(t.pad_column_offset) +
+                       " m from the pad centre) are too close together to give "
+                       "torsional_stiffness_y = " + std::to_string(t.torsional_stiffness_y) +
+                       " N*m/rad");
+  }
+  throw SolverError("track assembly calibration did not converge in " +
+                    std::to_string(kMaxCalibrationIterations) + " iterations");
+}
+
+TrackAssemblyModel buildTrackAssemblyModel(const TrackAssemblyDescription& t) {
+  TrackAssemblyModel out;
+  out.springs = calibrateTrackAssembly(t);
+  out.model = standaloneModel(t, out.springs, out.nodes);
+  return out;
+}
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,439 @@
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/yaml_reader.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegree = kPi / 180.0;
+/// Relative tolerance of the chain-length checks (pitch x count against the stated lengths).
+constexpr double kLengthTolerance = 1e-3;
+
+enum class Kind { Real, Integer, RealList, IntegerList, Angle };
+enum class Range { Any, Positive, NonNegative, Fraction };
+
+/// One scalar or list value of the description: where it lives in the file, its unit and range.
+/// The table of fields is the single list that the loader, the validator and the canonical dump
+/// share, so a parameter is declared once.
+struct Field {
+  const char* section;
+  const char* key;
+  const char* unit;
+  Kind kind;
+  Range range;
+  void* target;
+
+  std::string path() const { return std::string(section) + "." + key; }
+};
+
+std::vector<Field> fieldsOf(VehicleDescription& d) {
+  auto& h = d.hull;
+  auto& g = d.running_gear;
+  auto& w = d.road_wheel;
+  auto& s = d.suspension;
+  auto& t = d.track_assembly;
+  using K = Kind;
+  using R = Range;
+  return {
+      {"hull", "mass", "kg", K::Real, R::Positive, &h.mass},
+      {"hull", "roll_inertia", "kg*m^2", K::Real, R::Positive, &h.roll_inertia},
+      {"hull", "pitch_inertia", "kg*m^2", K::Real, R::Positive, &h.pitch_inertia},
+      {"hull", "yaw_inertia", "kg*m^2", K::Real, R::Positive, &h.yaw_inertia},
+      {"hull", "cog_height", "m", K::Real, R::Positive, &h.cog_height},
+      {"hull", "cog_x", "m", K::Real, R::Any, &h.cog_x},
+      {"hull", "length", "m", K::Real, R::Positive, &h.length},
+      {"hull", "width", "m", K::Real, R::Positive, &h.width},
+      {"hull", "height", "m", K::Real, R::Positive, &h.height},
+      {"running_gear", "axle_count", "1", K::Integer, R::Positive, &g.axle_count},
+      {"running_gear", "axle_spacing", "m", K::Real, R::Positive, &g.axle_spacing},
+      {"running_gear", "track_centre_distance", "m", K::Real, R::Positive,
+       &g.track_centre_distance},
+      {"road_wheel", "mass", "kg", K::Real, R::Positive, &w.mass},
+      {"road_wheel", "radius", "m", K::Real, R::Positive, &w.radius},
+      {"road_wheel", "spin_inertia", "kg*m^2", K::Real, R::Positive, &w.spin_inertia},
+      {"road_wheel", "tilt_inertia", "kg*m^2", K::Real, R::Positive, &w.tilt_inertia},
+      {"suspension", "torsion_bar_stiffness", "N*m/rad", K::Real, R::Positive,
+       &s.torsion_bar_stiffness},
+      {"suspension", "arm_length", "m", K::Real, R::Positive, &s.arm_length},
+      {"suspension", "arm_angle", "deg", K::Angle, R::Any, &s.arm_angle},
+      {"suspension", "pivot_y", "m", K::Real, R::Positive, &s.pivot_y},
+      {"suspension", "contact_stiffness", "N/m", K::Real, R::Positive, &s.contact_stiffness},
+      {"suspension", "contact_shear_stiffness", "N/m", K::Real, R::NonNegative,
+       &s.contact_shear_stiffness},
+      {"suspension", "arm_damping", "N*m*s/rad", K::Real, R::NonNegative, &s.arm_damping},
+      {"track_assembly", "count", "1", K::Integer, R::Positive, &t.count},
+      {"track_assembly", "ground_count", "1", K::Integer, R::Positive, &t.ground_count},
+      {"track_assembly", "chain_length", "m", K::Real, R::Positive, &t.chain_length},
+      {"track_assembly", "ground_length", "m", K::Real, R::Positive, &t.ground_length},
+      {"track_assembly", "pitch", "m", K::Real, R::Positive, &t.pitch},
+      {"track_assembly", "pin_joint_distance", "m", K::Real, R::Positive, &t.pin_joint_distance},
+      {"track_assembly", "mass", "kg", K::Real, R::Positive, &t.mass},
+      {"track_assembly", "shear_stiffness_x", "N/m", K::Real, R::Positive, &t.shear_stiffness_x},
+      {"track_assembly", "shear_stiffness_y", "N/m", K::Real, R::Positive, &t.shear_stiffness_y},
+      {"track_assembly", "compression_stiffness", "N/m", K::Real, R::Positive,
+       &t.compression_stiffness},
+      {"track_assembly", "torsional_stiffness_y", "N*m/rad", K::Real, R::Positive,
+       &t.torsional_stiffness_y},
+      {"track_assembly", "width", "m", K::Real, R::Positive, &t.width},
+      {"track_assembly", "pitch_line_height", "m", K::Real, R::Positive, &t.pitch_line_height},
+      {"track_assembly", "upper_surface_height", "m", K::Real, R::Positive,
+       &t.upper_surface_height},
+      {"track_assembly", "pad_lateral_offset", "m", K::Real, R::Positive, &t.pad_lateral_offset},
+      {"track_assembly", "pad_column_offset", "m", K::Real, R::Positive, &t.pad_column_offset},
+      {"track_assembly", "pad_rubber_below_core", "m", K::Real, R::Positive,
+       &t.pad_rubber_below_core},
+      {"track_assembly", "pad_rubber_above_core", "m", K::Real, R::Positive,
+       &t.pad_rubber_above_core},
+      {"track_assembly", "pad_core_thickness", "m", K::Real, R::Positive, &t.pad_core_thickness},
+      {"track_assembly", "pad_mass", "kg", K::Real, R::Positive, &t.pad_mass},
+      {"track_assembly", "pad_sole_mass_fraction", "1", K::Real, R::Fraction,
+       &t.pad_sole_mass_fraction},
+      {"track_assembly", "pin_diameter", "m", K::Real, R::Positive, &t.pin_diameter},
+      {"track_assembly", "steel_young_modulus", "Pa", K::Real, R::Positive,
+       &t.steel_young_modulus},
+      {"track_assembly", "steel_poisson_ratio", "1", K::Real, R::Fraction,
+       &t.steel_poisson_ratio},
+      {"track_assembly", "steel_density", "kg/m^3", K::Real, R::Positive, &t.steel_density},
+      {"track_assembly", "link_member_area", "m^2", K::Real, R::Positive, &t.link_member_area},
+      {"track_assembly", "link_member_bending_inertia", "m^4", K::Real, R::Positive,
+       &t.link_member_bending_inertia},
+      {"track_assembly", "link_member_lateral_inertia", "m^4", K::Real, R::Positive,
+       &t.link_member_lateral_inertia},
+      {"track_assembly", "link_member_torsion_constant", "m^4", K::Real, R::Positive,
+       &t.link_member_torsion_constant},
+      {"track_assembly", "link_beam_area", "m^2", K::Real, R::Positive, &t.link_beam_area},
+      {"track_assembly", "link_beam_bending_inertia", "m^4", K::Real, R::Positive,
+       &t.link_beam_bending_inertia},
+      {"track_assembly", "link_beam_inplane_inertia", "m^4", K::Real, R::Positive,
+       &t.link_beam_inplane_inertia},
+      {"track_assembly", "link_beam_torsion_constant", "m^4", K::Real, R::Positive,
+       &t.link_beam_torsion_constant},
+      {"sprocket", "radius", "m", K::Real, R::Positive, &d.sprocket.radius},
+      {"sprocket", "centre_x", "m", K::Real, R::Any, &d.sprocket.centre_x},
+      {"sprocket", "centre_z", "m", K::Real, R::Positive, &d.sprocket.centre_z},
+      {"sprocket", "mass", "kg", K::Real, R::NonNegative, &d.sprocket.mass},
+      {"sprocket", "inertia", "kg*m^2", K::Real, R::NonNegative, &d.sprocket.inertia},
+      {"idler", "radius", "m", K::Real, R::Positive, &d.idler.radius},
+      {"idler", "centre_z", "m", K::Real, R::Positive, &d.idler.centre_z},
+      {"idler", "mass", "kg", K::Real, R::NonNegative, &d.idler.mass},
+      {"idler", "inertia", "kg*m^2", K::Real, R::NonNegative, &d.idler.inertia},
+      {"return_rollers", "x", "m", K::RealList, R::Any, &d.return_rollers.x},
+      {"return_rollers", "radius", "m", K::Real, R::Positive, &d.return_rollers.radius},
+      {"return_rollers", "mass", "kg", K::Real, R::NonNegative, &d.return_rollers.mass},
+      {"ties", "ground_stiffness", "N/m", K::Real, R::Positive, &d.ties.ground_stiffness},
+      {"damping", "modal_ratio", "1", K::Real, R::Fraction, &d.damping.modal_ratio},
+      {"damping", "rayleigh_alpha", "1/s", K::Real, R::NonNegative, &d.damping.rayleigh_alpha},
+      {"damping", "rayleigh_beta", "s", K::Real, R::NonNegative, &d.damping.rayleigh_beta},
+      {"damping", "damped_stations", "1", K::IntegerList, R::Positive,
+       &d.damping.damped_stations},
+  };
+}
+
+const char* const kSections[] = {"hull",     "running_gear", "road_wheel",     "suspension",
+                                 "track_assembly", "sprocket", "idler", "return_rollers",
+                                 "ties",     "damping"};
+
+const char* dampingModelName(DampingModel m) { return m == DampingModel::Modal ? "modal" : "rayleigh"; }
+
+std::string format(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  return buffer;
+}
+
+// ------------------------------------------------------------------------------------------
+// Loading
+// ------------------------------------------------------------------------------------------
+
+/// Checks a map holds exactly the keys in `allowed` (the reader's expectMap takes a fixed list).
+void expectKeys(const io::YamlValue& map, const std::set<std::string>& allowed) {
+  map.expectMap();
+  std::string list;
+  for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+  for (const auto& [key, value] : map.entries())
+    if (!allowed.count(key)) value.fail("unknown key (allowed keys: " + list + ")");
+}
+
+void checkRange(const io::YamlValue& v, double x, Range range) {
+  if (range == Range::Positive && !(x > 0.0)) v.fail("must be positive, got " + format(x));
+  if (range == Range::NonNegative && x < 0.0) v.fail("must not be negative, got " + format(x));
+  if (range == Range::Fraction && (x < 0.0 || x > 1.0))
+    v.fail("must lie in [0, 1], got " + format(x));
+}
+
+/// Reads {value, unit, source} and returns the value node after checking unit and source.
+io::YamlValue quantity(const io::YamlValue& entry, const char* expected_unit,
+                       std::map<std::string, std::string>& sources) {
+  if (expected_unit)
+    entry.expectMap({"value", "unit", "source"});
+  else
+    entry.expectMap({"value", "source"});
+  if (expected_unit) {
+    const io::YamlValue unit = entry["unit"];
+    const std::string given = unit.asString();
+    if (given != expected_unit)
+      unit.fail("unit '" + given + "' is not the expected '" + expected_unit +
+                "' (convert the value)");
+  }
+  const io::YamlValue source = entry["source"];
+  const std::string text = source.asString();
+  if (text.empty()) source.fail("source must name where the value comes from");
+  sources[entry.path()] = text;
+  return entry["value"];
+}
+
+void readField(const io::YamlValue& section, const Field& f,
+               std::map<std::string, std::string>& sources) {
+  const io::YamlValue v = quantity(section[f.key], f.unit, sources);
+  switch (f.kind) {
+    case Kind::Real:
+    case Kind::Angle: {
+      double x = v.asNumber();
+      checkRange(v, x, f.range);
+      if (f.kind == Kind::Angle) {
+        if (std::abs(x) >= 90.0) v.fail("angle must lie in (-90, 90) deg, got " + format(x));
+        x *= kDegree;
+      }
+      *static_cast<double*>(f.target) = x;
+      break;
+    }
+    case Kind::Integer: {
+      const std::int64_t n = v.asInteger();
+      checkRange(v, static_cast<double>(n), f.range);
+      if (n > 1000000) v.fail("value " + std::to_string(n) + " is implausibly large");
+      *static_cast<int*>(f.target) = static_cast<int>(n);
+      break;
+    }
+    case Kind::RealList: {
+      std::vector<double> xs;
+      for (const io::YamlValue& e : v.elements("a list of numbers")) {
+        xs.push_back(e.asNumber());
+        checkRange(e, xs.back(), f.range);
+      }
+      *static_cast<std::vector<double>*>(f.target) = xs;
+      break;
+    }
+    case Kind::IntegerList: {
+      std::vector<int> ns;
+      for (const io::YamlValue& e : v.elements("a list of integers")) {
+        const std::int64_t n = e.asInteger();
+        checkRange(e, static_cast<double>(n), f.range);
+        ns.push_back(static_cast<int>(n));
+      }
+      *static_cast<std::vector<int>*>(f.target) = ns;
+      break;
+    }
+  }
+}
+
+// ------------------------------------------------------------------------------------------
+// Validation
+// ------------------------------------------------------------------------------------------
+
+class Checker {
+ public:
+  explicit Checker(const std::string& where) : where_(where) {}
+  void require(bool ok, const std::string& key, const std::string& what) const {
+    if (!ok) throw InputError(where_ + ": " + key + ": " + what);
+  }
+
+ private:
+  std::string where_;
+};
+
+}  // namespace
+
+void validateDescription(const VehicleDescription& d, const std::string& where) {
+  const Checker c(where);
+  // Ranges first (descriptions built in code bypass the loader).
+  VehicleDescription copy = d;
+  for (const Field& f : fieldsOf(copy)) {
+    auto bad = [&](double x) {
+      return !std::isfinite(x) || (f.range == Range::Positive && !(x > 0.0)) ||
+             (f.range == Range::NonNegative && x < 0.0) ||
+             (f.range == Range::Fraction && (x < 0.0 || x > 1.0));
+    };
+    if (f.kind == Kind::Real || f.kind == Kind::Angle) {
+      const double x = *static_cast<double*>(f.target);
+      c.require(!bad(x), f.path(), "value " + format(x) + " is out of range or not finite");
+    } else if (f.kind == Kind::Integer) {
+      const double x = *static_cast<int*>(f.target);
+      c.require(!bad(x), f.path(), "value " + format(x) + " is out of range");
+    } else if (f.kind == Kind::RealList) {
+      for (double x : *static_cast<std::vector<double>*>(f.target))
+        c.require(!bad(x), f.path(), "value " + format(x) + " is out of range or not finite");
+    } else {
+      for (int x : *static_cast<std::vector<int>*>(f.target))
+        c.require(!bad(x), f.path(), "value " + std::to_string(x) + " is out of range");
+    }
+  }
+
+  const auto& t = d.track_assembly;
+  const auto& g = d.running_gear;
+  c.require(t.ground_count <= t.count, "track_assembly.ground_count",
+            std::to_string(t.ground_count) + " ground-contact assemblies but the chain has only " +
+                std::to_string(t.count));
+  c.require(std::abs(t.pitch * t.count - t.chain_length) <= kLengthTolerance * t.chain_length,
+            "track_assembly.chain_length",
+            format(t.chain_length) + " m is inconsistent with pitch x count = " +
+                format(t.pitch * t.count) + " m");
+  c.require(std::abs(t.pitch * t.ground_count - t.ground_length) <=
+                kLengthTolerance * t.ground_length,
+            "track_assembly.ground_length",
+            format(t.ground_length) + " m is inconsistent with pitch x ground_count = " +
+                format(t.pitch * t.ground_count) + " m");
+  c.require(t.pin_joint_distance < t.pitch, "track_assembly.pin_joint_distance",
+            "must be shorter than the pitch " + format(t.pitch) + " m");
+  c.require(2.0 * t.pad_column_offset < t.pitch, "track_assembly.pad_column_offset",
+            "pads longer than the pitch overlap their neighbours");
+  c.require(t.pad_lateral_offset < 0.5 * t.width, "track_assembly.pad_lateral_offset",
+            "pads lie outside the track width " + format(t.width) + " m");
+  const double pad_height =
+      t.pad_rubber_below_core + t.pad_core_thickness + t.pad_rubber_above_core;
+  c.require(t.pitch_line_height > pad_height, "track_assembly.pitch_line_height",
+            "the pins must lie above the pads (" + format(pad_height) + " m)");
+  c.require(t.upper_surface_height > t.pitch_line_height, "track_assembly.upper_surface_height",
+            "the wheel path must lie above the pitch line");
+  c.require(g.axle_count >= 2, "running_gear.axle_count", "at least 2 axles per side are needed");
+  const double wheelbase = g.axle_spacing * (g.axle_count - 1);
+  c.require(wheelbase < t.ground_length, "track_assembly.ground_length",
+            "the ground run " + format(t.ground_length) + " m is shorter than the wheelbase " +
+                format(wheelbase) + " m");
+  c.require(t.width < g.track_centre_distance, "track_assembly.width",
+            "the tracks overlap (width >= track_centre_distance)");
+  c.require(d.suspension.pivot_y < 0.5 * g.track_centre_distance, "suspension.pivot_y",
+            "pivots must lie inboard of the track centre lines");
+  c.require(std::abs(d.hull.cog_x) < 0.5 * d.hull.length, "hull.cog_x",
+            "the centre of gravity lies outside the hull length");
+  c.require(d.hull.cog_height < d.hull.height, "hull.cog_height",
+            "the centre of gravity lies above the hull height");
+  const double inertia_sum = d.hull.roll_inertia + d.hull.pitch_inertia + d.hull.yaw_inertia;
+  for (double i : {d.hull.roll_inertia, d.hull.pitch_inertia, d.hull.yaw_inertia})
+    c.require(2.0 * i <= inertia_sum, "hull.roll_inertia",
+              "principal inertias violate the triangle inequality");
+  for (int s : d.damping.damped_stations)
+    c.require(s >= 1 && s <= g.axle_count, "damping.damped_stations",
+              "station " + std::to_string(s) + " is not in 1.." + std::to_string(g.axle_count));
+  for (double x : d.return_rollers.x)
+    c.require(x > d.sprocket.centre_x, "return_rollers.x",
+              "roller at x = " + format(x) + " m lies behind the sprocket");
+  std::set<std::string> names;
+  for (const NamedPoint& p : d.named_points) {
+    c.require(!p.name.empty(), "named_points", "a point has no name");
+    c.require(names.insert(p.name).second, "named_points." + p.name, "name given twice");
+    c.require(p.position.allFinite(), "named_points." + p.name, "non-finite position");
+  }
+}
+
+namespace {
+
+VehicleDescription fromYaml(const io::YamlValue& root) {
+  const std::string& file = root.file();
+  std::set<std::string> top = {"name", "named_points"};
+  for (const char* s : kSections) top.insert(s);
+  expectKeys(root, top);
+
+  VehicleDescription d;
+  d.sources.clear();
+  d.name = root["name"].asString();
+  if (d.name.empty()) root["name"].fail("name must not be empty");
+  std::vector<Field> fields = fieldsOf(d);
+  for (const char* section_name : kSections) {
+    const io::YamlValue section = root[section_name];
+    std::set<std::string> keys;
+    for (const Field& f : fields)
+      if (std::string(f.section) == section_name) keys.insert(f.key);
+    if (std::string(section_name) == "damping") keys.insert("model");
+    expectKeys(section, keys);
+    for (const Field& f : fields)
+      if (std::string(f.section) == section_name) readField(section, f, d.sources);
+    if (std::string(section_name) == "damping") {
+      const io::YamlValue v = quantity(section["model"], nullptr, d.sources);
+      const std::string m = v.asString();
+      if (m == "modal")
+        d.damping.model = DampingModel::Modal;
+      else if (m == "rayleigh")
+        d.damping.model = DampingModel::Rayleigh;
+      else
+        v.fail("unknown damping model '" + m + "' (modal or rayleigh)");
+    }
+  }
+  const io::YamlValue points = root["named_points"];
+  d.named_points.clear();
+  for (const auto& [name, entry] : points.entries()) {
+    const io::YamlValue v = quantity(entry, "m", d.sources);
+    d.named_points.push_back(NamedPoint{name, v.asVector3()});
+  }
+  validateDescription(d, file);
+  return d;
+}
+
+}  // namespace
+
+VehicleDescription parseVehicleDescription(const std::string& text, const std::string& file) {
+  return fromYaml(io::YamlValue::parse(text, file));
+}
+
+VehicleDescription loadVehicleDescription(const std::string& path) {
+  return fromYaml(io::YamlValue::loadFile(path));
+}
+
+std::string canonicalDescription(const VehicleDescription& d) {
+  VehicleDescription copy = d;
+  std::ostringstream out;
+  out << "name=" << d.name << "\n";
+  for (const Field& f : fieldsOf(copy)) {
+    out << f.path() << "=";
+    switch (f.kind) {
+      case Kind::Real:
+      case Kind::Angle:
+        out << format(*static_cast<double*>(f.target));
+        break;
+      case Kind::Integer:
+        out << *static_cast<int*>(f.target);
+        break;
+      case Kind::RealList:
+        for (double x : *static_cast<std::vector<double>*>(f.target)) out << format(x) << ",";
+        break;
+      case Kind::IntegerList:
+        for (int x : *static_cast<std::vector<int>*>(f.target)) out << x << ",";
+        break;
+    }
+    out << "\n";
+  }
+  out << "damping.model=" << dampingModelName(d.damping.model) << "\n";
+  for (const NamedPoint& p : d.named_points)
+    out << "named_points." << p.name << "=" << format(p.position.x()) << ","
+        << format(p.position.y()) << "," << format(p.position.z()) << "\n";
+  return out.str();
+}
+
+std::uint64_t descriptionHash(const VehicleDescription& d) {
+  // FNV-1a, 64 bit.
+  std::uint64_t hash = 14695981039346656037ull;
+  for (unsigned char ch : canonicalDescription(d)) {
+    hash ^= ch;
+    hash *= 1099511628211ull;
+  }
+  return hash;
+}
+
+std::string descriptionHashHex(const VehicleDescription& d) {
+  char buffer[17];
+  std::snprintf(buffer, sizeof(buffer), "%016llx",
+                static_cast<unsigned long long>(descriptionHash(d)));
+  return buffer;
+}
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

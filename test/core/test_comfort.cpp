@@ -1,0 +1,267 @@
+// Ride comfort: the ISO 2631-1 weightings against the standard's values, the discretised filters
+// against the analogue ones, closed forms of a_w,rms / VDV / absorbed power for sinusoids, and
+// online == batch.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// ISO 2631-1 tabulates |W| x 1000 rounded to integers.
+constexpr double kTableTolerance = 0.002;
+// Discretised vs analogue magnitude: matched up to fs/10, bilinear (pre-warped) up to fs/30.
+constexpr double kFilterToleranceDb = 0.1;
+// Phase of the matched filter beyond a constant time shift, over 0.5 .. 80 Hz [rad] (1 degree).
+constexpr double kPhaseTolerance = kPi / 180.0;
+// Closed forms for sinusoids (start-up transient of the 0.4 Hz high-pass included).
+constexpr double kClosedFormTolerance = 0.01;
+// Online and batch sums differ only by rounding order.
+constexpr double kAgreementTolerance = 1e-9;
+
+double decibels(double ratio) { return 20.0 * std::log10(ratio); }
+
+Vector sinusoid(double amplitude, double frequency, double sample_rate, double duration) {
+  const auto n = static_cast<Eigen::Index>(std::llround(duration * sample_rate));
+  Vector a(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    a(i) = amplitude * std::sin(2.0 * kPi * frequency * static_cast<double>(i) / sample_rate);
+  }
+  return a;
+}
+
+/// A test absorbed-power filter: a band-pass c (ω0/Q) s / (s^2 + ω0 s / Q + ω0^2) around 5 Hz.
+/// (Not the Pradko-Lee coefficients, which the caller supplies; only the mechanics are tested.)
+std::vector<AnalogSection> testPowerFilter() {
+  const double w0 = 2.0 * kPi * 5.0;
+  const double q = 0.7;
+  const double c = 0.3;
+  return {AnalogSection{0.0, c * w0 / q, 0.0, w0 * w0, w0 / q, 1.0, 5.0}};
+}
+
+template <typename Call>
+void expectInputError(Call call, const std::string& part) {
+  try {
+    call();
+    ADD_FAILURE() << "no InputError thrown (expected one mentioning '" << part << "')";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+        << "message \"" << e.what() << "\" lacks \"" << part << "\"";
+  }
+}
+
+TEST(Iso2631, WeightingsMatchTheStandardsTable) {
+  struct Point {
+    Weighting weighting;
+    double frequency;
+    double magnitude;
+  };
+  // ISO 2631-1:1997, one-third-octave weighting factors (x 1000 in the standard).
+  const std::vector<Point> points = {
+      {Weighting::Wk, 1.0, 0.482}, {Weighting::Wk, 2.0, 0.531},  {Weighting::Wk, 4.0, 0.967},
+      {Weighting::Wk, 6.3, 1.054}, {Weighting::Wk, 10.0, 0.988}, {Weighting::Wk, 16.0, 0.768},
+      {Weighting::Wd, 1.0, 1.011},
+  };
+  for (const Point& p : points) {
+    EXPECT_NEAR(std::abs(iso2631Response(p.weighting, p.frequency)), p.magnitude, kTableTolerance)
+        << (p.weighting == Weighting::Wk ? "Wk" : "Wd") << " at " << p.frequency << " Hz";
+  }
+}
+
+/// Largest |20 log10(|H_digital| / |W|)| over 0.1 Hz .. f_max, 20 points per decade and f_max.
+double worstErrorDb(const WeightingFilter& filter, Weighting weighting, double f_max) {
+  double worst = 0.0;
+  for (double f = 0.1;; f = std::min(f * std::pow(10.0, 0.05), f_max)) {
+    const double ratio = std::abs(filter.response(f)) / std::abs(iso2631Response(weighting, f));
+    worst = std::max(worst, std::abs(decibels(ratio)));
+    if (f >= f_max) return worst;
+  }
+}
+
+TEST(Iso2631, MatchedFilterMatchesAnalogueUpToTenthOfSampleRate) {
+  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+    for (double fs : {30.0, 100.0, 200.0, 1000.0, 5000.0}) {
+      const WeightingFilter filter = WeightingFilter::iso2631(weighting, fs);
+      EXPECT_LT(worstErrorDb(filter, weighting, 0.1 * fs), kFilterToleranceDb) << "fs = " << fs;
+    }
+  }
+  // The 100 Hz band-limiting low-pass is only discretised when it is well below Nyquist.
+  EXPECT_EQ(WeightingFilter::iso2631(Weighting::Wk, 1000.0).sections().size(), 4u);
+  EXPECT_EQ(WeightingFilter::iso2631(Weighting::Wk, 200.0).sections().size(), 3u);
+  EXPECT_EQ(WeightingFilter::iso2631(Weighting::Wd, 1000.0).sections().size(), 3u);
+}
+
+TEST(Iso2631, MatchedFilterPhaseIsAnalogueUpToATimeShift) {
+  // arg(H_d / W) = 2π f τ for one constant τ (a shift the metrics are blind to), over the
+  // standard's band 0.5 .. 80 Hz below fs/10.
+  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+    for (double fs : {100.0, 1000.0, 5000.0}) {
+      const WeightingFilter filter = WeightingFilter::iso2631(weighting, fs);
+      const auto phase_error = [&](double f) {
+        return std::arg(filter.response(f) / iso2631Response(weighting, f));
+      };
+      const double advance = phase_error(1.0) / (2.0 * kPi * 1.0);  // τ [s]
+      EXPECT_LT(std::abs(advance) * fs, 1.5) << "fs = " << fs;
+      for (double f = 0.5; f <= std::min(80.0, 0.1 * fs); f *= std::pow(10.0, 0.1)) {
+        EXPECT_NEAR(phase_error(f), 2.0 * kPi * f * advance, kPhaseTolerance)
+            << "fs = " << fs << " Hz, f = " << f << " Hz";
+      }
+    }
+  }
+}
+
+TEST(Iso2631, BilinearFilterMatchesAnalogueUpToThirtiethOfSampleRate) {
+  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+    for (double fs : {100.0, 1000.0, 5000.0}) {
+      const WeightingFilter filter =
+          WeightingFilter::iso2631(weighting, fs, Discretisation::BilinearPrewarped);
+      EXPECT_LT(worstErrorDb(filter, weighting, fs / 30.0), kFilterToleranceDb) << "fs = " << fs;
+      // Each section is exact at its pre-warping frequency: |W| at f4 within rounding of the
+      // other sections' small warping errors.
+      const double f4 = iso2631Parameters(weighting).f4;
+      EXPECT_LT(worstErrorDb(filter, weighting, f4), kFilterToleranceDb) << "fs = " << fs;
+    }
+  }
+}
+
+TEST(Comfort, SinusoidWeightedRmsAndVdvClosedForms) {
+  const double fs = 1000.0;
+  const double amplitude = 1.5;
+  const double duration = 60.0;  // a whole number of periods of every test frequency
+  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+    for (double f : {1.0, 2.0, 5.0, 8.0, 16.0}) {
+      const double gain = std::abs(iso2631Response(weighting, f));
+      ComfortOptions options;
+      options.weighting = weighting;
+      const ComfortMetrics m = evaluateComfort(sinusoid(amplitude, f, fs, duration), fs, options);
+      const double rms = amplitude / std::sqrt(2.0) * gain;
+      // ∫ (B sin ωt)^4 dt = 3/8 B^4 T over whole periods.
+      const double vdv = std::pow(3.0 / 8.0, 0.25) * amplitude * gain * std::pow(duration, 0.25);
+      EXPECT_NEAR(m.weighted_rms / rms, 1.0, kClosedFormTolerance) << f << " Hz";
+      EXPECT_NEAR(m.vdv / vdv, 1.0, kClosedFormTolerance) << f << " Hz";
+      // Steady running r.m.s. of a sinusoid ripples by 1/(2 sqrt(1 + (2ωτ)^2)) around a_w,rms.
+      EXPECT_GE(m.mtvv, rms * (1.0 - kClosedFormTolerance));
+      EXPECT_LE(m.mtvv, rms * 1.05) << f << " Hz";
+      EXPECT_DOUBLE_EQ(m.duration, duration);
+      EXPECT_FALSE(m.absorbed_power.has_value());
+    }
+  }
+}
+
+TEST(Comfort, AbsorbedPowerOfSinusoidIsFilterGainSquared) {
+  const double fs = 1000.0;
+  const double amplitude = 2.0;
+  ComfortOptions options;
+  options.absorbed_power = testPowerFilter();
+  for (double f : {2.0, 5.0, 12.0}) {
+    const ComfortMetrics m = evaluateComfort(sinusoid(amplitude, f, fs, 30.0), fs, options);
+    const double gain = std::abs(analogResponse(options.absorbed_power, f));
+    ASSERT_TRUE(m.absorbed_power.has_value());
+    EXPECT_NEAR(*m.absorbed_power / (gain * gain * amplitude * amplitude / 2.0), 1.0,
+                kClosedFormTolerance)
+        << f << " Hz";
+  }
+}
+
+TEST(Comfort, OnlineMeterAgreesWithBatch) {
+  const double fs = 1000.0;
+  std::mt19937_64 rng(2024);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  Vector a(20000);
+  for (Eigen::Index i = 0; i < a.size(); ++i) a(i) = noise(rng) + 3.0 * std::sin(0.02 * i);
+  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+    ComfortOptions options;
+    options.weighting = weighting;
+    options.absorbed_power = testPowerFilter();
+    const ComfortMetrics batch = evaluateComfort(a, fs, options);
+    ComfortMeter meter(fs, options);
+    const Vector weighted = WeightingFilter::iso2631(weighting, fs).filter(a);
+    for (Eigen::Index i = 0; i < a.size(); ++i) {
+      meter.add(a(i));
+      ASSERT_NEAR(meter.lastWeighted(), weighted(i), kAgreementTolerance);
+    }
+    const ComfortMetrics online = meter.metrics();
+    EXPECT_EQ(online.samples, batch.samples);
+    EXPECT_NEAR(online.weighted_rms / batch.weighted_rms, 1.0, kAgreementTolerance);
+    EXPECT_NEAR(online.vdv / batch.vdv, 1.0, kAgreementTolerance);
+    EXPECT_NEAR(online.mtvv / batch.mtvv, 1.0, kAgreementTolerance);
+    EXPECT_NEAR(*online.absorbed_power / *batch.absorbed_power, 1.0, kAgreementTolerance);
+    EXPECT_DOUBLE_EQ(online.duration, batch.duration);
+    EXPECT_GT(meter.runningRms(), 0.0);
+    // reset() returns to a fresh meter.
+    meter.reset();
+    EXPECT_EQ(meter.sampleCount(), 0u);
+    EXPECT_DOUBLE_EQ(meter.weightedRms(), 0.0);
+    meter.add(a(0));
+    EXPECT_NEAR(meter.lastWeighted(), weighted(0), kAgreementTolerance);
+  }
+}
+
+TEST(Comfort, EmptySeriesGivesZeros) {
+  const ComfortMetrics m = evaluateComfort(Vector(), 1000.0);
+  EXPECT_EQ(m.samples, 0u);
+  EXPECT_DOUBLE_EQ(m.weighted_rms, 0.0);
+  EXPECT_DOUBLE_EQ(m.vdv, 0.0);
+  const ComfortMeter meter(1000.0);
+  EXPECT_DOUBLE_EQ(meter.weightedRms(), 0.0);
+  EXPECT_DOUBLE_EQ(meter.vibrationDoseValue(), 0.0);
+  EXPECT_FALSE(meter.absorbedPower().has_value());
+}
+
+TEST(Comfort, RejectsBadInput) {
+  expectInputError([] { WeightingFilter::iso2631(Weighting::Wk, 20.0); },
+                   "20 Hz is too low for ISO 2631-1 Wk");
+  expectInputError([] { WeightingFilter::iso2631(Weighting::Wd, 0.0); }, "sample rate 0 Hz");
+  expectInputError(
+      [] {
+        WeightingFilter({AnalogSection{1, 0, 0, 1, 1, 0, 600.0}}, 1000.0,
+                        Discretisation::BilinearPrewarped);
+      },
+      "section 0: pre-warping frequency 600 Hz");
+  expectInputError(
+      [] {
+        WeightingFilter({AnalogSection{1, 0, 0, 1, 0, 0}, AnalogSection{1, 0, 0, -1, 1, 0}},
+                        1000.0);
+      },
+      "section 1: pole 1 + 0j rad/s is not in the open left half-plane");
+  expectInputError(
+      [] {
+        WeightingFilter({AnalogSection{0, 0, 0, 1, 1, 0}}, 1000.0);
+      },
+      "section 0: numerator is zero");
+  // A resonance at 600 Hz cannot be matched at fs = 1 kHz.
+  const double w = 2.0 * kPi * 600.0;
+  expectInputError(
+      [&] {
+        WeightingFilter({AnalogSection{w * w, 0, 0, w * w, 0.1 * w, 1.0}}, 1000.0);
+      },
+      "pole oscillates at");
+  Vector a = Vector::Zero(5);
+  a(2) = std::nan("");
+  expectInputError([&] { evaluateComfort(a, 1000.0); }, "acceleration sample 2 is not finite");
+  ComfortOptions bad_time;
+  bad_time.running_rms_time = 0.0;
+  expectInputError([&] { ComfortMeter(1000.0, bad_time); }, "running_rms_time 0 s");
+
+  ComfortMeter meter(1000.0);
+  meter.add(1.0);
+  const double rms = meter.weightedRms();
+  expectInputError([&] { meter.add(std::numeric_limits<double>::infinity()); },
+                   "acceleration sample 1 is not finite");
+  EXPECT_EQ(meter.sampleCount(), 1u);
+  EXPECT_DOUBLE_EQ(meter.weightedRms(), rms);
+}
+
+}  // namespace
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,305 @@
+// Craig-Bampton reduction (paper eqs. 3-10) on a steel cantilever: identities of the basis, the
+// Rayleigh-Ritz bound and convergence, Guyan static exactness, and the damping models.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/reduction/craig_bampton.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+namespace {
+
+constexpr double kExactTolerance = 1e-8;     // relative, identities up to round-off
+constexpr double kFirstModesTolerance = 0.01; // relative, paper-style "within 1 %"
+constexpr double kRitzSlack = 1e-9;          // relative round-off allowed below the full value
+
+// A 2 m steel cantilever along x, clamped at node 0, with `elements` Euler-Bernoulli beams
+// (Iy != Iz so that the y and z bending modes are distinct). `tip_support` adds a grounded
+// spring-damper under the tip (a road input, a damper).
+fem::System cantilever(int elements, bool tip_support = false) {
+  fem::Model model;
+  model.name = "cantilever";
+  const double length = 2.0;
+  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(length * i / elements, 0.0, 0.0));
+  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
+  fem::Section section;
+  section.name = "bar";
+  section.area = 5e-3;
+  section.iy = 4e-6;
+  section.iz = 1e-6;
+  section.torsion = 2e-6;
+  model.sections.push_back(section);
+  for (int i = 0; i < elements; ++i)
+    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
+  model.fixed.push_back(fem::FixedDofs{0});
+  if (tip_support) {
+    fem::Spring spring;
+    spring.n1 = elements;
+    spring.n2 = fem::kGround;
+    spring.stiffness(2) = 2e5;
+    spring.damping(2) = 500.0;
+    spring.name = "tip support";
+    model.springs.push_back(spring);
+  }
+  return fem::assemble(model);
+}
+
+// uy and uz at the middle node and at the tip.
+std::vector<DofIndex> masters(const fem::System& system, int elements) {
+  const fem::DofMap& d = system.dofs;
+  return {d.requireActive(elements, 2), d.requireActive(elements / 2, 2),
+          d.requireActive(elements, 1), d.requireActive(elements / 2, 1)};
+}
+
+std::vector<DofIndex> slavesOf(DofIndex n, const std::vector<DofIndex>& masters) {
+  std::vector<DofIndex> out;
+  for (DofIndex i = 0; i < n; ++i)
+    if (std::find(masters.begin(), masters.end(), i) == masters.end()) out.push_back(i);
+  return out;
+}
+
+double relativeError(const Matrix& a, const Matrix& b) {
+  return (a - b).norm() / std::max(b.norm(), 1e-300);
+}
+
+TEST(CraigBampton, AllFixedInterfaceModesReproduceTheFullEigenvalues) {
+  const fem::System system = cantilever(10);
+  const std::vector<DofIndex> m = masters(system, 10);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = static_cast<int>(system.size()) - static_cast<int>(m.size());
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  ASSERT_EQ(cb.size(), system.size());
+
+  const fem::ModalBasis full = fem::solveModesDense(Matrix(system.stiffness), Matrix(system.mass));
+  const fem::ModalBasis reduced = fem::solveModesDense(cb.stiffness, cb.mass);
+  for (int i = 0; i < full.count(); ++i)
+    EXPECT_NEAR(reduced.eigenvalues(i), full.eigenvalues(i), kExactTolerance * full.eigenvalues(i))
+        << "mode " << i;
+}
+
+TEST(CraigBampton, TruncatedBasisConvergesFromAbove) {
+  const int elements = 40;  // 240 DOFs: the fixed-interface modes come from Lanczos
+  const fem::System system = cantilever(elements);
+  const fem::ModalBasis full = fem::solveModesDense(Matrix(system.stiffness), Matrix(system.mass));
+  const std::vector<DofIndex> m = masters(system, elements);
+
+  double previous_error = 1e300;
+  for (const int r : {2, 6, 12}) {
+    CraigBamptonOptions options;
+    options.fixed_interface.count = r;
+    const CraigBamptonResult cb = craigBampton(system, m, options);
+    ASSERT_EQ(cb.size(), static_cast<DofIndex>(m.size()) + r);
+    ASSERT_EQ(cb.modeCount(), r);
+    const fem::ModalBasis reduced = fem::solveModesDense(cb.stiffness, cb.mass);
+    for (int i = 0; i < reduced.count(); ++i)
+      EXPECT_GE(reduced.frequencies_hz(i), full.frequencies_hz(i) * (1.0 - kRitzSlack))
+          << "Rayleigh-Ritz bound, r = " << r << ", mode " << i;
+    double error = 0.0;
+    for (int i = 0; i < 6; ++i)
+      error = std::max(error, reduced.frequencies_hz(i) / full.frequencies_hz(i) - 1.0);
+    EXPECT_LE(error, previous_error) << "r = " << r;
+    previous_error = error;
+    if (r >= 6) {
+      EXPECT_LT(error, kFirstModesTolerance) << "first six modes, r = " << r;
+    }
+  }
+}
+
+TEST(CraigBampton, MasterRowsOfTheBasisAreTheIdentity) {
+  const fem::System system = cantilever(12);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 5;
+  options.keep_transformation = true;
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  ASSERT_EQ(cb.transformation.rows(), system.size());
+  ASSERT_EQ(cb.transformation.cols(), 9);
+  for (std::size_t i = 0; i < m.size(); ++i)
+    for (DofIndex j = 0; j < cb.transformation.cols(); ++j)
+      EXPECT_EQ(cb.transformation(m[i], j), static_cast<DofIndex>(i) == j ? 1.0 : 0.0);
+}
+
+TEST(CraigBampton, ConstraintModesSolveTheSlaveStatics) {
+  const fem::System system = cantilever(12);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 3;
+  options.keep_transformation = true;
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  const std::vector<DofIndex> s = slavesOf(system.size(), m);
+  const Matrix k = Matrix(system.stiffness);
+  const Matrix phi_c = cb.transformation(s, Eigen::seqN(0, m.size()));
+  const Matrix k_ss = k(s, s);
+  const Matrix k_sm = k(s, m);
+  // Eq. 4: K_ss Phi_C + K_sm = 0.
+  EXPECT_LT((k_ss * phi_c + k_sm).norm(), kExactTolerance * k_sm.norm());
+}
+
+TEST(CraigBampton, StiffnessIsBlockDiagonalAndModesAreMassNormalised) {
+  const fem::System system = cantilever(12);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 6;
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  const auto nm = static_cast<DofIndex>(m.size());
+  const Matrix coupling = cb.stiffness.block(0, nm, nm, 6);
+  EXPECT_LT(coupling.norm(), kExactTolerance * cb.stiffness.norm());
+  const Matrix modal_k = cb.stiffness.bottomRightCorner(6, 6);
+  EXPECT_LT(relativeError(modal_k, Matrix(cb.fixed_interface_eigenvalues.asDiagonal())),
+            kExactTolerance);
+  EXPECT_LT(relativeError(cb.mass.bottomRightCorner(6, 6), Matrix::Identity(6, 6)), kExactTolerance);
+  EXPECT_EQ(cb.stiffness, cb.stiffness.transpose());
+  EXPECT_EQ(cb.mass, cb.mass.transpose());
+}
+
+TEST(CraigBampton, GuyanStiffnessIsExactForLoadsOnTheMasters) {
+  const fem::System system = cantilever(16);
+  const std::vector<DofIndex> m = masters(system, 16);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 4;
+  options.keep_transformation = true;
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+
+  Vector f = Vector::Zero(system.size());
+  f(m[0]) = -1500.0;  // tip, z [N]
+  f(m[1]) = 700.0;    // middle, z
+  f(m[2]) = 300.0;    // tip, y
+  const Vector x_full = Matrix(system.stiffness).ldlt().solve(f);
+  const Vector f_r = cb.transformation.transpose() * f;
+  const Vector x_r = cb.stiffness.ldlt().solve(f_r);
+  for (std::size_t i = 0; i < m.size(); ++i)
+    EXPECT_NEAR(x_r(static_cast<DofIndex>(i)), x_full(m[i]), kExactTolerance * x_full.norm())
+        << "master " << i;
+  // The fixed-interface modes carry no static load from the masters.
+  EXPECT_LT(x_r.tail(4).norm(), kExactTolerance * x_full.norm());
+}
+
+TEST(CraigBampton, InputsGravityAndRecoveryAreProjected) {
+  const fem::System system = cantilever(12, true);
+  ASSERT_EQ(system.input_stiffness.cols(), 1);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 4;
+  options.keep_transformation = true;
+  options.recovery_dofs = {system.dofs.requireActive(3, 2), m[1]};
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  const Matrix& t = cb.transformation;
+  EXPECT_LT(relativeError(cb.input_stiffness, t.transpose() * Matrix(system.input_stiffness)),
+            kExactTolerance);
+  EXPECT_LT(relativeError(cb.input_damping, t.transpose() * Matrix(system.input_damping)),
+            kExactTolerance);
+  EXPECT_LT(relativeError(cb.gravity_load, t.transpose() * system.gravity_load), kExactTolerance);
+  EXPECT_EQ(cb.recovery.row(0), t.row(options.recovery_dofs[0]));
+  EXPECT_EQ(cb.recovery.row(1), t.row(m[1]));
+  EXPECT_LT(relativeError(cb.damping, t.transpose() * Matrix(system.damping) * t), kExactTolerance);
+  EXPECT_GT(cb.damping.norm(), 0.0);
+}
+
+TEST(CraigBampton, RayleighDampingAddsToTheDampers) {
+  const fem::System system = cantilever(12, true);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 4;
+  const CraigBamptonResult discrete = craigBampton(system, m, options);
+  options.damping.model = DampingModel::Rayleigh;
+  options.damping.alpha = 0.8;
+  options.damping.beta = 2e-4;
+  const CraigBamptonResult rayleigh = craigBampton(system, m, options);
+  const Matrix expected = discrete.damping + 0.8 * discrete.mass + 2e-4 * discrete.stiffness;
+  EXPECT_LT(relativeError(rayleigh.damping, expected), kExactTolerance);
+}
+
+TEST(CraigBampton, ModalDampingGivesTheRatioInEveryReducedMode) {
+  const fem::System system = cantilever(12, true);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 4;
+  const CraigBamptonResult discrete = craigBampton(system, m, options);
+  options.damping.model = DampingModel::Modal;
+  options.damping.modal_ratio = 0.03;
+  const CraigBamptonResult modal = craigBampton(system, m, options);
+  const fem::ModalBasis modes = fem::solveModesDense(modal.stiffness, modal.mass);
+  const Matrix structural = modes.shapes.transpose() * (modal.damping - discrete.damping) * modes.shapes;
+  const Vector expected = 2.0 * 0.03 * modes.eigenvalues.cwiseSqrt();
+  EXPECT_LT(relativeError(structural, Matrix(expected.asDiagonal())), kExactTolerance);
+
+  options.damping.modal_ratios = Vector::Constant(3, 0.02);  // 8 reduced modes, not 3
+  EXPECT_THROW(craigBampton(system, m, options), InputError);
+}
+
+TEST(CraigBampton, BareMatricesGiveTheSameReducedSystem) {
+  const fem::System system = cantilever(12, true);
+  const std::vector<DofIndex> m = masters(system, 12);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 4;
+  const CraigBamptonResult a = craigBampton(system, m, options);
+  const CraigBamptonResult b =
+      craigBampton(system.stiffness, system.mass, system.damping, m, options);
+  EXPECT_EQ(a.stiffness, b.stiffness);
+  EXPECT_EQ(a.mass, b.mass);
+  EXPECT_EQ(a.damping, b.damping);
+  EXPECT_EQ(b.input_stiffness.cols(), 0);
+  EXPECT_EQ(b.gravity_load, Vector::Zero(b.size()));
+}
+
+TEST(CraigBampton, FrequencyLimitedFixedInterfaceModes) {
+  const fem::System system = cantilever(40);
+  const std::vector<DofIndex> m = masters(system, 40);
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 50;
+  options.fixed_interface.max_frequency_hz = 1000.0;
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  ASSERT_GT(cb.modeCount(), 0);
+  EXPECT_LE(cb.fixed_interface_frequencies_hz.maxCoeff(), 1000.0);
+  options.fixed_interface = {static_cast<int>(cb.modeCount()) + 1, 0.0};
+  const CraigBamptonResult one_more = craigBampton(system, m, options);
+  EXPECT_GT(one_more.fixed_interface_frequencies_hz(cb.modeCount()), 1000.0);
+}
+
+TEST(CraigBampton, RejectsBadInput) {
+  const fem::System system = cantilever(8);
+  const std::vector<DofIndex> m = masters(system, 8);
+  CraigBamptonOptions options;
+  EXPECT_THROW(craigBampton(system, {m[0], m[0]}, options), InputError);
+  EXPECT_THROW(craigBampton(system, {system.size()}, options), InputError);
+  EXPECT_THROW(craigBampton(system, {}, options), InputError);  // empty basis
+  options.fixed_interface.count = static_cast<int>(system.size());
+  EXPECT_THROW(craigBampton(system, m, options), InputError);  // r > s
+  options.fixed_interface.count = 2;
+  options.recovery_dofs = {-1};
+  EXPECT_THROW(craigBampton(system, m, options), InputError);
+}
+
+TEST(CraigBampton, MastersThatLeaveARigidMotionFreeAreReported) {
+  // Free-free beam: K is singular, and one master DOF cannot restrain all six rigid motions.
+  fem::Model model;
+  for (int i = 0; i <= 4; ++i) model.addNode(i, Vector3(0.5 * i, 0.0, 0.0));
+  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
+  fem::Section section;
+  section.name = "bar";
+  section.area = 5e-3;
+  section.iy = 4e-6;
+  section.iz = 1e-6;
+  section.torsion = 2e-6;
+  model.sections.push_back(section);
+  for (int i = 0; i < 4; ++i) model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
+  const fem::System system = fem::assemble(model);
+  EXPECT_THROW(craigBampton(system, {system.dofs.requireActive(0, 2)}, {}), SolverError);
+  // Clamping all six DOFs of one node restrains them: the reduction succeeds, rigid modes included.
+  std::vector<DofIndex> node0;
+  for (int d = 0; d < kDofsPerNode; ++d) node0.push_back(system.dofs.requireActive(0, d));
+  CraigBamptonOptions options;
+  options.fixed_interface.count = 4;
+  const CraigBamptonResult cb = craigBampton(system, node0, options);
+  const fem::ModalBasis reduced = fem::solveModesDense(cb.stiffness, cb.mass);
+  EXPECT_LT(reduced.frequencies_hz.head(6).cwiseAbs().maxCoeff(), 1e-3);  // six rigid-body modes
+  EXPECT_GT(reduced.frequencies_hz(6), 1.0);
+}
+
+}  // namespace
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

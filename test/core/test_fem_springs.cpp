@@ -1,0 +1,306 @@
+// Springs, masses, rigid joints and solver errors against hand-solved cases.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+
+namespace tvd = tracked_vehicle_dynamics;
+using tvd::fem::Model;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRelTolerance = 1e-9;
+
+tvd::fem::Spring springAlong(tvd::NodeId a, tvd::NodeId b, int direction, double k) {
+  tvd::fem::Spring s;
+  s.n1 = a;
+  s.n2 = b;
+  s.stiffness(direction) = k;
+  return s;
+}
+
+tvd::fem::Mass pointMass(tvd::NodeId node, double m) {
+  tvd::fem::Mass mass;
+  mass.node = node;
+  mass.mass = m;
+  return mass;
+}
+
+// Fixes every DOF of a node except the listed direction.
+tvd::fem::FixedDofs allBut(tvd::NodeId node, int free_direction) {
+  tvd::fem::FixedDofs f;
+  f.node = node;
+  f.dofs.fill(true);
+  f.dofs[free_direction] = false;
+  return f;
+}
+
+}  // namespace
+
+TEST(SpringMassChain, EigenvaluesMatchClosedForm) {
+  // n equal masses in a line, the first tied to ground, the last free:
+  // omega_j^2 = 4 k/m sin^2((2j - 1) pi / (2 (2n + 1))), j = 1..n.
+  const int n = 10;
+  const double k = 1e5, m = 2.0;
+  Model model;
+  for (int i = 1; i <= n; ++i) {
+    model.addNode(i, tvd::Vector3(0, 0, 0.1 * i));
+    model.masses.push_back(pointMass(i, m));
+    model.fixed.push_back(allBut(i, 2));
+    model.springs.push_back(springAlong(i, i == 1 ? tvd::fem::kGround : i - 1, 2, k));
+  }
+  const tvd::fem::System sys = tvd::fem::assemble(model);
+  ASSERT_EQ(sys.size(), n);
+  tvd::fem::ModalRequest req;
+  req.count = n;
+  const tvd::fem::ModalBasis basis = tvd::fem::solveModes(sys.stiffness, sys.mass, req);
+  for (int j = 1; j <= n; ++j) {
+    const double s = std::sin((2 * j - 1) * kPi / (2 * (2 * n + 1)));
+    const double expected = 4 * k / m * s * s;
+    EXPECT_NEAR(basis.eigenvalues(j - 1), expected, kRelTolerance * expected) << "mode " << j;
+  }
+  // One road input (the grounded spring), K_u = k on the first mass.
+  ASSERT_EQ(sys.input_stiffness.cols(), 1);
+  EXPECT_DOUBLE_EQ(sys.input_stiffness.coeff(sys.dofs.requireActive(1, 2), 0), k);
+}
+
+TEST(SpringMassChain, LargeChainUsesLanczosAndMatchesClosedForm) {
+  const int n = 400;
+  const double k = 2e6, m = 5.0;
+  Model model;
+  for (int i = 1; i <= n; ++i) {
+    model.addNode(i, tvd::Vector3(0, 0, 0.1 * i));
+    model.masses.push_back(pointMass(i, m));
+    model.fixed.push_back(allBut(i, 2));
+    model.springs.push_back(springAlong(i, i == 1 ? tvd::fem::kGround : i - 1, 2, k));
+  }
+  const tvd::fem::System sys = tvd::fem::assemble(model);
+  tvd::fem::ModalRequest req;
+  req.count = 15;
+  const tvd::fem::ModalBasis basis = tvd::fem::solveModes(sys.stiffness, sys.mass, req);
+  for (int j = 1; j <= 15; ++j) {
+    const double s = std::sin((2 * j - 1) * kPi / (2 * (2 * n + 1)));
+    EXPECT_NEAR(basis.eigenvalues(j - 1), 4 * k / m * s * s, 1e-8 * 4 * k / m * s * s);
+  }
+}
+
+TEST(SpringElement, OffsetSpringCarriesNoForceUnderRigidRotation) {
+  // Two nodes apart along x joined by a full 6-component bushing: a rigid rotation of both
+  // nodes must not strain it (the bushing acts at the midpoint through rigid offsets).
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 0));
+  model.addNode(2, tvd::Vector3(0.5, 0.1, -0.2));
+  tvd::fem::Spring s;
+  s.n1 = 1;
+  s.n2 = 2;
+  s.stiffness << 1e6, 2e6, 3e6, 1e3, 2e3, 3e3;
+  model.springs.push_back(s);
+  model.masses.push_back(pointMass(1, 1.0));
+  model.masses.push_back(pointMass(2, 1.0));
+  tvd::fem::AssemblyOptions options;
+  options.drop_null_dofs = false;
+  const tvd::fem::System sys = tvd::fem::assemble(model, options);
+  tvd::Vector rigid(12);
+  const tvd::Vector3 theta(0.01, -0.02, 0.03), u0(1, 2, 3);
+  for (int n = 0; n < 2; ++n) {
+    const tvd::Vector3 x = model.nodes[n].position;
+    rigid.segment<3>(6 * n) = u0 + theta.cross(x);
+    rigid.segment<3>(6 * n + 3) = theta;
+  }
+  EXPECT_LT((sys.stiffness * rigid).norm(), 1e-9 * 3e6);
+}
+
+TEST(SpringElement, LocalFrameRotatesStiffness) {
+  // A spring with stiffness only along a local axis at 45 deg in x-z acts along that axis.
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 0));
+  tvd::fem::Spring s;
+  s.n1 = 1;
+  s.stiffness(0) = 1000.0;
+  const double c = std::sqrt(0.5);
+  s.frame << c, 0, -c, 0, 1, 0, c, 0, c;  // columns: local x = (c,0,c), y, z = (-c,0,c)
+  model.springs.push_back(s);
+  model.masses.push_back(pointMass(1, 1.0));
+  tvd::fem::AssemblyOptions options;
+  options.drop_null_dofs = false;
+  const tvd::fem::System sys = tvd::fem::assemble(model, options);
+  EXPECT_NEAR(sys.stiffness.coeff(0, 0), 500.0, 1e-9);
+  EXPECT_NEAR(sys.stiffness.coeff(0, 2), 500.0, 1e-9);
+  EXPECT_NEAR(sys.stiffness.coeff(2, 2), 500.0, 1e-9);
+  EXPECT_NEAR(sys.stiffness.coeff(1, 1), 0.0, 1e-12);
+}
+
+TEST(RigidJoint, EliminationEqualsTheMergedRigidBody) {
+  // A rigid body made of three point masses joined by a rigid joint, on four ground springs,
+  // must have exactly the modes of one rigid body carrying the same mass and inertia.
+  const double m = 10.0;
+  const tvd::Vector3 p[3] = {{0.4, 0.0, 0.1}, {-0.3, 0.5, 0.0}, {0.0, -0.2, 0.6}};
+  const tvd::Vector3 corners[4] = {{1, 1, 0}, {1, -1, 0}, {-1, 1, 0}, {-1, -1, 0}};
+  tvd::Vector6 k;
+  k << 1e4, 2e4, 3e4, 0, 0, 0;
+
+  Model split;
+  split.addNode(100, tvd::Vector3::Zero());
+  tvd::fem::RigidJoint joint;
+  joint.master = 100;
+  for (int i = 0; i < 3; ++i) {
+    split.addNode(i + 1, p[i]);
+    split.masses.push_back(pointMass(i + 1, m));
+    joint.slaves.push_back(i + 1);
+  }
+  for (int c = 0; c < 4; ++c) {
+    split.addNode(10 + c, corners[c]);
+    joint.slaves.push_back(10 + c);
+    tvd::fem::Spring s;
+    s.n1 = 10 + c;
+    s.stiffness = k;
+    split.springs.push_back(s);
+  }
+  split.rigid_joints.push_back(joint);
+
+  Model merged;
+  merged.addNode(100, tvd::Vector3::Zero());
+  tvd::fem::Mass body;
+  body.node = 100;
+  body.mass = 3 * m;
+  tvd::Vector3 cg = (p[0] + p[1] + p[2]) / 3.0;
+  body.offset = cg;
+  for (const auto& x : p) {
+    const tvd::Vector3 r = x - cg;
+    body.inertia += m * (r.squaredNorm() * tvd::Matrix3::Identity() - r * r.transpose());
+  }
+  merged.masses.push_back(body);
+  for (int c = 0; c < 4; ++c) {
+    merged.addNode(10 + c, corners[c]);
+    tvd::fem::Spring s;
+    s.n1 = 10 + c;
+    s.stiffness = k;
+    merged.springs.push_back(s);
+  }
+  tvd::fem::RigidJoint corners_joint;
+  corners_joint.master = 100;
+  corners_joint.slaves = {10, 11, 12, 13};
+  merged.rigid_joints.push_back(corners_joint);
+
+  const tvd::fem::System a = tvd::fem::assemble(split);
+  const tvd::fem::System b = tvd::fem::assemble(merged);
+  ASSERT_EQ(a.size(), 6);
+  ASSERT_EQ(b.size(), 6);
+  EXPECT_LT((tvd::Matrix(a.mass) - tvd::Matrix(b.mass)).norm(), 1e-10 * tvd::Matrix(b.mass).norm());
+  EXPECT_LT((tvd::Matrix(a.stiffness) - tvd::Matrix(b.stiffness)).norm(), 1e-10);
+  const auto ma = tvd::fem::solveModesDense(tvd::Matrix(a.stiffness), tvd::Matrix(a.mass));
+  const auto mb = tvd::fem::solveModesDense(tvd::Matrix(b.stiffness), tvd::Matrix(b.mass));
+  for (int i = 0; i < 6; ++i)
+    EXPECT_NEAR(ma.eigenvalues(i), mb.eigenvalues(i), 1e-9 * mb.eigenvalues(i));
+}
+
+TEST(RigidJoint, RevoluteJointLeavesOneRotationFree) {
+  // A pendulum-like lever: the arm node follows the pivot in all DOFs but ry; a torsion spring
+  // k_t about y and a tip mass m at arm length a give omega^2 = k_t / (m a^2).
+  const double kt = 5e5, m = 1200.0, a = 0.5;
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 0));  // pivot, clamped
+  model.addNode(2, tvd::Vector3(0, 0, 0));  // arm root
+  model.addNode(3, tvd::Vector3(-a, 0, 0));  // wheel centre
+  model.fixed.push_back({1, {{true, true, true, true, true, true}}});
+  tvd::fem::RigidJoint revolute;
+  revolute.master = 1;
+  revolute.slaves = {2};
+  revolute.dofs = {{true, true, true, true, false, true}};
+  model.rigid_joints.push_back(revolute);
+  tvd::fem::RigidJoint arm;
+  arm.master = 2;
+  arm.slaves = {3};
+  model.rigid_joints.push_back(arm);
+  tvd::fem::Spring torsion;
+  torsion.n1 = 1;
+  torsion.n2 = 2;
+  torsion.stiffness(4) = kt;
+  model.springs.push_back(torsion);
+  model.masses.push_back(pointMass(3, m));
+  const tvd::fem::System sys = tvd::fem::assemble(model);
+  ASSERT_EQ(sys.size(), 1);
+  const auto basis = tvd::fem::solveModesDense(tvd::Matrix(sys.stiffness), tvd::Matrix(sys.mass));
+  EXPECT_NEAR(basis.eigenvalues(0), kt / (m * a * a), 1e-9 * kt / (m * a * a));
+  // A vertical load F at the wheel centre deflects it by F a^2 / k_t.
+  tvd::Vector f = tvd::Vector::Constant(1, 0.0);
+  const tvd::Vector load = tvd::Vector::Zero(1);
+  // Load through the constraint transformation: f_active = T^T f_phys.
+  tvd::Vector f_phys = tvd::Vector::Zero(sys.dofs.physicalCount());
+  f_phys(sys.dofs.physical(3, 2)) = -1000.0;
+  f = sys.dofs.transformation().transpose() * f_phys;
+  const auto r = tvd::fem::solveStatic(sys, f);
+  EXPECT_NEAR(tvd::fem::physicalDisplacement(sys, r.displacement, 3, 2), -1000.0 * a * a / kt, 1e-12);
+}
+
+TEST(RigidJoint, ConflictingConstraintsAreRejected) {
+  Model model;
+  model.addNode(1, tvd::Vector3::Zero());
+  model.addNode(2, tvd::Vector3::UnitX());
+  model.fixed.push_back({2, {{true, false, false, false, false, false}}});
+  tvd::fem::RigidJoint j;
+  j.master = 1;
+  j.slaves = {2};
+  model.rigid_joints.push_back(j);
+  model.masses.push_back(pointMass(1, 1.0));
+  try {
+    tvd::fem::assemble(model);
+    FAIL() << "expected an InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("node 2 ux is both fixed and a rigid-joint slave"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(StaticSolver, SingularStiffnessNamesTheFreeMotion) {
+  // Masses on vertical springs only: free to translate along x and y and to rotate about z.
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 0));
+  model.addNode(2, tvd::Vector3(1, 0, 0));
+  model.addNode(3, tvd::Vector3(0, 1, 0));
+  tvd::fem::RigidJoint j;
+  j.master = 1;
+  j.slaves = {2, 3};
+  model.rigid_joints.push_back(j);
+  for (int n = 1; n <= 3; ++n) {
+    model.masses.push_back(pointMass(n, 1.0));
+    model.springs.push_back(springAlong(n, tvd::fem::kGround, 2, 1e4));
+  }
+  // Lateral and yaw restraint but nothing along x.
+  model.springs.push_back(springAlong(1, tvd::fem::kGround, 1, 1e4));
+  model.springs.push_back(springAlong(2, tvd::fem::kGround, 1, 1e4));
+  const tvd::fem::System sys = tvd::fem::assemble(model);
+  try {
+    tvd::fem::solveStatic(sys, sys.gravity_load);
+    FAIL() << "expected a SolverError";
+  } catch (const tvd::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid-body translation along x"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(StaticSolver, GroundReactionsBalanceGravity) {
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 1));
+  model.fixed.push_back(allBut(1, 2));
+  model.masses.push_back(pointMass(1, 50.0));
+  model.springs.push_back(springAlong(1, tvd::fem::kGround, 2, 2e5));
+  const tvd::fem::System sys = tvd::fem::assemble(model);
+  const auto r = tvd::fem::solveStatic(sys, sys.gravity_load);
+  EXPECT_NEAR(r.displacement(0), -50.0 * tvd::kStandardGravity / 2e5, 1e-15);
+}
+
+TEST(ModalSolver, BadRequestsAreRejected) {
+  tvd::SparseMatrix k(3, 3), m(4, 4);
+  tvd::fem::ModalRequest req;
+  EXPECT_THROW(tvd::fem::solveModes(k, m, req), tvd::InputError);
+  tvd::SparseMatrix m3(3, 3);
+  req.count = 0;
+  EXPECT_THROW(tvd::fem::solveModes(k, m3, req), tvd::InputError);
+}

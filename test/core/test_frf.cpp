@@ -1,0 +1,205 @@
+// Comfort FRFs (paper eqs. 18-25): closed forms, direct vs modal, delays.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dynamics_test_models.h"
+#include "tracked_vehicle_dynamics/dynamics/frf.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/error.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::dynamics;
+
+namespace {
+
+constexpr double kClosedFormTolerance = 1e-10;
+constexpr double kModalTolerance = 1e-8;  // direct vs modal, entry by entry, relative
+constexpr double kTwoPi = 6.283185307179586;
+
+// max over entries of |a - b| / |b|, ignoring entries of b below `floor` times its peak (zeros
+// such as the acceleration at 0 Hz).
+double relativeError(const ComplexMatrix& a, const ComplexMatrix& b, double floor = 1e-12) {
+  const double peak = b.cwiseAbs().maxCoeff();
+  double worst = 0.0;
+  for (DofIndex i = 0; i < b.rows(); ++i)
+    for (DofIndex j = 0; j < b.cols(); ++j)
+      if (std::abs(b(i, j)) > floor * peak)
+        worst = std::max(worst, std::abs(a(i, j) - b(i, j)) / std::abs(b(i, j)));
+  return worst;
+}
+
+}  // namespace
+
+// m x'' + c x' + k x = k u + c u':  x/h = (k + j w c) / (k - w^2 m + j w c).
+TEST(Frf, OneDofEqualsClosedForm) {
+  const double m = 40.0, c = 900.0, k = 3e5;
+  const SecondOrderSystem s = test::oneDof(m, c, k, c);
+  const Vector f = Vector::LinSpaced(200, 0.0, 30.0);
+  for (OutputQuantity quantity :
+       {OutputQuantity::Displacement, OutputQuantity::Velocity, OutputQuantity::Acceleration}) {
+    const ComplexMatrix direct = frfDirect(s, f, InputDelay::synchronous(), quantity);
+    const ComplexMatrix modal = frfModal(s, f, InputDelay::synchronous(), quantity);
+    ASSERT_EQ(direct.rows(), 200);
+    ASSERT_EQ(direct.cols(), 1);
+    for (int i = 0; i < f.size(); ++i) {
+      const double w = kTwoPi * f(i);
+      const Complex x = Complex(k, w * c) / Complex(k - w * w * m, w * c);
+      const Complex expected = quantity == OutputQuantity::Displacement ? x
+                               : quantity == OutputQuantity::Velocity   ? Complex(0.0, w) * x
+                                                                        : -w * w * x;
+      EXPECT_LT(std::abs(direct(i, 0) - expected), kClosedFormTolerance * std::abs(x) * (1 + w * w));
+      EXPECT_LT(std::abs(modal(i, 0) - expected), kClosedFormTolerance * std::abs(x) * (1 + w * w));
+    }
+  }
+  // Static limit: x/h = 1 at 0 Hz.
+  EXPECT_NEAR(std::abs(frfDirect(s, Vector::Zero(1), InputDelay::synchronous(),
+                                 OutputQuantity::Displacement)(0, 0)),
+              1.0, kClosedFormTolerance);
+}
+
+// Rayleigh damping: the modal superposition of eq. 20 equals the direct solution of eq. 18.
+TEST(Frf, DirectEqualsModalForRayleighDamping) {
+  const SecondOrderSystem s = test::randomVehicle(24, 6, 8, 17);
+  const Vector f = Vector::LinSpaced(301, 0.0, 60.0);
+  const ModalSystem modal(s);
+  EXPECT_LT(modal.maxOffDiagonalDampingRatio(), 1e-8);
+  // Phi^T M Phi = I and Phi^T K Phi = diag(omega^2).
+  const Matrix& phi = modal.shapes();
+  EXPECT_LT((phi.transpose() * s.mass * phi - Matrix::Identity(24, 24)).norm(), 1e-10);
+  const Matrix modal_k = phi.transpose() * s.stiffness * phi;
+  EXPECT_LT((modal_k - Matrix(modal.naturalFrequencies().cwiseAbs2().asDiagonal())).norm(),
+            1e-10 * modal_k.norm());
+  for (const InputDelay& delay :
+       {InputDelay::synchronous(), InputDelay::travelling(s.input_stations, 8.3)}) {
+    for (OutputQuantity quantity : {OutputQuantity::Displacement, OutputQuantity::Acceleration}) {
+      const ComplexMatrix direct = frfDirect(s, f, delay, quantity);
+      const ComplexMatrix by_modes = frfModal(modal, f, delay, quantity);
+      EXPECT_LT(relativeError(by_modes, direct), kModalTolerance);
+    }
+  }
+}
+
+TEST(Frf, SparseDirectEqualsDenseDirect) {
+  const SecondOrderSystem s = test::randomVehicle(30, 5, 4, 23);
+  const Vector f = Vector::LinSpaced(50, 0.0, 40.0);
+  const InputDelay delay = InputDelay::travelling(s.input_stations, 5.0);
+  const ComplexMatrix dense = frfDirect(s, f, delay);
+  const ComplexMatrix sparse = frfDirect(toSparse(s), f, delay);
+  EXPECT_LT(relativeError(sparse, dense), 1e-9);
+}
+
+// Every input at the same station: no delay, the travelled FRF is the synchronous one.
+TEST(Frf, SameStationDelayEqualsSynchronous) {
+  SecondOrderSystem s = test::randomVehicle(12, 4, 3, 31);
+  s.input_stations = Vector::Constant(4, 1.7);
+  const Vector f = Vector::LinSpaced(80, 0.5, 40.0);
+  const ComplexMatrix travelled = frfModal(s, f, InputDelay::travelling(s.input_stations, 3.0));
+  const ComplexMatrix synchronous = frfModal(s, f, InputDelay::synchronous());
+  EXPECT_LT((travelled - synchronous).cwiseAbs().maxCoeff(), 0.0 + 1e-15 * synchronous.norm());
+}
+
+// Linearity in tau: FRF(tau) = sum_q tau_q FRF_q (FRF_q: input q alone), hence the wheelbase
+// filter can never exceed the sum of the individual contributions: |FRF(tau)| <= sum |FRF_q|.
+TEST(Frf, DelayedFrfIsBoundedByItsContributions) {
+  const SecondOrderSystem s = test::randomVehicle(16, 4, 5, 41);
+  const Vector f = Vector::LinSpaced(120, 0.2, 50.0);
+  const double speed = 6.0;
+  const ModalSystem modal(s);
+  const ComplexMatrix delayed = frfModal(modal, f, InputDelay::travelling(s.input_stations, speed));
+  ComplexMatrix sum = ComplexMatrix::Zero(f.size(), 5);
+  Matrix bound = Matrix::Zero(f.size(), 5);
+  for (int q = 0; q < 4; ++q) {
+    SecondOrderSystem single = s;
+    single.input_stiffness = s.input_stiffness.col(q);
+    single.input_damping = s.input_damping.col(q);
+    single.input_stations = s.input_stations.segment(q, 1);
+    const ComplexMatrix contribution = frfModal(single, f, InputDelay::synchronous());
+    const double lag = s.input_stations.maxCoeff() - s.input_stations(q);
+    for (int i = 0; i < f.size(); ++i)
+      sum.row(i) += std::polar(1.0, -kTwoPi * f(i) * lag / speed) * contribution.row(i);
+    bound += magnitude(contribution);
+  }
+  EXPECT_LT((delayed - sum).cwiseAbs().maxCoeff(), 1e-10 * delayed.cwiseAbs().maxCoeff());
+  EXPECT_TRUE((magnitude(delayed).array() <= bound.array() * (1.0 + 1e-12)).all());
+  EXPECT_TRUE((magnitude(frfModal(modal, f, InputDelay::synchronous())).array() <=
+               bound.array() * (1.0 + 1e-12))
+                  .all());
+}
+
+// Sign convention of eqs. 23-24: the front-most input has no delay, the others lag.
+TEST(InputDelay, FrontInputIsHitFirst) {
+  const InputDelay delay = InputDelay::travelling(Eigen::Vector3d(2.0, 0.5, -1.0), 10.0);
+  EXPECT_NEAR(delay.lags()(0), 0.0, 0.0);
+  EXPECT_NEAR(delay.lags()(1), 1.5, 1e-15);
+  EXPECT_NEAR(delay.lags()(2), 3.0, 1e-15);
+  const double omega = 7.0;
+  const ComplexVector tau = delay.at(omega, 3);
+  EXPECT_NEAR(std::abs(tau(0) - Complex(1.0, 0.0)), 0.0, 1e-15);
+  EXPECT_NEAR(std::arg(tau(1)), -omega * 0.15, 1e-14);
+  EXPECT_NEAR(std::arg(tau(2)), -omega * 0.3, 1e-14);
+  EXPECT_THROW(delay.at(omega, 2), InputError);
+  EXPECT_THROW(InputDelay::travelling(Eigen::Vector3d::Zero(), 0.0), InputError);
+  EXPECT_TRUE(InputDelay::synchronous().isSynchronous());
+  EXPECT_EQ(InputDelay::synchronous().at(omega, 4), ComplexVector::Ones(4));
+}
+
+// The FRF predicts the steady-state amplitude of a time simulation over a sine road of
+// wavelength lambda at speed v (omega = 2 pi v / lambda, eq. 17), each input seeing the road
+// at its own station: a check of the delay convention in the time domain.
+TEST(Frf, PredictsSteadyStateOfTimeSimulation) {
+  const SecondOrderSystem s = test::randomVehicle(10, 3, 3, 51, 2e8, 2.0, 1e-4);
+  const double speed = 5.0, wavelength = 2.5, height = 0.02, dt = 1e-3;
+  const double omega = kTwoPi * speed / wavelength;
+  const Vector f = Vector::Constant(1, omega / kTwoPi);
+  const InputDelay delay = InputDelay::travelling(s.input_stations, speed);
+  ComplexMatrix frf(1, 6);
+  frf << frfDirect(s, f, delay, OutputQuantity::Displacement),
+      frfDirect(s, f, delay, OutputQuantity::Acceleration);
+  SimulatorOptions o;
+  o.time_step = dt;
+  o.hold = InputHold::FirstOrder;
+  o.quantities = {OutputQuantity::Displacement, OutputQuantity::Acceleration};
+  Simulator sim(s, o);
+  // Rayleigh alpha = 2 decays every transient as e^{-t}: after 12 s it is below 1e-5.
+  const int samples = 12001;
+  Matrix w(samples, 6);
+  for (int k = 0; k < samples; ++k)
+    for (int q = 0; q < 3; ++q) {
+      const double phase = omega * (k * dt + s.input_stations(q) / speed);
+      w(k, q) = height * std::sin(phase);
+      w(k, 3 + q) = height * omega * std::cos(phase);
+    }
+  const Matrix y = sim.simulate(w);
+  // u_q = h Im(e^{j omega (t + x_front / v)} tau_q): the response is Im(FRF h e^{j omega (t +
+  // x_front / v)}).
+  const double front = s.input_stations.maxCoeff();
+  for (int j = 0; j < 6; ++j) {
+    const double peak = height * std::abs(frf(0, j));
+    // The linear interpolation of the sine errs by (omega h)^2 / 8 = 2e-5 in displacement; its
+    // kinks at every sample also shake the tyre modes, which shows in the accelerations.
+    const double tolerance = j < 3 ? 1e-4 : 1e-3;
+    for (int k = samples - 2000; k < samples; ++k) {
+      const double t = k * dt;
+      const double expected =
+          (frf(0, j) * height * std::polar(1.0, omega * (t + front / speed))).imag();
+      ASSERT_NEAR(y(k, j), expected, tolerance * peak) << "output " << j << ", t = " << t;
+    }
+  }
+}
+
+TEST(Frf, ErrorsAndHelpers) {
+  const double omega = kTwoPi * 1.0;
+  const SecondOrderSystem undamped = test::oneDof(1.0, 0.0, omega * omega, 0.0);
+  EXPECT_THROW(frfDirect(undamped, Vector::Constant(1, 1.0), InputDelay::synchronous()),
+               SolverError);
+  EXPECT_THROW(frfDirect(undamped, Vector::Constant(1, -1.0), InputDelay::synchronous()),
+               InputError);
+  EXPECT_THROW(frfModal(undamped, Vector::Constant(1, 2.0),
+                        InputDelay::travelling(Eigen::Vector2d(0.0, 1.0), 1.0)),
+               InputError);
+  ComplexMatrix z(1, 2);
+  z << Complex(3.0, 4.0), Complex(0.0, -2.0);
+  EXPECT_NEAR(magnitude(z)(0, 0), 5.0, 1e-15);
+  EXPECT_NEAR(phase(z)(0, 1), -M_PI / 2.0, 1e-15);
+}

@@ -1,0 +1,301 @@
+// Simulator (augmented-exponential and modal-decoupled engines), static equilibrium and the
+// Newmark reference integrator.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "dynamics_test_models.h"
+#include "tracked_vehicle_dynamics/dynamics/newmark.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/error.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::dynamics;
+
+// Counts every heap allocation of the process while g_count_allocations is set: Eigen allocates
+// with malloc (not operator new), so malloc itself is interposed and forwarded to glibc.
+#if defined(__GLIBC__)
+namespace {
+bool g_count_allocations = false;
+long g_allocations = 0;
+}  // namespace
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+void* malloc(std::size_t size) noexcept {
+  if (g_count_allocations) ++g_allocations;
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) noexcept {
+  if (g_count_allocations) ++g_allocations;
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, std::size_t size) noexcept {
+  if (g_count_allocations) ++g_allocations;
+  return __libc_realloc(pointer, size);
+}
+}
+#endif
+
+namespace {
+
+constexpr double kMethodAgreement = 1e-8;    // modal vs augmented exponential, of the peak
+constexpr double kNewmarkAgreement = 5e-3;   // Newmark (h/50) vs exact simulator, of the peak
+constexpr double kEquilibriumTolerance = 1e-10;
+constexpr double kTwoPi = 6.283185307179586;
+
+const std::vector<OutputQuantity> kAllQuantities = {
+    OutputQuantity::Displacement, OutputQuantity::Velocity, OutputQuantity::Acceleration};
+
+// Road inputs W = [U, U'] [n_samples x 2 n_inputs] of a vehicle at speed v over a
+// raised-cosine bump of height a and length l starting at x0; input q at station x_q sees the
+// road at x = v t + x_q, so the front input meets the bump first.
+Matrix bumpInputs(const Vector& stations, int samples, double dt, double speed, double height,
+                  double length, double x0) {
+  const DofIndex n_u = stations.size();
+  Matrix w = Matrix::Zero(samples, 2 * n_u);
+  for (int k = 0; k < samples; ++k)
+    for (DofIndex q = 0; q < n_u; ++q) {
+      const double s = (speed * k * dt + stations(q) - x0) / length;
+      if (s <= 0.0 || s >= 1.0) continue;
+      w(k, q) = 0.5 * height * (1.0 - std::cos(kTwoPi * s));
+      w(k, n_u + q) = 0.5 * height * kTwoPi / length * speed * std::sin(kTwoPi * s);
+    }
+  return w;
+}
+
+// max |a - b| over each column block of `block` rows, relative to the peak of that block in b.
+double relativeBlockError(const Matrix& a, const Matrix& b, DofIndex block) {
+  double worst = 0.0;
+  for (DofIndex c0 = 0; c0 < b.cols(); c0 += block) {
+    const double peak = b.middleCols(c0, block).cwiseAbs().maxCoeff();
+    const double error = (a - b).middleCols(c0, block).cwiseAbs().maxCoeff();
+    worst = std::max(worst, error / peak);
+  }
+  return worst;
+}
+
+SimulatorOptions options(DiscretizationMethod method, InputHold hold, double dt = 1e-3) {
+  SimulatorOptions o;
+  o.time_step = dt;
+  o.hold = hold;
+  o.method = method;
+  o.quantities = kAllQuantities;
+  return o;
+}
+
+}  // namespace
+
+// Rayleigh damping C = alpha M + beta K (and C_u = beta K_u) is diagonalised by the modes, so
+// the modal-decoupled discretisation is exact as well: both engines agree to rounding, here on
+// a model with 2e10 N/m tyres, gravity and all three output quantities.
+TEST(Simulator, ModalEqualsAugmentedExponentialForRayleighDamping) {
+  const SecondOrderSystem s = test::randomVehicle(14, 4, 6, 11);
+  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(14);
+  const Matrix w = bumpInputs(s.input_stations, 1500, 1e-3, 8.0, 0.1, 1.5, 3.0);
+  for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
+    SimulatorOptions dense_options = options(DiscretizationMethod::AugmentedExponential, hold);
+    SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, hold);
+    dense_options.generalized_force = modal_options.generalized_force = f_g;
+    Simulator dense(s, dense_options);
+    Simulator modal(s, modal_options);
+    EXPECT_LT(modal.maxOffDiagonalDampingRatio(), 1e-8);
+    const Vector z0 = staticEquilibrium(s, w.row(0).head(4).transpose(), f_g);
+    dense.reset(z0, w.row(0).transpose());
+    modal.reset(z0, w.row(0).transpose());
+    const Matrix y_dense = dense.simulate(w);
+    const Matrix y_modal = modal.simulate(w);
+    EXPECT_LT(relativeBlockError(y_modal, y_dense, 6), kMethodAgreement);
+    EXPECT_LT((modal.state() - dense.state()).norm(), kMethodAgreement * dense.state().norm());
+    EXPECT_EQ(dense.outputNames(), modal.outputNames());
+    EXPECT_EQ(modal.outputNames()[13], "dof_1 uz/acc");
+  }
+}
+
+// The blocked modal simulate() and the dense one must equal step-by-step stepping.
+TEST(Simulator, SimulateEqualsStepping) {
+  const SecondOrderSystem s = test::randomVehicle(10, 3, 4, 5);
+  const Matrix w = bumpInputs(s.input_stations, 700, 1e-3, 12.0, 0.05, 1.0, 2.5);
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::ModalDecoupled, DiscretizationMethod::AugmentedExponential})
+    for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
+      Simulator batch(s, options(method, hold));
+      Simulator stepped(s, options(method, hold));
+      const Matrix y = batch.simulate(w);
+      ASSERT_EQ(y.rows(), 700);
+      ASSERT_EQ(y.cols(), 12);
+      Matrix y_stepped(700, 12);
+      y_stepped.row(0) = stepped.outputs().transpose();
+      for (int k = 1; k < 700; ++k) {
+        stepped.step(w.row(k).transpose());
+        y_stepped.row(k) = stepped.outputs().transpose();
+      }
+      EXPECT_LT(relativeBlockError(y, y_stepped, 4), 1e-12);
+      EXPECT_EQ(batch.stepCount(), 699);
+      EXPECT_NEAR(batch.time(), 0.699, 1e-12);
+      EXPECT_LT((batch.state() - stepped.state()).norm(), 1e-12 * stepped.state().norm());
+    }
+}
+
+// K q0 = K_u u0 + f_g exactly, and the simulation started there stays there (both engines).
+TEST(Simulator, StaticEquilibriumIsAFixedPoint) {
+  const SecondOrderSystem s = test::randomVehicle(9, 3, 3, 3);
+  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(9);
+  const Vector u0 = Eigen::Vector3d(0.01, -0.02, 0.03);
+  const Vector z0 = staticEquilibrium(s, u0, f_g);
+  const Vector load = s.input_stiffness * u0 + f_g;
+  EXPECT_LT((s.stiffness * z0.head(9) - load).norm(), 1e-12 * (s.input_stiffness * u0).norm());
+  EXPECT_TRUE(z0.tail(9).isZero(0.0));
+
+  Vector w0 = Vector::Zero(6);
+  w0.head(3) = u0;
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled})
+    for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
+      SimulatorOptions o = options(method, hold);
+      o.generalized_force = f_g;
+      Simulator sim(s, o);
+      sim.reset(z0, w0);
+      for (int k = 0; k < 200; ++k) sim.step(w0);
+      EXPECT_LT((sim.state() - z0).cwiseAbs().maxCoeff(),
+                kEquilibriumTolerance * z0.cwiseAbs().maxCoeff());
+      EXPECT_LT(sim.outputs().tail(3).cwiseAbs().maxCoeff(), 1e-5);  // accelerations [m/s^2]
+    }
+  // A free rigid-body motion has no static equilibrium.
+  SecondOrderSystem free = test::chain(3, 10.0, 1e4, 0.0, 0.0, 0.0);
+  EXPECT_THROW(staticEquilibrium(free, Vector::Zero(1)), SolverError);
+  EXPECT_THROW(staticEquilibrium(s, Vector::Zero(2)), InputError);
+}
+
+// 10-DOF chain over a bump: the exact FOH simulation at 1 ms and Newmark average acceleration at
+// h/50 fed with the same piecewise-linear input agree within 0.5 % of the peak.
+TEST(Simulator, MatchesNewmarkOnChain) {
+  const SecondOrderSystem s = test::chain(10, 20.0, 2e5, 150.0, 4e5, 400.0);
+  const double dt = 1e-3;
+  const int samples = 1200, substeps = 50;
+  const Matrix w = bumpInputs(s.input_stations, samples, dt, 10.0, 0.08, 1.2, 1.0);
+  Simulator simulator(s, options(DiscretizationMethod::AugmentedExponential,
+                                 InputHold::FirstOrder, dt));
+  const Matrix y = simulator.simulate(w);
+
+  NewmarkIntegrator newmark(toSparse(s), dt / substeps, kAllQuantities);
+  EXPECT_EQ(newmark.outputNames(), simulator.outputNames());
+  Matrix y_newmark(samples, y.cols());
+  y_newmark.row(0) = newmark.outputs().transpose();
+  for (int k = 1; k < samples; ++k) {
+    for (int j = 1; j <= substeps; ++j) {
+      const double f = static_cast<double>(j) / substeps;
+      newmark.step(((1.0 - f) * w.row(k - 1) + f * w.row(k)).transpose());
+    }
+    y_newmark.row(k) = newmark.outputs().transpose();
+  }
+  EXPECT_NEAR(newmark.time(), (samples - 1) * dt, 1e-9);
+  EXPECT_LT(relativeBlockError(y_newmark, y, 10), kNewmarkAgreement);
+}
+
+// Newmark average acceleration conserves the energy of an undamped oscillator (no numerical
+// damping) and is stable far beyond the explicit limit (omega h = 26).
+TEST(Newmark, UnconditionallyStableWithoutNumericalDamping) {
+  const SecondOrderSystem s = test::oneDof(30.0, 0.0, 2e10, 0.0);
+  NewmarkIntegrator newmark(toSparse(s), 1e-3);
+  const double k = 2e10, m = 30.0;
+  newmark.reset(Vector::Constant(1, 1e-3), Vector::Zero(1), Vector::Zero(2));
+  const double energy0 = 0.5 * k * 1e-6;
+  for (int i = 0; i < 1000; ++i) {
+    newmark.step(Vector::Zero(2));
+    const double q = newmark.displacement()(0), v = newmark.velocity()(0);
+    ASSERT_NEAR(0.5 * k * q * q + 0.5 * m * v * v, energy0, 1e-9 * energy0);
+  }
+  EXPECT_THROW(newmark.step(Vector::Zero(3)), InputError);
+  EXPECT_THROW(NewmarkIntegrator(toSparse(s), 0.0), InputError);
+}
+
+// A single discrete damper at the chain's end is not proportional: the modal engine reports the
+// neglected coupling, and both engines still agree roughly (lightly damped).
+TEST(Simulator, ReportsNonProportionalDamping) {
+  SecondOrderSystem s = test::chain(5, 20.0, 2e5, 0.0, 4e5, 0.0);
+  s.damping(4, 4) = 300.0;
+  Simulator modal(s, options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder));
+  Simulator dense(s, options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder));
+  EXPECT_GT(modal.maxOffDiagonalDampingRatio(), 0.1);
+  EXPECT_EQ(dense.maxOffDiagonalDampingRatio(), 0.0);
+  EXPECT_EQ(modal.method(), DiscretizationMethod::ModalDecoupled);
+  const Matrix w = bumpInputs(s.input_stations, 400, 1e-3, 10.0, 0.05, 1.0, 0.5);
+  const Matrix y_modal = modal.simulate(w);
+  const Matrix y_dense = dense.simulate(w);
+  EXPECT_LT(relativeBlockError(y_modal.leftCols(5), y_dense.leftCols(5), 5), 0.2);
+  EXPECT_GT(relativeBlockError(y_modal.leftCols(5), y_dense.leftCols(5), 5), 1e-6);
+}
+
+TEST(Simulator, ResetAndStateRoundTrip) {
+  const SecondOrderSystem s = test::randomVehicle(8, 2, 3, 21);
+  Simulator modal(s, options(DiscretizationMethod::ModalDecoupled, InputHold::ZeroOrder));
+  const Vector z0 = Vector::Random(16);
+  const Vector w0 = Vector::Random(4);
+  modal.reset(z0, w0);
+  EXPECT_LT((modal.state() - z0).norm(), 1e-12 * z0.norm());
+  EXPECT_EQ(modal.input(), w0);
+  EXPECT_EQ(modal.time(), 0.0);
+  modal.reset();
+  EXPECT_TRUE(modal.state().isZero(0.0));
+  EXPECT_EQ(modal.stateCount(), 16);
+  EXPECT_EQ(modal.inputCount(), 4);
+  EXPECT_EQ(modal.outputCount(), 9);
+}
+
+TEST(Simulator, RejectsBadArguments) {
+  const SecondOrderSystem s = test::quarterCar();
+  Simulator sim(s, options(DiscretizationMethod::AugmentedExponential, InputHold::ZeroOrder));
+  EXPECT_THROW(sim.step(Vector::Zero(3)), InputError);
+  EXPECT_THROW(sim.reset(Vector::Zero(3)), InputError);
+  EXPECT_THROW(sim.simulate(Matrix::Zero(4, 3)), InputError);
+  SimulatorOptions bad = options(DiscretizationMethod::AugmentedExponential, InputHold::ZeroOrder);
+  bad.time_step = 0.0;
+  EXPECT_THROW(Simulator(s, bad), InputError);
+  bad = options(DiscretizationMethod::ModalDecoupled, InputHold::ZeroOrder);
+  bad.modal_damping_ratios = Vector::Constant(3, 0.02);
+  EXPECT_THROW(Simulator(s, bad), InputError);
+  bad.modal_damping_ratios.resize(0);
+  bad.generalized_force = Vector::Zero(5);
+  EXPECT_THROW(Simulator(s, bad), InputError);
+  EXPECT_THROW(Simulator(fromSecondOrder(s)), InputError);  // continuous
+}
+
+// Given modal damping ratios replace C in the modal engine: equal to the augmented exponential
+// with the damping matrix that has exactly these ratios, C = M Phi diag(2 zeta omega) Phi^T M.
+TEST(Simulator, GivenModalDampingRatios) {
+  SecondOrderSystem s = test::randomVehicle(6, 2, 3, 4, 2e10, 0.0, 0.0);
+  const Vector zeta = Vector::LinSpaced(6, 0.01, 0.2);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> modes(s.stiffness, s.mass);
+  const Matrix mass_phi = s.mass * modes.eigenvectors();
+  const Vector d = 2.0 * zeta.cwiseProduct(modes.eigenvalues().cwiseSqrt());
+  SimulatorOptions o = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  o.modal_damping_ratios = zeta;
+  Simulator modal(s, o);
+  s.damping = mass_phi * d.asDiagonal() * mass_phi.transpose();
+  Simulator dense(s, options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder));
+  const Matrix w = bumpInputs(s.input_stations, 800, 1e-3, 10.0, 0.05, 1.0, 2.5);
+  EXPECT_LT(relativeBlockError(modal.simulate(w), dense.simulate(w), 3), kMethodAgreement);
+}
+
+#if defined(__GLIBC__)
+TEST(Simulator, StepDoesNotAllocate) {
+  const SecondOrderSystem s = test::randomVehicle(12, 3, 4, 9);
+  const Vector w = Vector::Random(6);
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled})
+    for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
+      Simulator sim(s, options(method, hold));
+      sim.step(w);  // warm-up outside the counted region
+      g_allocations = 0;
+      g_count_allocations = true;
+      for (int k = 0; k < 100; ++k) sim.step(w);
+      sim.step(w, w);
+      g_count_allocations = false;
+      EXPECT_EQ(g_allocations, 0);
+    }
+}
+#endif

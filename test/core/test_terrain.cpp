@@ -1,0 +1,606 @@
+// Terrain: grid interpolation, the paper's tracks (closed forms), ISO 8608 roads (PSD identities),
+// file round trips and every bad-input message, and the online TerrainBuffer.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <complex>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/terrain/iso8608.h"
+#include "tracked_vehicle_dynamics/terrain/moving_average.h"
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
+
+#ifndef TVD_SOURCE_DIR
+#define TVD_SOURCE_DIR "."
+#endif
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Exact arithmetic up to rounding of sums of a few thousand terms.
+constexpr double kRoundoff = 1e-12;
+// Smoothing the piecewise-linear interpolant of a sinusoid sampled every dx instead of the
+// sinusoid itself errs by about A (2π dx / λ)^2 / 12: below 7e-5 m for the tracks' waves.
+constexpr double kSamplingTolerance = 1e-4;
+// Relative tolerance of PSD / variance identities of the ISO 8608 synthesis.
+constexpr double kPsdTolerance = 0.10;
+
+double sinc(double window, double wavelength) {
+  const double a = kPi * window / wavelength;
+  return std::sin(a) / a;
+}
+
+/// Stations where h(x) - level changes sign, by linear interpolation between stations.
+std::vector<double> crossings(const Terrain& t, double y, double level, double from, double to) {
+  std::vector<double> out;
+  const Vector& x = t.stations();
+  const Vector h = t.profile(y);
+  for (Eigen::Index i = 1; i < x.size(); ++i) {
+    if (x(i - 1) < from || x(i) > to) continue;
+    const double a = h(i - 1) - level;
+    const double b = h(i) - level;
+    if ((a < 0.0) != (b < 0.0)) out.push_back(x(i - 1) + (x(i) - x(i - 1)) * a / (a - b));
+  }
+  return out;
+}
+
+/// Expects `call` to throw InputError whose message contains every one of `parts`.
+template <typename Call>
+void expectInputError(Call call, const std::vector<std::string>& parts) {
+  try {
+    call();
+    ADD_FAILURE() << "no InputError thrown (expected one mentioning '" << parts.front() << "')";
+  } catch (const InputError& e) {
+    for (const std::string& part : parts) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
+          << "message \"" << e.what() << "\" lacks \"" << part << "\"";
+    }
+  }
+}
+
+/// A scratch directory removed at the end of the test.
+class TempDir {
+ public:
+  TempDir() {
+    path_ = std::filesystem::temp_directory_path() /
+            ("tvd_terrain_test_" + std::to_string(::getpid()) + "_" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(path_);
+  }
+  ~TempDir() { std::filesystem::remove_all(path_); }
+  std::string file(const std::string& name, const std::string& content = "") const {
+    const std::string path = (path_ / name).string();
+    if (!content.empty()) std::ofstream(path) << content;
+    return path;
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Terrain grid
+
+TEST(Terrain, BilinearIsExactForBilinearSurfaces) {
+  // h = a + b x + c y + d x y is reproduced exactly by bilinear interpolation.
+  const auto surface = [](double x, double y) { return 0.1 + 0.2 * x - 0.3 * y + 0.05 * x * y; };
+  Vector x(4), y(3);
+  x << 0.0, 0.5, 1.5, 4.0;  // non-uniform
+  y << -1.0, 0.0, 2.0;
+  Matrix h(3, 4);
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 4; ++i) h(j, i) = surface(x(i), y(j));
+  }
+  const Terrain t(x, y, h);
+  EXPECT_FALSE(t.isUniform());
+  for (double xi = 0.0; xi <= 4.0; xi += 0.137) {
+    for (double yi = -1.0; yi <= 2.0; yi += 0.31) {
+      EXPECT_NEAR(t.height(xi, yi), surface(xi, yi), kRoundoff);
+      // Within a cell the x-slope of the bilinear surface is b + d y.
+      if (xi < 4.0) {
+        EXPECT_NEAR(t.slope(xi, yi), 0.2 + 0.05 * yi, kRoundoff);
+      }
+    }
+  }
+}
+
+TEST(Terrain, HoldsEdgesInXAndClampsInY) {
+  Vector x(3), y(2);
+  x << 0.0, 1.0, 2.0;
+  y << -1.0, 1.0;
+  Matrix h(2, 3);
+  h << 1.0, 2.0, 3.0,  //
+      5.0, 6.0, 7.0;
+  const Terrain t(x, y, h, "edges");
+  EXPECT_TRUE(t.isUniform());
+  EXPECT_DOUBLE_EQ(t.spacing(), 1.0);
+  EXPECT_DOUBLE_EQ(t.height(-10.0, -1.0), 1.0);
+  EXPECT_DOUBLE_EQ(t.height(10.0, 1.0), 7.0);
+  EXPECT_DOUBLE_EQ(t.height(1.0, -5.0), 2.0);
+  EXPECT_DOUBLE_EQ(t.height(1.0, 5.0), 6.0);
+  EXPECT_DOUBLE_EQ(t.height(0.5, 0.0), 3.5);
+  EXPECT_DOUBLE_EQ(t.slope(-1.0, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(t.slope(2.5, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(t.slope(0.5, 0.0), 1.0);
+  EXPECT_TRUE(std::isnan(t.height(std::nan(""), 0.0)));
+  EXPECT_DOUBLE_EQ(t.height(std::numeric_limits<double>::infinity(), 0.0), 5.0);
+}
+
+TEST(Terrain, SingleLateralLineIsUniformAcrossWidth) {
+  Vector x(2), y(1);
+  x << 0.0, 1.0;
+  y << 0.0;
+  Matrix h(1, 2);
+  h << 0.0, 1.0;
+  const Terrain t(x, y, h);
+  EXPECT_DOUBLE_EQ(t.height(0.25, -3.0), 0.25);
+  EXPECT_DOUBLE_EQ(t.height(0.25, 3.0), 0.25);
+}
+
+TEST(Terrain, RejectsBadGrids) {
+  Vector x(3), y(2);
+  x << 0.0, 1.0, 1.0;
+  y << -1.0, 1.0;
+  expectInputError([&] { Terrain(x, y, Matrix::Zero(2, 3), "dup"); },
+                   {"terrain 'dup'", "station 2", "strictly increasing"});
+  x << 0.0, 1.0, 2.0;
+  Matrix h = Matrix::Zero(2, 3);
+  h(1, 2) = std::nan("");
+  expectInputError([&] { Terrain(x, y, h, "nan"); }, {"lateral line 1", "station 2", "not finite"});
+  expectInputError([&] { Terrain(x, y, Matrix::Zero(3, 3), "size"); },
+                   {"heights are 3 x 3", "expected 2 lateral lines x 3 stations"});
+  expectInputError([&] { Terrain(Vector(), y, Matrix::Zero(2, 0), "empty"); }, {"no stations"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// Moving average
+
+TEST(MovingAverage, KeepsLinesAndScalesSinusoidsBySinc) {
+  const double dx = 0.01;
+  const double window = 0.2;
+  const int n = 2001;
+  Vector line(n), wave(n);
+  const double wavelength = 1.0;
+  for (int i = 0; i < n; ++i) {
+    line(i) = 0.3 - 0.7 * i * dx;
+    wave(i) = std::sin(2.0 * kPi * i * dx / wavelength);
+  }
+  const Vector smooth_line = movingAverage(line, dx, window);
+  const Vector smooth_wave = movingAverage(wave, dx, window);
+  const double interpolation_error = std::pow(2.0 * kPi * dx / wavelength, 2) / 12.0;
+  for (int i = 10; i < n - 10; ++i) {  // away from the held edges
+    EXPECT_NEAR(smooth_line(i), line(i), kRoundoff);
+    EXPECT_NEAR(smooth_wave(i), sinc(window, wavelength) * wave(i), 1.1 * interpolation_error);
+  }
+  EXPECT_EQ(movingAverage(wave, dx, 0.0), wave);
+  expectInputError([&] { movingAverage(wave, 0.0, window); }, {"spacing 0 m"});
+  expectInputError([&] { movingAverage(wave, dx, -1.0); }, {"window -1 m"});
+}
+
+// ---------------------------------------------------------------------------------------------
+// The paper's tracks (§4.2.1)
+
+TEST(Tracks, FactoryKnowsThePaperTracks) {
+  const std::vector<std::string> names = trackNames();
+  ASSERT_EQ(names.size(), 3u);
+  for (const std::string& name : names) {
+    const Terrain t = makeTrack(name);
+    EXPECT_EQ(t.name(), name);
+    EXPECT_EQ(t.stations().size(), 3001);
+    EXPECT_DOUBLE_EQ(t.startStation(), 0.0);
+    EXPECT_NEAR(t.endStation(), kTrackLength, kRoundoff);
+    EXPECT_NEAR(t.spacing(), kTrackSpacing, kRoundoff);
+    EXPECT_NEAR(t.lateral().maxCoeff() - t.lateral().minCoeff(), kTrackWidth, kRoundoff);
+    // Flat entry and exit.
+    EXPECT_DOUBLE_EQ(t.height(0.0, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(t.height(kTrackLength, 0.0), 0.0);
+  }
+  expectInputError([] { makeTrack("moon"); }, {"unknown track 'moon'", "long_hill", "oop_waves"});
+  TrackOptions bad;
+  bad.spacing = 0.0;
+  expectInputError([&] { makeTrack("long_hill", bad); }, {"TrackOptions::spacing"});
+  EXPECT_DOUBLE_EQ(defaultLateralOffset("oop_waves"), kOopWavesLateralOffset);
+  EXPECT_DOUBLE_EQ(defaultLateralOffset("long_hill"), 0.0);
+}
+
+TEST(Tracks, LongHillClosedForms) {
+  const Terrain t = makeTrack("long_hill");
+  const double w = kTrackSmoothingWindow;
+  const double s = kLongHillHeight / kLongHillRamp;  // ramp slope
+  // Plateau: exactly the hill height at least W/2 away from the ramp corners, any y.
+  for (double x = kLongHillStart + kLongHillRamp + w / 2; x <= 18.9 + 1e-9; x += 0.05) {
+    for (double y : {-2.5, 0.0, 1.3}) EXPECT_NEAR(t.height(x, y), kLongHillHeight, kRoundoff);
+  }
+  // Ramp midpoints and the linear stretch of the ramps.
+  EXPECT_NEAR(t.height(10.5, 0.0), 0.5 * kLongHillHeight, kRoundoff);
+  EXPECT_NEAR(t.height(19.5, 0.0), 0.5 * kLongHillHeight, kRoundoff);
+  EXPECT_NEAR(t.height(10.3, 0.0), s * 0.3, kRoundoff);
+  EXPECT_NEAR(t.slope(10.5, 0.0), s, kRoundoff);
+  EXPECT_NEAR(t.slope(19.5, 0.0), -s, kRoundoff);
+  EXPECT_NEAR(t.slope(15.0, 0.0), 0.0, kRoundoff);
+  // Smoothed corners: h = s (x - x_c + W/2)^2 / (2 W) near the foot, s W / 8 at the corner.
+  EXPECT_NEAR(t.height(10.0, 0.0), s * w / 8.0, kRoundoff);
+  EXPECT_NEAR(t.height(11.0, 0.0), kLongHillHeight - s * w / 8.0, kRoundoff);
+  EXPECT_NEAR(t.height(20.0, 0.0), s * w / 8.0, kRoundoff);
+  for (double x : {9.93, 9.95, 10.04, 10.07}) {
+    const double d = x - (kLongHillStart - w / 2);
+    EXPECT_NEAR(t.height(x, 0.0), s * d * d / (2.0 * w), kRoundoff) << "x = " << x;
+  }
+  // Flat run-in and run-out up to W/2 from the feet.
+  EXPECT_DOUBLE_EQ(t.height(9.9, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(t.height(20.1, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(t.height(-3.0, 0.0), 0.0);
+}
+
+TEST(Tracks, SeparatedWavesWavelengthAndDepth) {
+  const Terrain t = makeTrack("separated_waves");
+  const double d = kSeparatedWavesDepth;
+  const double lambda = kSeparatedWavesWavelength;
+  const double gain = sinc(kTrackSmoothingWindow, lambda);
+  const double end = kSeparatedWavesStart + kSeparatedWavesPeriods * lambda;
+  // Hollows below the ground: never above it.
+  EXPECT_LE(t.heights().maxCoeff(), kRoundoff);
+  // Mid-level crossings every half wavelength: 2 per period.
+  const std::vector<double> x = crossings(t, 0.0, -d / 2, kSeparatedWavesStart + 0.5, end - 0.5);
+  ASSERT_EQ(x.size(), 2u * kSeparatedWavesPeriods - 2);
+  for (std::size_t i = 1; i < x.size(); ++i) EXPECT_NEAR(x[i] - x[i - 1], lambda / 2, 1e-3);
+  // Depth: peak-to-trough D sinc(W/λ) between interior crests (x0 + kλ) and troughs.
+  for (int k = 1; k < kSeparatedWavesPeriods; ++k) {
+    const double crest = kSeparatedWavesStart + k * lambda;
+    EXPECT_NEAR(t.height(crest, 0.0), -0.5 * d * (1.0 - gain), kSamplingTolerance);
+    EXPECT_NEAR(t.height(crest + lambda / 2, 0.0), -0.5 * d * (1.0 + gain), kSamplingTolerance);
+  }
+  // Uniform across the width.
+  EXPECT_EQ(t.profile(-2.5), t.profile(2.5));
+}
+
+TEST(Tracks, OopWavesOppositePhaseAndInnerOuterDiffer) {
+  TrackOptions centred;
+  centred.lateral_offset = 0.0;
+  const Terrain t = makeTrack("oop_waves", centred);
+  const double lambda = kOopWavesWavelength;
+  const double gain = sinc(kTrackSmoothingWindow, lambda);
+  for (double x = 0.0; x <= kTrackLength; x += 0.173) {
+    for (double y : {0.5, 1.1, 1.7, 2.5}) {
+      EXPECT_NEAR(t.height(x, y), -t.height(x, -y), kRoundoff) << "x = " << x << ", y = " << y;
+    }
+  }
+  // At a crest of the left side (quarter wavelength), the outer pad row is higher than the inner
+  // one, in the ratio of their lateral positions (amplitude linear in y).
+  const double crest = kOopWavesStart + 2.25 * lambda;
+  const double inner = t.height(crest, 1.1);
+  const double outer = t.height(crest, 1.7);
+  EXPECT_GT(inner, 0.05);
+  EXPECT_GT(outer - inner, 0.05);
+  EXPECT_NEAR(outer / inner, 1.7 / 1.1, 1e-9);
+  EXPECT_NEAR(t.height(crest, 2.5), 0.5 * kOopWavesDepth * gain, kSamplingTolerance);
+  EXPECT_NEAR(t.height(crest, -2.5), -0.5 * kOopWavesDepth * gain, kSamplingTolerance);
+  // Zero crossings every half wavelength.
+  const double end = kOopWavesStart + kOopWavesPeriods * lambda;
+  const std::vector<double> x = crossings(t, 2.5, 0.0, kOopWavesStart + 0.3, end - 0.3);
+  ASSERT_GE(x.size(), 2u * kOopWavesPeriods - 2);
+  for (std::size_t i = 1; i < x.size(); ++i) EXPECT_NEAR(x[i] - x[i - 1], lambda / 2, 1e-3);
+}
+
+TEST(Tracks, OopWavesDefaultOffsetShiftsThePathFrame) {
+  TrackOptions centred;
+  centred.lateral_offset = 0.0;
+  const Terrain on_track = makeTrack("oop_waves", centred);
+  const Terrain driven = makeTrack("oop_waves");  // 1 m offset towards +y
+  const Vector shifted = on_track.lateral().array() - kOopWavesLateralOffset;
+  EXPECT_TRUE(driven.lateral().isApprox(shifted));
+  for (double x = 9.0; x <= 21.0; x += 0.37) {
+    for (double y : {-1.4, -1.1, 1.1, 1.4}) {
+      EXPECT_NEAR(driven.height(x, y), on_track.height(x, y + kOopWavesLateralOffset), kRoundoff);
+    }
+  }
+  // With the offset the two sides no longer cancel: the vehicle also heaves.
+  const double crest = kOopWavesStart + 2.25 * kOopWavesWavelength;
+  EXPECT_GT(driven.height(crest, 1.4) + driven.height(crest, -1.4), 0.1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// ISO 8608
+
+TEST(Iso8608, ClassReferencePsd) {
+  EXPECT_DOUBLE_EQ(iso8608ReferencePsd('A'), 16e-6);
+  EXPECT_DOUBLE_EQ(iso8608ReferencePsd('C'), 256e-6);
+  EXPECT_DOUBLE_EQ(iso8608ReferencePsd('h'), 16e-6 * std::pow(4.0, 7));
+  EXPECT_DOUBLE_EQ(iso8608Psd('B', 0.2), 64e-6 / 4.0);
+  expectInputError([] { iso8608ReferencePsd('I'); }, {"class 'I' is not one of A..H"});
+  expectInputError([] { makeIso8608('Z', 100.0, 5.0, 0.05, 1); }, {"class 'Z'"});
+  expectInputError([] { makeIso8608('C', 100.0, 5.0, 0.25, 1); }, {"Nyquist"});
+  expectInputError([] { makeIso8608('C', -1.0, 5.0, 0.05, 1); }, {"length -1 m"});
+}
+
+TEST(Iso8608, VarianceMatchesPsdIntegral) {
+  const double length = 200.0;
+  const double spacing = 0.05;
+  Iso8608Options options;  // ISO band 0.011 .. 2.83 cycles/m
+  const Terrain road = makeIso8608('C', length, 5.0, spacing, 42, options);
+  const Vector h = road.profile(0.0);
+  // One period: samples 0 .. N-2 (the last station repeats the first).
+  const Vector period = h.head(h.size() - 1);
+  const double mean = period.mean();
+  const double variance = (period.array() - mean).square().mean();
+  const double generated_low = std::max(options.min_frequency, 0.5 / length);
+  const double expected = iso8608Variance('C', generated_low, options.max_frequency);
+  EXPECT_NEAR(variance / expected, 1.0, kPsdTolerance);
+  EXPECT_NEAR(mean, 0.0, 1e-9);
+}
+
+TEST(Iso8608, PeriodogramFollowsClassPsd) {
+  const double length = 200.0;
+  const double spacing = 0.05;
+  const Terrain road = makeIso8608('D', length, 5.0, spacing, 7);
+  const Vector h = road.profile(0.0);
+  const Eigen::Index m = h.size() - 1;  // samples in one period
+  // Fit log G = log G(n0) - w log(n / n0) over harmonics well inside the band.
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int count = 0;
+  for (int k = 10; k <= 500; k += 7) {
+    std::complex<double> x(0.0, 0.0);
+    for (Eigen::Index i = 0; i < m; ++i) x += h(i) * std::polar(1.0, -2.0 * kPi * k * i / m);
+    const double amplitude = 2.0 * std::abs(x) / static_cast<double>(m);
+    const double psd = amplitude * amplitude / 2.0 * length;  // a_k^2 / (2 Δn)
+    const double lx = std::log(k / length / kIso8608ReferenceFrequency);
+    const double ly = std::log(psd);
+    sx += lx;
+    sy += ly;
+    sxx += lx * lx;
+    sxy += lx * ly;
+    ++count;
+  }
+  const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  const double intercept = (sy - slope * sx) / count;
+  EXPECT_NEAR(slope, -2.0, 0.02);
+  EXPECT_NEAR(std::exp(intercept) / iso8608ReferencePsd('D'), 1.0, kPsdTolerance);
+}
+
+TEST(Iso8608, SeedsAreDeterministicAndClassesScale) {
+  const Terrain a = makeIso8608('B', 100.0, 5.0, 0.05, 123);
+  const Terrain b = makeIso8608('B', 100.0, 5.0, 0.05, 123);
+  const Terrain c = makeIso8608('B', 100.0, 5.0, 0.05, 124);
+  EXPECT_EQ(a.heights(), b.heights());
+  EXPECT_GT((a.heights() - c.heights()).cwiseAbs().maxCoeff(), 1e-3);
+  // One class up is 4x the PSD: the same seed gives twice the heights.
+  const Terrain up = makeIso8608('C', 100.0, 5.0, 0.05, 123);
+  EXPECT_TRUE(up.heights().isApprox(2.0 * a.heights(), 1e-12));
+  // Fully correlated by default: both sides see the same profile.
+  EXPECT_EQ(a.profile(-2.5), a.profile(2.5));
+}
+
+TEST(Iso8608, IndependentSidesAndTaper) {
+  Iso8608Options options;
+  options.correlation = LateralCorrelation::IndependentSides;
+  options.taper_length = 5.0;
+  const Terrain road = makeIso8608('E', 100.0, 4.0, 0.05, 9, options);
+  ASSERT_EQ(road.lateral().size(), 4);
+  const Vector right = road.profile(-1.5);
+  const Vector left = road.profile(1.5);
+  EXPECT_GT((left - right).cwiseAbs().maxCoeff(), 1e-3);
+  EXPECT_NEAR(right(0), 0.0, kRoundoff);
+  EXPECT_NEAR(left(left.size() - 1), 0.0, kRoundoff);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files
+
+TEST(TerrainIo, CsvRoundTripIsExact) {
+  const TempDir dir;
+  const Terrain hill = makeTrack("long_hill");
+  const std::string path = dir.file("long_hill.csv");
+  hill.saveCsv(path);
+  const Terrain loaded = loadTerrain(path);
+  EXPECT_EQ(loaded.name(), "long_hill");
+  EXPECT_EQ(loaded.stations(), hill.stations());
+  EXPECT_EQ(loaded.lateral(), hill.lateral());
+  EXPECT_EQ(loaded.heights(), hill.heights());
+}
+
+TEST(TerrainIo, YamlRoundTripIsExact) {
+  const TempDir dir;
+  const Terrain road = makeIso8608('C', 20.0, 3.0, 0.05, 5);
+  const std::string path = dir.file("road.yaml");
+  road.saveYaml(path);
+  const Terrain loaded = loadTerrain(path);
+  EXPECT_EQ(loaded.name(), road.name());
+  EXPECT_EQ(loaded.stations(), road.stations());
+  EXPECT_EQ(loaded.lateral(), road.lateral());
+  EXPECT_EQ(loaded.heights(), road.heights());
+}
+
+TEST(TerrainIo, TwoColumnCsvIsUniformAcrossWidth) {
+  const TempDir dir;
+  for (const std::string& content :
+       {std::string("x,h\n0,0\n1,0.5\n"), std::string("0,0\n1,0.5\n")}) {
+    const Terrain t = loadTerrainCsv(dir.file("profile.csv", content));
+    EXPECT_EQ(t.lateral().size(), 1);
+    EXPECT_DOUBLE_EQ(t.height(0.5, -2.0), 0.25);
+    EXPECT_DOUBLE_EQ(t.height(0.5, 2.0), 0.25);
+  }
+}
+
+TEST(TerrainIo, ShippedExamplesLoad) {
+  const std::string dir = std::string(TVD_SOURCE_DIR) + "/config/tracks/";
+  const Terrain bump = loadTerrain(dir + "bump.yaml");
+  EXPECT_EQ(bump.name(), "bump");
+  EXPECT_NEAR(bump.height(1.5, 0.0), 0.1, 1e-9);
+  const Terrain twist = loadTerrain(dir + "twist.csv");
+  EXPECT_EQ(twist.lateral().size(), 3);
+  EXPECT_NEAR(twist.height(1.5, 1.5), -twist.height(1.5, -1.5), kRoundoff);
+  EXPECT_GT(twist.height(1.5, 1.5), 0.0);
+  const Terrain step = loadTerrain(dir + "step_profile.csv");
+  EXPECT_DOUBLE_EQ(step.height(3.0, 1.0), 0.05);
+}
+
+TEST(TerrainIo, BadCsvNamesFileAndRow) {
+  const TempDir dir;
+  struct Case {
+    std::string content;
+    std::vector<std::string> parts;
+  };
+  const std::vector<Case> cases = {
+      {"x,-1,1\n0,0,0\n1,nan,0\n", {"row 3, column 2", "height 'nan' is not a finite number"}},
+      {"x,-1,1\n0,0,0\ninf,0,0\n", {"row 3, column 1", "station 'inf' is not a finite number"}},
+      {"x,-1,1\n0,0,0\n1,0,0\n1,0,0\n", {"row 4", "duplicate station x = 1 m (also on row 3)"}},
+      {"x,-1,1\n0,0,0\n2,0,0\n1,0,0\n", {"row 4", "stations must be strictly increasing"}},
+      {"x,-1,1\n0,0,0\n1,0\n", {"row 3", "expected 3 columns (x and 2 heights), got 2"}},
+      {"x,-1,1\n0,0,0\n1,abc,0\n", {"row 3, column 2", "height 'abc' is not a number"}},
+      {"# only a comment\n\n", {"empty (no header or data rows)"}},
+      {"x,-1,1\n", {"no data rows (only a header)"}},
+      {"0,0,0\n1,0,0\n", {"row 1", "need a header row"}},
+      {"x,1,-1\n0,0,0\n", {"row 1, column 3", "lateral positions must be strictly increasing"}},
+      {"x,left,right\n0,0,0\n", {"row 1, column 2", "lateral position 'left' is not a number"}},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string path = dir.file("bad" + std::to_string(i) + ".csv", cases[i].content);
+    std::vector<std::string> parts = cases[i].parts;
+    parts.push_back(path);
+    SCOPED_TRACE(cases[i].content);
+    expectInputError([&] { loadTerrainCsv(path); }, parts);
+  }
+  expectInputError([&] { loadTerrain(dir.file("missing.csv")); },
+                   {"missing.csv", "file not found"});
+  expectInputError([&] { loadTerrain(dir.file("terrain.txt", "0,0\n")); },
+                   {"terrain.txt", "unknown terrain file type '.txt'"});
+}
+
+TEST(TerrainIo, BadYamlNamesFileAndKey) {
+  const TempDir dir;
+  struct Case {
+    std::string content;
+    std::vector<std::string> parts;
+  };
+  const std::vector<Case> cases = {
+      {"spacing: 0.1\ny: [-1, 1]\nheights:\n  - [0, 0, 0]\n  - [0, 0, .nan]\n",
+       {"heights[1][2]", "not a finite number"}},
+      {"spacing: 0.1\ny: [-1, 1]\nheights:\n  - [0, 0, 0]\n  - [0, 0]\n",
+       {"heights[1]", "expected 3 heights"}},
+      {"x: [0, 1, 1]\nheights: [0, 0, 0]\n", {"x[2]", "duplicate station 1 m"}},
+      {"x: [0, 2, 1]\nheights: [0, 0, 0]\n", {"x[2]", "stations must be strictly increasing"}},
+      {"x: [0, 1]\nheights: [0, 0, 0]\n", {"x", "got 2 entries"}},
+      {"spacing: 0.1\nx: [0, 1, 2]\nheights: [0, 0, 0]\n", {"exactly one of 'spacing'"}},
+      {"spacing: -0.1\nheights: [0, 0, 0]\n", {"spacing", "must be > 0"}},
+      {"spacing: 0.1\n", {"heights", "required key is missing"}},
+      {"spacing: 0.1\nheights: [0, 0]\nwidth: 3\n", {"width", "unknown key"}},
+      {"spacing: 0.1\ny: [1, -1]\nheights: [[0], [0]]\n",
+       {"y[1]", "lateral positions must be strictly increasing"}},
+      {"spacing: 0.1\nheights: []\n", {"heights", "at least one height"}},
+  };
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const std::string path = dir.file("bad" + std::to_string(i) + ".yaml", cases[i].content);
+    std::vector<std::string> parts = cases[i].parts;
+    parts.push_back(path);
+    SCOPED_TRACE(cases[i].content);
+    expectInputError([&] { loadTerrainYaml(path); }, parts);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// TerrainBuffer
+
+/// A patch of h = 0.1 x + 0.05 y, linear so that interpolation and bridging are exact.
+void addPlane(TerrainBuffer* buffer, double start, double spacing, int samples) {
+  Vector y(3);
+  y << -1.0, 0.0, 1.0;
+  Matrix h(3, samples);
+  for (int j = 0; j < 3; ++j) {
+    for (int k = 0; k < samples; ++k) h(j, k) = 0.1 * (start + k * spacing) + 0.05 * y(j);
+  }
+  buffer->addPatch(start, spacing, y, h);
+}
+
+TEST(TerrainBuffer, ContiguousPatchesActAsOneGrid) {
+  TerrainBuffer buffer;
+  EXPECT_TRUE(buffer.empty());
+  EXPECT_EQ(buffer.coveredUntil(), -std::numeric_limits<double>::infinity());
+  expectInputError([&] { buffer.height(0.0, 0.0); }, {"not covered", "no terrain received"});
+  addPlane(&buffer, 0.0, 0.1, 10);  // 0 .. 0.9
+  addPlane(&buffer, 1.0, 0.1, 10);  // 1.0 .. 1.9: the 0.9 .. 1.0 gap is bridged
+  EXPECT_EQ(buffer.patchCount(), 2u);
+  EXPECT_DOUBLE_EQ(buffer.coveredFrom(), 0.0);
+  EXPECT_NEAR(buffer.coveredUntil(), 1.9, kRoundoff);
+  for (double x = 0.0; x <= 1.9; x += 0.023) {
+    for (double y : {-1.0, -0.3, 0.8}) {
+      ASSERT_TRUE(buffer.covers(x)) << x;
+      EXPECT_NEAR(buffer.height(x, y), 0.1 * x + 0.05 * y, kRoundoff) << "x = " << x;
+    }
+  }
+  EXPECT_FALSE(buffer.covers(2.5));
+  expectInputError([&] { buffer.height(2.5, 0.0); },
+                   {"x = 2.5 m is not covered", "contiguous until 1.9 m"});
+  // A hole: coverage stays contiguous up to 1.9 m.
+  addPlane(&buffer, 5.0, 0.1, 10);
+  EXPECT_NEAR(buffer.coveredUntil(), 1.9, kRoundoff);
+  EXPECT_FALSE(buffer.covers(3.0));
+  EXPECT_TRUE(buffer.covers(5.5));
+}
+
+TEST(TerrainBuffer, NewerPatchWinsAndFreesCoveredOnes) {
+  TerrainBuffer buffer;
+  addPlane(&buffer, 0.0, 0.1, 20);  // 0 .. 1.9
+  Vector y(1);
+  y << 0.0;
+  buffer.addPatch(0.5, 0.1, y, Matrix::Constant(1, 4, 7.0));  // 0.5 .. 0.8
+  EXPECT_DOUBLE_EQ(buffer.height(0.6, 0.3), 7.0);
+  EXPECT_NEAR(buffer.height(0.3, 0.0), 0.03, kRoundoff);
+  EXPECT_NEAR(buffer.height(1.2, 0.0), 0.12, kRoundoff);
+  EXPECT_EQ(buffer.patchCount(), 2u);
+  // A patch over everything frees both.
+  addPlane(&buffer, 0.0, 0.05, 41);  // 0 .. 2.0
+  EXPECT_EQ(buffer.patchCount(), 1u);
+  EXPECT_NEAR(buffer.height(0.6, 0.0), 0.06, kRoundoff);
+}
+
+TEST(TerrainBuffer, DropBehindFreesOldDataAndKeepsTheRest) {
+  TerrainBuffer buffer;
+  for (int p = 0; p < 5; ++p) addPlane(&buffer, p * 1.0, 0.1, 10);  // 0 .. 4.9
+  EXPECT_NEAR(buffer.coveredUntil(), 4.9, kRoundoff);
+  buffer.dropBehind(2.35);
+  EXPECT_EQ(buffer.patchCount(), 3u);
+  EXPECT_LE(buffer.coveredFrom(), 2.35);
+  EXPECT_GT(buffer.coveredFrom(), 2.2);
+  EXPECT_FALSE(buffer.covers(1.0));
+  for (double x = 2.35; x <= 4.9; x += 0.05) EXPECT_NEAR(buffer.height(x, 0.0), 0.1 * x, kRoundoff);
+  // Dropping just past a patch end keeps the bridge into the next patch.
+  buffer.dropBehind(2.95);
+  EXPECT_NEAR(buffer.height(2.95, 0.0), 0.295, kRoundoff);
+  buffer.clear();
+  EXPECT_TRUE(buffer.empty());
+}
+
+TEST(TerrainBuffer, RejectsBadPatches) {
+  TerrainBuffer buffer;
+  Vector y(2);
+  y << -1.0, 1.0;
+  Matrix h = Matrix::Zero(2, 5);
+  expectInputError([&] { buffer.addPatch(3.0, 0.0, y, h); },
+                   {"patch at station 3 m", "spacing 0 m must be positive"});
+  expectInputError([&] { buffer.addPatch(3.0, 0.1, y, Matrix::Zero(3, 5)); },
+                   {"3 lines", "2 lateral positions"});
+  h(1, 4) = std::nan("");
+  expectInputError([&] { buffer.addPatch(3.0, 0.1, y, h); }, {"line 1, sample 4 is not finite"});
+  Vector reversed(2);
+  reversed << 1.0, -1.0;
+  expectInputError([&] { buffer.addPatch(3.0, 0.1, reversed, Matrix::Zero(2, 5)); },
+                   {"lateral position 1", "not greater"});
+  expectInputError([&] { buffer.addPatch(std::nan(""), 0.1, y, Matrix::Zero(2, 5)); },
+                   {"start station is not finite"});
+  EXPECT_TRUE(buffer.empty());
+}
+
+}  // namespace
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics
