@@ -129,8 +129,16 @@ class ModalEngine : public SimulatorEngine {
     coefficients_ = discretizeModes(modal.naturalFrequencies(), modal.dampingCoefficients(),
                                     options.time_step, options.hold);
     first_order_ = options.hold == InputHold::FirstOrder;
-    psi_.resize(n, 2 * n_u);
-    psi_ << modal.modalInputStiffness(), modal.modalInputDamping();
+    // Psi = [Phi^T K_u, Phi^T C_u] without its zero columns (e.g. C_u = 0: no tyre damping),
+    // which would only cost multiplications by zero in every step.
+    Matrix psi(n, 2 * n_u);
+    psi << modal.modalInputStiffness(), modal.modalInputDamping();
+    for (DofIndex j = 0; j < psi.cols(); ++j)
+      if (!psi.col(j).isZero(0.0)) active_inputs_.push_back(j);
+    psi_.resize(n, static_cast<DofIndex>(active_inputs_.size()));
+    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
+      psi_.col(static_cast<DofIndex>(j)) = psi.col(active_inputs_[j]);
+    active_input_.setZero(psi_.cols());
     omega_squared_ = modal.naturalFrequencies().cwiseAbs2();
     damping_ = modal.dampingCoefficients();
     modal_output_ = modal.modalOutput();
@@ -177,12 +185,14 @@ class ModalEngine : public SimulatorEngine {
 
   void setInput(const Vector& input) override {
     w_ = input;
-    p_.noalias() = psi_ * w_;
+    gatherActive(w_);
+    p_.noalias() = psi_ * active_input_;
     updateOutputs();
   }
 
   void advance(const Vector& input_next) override {
-    p_next_.noalias() = psi_ * input_next;
+    gatherActive(input_next);
+    p_next_.noalias() = psi_ * active_input_;
     advanceModes(p_.data(), p_next_.data(), eta_.data(), eta_dot_.data(), eta_next_.data(),
                  eta_dot_.data());
     eta_.swap(eta_next_);
@@ -213,7 +223,8 @@ class ModalEngine : public SimulatorEngine {
     Matrix forces(n, kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
     for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
       const DofIndex b = std::min(kBlock, n_t - k0);
-      forces.leftCols(b).noalias() = psi_ * inputs.middleRows(k0, b).transpose();
+      forces.leftCols(b).noalias() =
+          psi_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
       for (DofIndex j = 0; j < b; ++j) {
         const double* p_prev = j == 0 ? p_.data() : forces.col(j - 1).data();
         const double* eta_prev = j == 0 ? eta_.data() : disp.col(j - 1).data();
@@ -248,6 +259,11 @@ class ModalEngine : public SimulatorEngine {
  private:
   using ArrayMap = Eigen::Map<Eigen::ArrayXd>;
   using ConstArrayMap = Eigen::Map<const Eigen::ArrayXd>;
+
+  void gatherActive(const Vector& input) {
+    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
+      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
+  }
 
   // One step of every mode; eta_dot_out may alias eta_dot (coefficient-wise).
   void advanceModes(const double* p, const double* p_next, const double* eta,
@@ -284,6 +300,8 @@ class ModalEngine : public SimulatorEngine {
   Matrix psi_, modal_output_, shapes_, mass_projection_;
   Vector omega_squared_, damping_, force_, offset_disp_, offset_vel_;
   Vector eta_, eta_dot_, eta_next_, eta_ddot_, p_, p_next_;
+  std::vector<DofIndex> active_inputs_;  // columns of w with a non-zero modal force
+  Vector active_input_;                  // w restricted to active_inputs_
   DofIndex n_y_ = 0;
   DofIndex disp_offset_ = -1, vel_offset_ = -1, acc_offset_ = -1;
 };

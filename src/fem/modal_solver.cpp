@@ -1,12 +1,12 @@
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 
-#include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/SymGEigsShiftSolver.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <tuple>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -23,6 +23,8 @@ constexpr double kTwoPi = 6.283185307179586;
 constexpr int kMaxDeflationPasses = 6;
 constexpr int kVerificationModes = 6;
 constexpr double kRepeatedTolerance = 1e-6;
+// A verification Ritz pair is accepted as an eigenpair below this relative residual.
+constexpr double kRitzResidual = 1e-8;
 
 // y = (K - sigma M)^-1 x for Spectra's shift-invert mode, with one CHOLMOD factorisation
 // (K - sigma M is positive definite for sigma < 0 when M is positive semi-definite and K + |sigma|M
@@ -76,6 +78,71 @@ class ShiftInvertOp {
   Matrix mass_deflation_;
   mutable Vector coeffs_;
 };
+
+// y = M x with M stored in full (both triangles): cheaper than a self-adjoint-view product, and
+// Spectra applies B several times per Lanczos step (B-inner products and norms).
+class MassProduct {
+ public:
+  using Scalar = double;
+  explicit MassProduct(const SparseMatrix& m) : m_(m) {}
+  Eigen::Index rows() const { return m_.rows(); }
+  Eigen::Index cols() const { return m_.cols(); }
+  void perform_op(const double* x, double* y) const {
+    Eigen::Map<Vector>(y, m_.rows()).noalias() = m_ * Eigen::Map<const Vector>(x, m_.cols());
+  }
+
+ private:
+  const SparseMatrix& m_;
+};
+
+struct RitzBlock {
+  Vector values;     // Ritz values (approximate omega^2)
+  Matrix vectors;    // Ritz vectors
+  Vector residuals;  // ||K z - theta M z|| / ||K z|| (or / ||M z|| for theta ~ 0)
+};
+
+// A few steps of block power iteration with the (deflated) shift-invert operator, then
+// Rayleigh-Ritz on (K, M): cheap detection of eigenvalues that dominate the deflated operator.
+RitzBlock blockVerification(const ShiftInvertOp& op, const SparseMatrix& k, const SparseMatrix& m,
+                            int block_size) {
+  constexpr int kPowerSteps = 4;
+  const Eigen::Index n = k.rows();
+  std::mt19937_64 rng(12345);  // fixed seed: results are reproducible
+  std::normal_distribution<double> normal;
+  Matrix x(n, block_size);
+  for (Eigen::Index j = 0; j < x.cols(); ++j)
+    for (Eigen::Index i = 0; i < n; ++i) x(i, j) = normal(rng);
+  Vector mx(n);
+  RitzBlock out;
+  for (int step = 0; step < kPowerSteps; ++step) {
+    Matrix y(n, block_size);
+    for (int j = 0; j < block_size; ++j) {
+      mx.noalias() = m * x.col(j);
+      op.perform_op(mx.data(), y.col(j).data());
+    }
+    // Rayleigh-Ritz on span(y), which also re-orthonormalises the block.
+    const Matrix ky = k * y;
+    const Matrix my = m * y;
+    Matrix kr = y.transpose() * ky;
+    Matrix mr = y.transpose() * my;
+    kr = 0.5 * (kr + kr.transpose()).eval();
+    mr = 0.5 * (mr + mr.transpose()).eval();
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> es(kr, mr);
+    if (es.info() != Eigen::Success) break;  // block lost rank: nothing left to find
+    x = y * es.eigenvectors();
+    out.values = es.eigenvalues();
+    out.vectors = x;
+    out.residuals.resize(block_size);
+    const Matrix kz = ky * es.eigenvectors();
+    const Matrix mz = my * es.eigenvectors();
+    for (int j = 0; j < block_size; ++j) {
+      const double scale = std::max(kz.col(j).norm(), mz.col(j).norm() * std::abs(out.values(j)));
+      out.residuals(j) = (kz.col(j) - out.values(j) * mz.col(j)).norm() /
+                         std::max(scale, std::numeric_limits<double>::min());
+    }
+  }
+  return out;
+}
 
 void checkInputs(const SparseMatrix& k, const SparseMatrix& m, int count) {
   if (k.rows() != k.cols() || m.rows() != m.cols() || k.rows() != m.rows())
@@ -154,14 +221,14 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
   }
 
   ShiftInvertOp op(stiffness, mass);
-  Spectra::SparseSymMatProd<double> bop(mass);
+  MassProduct bop(mass);
   int iterations = 0;
 
   // One implicitly restarted Lanczos run for the `nev` eigenvalues closest to sigma.
   auto lanczos = [&](int nev) {
     nev = static_cast<int>(std::min<Eigen::Index>(nev, n - 1));
     const int ncv = static_cast<int>(std::min<Eigen::Index>(std::max(2 * nev + 1, 20), n));
-    Spectra::SymGEigsShiftSolver<ShiftInvertOp, Spectra::SparseSymMatProd<double>,
+    Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassProduct,
                                  Spectra::GEigsMode::ShiftInvert>
         solver(op, bop, nev, ncv, sigma);
     solver.init();
@@ -195,20 +262,37 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     nev = std::min(request.count, 2 * nev);
   }
 
-  // Verification passes on the deflated operator: a Krylov space holds one vector per distinct
-  // eigenvalue, so repeated eigenvalues (the six rigid-body modes of a free structure, symmetric
-  // left/right pairs) may be missed. Any eigenvalue of the deflated problem below the highest one
-  // kept belongs to the wanted set; repeat until a pass adds nothing.
+  // Verification of repeated eigenvalues: a Krylov space holds one vector per distinct
+  // eigenvalue, so exact copies (the six rigid-body modes of a free structure, symmetric pairs)
+  // may be missed. A missed copy has an eigenvalue below the highest one kept, i.e. it dominates
+  // the deflated operator P (K - sigma M)^-1 M; a few block power steps with Rayleigh-Ritz find
+  // it cheaply. A Ritz value that lies below but has not converged triggers a full deflated
+  // Lanczos run instead.
   for (int pass = 0; pass < kMaxDeflationPasses; ++pass) {
     const Eigen::Index found = values.size();
-    if (found == 0 || found >= n - 1) break;
+    if (found == 0 || found + kVerificationModes >= n) break;
     ModalBasis current = sortAndNormalise(values, vectors, &mass, nullptr);
     op.deflate(current.shapes);
     const double highest = current.eigenvalues(found - 1);
-    const auto extra = lanczos(static_cast<int>(std::min<Eigen::Index>(kVerificationModes, n - found - 1)));
+    const double accept_below = highest - kRepeatedTolerance * std::abs(highest - sigma);
+    const RitzBlock block = blockVerification(op, stiffness, mass, kVerificationModes);
+    Vector extra_values = block.values;
+    Matrix extra_vectors = block.vectors;
     std::vector<Eigen::Index> added;
-    for (Eigen::Index i = 0; i < extra.first.size(); ++i)
-      if (extra.first(i) < highest - kRepeatedTolerance * std::abs(highest - sigma)) added.push_back(i);
+    bool unconverged_candidate = false;
+    for (Eigen::Index i = 0; i < extra_values.size(); ++i) {
+      if (extra_values(i) >= accept_below) continue;
+      if (block.residuals(i) < kRitzResidual)
+        added.push_back(i);
+      else
+        unconverged_candidate = true;
+    }
+    if (added.empty() && unconverged_candidate) {
+      std::tie(extra_values, extra_vectors) =
+          lanczos(static_cast<int>(std::min<Eigen::Index>(kVerificationModes, n - found - 1)));
+      for (Eigen::Index i = 0; i < extra_values.size(); ++i)
+        if (extra_values(i) < accept_below) added.push_back(i);
+    }
     op.deflate(Matrix());
     if (added.empty()) break;
     Vector merged_values(found + static_cast<Eigen::Index>(added.size()));
@@ -216,8 +300,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     merged_values.head(found) = current.eigenvalues;
     merged_vectors.leftCols(found) = current.shapes;
     for (std::size_t j = 0; j < added.size(); ++j) {
-      merged_values(found + j) = extra.first(added[j]);
-      merged_vectors.col(found + j) = extra.second.col(added[j]);
+      merged_values(found + j) = extra_values(added[j]);
+      merged_vectors.col(found + j) = extra_vectors.col(added[j]);
     }
     // Keep the lowest `found` of the union: the added ones displace the highest.
     ModalBasis merged = sortAndNormalise(merged_values, merged_vectors, &mass, nullptr);

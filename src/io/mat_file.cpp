@@ -1,6 +1,7 @@
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 
 #include <matio.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,7 +11,6 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
-#include <sys/stat.h>
 
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -68,8 +68,7 @@ using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
 std::uint32_t readU32(const unsigned char* p, bool swap) {
   std::uint32_t v = static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
                     static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-  if (swap)
-    v = (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
+  if (swap) v = (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
   return v;
 }
 
@@ -134,7 +133,8 @@ struct MatWriter::Impl {
     if (!var) throw InputError(path + ": cannot create variable '" + name + "' (matio)");
     VarPtr owned(var);
     if (Mat_VarWrite(mat, var, compression) != 0)
-      throw InputError(path + ": cannot write variable '" + name + "' (disk full or not writable?)");
+      throw InputError(path + ": cannot write variable '" + name +
+                       "' (disk full or not writable?)");
   }
 };
 
@@ -167,11 +167,12 @@ void MatWriter::checkName(const std::string& name) {
 
 void MatWriter::writeMatrix(const std::string& name, const Matrix& value) {
   checkName(name);
-  std::size_t d[2] = {static_cast<std::size_t>(value.rows()), static_cast<std::size_t>(value.cols())};
+  std::size_t d[2] = {static_cast<std::size_t>(value.rows()),
+                      static_cast<std::size_t>(value.cols())};
   void* data = value.size() ? const_cast<double*>(value.data()) : nullptr;
-  impl_->write(Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, data,
-                             MAT_F_DONT_COPY_DATA),
-               name, path_);
+  impl_->write(
+      Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, data, MAT_F_DONT_COPY_DATA),
+      name, path_);
 }
 
 void MatWriter::writeScalar(const std::string& name, double value) {
@@ -201,7 +202,8 @@ void MatWriter::writeStrings(const std::string& name, const std::vector<std::str
   for (std::size_t i = 0; i < values.size(); ++i) {
     // Copied (options 0): the cell owns its elements and frees them with itself.
     matvar_t* element = charVariable(nullptr, values[i], 0);
-    if (!element) throw InputError(path_ + ": cannot create '" + name + "'{" + std::to_string(i + 1) + "}");
+    if (!element)
+      throw InputError(path_ + ": cannot create '" + name + "'{" + std::to_string(i + 1) + "}");
     Mat_VarSetCell(cell, static_cast<int>(i), element);
   }
   impl_->write(owned.release(), name, path_);
@@ -295,22 +297,29 @@ std::string charData(const matvar_t* var, const std::string& where) {
 }  // namespace
 
 Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex cols) const {
-  const VarPtr var = readVariable(impl_->mat, path_, name, has(name));
+  if (!has(name)) throw InputError(path_ + ": variable '" + name + "' is missing");
   const std::string where = path_ + ": variable '" + name + "'";
+  // The header first, then the values into our own zeroed buffer: matio does not report a zlib
+  // stream that ends early from Mat_VarRead and would leave part of its buffer unwritten.
+  const VarPtr var(Mat_VarReadInfo(impl_->mat, name.c_str()));
+  if (!var) throw InputError(where + " cannot be read (corrupted file)");
   if (var->class_type != MAT_C_DOUBLE || var->isComplex || var->isLogical)
     throw InputError(where + " is not a real double matrix");
-  if (var->rank != 2) throw InputError(where + " has " + std::to_string(var->rank) + " dimensions, expected 2");
+  if (var->rank != 2)
+    throw InputError(where + " has " + std::to_string(var->rank) + " dimensions, expected 2");
   const auto r = static_cast<DofIndex>(var->dims[0]);
   const auto c = static_cast<DofIndex>(var->dims[1]);
   if ((rows != kAnySize && r != rows) || (cols != kAnySize && c != cols))
     throw InputError(where + " is " + dims(r, c) + ", expected " +
                      (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
                      (cols == kAnySize ? std::string("any") : std::to_string(cols)));
-  Matrix out(r, c);
+  Matrix out = Matrix::Zero(r, c);
   if (out.size() == 0) return out;
-  if (!var->data || var->nbytes < static_cast<std::size_t>(out.size()) * sizeof(double))
-    throw InputError(where + " has fewer values than its " + dims(r, c) + " size (corrupted file)");
-  out = Eigen::Map<const Matrix>(static_cast<const double*>(var->data), r, c);
+  int start[2] = {0, 0};
+  int stride[2] = {1, 1};
+  int edge[2] = {static_cast<int>(r), static_cast<int>(c)};
+  if (Mat_VarReadData(impl_->mat, var.get(), out.data(), start, stride, edge) != 0)
+    throw InputError(where + " cannot be read (corrupted file)");
   for (DofIndex j = 0; j < c; ++j)
     for (DofIndex i = 0; i < r; ++i)
       if (!std::isfinite(out(i, j)))
@@ -319,9 +328,7 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
   return out;
 }
 
-double MatReader::readScalar(const std::string& name) const {
-  return readMatrix(name, 1, 1)(0, 0);
-}
+double MatReader::readScalar(const std::string& name) const { return readMatrix(name, 1, 1)(0, 0); }
 
 std::string MatReader::readString(const std::string& name) const {
   const VarPtr var = readVariable(impl_->mat, path_, name, has(name));

@@ -24,8 +24,8 @@ std::map<fem::DofRef, DofIndex> rowIndex(const std::vector<fem::DofRef>& dofs, c
                        "] has direction " + std::to_string(dofs[i].direction) + ", not in 0..5");
     if (!index.emplace(dofs[i], static_cast<DofIndex>(i)).second)
       throw InputError(std::string("commonTranslationalDofs: ") + which + " lists " +
-                       name(dofs[i]) + " twice (rows " + std::to_string(index[dofs[i]]) +
-                       " and " + std::to_string(i) + ")");
+                       name(dofs[i]) + " twice (rows " + std::to_string(index[dofs[i]]) + " and " +
+                       std::to_string(i) + ")");
   }
   return index;
 }

@@ -31,7 +31,8 @@ std::string size(const SparseMatrix& a) {
 SparseMatrix selection(DofIndex n, const std::vector<DofIndex>& rows) {
   std::vector<Triplet> t;
   t.reserve(rows.size());
-  for (std::size_t j = 0; j < rows.size(); ++j) t.emplace_back(rows[j], static_cast<DofIndex>(j), 1.0);
+  for (std::size_t j = 0; j < rows.size(); ++j)
+    t.emplace_back(rows[j], static_cast<DofIndex>(j), 1.0);
   SparseMatrix p(n, static_cast<DofIndex>(rows.size()));
   p.setFromTriplets(t.begin(), t.end());
   p.makeCompressed();
@@ -46,7 +47,8 @@ Matrix project(const SparseMatrix& a, const Matrix& t) {
   if (a.nonZeros() == 0) return out;
   std::vector<char> used(static_cast<std::size_t>(a.rows()), 0);
   for (DofIndex j = 0; j < a.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(a, j); it; ++it) used[static_cast<std::size_t>(it.row())] = 1;
+    for (SparseMatrix::InnerIterator it(a, j); it; ++it)
+      used[static_cast<std::size_t>(it.row())] = 1;
   std::vector<DofIndex> rows;
   for (DofIndex i = 0; i < a.rows(); ++i)
     if (used[static_cast<std::size_t>(i)]) rows.push_back(i);
@@ -82,11 +84,12 @@ void checkInputs(const Inputs& in, const std::vector<DofIndex>& masters,
   std::vector<char> seen(static_cast<std::size_t>(n), 0);
   for (std::size_t i = 0; i < masters.size(); ++i) {
     if (masters[i] < 0 || masters[i] >= n)
-      throw InputError("craigBampton: master [" + std::to_string(i) + "] = " +
-                       std::to_string(masters[i]) + " is not an active DOF (0.." +
+      throw InputError("craigBampton: master [" + std::to_string(i) +
+                       "] = " + std::to_string(masters[i]) + " is not an active DOF (0.." +
                        std::to_string(n - 1) + ")");
     if (seen[static_cast<std::size_t>(masters[i])]++)
-      throw InputError("craigBampton: master DOF " + std::to_string(masters[i]) + " is listed twice");
+      throw InputError("craigBampton: master DOF " + std::to_string(masters[i]) +
+                       " is listed twice");
   }
   const DofIndex slaves = n - static_cast<DofIndex>(masters.size());
   const FixedInterfaceModes& r = options.fixed_interface;
@@ -100,9 +103,9 @@ void checkInputs(const Inputs& in, const std::vector<DofIndex>& masters,
     throw InputError("craigBampton: no master DOF and no fixed-interface mode: empty basis");
   for (std::size_t i = 0; i < options.recovery_dofs.size(); ++i)
     if (options.recovery_dofs[i] < 0 || options.recovery_dofs[i] >= n)
-      throw InputError("craigBampton: recovery DOF [" + std::to_string(i) + "] = " +
-                       std::to_string(options.recovery_dofs[i]) + " is not an active DOF (0.." +
-                       std::to_string(n - 1) + ")");
+      throw InputError("craigBampton: recovery DOF [" + std::to_string(i) +
+                       "] = " + std::to_string(options.recovery_dofs[i]) +
+                       " is not an active DOF (0.." + std::to_string(n - 1) + ")");
 }
 
 // The lowest fixed-interface modes of (K_ss, M_ss) (eq. 6).
@@ -165,8 +168,11 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
     stage = Clock::now();
     fem::SparseCholesky cholesky;
     if (!cholesky.factorize(k_ss))
-      throw SolverError("craigBampton: K_ss (" + std::to_string(s) + " slave DOFs) is not positive "
-                        "definite: the " + std::to_string(m) + " master DOFs leave a rigid-body "
+      throw SolverError("craigBampton: K_ss (" + std::to_string(s) +
+                        " slave DOFs) is not positive "
+                        "definite: the " +
+                        std::to_string(m) +
+                        " master DOFs leave a rigid-body "
                         "motion or a mechanism of the slave DOFs free");
     result.seconds.factorisation = since(stage);
     stage = Clock::now();
@@ -221,8 +227,9 @@ CraigBamptonResult craigBampton(const fem::System& system, const std::vector<Dof
     throw InputError("craigBampton: K_u is " + size(ku) + " and C_u is " + size(cu) +
                      ", expected " + std::to_string(n) + " rows and one column per road input");
   if (system.gravity_load.size() != n)
-    throw InputError("craigBampton: gravity load has " + std::to_string(system.gravity_load.size()) +
-                     " entries, expected " + std::to_string(n));
+    throw InputError("craigBampton: gravity load has " +
+                     std::to_string(system.gravity_load.size()) + " entries, expected " +
+                     std::to_string(n));
   Inputs in{system.stiffness, system.mass, system.damping, &ku, &cu, &system.gravity_load};
   return reduce(in, masters, options);
 }

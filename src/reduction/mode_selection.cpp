@@ -72,8 +72,8 @@ ModeSelection selectModes(const Vector& frequencies_hz, const ModeSelectionOptio
                          std::to_string(frequencies_hz.size()) + " (the candidate modes)");
       for (int i = 0; i < o.count; ++i)
         selection.modes.push_back(SelectedMode{
-            i, frequencies_hz(i), "mode " + std::to_string(i + 1) + " of the lowest " +
-                                      std::to_string(o.count)});
+            i, frequencies_hz(i),
+            "mode " + std::to_string(i + 1) + " of the lowest " + std::to_string(o.count)});
       return selection;
     }
     case ModeSelectionRule::FrequencyBand: {
@@ -83,7 +83,8 @@ ModeSelection selectModes(const Vector& frequencies_hz, const ModeSelectionOptio
                                format("%g", o.max_frequency_hz) + "] Hz";
       for (int i = 0; i < frequencies_hz.size(); ++i)
         if (inBand(frequencies_hz(i), o))
-          selection.modes.push_back(SelectedMode{i, frequencies_hz(i), hz(frequencies_hz(i)) + " " + band});
+          selection.modes.push_back(
+              SelectedMode{i, frequencies_hz(i), hz(frequencies_hz(i)) + " " + band});
       return selection;
     }
     case ModeSelectionRule::Correlation:

@@ -42,7 +42,9 @@ double distance(const Vector3& a, const Vector3& b, double p) {
 class GeometricWeight {
  public:
   GeometricWeight(const std::vector<Vector3>& positions, const MogesecOptions& o)
-      : positions_(positions), options_(o), inverse_sum_(Vector::Zero(static_cast<DofIndex>(positions.size()))),
+      : positions_(positions),
+        options_(o),
+        inverse_sum_(Vector::Zero(static_cast<DofIndex>(positions.size()))),
         colocated_(positions.size(), false) {}
 
   void addMaster(DofIndex master) {
@@ -98,9 +100,10 @@ MogesecResult mogesec(const Matrix& shapes, const std::vector<Vector3>& position
 
   MogesecResult result;
   // Eq. 13.
-  result.modal_weight = options.modal_exponent == 2.0
-                            ? Vector(shapes.rowwise().squaredNorm())
-                            : Vector(shapes.cwiseAbs().array().pow(options.modal_exponent).rowwise().sum());
+  result.modal_weight =
+      options.modal_exponent == 2.0
+          ? Vector(shapes.rowwise().squaredNorm())
+          : Vector(shapes.cwiseAbs().array().pow(options.modal_exponent).rowwise().sum());
   if (options.count > 0 && !(result.modal_weight.maxCoeff() > 0.0))
     throw InputError("mogesec: the mode shapes are zero on every candidate DOF");
 
@@ -123,7 +126,8 @@ MogesecResult mogesec(const Matrix& shapes, const std::vector<Vector3>& position
       const double phi_n = max_phi > 0.0 ? result.modal_weight(q) / max_phi : 1.0;
       const double g_n = max_g > 0.0 ? wg(q) / max_g : 1.0;
       const double w = phi_n * g_n;
-      if (best.index < 0 || w > best.weight * (1.0 + kTieTolerance) + std::numeric_limits<double>::min())
+      if (best.index < 0 ||
+          w > best.weight * (1.0 + kTieTolerance) + std::numeric_limits<double>::min())
         best = MogesecPick{q, w, phi_n, g_n};
     }
     chosen[static_cast<std::size_t>(best.index)] = true;
@@ -156,16 +160,18 @@ MasterSelection selectMasters(const fem::DofMap& dofs, const ModeShapes& shapes,
                               const CandidateFilter& filter, const MogesecOptions& options) {
   if (shapes.rows() != dofs.activeCount())
     throw InputError("selectMasters: the shapes have " + std::to_string(shapes.rows()) +
-                     " rows, expected one per active DOF (" + std::to_string(dofs.activeCount()) + ")");
+                     " rows, expected one per active DOF (" + std::to_string(dofs.activeCount()) +
+                     ")");
   for (std::size_t i = 0; i < initial_masters.size(); ++i)
     if (initial_masters[i] < 0 || initial_masters[i] >= dofs.activeCount())
-      throw InputError("selectMasters: initial master [" + std::to_string(i) + "] = " +
-                       std::to_string(initial_masters[i]) + " is not an active DOF (0.." +
+      throw InputError("selectMasters: initial master [" + std::to_string(i) +
+                       "] = " + std::to_string(initial_masters[i]) + " is not an active DOF (0.." +
                        std::to_string(dofs.activeCount() - 1) + ")");
   std::vector<DofIndex> candidates = candidateDofs(dofs, filter);
   // Initial masters join the candidates so that their positions count in eq. 14.
   std::unordered_map<DofIndex, DofIndex> row_of;
-  for (std::size_t r = 0; r < candidates.size(); ++r) row_of[candidates[r]] = static_cast<DofIndex>(r);
+  for (std::size_t r = 0; r < candidates.size(); ++r)
+    row_of[candidates[r]] = static_cast<DofIndex>(r);
   std::vector<DofIndex> initial_rows;
   for (const DofIndex m : initial_masters) {
     auto it = row_of.find(m);

@@ -47,7 +47,8 @@ std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
       throw InputError("buildReducedModel: output [" + std::to_string(i) + "] '" + outputs[i].name +
                        "': " + e.what());
     }
-    for (SparseMatrix::InnerIterator it(by_row, p); it; ++it) terms[i].emplace_back(it.row(), it.value());
+    for (SparseMatrix::InnerIterator it(by_row, p); it; ++it)
+      terms[i].emplace_back(it.row(), it.value());
   }
   return terms;
 }
@@ -95,7 +96,8 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   s.output = Matrix::Zero(static_cast<DofIndex>(terms.size()), cb.size());
   for (std::size_t i = 0; i < terms.size(); ++i)
     for (const auto& [active, coefficient] : terms[i])
-      s.output.row(static_cast<DofIndex>(i)) += coefficient * cb.recovery.row(recovery_row.at(active));
+      s.output.row(static_cast<DofIndex>(i)) +=
+          coefficient * cb.recovery.row(recovery_row.at(active));
   s.output_names = output_names;
 
   const auto inputs = static_cast<DofIndex>(system.ground_inputs.size());

@@ -63,30 +63,31 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
     frequencies(i, 0) = mode.frequency_hz;
     reasons.push_back(mode.reason);
   }
-  return {numeric("format_version", Matrix::Constant(1, 1, kReducedModelFormatVersion)),
-          text("version", model.version),
-          text("description_hash", model.description_hash),
-          text("created_utc", model.created_utc),
-          text("creator", model.creator),
-          text("damping_model", model.damping),
-          numeric("full_dof_count", Matrix::Constant(1, 1, static_cast<double>(model.full_dof_count))),
-          numeric("M_R", s.mass),
-          numeric("K_R", s.stiffness),
-          numeric("C_R", s.damping),
-          numeric("K_u", s.input_stiffness),
-          numeric("C_u", s.input_damping),
-          numeric("gravity_load", column(model.gravity_load)),
-          numeric("H", s.output),
-          texts("output_names", s.output_names),
-          texts("dof_labels", model.dof_labels),
-          texts("input_labels", model.input_labels),
-          numeric("input_stations", column(s.input_stations)),
-          numeric("input_lateral", column(s.input_lateral)),
-          numeric("masters", masters),
-          numeric("fixed_interface_frequencies_hz", column(model.fixed_interface_frequencies_hz)),
-          numeric("selected_mode_numbers", numbers),
-          numeric("selected_mode_frequencies_hz", frequencies),
-          texts("selected_mode_reasons", reasons)};
+  return {
+      numeric("format_version", Matrix::Constant(1, 1, kReducedModelFormatVersion)),
+      text("version", model.version),
+      text("description_hash", model.description_hash),
+      text("created_utc", model.created_utc),
+      text("creator", model.creator),
+      text("damping_model", model.damping),
+      numeric("full_dof_count", Matrix::Constant(1, 1, static_cast<double>(model.full_dof_count))),
+      numeric("M_R", s.mass),
+      numeric("K_R", s.stiffness),
+      numeric("C_R", s.damping),
+      numeric("K_u", s.input_stiffness),
+      numeric("C_u", s.input_damping),
+      numeric("gravity_load", column(model.gravity_load)),
+      numeric("H", s.output),
+      texts("output_names", s.output_names),
+      texts("dof_labels", model.dof_labels),
+      texts("input_labels", model.input_labels),
+      numeric("input_stations", column(s.input_stations)),
+      numeric("input_lateral", column(s.input_lateral)),
+      numeric("masters", masters),
+      numeric("fixed_interface_frequencies_hz", column(model.fixed_interface_frequencies_hz)),
+      numeric("selected_mode_numbers", numbers),
+      numeric("selected_mode_frequencies_hz", frequencies),
+      texts("selected_mode_reasons", reasons)};
 }
 
 // FNV-1a, 64 bit: not cryptographic, but any changed, missing or reordered byte changes it.
@@ -141,8 +142,8 @@ std::string dims(const Matrix& a) {
 void checkSize(const std::string& where, const char* name, const Matrix& a, DofIndex rows,
                DofIndex cols) {
   if (a.rows() != rows || a.cols() != cols)
-    throw InputError(where + ": " + name + " is " + dims(a) + ", expected " +
-                     std::to_string(rows) + "x" + std::to_string(cols));
+    throw InputError(where + ": " + name + " is " + dims(a) + ", expected " + std::to_string(rows) +
+                     "x" + std::to_string(cols));
 }
 
 void checkCount(const std::string& where, const char* name, std::size_t count, DofIndex expected) {
@@ -160,7 +161,8 @@ void checkSymmetric(const std::string& where, const char* name, const Matrix& a,
 }
 
 // Everything a usable model must satisfy; `where` starts each message (the file name).
-void checkConsistency(const ReducedModel& model, const std::string& where, double symmetry_tolerance) {
+void checkConsistency(const ReducedModel& model, const std::string& where,
+                      double symmetry_tolerance) {
   const dynamics::SecondOrderSystem& s = model.system;
   const DofIndex k = s.mass.rows();
   const DofIndex inputs = s.input_stiffness.cols();
@@ -187,8 +189,8 @@ void checkConsistency(const ReducedModel& model, const std::string& where, doubl
     if (d.direction < 0 || d.direction >= kDofsPerNode)
       throw InputError(where + ": master of node " + std::to_string(d.node) + " has direction " +
                        std::to_string(d.direction));
-  for (const Matrix* a : {&s.mass, &s.stiffness, &s.damping, &s.input_stiffness,
-                          &s.input_damping, &s.output})
+  for (const Matrix* a :
+       {&s.mass, &s.stiffness, &s.damping, &s.input_stiffness, &s.input_damping, &s.output})
     if (!a->allFinite()) throw InputError(where + ": a system matrix has a non-finite entry");
   checkSymmetric(where, "M_R", s.mass, symmetry_tolerance);
   checkSymmetric(where, "K_R", s.stiffness, symmetry_tolerance);
@@ -199,8 +201,7 @@ void checkConsistency(const ReducedModel& model, const std::string& where, doubl
 
 double integer(const std::string& where, const char* name, double value) {
   if (value != std::floor(value) || std::abs(value) > kMaxExactInteger)
-    throw InputError(where + ": " + name + " holds " + std::to_string(value) +
-                     ", not an integer");
+    throw InputError(where + ": " + name + " holds " + std::to_string(value) + ", not an integer");
   return value;
 }
 
@@ -228,14 +229,15 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                      model.description_hash + "', expected '" + expected_hash +
                      "' (the description changed)");
   if (!in.has("checksum"))
-    throw InputError(where + ": incomplete file: the final 'checksum' variable is missing "
+    throw InputError(where +
+                     ": incomplete file: the final 'checksum' variable is missing "
                      "(truncated or interrupted write)");
 
   model.created_utc = in.readString("created_utc");
   model.creator = in.readString("creator");
   model.damping = in.readString("damping_model");
-  model.full_dof_count = static_cast<DofIndex>(
-      integer(where, "full_dof_count", in.readScalar("full_dof_count")));
+  model.full_dof_count =
+      static_cast<DofIndex>(integer(where, "full_dof_count", in.readScalar("full_dof_count")));
   dynamics::SecondOrderSystem& s = model.system;
   s.mass = in.readMatrix("M_R");
   s.stiffness = in.readMatrix("K_R");
@@ -251,20 +253,20 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
   s.input_lateral = vectorOf(in, "input_lateral");
   const Matrix masters = in.readMatrix("masters", io::kAnySize, 2);
   for (DofIndex i = 0; i < masters.rows(); ++i)
-    model.masters.push_back(fem::DofRef{
-        static_cast<NodeId>(integer(where, "masters", masters(i, 0))),
-        static_cast<int>(integer(where, "masters", masters(i, 1)))});
+    model.masters.push_back(
+        fem::DofRef{static_cast<NodeId>(integer(where, "masters", masters(i, 0))),
+                    static_cast<int>(integer(where, "masters", masters(i, 1)))});
   model.fixed_interface_frequencies_hz = vectorOf(in, "fixed_interface_frequencies_hz");
   const Vector numbers = vectorOf(in, "selected_mode_numbers");
   const Vector frequencies = vectorOf(in, "selected_mode_frequencies_hz");
-  const std::vector<std::string> reasons =
-      in.readStrings("selected_mode_reasons", numbers.size());
+  const std::vector<std::string> reasons = in.readStrings("selected_mode_reasons", numbers.size());
   if (frequencies.size() != numbers.size())
     throw InputError(where + ": " + std::to_string(numbers.size()) + " selected modes but " +
                      std::to_string(frequencies.size()) + " frequencies");
   for (DofIndex i = 0; i < numbers.size(); ++i) {
     const double number = integer(where, "selected_mode_numbers", numbers(i));
-    if (number < 1) throw InputError(where + ": selected_mode_numbers has mode " + std::to_string(number));
+    if (number < 1)
+      throw InputError(where + ": selected_mode_numbers has mode " + std::to_string(number));
     model.selected_modes.push_back(SelectedMode{static_cast<int>(number) - 1, frequencies(i),
                                                 reasons[static_cast<std::size_t>(i)]});
   }
@@ -272,8 +274,10 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
   const std::string stored = in.readString("checksum");
   const std::string computed = checksum(toVariables(model));
   if (stored != computed)
-    throw InputError(where + ": corrupted: checksum " + computed + " of the content differs from "
-                     "the stored " + stored);
+    throw InputError(where + ": corrupted: checksum " + computed +
+                     " of the content differs from "
+                     "the stored " +
+                     stored);
   return model;
 }
 

@@ -40,6 +40,9 @@ double linkMass(const TrackAssemblyDescription& t) {
   return t.mass - 2.0 * t.pad_mass - pinMass(t);
 }
 
+/// Each pad spans from its centre line to the track edge on both sides: w_p = w - 2 e_p.
+double padWidth(const TrackAssemblyDescription& t) { return t.width - 2.0 * t.pad_lateral_offset; }
+
 double padHeight(const TrackAssemblyDescription& t) {
   return t.pad_rubber_below_core + t.pad_core_thickness + t.pad_rubber_above_core;
 }
@@ -116,13 +119,17 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
 
   // Pads: per column a lower layer (sole -> core) and an upper layer (core -> top), whose series
   // stiffness is the column's; each layer's share follows its rubber thickness (k ~ 1/h).
+  // The columns of a pad lie on one line along e1, so a column also carries the rubber block's
+  // rotational stiffness about e1 (k_n w_p^2 / 12 for a block of width w_p); without it the core
+  // could roll about that line freely.
   const double h_total = t.pad_rubber_below_core + t.pad_rubber_above_core;
   const double lower_factor = h_total / t.pad_rubber_below_core;
   const double upper_factor = h_total / t.pad_rubber_above_core;
+  const double pad_width = padWidth(t);
   for (int j = 0; j < 6; ++j) {
     const double kn = (j % 3 == 1) ? springs.normal_middle : springs.normal_end;
     Vector6 k = Vector6::Zero();
-    k << springs.shear_x, springs.shear_y, kn, 0.0, 0.0, 0.0;
+    k << springs.shear_x, springs.shear_y, kn, kn * pad_width * pad_width / 12.0, 0.0, 0.0;
     fem::Spring lower;
     lower.n1 = n.soles[j];
     lower.n2 = n.cores[j];
@@ -164,7 +171,7 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
   // as a rigid plate spanning the columns and half the track width.
   const double sole_mass = t.pad_sole_mass_fraction * t.pad_mass / 3.0;
   const double core_mass = (1.0 - t.pad_sole_mass_fraction) * t.pad_mass;
-  const double len = 2.0 * c, wid = w - 2.0 * ep > 0 ? 2.0 * (0.5 * w - ep) : ep, hgt = padHeight(t);
+  const double len = 2.0 * c, wid = padWidth(t), hgt = padHeight(t);
   const Vector3 local_inertia(core_mass * (wid * wid + hgt * hgt) / 12.0,
                               core_mass * (len * len + hgt * hgt) / 12.0,
                               core_mass * (len * len + wid * wid) / 12.0);

@@ -13,9 +13,9 @@ namespace tracked_vehicle_dynamics {
 namespace reduction {
 namespace {
 
-constexpr double kExactTolerance = 1e-8;     // relative, identities up to round-off
-constexpr double kFirstModesTolerance = 0.01; // relative, paper-style "within 1 %"
-constexpr double kRitzSlack = 1e-9;          // relative round-off allowed below the full value
+constexpr double kExactTolerance = 1e-8;       // relative, identities up to round-off
+constexpr double kFirstModesTolerance = 0.01;  // relative, paper-style "within 1 %"
+constexpr double kRitzSlack = 1e-9;            // relative round-off allowed below the full value
 
 // A 2 m steel cantilever along x, clamped at node 0, with `elements` Euler-Bernoulli beams
 // (Iy != Iz so that the y and z bending modes are distinct). `tip_support` adds a grounded
@@ -151,7 +151,8 @@ TEST(CraigBampton, StiffnessIsBlockDiagonalAndModesAreMassNormalised) {
   const Matrix modal_k = cb.stiffness.bottomRightCorner(6, 6);
   EXPECT_LT(relativeError(modal_k, Matrix(cb.fixed_interface_eigenvalues.asDiagonal())),
             kExactTolerance);
-  EXPECT_LT(relativeError(cb.mass.bottomRightCorner(6, 6), Matrix::Identity(6, 6)), kExactTolerance);
+  EXPECT_LT(relativeError(cb.mass.bottomRightCorner(6, 6), Matrix::Identity(6, 6)),
+            kExactTolerance);
   EXPECT_EQ(cb.stiffness, cb.stiffness.transpose());
   EXPECT_EQ(cb.mass, cb.mass.transpose());
 }
@@ -223,7 +224,8 @@ TEST(CraigBampton, ModalDampingGivesTheRatioInEveryReducedMode) {
   options.damping.modal_ratio = 0.03;
   const CraigBamptonResult modal = craigBampton(system, m, options);
   const fem::ModalBasis modes = fem::solveModesDense(modal.stiffness, modal.mass);
-  const Matrix structural = modes.shapes.transpose() * (modal.damping - discrete.damping) * modes.shapes;
+  const Matrix structural =
+      modes.shapes.transpose() * (modal.damping - discrete.damping) * modes.shapes;
   const Vector expected = 2.0 * 0.03 * modes.eigenvalues.cwiseSqrt();
   EXPECT_LT(relativeError(structural, Matrix(expected.asDiagonal())), kExactTolerance);
 
@@ -286,7 +288,8 @@ TEST(CraigBampton, MastersThatLeaveARigidMotionFreeAreReported) {
   section.iz = 1e-6;
   section.torsion = 2e-6;
   model.sections.push_back(section);
-  for (int i = 0; i < 4; ++i) model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
+  for (int i = 0; i < 4; ++i)
+    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
   const fem::System system = fem::assemble(model);
   EXPECT_THROW(craigBampton(system, {system.dofs.requireActive(0, 2)}, {}), SolverError);
   // Clamping all six DOFs of one node restrains them: the reduction succeeds, rigid modes included.

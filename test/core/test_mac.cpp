@@ -52,10 +52,12 @@ TEST(Mac, IsInvariantToTheScalingOfEachShape) {
 
 TEST(Mac, ClosedFormsByHand) {
   Matrix a(2, 2), b(2, 2);
+  // clang-format off
   a << 1.0, 0.0,
        0.0, 1.0;
   b << 1.0, 1.0,
        1.0, -2.0;
+  // clang-format on
   const Matrix m = mac(a, b);
   // (1)^2 / (1 * 2) = 1/2; (1)^2 / (1 * 5) = 1/5; (1)^2 / (1 * 2); (-2)^2 / (1 * 5) = 4/5.
   EXPECT_NEAR(m(0, 0), 0.5, kRoundOff);
@@ -72,9 +74,11 @@ TEST(Mac, RoundOffShapesDoNotCorrelate) {
   // Column 1 is round-off next to column 0 (a mode that does not move on these DOFs): MAC 0,
   // although its direction matches b exactly.
   Matrix a(3, 2);
+  // clang-format off
   a << 1.0, 1e-13,
        2.0, 1e-13,
        0.5, 0.0;
+  // clang-format on
   Matrix b(3, 1);
   b << 1.0, 1.0, 0.0;
   const Matrix m = mac(a, b);
@@ -88,10 +92,12 @@ TEST(Mac, IsNotMassWeighted) {
   // Two-DOF chain with unequal masses: the modes are M-orthogonal but not orthogonal, so their
   // MAC is not zero. The MAC measures shape likeness, not orthogonality.
   Matrix k(2, 2), m(2, 2);
+  // clang-format off
   k << 3.0, -1.0,
       -1.0, 1.0;
   m << 1.0, 0.0,
        0.0, 4.0;
+  // clang-format on
   const fem::ModalBasis modes = fem::solveModesDense(k, m);
   EXPECT_NEAR(modes.shapes.col(0).dot(m * modes.shapes.col(1)), 0.0, kRoundOff);
   EXPECT_GT(mac(modes.shapes, modes.shapes)(0, 1), 0.01);
@@ -106,9 +112,11 @@ TEST(Mac, RejectsMismatchedOrNonFiniteShapes) {
 
 TEST(CorrelateModes, ListsTheBestMatchAndEveryMatchAboveTheThreshold) {
   Matrix m(3, 4);
+  // clang-format off
   m << 0.95, 0.10, 0.72, 0.00,   // best 0, also 2
        0.20, 0.30, 0.10, 0.60,   // best 3, nothing above 0.7
        0.50, 0.80, 0.80, 0.90;   // best 3, then the tie 1, 2 in index order
+  // clang-format on
   const std::vector<ModeCorrelation> c = correlateModes(m);
   ASSERT_EQ(c.size(), 3u);
   EXPECT_EQ(c[0].best_match, 0);
@@ -204,7 +212,7 @@ TEST(ModeSelection, CorrelationKeepsTheModesSharedWithTheReference) {
     for (DofIndex i = 0; i < candidate.size(); ++i) {
       const int direction = candidate.dofs.dofOf(i).direction;
       const double v = cand_modes.shapes(i, j) * cand_modes.shapes(i, j);
-      (direction == 0 || direction == 2 ? in_plane : lateral) += v;
+      (direction == 0 || direction == 2 || direction == 4 ? in_plane : lateral) += v;  // ux uz ry
     }
     const bool is_kept = std::find(kept.begin(), kept.end(), j) != kept.end();
     EXPECT_EQ(is_kept, in_plane > lateral) << "mode " << j;
@@ -216,9 +224,11 @@ TEST(ModeSelection, CorrelationKeepsTheModesSharedWithTheReference) {
 TEST(ModeSelection, ReasonsNameTheReferenceModeAndFrequency) {
   ModeReference ref;
   ref.mac.resize(3, 2);
+  // clang-format off
   ref.mac << 0.30, 0.20,
              0.86, 0.72,
              0.10, 0.65;
+  // clang-format on
   ref.frequencies_hz = (Vector(2) << 4.93, 3.72).finished();
   const Vector f = (Vector(3) << 5.0, 8.5, 9.4).finished();
   ModeSelectionOptions options;

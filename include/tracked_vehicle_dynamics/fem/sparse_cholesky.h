@@ -1,5 +1,5 @@
 // Sparse Cholesky factorisation A = L L^T of a symmetric positive definite matrix (CHOLMOD,
-// supernodal), kept behind one narrow class so that solvers share one factorisation and check
+// simplicial or supernodal), kept behind one narrow class so that solvers share one factorisation and check
 // its status (STYLE.md #9).
 #pragma once
 

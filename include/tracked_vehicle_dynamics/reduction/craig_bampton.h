@@ -38,7 +38,7 @@ struct CraigBamptonOptions {
   fem::ModalRequest modal_solver;
   /// Return T_CMS itself (n x (m + r) dense: 54 MB for 17 000 x 400).
   bool keep_transformation = false;
-  /// Active DOFs whose rows of T_CMS are returned in `recovery` (physical outputs y = T_row x_R).
+  /// Active DOFs whose rows of T_CMS are returned in `recovery` (outputs y = T_row x_R).
   std::vector<DofIndex> recovery_dofs;
 };
 
@@ -48,7 +48,7 @@ struct CraigBamptonTimings {
   double factorisation = 0.0;          ///< sparse Cholesky of K_ss
   double constraint_modes = 0.0;       ///< Phi_C: one solve with m right-hand sides
   double fixed_interface_modes = 0.0;  ///< Phi_S: shift-invert Lanczos (or dense) on (K_ss, M_ss)
-  double projection = 0.0;             ///< T^T (.) T of M, K, C, K_u, C_u, f_g and the damping model
+  double projection = 0.0;  ///< T^T (.) T of M, K, C, K_u, C_u, f_g and the damping model
   double total = 0.0;
 };
 

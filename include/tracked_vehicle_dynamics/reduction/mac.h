@@ -28,13 +28,14 @@ Matrix mac(const Matrix& phi_a, const Matrix& phi_b);
 
 /// One mode of A with its matches among the modes of B.
 struct ModeMatch {
-  int mode = 0;       ///< 0-based column of phi_b
+  int mode = 0;  ///< 0-based column of phi_b
   double mac = 0.0;
 };
 
 struct ModeCorrelation {
-  int mode = 0;                    ///< 0-based column of phi_a
-  int best_match = -1;             ///< mode of B with the largest MAC (lowest index on ties); -1 when B is empty
+  int mode = 0;  ///< 0-based column of phi_a
+  int best_match =
+      -1;  ///< mode of B with the largest MAC (lowest index on ties); -1 when B is empty
   double best_mac = 0.0;
   std::vector<ModeMatch> matches;  ///< every mode of B with MAC >= threshold, by decreasing MAC
 };

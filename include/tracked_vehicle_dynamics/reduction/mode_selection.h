@@ -27,9 +27,9 @@ enum class ModeSelectionRule {
 
 struct ModeSelectionOptions {
   ModeSelectionRule rule = ModeSelectionRule::Correlation;
-  int count = 0;                      ///< Count rule
-  double min_frequency_hz = 0.0;      ///< [Hz] FrequencyBand and Correlation
-  double max_frequency_hz = 0.0;      ///< [Hz] 0: no upper limit (FrequencyBand needs one)
+  int count = 0;                  ///< Count rule
+  double min_frequency_hz = 0.0;  ///< [Hz] FrequencyBand and Correlation
+  double max_frequency_hz = 0.0;  ///< [Hz] 0: no upper limit (FrequencyBand needs one)
   double mac_threshold = kPaperMacThreshold;
   std::string reference_name = "reference";  ///< in reasons: "MAC 0.86 with un-tracked mode 5"
 };

@@ -39,8 +39,8 @@ struct MogesecOptions {
 };
 
 struct MogesecPick {
-  DofIndex index = 0;             ///< candidate row of the shapes (mogesec) or active DOF (selectMasters)
-  double weight = 0.0;            ///< W = W_Phi,N * W_g,N at the moment of the pick, in [0, 1]
+  DofIndex index = 0;   ///< candidate row of the shapes (mogesec) or active DOF (selectMasters)
+  double weight = 0.0;  ///< W = W_Phi,N * W_g,N at the moment of the pick, in [0, 1]
   double modal_weight = 0.0;      ///< W_Phi,N
   double geometric_weight = 0.0;  ///< W_g,N
 };

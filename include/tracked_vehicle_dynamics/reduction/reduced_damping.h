@@ -25,10 +25,10 @@ enum class DampingModel {
 
 struct DampingOptions {
   DampingModel model = DampingModel::Discrete;
-  double alpha = 0.0;        ///< Rayleigh mass coefficient [1/s]
-  double beta = 0.0;         ///< Rayleigh stiffness coefficient [s]
-  double modal_ratio = 0.02; ///< Modal: zeta of every mode [-] unless modal_ratios is given
-  Vector modal_ratios;       ///< Modal: zeta per reduced mode, ascending frequency [-] (size m + r)
+  double alpha = 0.0;         ///< Rayleigh mass coefficient [1/s]
+  double beta = 0.0;          ///< Rayleigh stiffness coefficient [s]
+  double modal_ratio = 0.02;  ///< Modal: zeta of every mode [-] unless modal_ratios is given
+  Vector modal_ratios;  ///< Modal: zeta per reduced mode, ascending frequency [-] (size m + r)
 };
 
 /// C_R for the reduced mass m_r and stiffness k_r [k x k] and the projected discrete dampers

@@ -37,16 +37,17 @@ struct ReducedModel {
   dynamics::SecondOrderSystem system;
   Vector gravity_load;                    ///< T^T f_g [k] [N, N m]
   std::vector<std::string> dof_labels;    ///< k labels: "node 12 uz", then "mode 3 (12.4 Hz)"
-  std::vector<fem::DofRef> masters;       ///< physical DOF of each master coordinate [m]
-  Vector fixed_interface_frequencies_hz;  ///< [r] [Hz]
+  std::vector<fem::DofRef> masters;       ///< physical DOF of each of the m master coordinates
+  Vector fixed_interface_frequencies_hz;  ///< one per fixed-interface mode [Hz]
   std::vector<std::string> input_labels;  ///< one per road input: "node 5 uz"
-  std::vector<SelectedMode> selected_modes;  ///< global modes the reduction was sized for, with reasons
-  std::string damping;                    ///< describe(DampingOptions)
-  std::string description_hash;           ///< hash of the description it was built from (caller's)
-  std::string version;                    ///< softwareVersion() at creation
-  std::string created_utc;                ///< "2024-05-01T12:00:00Z"
-  std::string creator;                    ///< free text, e.g. "tvd reduce"
-  DofIndex full_dof_count = 0;            ///< active DOFs of the full model
+  /// The global modes the reduction was sized for, with the reason for each.
+  std::vector<SelectedMode> selected_modes;
+  std::string damping;           ///< describe(DampingOptions)
+  std::string description_hash;  ///< hash of the description it was built from (caller's)
+  std::string version;           ///< softwareVersion() at creation
+  std::string created_utc;       ///< "2024-05-01T12:00:00Z"
+  std::string creator;           ///< free text, e.g. "tvd reduce"
+  DofIndex full_dof_count = 0;   ///< active DOFs of the full model
 
   DofIndex size() const { return system.size(); }
   DofIndex masterCount() const { return static_cast<DofIndex>(masters.size()); }

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages this package needs, only those that are missing.
+# Run as root or with sudo available. Used by scripts/demo.sh and scripts/test.sh.
+set -euo pipefail
+
+PACKAGES=(
+  build-essential cmake pkg-config
+  # ROS 1 as packaged by Debian
+  ros-core-dev catkin libroscpp-dev librosbag-dev libtf2-ros-dev libtf2-geometry-msgs-dev
+  ros-message-generation libstd-msgs-dev libgeometry-msgs-dev libstd-srvs-dev
+  libdiagnostic-updater-dev python3-rostest librostest-dev tf2-tools rosbag python3-rosbag
+  # numerics and I/O
+  libeigen3-dev libspectra-dev libsuitesparse-dev libyaml-cpp-dev libmatio-dev libcli11-dev
+  googletest
+  # plots and side-by-side benchmarks
+  python3-numpy python3-scipy python3-matplotlib python3-yaml
+)
+
+missing=()
+for pkg in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed" || missing+=("$pkg")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#PACKAGES[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install_deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  SUDO="sudo"
+fi
+echo "install_deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,363 @@
+// The reduced model and its .mat cache: building it from a beam (labels, output rows through a
+// rigid joint), the MAT wrapper, save -> load round trip, and the refusal of stale, truncated,
+// corrupted or foreign files.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+namespace {
+
+constexpr double kExactTolerance = 1e-10;
+constexpr const char* kHash = "sha256:0123abcd";
+
+std::string tempPath(const std::string& name) {
+  return testing::TempDir() + "tvd_test_reduced_model_" + name;
+}
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// Expects a StaleCacheError whose message names the file and contains `what`.
+void expectStale(const std::string& path, const std::string& hash, const std::string& what,
+                 const ReducedModelLoadOptions& options = {}) {
+  try {
+    loadReducedModel(path, hash, options);
+    ADD_FAILURE() << "loaded " << path << ", expected a StaleCacheError about '" << what << "'";
+  } catch (const StaleCacheError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind(path, 0), 0u) << message;
+    EXPECT_NE(message.find(what), std::string::npos) << message;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// MAT wrapper
+// ---------------------------------------------------------------------------------------------
+
+class MatFileTest : public testing::TestWithParam<io::MatFormat> {};
+
+TEST_P(MatFileTest, RoundTripOfEveryKind) {
+  const std::string path = tempPath("wrapper.mat");
+  const Matrix a = Matrix::Random(7, 3);
+  {
+    io::MatWriter out(path, GetParam());
+    out.writeMatrix("A", a);
+    out.writeMatrix("empty", Matrix(0, 4));
+    out.writeScalar("s", -2.5);
+    out.writeString("text", "mode 3 (12.4 Hz), zeta \xce\xb6");
+    out.writeString("nothing", "");
+    out.writeStrings("names", {"hull uz", "", "node 12 uz"});
+    out.writeStrings("no_names", {});
+    out.close();
+  }
+  const io::MatReader in(path);
+  EXPECT_EQ(in.names().size(), 7u);
+  EXPECT_EQ(in.readMatrix("A", 7, 3), a);
+  EXPECT_EQ(in.readMatrix("empty").cols(), 4);
+  EXPECT_EQ(in.readMatrix("empty").rows(), 0);
+  EXPECT_EQ(in.readScalar("s"), -2.5);
+  EXPECT_EQ(in.readString("text"), "mode 3 (12.4 Hz), zeta \xce\xb6");
+  EXPECT_EQ(in.readString("nothing"), "");
+  EXPECT_EQ(in.readStrings("names", 3), (std::vector<std::string>{"hull uz", "", "node 12 uz"}));
+  EXPECT_TRUE(in.readStrings("no_names").empty());
+  EXPECT_THROW(in.readMatrix("A", 7, 4), InputError);
+  EXPECT_THROW(in.readMatrix("missing"), InputError);
+  EXPECT_THROW(in.readMatrix("text"), InputError);
+  EXPECT_THROW(in.readString("A"), InputError);
+  EXPECT_THROW(in.readStrings("names", 2), InputError);
+  std::remove(path.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, MatFileTest,
+                         testing::Values(io::MatFormat::Mat5, io::MatFormat::Mat73));
+
+TEST(MatFile, RefusesNonFiniteValuesNamingTheEntry) {
+  const std::string path = tempPath("nan.mat");
+  Matrix a = Matrix::Ones(3, 3);
+  a(2, 1) = std::numeric_limits<double>::quiet_NaN();
+  io::MatWriter out(path);
+  out.writeMatrix("A", a);
+  out.close();
+  try {
+    io::MatReader(path).readMatrix("A");
+    ADD_FAILURE() << "NaN accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("non-finite entry at (3, 2)"), std::string::npos)
+        << e.what();
+  }
+  std::remove(path.c_str());
+}
+
+TEST(MatFile, WriterChecksNamesAndLeavesNothingWithoutClose) {
+  const std::string path = tempPath("unclosed.mat");
+  std::remove(path.c_str());
+  {
+    io::MatWriter out(path);
+    EXPECT_THROW(out.writeScalar("1abc", 1.0), InputError);
+    EXPECT_THROW(out.writeScalar("a b", 1.0), InputError);
+    out.writeScalar("x", 1.0);
+    EXPECT_THROW(out.writeScalar("x", 2.0), InputError);
+  }
+  EXPECT_FALSE(std::ifstream(path).good());
+  EXPECT_THROW(io::MatWriter("/nonexistent_directory/x.mat"), InputError);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reduced model
+// ---------------------------------------------------------------------------------------------
+
+// A 2 m steel cantilever (10 beams, clamped at node 0) on a spring-damper under the tip (one road
+// input), with a mount point (node 100) 0.5 m above the tip, rigidly attached to it.
+fem::System beamOnSupport() {
+  fem::Model model;
+  const int elements = 10;
+  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
+  model.addNode(100, Vector3(2.0, 0.0, 0.5));
+  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
+  fem::Section section;
+  section.name = "bar";
+  section.area = 5e-3;
+  section.iy = 4e-6;
+  section.iz = 1e-6;
+  section.torsion = 2e-6;
+  model.sections.push_back(section);
+  for (int i = 0; i < elements; ++i)
+    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
+  model.fixed.push_back(fem::FixedDofs{0});
+  fem::Spring support;
+  support.n1 = elements;
+  support.stiffness(2) = 2e5;
+  support.damping(2) = 800.0;
+  model.springs.push_back(support);
+  fem::Mass mount;
+  mount.node = 100;
+  mount.mass = 5.0;
+  model.masses.push_back(mount);
+  fem::RigidJoint joint;
+  joint.master = elements;
+  joint.slaves = {100};
+  model.rigid_joints.push_back(joint);
+  return fem::assemble(model);
+}
+
+ReductionRequest request(const fem::System& system) {
+  ReductionRequest r;
+  r.masters = {system.dofs.requireActive(10, 2), system.dofs.requireActive(5, 2),
+               system.dofs.requireActive(10, 1)};
+  r.craig_bampton.fixed_interface.count = 4;
+  r.craig_bampton.damping.model = DampingModel::Rayleigh;
+  r.craig_bampton.damping.beta = 1e-4;
+  r.outputs = {{"tip uz", {10, 2}}, {"", {5, 2}}, {"mount ux", {100, 0}}, {"root uz", {0, 2}}};
+  r.selection.modes = {{0, 10.2, "MAC 0.97 with un-tracked mode 1 (9.8 Hz)"},
+                       {2, 64.1, "MAC 0.81 with un-tracked mode 3 (60 Hz)"}};
+  r.description_hash = kHash;
+  r.creator = "test_reduced_model";
+  return r;
+}
+
+TEST(ReducedModel, BuildsLabelsOutputsAndInputs) {
+  const fem::System system = beamOnSupport();
+  const ReductionRequest req = request(system);
+  const ReducedModel model = buildReducedModel(system, req);
+  ASSERT_EQ(model.size(), 7);
+  EXPECT_EQ(model.dof_labels[0], "node 10 uz");
+  EXPECT_EQ(model.dof_labels[2], "node 10 uy");
+  EXPECT_EQ(model.dof_labels[3].rfind("mode 1 (", 0), 0u) << model.dof_labels[3];
+  EXPECT_EQ(model.system.output_names,
+            (std::vector<std::string>{"tip uz", "node 5 uz", "mount ux", "root uz"}));
+  EXPECT_EQ(model.input_labels, (std::vector<std::string>{"node 10 uz"}));
+  ASSERT_EQ(model.system.input_stations.size(), 1);
+  EXPECT_EQ(model.system.input_stations(0), 2.0);
+  EXPECT_EQ(model.full_dof_count, system.size());
+  EXPECT_EQ(model.version, softwareVersion());
+  EXPECT_EQ(model.selected_modes.size(), 2u);
+
+  // H rows are rows of T_CMS: a master gives a unit row, a fixed DOF a zero row, and the
+  // rigid-joint slave u_x(100) = u_x(10) + 0.5 theta_y(10) combines two rows.
+  CraigBamptonOptions options = req.craig_bampton;
+  options.keep_transformation = true;
+  const CraigBamptonResult cb = craigBampton(system, req.masters, options);
+  const Matrix& h = model.system.output;
+  EXPECT_EQ(h.row(0), Matrix::Identity(7, 7).row(0));
+  EXPECT_EQ(h.row(1), Matrix::Identity(7, 7).row(1));
+  EXPECT_EQ(h.row(3).norm(), 0.0);
+  const Vector mount = cb.transformation.row(system.dofs.requireActive(10, 0)).transpose() +
+                       0.5 * cb.transformation.row(system.dofs.requireActive(10, 4)).transpose();
+  EXPECT_LT((h.row(2).transpose() - mount).norm(), kExactTolerance * mount.norm());
+  EXPECT_EQ(model.system.stiffness, cb.stiffness);
+
+  ReductionRequest twice = req;
+  twice.outputs.push_back({"tip uz", {10, 2}});
+  EXPECT_THROW(buildReducedModel(system, twice), InputError);
+  ReductionRequest unknown = req;
+  unknown.outputs.push_back({"ghost", {999, 2}});
+  EXPECT_THROW(buildReducedModel(system, unknown), InputError);
+}
+
+class ReducedModelFileTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    system_ = beamOnSupport();
+    model_ = buildReducedModel(system_, request(system_));
+    path_ = tempPath(std::string(testing::UnitTest::GetInstance()->current_test_info()->name()) +
+                     ".mat");
+    saveReducedModel(model_, path_);
+  }
+  void TearDown() override { std::remove(path_.c_str()); }
+
+  fem::System system_;
+  ReducedModel model_;
+  std::string path_;
+};
+
+TEST_F(ReducedModelFileTest, SaveLoadRoundTripIsExact) {
+  const ReducedModel loaded = loadReducedModel(path_, kHash);
+  const dynamics::SecondOrderSystem& a = model_.system;
+  const dynamics::SecondOrderSystem& b = loaded.system;
+  EXPECT_EQ(b.mass, a.mass);
+  EXPECT_EQ(b.stiffness, a.stiffness);
+  EXPECT_EQ(b.damping, a.damping);
+  EXPECT_EQ(b.input_stiffness, a.input_stiffness);
+  EXPECT_EQ(b.input_damping, a.input_damping);
+  EXPECT_EQ(b.output, a.output);
+  EXPECT_EQ(b.output_names, a.output_names);
+  EXPECT_EQ(b.input_stations, a.input_stations);
+  EXPECT_EQ(b.input_lateral, a.input_lateral);
+  EXPECT_EQ(loaded.gravity_load, model_.gravity_load);
+  EXPECT_EQ(loaded.dof_labels, model_.dof_labels);
+  EXPECT_EQ(loaded.input_labels, model_.input_labels);
+  EXPECT_EQ(loaded.masters, model_.masters);
+  EXPECT_EQ(loaded.fixed_interface_frequencies_hz, model_.fixed_interface_frequencies_hz);
+  ASSERT_EQ(loaded.selected_modes.size(), model_.selected_modes.size());
+  for (std::size_t i = 0; i < loaded.selected_modes.size(); ++i) {
+    EXPECT_EQ(loaded.selected_modes[i].mode, model_.selected_modes[i].mode);
+    EXPECT_EQ(loaded.selected_modes[i].frequency_hz, model_.selected_modes[i].frequency_hz);
+    EXPECT_EQ(loaded.selected_modes[i].reason, model_.selected_modes[i].reason);
+  }
+  EXPECT_EQ(loaded.damping, model_.damping);
+  EXPECT_EQ(loaded.description_hash, kHash);
+  EXPECT_EQ(loaded.version, model_.version);
+  EXPECT_EQ(loaded.created_utc, model_.created_utc);
+  EXPECT_EQ(loaded.creator, "test_reduced_model");
+  EXPECT_EQ(loaded.full_dof_count, model_.full_dof_count);
+}
+
+TEST_F(ReducedModelFileTest, DifferentHashIsStale) {
+  expectStale(path_, "sha256:ffff", "description hash");
+}
+
+TEST_F(ReducedModelFileTest, OtherSoftwareVersionIsStaleUnlessAllowed) {
+  ReducedModel old = model_;
+  old.version = "0.0.1";
+  saveReducedModel(old, path_);
+  expectStale(path_, kHash, "written by version 0.0.1");
+  ReducedModelLoadOptions options;
+  options.require_same_version = false;
+  EXPECT_EQ(loadReducedModel(path_, kHash, options).version, "0.0.1");
+}
+
+TEST_F(ReducedModelFileTest, TruncatedFilesAreRefused) {
+  const std::string bytes = readBytes(path_);
+  for (const double fraction : {0.99, 0.75, 0.5, 0.1}) {
+    writeBytes(path_, bytes.substr(0, static_cast<std::size_t>(fraction * bytes.size())));
+    expectStale(path_, kHash, "truncated");
+  }
+  writeBytes(path_, bytes.substr(0, 60));
+  expectStale(path_, kHash, "not a MAT file");
+}
+
+TEST_F(ReducedModelFileTest, CorruptedBytesAreRefused) {
+  const std::string bytes = readBytes(path_);
+  // Overwrite 16 bytes in the middle (inside the compressed matrices).
+  std::string corrupted = bytes;
+  for (std::size_t i = bytes.size() / 2; i < bytes.size() / 2 + 16; ++i)
+    corrupted[i] = static_cast<char>(~corrupted[i]);
+  writeBytes(path_, corrupted);
+  EXPECT_THROW(loadReducedModel(path_, kHash), StaleCacheError);
+}
+
+TEST_F(ReducedModelFileTest, ChangedValuesFailTheChecksum) {
+  // A file rewritten with one value changed and the old checksum: only the checksum tells.
+  const io::MatReader in(path_);
+  const std::string other = tempPath("edited.mat");
+  {
+    io::MatWriter out(other);
+    for (const std::string& name : in.names()) {
+      if (name == "checksum") {
+        out.writeString(name, in.readString(name));
+      } else if (name == "K_R") {
+        Matrix k = in.readMatrix(name);
+        k(0, 0) *= 1.0 + 1e-12;
+        out.writeMatrix(name, k);
+      } else {
+        try {
+          out.writeMatrix(name, in.readMatrix(name));
+        } catch (const InputError&) {
+          try {
+            out.writeString(name, in.readString(name));
+          } catch (const InputError&) {
+            out.writeStrings(name, in.readStrings(name));
+          }
+        }
+      }
+    }
+    out.close();
+  }
+  expectStale(other, kHash, "checksum");
+  std::remove(other.c_str());
+}
+
+TEST_F(ReducedModelFileTest, GarbageMissingAndForeignFilesAreRefused) {
+  writeBytes(path_, std::string(4096, 'x'));
+  expectStale(path_, kHash, "not a MAT");
+  expectStale(tempPath("does_not_exist.mat"), kHash, "does not exist");
+  {
+    io::MatWriter out(path_);
+    out.writeScalar("format_version", 99);
+    out.close();
+  }
+  expectStale(path_, kHash, "format version");
+  {
+    io::MatWriter out(path_);
+    out.writeScalar("format_version", kReducedModelFormatVersion);
+    out.writeString("version", softwareVersion());
+    out.writeString("description_hash", kHash);
+    out.close();
+  }
+  expectStale(path_, kHash, "checksum");
+}
+
+TEST_F(ReducedModelFileTest, InconsistentModelsAreNotSaved) {
+  ReducedModel asymmetric = model_;
+  asymmetric.system.stiffness(0, 1) += 1e-3 * asymmetric.system.stiffness.cwiseAbs().maxCoeff();
+  EXPECT_THROW(saveReducedModel(asymmetric, path_), InputError);
+  ReducedModel labels = model_;
+  labels.dof_labels.pop_back();
+  EXPECT_THROW(saveReducedModel(labels, path_), InputError);
+  ReducedModel outputs = model_;
+  outputs.system.output_names.push_back("extra");
+  EXPECT_THROW(saveReducedModel(outputs, path_), InputError);
+  // The file on disk is still the good one (saving is atomic).
+  EXPECT_NO_THROW(loadReducedModel(path_, kHash));
+}
+
+}  // namespace
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics
