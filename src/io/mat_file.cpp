@@ -34,8 +34,10 @@ std::string dims(std::size_t rows, std::size_t cols) {
 }
 
 bool isIdentifier(const std::string& name) {
-  if (name.empty() || name.size() > kMaxNameLength) return false;
-  if (!std::isalpha(static_cast<unsigned char>(name[0]))) return false;
+  if (name.empty() || name.size() > kMaxNameLength)
+    return false;
+  if (!std::isalpha(static_cast<unsigned char>(name[0])))
+    return false;
   return std::all_of(name.begin(), name.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
   });
@@ -60,7 +62,8 @@ void appendUtf8(std::string& out, std::uint16_t unit) {
 
 struct VarDeleter {
   void operator()(matvar_t* v) const {
-    if (v) Mat_VarFree(v);
+    if (v)
+      Mat_VarFree(v);
   }
 };
 using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
@@ -68,7 +71,8 @@ using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
 std::uint32_t readU32(const unsigned char* p, bool swap) {
   std::uint32_t v = static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
                     static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-  if (swap) v = (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
+  if (swap)
+    v = (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
   return v;
 }
 
@@ -77,7 +81,8 @@ std::uint32_t readU32(const unsigned char* p, bool swap) {
 // before matio reads past the end. 7.3 files are left to the HDF5 library's own checks.
 void checkMat5Structure(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw InputError(path + ": cannot be opened for reading");
+  if (!in)
+    throw InputError(path + ": cannot be opened for reading");
   const auto size = static_cast<std::uint64_t>(in.tellg());
   if (size < kMat5HeaderBytes)
     throw InputError(path + ": not a MAT file (" + std::to_string(size) +
@@ -90,7 +95,8 @@ void checkMat5Structure(const std::string& path) {
   if (!little && !big)
     throw InputError(path + ": not a MAT 5 or 7.3 file (no endian indicator in the header)");
   const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
-  if (version == 0x0200) return;
+  if (version == 0x0200)
+    return;
   if (version != 0x0100)
     throw InputError(path + ": unsupported MAT file version 0x" + std::to_string(version));
   std::uint64_t offset = kMat5HeaderBytes;
@@ -108,7 +114,8 @@ void checkMat5Structure(const std::string& path) {
       throw InputError(path + ": corrupted: data element at byte " + std::to_string(offset) +
                        " has type " + std::to_string(type) + " (expected a matrix)");
     std::uint64_t end = offset + 8 + bytes;
-    if (type == kMiMatrix) end = (end + 7) / 8 * 8;  // uncompressed elements are 8-byte aligned
+    if (type == kMiMatrix)
+      end = (end + 7) / 8 * 8;  // uncompressed elements are 8-byte aligned
     if (offset + 8 + bytes > size)
       throw InputError(path + ": truncated: the data element at byte " + std::to_string(offset) +
                        " needs " + std::to_string(bytes) + " bytes but the file ends at byte " +
@@ -130,7 +137,8 @@ struct MatWriter::Impl {
   std::set<std::string> names;
 
   void write(matvar_t* var, const std::string& name, const std::string& path) {
-    if (!var) throw InputError(path + ": cannot create variable '" + name + "' (matio)");
+    if (!var)
+      throw InputError(path + ": cannot create variable '" + name + "' (matio)");
     VarPtr owned(var);
     if (Mat_VarWrite(mat, var, compression) != 0)
       throw InputError(path + ": cannot write variable '" + name +
@@ -156,7 +164,8 @@ MatWriter::~MatWriter() {
 }
 
 void MatWriter::checkName(const std::string& name) {
-  if (!impl_->mat) throw InputError(path_ + ": write after close()");
+  if (!impl_->mat)
+    throw InputError(path_ + ": write after close()");
   if (!isIdentifier(name))
     throw InputError(path_ + ": '" + name +
                      "' is not a valid MAT variable name (a letter, then letters, digits or _, "
@@ -197,7 +206,8 @@ void MatWriter::writeStrings(const std::string& name, const std::vector<std::str
   checkName(name);
   std::size_t d[2] = {values.size(), 1};
   matvar_t* cell = Mat_VarCreate(name.c_str(), MAT_C_CELL, MAT_T_CELL, 2, d, nullptr, 0);
-  if (!cell) throw InputError(path_ + ": cannot create variable '" + name + "' (matio)");
+  if (!cell)
+    throw InputError(path_ + ": cannot create variable '" + name + "' (matio)");
   VarPtr owned(cell);
   for (std::size_t i = 0; i < values.size(); ++i) {
     // Copied (options 0): the cell owns its elements and frees them with itself.
@@ -210,7 +220,8 @@ void MatWriter::writeStrings(const std::string& name, const std::vector<std::str
 }
 
 void MatWriter::close() {
-  if (!impl_->mat) throw InputError(path_ + ": close() called twice");
+  if (!impl_->mat)
+    throw InputError(path_ + ": close() called twice");
   const int status = Mat_Close(impl_->mat);
   impl_->mat = nullptr;
   if (status != 0) {
@@ -230,22 +241,28 @@ void MatWriter::close() {
 struct MatReader::Impl {
   mat_t* mat = nullptr;
   ~Impl() {
-    if (mat) Mat_Close(mat);
+    if (mat)
+      Mat_Close(mat);
   }
 };
 
 MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()), path_(path) {
   struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) throw InputError(path + ": file does not exist");
-  if (!S_ISREG(info.st_mode)) throw InputError(path + ": not a regular file");
+  if (::stat(path.c_str(), &info) != 0)
+    throw InputError(path + ": file does not exist");
+  if (!S_ISREG(info.st_mode))
+    throw InputError(path + ": not a regular file");
   checkMat5Structure(path);
   impl_->mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
-  if (!impl_->mat) throw InputError(path + ": not a readable MAT file");
+  if (!impl_->mat)
+    throw InputError(path + ": not a readable MAT file");
   std::size_t count = 0;
   char** dir = Mat_GetDir(impl_->mat, &count);
-  if (!dir && count > 0) throw InputError(path + ": the list of variables cannot be read");
+  if (!dir && count > 0)
+    throw InputError(path + ": the list of variables cannot be read");
   for (std::size_t i = 0; i < count; ++i)
-    if (dir[i]) names_.emplace_back(dir[i]);
+    if (dir[i])
+      names_.emplace_back(dir[i]);
 }
 
 MatReader::~MatReader() = default;
@@ -257,9 +274,11 @@ bool MatReader::has(const std::string& name) const {
 namespace {
 
 VarPtr readVariable(mat_t* mat, const std::string& path, const std::string& name, bool present) {
-  if (!present) throw InputError(path + ": variable '" + name + "' is missing");
+  if (!present)
+    throw InputError(path + ": variable '" + name + "' is missing");
   VarPtr var(Mat_VarRead(mat, name.c_str()));
-  if (!var) throw InputError(path + ": variable '" + name + "' cannot be read (corrupted file)");
+  if (!var)
+    throw InputError(path + ": variable '" + name + "' cannot be read (corrupted file)");
   return var;
 }
 
@@ -267,11 +286,14 @@ VarPtr readVariable(mat_t* mat, const std::string& path, const std::string& name
 std::string charData(const matvar_t* var, const std::string& where) {
   const std::size_t rows = var->rank >= 1 ? var->dims[0] : 0;
   const std::size_t cols = var->rank >= 2 ? var->dims[1] : 0;
-  if (rows * cols == 0) return {};
-  if (var->class_type != MAT_C_CHAR) throw InputError(where + " is not a character array");
+  if (rows * cols == 0)
+    return {};
+  if (var->class_type != MAT_C_CHAR)
+    throw InputError(where + " is not a character array");
   if (var->rank != 2 || rows != 1)
     throw InputError(where + " is a " + dims(rows, cols) + " character array, expected one row");
-  if (!var->data) throw InputError(where + " has no data (corrupted file)");
+  if (!var->data)
+    throw InputError(where + " has no data (corrupted file)");
   std::string out;
   switch (var->data_type) {
     case MAT_T_UTF8:
@@ -285,7 +307,8 @@ std::string charData(const matvar_t* var, const std::string& where) {
     case MAT_T_UTF16:
     case MAT_T_INT16: {
       const auto* units = static_cast<const std::uint16_t*>(var->data);
-      for (std::size_t i = 0; i < var->nbytes / 2 && units[i] != 0; ++i) appendUtf8(out, units[i]);
+      for (std::size_t i = 0; i < var->nbytes / 2 && units[i] != 0; ++i)
+        appendUtf8(out, units[i]);
       break;
     }
     default:
@@ -297,12 +320,14 @@ std::string charData(const matvar_t* var, const std::string& where) {
 }  // namespace
 
 Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex cols) const {
-  if (!has(name)) throw InputError(path_ + ": variable '" + name + "' is missing");
+  if (!has(name))
+    throw InputError(path_ + ": variable '" + name + "' is missing");
   const std::string where = path_ + ": variable '" + name + "'";
   // The header first, then the values into our own zeroed buffer: matio does not report a zlib
   // stream that ends early from Mat_VarRead and would leave part of its buffer unwritten.
   const VarPtr var(Mat_VarReadInfo(impl_->mat, name.c_str()));
-  if (!var) throw InputError(where + " cannot be read (corrupted file)");
+  if (!var)
+    throw InputError(where + " cannot be read (corrupted file)");
   if (var->class_type != MAT_C_DOUBLE || var->isComplex || var->isLogical)
     throw InputError(where + " is not a real double matrix");
   if (var->rank != 2)
@@ -314,7 +339,8 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
                      (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
                      (cols == kAnySize ? std::string("any") : std::to_string(cols)));
   Matrix out = Matrix::Zero(r, c);
-  if (out.size() == 0) return out;
+  if (out.size() == 0)
+    return out;
   int start[2] = {0, 0};
   int stride[2] = {1, 1};
   int edge[2] = {static_cast<int>(r), static_cast<int>(c)};
@@ -328,7 +354,9 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
   return out;
 }
 
-double MatReader::readScalar(const std::string& name) const { return readMatrix(name, 1, 1)(0, 0); }
+double MatReader::readScalar(const std::string& name) const {
+  return readMatrix(name, 1, 1)(0, 0);
+}
 
 std::string MatReader::readString(const std::string& name) const {
   const VarPtr var = readVariable(impl_->mat, path_, name, has(name));
@@ -338,9 +366,11 @@ std::string MatReader::readString(const std::string& name) const {
 std::vector<std::string> MatReader::readStrings(const std::string& name, DofIndex count) const {
   const VarPtr var = readVariable(impl_->mat, path_, name, has(name));
   const std::string where = path_ + ": variable '" + name + "'";
-  if (var->class_type != MAT_C_CELL) throw InputError(where + " is not a cell array of strings");
+  if (var->class_type != MAT_C_CELL)
+    throw InputError(where + " is not a cell array of strings");
   std::size_t total = 1;
-  for (int d = 0; d < var->rank; ++d) total *= var->dims[d];
+  for (int d = 0; d < var->rank; ++d)
+    total *= var->dims[d];
   if (count != kAnySize && static_cast<DofIndex>(total) != count)
     throw InputError(where + " has " + std::to_string(total) + " entries, expected " +
                      std::to_string(count));
@@ -349,7 +379,8 @@ std::vector<std::string> MatReader::readStrings(const std::string& name, DofInde
   for (std::size_t i = 0; i < total; ++i) {
     const matvar_t* element = Mat_VarGetCell(var.get(), static_cast<int>(i));
     const std::string element_where = where + "{" + std::to_string(i + 1) + "}";
-    if (!element) throw InputError(element_where + " cannot be read (corrupted file)");
+    if (!element)
+      throw InputError(element_where + " cannot be read (corrupted file)");
     out.push_back(charData(element, element_where));
   }
   return out;

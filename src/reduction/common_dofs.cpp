@@ -35,7 +35,8 @@ std::map<fem::DofRef, DofIndex> rowIndex(const std::vector<fem::DofRef>& dofs, c
 std::vector<fem::DofRef> activeDofRefs(const fem::DofMap& dofs) {
   std::vector<fem::DofRef> out;
   out.reserve(static_cast<std::size_t>(dofs.activeCount()));
-  for (DofIndex i = 0; i < dofs.activeCount(); ++i) out.push_back(dofs.dofOf(i));
+  for (DofIndex i = 0; i < dofs.activeCount(); ++i)
+    out.push_back(dofs.dofOf(i));
   return out;
 }
 
@@ -45,9 +46,11 @@ CommonDofs commonTranslationalDofs(const std::vector<fem::DofRef>& dofs_a,
   const std::map<fem::DofRef, DofIndex> index_b = rowIndex(dofs_b, "dofs_b");
   CommonDofs common;
   for (std::size_t i = 0; i < dofs_a.size(); ++i) {
-    if (dofs_a[i].direction >= kTranslations) continue;
+    if (dofs_a[i].direction >= kTranslations)
+      continue;
     const auto it = index_b.find(dofs_a[i]);
-    if (it == index_b.end()) continue;
+    if (it == index_b.end())
+      continue;
     common.dofs.push_back(dofs_a[i]);
     common.rows_a.push_back(static_cast<DofIndex>(i));
     common.rows_b.push_back(it->second);

@@ -44,14 +44,16 @@ SparseMatrix selection(DofIndex n, const std::vector<DofIndex>& rows) {
 Matrix project(const SparseMatrix& a, const Matrix& t) {
   const DofIndex k = t.cols();
   Matrix out = Matrix::Zero(k, k);
-  if (a.nonZeros() == 0) return out;
+  if (a.nonZeros() == 0)
+    return out;
   std::vector<char> used(static_cast<std::size_t>(a.rows()), 0);
   for (DofIndex j = 0; j < a.outerSize(); ++j)
     for (SparseMatrix::InnerIterator it(a, j); it; ++it)
       used[static_cast<std::size_t>(it.row())] = 1;
   std::vector<DofIndex> rows;
   for (DofIndex i = 0; i < a.rows(); ++i)
-    if (used[static_cast<std::size_t>(i)]) rows.push_back(i);
+    if (used[static_cast<std::size_t>(i)])
+      rows.push_back(i);
   const Matrix at = a * t;
   if (2 * rows.size() < static_cast<std::size_t>(a.rows())) {
     const Matrix t_rows = t(rows, Eigen::all);
@@ -113,7 +115,8 @@ fem::ModalBasis fixedInterfaceModes(const SparseMatrix& k_ss, const SparseMatrix
                                     const CraigBamptonOptions& options) {
   const FixedInterfaceModes& r = options.fixed_interface;
   const DofIndex s = k_ss.rows();
-  if (r.count == 0 || s == 0) return {};
+  if (r.count == 0 || s == 0)
+    return {};
   if (r.count < kDenseModeShare * static_cast<double>(s)) {
     fem::ModalRequest request = options.modal_solver;
     request.count = r.count;
@@ -128,7 +131,8 @@ fem::ModalBasis fixedInterfaceModes(const SparseMatrix& k_ss, const SparseMatrix
   int keep = r.count;
   if (r.max_frequency_hz > 0.0) {
     keep = 0;
-    while (keep < r.count && all.frequencies_hz(keep) <= r.max_frequency_hz) ++keep;
+    while (keep < r.count && all.frequencies_hz(keep) <= r.max_frequency_hz)
+      ++keep;
   }
   all.eigenvalues.conservativeResize(keep);
   all.frequencies_hz.conservativeResize(keep);
@@ -147,11 +151,13 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
   // Partition (eq. 3) with sparse selection matrices.
   auto stage = Clock::now();
   std::vector<DofIndex> slot(static_cast<std::size_t>(n), -1);  // master coordinate, or -1
-  for (DofIndex i = 0; i < m; ++i) slot[static_cast<std::size_t>(masters[i])] = i;
+  for (DofIndex i = 0; i < m; ++i)
+    slot[static_cast<std::size_t>(masters[i])] = i;
   std::vector<DofIndex> slaves;
   slaves.reserve(static_cast<std::size_t>(n - m));
   for (DofIndex i = 0; i < n; ++i)
-    if (slot[static_cast<std::size_t>(i)] < 0) slaves.push_back(i);
+    if (slot[static_cast<std::size_t>(i)] < 0)
+      slaves.push_back(i);
   const auto s = static_cast<DofIndex>(slaves.size());
   const SparseMatrix p_m = selection(n, masters);
   const SparseMatrix p_s = selection(n, slaves);
@@ -190,11 +196,13 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
   // T_CMS (eq. 8) in the original DOF order.
   stage = Clock::now();
   Matrix t = Matrix::Zero(n, m + r);
-  for (DofIndex i = 0; i < m; ++i) t(masters[static_cast<std::size_t>(i)], i) = 1.0;
+  for (DofIndex i = 0; i < m; ++i)
+    t(masters[static_cast<std::size_t>(i)], i) = 1.0;
   for (DofIndex j = 0; j < s; ++j) {
     const DofIndex row = slaves[static_cast<std::size_t>(j)];
     t.row(row).head(m) = phi_c.row(j);
-    if (r > 0) t.row(row).tail(r) = phi_s.shapes.row(j);
+    if (r > 0)
+      t.row(row).tail(r) = phi_s.shapes.row(j);
   }
 
   // Eq. 9.
@@ -210,7 +218,8 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
   result.recovery.resize(static_cast<DofIndex>(options.recovery_dofs.size()), m + r);
   for (std::size_t i = 0; i < options.recovery_dofs.size(); ++i)
     result.recovery.row(static_cast<DofIndex>(i)) = t.row(options.recovery_dofs[i]);
-  if (options.keep_transformation) result.transformation = std::move(t);
+  if (options.keep_transformation)
+    result.transformation = std::move(t);
   result.seconds.projection = since(stage);
   result.seconds.total = since(start);
   return result;

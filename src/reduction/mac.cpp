@@ -15,10 +15,12 @@ namespace {
 // set to zero (see the header).
 Vector significantSquaredNorms(const Matrix& phi) {
   Vector norms = phi.colwise().squaredNorm().transpose();
-  if (norms.size() == 0) return norms;
+  if (norms.size() == 0)
+    return norms;
   const double cutoff = kNegligibleShape * kNegligibleShape * norms.maxCoeff();
   for (Eigen::Index j = 0; j < norms.size(); ++j)
-    if (norms(j) <= cutoff) norms(j) = 0.0;
+    if (norms(j) <= cutoff)
+      norms(j) = 0.0;
   return norms;
 }
 
@@ -28,8 +30,10 @@ Matrix mac(const Matrix& phi_a, const Matrix& phi_b) {
   if (phi_a.rows() != phi_b.rows())
     throw InputError("mac: shapes A have " + std::to_string(phi_a.rows()) + " rows and shapes B " +
                      std::to_string(phi_b.rows()) + "; both must be over the same DOFs");
-  if (!phi_a.allFinite()) throw InputError("mac: shapes A contain a non-finite entry");
-  if (!phi_b.allFinite()) throw InputError("mac: shapes B contain a non-finite entry");
+  if (!phi_a.allFinite())
+    throw InputError("mac: shapes A contain a non-finite entry");
+  if (!phi_b.allFinite())
+    throw InputError("mac: shapes B contain a non-finite entry");
   const Matrix cross = phi_a.transpose() * phi_b;
   const Vector norm_a = significantSquaredNorms(phi_a);
   const Vector norm_b = significantSquaredNorms(phi_b);
@@ -57,7 +61,8 @@ std::vector<ModeCorrelation> correlateModes(const Matrix& mac_ab, double thresho
         c.best_match = static_cast<int>(k);
         c.best_mac = value;
       }
-      if (value >= threshold) c.matches.push_back(ModeMatch{static_cast<int>(k), value});
+      if (value >= threshold)
+        c.matches.push_back(ModeMatch{static_cast<int>(k), value});
     }
     std::stable_sort(c.matches.begin(), c.matches.end(),
                      [](const ModeMatch& a, const ModeMatch& b) { return a.mac > b.mac; });

@@ -16,7 +16,9 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
-std::string hz(double f) { return format("%.3g Hz", f); }
+std::string hz(double f) {
+  return format("%.3g Hz", f);
+}
 
 bool inBand(double f, const ModeSelectionOptions& o) {
   return f >= o.min_frequency_hz && (o.max_frequency_hz <= 0.0 || f <= o.max_frequency_hz);
@@ -36,7 +38,8 @@ ModeSelection byCorrelation(const Vector& f, const ModeSelectionOptions& o,
   const std::vector<ModeCorrelation> correlation = correlateModes(reference->mac, o.mac_threshold);
   ModeSelection selection;
   for (const ModeCorrelation& c : correlation) {
-    if (c.matches.empty() || !inBand(f(c.mode), o)) continue;
+    if (c.matches.empty() || !inBand(f(c.mode), o))
+      continue;
     const ModeMatch& best = c.matches.front();
     std::string reason = "MAC " + format("%.2f", best.mac) + " with " + o.reference_name +
                          " mode " + std::to_string(best.mode + 1) + " (" +
@@ -53,7 +56,8 @@ ModeSelection byCorrelation(const Vector& f, const ModeSelectionOptions& o,
 
 double ModeSelection::highestFrequencyHz() const {
   double highest = 0.0;
-  for (const SelectedMode& m : modes) highest = std::max(highest, m.frequency_hz);
+  for (const SelectedMode& m : modes)
+    highest = std::max(highest, m.frequency_hz);
   return highest;
 }
 

@@ -18,7 +18,8 @@ namespace {
 constexpr double kTieTolerance = 1e-12;
 
 void checkOptions(const MogesecOptions& o) {
-  if (o.count < 0) throw InputError("mogesec: count " + std::to_string(o.count) + " is negative");
+  if (o.count < 0)
+    throw InputError("mogesec: count " + std::to_string(o.count) + " is negative");
   if (!(o.modal_exponent > 0.0))
     throw InputError("mogesec: modal exponent k_Phi = " + std::to_string(o.modal_exponent) +
                      " must be positive");
@@ -34,7 +35,8 @@ void checkOptions(const MogesecOptions& o) {
 
 double distance(const Vector3& a, const Vector3& b, double p) {
   const Vector3 d = (a - b).cwiseAbs();
-  if (p == 2.0) return d.norm();
+  if (p == 2.0)
+    return d.norm();
   return std::pow(std::pow(d.x(), p) + std::pow(d.y(), p) + std::pow(d.z(), p), 1.0 / p);
 }
 
@@ -60,8 +62,10 @@ class GeometricWeight {
   }
 
   double operator()(DofIndex q) const {
-    if (masters_ == 0) return 1.0;
-    if (colocated_[static_cast<std::size_t>(q)]) return 0.0;
+    if (masters_ == 0)
+      return 1.0;
+    if (colocated_[static_cast<std::size_t>(q)])
+      return 0.0;
     return 1.0 / inverse_sum_(q);
   }
 
@@ -82,7 +86,8 @@ MogesecResult mogesec(const Matrix& shapes, const std::vector<Vector3>& position
   if (static_cast<DofIndex>(positions.size()) != n)
     throw InputError("mogesec: " + std::to_string(positions.size()) + " positions for " +
                      std::to_string(n) + " candidate DOFs (rows of the shapes)");
-  if (!shapes.allFinite()) throw InputError("mogesec: the mode shapes contain a non-finite entry");
+  if (!shapes.allFinite())
+    throw InputError("mogesec: the mode shapes contain a non-finite entry");
   std::vector<bool> chosen(static_cast<std::size_t>(n), false);
   for (std::size_t i = 0; i < initial_masters.size(); ++i) {
     const DofIndex m = initial_masters[i];
@@ -108,20 +113,23 @@ MogesecResult mogesec(const Matrix& shapes, const std::vector<Vector3>& position
     throw InputError("mogesec: the mode shapes are zero on every candidate DOF");
 
   GeometricWeight geometric(positions, options);
-  for (const DofIndex m : initial_masters) geometric.addMaster(m);
+  for (const DofIndex m : initial_masters)
+    geometric.addMaster(m);
 
   Vector wg(n);
   for (int pick = 0; pick < options.count; ++pick) {
     double max_phi = 0.0, max_g = 0.0;
     for (DofIndex q = 0; q < n; ++q) {
-      if (chosen[static_cast<std::size_t>(q)]) continue;
+      if (chosen[static_cast<std::size_t>(q)])
+        continue;
       wg(q) = geometric(q);
       max_phi = std::max(max_phi, result.modal_weight(q));
       max_g = std::max(max_g, wg(q));
     }
     MogesecPick best{-1, -1.0, 0.0, 0.0};
     for (DofIndex q = 0; q < n; ++q) {
-      if (chosen[static_cast<std::size_t>(q)]) continue;
+      if (chosen[static_cast<std::size_t>(q)])
+        continue;
       // Eq. 12; a factor that is zero on every remaining candidate cannot rank them (see header).
       const double phi_n = max_phi > 0.0 ? result.modal_weight(q) / max_phi : 1.0;
       const double g_n = max_g > 0.0 ? wg(q) / max_g : 1.0;

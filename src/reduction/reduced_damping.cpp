@@ -47,7 +47,8 @@ Matrix reducedDamping(const Matrix& m_r, const Matrix& k_r, const Matrix& c_disc
       if (zeta.size() != k)
         throw InputError("reducedDamping: " + std::to_string(zeta.size()) +
                          " modal damping ratios for " + std::to_string(k) + " reduced modes");
-      for (DofIndex i = 0; i < k; ++i) checkCoefficient(zeta(i), "modal damping ratio");
+      for (DofIndex i = 0; i < k; ++i)
+        checkCoefficient(zeta(i), "modal damping ratio");
       const fem::ModalBasis modes = fem::solveModesDense(k_r, m_r);
       const Vector omega = modes.eigenvalues.cwiseMax(0.0).cwiseSqrt();
       const Matrix mphi = m_r * modes.shapes;

@@ -45,7 +45,9 @@ Variable texts(const std::string& name, const std::vector<std::string>& value) {
   return v;
 }
 
-Matrix column(const Vector& v) { return v.size() ? Matrix(v) : Matrix(0, 1); }
+Matrix column(const Vector& v) {
+  return v.size() ? Matrix(v) : Matrix(0, 1);
+}
 
 std::vector<Variable> toVariables(const ReducedModel& model) {
   const dynamics::SecondOrderSystem& s = model.system;
@@ -95,7 +97,8 @@ class Checksum {
  public:
   void add(const void* data, std::size_t bytes) {
     const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) hash_ = (hash_ ^ p[i]) * 1099511628211ull;
+    for (std::size_t i = 0; i < bytes; ++i)
+      hash_ = (hash_ ^ p[i]) * 1099511628211ull;
   }
   void add(const std::string& s) {
     add(static_cast<std::uint64_t>(s.size()));
@@ -128,7 +131,8 @@ std::string checksum(const std::vector<Variable>& variables) {
         break;
       case Variable::Kind::TextList:
         c.add(static_cast<std::uint64_t>(v.texts.size()));
-        for (const std::string& s : v.texts) c.add(s);
+        for (const std::string& s : v.texts)
+          c.add(s);
         break;
     }
   }
@@ -166,7 +170,8 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
   const dynamics::SecondOrderSystem& s = model.system;
   const DofIndex k = s.mass.rows();
   const DofIndex inputs = s.input_stiffness.cols();
-  if (k == 0) throw InputError(where + ": M_R is empty");
+  if (k == 0)
+    throw InputError(where + ": M_R is empty");
   checkSize(where, "M_R", s.mass, k, k);
   checkSize(where, "K_R", s.stiffness, k, k);
   checkSize(where, "C_R", s.damping, k, k);
@@ -191,7 +196,8 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
                        std::to_string(d.direction));
   for (const Matrix* a :
        {&s.mass, &s.stiffness, &s.damping, &s.input_stiffness, &s.input_damping, &s.output})
-    if (!a->allFinite()) throw InputError(where + ": a system matrix has a non-finite entry");
+    if (!a->allFinite())
+      throw InputError(where + ": a system matrix has a non-finite entry");
   checkSymmetric(where, "M_R", s.mass, symmetry_tolerance);
   checkSymmetric(where, "K_R", s.stiffness, symmetry_tolerance);
   checkSymmetric(where, "C_R", s.damping, symmetry_tolerance);

@@ -24,7 +24,8 @@ fem::System cantilever(int elements, bool tip_support = false) {
   fem::Model model;
   model.name = "cantilever";
   const double length = 2.0;
-  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(length * i / elements, 0.0, 0.0));
+  for (int i = 0; i <= elements; ++i)
+    model.addNode(i, Vector3(length * i / elements, 0.0, 0.0));
   model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
   fem::Section section;
   section.name = "bar";
@@ -58,7 +59,8 @@ std::vector<DofIndex> masters(const fem::System& system, int elements) {
 std::vector<DofIndex> slavesOf(DofIndex n, const std::vector<DofIndex>& masters) {
   std::vector<DofIndex> out;
   for (DofIndex i = 0; i < n; ++i)
-    if (std::find(masters.begin(), masters.end(), i) == masters.end()) out.push_back(i);
+    if (std::find(masters.begin(), masters.end(), i) == masters.end())
+      out.push_back(i);
   return out;
 }
 
@@ -279,7 +281,8 @@ TEST(CraigBampton, RejectsBadInput) {
 TEST(CraigBampton, MastersThatLeaveARigidMotionFreeAreReported) {
   // Free-free beam: K is singular, and one master DOF cannot restrain all six rigid motions.
   fem::Model model;
-  for (int i = 0; i <= 4; ++i) model.addNode(i, Vector3(0.5 * i, 0.0, 0.0));
+  for (int i = 0; i <= 4; ++i)
+    model.addNode(i, Vector3(0.5 * i, 0.0, 0.0));
   model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
   fem::Section section;
   section.name = "bar";
@@ -294,7 +297,8 @@ TEST(CraigBampton, MastersThatLeaveARigidMotionFreeAreReported) {
   EXPECT_THROW(craigBampton(system, {system.dofs.requireActive(0, 2)}, {}), SolverError);
   // Clamping all six DOFs of one node restrains them: the reduction succeeds, rigid modes included.
   std::vector<DofIndex> node0;
-  for (int d = 0; d < kDofsPerNode; ++d) node0.push_back(system.dofs.requireActive(0, d));
+  for (int d = 0; d < kDofsPerNode; ++d)
+    node0.push_back(system.dofs.requireActive(0, d));
   CraigBamptonOptions options;
   options.fixed_interface.count = 4;
   const CraigBamptonResult cb = craigBampton(system, node0, options);

@@ -29,7 +29,8 @@ TEST(Mac, OfASetWithItselfHasAUnitDiagonalAndIsSymmetric) {
   const Matrix m = mac(phi, phi);
   ASSERT_EQ(m.rows(), 6);
   ASSERT_EQ(m.cols(), 6);
-  for (int j = 0; j < 6; ++j) EXPECT_NEAR(m(j, j), 1.0, kRoundOff);
+  for (int j = 0; j < 6; ++j)
+    EXPECT_NEAR(m(j, j), 1.0, kRoundOff);
   EXPECT_LT((m - m.transpose()).cwiseAbs().maxCoeff(), kRoundOff);
   EXPECT_GE(m.minCoeff(), 0.0);
   EXPECT_LE(m.maxCoeff(), 1.0);
@@ -145,7 +146,8 @@ TEST(CommonDofs, KeepsSharedTranslationsInTheOrderOfA) {
   EXPECT_EQ(common.rows_b, (std::vector<DofIndex>{1, 0, 4}));
 
   Matrix shapes(6, 2);
-  for (int i = 0; i < 6; ++i) shapes.row(i) << i, 10 * i;
+  for (int i = 0; i < 6; ++i)
+    shapes.row(i) << i, 10 * i;
   const Matrix picked = selectRows(shapes, common.rows_b);
   EXPECT_EQ(picked(1, 1), 0.0);
   EXPECT_EQ(picked(2, 0), 4.0);
@@ -160,7 +162,8 @@ TEST(CommonDofs, KeepsSharedTranslationsInTheOrderOfA) {
 fem::System beamModel(bool planar) {
   fem::Model model;
   const int elements = 10;
-  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
+  for (int i = 0; i <= elements; ++i)
+    model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
   model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
   fem::Section section;
   section.name = "bar";
@@ -270,7 +273,8 @@ TEST(ModeSelection, CountAndBand) {
 
 TEST(FixedInterfaceModes, CarryTheSelectionOverAsACountOrAFrequency) {
   ModeSelection selection;
-  for (int i = 0; i < 8; ++i) selection.modes.push_back(SelectedMode{i, 2.0 + i, ""});
+  for (int i = 0; i < 8; ++i)
+    selection.modes.push_back(SelectedMode{i, 2.0 + i, ""});
   // Paper Table 5: as many fixed-interface modes as selected global modes.
   const FixedInterfaceModes same = fixedInterfaceModes(selection);
   EXPECT_EQ(same.count, 8);

@@ -90,7 +90,8 @@ struct Beam {
 
 Beam cantilever(int elements, int modes) {
   fem::Model model;
-  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(2.0 * i / elements, 0.0, 0.0));
+  for (int i = 0; i <= elements; ++i)
+    model.addNode(i, Vector3(2.0 * i / elements, 0.0, 0.0));
   model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
   fem::Section section;
   section.name = "bar";
@@ -155,7 +156,8 @@ TEST(Mogesec, PicksSpreadAlongTheBeamWithoutRepeats) {
   std::sort(x.begin(), x.end());
   EXPECT_GT(x.back() - x.front(), 1.0);
   const double spacing = 2.0 / elements;
-  for (std::size_t i = 1; i < x.size(); ++i) EXPECT_GT(x[i] - x[i - 1], 1.5 * spacing);
+  for (std::size_t i = 1; i < x.size(); ++i)
+    EXPECT_GT(x[i] - x[i - 1], 1.5 * spacing);
   // Weights of the picks lie in [0, 1]; the first one is 1.
   EXPECT_DOUBLE_EQ(selection.picks[0].weight, 1.0);
   for (const MogesecPick& p : selection.picks) {

@@ -128,7 +128,8 @@ TEST(MatFile, WriterChecksNamesAndLeavesNothingWithoutClose) {
 fem::System beamOnSupport() {
   fem::Model model;
   const int elements = 10;
-  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
+  for (int i = 0; i <= elements; ++i)
+    model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
   model.addNode(100, Vector3(2.0, 0.0, 0.5));
   model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
   fem::Section section;

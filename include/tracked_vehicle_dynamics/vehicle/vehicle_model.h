@@ -1,0 +1,110 @@
+// The vehicle's FE model (paper Fig. 2): a rigid hull with its Table 1 mass and inertia at the
+// centre of gravity, a rigid "spider" of rigid joints from the hull node to the suspension pivots
+// (and the sprockets, idlers, rollers and named points), torsion-bar trailing arms (an exact
+// revolute joint about y plus a k_t spring), road wheels rigid with their arms, and track
+// assemblies standing on ground springs (the road inputs).
+//
+//   Variant::Untracked  one assembly under each road wheel (the "minimal track chain", Fig. 2a)
+//   Variant::Tracked    both closed chains of assemblies joined pin to pin by rigid joints,
+//                       wrapping sprocket, idler and road wheels (Fig. 2b)
+//
+// Node ids are shared by both variants for the parts they have in common (hull, spider, arms,
+// wheels, the assemblies under the wheels), so mode shapes can be compared node by node (MAC):
+//   1                      hull centre of gravity
+//   10 + i                 named point i
+//   1000 + 100 s + 10 j    station j (0 = front) of side s (0 = left, +y; 1 = right):
+//                          + 0 pivot on the hull, + 1 arm at the pivot, + 2 wheel centre
+//   2000 + 100 s           sprocket centre; + 1 idler centre; + 10 + r return roller r
+//   100000 (s + 1) + 100 k track assembly k of side s (k = 0 at the rear end of the ground run,
+//                          counting forward along the ground, then around the loop)
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/fem/model.h"
+#include "tracked_vehicle_dynamics/types.h"
+#include "tracked_vehicle_dynamics/vehicle/track_assembly.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+/// Which vehicle model to build (see the file comment).
+enum class Variant { Untracked, Tracked };
+
+/// "untracked" / "tracked".
+const char* variantName(Variant variant);
+/// Parses "untracked" / "tracked"; throws InputError naming the text otherwise.
+Variant parseVariant(const std::string& text);
+
+constexpr NodeId kHullNode = 1;
+
+/// One road-wheel station.
+struct WheelStation {
+  std::string name;        ///< "road_wheel_left_1" (front) ... "road_wheel_right_7" (rear)
+  int side = 0;            ///< 0 left (+y), 1 right (-y)
+  int axle = 0;            ///< 0 front ... axle_count - 1 rear
+  NodeId pivot = 0;        ///< on the hull (rigid-joint slave of the hull node)
+  NodeId arm = 0;          ///< arm side of the revolute joint; its ry is the station's DOF
+  NodeId centre = 0;       ///< wheel centre (slave of the arm)
+  int assembly = -1;       ///< index into VehicleLayout::assemblies of the assembly it stands on
+};
+
+/// One track assembly of the model.
+struct AssemblyRecord {
+  int side = 0;
+  int index = 0;           ///< position k in the chain loop
+  bool on_ground = false;
+  TrackAssemblyNodes nodes;
+};
+
+/// A ground spring (road input): the pad sole node and where it stands.
+struct RoadInput {
+  NodeId node = 0;
+  int side = 0;
+  int assembly = 0;        ///< index into VehicleLayout::assemblies
+  double x = 0.0;          ///< [m]
+  double y = 0.0;          ///< [m]
+};
+
+/// Masses by part [kg].
+struct MassBreakdown {
+  double hull = 0.0;
+  double road_wheels = 0.0;
+  double track_assemblies = 0.0;
+  double sprockets = 0.0;
+  double idlers = 0.0;
+  double return_rollers = 0.0;
+  double total = 0.0;
+};
+
+/// Where everything is in the model.
+struct VehicleLayout {
+  Variant variant = Variant::Untracked;
+  NodeId hull = kHullNode;
+  std::vector<WheelStation> wheels;          ///< left 1..n then right 1..n
+  std::vector<AssemblyRecord> assemblies;
+  std::vector<RoadInput> road_inputs;        ///< in the order of the model's ground springs
+  std::map<std::string, NodeId> named_points;
+  std::vector<NodeId> sprockets, idlers, return_rollers;  ///< per side (tracked only)
+  double idler_x = 0.0;                      ///< idler centre x set by the tensioner [m]
+  PadSprings pad_springs;                    ///< calibrated pad springs
+  MassBreakdown mass;
+  /// Node ids of the hull-attached bodies whose kinetic energy counts as "hull" in the mode
+  /// classification besides the hull node (sprockets, idlers, rollers).
+  std::vector<NodeId> hull_attached;
+};
+
+struct VehicleModel {
+  fem::Model model;
+  VehicleLayout layout;
+};
+
+/// Builds the vehicle model of a description. Throws InputError (naming the description key)
+/// when the description is inconsistent.
+VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant);
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

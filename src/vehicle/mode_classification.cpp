@@ -1,0 +1,161 @@
+#include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/mass_element.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+namespace {
+
+/// Sparse rows of the transformation for the six DOFs of a node [6 x n_active].
+Matrix nodeRows(const fem::System& system, NodeId node) {
+  const SparseMatrix& t = system.dofs.transformation();
+  Matrix rows = Matrix::Zero(kDofsPerNode, t.cols());
+  const DofIndex p0 = system.dofs.physical(node, 0);
+  // Column-major T: gather the six rows by scanning columns once.
+  for (Eigen::Index c = 0; c < t.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(t, c); it; ++it)
+      if (it.row() >= p0 && it.row() < p0 + kDofsPerNode) rows(it.row() - p0, c) = it.value();
+  return rows;
+}
+
+}  // namespace
+
+const char* hullMotionName(HullMotion motion) {
+  static const char* const names[] = {"longitudinal", "lateral", "bounce", "roll", "pitch", "yaw"};
+  return names[static_cast<int>(motion)];
+}
+
+bool ModeClass::has(HullMotion m) const {
+  return std::find(hull_motions.begin(), hull_motions.end(), m) != hull_motions.end();
+}
+
+std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::System& system,
+                                     const fem::ModalBasis& basis) {
+  if (basis.shapes.rows() != system.size())
+    throw InputError("classifyModes: mode shapes have " + std::to_string(basis.shapes.rows()) +
+                     " rows, the system has " + std::to_string(system.size()) + " active DOFs");
+  // Motion of each mass item's node for every mode [6 x modes] and its 6x6 mass matrix. For a
+  // wheel, `relative` is its motion less the hull's rigid motion carried to its centre
+  // (u_w = u_h + theta_h x r, theta_w = theta_h): the suspension travel.
+  struct Body {
+    Matrix motion;
+    Matrix relative;
+    Matrix6 mass;
+    int group;  // 0 hull, 1 hull-attached, 2 wheel
+  };
+  std::unordered_map<NodeId, int> group;
+  group[vehicle.layout.hull] = 0;
+  for (NodeId id : vehicle.layout.hull_attached) group[id] = 1;
+  for (const WheelStation& w : vehicle.layout.wheels) group[w.centre] = 2;
+  std::unordered_map<NodeId, Vector3> position;
+  for (const fem::Node& n : vehicle.model.nodes) position[n.id] = n.position;
+  const Matrix hull_motion = nodeRows(system, vehicle.layout.hull) * basis.shapes;
+  std::vector<Body> bodies;
+  for (const fem::Mass& m : vehicle.model.masses) {
+    const auto it = group.find(m.node);
+    if (it == group.end()) continue;
+    Body b{nodeRows(system, m.node) * basis.shapes, Matrix(), fem::rigidBodyMass(m), it->second};
+    if (b.group == 2)
+      b.relative = b.motion - fem::rigidOffset(position[m.node] - position[vehicle.layout.hull]) *
+                                  hull_motion;
+    bodies.push_back(std::move(b));
+  }
+
+  std::vector<ModeClass> out(basis.count());
+  for (int j = 0; j < basis.count(); ++j) {
+    ModeClass& c = out[j];
+    const double total = basis.shapes.col(j).dot(system.mass * basis.shapes.col(j));
+    double attached = 0.0;
+    for (const Body& b : bodies) {
+      const Vector6 v = b.motion.col(j);
+      const double energy = v.dot(b.mass * v) / total;
+      if (b.group == 0) {
+        // Per-component energies; the hull mass matrix is diagonal at its centre of gravity.
+        const Vector6 mv = b.mass * v;
+        for (int k = 0; k < 6; ++k) c.hull_energy[k] = v(k) * mv(k) / total;
+      } else if (b.group == 1) {
+        attached += energy;
+      } else {
+        // Wheel bounce is the wheels' motion relative to the hull; the rest of their energy
+        // (riding along with the hull) counts as the hull's.
+        const Vector6 r = b.relative.col(j);
+        const double relative = r.dot(b.mass * r) / total;
+        c.wheel_share += relative;
+        attached += energy - relative;
+      }
+    }
+    double hull = 0.0;
+    for (double e : c.hull_energy) hull += e;
+    c.hull_share = hull + attached;
+    c.track_share = std::max(0.0, 1.0 - c.hull_share - c.wheel_share);
+
+    std::array<int, 6> order = {0, 1, 2, 3, 4, 5};
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return c.hull_energy[a] > c.hull_energy[b]; });
+    if (c.hull_share >= c.wheel_share && c.hull_share >= c.track_share) {
+      c.kind = ModeKind::Hull;
+      for (int k : order)
+        if (c.hull_energy[k] >= kComponentShare * hull) c.hull_motions.push_back(HullMotion(k));
+      std::vector<HullMotion> named = c.hull_motions;
+      std::sort(named.begin(), named.end());
+      for (HullMotion m : named) c.label += (c.label.empty() ? "" : "+") + std::string(hullMotionName(m));
+    } else if (c.wheel_share >= c.track_share) {
+      c.kind = ModeKind::WheelBounce;
+      c.label = "wheel bounce";
+      if (hull >= kCouplingShare) {
+        c.hull_motions.push_back(HullMotion(order[0]));
+        c.label += std::string("+") + hullMotionName(HullMotion(order[0]));
+      }
+    } else {
+      c.kind = ModeKind::TrackLocal;
+      c.label = "track chain local";
+    }
+  }
+  return out;
+}
+
+std::vector<fem::DofRef> commonTranslationalDofs(const VehicleModel& a, const VehicleModel& b) {
+  std::unordered_map<NodeId, Vector3> positions;
+  for (const fem::Node& n : b.model.nodes) positions[n.id] = n.position;
+  std::vector<NodeId> ids;
+  for (const fem::Node& n : a.model.nodes) {
+    const auto it = positions.find(n.id);
+    if (it != positions.end() && (it->second - n.position).norm() <= 1e-9) ids.push_back(n.id);
+  }
+  std::sort(ids.begin(), ids.end());
+  std::vector<fem::DofRef> dofs;
+  for (NodeId id : ids)
+    for (int d = 0; d < 3; ++d) dofs.push_back({id, d});
+  return dofs;
+}
+
+Matrix physicalShapes(const fem::System& system, const std::vector<fem::DofRef>& dofs,
+                      const ModeShapes& shapes) {
+  if (shapes.rows() != system.size())
+    throw InputError("physicalShapes: mode shapes have " + std::to_string(shapes.rows()) +
+                     " rows, the system has " + std::to_string(system.size()) + " active DOFs");
+  // Selection S (rows of T) then S * Phi.
+  std::vector<DofIndex> rows;
+  for (const fem::DofRef& d : dofs) rows.push_back(system.dofs.physical(d.node, d.direction));
+  const SparseMatrix& t = system.dofs.transformation();
+  std::unordered_map<DofIndex, std::vector<int>> wanted;
+  for (std::size_t i = 0; i < rows.size(); ++i) wanted[rows[i]].push_back(static_cast<int>(i));
+  std::vector<Triplet> trip;
+  for (Eigen::Index c = 0; c < t.outerSize(); ++c)
+    for (SparseMatrix::InnerIterator it(t, c); it; ++it) {
+      const auto w = wanted.find(it.row());
+      if (w == wanted.end()) continue;
+      for (int i : w->second) trip.emplace_back(i, c, it.value());
+    }
+  SparseMatrix s(static_cast<Eigen::Index>(dofs.size()), t.cols());
+  s.setFromTriplets(trip.begin(), trip.end());
+  return s * shapes;
+}
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

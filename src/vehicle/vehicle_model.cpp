@@ -1,0 +1,399 @@
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/vehicle/chain_path.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+namespace {
+
+/// Largest chain the node numbering holds (assembly ids 100000 (s + 1) + 100 k).
+constexpr int kMaxAssemblies = 999;
+/// Un-tracked assemblies sit centred under their wheel, apart from the chain's: own id block.
+constexpr NodeId kUntrackedAssemblyBase = 500000;
+
+const char* sideName(int side) { return side == 0 ? "left" : "right"; }
+double sideY(const VehicleDescription& d, int side) {
+  return (side == 0 ? 0.5 : -0.5) * d.running_gear.track_centre_distance;
+}
+
+NodeId stationNode(int side, int axle, int part) { return 1000 + 100 * side + 10 * axle + part; }
+NodeId chainAssemblyBase(int side, int k) { return 100000 * (side + 1) + 100 * k; }
+
+/// Axle j (0 = front) of n, spaced l, centred on x = 0.
+double axleX(const VehicleDescription& d, int axle) {
+  const auto& g = d.running_gear;
+  return (0.5 * (g.axle_count - 1) - axle) * g.axle_spacing;
+}
+
+/// Frame of an assembly whose pitch-line point and tangent (x-z plane) are given, on side y.
+AssemblyFrame frameAt(const Vector2& point, const Vector2& tangent, double y, double pitch_height) {
+  AssemblyFrame f;
+  const Vector3 e1(tangent.x(), 0.0, tangent.y());
+  const Vector3 e2 = Vector3::UnitY();
+  const Vector3 e3 = e1.cross(e2);  // inward normal (-t_z, 0, t_x)
+  f.axes.col(0) = e1;
+  f.axes.col(1) = e2;
+  f.axes.col(2) = e3;
+  f.origin = Vector3(point.x(), y, point.y()) - pitch_height * e3;
+  return f;
+}
+
+/// Local ids, inside an assembly's id span, of the contact node pair a chain wheel uses.
+constexpr NodeId kLinkContact = 60, kWheelContact = 61;
+
+class Builder {
+ public:
+  Builder(const VehicleDescription& d, Variant variant) : d_(d) {
+    out_.layout.variant = variant;
+    out_.model.name = d.name + "_" + variantName(variant);
+  }
+
+  VehicleModel build() {
+    validateDescription(d_, "vehicle description '" + d_.name + "'");
+    if (d_.track_assembly.count > kMaxAssemblies)
+      throw InputError("track_assembly.count: at most " + std::to_string(kMaxAssemblies) +
+                       " assemblies per side are supported");
+    out_.layout.pad_springs = calibrateTrackAssembly(d_.track_assembly);
+    addTrackAssemblyProperties(out_.model, d_.track_assembly);
+    addHull();
+    for (int side = 0; side < 2; ++side)
+      for (int axle = 0; axle < d_.running_gear.axle_count; ++axle) addStation(side, axle);
+    if (out_.layout.variant == Variant::Untracked)
+      addUntrackedAssemblies();
+    else
+      addChains();
+    model().rigid_joints.insert(model().rigid_joints.begin(), spider_);
+    addDofSets();
+    summariseMass();
+    return std::move(out_);
+  }
+
+ private:
+  fem::Model& model() { return out_.model; }
+  VehicleLayout& layout() { return out_.layout; }
+
+  void attachToHull(NodeId node) { spider_.slaves.push_back(node); }
+
+  void addHull() {
+    const auto& h = d_.hull;
+    model().addNode(kHullNode, Vector3(h.cog_x, 0.0, h.cog_height));
+    fem::Mass m;
+    m.node = kHullNode;
+    m.mass = h.mass;
+    m.inertia = Vector3(h.roll_inertia, h.pitch_inertia, h.yaw_inertia).asDiagonal();
+    m.name = "hull";
+    model().masses.push_back(m);
+    spider_.master = kHullNode;
+    spider_.name = "spider";
+    for (std::size_t i = 0; i < d_.named_points.size(); ++i) {
+      const NodeId id = 10 + static_cast<NodeId>(i);
+      model().addNode(id, d_.named_points[i].position);
+      attachToHull(id);
+      layout().named_points[d_.named_points[i].name] = id;
+    }
+  }
+
+  // Trailing arm: pivot ahead of and above the wheel centre, x_p = x_w + a cos(beta),
+  // z_p = z_w + a sin(beta). The revolute joint frees only ry; the torsion bar is a k_t spring
+  // about y between the hull-side and arm-side pivot nodes.
+  void addStation(int side, int axle) {
+    const auto& s = d_.suspension;
+    const double y = sideY(d_, side);
+    const double x = axleX(d_, axle);
+    const double zw = d_.track_assembly.upper_surface_height + d_.road_wheel.radius;
+    const Vector3 centre(x, y, zw);
+    const Vector3 pivot(x + s.arm_length * std::cos(s.arm_angle), (side == 0 ? 1 : -1) * s.pivot_y,
+                        zw + s.arm_length * std::sin(s.arm_angle));
+    WheelStation st;
+    st.name = std::string("road_wheel_") + sideName(side) + "_" + std::to_string(axle + 1);
+    st.side = side;
+    st.axle = axle;
+    st.pivot = model().addNode(stationNode(side, axle, 0), pivot);
+    st.arm = model().addNode(stationNode(side, axle, 1), pivot);
+    st.centre = model().addNode(stationNode(side, axle, 2), centre);
+    attachToHull(st.pivot);
+
+    fem::RigidJoint revolute;
+    revolute.master = st.pivot;
+    revolute.slaves = {st.arm};
+    revolute.dofs = {{true, true, true, true, false, true}};
+    revolute.name = st.name + "/revolute";
+    model().rigid_joints.push_back(revolute);
+    fem::RigidJoint arm;
+    arm.master = st.arm;
+    arm.slaves = {st.centre};
+    arm.name = st.name + "/arm";
+    model().rigid_joints.push_back(arm);
+
+    fem::Spring bar;
+    bar.n1 = st.pivot;
+    bar.n2 = st.arm;
+    bar.stiffness(4) = s.torsion_bar_stiffness;
+    const auto& damped = d_.damping.damped_stations;
+    if (std::find(damped.begin(), damped.end(), axle + 1) != damped.end())
+      bar.damping(4) = s.arm_damping;
+    bar.name = st.name + "/torsion_bar";
+    model().springs.push_back(bar);
+
+    const auto& w = d_.road_wheel;
+    fem::Mass m;
+    m.node = st.centre;
+    m.mass = w.mass;
+    m.inertia = Vector3(w.tilt_inertia, w.spin_inertia, w.tilt_inertia).asDiagonal();
+    m.name = st.name;
+    model().masses.push_back(m);
+    layout().wheels.push_back(st);
+  }
+
+  int addAssembly(int side, int k, bool on_ground, const AssemblyFrame& frame, NodeId base) {
+    AssemblyRecord rec;
+    rec.side = side;
+    rec.index = k;
+    rec.on_ground = on_ground;
+    rec.nodes = addTrackAssembly(model(), d_.track_assembly, layout().pad_springs, frame, base,
+                                 std::string("track_") + sideName(side) + "_" + std::to_string(k));
+    const int index = static_cast<int>(layout().assemblies.size());
+    if (on_ground) {
+      const double kg = d_.ties.ground_stiffness;
+      for (NodeId sole : rec.nodes.soles) {
+        fem::Spring g;
+        g.n1 = sole;
+        g.n2 = fem::kGround;
+        g.stiffness << kg, kg, kg, 0.0, 0.0, 0.0;
+        g.name = "ground_" + std::to_string(sole);
+        model().springs.push_back(g);
+        RoadInput in;
+        in.node = sole;
+        in.side = side;
+        in.assembly = index;
+        const Vector3 pos = frame.origin + frame.axes * localSole(sole - base);
+        in.x = pos.x();
+        in.y = pos.y();
+        layout().road_inputs.push_back(in);
+      }
+    }
+    layout().assemblies.push_back(rec);
+    return index;
+  }
+
+  Vector3 localSole(NodeId local) const {
+    const auto& t = d_.track_assembly;
+    const int j = static_cast<int>(local - 30);
+    const double xi[3] = {-t.pad_column_offset, 0.0, t.pad_column_offset};
+    return Vector3(xi[j % 3], j < 3 ? -t.pad_lateral_offset : t.pad_lateral_offset, 0.0);
+  }
+
+  // Wheel-track contact: a bushing between two coincident nodes at the contact point on the
+  // link's upper (inner) surface, one rigid with the wheel body and one with the link centre, so
+  // the contact force acts where the wheel touches the link. Stiffness in the assembly frame
+  // (along the chain, across, normal); no moment is transmitted.
+  void addContact(NodeId wheel_body, NodeId wheel_node, NodeId link_node, const AssemblyRecord& a,
+                  const Vector3& point, const Matrix3& frame, double along, double across,
+                  double normal, const std::string& name) {
+    model().addNode(wheel_node, point);
+    model().addNode(link_node, point);
+    fem::RigidJoint on_wheel;
+    on_wheel.master = wheel_body;
+    on_wheel.slaves = {wheel_node};
+    on_wheel.name = name + "/wheel_side";
+    model().rigid_joints.push_back(on_wheel);
+    fem::RigidJoint on_link;
+    on_link.master = a.nodes.linkCentre();
+    on_link.slaves = {link_node};
+    on_link.name = name + "/link_side";
+    model().rigid_joints.push_back(on_link);
+    fem::Spring s;
+    s.n1 = wheel_node;
+    s.n2 = link_node;
+    s.stiffness << along, across, normal, 0.0, 0.0, 0.0;
+    s.frame = frame;
+    s.name = name;
+    model().springs.push_back(s);
+  }
+
+  /// The point of the link's upper surface above the assembly's centre line at `along` from it.
+  Vector3 upperSurface(const AssemblyRecord& a, const Matrix3& frame, double along) const {
+    const fem::Node& centre = nodeById(a.nodes.linkCentre());
+    const double up = d_.track_assembly.upper_surface_height - d_.track_assembly.pitch_line_height;
+    return centre.position + along * frame.col(0) + up * frame.col(2);
+  }
+
+  const fem::Node& nodeById(NodeId id) const {
+    for (auto it = out_.model.nodes.rbegin(); it != out_.model.nodes.rend(); ++it)
+      if (it->id == id) return *it;
+    throw InputError("internal: node " + std::to_string(id) + " missing");
+  }
+
+  void tieWheel(WheelStation& st, int assembly) {
+    const auto& s = d_.suspension;
+    st.assembly = assembly;
+    const AssemblyRecord& a = layout().assemblies[assembly];
+    const Matrix3 frame = Matrix3::Identity();
+    const double along = axleX(d_, st.axle) - nodeById(a.nodes.linkCentre()).position.x();
+    addContact(st.centre, stationNode(st.side, st.axle, 3), stationNode(st.side, st.axle, 4), a,
+               upperSurface(a, frame, along), frame, s.contact_shear_stiffness,
+               s.contact_shear_stiffness, s.contact_stiffness, st.name + "/contact");
+  }
+
+  // Paper Fig. 2a: each road wheel stands on one assembly, centred under it.
+  void addUntrackedAssemblies() {
+    const double hp = d_.track_assembly.pitch_line_height;
+    for (WheelStation& st : layout().wheels) {
+      const double x = axleX(d_, st.axle);
+      const AssemblyFrame f = frameAt(Vector2(x, hp), Vector2::UnitX(), sideY(d_, st.side), hp);
+      const NodeId base = kUntrackedAssemblyBase + 10000 * st.side + kAssemblyIdSpan * st.axle;
+      tieWheel(st, addAssembly(st.side, st.axle, true, f, base));
+    }
+  }
+
+  // Paper Fig. 2b: closed chains, pin to pin rigid joints, ground run on ground springs.
+  void addChains() {
+    const auto& t = d_.track_assembly;
+    const auto& s = d_.suspension;
+    layout().idler_x = solveIdlerX(d_);
+    const ChainPath path(d_, layout().idler_x);
+    const auto sprocket_arc = path.interval(ChainSegment::Sprocket);
+    const auto idler_arc = path.interval(ChainSegment::Idler);
+    for (int side = 0; side < 2; ++side) {
+      const double y = sideY(d_, side);
+      std::vector<int> index(t.count);
+      for (int k = 0; k < t.count; ++k) {
+        const double sk = (k + 0.5) * t.pitch;
+        const ChainPoint p = path.at(sk);
+        index[k] = addAssembly(side, k, k < t.ground_count,
+                               frameAt(p.position, p.tangent, y, t.pitch_line_height),
+                               chainAssemblyBase(side, k));
+      }
+      for (int k = 0; k < t.count; ++k) {
+        const auto& front = layout().assemblies[index[k]].nodes.front_pin;
+        const auto& rear = layout().assemblies[index[(k + 1) % t.count]].nodes.rear_pin;
+        for (int i = 0; i < 3; ++i) {
+          fem::RigidJoint pin;
+          pin.master = front[i];
+          pin.slaves = {rear[i]};
+          pin.name = std::string("chain_") + sideName(side) + "_joint_" + std::to_string(k);
+          model().rigid_joints.push_back(pin);
+        }
+      }
+      // Road wheels on the ground assembly nearest below them.
+      for (WheelStation& st : layout().wheels) {
+        if (st.side != side) continue;
+        const double u = (axleX(d_, st.axle) + 0.5 * t.ground_count * t.pitch) / t.pitch - 0.5;
+        const int k = std::clamp(static_cast<int>(std::lround(u)), 0, t.ground_count - 1);
+        tieWheel(st, index[k]);
+      }
+      // Sprocket (teeth on the pins: radial, lateral and tangential), idler (rolling: radial and
+      // lateral only) and rollers (as the idler), all rigid with the hull.
+      const NodeId sprocket = model().addNode(2000 + 100 * side,
+          Vector3(path.sprocketCentre().x(), y, path.sprocketCentre().y()));
+      const NodeId idler = model().addNode(2001 + 100 * side,
+          Vector3(path.idlerCentre().x(), y, path.idlerCentre().y()));
+      addWheelMass(sprocket, d_.sprocket.mass, d_.sprocket.inertia, "sprocket");
+      addWheelMass(idler, d_.idler.mass, d_.idler.inertia, "idler");
+      layout().sprockets.push_back(sprocket);
+      layout().idlers.push_back(idler);
+      for (int k = 0; k < t.count; ++k) {
+        const double sk = (k + 0.5) * t.pitch;
+        const AssemblyRecord& a = layout().assemblies[index[k]];
+        const Matrix3 frame = frameAt(path.at(sk).position, path.at(sk).tangent, y, 0).axes;
+        const double kc = s.contact_stiffness, ks = s.contact_shear_stiffness;
+        const NodeId base = a.nodes.base;
+        const std::string tag = std::string(sideName(side)) + "_" + std::to_string(k);
+        if (sk >= sprocket_arc.first && sk < sprocket_arc.second)
+          addContact(sprocket, base + kWheelContact, base + kLinkContact, a,
+                     upperSurface(a, frame, 0.0), frame, kc, ks, kc, "sprocket_" + tag);
+        if (sk >= idler_arc.first && sk < idler_arc.second)
+          addContact(idler, base + kWheelContact, base + kLinkContact, a,
+                     upperSurface(a, frame, 0.0), frame, 0.0, ks, kc, "idler_" + tag);
+      }
+      const auto top = path.interval(ChainSegment::TopRun);
+      for (std::size_t r = 0; r < d_.return_rollers.x.size(); ++r) {
+        const double xr = d_.return_rollers.x[r];
+        if (xr >= path.idlerCentre().x())
+          throw InputError("return_rollers.x: roller at x = " + std::to_string(xr) +
+                           " m lies ahead of the idler (x = " +
+                           std::to_string(path.idlerCentre().x()) + " m)");
+        int best = -1;
+        double best_dist = 1e300;
+        for (int k = 0; k < t.count; ++k) {
+          const double sk = (k + 0.5) * t.pitch;
+          if (sk < top.first || sk >= top.second) continue;
+          const double dist = std::abs(path.at(sk).position.x() - xr);
+          if (dist < best_dist) best = k, best_dist = dist;
+        }
+        if (best < 0) throw InputError("return_rollers.x: the top run holds no assembly");
+        const NodeId roller = model().addNode(2010 + 100 * side + static_cast<NodeId>(r),
+            Vector3(xr, y, path.topRunHeight(xr) - d_.return_rollers.radius));
+        addWheelMass(roller, d_.return_rollers.mass, 0.0, "return_roller");
+        layout().return_rollers.push_back(roller);
+        const double sb = (best + 0.5) * t.pitch;
+        const Matrix3 frame = frameAt(path.at(sb).position, path.at(sb).tangent, y, 0).axes;
+        const AssemblyRecord& a = layout().assemblies[index[best]];
+        addContact(roller, a.nodes.base + kWheelContact, a.nodes.base + kLinkContact, a,
+                   upperSurface(a, frame, 0.0), frame, 0.0, s.contact_shear_stiffness,
+                   s.contact_stiffness,
+                   std::string("return_roller_") + sideName(side) + "_" + std::to_string(r));
+      }
+    }
+  }
+
+  void addWheelMass(NodeId node, double mass, double inertia, const std::string& name) {
+    attachToHull(node);
+    layout().hull_attached.push_back(node);
+    if (mass <= 0.0) return;
+    fem::Mass m;
+    m.node = node;
+    m.mass = mass;
+    m.inertia = inertia * Matrix3::Identity();
+    m.name = name;
+    model().masses.push_back(m);
+  }
+
+  void addDofSets() {
+    auto& sets = model().dof_sets;
+    for (int d = 0; d < kDofsPerNode; ++d) sets["hull"].push_back({kHullNode, d});
+    for (const WheelStation& st : layout().wheels) sets["arms"].push_back({st.arm, 4});
+    for (const RoadInput& in : layout().road_inputs)
+      sets["ground_contact"].push_back({in.node, static_cast<int>(Direction::Uz)});
+  }
+
+  void summariseMass() {
+    MassBreakdown& m = layout().mass;
+    m.hull = d_.hull.mass;
+    m.road_wheels = d_.road_wheel.mass * layout().wheels.size();
+    m.track_assemblies = d_.track_assembly.mass * layout().assemblies.size();
+    m.sprockets = d_.sprocket.mass * layout().sprockets.size();
+    m.idlers = d_.idler.mass * layout().idlers.size();
+    m.return_rollers = d_.return_rollers.mass * layout().return_rollers.size();
+    m.total = m.hull + m.road_wheels + m.track_assemblies + m.sprockets + m.idlers +
+              m.return_rollers;
+  }
+
+  const VehicleDescription& d_;
+  VehicleModel out_;
+  fem::RigidJoint spider_;
+};
+
+}  // namespace
+
+const char* variantName(Variant variant) {
+  return variant == Variant::Untracked ? "untracked" : "tracked";
+}
+
+Variant parseVariant(const std::string& text) {
+  if (text == "untracked") return Variant::Untracked;
+  if (text == "tracked") return Variant::Tracked;
+  throw InputError("unknown vehicle variant '" + text + "' (untracked or tracked)");
+}
+
+VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant) {
+  return Builder(description, variant).build();
+}
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics
