@@ -71,12 +71,21 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
                                           : std::numeric_limits<double>::infinity();
       max_off_diagonal_damping_ratio_ = std::max(max_off_diagonal_damping_ratio_, ratio);
     }
-  if (damping_ratios.size() != 0)
+  if (damping_ratios.size() != 0) {
     damping_coefficients_ = 2.0 * damping_ratios.cwiseProduct(frequencies_);
-  else
+  } else {
     damping_coefficients_ = modal_damping.diagonal();
-  if ((damping_coefficients_.array() < 0.0).any())
-    throw InputError("ModalSystem: damping C gives a negative modal damping phi^T C phi");
+    // phi^T C phi >= 0 for a positive semi-definite C, up to rounding (e.g. beta K on a
+    // rigid-body mode).
+    const double d_max = damping_coefficients_.cwiseAbs().maxCoeff();
+    for (DofIndex r = 0; r < n; ++r) {
+      double& d = damping_coefficients_(r);
+      if (std::abs(d) <= kRigidBodyTolerance * d_max) d = std::max(d, 0.0);
+      if (d < 0.0)
+        throw InputError("ModalSystem: damping C is not positive semi-definite: mode " +
+                         std::to_string(r) + " has phi^T C phi = " + std::to_string(d) + " 1/s");
+    }
+  }
 
   modal_input_stiffness_ = shapes_.transpose() * system.input_stiffness;
   modal_input_damping_ = shapes_.transpose() * system.input_damping;

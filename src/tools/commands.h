@@ -7,6 +7,8 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 void registerModesCommand(CLI::App& app);
+void registerMacCommand(CLI::App& app);
+void registerReduceCommand(CLI::App& app);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

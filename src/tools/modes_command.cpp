@@ -1,7 +1,5 @@
-// `tvd modes`: modal analysis of a generic FE model file (or of a vehicle, see --vehicle).
+// `tvd modes`: modal analysis of a generic FE model file or of a vehicle description.
 #include <chrono>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
@@ -12,6 +10,7 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -20,36 +19,40 @@ namespace {
 
 struct ModesOptions {
   std::string model_file;
+  std::string vehicle_file;
+  std::string variant = "untracked";
   int count = 20;
   double max_frequency_hz = 0.0;
   bool json = false;
   std::string out_dir;
 };
 
-void printTable(const std::string& name, const fem::System& sys, const fem::ModalBasis& basis,
-                double assemble_seconds) {
+void printTable(const std::string& name, DofIndex dofs, double mass, const fem::ModalBasis& basis,
+                double build_seconds, const std::vector<std::string>& types) {
   std::cout << "model: " << name << "\n"
-            << "active DOFs: " << sys.size() << "   modes: " << basis.count()
-            << "   assembly: " << std::fixed << std::setprecision(3) << assemble_seconds
-            << " s   solve: " << basis.seconds << " s\n\n"
-            << "  mode   frequency [Hz]\n";
-  for (int i = 0; i < basis.count(); ++i)
+            << "active DOFs: " << dofs << "   mass: " << std::fixed << std::setprecision(1) << mass
+            << " kg   modes: " << basis.count() << "   assembly: " << std::setprecision(3)
+            << build_seconds << " s   solve: " << basis.seconds << " s\n\n"
+            << "  mode   frequency [Hz]" << (types.empty() ? "" : "   type") << "\n";
+  for (int i = 0; i < basis.count(); ++i) {
     std::cout << std::setw(6) << i + 1 << std::setw(17) << std::setprecision(4)
-              << basis.frequencies_hz(i) << "\n";
+              << basis.frequencies_hz(i);
+    if (!types.empty()) std::cout << "   " << types[i];
+    std::cout << "\n";
+  }
 }
 
-void run(const ModesOptions& opt) {
+void runModel(const ModesOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const fem::Model model = io::loadModelYaml(opt.model_file);
   const fem::System sys = fem::assemble(model);
-  const double assemble_seconds =
+  const double build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fem::ModalRequest request;
   request.count = opt.count;
   request.max_frequency_hz = opt.max_frequency_hz;
   const fem::ModalBasis basis = fem::solveModes(sys.stiffness, sys.mass, request);
-
-  if (!opt.out_dir.empty()) writeModeFiles(opt.out_dir, sys, basis);
+  if (!opt.out_dir.empty()) writeModeFiles(opt.out_dir, sys, basis, {});
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
@@ -59,32 +62,91 @@ void run(const ModesOptions& opt) {
         .field("mass_kg", model.totalMass())
         .field("frequencies_hz", basis.frequencies_hz)
         .field("eigenvalues", basis.eigenvalues)
-        .field("assemble_seconds", assemble_seconds)
-        .field("solve_seconds", basis.seconds)
-        .field("lanczos_iterations", basis.iterations);
-    if (!opt.out_dir.empty()) json.field("out_dir", opt.out_dir);
+        .field("assemble_seconds", build_seconds)
+        .field("solve_seconds", basis.seconds);
     json.endObject();
   } else {
-    printTable(model.name.empty() ? opt.model_file : model.name, sys, basis, assemble_seconds);
-    if (!opt.out_dir.empty()) std::cout << "\nwrote modes.csv, shapes.csv, modes.mat to " << opt.out_dir << "\n";
+    printTable(model.name.empty() ? opt.model_file : model.name, sys.size(), model.totalMass(),
+               basis, build_seconds, {});
   }
+}
+
+void runVehicle(const ModesOptions& opt) {
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  const VehicleAnalysis a = analyseVehicle(description, variant, opt.count);
+  std::vector<std::string> types;
+  for (const auto& c : a.classes) types.push_back(c.label);
+  if (!opt.out_dir.empty()) writeModeFiles(opt.out_dir, a.system, a.modes, types);
+  const vehicle::MassBreakdown& m = a.vehicle.layout.mass;
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", description.name)
+        .field("variant", vehicle::variantName(variant))
+        .field("active_dofs", static_cast<long long>(a.system.size()))
+        .field("mass_kg", a.vehicle.model.totalMass())
+        .key("mass_breakdown_kg")
+        .beginObject()
+        .field("hull", m.hull)
+        .field("road_wheels", m.road_wheels)
+        .field("track_assemblies", m.track_assemblies)
+        .field("sprockets", m.sprockets)
+        .field("idlers", m.idlers)
+        .field("return_rollers", m.return_rollers)
+        .endObject()
+        .field("frequencies_hz", a.modes.frequencies_hz)
+        .field("mode_types", types)
+        .field("build_seconds", a.build_seconds)
+        .field("solve_seconds", a.modes.seconds)
+        .key("static")
+        .beginObject()
+        .field("hull_sag_m", a.statics.hull_sag)
+        .field("hull_pitch_deg", a.statics.hull_pitch_deg)
+        .field("weight_n", a.statics.weight)
+        .field("ground_reaction_sum_n", a.statics.ground_reaction)
+        .field("relative_balance_error",
+               std::abs(a.statics.ground_reaction - a.statics.weight) / a.statics.weight)
+        .endObject();
+    json.endObject();
+    return;
+  }
+  printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
+             a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
+  std::cout << "\nstatic equilibrium under gravity: hull sag " << std::setprecision(4)
+            << a.statics.hull_sag * 1000.0 << " mm, pitch " << a.statics.hull_pitch_deg
+            << " deg; ground reactions " << std::setprecision(1) << a.statics.ground_reaction
+            << " N = weight " << a.statics.weight << " N\n";
 }
 
 }  // namespace
 
 void registerModesCommand(CLI::App& app) {
   auto opt = std::make_shared<ModesOptions>();
-  CLI::App* cmd = app.add_subcommand("modes", "Modal analysis: lowest natural frequencies and mode shapes");
-  cmd->add_option("--model", opt->model_file, "FE model file (YAML, see doc/model_file.md)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  CLI::App* cmd = app.add_subcommand(
+      "modes", "Modal analysis: natural frequencies, mode shapes (and mode types of a vehicle)");
+  auto* model = cmd->add_option("--model", opt->model_file, "generic FE model file (YAML, doc/model_file.md)")
+                    ->check(CLI::ExistingFile);
+  auto* vehicle = cmd->add_option("--vehicle", opt->vehicle_file,
+                                  "vehicle description (e.g. config/vehicles/paper_vehicle.yaml)")
+                      ->check(CLI::ExistingFile);
+  model->excludes(vehicle);
+  cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
+      ->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--count,-n", opt->count, "number of modes")->check(CLI::Range(1, 100000));
   cmd->add_option("--max-frequency", opt->max_frequency_hz,
-                  "return every mode below this frequency [Hz] (at most --count)")
+                  "return every mode below this frequency [Hz] (at most --count; --model only)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");
   cmd->add_option("--out", opt->out_dir, "write modes.csv, shapes.csv and modes.mat to this directory");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt, model, vehicle]() {
+    if (model->count() == 0 && vehicle->count() == 0)
+      throw InputError("modes: give --model FILE or --vehicle FILE");
+    if (vehicle->count())
+      runVehicle(*opt);
+    else
+      runModel(*opt);
+  });
 }
 
 }  // namespace tools

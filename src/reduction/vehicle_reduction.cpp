@@ -1,0 +1,228 @@
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+
+#include <chrono>
+#include <filesystem>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/reduction/fixed_interface_modes.h"
+#include "tracked_vehicle_dynamics/reduction/mac.h"
+#include "tracked_vehicle_dynamics/reduction/mode_selection.h"
+#include "tracked_vehicle_dynamics/reduction/mogesec.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+#include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct AssembledVariant {
+  vehicle::VehicleModel vehicle;
+  fem::System system;
+  fem::ModalBasis modes;
+};
+
+AssembledVariant buildAndSolve(const vehicle::VehicleDescription& description,
+                               vehicle::Variant variant, int modes) {
+  AssembledVariant out;
+  out.vehicle = vehicle::buildVehicleModel(description, variant);
+  out.system = fem::assemble(out.vehicle.model);
+  fem::ModalRequest request;
+  request.count = modes;
+  out.modes = fem::solveModes(out.system.stiffness, out.system.mass, request);
+  return out;
+}
+
+// The imposed masters (paper §3.1.2): the vertical DOF of every road-input node (the ground
+// interface), the six hull DOFs and each suspension arm's rotation (one DOF per road wheel).
+std::vector<DofIndex> interfaceMasters(const AssembledVariant& v, DofIndex* interface_count) {
+  const fem::DofMap& dofs = v.system.dofs;
+  std::vector<DofIndex> masters;
+  for (const vehicle::RoadInput& input : v.vehicle.layout.road_inputs) {
+    const DofIndex a = dofs.active(input.node, static_cast<int>(Direction::Uz));
+    if (a >= 0) masters.push_back(a);
+  }
+  *interface_count = static_cast<DofIndex>(masters.size());
+  for (int d = 0; d < kDofsPerNode; ++d) masters.push_back(dofs.requireActive(v.vehicle.layout.hull, d));
+  for (const vehicle::WheelStation& wheel : v.vehicle.layout.wheels)
+    masters.push_back(dofs.requireActive(wheel.arm, static_cast<int>(Direction::Ry)));
+  return masters;
+}
+
+DampingOptions dampingOf(const vehicle::DampingDescription& d) {
+  DampingOptions o;
+  if (d.model == vehicle::DampingModel::Modal) {
+    o.model = DampingModel::Modal;
+    o.modal_ratio = d.modal_ratio;
+  } else {
+    o.model = DampingModel::Rayleigh;
+    o.alpha = d.rayleigh_alpha;
+    o.beta = d.rayleigh_beta;
+  }
+  return o;
+}
+
+std::vector<double> frequenciesBelow(const Vector& hz, double limit) {
+  std::vector<double> out;
+  for (Eigen::Index i = 0; i < hz.size(); ++i)
+    if (hz(i) <= limit) out.push_back(hz(i));
+  return out;
+}
+
+}  // namespace
+
+std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& v,
+                                      const vehicle::VehicleDescription& description) {
+  std::vector<OutputDof> outputs;
+  for (int d = 0; d < kDofsPerNode; ++d)
+    outputs.push_back({std::string("hull ") + directionName(d), {v.layout.hull, d}});
+  for (const vehicle::WheelStation& wheel : v.layout.wheels)
+    outputs.push_back({wheel.name + " uz", {wheel.centre, static_cast<int>(Direction::Uz)}});
+  for (const vehicle::NamedPoint& point : description.named_points) {
+    const auto it = v.layout.named_points.find(point.name);
+    if (it == v.layout.named_points.end())
+      throw InputError("named point '" + point.name + "' has no node in the vehicle model");
+    for (int d = 0; d < 3; ++d)
+      outputs.push_back({point.name + " " + directionName(d), {it->second, d}});
+  }
+  return outputs;
+}
+
+ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehicle::Variant variant,
+                           const VehicleReductionOptions& options, VehicleReductionReport* report) {
+  if (options.global_modes <= 0) throw InputError("reduction: global_modes must be positive");
+  if (!(options.band_hz > 0)) throw InputError("reduction: band_hz must be positive");
+  if (options.mogesec_masters < 0) throw InputError("reduction: mogesec_masters must not be negative");
+  VehicleReductionReport local;
+  VehicleReductionReport& rep = report ? *report : local;
+  const auto start = Clock::now();
+
+  // 1. The full model and its global modes.
+  const AssembledVariant model = buildAndSolve(description, variant, options.global_modes);
+  rep.full_dofs = model.system.size();
+  rep.build_seconds = secondsSince(start) - model.modes.seconds;
+  rep.modes_seconds = model.modes.seconds;
+  rep.full_frequencies_hz = frequenciesBelow(model.modes.frequencies_hz, options.band_hz);
+
+  // 2. Mode selection (paper §3.1.1): by MAC against the other variant, or by band.
+  const auto selection_start = Clock::now();
+  ModeSelectionOptions selection_options;
+  ModeSelection selection;
+  if (options.rule == VehicleModeRule::MacCorrelation) {
+    const vehicle::Variant other_variant = variant == vehicle::Variant::Tracked
+                                               ? vehicle::Variant::Untracked
+                                               : vehicle::Variant::Tracked;
+    const AssembledVariant other = buildAndSolve(description, other_variant, options.global_modes);
+    // MAC on the translations of the nodes both variants share (hull, spider, arms, wheel
+    // centres), recovered through the constraint transformation since many are slaves.
+    const std::vector<fem::DofRef> common =
+        vehicle::commonTranslationalDofs(model.vehicle, other.vehicle);
+    ModeReference reference;
+    reference.mac = mac(vehicle::physicalShapes(model.system, common, model.modes.shapes),
+                        vehicle::physicalShapes(other.system, common, other.modes.shapes));
+    reference.frequencies_hz = other.modes.frequencies_hz;
+    selection_options.rule = ModeSelectionRule::Correlation;
+    selection_options.max_frequency_hz = options.band_hz;
+    selection_options.mac_threshold = options.mac_threshold;
+    selection_options.reference_name = std::string(vehicle::variantName(other_variant));
+    selection = selectModes(model.modes.frequencies_hz, selection_options, &reference);
+  } else {
+    selection_options.rule = options.mode_count > 0 ? ModeSelectionRule::Count
+                                                    : ModeSelectionRule::FrequencyBand;
+    selection_options.count = options.mode_count;
+    selection_options.max_frequency_hz = options.band_hz;
+    selection = selectModes(model.modes.frequencies_hz, selection_options);
+  }
+  if (selection.count() == 0)
+    throw InputError("reduction: no global mode selected below " + std::to_string(options.band_hz) +
+                     " Hz (MAC threshold " + std::to_string(options.mac_threshold) + ")");
+
+  // 3. Masters: the ground interface, hull and wheels, then MoGeSeC on the selected modes.
+  DofIndex interface_count = 0;
+  const std::vector<DofIndex> imposed = interfaceMasters(model, &interface_count);
+  Matrix selected_shapes(model.system.size(), selection.count());
+  for (int i = 0; i < selection.count(); ++i)
+    selected_shapes.col(i) = model.modes.shapes.col(selection.modes[i].mode);
+  MogesecOptions mogesec_options;
+  mogesec_options.count = options.mogesec_masters;
+  const MasterSelection masters =
+      selectMasters(model.system.dofs, selected_shapes, imposed,
+                    CandidateFilter::lateralAndVertical(), mogesec_options);
+  rep.interface_dofs = interface_count;
+  rep.mogesec_dofs = static_cast<DofIndex>(masters.picks.size());
+  rep.selection_seconds = secondsSince(selection_start);
+
+  // 4. Craig-Bampton with as many fixed-interface modes as global modes were selected (Table 5).
+  const auto reduce_start = Clock::now();
+  ReductionRequest request;
+  request.masters = masters.masters;
+  request.craig_bampton.fixed_interface =
+      options.mode_count > 0 ? FixedInterfaceModes{options.mode_count, 0.0}
+                             : fixedInterfaceModes(selection);
+  request.craig_bampton.damping = dampingOf(description.damping);
+  request.outputs = vehicleOutputs(model.vehicle, description);
+  request.selection = selection;
+  request.description_hash = vehicle::descriptionHashHex(description);
+  request.creator = std::string("reduceVehicle ") + vehicle::variantName(variant);
+  ReducedModel reduced = buildReducedModel(model.system, request);
+  rep.reduce_seconds = secondsSince(reduce_start);
+  rep.flexible_modes = static_cast<int>(reduced.modeCount());
+  rep.reduced_dofs = reduced.size();
+
+  const fem::ModalBasis reduced_modes =
+      fem::solveModesDense(reduced.system.stiffness, reduced.system.mass);
+  rep.reduced_frequencies_hz = frequenciesBelow(reduced_modes.frequencies_hz, options.band_hz);
+  rep.total_seconds = secondsSince(start);
+  return reduced;
+}
+
+ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Variant variant,
+                                 const std::string& cache_dir,
+                                 const VehicleReductionOptions& options,
+                                 VehicleReductionReport* report) {
+  VehicleReductionReport local;
+  VehicleReductionReport& rep = report ? *report : local;
+  const auto start = Clock::now();
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(vehicle_file);
+  const std::string hash = vehicle::descriptionHashHex(description);
+  const std::filesystem::path path =
+      std::filesystem::path(cache_dir) / (std::string(vehicle::variantName(variant)) + "_" + hash + ".mat");
+  rep.cache_file = path.string();
+  if (std::filesystem::exists(path)) {
+    try {
+      ReducedModel cached = loadReducedModel(path.string(), hash);
+      rep.from_cache = true;
+      rep.cache_note = "loaded " + path.string();
+      rep.reduced_dofs = cached.size();
+      rep.full_dofs = cached.full_dof_count;
+      rep.flexible_modes = static_cast<int>(cached.modeCount());
+      rep.total_seconds = secondsSince(start);
+      return cached;
+    } catch (const StaleCacheError& e) {
+      rep.cache_note = std::string("rebuilt: ") + e.what();
+    }
+  } else {
+    rep.cache_note = "built: no cached model " + path.string();
+  }
+  ReducedModel model = reduceVehicle(description, variant, options, &rep);
+  try {
+    std::filesystem::create_directories(cache_dir);
+    saveReducedModel(model, path.string());
+  } catch (const std::exception& e) {
+    rep.cache_note += std::string("; not cached: ") + e.what();
+  }
+  rep.from_cache = false;
+  rep.total_seconds = secondsSince(start);
+  return model;
+}
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

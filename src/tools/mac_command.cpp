@@ -1,0 +1,154 @@
+// `tvd mac`: MAC between the un-tracked and tracked variants (paper eq. 11, Fig. 9) and the
+// correlation table of Table 4.
+#include <iomanip>
+#include <iostream>
+#include <fstream>
+
+#include "commands.h"
+#include "output_files.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/reduction/mac.h"
+#include "vehicle_analysis.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+struct MacOptions {
+  std::string vehicle_file;
+  int count = 40;
+  double threshold = reduction::kPaperMacThreshold;
+  double band_hz = 30.0;
+  bool json = false;
+  std::string out_dir;
+};
+
+// One row of the correlation table: an un-tracked hull or wheel mode and its tracked partners.
+struct CorrelationRow {
+  int untracked_mode = 0;  // 0-based
+  reduction::ModeCorrelation correlation;
+};
+
+void run(const MacOptions& opt) {
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  const VehicleAnalysis uv = analyseVehicle(description, vehicle::Variant::Untracked, opt.count);
+  const VehicleAnalysis tv = analyseVehicle(description, vehicle::Variant::Tracked, opt.count);
+  // MAC on the translations of the nodes both variants share (rotations ignored, paper §3.1.1).
+  const std::vector<fem::DofRef> common = vehicle::commonTranslationalDofs(uv.vehicle, tv.vehicle);
+  const Matrix mac = reduction::mac(vehicle::physicalShapes(uv.system, common, uv.modes.shapes),
+                                    vehicle::physicalShapes(tv.system, common, tv.modes.shapes));
+  const std::vector<reduction::ModeCorrelation> correlations =
+      reduction::correlateModes(mac, opt.threshold);
+
+  // Table 4 lists the un-tracked hull and wheel-bounce modes of the band.
+  std::vector<CorrelationRow> rows;
+  for (int i = 0; i < uv.modes.count(); ++i) {
+    if (uv.modes.frequencies_hz(i) > opt.band_hz) break;
+    if (uv.classes[i].kind == vehicle::ModeKind::TrackLocal) continue;
+    rows.push_back({i, correlations[i]});
+  }
+
+  if (!opt.out_dir.empty()) {
+    makeOutputDirectory(opt.out_dir);
+    io::MatWriter mat(opt.out_dir + "/mac.mat");
+    mat.writeMatrix("mac", mac);
+    mat.writeMatrix("untracked_frequencies_hz", uv.modes.frequencies_hz);
+    mat.writeMatrix("tracked_frequencies_hz", tv.modes.frequencies_hz);
+    std::vector<std::string> uv_types, tv_types;
+    for (const auto& c : uv.classes) uv_types.push_back(c.label);
+    for (const auto& c : tv.classes) tv_types.push_back(c.label);
+    mat.writeStrings("untracked_mode_types", uv_types);
+    mat.writeStrings("tracked_mode_types", tv_types);
+    mat.writeScalar("threshold", opt.threshold);
+    mat.close();
+    std::ofstream csv(opt.out_dir + "/mac.csv");
+    if (!csv) throw InputError("cannot write " + opt.out_dir + "/mac.csv");
+    csv << "untracked_mode\\tracked_mode";
+    for (int j = 0; j < mac.cols(); ++j) csv << "," << j + 1;
+    csv << "\n" << std::setprecision(6);
+    for (int i = 0; i < mac.rows(); ++i) {
+      csv << i + 1;
+      for (int j = 0; j < mac.cols(); ++j) csv << "," << mac(i, j);
+      csv << "\n";
+    }
+  }
+
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", description.name)
+        .field("common_dofs", static_cast<long long>(common.size()))
+        .field("threshold", opt.threshold)
+        .field("untracked_frequencies_hz", uv.modes.frequencies_hz)
+        .field("tracked_frequencies_hz", tv.modes.frequencies_hz)
+        .field("mac", mac)
+        .key("correlation")
+        .beginArray();
+    for (const CorrelationRow& r : rows) {
+      json.beginObject()
+          .field("untracked_mode", r.untracked_mode + 1)
+          .field("untracked_hz", uv.modes.frequencies_hz(r.untracked_mode))
+          .field("type", uv.classes[r.untracked_mode].label)
+          .field("tracked_mode", r.correlation.best_match + 1)
+          .field("tracked_hz", tv.modes.frequencies_hz(r.correlation.best_match))
+          .field("tracked_type", tv.classes[r.correlation.best_match].label)
+          .field("mac", r.correlation.best_mac)
+          .key("other_matches")
+          .beginArray();
+      for (const auto& m : r.correlation.matches) {
+        if (m.mode == r.correlation.best_match) continue;
+        json.beginObject().field("tracked_mode", m.mode + 1).field("tracked_hz", tv.modes.frequencies_hz(m.mode))
+            .field("mac", m.mac).endObject();
+      }
+      json.endArray().endObject();
+    }
+    json.endArray();
+    json.endObject();
+    return;
+  }
+
+  std::cout << "MAC between the un-tracked (" << uv.system.size() << " DOFs) and tracked ("
+            << tv.system.size() << " DOFs) models on " << common.size()
+            << " common translational DOFs; first " << opt.count << " modes.\n\n"
+            << "correlation (like Table 4): un-tracked hull and wheel modes up to " << opt.band_hz
+            << " Hz; best tracked match, then (other matches with MAC >= " << opt.threshold << ")\n\n";
+  std::cout << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
+  for (const CorrelationRow& r : rows) {
+    const int best = r.correlation.best_match;
+    std::cout << std::setw(9) << r.untracked_mode + 1 << std::setw(11) << std::fixed
+              << std::setprecision(2) << uv.modes.frequencies_hz(r.untracked_mode) << "  "
+              << std::left << std::setw(26) << uv.classes[r.untracked_mode].label << std::right
+              << std::setw(7) << best + 1 << std::setw(11) << tv.modes.frequencies_hz(best)
+              << std::setw(6) << std::setprecision(2) << r.correlation.best_mac << "   ";
+    for (const auto& m : r.correlation.matches)
+      if (m.mode != best)
+        std::cout << "(" << m.mode + 1 << ": " << std::setprecision(2) << tv.modes.frequencies_hz(m.mode)
+                  << " Hz, " << m.mac << ") ";
+    std::cout << "\n";
+  }
+}
+
+}  // namespace
+
+void registerMacCommand(CLI::App& app) {
+  auto opt = std::make_shared<MacOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "mac", "MAC between the un-tracked and tracked variants and their correlation (Table 4)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--count,-n", opt->count, "modes of each variant (paper: 40)")->check(CLI::Range(1, 2000));
+  cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match (paper: 0.7)")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", opt->json, "print a JSON document (MAC matrix, correlation table)");
+  cmd->add_option("--out", opt->out_dir, "write mac.csv and mac.mat to this directory");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

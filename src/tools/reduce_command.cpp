@@ -1,0 +1,128 @@
+// `tvd reduce`: the Craig-Bampton reduced model of a vehicle (paper §3, Table 5), saved as .mat.
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+#include "commands.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+struct ReduceOptions {
+  std::string vehicle_file;
+  std::string variant = "tracked";
+  std::string rule = "mac";
+  reduction::VehicleReductionOptions reduction;
+  bool json = false;
+  std::string out_file;
+};
+
+void run(ReduceOptions opt) {
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  opt.reduction.rule = opt.rule == "mac" ? reduction::VehicleModeRule::MacCorrelation
+                                         : reduction::VehicleModeRule::Band;
+  reduction::VehicleReductionReport report;
+  reduction::ReducedModel model = reduction::reduceVehicle(description, variant, opt.reduction, &report);
+  model.creator = "tvd reduce";
+  if (!opt.out_file.empty()) reduction::saveReducedModel(model, opt.out_file);
+
+  // CMS error of each full-model mode in the band, pairing the i-th modes (the reduced model is a
+  // Rayleigh-Ritz approximation: its i-th frequency approaches the full one from above).
+  const std::size_t pairs = std::min(report.full_frequencies_hz.size(), report.reduced_frequencies_hz.size());
+  std::vector<double> errors;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < pairs; ++i) {
+    errors.push_back((report.reduced_frequencies_hz[i] - report.full_frequencies_hz[i]) /
+                     report.full_frequencies_hz[i]);
+    if (report.full_frequencies_hz[i] > 0.1) worst = std::max(worst, std::abs(errors.back()));
+  }
+
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", description.name)
+        .field("variant", vehicle::variantName(variant))
+        .field("full_dofs", static_cast<long long>(report.full_dofs))
+        .field("interface_dofs", static_cast<long long>(report.interface_dofs))
+        .field("input_dofs", static_cast<long long>(model.masterCount() - report.interface_dofs - report.mogesec_dofs))
+        .field("mogesec_dofs", static_cast<long long>(report.mogesec_dofs))
+        .field("flexible_modes", report.flexible_modes)
+        .field("reduced_dofs", static_cast<long long>(report.reduced_dofs))
+        .field("reduced_size_percent", 100.0 * report.reduced_dofs / report.full_dofs)
+        .key("selected_modes")
+        .beginArray();
+    for (const auto& m : model.selected_modes)
+      json.beginObject().field("mode", m.mode + 1).field("frequency_hz", m.frequency_hz).field("reason", m.reason).endObject();
+    json.endArray()
+        .key("band_modes")
+        .beginArray();
+    for (std::size_t i = 0; i < pairs; ++i)
+      json.beginObject()
+          .field("mode", static_cast<long long>(i + 1))
+          .field("full_hz", report.full_frequencies_hz[i])
+          .field("reduced_hz", report.reduced_frequencies_hz[i])
+          .field("relative_error", errors[i])
+          .endObject();
+    json.endArray()
+        .field("max_relative_frequency_error", worst)
+        .field("build_seconds", report.build_seconds)
+        .field("modes_seconds", report.modes_seconds)
+        .field("selection_seconds", report.selection_seconds)
+        .field("reduce_seconds", report.reduce_seconds)
+        .field("total_seconds", report.total_seconds)
+        .field("description_hash", model.description_hash);
+    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    json.endObject();
+    return;
+  }
+  std::cout << description.name << " (" << vehicle::variantName(variant) << "): " << report.full_dofs
+            << " active DOFs -> " << report.reduced_dofs << " CMS DOFs (" << std::fixed
+            << std::setprecision(1) << 100.0 * report.reduced_dofs / report.full_dofs << " %)\n"
+            << "  interface DOFs " << report.interface_dofs << ", hull and wheel DOFs "
+            << model.masterCount() - report.interface_dofs - report.mogesec_dofs << ", MoGeSeC DOFs "
+            << report.mogesec_dofs << ", flexible modes " << report.flexible_modes << "\n"
+            << "  selected global modes:\n";
+  for (const auto& m : model.selected_modes)
+    std::cout << "    mode " << std::setw(2) << m.mode + 1 << std::setw(8) << std::setprecision(2)
+              << m.frequency_hz << " Hz  " << m.reason << "\n";
+  std::cout << "  modes up to " << opt.reduction.band_hz << " Hz, full vs reduced:\n";
+  for (std::size_t i = 0; i < pairs; ++i)
+    std::cout << "    " << std::setw(2) << i + 1 << std::setw(9) << std::setprecision(3)
+              << report.full_frequencies_hz[i] << std::setw(9) << report.reduced_frequencies_hz[i]
+              << " Hz  " << std::showpos << std::setprecision(3) << 100.0 * errors[i]
+              << std::noshowpos << " %\n";
+  std::cout << "  worst frequency error " << std::setprecision(3) << 100.0 * worst << " %; time "
+            << report.total_seconds << " s (build " << report.build_seconds << ", modes "
+            << report.modes_seconds << ", selection " << report.selection_seconds << ", reduction "
+            << report.reduce_seconds << ")\n";
+  if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
+}
+
+}  // namespace
+
+void registerReduceCommand(CLI::App& app) {
+  auto opt = std::make_shared<ReduceOptions>();
+  CLI::App* cmd = app.add_subcommand("reduce", "Craig-Bampton reduction of a vehicle (MAC + MoGeSeC)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
+  cmd->add_option("--rule", opt->rule, "mode selection: mac (paper) | band")->check(CLI::IsMember({"mac", "band"}));
+  cmd->add_option("--band", opt->reduction.band_hz, "bandwidth of interest [Hz]")->check(CLI::PositiveNumber);
+  cmd->add_option("--global-modes", opt->reduction.global_modes, "modes per variant for the MAC")->check(CLI::Range(1, 2000));
+  cmd->add_option("--masters", opt->reduction.mogesec_masters, "MoGeSeC master DOFs (paper: 9)")->check(CLI::Range(0, 10000));
+  cmd->add_option("--modes", opt->reduction.mode_count, "fixed-interface modes (0: as many as selected)")->check(CLI::Range(0, 10000));
+  cmd->add_option("--mac-threshold", opt->reduction.mac_threshold, "MAC threshold (paper: 0.7)")->check(CLI::Range(0.0, 1.0));
+  cmd->add_flag("--json", opt->json, "print a JSON document");
+  cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

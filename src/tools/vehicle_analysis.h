@@ -1,0 +1,39 @@
+// Shared steps of the vehicle subcommands: build a variant, assemble, statics and modes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+/// Static equilibrium under gravity.
+struct GravityStatics {
+  double hull_sag = 0.0;             ///< hull CoG vertical displacement [m] (negative down)
+  double hull_pitch_deg = 0.0;       ///< [deg], positive nose down (REP-103 ry)
+  double weight = 0.0;               ///< m g [N]
+  double ground_reaction = 0.0;      ///< sum of the vertical ground-spring forces [N]
+  double seconds = 0.0;
+};
+
+struct VehicleAnalysis {
+  vehicle::VehicleModel vehicle;
+  fem::System system;
+  fem::ModalBasis modes;
+  std::vector<vehicle::ModeClass> classes;
+  GravityStatics statics;
+  double build_seconds = 0.0;  ///< vehicle build + assembly [s]
+};
+
+/// Builds, assembles, solves statics and the lowest `count` modes, and classifies them.
+VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
+                               vehicle::Variant variant, int count);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
