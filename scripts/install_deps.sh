@@ -11,6 +11,9 @@ PACKAGES=(
   libdiagnostic-updater-dev python3-rostest librostest-dev tf2-tools rosbag python3-rosbag
   # numerics and I/O
   libeigen3-dev libspectra-dev libsuitesparse-dev libyaml-cpp-dev libmatio-dev libcli11-dev
+  # an optimised BLAS for CHOLMOD's supernodal factorisations and dense products (serial: the
+  # solvers are single-threaded and the machines have 2 cores)
+  libopenblas0-serial
   googletest
   # plots and side-by-side benchmarks
   python3-numpy python3-scipy python3-matplotlib python3-yaml

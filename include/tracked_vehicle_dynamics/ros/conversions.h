@@ -1,0 +1,56 @@
+// Conversions between the package's ROS messages and the core's values, in one place so that the
+// node stays thin and each conversion is tested by a round trip (core -> msg -> core).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/Transform.h>
+#include <geometry_msgs/Vector3.h>
+
+#include "tracked_vehicle_dynamics/Comfort.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+#include "tracked_vehicle_dynamics/TerrainProfile.h"
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+/// TerrainProfile -> patch. Throws InputError naming the field when the sizes disagree
+/// (heights.size() != lateral.size() * samples) or a dimension is zero. The values themselves
+/// (finite, increasing lateral positions, spacing > 0) are checked by TerrainBuffer::addPatch.
+TerrainPatch fromMsg(const TerrainProfile& msg);
+/// Patch -> TerrainProfile (header untouched).
+void toMsg(const TerrainPatch& patch, TerrainProfile* msg);
+
+/// Wheel states, station [m] and speed [m/s] -> RoadWheels (header untouched). Reuses the
+/// message's storage when the wheel count is unchanged.
+void toMsg(const std::vector<WheelState>& wheels, double station, double speed, RoadWheels* msg);
+/// RoadWheels -> wheel states (station and speed through the pointers, when given).
+std::vector<WheelState> fromMsg(const RoadWheels& msg, double* station = nullptr,
+                                double* speed = nullptr);
+
+/// What the comfort topic carries, in core terms.
+struct ComfortReport {
+  std::string point;                 ///< output whose vertical acceleration is weighted
+  dynamics::ComfortMetrics metrics;  ///< weighted r.m.s., VDV, MTVV, absorbed power, duration
+  double running_rms = 0.0;          ///< [m/s^2]
+  double running_rms_time = 1.0;     ///< [s]
+  double peak_acceleration = 0.0;    ///< [m/s^2]
+};
+/// Report -> Comfort (header untouched; weighting "Wk").
+void toMsg(const ComfortReport& report, Comfort* msg);
+ComfortReport fromMsg(const Comfort& msg);
+
+/// Pose <-> geometry_msgs/Transform.
+void toMsg(const RigidPose& pose, geometry_msgs::Transform* msg);
+RigidPose fromMsg(const geometry_msgs::Transform& msg);
+
+/// Eigen vector <-> geometry_msgs/Vector3.
+geometry_msgs::Vector3 toMsg(const Vector3& v);
+Vector3 fromMsg(const geometry_msgs::Vector3& msg);
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,173 @@
+// The real-time vehicle the node runs: a reduced model stepped at a fixed rate on terrain that
+// arrives in patches, at a speed that arrives as a number. ROS-free: the node owns one and feeds
+// it from topics; tests and benchmarks drive it directly.
+//
+// Per step k -> k+1 (time step h = 1 / rate):
+//   s_{k+1} = s_k + v h                                    station of the reference point [m]
+//   w_{k+1} = RoadInputSampler(terrain, s_{k+1}, v)         road inputs [u; u']
+//   Simulator::step(w_{k+1})                               exact discretisation (simulator.h)
+// and the comfort meter takes the vertical acceleration at the comfort point. The simulator
+// starts from static equilibrium under gravity on flat ground (u = 0), K q0 = f_g, so a vehicle
+// at rest on flat terrain stays exactly where it is. step() allocates nothing.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model.h"
+#include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
+#include "tracked_vehicle_dynamics/types.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+/// One patch of terrain as TerrainBuffer::addPatch takes it (the content of a TerrainProfile).
+struct TerrainPatch {
+  double start_station = 0.0;  ///< station of the first sample [m]
+  double spacing = 0.0;        ///< station step [m]
+  Vector lateral;              ///< lateral position of each line [n_lines] [m]
+  Matrix heights;              ///< [n_lines x n_samples] [m]
+};
+
+/// Static positions, in base_link [m], of what the node publishes frames for.
+struct VehicleGeometry {
+  struct Body {
+    std::string name;
+    Vector3 position = Vector3::Zero();  ///< undeformed [m]
+  };
+  std::string vehicle_name;
+  Vector3 cog = Vector3::Zero();  ///< hull centre of gravity p_G [m]
+  std::vector<Body> wheels;       ///< road-wheel centres, left 1..n then right 1..n
+  std::vector<Body> points;       ///< named points of the description
+};
+
+/// Positions of the hull CoG, road-wheel centres and named points of a description (from its
+/// untracked FE model: the wheel centres are the same in both variants). Throws InputError like
+/// vehicle::buildVehicleModel().
+VehicleGeometry vehicleGeometry(const vehicle::VehicleDescription& description);
+
+struct OnlineVehicleOptions {
+  double rate = 1000.0;  ///< step rate 1/h [Hz]
+  dynamics::DiscretizationMethod method = dynamics::DiscretizationMethod::ModalDecoupled;
+  dynamics::InputHold hold = dynamics::InputHold::FirstOrder;
+  /// Position of the vehicle centre line on the terrain's lateral axis [m] (y left).
+  double lateral_offset = 0.0;
+  /// Output whose vertical acceleration feeds the comfort meter: a named point, or "hull" for
+  /// the hull centre of gravity.
+  std::string comfort_point = "crew_seat";
+  /// Running r.m.s. integration time of the comfort meter [s].
+  double comfort_running_rms_time = 1.0;
+  /// Terrain kept behind the rearmost contact when patches are dropped [m].
+  double terrain_keep_behind = 1.0;
+};
+
+/// State of one road wheel at the current sample.
+struct WheelState {
+  std::string name;
+  double displacement = 0.0;  ///< vertical, from static equilibrium [m]
+  double velocity = 0.0;      ///< vertical [m/s]
+  double acceleration = 0.0;  ///< vertical [m/s^2]
+};
+
+/// What one step met.
+struct StepResult {
+  int uncovered = 0;      ///< contacts the terrain did not cover (held at their last height)
+  bool diverged = false;  ///< outputs were not finite: the vehicle was reset to equilibrium
+};
+
+class OnlineVehicle {
+ public:
+  /// Throws InputError when the model lacks an output the geometry names ("hull ux".."hull rz",
+  /// "<wheel> uz", "<point> ux|uy|uz"), the comfort point is unknown, or the options are invalid
+  /// (rate <= 0, ...); SolverError from the simulator or the static equilibrium.
+  OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,
+                const OnlineVehicleOptions& options = {});
+
+  /// Back to static equilibrium on flat ground at station 0, speed 0; terrain and comfort
+  /// metrics cleared.
+  void reset();
+  /// Stores a patch (newest wins where patches overlap) and frees terrain behind the vehicle.
+  /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.
+  void addTerrain(const TerrainPatch& patch);
+  /// Speed [m/s] used from the next step on. Throws InputError if negative or not finite.
+  void setSpeed(double speed);
+  /// One fixed step (see the file comment). No allocation.
+  StepResult step();
+
+  double timeStep() const { return time_step_; }          ///< h [s]
+  double time() const { return simulator_.time(); }       ///< since reset [s]
+  long stepCount() const { return simulator_.stepCount(); }
+  double station() const { return station_; }             ///< [m]
+  double speed() const { return speed_; }                 ///< [m/s]
+
+  /// Hull CoG displacement {u_G [m]; theta [rad]} (rows "hull ux".."hull rz").
+  Vector6 hullDisplacement() const { return block(hull_rows_, disp_offset_); }
+  /// Its time derivative {m/s; rad/s} (vibration only: without the travel speed).
+  Vector6 hullVelocity() const { return block(hull_rows_, vel_offset_); }
+  /// Its second derivative {m/s^2; rad/s^2}.
+  Vector6 hullAcceleration() const { return block(hull_rows_, acc_offset_); }
+  /// base_link in odom (vehicle_frames.h).
+  RigidPose hullPose() const;
+  /// Hull displacement at static equilibrium on flat ground.
+  const Vector6& staticHullDisplacement() const { return static_hull_; }
+
+  /// Road wheels, in geometry().wheels order.
+  const std::vector<WheelState>& wheels() const;
+  /// Position [m] in base_link of wheel centre i (vertical motion relative to the hull).
+  Vector3 wheelPosition(std::size_t i) const;
+  /// Position [m] in base_link of named point i.
+  Vector3 pointPosition(std::size_t i) const;
+
+  const dynamics::ComfortMeter& comfort() const { return comfort_; }
+  /// The point the comfort meter watches (options.comfort_point).
+  const std::string& comfortPoint() const { return comfort_point_; }
+  /// Largest |vertical acceleration| at the comfort point since reset [m/s^2].
+  double peakAcceleration() const { return peak_acceleration_; }
+
+  const VehicleGeometry& geometry() const { return geometry_; }
+  const terrain::TerrainBuffer& terrain() const { return terrain_; }
+  const RoadInputSampler& sampler() const { return sampler_; }
+  const dynamics::Simulator& simulator() const { return simulator_; }
+  /// Station [m] of the frontmost contact now.
+  double frontContactStation() const { return station_ + sampler_.frontmost(); }
+  /// Station [m] of the rearmost contact now.
+  double rearContactStation() const { return station_ + sampler_.rearmost(); }
+
+ private:
+  Vector6 block(const std::vector<Eigen::Index>& rows, Eigen::Index offset) const;
+  Eigen::Index outputRow(const std::string& name) const;
+
+  VehicleGeometry geometry_;
+  OnlineVehicleOptions options_;
+  double time_step_;
+  dynamics::Simulator simulator_;
+  RoadInputSampler sampler_;
+  terrain::TerrainBuffer terrain_;
+  dynamics::ComfortMeter comfort_;
+  std::string comfort_point_;
+
+  Vector equilibrium_;  // z0 on flat ground [2k]
+  Vector input_;        // w [2 n_inputs], reused every step
+  std::vector<std::string> base_names_;
+  Eigen::Index disp_offset_ = 0, vel_offset_ = 0, acc_offset_ = 0;
+  std::vector<Eigen::Index> hull_rows_;   // 6 base rows
+  std::vector<Eigen::Index> wheel_rows_;  // one base row ("<wheel> uz") per wheel
+  std::vector<Eigen::Index> point_rows_;  // 3 base rows per named point
+  Eigen::Index comfort_row_ = 0;          // full row of the comfort acceleration
+  Vector static_outputs_;                 // displacement block at equilibrium
+  Vector6 static_hull_ = Vector6::Zero();
+  mutable std::vector<WheelState> wheel_states_;
+
+  double station_ = 0.0;
+  double speed_ = 0.0;
+  double peak_acceleration_ = 0.0;
+};
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

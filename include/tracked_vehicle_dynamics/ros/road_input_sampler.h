@@ -1,0 +1,61 @@
+// The road inputs of a reduced vehicle model sampled from a TerrainBuffer as the vehicle moves.
+// ROS-free (the node feeds it; the tests drive it directly).
+//
+// Contact q sits at x_q, y_q in base_link (SecondOrderSystem::input_stations/input_lateral). With
+// the vehicle reference point at station s, speed v and the vehicle centre line at lateral
+// position `lateral_offset` on the terrain (y left), the input w = [u; u'] is
+//   u_q  = h(s + x_q, y_q + lateral_offset)                                    [m]
+//   u'_q = v dh/dx ≈ v (h(x + e) - h(x - e)) / (2 e),  e = kSlopeStep          [m/s]
+// The central difference reproduces the bilinear cell's slope except within e of a sample, where
+// it averages the two neighbouring cells. u' is evaluated only for inputs whose C_u column is
+// non-zero (it multiplies nothing otherwise) and is 0 elsewhere.
+//
+// A contact the buffer does not cover (no terrain yet, or a gap ahead) keeps its last height with
+// u' = 0 and is counted, so the state stays finite and the node can warn.
+#pragma once
+
+#include <vector>
+
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+class RoadInputSampler {
+ public:
+  /// Half-width of the central difference for dh/dx [m].
+  static constexpr double kSlopeStep = 1e-4;
+
+  /// stations x_q [m], lateral y_q [m] (same length n); needs_rate: n flags, true where u'_q is
+  /// used (empty: all). Throws InputError for mismatched lengths or non-finite positions.
+  RoadInputSampler(const Vector& stations, const Vector& lateral,
+                   std::vector<bool> needs_rate = {});
+
+  /// Writes w = [u; u'] [2 n] for station s [m], speed v [m/s] and lateral offset [m]; w must
+  /// already have 2 n entries (no allocation). Returns the number of contacts not covered.
+  int sample(const terrain::TerrainBuffer& buffer, double station, double speed,
+             double lateral_offset, Vector* w);
+
+  /// Sets the heights held for uncovered contacts [n] [m] (e.g. 0 after a reset).
+  void setHeld(const Vector& heights);
+  const Vector& held() const { return held_; }
+
+  int size() const { return static_cast<int>(stations_.size()); }
+  const Vector& stations() const { return stations_; }
+  const Vector& lateral() const { return lateral_; }
+  /// min_q x_q and max_q x_q [m] (0 when there are no inputs).
+  double rearmost() const { return rearmost_; }
+  double frontmost() const { return frontmost_; }
+
+ private:
+  Vector stations_;
+  Vector lateral_;
+  std::vector<bool> needs_rate_;
+  Vector held_;
+  double rearmost_ = 0.0;
+  double frontmost_ = 0.0;
+};
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

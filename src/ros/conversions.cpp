@@ -1,0 +1,122 @@
+#include "tracked_vehicle_dynamics/ros/conversions.h"
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+TerrainPatch fromMsg(const TerrainProfile& msg) {
+  const std::size_t lines = msg.lateral.size();
+  const std::size_t samples = msg.samples;
+  if (lines == 0) throw InputError("TerrainProfile: lateral is empty");
+  if (samples == 0) throw InputError("TerrainProfile: samples is 0");
+  if (msg.heights.size() != lines * samples) {
+    throw InputError("TerrainProfile: heights has " + std::to_string(msg.heights.size()) +
+                     " values, expected lateral.size() x samples = " + std::to_string(lines) +
+                     " x " + std::to_string(samples) + " = " + std::to_string(lines * samples));
+  }
+  TerrainPatch patch;
+  patch.start_station = msg.start_station;
+  patch.spacing = msg.spacing;
+  patch.lateral = Eigen::Map<const Vector>(msg.lateral.data(), static_cast<Eigen::Index>(lines));
+  // Row-major in the message, column-major in Eigen.
+  patch.heights = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                                 Eigen::RowMajor>>(
+      msg.heights.data(), static_cast<Eigen::Index>(lines), static_cast<Eigen::Index>(samples));
+  return patch;
+}
+
+void toMsg(const TerrainPatch& patch, TerrainProfile* msg) {
+  msg->start_station = patch.start_station;
+  msg->spacing = patch.spacing;
+  msg->lateral.assign(patch.lateral.data(), patch.lateral.data() + patch.lateral.size());
+  msg->samples = static_cast<std::uint32_t>(patch.heights.cols());
+  msg->heights.resize(static_cast<std::size_t>(patch.heights.size()));
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+      msg->heights.data(), patch.heights.rows(), patch.heights.cols()) = patch.heights;
+}
+
+void toMsg(const std::vector<WheelState>& wheels, double station, double speed, RoadWheels* msg) {
+  msg->station = station;
+  msg->speed = speed;
+  msg->wheels.resize(wheels.size());
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    RoadWheelState& out = msg->wheels[i];
+    if (out.name != wheels[i].name) out.name = wheels[i].name;
+    out.displacement = wheels[i].displacement;
+    out.velocity = wheels[i].velocity;
+    out.acceleration = wheels[i].acceleration;
+  }
+}
+
+std::vector<WheelState> fromMsg(const RoadWheels& msg, double* station, double* speed) {
+  if (station != nullptr) *station = msg.station;
+  if (speed != nullptr) *speed = msg.speed;
+  std::vector<WheelState> wheels(msg.wheels.size());
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    wheels[i].name = msg.wheels[i].name;
+    wheels[i].displacement = msg.wheels[i].displacement;
+    wheels[i].velocity = msg.wheels[i].velocity;
+    wheels[i].acceleration = msg.wheels[i].acceleration;
+  }
+  return wheels;
+}
+
+void toMsg(const ComfortReport& report, Comfort* msg) {
+  msg->point = report.point;
+  msg->weighting = "Wk";
+  msg->weighted_rms = report.metrics.weighted_rms;
+  msg->vdv = report.metrics.vdv;
+  msg->mtvv = report.metrics.mtvv;
+  msg->running_rms = report.running_rms;
+  msg->running_rms_time = report.running_rms_time;
+  msg->has_absorbed_power = report.metrics.absorbed_power.has_value();
+  msg->absorbed_power = report.metrics.absorbed_power.value_or(0.0);
+  msg->peak_acceleration = report.peak_acceleration;
+  msg->duration = report.metrics.duration;
+  msg->samples = report.metrics.samples;
+}
+
+ComfortReport fromMsg(const Comfort& msg) {
+  ComfortReport report;
+  report.point = msg.point;
+  report.metrics.weighted_rms = msg.weighted_rms;
+  report.metrics.vdv = msg.vdv;
+  report.metrics.mtvv = msg.mtvv;
+  if (msg.has_absorbed_power) report.metrics.absorbed_power = msg.absorbed_power;
+  report.metrics.duration = msg.duration;
+  report.metrics.samples = static_cast<std::size_t>(msg.samples);
+  report.running_rms = msg.running_rms;
+  report.running_rms_time = msg.running_rms_time;
+  report.peak_acceleration = msg.peak_acceleration;
+  return report;
+}
+
+void toMsg(const RigidPose& pose, geometry_msgs::Transform* msg) {
+  msg->translation = toMsg(pose.translation);
+  msg->rotation.x = pose.rotation.x();
+  msg->rotation.y = pose.rotation.y();
+  msg->rotation.z = pose.rotation.z();
+  msg->rotation.w = pose.rotation.w();
+}
+
+RigidPose fromMsg(const geometry_msgs::Transform& msg) {
+  RigidPose pose;
+  pose.translation = fromMsg(msg.translation);
+  pose.rotation = Eigen::Quaterniond(msg.rotation.w, msg.rotation.x, msg.rotation.y,
+                                     msg.rotation.z);
+  return pose;
+}
+
+geometry_msgs::Vector3 toMsg(const Vector3& v) {
+  geometry_msgs::Vector3 msg;
+  msg.x = v.x();
+  msg.y = v.y();
+  msg.z = v.z();
+  return msg;
+}
+
+Vector3 fromMsg(const geometry_msgs::Vector3& msg) { return Vector3(msg.x, msg.y, msg.z); }
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

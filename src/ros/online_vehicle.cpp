@@ -1,0 +1,213 @@
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "tracked_vehicle_dynamics/dynamics/output_layout.h"
+#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+namespace {
+
+const char* const kHullOutputs[6] = {"hull ux", "hull uy", "hull uz",
+                                     "hull rx", "hull ry", "hull rz"};
+const char* const kTranslations[3] = {"ux", "uy", "uz"};
+
+dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model,
+                                            const OnlineVehicleOptions& options) {
+  if (!std::isfinite(options.rate) || options.rate <= 0.0) {
+    throw InputError("online vehicle: rate " + std::to_string(options.rate) +
+                     " Hz must be positive and finite");
+  }
+  dynamics::SimulatorOptions sim;
+  sim.time_step = 1.0 / options.rate;
+  sim.hold = options.hold;
+  sim.method = options.method;
+  sim.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
+                    dynamics::OutputQuantity::Acceleration};
+  sim.generalized_force = model.gravity_load;
+  return sim;
+}
+
+std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system) {
+  std::vector<bool> flags(static_cast<std::size_t>(system.inputCount()), false);
+  if (system.input_damping.size() == 0) return flags;
+  for (Eigen::Index q = 0; q < system.inputCount(); ++q) {
+    flags[static_cast<std::size_t>(q)] = !system.input_damping.col(q).isZero(0.0);
+  }
+  return flags;
+}
+
+dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
+  dynamics::ComfortOptions comfort;
+  comfort.running_rms_time = options.comfort_running_rms_time;
+  return comfort;
+}
+
+}  // namespace
+
+VehicleGeometry vehicleGeometry(const vehicle::VehicleDescription& description) {
+  const vehicle::VehicleModel built =
+      vehicle::buildVehicleModel(description, vehicle::Variant::Untracked);
+  const auto index = built.model.nodeIndex();
+  auto position = [&](NodeId id) { return built.model.nodes.at(index.at(id)).position; };
+  VehicleGeometry geometry;
+  geometry.vehicle_name = description.name;
+  geometry.cog = position(built.layout.hull);
+  for (const vehicle::WheelStation& wheel : built.layout.wheels) {
+    geometry.wheels.push_back({wheel.name, position(wheel.centre)});
+  }
+  for (const vehicle::NamedPoint& point : description.named_points) {
+    geometry.points.push_back({point.name, point.position});
+  }
+  return geometry;
+}
+
+OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,
+                             const OnlineVehicleOptions& options)
+    : geometry_(std::move(geometry)),
+      options_(options),
+      time_step_(1.0 / options.rate),
+      simulator_(model.system, simulatorOptions(model, options)),
+      sampler_(model.system.input_stations, model.system.input_lateral,
+               inputsWithRate(model.system)),
+      comfort_(options.rate, comfortOptions(options)),
+      comfort_point_(options.comfort_point) {
+  if (!std::isfinite(options.lateral_offset)) {
+    throw InputError("online vehicle: lateral_offset is not finite");
+  }
+  if (!std::isfinite(options.terrain_keep_behind) || options.terrain_keep_behind < 0.0) {
+    throw InputError("online vehicle: terrain_keep_behind must be >= 0 and finite");
+  }
+  if (sampler_.size() != model.system.inputCount()) {
+    throw InputError("online vehicle: the model has " +
+                     std::to_string(model.system.inputCount()) + " road inputs but " +
+                     std::to_string(sampler_.size()) + " input stations");
+  }
+  base_names_ = model.system.output_names;
+  const dynamics::OutputLayout layout(base_names_, {dynamics::OutputQuantity::Displacement,
+                                                    dynamics::OutputQuantity::Velocity,
+                                                    dynamics::OutputQuantity::Acceleration});
+  disp_offset_ = layout.offset(dynamics::OutputQuantity::Displacement);
+  vel_offset_ = layout.offset(dynamics::OutputQuantity::Velocity);
+  acc_offset_ = layout.offset(dynamics::OutputQuantity::Acceleration);
+  for (const char* name : kHullOutputs) hull_rows_.push_back(outputRow(name));
+  for (const auto& wheel : geometry_.wheels) wheel_rows_.push_back(outputRow(wheel.name + " uz"));
+  for (const auto& point : geometry_.points) {
+    for (const char* t : kTranslations) point_rows_.push_back(outputRow(point.name + " " + t));
+  }
+  if (comfort_point_.empty()) comfort_point_ = "hull";
+  comfort_row_ = acc_offset_ + outputRow(comfort_point_ + " uz");
+
+  input_.setZero(simulator_.inputCount());
+  equilibrium_ = dynamics::staticEquilibrium(model.system, Vector::Zero(sampler_.size()),
+                                             model.gravity_load);
+  wheel_states_.resize(geometry_.wheels.size());
+  for (std::size_t i = 0; i < geometry_.wheels.size(); ++i) {
+    wheel_states_[i].name = geometry_.wheels[i].name;
+  }
+  reset();
+  static_outputs_ = simulator_.outputs().segment(disp_offset_, layout.baseCount());
+  static_hull_ = hullDisplacement();
+}
+
+Eigen::Index OnlineVehicle::outputRow(const std::string& name) const {
+  const auto it = std::find(base_names_.begin(), base_names_.end(), name);
+  if (it == base_names_.end()) {
+    throw InputError("online vehicle: the reduced model has no output '" + name +
+                     "' (expected hull, road wheel and named point outputs)");
+  }
+  return static_cast<Eigen::Index>(it - base_names_.begin());
+}
+
+void OnlineVehicle::reset() {
+  station_ = 0.0;
+  speed_ = 0.0;
+  peak_acceleration_ = 0.0;
+  terrain_.clear();
+  sampler_.setHeld(Vector::Zero(sampler_.size()));
+  input_.setZero();
+  simulator_.reset(equilibrium_, input_);
+  comfort_.reset();
+}
+
+void OnlineVehicle::addTerrain(const TerrainPatch& patch) {
+  terrain_.addPatch(patch.start_station, patch.spacing, patch.lateral, patch.heights);
+  terrain_.dropBehind(rearContactStation() - options_.terrain_keep_behind);
+}
+
+void OnlineVehicle::setSpeed(double speed) {
+  if (!std::isfinite(speed) || speed < 0.0) {
+    throw InputError("online vehicle: speed " + std::to_string(speed) +
+                     " m/s must be finite and not negative");
+  }
+  speed_ = speed;
+}
+
+StepResult OnlineVehicle::step() {
+  StepResult result;
+  station_ += speed_ * time_step_;
+  result.uncovered =
+      sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &input_);
+  simulator_.step(input_);
+  const double acceleration = simulator_.outputs()(comfort_row_);
+  if (!simulator_.outputs().allFinite()) {
+    // Cannot happen for finite inputs and a stable model; never publish NaN if it does: back to
+    // equilibrium where the vehicle is, terrain and speed kept.
+    input_.setZero();
+    simulator_.reset(equilibrium_, input_);
+    result.diverged = true;
+    return result;
+  }
+  comfort_.add(acceleration);
+  peak_acceleration_ = std::max(peak_acceleration_, std::abs(acceleration));
+  return result;
+}
+
+Vector6 OnlineVehicle::block(const std::vector<Eigen::Index>& rows, Eigen::Index offset) const {
+  const Vector& y = simulator_.outputs();
+  Vector6 out;
+  for (int i = 0; i < 6; ++i) out(i) = y(offset + rows[static_cast<std::size_t>(i)]);
+  return out;
+}
+
+RigidPose OnlineVehicle::hullPose() const {
+  return ros_layer::hullPose(station_, geometry_.cog, hullDisplacement());
+}
+
+const std::vector<WheelState>& OnlineVehicle::wheels() const {
+  const Vector& y = simulator_.outputs();
+  for (std::size_t i = 0; i < wheel_rows_.size(); ++i) {
+    const Eigen::Index row = wheel_rows_[i];
+    WheelState& state = wheel_states_[i];
+    state.displacement = y(disp_offset_ + row) - static_outputs_(row);
+    state.velocity = y(vel_offset_ + row);
+    state.acceleration = y(acc_offset_ + row);
+  }
+  return wheel_states_;
+}
+
+Vector3 OnlineVehicle::wheelPosition(std::size_t i) const {
+  const Vector3& p = geometry_.wheels.at(i).position;
+  const Vector6 hull = hullDisplacement();
+  const double uz = simulator_.outputs()(disp_offset_ + wheel_rows_[i]);
+  // Only the vertical displacement of a wheel centre is an output; along x and y it moves with
+  // the hull (the arm is rigid in its plane to first order).
+  const Vector3 u_hull = hullPointDisplacement(geometry_.cog, hull, p);
+  return relativePosition(geometry_.cog, hull, p, Vector3(u_hull.x(), u_hull.y(), uz));
+}
+
+Vector3 OnlineVehicle::pointPosition(std::size_t i) const {
+  const Vector3& p = geometry_.points.at(i).position;
+  const Vector& y = simulator_.outputs();
+  const Vector3 u(y(disp_offset_ + point_rows_[3 * i]), y(disp_offset_ + point_rows_[3 * i + 1]),
+                  y(disp_offset_ + point_rows_[3 * i + 2]));
+  return relativePosition(geometry_.cog, hullDisplacement(), p, u);
+}
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics
