@@ -22,8 +22,8 @@ DiscreteModes discretizeModes(const Vector& frequencies, const Vector& damping_c
   DiscreteModes modes;
   modes.sample_time = dt;
   modes.hold = hold;
-  for (Vector* v : {&modes.a11, &modes.a12, &modes.a21, &modes.a22, &modes.g0_disp,
-                    &modes.g0_vel, &modes.g1_disp, &modes.g1_vel})
+  for (Vector* v : {&modes.a11, &modes.a12, &modes.a21, &modes.a22, &modes.g0_disp, &modes.g0_vel,
+                    &modes.g1_disp, &modes.g1_vel})
     v->setZero(n);
 
   for (DofIndex r = 0; r < n; ++r) {
@@ -37,7 +37,8 @@ DiscreteModes discretizeModes(const Vector& frequencies, const Vector& damping_c
     aug(1, 0) = -omega * omega / s * dt;
     aug(1, 1) = -d * dt;
     aug(1, 2) = s * dt;
-    if (hold == InputHold::FirstOrder) aug(2, 3) = 1.0;
+    if (hold == InputHold::FirstOrder)
+      aug(2, 3) = 1.0;
     const Eigen::Matrix4d e = aug.exp();
     // Back to [eta; eta'] = diag(1, s) xi and p = s^2 p_hat.
     modes.a11(r) = e(0, 0);

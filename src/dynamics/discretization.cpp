@@ -24,7 +24,8 @@ Vector balance(Matrix& x) {
     for (DofIndex i = 0; i < n; ++i) {
       double c = x.col(i).cwiseAbs().sum() - std::abs(x(i, i));
       double r = x.row(i).cwiseAbs().sum() - std::abs(x(i, i));
-      if (c == 0.0 || r == 0.0) continue;
+      if (c == 0.0 || r == 0.0)
+        continue;
       const double s = c + r;
       double f = 1.0;
       while (c < r / kRadix) {
@@ -42,7 +43,8 @@ Vector balance(Matrix& x) {
         x.col(i) *= f;
       }
     }
-    if (converged) break;
+    if (converged)
+      break;
   }
   return scale;
 }
@@ -51,8 +53,10 @@ Vector balance(Matrix& x) {
 
 Matrix matrixExponential(const Matrix& x) {
   detail::requireSize("matrixExponential", "argument", x, x.rows(), x.rows());
-  if (!x.allFinite()) throw InputError("matrixExponential: argument has non-finite entries");
-  if (x.rows() == 0) return x;
+  if (!x.allFinite())
+    throw InputError("matrixExponential: argument has non-finite entries");
+  if (x.rows() == 0)
+    return x;
   Matrix balanced = x;
   const Vector d = balance(balanced);
   Matrix e = balanced.exp();
@@ -77,8 +81,10 @@ StateSpace discretize(const StateSpace& continuous, double dt, InputHold hold) {
   Matrix aug = Matrix::Zero(size, size);
   aug.topLeftCorner(n, n) = continuous.state_matrix * dt;
   aug.block(0, n, n, m) = continuous.input_matrix * dt;
-  if (has_offset) aug.block(0, n + m, n, 1) = continuous.state_offset * dt;
-  if (hold == InputHold::FirstOrder) aug.block(n, n + m_aug, m_aug, m_aug).setIdentity();
+  if (has_offset)
+    aug.block(0, n + m, n, 1) = continuous.state_offset * dt;
+  if (hold == InputHold::FirstOrder)
+    aug.block(n, n + m_aug, m_aug, m_aug).setIdentity();
   const Matrix e = matrixExponential(aug);
 
   StateSpace d = continuous;

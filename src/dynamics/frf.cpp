@@ -34,7 +34,9 @@ Complex quantityFactor(OutputQuantity quantity, double omega) {
   return 1.0;
 }
 
-std::string frequencyText(double f) { return std::to_string(f) + " Hz"; }
+std::string frequencyText(double f) {
+  return std::to_string(f) + " Hz";
+}
 
 }  // namespace
 
@@ -113,8 +115,8 @@ ComplexMatrix frfModal(const ModalSystem& modal, const Vector& frequencies_hz,
     const double omega = kTwoPi * frequencies_hz(i);
     const ComplexVector tau = delay.at(omega, modal.inputCount());
     // Phi^T F = (Phi^T K_u + j omega Phi^T C_u) tau, then eq. 20 mode by mode.
-    eta = modal.modalInputStiffness() * tau +
-          Complex(0.0, omega) * (modal.modalInputDamping() * tau);
+    eta =
+        modal.modalInputStiffness() * tau + Complex(0.0, omega) * (modal.modalInputDamping() * tau);
     for (DofIndex r = 0; r < modal.modeCount(); ++r)
       eta(r) /= Complex(omega_r(r) * omega_r(r) - omega * omega, d_r(r) * omega);
     frf.row(i) = (quantityFactor(quantity, omega) * (modal.modalOutput() * eta)).transpose();
@@ -128,7 +130,9 @@ ComplexMatrix frfModal(const SecondOrderSystem& system, const Vector& frequencie
   return frfModal(ModalSystem(system, damping_ratios), frequencies_hz, delay, quantity);
 }
 
-Matrix magnitude(const ComplexMatrix& frf) { return frf.cwiseAbs(); }
+Matrix magnitude(const ComplexMatrix& frf) {
+  return frf.cwiseAbs();
+}
 
 Matrix phase(const ComplexMatrix& frf) {
   return frf.unaryExpr([](const Complex& z) { return std::arg(z); });

@@ -65,7 +65,8 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
   max_off_diagonal_damping_ratio_ = 0.0;
   for (DofIndex s = 0; s < n; ++s)
     for (DofIndex r = 0; r < n; ++r) {
-      if (r == s || modal_damping(r, s) == 0.0) continue;
+      if (r == s || modal_damping(r, s) == 0.0)
+        continue;
       const double diagonal = std::sqrt(std::abs(modal_damping(r, r) * modal_damping(s, s)));
       const double ratio = diagonal > 0.0 ? std::abs(modal_damping(r, s)) / diagonal
                                           : std::numeric_limits<double>::infinity();
@@ -80,7 +81,8 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
     const double d_max = damping_coefficients_.cwiseAbs().maxCoeff();
     for (DofIndex r = 0; r < n; ++r) {
       double& d = damping_coefficients_(r);
-      if (std::abs(d) <= kRigidBodyTolerance * d_max) d = std::max(d, 0.0);
+      if (std::abs(d) <= kRigidBodyTolerance * d_max)
+        d = std::max(d, 0.0);
       if (d < 0.0)
         throw InputError("ModalSystem: damping C is not positive semi-definite: mode " +
                          std::to_string(r) + " has phi^T C phi = " + std::to_string(d) + " 1/s");
@@ -101,7 +103,8 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
 Vector ModalSystem::dampingRatios() const {
   Vector zeta = Vector::Zero(modeCount());
   for (DofIndex r = 0; r < modeCount(); ++r)
-    if (frequencies_(r) > 0.0) zeta(r) = damping_coefficients_(r) / (2.0 * frequencies_(r));
+    if (frequencies_(r) > 0.0)
+      zeta(r) = damping_coefficients_(r) / (2.0 * frequencies_(r));
   return zeta;
 }
 

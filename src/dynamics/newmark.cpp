@@ -85,7 +85,8 @@ Vector NewmarkIntegrator::initialAcceleration(const Vector& displacement, const 
                                               const Vector& input) const {
   // M a0 = F(w0) - C v0 - K q0; at rest in equilibrium this is 0 and M need not be factorised.
   const Vector residual = force(input) - damping_ * velocity - stiffness_ * displacement;
-  if (residual.isZero(0.0)) return Vector::Zero(residual.size());
+  if (residual.isZero(0.0))
+    return Vector::Zero(residual.size());
   const Eigen::SimplicialLDLT<SparseMatrix> mass_factor(mass_);
   if (mass_factor.info() != Eigen::Success || (mass_factor.vectorD().array() <= 0.0).any())
     throw SolverError(
@@ -134,9 +135,11 @@ Matrix NewmarkIntegrator::simulate(const Matrix& inputs) {
   detail::requireSize("NewmarkIntegrator::simulate", "input series", inputs, inputs.rows(),
                       input_matrix_.cols());
   Matrix outputs(inputs.rows(), y_.size());
-  if (inputs.rows() == 0) return outputs;
+  if (inputs.rows() == 0)
+    return outputs;
   const Vector first = inputs.row(0).transpose();
-  if (first != w_) a_ = initialAcceleration(q_, v_, first);
+  if (first != w_)
+    a_ = initialAcceleration(q_, v_, first);
   w_ = first;
   updateOutputs();
   outputs.row(0) = y_.transpose();

@@ -22,7 +22,8 @@ const char* outputSuffix(OutputQuantity quantity) {
 OutputLayout::OutputLayout(std::vector<std::string> base_names,
                            std::vector<OutputQuantity> quantities)
     : base_names_(std::move(base_names)), quantities_(std::move(quantities)) {
-  if (quantities_.empty()) throw InputError("OutputLayout: no output quantity requested");
+  if (quantities_.empty())
+    throw InputError("OutputLayout: no output quantity requested");
   for (std::size_t i = 0; i < quantities_.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (quantities_[i] == quantities_[j])
@@ -30,7 +31,8 @@ OutputLayout::OutputLayout(std::vector<std::string> base_names,
                          "' requested twice");
   names_.reserve(base_names_.size() * quantities_.size());
   for (OutputQuantity q : quantities_)
-    for (const std::string& base : base_names_) names_.push_back(base + "/" + outputSuffix(q));
+    for (const std::string& base : base_names_)
+      names_.push_back(base + "/" + outputSuffix(q));
 }
 
 bool OutputLayout::has(OutputQuantity quantity) const {
@@ -47,13 +49,15 @@ DofIndex OutputLayout::offset(OutputQuantity quantity) const {
 
 DofIndex OutputLayout::row(const std::string& base_name, OutputQuantity quantity) const {
   const auto it = std::find(base_names_.begin(), base_names_.end(), base_name);
-  if (it == base_names_.end()) throw InputError("OutputLayout: unknown output '" + base_name + "'");
+  if (it == base_names_.end())
+    throw InputError("OutputLayout: unknown output '" + base_name + "'");
   return offset(quantity) + static_cast<DofIndex>(it - base_names_.begin());
 }
 
 DofIndex OutputLayout::row(const std::string& name) const {
   const auto it = std::find(names_.begin(), names_.end(), name);
-  if (it == names_.end()) throw InputError("OutputLayout: unknown output '" + name + "'");
+  if (it == names_.end())
+    throw InputError("OutputLayout: unknown output '" + name + "'");
   return static_cast<DofIndex>(it - names_.begin());
 }
 

@@ -28,7 +28,8 @@ class SimulatorEngine {
   /// Default: one advance() per row.
   virtual Matrix simulate(const Matrix& inputs) {
     Matrix outputs(inputs.rows(), y_.size());
-    if (inputs.rows() == 0) return outputs;
+    if (inputs.rows() == 0)
+      return outputs;
     Vector w = inputs.row(0).transpose();
     setInput(w);
     outputs.row(0) = y_.transpose();
@@ -60,7 +61,8 @@ class DenseEngine : public SimulatorEngine {
     phi_ = d.state_matrix;
     gamma0_ = d.input_matrix;
     first_order_ = d.next_input_matrix.size() != 0;
-    if (first_order_) gamma1_ = d.next_input_matrix;
+    if (first_order_)
+      gamma1_ = d.next_input_matrix;
     c_ = d.output_matrix;
     d_ = d.feedthrough_matrix;
     f_ = d.state_offset.size() != 0 ? d.state_offset : Vector::Zero(d.stateCount());
@@ -75,7 +77,8 @@ class DenseEngine : public SimulatorEngine {
     state_count_ = d.stateCount();
     names_ = d.output_names;
     if (names_.empty())
-      for (DofIndex i = 0; i < d.outputCount(); ++i) names_.push_back("output " + std::to_string(i));
+      for (DofIndex i = 0; i < d.outputCount(); ++i)
+        names_.push_back("output " + std::to_string(i));
     updateOutputs();
   }
 
@@ -94,8 +97,10 @@ class DenseEngine : public SimulatorEngine {
   void advance(const Vector& input_next) override {
     z_next_.noalias() = phi_ * z_;
     z_next_.noalias() += gamma0_ * w_;
-    if (first_order_) z_next_.noalias() += gamma1_ * input_next;
-    if (has_offset_) z_next_ += f_;
+    if (first_order_)
+      z_next_.noalias() += gamma1_ * input_next;
+    if (has_offset_)
+      z_next_ += f_;
     z_.swap(z_next_);
     w_ = input_next;
     ++steps_;
@@ -134,7 +139,8 @@ class ModalEngine : public SimulatorEngine {
     Matrix psi(n, 2 * n_u);
     psi << modal.modalInputStiffness(), modal.modalInputDamping();
     for (DofIndex j = 0; j < psi.cols(); ++j)
-      if (!psi.col(j).isZero(0.0)) active_inputs_.push_back(j);
+      if (!psi.col(j).isZero(0.0))
+        active_inputs_.push_back(j);
     psi_.resize(n, static_cast<DofIndex>(active_inputs_.size()));
     for (std::size_t j = 0; j < active_inputs_.size(); ++j)
       psi_.col(static_cast<DofIndex>(j)) = psi.col(active_inputs_[j]);
@@ -144,9 +150,9 @@ class ModalEngine : public SimulatorEngine {
     modal_output_ = modal.modalOutput();
     shapes_ = modal.shapes();
     mass_projection_ = modal.massProjection();
-    force_ = options.generalized_force.size() != 0 ? Vector(shapes_.transpose() *
-                                                            options.generalized_force)
-                                                   : Vector(Vector::Zero(n));
+    force_ = options.generalized_force.size() != 0
+                 ? Vector(shapes_.transpose() * options.generalized_force)
+                 : Vector(Vector::Zero(n));
     const Vector gamma_disp = coefficients_.g0_disp + coefficients_.g1_disp;
     const Vector gamma_vel = coefficients_.g0_vel + coefficients_.g1_vel;
     offset_disp_ = gamma_disp.cwiseProduct(force_);
@@ -154,14 +160,12 @@ class ModalEngine : public SimulatorEngine {
 
     const OutputLayout layout(modal.outputNames(), options.quantities);
     n_y_ = modal.outputCount();
-    disp_offset_ = layout.has(OutputQuantity::Displacement)
-                       ? layout.offset(OutputQuantity::Displacement)
-                       : -1;
+    disp_offset_ =
+        layout.has(OutputQuantity::Displacement) ? layout.offset(OutputQuantity::Displacement) : -1;
     vel_offset_ =
         layout.has(OutputQuantity::Velocity) ? layout.offset(OutputQuantity::Velocity) : -1;
-    acc_offset_ = layout.has(OutputQuantity::Acceleration)
-                      ? layout.offset(OutputQuantity::Acceleration)
-                      : -1;
+    acc_offset_ =
+        layout.has(OutputQuantity::Acceleration) ? layout.offset(OutputQuantity::Acceleration) : -1;
     names_ = layout.names();
     off_diagonal_ratio_ = modal.maxOffDiagonalDampingRatio();
     dt_ = options.time_step;
@@ -169,7 +173,8 @@ class ModalEngine : public SimulatorEngine {
     method_ = DiscretizationMethod::ModalDecoupled;
     state_count_ = 2 * system.size();
 
-    for (Vector* v : {&eta_, &eta_dot_, &eta_next_, &eta_ddot_, &p_, &p_next_}) v->setZero(n);
+    for (Vector* v : {&eta_, &eta_dot_, &eta_next_, &eta_ddot_, &p_, &p_next_})
+      v->setZero(n);
     w_.setZero(2 * n_u);
     y_.setZero(layout.size());
     updateOutputs();
@@ -217,7 +222,8 @@ class ModalEngine : public SimulatorEngine {
     const DofIndex n_t = inputs.rows();
     const DofIndex n = eta_.size();
     Matrix outputs(n_t, y_.size());
-    if (n_t == 0) return outputs;
+    if (n_t == 0)
+      return outputs;
     setInput(inputs.row(0).transpose());
     outputs.row(0) = y_.transpose();
     Matrix forces(n, kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
@@ -266,8 +272,8 @@ class ModalEngine : public SimulatorEngine {
   }
 
   // One step of every mode; eta_dot_out may alias eta_dot (coefficient-wise).
-  void advanceModes(const double* p, const double* p_next, const double* eta,
-                    const double* eta_dot, double* eta_out, double* eta_dot_out) const {
+  void advanceModes(const double* p, const double* p_next, const double* eta, const double* eta_dot,
+                    double* eta_out, double* eta_dot_out) const {
     const DofIndex n = eta_.size();
     const ConstArrayMap p0(p, n), p1(p_next, n), x(eta, n), v(eta_dot, n);
     const DiscreteModes& c = coefficients_;
@@ -278,16 +284,16 @@ class ModalEngine : public SimulatorEngine {
       v_out = c.a21.array() * x + c.a22.array() * v + c.g0_vel.array() * p0 +
               c.g1_vel.array() * p1 + offset_vel_.array();
     } else {
-      x_out = c.a11.array() * x + c.a12.array() * v + c.g0_disp.array() * p0 +
-              offset_disp_.array();
-      v_out = c.a21.array() * x + c.a22.array() * v + c.g0_vel.array() * p0 +
-              offset_vel_.array();
+      x_out = c.a11.array() * x + c.a12.array() * v + c.g0_disp.array() * p0 + offset_disp_.array();
+      v_out = c.a21.array() * x + c.a22.array() * v + c.g0_vel.array() * p0 + offset_vel_.array();
     }
   }
 
   void updateOutputs() {
-    if (disp_offset_ >= 0) y_.segment(disp_offset_, n_y_).noalias() = modal_output_ * eta_;
-    if (vel_offset_ >= 0) y_.segment(vel_offset_, n_y_).noalias() = modal_output_ * eta_dot_;
+    if (disp_offset_ >= 0)
+      y_.segment(disp_offset_, n_y_).noalias() = modal_output_ * eta_;
+    if (vel_offset_ >= 0)
+      y_.segment(vel_offset_, n_y_).noalias() = modal_output_ * eta_dot_;
     if (acc_offset_ >= 0) {
       eta_ddot_.array() = p_.array() + force_.array() - omega_squared_.array() * eta_.array() -
                           damping_.array() * eta_dot_.array();
@@ -320,8 +326,7 @@ std::unique_ptr<SimulatorEngine> makeEngine(const SecondOrderSystem& system,
         "Simulator: modal_damping_ratios apply to DiscretizationMethod::ModalDecoupled only");
   const StateSpace continuous =
       fromSecondOrder(system, options.quantities, options.generalized_force);
-  return std::make_unique<DenseEngine>(
-      discretize(continuous, options.time_step, options.hold));
+  return std::make_unique<DenseEngine>(discretize(continuous, options.time_step, options.hold));
 }
 
 }  // namespace
@@ -374,19 +379,45 @@ Matrix Simulator::simulate(const Matrix& inputs) {
   return engine_->simulate(inputs);
 }
 
-const Vector& Simulator::outputs() const { return engine_->y_; }
-Vector Simulator::state() const { return engine_->state(); }
-const Vector& Simulator::input() const { return engine_->w_; }
-double Simulator::time() const { return static_cast<double>(engine_->steps_) * engine_->dt_; }
-long Simulator::stepCount() const { return engine_->steps_; }
-DofIndex Simulator::stateCount() const { return engine_->state_count_; }
-DofIndex Simulator::inputCount() const { return engine_->w_.size(); }
-DofIndex Simulator::outputCount() const { return engine_->y_.size(); }
-const std::vector<std::string>& Simulator::outputNames() const { return engine_->names_; }
-double Simulator::timeStep() const { return engine_->dt_; }
-InputHold Simulator::hold() const { return engine_->hold_; }
-DiscretizationMethod Simulator::method() const { return engine_->method_; }
-double Simulator::maxOffDiagonalDampingRatio() const { return engine_->off_diagonal_ratio_; }
+const Vector& Simulator::outputs() const {
+  return engine_->y_;
+}
+Vector Simulator::state() const {
+  return engine_->state();
+}
+const Vector& Simulator::input() const {
+  return engine_->w_;
+}
+double Simulator::time() const {
+  return static_cast<double>(engine_->steps_) * engine_->dt_;
+}
+long Simulator::stepCount() const {
+  return engine_->steps_;
+}
+DofIndex Simulator::stateCount() const {
+  return engine_->state_count_;
+}
+DofIndex Simulator::inputCount() const {
+  return engine_->w_.size();
+}
+DofIndex Simulator::outputCount() const {
+  return engine_->y_.size();
+}
+const std::vector<std::string>& Simulator::outputNames() const {
+  return engine_->names_;
+}
+double Simulator::timeStep() const {
+  return engine_->dt_;
+}
+InputHold Simulator::hold() const {
+  return engine_->hold_;
+}
+DiscretizationMethod Simulator::method() const {
+  return engine_->method_;
+}
+double Simulator::maxOffDiagonalDampingRatio() const {
+  return engine_->off_diagonal_ratio_;
+}
 
 }  // namespace dynamics
 }  // namespace tracked_vehicle_dynamics

@@ -19,10 +19,12 @@ void validateStateSpace(const StateSpace& s) {
   detail::requireSize(where, "feedthrough matrix D", s.feedthrough_matrix, p, m);
   if (s.next_input_matrix.size() != 0)
     detail::requireSize(where, "next input matrix B1", s.next_input_matrix, n, m);
-  if (s.state_offset.size() != 0) detail::requireLength(where, "state offset f0", s.state_offset, n);
+  if (s.state_offset.size() != 0)
+    detail::requireLength(where, "state offset f0", s.state_offset, n);
   if (s.output_offset.size() != 0)
     detail::requireLength(where, "output offset y0", s.output_offset, p);
-  if (!s.output_names.empty()) detail::requireLength(where, "output_names", s.output_names, p);
+  if (!s.output_names.empty())
+    detail::requireLength(where, "output_names", s.output_names, p);
   if (!(s.sample_time >= 0.0) || !std::isfinite(s.sample_time))
     throw InputError(where + ": sample time must be >= 0 and finite, got " +
                      std::to_string(s.sample_time) + " s");
@@ -41,7 +43,8 @@ StateSpace fromSecondOrder(const SecondOrderSystem& system,
     detail::requireLength("fromSecondOrder", "generalized force f_g", generalized_force, n);
   std::vector<std::string> base_names = system.output_names;
   if (base_names.empty())
-    for (DofIndex i = 0; i < n_y; ++i) base_names.push_back("output " + std::to_string(i));
+    for (DofIndex i = 0; i < n_y; ++i)
+      base_names.push_back("output " + std::to_string(i));
   const OutputLayout layout(base_names, quantities);
 
   const Eigen::LLT<Matrix> mass_factor(system.mass);

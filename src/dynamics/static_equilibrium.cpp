@@ -30,7 +30,8 @@ Vector staticEquilibrium(const SecondOrderSystem& system, const Vector& heights,
   // rounding level (Eigen then solves in the least-squares sense, so test the pivots).
   const Eigen::LDLT<Matrix> factor(system.stiffness);
   const Vector pivots = factor.vectorD().cwiseAbs();
-  if (factor.info() != Eigen::Success || !(pivots.minCoeff() > kSingularPivotRatio * pivots.maxCoeff()) ||
+  if (factor.info() != Eigen::Success ||
+      !(pivots.minCoeff() > kSingularPivotRatio * pivots.maxCoeff()) ||
       factor.rcond() < std::numeric_limits<double>::epsilon())
     throw SolverError("staticEquilibrium: stiffness matrix K (" + detail::sizeText(n, n) +
                       ") is singular (free rigid-body motion); no static equilibrium");

@@ -10,7 +10,8 @@ namespace {
 template <typename System>
 void validateCommon(const std::string& where, const System& s) {
   const DofIndex n = s.stiffness.rows();
-  if (n == 0) throw InputError(where + ": the system has no degree of freedom");
+  if (n == 0)
+    throw InputError(where + ": the system has no degree of freedom");
   const DofIndex n_inputs = s.input_stiffness.cols();
   detail::requireSize(where, "stiffness K", s.stiffness, n, n);
   detail::requireSize(where, "mass M", s.mass, n, n);

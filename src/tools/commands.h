@@ -9,6 +9,7 @@ namespace tools {
 void registerModesCommand(CLI::App& app);
 void registerMacCommand(CLI::App& app);
 void registerReduceCommand(CLI::App& app);
+void registerSimulateCommand(CLI::App& app);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

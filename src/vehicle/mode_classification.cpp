@@ -82,12 +82,15 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
       } else if (b.group == 1) {
         attached += energy;
       } else {
-        // Wheel bounce is the wheels' motion relative to the hull; the rest of their energy
-        // (riding along with the hull) counts as the hull's.
+        // Wheel bounce is the wheels' motion relative to the hull; the motion carried with the
+        // hull counts as the hull's. The two parts are not M-orthogonal, so the wheel's energy
+        // is shared between them in proportion to their own energies.
         const Vector6 r = b.relative.col(j);
-        const double relative = r.dot(b.mass * r) / total;
-        c.wheel_share += relative;
-        attached += energy - relative;
+        const Vector6 h = v - r;
+        const double relative = r.dot(b.mass * r), carried = h.dot(b.mass * h);
+        const double split = relative + carried > 0.0 ? relative / (relative + carried) : 0.0;
+        c.wheel_share += split * energy;
+        attached += (1.0 - split) * energy;
       }
     }
     double hull = 0.0;
@@ -105,7 +108,7 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
       std::vector<HullMotion> named = c.hull_motions;
       std::sort(named.begin(), named.end());
       for (HullMotion m : named) c.label += (c.label.empty() ? "" : "+") + std::string(hullMotionName(m));
-    } else if (c.wheel_share >= c.track_share) {
+    } else if (c.wheel_share >= kWheelShare) {
       c.kind = ModeKind::WheelBounce;
       c.label = "wheel bounce";
       if (hull >= kCouplingShare) {

@@ -70,6 +70,8 @@ std::vector<Field> fieldsOf(VehicleDescription& d) {
       {"suspension", "contact_stiffness", "N/m", K::Real, R::Positive, &s.contact_stiffness},
       {"suspension", "contact_shear_stiffness", "N/m", K::Real, R::NonNegative,
        &s.contact_shear_stiffness},
+      {"suspension", "guide_contact_height", "m", K::Real, R::NonNegative,
+       &s.guide_contact_height},
       {"suspension", "arm_damping", "N*m*s/rad", K::Real, R::NonNegative, &s.arm_damping},
       {"track_assembly", "count", "1", K::Integer, R::Positive, &t.count},
       {"track_assembly", "ground_count", "1", K::Integer, R::Positive, &t.ground_count},

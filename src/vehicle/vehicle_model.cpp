@@ -168,6 +168,7 @@ class Builder {
         g.name = "ground_" + std::to_string(sole);
         model().springs.push_back(g);
         RoadInput in;
+        in.spring = model().springs.size() - 1;
         in.node = sole;
         in.side = side;
         in.assembly = index;
@@ -229,15 +230,23 @@ class Builder {
     throw InputError("internal: node " + std::to_string(id) + " missing");
   }
 
+  // Road wheel on its assembly: the wheel is rigid with its arm (no spin DOF), so the contact
+  // patch carries the normal force (k_w) and the longitudinal force; the lateral force passes
+  // through the guide horn, which touches the wheels' rims above the link's upper surface.
   void tieWheel(WheelStation& st, int assembly) {
     const auto& s = d_.suspension;
     st.assembly = assembly;
     const AssemblyRecord& a = layout().assemblies[assembly];
     const Matrix3 frame = Matrix3::Identity();
     const double along = axleX(d_, st.axle) - nodeById(a.nodes.linkCentre()).position.x();
+    const Vector3 patch = upperSurface(a, frame, along);
     addContact(st.centre, stationNode(st.side, st.axle, 3), stationNode(st.side, st.axle, 4), a,
-               upperSurface(a, frame, along) + Vector3(0,0,getenv("TVD_LIFT") ? atof(getenv("TVD_LIFT")) : 0.0), frame, s.contact_shear_stiffness,
-               s.contact_shear_stiffness, s.contact_stiffness, st.name + "/contact");
+               patch, frame, s.contact_shear_stiffness, 0.0, s.contact_stiffness,
+               st.name + "/contact");
+    st.contact_spring = model().springs.size() - 1;
+    addContact(st.centre, stationNode(st.side, st.axle, 5), stationNode(st.side, st.axle, 6), a,
+               patch + s.guide_contact_height * Vector3::UnitZ(), frame, 0.0,
+               s.contact_shear_stiffness, 0.0, st.name + "/guide");
   }
 
   // Paper Fig. 2a: each road wheel stands on one assembly, centred under it.

@@ -27,7 +27,7 @@ inline SecondOrderSystem oneDof(double m, double c, double k, double c_u) {
 /// Quarter car q = [z_s, z_u]: sprung mass on a suspension (k_s, c_s) over an unsprung mass on a
 /// stiff tyre (k_t, c_t) to the road.
 inline SecondOrderSystem quarterCar(double m_s = 300.0, double m_u = 30.0, double k_s = 3e4,
-                                   double c_s = 2e3, double k_t = 2e10, double c_t = 0.0) {
+                                    double c_s = 2e3, double k_t = 2e10, double c_t = 0.0) {
   SecondOrderSystem s;
   s.mass = Eigen::Vector2d(m_s, m_u).asDiagonal();
   s.stiffness.resize(2, 2);
@@ -60,7 +60,8 @@ inline SecondOrderSystem chain(int n, double m, double k, double c, double k_0, 
   s.input_damping = Matrix::Zero(n, 1);
   s.input_damping(0, 0) = c_0;
   s.output = Matrix::Identity(n, n);
-  for (int i = 0; i < n; ++i) s.output_names.push_back("mass_" + std::to_string(i) + " uz");
+  for (int i = 0; i < n; ++i)
+    s.output_names.push_back("mass_" + std::to_string(i) + " uz");
   s.input_stations = Vector::Zero(1);
   return s;
 }
@@ -69,14 +70,14 @@ inline SecondOrderSystem chain(int n, double m, double k, double c, double k_0, 
 /// springs k_t at distinct stations, Rayleigh damping C = alpha M + beta K (and C_u = beta K_u,
 /// so that the damping stays proportional), outputs the first `outputs` DOFs.
 inline SecondOrderSystem randomVehicle(int n, int inputs, int outputs, unsigned seed,
-                                       double k_t = 2e10, double alpha = 0.5,
-                                       double beta = 1e-6) {
+                                       double k_t = 2e10, double alpha = 0.5, double beta = 1e-6) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   SecondOrderSystem s;
   // M: diagonal masses 30..3000 kg plus a weak symmetric coupling (still positive definite).
   s.mass = Matrix::Zero(n, n);
-  for (int i = 0; i < n; ++i) s.mass(i, i) = 30.0 * std::pow(100.0, unit(rng));
+  for (int i = 0; i < n; ++i)
+    s.mass(i, i) = 30.0 * std::pow(100.0, unit(rng));
   for (int i = 0; i + 1 < n; ++i) {
     const double coupling = 0.1 * unit(rng) * std::sqrt(s.mass(i, i) * s.mass(i + 1, i + 1));
     s.mass(i, i + 1) = s.mass(i + 1, i) = coupling;
@@ -89,11 +90,13 @@ inline SecondOrderSystem randomVehicle(int n, int inputs, int outputs, unsigned 
     s.stiffness(a, b) -= k;
     s.stiffness(b, a) -= k;
   };
-  for (int i = 0; i + 1 < n; ++i) spring(i, i + 1, 1e4 * std::pow(1e3, unit(rng)));
+  for (int i = 0; i + 1 < n; ++i)
+    spring(i, i + 1, 1e4 * std::pow(1e3, unit(rng)));
   std::uniform_int_distribution<int> dof(0, n - 1);
   for (int e = 0; e < 2 * n; ++e) {
     const int a = dof(rng), b = dof(rng);
-    if (a != b) spring(a, b, 1e4 * std::pow(1e3, unit(rng)));
+    if (a != b)
+      spring(a, b, 1e4 * std::pow(1e3, unit(rng)));
   }
   s.input_stiffness = Matrix::Zero(n, inputs);
   s.input_stations.resize(inputs);
@@ -106,7 +109,8 @@ inline SecondOrderSystem randomVehicle(int n, int inputs, int outputs, unsigned 
   s.damping = alpha * s.mass + beta * s.stiffness;
   s.input_damping = beta * s.input_stiffness;
   s.output = Matrix::Identity(n, n).topRows(outputs);
-  for (int i = 0; i < outputs; ++i) s.output_names.push_back("dof_" + std::to_string(i) + " uz");
+  for (int i = 0; i < outputs; ++i)
+    s.output_names.push_back("dof_" + std::to_string(i) + " uz");
   return s;
 }
 

@@ -48,7 +48,8 @@ TEST(Frf, OneDofEqualsClosedForm) {
       const Complex expected = quantity == OutputQuantity::Displacement ? x
                                : quantity == OutputQuantity::Velocity   ? Complex(0.0, w) * x
                                                                         : -w * w * x;
-      EXPECT_LT(std::abs(direct(i, 0) - expected), kClosedFormTolerance * std::abs(x) * (1 + w * w));
+      EXPECT_LT(std::abs(direct(i, 0) - expected),
+                kClosedFormTolerance * std::abs(x) * (1 + w * w));
       EXPECT_LT(std::abs(modal(i, 0) - expected), kClosedFormTolerance * std::abs(x) * (1 + w * w));
     }
   }

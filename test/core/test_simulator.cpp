@@ -27,15 +27,18 @@ void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);
 void* __libc_realloc(void* pointer, std::size_t size);
 void* malloc(std::size_t size) noexcept {
-  if (g_count_allocations) ++g_allocations;
+  if (g_count_allocations)
+    ++g_allocations;
   return __libc_malloc(size);
 }
 void* calloc(std::size_t count, std::size_t size) noexcept {
-  if (g_count_allocations) ++g_allocations;
+  if (g_count_allocations)
+    ++g_allocations;
   return __libc_calloc(count, size);
 }
 void* realloc(void* pointer, std::size_t size) noexcept {
-  if (g_count_allocations) ++g_allocations;
+  if (g_count_allocations)
+    ++g_allocations;
   return __libc_realloc(pointer, size);
 }
 }
@@ -43,8 +46,8 @@ void* realloc(void* pointer, std::size_t size) noexcept {
 
 namespace {
 
-constexpr double kMethodAgreement = 1e-8;    // modal vs augmented exponential, of the peak
-constexpr double kNewmarkAgreement = 5e-3;   // Newmark (h/50) vs exact simulator, of the peak
+constexpr double kMethodAgreement = 1e-8;   // modal vs augmented exponential, of the peak
+constexpr double kNewmarkAgreement = 5e-3;  // Newmark (h/50) vs exact simulator, of the peak
 constexpr double kEquilibriumTolerance = 1e-10;
 constexpr double kTwoPi = 6.283185307179586;
 
@@ -61,7 +64,8 @@ Matrix bumpInputs(const Vector& stations, int samples, double dt, double speed, 
   for (int k = 0; k < samples; ++k)
     for (DofIndex q = 0; q < n_u; ++q) {
       const double s = (speed * k * dt + stations(q) - x0) / length;
-      if (s <= 0.0 || s >= 1.0) continue;
+      if (s <= 0.0 || s >= 1.0)
+        continue;
       w(k, q) = 0.5 * height * (1.0 - std::cos(kTwoPi * s));
       w(k, n_u + q) = 0.5 * height * kTwoPi / length * speed * std::sin(kTwoPi * s);
     }
@@ -145,11 +149,11 @@ TEST(Simulator, SimulateEqualsStepping) {
 // second-order system; step(w_begin, w_end) first replaces the current input.
 TEST(Simulator, FromDiscreteStateSpaceAndTwoSidedStep) {
   const SecondOrderSystem s = test::randomVehicle(7, 2, 3, 13);
-  const SimulatorOptions o = options(DiscretizationMethod::AugmentedExponential,
-                                     InputHold::FirstOrder);
+  const SimulatorOptions o =
+      options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
   Simulator from_system(s, o);
-  Simulator from_state_space(discretize(fromSecondOrder(s, kAllQuantities), 1e-3,
-                                        InputHold::FirstOrder));
+  Simulator from_state_space(
+      discretize(fromSecondOrder(s, kAllQuantities), 1e-3, InputHold::FirstOrder));
   const Matrix w = bumpInputs(s.input_stations, 300, 1e-3, 9.0, 0.05, 1.0, 2.2);
   EXPECT_LT(relativeBlockError(from_state_space.simulate(w), from_system.simulate(w), 3), 1e-14);
   EXPECT_EQ(from_state_space.hold(), InputHold::FirstOrder);
@@ -206,7 +210,8 @@ TEST(Simulator, StaticEquilibriumIsAFixedPoint) {
       o.generalized_force = f_g;
       Simulator sim(s, o);
       sim.reset(z0, w0);
-      for (int k = 0; k < 200; ++k) sim.step(w0);
+      for (int k = 0; k < 200; ++k)
+        sim.step(w0);
       EXPECT_LT((sim.state() - z0).cwiseAbs().maxCoeff(),
                 kEquilibriumTolerance * z0.cwiseAbs().maxCoeff());
       EXPECT_LT(sim.outputs().tail(3).cwiseAbs().maxCoeff(), 1e-5);  // accelerations [m/s^2]
@@ -224,8 +229,8 @@ TEST(Simulator, MatchesNewmarkOnChain) {
   const double dt = 1e-3;
   const int samples = 1200, substeps = 50;
   const Matrix w = bumpInputs(s.input_stations, samples, dt, 10.0, 0.08, 1.2, 1.0);
-  Simulator simulator(s, options(DiscretizationMethod::AugmentedExponential,
-                                 InputHold::FirstOrder, dt));
+  Simulator simulator(
+      s, options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder, dt));
   const Matrix y = simulator.simulate(w);
 
   NewmarkIntegrator newmark(toSparse(s), dt / substeps, kAllQuantities);
@@ -331,8 +336,8 @@ TEST(Simulator, GivenModalDampingRatios) {
 #if defined(__GLIBC__)
 TEST(Simulator, StepDoesNotAllocate) {
   // With and without input damping C_u (the modal engine drops zero input columns).
-  for (const SecondOrderSystem& s : {test::randomVehicle(12, 3, 4, 9),
-                                     test::randomVehicle(12, 3, 4, 9, 2e10, 0.5, 0.0)}) {
+  for (const SecondOrderSystem& s :
+       {test::randomVehicle(12, 3, 4, 9), test::randomVehicle(12, 3, 4, 9, 2e10, 0.5, 0.0)}) {
     const Vector w = Vector::Random(6);
     for (DiscretizationMethod method :
          {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled})
@@ -341,7 +346,8 @@ TEST(Simulator, StepDoesNotAllocate) {
         sim.step(w);  // warm-up outside the counted region
         g_allocations = 0;
         g_count_allocations = true;
-        for (int k = 0; k < 100; ++k) sim.step(w);
+        for (int k = 0; k < 100; ++k)
+          sim.step(w);
         sim.step(w, w);
         g_count_allocations = false;
         EXPECT_EQ(g_allocations, 0);

@@ -14,21 +14,24 @@ using namespace tracked_vehicle_dynamics::dynamics;
 
 namespace {
 
-constexpr double kExactTolerance = 1e-9;    // exact discretisation vs closed form
+constexpr double kExactTolerance = 1e-9;  // exact discretisation vs closed form
 constexpr double kIdentityTolerance = 1e-12;
 constexpr double kTwoPi = 6.283185307179586;
 
 // One step of a discrete StateSpace (either hold) from z with inputs w (start), w_next (end).
 Vector advance(const StateSpace& d, const Vector& z, const Vector& w, const Vector& w_next) {
   Vector z_next = d.state_matrix * z + d.input_matrix * w;
-  if (d.next_input_matrix.size() != 0) z_next += d.next_input_matrix * w_next;
-  if (d.state_offset.size() != 0) z_next += d.state_offset;
+  if (d.next_input_matrix.size() != 0)
+    z_next += d.next_input_matrix * w_next;
+  if (d.state_offset.size() != 0)
+    z_next += d.state_offset;
   return z_next;
 }
 
 Vector outputs(const StateSpace& s, const Vector& z, const Vector& w) {
   Vector y = s.output_matrix * z + s.feedthrough_matrix * w;
-  if (s.output_offset.size() != 0) y += s.output_offset;
+  if (s.output_offset.size() != 0)
+    y += s.output_offset;
   return y;
 }
 
@@ -66,8 +69,8 @@ TEST(FromSecondOrder, BlocksAndAccelerationOutput) {
   const Vector z = Vector::Random(12);
   const Vector w = Vector::Random(4);
   const Vector q = z.head(6), v = z.tail(6), u = w.head(2), u_dot = w.tail(2);
-  const Vector acc = s.mass.llt().solve(-s.stiffness * q - s.damping * v +
-                                        s.input_stiffness * u + s.input_damping * u_dot + f_g);
+  const Vector acc = s.mass.llt().solve(-s.stiffness * q - s.damping * v + s.input_stiffness * u +
+                                        s.input_damping * u_dot + f_g);
   const Vector z_dot = ss.state_matrix * z + ss.input_matrix * w + ss.state_offset;
   EXPECT_LT((z_dot.head(6) - v).norm(), kIdentityTolerance);
   EXPECT_LT((z_dot.tail(6) - acc).norm(), kIdentityTolerance * acc.norm());
@@ -118,8 +121,7 @@ TEST(MatrixExponential, Identities) {
   EXPECT_LT((matrixExponential(nilpotent) - Matrix{{1.0, 1.0}, {0.0, 1.0}}).norm(),
             kIdentityTolerance);
   const Matrix x = Matrix::Random(7, 7);
-  EXPECT_LT((matrixExponential(x) * matrixExponential(-x) - Matrix::Identity(7, 7)).norm(),
-            1e-11);
+  EXPECT_LT((matrixExponential(x) * matrixExponential(-x) - Matrix::Identity(7, 7)).norm(), 1e-11);
   EXPECT_THROW(matrixExponential(Matrix::Zero(2, 3)), InputError);
 }
 
@@ -139,7 +141,8 @@ TEST(Discretize, StiffOscillatorTransitionMatrixIsExact) {
   EXPECT_NEAR(d.input_matrix(1, 0) / omega, s, kExactTolerance);
   // Undamped: |eigenvalues of Phi| = 1 (no growth, no artificial decay).
   const Eigen::VectorXcd lambda = d.state_matrix.eigenvalues();
-  for (int i = 0; i < 2; ++i) EXPECT_NEAR(std::abs(lambda(i)), 1.0, kExactTolerance);
+  for (int i = 0; i < 2; ++i)
+    EXPECT_NEAR(std::abs(lambda(i)), 1.0, kExactTolerance);
 }
 
 // m x'' + c x' + k x = k U: x = U (1 - e^{-z w t} (cos w_d t + z w / w_d sin w_d t)).
@@ -158,8 +161,9 @@ TEST(Discretize, ZeroOrderHoldStepResponseIsExact) {
     z = advance(d, z, w, w);
     const double t = n * h;
     const double decay = std::exp(-zeta * omega * t);
-    const double x = step * (1.0 - decay * (std::cos(omega_d * t) +
-                                            zeta * omega / omega_d * std::sin(omega_d * t)));
+    const double x =
+        step *
+        (1.0 - decay * (std::cos(omega_d * t) + zeta * omega / omega_d * std::sin(omega_d * t)));
     const double v = step * decay * omega * omega / omega_d * std::sin(omega_d * t);
     const double a = (k * (step - x) - c * v) / m;
     const Vector y = outputs(d, z, w);
@@ -187,7 +191,8 @@ TEST(Discretize, FirstOrderHoldRampResponseIsExact) {
     z_foh = advance(foh, z_foh, w, w_next);
     z_zoh = advance(zoh, z_zoh, w, w_next);
     const double t = (n + 1) * h;
-    const double x = rate * t - rate / omega_d * std::exp(-zeta * omega * t) * std::sin(omega_d * t);
+    const double x =
+        rate * t - rate / omega_d * std::exp(-zeta * omega * t) * std::sin(omega_d * t);
     ASSERT_NEAR(z_foh(0), x, kExactTolerance * rate * t) << "t = " << t;
     zoh_error = std::max(zoh_error, std::abs(z_zoh(0) - x));
   }
@@ -204,9 +209,8 @@ TEST(Discretize, StiffQuarterCarMatchesHarmonicSteadyState) {
   using Complex = std::complex<double>;
   Eigen::MatrixXcd z_dyn = s.stiffness.cast<Complex>() - omega * omega * s.mass.cast<Complex>() +
                            Complex(0.0, omega) * s.damping.cast<Complex>();
-  const Eigen::VectorXcd x_harmonic =
-      z_dyn.lu().solve(s.input_stiffness.cast<Complex>() +
-                       Complex(0.0, omega) * s.input_damping.cast<Complex>());
+  const Eigen::VectorXcd x_harmonic = z_dyn.lu().solve(
+      s.input_stiffness.cast<Complex>() + Complex(0.0, omega) * s.input_damping.cast<Complex>());
 
   const StateSpace ss = fromSecondOrder(s);
   for (InputHold hold : {InputHold::FirstOrder, InputHold::ZeroOrder}) {
@@ -225,7 +229,8 @@ TEST(Discretize, StiffQuarterCarMatchesHarmonicSteadyState) {
       z = advance(d, z, input(n * h), input((n + 1) * h));
       ASSERT_LT(z.head(2).cwiseAbs().maxCoeff(), 10.0 * amplitude);
       const double t = (n + 1) * h;
-      if (t < 5.0) continue;
+      if (t < 5.0)
+        continue;
       const Eigen::VectorXcd x = x_harmonic * std::exp(Complex(0.0, omega * t)) * amplitude;
       max_error = std::max(max_error, (z.head(2) - x.imag()).cwiseAbs().maxCoeff());
     }

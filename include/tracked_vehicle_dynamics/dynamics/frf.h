@@ -2,8 +2,9 @@
 //
 // With u = tau h e^{j omega t} (tau from InputDelay) and q = x e^{j omega t}:
 //   direct (eq. 18):  (-omega^2 M + j omega C + K) x = (j omega C_u + K_u) tau
-//   modal (eqs. 19-20): x = sum_r phi_r phi_r^T F / (omega_r^2 + 2 j zeta_r omega_r omega - omega^2),
-//                      F = (j omega C_u + K_u) tau
+//   modal (eqs. 19-20): x = sum_r phi_r phi_r^T F / (omega_r^2 + 2 j zeta_r omega_r omega
+//                                                    - omega^2),
+//                       F = (j omega C_u + K_u) tau
 //   outputs: displacement H x [m/m], velocity j omega H x [(m/s)/m],
 //            acceleration -omega^2 H x [(m/s^2)/m] (eq. 25).
 // Results are complex matrices [n_frequencies x n_outputs], columns in the order of the rows of

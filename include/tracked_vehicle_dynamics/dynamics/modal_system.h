@@ -1,7 +1,8 @@
 // Modal form of a second-order system (paper eq. 20), used by the modal-decoupled simulator and
 // the modal FRF. With K phi_r = omega_r^2 M phi_r, Phi^T M Phi = I and q = Phi eta:
 //
-//   eta_r'' + d_r eta_r' + omega_r^2 eta_r = phi_r^T (K_u u + C_u u' + f_g),   d_r = 2 zeta_r omega_r
+//   eta_r'' + d_r eta_r' + omega_r^2 eta_r = phi_r^T (K_u u + C_u u' + f_g)
+//   d_r = 2 zeta_r omega_r
 //
 // Exact when Phi^T C Phi is diagonal (proportional/Rayleigh damping, C = a M + b K). Otherwise the
 // modal damping approximation d_r = phi_r^T C phi_r (zeta_r = phi_r^T C phi_r / (2 omega_r))

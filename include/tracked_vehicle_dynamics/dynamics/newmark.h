@@ -32,8 +32,7 @@ class NewmarkIntegrator {
   /// time_step h [s] > 0; quantities: output blocks; generalized_force f_g [n] (empty: none).
   /// Throws InputError for inconsistent sizes or h, SolverError when K_eff cannot be factorised.
   NewmarkIntegrator(const SparseSecondOrderSystem& system, double time_step,
-                    const std::vector<OutputQuantity>& quantities =
-                        {OutputQuantity::Displacement},
+                    const std::vector<OutputQuantity>& quantities = {OutputQuantity::Displacement},
                     const Vector& generalized_force = Vector());
 
   /// t = 0, q = q' = 0, w = 0 (acceleration from M a = f_g).

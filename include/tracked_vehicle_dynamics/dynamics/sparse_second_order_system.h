@@ -16,12 +16,12 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
 struct SparseSecondOrderSystem {
-  SparseMatrix mass;             ///< M [n x n]
-  SparseMatrix damping;          ///< C [n x n]
-  SparseMatrix stiffness;        ///< K [n x n]
-  SparseMatrix input_stiffness;  ///< K_u [n x n_inputs]
-  SparseMatrix input_damping;    ///< C_u [n x n_inputs]
-  SparseMatrix output;           ///< H [n_outputs x n]
+  SparseMatrix mass;                      ///< M [n x n]
+  SparseMatrix damping;                   ///< C [n x n]
+  SparseMatrix stiffness;                 ///< K [n x n]
+  SparseMatrix input_stiffness;           ///< K_u [n x n_inputs]
+  SparseMatrix input_damping;             ///< C_u [n x n_inputs]
+  SparseMatrix output;                    ///< H [n_outputs x n]
   std::vector<std::string> output_names;  ///< one per row of H (may be empty)
   Vector input_stations;  ///< x station of each input [m] (may be empty), see SecondOrderSystem
 

@@ -38,10 +38,10 @@ enum class InputHold {
 };
 
 struct StateSpace {
-  Matrix state_matrix;       ///< A [n_states x n_states]
-  Matrix input_matrix;       ///< B [n_states x n_inputs]
-  Matrix output_matrix;      ///< C [n_outputs x n_states]
-  Matrix feedthrough_matrix; ///< D [n_outputs x n_inputs]
+  Matrix state_matrix;        ///< A [n_states x n_states]
+  Matrix input_matrix;        ///< B [n_states x n_inputs]
+  Matrix output_matrix;       ///< C [n_outputs x n_states]
+  Matrix feedthrough_matrix;  ///< D [n_outputs x n_inputs]
   /// B1 [n_states x n_inputs]: weight of w[k+1] in a discrete first-order-hold system; empty
   /// (0 x 0) otherwise.
   Matrix next_input_matrix;
@@ -67,10 +67,10 @@ void validateStateSpace(const StateSpace& system);
 /// Continuous first-order form of a second-order system (equations above).
 /// quantities: output blocks, in order; generalized_force: f_g [n] [N, N m] (empty: none).
 /// Throws InputError for inconsistent sizes, SolverError when M is not positive definite.
-StateSpace fromSecondOrder(const SecondOrderSystem& system,
-                           const std::vector<OutputQuantity>& quantities =
-                               {OutputQuantity::Displacement},
-                           const Vector& generalized_force = Vector());
+StateSpace fromSecondOrder(
+    const SecondOrderSystem& system,
+    const std::vector<OutputQuantity>& quantities = {OutputQuantity::Displacement},
+    const Vector& generalized_force = Vector());
 
 /// Input vector w = [u; u'] from road heights u [m] and rates u' [m/s] (same length).
 /// Throws InputError when the lengths differ.

@@ -6,9 +6,13 @@
 //                     kComponentShare of the hull energy, translations first:
 //                     "longitudinal", "lateral", "bounce", "roll", "pitch", "yaw",
 //                     e.g. "longitudinal+pitch"
-//   wheel bounce      wheels' share is the largest; "+<hull component>" is appended when the hull
-//                     holds at least kCouplingShare of the mode's energy, e.g. "wheel bounce+roll"
-//   track chain local the assemblies' share is the largest
+//   wheel bounce      otherwise, when the wheels' motion relative to the hull (suspension travel)
+//                     holds at least kWheelShare of the energy (in the tracked vehicle the chain
+//                     under the wheels moves with them); "+<hull component>" is appended when the
+//                     hull holds at least kCouplingShare of the energy, e.g. "wheel bounce+roll"
+//   track chain local otherwise
+// The wheels' energy from riding along with the hull (rigid transport of the hull's motion to the
+// wheel centre) counts as the hull's, so hull modes with heavy wheels stay hull modes.
 #pragma once
 
 #include <array>
@@ -24,6 +28,8 @@ namespace vehicle {
 
 /// A hull component holding at least this share of the hull's kinetic energy names the mode.
 constexpr double kComponentShare = 0.25;
+/// Share of the energy in the wheels' relative motion that makes a non-hull mode a wheel mode.
+constexpr double kWheelShare = 0.25;
 /// A wheel mode names the hull's main component when the hull holds this share of the energy.
 constexpr double kCouplingShare = 0.02;
 

@@ -54,6 +54,7 @@ struct SuspensionDescription {
   double pivot_y = 0.98;                  ///< |y| of the pivots (hull side walls) [m]
   double contact_stiffness = 2e10;        ///< k_w, wheel-track, normal to the track [N/m]
   double contact_shear_stiffness = 2e10;  ///< wheel-track along and across the track [N/m]
+  double guide_contact_height = 0.10;     ///< guide horn-rim contact above the link surface [m]
   double arm_damping = 0.0;               ///< rotary damper at each damped arm [N m s/rad]
 };
 

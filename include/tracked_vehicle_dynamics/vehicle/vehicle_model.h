@@ -13,12 +13,18 @@
 //   1                      hull centre of gravity
 //   10 + i                 named point i
 //   1000 + 100 s + 10 j    station j (0 = front) of side s (0 = left, +y; 1 = right):
-//                          + 0 pivot on the hull, + 1 arm at the pivot, + 2 wheel centre
+//                          + 0 pivot on the hull, + 1 arm at the pivot, + 2 wheel centre,
+//                          + 3 / + 4 contact patch on the wheel / on the link,
+//                          + 5 / + 6 guide-horn contact on the wheel / on the link
 //   2000 + 100 s           sprocket centre; + 1 idler centre; + 10 + r return roller r
 //   100000 (s + 1) + 100 k track assembly k of side s (k = 0 at the rear end of the ground run,
-//                          counting forward along the ground, then around the loop)
+//                          counting forward along the ground, then around the loop); + 60 / + 61
+//                          its contact pair with a sprocket, idler or roller (tracked only)
+//   500000 + 10000 s + 100 j  the assembly under station j (untracked only: centred under the
+//                          wheel, while the chain's pitch does not fit the axle spacing)
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -50,6 +56,7 @@ struct WheelStation {
   NodeId arm = 0;          ///< arm side of the revolute joint; its ry is the station's DOF
   NodeId centre = 0;       ///< wheel centre (slave of the arm)
   int assembly = -1;       ///< index into VehicleLayout::assemblies of the assembly it stands on
+  std::size_t contact_spring = 0;  ///< index into Model::springs of its normal contact
 };
 
 /// One track assembly of the model.
@@ -67,6 +74,7 @@ struct RoadInput {
   int assembly = 0;        ///< index into VehicleLayout::assemblies
   double x = 0.0;          ///< [m]
   double y = 0.0;          ///< [m]
+  std::size_t spring = 0;  ///< index into Model::springs of its ground spring
 };
 
 /// Masses by part [kg].

@@ -1,0 +1,56 @@
+// Road inputs of a vehicle travelling over a height field (paper §4.2.1): every ground input q
+// samples the terrain at its own position as the vehicle advances,
+//   u_q(t)  = h(s(t) + x_q, y_q + y_0)
+//   u_q'(t) = v(t) dh/dx(s(t) + x_q, y_q + y_0)
+// with s(t) = integral of v dt the travelled station [m], (x_q, y_q) the input's position in the
+// vehicle frame [m] (x forward, y left) and y_0 the lateral offset of the path [m]. The four
+// profile lines of the paper's Fig. 17 (left/right x inner/outer pads) follow from the inputs'
+// own y_q.
+#pragma once
+
+#include <cmath>
+#include <string>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+class RoadExcitation {
+ public:
+  /// input_x, input_y [m]: one entry per road input (e.g. SecondOrderSystem::input_stations,
+  /// input_lateral). Throws InputError for different lengths or non-finite positions.
+  RoadExcitation(const Vector& input_x, const Vector& input_y, double lateral_offset = 0.0)
+      : x_(input_x), y_(input_y.array() + lateral_offset) {
+    if (input_x.size() != input_y.size())
+      throw InputError("road excitation: " + std::to_string(input_x.size()) + " input stations but " +
+                       std::to_string(input_y.size()) + " lateral positions");
+    if (!input_x.allFinite() || !input_y.allFinite() || !std::isfinite(lateral_offset))
+      throw InputError("road excitation: input positions must be finite");
+  }
+
+  DofIndex inputCount() const { return x_.size(); }
+  /// w = [u; u'] [2 n_inputs] into `w` (resized once) at station s [m] and speed v [m/s].
+  /// `terrain` is any height source with height(x, y) and slope(x, y) [m, -].
+  template <typename HeightSource>
+  void sample(const HeightSource& terrain, double station, double speed, Vector& w) const {
+    const DofIndex n = x_.size();
+    if (w.size() != 2 * n) w.resize(2 * n);
+    for (DofIndex q = 0; q < n; ++q) {
+      const double x = station + x_(q);
+      w(q) = terrain.height(x, y_(q));
+      w(n + q) = speed * terrain.slope(x, y_(q));
+    }
+  }
+
+  const Vector& inputX() const { return x_; }
+  const Vector& inputY() const { return y_; }  ///< including the lateral offset
+
+ private:
+  Vector x_;
+  Vector y_;
+};
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,55 @@
+// Every parameter of vehicle_dynamics_node, read once at construction by readParameters()
+// (STYLE.md #4). Defaults come from the core's option structs (OnlineVehicleOptions,
+// VehicleReductionOptions); config/vehicle_dynamics.yaml documents each key with unit and default.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <ros/node_handle.h>
+
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+/// A missing or invalid parameter; the message starts with the parameter's resolved name.
+class ParameterError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct NodeParameters {
+  std::string vehicle;  ///< ~vehicle: description YAML file (required)
+  vehicle::Variant variant = vehicle::Variant::Tracked;  ///< ~variant
+  std::string cache_dir;  ///< ~cache_dir; default $ROS_HOME/tracked_vehicle_dynamics (~/.ros/...)
+  OnlineVehicleOptions vehicle_options;                  ///< ~rate, ~method, ~hold, ~lateral_offset, ...
+  reduction::VehicleReductionOptions reduction_options;  ///< ~reduction/*
+  double publish_rate = 0.0;   ///< ~publish_rate [Hz], default ~rate
+  double comfort_rate = 10.0;  ///< ~comfort_rate [Hz]
+  double max_speed = 30.0;     ///< ~max_speed [m/s]; faster speed messages are rejected
+  double catch_up_limit = 0.1; ///< ~catch_up_limit [s] of simulated time caught up at once
+  std::string odom_frame = "odom";       ///< ~odom_frame
+  std::string base_frame = "base_link";  ///< ~base_frame
+  std::string frame_prefix;              ///< ~frame_prefix, before wheel and point frame ids
+  /// ~points: named points published as frames; empty: all points of the description.
+  std::vector<std::string> points;
+  bool publish_points_all = true;  ///< true when ~points was not given
+};
+
+/// $ROS_HOME/tracked_vehicle_dynamics, or $HOME/.ros/tracked_vehicle_dynamics.
+std::string defaultCacheDirectory();
+
+/// Reads every parameter from the private node handle. Throws ParameterError naming the
+/// parameter for a missing ~vehicle, a wrong type or an out-of-range value.
+NodeParameters readParameters(const ros::NodeHandle& private_nh);
+
+/// "modal" / "exact" -> method; "first_order" / "zero_order" -> hold. Throw ParameterError.
+dynamics::DiscretizationMethod parseMethod(const std::string& text, const std::string& name);
+dynamics::InputHold parseHold(const std::string& text, const std::string& name);
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

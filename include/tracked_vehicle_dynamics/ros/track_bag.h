@@ -1,0 +1,69 @@
+// Rosbags of the paper's test tracks (terrain/tracks.h) driven at a constant speed, as the node
+// consumes them online: terrain patches published ahead of the vehicle, the speed, and optionally
+// /clock. Replay with `rosbag play --clock` and use_sim_time (launch/replay_track.launch).
+//
+// The run: the vehicle reference point starts at station 0 at bag time start_time and drives at
+// speed v until station s_end = track end + behind (the rear contacts have left the track), so it
+// lasts s_end / v. The terrain is the track sampled on its own grid (stations k * spacing, its
+// lateral lines), held flat beyond both ends (Terrain's edge rule), from station -behind to
+// s_end + lookahead, cut into patches of patch_length; a patch starting at station a is written
+// at the time the reference point reaches a - lookahead (at the start for the first ones), so
+// the buffer always holds at least `lookahead` metres ahead of the reference point.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ros/time.h>
+
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+struct TrackBagOptions {
+  std::string track = "long_hill";  ///< long_hill, separated_waves or oop_waves
+  double speed = 30.0 / 3.6;        ///< [m/s], > 0
+  double patch_length = 2.0;        ///< terrain per message [m]
+  double lookahead = 10.0;          ///< terrain published ahead of the reference point [m]
+  double behind = 5.0;              ///< terrain before station 0 and run-out after the track [m]
+  double speed_rate = 50.0;         ///< speed messages [Hz]
+  double clock_rate = 0.0;          ///< /clock messages in the bag [Hz]; 0: none
+  /// Vehicle centre line on the track, y_t [m]; unset: the track's default (terrain/tracks.h).
+  std::optional<double> lateral_offset;
+  double start_time = 1000.0;  ///< bag time of the start [s] (> 0: time 0 means "no clock")
+  std::string terrain_topic = "/terrain_profile";
+  std::string speed_topic = "/speed";
+  std::string frame_id = "odom";
+};
+
+struct TrackBagSummary {
+  std::size_t patches = 0;
+  std::size_t speed_messages = 0;
+  std::size_t clock_messages = 0;
+  double duration = 0.0;     ///< [s]
+  double end_station = 0.0;  ///< s_end [m]
+  double covered_from = 0.0, covered_until = 0.0;  ///< terrain written [m]
+};
+
+/// Writes the bag. Throws InputError naming the option for invalid options or an unknown track,
+/// rosbag::BagException when the file cannot be written.
+TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options);
+
+/// What a track bag holds, in core terms, in bag order.
+struct TrackBagContent {
+  std::vector<std::pair<ros::Time, TerrainPatch>> patches;
+  std::vector<std::pair<ros::Time, double>> speeds;  ///< [m/s]
+  std::vector<ros::Time> clocks;
+};
+
+/// Reads the terrain, speed and /clock messages of a bag. Throws rosbag::BagException when the
+/// file cannot be read, InputError for a malformed terrain message.
+TrackBagContent readTrackBag(const std::string& path, const std::string& terrain_topic =
+                                                          "/terrain_profile",
+                             const std::string& speed_topic = "/speed");
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,131 @@
+// vehicle_dynamics_node: the reduced vehicle model in real time on ROS time (doc/ros_node.md).
+//
+//   terrain_profile (TerrainProfile) ──► OnlineVehicle::addTerrain   (TerrainBuffer)
+//   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
+//   ros::Timer at ~rate on ROS time  ──► OnlineVehicle::step() for every step due
+//       ──► tf2 odom→base_link→{road wheels, named points}, hull/accel, hull/twist, road_wheels,
+//           comfort, /diagnostics
+//
+// Time: the node keeps the time of its current sample. Each timer tick runs every fixed step due
+// up to ROS time now (so use_sim_time with `rosbag play --clock` works and a late tick is caught
+// up); more than ~catch_up_limit of simulated time is not caught up: the older part is skipped
+// (resynchronisation, warned and counted). ROS time going backwards (a bag loop) resets the
+// vehicle. Bad input never stops the node: it is rejected or held, with a throttled warning and
+// a diagnostics entry.
+//
+// Threading: every callback runs on the single spinner thread (ros::spin), so the node needs no
+// locks and the step order is deterministic.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <diagnostic_updater/diagnostic_updater.h>
+#include <geometry_msgs/AccelStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/TwistStamped.h>
+#include <ros/ros.h>
+#include <std_msgs/Float64.h>
+#include <std_srvs/Empty.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include "tracked_vehicle_dynamics/Comfort.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+#include "tracked_vehicle_dynamics/TerrainProfile.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/ros/duration_statistics.h"
+#include "tracked_vehicle_dynamics/ros/node_parameters.h"
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+class VehicleDynamicsNode {
+ public:
+  /// Reads the parameters, loads or builds the reduced model, advertises, subscribes and starts
+  /// the loop. Throws ParameterError naming the parameter (or the description file) at fault.
+  VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+
+ private:
+  /// Counts of what happened, for diagnostics (never reset).
+  struct Events {
+    std::uint64_t patches_accepted = 0, patches_rejected = 0;
+    std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
+    std::uint64_t uncovered_steps = 0;  // steps with at least one contact off the terrain
+    std::uint64_t diverged = 0;
+    std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
+    std::uint64_t ticks = 0, late_ticks = 0;  // late: more than one step due at a tick
+    std::uint64_t resets = 0;
+  };
+  /// Change of a counter since the previous diagnostics report.
+  struct Window {
+    std::uint64_t last = 0;
+    std::uint64_t delta(std::uint64_t total) {
+      const std::uint64_t d = total - last;
+      last = total;
+      return d;
+    }
+  };
+
+  void loadVehicle();
+  void setUpFrames();
+  void onTerrain(const TerrainProfile::ConstPtr& msg);
+  void onSpeed(const std_msgs::Float64::ConstPtr& msg);
+  bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
+  void onTimer(const ros::TimerEvent& event);
+  /// Runs the steps due up to `now` and publishes.
+  void advanceTo(const ros::Time& now);
+  /// Vehicle back to equilibrium at station 0, terrain and metrics cleared.
+  void restart();
+  void publishState();
+  void publishComfort();
+
+  void diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void diagnoseTerrain(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status);
+
+  ros::NodeHandle nh_, private_nh_;
+  NodeParameters params_;
+
+  std::unique_ptr<OnlineVehicle> vehicle_;
+  reduction::VehicleReductionReport report_;
+  double load_seconds_ = 0.0;
+  DofIndex model_dofs_ = 0, model_inputs_ = 0, model_outputs_ = 0;
+  std::string model_damping_;
+  std::vector<std::size_t> published_points_;  // indices into geometry().points
+
+  ros::Subscriber terrain_sub_, speed_sub_;
+  ros::Publisher accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
+  ros::ServiceServer reset_service_;
+  tf2_ros::TransformBroadcaster tf_broadcaster_;
+  diagnostic_updater::Updater updater_;
+  ros::Timer timer_;
+
+  // Messages reused every publication.
+  std::vector<geometry_msgs::TransformStamped> transforms_;
+  geometry_msgs::AccelStamped accel_msg_;
+  geometry_msgs::TwistStamped twist_msg_;
+  RoadWheels wheels_msg_;
+  Comfort comfort_msg_;
+
+  // Time keeping: sim_time_ is the ROS time of the vehicle's current sample.
+  bool clock_started_ = false;
+  ros::Time sim_time_;
+  std::int64_t step_ns_ = 0;
+  std::int64_t max_catch_up_steps_ = 1;
+  std::int64_t publish_every_ = 1, comfort_every_ = 100;
+  std::int64_t steps_since_start_ = 0;
+
+  Events events_;
+  Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
+      terrain_uncovered_, speed_rejected_;
+  std::string last_patch_error_, last_speed_error_;
+  std::int64_t max_steps_in_tick_ = 0;
+  DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
+};
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,34 @@
+// Static equilibrium of a vehicle model under its own weight (linear statics K x = f_g): hull
+// sag and attitude, road-wheel and pad loads, and the balance of ground reactions and weight.
+#pragma once
+
+#include <vector>
+
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+struct StaticSummary {
+  double hull_sag = 0.0;     ///< vertical displacement of the hull CoG [m] (negative: down)
+  double hull_pitch = 0.0;   ///< rotation about +y [rad] (positive: nose down)
+  double hull_roll = 0.0;    ///< rotation about +x [rad] (positive: left side up)
+  std::vector<double> wheel_loads;  ///< normal force of each road wheel on the track [N]
+                                    ///< (VehicleLayout::wheels order, positive: compression)
+  std::vector<double> pad_loads;    ///< vertical ground reaction at each road input [N]
+                                    ///< (VehicleLayout::road_inputs order, positive: upwards)
+  double ground_reaction = 0.0;     ///< sum of the vertical ground reactions [N]
+  double weight = 0.0;              ///< total weight m g [N]
+  double residual = 0.0;            ///< ||K x - f|| / ||f|| of the static solve
+
+  /// |ground_reaction - weight| / weight.
+  double balanceError() const;
+};
+
+/// Solves the gravity load case of an assembled vehicle model. Throws SolverError if the model
+/// is not supported (a free rigid-body motion).
+StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system);
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

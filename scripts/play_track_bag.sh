@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Plays the rosbag of a paper test track at a constant speed with --clock (1 kHz), writing it
+# first with tvd_make_bag when it is not there yet.
+#   play_track_bag.sh TRACK SPEED_KMH BAG_DIR [rosbag play options...]
+# TRACK: long_hill | separated_waves | oop_waves. The bag is BAG_DIR/TRACK_SPEEDkmh.bag.
+# Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
+set -euo pipefail
+args=()
+for a in "$@"; do
+  case "$a" in
+    __*:=*) ;;
+    *) args+=("$a") ;;
+  esac
+done
+track=${args[0]:-long_hill}
+speed=${args[1]:-30}
+dir=${args[2]:-/tmp/tvd_bags}
+extra=("${args[@]:3}")
+bag="$dir/${track}_${speed}kmh.bag"
+mkdir -p "$dir"
+if [ ! -s "$bag" ]; then
+  tmp="$dir/.${track}_${speed}kmh.$$.bag"
+  rosrun tracked_vehicle_dynamics tvd_make_bag --track "$track" --speed-kmh "$speed" --out "$tmp"
+  mv -f "$tmp" "$bag"
+fi
+exec rosbag play --clock --hz=1000 "${extra[@]}" "$bag"

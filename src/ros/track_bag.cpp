@@ -1,0 +1,130 @@
+#include "tracked_vehicle_dynamics/ros/track_bag.h"
+
+#include <cmath>
+#include <sstream>
+
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+#include <rosgraph_msgs/Clock.h>
+#include <std_msgs/Float64.h>
+
+#include "tracked_vehicle_dynamics/TerrainProfile.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+namespace {
+
+void require(bool valid, const std::string& field, double value, const std::string& what) {
+  if (!valid) {
+    std::ostringstream message;
+    message << "track bag: " << field << " = " << value << " must be " << what;
+    throw InputError(message.str());
+  }
+}
+
+void checkOptions(const TrackBagOptions& o) {
+  require(std::isfinite(o.speed) && o.speed > 0.0, "speed", o.speed, "> 0 m/s");
+  require(std::isfinite(o.patch_length) && o.patch_length > 0.0, "patch_length", o.patch_length,
+          "> 0 m");
+  require(std::isfinite(o.lookahead) && o.lookahead >= 0.0, "lookahead", o.lookahead, ">= 0 m");
+  require(std::isfinite(o.behind) && o.behind >= 0.0, "behind", o.behind, ">= 0 m");
+  require(std::isfinite(o.speed_rate) && o.speed_rate > 0.0, "speed_rate", o.speed_rate, "> 0 Hz");
+  require(std::isfinite(o.clock_rate) && o.clock_rate >= 0.0, "clock_rate", o.clock_rate,
+          ">= 0 Hz");
+  require(std::isfinite(o.start_time) && o.start_time > 0.0 && o.start_time < 4e9, "start_time",
+          o.start_time, "in (0, 4e9) s");
+}
+
+}  // namespace
+
+TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options) {
+  checkOptions(options);
+  terrain::TrackOptions track_options;
+  track_options.lateral_offset = options.lateral_offset;
+  const terrain::Terrain track = terrain::makeTrack(options.track, track_options);
+  const double spacing = track.spacing();
+  const double v = options.speed;
+
+  TrackBagSummary summary;
+  summary.end_station = track.endStation() + options.behind;
+  summary.duration = summary.end_station / v;
+  const ros::Time start(options.start_time);
+  const auto at = [&](double t) { return start + ros::Duration(t); };
+
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  // Terrain on the track's own grid, stations k * spacing, patch by patch.
+  const auto first = static_cast<long>(std::floor(-options.behind / spacing + 1e-9));
+  const auto last =
+      static_cast<long>(std::ceil((summary.end_station + options.lookahead) / spacing - 1e-9));
+  const auto per_patch = std::max(1L, std::lround(options.patch_length / spacing));
+  TerrainPatch patch;
+  patch.spacing = spacing;
+  patch.lateral = track.lateral();
+  TerrainProfile msg;
+  msg.header.frame_id = options.frame_id;
+  for (long k0 = first; k0 <= last; k0 += per_patch) {
+    const long n = std::min(per_patch, last - k0 + 1);
+    patch.start_station = static_cast<double>(k0) * spacing;
+    patch.heights.resize(track.lateral().size(), n);
+    for (Eigen::Index j = 0; j < track.lateral().size(); ++j) {
+      for (long i = 0; i < n; ++i) {
+        patch.heights(j, i) = track.height(static_cast<double>(k0 + i) * spacing, track.lateral()(j));
+      }
+    }
+    const double t = std::max(0.0, (patch.start_station - options.lookahead) / v);
+    msg.header.seq = static_cast<std::uint32_t>(summary.patches);
+    msg.header.stamp = at(t);
+    toMsg(patch, &msg);
+    bag.write(options.terrain_topic, at(t), msg);
+    ++summary.patches;
+  }
+  summary.covered_from = static_cast<double>(first) * spacing;
+  summary.covered_until = static_cast<double>(last) * spacing;
+
+  std_msgs::Float64 speed;
+  speed.data = v;
+  const auto speed_count = static_cast<long>(std::floor(summary.duration * options.speed_rate)) + 1;
+  for (long k = 0; k < speed_count; ++k) {
+    bag.write(options.speed_topic, at(static_cast<double>(k) / options.speed_rate), speed);
+    ++summary.speed_messages;
+  }
+  if (options.clock_rate > 0.0) {
+    rosgraph_msgs::Clock clock;
+    const auto clock_count =
+        static_cast<long>(std::floor(summary.duration * options.clock_rate)) + 1;
+    for (long k = 0; k < clock_count; ++k) {
+      clock.clock = at(static_cast<double>(k) / options.clock_rate);
+      bag.write("/clock", clock.clock, clock);
+      ++summary.clock_messages;
+    }
+  }
+  bag.close();
+  return summary;
+}
+
+TrackBagContent readTrackBag(const std::string& path, const std::string& terrain_topic,
+                             const std::string& speed_topic) {
+  rosbag::Bag bag(path, rosbag::bagmode::Read);
+  rosbag::View view(bag, rosbag::TopicQuery({terrain_topic, speed_topic, "/clock"}));
+  TrackBagContent content;
+  for (const rosbag::MessageInstance& m : view) {
+    if (m.getTopic() == terrain_topic) {
+      if (const auto msg = m.instantiate<TerrainProfile>()) {
+        content.patches.emplace_back(m.getTime(), fromMsg(*msg));
+      }
+    } else if (m.getTopic() == speed_topic) {
+      if (const auto msg = m.instantiate<std_msgs::Float64>()) {
+        content.speeds.emplace_back(m.getTime(), msg->data);
+      }
+    } else if (const auto msg = m.instantiate<rosgraph_msgs::Clock>()) {
+      content.clocks.push_back(msg->clock);
+    }
+  }
+  return content;
+}
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

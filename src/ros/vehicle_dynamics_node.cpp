@@ -1,0 +1,419 @@
+#include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Throttle period of repeated warnings [s].
+constexpr double kWarnPeriod = 5.0;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+const char* methodName(dynamics::DiscretizationMethod method) {
+  return method == dynamics::DiscretizationMethod::ModalDecoupled ? "modal" : "exact";
+}
+
+const char* holdName(dynamics::InputHold hold) {
+  return hold == dynamics::InputHold::FirstOrder ? "first_order" : "zero_order";
+}
+
+}  // namespace
+
+VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
+    : nh_(nh),
+      private_nh_(private_nh),
+      params_(readParameters(private_nh)),
+      updater_(nh, private_nh) {
+  loadVehicle();
+  setUpFrames();
+
+  const double rate = params_.vehicle_options.rate;
+  step_ns_ = std::max<std::int64_t>(1, std::llround(1e9 / rate));
+  max_catch_up_steps_ = std::max<std::int64_t>(1, std::llround(params_.catch_up_limit * rate));
+  publish_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.publish_rate));
+  comfort_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.comfort_rate));
+
+  accel_pub_ = nh_.advertise<geometry_msgs::AccelStamped>("hull/accel", 10);
+  twist_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("hull/twist", 10);
+  wheels_pub_ = nh_.advertise<RoadWheels>("road_wheels", 10);
+  comfort_pub_ = nh_.advertise<Comfort>("comfort", 10);
+  reset_service_ = private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
+
+  updater_.setHardwareID(report_.cache_file.empty() ? vehicle_->geometry().vehicle_name
+                                                    : vehicle_->geometry().vehicle_name + " (" +
+                                                          report_.cache_file + ")");
+  updater_.add("loop", this, &VehicleDynamicsNode::diagnoseLoop);
+  updater_.add("terrain", this, &VehicleDynamicsNode::diagnoseTerrain);
+  updater_.add("speed", this, &VehicleDynamicsNode::diagnoseInput);
+  updater_.add("model", this, &VehicleDynamicsNode::diagnoseModel);
+
+  // Subscribed last: nothing arrives before the vehicle exists. The no-delay hint keeps the
+  // message -> step latency low.
+  terrain_sub_ = nh_.subscribe("terrain_profile", 100, &VehicleDynamicsNode::onTerrain, this,
+                               ros::TransportHints().tcpNoDelay());
+  speed_sub_ = nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
+                             ros::TransportHints().tcpNoDelay());
+  timer_ = nh_.createTimer(ros::Duration(1.0 / rate), &VehicleDynamicsNode::onTimer, this);
+  ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %.0f Hz, %s/%s",
+           vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
+           params_.publish_rate, methodName(params_.vehicle_options.method),
+           holdName(params_.vehicle_options.hold));
+}
+
+void VehicleDynamicsNode::loadVehicle() {
+  const auto start = Clock::now();
+  const std::string vehicle_param = private_nh_.resolveName("vehicle");
+  try {
+    const reduction::ReducedModel model =
+        reduction::loadOrReduceVehicle(params_.vehicle, params_.variant, params_.cache_dir,
+                                       params_.reduction_options, &report_);
+    const vehicle::VehicleDescription description =
+        vehicle::loadVehicleDescription(params_.vehicle);
+    vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
+                                               params_.vehicle_options);
+    model_dofs_ = model.size();
+    model_inputs_ = model.system.inputCount();
+    model_outputs_ = model.system.outputCount();
+    model_damping_ = model.damping;
+  } catch (const Error& e) {
+    throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
+  }
+  load_seconds_ = secondsSince(start);
+  ROS_INFO("vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+           "inputs, %ld outputs (%s)",
+           report_.from_cache ? "loaded" : "built and cached",
+           vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
+           static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+           static_cast<long>(model_outputs_), report_.cache_file.c_str());
+  if (!report_.cache_note.empty()) ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
+}
+
+void VehicleDynamicsNode::setUpFrames() {
+  const VehicleGeometry& geometry = vehicle_->geometry();
+  if (params_.publish_points_all) {
+    for (std::size_t i = 0; i < geometry.points.size(); ++i) published_points_.push_back(i);
+  } else {
+    for (const std::string& name : params_.points) {
+      const auto it = std::find_if(geometry.points.begin(), geometry.points.end(),
+                                   [&](const VehicleGeometry::Body& b) { return b.name == name; });
+      if (it == geometry.points.end()) {
+        std::string known;
+        for (const auto& p : geometry.points) known += (known.empty() ? "" : ", ") + p.name;
+        throw ParameterError(private_nh_.resolveName("points") + ": unknown point '" + name +
+                             "' (the description has: " + known + ")");
+      }
+      published_points_.push_back(static_cast<std::size_t>(it - geometry.points.begin()));
+    }
+  }
+  transforms_.resize(1 + geometry.wheels.size() + published_points_.size());
+  transforms_[0].header.frame_id = params_.odom_frame;
+  transforms_[0].child_frame_id = params_.base_frame;
+  std::size_t k = 1;
+  for (const auto& wheel : geometry.wheels) {
+    transforms_[k].header.frame_id = params_.base_frame;
+    transforms_[k++].child_frame_id = params_.frame_prefix + wheel.name;
+  }
+  for (std::size_t i : published_points_) {
+    transforms_[k].header.frame_id = params_.base_frame;
+    transforms_[k++].child_frame_id = params_.frame_prefix + geometry.points[i].name;
+  }
+  accel_msg_.header.frame_id = params_.base_frame;
+  twist_msg_.header.frame_id = params_.base_frame;
+  wheels_msg_.header.frame_id = params_.base_frame;
+  comfort_msg_.header.frame_id = params_.base_frame;
+}
+
+void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
+  try {
+    vehicle_->addTerrain(fromMsg(*msg));
+    ++events_.patches_accepted;
+  } catch (const Error& e) {
+    ++events_.patches_rejected;
+    last_patch_error_ = e.what();
+    ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: terrain patch rejected: %s", e.what());
+  }
+}
+
+void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
+  const double v = msg->data;
+  std::string why;
+  if (!std::isfinite(v)) {
+    why = "speed is not finite";
+  } else if (v < 0.0) {
+    why = "negative speed " + std::to_string(v) + " m/s (reverse driving is not modelled)";
+  } else if (v > params_.max_speed) {
+    why = "speed " + std::to_string(v) + " m/s above ~max_speed " +
+          std::to_string(params_.max_speed) + " m/s";
+  }
+  if (!why.empty()) {
+    ++events_.speeds_rejected;
+    last_speed_error_ = why;
+    ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: %s; keeping %.3f m/s", why.c_str(),
+                      vehicle_->speed());
+    return;
+  }
+  vehicle_->setSpeed(v);
+  ++events_.speeds_accepted;
+}
+
+bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  ROS_INFO("vehicle_dynamics_node: reset requested: back to static equilibrium at station 0");
+  restart();
+  if (clock_started_) publishState();
+  return true;
+}
+
+void VehicleDynamicsNode::restart() {
+  vehicle_->reset();
+  ++events_.resets;
+}
+
+void VehicleDynamicsNode::onTimer(const ros::TimerEvent&) {
+  const ros::Time now = ros::Time::now();
+  if (now.isZero()) return;  // use_sim_time and no /clock yet
+  advanceTo(now);
+  updater_.update();
+}
+
+void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
+  const auto tick_start = Clock::now();
+  ++events_.ticks;
+  if (!clock_started_) {
+    clock_started_ = true;
+    sim_time_ = now;
+    publishState();
+    return;
+  }
+  const std::int64_t ahead_ns = (now - sim_time_).toNSec();
+  if (ahead_ns < -step_ns_) {
+    // A bag loop or a clock reset: the terrain and station of the past no longer apply.
+    ++events_.time_jumps_back;
+    ROS_WARN_THROTTLE(kWarnPeriod,
+                      "vehicle_dynamics_node: ROS time jumped back by %.3f s: resetting the vehicle "
+                      "to equilibrium at station 0",
+                      -ahead_ns * 1e-9);
+    restart();
+    sim_time_ = now;
+    publishState();
+    updater_.force_update();
+    return;
+  }
+  std::int64_t due = ahead_ns > 0 ? ahead_ns / step_ns_ : 0;
+  if (due == 0) return;
+  if (due > 1) ++events_.late_ticks;
+  if (due > max_catch_up_steps_) {
+    const std::int64_t skipped = due - max_catch_up_steps_;
+    ++events_.resyncs;
+    events_.skipped_steps += static_cast<std::uint64_t>(skipped);
+    ROS_WARN_THROTTLE(kWarnPeriod,
+                      "vehicle_dynamics_node: %.3f s behind ROS time, more than ~catch_up_limit "
+                      "(%.3f s): skipping %.3f s and resynchronising",
+                      ahead_ns * 1e-9, params_.catch_up_limit, skipped * step_ns_ * 1e-9);
+    sim_time_ += ros::Duration().fromNSec(skipped * step_ns_);
+    due = max_catch_up_steps_;
+  }
+  max_steps_in_tick_ = std::max(max_steps_in_tick_, due);
+  for (std::int64_t k = 0; k < due; ++k) {
+    const auto step_start = Clock::now();
+    const StepResult result = vehicle_->step();
+    const double step_seconds = secondsSince(step_start);
+    step_window_.add(step_seconds);
+    step_total_.add(step_seconds);
+    sim_time_ += ros::Duration().fromNSec(step_ns_);
+    ++steps_since_start_;
+    if (result.uncovered > 0) {
+      ++events_.uncovered_steps;
+      ROS_WARN_THROTTLE(kWarnPeriod,
+                        "vehicle_dynamics_node: no terrain under %d of %d contacts at station "
+                        "%.2f m (terrain covers %.2f .. %.2f m): holding their last height",
+                        result.uncovered, vehicle_->sampler().size(), vehicle_->station(),
+                        vehicle_->terrain().coveredFrom(), vehicle_->terrain().coveredUntil());
+    }
+    if (result.diverged) {
+      ++events_.diverged;
+      ROS_ERROR_THROTTLE(kWarnPeriod,
+                         "vehicle_dynamics_node: non-finite outputs: back to equilibrium");
+    }
+    if (steps_since_start_ % publish_every_ == 0) publishState();
+    if (steps_since_start_ % comfort_every_ == 0) publishComfort();
+  }
+  const double tick_seconds = secondsSince(tick_start);
+  tick_window_.add(tick_seconds);
+  tick_total_.add(tick_seconds);
+}
+
+void VehicleDynamicsNode::publishState() {
+  const OnlineVehicle& v = *vehicle_;
+  const RigidPose pose = v.hullPose();
+  const Matrix3 to_base = pose.rotation.toRotationMatrix().transpose();
+
+  for (auto& t : transforms_) t.header.stamp = sim_time_;
+  toMsg(pose, &transforms_[0].transform);
+  std::size_t k = 1;
+  RigidPose relative;
+  for (std::size_t i = 0; i < v.geometry().wheels.size(); ++i) {
+    relative.translation = v.wheelPosition(i);
+    toMsg(relative, &transforms_[k++].transform);
+  }
+  for (std::size_t i : published_points_) {
+    relative.translation = v.pointPosition(i);
+    toMsg(relative, &transforms_[k++].transform);
+  }
+  tf_broadcaster_.sendTransform(transforms_);
+
+  // Hull CoG motion in base_link axes; the travel speed is part of the hull's velocity.
+  const Vector6 velocity = v.hullVelocity();
+  const Vector6 acceleration = v.hullAcceleration();
+  twist_msg_.header.stamp = sim_time_;
+  twist_msg_.twist.linear =
+      toMsg(to_base * (velocity.head<3>() + Vector3(v.speed(), 0.0, 0.0)));
+  twist_msg_.twist.angular = toMsg(to_base * velocity.tail<3>());
+  twist_pub_.publish(twist_msg_);
+  accel_msg_.header.stamp = sim_time_;
+  accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
+  accel_msg_.accel.angular = toMsg(to_base * acceleration.tail<3>());
+  accel_pub_.publish(accel_msg_);
+
+  wheels_msg_.header.stamp = sim_time_;
+  toMsg(v.wheels(), v.station(), v.speed(), &wheels_msg_);
+  wheels_pub_.publish(wheels_msg_);
+}
+
+void VehicleDynamicsNode::publishComfort() {
+  if (comfort_pub_.getNumSubscribers() == 0) return;
+  const dynamics::ComfortMeter& meter = vehicle_->comfort();
+  ComfortReport report;
+  report.point = vehicle_->comfortPoint();
+  report.metrics = meter.metrics();
+  report.running_rms = meter.runningRms();
+  report.running_rms_time = params_.vehicle_options.comfort_running_rms_time;
+  report.peak_acceleration = vehicle_->peakAcceleration();
+  comfort_msg_.header.stamp = sim_time_;
+  toMsg(report, &comfort_msg_);
+  comfort_pub_.publish(comfort_msg_);
+}
+
+void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const double period = 1.0 / params_.vehicle_options.rate;
+  const std::uint64_t resyncs = loop_resyncs_.delta(events_.resyncs);
+  const std::uint64_t late = loop_late_.delta(events_.late_ticks);
+  const std::uint64_t jumps = loop_jumps_.delta(events_.time_jumps_back);
+  const std::uint64_t diverged = loop_diverged_.delta(events_.diverged);
+  const double step_p99 = step_window_.percentile(0.99);
+  if (!clock_started_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for ROS time (/clock)");
+  } else if (diverged > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite outputs: reset");
+  } else if (resyncs > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "fell behind ROS time beyond ~catch_up_limit: resynchronised");
+  } else if (jumps > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "ROS time jumped backwards: vehicle reset");
+  } else if (step_p99 > period) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "step time p99 exceeds the period");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
+  }
+  status.add("rate [Hz]", params_.vehicle_options.rate);
+  status.add("steps", vehicle_->stepCount());
+  status.add("simulated time [s]", vehicle_->time());
+  status.add("station [m]", vehicle_->station());
+  status.add("speed [m/s]", vehicle_->speed());
+  status.add("ticks", events_.ticks);
+  status.add("late ticks (total)", events_.late_ticks);
+  status.add("late ticks (since last report)", late);
+  status.add("max steps in one tick", max_steps_in_tick_);
+  status.add("resynchronisations (total)", events_.resyncs);
+  status.add("skipped time [s]", events_.skipped_steps * period);
+  status.add("time jumps back (total)", events_.time_jumps_back);
+  status.add("resets (total)", events_.resets);
+  status.add("non-finite resets (total)", events_.diverged);
+  status.add("step time mean [us]", step_window_.mean() * 1e6);
+  status.add("step time p99 [us]", step_p99 * 1e6);
+  status.add("step time max [us]", step_window_.max() * 1e6);
+  status.add("tick time p99 [us]", tick_window_.percentile(0.99) * 1e6);
+  status.add("tick time max [us]", tick_window_.max() * 1e6);
+  status.add("step time p99 since start [us]", step_total_.percentile(0.99) * 1e6);
+  status.add("tick time p99 since start [us]", tick_total_.percentile(0.99) * 1e6);
+  step_window_.clear();
+  tick_window_.clear();
+}
+
+void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const std::uint64_t rejected = terrain_rejected_.delta(events_.patches_rejected);
+  const std::uint64_t uncovered = terrain_uncovered_.delta(events_.uncovered_steps);
+  const terrain::TerrainBuffer& buffer = vehicle_->terrain();
+  const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
+  if (buffer.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "no terrain: holding the last heights (flat at start)");
+  } else if (uncovered > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "terrain underrun: contacts off the terrain held at their last height");
+  } else if (rejected > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "terrain patches rejected");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "covered");
+  }
+  status.add("patches accepted (total)", events_.patches_accepted);
+  status.add("patches rejected (total)", events_.patches_rejected);
+  status.add("patches rejected (since last report)", rejected);
+  status.add("last rejection", last_patch_error_);
+  status.add("steps with uncovered contacts (total)", events_.uncovered_steps);
+  status.add("steps with uncovered contacts (since last report)", uncovered);
+  status.add("patches stored", buffer.patchCount());
+  status.add("covered from [m]", buffer.coveredFrom());
+  status.add("covered until [m]", buffer.coveredUntil());
+  status.add("coverage ahead of the front contact [m]", ahead);
+}
+
+void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const std::uint64_t rejected = speed_rejected_.delta(events_.speeds_rejected);
+  if (rejected > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "speed messages rejected");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
+  }
+  status.add("speed [m/s]", vehicle_->speed());
+  status.add("max speed [m/s]", params_.max_speed);
+  status.add("speeds accepted (total)", events_.speeds_accepted);
+  status.add("speeds rejected (total)", events_.speeds_rejected);
+  status.add("speeds rejected (since last report)", rejected);
+  status.add("last rejection", last_speed_error_);
+}
+
+void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                 report_.from_cache ? "loaded from cache" : "built and cached");
+  status.add("vehicle file", params_.vehicle);
+  status.add("vehicle", vehicle_->geometry().vehicle_name);
+  status.add("variant", vehicle::variantName(params_.variant));
+  status.add("reduced DOFs", static_cast<long>(model_dofs_));
+  status.add("road inputs", static_cast<long>(model_inputs_));
+  status.add("outputs", static_cast<long>(model_outputs_));
+  status.add("full-model DOFs", static_cast<long>(report_.full_dofs));
+  status.add("fixed-interface modes", report_.flexible_modes);
+  status.add("damping", model_damping_);
+  status.add("method", methodName(params_.vehicle_options.method));
+  status.add("hold", holdName(params_.vehicle_options.hold));
+  status.add("cache file", report_.cache_file);
+  status.add("cache note", report_.cache_note);
+  status.add("load time [s]", load_seconds_);
+  status.add("comfort point", vehicle_->comfortPoint());
+}
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

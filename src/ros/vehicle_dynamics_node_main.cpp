@@ -1,0 +1,18 @@
+// vehicle_dynamics_node: see doc/ros_node.md and include/tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h.
+#include <ros/ros.h>
+
+#include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "vehicle_dynamics_node");
+  ros::NodeHandle nh;
+  ros::NodeHandle private_nh("~");
+  try {
+    tracked_vehicle_dynamics::ros_layer::VehicleDynamicsNode node(nh, private_nh);
+    ros::spin();
+  } catch (const std::exception& e) {
+    ROS_FATAL("vehicle_dynamics_node: %s", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,206 @@
+// `tvd simulate`: time response of the reduced vehicle over a test track (paper §4.2).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "commands.h"
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+constexpr double kRadToDeg = 57.29577951308232;
+using Clock = std::chrono::steady_clock;
+
+struct SimulateOptions {
+  std::string vehicle_file;
+  std::string variant = "tracked";
+  std::string track = "long_hill";
+  double speed_kmh = 30.0;
+  double dt = 1e-3;
+  double lateral_offset = 0.0;
+  std::string method = "modal";
+  std::string cache_dir;
+  std::string out_file;
+  bool json = false;
+};
+
+std::string defaultCacheDir() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const char* home = std::getenv("HOME");
+  if (xdg && *xdg) return std::string(xdg) + "/tracked_vehicle_dynamics";
+  if (home && *home) return std::string(home) + "/.cache/tracked_vehicle_dynamics";
+  return "/tmp/tracked_vehicle_dynamics";
+}
+
+DofIndex rowOf(const std::vector<std::string>& names, const std::string& name) {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw InputError("simulate: the reduced model has no output '" + name + "'");
+  return static_cast<DofIndex>(it - names.begin());
+}
+
+void run(const SimulateOptions& opt) {
+  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
+    throw InputError("simulate: --speed-kmh must be in (0, 200], got " + std::to_string(opt.speed_kmh));
+  const terrain::Terrain track = [&] {
+    const auto names = terrain::trackNames();
+    if (std::find(names.begin(), names.end(), opt.track) != names.end()) return terrain::makeTrack(opt.track);
+    return terrain::loadTerrain(opt.track);
+  }();
+
+  reduction::VehicleReductionReport report;
+  const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
+      opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
+  const dynamics::SecondOrderSystem& sys = model.system;
+
+  dynamics::SimulatorOptions sim_options;
+  sim_options.time_step = opt.dt;
+  sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
+  sim_options.method = opt.method == "modal" ? dynamics::DiscretizationMethod::ModalDecoupled
+                                             : dynamics::DiscretizationMethod::AugmentedExponential;
+  sim_options.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Acceleration};
+  sim_options.generalized_force = model.gravity_load;
+  const auto setup_start = Clock::now();
+  dynamics::Simulator sim(sys, sim_options);
+  const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
+
+  const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
+  const double speed = opt.speed_kmh / 3.6;
+  // From the start of the track until the station has covered its length (paper: 30 m).
+  const double distance = track.endStation() - track.startStation();
+  const long steps = static_cast<long>(std::ceil(distance / speed / opt.dt));
+  Vector w;
+  road.sample(track, track.startStation(), speed, w);
+  const Vector u0 = w.head(road.inputCount());
+  // Start from static equilibrium on the entry of the track, at rest relative to it.
+  sim.reset(dynamics::staticEquilibrium(sys, u0, model.gravity_load), w);
+  const Vector y0 = sim.outputs();
+
+  const auto& names = sim.outputNames();
+  const DofIndex heave = rowOf(names, "hull uz/disp"), roll = rowOf(names, "hull rx/disp"),
+                 pitch = rowOf(names, "hull ry/disp"), accel = rowOf(names, "hull uz/acc");
+  std::vector<DofIndex> wheels;
+  std::vector<std::string> wheel_names;
+  for (DofIndex i = 0; i < static_cast<DofIndex>(sys.output_names.size()); ++i)
+    if (sys.output_names[i].rfind("road_wheel", 0) == 0) {
+      wheels.push_back(rowOf(names, sys.output_names[i] + "/disp"));
+      wheel_names.push_back(sys.output_names[i]);
+    }
+
+  Matrix series(steps + 1, 5 + wheels.size());
+  dynamics::ComfortMeter comfort(1.0 / opt.dt);
+  auto record = [&](long k) {
+    const Vector& y = sim.outputs();
+    series(k, 0) = k * opt.dt;
+    series(k, 1) = track.startStation() + speed * k * opt.dt;
+    series(k, 2) = y(heave) - y0(heave);
+    series(k, 3) = y(accel);
+    series(k, 4) = (y(pitch) - y0(pitch)) * kRadToDeg;
+    for (std::size_t j = 0; j < wheels.size(); ++j) series(k, 5 + j) = y(wheels[j]) - y0(wheels[j]);
+    comfort.add(y(accel));
+  };
+  double peak_roll = 0.0;
+  record(0);
+  const auto start = Clock::now();
+  for (long k = 1; k <= steps; ++k) {
+    road.sample(track, track.startStation() + speed * k * opt.dt, speed, w);
+    sim.step(w);
+    record(k);
+    peak_roll = std::max(peak_roll, std::abs(sim.outputs()(roll) - y0(roll)) * kRadToDeg);
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  const double simulated = steps * opt.dt;
+
+  const double peak_heave = series.col(2).cwiseAbs().maxCoeff();
+  const double peak_accel = series.col(3).cwiseAbs().maxCoeff();
+  const double peak_pitch = series.col(4).cwiseAbs().maxCoeff();
+  const double peak_wheel = wheels.empty() ? 0.0 : series.rightCols(wheels.size()).cwiseAbs().maxCoeff();
+
+  if (!opt.out_file.empty()) {
+    std::ofstream out(opt.out_file);
+    if (!out) throw InputError("cannot write " + opt.out_file);
+    out << "time_s,station_m,hull_heave_m,hull_vertical_accel_m_s2,hull_pitch_deg";
+    for (const auto& n : wheel_names) out << "," << n.substr(0, n.find(' ')) << "_m";
+    out << "\n" << std::setprecision(9);
+    for (Eigen::Index k = 0; k < series.rows(); ++k) {
+      for (Eigen::Index j = 0; j < series.cols(); ++j) out << (j ? "," : "") << series(k, j);
+      out << "\n";
+    }
+  }
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", opt.vehicle_file)
+        .field("variant", vehicle::variantName(variant))
+        .field("track", track.name())
+        .field("speed_kmh", opt.speed_kmh)
+        .field("time_step_s", opt.dt)
+        .field("reduced_dofs", static_cast<long long>(sys.size()))
+        .field("model_from_cache", report.from_cache)
+        .field("peak_hull_heave_m", peak_heave)
+        .field("peak_hull_vertical_accel_m_s2", peak_accel)
+        .field("peak_pitch_deg", peak_pitch)
+        .field("peak_roll_deg", peak_roll)
+        .field("peak_wheel_displacement_m", peak_wheel)
+        .key("comfort")
+        .beginObject()
+        .field("point", "hull")
+        .field("weighted_rms_m_s2", comfort.weightedRms())
+        .field("vdv_m_s1_75", comfort.vibrationDoseValue())
+        .endObject()
+        .field("simulated_seconds", simulated)
+        .field("wall_seconds", wall)
+        .field("setup_seconds", setup_seconds)
+        .field("real_time_factor", simulated / wall);
+    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    json.endObject();
+    return;
+  }
+  std::cout << std::fixed << std::setprecision(3) << track.name() << " at " << opt.speed_kmh
+            << " km/h, " << vehicle::variantName(variant) << " reduced model (" << sys.size()
+            << " DOFs" << (report.from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n"
+            << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
+            << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
+            << "  peak road-wheel displacement " << peak_wheel << " m\n"
+            << "  ISO 2631 Wk at the hull: a_w " << comfort.weightedRms() << " m/s^2, VDV "
+            << comfort.vibrationDoseValue() << " m/s^1.75\n"
+            << "  simulated " << simulated << " s in " << wall * 1e3 << " ms (real-time factor "
+            << std::setprecision(0) << simulated / wall << ")\n";
+}
+
+}  // namespace
+
+void registerSimulateCommand(CLI::App& app) {
+  auto opt = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand("simulate", "Time response of the reduced vehicle over a track");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
+  cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | terrain file (CSV/YAML)");
+  cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
+  cmd->add_option("--dt", opt->dt, "time step [s]")->check(CLI::Range(1e-5, 0.1));
+  cmd->add_option("--lateral-offset", opt->lateral_offset, "lateral offset of the path [m] (y left)");
+  cmd->add_option("--method", opt->method, "discretisation: modal (decoupled, fast) | exact (augmented exponential)")
+      ->check(CLI::IsMember({"modal", "exact"}));
+  cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
+  cmd->add_option("--out", opt->out_file, "time series CSV");
+  cmd->add_flag("--json", opt->json, "print a JSON summary");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

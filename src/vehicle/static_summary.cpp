@@ -1,0 +1,48 @@
+#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/fem/spring_element.h"
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+double StaticSummary::balanceError() const {
+  return weight > 0.0 ? std::abs(ground_reaction - weight) / weight : 0.0;
+}
+
+StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system) {
+  const fem::StaticResult r = fem::solveStatic(system, system.gravity_load);
+  const Vector u = system.dofs.transformation() * r.displacement;
+  auto nodal = [&](NodeId id) -> Vector6 {
+    return u.segment<kDofsPerNode>(system.dofs.physical(id, 0));
+  };
+  StaticSummary s;
+  s.residual = r.residual;
+  const Vector6 hull = nodal(vehicle.layout.hull);
+  s.hull_sag = hull(2);
+  s.hull_roll = hull(3);
+  s.hull_pitch = hull(4);
+  s.weight = vehicle.model.totalMass() * vehicle.model.gravity.norm();
+
+  const auto& springs = vehicle.model.springs;
+  for (const RoadInput& in : vehicle.layout.road_inputs) {
+    // Force of the ground on the node: -K_p q (the grounded bushing acts at its node).
+    const fem::Spring& g = springs[in.spring];
+    const Vector6 f = -fem::bushingMatrix(g.stiffness, g.frame) * nodal(in.node);
+    s.pad_loads.push_back(f(2));
+    s.ground_reaction += f(2);
+  }
+  for (const WheelStation& w : vehicle.layout.wheels) {
+    // Contact between coincident nodes (wheel side n1, link side n2): force on the link -K d,
+    // d = q2 - q1; the wheel load is its downward component.
+    const fem::Spring& c = springs[w.contact_spring];
+    const Vector6 f = -fem::bushingMatrix(c.stiffness, c.frame) * (nodal(c.n2) - nodal(c.n1));
+    s.wheel_loads.push_back(-f(2));
+  }
+  return s;
+}
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,213 @@
+// rostest tier 3 (end to end): a long-hill bag replayed with `rosbag play --clock` through the
+// node gives the hull heave, hull pitch and road-wheel displacements of an offline run of the same
+// core Simulator on the same track, within a fraction of the peak (node_long_hill_replay.test
+// holds the expected values and tolerances).
+//
+// Samples are matched by station: with a constant speed v the node's k-th moving step is at
+// s = k v h whenever it started moving, exactly as the offline run's k-th step.
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include <tf2_msgs/TFMessage.h>
+
+#include "node_test_utils.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+#include "tracked_vehicle_dynamics/dynamics/output_layout.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/ros/node_parameters.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+// A node station must be within this of k v h to be matched [m].
+constexpr double kStationMatch = 1e-6;
+
+struct NodeSample {
+  double station = 0.0;
+  std::vector<double> wheels;  // displacement from static [m]
+  bool has_pose = false;
+  RigidPose pose;
+};
+
+/// The offline run: hull heave, pitch and wheel displacements per step k (station k v h).
+struct Reference {
+  std::vector<double> heave, pitch;
+  std::vector<std::vector<double>> wheels;  // [k][wheel]
+  double heave_peak = 0.0, pitch_peak = 0.0, wheel_peak = 0.0;
+};
+
+Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry& geometry,
+                     const terrain::Terrain& track, double v, double rate, double end_station,
+                     dynamics::DiscretizationMethod method, dynamics::InputHold hold,
+                     double lateral_offset) {
+  const dynamics::SecondOrderSystem& sys = model.system;
+  dynamics::SimulatorOptions options;
+  options.time_step = 1.0 / rate;
+  options.hold = hold;
+  options.method = method;
+  options.generalized_force = model.gravity_load;
+  dynamics::Simulator sim(sys, options);
+  const Eigen::Index n = sys.inputCount();
+  const Vector z0 = dynamics::staticEquilibrium(sys, Vector::Zero(n), model.gravity_load);
+  sim.reset(z0, Vector::Zero(2 * n));
+  const dynamics::OutputLayout layout(sys.output_names, {dynamics::OutputQuantity::Displacement});
+  const Eigen::Index heave_row = layout.row("hull uz", dynamics::OutputQuantity::Displacement);
+  const Eigen::Index pitch_row = layout.row("hull ry", dynamics::OutputQuantity::Displacement);
+  std::vector<Eigen::Index> wheel_rows;
+  for (const auto& w : geometry.wheels) {
+    wheel_rows.push_back(layout.row(w.name + " uz", dynamics::OutputQuantity::Displacement));
+  }
+  const Vector rest = sim.outputs();
+  Reference ref;
+  auto record = [&] {
+    const Vector& y = sim.outputs();
+    ref.heave.push_back(y(heave_row));
+    ref.pitch.push_back(y(pitch_row));
+    std::vector<double> wheels;
+    for (Eigen::Index r : wheel_rows) wheels.push_back(y(r) - rest(r));
+    ref.wheels.push_back(wheels);
+    ref.heave_peak = std::max(ref.heave_peak, std::abs(y(heave_row) - rest(heave_row)));
+    ref.pitch_peak = std::max(ref.pitch_peak, std::abs(y(pitch_row) - rest(pitch_row)));
+    for (double w : wheels) ref.wheel_peak = std::max(ref.wheel_peak, std::abs(w));
+  };
+  record();
+  Vector w(2 * n);
+  const double h = 1.0 / rate;
+  const auto steps = static_cast<long>(std::ceil(end_station / (v * h))) + 10;
+  for (long k = 1; k <= steps; ++k) {
+    const double s = static_cast<double>(k) * v * h;
+    for (Eigen::Index q = 0; q < n; ++q) {
+      const double x = s + sys.input_stations(q);
+      const double y = sys.input_lateral(q) + lateral_offset;
+      w(q) = track.height(x, y);
+      w(n + q) = v * track.slope(x, y);
+    }
+    sim.step(w);
+    record();
+  }
+  return ref;
+}
+
+class LongHillReplay : public ::testing::Test {
+ protected:
+  LongHillReplay() : private_nh_("~") {
+    tf_sub_ = nh_.subscribe("/tf", 10000, &LongHillReplay::onTf, this);
+    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &LongHillReplay::onWheels, this);
+  }
+  void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
+    for (const auto& t : msg->transforms) {
+      if (t.child_frame_id != "base_link") continue;
+      NodeSample& s = samples_[t.header.stamp];
+      s.pose = fromMsg(t.transform);
+      s.has_pose = true;
+    }
+    last_message_ = ros::WallTime::now();
+  }
+  void onWheels(const RoadWheels::ConstPtr& msg) {
+    NodeSample& s = samples_[msg->header.stamp];
+    s.station = msg->station;
+    s.wheels.clear();
+    for (const auto& w : msg->wheels) s.wheels.push_back(w.displacement);
+    max_station_ = std::max(max_station_, msg->station);
+    last_message_ = ros::WallTime::now();
+  }
+
+  ros::NodeHandle nh_, private_nh_;
+  ros::Subscriber tf_sub_, wheels_sub_;
+  std::map<ros::Time, NodeSample> samples_;
+  double max_station_ = 0.0;
+  ros::WallTime last_message_;
+};
+
+TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
+  const std::string vehicle_file = test::requiredParam<std::string>(private_nh_, "vehicle");
+  const auto variant =
+      vehicle::parseVariant(test::requiredParam<std::string>(private_nh_, "variant"));
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh_, "cache_dir");
+  const std::string track_name = test::requiredParam<std::string>(private_nh_, "track");
+  const double v = test::requiredParam<double>(private_nh_, "speed_kmh") / 3.6;
+  const double rate = test::requiredParam<double>(private_nh_, "rate");
+  const double tolerance = test::requiredParam<double>(private_nh_, "tolerance_of_peak");
+  const double covered_from = test::requiredParam<double>(private_nh_, "covered_from");
+  const double covered_until = test::requiredParam<double>(private_nh_, "covered_until");
+  const double heave_peak_expected = test::requiredParam<double>(private_nh_, "heave_peak");
+  const double heave_peak_tolerance =
+      test::requiredParam<double>(private_nh_, "heave_peak_tolerance");
+  const double time_limit = test::requiredParam<double>(private_nh_, "time_limit");
+  const auto method = parseMethod(private_nh_.param<std::string>("method", "modal"), "method");
+  const auto hold = parseHold(private_nh_.param<std::string>("hold", "first_order"), "hold");
+  const double lateral_offset = private_nh_.param("lateral_offset", 0.0);
+
+  // The replay: wait for the node to pass the end of the covered range, then for silence.
+  const bool finished = test::spinUntil(
+      [&] {
+        return max_station_ >= covered_until &&
+               (ros::WallTime::now() - last_message_).toSec() > 1.0;
+      },
+      time_limit);
+  ASSERT_TRUE(finished) << "replay did not reach station " << covered_until << " (max "
+                        << max_station_ << " m, " << samples_.size() << " samples)";
+
+  // The offline reference, on the node's own cached model.
+  const auto model = reduction::loadOrReduceVehicle(vehicle_file, variant, cache_dir);
+  const VehicleGeometry geometry = vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file));
+  const terrain::Terrain track = terrain::makeTrack(track_name);
+  const Reference ref = offlineRun(model, geometry, track, v, rate, max_station_, method, hold,
+                                   lateral_offset);
+  ASSERT_GT(ref.heave_peak, 0.0);
+
+  double heave_error = 0.0, pitch_error = 0.0, wheel_error = 0.0;
+  double node_heave_peak = 0.0;
+  double min_station = 1e9, max_station = -1e9;
+  std::size_t compared = 0;
+  const double vh = v / rate;
+  const double rest_heave = ref.heave.front();
+  for (const auto& [stamp, s] : samples_) {
+    if (!s.has_pose || s.wheels.empty()) continue;  // only one of the two messages arrived
+    const long k = std::lround(s.station / vh);
+    ASSERT_NEAR(s.station, k * vh, kStationMatch) << "station off the step grid";
+    if (k < 0 || k >= static_cast<long>(ref.heave.size())) continue;
+    const Vector6 u = hullDisplacement(s.station, geometry.cog, s.pose);
+    heave_error = std::max(heave_error, std::abs(u(2) - ref.heave[k]));
+    pitch_error = std::max(pitch_error, std::abs(u(4) - ref.pitch[k]));
+    ASSERT_EQ(s.wheels.size(), ref.wheels[k].size());
+    for (std::size_t i = 0; i < s.wheels.size(); ++i) {
+      wheel_error = std::max(wheel_error, std::abs(s.wheels[i] - ref.wheels[k][i]));
+    }
+    node_heave_peak = std::max(node_heave_peak, std::abs(u(2) - rest_heave));
+    min_station = std::min(min_station, s.station);
+    max_station = std::max(max_station, s.station);
+    ++compared;
+  }
+  RecordProperty("compared_samples", static_cast<int>(compared));
+  std::printf("compared %zu samples, stations %.3f .. %.3f m\n", compared, min_station,
+              max_station);
+  std::printf("heave: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.heave_peak,
+              heave_error, heave_error / ref.heave_peak);
+  std::printf("pitch: peak %.4f rad, max error %.3g rad (%.3g of peak)\n", ref.pitch_peak,
+              pitch_error, pitch_error / ref.pitch_peak);
+  std::printf("wheels: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.wheel_peak,
+              wheel_error, wheel_error / ref.wheel_peak);
+  EXPECT_LE(min_station, covered_from) << "the replay's start was not seen";
+  EXPECT_GE(max_station, covered_until);
+  EXPECT_LE(heave_error, tolerance * ref.heave_peak);
+  EXPECT_LE(pitch_error, tolerance * ref.pitch_peak);
+  EXPECT_LE(wheel_error, tolerance * ref.wheel_peak);
+  EXPECT_NEAR(node_heave_peak, heave_peak_expected, heave_peak_tolerance);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "long_hill_replay_test");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}

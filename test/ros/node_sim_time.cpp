@@ -1,0 +1,126 @@
+// rostest tier 2 on simulated time (node_sim_time.test, use_sim_time): the test owns /clock. The
+// node steps exactly as the clock advances (every fixed step, caught up when the clock moves in
+// bursts), resynchronises after a jump longer than ~catch_up_limit, and resets when time goes
+// backwards (a bag loop) — each with a diagnostics entry, always publishing finite values.
+#include <gtest/gtest.h>
+
+#include <rosgraph_msgs/Clock.h>
+#include <std_msgs/Float64.h>
+
+#include "node_test_utils.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+constexpr double kStation = 1e-9;  // accumulated station rounding [m]
+
+class NodeSimTime : public ::testing::Test {
+ protected:
+  NodeSimTime() : private_nh_("~"), diagnostics_(nh_) {
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeSimTime::onWheels, this);
+    terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
+    speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10, true);
+  }
+
+  void onWheels(const RoadWheels::ConstPtr& msg) {
+    last_ = *msg;
+    ++messages_;
+    for (const auto& w : msg->wheels) {
+      if (!std::isfinite(w.displacement) || !std::isfinite(w.acceleration)) ++non_finite_;
+    }
+  }
+
+  void setClock(const ros::Time& t) {
+    rosgraph_msgs::Clock c;
+    c.clock = t;
+    clock_pub_.publish(c);
+  }
+
+  /// Moves the clock to `t` and waits until the node has published its sample at `t`.
+  bool advanceTo(const ros::Time& t) {
+    setClock(t);
+    return test::spinUntil([&] { return messages_ > 0 && last_.header.stamp == t; }, 10.0);
+  }
+
+  ros::NodeHandle nh_, private_nh_;
+  test::DiagnosticsCache diagnostics_;
+  ros::Publisher clock_pub_, terrain_pub_, speed_pub_;
+  ros::Subscriber wheels_sub_;
+  RoadWheels last_;
+  std::size_t messages_ = 0, non_finite_ = 0;
+};
+
+TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
+  const double speed = test::requiredParam<double>(private_nh_, "speed");
+  const double catch_up_limit = test::requiredParam<double>(private_nh_, "catch_up_limit");
+  const ros::Time t0(100.0);
+
+  // The node starts its clock at the first /clock it sees; keep offering t0 until it publishes.
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        setClock(t0);
+        ros::WallDuration(0.01).sleep();
+        return messages_ > 0;
+      },
+      45.0))
+      << "the node published nothing";
+  ASSERT_EQ(last_.header.stamp, t0);
+  terrain_pub_.publish(test::flatProfile(-10.0, 40.0));
+  std_msgs::Float64 v;
+  v.data = speed;
+  speed_pub_.publish(v);
+  test::spinFor(0.5);  // both delivered before the clock moves
+
+  // 0.2 s in bursts of 1 .. 20 ms: every step is taken, station = v t exactly.
+  ros::Time t = t0;
+  for (int burst : {1, 1, 2, 5, 20, 1, 3, 7, 10, 50, 100}) {
+    t += ros::Duration(burst * 1e-3);
+    ASSERT_TRUE(advanceTo(t)) << "no sample at " << t;
+  }
+  EXPECT_NEAR(last_.station, speed * (t - t0).toSec(), kStation);
+  EXPECT_EQ(last_.speed, speed);
+
+  // A jump longer than ~catch_up_limit: only catch_up_limit is simulated.
+  const double station_before = last_.station;
+  t += ros::Duration(1.0);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_NEAR(last_.station - station_before, speed * catch_up_limit, kStation);
+
+  // Time going backwards (a bag loop): reset to station 0 at the new time.
+  t = t0;
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_EQ(last_.station, 0.0);
+  for (const auto& w : last_.wheels) EXPECT_NEAR(w.displacement, 0.0, 1e-12) << w.name;
+
+  // And it runs on from there (speed is zero after the reset until a new speed message).
+  speed_pub_.publish(v);
+  test::spinFor(0.3);
+  t += ros::Duration(0.05);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_NEAR(last_.station, speed * 0.05, kStation);
+
+  EXPECT_EQ(non_finite_, 0u);
+  t += ros::Duration(2.0);  // let the diagnostics period pass on simulated time
+  setClock(t);
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.value(": loop", "time jumps back (total)") >= 1 &&
+               diagnostics_.value(": loop", "resynchronisations (total)") >= 1;
+      },
+      10.0))
+      << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.value(": loop", "time jumps back (total)"), 1.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "node_sim_time_test");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}

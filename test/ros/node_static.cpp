@@ -1,0 +1,125 @@
+// rostest tier 1: the node on flat terrain at rest holds static equilibrium and publishes every
+// tf frame with the right parent (node_static.test).
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include <tf2_msgs/TFMessage.h>
+
+#include "node_test_utils.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+struct TfSample {
+  ros::Time stamp;
+  RigidPose pose;
+};
+
+class NodeStatic : public ::testing::Test {
+ protected:
+  NodeStatic() : private_nh_("~"), diagnostics_(nh_) {
+    tf_sub_ = nh_.subscribe("/tf", 1000, &NodeStatic::onTf, this);
+    wheels_sub_ = nh_.subscribe("road_wheels", 1000, &NodeStatic::onWheels, this);
+    terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
+  }
+
+  void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
+    for (const auto& t : msg->transforms) {
+      parents_[t.child_frame_id] = t.header.frame_id;
+      if (collecting_ && t.child_frame_id == "base_link") {
+        poses_.push_back({t.header.stamp, fromMsg(t.transform)});
+      }
+    }
+  }
+  void onWheels(const RoadWheels::ConstPtr& msg) {
+    ++wheel_messages_;
+    if (collecting_) {
+      for (const auto& w : msg->wheels) {
+        max_wheel_displacement_ = std::max(max_wheel_displacement_, std::abs(w.displacement));
+      }
+      last_station_ = msg->station;
+    }
+  }
+
+  ros::NodeHandle nh_, private_nh_;
+  test::DiagnosticsCache diagnostics_;
+  ros::Subscriber tf_sub_, wheels_sub_;
+  ros::Publisher terrain_pub_;
+  std::map<std::string, std::string> parents_;
+  std::vector<TfSample> poses_;
+  bool collecting_ = false;
+  std::size_t wheel_messages_ = 0;
+  double max_wheel_displacement_ = 0.0;
+  double last_station_ = -1.0;
+};
+
+TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
+  const double tolerance = test::requiredParam<double>(private_nh_, "equilibrium_tolerance");
+  const double duration = test::requiredParam<double>(private_nh_, "duration");
+  std::vector<std::string> expected_frames;
+  ASSERT_TRUE(private_nh_.getParam("expected_frames", expected_frames));
+
+  ASSERT_TRUE(test::spinUntil([&] { return wheel_messages_ > 0; }, 45.0))
+      << "the node published nothing";
+  terrain_pub_.publish(test::flatProfile(-20.0, 20.0));
+  test::spinFor(0.3);  // terrain in, a few steps on it
+  collecting_ = true;
+  test::spinFor(duration);
+  collecting_ = false;
+
+  // Frames and parents.
+  EXPECT_EQ(parents_["base_link"], "odom");
+  for (const std::string& frame : expected_frames) {
+    ASSERT_TRUE(parents_.count(frame)) << "frame " << frame << " never published";
+    EXPECT_EQ(parents_[frame], "base_link") << frame;
+  }
+  EXPECT_EQ(parents_.size(), expected_frames.size() + 1) << "unexpected frames";
+
+  // Static equilibrium: constant pose, wheels at their static position, no travel.
+  ASSERT_GT(poses_.size(), 100u);
+  double max_move = 0.0, max_turn = 0.0;
+  for (const TfSample& s : poses_) {
+    max_move = std::max(max_move, (s.pose.translation - poses_.front().pose.translation).norm());
+    max_turn = std::max(max_turn, s.pose.rotation.angularDistance(poses_.front().pose.rotation));
+  }
+  EXPECT_LE(max_move, tolerance);
+  EXPECT_LE(max_turn, tolerance);
+  EXPECT_LE(max_wheel_displacement_, tolerance);
+  EXPECT_EQ(last_station_, 0.0);
+
+  // The pose is the model's static equilibrium (the same cached model, loaded here).
+  const std::string vehicle_file = test::requiredParam<std::string>(private_nh_, "vehicle");
+  const auto model = reduction::loadOrReduceVehicle(
+      vehicle_file, vehicle::parseVariant(test::requiredParam<std::string>(private_nh_, "variant")),
+      test::requiredParam<std::string>(private_nh_, "cache_dir"));
+  const OnlineVehicle reference(model,
+                                vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file)));
+  const RigidPose expected = reference.hullPose();
+  EXPECT_NEAR((poses_.back().pose.translation - expected.translation).norm(), 0.0, tolerance);
+  EXPECT_NEAR(poses_.back().pose.rotation.angularDistance(expected.rotation), 0.0, tolerance);
+  // The hull sags under gravity.
+  EXPECT_LT(expected.translation.z(), 0.0);
+
+  // Diagnostics: every task reports; the model is described.
+  ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": model"); }, 5.0));
+  EXPECT_TRUE(diagnostics_.has(": loop"));
+  EXPECT_TRUE(diagnostics_.has(": terrain"));
+  EXPECT_TRUE(diagnostics_.has(": speed"));
+  EXPECT_GT(diagnostics_.value(": model", "reduced DOFs"), 0.0);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "node_static_test");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,115 @@
+// Helpers shared by the node's rostests: waiting on wall time while spinning, the latest
+// diagnostics per status name, flat terrain patches, and the model the node runs.
+#pragma once
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <ros/ros.h>
+
+#include "tracked_vehicle_dynamics/TerrainProfile.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+namespace test {
+
+/// Spins until `done()` or `timeout` seconds of wall time; returns done().
+inline bool spinUntil(const std::function<bool()>& done, double timeout) {
+  const ros::WallTime end = ros::WallTime::now() + ros::WallDuration(timeout);
+  while (ros::ok() && !done() && ros::WallTime::now() < end) {
+    ros::spinOnce();
+    ros::WallDuration(0.001).sleep();
+  }
+  return done();
+}
+
+/// Spins for `seconds` of wall time.
+inline void spinFor(double seconds) {
+  spinUntil([] { return false; }, seconds);
+}
+
+/// The latest status of every diagnostics name ("<node>: loop", ...).
+class DiagnosticsCache {
+ public:
+  explicit DiagnosticsCache(ros::NodeHandle& nh)
+      : sub_(nh.subscribe("/diagnostics", 100, &DiagnosticsCache::onArray, this)) {}
+
+  bool has(const std::string& suffix) const { return find(suffix) != nullptr; }
+  /// Level of the status whose name ends with `suffix`; -1 when none.
+  int level(const std::string& suffix) const {
+    const auto* s = find(suffix);
+    return s == nullptr ? -1 : s->level;
+  }
+  /// Numeric value of key `key` in the status whose name ends with `suffix`; NaN when missing.
+  double value(const std::string& suffix, const std::string& key) const {
+    const auto* s = find(suffix);
+    if (s == nullptr) return std::nan("");
+    for (const auto& kv : s->values) {
+      if (kv.key == key) return std::atof(kv.value.c_str());
+    }
+    return std::nan("");
+  }
+  std::size_t arrays() const { return arrays_; }
+  std::string describe() const {
+    std::string out;
+    for (const auto& [name, s] : latest_) {
+      out += name + " [" + std::to_string(s.level) + "] " + s.message + "\n";
+      for (const auto& kv : s.values) out += "  " + kv.key + ": " + kv.value + "\n";
+    }
+    return out;
+  }
+
+ private:
+  void onArray(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
+    ++arrays_;
+    for (const auto& s : msg->status) latest_[s.name] = s;
+  }
+  const diagnostic_msgs::DiagnosticStatus* find(const std::string& suffix) const {
+    for (const auto& [name, s] : latest_) {
+      if (name.size() >= suffix.size() &&
+          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+        return &s;
+      }
+    }
+    return nullptr;
+  }
+
+  ros::Subscriber sub_;
+  std::map<std::string, diagnostic_msgs::DiagnosticStatus> latest_;
+  std::size_t arrays_ = 0;
+};
+
+/// A flat (height 0) TerrainProfile from `from` to `to` [m], lines every 0.5 m across 5 m.
+inline TerrainProfile flatProfile(double from, double to, double spacing = 0.05) {
+  TerrainPatch patch;
+  patch.start_station = from;
+  patch.spacing = spacing;
+  patch.lateral = Vector::LinSpaced(11, -2.5, 2.5);
+  patch.heights = Matrix::Zero(11, static_cast<Eigen::Index>(std::lround((to - from) / spacing)) + 1);
+  TerrainProfile msg;
+  msg.header.frame_id = "odom";
+  toMsg(patch, &msg);
+  return msg;
+}
+
+/// Reads a required private parameter of the test.
+template <typename T>
+T requiredParam(const ros::NodeHandle& nh, const std::string& name) {
+  T value{};
+  if (!nh.getParam(name, value)) {
+    ADD_FAILURE() << "missing test parameter ~" << name;
+  }
+  return value;
+}
+
+}  // namespace test
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,235 @@
+// ROS-layer conversions without a master: message round trips (core -> msg -> core), the frame
+// kinematics and its inverse, bag save -> load of a track bag, and the duration statistics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
+#include <unistd.h>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/ros/duration_statistics.h"
+#include "tracked_vehicle_dynamics/ros/track_bag.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+constexpr double kRoundTrip = 1e-12;  // pose <-> displacement, rotations of ~0.1 rad
+
+TerrainPatch randomPatch(int lines, int samples, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> h(-0.3, 0.3);
+  TerrainPatch p;
+  p.start_station = -3.25;
+  p.spacing = 0.02;
+  p.lateral = Vector::LinSpaced(lines, -2.0, 2.0);
+  p.heights.resize(lines, samples);
+  for (int j = 0; j < lines; ++j)
+    for (int k = 0; k < samples; ++k) p.heights(j, k) = h(rng);
+  return p;
+}
+
+std::string temporaryPath(const std::string& name) {
+  return "/tmp/tvd_test_" + std::to_string(::getpid()) + "_" + name;
+}
+
+}  // namespace
+
+TEST(TerrainProfileConversion, RoundTripIsExact) {
+  const TerrainPatch patch = randomPatch(5, 37, 1);
+  TerrainProfile msg;
+  toMsg(patch, &msg);
+  ASSERT_EQ(msg.samples, 37u);
+  ASSERT_EQ(msg.lateral.size(), 5u);
+  ASSERT_EQ(msg.heights.size(), 5u * 37u);
+  // Row-major: line j, sample k at j * samples + k.
+  EXPECT_EQ(msg.heights[2 * 37 + 11], patch.heights(2, 11));
+  const TerrainPatch back = fromMsg(msg);
+  EXPECT_EQ(back.start_station, patch.start_station);
+  EXPECT_EQ(back.spacing, patch.spacing);
+  EXPECT_EQ(back.lateral, patch.lateral);
+  EXPECT_EQ(back.heights, patch.heights);
+}
+
+TEST(TerrainProfileConversion, MismatchedSizesAreRejectedNamingTheField) {
+  TerrainProfile msg;
+  toMsg(randomPatch(3, 10, 2), &msg);
+  msg.heights.pop_back();
+  try {
+    fromMsg(msg);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("heights"), std::string::npos) << e.what();
+  }
+  msg.heights.push_back(0.0);
+  msg.samples = 0;
+  EXPECT_THROW(fromMsg(msg), InputError);
+  msg.samples = 10;
+  msg.lateral.clear();
+  EXPECT_THROW(fromMsg(msg), InputError);
+}
+
+TEST(RoadWheelsConversion, RoundTrip) {
+  std::vector<WheelState> wheels(3);
+  for (int i = 0; i < 3; ++i) {
+    wheels[i].name = "road_wheel_left_" + std::to_string(i + 1);
+    wheels[i].displacement = 0.01 * i - 0.003;
+    wheels[i].velocity = -0.2 * i;
+    wheels[i].acceleration = 3.5 * i + 0.1;
+  }
+  RoadWheels msg;
+  toMsg(wheels, 12.5, 8.25, &msg);
+  double station = 0.0, speed = 0.0;
+  const std::vector<WheelState> back = fromMsg(msg, &station, &speed);
+  EXPECT_EQ(station, 12.5);
+  EXPECT_EQ(speed, 8.25);
+  ASSERT_EQ(back.size(), wheels.size());
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    EXPECT_EQ(back[i].name, wheels[i].name);
+    EXPECT_EQ(back[i].displacement, wheels[i].displacement);
+    EXPECT_EQ(back[i].velocity, wheels[i].velocity);
+    EXPECT_EQ(back[i].acceleration, wheels[i].acceleration);
+  }
+}
+
+TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
+  ComfortReport report;
+  report.point = "crew_seat";
+  report.metrics.weighted_rms = 0.42;
+  report.metrics.vdv = 1.7;
+  report.metrics.mtvv = 0.9;
+  report.metrics.duration = 4.25;
+  report.metrics.samples = 4250;
+  report.running_rms = 0.33;
+  report.running_rms_time = 1.0;
+  report.peak_acceleration = 5.5;
+  for (bool with_power : {false, true}) {
+    if (with_power) report.metrics.absorbed_power = 2.5;
+    Comfort msg;
+    toMsg(report, &msg);
+    EXPECT_EQ(msg.weighting, "Wk");
+    EXPECT_EQ(msg.has_absorbed_power, with_power);
+    const ComfortReport back = fromMsg(msg);
+    EXPECT_EQ(back.point, report.point);
+    EXPECT_EQ(back.metrics.weighted_rms, report.metrics.weighted_rms);
+    EXPECT_EQ(back.metrics.vdv, report.metrics.vdv);
+    EXPECT_EQ(back.metrics.mtvv, report.metrics.mtvv);
+    EXPECT_EQ(back.metrics.absorbed_power, report.metrics.absorbed_power);
+    EXPECT_EQ(back.metrics.duration, report.metrics.duration);
+    EXPECT_EQ(back.metrics.samples, report.metrics.samples);
+    EXPECT_EQ(back.running_rms, report.running_rms);
+    EXPECT_EQ(back.running_rms_time, report.running_rms_time);
+    EXPECT_EQ(back.peak_acceleration, report.peak_acceleration);
+  }
+}
+
+TEST(TransformConversion, RoundTrip) {
+  RigidPose pose;
+  pose.translation = Vector3(1.5, -0.25, 0.125);
+  pose.rotation = rotationFromRollPitchYaw(0.1, -0.05, 0.02);
+  geometry_msgs::Transform msg;
+  toMsg(pose, &msg);
+  const RigidPose back = fromMsg(msg);
+  EXPECT_EQ(back.translation, pose.translation);
+  EXPECT_TRUE(back.rotation.isApprox(pose.rotation, 1e-15));
+}
+
+TEST(VehicleFrames, HullPoseAndItsInverse) {
+  const Vector3 cog(-0.1, 0.0, 1.57);
+  Vector6 u;
+  u << 0.002, -0.001, -0.08, 0.03, -0.12, 0.01;
+  const RigidPose pose = hullPose(17.0, cog, u);
+  // The CoG lands at (s, 0, 0) + p_G + u_G.
+  const Vector3 cog_in_odom = pose.rotation * cog + pose.translation;
+  EXPECT_NEAR((cog_in_odom - (Vector3(17.0, 0.0, 0.0) + cog + u.head<3>())).norm(), 0.0,
+              kRoundTrip);
+  const Vector3 rpy = rollPitchYaw(pose.rotation);
+  EXPECT_NEAR((rpy - u.tail<3>()).norm(), 0.0, kRoundTrip);
+  EXPECT_NEAR((hullDisplacement(17.0, cog, pose) - u).norm(), 0.0, kRoundTrip);
+}
+
+TEST(VehicleFrames, PitchNoseDownLowersTheFrontPoints) {
+  // REP-103: positive pitch (about +y) turns +x towards -z.
+  Vector6 u = Vector6::Zero();
+  u(4) = 0.01;
+  const Vector3 cog(0.0, 0.0, 1.0);
+  EXPECT_LT(hullPointDisplacement(cog, u, Vector3(2.0, 0.0, 1.0)).z(), 0.0);
+  // A point rigid with the hull stays where it is in base_link.
+  const Vector3 p(2.0, 0.5, 1.5);
+  const Vector3 rigid = hullPointDisplacement(cog, u, p);
+  EXPECT_NEAR((relativePosition(cog, u, p, rigid) - p).norm(), 0.0, 1e-15);
+}
+
+TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
+  TrackBagOptions options;
+  options.track = "long_hill";
+  options.speed = 10.0;
+  options.clock_rate = 100.0;
+  const std::string path = temporaryPath("long_hill.bag");
+  const TrackBagSummary summary = writeTrackBag(path, options);
+  const TrackBagContent bag = readTrackBag(path);
+  std::remove(path.c_str());
+
+  ASSERT_EQ(bag.patches.size(), summary.patches);
+  ASSERT_EQ(bag.speeds.size(), summary.speed_messages);
+  ASSERT_EQ(bag.clocks.size(), summary.clock_messages);
+  EXPECT_NEAR(summary.duration, (terrain::kTrackLength + options.behind) / options.speed, 1e-9);
+  for (const auto& [time, v] : bag.speeds) EXPECT_EQ(v, options.speed);
+
+  // The patches, fed to a buffer in bag order, reproduce the track on its grid, and the buffer
+  // holds `lookahead` ahead of the vehicle whenever a patch arrives.
+  const terrain::Terrain track = terrain::makeTrack("long_hill");
+  terrain::TerrainBuffer buffer;
+  const ros::Time start(options.start_time);
+  for (const auto& [time, patch] : bag.patches) {
+    buffer.addPatch(patch.start_station, patch.spacing, patch.lateral, patch.heights);
+    EXPECT_EQ(patch.lateral, track.lateral());
+    const double station = (time - start).toSec() * options.speed;
+    EXPECT_GE(buffer.coveredUntil(), std::min(station + options.lookahead,
+                                              summary.end_station + options.lookahead) - 0.02);
+  }
+  EXPECT_LE(buffer.coveredFrom(), -options.behind + 1e-9);
+  EXPECT_GE(buffer.coveredUntil(), summary.end_station + options.lookahead - 1e-9);
+  for (double x = -options.behind; x < summary.end_station; x += 0.137) {
+    for (double y : {-1.555, -1.245, 0.0, 1.245, 1.555}) {
+      ASSERT_NEAR(buffer.height(x, y), track.height(x, y), 1e-12) << "x = " << x << ", y = " << y;
+    }
+  }
+}
+
+TEST(TrackBag, InvalidOptionsNameTheField) {
+  TrackBagOptions options;
+  options.speed = 0.0;
+  try {
+    writeTrackBag(temporaryPath("never.bag"), options);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("speed"), std::string::npos) << e.what();
+  }
+  options.speed = 5.0;
+  options.track = "moon_craters";
+  EXPECT_THROW(writeTrackBag(temporaryPath("never.bag"), options), InputError);
+}
+
+TEST(DurationStatistics, PercentilesOfAKnownDistribution) {
+  DurationStatistics stats;
+  EXPECT_EQ(stats.percentile(0.99), 0.0);
+  for (int i = 1; i <= 1000; ++i) stats.add(i * 1e-6);  // 1 .. 1000 us
+  EXPECT_EQ(stats.count(), 1000u);
+  EXPECT_NEAR(stats.mean(), 500.5e-6, 1e-12);
+  EXPECT_NEAR(stats.percentile(0.99), 990e-6, 1.01e-6);
+  EXPECT_NEAR(stats.percentile(0.5), 500e-6, 1.01e-6);
+  EXPECT_DOUBLE_EQ(stats.max(), 1000e-6);
+  stats.add(1.0);  // overflow bin: the exact maximum
+  EXPECT_DOUBLE_EQ(stats.percentile(1.0), 1.0);
+  stats.clear();
+  EXPECT_EQ(stats.count(), 0u);
+}

@@ -1,0 +1,278 @@
+// The node's ROS-free engine (OnlineVehicle, RoadInputSampler) on a toy half car: static
+// equilibrium at rest, identity with an offline Simulator run on the same terrain, terrain gaps,
+// rejected input, and no allocation per step.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "toy_vehicle.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
+
+// Counts heap allocations while g_count_allocations is set (Eigen allocates with malloc).
+#if defined(__GLIBC__)
+namespace {
+bool g_count_allocations = false;
+long g_allocations = 0;
+}  // namespace
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+void* malloc(std::size_t size) noexcept {
+  if (g_count_allocations) ++g_allocations;
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) noexcept {
+  if (g_count_allocations) ++g_allocations;
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, std::size_t size) noexcept {
+  if (g_count_allocations) ++g_allocations;
+  return __libc_realloc(pointer, size);
+}
+}
+#endif
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+constexpr double kAtRest = 1e-12;          // drift from equilibrium over many steps [m, rad]
+// Online vs offline on the same terrain, of the peak: they differ only where the central
+// difference for dh/dx straddles a grid station (RoadInputSampler::kSlopeStep).
+constexpr double kOfflineAgreement = 1e-6;
+constexpr double kRate = 1000.0;  // [Hz]
+
+/// A smooth bump 0.1 m high from x = 2 to 4 m, two lateral lines, sampled every 0.05 m.
+terrain::Terrain bump() {
+  const int n = 201;  // 0 .. 10 m
+  Vector x = Vector::LinSpaced(n, 0.0, 10.0);
+  Vector y(2);
+  y << -1.0, 1.0;
+  Matrix h = Matrix::Zero(2, n);
+  for (int i = 0; i < n; ++i) {
+    if (x(i) > 2.0 && x(i) < 4.0) h.col(i).setConstant(0.05 * (1.0 - std::cos(M_PI * (x(i) - 2.0))));
+  }
+  return terrain::Terrain(x, y, h, "bump");
+}
+
+/// The terrain as consecutive patches of `per_patch` samples (gap of one spacing between them).
+std::vector<TerrainPatch> patches(const terrain::Terrain& t, int per_patch) {
+  std::vector<TerrainPatch> out;
+  for (Eigen::Index k0 = 0; k0 < t.stations().size(); k0 += per_patch) {
+    const Eigen::Index n = std::min<Eigen::Index>(per_patch, t.stations().size() - k0);
+    TerrainPatch p;
+    p.start_station = t.stations()(k0);
+    p.spacing = t.spacing();
+    p.lateral = t.lateral();
+    p.heights = t.heights().middleCols(k0, n);
+    out.push_back(p);
+  }
+  return out;
+}
+
+OnlineVehicleOptions options(dynamics::DiscretizationMethod method) {
+  OnlineVehicleOptions o;
+  o.rate = kRate;
+  o.method = method;
+  o.comfort_point = "crew_seat";
+  return o;
+}
+
+}  // namespace
+
+TEST(OnlineVehicle, AtRestOnFlatTerrainStaysInStaticEquilibrium) {
+  const reduction::ReducedModel model = test::toyModel();
+  OnlineVehicle vehicle(model, test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  TerrainPatch flat;
+  flat.start_station = -5.0;
+  flat.spacing = 0.1;
+  flat.lateral = Eigen::Vector2d(-1.0, 1.0);
+  flat.heights = Matrix::Zero(2, 101);
+  vehicle.addTerrain(flat);
+  const Vector6 start = vehicle.hullDisplacement();
+  // Equilibrium: K q0 = f_g; the hull sinks by g (M + 2 m) / (2 k_t) + g M / (2 k_s).
+  using T = test::ToyVehicle;
+  const double sink = kStandardGravity * (T::kHullMass + 2 * T::kWheelMass) / (2 * T::kTyre) +
+                      kStandardGravity * T::kHullMass / (2 * T::kSuspension);
+  EXPECT_NEAR(start(2), -sink, 1e-12);
+  for (int k = 0; k < 2000; ++k) ASSERT_EQ(vehicle.step().uncovered, 0);
+  EXPECT_NEAR((vehicle.hullDisplacement() - start).norm(), 0.0, kAtRest);
+  for (const WheelState& w : vehicle.wheels()) {
+    EXPECT_NEAR(w.displacement, 0.0, kAtRest) << w.name;
+    EXPECT_NEAR(w.acceleration, 0.0, 1e-9) << w.name;
+  }
+  EXPECT_NEAR(vehicle.comfort().weightedRms(), 0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(vehicle.station(), 0.0);
+  // Frames: base_link at rest has no pitch; wheel centres keep x, y and sit on their tyres.
+  const RigidPose pose = vehicle.hullPose();
+  EXPECT_NEAR(pose.translation.x(), 0.0, 1e-12);
+  EXPECT_NEAR(pose.translation.z(), -sink, 1e-12);
+  const Vector3 front = vehicle.wheelPosition(0);
+  EXPECT_DOUBLE_EQ(front.x(), T::kWheelX[0]);
+  EXPECT_NEAR(vehicle.pointPosition(0).z(), 1.5, 1e-12);
+}
+
+class OnlineVersusOffline : public ::testing::TestWithParam<dynamics::DiscretizationMethod> {};
+
+TEST_P(OnlineVersusOffline, SameResponseAsTheSimulatorOnTheWholeTerrain) {
+  const reduction::ReducedModel model = test::toyModel();
+  const terrain::Terrain terrain = bump();
+  const double v = 7.3;  // [m/s]
+  OnlineVehicle online(model, test::toyGeometry(), options(GetParam()));
+  for (const TerrainPatch& p : patches(terrain, 40)) online.addTerrain(p);
+  online.setSpeed(v);
+
+  // Offline: the same simulator configuration, inputs from the whole Terrain.
+  dynamics::SimulatorOptions sim;
+  sim.time_step = 1.0 / kRate;
+  sim.hold = dynamics::InputHold::FirstOrder;
+  sim.method = GetParam();
+  sim.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
+                    dynamics::OutputQuantity::Acceleration};
+  sim.generalized_force = model.gravity_load;
+  dynamics::Simulator offline(model.system, sim);
+  const Vector u0 = Vector::Zero(2);
+  offline.reset(dynamics::staticEquilibrium(model.system, u0, model.gravity_load), Vector::Zero(4));
+  const Vector& xq = model.system.input_stations;
+  Vector w(4);
+  double peak = 0.0, worst = 0.0;
+  const int steps = static_cast<int>(7.0 / (v / kRate));  // front wheel to x = 8 m
+  for (int k = 1; k <= steps; ++k) {
+    const double s = k * v / kRate;
+    for (int q = 0; q < 2; ++q) {
+      w(q) = terrain.height(s + xq(q), 0.0);
+      w(2 + q) = v * terrain.slope(s + xq(q), 0.0);
+    }
+    offline.step(w);
+    ASSERT_EQ(online.step().uncovered, 0) << "step " << k;
+    ASSERT_NEAR(online.station(), s, 1e-9);
+    const Vector& a = online.simulator().outputs();
+    const Vector& b = offline.outputs();
+    peak = std::max(peak, b.segment(0, 11).cwiseAbs().maxCoeff());
+    worst = std::max(worst, (a - b).segment(0, 11).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LE(worst, kOfflineAgreement * peak) << "worst " << worst << " of peak " << peak;
+  // The bump moved the hull.
+  EXPECT_GT(online.comfort().weightedRms(), 0.01);
+  EXPECT_GT(online.peakAcceleration(), 0.1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, OnlineVersusOffline,
+                         ::testing::Values(dynamics::DiscretizationMethod::ModalDecoupled,
+                                           dynamics::DiscretizationMethod::AugmentedExponential));
+
+TEST(OnlineVehicle, TerrainGapHoldsTheLastHeightAndStaysFinite) {
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  TerrainPatch p;
+  p.spacing = 0.1;
+  p.lateral = Eigen::Vector2d(-1.0, 1.0);
+  p.start_station = -2.0;
+  p.heights = Matrix::Constant(2, 41, 0.05);  // -2 .. 2 m at 5 cm
+  vehicle.addTerrain(p);
+  vehicle.setSpeed(10.0);
+  int uncovered_steps = 0;
+  for (int k = 0; k < 800; ++k) {  // 8 m: the front wheel leaves the patch at station 1 m
+    const StepResult r = vehicle.step();
+    uncovered_steps += r.uncovered > 0;
+    ASSERT_FALSE(r.diverged);
+    ASSERT_TRUE(vehicle.simulator().outputs().allFinite());
+  }
+  EXPECT_GT(uncovered_steps, 0);
+  EXPECT_DOUBLE_EQ(vehicle.sampler().held()(0), 0.05);  // last height held
+}
+
+TEST(OnlineVehicle, InvalidTerrainAndSpeedAreRejectedWithoutChange) {
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  TerrainPatch p;
+  p.start_station = 0.0;
+  p.spacing = 0.1;
+  p.lateral = Eigen::Vector2d(-1.0, 1.0);
+  p.heights = Matrix::Zero(2, 10);
+  p.heights(1, 3) = std::nan("");
+  EXPECT_THROW(vehicle.addTerrain(p), InputError);
+  EXPECT_TRUE(vehicle.terrain().empty());
+  p.heights(1, 3) = 0.0;
+  p.spacing = -0.1;
+  EXPECT_THROW(vehicle.addTerrain(p), InputError);
+  p.spacing = 0.1;
+  p.lateral = Eigen::Vector2d(1.0, -1.0);
+  EXPECT_THROW(vehicle.addTerrain(p), InputError);
+  EXPECT_TRUE(vehicle.terrain().empty());
+  vehicle.setSpeed(3.0);
+  EXPECT_THROW(vehicle.setSpeed(-1.0), InputError);
+  EXPECT_THROW(vehicle.setSpeed(std::numeric_limits<double>::infinity()), InputError);
+  EXPECT_EQ(vehicle.speed(), 3.0);
+}
+
+TEST(OnlineVehicle, UnknownOutputsAreNamed) {
+  reduction::ReducedModel model = test::toyModel();
+  model.system.output_names[7] = "road_wheel_left_9 uz";
+  try {
+    OnlineVehicle vehicle(model, test::toyGeometry());
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("road_wheel_left_2 uz"), std::string::npos) << e.what();
+  }
+  OnlineVehicleOptions o;
+  o.comfort_point = "driver_seat";
+  EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), o), InputError);
+}
+
+TEST(OnlineVehicle, ResetReturnsToEquilibriumAtStationZero) {
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry());
+  const Vector6 rest = vehicle.hullDisplacement();
+  for (const TerrainPatch& p : patches(bump(), 50)) vehicle.addTerrain(p);
+  vehicle.setSpeed(10.0);
+  for (int k = 0; k < 300; ++k) vehicle.step();
+  EXPECT_GT((vehicle.hullDisplacement() - rest).norm(), 1e-4);
+  vehicle.reset();
+  EXPECT_EQ(vehicle.station(), 0.0);
+  EXPECT_EQ(vehicle.speed(), 0.0);
+  EXPECT_TRUE(vehicle.terrain().empty());
+  EXPECT_NEAR((vehicle.hullDisplacement() - rest).norm(), 0.0, 1e-15);
+  EXPECT_EQ(vehicle.comfort().sampleCount(), 0u);
+}
+
+#if defined(__GLIBC__)
+TEST(OnlineVehicle, StepAllocatesNothing) {
+  for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
+                      dynamics::DiscretizationMethod::AugmentedExponential}) {
+    OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), options(method));
+    for (const TerrainPatch& p : patches(bump(), 40)) vehicle.addTerrain(p);
+    vehicle.setSpeed(5.0);
+    vehicle.step();
+    g_allocations = 0;
+    g_count_allocations = true;
+    for (int k = 0; k < 500; ++k) vehicle.step();
+    g_count_allocations = false;
+    EXPECT_EQ(g_allocations, 0);
+  }
+}
+#endif
+
+TEST(RoadInputSampler, SlopeIsTheCellSlopeAwayFromStations) {
+  const terrain::Terrain t = bump();
+  terrain::TerrainBuffer buffer;
+  buffer.addPatch(t.startStation(), t.spacing(), t.lateral(), t.heights());
+  RoadInputSampler sampler(Eigen::Vector2d(0.0, 0.3), Eigen::Vector2d(0.5, -0.5));
+  Vector w(4);
+  ASSERT_EQ(sampler.sample(buffer, 2.513, 4.0, 0.25, &w), 0);
+  EXPECT_NEAR(w(0), t.height(2.513, 0.75), 1e-15);
+  EXPECT_NEAR(w(1), t.height(2.813, -0.25), 1e-15);
+  EXPECT_NEAR(w(2), 4.0 * t.slope(2.513, 0.75), 1e-9);
+  EXPECT_NEAR(w(3), 4.0 * t.slope(2.813, -0.25), 1e-9);
+  // Off the terrain: held, rate 0, counted.
+  EXPECT_EQ(sampler.sample(buffer, 20.0, 4.0, 0.0, &w), 2);
+  EXPECT_EQ(w(2), 0.0);
+}
