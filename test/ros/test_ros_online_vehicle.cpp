@@ -52,8 +52,8 @@ constexpr double kRate = 1000.0;  // [Hz]
 
 /// A smooth bump 0.1 m high from x = 2 to 4 m, two lateral lines, sampled every 0.05 m.
 terrain::Terrain bump() {
-  const int n = 201;  // 0 .. 10 m
-  Vector x = Vector::LinSpaced(n, 0.0, 10.0);
+  const int n = 301;  // -5 .. 10 m
+  Vector x = Vector::LinSpaced(n, -5.0, 10.0);
   Vector y(2);
   y << -1.0, 1.0;
   Matrix h = Matrix::Zero(2, n);

@@ -25,7 +25,7 @@ namespace ros_layer {
 class RoadInputSampler {
  public:
   /// Half-width of the central difference for dh/dx [m].
-  static constexpr double kSlopeStep = 1e-4;
+  static constexpr double kSlopeStep = 1e-6;
 
   /// stations x_q [m], lateral y_q [m] (same length n); needs_rate: n flags, true where u'_q is
   /// used (empty: all). Throws InputError for mismatched lengths or non-finite positions.

@@ -1,0 +1,43 @@
+// Road inputs sampled from a terrain as the vehicle advances (dynamics/road_excitation.h).
+#include <gtest/gtest.h>
+
+#include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
+
+namespace tvd = tracked_vehicle_dynamics;
+
+namespace {
+// h(x, y) = a x + b y on a grid: bilinear interpolation reproduces it exactly.
+tvd::terrain::Terrain plane(double a, double b) {
+  tvd::Vector x = tvd::Vector::LinSpaced(301, 0.0, 30.0);
+  tvd::Vector y = tvd::Vector::LinSpaced(11, -2.5, 2.5);
+  tvd::Matrix h(y.size(), x.size());
+  for (int i = 0; i < y.size(); ++i)
+    for (int j = 0; j < x.size(); ++j) h(i, j) = a * x(j) + b * y(i);
+  return tvd::terrain::Terrain(x, y, h, "plane");
+}
+}  // namespace
+
+TEST(RoadExcitation, SamplesEachInputAtItsOwnPosition) {
+  const double a = 0.02, b = -0.01, speed = 8.0, station = 10.0, offset = 0.5;
+  tvd::Vector xq(3), yq(3);
+  xq << 2.0, 0.0, -2.0;
+  yq << 1.4, -1.4, 0.3;
+  const tvd::dynamics::RoadExcitation road(xq, yq, offset);
+  tvd::Vector w;
+  road.sample(plane(a, b), station, speed, w);
+  ASSERT_EQ(w.size(), 6);
+  for (int q = 0; q < 3; ++q) {
+    EXPECT_NEAR(w(q), a * (station + xq(q)) + b * (yq(q) + offset), 1e-12) << q;
+    EXPECT_NEAR(w(3 + q), speed * a, 1e-12) << q;  // u' = v dh/dx
+  }
+}
+
+TEST(RoadExcitation, RejectsInconsistentInputs) {
+  EXPECT_THROW(tvd::dynamics::RoadExcitation(tvd::Vector::Zero(3), tvd::Vector::Zero(2)),
+               tvd::InputError);
+  tvd::Vector bad = tvd::Vector::Zero(2);
+  bad(1) = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(tvd::dynamics::RoadExcitation(bad, tvd::Vector::Zero(2)), tvd::InputError);
+}
