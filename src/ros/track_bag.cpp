@@ -40,61 +40,72 @@ void checkOptions(const TrackBagOptions& o) {
 
 }  // namespace
 
-TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options) {
+TrackRun trackRun(const TrackBagOptions& options) {
   checkOptions(options);
   terrain::TrackOptions track_options;
   track_options.lateral_offset = options.lateral_offset;
   const terrain::Terrain track = terrain::makeTrack(options.track, track_options);
   const double spacing = track.spacing();
-  const double v = options.speed;
-
-  TrackBagSummary summary;
-  summary.end_station = track.endStation() + options.behind;
-  summary.duration = summary.end_station / v;
-  const ros::Time start(options.start_time);
-  const auto at = [&](double t) { return start + ros::Duration(t); };
-
-  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  TrackRun run;
+  run.end_station = track.endStation() + options.behind;
+  run.duration = run.end_station / options.speed;
   // Terrain on the track's own grid, stations k * spacing, patch by patch.
   const auto first = static_cast<long>(std::floor(-options.behind / spacing + 1e-9));
   const auto last =
-      static_cast<long>(std::ceil((summary.end_station + options.lookahead) / spacing - 1e-9));
+      static_cast<long>(std::ceil((run.end_station + options.lookahead) / spacing - 1e-9));
   const auto per_patch = std::max(1L, std::lround(options.patch_length / spacing));
-  TerrainPatch patch;
-  patch.spacing = spacing;
-  patch.lateral = track.lateral();
-  TerrainProfile msg;
-  msg.header.frame_id = options.frame_id;
   for (long k0 = first; k0 <= last; k0 += per_patch) {
     const long n = std::min(per_patch, last - k0 + 1);
+    TimedPatch timed;
+    TerrainPatch& patch = timed.patch;
+    patch.spacing = spacing;
+    patch.lateral = track.lateral();
     patch.start_station = static_cast<double>(k0) * spacing;
     patch.heights.resize(track.lateral().size(), n);
     for (Eigen::Index j = 0; j < track.lateral().size(); ++j) {
       for (long i = 0; i < n; ++i) {
-        patch.heights(j, i) = track.height(static_cast<double>(k0 + i) * spacing, track.lateral()(j));
+        patch.heights(j, i) =
+            track.height(static_cast<double>(k0 + i) * spacing, track.lateral()(j));
       }
     }
-    const double t = std::max(0.0, (patch.start_station - options.lookahead) / v);
+    timed.time = std::max(0.0, (patch.start_station - options.lookahead) / options.speed);
+    run.patches.push_back(std::move(timed));
+  }
+  run.covered_from = static_cast<double>(first) * spacing;
+  run.covered_until = static_cast<double>(last) * spacing;
+  return run;
+}
+
+TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options) {
+  const TrackRun run = trackRun(options);
+  TrackBagSummary summary;
+  summary.end_station = run.end_station;
+  summary.duration = run.duration;
+  summary.covered_from = run.covered_from;
+  summary.covered_until = run.covered_until;
+  const ros::Time start(options.start_time);
+  const auto at = [&](double t) { return start + ros::Duration(t); };
+
+  rosbag::Bag bag(path, rosbag::bagmode::Write);
+  TerrainProfile msg;
+  msg.header.frame_id = options.frame_id;
+  for (const TimedPatch& timed : run.patches) {
     msg.header.seq = static_cast<std::uint32_t>(summary.patches);
-    msg.header.stamp = at(t);
-    toMsg(patch, &msg);
-    bag.write(options.terrain_topic, at(t), msg);
+    msg.header.stamp = at(timed.time);
+    toMsg(timed.patch, &msg);
+    bag.write(options.terrain_topic, at(timed.time), msg);
     ++summary.patches;
   }
-  summary.covered_from = static_cast<double>(first) * spacing;
-  summary.covered_until = static_cast<double>(last) * spacing;
-
   std_msgs::Float64 speed;
-  speed.data = v;
-  const auto speed_count = static_cast<long>(std::floor(summary.duration * options.speed_rate)) + 1;
+  speed.data = options.speed;
+  const auto speed_count = static_cast<long>(std::floor(run.duration * options.speed_rate)) + 1;
   for (long k = 0; k < speed_count; ++k) {
     bag.write(options.speed_topic, at(static_cast<double>(k) / options.speed_rate), speed);
     ++summary.speed_messages;
   }
   if (options.clock_rate > 0.0) {
     rosgraph_msgs::Clock clock;
-    const auto clock_count =
-        static_cast<long>(std::floor(summary.duration * options.clock_rate)) + 1;
+    const auto clock_count = static_cast<long>(std::floor(run.duration * options.clock_rate)) + 1;
     for (long k = 0; k < clock_count; ++k) {
       clock.clock = at(static_cast<double>(k) / options.clock_rate);
       bag.write("/clock", clock.clock, clock);

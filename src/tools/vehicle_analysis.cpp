@@ -26,10 +26,10 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   const NodeId hull = a.vehicle.layout.hull;
   a.statics.hull_sag = fem::physicalDisplacement(a.system, st.displacement, hull, 2);
   a.statics.hull_pitch_deg = fem::physicalDisplacement(a.system, st.displacement, hull, 4) * kRadToDeg;
-  // The vertical force of ground spring q on the structure is -K_u,q^T x (spring_element.h), so
-  // the ground carries sum_q K_u,q^T x; in equilibrium it equals the weight.
+  // The vertical force of ground spring q on the structure is -K_u,q^T x (spring_element.h);
+  // in equilibrium their sum balances the weight.
   const Vector spring_forces = a.system.input_stiffness.transpose() * st.displacement;
-  a.statics.ground_reaction = spring_forces.sum();
+  a.statics.ground_reaction = -spring_forces.sum();
   a.statics.weight = a.vehicle.model.totalMass() * std::abs(a.vehicle.model.gravity.z());
   a.statics.seconds = std::chrono::duration<double>(Clock::now() - t1).count();
 

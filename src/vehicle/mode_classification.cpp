@@ -1,6 +1,7 @@
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
 
 #include <algorithm>
+#include <cctype>
 #include <unordered_map>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -33,6 +34,21 @@ const char* hullMotionName(HullMotion motion) {
 
 bool ModeClass::has(HullMotion m) const {
   return std::find(hull_motions.begin(), hull_motions.end(), m) != hull_motions.end();
+}
+
+bool ModeClass::matches(const std::string& paper_type) const {
+  std::string t;
+  for (char ch : paper_type) t += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (t.rfind("wheel bounce", 0) == 0) return kind == ModeKind::WheelBounce;
+  if (kind != ModeKind::Hull || hull_motions.empty()) return false;
+  const auto plus = t.find('+');
+  const std::string primary = t.substr(0, plus);
+  const std::string secondary = plus == std::string::npos ? "" : t.substr(plus + 1);
+  if (primary != hullMotionName(hull_motions.front())) return false;
+  if (secondary.empty()) return true;
+  for (HullMotion m : hull_motions)
+    if (secondary == hullMotionName(m)) return true;
+  return false;
 }
 
 std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::System& system,
@@ -105,9 +121,8 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
       c.kind = ModeKind::Hull;
       for (int k : order)
         if (c.hull_energy[k] >= kComponentShare * hull) c.hull_motions.push_back(HullMotion(k));
-      std::vector<HullMotion> named = c.hull_motions;
-      std::sort(named.begin(), named.end());
-      for (HullMotion m : named) c.label += (c.label.empty() ? "" : "+") + std::string(hullMotionName(m));
+      for (HullMotion m : c.hull_motions)
+        c.label += (c.label.empty() ? "" : "+") + std::string(hullMotionName(m));
     } else if (c.wheel_share >= kWheelShare) {
       c.kind = ModeKind::WheelBounce;
       c.label = "wheel bounce";

@@ -48,6 +48,22 @@ struct TrackBagSummary {
   double covered_from = 0.0, covered_until = 0.0;  ///< terrain written [m]
 };
 
+/// A patch and the time after the start [s] at which it is published.
+struct TimedPatch {
+  double time = 0.0;
+  TerrainPatch patch;
+};
+
+/// The run a bag holds, before it is written: patches in time order, end station, duration.
+/// Throws InputError naming the option for invalid options or an unknown track.
+struct TrackRun {
+  std::vector<TimedPatch> patches;
+  double end_station = 0.0;  ///< s_end [m]
+  double duration = 0.0;     ///< [s]
+  double covered_from = 0.0, covered_until = 0.0;  ///< [m]
+};
+TrackRun trackRun(const TrackBagOptions& options);
+
 /// Writes the bag. Throws InputError naming the option for invalid options or an unknown track,
 /// rosbag::BagException when the file cannot be written.
 TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options);

@@ -3,7 +3,7 @@
 // the road wheels, and the rest (the track assemblies).
 //
 //   hull mode         hull share is the largest; labelled by its components that hold at least
-//                     kComponentShare of the hull energy, translations first:
+//                     kComponentShare of the hull energy, strongest first:
 //                     "longitudinal", "lateral", "bounce", "roll", "pitch", "yaw",
 //                     e.g. "longitudinal+pitch"
 //   wheel bounce      otherwise, when the wheels' motion relative to the hull (suspension travel)
@@ -31,7 +31,7 @@ constexpr double kComponentShare = 0.25;
 /// Share of the energy in the wheels' relative motion that makes a non-hull mode a wheel mode.
 constexpr double kWheelShare = 0.25;
 /// A wheel mode names the hull's main component when the hull holds this share of the energy.
-constexpr double kCouplingShare = 0.02;
+constexpr double kCouplingShare = 0.002;
 
 enum class ModeKind { Hull, WheelBounce, TrackLocal };
 
@@ -51,6 +51,11 @@ struct ModeClass {
   double track_share = 0.0;               ///< everything else: the track assemblies
 
   bool has(HullMotion m) const;
+  /// Whether the mode is of a paper type (Table 4): "<primary>[+<secondary>]", e.g. "pitch",
+  /// "lateral+roll", "wheel bounce" (case-insensitive). A hull type matches when its primary
+  /// motion is the mode's strongest component and its secondary, if any, is among the mode's
+  /// named components; "wheel bounce[+...]" matches any wheel-bounce mode.
+  bool matches(const std::string& paper_type) const;
 };
 
 /// Classifies each mode of `basis` (computed on `system`, the assembled vehicle model).

@@ -24,7 +24,7 @@ struct HullDescription {
   double pitch_inertia = 1.4e5;   ///< I_y about the CoG [kg m^2]
   double yaw_inertia = 1.6e5;     ///< I_z about the CoG [kg m^2]
   double cog_height = 1.57;       ///< h_G above the ground plane [m]
-  double cog_x = -0.10;           ///< CoG ahead of the wheelbase centre [m]
+  double cog_x = 0.12;            ///< CoG ahead of the wheelbase centre [m]
   double length = 7.6;            ///< envelope L [m]
   double width = 3.42;            ///< envelope B [m]
   double height = 2.2;            ///< envelope H [m]
@@ -40,22 +40,25 @@ struct RunningGearDescription {
 /// One road-wheel station's unsprung mass (wheel pair, hub and arm), rigid with its arm.
 struct RoadWheelDescription {
   double mass = 1200.0;          ///< m_u [kg]
-  double radius = 0.35;          ///< rolling radius on the link's upper surface [m]
-  double spin_inertia = 95.0;    ///< about the wheel axle (y) [kg m^2]
-  double tilt_inertia = 60.0;    ///< about x and z through the wheel centre [kg m^2]
+  double radius = 0.34;          ///< rolling radius on the link's upper surface [m]
+  double spin_inertia = 69.0;    ///< about the wheel axle (y) [kg m^2]
+  double tilt_inertia = 45.0;    ///< about x and z through the wheel centre [kg m^2]
 };
 
-/// Torsion-bar suspension: trailing arm pivoting about a lateral axis ahead of and above the
-/// wheel centre; the wheel centre is tied to the track by a stiff contact spring.
+/// Torsion-bar suspension: a trailing arm pivoting about a lateral axis ahead of and above the
+/// wheel centre, x_p = x_w + a cos(beta), z_p = z_w + a sin(beta). The wheel is rigid with its arm
+/// and stands on its track assembly through a contact patch on the link's upper surface (normal
+/// and longitudinal force) and the guide horn (lateral force).
 struct SuspensionDescription {
   double torsion_bar_stiffness = 5.2e5;   ///< k_t [N m/rad]
-  double arm_length = 0.50;               ///< pivot to wheel centre [m]
-  double arm_angle = 0.33;                ///< static arm angle below the horizontal [rad]
+  double arm_length = 0.58;               ///< a, pivot to wheel centre [m]
+  /// beta, static arm angle, pivot above the wheel centre [rad]
+  double arm_angle = 9.0 * (3.14159265358979323846 / 180.0);
   double pivot_y = 0.98;                  ///< |y| of the pivots (hull side walls) [m]
-  double contact_stiffness = 2e10;        ///< k_w, wheel-track, normal to the track [N/m]
-  double contact_shear_stiffness = 2e10;  ///< wheel-track along and across the track [N/m]
-  double guide_contact_height = 0.10;     ///< guide horn-rim contact above the link surface [m]
-  double arm_damping = 0.0;               ///< rotary damper at each damped arm [N m s/rad]
+  double contact_stiffness = 2e10;        ///< k_w, normal to the track [N/m]
+  double contact_shear_stiffness = 2e10;  ///< along (patch) and across (guide horn) [N/m]
+  double guide_contact_height = 0.09;     ///< guide horn-rim contact above the link surface [m]
+  double arm_damping = 0.0;               ///< rotary damper at each damped station [N m s/rad]
 };
 
 /// The track assembly (link, two pins, two pads) and the chain it forms.
@@ -88,7 +91,7 @@ struct TrackAssemblyDescription {
   /// Fore/aft link members (pins to link centre), one of three across the width: they give the
   /// chain its bending stiffness about y (rigid pin joints, paper §2.2).
   double link_member_area = 1.2e-3;          ///< [m^2]
-  double link_member_bending_inertia = 2.0e-8;  ///< about the lateral axis, chain bending [m^4]
+  double link_member_bending_inertia = 1.1e-8;  ///< about the lateral axis, chain bending [m^4]
   double link_member_lateral_inertia = 1.0e-6;  ///< about the normal axis [m^4]
   double link_member_torsion_constant = 2.0e-8; ///< [m^4]
   /// Transverse link beam (across the track).
@@ -101,9 +104,9 @@ struct TrackAssemblyDescription {
 /// The rear drive sprocket; rigid with the hull (held by the final drive and brakes).
 struct SprocketDescription {
   double radius = 0.334;       ///< pitch-line radius: the chain's pin axes wrap this circle [m]
-  double centre_x = -3.08;     ///< [m]
-  double centre_z = 0.62;      ///< [m]
-  double mass = 1000.0;        ///< [kg]
+  double centre_x = -3.05;     ///< [m]
+  double centre_z = 0.78;      ///< [m]
+  double mass = 1100.0;        ///< [kg]
   double inertia = 55.0;       ///< about each axis through its centre [kg m^2]
 };
 
@@ -112,7 +115,7 @@ struct SprocketDescription {
 struct IdlerDescription {
   double radius = 0.33;        ///< pitch-line radius [m]
   double centre_z = 0.62;      ///< [m]
-  double mass = 650.0;         ///< [kg]
+  double mass = 700.0;         ///< [kg]
   double inertia = 35.0;       ///< about each axis through its centre [kg m^2]
 };
 
