@@ -66,6 +66,8 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   speed_sub_ = nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
                              ros::TransportHints().tcpNoDelay());
   timer_ = nh_.createTimer(ros::Duration(1.0 / rate), &VehicleDynamicsNode::onTimer, this);
+  // Frames from the start when ROS time runs already (with use_sim_time: once /clock arrives).
+  if (!ros::Time::now().isZero()) advanceTo(ros::Time::now());
   ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %.0f Hz, %s/%s",
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            params_.publish_rate, methodName(params_.vehicle_options.method),
@@ -233,7 +235,9 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     step_total_.add(step_seconds);
     sim_time_ += ros::Duration().fromNSec(step_ns_);
     ++steps_since_start_;
-    if (result.uncovered > 0) {
+    // Standing still before any terrain arrived is the normal start, not an underrun.
+    const bool waiting = vehicle_->terrain().empty() && vehicle_->speed() == 0.0;
+    if (result.uncovered > 0 && !waiting) {
       ++events_.uncovered_steps;
       ROS_WARN_THROTTLE(kWarnPeriod,
                         "vehicle_dynamics_node: no terrain under %d of %d contacts at station "

@@ -18,14 +18,17 @@ Vector2 rotate(const Vector2& v, double angle) {
   return Vector2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
-Vector2 normalOf(const Vector2& t) { return Vector2(-t.y(), t.x()); }
+Vector2 normalOf(const Vector2& t) {
+  return Vector2(-t.y(), t.x());
+}
 
 // Tangent from an external point P to circle (C, r) that then wraps the circle with the centre
 // on the inward side: d = C - P = L t + r n, hence t = rot(-phi) d/|d|, tan(phi) = r / L.
 Vector2 tangentPointFrom(const Vector2& p, const Vector2& c, double r, const std::string& key) {
   const Vector2 d = c - p;
   const double dist = d.norm();
-  if (dist <= r) throw InputError(key + ": the wheel circle reaches the end of the ground run");
+  if (dist <= r)
+    throw InputError(key + ": the wheel circle reaches the end of the ground run");
   const double l = std::sqrt(dist * dist - r * r);
   const Vector2 t = rotate(d / dist, -std::atan2(r, l));
   return p + l * t;
@@ -35,13 +38,16 @@ Vector2 tangentPointFrom(const Vector2& p, const Vector2& c, double r, const std
 Vector2 tangentPointTo(const Vector2& c, double r, const Vector2& p, const std::string& key) {
   const Vector2 d = p - c;
   const double dist = d.norm();
-  if (dist <= r) throw InputError(key + ": the wheel circle reaches the end of the ground run");
+  if (dist <= r)
+    throw InputError(key + ": the wheel circle reaches the end of the ground run");
   const double l = std::sqrt(dist * dist - r * r);
   const Vector2 t = rotate(d / dist, std::atan2(r, l));
   return c - r * normalOf(t);
 }
 
-double angleOf(const Vector2& v) { return std::atan2(v.y(), v.x()); }
+double angleOf(const Vector2& v) {
+  return std::atan2(v.y(), v.x());
+}
 
 }  // namespace
 
@@ -97,7 +103,8 @@ ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
   line(ChainSegment::TopRun, t2, t3);
   arc(ChainSegment::Sprocket, sprocket_centre_, rs, t3, t4);
   line(ChainSegment::RearIncline, t4, rear);
-  if (top_t.x() >= 0.0) throw InputError("idler: the top run must run rearwards (idler ahead of sprocket)");
+  if (top_t.x() >= 0.0)
+    throw InputError("idler: the top run must run rearwards (idler ahead of sprocket)");
   for (Piece& p : pieces_) {
     p.s0 = length_;
     length_ += p.len;
@@ -106,7 +113,8 @@ ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
 
 ChainPoint ChainPath::at(double s) const {
   s = std::fmod(s, length_);
-  if (s < 0) s += length_;
+  if (s < 0)
+    s += length_;
   const Piece* piece = &pieces_.back();
   for (const Piece& p : pieces_)
     if (s < p.s0 + p.len) {
@@ -130,7 +138,8 @@ ChainPoint ChainPath::at(double s) const {
 
 std::pair<double, double> ChainPath::interval(ChainSegment segment) const {
   for (const Piece& p : pieces_)
-    if (p.segment == segment) return {p.s0, p.s0 + p.len};
+    if (p.segment == segment)
+      return {p.s0, p.s0 + p.len};
   return {0.0, 0.0};
 }
 

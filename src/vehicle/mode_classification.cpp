@@ -21,7 +21,8 @@ Matrix nodeRows(const fem::System& system, NodeId node) {
   // Column-major T: gather the six rows by scanning columns once.
   for (Eigen::Index c = 0; c < t.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(t, c); it; ++it)
-      if (it.row() >= p0 && it.row() < p0 + kDofsPerNode) rows(it.row() - p0, c) = it.value();
+      if (it.row() >= p0 && it.row() < p0 + kDofsPerNode)
+        rows(it.row() - p0, c) = it.value();
   return rows;
 }
 
@@ -38,16 +39,22 @@ bool ModeClass::has(HullMotion m) const {
 
 bool ModeClass::matches(const std::string& paper_type) const {
   std::string t;
-  for (char ch : paper_type) t += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  if (t.rfind("wheel bounce", 0) == 0) return kind == ModeKind::WheelBounce;
-  if (kind != ModeKind::Hull || hull_motions.empty()) return false;
+  for (char ch : paper_type)
+    t += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (t.rfind("wheel bounce", 0) == 0)
+    return kind == ModeKind::WheelBounce;
+  if (kind != ModeKind::Hull || hull_motions.empty())
+    return false;
   const auto plus = t.find('+');
   const std::string primary = t.substr(0, plus);
   const std::string secondary = plus == std::string::npos ? "" : t.substr(plus + 1);
-  if (primary != hullMotionName(hull_motions.front())) return false;
-  if (secondary.empty()) return true;
+  if (primary != hullMotionName(hull_motions.front()))
+    return false;
+  if (secondary.empty())
+    return true;
   for (HullMotion m : hull_motions)
-    if (secondary == hullMotionName(m)) return true;
+    if (secondary == hullMotionName(m))
+      return true;
   return false;
 }
 
@@ -67,19 +74,23 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
   };
   std::unordered_map<NodeId, int> group;
   group[vehicle.layout.hull] = 0;
-  for (NodeId id : vehicle.layout.hull_attached) group[id] = 1;
-  for (const WheelStation& w : vehicle.layout.wheels) group[w.centre] = 2;
+  for (NodeId id : vehicle.layout.hull_attached)
+    group[id] = 1;
+  for (const WheelStation& w : vehicle.layout.wheels)
+    group[w.centre] = 2;
   std::unordered_map<NodeId, Vector3> position;
-  for (const fem::Node& n : vehicle.model.nodes) position[n.id] = n.position;
+  for (const fem::Node& n : vehicle.model.nodes)
+    position[n.id] = n.position;
   const Matrix hull_motion = nodeRows(system, vehicle.layout.hull) * basis.shapes;
   std::vector<Body> bodies;
   for (const fem::Mass& m : vehicle.model.masses) {
     const auto it = group.find(m.node);
-    if (it == group.end()) continue;
+    if (it == group.end())
+      continue;
     Body b{nodeRows(system, m.node) * basis.shapes, Matrix(), fem::rigidBodyMass(m), it->second};
     if (b.group == 2)
-      b.relative = b.motion - fem::rigidOffset(position[m.node] - position[vehicle.layout.hull]) *
-                                  hull_motion;
+      b.relative = b.motion -
+                   fem::rigidOffset(position[m.node] - position[vehicle.layout.hull]) * hull_motion;
     bodies.push_back(std::move(b));
   }
 
@@ -94,7 +105,8 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
       if (b.group == 0) {
         // Per-component energies; the hull mass matrix is diagonal at its centre of gravity.
         const Vector6 mv = b.mass * v;
-        for (int k = 0; k < 6; ++k) c.hull_energy[k] = v(k) * mv(k) / total;
+        for (int k = 0; k < 6; ++k)
+          c.hull_energy[k] = v(k) * mv(k) / total;
       } else if (b.group == 1) {
         attached += energy;
       } else {
@@ -110,7 +122,8 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
       }
     }
     double hull = 0.0;
-    for (double e : c.hull_energy) hull += e;
+    for (double e : c.hull_energy)
+      hull += e;
     c.hull_share = hull + attached;
     c.track_share = std::max(0.0, 1.0 - c.hull_share - c.wheel_share);
 
@@ -120,7 +133,8 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
     if (c.hull_share >= c.wheel_share && c.hull_share >= c.track_share) {
       c.kind = ModeKind::Hull;
       for (int k : order)
-        if (c.hull_energy[k] >= kComponentShare * hull) c.hull_motions.push_back(HullMotion(k));
+        if (c.hull_energy[k] >= kComponentShare * hull)
+          c.hull_motions.push_back(HullMotion(k));
       for (HullMotion m : c.hull_motions)
         c.label += (c.label.empty() ? "" : "+") + std::string(hullMotionName(m));
     } else if (c.wheel_share >= kWheelShare) {
@@ -140,16 +154,19 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
 
 std::vector<fem::DofRef> commonTranslationalDofs(const VehicleModel& a, const VehicleModel& b) {
   std::unordered_map<NodeId, Vector3> positions;
-  for (const fem::Node& n : b.model.nodes) positions[n.id] = n.position;
+  for (const fem::Node& n : b.model.nodes)
+    positions[n.id] = n.position;
   std::vector<NodeId> ids;
   for (const fem::Node& n : a.model.nodes) {
     const auto it = positions.find(n.id);
-    if (it != positions.end() && (it->second - n.position).norm() <= 1e-9) ids.push_back(n.id);
+    if (it != positions.end() && (it->second - n.position).norm() <= 1e-9)
+      ids.push_back(n.id);
   }
   std::sort(ids.begin(), ids.end());
   std::vector<fem::DofRef> dofs;
   for (NodeId id : ids)
-    for (int d = 0; d < 3; ++d) dofs.push_back({id, d});
+    for (int d = 0; d < 3; ++d)
+      dofs.push_back({id, d});
   return dofs;
 }
 
@@ -160,16 +177,20 @@ Matrix physicalShapes(const fem::System& system, const std::vector<fem::DofRef>&
                      " rows, the system has " + std::to_string(system.size()) + " active DOFs");
   // Selection S (rows of T) then S * Phi.
   std::vector<DofIndex> rows;
-  for (const fem::DofRef& d : dofs) rows.push_back(system.dofs.physical(d.node, d.direction));
+  for (const fem::DofRef& d : dofs)
+    rows.push_back(system.dofs.physical(d.node, d.direction));
   const SparseMatrix& t = system.dofs.transformation();
   std::unordered_map<DofIndex, std::vector<int>> wanted;
-  for (std::size_t i = 0; i < rows.size(); ++i) wanted[rows[i]].push_back(static_cast<int>(i));
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    wanted[rows[i]].push_back(static_cast<int>(i));
   std::vector<Triplet> trip;
   for (Eigen::Index c = 0; c < t.outerSize(); ++c)
     for (SparseMatrix::InnerIterator it(t, c); it; ++it) {
       const auto w = wanted.find(it.row());
-      if (w == wanted.end()) continue;
-      for (int i : w->second) trip.emplace_back(i, c, it.value());
+      if (w == wanted.end())
+        continue;
+      for (int i : w->second)
+        trip.emplace_back(i, c, it.value());
     }
   SparseMatrix s(static_cast<Eigen::Index>(dofs.size()), t.cols());
   s.setFromTriplets(trip.begin(), trip.end());

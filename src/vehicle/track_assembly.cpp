@@ -25,7 +25,9 @@ const char* const kPinSection = "track_pin";
 const char* const kMemberSection = "track_link_member";
 const char* const kBeamSection = "track_link_beam";
 
-double pinDistance(const TrackAssemblyDescription& t) { return t.pitch - t.pin_joint_distance; }
+double pinDistance(const TrackAssemblyDescription& t) {
+  return t.pitch - t.pin_joint_distance;
+}
 
 double pinMass(const TrackAssemblyDescription& t) {
   return 2.0 * t.steel_density * 0.25 * kPi * t.pin_diameter * t.pin_diameter * t.width;
@@ -41,7 +43,9 @@ double linkMass(const TrackAssemblyDescription& t) {
 }
 
 /// Each pad spans from its centre line to the track edge on both sides: w_p = w - 2 e_p.
-double padWidth(const TrackAssemblyDescription& t) { return t.width - 2.0 * t.pad_lateral_offset; }
+double padWidth(const TrackAssemblyDescription& t) {
+  return t.width - 2.0 * t.pad_lateral_offset;
+}
 
 double padHeight(const TrackAssemblyDescription& t) {
   return t.pad_rubber_below_core + t.pad_core_thickness + t.pad_rubber_above_core;
@@ -50,7 +54,8 @@ double padHeight(const TrackAssemblyDescription& t) {
 }  // namespace
 
 void addTrackAssemblyProperties(fem::Model& model, const TrackAssemblyDescription& t) {
-  if (model.findMaterial(kSteel)) return;
+  if (model.findMaterial(kSteel))
+    return;
   if (!(linkMass(t) > 0.0))
     throw InputError("track_assembly.mass: " + std::to_string(t.mass) +
                      " kg does not cover the pads and pins (" +
@@ -91,7 +96,8 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
   const double link_eta[5] = {-0.5 * w, -ep, 0.0, ep, 0.5 * w};
   const double pin_eta[3] = {-0.5 * w, 0.0, 0.5 * w};
   const double column_xi[3] = {-c, 0.0, c};
-  for (int i = 0; i < 5; ++i) n.link[i] = model.addNode(base + kLink + i, at(0, link_eta[i], hp));
+  for (int i = 0; i < 5; ++i)
+    n.link[i] = model.addNode(base + kLink + i, at(0, link_eta[i], hp));
   for (int i = 0; i < 3; ++i) {
     n.front_pin[i] = model.addNode(base + kFrontPin + i, at(half_d, pin_eta[i], hp));
     n.rear_pin[i] = model.addNode(base + kRearPin + i, at(-half_d, pin_eta[i], hp));
@@ -106,7 +112,8 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
     }
 
   // Link: transverse beam and the fore/aft members to the pins; pins across the track.
-  for (int i = 0; i < 4; ++i) model.beams.push_back({n.link[i], n.link[i + 1], kLinkSteel, kBeamSection, e3});
+  for (int i = 0; i < 4; ++i)
+    model.beams.push_back({n.link[i], n.link[i + 1], kLinkSteel, kBeamSection, e3});
   const int member_link[3] = {0, 2, 4};
   for (int i = 0; i < 3; ++i) {
     model.beams.push_back({n.rear_pin[i], n.link[member_link[i]], kLinkSteel, kMemberSection, e3});
@@ -201,7 +208,8 @@ fem::Model standaloneModel(const TrackAssemblyDescription& t, const PadSprings& 
   model.name = "track_assembly";
   addTrackAssemblyProperties(model, t);
   nodes = addTrackAssembly(model, t, springs, AssemblyFrame{}, 0, "track_assembly");
-  for (NodeId sole : nodes.soles) model.fixed.push_back({sole, {{true, true, true, false, false, false}}});
+  for (NodeId sole : nodes.soles)
+    model.fixed.push_back({sole, {{true, true, true, false, false, false}}});
   return model;
 }
 
@@ -222,7 +230,8 @@ TrackAssemblyStiffness measureTrackAssembly(const fem::Model& model,
   const Matrix x = chol.solve(loads);
   double mean[4] = {0, 0, 0, 0};
   for (int c = 0; c < 4; ++c)
-    for (NodeId id : nodes.link) mean[c] += x(sys.dofs.active(id, directions[c]), c) / nodes.link.size();
+    for (NodeId id : nodes.link)
+      mean[c] += x(sys.dofs.active(id, directions[c]), c) / nodes.link.size();
   return TrackAssemblyStiffness{1.0 / mean[0], 1.0 / mean[1], 1.0 / mean[2], 1.0 / mean[3]};
 }
 
@@ -256,8 +265,8 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
       throw InputError("track_assembly.pad_column_offset: the spring columns (" +
                        std::to_string(t.pad_column_offset) +
                        " m from the pad centre) are too close together to give "
-                       "torsional_stiffness_y = " + std::to_string(t.torsional_stiffness_y) +
-                       " N*m/rad");
+                       "torsional_stiffness_y = " +
+                       std::to_string(t.torsional_stiffness_y) + " N*m/rad");
   }
   throw SolverError("track assembly calibration did not converge in " +
                     std::to_string(kMaxCalibrationIterations) + " iterations");

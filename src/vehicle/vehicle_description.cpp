@@ -70,8 +70,7 @@ std::vector<Field> fieldsOf(VehicleDescription& d) {
       {"suspension", "contact_stiffness", "N/m", K::Real, R::Positive, &s.contact_stiffness},
       {"suspension", "contact_shear_stiffness", "N/m", K::Real, R::NonNegative,
        &s.contact_shear_stiffness},
-      {"suspension", "guide_contact_height", "m", K::Real, R::NonNegative,
-       &s.guide_contact_height},
+      {"suspension", "guide_contact_height", "m", K::Real, R::NonNegative, &s.guide_contact_height},
       {"suspension", "arm_damping", "N*m*s/rad", K::Real, R::NonNegative, &s.arm_damping},
       {"track_assembly", "count", "1", K::Integer, R::Positive, &t.count},
       {"track_assembly", "ground_count", "1", K::Integer, R::Positive, &t.ground_count},
@@ -101,10 +100,8 @@ std::vector<Field> fieldsOf(VehicleDescription& d) {
       {"track_assembly", "pad_sole_mass_fraction", "1", K::Real, R::Fraction,
        &t.pad_sole_mass_fraction},
       {"track_assembly", "pin_diameter", "m", K::Real, R::Positive, &t.pin_diameter},
-      {"track_assembly", "steel_young_modulus", "Pa", K::Real, R::Positive,
-       &t.steel_young_modulus},
-      {"track_assembly", "steel_poisson_ratio", "1", K::Real, R::Fraction,
-       &t.steel_poisson_ratio},
+      {"track_assembly", "steel_young_modulus", "Pa", K::Real, R::Positive, &t.steel_young_modulus},
+      {"track_assembly", "steel_poisson_ratio", "1", K::Real, R::Fraction, &t.steel_poisson_ratio},
       {"track_assembly", "steel_density", "kg/m^3", K::Real, R::Positive, &t.steel_density},
       {"track_assembly", "link_member_area", "m^2", K::Real, R::Positive, &t.link_member_area},
       {"track_assembly", "link_member_bending_inertia", "m^4", K::Real, R::Positive,
@@ -136,20 +133,29 @@ std::vector<Field> fieldsOf(VehicleDescription& d) {
       {"damping", "modal_ratio", "1", K::Real, R::Fraction, &d.damping.modal_ratio},
       {"damping", "rayleigh_alpha", "1/s", K::Real, R::NonNegative, &d.damping.rayleigh_alpha},
       {"damping", "rayleigh_beta", "s", K::Real, R::NonNegative, &d.damping.rayleigh_beta},
-      {"damping", "damped_stations", "1", K::IntegerList, R::Positive,
-       &d.damping.damped_stations},
+      {"damping", "damped_stations", "1", K::IntegerList, R::Positive, &d.damping.damped_stations},
   };
 }
 
-const char* const kSections[] = {"hull",     "running_gear", "road_wheel",     "suspension",
-                                 "track_assembly", "sprocket", "idler", "return_rollers",
-                                 "ties",     "damping"};
+const char* const kSections[] = {"hull",           "running_gear", "road_wheel", "suspension",
+                                 "track_assembly", "sprocket",     "idler",      "return_rollers",
+                                 "ties",           "damping"};
 
-const char* dampingModelName(DampingModel m) { return m == DampingModel::Modal ? "modal" : "rayleigh"; }
+const char* dampingModelName(DampingModel m) {
+  return m == DampingModel::Modal ? "modal" : "rayleigh";
+}
 
+/// Full precision, for the canonical text.
 std::string format(double v) {
   char buffer[64];
   std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  return buffer;
+}
+
+/// Short form, for messages.
+std::string brief(double v) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.6g", v);
   return buffer;
 }
 
@@ -161,16 +167,20 @@ std::string format(double v) {
 void expectKeys(const io::YamlValue& map, const std::set<std::string>& allowed) {
   map.expectMap();
   std::string list;
-  for (const auto& k : allowed) list += (list.empty() ? "" : ", ") + k;
+  for (const auto& k : allowed)
+    list += (list.empty() ? "" : ", ") + k;
   for (const auto& [key, value] : map.entries())
-    if (!allowed.count(key)) value.fail("unknown key (allowed keys: " + list + ")");
+    if (!allowed.count(key))
+      value.fail("unknown key (allowed keys: " + list + ")");
 }
 
 void checkRange(const io::YamlValue& v, double x, Range range) {
-  if (range == Range::Positive && !(x > 0.0)) v.fail("must be positive, got " + format(x));
-  if (range == Range::NonNegative && x < 0.0) v.fail("must not be negative, got " + format(x));
+  if (range == Range::Positive && !(x > 0.0))
+    v.fail("must be positive, got " + brief(x));
+  if (range == Range::NonNegative && x < 0.0)
+    v.fail("must not be negative, got " + brief(x));
   if (range == Range::Fraction && (x < 0.0 || x > 1.0))
-    v.fail("must lie in [0, 1], got " + format(x));
+    v.fail("must lie in [0, 1], got " + brief(x));
 }
 
 /// Reads {value, unit, source} and returns the value node after checking unit and source.
@@ -189,7 +199,8 @@ io::YamlValue quantity(const io::YamlValue& entry, const char* expected_unit,
   }
   const io::YamlValue source = entry["source"];
   const std::string text = source.asString();
-  if (text.empty()) source.fail("source must name where the value comes from");
+  if (text.empty())
+    source.fail("source must name where the value comes from");
   sources[entry.path()] = text;
   return entry["value"];
 }
@@ -203,7 +214,8 @@ void readField(const io::YamlValue& section, const Field& f,
       double x = v.asNumber();
       checkRange(v, x, f.range);
       if (f.kind == Kind::Angle) {
-        if (std::abs(x) >= 90.0) v.fail("angle must lie in (-90, 90) deg, got " + format(x));
+        if (std::abs(x) >= 90.0)
+          v.fail("angle must lie in (-90, 90) deg, got " + brief(x));
         x *= kDegree;
       }
       *static_cast<double*>(f.target) = x;
@@ -212,7 +224,8 @@ void readField(const io::YamlValue& section, const Field& f,
     case Kind::Integer: {
       const std::int64_t n = v.asInteger();
       checkRange(v, static_cast<double>(n), f.range);
-      if (n > 1000000) v.fail("value " + std::to_string(n) + " is implausibly large");
+      if (n > 1000000)
+        v.fail("value " + std::to_string(n) + " is implausibly large");
       *static_cast<int*>(f.target) = static_cast<int>(n);
       break;
     }
@@ -246,7 +259,8 @@ class Checker {
  public:
   explicit Checker(const std::string& where) : where_(where) {}
   void require(bool ok, const std::string& key, const std::string& what) const {
-    if (!ok) throw InputError(where_ + ": " + key + ": " + what);
+    if (!ok)
+      throw InputError(where_ + ": " + key + ": " + what);
   }
 
  private:
@@ -267,13 +281,13 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     };
     if (f.kind == Kind::Real || f.kind == Kind::Angle) {
       const double x = *static_cast<double*>(f.target);
-      c.require(!bad(x), f.path(), "value " + format(x) + " is out of range or not finite");
+      c.require(!bad(x), f.path(), "value " + brief(x) + " is out of range or not finite");
     } else if (f.kind == Kind::Integer) {
       const double x = *static_cast<int*>(f.target);
-      c.require(!bad(x), f.path(), "value " + format(x) + " is out of range");
+      c.require(!bad(x), f.path(), "value " + brief(x) + " is out of range");
     } else if (f.kind == Kind::RealList) {
       for (double x : *static_cast<std::vector<double>*>(f.target))
-        c.require(!bad(x), f.path(), "value " + format(x) + " is out of range or not finite");
+        c.require(!bad(x), f.path(), "value " + brief(x) + " is out of range or not finite");
     } else {
       for (int x : *static_cast<std::vector<int>*>(f.target))
         c.require(!bad(x), f.path(), "value " + std::to_string(x) + " is out of range");
@@ -287,30 +301,33 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
                 std::to_string(t.count));
   c.require(std::abs(t.pitch * t.count - t.chain_length) <= kLengthTolerance * t.chain_length,
             "track_assembly.chain_length",
-            format(t.chain_length) + " m is inconsistent with pitch x count = " +
-                format(t.pitch * t.count) + " m");
-  c.require(std::abs(t.pitch * t.ground_count - t.ground_length) <=
-                kLengthTolerance * t.ground_length,
-            "track_assembly.ground_length",
-            format(t.ground_length) + " m is inconsistent with pitch x ground_count = " +
-                format(t.pitch * t.ground_count) + " m");
+            brief(t.chain_length) +
+                " m is inconsistent with pitch x count = " + brief(t.pitch * t.count) + " m");
+  c.require(
+      std::abs(t.pitch * t.ground_count - t.ground_length) <= kLengthTolerance * t.ground_length,
+      "track_assembly.ground_length",
+      brief(t.ground_length) + " m is inconsistent with pitch x ground_count = " +
+          brief(t.pitch * t.ground_count) + " m");
   c.require(t.pin_joint_distance < t.pitch, "track_assembly.pin_joint_distance",
-            "must be shorter than the pitch " + format(t.pitch) + " m");
+            "must be shorter than the pitch " + brief(t.pitch) + " m");
   c.require(2.0 * t.pad_column_offset < t.pitch, "track_assembly.pad_column_offset",
             "pads longer than the pitch overlap their neighbours");
   c.require(t.pad_lateral_offset < 0.5 * t.width, "track_assembly.pad_lateral_offset",
-            "pads lie outside the track width " + format(t.width) + " m");
+            "pads lie outside the track width " + brief(t.width) + " m");
   const double pad_height =
       t.pad_rubber_below_core + t.pad_core_thickness + t.pad_rubber_above_core;
   c.require(t.pitch_line_height > pad_height, "track_assembly.pitch_line_height",
-            "the pins must lie above the pads (" + format(pad_height) + " m)");
+            "the pins must lie above the pads (" + brief(pad_height) + " m)");
   c.require(t.upper_surface_height > t.pitch_line_height, "track_assembly.upper_surface_height",
             "the wheel path must lie above the pitch line");
-  c.require(g.axle_count >= 2, "running_gear.axle_count", "at least 2 axles per side are needed");
+  c.require(g.axle_count >= 2 && g.axle_count <= 9, "running_gear.axle_count",
+            "2 to 9 axles per side are supported (node numbering)");
+  c.require(t.count <= 999, "track_assembly.count",
+            "at most 999 assemblies per side are supported (node numbering)");
   const double wheelbase = g.axle_spacing * (g.axle_count - 1);
   c.require(wheelbase < t.ground_length, "track_assembly.ground_length",
-            "the ground run " + format(t.ground_length) + " m is shorter than the wheelbase " +
-                format(wheelbase) + " m");
+            "the ground run " + brief(t.ground_length) + " m is shorter than the wheelbase " +
+                brief(wheelbase) + " m");
   c.require(t.width < g.track_centre_distance, "track_assembly.width",
             "the tracks overlap (width >= track_centre_distance)");
   c.require(d.suspension.pivot_y < 0.5 * g.track_centre_distance, "suspension.pivot_y",
@@ -328,7 +345,7 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
               "station " + std::to_string(s) + " is not in 1.." + std::to_string(g.axle_count));
   for (double x : d.return_rollers.x)
     c.require(x > d.sprocket.centre_x, "return_rollers.x",
-              "roller at x = " + format(x) + " m lies behind the sprocket");
+              "roller at x = " + brief(x) + " m lies behind the sprocket");
   std::set<std::string> names;
   for (const NamedPoint& p : d.named_points) {
     c.require(!p.name.empty(), "named_points", "a point has no name");
@@ -342,23 +359,28 @@ namespace {
 VehicleDescription fromYaml(const io::YamlValue& root) {
   const std::string& file = root.file();
   std::set<std::string> top = {"name", "named_points"};
-  for (const char* s : kSections) top.insert(s);
+  for (const char* s : kSections)
+    top.insert(s);
   expectKeys(root, top);
 
   VehicleDescription d;
   d.sources.clear();
   d.name = root["name"].asString();
-  if (d.name.empty()) root["name"].fail("name must not be empty");
+  if (d.name.empty())
+    root["name"].fail("name must not be empty");
   std::vector<Field> fields = fieldsOf(d);
   for (const char* section_name : kSections) {
     const io::YamlValue section = root[section_name];
     std::set<std::string> keys;
     for (const Field& f : fields)
-      if (std::string(f.section) == section_name) keys.insert(f.key);
-    if (std::string(section_name) == "damping") keys.insert("model");
+      if (std::string(f.section) == section_name)
+        keys.insert(f.key);
+    if (std::string(section_name) == "damping")
+      keys.insert("model");
     expectKeys(section, keys);
     for (const Field& f : fields)
-      if (std::string(f.section) == section_name) readField(section, f, d.sources);
+      if (std::string(f.section) == section_name)
+        readField(section, f, d.sources);
     if (std::string(section_name) == "damping") {
       const io::YamlValue v = quantity(section["model"], nullptr, d.sources);
       const std::string m = v.asString();
@@ -405,10 +427,12 @@ std::string canonicalDescription(const VehicleDescription& d) {
         out << *static_cast<int*>(f.target);
         break;
       case Kind::RealList:
-        for (double x : *static_cast<std::vector<double>*>(f.target)) out << format(x) << ",";
+        for (double x : *static_cast<std::vector<double>*>(f.target))
+          out << format(x) << ",";
         break;
       case Kind::IntegerList:
-        for (int x : *static_cast<std::vector<int>*>(f.target)) out << x << ",";
+        for (int x : *static_cast<std::vector<int>*>(f.target))
+          out << x << ",";
         break;
     }
     out << "\n";

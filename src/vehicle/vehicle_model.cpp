@@ -11,18 +11,22 @@ namespace vehicle {
 
 namespace {
 
-/// Largest chain the node numbering holds (assembly ids 100000 (s + 1) + 100 k).
-constexpr int kMaxAssemblies = 999;
 /// Un-tracked assemblies sit centred under their wheel, apart from the chain's: own id block.
 constexpr NodeId kUntrackedAssemblyBase = 500000;
 
-const char* sideName(int side) { return side == 0 ? "left" : "right"; }
+const char* sideName(int side) {
+  return side == 0 ? "left" : "right";
+}
 double sideY(const VehicleDescription& d, int side) {
   return (side == 0 ? 0.5 : -0.5) * d.running_gear.track_centre_distance;
 }
 
-NodeId stationNode(int side, int axle, int part) { return 1000 + 100 * side + 10 * axle + part; }
-NodeId chainAssemblyBase(int side, int k) { return 100000 * (side + 1) + 100 * k; }
+NodeId stationNode(int side, int axle, int part) {
+  return 1000 + 100 * side + 10 * axle + part;
+}
+NodeId chainAssemblyBase(int side, int k) {
+  return 100000 * (side + 1) + 100 * k;
+}
 
 /// Axle j (0 = front) of n, spaced l, centred on x = 0.
 double axleX(const VehicleDescription& d, int axle) {
@@ -55,14 +59,12 @@ class Builder {
 
   VehicleModel build() {
     validateDescription(d_, "vehicle description '" + d_.name + "'");
-    if (d_.track_assembly.count > kMaxAssemblies)
-      throw InputError("track_assembly.count: at most " + std::to_string(kMaxAssemblies) +
-                       " assemblies per side are supported");
     out_.layout.pad_springs = calibrateTrackAssembly(d_.track_assembly);
     addTrackAssemblyProperties(out_.model, d_.track_assembly);
     addHull();
     for (int side = 0; side < 2; ++side)
-      for (int axle = 0; axle < d_.running_gear.axle_count; ++axle) addStation(side, axle);
+      for (int axle = 0; axle < d_.running_gear.axle_count; ++axle)
+        addStation(side, axle);
     if (out_.layout.variant == Variant::Untracked)
       addUntrackedAssemblies();
     else
@@ -226,7 +228,8 @@ class Builder {
 
   const fem::Node& nodeById(NodeId id) const {
     for (auto it = out_.model.nodes.rbegin(); it != out_.model.nodes.rend(); ++it)
-      if (it->id == id) return *it;
+      if (it->id == id)
+        return *it;
     throw InputError("internal: node " + std::to_string(id) + " missing");
   }
 
@@ -291,17 +294,18 @@ class Builder {
       }
       // Road wheels on the ground assembly nearest below them.
       for (WheelStation& st : layout().wheels) {
-        if (st.side != side) continue;
+        if (st.side != side)
+          continue;
         const double u = (axleX(d_, st.axle) + 0.5 * t.ground_count * t.pitch) / t.pitch - 0.5;
         const int k = std::clamp(static_cast<int>(std::lround(u)), 0, t.ground_count - 1);
         tieWheel(st, index[k]);
       }
       // Sprocket (teeth on the pins: radial, lateral and tangential), idler (rolling: radial and
       // lateral only) and rollers (as the idler), all rigid with the hull.
-      const NodeId sprocket = model().addNode(2000 + 100 * side,
-          Vector3(path.sprocketCentre().x(), y, path.sprocketCentre().y()));
-      const NodeId idler = model().addNode(2001 + 100 * side,
-          Vector3(path.idlerCentre().x(), y, path.idlerCentre().y()));
+      const NodeId sprocket = model().addNode(
+          2000 + 100 * side, Vector3(path.sprocketCentre().x(), y, path.sprocketCentre().y()));
+      const NodeId idler = model().addNode(
+          2001 + 100 * side, Vector3(path.idlerCentre().x(), y, path.idlerCentre().y()));
       addWheelMass(sprocket, d_.sprocket.mass, d_.sprocket.inertia, "sprocket");
       addWheelMass(idler, d_.idler.mass, d_.idler.inertia, "idler");
       layout().sprockets.push_back(sprocket);
@@ -324,20 +328,24 @@ class Builder {
       for (std::size_t r = 0; r < d_.return_rollers.x.size(); ++r) {
         const double xr = d_.return_rollers.x[r];
         if (xr >= path.idlerCentre().x())
-          throw InputError("return_rollers.x: roller at x = " + std::to_string(xr) +
-                           " m lies ahead of the idler (x = " +
-                           std::to_string(path.idlerCentre().x()) + " m)");
+          throw InputError(
+              "return_rollers.x: roller at x = " + std::to_string(xr) +
+              " m lies ahead of the idler (x = " + std::to_string(path.idlerCentre().x()) + " m)");
         int best = -1;
         double best_dist = 1e300;
         for (int k = 0; k < t.count; ++k) {
           const double sk = (k + 0.5) * t.pitch;
-          if (sk < top.first || sk >= top.second) continue;
+          if (sk < top.first || sk >= top.second)
+            continue;
           const double dist = std::abs(path.at(sk).position.x() - xr);
-          if (dist < best_dist) best = k, best_dist = dist;
+          if (dist < best_dist)
+            best = k, best_dist = dist;
         }
-        if (best < 0) throw InputError("return_rollers.x: the top run holds no assembly");
-        const NodeId roller = model().addNode(2010 + 100 * side + static_cast<NodeId>(r),
-            Vector3(xr, y, path.topRunHeight(xr) - d_.return_rollers.radius));
+        if (best < 0)
+          throw InputError("return_rollers.x: the top run holds no assembly");
+        const NodeId roller =
+            model().addNode(2010 + 100 * side + static_cast<NodeId>(r),
+                            Vector3(xr, y, path.topRunHeight(xr) - d_.return_rollers.radius));
         addWheelMass(roller, d_.return_rollers.mass, 0.0, "return_roller");
         layout().return_rollers.push_back(roller);
         const double sb = (best + 0.5) * t.pitch;
@@ -354,7 +362,8 @@ class Builder {
   void addWheelMass(NodeId node, double mass, double inertia, const std::string& name) {
     attachToHull(node);
     layout().hull_attached.push_back(node);
-    if (mass <= 0.0) return;
+    if (mass <= 0.0)
+      return;
     fem::Mass m;
     m.node = node;
     m.mass = mass;
@@ -365,8 +374,10 @@ class Builder {
 
   void addDofSets() {
     auto& sets = model().dof_sets;
-    for (int d = 0; d < kDofsPerNode; ++d) sets["hull"].push_back({kHullNode, d});
-    for (const WheelStation& st : layout().wheels) sets["arms"].push_back({st.arm, 4});
+    for (int d = 0; d < kDofsPerNode; ++d)
+      sets["hull"].push_back({kHullNode, d});
+    for (const WheelStation& st : layout().wheels)
+      sets["arms"].push_back({st.arm, 4});
     for (const RoadInput& in : layout().road_inputs)
       sets["ground_contact"].push_back({in.node, static_cast<int>(Direction::Uz)});
   }
@@ -379,8 +390,8 @@ class Builder {
     m.sprockets = d_.sprocket.mass * layout().sprockets.size();
     m.idlers = d_.idler.mass * layout().idlers.size();
     m.return_rollers = d_.return_rollers.mass * layout().return_rollers.size();
-    m.total = m.hull + m.road_wheels + m.track_assemblies + m.sprockets + m.idlers +
-              m.return_rollers;
+    m.total =
+        m.hull + m.road_wheels + m.track_assemblies + m.sprockets + m.idlers + m.return_rollers;
   }
 
   const VehicleDescription& d_;
@@ -395,8 +406,10 @@ const char* variantName(Variant variant) {
 }
 
 Variant parseVariant(const std::string& text) {
-  if (text == "untracked") return Variant::Untracked;
-  if (text == "tracked") return Variant::Tracked;
+  if (text == "untracked")
+    return Variant::Untracked;
+  if (text == "tracked")
+    return Variant::Tracked;
   throw InputError("unknown vehicle variant '" + text + "' (untracked or tracked)");
 }
 

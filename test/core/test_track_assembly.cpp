@@ -32,11 +32,13 @@ class TrackAssemblyTest : public ::testing::Test {
   double meanResponse(int dir, double total) const {
     Vector load = Vector::Zero(system_.size());
     const auto& link = assembly_.nodes.link;
-    for (NodeId id : link) load(system_.dofs.requireActive(id, dir)) += total / link.size();
+    for (NodeId id : link)
+      load(system_.dofs.requireActive(id, dir)) += total / link.size();
     const tvd::fem::StaticResult r = tvd::fem::solveStatic(system_, load);
     EXPECT_LT(r.residual, 1e-9);
     double mean = 0.0;
-    for (NodeId id : link) mean += tvd::fem::physicalDisplacement(system_, r.displacement, id, dir);
+    for (NodeId id : link)
+      mean += tvd::fem::physicalDisplacement(system_, r.displacement, id, dir);
     return mean / link.size();
   }
 
@@ -83,10 +85,10 @@ TEST_F(TrackAssemblyTest, TopologyOfTheOneDimensionalModel) {
   EXPECT_EQ(assembly_.model.springs.size(), 12u);
   EXPECT_EQ(system_.size(), 78);
   EXPECT_GT(assembly_.springs.iterations, 0);
-  std::printf("track assembly: %zu nodes, %zu beams, %zu springs, %zu rigid joints, %ld active DOFs\n",
-              assembly_.model.nodes.size(), assembly_.model.beams.size(),
-              assembly_.model.springs.size(), assembly_.model.rigid_joints.size(),
-              static_cast<long>(system_.size()));
+  std::printf(
+      "track assembly: %zu nodes, %zu beams, %zu springs, %zu rigid joints, %ld active DOFs\n",
+      assembly_.model.nodes.size(), assembly_.model.beams.size(), assembly_.model.springs.size(),
+      assembly_.model.rigid_joints.size(), static_cast<long>(system_.size()));
 }
 
 TEST(TrackAssemblyCalibration, ColumnsTooCloseForTheTorsionalStiffnessAreRejected) {

@@ -47,7 +47,8 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   EXPECT_EQ(text.find(from, at + 1), std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
+  if (at != std::string::npos)
+    text.replace(at, from.size(), to);
   return text;
 }
 
@@ -133,6 +134,32 @@ TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
   EXPECT_THROW(veh::parseVariant("wheeled"), tvd::InputError);
 }
 
+TEST(VehicleOptions, ReturnRollersAndArmDampers) {
+  veh::VehicleDescription d;
+  d.return_rollers.x = {-1.5, 0.0, 1.5};
+  d.return_rollers.mass = 80.0;
+  d.suspension.arm_damping = 2.0e4;
+  d.damping.damped_stations = {1, 7};
+  const veh::VehicleModel v = veh::buildVehicleModel(d, veh::Variant::Tracked);
+  EXPECT_EQ(v.layout.return_rollers.size(), 6u);
+  EXPECT_NEAR(v.layout.mass.return_rollers, 480.0, 1e-9);
+  EXPECT_NEAR(v.model.totalMass(), v.layout.mass.total, 1e-9 * v.layout.mass.total);
+  int damped = 0;
+  for (const auto& s : v.model.springs)
+    damped += s.damping(4) > 0.0;
+  EXPECT_EQ(damped, 4);  // stations 1 and 7 on both sides
+  const tvd::fem::System sys = tvd::fem::assemble(v.model);
+  EXPECT_GT(sys.damping.norm(), 0.0);
+
+  d.return_rollers.x = {5.0};  // ahead of the idler
+  try {
+    veh::buildVehicleModel(d, veh::Variant::Tracked);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("return_rollers.x"), std::string::npos) << e.what();
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Models
 // ---------------------------------------------------------------------------------------------
@@ -179,8 +206,8 @@ TEST_F(VehicleModels, MassTotals) {
   const auto& d = description();
   const double wheels = 14 * d.road_wheel.mass;
   const double uv = d.hull.mass + wheels + 14 * d.track_assembly.mass;
-  const double tv = d.hull.mass + wheels + 184 * d.track_assembly.mass +
-                    2 * (d.sprocket.mass + d.idler.mass);
+  const double tv =
+      d.hull.mass + wheels + 184 * d.track_assembly.mass + 2 * (d.sprocket.mass + d.idler.mass);
   EXPECT_NEAR(untracked_->vehicle.model.totalMass(), uv, 1e-9 * uv);
   EXPECT_NEAR(tracked_->vehicle.model.totalMass(), tv, 1e-9 * tv);
   EXPECT_NEAR(tracked_->vehicle.layout.mass.total, tv, 1e-9 * tv);
@@ -197,14 +224,16 @@ TEST_F(VehicleModels, LayoutFollowsThePaper) {
     EXPECT_EQ(l.wheels.back().name, "road_wheel_right_7");
     const auto position = [&](tvd::NodeId id) {
       for (const auto& n : s->vehicle.model.nodes)
-        if (n.id == id) return n.position;
+        if (n.id == id)
+          return n.position;
       return tvd::Vector3(tvd::Vector3::Constant(NAN));
     };
     EXPECT_GT(position(l.wheels[0].centre).x(), position(l.wheels[6].centre).x());  // front first
-    EXPECT_GT(position(l.wheels[0].centre).y(), 0.0);                              // left = +y
+    EXPECT_GT(position(l.wheels[0].centre).y(), 0.0);                               // left = +y
     EXPECT_NEAR(position(l.hull).z(), 1.57, 1e-12);
     EXPECT_EQ(l.named_points.count("crew_seat"), 1u);
-    for (const veh::RoadInput& in : l.road_inputs) EXPECT_NEAR(position(in.node).z(), 0.0, 1e-12);
+    for (const veh::RoadInput& in : l.road_inputs)
+      EXPECT_NEAR(position(in.node).z(), 0.0, 1e-12);
   }
   // Interface (ground-contact) DOFs of paper Table 5: 84 and 360.
   EXPECT_EQ(untracked_->vehicle.layout.road_inputs.size(), 84u);
@@ -212,7 +241,8 @@ TEST_F(VehicleModels, LayoutFollowsThePaper) {
   EXPECT_EQ(untracked_->system.ground_inputs.size(), 84u);
   EXPECT_EQ(tracked_->vehicle.layout.assemblies.size(), 184u);
   int on_ground = 0;
-  for (const auto& a : tracked_->vehicle.layout.assemblies) on_ground += a.on_ground;
+  for (const auto& a : tracked_->vehicle.layout.assemblies)
+    on_ground += a.on_ground;
   EXPECT_EQ(on_ground, 60);
   std::printf("active DOFs: untracked %ld (paper 2192), tracked %ld (paper 16856)\n",
               static_cast<long>(untracked_->system.size()),
@@ -234,7 +264,8 @@ TEST_F(VehicleModels, ChainLoopClosesWithThirtyPitchesOnTheGround) {
 TEST_F(VehicleModels, SharedPartsHaveTheSameNodeIdsInBothVariants) {
   const auto common = veh::commonTranslationalDofs(untracked_->vehicle, tracked_->vehicle);
   std::set<tvd::NodeId> nodes;
-  for (const auto& d : common) nodes.insert(d.node);
+  for (const auto& d : common)
+    nodes.insert(d.node);
   EXPECT_EQ(common.size(), 3 * nodes.size());
   EXPECT_EQ(nodes.count(veh::kHullNode), 1u);
   for (const veh::WheelStation& w : untracked_->vehicle.layout.wheels) {
@@ -242,8 +273,8 @@ TEST_F(VehicleModels, SharedPartsHaveTheSameNodeIdsInBothVariants) {
     EXPECT_EQ(nodes.count(w.pivot), 1u) << w.name;
   }
   // Physical shapes: an active DOF reproduces its row, a slave follows its master.
-  const tvd::Matrix hull = veh::physicalShapes(untracked_->system, {{veh::kHullNode, 2}},
-                                               untracked_->basis.shapes);
+  const tvd::Matrix hull =
+      veh::physicalShapes(untracked_->system, {{veh::kHullNode, 2}}, untracked_->basis.shapes);
   const auto row = untracked_->system.dofs.requireActive(veh::kHullNode, 2);
   EXPECT_LT((hull.row(0) - untracked_->basis.shapes.row(row)).norm(), 1e-12);
   EXPECT_THROW(veh::physicalShapes(untracked_->system, {{999999, 0}}, untracked_->basis.shapes),
@@ -258,13 +289,13 @@ TEST_F(VehicleModels, GroundReactionsBalanceTheWeight) {
     EXPECT_LT(st.hull_sag, 0.0);
     EXPECT_EQ(st.pad_loads.size(), s->vehicle.layout.road_inputs.size());
     ASSERT_EQ(st.wheel_loads.size(), 14u);
-    std::printf("%s: hull sag %.2f mm, pitch %.3f mrad, wheel loads %.1f..%.1f kN, "
-                "reactions %.6e N vs weight %.6e N\n",
-                veh::variantName(s->vehicle.layout.variant), 1e3 * st.hull_sag,
-                1e3 * st.hull_pitch,
-                1e-3 * *std::min_element(st.wheel_loads.begin(), st.wheel_loads.end()),
-                1e-3 * *std::max_element(st.wheel_loads.begin(), st.wheel_loads.end()),
-                st.ground_reaction, st.weight);
+    std::printf(
+        "%s: hull sag %.2f mm, pitch %.3f mrad, wheel loads %.1f..%.1f kN, "
+        "reactions %.6e N vs weight %.6e N\n",
+        veh::variantName(s->vehicle.layout.variant), 1e3 * st.hull_sag, 1e3 * st.hull_pitch,
+        1e-3 * *std::min_element(st.wheel_loads.begin(), st.wheel_loads.end()),
+        1e-3 * *std::max_element(st.wheel_loads.begin(), st.wheel_loads.end()), st.ground_reaction,
+        st.weight);
   }
   // Un-tracked: the wheels carry the hull and themselves, nothing else. (In the tracked model
   // the stiff chain around the hull-mounted sprocket and idler carries part of the weight; the
@@ -284,13 +315,20 @@ TEST_F(VehicleModels, GroundReactionsBalanceTheWeight) {
 // Modes against paper Table 4
 // ---------------------------------------------------------------------------------------------
 
-/// A Table 4 mode. `reproduced` is false for the un-tracked horizontal hull modes, which this
-/// physically consistent model cannot bring within the tolerance (doc/vehicle_model.md, "Modal
-/// targets"): for those the test checks the mode's main motion and its documented deviation.
+/// How far a Table 4 mode is reproduced (doc/vehicle_model.md, "Modal targets").
+enum class Reproduced {
+  Full,        ///< same type, frequency within the tolerance
+  MainMotion,  ///< frequency within the tolerance; the paper's secondary motion is weaker than
+               ///< the classifier's naming threshold
+  Below,       ///< known deviation: same main motion, frequency below the tolerance band (the
+               ///< hull's horizontal restraint is the pads' shear at the ground, 1.57 m below
+               ///< the CoG, which bounds these modes)
+};
+
 struct Target {
   double hz;
   const char* type;
-  bool reproduced;
+  Reproduced reproduced;
 };
 
 /// Best match of each target: the nearest mode of its type (wheel targets take the wheel-bounce
@@ -301,17 +339,22 @@ std::vector<int> matchTargets(const std::vector<Target>& targets, const tvd::fem
   std::set<int> used;
   for (const Target& t : targets) {
     std::string type = t.type;
-    if (primary_only) type = type.substr(0, type.find('+'));
+    if (primary_only)
+      type = type.substr(0, type.find('+'));
     int best = -1;
     for (int i = 0; i < b.count(); ++i) {
       const veh::ModeClass& c = classes[i];
-      if (used.count(i) || !c.matches(type)) continue;
-      if (c.kind == veh::ModeKind::WheelBounce && c.label.find('+') == std::string::npos) continue;
-      if (best < 0 || std::abs(b.frequencies_hz(i) - t.hz) < std::abs(b.frequencies_hz(best) - t.hz))
+      if (used.count(i) || !c.matches(type))
+        continue;
+      if (c.kind == veh::ModeKind::WheelBounce && c.label.find('+') == std::string::npos)
+        continue;
+      if (best < 0 ||
+          std::abs(b.frequencies_hz(i) - t.hz) < std::abs(b.frequencies_hz(best) - t.hz))
         best = i;
     }
     match.push_back(best);
-    if (best >= 0) used.insert(best);
+    if (best >= 0)
+      used.insert(best);
   }
   return match;
 }
@@ -319,7 +362,8 @@ std::vector<int> matchTargets(const std::vector<Target>& targets, const tvd::fem
 void report(const char* variant, const std::vector<Target>& targets, const std::vector<int>& match,
             const tvd::fem::ModalBasis& b, const std::vector<veh::ModeClass>& classes) {
   for (std::size_t k = 0; k < targets.size(); ++k) {
-    if (match[k] < 0) continue;
+    if (match[k] < 0)
+      continue;
     const double f = b.frequencies_hz(match[k]);
     std::printf("%s %-20s paper %6.2f Hz  ours mode %2d %6.2f Hz (%+5.1f %%) %s\n", variant,
                 targets[k].type, targets[k].hz, match[k] + 1, f,
@@ -327,60 +371,73 @@ void report(const char* variant, const std::vector<Target>& targets, const std::
   }
 }
 
+void checkTargets(const std::vector<Target>& targets, const std::vector<int>& full,
+                  const std::vector<int>& primary, const tvd::fem::ModalBasis& b,
+                  double tolerance) {
+  for (std::size_t k = 0; k < targets.size(); ++k) {
+    const Target& t = targets[k];
+    const std::vector<int>& match = t.reproduced == Reproduced::Full ? full : primary;
+    ASSERT_GE(match[k], 0) << "no mode of type " << t.type;
+    const double f = b.frequencies_hz(match[k]);
+    if (t.reproduced == Reproduced::Below) {
+      EXPECT_LT(f, (1.0 - tolerance) * t.hz) << t.type << " now within tolerance: update";
+      EXPECT_GT(f, 0.75 * t.hz) << t.type;
+    } else {
+      EXPECT_NEAR(f, t.hz, tolerance * t.hz) << t.type;
+    }
+  }
+}
+
 TEST_F(VehicleModels, UntrackedModesReproduceTable4) {
-  const std::vector<Target> targets = {
-      {2.60, "longitudinal+pitch", false}, {3.72, "pitch", true},
-      {3.79, "lateral+roll", false},       {4.61, "yaw", false},
-      {4.93, "bounce", true},              {6.73, "roll", true},
-      {17.4, "wheel bounce+roll", true},   {17.7, "wheel bounce+pitch", true}};
+  using R = Reproduced;
+  const std::vector<Target> targets = {{2.60, "longitudinal+pitch", R::Below},
+                                       {3.72, "pitch", R::Full},
+                                       {3.79, "lateral+roll", R::Below},
+                                       {4.61, "yaw", R::Below},
+                                       {4.93, "bounce", R::Full},
+                                       {6.73, "roll", R::Full},
+                                       {17.4, "wheel bounce+roll", R::Full},
+                                       {17.7, "wheel bounce+pitch", R::Full}};
   const auto& b = untracked_->basis;
   const auto& c = untracked_->classes;
   const std::vector<int> full = matchTargets(targets, b, c, false);
   const std::vector<int> primary = matchTargets(targets, b, c, true);
   report("untracked", targets, primary, b, c);
-  // Modes 1-6 are the hull's, 7-20 its 14 wheel bounce modes (Table 4 numbering).
-  for (int i = 0; i < 6; ++i) EXPECT_EQ(c[i].kind, veh::ModeKind::Hull) << i;
-  for (int i = 6; i < 20; ++i) EXPECT_EQ(c[i].kind, veh::ModeKind::WheelBounce) << i;
-  for (std::size_t k = 0; k < targets.size(); ++k) {
-    const Target& t = targets[k];
-    if (t.reproduced) {
-      ASSERT_GE(full[k], 0) << "no mode of type " << t.type;
-      EXPECT_NEAR(b.frequencies_hz(full[k]), t.hz, kUntrackedTolerance * t.hz) << t.type;
-    } else {
-      // Known deviation (reported): the hull's horizontal restraint is the pads' shear at the
-      // ground, 1.57 m below the CoG; it bounds these modes below the paper's values.
-      ASSERT_GE(primary[k], 0) << "no mode whose main motion is " << t.type;
-      EXPECT_LT(b.frequencies_hz(primary[k]), (1.0 - kUntrackedTolerance) * t.hz) << t.type;
-      EXPECT_GT(b.frequencies_hz(primary[k]), 0.75 * t.hz) << t.type;
-    }
-  }
-  // The two hull-coupled wheel modes are the paper's modes 19 and 20, roll then pitch.
+  checkTargets(targets, full, primary, b, kUntrackedTolerance);
+  // Modes 1-6 are the hull's, 7-20 its 14 wheel bounce modes (Table 4 numbering); the two
+  // hull-coupled wheel modes are the paper's 19 and 20, roll then pitch.
+  for (int i = 0; i < 6; ++i)
+    EXPECT_EQ(c[i].kind, veh::ModeKind::Hull) << i;
+  for (int i = 6; i < 20; ++i)
+    EXPECT_EQ(c[i].kind, veh::ModeKind::WheelBounce) << i;
   EXPECT_EQ(c[18].label, "wheel bounce+roll");
   EXPECT_EQ(c[19].label, "wheel bounce+pitch");
 }
 
 TEST_F(VehicleModels, TrackedModesRiseAsInTable4) {
-  const std::vector<Target> targets = {{5.25, "longitudinal", true}, {7.12, "yaw", true},
-                                       {8.49, "bounce", true},       {9.37, "pitch", true},
-                                       {13.7, "roll", true},         {28.77, "wheel bounce", true},
-                                       {29.1, "wheel bounce", true}};
+  using R = Reproduced;
+  const std::vector<Target> targets = {{5.25, "longitudinal+pitch", R::MainMotion},
+                                       {7.12, "yaw", R::Full},
+                                       {8.49, "bounce", R::Full},
+                                       {9.37, "pitch", R::Full},
+                                       {13.7, "roll", R::Full},
+                                       {28.77, "wheel bounce+roll", R::Full},
+                                       {29.1, "wheel bounce+pitch", R::Full}};
   const auto& b = tracked_->basis;
   const auto& c = tracked_->classes;
-  const std::vector<int> match = matchTargets(targets, b, c, false);
-  report("tracked", targets, match, b, c);
-  for (std::size_t k = 0; k < targets.size(); ++k) {
-    ASSERT_GE(match[k], 0) << targets[k].type;
-    EXPECT_NEAR(b.frequencies_hz(match[k]), targets[k].hz, kTrackedTolerance * targets[k].hz)
-        << targets[k].type;
-  }
+  const std::vector<int> full = matchTargets(targets, b, c, false);
+  const std::vector<int> primary = matchTargets(targets, b, c, true);
+  report("tracked", targets, primary, b, c);
+  checkTargets(targets, full, primary, b, kTrackedTolerance);
   // The hull band 5.25-13.7 Hz: lowest and highest hull modes.
   std::vector<double> hull;
   for (int i = 0; i < b.count(); ++i)
-    if (c[i].kind == veh::ModeKind::Hull) hull.push_back(b.frequencies_hz(i));
+    if (c[i].kind == veh::ModeKind::Hull)
+      hull.push_back(b.frequencies_hz(i));
   ASSERT_GE(hull.size(), 6u);
   EXPECT_NEAR(hull.front(), 5.25, kTrackedTolerance * 5.25);
   EXPECT_NEAR(hull.back(), 13.7, kTrackedTolerance * 13.7);
-  // Every hull mode is stiffer than its un-tracked counterpart (the chain stiffens the hull).
+  // The chain roughly doubles the hull band (paper §3.1.1).
   EXPECT_GT(hull.front(), 2.0 * untracked_->basis.frequencies_hz(0));
 }
 

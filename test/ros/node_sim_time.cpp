@@ -57,26 +57,28 @@ class NodeSimTime : public ::testing::Test {
 TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   const double speed = test::requiredParam<double>(private_nh_, "speed");
   const double catch_up_limit = test::requiredParam<double>(private_nh_, "catch_up_limit");
-  const ros::Time t0(100.0);
-
-  // The node starts its clock at the first /clock it sees; keep offering t0 until it publishes.
+  // The clock ticks 1 ms per 10 ms of wall time until the node publishes its first sample.
+  ros::Time t(100.0);
   ASSERT_TRUE(test::spinUntil(
       [&] {
-        setClock(t0);
+        t += ros::Duration(0.001);
+        setClock(t);
         ros::WallDuration(0.01).sleep();
         return messages_ > 0;
       },
       45.0))
       << "the node published nothing";
-  ASSERT_EQ(last_.header.stamp, t0);
+  ASSERT_TRUE(advanceTo(t + ros::Duration(0.001)));
+  t = last_.header.stamp;
+  const ros::Time t0 = t;
+  EXPECT_EQ(last_.station, 0.0);
   terrain_pub_.publish(test::flatProfile(-10.0, 40.0));
   std_msgs::Float64 v;
   v.data = speed;
   speed_pub_.publish(v);
   test::spinFor(0.5);  // both delivered before the clock moves
 
-  // 0.2 s in bursts of 1 .. 20 ms: every step is taken, station = v t exactly.
-  ros::Time t = t0;
+  // 0.2 s in bursts of 1 .. 100 ms: every step is taken, station = v t exactly.
   for (int burst : {1, 1, 2, 5, 20, 1, 3, 7, 10, 50, 100}) {
     t += ros::Duration(burst * 1e-3);
     ASSERT_TRUE(advanceTo(t)) << "no sample at " << t;

@@ -28,7 +28,7 @@ struct VehicleReductionOptions {
   double band_hz = 30.0;           ///< bandwidth of interest [Hz] (paper: 0-30 Hz)
   double mac_threshold = 0.7;      ///< paper Fig. 9: 70 %
   int mogesec_masters = 9;         ///< extra MoGeSeC master DOFs (paper Table 5: 9)
-  int mode_count = 0;              ///< fixed-interface modes; 0: derived from the selection
+  int mode_count = 0;              ///< fixed-interface modes; 0: twice the selected global modes
 };
 
 /// Output rows of every reduced vehicle model, in this order:

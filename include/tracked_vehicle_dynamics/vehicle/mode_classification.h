@@ -43,12 +43,12 @@ const char* hullMotionName(HullMotion motion);
 
 struct ModeClass {
   ModeKind kind = ModeKind::TrackLocal;
-  std::vector<HullMotion> hull_motions;   ///< components that name the mode, strongest first
-  std::string label;                      ///< e.g. "longitudinal+pitch", "wheel bounce+roll"
-  std::array<double, 6> hull_energy{};    ///< share of the mode's kinetic energy per component
-  double hull_share = 0.0;                ///< hull and hull-attached bodies
-  double wheel_share = 0.0;               ///< road wheels (and their arms)
-  double track_share = 0.0;               ///< everything else: the track assemblies
+  std::vector<HullMotion> hull_motions;  ///< components that name the mode, strongest first
+  std::string label;                     ///< e.g. "longitudinal+pitch", "wheel bounce+roll"
+  std::array<double, 6> hull_energy{};   ///< share of the mode's kinetic energy per component
+  double hull_share = 0.0;               ///< hull and hull-attached bodies
+  double wheel_share = 0.0;              ///< road wheels (and their arms)
+  double track_share = 0.0;              ///< everything else: the track assemblies
 
   bool has(HullMotion m) const;
   /// Whether the mode is of a paper type (Table 4): "<primary>[+<secondary>]", e.g. "pitch",

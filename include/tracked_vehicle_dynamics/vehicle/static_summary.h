@@ -11,9 +11,9 @@ namespace tracked_vehicle_dynamics {
 namespace vehicle {
 
 struct StaticSummary {
-  double hull_sag = 0.0;     ///< vertical displacement of the hull CoG [m] (negative: down)
-  double hull_pitch = 0.0;   ///< rotation about +y [rad] (positive: nose down)
-  double hull_roll = 0.0;    ///< rotation about +x [rad] (positive: left side up)
+  double hull_sag = 0.0;            ///< vertical displacement of the hull CoG [m] (negative: down)
+  double hull_pitch = 0.0;          ///< rotation about +y [rad] (positive: nose down)
+  double hull_roll = 0.0;           ///< rotation about +x [rad] (positive: left side up)
   std::vector<double> wheel_loads;  ///< normal force of each road wheel on the track [N]
                                     ///< (VehicleLayout::wheels order, positive: compression)
   std::vector<double> pad_loads;    ///< vertical ground reaction at each road input [N]

@@ -46,12 +46,12 @@ struct AssemblyFrame {
 /// Node ids of one assembly.
 struct TrackAssemblyNodes {
   NodeId base = 0;
-  std::array<NodeId, 5> link{};        ///< across the track, -y to +y; link[2] is the centre
-  std::array<NodeId, 3> front_pin{};   ///< pin at +d/2 along e1, -y to +y
-  std::array<NodeId, 3> rear_pin{};    ///< pin at -d/2 along e1
-  std::array<NodeId, 6> soles{};       ///< pad ground nodes, 3 * pad + column
-  std::array<NodeId, 6> cores{};       ///< pad core nodes (cores[1], cores[4] are the masters)
-  std::array<NodeId, 6> tops{};        ///< pad top nodes (rigid with the link)
+  std::array<NodeId, 5> link{};       ///< across the track, -y to +y; link[2] is the centre
+  std::array<NodeId, 3> front_pin{};  ///< pin at +d/2 along e1, -y to +y
+  std::array<NodeId, 3> rear_pin{};   ///< pin at -d/2 along e1
+  std::array<NodeId, 6> soles{};      ///< pad ground nodes, 3 * pad + column
+  std::array<NodeId, 6> cores{};      ///< pad core nodes (cores[1], cores[4] are the masters)
+  std::array<NodeId, 6> tops{};       ///< pad top nodes (rigid with the link)
 
   NodeId linkCentre() const { return link[2]; }
 };

@@ -19,30 +19,30 @@ namespace vehicle {
 
 /// Sprung mass: a rigid body at its centre of gravity.
 struct HullDescription {
-  double mass = 30300.0;          ///< m_s [kg]
-  double roll_inertia = 3.9e4;    ///< I_x about the CoG [kg m^2]
-  double pitch_inertia = 1.4e5;   ///< I_y about the CoG [kg m^2]
-  double yaw_inertia = 1.6e5;     ///< I_z about the CoG [kg m^2]
-  double cog_height = 1.57;       ///< h_G above the ground plane [m]
-  double cog_x = 0.12;            ///< CoG ahead of the wheelbase centre [m]
-  double length = 7.6;            ///< envelope L [m]
-  double width = 3.42;            ///< envelope B [m]
-  double height = 2.2;            ///< envelope H [m]
+  double mass = 30300.0;         ///< m_s [kg]
+  double roll_inertia = 3.9e4;   ///< I_x about the CoG [kg m^2]
+  double pitch_inertia = 1.4e5;  ///< I_y about the CoG [kg m^2]
+  double yaw_inertia = 1.6e5;    ///< I_z about the CoG [kg m^2]
+  double cog_height = 1.57;      ///< h_G above the ground plane [m]
+  double cog_x = 0.12;           ///< CoG ahead of the wheelbase centre [m]
+  double length = 7.6;           ///< envelope L [m]
+  double width = 3.42;           ///< envelope B [m]
+  double height = 2.2;           ///< envelope H [m]
 };
 
 /// Road-wheel stations: `axle_count` per side, front to rear, centred on x = 0.
 struct RunningGearDescription {
   int axle_count = 7;
-  double axle_spacing = 0.78;           ///< l [m]
-  double track_centre_distance = 2.8;   ///< b, between the track centre lines [m]
+  double axle_spacing = 0.78;          ///< l [m]
+  double track_centre_distance = 2.8;  ///< b, between the track centre lines [m]
 };
 
 /// One road-wheel station's unsprung mass (wheel pair, hub and arm), rigid with its arm.
 struct RoadWheelDescription {
-  double mass = 1200.0;          ///< m_u [kg]
-  double radius = 0.34;          ///< rolling radius on the link's upper surface [m]
-  double spin_inertia = 69.0;    ///< about the wheel axle (y) [kg m^2]
-  double tilt_inertia = 45.0;    ///< about x and z through the wheel centre [kg m^2]
+  double mass = 1200.0;        ///< m_u [kg]
+  double radius = 0.34;        ///< rolling radius on the link's upper surface [m]
+  double spin_inertia = 69.0;  ///< about the wheel axle (y) [kg m^2]
+  double tilt_inertia = 45.0;  ///< about x and z through the wheel centre [kg m^2]
 };
 
 /// Torsion-bar suspension: a trailing arm pivoting about a lateral axis ahead of and above the
@@ -50,8 +50,8 @@ struct RoadWheelDescription {
 /// and stands on its track assembly through a contact patch on the link's upper surface (normal
 /// and longitudinal force) and the guide horn (lateral force).
 struct SuspensionDescription {
-  double torsion_bar_stiffness = 5.2e5;   ///< k_t [N m/rad]
-  double arm_length = 0.58;               ///< a, pivot to wheel centre [m]
+  double torsion_bar_stiffness = 5.2e5;  ///< k_t [N m/rad]
+  double arm_length = 0.58;              ///< a, pivot to wheel centre [m]
   /// beta, static arm angle, pivot above the wheel centre [rad]
   double arm_angle = 9.0 * (3.14159265358979323846 / 180.0);
   double pivot_y = 0.98;                  ///< |y| of the pivots (hull side walls) [m]
@@ -63,72 +63,72 @@ struct SuspensionDescription {
 
 /// The track assembly (link, two pins, two pads) and the chain it forms.
 struct TrackAssemblyDescription {
-  int count = 92;                       ///< assemblies per side
-  int ground_count = 30;                ///< assemblies per side on the ground
-  double chain_length = 14.858;         ///< per side [m]
-  double ground_length = 4.845;         ///< ground-contact length per side [m]
-  double pitch = 0.1615;                ///< assembly pitch [m]
-  double pin_joint_distance = 0.065;    ///< between pins of adjacent assemblies [m]
-  double mass = 27.0;                   ///< m_t [kg]
-  double shear_stiffness_x = 1.4e6;     ///< k_x [N/m]
-  double shear_stiffness_y = 3.4e6;     ///< k_y [N/m]
+  int count = 92;                          ///< assemblies per side
+  int ground_count = 30;                   ///< assemblies per side on the ground
+  double chain_length = 14.858;            ///< per side [m]
+  double ground_length = 4.845;            ///< ground-contact length per side [m]
+  double pitch = 0.1615;                   ///< assembly pitch [m]
+  double pin_joint_distance = 0.065;       ///< between pins of adjacent assemblies [m]
+  double mass = 27.0;                      ///< m_t [kg]
+  double shear_stiffness_x = 1.4e6;        ///< k_x [N/m]
+  double shear_stiffness_y = 3.4e6;        ///< k_y [N/m]
   double compression_stiffness = 1.895e7;  ///< k_z [N/m]
   double torsional_stiffness_y = 6.3e4;    ///< k_ry [N m/rad]
-  double width = 0.62;                  ///< across the track [m]
-  double pitch_line_height = 0.063;     ///< pin axes above the pad bottom [m]
-  double upper_surface_height = 0.093;  ///< wheel path above the pad bottom [m]
-  double pad_lateral_offset = 0.155;    ///< |y| of each pad's centre from the track centre [m]
-  double pad_column_offset = 0.070;     ///< fore/aft spring columns from the pad centre [m]
-  double pad_rubber_below_core = 0.015; ///< [m]
-  double pad_rubber_above_core = 0.015; ///< [m]
-  double pad_core_thickness = 0.003;    ///< steel core plate [m]
-  double pad_mass = 1.5;                ///< each pad, rubber and core [kg]
-  double pad_sole_mass_fraction = 0.3;  ///< share of a pad's mass lumped at its ground nodes
-  double pin_diameter = 0.030;          ///< [m]
-  double steel_young_modulus = 205e9;   ///< [Pa]
-  double steel_poisson_ratio = 0.29;    ///< [-]
-  double steel_density = 7850.0;        ///< [kg/m^3]
+  double width = 0.62;                     ///< across the track [m]
+  double pitch_line_height = 0.063;        ///< pin axes above the pad bottom [m]
+  double upper_surface_height = 0.093;     ///< wheel path above the pad bottom [m]
+  double pad_lateral_offset = 0.155;       ///< |y| of each pad's centre from the track centre [m]
+  double pad_column_offset = 0.070;        ///< fore/aft spring columns from the pad centre [m]
+  double pad_rubber_below_core = 0.015;    ///< [m]
+  double pad_rubber_above_core = 0.015;    ///< [m]
+  double pad_core_thickness = 0.003;       ///< steel core plate [m]
+  double pad_mass = 1.5;                   ///< each pad, rubber and core [kg]
+  double pad_sole_mass_fraction = 0.3;     ///< share of a pad's mass lumped at its ground nodes
+  double pin_diameter = 0.030;             ///< [m]
+  double steel_young_modulus = 205e9;      ///< [Pa]
+  double steel_poisson_ratio = 0.29;       ///< [-]
+  double steel_density = 7850.0;           ///< [kg/m^3]
   /// Fore/aft link members (pins to link centre), one of three across the width: they give the
   /// chain its bending stiffness about y (rigid pin joints, paper §2.2).
-  double link_member_area = 1.2e-3;          ///< [m^2]
-  double link_member_bending_inertia = 1.1e-8;  ///< about the lateral axis, chain bending [m^4]
-  double link_member_lateral_inertia = 1.0e-6;  ///< about the normal axis [m^4]
-  double link_member_torsion_constant = 2.0e-8; ///< [m^4]
+  double link_member_area = 1.2e-3;              ///< [m^2]
+  double link_member_bending_inertia = 1.1e-8;   ///< about the lateral axis, chain bending [m^4]
+  double link_member_lateral_inertia = 1.0e-6;   ///< about the normal axis [m^4]
+  double link_member_torsion_constant = 2.0e-8;  ///< [m^4]
   /// Transverse link beam (across the track).
-  double link_beam_area = 2.0e-3;            ///< [m^2]
-  double link_beam_bending_inertia = 4.0e-7; ///< about the tangential axis (pads' load) [m^4]
-  double link_beam_inplane_inertia = 4.0e-6; ///< about the normal axis [m^4]
-  double link_beam_torsion_constant = 3.0e-7;///< [m^4]
+  double link_beam_area = 2.0e-3;              ///< [m^2]
+  double link_beam_bending_inertia = 4.0e-7;   ///< about the tangential axis (pads' load) [m^4]
+  double link_beam_inplane_inertia = 4.0e-6;   ///< about the normal axis [m^4]
+  double link_beam_torsion_constant = 3.0e-7;  ///< [m^4]
 };
 
 /// The rear drive sprocket; rigid with the hull (held by the final drive and brakes).
 struct SprocketDescription {
-  double radius = 0.334;       ///< pitch-line radius: the chain's pin axes wrap this circle [m]
-  double centre_x = -3.05;     ///< [m]
-  double centre_z = 0.78;      ///< [m]
-  double mass = 1100.0;        ///< [kg]
-  double inertia = 55.0;       ///< about each axis through its centre [kg m^2]
+  double radius = 0.334;    ///< pitch-line radius: the chain's pin axes wrap this circle [m]
+  double centre_x = -3.05;  ///< [m]
+  double centre_z = 0.78;   ///< [m]
+  double mass = 1100.0;     ///< [kg]
+  double inertia = 55.0;    ///< about each axis through its centre [kg m^2]
 };
 
 /// The front idler; rigid with the hull. Its x is not an input: the track tensioner sets it so
 /// that the chain loop closes (chainPath() solves it).
 struct IdlerDescription {
-  double radius = 0.33;        ///< pitch-line radius [m]
-  double centre_z = 0.62;      ///< [m]
-  double mass = 700.0;         ///< [kg]
-  double inertia = 35.0;       ///< about each axis through its centre [kg m^2]
+  double radius = 0.33;    ///< pitch-line radius [m]
+  double centre_z = 0.62;  ///< [m]
+  double mass = 700.0;     ///< [kg]
+  double inertia = 35.0;   ///< about each axis through its centre [kg m^2]
 };
 
 /// Return rollers carrying the top run.
 struct ReturnRollerDescription {
-  std::vector<double> x;       ///< stations [m]; empty = no rollers
-  double radius = 0.15;        ///< pitch-line radius [m]
-  double mass = 0.0;           ///< each [kg]
+  std::vector<double> x;  ///< stations [m]; empty = no rollers
+  double radius = 0.15;   ///< pitch-line radius [m]
+  double mass = 0.0;      ///< each [kg]
 };
 
 /// How the chain is tied to the running gear and the ground.
 struct ChainTieDescription {
-  double ground_stiffness = 2e10;   ///< each pad ground node, x y z (rigid road) [N/m]
+  double ground_stiffness = 2e10;  ///< each pad ground node, x y z (rigid road) [N/m]
 };
 
 /// Damping model for the dynamics stage (paper eq. 20 uses modal damping ratios).
@@ -136,10 +136,10 @@ enum class DampingModel { Modal, Rayleigh };
 
 struct DampingDescription {
   DampingModel model = DampingModel::Modal;
-  double modal_ratio = 0.05;        ///< zeta of every mode [-]
-  double rayleigh_alpha = 0.0;      ///< C = alpha M + beta K [1/s]
-  double rayleigh_beta = 0.0;       ///< [s]
-  std::vector<int> damped_stations; ///< axle numbers 1..axle_count with a rotary arm damper
+  double modal_ratio = 0.05;         ///< zeta of every mode [-]
+  double rayleigh_alpha = 0.0;       ///< C = alpha M + beta K [1/s]
+  double rayleigh_beta = 0.0;        ///< [s]
+  std::vector<int> damped_stations;  ///< axle numbers 1..axle_count with a rotary arm damper
 };
 
 /// A named point of the hull (crew seat, sensor mount), rigid with the hull.
@@ -181,7 +181,8 @@ VehicleDescription parseVehicleDescription(const std::string& text, const std::s
 /// Checks ranges and consistency (chain length = pitch x count, ground-contact assemblies not
 /// more than the chain has, the wheelbase fits on the ground run, ...). Throws InputError
 /// "<where>: <key path>: <what>".
-void validateDescription(const VehicleDescription& description, const std::string& where = "vehicle");
+void validateDescription(const VehicleDescription& description,
+                         const std::string& where = "vehicle");
 
 /// Canonical text of every value (key path = value in SI, fixed order, 17 significant digits);
 /// sources and comments are excluded.

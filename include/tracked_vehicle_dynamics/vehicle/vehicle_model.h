@@ -49,20 +49,20 @@ constexpr NodeId kHullNode = 1;
 
 /// One road-wheel station.
 struct WheelStation {
-  std::string name;        ///< "road_wheel_left_1" (front) ... "road_wheel_right_7" (rear)
-  int side = 0;            ///< 0 left (+y), 1 right (-y)
-  int axle = 0;            ///< 0 front ... axle_count - 1 rear
-  NodeId pivot = 0;        ///< on the hull (rigid-joint slave of the hull node)
-  NodeId arm = 0;          ///< arm side of the revolute joint; its ry is the station's DOF
-  NodeId centre = 0;       ///< wheel centre (slave of the arm)
-  int assembly = -1;       ///< index into VehicleLayout::assemblies of the assembly it stands on
+  std::string name;   ///< "road_wheel_left_1" (front) ... "road_wheel_right_7" (rear)
+  int side = 0;       ///< 0 left (+y), 1 right (-y)
+  int axle = 0;       ///< 0 front ... axle_count - 1 rear
+  NodeId pivot = 0;   ///< on the hull (rigid-joint slave of the hull node)
+  NodeId arm = 0;     ///< arm side of the revolute joint; its ry is the station's DOF
+  NodeId centre = 0;  ///< wheel centre (slave of the arm)
+  int assembly = -1;  ///< index into VehicleLayout::assemblies of the assembly it stands on
   std::size_t contact_spring = 0;  ///< index into Model::springs of its normal contact
 };
 
 /// One track assembly of the model.
 struct AssemblyRecord {
   int side = 0;
-  int index = 0;           ///< position k in the chain loop
+  int index = 0;  ///< position k in the chain loop
   bool on_ground = false;
   TrackAssemblyNodes nodes;
 };
@@ -92,13 +92,13 @@ struct MassBreakdown {
 struct VehicleLayout {
   Variant variant = Variant::Untracked;
   NodeId hull = kHullNode;
-  std::vector<WheelStation> wheels;          ///< left 1..n then right 1..n
+  std::vector<WheelStation> wheels;  ///< left 1..n then right 1..n
   std::vector<AssemblyRecord> assemblies;
-  std::vector<RoadInput> road_inputs;        ///< in the order of the model's ground springs
+  std::vector<RoadInput> road_inputs;  ///< in the order of the model's ground springs
   std::map<std::string, NodeId> named_points;
   std::vector<NodeId> sprockets, idlers, return_rollers;  ///< per side (tracked only)
-  double idler_x = 0.0;                      ///< idler centre x set by the tensioner [m]
-  PadSprings pad_springs;                    ///< calibrated pad springs
+  double idler_x = 0.0;    ///< idler centre x set by the tensioner [m]
+  PadSprings pad_springs;  ///< calibrated pad springs
   MassBreakdown mass;
   /// Node ids of the hull-attached bodies whose kinetic energy counts as "hull" in the mode
   /// classification besides the hull node (sprockets, idlers, rollers).
