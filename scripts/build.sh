@@ -10,4 +10,9 @@ JOBS="${JOBS:-$(nproc)}"
 cmake -S . -B "$BUILD_DIR" -DPYTHON_EXECUTABLE=/usr/bin/python3 -DCMAKE_BUILD_TYPE=Release \
   -DCATKIN_ENABLE_TESTING="${CATKIN_ENABLE_TESTING:-ON}" >"$BUILD_DIR.configure.log" 2>&1 \
   || { cat "$BUILD_DIR.configure.log"; exit 1; }
-cmake --build "$BUILD_DIR" -j"$JOBS" "$@"
+# Arguments name the targets to build (default: all).
+if [ $# -gt 0 ]; then
+  cmake --build "$BUILD_DIR" -j"$JOBS" --target "$@"
+else
+  cmake --build "$BUILD_DIR" -j"$JOBS"
+fi
