@@ -20,7 +20,14 @@ bag="$dir/${track}_${speed}kmh.bag"
 mkdir -p "$dir"
 if [ ! -s "$bag" ]; then
   tmp="$dir/.${track}_${speed}kmh.$$.bag"
-  rosrun tracked_vehicle_dynamics tvd_make_bag --track "$track" --speed-kmh "$speed" --out "$tmp"
+  # The devel/install space's executable (rosrun may see several build trees in the source).
+  make_bag=$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics tvd_make_bag \
+    2>/dev/null | head -n 1)
+  if [ -z "$make_bag" ] || [ ! -x "$make_bag" ]; then
+    echo "play_track_bag.sh: tvd_make_bag not found (build the package and source its setup.bash)" >&2
+    exit 2
+  fi
+  "$make_bag" --track "$track" --speed-kmh "$speed" --out "$tmp"
   mv -f "$tmp" "$bag"
 fi
 exec rosbag play --clock --hz=1000 "${extra[@]}" "$bag"

@@ -8,8 +8,10 @@ namespace ros_layer {
 TerrainPatch fromMsg(const TerrainProfile& msg) {
   const std::size_t lines = msg.lateral.size();
   const std::size_t samples = msg.samples;
-  if (lines == 0) throw InputError("TerrainProfile: lateral is empty");
-  if (samples == 0) throw InputError("TerrainProfile: samples is 0");
+  if (lines == 0)
+    throw InputError("TerrainProfile: lateral is empty");
+  if (samples == 0)
+    throw InputError("TerrainProfile: samples is 0");
   if (msg.heights.size() != lines * samples) {
     throw InputError("TerrainProfile: heights has " + std::to_string(msg.heights.size()) +
                      " values, expected lateral.size() x samples = " + std::to_string(lines) +
@@ -20,9 +22,9 @@ TerrainPatch fromMsg(const TerrainProfile& msg) {
   patch.spacing = msg.spacing;
   patch.lateral = Eigen::Map<const Vector>(msg.lateral.data(), static_cast<Eigen::Index>(lines));
   // Row-major in the message, column-major in Eigen.
-  patch.heights = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
-                                                 Eigen::RowMajor>>(
-      msg.heights.data(), static_cast<Eigen::Index>(lines), static_cast<Eigen::Index>(samples));
+  patch.heights =
+      Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+          msg.heights.data(), static_cast<Eigen::Index>(lines), static_cast<Eigen::Index>(samples));
   return patch;
 }
 
@@ -42,7 +44,8 @@ void toMsg(const std::vector<WheelState>& wheels, double station, double speed, 
   msg->wheels.resize(wheels.size());
   for (std::size_t i = 0; i < wheels.size(); ++i) {
     RoadWheelState& out = msg->wheels[i];
-    if (out.name != wheels[i].name) out.name = wheels[i].name;
+    if (out.name != wheels[i].name)
+      out.name = wheels[i].name;
     out.displacement = wheels[i].displacement;
     out.velocity = wheels[i].velocity;
     out.acceleration = wheels[i].acceleration;
@@ -50,8 +53,10 @@ void toMsg(const std::vector<WheelState>& wheels, double station, double speed, 
 }
 
 std::vector<WheelState> fromMsg(const RoadWheels& msg, double* station, double* speed) {
-  if (station != nullptr) *station = msg.station;
-  if (speed != nullptr) *speed = msg.speed;
+  if (station != nullptr)
+    *station = msg.station;
+  if (speed != nullptr)
+    *speed = msg.speed;
   std::vector<WheelState> wheels(msg.wheels.size());
   for (std::size_t i = 0; i < wheels.size(); ++i) {
     wheels[i].name = msg.wheels[i].name;
@@ -83,7 +88,8 @@ ComfortReport fromMsg(const Comfort& msg) {
   report.metrics.weighted_rms = msg.weighted_rms;
   report.metrics.vdv = msg.vdv;
   report.metrics.mtvv = msg.mtvv;
-  if (msg.has_absorbed_power) report.metrics.absorbed_power = msg.absorbed_power;
+  if (msg.has_absorbed_power)
+    report.metrics.absorbed_power = msg.absorbed_power;
   report.metrics.duration = msg.duration;
   report.metrics.samples = static_cast<std::size_t>(msg.samples);
   report.running_rms = msg.running_rms;
@@ -103,8 +109,8 @@ void toMsg(const RigidPose& pose, geometry_msgs::Transform* msg) {
 RigidPose fromMsg(const geometry_msgs::Transform& msg) {
   RigidPose pose;
   pose.translation = fromMsg(msg.translation);
-  pose.rotation = Eigen::Quaterniond(msg.rotation.w, msg.rotation.x, msg.rotation.y,
-                                     msg.rotation.z);
+  pose.rotation =
+      Eigen::Quaterniond(msg.rotation.w, msg.rotation.x, msg.rotation.y, msg.rotation.z);
   return pose;
 }
 
@@ -116,7 +122,9 @@ geometry_msgs::Vector3 toMsg(const Vector3& v) {
   return msg;
 }
 
-Vector3 fromMsg(const geometry_msgs::Vector3& msg) { return Vector3(msg.x, msg.y, msg.z); }
+Vector3 fromMsg(const geometry_msgs::Vector3& msg) {
+  return Vector3(msg.x, msg.y, msg.z);
+}
 
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics

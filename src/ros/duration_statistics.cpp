@@ -16,14 +16,17 @@ void DurationStatistics::add(double seconds) {
   max_ = std::max(max_, s);
 }
 
-void DurationStatistics::clear() { *this = DurationStatistics(); }
+void DurationStatistics::clear() {
+  *this = DurationStatistics();
+}
 
 double DurationStatistics::mean() const {
   return count_ == 0 ? 0.0 : sum_ / static_cast<double>(count_);
 }
 
 double DurationStatistics::percentile(double fraction) const {
-  if (count_ == 0) return 0.0;
+  if (count_ == 0)
+    return 0.0;
   const double wanted = std::clamp(fraction, 0.0, 1.0) * static_cast<double>(count_);
   std::uint64_t seen = 0;
   for (int bin = 0; bin < kBins; ++bin) {

@@ -24,8 +24,10 @@ class Reader {
   /// True and the value when set; throws when set with the wrong type.
   template <typename T>
   bool read(const std::string& key, T* value, const char* type) const {
-    if (!nh_.hasParam(key)) return false;
-    if (!nh_.getParam(key, *value)) throw error(key, std::string("must be ") + type);
+    if (!nh_.hasParam(key))
+      return false;
+    if (!nh_.getParam(key, *value))
+      throw error(key, std::string("must be ") + type);
     return true;
   }
 
@@ -38,13 +40,15 @@ class Reader {
   double number(const std::string& key, double fallback) const {
     double value = fallback;
     read(key, &value, "a number");
-    if (!std::isfinite(value)) throw error(key, "must be finite");
+    if (!std::isfinite(value))
+      throw error(key, "must be finite");
     return value;
   }
 
   double positive(const std::string& key, double fallback, const char* unit) const {
     const double value = number(key, fallback);
-    if (value <= 0.0) throw error(key, "must be > 0 " + std::string(unit) + ", got " + text(value));
+    if (value <= 0.0)
+      throw error(key, "must be > 0 " + std::string(unit) + ", got " + text(value));
     return value;
   }
 
@@ -86,14 +90,18 @@ std::string defaultCacheDirectory() {
 }
 
 dynamics::DiscretizationMethod parseMethod(const std::string& text, const std::string& name) {
-  if (text == "modal") return dynamics::DiscretizationMethod::ModalDecoupled;
-  if (text == "exact") return dynamics::DiscretizationMethod::AugmentedExponential;
+  if (text == "modal")
+    return dynamics::DiscretizationMethod::ModalDecoupled;
+  if (text == "exact")
+    return dynamics::DiscretizationMethod::AugmentedExponential;
   throw ParameterError(name + ": unknown method '" + text + "' (modal or exact)");
 }
 
 dynamics::InputHold parseHold(const std::string& text, const std::string& name) {
-  if (text == "first_order") return dynamics::InputHold::FirstOrder;
-  if (text == "zero_order") return dynamics::InputHold::ZeroOrder;
+  if (text == "first_order")
+    return dynamics::InputHold::FirstOrder;
+  if (text == "zero_order")
+    return dynamics::InputHold::ZeroOrder;
   throw ParameterError(name + ": unknown hold '" + text + "' (first_order or zero_order)");
 }
 
@@ -112,7 +120,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("variant", e.what());
   }
   p.cache_dir = in.string("cache_dir", defaultCacheDirectory());
-  if (p.cache_dir.empty()) throw in.error("cache_dir", "must not be empty");
+  if (p.cache_dir.empty())
+    throw in.error("cache_dir", "must not be empty");
 
   OnlineVehicleOptions& v = p.vehicle_options;
   v.rate = in.positive("rate", v.rate, "Hz");
@@ -122,12 +131,14 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
                                        Reader::text(p.publish_rate));
   }
   p.comfort_rate = in.positive("comfort_rate", p.comfort_rate, "Hz");
-  if (p.comfort_rate > v.rate) throw in.error("comfort_rate", "must not exceed ~rate");
+  if (p.comfort_rate > v.rate)
+    throw in.error("comfort_rate", "must not exceed ~rate");
   v.method = parseMethod(in.string("method", "modal"), in.name("method"));
   v.hold = parseHold(in.string("hold", "first_order"), in.name("hold"));
   v.lateral_offset = in.number("lateral_offset", v.lateral_offset);
   v.comfort_point = in.string("comfort_point", v.comfort_point);
-  if (v.comfort_point.empty()) throw in.error("comfort_point", "must not be empty");
+  if (v.comfort_point.empty())
+    throw in.error("comfort_point", "must not be empty");
   v.comfort_running_rms_time =
       in.positive("comfort_running_rms_time", v.comfort_running_rms_time, "s");
   v.terrain_keep_behind = in.nonNegative("terrain_keep_behind", v.terrain_keep_behind, "m");
@@ -138,9 +149,12 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.odom_frame = in.string("odom_frame", p.odom_frame);
   p.base_frame = in.string("base_frame", p.base_frame);
   p.frame_prefix = in.string("frame_prefix", p.frame_prefix);
-  if (p.odom_frame.empty()) throw in.error("odom_frame", "must not be empty");
-  if (p.base_frame.empty()) throw in.error("base_frame", "must not be empty");
-  if (p.odom_frame == p.base_frame) throw in.error("base_frame", "must differ from ~odom_frame");
+  if (p.odom_frame.empty())
+    throw in.error("odom_frame", "must not be empty");
+  if (p.base_frame.empty())
+    throw in.error("base_frame", "must not be empty");
+  if (p.odom_frame == p.base_frame)
+    throw in.error("base_frame", "must differ from ~odom_frame");
   p.publish_points_all = !in.read("points", &p.points, "a list of strings");
 
   reduction::VehicleReductionOptions& r = p.reduction_options;
@@ -155,7 +169,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   r.global_modes = in.integer("reduction/global_modes", r.global_modes, 1);
   r.band_hz = in.positive("reduction/band_hz", r.band_hz, "Hz");
   r.mac_threshold = in.positive("reduction/mac_threshold", r.mac_threshold, "");
-  if (r.mac_threshold > 1.0) throw in.error("reduction/mac_threshold", "must be <= 1");
+  if (r.mac_threshold > 1.0)
+    throw in.error("reduction/mac_threshold", "must be <= 1");
   r.mogesec_masters = in.integer("reduction/mogesec_masters", r.mogesec_masters, 0);
   r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0);
   return p;

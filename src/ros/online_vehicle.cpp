@@ -35,7 +35,8 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
 
 std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system) {
   std::vector<bool> flags(static_cast<std::size_t>(system.inputCount()), false);
-  if (system.input_damping.size() == 0) return flags;
+  if (system.input_damping.size() == 0)
+    return flags;
   for (Eigen::Index q = 0; q < system.inputCount(); ++q) {
     flags[static_cast<std::size_t>(q)] = !system.input_damping.col(q).isZero(0.0);
   }
@@ -84,28 +85,31 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
     throw InputError("online vehicle: terrain_keep_behind must be >= 0 and finite");
   }
   if (sampler_.size() != model.system.inputCount()) {
-    throw InputError("online vehicle: the model has " +
-                     std::to_string(model.system.inputCount()) + " road inputs but " +
-                     std::to_string(sampler_.size()) + " input stations");
+    throw InputError("online vehicle: the model has " + std::to_string(model.system.inputCount()) +
+                     " road inputs but " + std::to_string(sampler_.size()) + " input stations");
   }
   base_names_ = model.system.output_names;
-  const dynamics::OutputLayout layout(base_names_, {dynamics::OutputQuantity::Displacement,
-                                                    dynamics::OutputQuantity::Velocity,
-                                                    dynamics::OutputQuantity::Acceleration});
+  const dynamics::OutputLayout layout(
+      base_names_, {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
+                    dynamics::OutputQuantity::Acceleration});
   disp_offset_ = layout.offset(dynamics::OutputQuantity::Displacement);
   vel_offset_ = layout.offset(dynamics::OutputQuantity::Velocity);
   acc_offset_ = layout.offset(dynamics::OutputQuantity::Acceleration);
-  for (const char* name : kHullOutputs) hull_rows_.push_back(outputRow(name));
-  for (const auto& wheel : geometry_.wheels) wheel_rows_.push_back(outputRow(wheel.name + " uz"));
+  for (const char* name : kHullOutputs)
+    hull_rows_.push_back(outputRow(name));
+  for (const auto& wheel : geometry_.wheels)
+    wheel_rows_.push_back(outputRow(wheel.name + " uz"));
   for (const auto& point : geometry_.points) {
-    for (const char* t : kTranslations) point_rows_.push_back(outputRow(point.name + " " + t));
+    for (const char* t : kTranslations)
+      point_rows_.push_back(outputRow(point.name + " " + t));
   }
-  if (comfort_point_.empty()) comfort_point_ = "hull";
+  if (comfort_point_.empty())
+    comfort_point_ = "hull";
   comfort_row_ = acc_offset_ + outputRow(comfort_point_ + " uz");
 
   input_.setZero(simulator_.inputCount());
-  equilibrium_ = dynamics::staticEquilibrium(model.system, Vector::Zero(sampler_.size()),
-                                             model.gravity_load);
+  equilibrium_ =
+      dynamics::staticEquilibrium(model.system, Vector::Zero(sampler_.size()), model.gravity_load);
   wheel_states_.resize(geometry_.wheels.size());
   for (std::size_t i = 0; i < geometry_.wheels.size(); ++i) {
     wheel_states_[i].name = geometry_.wheels[i].name;
@@ -151,8 +155,7 @@ void OnlineVehicle::setSpeed(double speed) {
 StepResult OnlineVehicle::step() {
   StepResult result;
   station_ += speed_ * time_step_;
-  result.uncovered =
-      sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &input_);
+  result.uncovered = sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &input_);
   simulator_.step(input_);
   const double acceleration = simulator_.outputs()(comfort_row_);
   if (!simulator_.outputs().allFinite()) {
@@ -171,7 +174,8 @@ StepResult OnlineVehicle::step() {
 Vector6 OnlineVehicle::block(const std::vector<Eigen::Index>& rows, Eigen::Index offset) const {
   const Vector& y = simulator_.outputs();
   Vector6 out;
-  for (int i = 0; i < 6; ++i) out(i) = y(offset + rows[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 6; ++i)
+    out(i) = y(offset + rows[static_cast<std::size_t>(i)]);
   return out;
 }
 

@@ -16,7 +16,8 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
                      " input stations but " + std::to_string(lateral_.size()) +
                      " lateral positions");
   }
-  if (needs_rate_.empty()) needs_rate_.assign(static_cast<std::size_t>(stations_.size()), true);
+  if (needs_rate_.empty())
+    needs_rate_.assign(static_cast<std::size_t>(stations_.size()), true);
   if (static_cast<Eigen::Index>(needs_rate_.size()) != stations_.size()) {
     throw InputError("road input sampler: " + std::to_string(needs_rate_.size()) +
                      " rate flags for " + std::to_string(stations_.size()) + " inputs");

@@ -47,9 +47,9 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 }
 
 void printStats(const char* what, const rl::DurationStatistics& s) {
-  std::printf("%-28s mean %7.1f us  p50 %7.1f us  p99 %7.1f us  max %7.1f us  (%lu steps)\n",
-              what, s.mean() * 1e6, s.percentile(0.5) * 1e6, s.percentile(0.99) * 1e6,
-              s.max() * 1e6, static_cast<unsigned long>(s.count()));
+  std::printf("%-28s mean %7.1f us  p50 %7.1f us  p99 %7.1f us  max %7.1f us  (%lu steps)\n", what,
+              s.mean() * 1e6, s.percentile(0.5) * 1e6, s.percentile(0.99) * 1e6, s.max() * 1e6,
+              static_cast<unsigned long>(s.count()));
 }
 
 int offline(const std::string& vehicle_file, const std::string& variant, const std::string& cache,
@@ -60,9 +60,8 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   rl::OnlineVehicleOptions options;
   options.rate = rate;
   options.method = rl::parseMethod(method, "--method");
-  rl::OnlineVehicle vehicle(model,
-                            rl::vehicleGeometry(tvd::vehicle::loadVehicleDescription(vehicle_file)),
-                            options);
+  rl::OnlineVehicle vehicle(
+      model, rl::vehicleGeometry(tvd::vehicle::loadVehicleDescription(vehicle_file)), options);
   std::printf("model: %s %s, %ld DOFs, %ld road inputs, %ld outputs, method %s, %.0f Hz\n",
               vehicle_file.c_str(), variant.c_str(), static_cast<long>(model.size()),
               static_cast<long>(model.system.inputCount()),
@@ -114,13 +113,16 @@ double cpuSeconds(int pid) {
   std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto close = content.rfind(')');
-  if (close == std::string::npos) return -1.0;
+  if (close == std::string::npos)
+    return -1.0;
   std::istringstream rest(content.substr(close + 2));
   std::string field;
   double utime = 0.0, stime = 0.0;
   for (int i = 3; i <= 15 && rest >> field; ++i) {
-    if (i == 14) utime = std::stod(field);
-    if (i == 15) stime = std::stod(field);
+    if (i == 14)
+      utime = std::stod(field);
+    if (i == 15)
+      stime = std::stod(field);
   }
   return (utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
@@ -142,14 +144,20 @@ struct Driver {
   }
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
     for (const auto& s : msg->status) {
-      if (s.name.size() < 6 || s.name.compare(s.name.size() - 6, 6, ": loop") != 0) continue;
+      if (s.name.size() < 6 || s.name.compare(s.name.size() - 6, 6, ": loop") != 0)
+        continue;
       for (const auto& kv : s.values) {
         const double value = std::atof(kv.value.c_str());
-        if (kv.key == "step time p99 since start [us]") step_p99_us = value;
-        if (kv.key == "tick time p99 since start [us]") tick_p99_us = value;
-        if (kv.key == "steps") steps = value;
-        if (kv.key == "late ticks (total)") late = value;
-        if (kv.key == "resynchronisations (total)") resyncs = value;
+        if (kv.key == "step time p99 since start [us]")
+          step_p99_us = value;
+        if (kv.key == "tick time p99 since start [us]")
+          tick_p99_us = value;
+        if (kv.key == "steps")
+          steps = value;
+        if (kv.key == "late ticks (total)")
+          late = value;
+        if (kv.key == "resynchronisations (total)")
+          resyncs = value;
       }
     }
   }
@@ -159,14 +167,15 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
   ros::init(argc, argv, "ros_node_bench", ros::init_options::AnonymousName);
   ros::NodeHandle nh;
   Driver d;
-  ros::Subscriber wheels = nh.subscribe("road_wheels", 1000, &Driver::onWheels, &d,
-                                        ros::TransportHints().tcpNoDelay());
+  ros::Subscriber wheels =
+      nh.subscribe("road_wheels", 1000, &Driver::onWheels, &d, ros::TransportHints().tcpNoDelay());
   ros::Subscriber diag = nh.subscribe("/diagnostics", 10, &Driver::onDiagnostics, &d);
   ros::Publisher terrain = nh.advertise<tvd::TerrainProfile>("terrain_profile", 100);
   ros::Publisher speed = nh.advertise<std_msgs::Float64>("speed", 10);
   const ros::WallTime wait_end = ros::WallTime::now() + ros::WallDuration(60.0);
-  while (ros::ok() && (terrain.getNumSubscribers() == 0 || speed.getNumSubscribers() == 0 ||
-                       wheels.getNumPublishers() == 0) &&
+  while (ros::ok() &&
+         (terrain.getNumSubscribers() == 0 || speed.getNumSubscribers() == 0 ||
+          wheels.getNumPublishers() == 0) &&
          ros::WallTime::now() < wait_end) {
     ros::spinOnce();
     ros::WallDuration(0.01).sleep();
@@ -189,7 +198,8 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
   double next_speed = 0.0, next_change = 0.25;
   while (ros::ok()) {
     const double t = (ros::WallTime::now() - start).toSec();
-    if (t >= run_time) break;
+    if (t >= run_time)
+      break;
     while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
       msg.header.stamp = ros::Time::now();
       rl::toMsg(run.patches[next_patch++].patch, &msg);
@@ -223,20 +233,23 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
   }
   std::sort(d.latencies.begin(), d.latencies.end());
   auto pct = [&](double f) {
-    if (d.latencies.empty()) return -1.0;
+    if (d.latencies.empty())
+      return -1.0;
     return d.latencies[std::min(d.latencies.size() - 1,
                                 static_cast<std::size_t>(f * d.latencies.size()))];
   };
   std::printf("run: %s at %.1f km/h, %.2f s wall, %zu road_wheels messages (%.0f Hz)\n",
               track.track.c_str(), track.speed * 3.6, wall, received, received / wall);
   std::printf("node CPU: %.3f s in %.2f s = %.1f %% of one core\n", cpu, wall, 100.0 * cpu / wall);
-  std::printf("latency speed message -> next published sample (tf, then road_wheels): "
-              "median %.2f ms, p95 %.2f ms, max %.2f ms (%zu changes)\n",
-              pct(0.5) * 1e3, pct(0.95) * 1e3,
-              d.latencies.empty() ? -1.0 : d.latencies.back() * 1e3, d.latencies.size());
-  std::printf("node diagnostics: step time p99 %.0f us, tick time p99 %.0f us, %.0f steps, "
-              "%.0f late ticks, %.0f resynchronisations\n",
-              d.step_p99_us, d.tick_p99_us, d.steps, d.late, d.resyncs);
+  std::printf(
+      "latency speed message -> next published sample (tf, then road_wheels): "
+      "median %.2f ms, p95 %.2f ms, max %.2f ms (%zu changes)\n",
+      pct(0.5) * 1e3, pct(0.95) * 1e3, d.latencies.empty() ? -1.0 : d.latencies.back() * 1e3,
+      d.latencies.size());
+  std::printf(
+      "node diagnostics: step time p99 %.0f us, tick time p99 %.0f us, %.0f steps, "
+      "%.0f late ticks, %.0f resynchronisations\n",
+      d.step_p99_us, d.tick_p99_us, d.steps, d.late, d.resyncs);
   return 0;
 }
 
@@ -266,7 +279,8 @@ int main(int argc, char** argv) {
   // ROS remapping arguments are not ours.
   std::vector<std::string> args;
   for (int i = argc - 1; i > 0; --i) {
-    if (std::string(argv[i]).find(":=") == std::string::npos) args.emplace_back(argv[i]);
+    if (std::string(argv[i]).find(":=") == std::string::npos)
+      args.emplace_back(argv[i]);
   }
   try {
     app.parse(args);
@@ -275,7 +289,8 @@ int main(int argc, char** argv) {
   }
   track.speed = speed_kmh / 3.6;
   try {
-    if (off->parsed()) return offline(vehicle, variant, cache, track, rate, method);
+    if (off->parsed())
+      return offline(vehicle, variant, cache, track, rate, method);
     return node(argc, argv, pid, track, duration);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ros_node_bench: error: %s\n", e.what());

@@ -37,14 +37,16 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   options.speed = speed_kmh / 3.6;
-  if (offset->count() > 0) options.lateral_offset = lateral_offset;
+  if (offset->count() > 0)
+    options.lateral_offset = lateral_offset;
   try {
     ros::Time::init();
     const rl::TrackBagSummary s = rl::writeTrackBag(out, options);
-    std::printf("%s: %s at %.1f km/h, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, "
-                "%zu clock messages\n",
-                out.c_str(), options.track.c_str(), speed_kmh, s.duration, s.patches,
-                s.covered_from, s.covered_until, s.speed_messages, s.clock_messages);
+    std::printf(
+        "%s: %s at %.1f km/h, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, "
+        "%zu clock messages\n",
+        out.c_str(), options.track.c_str(), speed_kmh, s.duration, s.patches, s.covered_from,
+        s.covered_until, s.speed_messages, s.clock_messages);
   } catch (const tracked_vehicle_dynamics::InputError& e) {
     std::cerr << "tvd_make_bag: error: " << e.what() << "\n";
     return 2;

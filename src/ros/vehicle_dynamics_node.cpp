@@ -1,8 +1,10 @@
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
@@ -35,7 +37,12 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
     : nh_(nh),
       private_nh_(private_nh),
       params_(readParameters(private_nh)),
+      loop_nh_(nh),
+      loop_private_nh_(private_nh),
       updater_(nh, private_nh) {
+  loop_nh_.setCallbackQueue(&loop_queue_);
+  loop_private_nh_.setCallbackQueue(&loop_queue_);
+  use_sim_time_ = ros::Time::isSimTime();
   loadVehicle();
   setUpFrames();
 
@@ -45,15 +52,16 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   publish_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.publish_rate));
   comfort_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.comfort_rate));
 
+  tf_pub_ = nh_.advertise<tf2_msgs::TFMessage>("/tf", 100);
   accel_pub_ = nh_.advertise<geometry_msgs::AccelStamped>("hull/accel", 10);
   twist_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("hull/twist", 10);
   wheels_pub_ = nh_.advertise<RoadWheels>("road_wheels", 10);
   comfort_pub_ = nh_.advertise<Comfort>("comfort", 10);
-  reset_service_ = private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
+  reset_service_ = loop_private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
 
-  updater_.setHardwareID(report_.cache_file.empty() ? vehicle_->geometry().vehicle_name
-                                                    : vehicle_->geometry().vehicle_name + " (" +
-                                                          report_.cache_file + ")");
+  updater_.setHardwareID(report_.cache_file.empty()
+                             ? vehicle_->geometry().vehicle_name
+                             : vehicle_->geometry().vehicle_name + " (" + report_.cache_file + ")");
   updater_.add("loop", this, &VehicleDynamicsNode::diagnoseLoop);
   updater_.add("terrain", this, &VehicleDynamicsNode::diagnoseTerrain);
   updater_.add("speed", this, &VehicleDynamicsNode::diagnoseInput);
@@ -61,13 +69,15 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
 
   // Subscribed last: nothing arrives before the vehicle exists. The no-delay hint keeps the
   // message -> step latency low.
-  terrain_sub_ = nh_.subscribe("terrain_profile", 100, &VehicleDynamicsNode::onTerrain, this,
-                               ros::TransportHints().tcpNoDelay());
-  speed_sub_ = nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
-                             ros::TransportHints().tcpNoDelay());
-  timer_ = nh_.createTimer(ros::Duration(1.0 / rate), &VehicleDynamicsNode::onTimer, this);
-  // Frames from the start when ROS time runs already (with use_sim_time: once /clock arrives).
-  if (!ros::Time::now().isZero()) advanceTo(ros::Time::now());
+  terrain_sub_ = loop_nh_.subscribe("terrain_profile", 100, &VehicleDynamicsNode::onTerrain, this,
+                                    ros::TransportHints().tcpNoDelay());
+  speed_sub_ = loop_nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
+                                  ros::TransportHints().tcpNoDelay());
+  if (use_sim_time_) {
+    clock_sub_ = loop_nh_.subscribe("/clock", 10, &VehicleDynamicsNode::onClock, this,
+                                    ros::TransportHints().tcpNoDelay());
+  }
+  loop_ = std::thread(&VehicleDynamicsNode::run, this);
   ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %.0f Hz, %s/%s",
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            params_.publish_rate, methodName(params_.vehicle_options.method),
@@ -78,9 +88,8 @@ void VehicleDynamicsNode::loadVehicle() {
   const auto start = Clock::now();
   const std::string vehicle_param = private_nh_.resolveName("vehicle");
   try {
-    const reduction::ReducedModel model =
-        reduction::loadOrReduceVehicle(params_.vehicle, params_.variant, params_.cache_dir,
-                                       params_.reduction_options, &report_);
+    const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
+        params_.vehicle, params_.variant, params_.cache_dir, params_.reduction_options, &report_);
     const vehicle::VehicleDescription description =
         vehicle::loadVehicleDescription(params_.vehicle);
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
@@ -93,32 +102,37 @@ void VehicleDynamicsNode::loadVehicle() {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }
   load_seconds_ = secondsSince(start);
-  ROS_INFO("vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
-           "inputs, %ld outputs (%s)",
-           report_.from_cache ? "loaded" : "built and cached",
-           vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
-           static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
-           static_cast<long>(model_outputs_), report_.cache_file.c_str());
-  if (!report_.cache_note.empty()) ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
+  ROS_INFO(
+      "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+      "inputs, %ld outputs (%s)",
+      report_.from_cache ? "loaded" : "built and cached", vehicle::variantName(params_.variant),
+      params_.vehicle.c_str(), load_seconds_, static_cast<long>(model_dofs_),
+      static_cast<long>(model_inputs_), static_cast<long>(model_outputs_),
+      report_.cache_file.c_str());
+  if (!report_.cache_note.empty())
+    ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
 }
 
 void VehicleDynamicsNode::setUpFrames() {
   const VehicleGeometry& geometry = vehicle_->geometry();
   if (params_.publish_points_all) {
-    for (std::size_t i = 0; i < geometry.points.size(); ++i) published_points_.push_back(i);
+    for (std::size_t i = 0; i < geometry.points.size(); ++i)
+      published_points_.push_back(i);
   } else {
     for (const std::string& name : params_.points) {
       const auto it = std::find_if(geometry.points.begin(), geometry.points.end(),
                                    [&](const VehicleGeometry::Body& b) { return b.name == name; });
       if (it == geometry.points.end()) {
         std::string known;
-        for (const auto& p : geometry.points) known += (known.empty() ? "" : ", ") + p.name;
+        for (const auto& p : geometry.points)
+          known += (known.empty() ? "" : ", ") + p.name;
         throw ParameterError(private_nh_.resolveName("points") + ": unknown point '" + name +
                              "' (the description has: " + known + ")");
       }
       published_points_.push_back(static_cast<std::size_t>(it - geometry.points.begin()));
     }
   }
+  auto& transforms_ = tf_msg_.transforms;
   transforms_.resize(1 + geometry.wheels.size() + published_points_.size());
   transforms_[0].header.frame_id = params_.odom_frame;
   transforms_[0].child_frame_id = params_.base_frame;
@@ -141,7 +155,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     vehicle_->addTerrain(fromMsg(*msg));
     ++events_.patches_accepted;
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // InputError, or bad_alloc for an absurd patch
     ++events_.patches_rejected;
     last_patch_error_ = e.what();
     ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: terrain patch rejected: %s", e.what());
@@ -173,7 +187,8 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
   ROS_INFO("vehicle_dynamics_node: reset requested: back to static equilibrium at station 0");
   restart();
-  if (clock_started_) publishState();
+  if (clock_started_)
+    publishState();
   return true;
 }
 
@@ -182,11 +197,60 @@ void VehicleDynamicsNode::restart() {
   ++events_.resets;
 }
 
-void VehicleDynamicsNode::onTimer(const ros::TimerEvent&) {
-  const ros::Time now = ros::Time::now();
-  if (now.isZero()) return;  // use_sim_time and no /clock yet
-  advanceTo(now);
-  updater_.update();
+VehicleDynamicsNode::~VehicleDynamicsNode() {
+  stop_ = true;
+  if (loop_.joinable())
+    loop_.join();
+}
+
+void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
+  latest_clock_ = msg->clock;
+}
+
+ros::Time VehicleDynamicsNode::now() const {
+  return use_sim_time_ ? latest_clock_ : ros::Time::now();
+}
+
+void VehicleDynamicsNode::run() {
+  // With use_sim_time every /clock message wakes the loop; the timeout only keeps it responsive
+  // to shutdown when the clock stops.
+  const ros::WallDuration sim_wait(0.05);
+  timespec next_tick{};
+  clock_gettime(CLOCK_MONOTONIC, &next_tick);
+  while (!stop_ && ros::ok()) {
+    if (use_sim_time_) {
+      loop_queue_.callAvailable(sim_wait);
+    } else {
+      // One wake-up per tick: sleep to the tick (absolute, no drift), then take every message
+      // that arrived meanwhile; the step at this tick uses them.
+      next_tick.tv_nsec += step_ns_;
+      while (next_tick.tv_nsec >= 1000000000L) {
+        next_tick.tv_nsec -= 1000000000L;
+        ++next_tick.tv_sec;
+      }
+      timespec now_wall{};
+      clock_gettime(CLOCK_MONOTONIC, &now_wall);
+      const std::int64_t late_ns = (now_wall.tv_sec - next_tick.tv_sec) * 1000000000LL +
+                                   (now_wall.tv_nsec - next_tick.tv_nsec);
+      if (late_ns > step_ns_) {
+        next_tick = now_wall;  // after a stall, tick from now on (ROS time catches the steps up)
+      } else {
+        while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next_tick, nullptr) == EINTR) {
+        }
+      }
+      loop_queue_.callAvailable(ros::WallDuration(0));
+    }
+    const ros::Time t = now();
+    if (t.isZero())
+      continue;  // use_sim_time and no /clock yet
+    try {
+      advanceTo(t);
+      updater_.update();
+    } catch (const std::exception& e) {
+      // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
+      ROS_ERROR_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: step failed: %s", e.what());
+    }
+  }
 }
 
 void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
@@ -194,27 +258,30 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   ++events_.ticks;
   if (!clock_started_) {
     clock_started_ = true;
-    sim_time_ = now;
+    sample_time_ = now;
     publishState();
     return;
   }
-  const std::int64_t ahead_ns = (now - sim_time_).toNSec();
+  const std::int64_t ahead_ns = (now - sample_time_).toNSec();
   if (ahead_ns < -step_ns_) {
     // A bag loop or a clock reset: the terrain and station of the past no longer apply.
     ++events_.time_jumps_back;
-    ROS_WARN_THROTTLE(kWarnPeriod,
-                      "vehicle_dynamics_node: ROS time jumped back by %.3f s: resetting the vehicle "
-                      "to equilibrium at station 0",
-                      -ahead_ns * 1e-9);
+    ROS_WARN_THROTTLE(
+        kWarnPeriod,
+        "vehicle_dynamics_node: ROS time jumped back by %.3f s: resetting the vehicle "
+        "to equilibrium at station 0",
+        -ahead_ns * 1e-9);
     restart();
-    sim_time_ = now;
+    sample_time_ = now;
     publishState();
     updater_.force_update();
     return;
   }
   std::int64_t due = ahead_ns > 0 ? ahead_ns / step_ns_ : 0;
-  if (due == 0) return;
-  if (due > 1) ++events_.late_ticks;
+  if (due == 0)
+    return;
+  if (due > 1)
+    ++events_.late_ticks;
   if (due > max_catch_up_steps_) {
     const std::int64_t skipped = due - max_catch_up_steps_;
     ++events_.resyncs;
@@ -223,7 +290,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
                       "vehicle_dynamics_node: %.3f s behind ROS time, more than ~catch_up_limit "
                       "(%.3f s): skipping %.3f s and resynchronising",
                       ahead_ns * 1e-9, params_.catch_up_limit, skipped * step_ns_ * 1e-9);
-    sim_time_ += ros::Duration().fromNSec(skipped * step_ns_);
+    sample_time_ += ros::Duration().fromNSec(skipped * step_ns_);
     due = max_catch_up_steps_;
   }
   max_steps_in_tick_ = std::max(max_steps_in_tick_, due);
@@ -233,7 +300,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const double step_seconds = secondsSince(step_start);
     step_window_.add(step_seconds);
     step_total_.add(step_seconds);
-    sim_time_ += ros::Duration().fromNSec(step_ns_);
+    sample_time_ += ros::Duration().fromNSec(step_ns_);
     ++steps_since_start_;
     // Standing still before any terrain arrived is the normal start, not an underrun.
     const bool waiting = vehicle_->terrain().empty() && vehicle_->speed() == 0.0;
@@ -250,8 +317,10 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
       ROS_ERROR_THROTTLE(kWarnPeriod,
                          "vehicle_dynamics_node: non-finite outputs: back to equilibrium");
     }
-    if (steps_since_start_ % publish_every_ == 0) publishState();
-    if (steps_since_start_ % comfort_every_ == 0) publishComfort();
+    if (steps_since_start_ % publish_every_ == 0)
+      publishState();
+    if (steps_since_start_ % comfort_every_ == 0)
+      publishComfort();
   }
   const double tick_seconds = secondsSince(tick_start);
   tick_window_.add(tick_seconds);
@@ -259,44 +328,58 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
 }
 
 void VehicleDynamicsNode::publishState() {
+  // Only what someone listens to is built (a recorder or a tf listener subscribes).
+  const bool tf = tf_pub_.getNumSubscribers() > 0;
+  const bool twist = twist_pub_.getNumSubscribers() > 0;
+  const bool accel = accel_pub_.getNumSubscribers() > 0;
+  const bool wheels = wheels_pub_.getNumSubscribers() > 0;
   const OnlineVehicle& v = *vehicle_;
   const RigidPose pose = v.hullPose();
-  const Matrix3 to_base = pose.rotation.toRotationMatrix().transpose();
 
-  for (auto& t : transforms_) t.header.stamp = sim_time_;
-  toMsg(pose, &transforms_[0].transform);
-  std::size_t k = 1;
-  RigidPose relative;
-  for (std::size_t i = 0; i < v.geometry().wheels.size(); ++i) {
-    relative.translation = v.wheelPosition(i);
-    toMsg(relative, &transforms_[k++].transform);
+  if (tf) {
+    auto& transforms = tf_msg_.transforms;
+    for (auto& t : transforms)
+      t.header.stamp = sample_time_;
+    toMsg(pose, &transforms[0].transform);
+    std::size_t k = 1;
+    RigidPose relative;
+    for (std::size_t i = 0; i < v.geometry().wheels.size(); ++i) {
+      relative.translation = v.wheelPosition(i);
+      toMsg(relative, &transforms[k++].transform);
+    }
+    for (std::size_t i : published_points_) {
+      relative.translation = v.pointPosition(i);
+      toMsg(relative, &transforms[k++].transform);
+    }
+    tf_pub_.publish(tf_msg_);
   }
-  for (std::size_t i : published_points_) {
-    relative.translation = v.pointPosition(i);
-    toMsg(relative, &transforms_[k++].transform);
-  }
-  tf_broadcaster_.sendTransform(transforms_);
 
   // Hull CoG motion in base_link axes; the travel speed is part of the hull's velocity.
-  const Vector6 velocity = v.hullVelocity();
-  const Vector6 acceleration = v.hullAcceleration();
-  twist_msg_.header.stamp = sim_time_;
-  twist_msg_.twist.linear =
-      toMsg(to_base * (velocity.head<3>() + Vector3(v.speed(), 0.0, 0.0)));
-  twist_msg_.twist.angular = toMsg(to_base * velocity.tail<3>());
-  twist_pub_.publish(twist_msg_);
-  accel_msg_.header.stamp = sim_time_;
-  accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
-  accel_msg_.accel.angular = toMsg(to_base * acceleration.tail<3>());
-  accel_pub_.publish(accel_msg_);
-
-  wheels_msg_.header.stamp = sim_time_;
-  toMsg(v.wheels(), v.station(), v.speed(), &wheels_msg_);
-  wheels_pub_.publish(wheels_msg_);
+  const Matrix3 to_base = pose.rotation.toRotationMatrix().transpose();
+  if (twist) {
+    const Vector6 velocity = v.hullVelocity();
+    twist_msg_.header.stamp = sample_time_;
+    twist_msg_.twist.linear = toMsg(to_base * (velocity.head<3>() + Vector3(v.speed(), 0.0, 0.0)));
+    twist_msg_.twist.angular = toMsg(to_base * velocity.tail<3>());
+    twist_pub_.publish(twist_msg_);
+  }
+  if (accel) {
+    const Vector6 acceleration = v.hullAcceleration();
+    accel_msg_.header.stamp = sample_time_;
+    accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
+    accel_msg_.accel.angular = toMsg(to_base * acceleration.tail<3>());
+    accel_pub_.publish(accel_msg_);
+  }
+  if (wheels) {
+    wheels_msg_.header.stamp = sample_time_;
+    toMsg(v.wheels(), v.station(), v.speed(), &wheels_msg_);
+    wheels_pub_.publish(wheels_msg_);
+  }
 }
 
 void VehicleDynamicsNode::publishComfort() {
-  if (comfort_pub_.getNumSubscribers() == 0) return;
+  if (comfort_pub_.getNumSubscribers() == 0)
+    return;
   const dynamics::ComfortMeter& meter = vehicle_->comfort();
   ComfortReport report;
   report.point = vehicle_->comfortPoint();
@@ -304,7 +387,7 @@ void VehicleDynamicsNode::publishComfort() {
   report.running_rms = meter.runningRms();
   report.running_rms_time = params_.vehicle_options.comfort_running_rms_time;
   report.peak_acceleration = vehicle_->peakAcceleration();
-  comfort_msg_.header.stamp = sim_time_;
+  comfort_msg_.header.stamp = sample_time_;
   toMsg(report, &comfort_msg_);
   comfort_pub_.publish(comfort_msg_);
 }

@@ -1,4 +1,5 @@
-// vehicle_dynamics_node: see doc/ros_node.md and include/tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h.
+// vehicle_dynamics_node: see doc/ros_node.md and
+// include/tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h.
 #include <ros/ros.h>
 
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"

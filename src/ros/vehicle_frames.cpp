@@ -24,8 +24,8 @@ RigidPose hullPose(double station, const Vector3& cog, const Vector6& hull_displ
   RigidPose pose;
   pose.rotation =
       rotationFromRollPitchYaw(hull_displacement(3), hull_displacement(4), hull_displacement(5));
-  pose.translation = Vector3(station, 0.0, 0.0) + cog + hull_displacement.head<3>() -
-                     pose.rotation * cog;
+  pose.translation =
+      Vector3(station, 0.0, 0.0) + cog + hull_displacement.head<3>() - pose.rotation * cog;
   return pose;
 }
 
@@ -42,8 +42,8 @@ Vector3 hullPointDisplacement(const Vector3& cog, const Vector6& hull_displaceme
   return hull_displacement.head<3>() + theta.cross(point - cog);
 }
 
-Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement,
-                         const Vector3& point, const Vector3& displacement) {
+Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement, const Vector3& point,
+                         const Vector3& displacement) {
   return point + displacement - hullPointDisplacement(cog, hull_displacement, point);
 }
 

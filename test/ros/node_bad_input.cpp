@@ -54,10 +54,12 @@ class NodeBadInput : public ::testing::Test {
     }
   }
   void onAccel(const geometry_msgs::AccelStamped::ConstPtr& msg) {
-    if (!finite(msg->accel.linear) || !finite(msg->accel.angular)) ++non_finite_;
+    if (!finite(msg->accel.linear) || !finite(msg->accel.angular))
+      ++non_finite_;
   }
   void onTwist(const geometry_msgs::TwistStamped::ConstPtr& msg) {
-    if (!finite(msg->twist.linear) || !finite(msg->twist.angular)) ++non_finite_;
+    if (!finite(msg->twist.linear) || !finite(msg->twist.angular))
+      ++non_finite_;
   }
 
   void publishSpeed(double v) {
@@ -137,7 +139,8 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": terrain", "patches rejected (total)"), bad_patches);
   EXPECT_EQ(diagnostics_.value(": speed", "speeds rejected (total)"), bad_speeds);
-  EXPECT_EQ(diagnostics_.level(": terrain"), static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
+  EXPECT_EQ(diagnostics_.level(": terrain"),
+            static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
 }

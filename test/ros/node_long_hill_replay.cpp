@@ -71,11 +71,13 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     ref.heave.push_back(y(heave_row));
     ref.pitch.push_back(y(pitch_row));
     std::vector<double> wheels;
-    for (Eigen::Index r : wheel_rows) wheels.push_back(y(r) - rest(r));
+    for (Eigen::Index r : wheel_rows)
+      wheels.push_back(y(r) - rest(r));
     ref.wheels.push_back(wheels);
     ref.heave_peak = std::max(ref.heave_peak, std::abs(y(heave_row) - rest(heave_row)));
     ref.pitch_peak = std::max(ref.pitch_peak, std::abs(y(pitch_row) - rest(pitch_row)));
-    for (double w : wheels) ref.wheel_peak = std::max(ref.wheel_peak, std::abs(w));
+    for (double w : wheels)
+      ref.wheel_peak = std::max(ref.wheel_peak, std::abs(w));
   };
   record();
   Vector w(2 * n);
@@ -103,7 +105,8 @@ class LongHillReplay : public ::testing::Test {
   }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
     for (const auto& t : msg->transforms) {
-      if (t.child_frame_id != "base_link") continue;
+      if (t.child_frame_id != "base_link")
+        continue;
       NodeSample& s = samples_[t.header.stamp];
       s.pose = fromMsg(t.transform);
       s.has_pose = true;
@@ -114,7 +117,8 @@ class LongHillReplay : public ::testing::Test {
     NodeSample& s = samples_[msg->header.stamp];
     s.station = msg->station;
     s.wheels.clear();
-    for (const auto& w : msg->wheels) s.wheels.push_back(w.displacement);
+    for (const auto& w : msg->wheels)
+      s.wheels.push_back(w.displacement);
     max_station_ = std::max(max_station_, msg->station);
     last_message_ = ros::WallTime::now();
   }
@@ -159,8 +163,8 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   const auto model = reduction::loadOrReduceVehicle(vehicle_file, variant, cache_dir);
   const VehicleGeometry geometry = vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file));
   const terrain::Terrain track = terrain::makeTrack(track_name);
-  const Reference ref = offlineRun(model, geometry, track, v, rate, max_station_, method, hold,
-                                   lateral_offset);
+  const Reference ref =
+      offlineRun(model, geometry, track, v, rate, max_station_, method, hold, lateral_offset);
   ASSERT_GT(ref.heave_peak, 0.0);
 
   double heave_error = 0.0, pitch_error = 0.0, wheel_error = 0.0;
@@ -170,10 +174,12 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   const double vh = v / rate;
   const double rest_heave = ref.heave.front();
   for (const auto& [stamp, s] : samples_) {
-    if (!s.has_pose || s.wheels.empty()) continue;  // only one of the two messages arrived
+    if (!s.has_pose || s.wheels.empty())
+      continue;  // only one of the two messages arrived
     const long k = std::lround(s.station / vh);
     ASSERT_NEAR(s.station, k * vh, kStationMatch) << "station off the step grid";
-    if (k < 0 || k >= static_cast<long>(ref.heave.size())) continue;
+    if (k < 0 || k >= static_cast<long>(ref.heave.size()))
+      continue;
     const Vector6 u = hullDisplacement(s.station, geometry.cog, s.pose);
     heave_error = std::max(heave_error, std::abs(u(2) - ref.heave[k]));
     pitch_error = std::max(pitch_error, std::abs(u(4) - ref.pitch[k]));
@@ -189,12 +195,12 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   RecordProperty("compared_samples", static_cast<int>(compared));
   std::printf("compared %zu samples, stations %.3f .. %.3f m\n", compared, min_station,
               max_station);
-  std::printf("heave: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.heave_peak,
-              heave_error, heave_error / ref.heave_peak);
+  std::printf("heave: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.heave_peak, heave_error,
+              heave_error / ref.heave_peak);
   std::printf("pitch: peak %.4f rad, max error %.3g rad (%.3g of peak)\n", ref.pitch_peak,
               pitch_error, pitch_error / ref.pitch_peak);
-  std::printf("wheels: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.wheel_peak,
-              wheel_error, wheel_error / ref.wheel_peak);
+  std::printf("wheels: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.wheel_peak, wheel_error,
+              wheel_error / ref.wheel_peak);
   EXPECT_LE(min_station, covered_from) << "the replay's start was not seen";
   EXPECT_GE(max_station, covered_until);
   EXPECT_LE(heave_error, tolerance * ref.heave_peak);

@@ -6,6 +6,7 @@
 
 #include <rosgraph_msgs/Clock.h>
 #include <std_msgs/Float64.h>
+#include <std_srvs/Empty.h>
 
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
@@ -15,7 +16,8 @@ using namespace tracked_vehicle_dynamics::ros_layer;
 
 namespace {
 
-constexpr double kStation = 1e-9;  // accumulated station rounding [m]
+constexpr double kStation = 1e-9;      // accumulated station rounding [m]
+constexpr double kEquilibrium = 1e-9;  // rounding of a step at rest [m]
 
 class NodeSimTime : public ::testing::Test {
  protected:
@@ -30,7 +32,8 @@ class NodeSimTime : public ::testing::Test {
     last_ = *msg;
     ++messages_;
     for (const auto& w : msg->wheels) {
-      if (!std::isfinite(w.displacement) || !std::isfinite(w.acceleration)) ++non_finite_;
+      if (!std::isfinite(w.displacement) || !std::isfinite(w.acceleration))
+        ++non_finite_;
     }
   }
 
@@ -100,7 +103,8 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   t += ros::Duration(0.001);
   ASSERT_TRUE(advanceTo(t));
   EXPECT_EQ(last_.station, 0.0);
-  for (const auto& w : last_.wheels) EXPECT_NEAR(w.displacement, 0.0, 1e-12) << w.name;
+  for (const auto& w : last_.wheels)
+    EXPECT_NEAR(w.displacement, 0.0, kEquilibrium) << w.name;
 
   // And it runs on from there (speed is zero after the reset until a new speed message).
   speed_pub_.publish(v);
@@ -108,6 +112,19 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   t += ros::Duration(0.05);
   ASSERT_TRUE(advanceTo(t));
   EXPECT_NEAR(last_.station, speed * 0.05, kStation);
+
+  // ~reset: back to station 0 from wherever the vehicle is.
+  speed_pub_.publish(v);
+  test::spinFor(0.3);
+  t += ros::Duration(0.02);
+  ASSERT_TRUE(advanceTo(t));
+  ASSERT_GT(last_.station, 0.0);
+  std_srvs::Empty reset;
+  ASSERT_TRUE(ros::service::call("/vehicle_dynamics/reset", reset));
+  t += ros::Duration(0.001);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_EQ(last_.station, 0.0);
+  EXPECT_EQ(last_.speed, 0.0);
 
   EXPECT_EQ(non_finite_, 0u);
   t += ros::Duration(2.0);  // let the diagnostics period pass on simulated time

@@ -51,9 +51,11 @@ class DiagnosticsCache {
   /// Numeric value of key `key` in the status whose name ends with `suffix`; NaN when missing.
   double value(const std::string& suffix, const std::string& key) const {
     const auto* s = find(suffix);
-    if (s == nullptr) return std::nan("");
+    if (s == nullptr)
+      return std::nan("");
     for (const auto& kv : s->values) {
-      if (kv.key == key) return std::atof(kv.value.c_str());
+      if (kv.key == key)
+        return std::atof(kv.value.c_str());
     }
     return std::nan("");
   }
@@ -62,7 +64,8 @@ class DiagnosticsCache {
     std::string out;
     for (const auto& [name, s] : latest_) {
       out += name + " [" + std::to_string(s.level) + "] " + s.message + "\n";
-      for (const auto& kv : s.values) out += "  " + kv.key + ": " + kv.value + "\n";
+      for (const auto& kv : s.values)
+        out += "  " + kv.key + ": " + kv.value + "\n";
     }
     return out;
   }
@@ -70,7 +73,8 @@ class DiagnosticsCache {
  private:
   void onArray(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
     ++arrays_;
-    for (const auto& s : msg->status) latest_[s.name] = s;
+    for (const auto& s : msg->status)
+      latest_[s.name] = s;
   }
   const diagnostic_msgs::DiagnosticStatus* find(const std::string& suffix) const {
     for (const auto& [name, s] : latest_) {
@@ -93,7 +97,8 @@ inline TerrainProfile flatProfile(double from, double to, double spacing = 0.05)
   patch.start_station = from;
   patch.spacing = spacing;
   patch.lateral = Vector::LinSpaced(11, -2.5, 2.5);
-  patch.heights = Matrix::Zero(11, static_cast<Eigen::Index>(std::lround((to - from) / spacing)) + 1);
+  patch.heights =
+      Matrix::Zero(11, static_cast<Eigen::Index>(std::lround((to - from) / spacing)) + 1);
   TerrainProfile msg;
   msg.header.frame_id = "odom";
   toMsg(patch, &msg);

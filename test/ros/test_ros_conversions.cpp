@@ -33,7 +33,8 @@ TerrainPatch randomPatch(int lines, int samples, unsigned seed) {
   p.lateral = Vector::LinSpaced(lines, -2.0, 2.0);
   p.heights.resize(lines, samples);
   for (int j = 0; j < lines; ++j)
-    for (int k = 0; k < samples; ++k) p.heights(j, k) = h(rng);
+    for (int k = 0; k < samples; ++k)
+      p.heights(j, k) = h(rng);
   return p;
 }
 
@@ -112,7 +113,8 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
   report.running_rms_time = 1.0;
   report.peak_acceleration = 5.5;
   for (bool with_power : {false, true}) {
-    if (with_power) report.metrics.absorbed_power = 2.5;
+    if (with_power)
+      report.metrics.absorbed_power = 2.5;
     Comfort msg;
     toMsg(report, &msg);
     EXPECT_EQ(msg.weighting, "Wk");
@@ -182,7 +184,8 @@ TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
   ASSERT_EQ(bag.speeds.size(), summary.speed_messages);
   ASSERT_EQ(bag.clocks.size(), summary.clock_messages);
   EXPECT_NEAR(summary.duration, (terrain::kTrackLength + options.behind) / options.speed, 1e-9);
-  for (const auto& [time, v] : bag.speeds) EXPECT_EQ(v, options.speed);
+  for (const auto& [time, v] : bag.speeds)
+    EXPECT_EQ(v, options.speed);
 
   // The patches, fed to a buffer in bag order, reproduce the track on its grid, and the buffer
   // holds `lookahead` ahead of the vehicle whenever a patch arrives.
@@ -193,7 +196,8 @@ TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
     const auto& [time, patch] = bag.patches[i];
     buffer.addPatch(patch.start_station, patch.spacing, patch.lateral, patch.heights);
     EXPECT_EQ(patch.lateral, track.lateral());
-    if (i + 1 < bag.patches.size() && bag.patches[i + 1].first == time) continue;
+    if (i + 1 < bag.patches.size() && bag.patches[i + 1].first == time)
+      continue;
     // Everything of this instant is in: the vehicle has `lookahead` ahead of it.
     const double station = (time - start).toSec() * options.speed;
     EXPECT_GE(buffer.coveredUntil(), station + options.lookahead - 1e-9) << "t = " << time;
@@ -224,7 +228,8 @@ TEST(TrackBag, InvalidOptionsNameTheField) {
 TEST(DurationStatistics, PercentilesOfAKnownDistribution) {
   DurationStatistics stats;
   EXPECT_EQ(stats.percentile(0.99), 0.0);
-  for (int i = 1; i <= 1000; ++i) stats.add(i * 1e-6);  // 1 .. 1000 us
+  for (int i = 1; i <= 1000; ++i)
+    stats.add(i * 1e-6);  // 1 .. 1000 us
   EXPECT_EQ(stats.count(), 1000u);
   EXPECT_NEAR(stats.mean(), 500.5e-6, 1e-12);
   EXPECT_NEAR(stats.percentile(0.99), 990e-6, 1.01e-6);

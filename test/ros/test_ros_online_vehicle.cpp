@@ -25,15 +25,18 @@ void* __libc_malloc(std::size_t size);
 void* __libc_calloc(std::size_t count, std::size_t size);
 void* __libc_realloc(void* pointer, std::size_t size);
 void* malloc(std::size_t size) noexcept {
-  if (g_count_allocations) ++g_allocations;
+  if (g_count_allocations)
+    ++g_allocations;
   return __libc_malloc(size);
 }
 void* calloc(std::size_t count, std::size_t size) noexcept {
-  if (g_count_allocations) ++g_allocations;
+  if (g_count_allocations)
+    ++g_allocations;
   return __libc_calloc(count, size);
 }
 void* realloc(void* pointer, std::size_t size) noexcept {
-  if (g_count_allocations) ++g_allocations;
+  if (g_count_allocations)
+    ++g_allocations;
   return __libc_realloc(pointer, size);
 }
 }
@@ -44,7 +47,7 @@ using namespace tracked_vehicle_dynamics::ros_layer;
 
 namespace {
 
-constexpr double kAtRest = 1e-12;          // drift from equilibrium over many steps [m, rad]
+constexpr double kAtRest = 1e-12;  // drift from equilibrium over many steps [m, rad]
 // Online vs offline on the same terrain, of the peak (rounding only). The speed is chosen so that
 // no contact comes within RoadInputSampler::kSlopeStep of a terrain station, where dh/dx jumps
 // and the sampler takes the mean of both cells while Terrain::slope() takes one of them.
@@ -59,7 +62,8 @@ terrain::Terrain bump() {
   y << -1.0, 1.0;
   Matrix h = Matrix::Zero(2, n);
   for (int i = 0; i < n; ++i) {
-    if (x(i) > 2.0 && x(i) < 4.0) h.col(i).setConstant(0.05 * (1.0 - std::cos(M_PI * (x(i) - 2.0))));
+    if (x(i) > 2.0 && x(i) < 4.0)
+      h.col(i).setConstant(0.05 * (1.0 - std::cos(M_PI * (x(i) - 2.0))));
   }
   return terrain::Terrain(x, y, h, "bump");
 }
@@ -105,7 +109,8 @@ TEST(OnlineVehicle, AtRestOnFlatTerrainStaysInStaticEquilibrium) {
   const double sink = kStandardGravity * (T::kHullMass + 2 * T::kWheelMass) / (2 * T::kTyre) +
                       kStandardGravity * T::kHullMass / (2 * T::kSuspension);
   EXPECT_NEAR(start(2), -sink, 1e-12);
-  for (int k = 0; k < 2000; ++k) ASSERT_EQ(vehicle.step().uncovered, 0);
+  for (int k = 0; k < 2000; ++k)
+    ASSERT_EQ(vehicle.step().uncovered, 0);
   EXPECT_NEAR((vehicle.hullDisplacement() - start).norm(), 0.0, kAtRest);
   for (const WheelState& w : vehicle.wheels()) {
     EXPECT_NEAR(w.displacement, 0.0, kAtRest) << w.name;
@@ -129,7 +134,8 @@ TEST_P(OnlineVersusOffline, SameResponseAsTheSimulatorOnTheWholeTerrain) {
   const terrain::Terrain terrain = bump();
   const double v = 7.31;  // [m/s]: k v h stays >= 1e-5 m away from the 0.05 m grid
   OnlineVehicle online(model, test::toyGeometry(), options(GetParam()));
-  for (const TerrainPatch& p : patches(terrain, 40)) online.addTerrain(p);
+  for (const TerrainPatch& p : patches(terrain, 40))
+    online.addTerrain(p);
   online.setSpeed(v);
 
   // Offline: the same simulator configuration, inputs from the whole Terrain.
@@ -233,9 +239,11 @@ TEST(OnlineVehicle, UnknownOutputsAreNamed) {
 TEST(OnlineVehicle, ResetReturnsToEquilibriumAtStationZero) {
   OnlineVehicle vehicle(test::toyModel(), test::toyGeometry());
   const Vector6 rest = vehicle.hullDisplacement();
-  for (const TerrainPatch& p : patches(bump(), 50)) vehicle.addTerrain(p);
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
   vehicle.setSpeed(10.0);
-  for (int k = 0; k < 300; ++k) vehicle.step();
+  for (int k = 0; k < 300; ++k)
+    vehicle.step();
   EXPECT_GT((vehicle.hullDisplacement() - rest).norm(), 1e-4);
   vehicle.reset();
   EXPECT_EQ(vehicle.station(), 0.0);
@@ -250,12 +258,14 @@ TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
                       dynamics::DiscretizationMethod::AugmentedExponential}) {
     OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), options(method));
-    for (const TerrainPatch& p : patches(bump(), 40)) vehicle.addTerrain(p);
+    for (const TerrainPatch& p : patches(bump(), 40))
+      vehicle.addTerrain(p);
     vehicle.setSpeed(5.0);
     vehicle.step();
     g_allocations = 0;
     g_count_allocations = true;
-    for (int k = 0; k < 500; ++k) vehicle.step();
+    for (int k = 0; k < 500; ++k)
+      vehicle.step();
     g_count_allocations = false;
     EXPECT_EQ(g_allocations, 0);
   }

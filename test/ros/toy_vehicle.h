@@ -13,16 +13,16 @@ namespace ros_layer {
 namespace test {
 
 struct ToyVehicle {
-  static constexpr double kHullMass = 1000.0;      // [kg]
-  static constexpr double kPitchInertia = 800.0;   // [kg m^2]
-  static constexpr double kWheelMass = 50.0;       // [kg]
-  static constexpr double kSuspension = 3e4;       // [N/m]
+  static constexpr double kHullMass = 1000.0;        // [kg]
+  static constexpr double kPitchInertia = 800.0;     // [kg m^2]
+  static constexpr double kWheelMass = 50.0;         // [kg]
+  static constexpr double kSuspension = 3e4;         // [N/m]
   static constexpr double kSuspensionDamping = 2e3;  // [N s/m]
-  static constexpr double kTyre = 2e5;             // [N/m]
-  static constexpr double kTyreDamping = 500.0;    // [N s/m]
+  static constexpr double kTyre = 2e5;               // [N/m]
+  static constexpr double kTyreDamping = 500.0;      // [N s/m]
   static constexpr double kWheelX[2] = {1.0, -1.0};  // [m], front then rear
-  static constexpr double kCogHeight = 1.0;        // [m]
-  static constexpr double kWheelHeight = 0.4;      // [m]
+  static constexpr double kCogHeight = 1.0;          // [m]
+  static constexpr double kWheelHeight = 0.4;        // [m]
 };
 
 inline reduction::ReducedModel toyModel() {
@@ -50,9 +50,17 @@ inline reduction::ReducedModel toyModel() {
     sys.input_damping(2 + i, i) = T::kTyreDamping;
   }
   // Outputs: hull CoG (6), the two wheels, crew_seat at (0.5, 0.3, 1.5): u = theta x (p - p_G).
-  sys.output_names = {"hull ux", "hull uy", "hull uz", "hull rx", "hull ry", "hull rz",
-                      "road_wheel_left_1 uz", "road_wheel_left_2 uz",
-                      "crew_seat ux", "crew_seat uy", "crew_seat uz"};
+  sys.output_names = {"hull ux",
+                      "hull uy",
+                      "hull uz",
+                      "hull rx",
+                      "hull ry",
+                      "hull rz",
+                      "road_wheel_left_1 uz",
+                      "road_wheel_left_2 uz",
+                      "crew_seat ux",
+                      "crew_seat uy",
+                      "crew_seat uz"};
   sys.output = Matrix::Zero(11, n);
   sys.output(2, 0) = 1.0;
   sys.output(4, 1) = 1.0;
@@ -63,8 +71,8 @@ inline reduction::ReducedModel toyModel() {
   sys.output(10, 1) = -0.5;  // -theta_y (p_x - G_x)
   sys.input_stations = Eigen::Vector2d(T::kWheelX[0], T::kWheelX[1]);
   sys.input_lateral = Eigen::Vector2d(0.0, 0.0);
-  model.gravity_load = -kStandardGravity *
-                       Vector(Eigen::Vector4d(T::kHullMass, 0.0, T::kWheelMass, T::kWheelMass));
+  model.gravity_load =
+      -kStandardGravity * Vector(Eigen::Vector4d(T::kHullMass, 0.0, T::kWheelMass, T::kWheelMass));
   model.damping = "toy";
   return model;
 }

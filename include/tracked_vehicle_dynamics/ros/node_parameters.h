@@ -26,13 +26,13 @@ struct NodeParameters {
   std::string vehicle;  ///< ~vehicle: description YAML file (required)
   vehicle::Variant variant = vehicle::Variant::Tracked;  ///< ~variant
   std::string cache_dir;  ///< ~cache_dir; default $ROS_HOME/tracked_vehicle_dynamics (~/.ros/...)
-  OnlineVehicleOptions vehicle_options;                  ///< ~rate, ~method, ~hold, ~lateral_offset, ...
+  OnlineVehicleOptions vehicle_options;  ///< ~rate, ~method, ~hold, ~lateral_offset, ...
   reduction::VehicleReductionOptions reduction_options;  ///< ~reduction/*
-  double publish_rate = 0.0;   ///< ~publish_rate [Hz], default ~rate
-  double comfort_rate = 10.0;  ///< ~comfort_rate [Hz]
-  double max_speed = 30.0;     ///< ~max_speed [m/s]; faster speed messages are rejected
-  double catch_up_limit = 0.1; ///< ~catch_up_limit [s] of simulated time caught up at once
-  std::string odom_frame = "odom";       ///< ~odom_frame
+  double publish_rate = 0.0;                             ///< ~publish_rate [Hz], default ~rate
+  double comfort_rate = 10.0;                            ///< ~comfort_rate [Hz]
+  double max_speed = 30.0;          ///< ~max_speed [m/s]; faster speed messages are rejected
+  double catch_up_limit = 0.1;      ///< ~catch_up_limit [s] of simulated time caught up at once
+  std::string odom_frame = "odom";  ///< ~odom_frame
   std::string base_frame = "base_link";  ///< ~base_frame
   std::string frame_prefix;              ///< ~frame_prefix, before wheel and point frame ids
   /// ~points: named points published as frames; empty: all points of the description.

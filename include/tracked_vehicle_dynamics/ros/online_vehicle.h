@@ -100,11 +100,11 @@ class OnlineVehicle {
   /// One fixed step (see the file comment). No allocation.
   StepResult step();
 
-  double timeStep() const { return time_step_; }          ///< h [s]
-  double time() const { return simulator_.time(); }       ///< since reset [s]
+  double timeStep() const { return time_step_; }     ///< h [s]
+  double time() const { return simulator_.time(); }  ///< since reset [s]
   long stepCount() const { return simulator_.stepCount(); }
-  double station() const { return station_; }             ///< [m]
-  double speed() const { return speed_; }                 ///< [m/s]
+  double station() const { return station_; }  ///< [m]
+  double speed() const { return speed_; }      ///< [m/s]
 
   /// Hull CoG displacement {u_G [m]; theta [rad]} (rows "hull ux".."hull rz").
   Vector6 hullDisplacement() const { return block(hull_rows_, disp_offset_); }

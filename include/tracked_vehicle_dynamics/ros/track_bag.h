@@ -43,8 +43,8 @@ struct TrackBagSummary {
   std::size_t patches = 0;
   std::size_t speed_messages = 0;
   std::size_t clock_messages = 0;
-  double duration = 0.0;     ///< [s]
-  double end_station = 0.0;  ///< s_end [m]
+  double duration = 0.0;                           ///< [s]
+  double end_station = 0.0;                        ///< s_end [m]
   double covered_from = 0.0, covered_until = 0.0;  ///< terrain written [m]
 };
 
@@ -58,8 +58,8 @@ struct TimedPatch {
 /// Throws InputError naming the option for invalid options or an unknown track.
 struct TrackRun {
   std::vector<TimedPatch> patches;
-  double end_station = 0.0;  ///< s_end [m]
-  double duration = 0.0;     ///< [s]
+  double end_station = 0.0;                        ///< s_end [m]
+  double duration = 0.0;                           ///< [s]
   double covered_from = 0.0, covered_until = 0.0;  ///< [m]
 };
 TrackRun trackRun(const TrackBagOptions& options);
@@ -77,8 +77,8 @@ struct TrackBagContent {
 
 /// Reads the terrain, speed and /clock messages of a bag. Throws rosbag::BagException when the
 /// file cannot be read, InputError for a malformed terrain message.
-TrackBagContent readTrackBag(const std::string& path, const std::string& terrain_topic =
-                                                          "/terrain_profile",
+TrackBagContent readTrackBag(const std::string& path,
+                             const std::string& terrain_topic = "/terrain_profile",
                              const std::string& speed_topic = "/speed");
 
 }  // namespace ros_layer

@@ -2,34 +2,42 @@
 //
 //   terrain_profile (TerrainProfile) ──► OnlineVehicle::addTerrain   (TerrainBuffer)
 //   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
-//   ros::Timer at ~rate on ROS time  ──► OnlineVehicle::step() for every step due
+//   loop thread at ~rate on ROS time ──► OnlineVehicle::step() for every step due
 //       ──► tf2 odom→base_link→{road wheels, named points}, hull/accel, hull/twist, road_wheels,
 //           comfort, /diagnostics
 //
-// Time: the node keeps the time of its current sample. Each timer tick runs every fixed step due
-// up to ROS time now (so use_sim_time with `rosbag play --clock` works and a late tick is caught
-// up); more than ~catch_up_limit of simulated time is not caught up: the older part is skipped
+// Time: the node keeps the time of its current sample. Each tick runs every fixed step due up to
+// ROS time now (so use_sim_time with `rosbag play --clock` works and a late tick is caught up);
+// more than ~catch_up_limit of simulated time is not caught up: the older part is skipped
 // (resynchronisation, warned and counted). ROS time going backwards (a bag loop) resets the
 // vehicle. Bad input never stops the node: it is rejected or held, with a throttled warning and
 // a diagnostics entry.
 //
-// Threading: every callback runs on the single spinner thread (ros::spin), so the node needs no
-// locks and the step order is deterministic.
+// Threading: one loop thread owns the vehicle and its own callback queue (terrain, speed, ~reset
+// and, with use_sim_time, /clock): no locks, a deterministic step order. On real time it sleeps to
+// each tick (clock_nanosleep, absolute), takes the messages that arrived meanwhile, steps and
+// publishes: one wake-up per tick, and a message is used at the next tick (latency <= one period
+// plus the step). On simulated time every /clock message wakes it. (A ros::Timer costs two thread
+// hand-offs per tick, which dominated the CPU use at 1 kHz.)
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <diagnostic_updater/diagnostic_updater.h>
 #include <geometry_msgs/AccelStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/TwistStamped.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
-#include <tf2_ros/transform_broadcaster.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include "tracked_vehicle_dynamics/Comfort.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
@@ -47,6 +55,10 @@ class VehicleDynamicsNode {
   /// Reads the parameters, loads or builds the reduced model, advertises, subscribes and starts
   /// the loop. Throws ParameterError naming the parameter (or the description file) at fault.
   VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  /// Stops and joins the loop thread.
+  ~VehicleDynamicsNode();
+  VehicleDynamicsNode(const VehicleDynamicsNode&) = delete;
+  VehicleDynamicsNode& operator=(const VehicleDynamicsNode&) = delete;
 
  private:
   /// Counts of what happened, for diagnostics (never reset).
@@ -74,7 +86,11 @@ class VehicleDynamicsNode {
   void onTerrain(const TerrainProfile::ConstPtr& msg);
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
-  void onTimer(const ros::TimerEvent& event);
+  void onClock(const rosgraph_msgs::Clock::ConstPtr& msg);
+  /// The loop thread: waits for messages or the next tick, steps, publishes, diagnoses.
+  void run();
+  /// ROS time now; with use_sim_time the latest /clock this loop has seen.
+  ros::Time now() const;
   /// Runs the steps due up to `now` and publishes.
   void advanceTo(const ros::Time& now);
   /// Vehicle back to equilibrium at station 0, terrain and metrics cleared.
@@ -89,6 +105,8 @@ class VehicleDynamicsNode {
 
   ros::NodeHandle nh_, private_nh_;
   NodeParameters params_;
+  ros::CallbackQueue loop_queue_;  // everything the loop thread handles
+  ros::NodeHandle loop_nh_, loop_private_nh_;
 
   std::unique_ptr<OnlineVehicle> vehicle_;
   reduction::VehicleReductionReport report_;
@@ -97,23 +115,25 @@ class VehicleDynamicsNode {
   std::string model_damping_;
   std::vector<std::size_t> published_points_;  // indices into geometry().points
 
-  ros::Subscriber terrain_sub_, speed_sub_;
-  ros::Publisher accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
+  ros::Subscriber terrain_sub_, speed_sub_, clock_sub_;
+  // /tf is published like tf2_ros::TransformBroadcaster does, from a message kept between
+  // publications (no per-sample allocation of frame ids).
+  ros::Publisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
   ros::ServiceServer reset_service_;
-  tf2_ros::TransformBroadcaster tf_broadcaster_;
   diagnostic_updater::Updater updater_;
-  ros::Timer timer_;
 
   // Messages reused every publication.
-  std::vector<geometry_msgs::TransformStamped> transforms_;
+  tf2_msgs::TFMessage tf_msg_;
   geometry_msgs::AccelStamped accel_msg_;
   geometry_msgs::TwistStamped twist_msg_;
   RoadWheels wheels_msg_;
   Comfort comfort_msg_;
 
-  // Time keeping: sim_time_ is the ROS time of the vehicle's current sample.
+  // Time keeping: sample_time_ is the ROS time of the vehicle's current sample.
+  bool use_sim_time_ = false;
+  ros::Time latest_clock_;
   bool clock_started_ = false;
-  ros::Time sim_time_;
+  ros::Time sample_time_;
   std::int64_t step_ns_ = 0;
   std::int64_t max_catch_up_steps_ = 1;
   std::int64_t publish_every_ = 1, comfort_every_ = 100;
@@ -125,6 +145,9 @@ class VehicleDynamicsNode {
   std::string last_patch_error_, last_speed_error_;
   std::int64_t max_steps_in_tick_ = 0;
   DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
+
+  std::atomic<bool> stop_{false};
+  std::thread loop_;  // last: started when everything else exists
 };
 
 }  // namespace ros_layer

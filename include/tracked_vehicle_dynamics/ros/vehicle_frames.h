@@ -28,7 +28,7 @@ namespace ros_layer {
 
 /// A child frame's pose in its parent: p_parent = rotation * p_child + translation.
 struct RigidPose {
-  Vector3 translation = Vector3::Zero();                       ///< [m]
+  Vector3 translation = Vector3::Zero();                         ///< [m]
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  ///< unit quaternion
 };
 
@@ -50,8 +50,8 @@ Vector3 hullPointDisplacement(const Vector3& cog, const Vector6& hull_displaceme
 
 /// Position in base_link [m] of a point whose static (undeformed) position is `point` [m] and
 /// whose displacement is `displacement` [m]: p + (u_p - u_hull(p)).
-Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement,
-                         const Vector3& point, const Vector3& displacement);
+Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement, const Vector3& point,
+                         const Vector3& displacement);
 
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics
