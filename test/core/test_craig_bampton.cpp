@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -21,22 +22,7 @@ constexpr double kRitzSlack = 1e-9;            // relative round-off allowed bel
 // (Iy != Iz so that the y and z bending modes are distinct). `tip_support` adds a grounded
 // spring-damper under the tip (a road input, a damper).
 fem::System cantilever(int elements, bool tip_support = false) {
-  fem::Model model;
-  model.name = "cantilever";
-  const double length = 2.0;
-  for (int i = 0; i <= elements; ++i)
-    model.addNode(i, Vector3(length * i / elements, 0.0, 0.0));
-  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
-  fem::Section section;
-  section.name = "bar";
-  section.area = 5e-3;
-  section.iy = 4e-6;
-  section.iz = 1e-6;
-  section.torsion = 2e-6;
-  model.sections.push_back(section);
-  for (int i = 0; i < elements; ++i)
-    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
-  model.fixed.push_back(fem::FixedDofs{0});
+  fem::Model model = test::steelCantilever(elements);
   if (tip_support) {
     fem::Spring spring;
     spring.n1 = elements;
@@ -280,19 +266,8 @@ TEST(CraigBampton, RejectsBadInput) {
 
 TEST(CraigBampton, MastersThatLeaveARigidMotionFreeAreReported) {
   // Free-free beam: K is singular, and one master DOF cannot restrain all six rigid motions.
-  fem::Model model;
-  for (int i = 0; i <= 4; ++i)
-    model.addNode(i, Vector3(0.5 * i, 0.0, 0.0));
-  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
-  fem::Section section;
-  section.name = "bar";
-  section.area = 5e-3;
-  section.iy = 4e-6;
-  section.iz = 1e-6;
-  section.torsion = 2e-6;
-  model.sections.push_back(section);
-  for (int i = 0; i < 4; ++i)
-    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
+  fem::Model model = test::steelCantilever(4);
+  model.fixed.clear();
   const fem::System system = fem::assemble(model);
   EXPECT_THROW(craigBampton(system, {system.dofs.requireActive(0, 2)}, {}), SolverError);
   // Clamping all six DOFs of one node restrains them: the reduction succeeds, rigid modes included.

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -160,21 +161,8 @@ TEST(CommonDofs, KeepsSharedTranslationsInTheOrderOfA) {
 // plane motion remains; the 3-D beam then has modes (y bending, torsion) the planar one lacks, as
 // the tracked model has track-chain modes the un-tracked one lacks.
 fem::System beamModel(bool planar) {
-  fem::Model model;
   const int elements = 10;
-  for (int i = 0; i <= elements; ++i)
-    model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
-  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
-  fem::Section section;
-  section.name = "bar";
-  section.area = 5e-3;
-  section.iy = 4e-6;
-  section.iz = 1e-6;
-  section.torsion = 2e-6;
-  model.sections.push_back(section);
-  for (int i = 0; i < elements; ++i)
-    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
-  model.fixed.push_back(fem::FixedDofs{0});
+  fem::Model model = test::steelCantilever(elements);
   if (planar)
     for (int i = 1; i <= elements; ++i)
       model.fixed.push_back(fem::FixedDofs{i, {{false, true, false, true, false, true}}});

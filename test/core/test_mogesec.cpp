@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -89,20 +90,7 @@ struct Beam {
 };
 
 Beam cantilever(int elements, int modes) {
-  fem::Model model;
-  for (int i = 0; i <= elements; ++i)
-    model.addNode(i, Vector3(2.0 * i / elements, 0.0, 0.0));
-  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
-  fem::Section section;
-  section.name = "bar";
-  section.area = 5e-3;
-  section.iy = 4e-6;
-  section.iz = 1e-6;
-  section.torsion = 2e-6;
-  model.sections.push_back(section);
-  for (int i = 0; i < elements; ++i)
-    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
-  model.fixed.push_back(fem::FixedDofs{0});
+  fem::Model model = test::steelCantilever(elements);
   Beam beam{fem::assemble(model), {}};
   fem::ModalRequest request;
   request.count = modes;

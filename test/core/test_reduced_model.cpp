@@ -8,6 +8,7 @@
 #include <iterator>
 #include <limits>
 
+#include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
@@ -126,22 +127,9 @@ TEST(MatFile, WriterChecksNamesAndLeavesNothingWithoutClose) {
 // A 2 m steel cantilever (10 beams, clamped at node 0) on a spring-damper under the tip (one road
 // input), with a mount point (node 100) 0.5 m above the tip, rigidly attached to it.
 fem::System beamOnSupport() {
-  fem::Model model;
   const int elements = 10;
-  for (int i = 0; i <= elements; ++i)
-    model.addNode(i, Vector3(0.2 * i, 0.0, 0.0));
+  fem::Model model = test::steelCantilever(elements);
   model.addNode(100, Vector3(2.0, 0.0, 0.5));
-  model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
-  fem::Section section;
-  section.name = "bar";
-  section.area = 5e-3;
-  section.iy = 4e-6;
-  section.iz = 1e-6;
-  section.torsion = 2e-6;
-  model.sections.push_back(section);
-  for (int i = 0; i < elements; ++i)
-    model.beams.push_back(fem::Beam{i, i + 1, "steel", "bar", Vector3::UnitZ()});
-  model.fixed.push_back(fem::FixedDofs{0});
   fem::Spring support;
   support.n1 = elements;
   support.stiffness(2) = 2e5;
