@@ -1,12 +1,14 @@
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/discrete_modes.h"
 #include "tracked_vehicle_dynamics/dynamics/discretization.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/validation.h"
+#include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
@@ -50,9 +52,12 @@ class SimulatorEngine {
   DofIndex state_count_ = 0;
   std::vector<std::string> names_;
   double off_diagonal_ratio_ = 0.0;
+  DofIndex dynamic_modes_ = -1, quasi_static_modes_ = 0;  // -1: state_count_ / 2
 };
 
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;
 
 // z_{k+1} = Phi z_k + Gamma0 w_k (+ Gamma1 w_{k+1}) + f_d;  y = C z + D w + y0.
 class DenseEngine : public SimulatorEngine {
@@ -128,35 +133,69 @@ class DenseEngine : public SimulatorEngine {
 class ModalEngine : public SimulatorEngine {
  public:
   ModalEngine(const SecondOrderSystem& system, const SimulatorOptions& options) {
+    if (!(options.max_mode_frequency_hz >= 0) || !std::isfinite(options.max_mode_frequency_hz))
+      throw InputError("Simulator: max_mode_frequency_hz must be finite and >= 0 (0 keeps every mode)");
     const ModalSystem modal(system, options.modal_damping_ratios);
-    const DofIndex n = modal.modeCount();
+    const DofIndex n_all = modal.modeCount();
     const DofIndex n_u = system.inputCount();
-    coefficients_ = discretizeModes(modal.naturalFrequencies(), modal.dampingCoefficients(),
-                                    options.time_step, options.hold);
+    // Modes are in ascending frequency: the first n are dynamic, the rest quasi-static.
+    DofIndex n = n_all;
+    if (options.max_mode_frequency_hz > 0) {
+      const double limit = 2.0 * kPi * options.max_mode_frequency_hz;
+      n = 0;
+      while (n < n_all && modal.naturalFrequencies()(n) <= limit) ++n;
+    }
+    const DofIndex n_t = n_all - n;
+    const Vector omega = modal.naturalFrequencies().head(n);
+    coefficients_ = discretizeModes(omega, modal.dampingCoefficients().head(n), options.time_step,
+                                    options.hold);
     first_order_ = options.hold == InputHold::FirstOrder;
     // Psi = [Phi^T K_u, Phi^T C_u] without its zero columns (e.g. C_u = 0: no tyre damping),
     // which would only cost multiplications by zero in every step.
-    Matrix psi(n, 2 * n_u);
-    psi << modal.modalInputStiffness(), modal.modalInputDamping();
-    for (DofIndex j = 0; j < psi.cols(); ++j)
-      if (!psi.col(j).isZero(0.0))
+    Matrix psi_all(n_all, 2 * n_u);
+    psi_all << modal.modalInputStiffness(), modal.modalInputDamping();
+    for (DofIndex j = 0; j < psi_all.cols(); ++j)
+      if (!psi_all.col(j).isZero(0.0))
         active_inputs_.push_back(j);
     psi_.resize(n, static_cast<DofIndex>(active_inputs_.size()));
     for (std::size_t j = 0; j < active_inputs_.size(); ++j)
-      psi_.col(static_cast<DofIndex>(j)) = psi.col(active_inputs_[j]);
+      psi_.col(static_cast<DofIndex>(j)) = psi_all.col(active_inputs_[j]).head(n);
     active_input_.setZero(psi_.cols());
-    omega_squared_ = modal.naturalFrequencies().cwiseAbs2();
-    damping_ = modal.dampingCoefficients();
-    modal_output_ = modal.modalOutput();
-    shapes_ = modal.shapes();
-    mass_projection_ = modal.massProjection();
-    force_ = options.generalized_force.size() != 0
-                 ? Vector(shapes_.transpose() * options.generalized_force)
-                 : Vector(Vector::Zero(n));
+    omega_squared_ = omega.cwiseAbs2();
+    damping_ = modal.dampingCoefficients().head(n);
+    modal_output_ = modal.modalOutput().leftCols(n);
+    shapes_ = modal.shapes().leftCols(n);
+    mass_projection_ = modal.massProjection().topRows(n);
+    const Vector modal_gravity = options.generalized_force.size() != 0
+                                     ? Vector(modal.shapes().transpose() * options.generalized_force)
+                                     : Vector(Vector::Zero(n_all));
+    force_ = modal_gravity.head(n);
     const Vector gamma_disp = coefficients_.g0_disp + coefficients_.g1_disp;
     const Vector gamma_vel = coefficients_.g0_vel + coefficients_.g1_vel;
     offset_disp_ = gamma_disp.cwiseProduct(force_);
     offset_vel_ = gamma_vel.cwiseProduct(force_);
+
+    // Quasi-static modes: eta_t = Omega_t^-2 (Phi_t^T f), so their outputs are
+    //   y_t = H Phi_t Omega_t^-2 Phi_t^T (K_u u + C_u u' + f_g) = R_w w + r_g,
+    //   y_t' = H Phi_t Omega_t^-2 Phi_t^T K_u u'   (the C_u u'' term is not available: dropped).
+    quasi_static_ = n_t;
+    residual_input_.setZero(modal.outputCount(), psi_.cols());
+    residual_force_.setZero(modal.outputCount());
+    residual_rate_.setZero(modal.outputCount(), n_u);
+    if (n_t > 0) {
+      const Vector inverse_omega2 = modal.naturalFrequencies().tail(n_t).cwiseAbs2().cwiseInverse();
+      const Matrix output_flex =
+          modal.modalOutput().rightCols(n_t) * inverse_omega2.asDiagonal();  // H Phi_t Omega^-2
+      for (std::size_t j = 0; j < active_inputs_.size(); ++j)
+        residual_input_.col(static_cast<DofIndex>(j)).noalias() =
+            output_flex * psi_all.col(active_inputs_[j]).tail(n_t);
+      residual_force_.noalias() = output_flex * modal_gravity.tail(n_t);
+      residual_rate_.noalias() = output_flex * modal.modalInputStiffness().bottomRows(n_t);
+      truncated_shapes_ = modal.shapes().rightCols(n_t) * inverse_omega2.asDiagonal();
+      truncated_psi_.resize(n_t, 2 * n_u);
+      truncated_psi_ = psi_all.bottomRows(n_t);
+      truncated_gravity_ = modal_gravity.tail(n_t);
+    }
 
     const OutputLayout layout(modal.outputNames(), options.quantities);
     n_y_ = modal.outputCount();
@@ -172,6 +211,9 @@ class ModalEngine : public SimulatorEngine {
     hold_ = options.hold;
     method_ = DiscretizationMethod::ModalDecoupled;
     state_count_ = 2 * system.size();
+    dynamic_modes_ = n;
+    quasi_static_modes_ = n_t;
+    n_u_ = n_u;
 
     for (Vector* v : {&eta_, &eta_dot_, &eta_next_, &eta_ddot_, &p_, &p_next_})
       v->setZero(n);
@@ -212,6 +254,12 @@ class ModalEngine : public SimulatorEngine {
     Vector z(2 * n);
     z.head(n).noalias() = shapes_ * eta_;
     z.tail(n).noalias() = shapes_ * eta_dot_;
+    if (quasi_static_ > 0) {
+      // q_t = Phi_t Omega_t^-2 (Phi_t^T (K_u u + C_u u') + Phi_t^T f_g), q_t' from K_u u'.
+      const Vector modal_force = truncated_psi_ * w_ + truncated_gravity_;
+      z.head(n).noalias() += truncated_shapes_ * modal_force;
+      z.tail(n).noalias() += truncated_shapes_ * (truncated_psi_.leftCols(n_u_) * w_.tail(n_u_));
+    }
     return z;
   }
 
@@ -243,12 +291,22 @@ class ModalEngine : public SimulatorEngine {
                           disp.leftCols(b).array().colwise() * omega_squared_.array() -
                           vel.leftCols(b).array().colwise() * damping_.array();
       auto rows = outputs.middleRows(k0, b);
-      if (disp_offset_ >= 0)
+      if (disp_offset_ >= 0) {
         rows.middleCols(disp_offset_, n_y_).noalias() =
             disp.leftCols(b).transpose() * modal_output_.transpose();
-      if (vel_offset_ >= 0)
+        if (quasi_static_ > 0) {
+          rows.middleCols(disp_offset_, n_y_).noalias() +=
+              inputs.middleRows(k0, b)(Eigen::all, active_inputs_) * residual_input_.transpose();
+          rows.middleCols(disp_offset_, n_y_).rowwise() += residual_force_.transpose();
+        }
+      }
+      if (vel_offset_ >= 0) {
         rows.middleCols(vel_offset_, n_y_).noalias() =
             vel.leftCols(b).transpose() * modal_output_.transpose();
+        if (quasi_static_ > 0)
+          rows.middleCols(vel_offset_, n_y_).noalias() +=
+              inputs.middleRows(k0, b).rightCols(n_u_) * residual_rate_.transpose();
+      }
       if (acc_offset_ >= 0)
         rows.middleCols(acc_offset_, n_y_).noalias() =
             acc.leftCols(b).transpose() * modal_output_.transpose();
@@ -289,11 +347,20 @@ class ModalEngine : public SimulatorEngine {
     }
   }
 
+  // active_input_ holds the current w (gathered by setInput/advance).
   void updateOutputs() {
-    if (disp_offset_ >= 0)
+    if (disp_offset_ >= 0) {
       y_.segment(disp_offset_, n_y_).noalias() = modal_output_ * eta_;
-    if (vel_offset_ >= 0)
+      if (quasi_static_ > 0) {
+        y_.segment(disp_offset_, n_y_).noalias() += residual_input_ * active_input_;
+        y_.segment(disp_offset_, n_y_) += residual_force_;
+      }
+    }
+    if (vel_offset_ >= 0) {
       y_.segment(vel_offset_, n_y_).noalias() = modal_output_ * eta_dot_;
+      if (quasi_static_ > 0)
+        y_.segment(vel_offset_, n_y_).noalias() += residual_rate_ * w_.tail(n_u_);
+    }
     if (acc_offset_ >= 0) {
       eta_ddot_.array() = p_.array() + force_.array() - omega_squared_.array() * eta_.array() -
                           damping_.array() * eta_dot_.array();
@@ -310,6 +377,10 @@ class ModalEngine : public SimulatorEngine {
   Vector active_input_;                  // w restricted to active_inputs_
   DofIndex n_y_ = 0;
   DofIndex disp_offset_ = -1, vel_offset_ = -1, acc_offset_ = -1;
+  // Quasi-static (truncated) modes, see the constructor.
+  DofIndex quasi_static_ = 0, n_u_ = 0;
+  Matrix residual_input_, residual_rate_, truncated_shapes_, truncated_psi_;
+  Vector residual_force_, truncated_gravity_;
 };
 
 std::unique_ptr<SimulatorEngine> makeEngine(const SecondOrderSystem& system,
@@ -324,6 +395,9 @@ std::unique_ptr<SimulatorEngine> makeEngine(const SecondOrderSystem& system,
   if (options.modal_damping_ratios.size() != 0)
     throw InputError(
         "Simulator: modal_damping_ratios apply to DiscretizationMethod::ModalDecoupled only");
+  if (options.max_mode_frequency_hz != 0.0)
+    throw InputError(
+        "Simulator: max_mode_frequency_hz applies to DiscretizationMethod::ModalDecoupled only");
   const StateSpace continuous =
       fromSecondOrder(system, options.quantities, options.generalized_force);
   return std::make_unique<DenseEngine>(discretize(continuous, options.time_step, options.hold));
@@ -417,6 +491,12 @@ DiscretizationMethod Simulator::method() const {
 }
 double Simulator::maxOffDiagonalDampingRatio() const {
   return engine_->off_diagonal_ratio_;
+}
+DofIndex Simulator::dynamicModeCount() const {
+  return engine_->dynamic_modes_ >= 0 ? engine_->dynamic_modes_ : engine_->state_count_ / 2;
+}
+DofIndex Simulator::quasiStaticModeCount() const {
+  return engine_->quasi_static_modes_;
 }
 
 }  // namespace dynamics

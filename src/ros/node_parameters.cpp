@@ -135,6 +135,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("comfort_rate", "must not exceed ~rate");
   v.method = parseMethod(in.string("method", "modal"), in.name("method"));
   v.hold = parseHold(in.string("hold", "first_order"), in.name("hold"));
+  v.max_mode_frequency_hz = in.nonNegative("max_mode_frequency", 0.5 * v.rate, "Hz");
   v.lateral_offset = in.number("lateral_offset", v.lateral_offset);
   v.comfort_point = in.string("comfort_point", v.comfort_point);
   if (v.comfort_point.empty())

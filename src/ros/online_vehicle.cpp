@@ -30,6 +30,9 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
   sim.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
                     dynamics::OutputQuantity::Acceleration};
   sim.generalized_force = model.gravity_load;
+  if (sim.method == dynamics::DiscretizationMethod::ModalDecoupled)
+    sim.max_mode_frequency_hz =
+        options.max_mode_frequency_hz < 0 ? 0.5 * options.rate : options.max_mode_frequency_hz;
   return sim;
 }
 

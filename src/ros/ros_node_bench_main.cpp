@@ -91,6 +91,8 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
                             tvd::dynamics::OutputQuantity::Velocity,
                             tvd::dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = model.gravity_load;
+  if (options.method == tvd::dynamics::DiscretizationMethod::ModalDecoupled)
+    sim_options.max_mode_frequency_hz = 0.5 * rate;  // as the node's default
   tvd::dynamics::Simulator sim(model.system, sim_options);
   tvd::Vector w = tvd::Vector::Constant(sim.inputCount(), 1e-3);
   rl::DurationStatistics sim_stats;

@@ -7,6 +7,7 @@
 
 #include "dynamics_test_models.h"
 #include "tracked_vehicle_dynamics/dynamics/discretization.h"
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/newmark.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
@@ -355,3 +356,71 @@ TEST(Simulator, StepDoesNotAllocate) {
   }
 }
 #endif
+
+// Modal truncation with quasi-static modes (mode-acceleration method): on a model whose tyre
+// modes (2e10 N/m) sit far above the body modes, cutting between the two groups changes the
+// displacements over a bump by < 0.2 % of the peak, keeps the static equilibrium exact, and
+// the blocked simulate() still equals stepping. A cut-off above every mode changes nothing.
+TEST(Simulator, QuasiStaticTruncationKeepsStaticsAndDisplacements) {
+  const int n = 12, inputs = 4, outputs = 6;
+  const SecondOrderSystem s = test::randomVehicle(n, inputs, outputs, 11);
+  const ModalSystem modal(s);
+  const Vector hz = modal.naturalFrequencies() / kTwoPi;
+  // The `inputs` tyre modes are the highest; cut in the (log) middle of the gap below them.
+  const double soft = hz(n - inputs - 1), stiff = hz(n - inputs);
+  ASSERT_GT(stiff / soft, 5.0) << "the test model must separate body and tyre modes";
+  const double cut = std::sqrt(soft * stiff);
+  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(n);
+  const Matrix w = bumpInputs(s.input_stations, 900, 1e-3, 8.0, 0.05, 1.0, 2.0);
+
+  SimulatorOptions exact_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  exact_options.generalized_force = f_g;
+  SimulatorOptions cut_options = exact_options;
+  cut_options.max_mode_frequency_hz = cut;
+  Simulator exact(s, exact_options), truncated(s, cut_options), stepped(s, cut_options);
+  EXPECT_EQ(truncated.dynamicModeCount(), n - inputs);
+  EXPECT_EQ(truncated.quasiStaticModeCount(), inputs);
+  EXPECT_EQ(exact.dynamicModeCount(), n);
+
+  const Vector z0 = staticEquilibrium(s, Vector::Zero(inputs), f_g);
+  exact.reset(z0, w.row(0).transpose());
+  truncated.reset(z0, w.row(0).transpose());
+  stepped.reset(z0, w.row(0).transpose());
+  // Statics: the truncated state at rest is the static equilibrium, to rounding.
+  EXPECT_LT((truncated.state() - z0).cwiseAbs().maxCoeff(), 1e-12 * z0.cwiseAbs().maxCoeff());
+
+  const Matrix y_exact = exact.simulate(w);
+  const Matrix y_cut = truncated.simulate(w);
+  const Matrix displacement_change =
+      y_cut.leftCols(outputs).rowwise() - y_cut.row(0).leftCols(outputs);
+  const Matrix displacement_exact =
+      y_exact.leftCols(outputs).rowwise() - y_exact.row(0).leftCols(outputs);
+  EXPECT_LT(relativeBlockError(displacement_change, displacement_exact, outputs), 2e-3);
+  // Velocities: the quasi-static part follows K_u u'.
+  EXPECT_LT(relativeBlockError(y_cut.middleCols(outputs, outputs),
+                               y_exact.middleCols(outputs, outputs), outputs),
+            2e-2);
+
+  Matrix y_stepped(w.rows(), y_cut.cols());
+  y_stepped.row(0) = stepped.outputs().transpose();
+  for (DofIndex k = 1; k < w.rows(); ++k) {
+    stepped.step(w.row(k).transpose());
+    y_stepped.row(k) = stepped.outputs().transpose();
+  }
+  EXPECT_LT(relativeBlockError(y_cut, y_stepped, outputs), 1e-12);
+  EXPECT_LT((truncated.state() - stepped.state()).norm(), 1e-12 * stepped.state().norm());
+
+  SimulatorOptions all_options = exact_options;
+  all_options.max_mode_frequency_hz = 2.0 * hz(n - 1);
+  Simulator all(s, all_options);
+  all.reset(z0, w.row(0).transpose());
+  EXPECT_EQ(all.quasiStaticModeCount(), 0);
+  EXPECT_LT(relativeBlockError(all.simulate(w), y_exact, outputs), 1e-13);
+
+  SimulatorOptions bad = exact_options;
+  bad.max_mode_frequency_hz = -1.0;
+  EXPECT_THROW(Simulator(s, bad), InputError);
+  bad = options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
+  bad.max_mode_frequency_hz = 100.0;
+  EXPECT_THROW(Simulator(s, bad), InputError);
+}

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 #ifndef TVD_SOURCE_DIR
@@ -599,6 +601,38 @@ TEST(TerrainBuffer, RejectsBadPatches) {
   expectInputError([&] { buffer.addPatch(std::nan(""), 0.1, y, Matrix::Zero(2, 5)); },
                    {"start station is not finite"});
   EXPECT_TRUE(buffer.empty());
+}
+
+// The precomputed lines give Terrain::height()/slope() at their lateral positions (uniform and
+// non-uniform grids, inside and outside the stations, between lateral lines), and fall back to
+// the terrain for any other y.
+TEST(TerrainLines, EqualTerrainSampling) {
+  const Terrain oop = makeTrack("oop_waves");
+  Vector stations(6), lateral(3);
+  stations << 0.0, 0.3, 0.35, 1.0, 2.5, 2.6;
+  lateral << -1.0, 0.2, 1.5;
+  Matrix heights(3, 6);
+  heights << 0.0, 0.1, -0.2, 0.3, 0.0, 0.5,  //
+      0.2, 0.0, 0.1, -0.1, 0.4, 0.0,         //
+      -0.3, 0.2, 0.0, 0.1, 0.1, 0.2;
+  const Terrain uneven(stations, lateral, heights, "uneven");
+  std::mt19937 rng(7);
+  for (const Terrain* t : {&oop, &uneven}) {
+    Vector ys(5);
+    ys << t->lateral()(0) - 0.3, 0.37, -0.61, t->lateral()(t->lateral().size() - 1), 0.37;
+    const TerrainLines lines(*t, ys);
+    EXPECT_EQ(lines.lineCount(), 4u);  // 0.37 appears twice
+    std::uniform_real_distribution<double> x(t->startStation() - 1.0, t->endStation() + 1.0);
+    for (int k = 0; k < 2000; ++k) {
+      const double xk = k < 10 ? t->stations()(k % t->stations().size()) : x(rng);
+      for (double y : {0.37, -0.61, ys(0), 0.9 /* not a line: falls back */}) {
+        const double scale = 1.0 + std::abs(t->height(xk, y));
+        EXPECT_NEAR(lines.height(xk, y), t->height(xk, y), 1e-12 * scale) << t->name() << " x " << xk;
+        EXPECT_NEAR(lines.slope(xk, y), t->slope(xk, y), 1e-9 * (1.0 + std::abs(t->slope(xk, y))))
+            << t->name() << " x " << xk;
+      }
+    }
+  }
 }
 
 }  // namespace

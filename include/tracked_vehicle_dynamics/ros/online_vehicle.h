@@ -56,6 +56,9 @@ struct OnlineVehicleOptions {
   double rate = 1000.0;  ///< step rate 1/h [Hz]
   dynamics::DiscretizationMethod method = dynamics::DiscretizationMethod::ModalDecoupled;
   dynamics::InputHold hold = dynamics::InputHold::FirstOrder;
+  /// Modal method: modes above this frequency [Hz] are quasi-static (see Simulator); < 0 means
+  /// the Nyquist frequency rate / 2, 0 keeps every mode dynamic.
+  double max_mode_frequency_hz = -1.0;
   /// Position of the vehicle centre line on the terrain's lateral axis [m] (y left).
   double lateral_offset = 0.0;
   /// Output whose vertical acceleration feeds the comfort meter: a named point, or "hull" for
