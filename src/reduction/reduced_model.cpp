@@ -32,8 +32,16 @@ std::string utcNow() {
   return buffer;
 }
 
-// Each output as a combination of active DOFs: the row of the constraint transformation
-// u_phys = T u_active (a fixed DOF has an empty row, a rigid-joint slave its master's terms).
+}  // namespace
+
+const char* softwareVersion() {
+#ifdef TVD_VERSION
+  return TVD_VERSION;
+#else
+  return "0.1.0";
+#endif
+}
+
 std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
     const fem::DofMap& dofs, const std::vector<OutputDof>& outputs) {
   const SparseMatrix by_row = dofs.transformation().transpose();  // column p = physical row p
@@ -53,28 +61,43 @@ std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
   return terms;
 }
 
-}  // namespace
+std::vector<std::string> outputNames(const std::vector<OutputDof>& outputs) {
+  std::set<std::string> names;
+  std::vector<std::string> output_names;
+  for (const OutputDof& output : outputs) {
+    const std::string name = output.name.empty() ? label(output.dof) : output.name;
+    if (!names.insert(name).second)
+      throw InputError("buildReducedModel: output name '" + name + "' is used twice");
+    output_names.push_back(name);
+  }
+  return output_names;
+}
 
-const char* softwareVersion() {
-#ifdef TVD_VERSION
-  return TVD_VERSION;
-#else
-  return "0.1.0";
-#endif
+void inputPositions(const fem::System& system, Vector* stations, Vector* lateral) {
+  const fem::DofMap& dofs = system.dofs;
+  const auto inputs = static_cast<DofIndex>(system.ground_inputs.size());
+  Vector x(inputs), y(inputs);
+  for (DofIndex q = 0; q < inputs; ++q) {
+    const fem::DofRef& d = system.ground_inputs[static_cast<std::size_t>(q)];
+    DofIndex active = -1;
+    for (int direction = 0; direction < kDofsPerNode && active < 0; ++direction)
+      active = dofs.active(d.node, direction);
+    if (active < 0) {
+      *stations = Vector();
+      *lateral = Vector();
+      return;
+    }
+    x(q) = dofs.positionOf(active).x();
+    y(q) = dofs.positionOf(active).y();
+  }
+  *stations = x;
+  *lateral = y;
 }
 
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request) {
   const fem::DofMap& dofs = system.dofs;
   const auto terms = outputTerms(dofs, request.outputs);
-  std::set<std::string> names;
-  std::vector<std::string> output_names;
-  for (std::size_t i = 0; i < request.outputs.size(); ++i) {
-    const std::string name =
-        request.outputs[i].name.empty() ? label(request.outputs[i].dof) : request.outputs[i].name;
-    if (!names.insert(name).second)
-      throw InputError("buildReducedModel: output name '" + name + "' is used twice");
-    output_names.push_back(name);
-  }
+  const std::vector<std::string> output_names = outputNames(request.outputs);
 
   // One recovery row per active DOF the outputs need.
   CraigBamptonOptions options = request.craig_bampton;
@@ -101,23 +124,9 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   s.output_names = output_names;
 
   const auto inputs = static_cast<DofIndex>(system.ground_inputs.size());
-  Vector stations(inputs), lateral(inputs);
-  bool located = true;
-  for (DofIndex q = 0; q < inputs; ++q) {
-    const fem::DofRef& d = system.ground_inputs[static_cast<std::size_t>(q)];
-    model.input_labels.push_back(label(d));
-    DofIndex active = -1;
-    for (int direction = 0; direction < kDofsPerNode && active < 0; ++direction)
-      active = dofs.active(d.node, direction);
-    if (active < 0) {
-      located = false;
-      continue;
-    }
-    stations(q) = dofs.positionOf(active).x();
-    lateral(q) = dofs.positionOf(active).y();
-  }
-  s.input_stations = located ? stations : Vector();
-  s.input_lateral = located ? lateral : Vector();
+  for (DofIndex q = 0; q < inputs; ++q)
+    model.input_labels.push_back(label(system.ground_inputs[static_cast<std::size_t>(q)]));
+  inputPositions(system, &s.input_stations, &s.input_lateral);
 
   model.gravity_load = cb.gravity_load;
   for (const DofIndex master : cb.masters) {

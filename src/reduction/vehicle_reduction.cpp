@@ -57,7 +57,16 @@ std::vector<DofIndex> interfaceMasters(const AssembledVariant& v, DofIndex* inte
   return masters;
 }
 
-DampingOptions dampingOf(const vehicle::DampingDescription& d) {
+std::vector<double> frequenciesBelow(const Vector& hz, double limit) {
+  std::vector<double> out;
+  for (Eigen::Index i = 0; i < hz.size(); ++i)
+    if (hz(i) <= limit) out.push_back(hz(i));
+  return out;
+}
+
+}  // namespace
+
+DampingOptions vehicleDamping(const vehicle::DampingDescription& d) {
   DampingOptions o;
   if (d.model == vehicle::DampingModel::Modal) {
     o.model = DampingModel::Modal;
@@ -69,15 +78,6 @@ DampingOptions dampingOf(const vehicle::DampingDescription& d) {
   }
   return o;
 }
-
-std::vector<double> frequenciesBelow(const Vector& hz, double limit) {
-  std::vector<double> out;
-  for (Eigen::Index i = 0; i < hz.size(); ++i)
-    if (hz(i) <= limit) out.push_back(hz(i));
-  return out;
-}
-
-}  // namespace
 
 std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& v,
                                       const vehicle::VehicleDescription& description) {
@@ -173,7 +173,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   request.craig_bampton.fixed_interface =
       options.mode_count > 0 ? FixedInterfaceModes{options.mode_count, 0.0}
                              : fixedInterfaceModes(selection, fixed_interface);
-  request.craig_bampton.damping = dampingOf(description.damping);
+  request.craig_bampton.damping = vehicleDamping(description.damping);
   request.outputs = vehicleOutputs(model.vehicle, description);
   request.selection = selection;
   request.description_hash = vehicle::descriptionHashHex(description);

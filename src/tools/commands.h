@@ -10,6 +10,7 @@ void registerModesCommand(CLI::App& app);
 void registerMacCommand(CLI::App& app);
 void registerReduceCommand(CLI::App& app);
 void registerSimulateCommand(CLI::App& app);
+void registerFrfCommand(CLI::App& app);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

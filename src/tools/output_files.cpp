@@ -1,5 +1,6 @@
 #include "output_files.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -68,6 +69,14 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
   mat.writeStrings("dof_labels", labels);
   if (typed) mat.writeStrings("mode_types", mode_types);
   mat.close();
+}
+
+std::string defaultCacheDir() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  const char* home = std::getenv("HOME");
+  if (xdg && *xdg) return std::string(xdg) + "/tracked_vehicle_dynamics";
+  if (home && *home) return std::string(home) + "/.cache/tracked_vehicle_dynamics";
+  return "/tmp/tracked_vehicle_dynamics";
 }
 
 }  // namespace tools

@@ -17,6 +17,10 @@ namespace tools {
 void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
                     const std::vector<std::string>& mode_types);
 
+/// Where reduced models are cached: $XDG_CACHE_HOME/tracked_vehicle_dynamics, else
+/// ~/.cache/tracked_vehicle_dynamics, else /tmp/tracked_vehicle_dynamics.
+std::string defaultCacheDir();
+
 /// Creates DIR (and parents); throws InputError naming it when that fails.
 void makeOutputDirectory(const std::string& dir);
 

@@ -6,14 +6,17 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 
 #include "commands.h"
+#include "output_files.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
@@ -35,19 +38,13 @@ struct SimulateOptions {
   double dt = 1e-3;
   double lateral_offset = 0.0;
   std::string method = "modal";
+  std::string model = "reduced";
   double max_mode_hz = -1.0;  // < 0: the Nyquist frequency 1 / (2 dt)
   std::string cache_dir;
   std::string out_file;
   bool json = false;
 };
 
-std::string defaultCacheDir() {
-  const char* xdg = std::getenv("XDG_CACHE_HOME");
-  const char* home = std::getenv("HOME");
-  if (xdg && *xdg) return std::string(xdg) + "/tracked_vehicle_dynamics";
-  if (home && *home) return std::string(home) + "/.cache/tracked_vehicle_dynamics";
-  return "/tmp/tracked_vehicle_dynamics";
-}
 
 DofIndex rowOf(const std::vector<std::string>& names, const std::string& name) {
   const auto it = std::find(names.begin(), names.end(), name);
@@ -65,10 +62,22 @@ void run(const SimulateOptions& opt) {
     return terrain::loadTerrain(opt.track);
   }();
 
+  // The reduced model (cached), or the full FE model in modal form with its static residual.
   reduction::VehicleReductionReport report;
-  const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
-      opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
-  const dynamics::SecondOrderSystem& sys = model.system;
+  reduction::ReducedModel model;
+  std::unique_ptr<reduction::FullModelReference> full;
+  if (opt.model == "full") {
+    if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
+    reduction::FullReferenceOptions ref_options;
+    ref_options.max_frequency_hz = opt.max_mode_hz < 0 ? 100.0 : opt.max_mode_hz;
+    full = std::make_unique<reduction::FullModelReference>(reduction::buildVehicleReference(
+        vehicle::loadVehicleDescription(opt.vehicle_file), variant, ref_options));
+  } else {
+    model = reduction::loadOrReduceVehicle(
+        opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
+  }
+  const dynamics::SecondOrderSystem& sys = full ? full->modal : model.system;
+  const Vector& gravity = full ? full->modal_gravity : model.gravity_load;
 
   dynamics::SimulatorOptions sim_options;
   sim_options.time_step = opt.dt;
@@ -76,8 +85,8 @@ void run(const SimulateOptions& opt) {
   sim_options.method = opt.method == "modal" ? dynamics::DiscretizationMethod::ModalDecoupled
                                              : dynamics::DiscretizationMethod::AugmentedExponential;
   sim_options.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Acceleration};
-  sim_options.generalized_force = model.gravity_load;
-  if (sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled)
+  sim_options.generalized_force = gravity;
+  if (sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled && !full)
     sim_options.max_mode_frequency_hz = opt.max_mode_hz < 0 ? 0.5 / opt.dt : opt.max_mode_hz;
   const auto setup_start = Clock::now();
   dynamics::Simulator sim(sys, sim_options);
@@ -93,8 +102,15 @@ void run(const SimulateOptions& opt) {
   road.sample(lines, track.startStation(), speed, w);
   const Vector u0 = w.head(road.inputCount());
   // Start from static equilibrium on the entry of the track, at rest relative to it.
-  sim.reset(dynamics::staticEquilibrium(sys, u0, model.gravity_load), w);
-  const Vector y0 = sim.outputs();
+  sim.reset(dynamics::staticEquilibrium(sys, u0, gravity), w);
+  // Outputs; the full model adds its static residual to the displacements (rows 0..n_y-1).
+  Vector y_now = sim.outputs();
+  auto outputs = [&]() -> const Vector& {
+    y_now = sim.outputs();
+    if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y_now.head(sys.outputCount()));
+    return y_now;
+  };
+  const Vector y0 = outputs();
 
   const auto& names = sim.outputNames();
   const DofIndex heave = rowOf(names, "hull uz/disp"), roll = rowOf(names, "hull rx/disp"),
@@ -111,7 +127,7 @@ void run(const SimulateOptions& opt) {
   Matrix series(steps + 1, kWheelColumn + wheels.size());
   dynamics::ComfortMeter comfort(1.0 / opt.dt);
   auto record = [&](long k) {
-    const Vector& y = sim.outputs();
+    const Vector& y = outputs();
     series(k, 0) = k * opt.dt;
     series(k, 1) = track.startStation() + speed * k * opt.dt;
     series(k, 2) = y(heave) - y0(heave);
@@ -157,7 +173,9 @@ void run(const SimulateOptions& opt) {
         .field("track", track.name())
         .field("speed_kmh", opt.speed_kmh)
         .field("time_step_s", opt.dt)
-        .field("reduced_dofs", static_cast<long long>(sys.size()))
+        .field("model", full ? "full" : "reduced")
+        .field(full ? "modal_coordinates" : "reduced_dofs", static_cast<long long>(sys.size()))
+        .field("full_dofs", static_cast<long long>(full ? full->full_dofs : model.full_dof_count))
         .field("dynamic_modes", static_cast<long long>(sim.dynamicModeCount()))
         .field("quasi_static_modes", static_cast<long long>(sim.quasiStaticModeCount()))
         .field("model_from_cache", report.from_cache)
@@ -181,8 +199,10 @@ void run(const SimulateOptions& opt) {
     return;
   }
   std::cout << std::fixed << std::setprecision(3) << track.name() << " at " << opt.speed_kmh
-            << " km/h, " << vehicle::variantName(variant) << " reduced model (" << sys.size()
-            << " DOFs" << (report.from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n"
+            << " km/h, " << vehicle::variantName(variant)
+            << (full ? " full model (" + std::to_string(sys.size()) + " modes + static residual"
+                     : " reduced model (" + std::to_string(sys.size()) + " DOFs")
+            << (report.from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n"
             << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
             << "  peak road-wheel displacement " << peak_wheel << " m\n"
@@ -196,7 +216,7 @@ void run(const SimulateOptions& opt) {
 
 void registerSimulateCommand(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
-  CLI::App* cmd = app.add_subcommand("simulate", "Time response of the reduced vehicle over a track");
+  CLI::App* cmd = app.add_subcommand("simulate", "Time response of the reduced (or full) vehicle over a track");
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
   cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | terrain file (CSV/YAML)");
@@ -208,6 +228,10 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "
                   "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic)");
+  cmd->add_option("--model", opt->model,
+                  "reduced (Craig-Bampton, cached) | full (FE modes up to --max-mode-hz, default "
+                  "100 Hz, plus static residual: the reference)")
+      ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
   cmd->add_option("--out", opt->out_file, "time series CSV");
   cmd->add_flag("--json", opt->json, "print a JSON summary");

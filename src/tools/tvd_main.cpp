@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   tvd::tools::registerModesCommand(app);
   tvd::tools::registerMacCommand(app);
   tvd::tools::registerReduceCommand(app);
+  tvd::tools::registerFrfCommand(app);
   tvd::tools::registerSimulateCommand(app);
   try {
     app.parse(argc, argv);

@@ -63,6 +63,21 @@ struct ReductionRequest {
   std::string creator;
 };
 
+/// Each output as a combination of active DOFs, one (active index, coefficient) list per output:
+/// its row of the constraint transformation u_phys = T u_active (empty for a fixed DOF, the
+/// master's terms for a rigid-joint slave). Throws InputError naming an output on an unknown
+/// node or direction.
+std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
+    const fem::DofMap& dofs, const std::vector<OutputDof>& outputs);
+
+/// Output names: each output's name, or its label when empty. Throws InputError for a repeated
+/// name.
+std::vector<std::string> outputNames(const std::vector<OutputDof>& outputs);
+
+/// x and y [m] of the node under each road input of the system (x forward, y left); both empty
+/// when some input's node has no active DOF.
+void inputPositions(const fem::System& system, Vector* stations, Vector* lateral);
+
 /// Runs craigBampton() on `system` and packages the result. Throws InputError for an output on
 /// an unknown node or bad direction, repeated output names, and whatever craigBampton() throws.
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request);

@@ -1,0 +1,210 @@
+#!/usr/bin/python3
+"""MAC of the un-tracked and tracked vehicle modes, like Figs. 9 and 10 of Dimauro et al. (2024).
+
+--out (Fig. 9): the MAC matrix, un-tracked modes on x, tracked modes on y; gray scale below the
+threshold, red scale at or above it. --freq-out (Fig. 10): every pair with MAC >= threshold as a
+marker at (f_untracked, f_tracked), sized and coloured by MAC, with the iso-frequency line.
+
+Input: the directory written by
+    build/devel/lib/tracked_vehicle_dynamics/tvd mac --vehicle config/vehicles/paper_vehicle.yaml \\
+        --count 40 --out DIR
+    scripts/plot_mac.py --mac-dir DIR --out fig9.png --freq-out fig10.png
+DIR/mac.csv: header 'untracked_mode\\tracked_mode' (un-tracked mode number of each row), then one
+column per tracked mode named by its number. DIR/mac.mat (read only for --freq-out): the vectors
+untracked_frequencies_hz and tracked_frequencies_hz [Hz], indexed by mode number - 1.
+
+Bad input (missing file, missing column or variable, non-numeric value) exits with status 2 and one
+line on stderr naming the file.
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import scipy.io  # noqa: E402
+
+ROW_COLUMN = "untracked_mode\\tracked_mode"  # literally a backslash, as tvd writes it
+# Scales without their near-white ends, so that MAC = threshold is visibly red.
+RED = matplotlib.colors.ListedColormap(matplotlib.colormaps["Reds"](np.linspace(0.3, 1, 256)))
+GRAY = matplotlib.colors.ListedColormap(matplotlib.colormaps["Greys"](np.linspace(0, 0.85, 256)))
+
+
+def fail(message):
+    """One error line on stderr, exit status 2 (bad input)."""
+    sys.stderr.write(f"{os.path.basename(sys.argv[0])}: error: {message}\n")
+    sys.exit(2)
+
+
+def read_csv(path):
+    """Header and data rows of a CSV file; fails on a missing, unreadable or empty file."""
+    try:
+        with open(path, newline="") as stream:
+            rows = [row for row in csv.reader(stream) if row]
+    except (OSError, UnicodeDecodeError, csv.Error) as error:
+        fail(f"{path}: cannot read CSV ({getattr(error, 'strerror', None) or error})")
+    if len(rows) < 2:
+        fail(f"{path}: no data rows")
+    return [name.strip() for name in rows[0]], rows[1:]
+
+
+def column(path, header, rows, name):
+    """The column called `name` as a float array; fails if it is missing or not finite numbers."""
+    if name not in header:
+        fail(f"{path}: missing column '{name}'")
+    j = header.index(name)
+    values = []
+    for line, row in enumerate(rows, start=2):
+        text = row[j].strip() if j < len(row) else ""
+        try:
+            value = float(text)
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            fail(f"{path}: line {line}, column '{name}': '{text}' is not a finite number")
+        values.append(value)
+    return np.array(values)
+
+
+def mode_numbers(path, what, values):
+    if np.any(values != np.round(values)) or np.any(values < 1):
+        fail(f"{path}: {what} are not mode numbers >= 1")
+    return values.astype(int)
+
+
+def load_mac(path):
+    """(un-tracked mode numbers, tracked mode numbers, MAC[untracked, tracked]) from mac.csv."""
+    header, rows = read_csv(path)
+    untracked = mode_numbers(path, f"the values of '{ROW_COLUMN}'",
+                             column(path, header, rows, ROW_COLUMN))
+    names = [name for name in header if name != ROW_COLUMN]
+    if not names or not all(name.isdigit() for name in names):
+        fail(f"{path}: the columns after '{ROW_COLUMN}' must be named by tracked mode numbers")
+    tracked = mode_numbers(path, "the column names", np.array([int(name) for name in names]))
+    mac = np.column_stack([column(path, header, rows, name) for name in names])
+    if mac.min() < 0 or mac.max() > 1 + 1e-9:
+        fail(f"{path}: MAC values outside [0, 1]")
+    return untracked, tracked, mac
+
+
+def load_frequencies(path, name, modes):
+    """Natural frequencies [Hz] of the given mode numbers, from variable `name` of mac.mat."""
+    try:
+        data = scipy.io.loadmat(path, variable_names=[name])
+    except (OSError, ValueError, TypeError, scipy.io.matlab.MatReadError) as error:
+        fail(f"{path}: cannot read MAT file ({getattr(error, 'strerror', None) or error})")
+    if name not in data:
+        fail(f"{path}: missing variable '{name}'")
+    values = data[name]
+    if not np.issubdtype(values.dtype, np.number) or not np.all(np.isfinite(values)):
+        fail(f"{path}: variable '{name}' is not a vector of finite numbers")
+    values = values.ravel()
+    if modes.max() > values.size:
+        fail(f"{path}: variable '{name}' has {values.size} entries, mac.csv needs {modes.max()}")
+    return values[modes - 1]
+
+
+def mode_ticks(ax, untracked, tracked):
+    """Tick every mode up to 40 modes, every 5th beyond."""
+    for axis, modes in ((ax.xaxis, untracked), (ax.yaxis, tracked)):
+        step = 1 if modes.size <= 40 else 5
+        axis.set_ticks(np.arange(0, modes.size, step))
+        axis.set_ticklabels([str(m) for m in modes[::step]], fontsize=6)
+
+
+def plot_matrix(untracked, tracked, mac, threshold, out):
+    """Fig. 9."""
+    fig, ax = plt.subplots(figsize=(9, 7.5))
+    shown = mac.T  # rows: tracked modes (y), columns: un-tracked modes (x)
+    low = ax.imshow(np.ma.masked_where(shown >= threshold, shown), cmap=GRAY, vmin=0,
+                    vmax=threshold, origin="lower", aspect="auto")
+    high = ax.imshow(np.ma.masked_where(shown < threshold, shown), cmap=RED, vmin=threshold,
+                     vmax=1, origin="lower", aspect="auto")
+    for y, x in np.argwhere(shown >= threshold):
+        ax.text(x, y, f"{shown[y, x]:.2f}", ha="center", va="center", fontsize=5, color="w")
+    fig.colorbar(low, ax=ax, pad=0.01, label=f"MAC < {threshold:g}")
+    fig.colorbar(high, ax=ax, pad=0.02, label=f"MAC $\\geq$ {threshold:g}")
+    mode_ticks(ax, untracked, tracked)
+    ax.set_xlabel("un-tracked (minimal track chain) model mode #")
+    ax.set_ylabel("tracked model mode #")
+    ax.set_title("MAC between un-tracked and tracked vehicle modes")
+    save(fig, out)
+
+
+def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold, f_max, out):
+    """Fig. 10; pairs with either frequency above f_max [Hz] (if given) are left out."""
+    fig, ax = plt.subplots(figsize=(7.5, 6.5))
+    pairs = np.argwhere(mac >= threshold)
+    if f_max:
+        pairs = pairs[(f_untracked[pairs[:, 0]] <= f_max) & (f_tracked[pairs[:, 1]] <= f_max)]
+    i, j = pairs[:, 0], pairs[:, 1]
+    limit = f_max or 1.05 * max([1.0, *f_untracked[i], *f_tracked[j]])
+    ax.plot([0, limit], [0, limit], "k--", linewidth=1, label="iso-frequency")
+    markers = ax.scatter(f_untracked[i], f_tracked[j], s=300 * mac[i, j] ** 2, c=mac[i, j],
+                         cmap=RED, vmin=threshold, vmax=1, edgecolors="k", linewidths=0.5,
+                         label=f"MAC $\\geq$ {threshold:g}", zorder=3)
+    labels = []  # (x, y, names); a label is about 6 % of the axis wide: neighbours share one
+    for a, b in zip(i, j):
+        x, y, name = f_untracked[a], f_tracked[b], f"{untracked[a]}/{tracked[b]}"
+        near = [g for g in labels if abs(g[0] - x) < 0.06 * limit and abs(g[1] - y) < 0.03 * limit]
+        if near:
+            near[0][2].append(name)
+        else:
+            labels.append((x, y, [name]))
+    for x, y, names in labels:
+        ax.annotate(", ".join(names), (x, y), xytext=(10, -2), textcoords="offset points",
+                    fontsize=6)
+    fig.colorbar(markers, ax=ax, label="MAC")
+    ax.set_xlim(0, limit)
+    ax.set_ylim(0, limit)
+    ax.set_xlabel("un-tracked (minimal track chain) model frequency [Hz]")
+    ax.set_ylabel("tracked model frequency [Hz]")
+    ax.set_title(f"{len(pairs)} mode pairs with MAC $\\geq$ {threshold:g} (un-tracked/tracked #)")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="upper left")
+    save(fig, out)
+
+
+def save(fig, out):
+    fig.tight_layout()
+    try:
+        fig.savefig(out, dpi=150, format="png")
+    except OSError as error:
+        fail(f"{out}: cannot write PNG ({error.strerror or error})")
+    plt.close(fig)
+    print(out)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--mac-dir", required=True, help="directory written by `tvd mac --out`")
+    parser.add_argument("--out", required=True, help="PNG file of the MAC matrix (Fig. 9)")
+    parser.add_argument("--freq-out", help="PNG file of the frequency map (Fig. 10)")
+    parser.add_argument("--threshold", type=float, default=0.7,
+                        help="MAC of a match (default 0.7, as in the paper)")
+    parser.add_argument("--f-max", type=float,
+                        help="Fig. 10: leave out pairs above this frequency [Hz] (default: none)")
+    args = parser.parse_args()
+    if not 0 <= args.threshold <= 1:
+        parser.error("--threshold must be in [0, 1]")
+
+    csv_path = os.path.join(args.mac_dir, "mac.csv")
+    untracked, tracked, mac = load_mac(csv_path)
+    if args.freq_out:  # read before plotting so that bad input writes no PNG at all
+        mat_path = os.path.join(args.mac_dir, "mac.mat")
+        f_untracked = load_frequencies(mat_path, "untracked_frequencies_hz", untracked)
+        f_tracked = load_frequencies(mat_path, "tracked_frequencies_hz", tracked)
+    plot_matrix(untracked, tracked, mac, args.threshold, args.out)
+    if args.freq_out:
+        plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, args.threshold,
+                         args.f_max, args.freq_out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""Time response over a track, like Figs. 18-24 of Dimauro et al. (2024).
+
+Panels: hull heave [m], hull vertical acceleration [m/s^2], pitch [deg], roll [deg] (only if a file
+has hull_roll_deg), front-left and rear-left road wheel displacement [m]; x is station [m] or time
+[s]. Each LABEL=FILE.csv becomes one line per panel, e.g. full/reduced (Figs. 18-19), untracked/
+tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simulate --out` writes:
+
+    TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
+    $TVD simulate --vehicle $V --variant untracked --track long_hill --speed-kmh 30 --out /tmp/u.csv
+    $TVD simulate --vehicle $V --variant tracked --track long_hill --speed-kmh 30 --out /tmp/t.csv
+    scripts/plot_simulation.py --out fig20.png untracked=/tmp/u.csv tracked=/tmp/t.csv
+
+Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
+hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
+rear one). Bad input (missing file, missing column, non-numeric value) exits with status 2 and one
+line on stderr naming the file.
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+X_AXES = {"station": ("station_m", "station [m]"), "time": ("time_s", "time [s]")}
+# Panel key -> y label; the wheel panels' columns depend on the wheel count.
+PANELS = {
+    "hull_heave_m": "hull heave [m]",
+    "hull_vertical_accel_m_s2": "hull vertical acceleration [m/s$^2$]",
+    "hull_pitch_deg": "hull pitch [deg]",
+    "hull_roll_deg": "hull roll [deg]",
+    "front_left_wheel": "front-left road wheel [m]",
+    "rear_left_wheel": "rear-left road wheel [m]",
+}
+LINE_STYLES = ["-", "--", "-.", ":"]
+
+
+def fail(message):
+    """One error line on stderr, exit status 2 (bad input)."""
+    sys.stderr.write(f"{os.path.basename(sys.argv[0])}: error: {message}\n")
+    sys.exit(2)
+
+
+def read_csv(path):
+    """Header and data rows of a CSV file; fails on a missing, unreadable or empty file."""
+    try:
+        with open(path, newline="") as stream:
+            rows = [row for row in csv.reader(stream) if row]
+    except (OSError, UnicodeDecodeError, csv.Error) as error:
+        fail(f"{path}: cannot read CSV ({getattr(error, 'strerror', None) or error})")
+    if len(rows) < 2:
+        fail(f"{path}: no data rows")
+    return [name.strip() for name in rows[0]], rows[1:]
+
+
+def column(path, header, rows, name):
+    """The column called `name` as a float array; fails if it is missing or not finite numbers."""
+    if name not in header:
+        fail(f"{path}: missing column '{name}'")
+    j = header.index(name)
+    values = []
+    for line, row in enumerate(rows, start=2):
+        text = row[j].strip() if j < len(row) else ""
+        try:
+            value = float(text)
+        except ValueError:
+            value = math.nan
+        if not math.isfinite(value):
+            fail(f"{path}: line {line}, column '{name}': '{text}' is not a finite number")
+        values.append(value)
+    return np.array(values)
+
+
+def load(path, x_column):
+    """x values and {panel key: values} of one simulation file."""
+    header, rows = read_csv(path)
+    wheel = re.compile(r"road_wheel_left_(\d+)_m")
+    rear = max((int(m.group(1)) for m in map(wheel.fullmatch, header) if m), default=1)
+    columns = {key: key for key in PANELS if key.startswith("hull_")}
+    columns["front_left_wheel"] = "road_wheel_left_1_m"
+    columns["rear_left_wheel"] = f"road_wheel_left_{rear}_m"
+    if "hull_roll_deg" not in header:  # older files
+        del columns["hull_roll_deg"]
+    x = column(path, header, rows, x_column)
+    return x, {key: column(path, header, rows, name) for key, name in columns.items()}
+
+
+def labelled(text):
+    label, sep, path = text.partition("=")
+    return (label, path) if sep else (os.path.splitext(os.path.basename(text))[0], text)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", required=True, help="PNG file to write")
+    parser.add_argument("--title", default="", help="figure title")
+    parser.add_argument("--x", choices=X_AXES, default="station", help="x axis (default station)")
+    parser.add_argument("files", nargs="+", type=labelled, metavar="LABEL=FILE.csv",
+                        help="one line per file, named LABEL in the legend")
+    args = parser.parse_args()
+
+    x_column, x_label = X_AXES[args.x]
+    runs = [(label, *load(path, x_column)) for label, path in args.files]
+    present = [key for key in PANELS if any(key in series for _, _, series in runs)]
+    nrows = math.ceil(len(present) / 2)
+    fig, axes = plt.subplots(nrows, 2, figsize=(12, 3.2 * nrows), sharex=True, squeeze=False)
+    for ax in axes.flat[len(present):]:
+        ax.set_visible(False)
+    for ax, key in zip(axes.flat, present):
+        for k, (label, x, series) in enumerate(runs):
+            if key in series:
+                ax.plot(x, series[key], linestyle=LINE_STYLES[k % len(LINE_STYLES)], label=label)
+        ax.set_ylabel(PANELS[key])
+        ax.set_xlabel(x_label)
+        ax.xaxis.set_tick_params(labelbottom=True)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize="small")
+    if args.title:
+        fig.suptitle(args.title)
+    fig.tight_layout()
+    try:
+        fig.savefig(args.out, dpi=150, format="png")
+    except OSError as error:
+        fail(f"{args.out}: cannot write PNG ({error.strerror or error})")
+    print(args.out)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,170 @@
+#include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace reduction {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+// Below this size every mode is found by the dense solver.
+constexpr DofIndex kDenseLimit = 400;
+
+// The modes of (K, M) up to `limit_hz`: Lanczos for a growing count until a mode lies above
+// the limit (or every mode was found).
+fem::ModalBasis modesUpTo(const fem::System& system, double limit_hz, int max_modes) {
+  const DofIndex n = system.size();
+  if (n <= kDenseLimit)
+    return fem::solveModesDense(Matrix(system.stiffness), Matrix(system.mass));
+  int count = static_cast<int>(std::min<DofIndex>(60, n - 1));
+  for (;;) {
+    fem::ModalRequest request;
+    request.count = count;
+    fem::ModalBasis modes = fem::solveModes(system.stiffness, system.mass, request);
+    if (modes.frequencies_hz(modes.count() - 1) > limit_hz) return modes;
+    if (count >= max_modes || count >= n - 1)
+      throw InputError("full-model reference: more than " + std::to_string(count) +
+                       " modes below " + std::to_string(limit_hz) +
+                       " Hz; lower max_frequency_hz or raise max_modes");
+    count = static_cast<int>(std::min<DofIndex>(std::min(2 * count, max_modes), n - 1));
+  }
+}
+
+SparseMatrix outputMatrix(const fem::System& system, const std::vector<OutputDof>& outputs) {
+  const auto terms = outputTerms(system.dofs, outputs);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t i = 0; i < terms.size(); ++i)
+    for (const auto& [active, coefficient] : terms[i])
+      entries.emplace_back(static_cast<DofIndex>(i), active, coefficient);
+  SparseMatrix h(static_cast<DofIndex>(outputs.size()), system.size());
+  h.setFromTriplets(entries.begin(), entries.end());
+  return h;
+}
+
+}  // namespace
+
+void FullModelReference::addResidual(const Vector& w, dynamics::OutputQuantity quantity,
+                                     Eigen::Ref<Vector> y) const {
+  const DofIndex n_u = modal.inputCount();
+  if (w.size() != 2 * n_u || y.size() != residual_input.rows())
+    throw InputError("full-model reference: input of length " + std::to_string(w.size()) +
+                     " (expected " + std::to_string(2 * n_u) + ") or output of length " +
+                     std::to_string(y.size()) + " (expected " +
+                     std::to_string(residual_input.rows()) + ")");
+  switch (quantity) {
+    case dynamics::OutputQuantity::Displacement:
+      y.noalias() += residual_input * w;
+      y += residual_gravity;
+      break;
+    case dynamics::OutputQuantity::Velocity:
+      y.noalias() += residual_input.leftCols(n_u) * w.tail(n_u);
+      break;
+    case dynamics::OutputQuantity::Acceleration:
+      break;
+  }
+}
+
+dynamics::ComplexMatrix FullModelReference::frf(const Vector& frequencies_hz,
+                                                const dynamics::InputDelay& delay,
+                                                dynamics::OutputQuantity quantity) const {
+  dynamics::ComplexMatrix out = dynamics::frfModal(modal, frequencies_hz, delay, quantity);
+  const DofIndex n_u = modal.inputCount();
+  const Matrix ru = residual_input.leftCols(n_u), rc = residual_input.rightCols(n_u);
+  for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i) {
+    const double omega = kTwoPi * frequencies_hz(i);
+    const dynamics::ComplexVector tau = delay.at(omega, n_u);
+    // H R (K_u + j omega C_u) tau, then d/dt -> j omega.
+    dynamics::ComplexVector x = ru.cast<dynamics::Complex>() * tau;
+    x += dynamics::Complex(0.0, omega) * (rc.cast<dynamics::Complex>() * tau);
+    dynamics::Complex factor(1.0, 0.0);
+    if (quantity == dynamics::OutputQuantity::Velocity) factor = {0.0, omega};
+    if (quantity == dynamics::OutputQuantity::Acceleration) factor = {-omega * omega, 0.0};
+    out.row(i) += (factor * x).transpose();
+  }
+  return out;
+}
+
+FullModelReference buildFullReference(const fem::System& system,
+                                      const std::vector<OutputDof>& outputs,
+                                      const FullReferenceOptions& options) {
+  if (!(options.max_frequency_hz > 0) || !std::isfinite(options.max_frequency_hz))
+    throw InputError("full-model reference: max_frequency_hz must be positive and finite");
+  if (options.max_modes <= 0) throw InputError("full-model reference: max_modes must be positive");
+  if (options.damping.modal_ratios.size() != 0)
+    throw InputError("full-model reference: per-mode damping ratios apply to a reduced model only");
+  const auto start = std::chrono::steady_clock::now();
+
+  FullModelReference ref;
+  ref.full_dofs = system.size();
+  const fem::ModalBasis modes = modesUpTo(system, options.max_frequency_hz, options.max_modes);
+  DofIndex k = 0;
+  while (k < modes.count() && modes.frequencies_hz(k) <= options.max_frequency_hz) ++k;
+  const Matrix phi = modes.shapes.leftCols(k);
+  const Vector omega2 = modes.eigenvalues.head(k).cwiseMax(0.0);
+  ref.frequencies_hz = modes.frequencies_hz.head(k);
+
+  // Static residual on the output rows: G = K^-1 H^T (one factorisation, n_y solves).
+  const SparseMatrix h = outputMatrix(system, outputs);
+  fem::SparseCholesky k_factor;
+  if (!k_factor.factorize(system.stiffness))
+    throw SolverError("full-model reference: K is singular (a free rigid-body motion), so the "
+                      "static residual K^-1 f does not exist; support the model");
+  if (omega2.size() > 0 && omega2.minCoeff() <= 0.0)
+    throw SolverError("full-model reference: a rigid-body mode (0 Hz) with a factorisable K");
+  const Matrix g = k_factor.solve(Matrix(h.transpose()));
+  const DofIndex n_u = system.input_stiffness.cols();
+  Matrix b(system.size(), 2 * n_u);
+  b << Matrix(system.input_stiffness), Matrix(system.input_damping);
+  const Matrix h_phi = h * phi;
+  const Matrix phi_b = phi.transpose() * b;
+  const Vector inverse_omega2 = omega2.cwiseInverse();
+  ref.residual_input = g.transpose() * b - h_phi * inverse_omega2.asDiagonal() * phi_b;
+  const Vector& f_g = system.gravity_load;
+  ref.modal_gravity = phi.transpose() * f_g;
+  ref.residual_gravity =
+      g.transpose() * f_g - h_phi * inverse_omega2.asDiagonal() * ref.modal_gravity;
+
+  // The modal coordinates, damped as the options say (discrete dampers projected on top).
+  dynamics::SecondOrderSystem& s = ref.modal;
+  s.mass = Matrix::Identity(k, k);
+  s.stiffness = omega2.asDiagonal();
+  s.damping = phi.transpose() * (system.damping * phi);
+  const Vector omega = omega2.cwiseSqrt();
+  switch (options.damping.model) {
+    case DampingModel::Modal:
+      s.damping.diagonal() += 2.0 * options.damping.modal_ratio * omega;
+      break;
+    case DampingModel::Rayleigh:
+      s.damping.diagonal().array() += options.damping.alpha + options.damping.beta * omega2.array();
+      break;
+    case DampingModel::Discrete:
+      break;
+  }
+  s.input_stiffness = phi_b.leftCols(n_u);
+  s.input_damping = phi_b.rightCols(n_u);
+  s.output = h_phi;
+  s.output_names = outputNames(outputs);
+  inputPositions(system, &s.input_stations, &s.input_lateral);
+  ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return ref;
+}
+
+FullModelReference buildVehicleReference(const vehicle::VehicleDescription& description,
+                                         vehicle::Variant variant, FullReferenceOptions options) {
+  const vehicle::VehicleModel model = vehicle::buildVehicleModel(description, variant);
+  const fem::System system = fem::assemble(model.model);
+  options.damping = vehicleDamping(description.damping);
+  return buildFullReference(system, vehicleOutputs(model, description), options);
+}
+
+}  // namespace reduction
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,205 @@
+// `tvd frf`: comfort FRFs per unit road height (paper §4.1, eqs. 15-25) of the full or reduced
+// vehicle, synchronous or travelled at a speed (the wheelbase filter).
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "commands.h"
+#include "output_files.h"
+#include "tracked_vehicle_dynamics/dynamics/frf.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+constexpr double kRadToDeg = 57.29577951308232;
+
+struct FrfOptions {
+  std::string vehicle_file;
+  std::string variant = "tracked";
+  std::string model = "reduced";
+  double speed_kmh = 0.0;  // 0: synchronous (tau = 1)
+  double max_hz = 50.0;
+  double step_hz = 0.05;
+  double max_mode_hz = 100.0;  // full model: dynamic modes up to here
+  std::string cache_dir;
+  std::string out_file;
+  bool json = false;
+};
+
+// The paper's comfort outputs (Figs. 13-16): hull vertical and pitch, front and rear left wheel.
+struct NamedColumn {
+  std::string column;
+  std::string output;
+  std::string unit;
+};
+
+std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
+  int rear = 0;
+  for (const std::string& n : names)
+    if (n.rfind("road_wheel_left_", 0) == 0)
+      rear = std::max(rear, std::atoi(n.c_str() + std::string("road_wheel_left_").size()));
+  std::vector<NamedColumn> out = {{"hull_vertical_acc", "hull uz", "(m/s^2)/m"},
+                                  {"hull_pitch_acc", "hull ry", "(rad/s^2)/m"},
+                                  {"front_wheel_acc", "road_wheel_left_1 uz", "(m/s^2)/m"}};
+  if (rear > 1)
+    out.push_back({"rear_wheel_acc", "road_wheel_left_" + std::to_string(rear) + " uz", "(m/s^2)/m"});
+  for (const NamedColumn& c : out)
+    if (std::find(names.begin(), names.end(), c.output) == names.end())
+      throw InputError("frf: the model has no output '" + c.output + "'");
+  return out;
+}
+
+DofIndex indexOf(const std::vector<std::string>& names, const std::string& name) {
+  return static_cast<DofIndex>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+void run(const FrfOptions& opt) {
+  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
+    throw InputError("frf: --speed-kmh must be in [0, 200] (0: synchronous), got " +
+                     std::to_string(opt.speed_kmh));
+  if (!(opt.max_hz > 0) || !(opt.step_hz > 0) || opt.max_hz / opt.step_hz > 1e6)
+    throw InputError("frf: --max-hz and --step-hz must be positive, with at most 1e6 points");
+  const auto points = static_cast<Eigen::Index>(std::floor(opt.max_hz / opt.step_hz + 1e-9)) + 1;
+  const Vector hz = Vector::LinSpaced(points, 0.0, (points - 1) * opt.step_hz);
+
+  // The model: its outputs, input stations and a way to evaluate the FRF.
+  std::vector<std::string> names;
+  Vector stations;
+  dynamics::ComplexMatrix h;
+  DofIndex dofs = 0, full_dofs = 0;
+  std::string source;
+  auto delayFor = [&](const Vector& x) {
+    return opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / 3.6)
+                             : dynamics::InputDelay::synchronous();
+  };
+  if (opt.model == "reduced") {
+    reduction::VehicleReductionReport report;
+    const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
+        opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {},
+        &report);
+    names = model.system.output_names;
+    h = dynamics::frfModal(model.system, hz, delayFor(model.system.input_stations),
+                           dynamics::OutputQuantity::Acceleration);
+    dofs = model.size();
+    full_dofs = model.full_dof_count;
+    source = report.from_cache ? "reduced (cached)" : "reduced";
+  } else {
+    reduction::FullReferenceOptions ref_options;
+    ref_options.max_frequency_hz = opt.max_mode_hz;
+    const reduction::FullModelReference ref = reduction::buildVehicleReference(
+        vehicle::loadVehicleDescription(opt.vehicle_file), variant, ref_options);
+    names = ref.modal.output_names;
+    h = ref.frf(hz, delayFor(ref.modal.input_stations), dynamics::OutputQuantity::Acceleration);
+    dofs = ref.full_dofs;
+    full_dofs = ref.full_dofs;
+    source = "full (" + std::to_string(ref.frequencies_hz.size()) + " modes up to " +
+             std::to_string(static_cast<int>(opt.max_mode_hz)) + " Hz + static residual)";
+  }
+  const std::vector<NamedColumn> columns = comfortOutputs(names);
+
+  if (!opt.out_file.empty()) {
+    std::ofstream out(opt.out_file);
+    if (!out) throw InputError("cannot write " + opt.out_file);
+    out << "frequency_hz";
+    for (const NamedColumn& c : columns) out << "," << c.column << "_mag," << c.column << "_phase_deg";
+    out << "\n" << std::setprecision(10);
+    for (Eigen::Index i = 0; i < hz.size(); ++i) {
+      out << hz(i);
+      for (const NamedColumn& c : columns) {
+        const dynamics::Complex v = h(i, indexOf(names, c.output));
+        out << "," << std::abs(v) << "," << std::arg(v) * kRadToDeg;
+      }
+      out << "\n";
+    }
+  }
+
+  // Per output: the largest peak and every local maximum above 10 % of it (the resonances).
+  auto peaks = [&](const NamedColumn& c) {
+    const Vector mag = h.col(indexOf(names, c.output)).cwiseAbs();
+    Eigen::Index top = 0;
+    mag.maxCoeff(&top);
+    std::vector<std::pair<double, double>> local;
+    for (Eigen::Index i = 1; i + 1 < mag.size(); ++i)
+      if (mag(i) > mag(i - 1) && mag(i) >= mag(i + 1) && mag(i) >= 0.1 * mag(top))
+        local.emplace_back(hz(i), mag(i));
+    return std::make_pair(top, local);
+  };
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", opt.vehicle_file)
+        .field("variant", vehicle::variantName(variant))
+        .field("model", source)
+        .field("dofs", static_cast<long long>(dofs))
+        .field("full_dofs", static_cast<long long>(full_dofs))
+        .field("excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous")
+        .field("speed_kmh", opt.speed_kmh)
+        .field("frequencies", static_cast<long long>(hz.size()))
+        .field("max_hz", hz(hz.size() - 1))
+        .key("outputs")
+        .beginArray();
+    for (const NamedColumn& c : columns) {
+      const auto [top, local] = peaks(c);
+      json.beginObject()
+          .field("column", c.column)
+          .field("output", c.output)
+          .field("unit", c.unit)
+          .field("peak_hz", hz(top))
+          .field("peak_magnitude", std::abs(h(top, indexOf(names, c.output))))
+          .key("resonances_hz")
+          .beginArray();
+      for (const auto& [f, m] : local) json.value(f);
+      json.endArray().endObject();
+    }
+    json.endArray();
+    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    json.endObject();
+    return;
+  }
+  std::cout << vehicle::variantName(variant) << " vehicle, " << source << " model (" << dofs
+            << " DOFs), "
+            << (opt.speed_kmh > 0 ? "travelled at " + std::to_string(opt.speed_kmh) + " km/h"
+                                  : std::string("synchronous excitation"))
+            << ", 0-" << hz(hz.size() - 1) << " Hz\n";
+  for (const NamedColumn& c : columns) {
+    const auto [top, local] = peaks(c);
+    std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "
+              << std::setprecision(4) << std::abs(h(top, indexOf(names, c.output))) << " " << c.unit
+              << " at " << hz(top) << " Hz; resonances [Hz]:";
+    for (const auto& [f, m] : local) std::cout << " " << f;
+    std::cout << "\n";
+  }
+  if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
+}
+
+}  // namespace
+
+void registerFrfCommand(CLI::App& app) {
+  auto opt = std::make_shared<FrfOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "frf", "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
+  cmd->add_option("--model", opt->model, "reduced (Craig-Bampton, cached) | full (FE modes + static residual)")
+      ->check(CLI::IsMember({"reduced", "full"}));
+  cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
+  cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)");
+  cmd->add_option("--step-hz", opt->step_hz, "frequency step [Hz] (default 0.05)");
+  cmd->add_option("--max-mode-hz", opt->max_mode_hz, "full model: dynamic modes up to this frequency [Hz] (default 100)");
+  cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
+  cmd->add_option("--out", opt->out_file, "CSV: frequency_hz, then <output>_mag and <output>_phase_deg");
+  cmd->add_flag("--json", opt->json, "print a JSON summary");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,329 @@
+#!/usr/bin/python3
+"""Tests of scripts/plot_mac.py, plot_frf.py and plot_simulation.py on small synthetic inputs.
+
+Needs no C++ build: the inputs are written here in the formats of `tvd mac --out`, `tvd frf` and
+`tvd simulate --out`. Run as
+    /usr/bin/python3 test/scripts/test_plot_scripts.py [--xml OUTDIR/plot_scripts.xml] [TEST ...]
+--xml writes a JUnit-style report (one <testcase> per test method); the exit status is 1 on failure.
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import scipy.io
+
+SCRIPTS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                        "scripts"))
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+MIN_PNG_BYTES = 10_000  # a rendered figure, not an empty canvas
+INPUT_ERROR_STATUS = 2
+FRF_OUTPUTS = ["hull_vertical_acc", "hull_pitch_acc", "front_wheel_acc", "rear_wheel_acc"]
+MAC_ROW_COLUMN = "untracked_mode\\tracked_mode"
+
+
+def write_csv(path, columns):
+    """columns: {header name: 1-D array}, written in insertion order."""
+    names = list(columns)
+    np.savetxt(path, np.column_stack([columns[n] for n in names]), delimiter=",", fmt="%.9g",
+               header=",".join(names), comments="")
+    return path
+
+
+def frf_columns(outputs=FRF_OUTPUTS, wheelbase_delay_s=0.0):
+    """FRF of a 2-DOF sprung/unsprung mass on a tyre spring, excited by the road height h.
+
+    (-w^2 M + i w C + K) z = [0, k_t]^T h; outputs are accelerations -w^2 z / h [(m/s^2)/m].
+    """
+    m_s, m_u, k_s, c_s, k_t = 400.0, 40.0, 2.0e4, 1.5e3, 2.0e5  # [kg], [N/m], [N s/m]
+    frequency = np.linspace(0.1, 50.0, 400)
+    columns = {"frequency_hz": frequency}
+    responses = {}
+    for k, f in enumerate(frequency):
+        w = 2 * np.pi * f
+        dynamic = np.array([[-w**2 * m_s + 1j * w * c_s + k_s, -1j * w * c_s - k_s],
+                            [-1j * w * c_s - k_s, -w**2 * m_u + 1j * w * c_s + k_s + k_t]])
+        z = np.linalg.solve(dynamic, np.array([0.0, k_t]))
+        delay = np.exp(-1j * w * wheelbase_delay_s)
+        responses.setdefault("hull_vertical_acc", []).append(-w**2 * z[0])
+        responses.setdefault("hull_pitch_acc", []).append(-w**2 * z[0] * (1.2 - delay) / 3.0)
+        responses.setdefault("front_wheel_acc", []).append(-w**2 * z[1])
+        responses.setdefault("rear_wheel_acc", []).append(-w**2 * z[1] * delay)
+    for name in outputs:
+        values = np.array(responses[name])
+        columns[name + "_mag"] = np.abs(values)
+        columns[name + "_phase_deg"] = np.degrees(np.angle(values))
+    return columns
+
+
+def hill(station):
+    """Height [m] of a 0.4 m hill with 1 m ramps between stations 8 and 20 m."""
+    return 0.4 * np.clip(np.minimum(station - 8.0, 20.0 - station), 0.0, 1.0)
+
+
+def simulation_columns(with_roll=True, speed_kmh=30.0):
+    """A plausible `tvd simulate` time series over the hill; wheels 1 (front) to 7 (rear)."""
+    time_s = np.arange(0.0, 30.0 / (speed_kmh / 3.6), 0.002)
+    station = time_s * speed_kmh / 3.6
+    heave = hill(station - 2.0) * (1 + 0.05 * np.sin(2 * np.pi * 1.5 * time_s))
+    columns = {"time_s": time_s, "station_m": station, "hull_heave_m": heave,
+               "hull_vertical_accel_m_s2": np.gradient(np.gradient(heave, time_s), time_s),
+               "hull_pitch_deg": 6.0 * (hill(station) - hill(station - 4.0)) / 0.4}
+    if with_roll:
+        columns["hull_roll_deg"] = 0.5 * np.sin(2 * np.pi * station / 1.8)
+    for side in ("left", "right"):
+        for wheel in range(1, 8):
+            columns[f"road_wheel_{side}_{wheel}_m"] = hill(station - 0.6 * (wheel - 1))
+    return columns
+
+
+def write_mac_dir(directory, n_untracked=6, n_tracked=8, with_mat=True, row_column=MAC_ROW_COLUMN,
+                  mat_variables=("untracked_frequencies_hz", "tracked_frequencies_hz")):
+    """A small directory in the format of `tvd mac --out DIR`: mac.csv and mac.mat."""
+    os.makedirs(directory, exist_ok=True)
+    rng = np.random.default_rng(7)
+    mac = 0.5 * rng.random((n_untracked, n_tracked)) ** 3
+    for i in range(n_untracked):
+        mac[i, min(i + 1, n_tracked - 1)] = 0.75 + 0.04 * i  # one match per un-tracked mode
+    with open(os.path.join(directory, "mac.csv"), "w") as stream:
+        stream.write(",".join([row_column] + [str(j + 1) for j in range(n_tracked)]) + "\n")
+        for i in range(n_untracked):
+            stream.write(",".join([str(i + 1)] + [f"{v:g}" for v in mac[i]]) + "\n")
+    if with_mat:
+        frequencies = {"untracked_frequencies_hz": np.linspace(2.0, 20.0, n_untracked),
+                       "tracked_frequencies_hz": np.linspace(0.7, 30.0, n_tracked)}
+        variables = {"mac": mac, "threshold": np.array([[0.7]]),
+                     "untracked_mode_types": np.array([["bounce"]] * n_untracked, dtype=object)}
+        variables.update({n: frequencies[n].reshape(-1, 1) for n in mat_variables})
+        scipy.io.savemat(os.path.join(directory, "mac.mat"), variables)
+    return directory
+
+
+class PlotScriptsTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory(prefix="plot_scripts_")
+        self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def path(self, name):
+        return os.path.join(self.dir, name)
+
+    def run_script(self, script, *args):
+        return subprocess.run([sys.executable, os.path.join(SCRIPTS, script), *args],
+                              capture_output=True, text=True, timeout=120)
+
+    def assert_png(self, result, *paths):
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertNotIn("Traceback", result.stderr)
+        for path in paths:
+            self.assertIn(path, result.stdout.splitlines())
+            with open(path, "rb") as stream:
+                self.assertEqual(stream.read(len(PNG_SIGNATURE)), PNG_SIGNATURE, path)
+            self.assertGreater(os.path.getsize(path), MIN_PNG_BYTES, path)
+
+    def assert_input_error(self, result, out, *words):
+        """Status 2, exactly one stderr line containing every word, no traceback, no PNG."""
+        self.assertEqual(result.returncode, INPUT_ERROR_STATUS, result.stderr)
+        lines = result.stderr.strip().splitlines()
+        self.assertEqual(len(lines), 1, result.stderr)
+        for word in words:
+            self.assertIn(word, lines[0])
+        self.assertFalse(os.path.exists(out), "a PNG was written despite the input error")
+
+    # --help
+
+    def test_help(self):
+        for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py"):
+            result = self.run_script(script, "--help")
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("--out", result.stdout)
+
+    # plot_mac.py
+
+    def test_mac_matrix_and_frequency_map(self):
+        mac_dir = write_mac_dir(self.path("mac"))
+        out, freq_out = self.path("mac.png"), self.path("freq.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out,
+                                 "--freq-out", freq_out, "--threshold", "0.7")
+        self.assert_png(result, out, freq_out)
+
+    def test_mac_matrix_needs_no_mat_file(self):
+        mac_dir = write_mac_dir(self.path("mac"), with_mat=False)
+        out = self.path("mac.png")
+        self.assert_png(self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out), out)
+
+    def test_mac_missing_mat_file(self):
+        mac_dir = write_mac_dir(self.path("mac"), with_mat=False)
+        out = self.path("mac.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out, "--freq-out",
+                                 self.path("freq.png"))
+        self.assert_input_error(result, out, os.path.join(mac_dir, "mac.mat"))
+
+    def test_mac_missing_csv(self):
+        out = self.path("mac.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", self.path("nowhere"), "--out", out)
+        self.assert_input_error(result, out, os.path.join(self.path("nowhere"), "mac.csv"))
+
+    def test_mac_missing_row_column(self):
+        mac_dir = write_mac_dir(self.path("mac"), row_column="mode")
+        out = self.path("mac.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out)
+        self.assert_input_error(result, out, "mac.csv", MAC_ROW_COLUMN)
+
+    def test_mac_missing_frequency_variable(self):
+        mac_dir = write_mac_dir(self.path("mac"), mat_variables=("untracked_frequencies_hz",))
+        out = self.path("mac.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out, "--freq-out",
+                                 self.path("freq.png"))
+        self.assert_input_error(result, out, "mac.mat", "tracked_frequencies_hz")
+
+    # plot_frf.py
+
+    def test_frf_two_models_all_outputs(self):
+        full = write_csv(self.path("full.csv"), frf_columns())
+        delayed = write_csv(self.path("delayed.csv"), frf_columns(wheelbase_delay_s=0.2))
+        out = self.path("frf.png")
+        result = self.run_script("plot_frf.py", "--out", out, "--title", "synthetic 2-DOF",
+                                 "--band-hz", "30", f"sync={full}", f"30 km/h={delayed}")
+        self.assert_png(result, out)
+
+    def test_frf_only_hull_outputs(self):
+        path = write_csv(self.path("hull.csv"),
+                         frf_columns(outputs=["hull_vertical_acc", "hull_pitch_acc"]))
+        out = self.path("frf.png")
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, f"full={path}"), out)
+
+    def test_frf_missing_frequency_column(self):
+        columns = frf_columns()
+        columns["f"] = columns.pop("frequency_hz")
+        path = write_csv(self.path("bad.csv"), columns)
+        out = self.path("frf.png")
+        result = self.run_script("plot_frf.py", "--out", out, f"full={path}")
+        self.assert_input_error(result, out, path, "frequency_hz")
+
+    def test_frf_missing_magnitude_column(self):
+        columns = frf_columns()
+        del columns["hull_pitch_acc_mag"]
+        path = write_csv(self.path("bad.csv"), columns)
+        out = self.path("frf.png")
+        result = self.run_script("plot_frf.py", "--out", out, f"full={path}")
+        self.assert_input_error(result, out, path, "hull_pitch_acc_mag")
+
+    def test_frf_missing_file(self):
+        out = self.path("frf.png")
+        result = self.run_script("plot_frf.py", "--out", out, f"full={self.path('none.csv')}")
+        self.assert_input_error(result, out, self.path("none.csv"))
+
+    # plot_simulation.py
+
+    def test_simulation_two_runs_with_and_without_roll(self):
+        slow = write_csv(self.path("slow.csv"), simulation_columns(speed_kmh=5.0))
+        fast = write_csv(self.path("fast.csv"), simulation_columns(with_roll=False, speed_kmh=50))
+        for x in ("station", "time"):
+            out = self.path(f"sim_{x}.png")
+            result = self.run_script("plot_simulation.py", "--out", out, "--x", x, "--title",
+                                     "long hill", f"5 km/h={slow}", f"50 km/h={fast}")
+            self.assert_png(result, out)
+
+    def test_simulation_missing_column(self):
+        columns = simulation_columns()
+        del columns["hull_pitch_deg"]
+        path = write_csv(self.path("bad.csv"), columns)
+        out = self.path("sim.png")
+        result = self.run_script("plot_simulation.py", "--out", out, f"full={path}")
+        self.assert_input_error(result, out, path, "hull_pitch_deg")
+
+    def test_simulation_non_numeric_value(self):
+        path = write_csv(self.path("bad.csv"), simulation_columns())
+        with open(path) as stream:
+            lines = stream.read().splitlines()
+        cells = lines[5].split(",")
+        cells[2] = "abc"  # hull_heave_m of data line 5 (file line 6)
+        lines[5] = ",".join(cells)
+        with open(path, "w") as stream:
+            stream.write("\n".join(lines) + "\n")
+        out = self.path("sim.png")
+        result = self.run_script("plot_simulation.py", "--out", out, f"full={path}")
+        self.assert_input_error(result, out, path, "line 6", "hull_heave_m", "abc")
+
+    def test_simulation_missing_file(self):
+        out = self.path("sim.png")
+        result = self.run_script("plot_simulation.py", "--out", out, self.path("none.csv"))
+        self.assert_input_error(result, out, self.path("none.csv"))
+
+
+class RecordingResult(unittest.TextTestResult):
+    """Keeps (test id, outcome, message, seconds) of every test for the XML report."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.records = []
+        self.started = time.monotonic()
+
+    def startTest(self, test):
+        self.started = time.monotonic()
+        super().startTest(test)
+
+    def record(self, test, outcome, message=""):
+        self.records.append((test.id(), outcome, message, time.monotonic() - self.started))
+
+    def addSuccess(self, test):
+        super().addSuccess(test)
+        self.record(test, None)
+
+    def addFailure(self, test, err):
+        super().addFailure(test, err)
+        self.record(test, "failure", self._exc_info_to_string(err, test))
+
+    def addError(self, test, err):
+        super().addError(test, err)
+        self.record(test, "error", self._exc_info_to_string(err, test))
+
+    def addSkip(self, test, reason):
+        super().addSkip(test, reason)
+        self.record(test, "skipped", reason)
+
+
+def write_junit_xml(path, records, seconds):
+    suite = ET.Element("testsuite", name="plot_scripts", tests=str(len(records)),
+                       failures=str(sum(r[1] == "failure" for r in records)),
+                       errors=str(sum(r[1] == "error" for r in records)),
+                       skipped=str(sum(r[1] == "skipped" for r in records)), time=f"{seconds:.3f}")
+    for test_id, outcome, message, duration in records:
+        classname, _, name = test_id.rpartition(".")
+        classname = classname.replace("__main__", "plot_scripts", 1)
+        case = ET.SubElement(suite, "testcase", classname=classname, name=name,
+                             time=f"{duration:.3f}")
+        if outcome:
+            element = ET.SubElement(case, outcome, message=message.strip().splitlines()[-1]
+                                    if message.strip() else outcome)
+            element.text = message
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--xml", help="write a JUnit-style XML report to this file")
+    parser.add_argument("tests", nargs="*", help="test method names (default: all)")
+    args = parser.parse_args()
+    loader = unittest.defaultTestLoader
+    suite = (loader.loadTestsFromNames([f"PlotScriptsTest.{t}" for t in args.tests],
+                                       sys.modules[__name__])
+             if args.tests else loader.loadTestsFromTestCase(PlotScriptsTest))
+    start = time.monotonic()
+    result = unittest.TextTestRunner(resultclass=RecordingResult, verbosity=2).run(suite)
+    if args.xml:
+        write_junit_xml(args.xml, result.records, time.monotonic() - start)
+    return 0 if result.wasSuccessful() else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
