@@ -292,7 +292,9 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
 void saveReducedModel(const ReducedModel& model, const std::string& path) {
   checkConsistency(model, path + " (saving)", ReducedModelLoadOptions{}.symmetry_tolerance);
   const std::vector<Variable> variables = toVariables(model);
-  io::MatWriter out(path);
+  // Uncompressed: the cache is read at every start-up, and inflating it cost more than reading
+  // the ~7 MB of a tracked model.
+  io::MatWriter out(path, io::MatFormat::Mat5, /*compress=*/false);
   for (const Variable& v : variables) {
     switch (v.kind) {
       case Variable::Kind::Numeric:
