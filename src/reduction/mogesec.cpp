@@ -56,6 +56,8 @@ class GeometricWeight {
       const double d = distance(positions_[q], x, options_.norm_order);
       if (d <= options_.colocation_tolerance)
         colocated_[q] = true;
+      else if (options_.geometric_exponent == 2.0)  // the paper's k_g: skip std::pow
+        inverse_sum_(static_cast<DofIndex>(q)) += 1.0 / (d * d);
       else
         inverse_sum_(static_cast<DofIndex>(q)) += std::pow(d, -options_.geometric_exponent);
     }
