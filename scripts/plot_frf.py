@@ -19,16 +19,12 @@ Bad input (missing file, missing column, non-numeric value) exits with status 2 
 stderr naming the file.
 """
 import argparse
-import csv
 import math
-import os
-import sys
 
-import matplotlib
+# First: plot_common selects the Agg backend before pyplot loads.
+from plot_common import column, fail, labelled, read_csv, save
+import matplotlib.pyplot as plt
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
 # Output name -> (panel title, y label).
 OUTPUTS = {
@@ -40,42 +36,6 @@ OUTPUTS = {
 LINE_STYLES = ["-", "--", ":", (0, (5, 1, 1, 1))]  # "-." is the band line
 
 
-def fail(message):
-    """One error line on stderr, exit status 2 (bad input)."""
-    sys.stderr.write(f"{os.path.basename(sys.argv[0])}: error: {message}\n")
-    sys.exit(2)
-
-
-def read_csv(path):
-    """Header and data rows of a CSV file; fails on a missing, unreadable or empty file."""
-    try:
-        with open(path, newline="") as stream:
-            rows = [row for row in csv.reader(stream) if row]
-    except (OSError, UnicodeDecodeError, csv.Error) as error:
-        fail(f"{path}: cannot read CSV ({getattr(error, 'strerror', None) or error})")
-    if len(rows) < 2:
-        fail(f"{path}: no data rows")
-    return [name.strip() for name in rows[0]], rows[1:]
-
-
-def column(path, header, rows, name):
-    """The column called `name` as a float array; fails if it is missing or not finite numbers."""
-    if name not in header:
-        fail(f"{path}: missing column '{name}'")
-    j = header.index(name)
-    values = []
-    for line, row in enumerate(rows, start=2):
-        text = row[j].strip() if j < len(row) else ""
-        try:
-            value = float(text)
-        except ValueError:
-            value = math.nan
-        if not math.isfinite(value):
-            fail(f"{path}: line {line}, column '{name}': '{text}' is not a finite number")
-        values.append(value)
-    return np.array(values)
-
-
 def load(path):
     """frequency_hz and {output: magnitude} of one FRF file."""
     header, rows = read_csv(path)
@@ -84,11 +44,6 @@ def load(path):
     if not present:
         fail(f"{path}: no FRF column (expected e.g. 'hull_vertical_acc_mag')")
     return frequency, {n: column(path, header, rows, n + "_mag") for n in present}
-
-
-def labelled(text):
-    label, sep, path = text.partition("=")
-    return (label, path) if sep else (os.path.splitext(os.path.basename(text))[0], text)
 
 
 def main():
@@ -129,12 +84,7 @@ def main():
         ax.legend(fontsize="small")
     if args.title:
         fig.suptitle(args.title)
-    fig.tight_layout()
-    try:
-        fig.savefig(args.out, dpi=150, format="png")
-    except OSError as error:
-        fail(f"{args.out}: cannot write PNG ({error.strerror or error})")
-    print(args.out)
+    save(fig, args.out)
 
 
 if __name__ == "__main__":

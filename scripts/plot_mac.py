@@ -17,58 +17,20 @@ Bad input (missing file, missing column or variable, non-numeric value) exits wi
 line on stderr naming the file.
 """
 import argparse
-import csv
-import math
 import os
-import sys
 
+# First: plot_common selects the Agg backend before pyplot loads.
+from plot_common import column, fail, read_csv, save
 import matplotlib
+import matplotlib.pyplot as plt
+import numpy as np
+import scipy.io
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import scipy.io  # noqa: E402
 
 ROW_COLUMN = "untracked_mode\\tracked_mode"  # literally a backslash, as tvd writes it
 # Scales without their near-white ends, so that MAC = threshold is visibly red.
 RED = matplotlib.colors.ListedColormap(matplotlib.colormaps["Reds"](np.linspace(0.3, 1, 256)))
 GRAY = matplotlib.colors.ListedColormap(matplotlib.colormaps["Greys"](np.linspace(0, 0.85, 256)))
-
-
-def fail(message):
-    """One error line on stderr, exit status 2 (bad input)."""
-    sys.stderr.write(f"{os.path.basename(sys.argv[0])}: error: {message}\n")
-    sys.exit(2)
-
-
-def read_csv(path):
-    """Header and data rows of a CSV file; fails on a missing, unreadable or empty file."""
-    try:
-        with open(path, newline="") as stream:
-            rows = [row for row in csv.reader(stream) if row]
-    except (OSError, UnicodeDecodeError, csv.Error) as error:
-        fail(f"{path}: cannot read CSV ({getattr(error, 'strerror', None) or error})")
-    if len(rows) < 2:
-        fail(f"{path}: no data rows")
-    return [name.strip() for name in rows[0]], rows[1:]
-
-
-def column(path, header, rows, name):
-    """The column called `name` as a float array; fails if it is missing or not finite numbers."""
-    if name not in header:
-        fail(f"{path}: missing column '{name}'")
-    j = header.index(name)
-    values = []
-    for line, row in enumerate(rows, start=2):
-        text = row[j].strip() if j < len(row) else ""
-        try:
-            value = float(text)
-        except ValueError:
-            value = math.nan
-        if not math.isfinite(value):
-            fail(f"{path}: line {line}, column '{name}': '{text}' is not a finite number")
-        values.append(value)
-    return np.array(values)
 
 
 def mode_numbers(path, what, values):
@@ -168,16 +130,6 @@ def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold,
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left")
     save(fig, out)
-
-
-def save(fig, out):
-    fig.tight_layout()
-    try:
-        fig.savefig(out, dpi=150, format="png")
-    except OSError as error:
-        fail(f"{out}: cannot write PNG ({error.strerror or error})")
-    plt.close(fig)
-    print(out)
 
 
 def main():

@@ -17,17 +17,13 @@ rear one). Bad input (missing file, missing column, non-numeric value) exits wit
 line on stderr naming the file.
 """
 import argparse
-import csv
 import math
-import os
 import re
-import sys
 
-import matplotlib
+# First: plot_common selects the Agg backend before pyplot loads.
+from plot_common import column, labelled, read_csv, save
+import matplotlib.pyplot as plt
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
 X_AXES = {"station": ("station_m", "station [m]"), "time": ("time_s", "time [s]")}
 # Panel key -> y label; the wheel panels' columns depend on the wheel count.
@@ -42,42 +38,6 @@ PANELS = {
 LINE_STYLES = ["-", "--", "-.", ":"]
 
 
-def fail(message):
-    """One error line on stderr, exit status 2 (bad input)."""
-    sys.stderr.write(f"{os.path.basename(sys.argv[0])}: error: {message}\n")
-    sys.exit(2)
-
-
-def read_csv(path):
-    """Header and data rows of a CSV file; fails on a missing, unreadable or empty file."""
-    try:
-        with open(path, newline="") as stream:
-            rows = [row for row in csv.reader(stream) if row]
-    except (OSError, UnicodeDecodeError, csv.Error) as error:
-        fail(f"{path}: cannot read CSV ({getattr(error, 'strerror', None) or error})")
-    if len(rows) < 2:
-        fail(f"{path}: no data rows")
-    return [name.strip() for name in rows[0]], rows[1:]
-
-
-def column(path, header, rows, name):
-    """The column called `name` as a float array; fails if it is missing or not finite numbers."""
-    if name not in header:
-        fail(f"{path}: missing column '{name}'")
-    j = header.index(name)
-    values = []
-    for line, row in enumerate(rows, start=2):
-        text = row[j].strip() if j < len(row) else ""
-        try:
-            value = float(text)
-        except ValueError:
-            value = math.nan
-        if not math.isfinite(value):
-            fail(f"{path}: line {line}, column '{name}': '{text}' is not a finite number")
-        values.append(value)
-    return np.array(values)
-
-
 def load(path, x_column):
     """x values and {panel key: values} of one simulation file."""
     header, rows = read_csv(path)
@@ -90,11 +50,6 @@ def load(path, x_column):
         del columns["hull_roll_deg"]
     x = column(path, header, rows, x_column)
     return x, {key: column(path, header, rows, name) for key, name in columns.items()}
-
-
-def labelled(text):
-    label, sep, path = text.partition("=")
-    return (label, path) if sep else (os.path.splitext(os.path.basename(text))[0], text)
 
 
 def main():
@@ -125,12 +80,7 @@ def main():
         ax.legend(fontsize="small")
     if args.title:
         fig.suptitle(args.title)
-    fig.tight_layout()
-    try:
-        fig.savefig(args.out, dpi=150, format="png")
-    except OSError as error:
-        fail(f"{args.out}: cannot write PNG ({error.strerror or error})")
-    print(args.out)
+    save(fig, args.out)
 
 
 if __name__ == "__main__":
