@@ -9,7 +9,7 @@ Input: the directory written by
     build/devel/lib/tracked_vehicle_dynamics/tvd mac --vehicle config/vehicles/paper_vehicle.yaml \\
         --count 40 --out DIR
     scripts/plot_mac.py --mac-dir DIR --out fig9.png --freq-out fig10.png
-DIR/mac.csv: header 'untracked_mode\\tracked_mode' (un-tracked mode number of each row), then one
+DIR/mac.csv: header 'untracked_mode' (un-tracked mode number of each row), then one
 column per tracked mode named by its number. DIR/mac.mat (read only for --freq-out): the vectors
 untracked_frequencies_hz and tracked_frequencies_hz [Hz], indexed by mode number - 1.
 
@@ -27,7 +27,7 @@ import numpy as np
 import scipy.io
 
 
-ROW_COLUMN = "untracked_mode\\tracked_mode"  # literally a backslash, as tvd writes it
+ROW_COLUMN = "untracked_mode"
 # Scales without their near-white ends, so that MAC = threshold is visibly red.
 RED = matplotlib.colors.ListedColormap(matplotlib.colormaps["Reds"](np.linspace(0.3, 1, 256)))
 GRAY = matplotlib.colors.ListedColormap(matplotlib.colormaps["Greys"](np.linspace(0, 0.85, 256)))

@@ -66,7 +66,7 @@ void run(const MacOptions& opt) {
     mat.close();
     std::ofstream csv(opt.out_dir + "/mac.csv");
     if (!csv) throw InputError("cannot write " + opt.out_dir + "/mac.csv");
-    csv << "untracked_mode\\tracked_mode";
+    csv << "untracked_mode";  // then one column per tracked mode, named by its number
     for (int j = 0; j < mac.cols(); ++j) csv << "," << j + 1;
     csv << "\n" << std::setprecision(6);
     for (int i = 0; i < mac.rows(); ++i) {

@@ -24,7 +24,7 @@ PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 MIN_PNG_BYTES = 10_000  # a rendered figure, not an empty canvas
 INPUT_ERROR_STATUS = 2
 FRF_OUTPUTS = ["hull_vertical_acc", "hull_pitch_acc", "front_wheel_acc", "rear_wheel_acc"]
-MAC_ROW_COLUMN = "untracked_mode\\tracked_mode"
+MAC_ROW_COLUMN = "untracked_mode"
 
 
 def write_csv(path, columns):
