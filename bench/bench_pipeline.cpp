@@ -108,12 +108,8 @@ int main(int argc, char** argv) {
   const long steps = static_cast<long>(std::ceil(track.length() / speed / dt));
   const tvd::dynamics::RoadExcitation road(s.input_stations, s.input_lateral);
   const tvd::terrain::TerrainLines lines(track, road.inputY());
-  tvd::Matrix inputs(steps + 1, 2 * road.inputCount());
+  const tvd::Matrix inputs = road.sampleSeries(lines, track.startStation(), speed, dt, 0, steps + 1);
   tvd::Vector w;
-  for (long k = 0; k <= steps; ++k) {
-    road.sample(lines, track.startStation() + speed * k * dt, speed, w);
-    inputs.row(k) = w.transpose();
-  }
   tvd::dynamics::SimulatorOptions o;
   o.time_step = dt;
   o.hold = tvd::dynamics::InputHold::FirstOrder;

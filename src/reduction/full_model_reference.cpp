@@ -52,21 +52,23 @@ SparseMatrix outputMatrix(const fem::System& system, const std::vector<OutputDof
 
 }  // namespace
 
-void FullModelReference::addResidual(const Vector& w, dynamics::OutputQuantity quantity,
-                                     Eigen::Ref<Vector> y) const {
+void FullModelReference::addResidual(const Matrix& inputs, dynamics::OutputQuantity quantity,
+                                     Eigen::Ref<Matrix> outputs) const {
   const DofIndex n_u = modal.inputCount();
-  if (w.size() != 2 * n_u || y.size() != residual_input.rows())
-    throw InputError("full-model reference: input of length " + std::to_string(w.size()) +
-                     " (expected " + std::to_string(2 * n_u) + ") or output of length " +
-                     std::to_string(y.size()) + " (expected " +
-                     std::to_string(residual_input.rows()) + ")");
+  if (inputs.cols() != 2 * n_u || outputs.cols() != residual_input.rows() ||
+      outputs.rows() != inputs.rows())
+    throw InputError("full-model reference: inputs [" + std::to_string(inputs.rows()) + " x " +
+                     std::to_string(inputs.cols()) + "] and outputs [" +
+                     std::to_string(outputs.rows()) + " x " + std::to_string(outputs.cols()) +
+                     "] do not match " + std::to_string(2 * n_u) + " inputs and " +
+                     std::to_string(residual_input.rows()) + " outputs");
   switch (quantity) {
     case dynamics::OutputQuantity::Displacement:
-      y.noalias() += residual_input * w;
-      y += residual_gravity;
+      outputs.noalias() += inputs * residual_input.transpose();
+      outputs.rowwise() += residual_gravity.transpose();
       break;
     case dynamics::OutputQuantity::Velocity:
-      y.noalias() += residual_input.leftCols(n_u) * w.tail(n_u);
+      outputs.noalias() += inputs.rightCols(n_u) * residual_input.leftCols(n_u).transpose();
       break;
     case dynamics::OutputQuantity::Acceleration:
       break;

@@ -69,7 +69,7 @@ void run(const SimulateOptions& opt) {
   if (opt.model == "full") {
     if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
     reduction::FullReferenceOptions ref_options;
-    ref_options.max_frequency_hz = opt.max_mode_hz < 0 ? 100.0 : opt.max_mode_hz;
+    if (opt.max_mode_hz >= 0) ref_options.max_frequency_hz = opt.max_mode_hz;
     full = std::make_unique<reduction::FullModelReference>(reduction::buildVehicleReference(
         vehicle::loadVehicleDescription(opt.vehicle_file), variant, ref_options));
   } else {
@@ -98,19 +98,9 @@ void run(const SimulateOptions& opt) {
   // From the start of the track until the station has covered its length (paper: 30 m).
   const double distance = track.endStation() - track.startStation();
   const long steps = static_cast<long>(std::ceil(distance / speed / opt.dt));
-  Vector w;
-  road.sample(lines, track.startStation(), speed, w);
-  const Vector u0 = w.head(road.inputCount());
   // Start from static equilibrium on the entry of the track, at rest relative to it.
-  sim.reset(dynamics::staticEquilibrium(sys, u0, gravity), w);
-  // Outputs; the full model adds its static residual to the displacements (rows 0..n_y-1).
-  Vector y_now = sim.outputs();
-  auto outputs = [&]() -> const Vector& {
-    y_now = sim.outputs();
-    if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y_now.head(sys.outputCount()));
-    return y_now;
-  };
-  const Vector y0 = outputs();
+  const Vector w0 = road.sampleSeries(lines, track.startStation(), speed, opt.dt, 0, 1).row(0).transpose();
+  sim.reset(dynamics::staticEquilibrium(sys, w0.head(road.inputCount()), gravity), w0);
 
   const auto& names = sim.outputNames();
   const DofIndex heave = rowOf(names, "hull uz/disp"), roll = rowOf(names, "hull rx/disp"),
@@ -126,24 +116,31 @@ void run(const SimulateOptions& opt) {
   constexpr int kWheelColumn = 6;
   Matrix series(steps + 1, kWheelColumn + wheels.size());
   dynamics::ComfortMeter comfort(1.0 / opt.dt);
-  auto record = [&](long k) {
-    const Vector& y = outputs();
-    series(k, 0) = k * opt.dt;
-    series(k, 1) = track.startStation() + speed * k * opt.dt;
-    series(k, 2) = y(heave) - y0(heave);
-    series(k, 3) = y(accel);
-    series(k, 4) = (y(pitch) - y0(pitch)) * kRadToDeg;
-    series(k, 5) = (y(roll) - y0(roll)) * kRadToDeg;
-    for (std::size_t j = 0; j < wheels.size(); ++j)
-      series(k, kWheelColumn + j) = y(wheels[j]) - y0(wheels[j]);
-    comfort.add(y(accel));
-  };
-  record(0);
+  Vector y0;
+  // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
+  // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
+  // sample of the previous one (the simulator's current input), so it is recorded only once.
+  constexpr long kBlock = 2048;
   const auto start = Clock::now();
-  for (long k = 1; k <= steps; ++k) {
-    road.sample(lines, track.startStation() + speed * k * opt.dt, speed, w);
-    sim.step(w);
-    record(k);
+  for (long first = 0; first == 0 || first < steps; first += kBlock) {
+    const long last = std::min(first + kBlock, steps);
+    const Matrix w = road.sampleSeries(lines, track.startStation(), speed, opt.dt, first, last - first + 1);
+    Matrix y = sim.simulate(w);
+    // The full model adds its static residual to the displacements (rows 0..n_y-1).
+    if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
+    if (first == 0) y0 = y.row(0).transpose();
+    for (long j = first == 0 ? 0 : 1; j < y.rows(); ++j) {
+      const long k = first + j;
+      series(k, 0) = k * opt.dt;
+      series(k, 1) = track.startStation() + speed * k * opt.dt;
+      series(k, 2) = y(j, heave) - y0(heave);
+      series(k, 3) = y(j, accel);
+      series(k, 4) = (y(j, pitch) - y0(pitch)) * kRadToDeg;
+      series(k, 5) = (y(j, roll) - y0(roll)) * kRadToDeg;
+      for (std::size_t c = 0; c < wheels.size(); ++c)
+        series(k, kWheelColumn + c) = y(j, wheels[c]) - y0(wheels[c]);
+      comfort.add(y(j, accel));
+    }
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const double simulated = steps * opt.dt;

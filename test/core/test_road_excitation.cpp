@@ -41,3 +41,21 @@ TEST(RoadExcitation, RejectsInconsistentInputs) {
   bad(1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(tvd::dynamics::RoadExcitation(bad, tvd::Vector::Zero(2)), tvd::InputError);
 }
+
+// A constant-speed series: row j is w at station s0 + v (first + j) dt, on the plane's closed
+// form u = a x + b y, u' = v a.
+TEST(RoadExcitation, SeriesFollowsTheStation) {
+  const double a = 0.02, b = -0.01, speed = 8.0, s0 = 1.0, dt = 0.01;
+  tvd::Vector xq(2), yq(2);
+  xq << 1.5, -1.5;
+  yq << 1.0, -1.0;
+  const tvd::dynamics::RoadExcitation road(xq, yq);
+  const tvd::Matrix w = road.sampleSeries(plane(a, b), s0, speed, dt, 7, 50);
+  ASSERT_EQ(w.rows(), 50);
+  ASSERT_EQ(w.cols(), 4);
+  for (int j = 0; j < 50; ++j)
+    for (int q = 0; q < 2; ++q) {
+      EXPECT_NEAR(w(j, q), a * (s0 + speed * (7 + j) * dt + xq(q)) + b * yq(q), 1e-12) << j;
+      EXPECT_NEAR(w(j, 2 + q), speed * a, 1e-12) << j;
+    }
+}

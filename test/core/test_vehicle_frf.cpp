@@ -191,19 +191,11 @@ TEST(VehicleTimeResponse, ReducedMatchesFullOnLongHill) {
       dynamics::Simulator sim(s, o);
       const dynamics::RoadExcitation road(s.input_stations, s.input_lateral);
       const terrain::TerrainLines lines(track, road.inputY());
-      Vector w;
-      road.sample(lines, track.startStation(), speed, w);
-      sim.reset(dynamics::staticEquilibrium(s, w.head(road.inputCount()), gravity), w);
-      Matrix y(steps + 1, s.outputCount());
-      for (long k = 0; k <= steps; ++k) {
-        if (k > 0) {
-          road.sample(lines, track.startStation() + speed * k * dt, speed, w);
-          sim.step(w);
-        }
-        Vector row = sim.outputs();
-        if (full) full->addResidual(w, OutputQuantity::Displacement, row);
-        y.row(k) = row.transpose();
-      }
+      const Matrix w = road.sampleSeries(lines, track.startStation(), speed, dt, 0, steps + 1);
+      sim.reset(dynamics::staticEquilibrium(s, w.row(0).head(road.inputCount()).transpose(), gravity),
+                w.row(0).transpose());
+      Matrix y = sim.simulate(w).leftCols(s.outputCount());
+      if (full) full->addResidual(w, OutputQuantity::Displacement, y);
       return Matrix(y.rowwise() - y.row(0));
     };
     const Matrix full = run(v.full.modal, v.full.modal_gravity, &v.full, 0.0);

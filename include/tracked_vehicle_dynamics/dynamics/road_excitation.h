@@ -44,6 +44,20 @@ class RoadExcitation {
     }
   }
 
+  /// The input series of a constant-speed run for Simulator::simulate(): row j is w at time
+  /// (first + j) dt, station s = station0 + speed (first + j) dt. [count x 2 n_inputs].
+  template <typename HeightSource>
+  Matrix sampleSeries(const HeightSource& terrain, double station0, double speed, double dt,
+                      long first, long count) const {
+    Matrix series(count, 2 * x_.size());
+    Vector w;
+    for (long j = 0; j < count; ++j) {
+      sample(terrain, station0 + speed * static_cast<double>(first + j) * dt, speed, w);
+      series.row(j) = w.transpose();
+    }
+    return series;
+  }
+
   const Vector& inputX() const { return x_; }
   const Vector& inputY() const { return y_; }  ///< including the lateral offset
 

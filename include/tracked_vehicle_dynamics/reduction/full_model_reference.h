@@ -50,10 +50,13 @@ struct FullModelReference {
   DofIndex full_dofs = 0;
   double seconds = 0.0;     ///< wall time to build it [s]
 
-  /// Adds the residual part of `quantity` for the input w = [u; u'] to y [n_outputs]:
-  /// displacement H R (K_u u + C_u u' + f_g); velocity H R K_u u' (C_u u'' is unknown and
-  /// dropped); acceleration: nothing (the residual's inertia is neglected by construction).
-  void addResidual(const Vector& w, dynamics::OutputQuantity quantity, Eigen::Ref<Vector> y) const;
+  /// Adds the residual part of `quantity` for the input series W (rows w = [u; u'],
+  /// [n_samples x 2 n_inputs]) to the outputs Y [n_samples x n_outputs]: displacement
+  /// H R (K_u u + C_u u' + f_g); velocity H R K_u u' (C_u u'' is unknown and dropped);
+  /// acceleration: nothing (the residual's inertia is neglected by construction).
+  /// Throws InputError for mismatched sizes.
+  void addResidual(const Matrix& inputs, dynamics::OutputQuantity quantity,
+                   Eigen::Ref<Matrix> outputs) const;
   /// FRF per unit road height (eq. 18-25) of the outputs: modal part plus the residual
   /// H R (K_u + j omega C_u) tau times 1, j omega or -omega^2. [n_frequencies x n_outputs].
   dynamics::ComplexMatrix frf(const Vector& frequencies_hz, const dynamics::InputDelay& delay,
