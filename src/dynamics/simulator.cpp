@@ -178,7 +178,6 @@ class ModalEngine : public SimulatorEngine {
     // Quasi-static modes: eta_t = Omega_t^-2 (Phi_t^T f), so their outputs are
     //   y_t = H Phi_t Omega_t^-2 Phi_t^T (K_u u + C_u u' + f_g) = R_w w + r_g,
     //   y_t' = H Phi_t Omega_t^-2 Phi_t^T K_u u'   (the C_u u'' term is not available: dropped).
-    quasi_static_ = n_t;
     residual_input_.setZero(modal.outputCount(), psi_.cols());
     residual_force_.setZero(modal.outputCount());
     residual_rate_.setZero(modal.outputCount(), n_u);
@@ -192,7 +191,6 @@ class ModalEngine : public SimulatorEngine {
       residual_force_.noalias() = output_flex * modal_gravity.tail(n_t);
       residual_rate_.noalias() = output_flex * modal.modalInputStiffness().bottomRows(n_t);
       truncated_shapes_ = modal.shapes().rightCols(n_t) * inverse_omega2.asDiagonal();
-      truncated_psi_.resize(n_t, 2 * n_u);
       truncated_psi_ = psi_all.bottomRows(n_t);
       truncated_gravity_ = modal_gravity.tail(n_t);
     }
@@ -254,7 +252,7 @@ class ModalEngine : public SimulatorEngine {
     Vector z(2 * n);
     z.head(n).noalias() = shapes_ * eta_;
     z.tail(n).noalias() = shapes_ * eta_dot_;
-    if (quasi_static_ > 0) {
+    if (quasi_static_modes_ > 0) {
       // q_t = Phi_t Omega_t^-2 (Phi_t^T (K_u u + C_u u') + Phi_t^T f_g), q_t' from K_u u'.
       const Vector modal_force = truncated_psi_ * w_ + truncated_gravity_;
       z.head(n).noalias() += truncated_shapes_ * modal_force;
@@ -294,7 +292,7 @@ class ModalEngine : public SimulatorEngine {
       if (disp_offset_ >= 0) {
         rows.middleCols(disp_offset_, n_y_).noalias() =
             disp.leftCols(b).transpose() * modal_output_.transpose();
-        if (quasi_static_ > 0) {
+        if (quasi_static_modes_ > 0) {
           rows.middleCols(disp_offset_, n_y_).noalias() +=
               inputs.middleRows(k0, b)(Eigen::all, active_inputs_) * residual_input_.transpose();
           rows.middleCols(disp_offset_, n_y_).rowwise() += residual_force_.transpose();
@@ -303,7 +301,7 @@ class ModalEngine : public SimulatorEngine {
       if (vel_offset_ >= 0) {
         rows.middleCols(vel_offset_, n_y_).noalias() =
             vel.leftCols(b).transpose() * modal_output_.transpose();
-        if (quasi_static_ > 0)
+        if (quasi_static_modes_ > 0)
           rows.middleCols(vel_offset_, n_y_).noalias() +=
               inputs.middleRows(k0, b).rightCols(n_u_) * residual_rate_.transpose();
       }
@@ -351,14 +349,14 @@ class ModalEngine : public SimulatorEngine {
   void updateOutputs() {
     if (disp_offset_ >= 0) {
       y_.segment(disp_offset_, n_y_).noalias() = modal_output_ * eta_;
-      if (quasi_static_ > 0) {
+      if (quasi_static_modes_ > 0) {
         y_.segment(disp_offset_, n_y_).noalias() += residual_input_ * active_input_;
         y_.segment(disp_offset_, n_y_) += residual_force_;
       }
     }
     if (vel_offset_ >= 0) {
       y_.segment(vel_offset_, n_y_).noalias() = modal_output_ * eta_dot_;
-      if (quasi_static_ > 0)
+      if (quasi_static_modes_ > 0)
         y_.segment(vel_offset_, n_y_).noalias() += residual_rate_ * w_.tail(n_u_);
     }
     if (acc_offset_ >= 0) {
@@ -378,7 +376,7 @@ class ModalEngine : public SimulatorEngine {
   DofIndex n_y_ = 0;
   DofIndex disp_offset_ = -1, vel_offset_ = -1, acc_offset_ = -1;
   // Quasi-static (truncated) modes, see the constructor.
-  DofIndex quasi_static_ = 0, n_u_ = 0;
+  DofIndex n_u_ = 0;
   Matrix residual_input_, residual_rate_, truncated_shapes_, truncated_psi_;
   Vector residual_force_, truncated_gravity_;
 };

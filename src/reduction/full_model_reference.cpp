@@ -80,13 +80,12 @@ dynamics::ComplexMatrix FullModelReference::frf(const Vector& frequencies_hz,
                                                 dynamics::OutputQuantity quantity) const {
   dynamics::ComplexMatrix out = dynamics::frfModal(modal, frequencies_hz, delay, quantity);
   const DofIndex n_u = modal.inputCount();
-  const Matrix ru = residual_input.leftCols(n_u), rc = residual_input.rightCols(n_u);
   for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i) {
     const double omega = kTwoPi * frequencies_hz(i);
     const dynamics::ComplexVector tau = delay.at(omega, n_u);
     // H R (K_u + j omega C_u) tau, then d/dt -> j omega.
-    dynamics::ComplexVector x = ru.cast<dynamics::Complex>() * tau;
-    x += dynamics::Complex(0.0, omega) * (rc.cast<dynamics::Complex>() * tau);
+    dynamics::ComplexVector x = residual_input.leftCols(n_u) * tau;
+    x += dynamics::Complex(0.0, omega) * (residual_input.rightCols(n_u) * tau);
     dynamics::Complex factor(1.0, 0.0);
     if (quantity == dynamics::OutputQuantity::Velocity) factor = {0.0, omega};
     if (quantity == dynamics::OutputQuantity::Acceleration) factor = {-omega * omega, 0.0};

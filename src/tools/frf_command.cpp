@@ -39,6 +39,7 @@ struct NamedColumn {
   std::string column;
   std::string output;
   std::string unit;
+  DofIndex index = -1;  ///< column of the FRF matrix
 };
 
 std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
@@ -51,14 +52,12 @@ std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
                                   {"front_wheel_acc", "road_wheel_left_1 uz", "(m/s^2)/m"}};
   if (rear > 1)
     out.push_back({"rear_wheel_acc", "road_wheel_left_" + std::to_string(rear) + " uz", "(m/s^2)/m"});
-  for (const NamedColumn& c : out)
-    if (std::find(names.begin(), names.end(), c.output) == names.end())
-      throw InputError("frf: the model has no output '" + c.output + "'");
+  for (NamedColumn& c : out) {
+    const auto it = std::find(names.begin(), names.end(), c.output);
+    if (it == names.end()) throw InputError("frf: the model has no output '" + c.output + "'");
+    c.index = static_cast<DofIndex>(it - names.begin());
+  }
   return out;
-}
-
-DofIndex indexOf(const std::vector<std::string>& names, const std::string& name) {
-  return static_cast<DofIndex>(std::find(names.begin(), names.end(), name) - names.begin());
 }
 
 void run(const FrfOptions& opt) {
@@ -115,7 +114,7 @@ void run(const FrfOptions& opt) {
     for (Eigen::Index i = 0; i < hz.size(); ++i) {
       out << hz(i);
       for (const NamedColumn& c : columns) {
-        const dynamics::Complex v = h(i, indexOf(names, c.output));
+        const dynamics::Complex v = h(i, c.index);
         out << "," << std::abs(v) << "," << std::arg(v) * kRadToDeg;
       }
       out << "\n";
@@ -124,7 +123,7 @@ void run(const FrfOptions& opt) {
 
   // Per output: the largest peak and every local maximum above 10 % of it (the resonances).
   auto peaks = [&](const NamedColumn& c) {
-    const Vector mag = h.col(indexOf(names, c.output)).cwiseAbs();
+    const Vector mag = h.col(c.index).cwiseAbs();
     Eigen::Index top = 0;
     mag.maxCoeff(&top);
     std::vector<std::pair<double, double>> local;
@@ -154,7 +153,7 @@ void run(const FrfOptions& opt) {
           .field("output", c.output)
           .field("unit", c.unit)
           .field("peak_hz", hz(top))
-          .field("peak_magnitude", std::abs(h(top, indexOf(names, c.output))))
+          .field("peak_magnitude", std::abs(h(top, c.index)))
           .key("resonances_hz")
           .beginArray();
       for (const auto& [f, m] : local) json.value(f);
@@ -173,7 +172,7 @@ void run(const FrfOptions& opt) {
   for (const NamedColumn& c : columns) {
     const auto [top, local] = peaks(c);
     std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "
-              << std::setprecision(4) << std::abs(h(top, indexOf(names, c.output))) << " " << c.unit
+              << std::setprecision(4) << std::abs(h(top, c.index)) << " " << c.unit
               << " at " << hz(top) << " Hz; resonances [Hz]:";
     for (const auto& [f, m] : local) std::cout << " " << f;
     std::cout << "\n";
