@@ -3,8 +3,34 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
+#include <string>
+
 namespace tracked_vehicle_dynamics {
 namespace tools {
+
+/// Option checks with a short message ("must be positive, got -2"): CLI11's own
+/// PositiveNumber/NonNegativeNumber print their range up to 1.8e308.
+inline CLI::Validator positiveNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v) || !(v > 0.0) || !std::isfinite(v))
+          return "must be a positive number, got " + text;
+        return std::string();
+      },
+      "POSITIVE");
+}
+inline CLI::Validator nonNegativeNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v) || !(v >= 0.0) || !std::isfinite(v))
+          return "must be a number >= 0, got " + text;
+        return std::string();
+      },
+      "NONNEGATIVE");
+}
 
 void registerModesCommand(CLI::App& app);
 void registerMacCommand(CLI::App& app);

@@ -144,7 +144,7 @@ void registerMacCommand(CLI::App& app) {
   cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match (paper: 0.7)")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   cmd->add_flag("--json", opt->json, "print a JSON document (MAC matrix, correlation table)");
   cmd->add_option("--out", opt->out_dir, "write mac.csv and mac.mat to this directory");
   cmd->callback([opt]() { run(*opt); });

@@ -136,7 +136,7 @@ void registerModesCommand(CLI::App& app) {
   cmd->add_option("--count,-n", opt->count, "number of modes")->check(CLI::Range(1, 100000));
   cmd->add_option("--max-frequency", opt->max_frequency_hz,
                   "return every mode below this frequency [Hz] (at most --count; --model only)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(nonNegativeNumber());
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");
   cmd->add_option("--out", opt->out_dir, "write modes.csv, shapes.csv and modes.mat to this directory");
   cmd->callback([opt, model, vehicle]() {

@@ -114,7 +114,7 @@ void registerReduceCommand(CLI::App& app) {
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
   cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--rule", opt->rule, "mode selection: mac (paper) | band")->check(CLI::IsMember({"mac", "band"}));
-  cmd->add_option("--band", opt->reduction.band_hz, "bandwidth of interest [Hz]")->check(CLI::PositiveNumber);
+  cmd->add_option("--band", opt->reduction.band_hz, "bandwidth of interest [Hz]")->check(positiveNumber());
   cmd->add_option("--global-modes", opt->reduction.global_modes, "modes per variant for the MAC")->check(CLI::Range(1, 2000));
   cmd->add_option("--masters", opt->reduction.mogesec_masters, "MoGeSeC master DOFs (paper: 9)")->check(CLI::Range(0, 10000));
   cmd->add_option("--modes", opt->reduction.mode_count, "fixed-interface modes (0: as many as selected)")->check(CLI::Range(0, 10000));

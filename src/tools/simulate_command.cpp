@@ -68,6 +68,9 @@ void run(const SimulateOptions& opt) {
   std::unique_ptr<reduction::FullModelReference> full;
   if (opt.model == "full") {
     if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
+    if (opt.max_mode_hz == 0)
+      throw InputError("simulate: --model full needs --max-mode-hz > 0 (the full model's modes up to "
+                       "it are dynamic, the rest static)");
     reduction::FullReferenceOptions ref_options;
     if (opt.max_mode_hz >= 0) ref_options.max_frequency_hz = opt.max_mode_hz;
     full = std::make_unique<reduction::FullModelReference>(reduction::buildVehicleReference(
@@ -224,7 +227,8 @@ void registerSimulateCommand(CLI::App& app) {
       ->check(CLI::IsMember({"modal", "exact"}));
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "
-                  "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic)");
+                  "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic)")
+      ->check(nonNegativeNumber());
   cmd->add_option("--model", opt->model,
                   "reduced (Craig-Bampton, cached) | full (FE modes up to --max-mode-hz, default "
                   "100 Hz, plus static residual: the reference)")

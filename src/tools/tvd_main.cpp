@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help/--version exit 0; every other command-line error is bad input: status 2.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const tvd::InputError& e) {
     std::cerr << "tvd: error: " << e.what() << "\n";
     return 2;
