@@ -16,6 +16,7 @@ class Reader {
   explicit Reader(const ros::NodeHandle& nh) : nh_(nh) {}
 
   std::string name(const std::string& key) const { return nh_.resolveName(key); }
+  bool has(const std::string& key) const { return nh_.hasParam(key); }
 
   ParameterError error(const std::string& key, const std::string& what) const {
     return ParameterError(name(key) + ": " + what);
@@ -135,7 +136,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("comfort_rate", "must not exceed ~rate");
   v.method = parseMethod(in.string("method", "modal"), in.name("method"));
   v.hold = parseHold(in.string("hold", "first_order"), in.name("hold"));
-  v.max_mode_frequency_hz = in.nonNegative("max_mode_frequency", 0.5 * v.rate, "Hz");
+  if (in.has("max_mode_frequency"))  // unset: OnlineVehicleOptions' default (rate / 2)
+    v.max_mode_frequency_hz = in.nonNegative("max_mode_frequency", 0.0, "Hz");
   v.lateral_offset = in.number("lateral_offset", v.lateral_offset);
   v.comfort_point = in.string("comfort_point", v.comfort_point);
   if (v.comfort_point.empty())

@@ -17,6 +17,24 @@ const char* const kHullOutputs[6] = {"hull ux", "hull uy", "hull uz",
                                      "hull rx", "hull ry", "hull rz"};
 const char* const kTranslations[3] = {"ux", "uy", "uz"};
 
+std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system) {
+  std::vector<bool> flags(static_cast<std::size_t>(system.inputCount()), false);
+  if (system.input_damping.size() == 0)
+    return flags;
+  for (Eigen::Index q = 0; q < system.inputCount(); ++q) {
+    flags[static_cast<std::size_t>(q)] = !system.input_damping.col(q).isZero(0.0);
+  }
+  return flags;
+}
+
+dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
+  dynamics::ComfortOptions comfort;
+  comfort.running_rms_time = options.comfort_running_rms_time;
+  return comfort;
+}
+
+}  // namespace
+
 dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model,
                                             const OnlineVehicleOptions& options) {
   if (!std::isfinite(options.rate) || options.rate <= 0.0) {
@@ -35,24 +53,6 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
         options.max_mode_frequency_hz < 0 ? 0.5 * options.rate : options.max_mode_frequency_hz;
   return sim;
 }
-
-std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system) {
-  std::vector<bool> flags(static_cast<std::size_t>(system.inputCount()), false);
-  if (system.input_damping.size() == 0)
-    return flags;
-  for (Eigen::Index q = 0; q < system.inputCount(); ++q) {
-    flags[static_cast<std::size_t>(q)] = !system.input_damping.col(q).isZero(0.0);
-  }
-  return flags;
-}
-
-dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
-  dynamics::ComfortOptions comfort;
-  comfort.running_rms_time = options.comfort_running_rms_time;
-  return comfort;
-}
-
-}  // namespace
 
 VehicleGeometry vehicleGeometry(const vehicle::VehicleDescription& description) {
   const vehicle::VehicleModel built =

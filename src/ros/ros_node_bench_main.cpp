@@ -83,16 +83,7 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   printStats("OnlineVehicle::step", step_stats);
 
   // The simulator alone, same sizes, constant input: what the terrain sampling adds.
-  tvd::dynamics::SimulatorOptions sim_options;
-  sim_options.time_step = 1.0 / rate;
-  sim_options.hold = options.hold;
-  sim_options.method = options.method;
-  sim_options.quantities = {tvd::dynamics::OutputQuantity::Displacement,
-                            tvd::dynamics::OutputQuantity::Velocity,
-                            tvd::dynamics::OutputQuantity::Acceleration};
-  sim_options.generalized_force = model.gravity_load;
-  if (options.method == tvd::dynamics::DiscretizationMethod::ModalDecoupled)
-    sim_options.max_mode_frequency_hz = 0.5 * rate;  // as the node's default
+  const tvd::dynamics::SimulatorOptions sim_options = rl::simulatorOptions(model, options);
   tvd::dynamics::Simulator sim(model.system, sim_options);
   tvd::Vector w = tvd::Vector::Constant(sim.inputCount(), 1e-3);
   rl::DurationStatistics sim_stats;

@@ -204,7 +204,24 @@ VehicleDynamicsNode::~VehicleDynamicsNode() {
 }
 
 void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
+  // A bag loop is handled here, in queue order: the terrain and speed queued after this /clock
+  // message (the bag's first patches) then reach the restarted vehicle instead of being wiped
+  // by a restart at the next tick.
+  if (clock_started_ && (msg->clock - sample_time_).toNSec() < -step_ns_)
+    restartAfterJump(msg->clock);
   latest_clock_ = msg->clock;
+}
+
+void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
+  ++events_.time_jumps_back;
+  ROS_WARN_THROTTLE(kWarnPeriod,
+                    "vehicle_dynamics_node: ROS time jumped back by %.3f s: resetting the vehicle "
+                    "to equilibrium at station 0",
+                    (sample_time_ - now).toSec());
+  restart();
+  sample_time_ = now;
+  publishState();
+  updater_.force_update();
 }
 
 ros::Time VehicleDynamicsNode::now() const {
@@ -264,20 +281,27 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   }
   const std::int64_t ahead_ns = (now - sample_time_).toNSec();
   if (ahead_ns < -step_ns_) {
-    // A bag loop or a clock reset: the terrain and station of the past no longer apply.
+    if (use_sim_time_) {
+      // A clock reset not seen by onClock(): the terrain and station of the past no longer apply.
+      restartAfterJump(now);
+      return;
+    }
+    // The wall clock stepped back (e.g. an NTP correction): the vehicle's motion is not
+    // affected, so only the time base is re-anchored.
     ++events_.time_jumps_back;
-    ROS_WARN_THROTTLE(
-        kWarnPeriod,
-        "vehicle_dynamics_node: ROS time jumped back by %.3f s: resetting the vehicle "
-        "to equilibrium at station 0",
-        -ahead_ns * 1e-9);
-    restart();
+    ++events_.resyncs;
+    ROS_WARN_THROTTLE(kWarnPeriod,
+                      "vehicle_dynamics_node: the wall clock stepped back by %.3f s: "
+                      "resynchronising (the vehicle state is kept)",
+                      -ahead_ns * 1e-9);
     sample_time_ = now;
-    publishState();
-    updater_.force_update();
     return;
   }
-  std::int64_t due = ahead_ns > 0 ? ahead_ns / step_ns_ : 0;
+  // On the wall clock the ticks come from the monotonic timer; rounding absorbs its wake-up
+  // jitter, which would otherwise alternate 0 and 2 steps per tick. Simulated time is exact.
+  std::int64_t due = ahead_ns <= 0 ? 0
+                     : use_sim_time_ ? ahead_ns / step_ns_
+                                     : (ahead_ns + step_ns_ / 2) / step_ns_;
   if (due == 0)
     return;
   if (due > 1)

@@ -14,6 +14,7 @@
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
+#include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
@@ -80,17 +81,12 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
       ref.wheel_peak = std::max(ref.wheel_peak, std::abs(w));
   };
   record();
-  Vector w(2 * n);
+  const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, lateral_offset);
+  Vector w;
   const double h = 1.0 / rate;
   const auto steps = static_cast<long>(std::ceil(end_station / (v * h))) + 10;
   for (long k = 1; k <= steps; ++k) {
-    const double s = static_cast<double>(k) * v * h;
-    for (Eigen::Index q = 0; q < n; ++q) {
-      const double x = s + sys.input_stations(q);
-      const double y = sys.input_lateral(q) + lateral_offset;
-      w(q) = track.height(x, y);
-      w(n + q) = v * track.slope(x, y);
-    }
+    road.sample(track, static_cast<double>(k) * v * h, v, w);
     sim.step(w);
     record();
   }

@@ -70,6 +70,12 @@ struct OnlineVehicleOptions {
   double terrain_keep_behind = 1.0;
 };
 
+/// The Simulator configuration of an OnlineVehicle: step 1/rate, method, hold, the cut-off of
+/// quasi-static modes, displacement/velocity/acceleration outputs, gravity. Shared with the
+/// benchmark so that both run the same model. Throws InputError for a bad rate.
+dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model,
+                                            const OnlineVehicleOptions& options);
+
 /// State of one road wheel at the current sample.
 struct WheelState {
   std::string name;

@@ -95,6 +95,8 @@ class VehicleDynamicsNode {
   void advanceTo(const ros::Time& now);
   /// Vehicle back to equilibrium at station 0, terrain and metrics cleared.
   void restart();
+  /// Simulated time went back (a bag loop): restart at `now` and publish the equilibrium.
+  void restartAfterJump(const ros::Time& now);
   void publishState();
   void publishComfort();
 
