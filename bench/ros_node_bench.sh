@@ -22,13 +22,9 @@ PUBLISH_RATE="${PUBLISH_RATE:-1000}"
 VEHICLE="$(pwd)/config/vehicles/paper_vehicle.yaml"
 CACHE="${CACHE:-/tmp/tvd_bench_cache}"
 
-if [ "${SKIP_BUILD:-0}" != 1 ]; then
-  BUILD_DIR="$BUILD_DIR" scripts/build.sh vehicle_dynamics_node ros_node_bench
-fi
-set +u
-# shellcheck disable=SC1091
-source "$BUILD_DIR/devel/setup.bash"
-set -u
+# shellcheck source=scripts/ros_env.sh
+source scripts/ros_env.sh
+ros_setup "$BUILD_DIR" vehicle_dynamics_node ros_node_bench
 bench="$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics ros_node_bench | head -n 1)"
 node="$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics vehicle_dynamics_node | head -n 1)"
 
@@ -51,10 +47,7 @@ cleanup() {
   wait "$roscore_pid" 2>/dev/null || true
 }
 trap cleanup EXIT
-for _ in $(seq 1 100); do
-  timeout 2 rosparam list >/dev/null 2>&1 && break
-  sleep 0.2
-done
+wait_for_master
 rosparam set /vehicle_dynamics/vehicle "$VEHICLE"
 rosparam set /vehicle_dynamics/variant "$VARIANT"
 rosparam set /vehicle_dynamics/cache_dir "$CACHE"

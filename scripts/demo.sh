@@ -9,12 +9,9 @@ cd "$(dirname "$0")/.."
 export PATH="/usr/bin:$PATH"
 
 scripts/install_deps.sh
-scripts/build.sh tvd vehicle_dynamics_node tvd_make_bag
-# The ROS setup scripts read unset variables.
-set +u
-# shellcheck disable=SC1091
-source build/devel/setup.bash
-set -u
+# shellcheck source=scripts/ros_env.sh
+source scripts/ros_env.sh
+SKIP_BUILD=0 ros_setup build tvd vehicle_dynamics_node tvd_make_bag
 
 VEHICLE=config/vehicles/paper_vehicle.yaml
 OUT=demo_output
@@ -32,7 +29,20 @@ tvd reduce --vehicle "$VEHICLE" --variant tracked --out "$OUT/tracked_reduced.ma
 echo; echo "== 5. Long hill at 30 km/h, tracked reduced model (paper §4.2) =="
 tvd simulate --vehicle "$VEHICLE" --variant tracked --track long_hill --speed-kmh 30 \
   --cache-dir "$OUT/cache" --out "$OUT/long_hill_30kmh.csv"
-echo; echo "== 6. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
+echo; echo "== 6. Comfort FRFs of the tracked vehicle: full vs reduced, and at 30 km/h (paper Figs. 13-16) =="
+tvd frf --vehicle "$VEHICLE" --variant tracked --model full --out "$OUT/frf_tracked_full.csv"
+tvd frf --vehicle "$VEHICLE" --variant tracked --cache-dir "$OUT/cache" --out "$OUT/frf_tracked_reduced.csv"
+tvd frf --vehicle "$VEHICLE" --variant tracked --cache-dir "$OUT/cache" --speed-kmh 30 \
+  --out "$OUT/frf_tracked_reduced_30kmh.csv" | tail -1
+echo; echo "== 7. Figures (PNG) =="
+/usr/bin/python3 scripts/plot_mac.py --mac-dir "$OUT/mac" --out "$OUT/mac.png" \
+  --freq-out "$OUT/mac_frequencies.png"
+/usr/bin/python3 scripts/plot_frf.py --out "$OUT/frf_tracked.png" --title "tracked vehicle" \
+  full="$OUT/frf_tracked_full.csv" reduced="$OUT/frf_tracked_reduced.csv" \
+  "reduced, 30 km/h"="$OUT/frf_tracked_reduced_30kmh.csv"
+/usr/bin/python3 scripts/plot_simulation.py --out "$OUT/long_hill_30kmh.png" \
+  --title "long hill, 30 km/h" tracked="$OUT/long_hill_30kmh.csv"
+echo; echo "== 8. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
 SKIP_BUILD=1 OUT="$OUT/ros" scripts/ros_demo.sh
 echo
 echo "Results in $OUT/. Next: source build/devel/setup.bash; rosrun tracked_vehicle_dynamics tvd --help"

@@ -15,14 +15,9 @@ SPEED_KMH="${SPEED_KMH:-30}"
 VARIANT="${VARIANT:-tracked}"
 OUT="${OUT:-demo_output/ros}"
 
-if [ "${SKIP_BUILD:-0}" != 1 ]; then
-  BUILD_DIR="$BUILD_DIR" scripts/build.sh vehicle_dynamics_node tvd_make_bag
-fi
-# The ROS setup scripts read unset variables.
-set +u
-# shellcheck disable=SC1091
-source "$BUILD_DIR/devel/setup.bash"
-set -u
+# shellcheck source=scripts/ros_env.sh
+source scripts/ros_env.sh
+ros_setup "$BUILD_DIR" vehicle_dynamics_node tvd_make_bag
 mkdir -p "$OUT"
 OUT="$(cd "$OUT" && pwd)"
 
@@ -48,10 +43,7 @@ else
   port="$(echo "${ROS_MASTER_URI:-http://localhost:11311}" | sed -E 's#.*:([0-9]+)/?$#\1#')"
   roscore -p "$port" >"$OUT/roscore.log" 2>&1 &
   roscore_pid=$!
-  for _ in $(seq 1 100); do
-    timeout 2 rosparam list >/dev/null 2>&1 && break
-    sleep 0.2
-  done
+  wait_for_master
 fi
 
 output_bag="$OUT/${TRACK}_${SPEED_KMH}kmh_output.bag"
