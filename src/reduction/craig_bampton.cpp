@@ -165,7 +165,8 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
   SparseMatrix m_ss = p_s.transpose() * in.m * p_s;
   k_ss.makeCompressed();
   m_ss.makeCompressed();
-  const Matrix k_sm = Matrix(p_s.transpose() * in.k * p_m);
+  const SparseMatrix k_sm_sparse = p_s.transpose() * in.k * p_m;
+  const Matrix k_sm = Matrix(k_sm_sparse);
   result.seconds.partition = since(stage);
 
   // Constraint modes (eq. 4): one factorisation of K_ss, one solve for all m columns.
@@ -205,9 +206,20 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
       t.row(row).tail(r) = phi_s.shapes.row(j);
   }
 
-  // Eq. 9.
+  // Eq. 9. K_R needs no projection: with the constraint modes (eq. 4) the coupling block
+  // vanishes, Phi_S^T (K_sm + K_ss Phi_C) = 0, the mass-normalised fixed-interface modes (eq. 6)
+  // give Phi_S^T K_ss Phi_S = diag(omega_i^2), and the master block is the Schur complement
+  // K_mm + K_sm^T Phi_C (Guyan). One sparse-dense product instead of a dense n x k projection,
+  // and the exact zeros the projection only reproduces to rounding.
   result.mass = project(in.m, t);
-  result.stiffness = project(in.k, t);
+  result.stiffness = Matrix::Zero(m + r, m + r);
+  if (m > 0) {
+    const Matrix schur =
+        Matrix(SparseMatrix(p_m.transpose() * in.k * p_m)) + k_sm_sparse.transpose() * phi_c;
+    result.stiffness.topLeftCorner(m, m) = 0.5 * (schur + schur.transpose());
+  }
+  if (r > 0)
+    result.stiffness.bottomRightCorner(r, r).diagonal() = phi_s.eigenvalues;
   const Matrix c_discrete = in.c.size() ? project(in.c, t) : Matrix::Zero(m + r, m + r);
   result.damping = reducedDamping(result.mass, result.stiffness, c_discrete, options.damping);
   const DofIndex inputs = in.ku ? in.ku->cols() : 0;
