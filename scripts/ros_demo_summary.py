@@ -27,6 +27,8 @@ def main():
     parser.add_argument("--wall-seconds", type=float, default=None,
                         help="wall time of the replay, for the real-time factor")
     parser.add_argument("--title", default="")
+    parser.add_argument("--base-frame", default="base_link",
+                        help="the node's ~frame_prefix + ~base_frame (default base_link)")
     args = parser.parse_args()
 
     pose = {}        # stamp -> (z [m], pitch [rad])
@@ -40,7 +42,7 @@ def main():
                 topics=["/tf", "/road_wheels", "/hull/accel", "/comfort", "/diagnostics"]):
             if topic == "/tf":
                 for t in msg.transforms:
-                    if t.child_frame_id == "base_link":
+                    if t.child_frame_id == args.base_frame:
                         pose[t.header.stamp.to_sec()] = (t.transform.translation.z,
                                                          pitch_of(t.transform.rotation))
             elif topic == "/road_wheels":
@@ -75,9 +77,9 @@ def main():
         print("model: %s %s, %s reduced DOFs, %s road inputs (%s)"
               % (model.get("vehicle", "?"), model.get("variant", "?"),
                  model.get("reduced DOFs", "?"), model.get("road inputs", "?"),
-                 model.get("summary", model.get("cache note", ""))))
-    print("base_link heave: peak %+.3f m, min %+.3f m (from static)"
-          % (max(z) - z0, min(z) - z0))
+                 model.get("cache note", "")))
+    print("%s heave: peak %+.3f m, min %+.3f m (from static)"
+          % (args.base_frame, max(z) - z0, min(z) - z0))
     print("hull pitch: max %+.2f deg, min %+.2f deg (from static)"
           % (max(pitch) - p0, min(pitch) - p0))
     peak_wheel = max(((abs(d), n) for t in stamps for n, d in wheels[t][1].items()))

@@ -95,8 +95,8 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   ASSERT_TRUE(advanceTo(t));
   EXPECT_NEAR(last_.station - station_before, speed * catch_up_limit, kStation);
 
-  // Time going backwards (a bag loop): reset to station 0 at the new time. (roscpp fires the
-  // timer again one period after the jump.)
+  // Time going backwards (a bag loop): reset to station 0 at the new time (the node restarts on
+  // the /clock message itself).
   t = t0;
   setClock(t);
   test::spinFor(0.05);
