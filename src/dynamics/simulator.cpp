@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/discrete_modes.h"
@@ -130,6 +132,15 @@ class DenseEngine : public SimulatorEngine {
 // Per mode r: [eta; eta']_{k+1} = Phi_r [eta; eta']_k + g0_r p_k + g1_r p_{k+1} + (g0_r + g1_r) p_g
 // with p = Psi w, Psi = [Phi^T K_u, Phi^T C_u], p_g = Phi^T f_g (constant: exact for both holds).
 // Outputs: H Phi eta, H Phi eta', H Phi eta'' with eta'' = p + p_g - omega^2 eta - d eta'.
+//
+// Everything the road inputs drive is one linear map of w, stacked as G (see InputTerms):
+//   g = G w = [p; y_t; y_t'],  y_t, y_t' the quasi-static output terms (constructor).
+// G has (modes + outputs) x inputs entries, so g = G w is most of the work of a step. A road input
+// changes only where the terrain under its contact is not flat, so g is updated by increments,
+//   g_{k+1} = g_k + sum over changed inputs j of G(:, j) (w_{k+1,j} - w_{k,j}),
+// and recomputed in full (re-anchored: no drift) every kAnchorSteps steps or when more than
+// 1/kDenseFraction of the inputs changed, where the dense product is the cheaper one. Exact
+// either way up to rounding.
 class ModalEngine : public SimulatorEngine {
  public:
   ModalEngine(const SecondOrderSystem& system, const SimulatorOptions& options) {
@@ -150,17 +161,6 @@ class ModalEngine : public SimulatorEngine {
     coefficients_ = discretizeModes(omega, modal.dampingCoefficients().head(n), options.time_step,
                                     options.hold);
     first_order_ = options.hold == InputHold::FirstOrder;
-    // Psi = [Phi^T K_u, Phi^T C_u] without its zero columns (e.g. C_u = 0: no tyre damping),
-    // which would only cost multiplications by zero in every step.
-    Matrix psi_all(n_all, 2 * n_u);
-    psi_all << modal.modalInputStiffness(), modal.modalInputDamping();
-    for (DofIndex j = 0; j < psi_all.cols(); ++j)
-      if (!psi_all.col(j).isZero(0.0))
-        active_inputs_.push_back(j);
-    psi_.resize(n, static_cast<DofIndex>(active_inputs_.size()));
-    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
-      psi_.col(static_cast<DofIndex>(j)) = psi_all.col(active_inputs_[j]).head(n);
-    active_input_.setZero(psi_.cols());
     omega_squared_ = omega.cwiseAbs2();
     damping_ = modal.dampingCoefficients().head(n);
     modal_output_ = modal.modalOutput().leftCols(n);
@@ -175,26 +175,6 @@ class ModalEngine : public SimulatorEngine {
     offset_disp_ = gamma_disp.cwiseProduct(force_);
     offset_vel_ = gamma_vel.cwiseProduct(force_);
 
-    // Quasi-static modes: eta_t = Omega_t^-2 (Phi_t^T f), so their outputs are
-    //   y_t = H Phi_t Omega_t^-2 Phi_t^T (K_u u + C_u u' + f_g) = R_w w + r_g,
-    //   y_t' = H Phi_t Omega_t^-2 Phi_t^T K_u u'   (the C_u u'' term is not available: dropped).
-    residual_input_.setZero(modal.outputCount(), psi_.cols());
-    residual_force_.setZero(modal.outputCount());
-    residual_rate_.setZero(modal.outputCount(), n_u);
-    if (n_t > 0) {
-      const Vector inverse_omega2 = modal.naturalFrequencies().tail(n_t).cwiseAbs2().cwiseInverse();
-      const Matrix output_flex =
-          modal.modalOutput().rightCols(n_t) * inverse_omega2.asDiagonal();  // H Phi_t Omega^-2
-      for (std::size_t j = 0; j < active_inputs_.size(); ++j)
-        residual_input_.col(static_cast<DofIndex>(j)).noalias() =
-            output_flex * psi_all.col(active_inputs_[j]).tail(n_t);
-      residual_force_.noalias() = output_flex * modal_gravity.tail(n_t);
-      residual_rate_.noalias() = output_flex * modal.modalInputStiffness().bottomRows(n_t);
-      truncated_shapes_ = modal.shapes().rightCols(n_t) * inverse_omega2.asDiagonal();
-      truncated_psi_ = psi_all.bottomRows(n_t);
-      truncated_gravity_ = modal_gravity.tail(n_t);
-    }
-
     const OutputLayout layout(modal.outputNames(), options.quantities);
     n_y_ = modal.outputCount();
     disp_offset_ =
@@ -203,6 +183,46 @@ class ModalEngine : public SimulatorEngine {
         layout.has(OutputQuantity::Velocity) ? layout.offset(OutputQuantity::Velocity) : -1;
     acc_offset_ =
         layout.has(OutputQuantity::Acceleration) ? layout.offset(OutputQuantity::Acceleration) : -1;
+
+    // G over all 2 n_u columns of w = [u; u'], rows [p (n); y_t (n_y, if displacements are
+    // reported); y_t' (n_y, if velocities are)]. Quasi-static modes: eta_t = Omega_t^-2 Phi_t^T f,
+    //   y_t  = H Phi_t Omega_t^-2 Phi_t^T (K_u u + C_u u') (+ r_g = H Phi_t Omega_t^-2 Phi_t^T f_g),
+    //   y_t' = H Phi_t Omega_t^-2 Phi_t^T K_u u'   (the C_u u'' term is not available: dropped).
+    const bool truncated = n_t > 0;
+    disp_row_ = truncated && disp_offset_ >= 0 ? n : -1;
+    vel_row_ = truncated && vel_offset_ >= 0 ? n + (disp_row_ >= 0 ? n_y_ : 0) : -1;
+    const DofIndex g_rows = n + (disp_row_ >= 0 ? n_y_ : 0) + (vel_row_ >= 0 ? n_y_ : 0);
+    Matrix psi_all(n_all, 2 * n_u);
+    psi_all << modal.modalInputStiffness(), modal.modalInputDamping();
+    Matrix g_all = Matrix::Zero(g_rows, 2 * n_u);
+    g_all.topRows(n) = psi_all.topRows(n);
+    residual_force_.setZero(n_y_);
+    if (truncated) {
+      const Vector inverse_omega2 = modal.naturalFrequencies().tail(n_t).cwiseAbs2().cwiseInverse();
+      const Matrix output_flex =
+          modal.modalOutput().rightCols(n_t) * inverse_omega2.asDiagonal();  // H Phi_t Omega^-2
+      if (disp_row_ >= 0)
+        g_all.middleRows(disp_row_, n_y_).noalias() = output_flex * psi_all.bottomRows(n_t);
+      if (vel_row_ >= 0)
+        g_all.block(vel_row_, n_u, n_y_, n_u).noalias() =
+            output_flex * modal.modalInputStiffness().bottomRows(n_t);
+      residual_force_.noalias() = output_flex * modal_gravity.tail(n_t);
+      truncated_shapes_ = modal.shapes().rightCols(n_t) * inverse_omega2.asDiagonal();
+      truncated_psi_ = psi_all.bottomRows(n_t);
+      truncated_gravity_ = modal_gravity.tail(n_t);
+    }
+    // Zero columns (e.g. C_u = 0: no ground damping) would only cost multiplications by zero.
+    for (DofIndex j = 0; j < g_all.cols(); ++j)
+      if (!g_all.col(j).isZero(0.0))
+        active_inputs_.push_back(j);
+    const auto m = static_cast<DofIndex>(active_inputs_.size());
+    input_map_.resize(g_rows, m);
+    for (DofIndex j = 0; j < m; ++j)
+      input_map_.col(j) = g_all.col(active_inputs_[static_cast<std::size_t>(j)]);
+    active_input_.setZero(m);
+    input_terms_.setZero(g_rows);
+    changes_.reserve(static_cast<std::size_t>(m));
+
     names_ = layout.names();
     off_diagonal_ratio_ = modal.maxOffDiagonalDampingRatio();
     dt_ = options.time_step;
@@ -213,7 +233,7 @@ class ModalEngine : public SimulatorEngine {
     quasi_static_modes_ = n_t;
     n_u_ = n_u;
 
-    for (Vector* v : {&eta_, &eta_dot_, &eta_next_, &eta_ddot_, &p_, &p_next_})
+    for (Vector* v : {&eta_, &eta_dot_, &eta_next_, &eta_ddot_, &p_})
       v->setZero(n);
     w_.setZero(2 * n_u);
     y_.setZero(layout.size());
@@ -230,18 +250,19 @@ class ModalEngine : public SimulatorEngine {
 
   void setInput(const Vector& input) override {
     w_ = input;
-    gatherActive(w_);
-    p_.noalias() = psi_ * active_input_;
+    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
+      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
+    anchorInputTerms();
+    p_ = input_terms_.head(p_.size());
     updateOutputs();
   }
 
   void advance(const Vector& input_next) override {
-    gatherActive(input_next);
-    p_next_.noalias() = psi_ * active_input_;
-    advanceModes(p_.data(), p_next_.data(), eta_.data(), eta_dot_.data(), eta_next_.data(),
+    updateInputTerms(input_next);
+    advanceModes(p_.data(), input_terms_.data(), eta_.data(), eta_dot_.data(), eta_next_.data(),
                  eta_dot_.data());
     eta_.swap(eta_next_);
-    p_.swap(p_next_);
+    p_ = input_terms_.head(p_.size());
     w_ = input_next;
     ++steps_;
     updateOutputs();
@@ -261,70 +282,128 @@ class ModalEngine : public SimulatorEngine {
     return z;
   }
 
-  // Blocked version: modal forces and outputs of kBlock samples at a time as matrix-matrix
-  // products; only the O(n) per-mode recursion stays sequential.
+  // Blocked version: the input terms g of kBlock samples at a time (by increments, or as one
+  // matrix-matrix product when the inputs change densely), then the O(n) per-mode recursion, then
+  // the outputs as matrix-matrix products.
   Matrix simulate(const Matrix& inputs) override {
     constexpr DofIndex kBlock = 256;
     const DofIndex n_t = inputs.rows();
     const DofIndex n = eta_.size();
+    const DofIndex m = input_map_.cols();
     Matrix outputs(n_t, y_.size());
     if (n_t == 0)
       return outputs;
     setInput(inputs.row(0).transpose());
     outputs.row(0) = y_.transpose();
-    Matrix forces(n, kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
+    Matrix terms(input_map_.rows(), kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
     for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
       const DofIndex b = std::min(kBlock, n_t - k0);
-      forces.leftCols(b).noalias() =
-          psi_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
+      // g at sample k0 - 1 (exact), then g_k = g_{k-1} + G dw_k inside the block.
+      for (DofIndex j = 0; j < m; ++j)
+        active_input_(j) = inputs(k0 - 1, active_inputs_[static_cast<std::size_t>(j)]);
+      anchorInputTerms();
+      p_ = input_terms_.head(n);
+      terms.leftCols(b).setZero();
+      DofIndex changed = 0;
+      const DofIndex g_rows = input_map_.rows();
+      for (DofIndex j = 0; j < m && changed * kDenseFraction <= m * b; ++j) {
+        // Column-major storage: input j's samples k0 - 1 .. k0 + b - 1 are contiguous.
+        const double* column =
+            inputs.data() + active_inputs_[static_cast<std::size_t>(j)] * inputs.rows() + k0 - 1;
+        const double* g = input_map_.col(j).data();
+        for (DofIndex k = 0; k < b; ++k) {
+          const double delta = column[k + 1] - column[k];
+          if (delta == 0.0)
+            continue;
+          double* t = terms.col(k).data();
+          for (DofIndex i = 0; i < g_rows; ++i)
+            t[i] += g[i] * delta;
+          // A non-finite input must not leak into later samples through the sums.
+          changed += std::isfinite(delta) ? 1 : m * b;
+        }
+      }
+      if (changed * kDenseFraction > m * b) {
+        terms.leftCols(b).noalias() =
+            input_map_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
+      } else {
+        terms.col(0) += input_terms_;
+        for (DofIndex k = 1; k < b; ++k)
+          terms.col(k) += terms.col(k - 1);
+      }
       for (DofIndex j = 0; j < b; ++j) {
-        const double* p_prev = j == 0 ? p_.data() : forces.col(j - 1).data();
+        const double* p_prev = j == 0 ? p_.data() : terms.col(j - 1).data();
         const double* eta_prev = j == 0 ? eta_.data() : disp.col(j - 1).data();
         const double* eta_dot_prev = j == 0 ? eta_dot_.data() : vel.col(j - 1).data();
-        advanceModes(p_prev, forces.col(j).data(), eta_prev, eta_dot_prev, disp.col(j).data(),
+        advanceModes(p_prev, terms.col(j).data(), eta_prev, eta_dot_prev, disp.col(j).data(),
                      vel.col(j).data());
       }
       if (acc_offset_ >= 0)
-        acc.leftCols(b) = (forces.leftCols(b).colwise() + force_).array() -
+        acc.leftCols(b) = (terms.topLeftCorner(n, b).colwise() + force_).array() -
                           disp.leftCols(b).array().colwise() * omega_squared_.array() -
                           vel.leftCols(b).array().colwise() * damping_.array();
       auto rows = outputs.middleRows(k0, b);
       if (disp_offset_ >= 0) {
         rows.middleCols(disp_offset_, n_y_).noalias() =
             disp.leftCols(b).transpose() * modal_output_.transpose();
-        if (quasi_static_modes_ > 0) {
-          rows.middleCols(disp_offset_, n_y_).noalias() +=
-              inputs.middleRows(k0, b)(Eigen::all, active_inputs_) * residual_input_.transpose();
+        if (disp_row_ >= 0) {
+          rows.middleCols(disp_offset_, n_y_) += terms.block(disp_row_, 0, n_y_, b).transpose();
           rows.middleCols(disp_offset_, n_y_).rowwise() += residual_force_.transpose();
         }
       }
       if (vel_offset_ >= 0) {
         rows.middleCols(vel_offset_, n_y_).noalias() =
             vel.leftCols(b).transpose() * modal_output_.transpose();
-        if (quasi_static_modes_ > 0)
-          rows.middleCols(vel_offset_, n_y_).noalias() +=
-              inputs.middleRows(k0, b).rightCols(n_u_) * residual_rate_.transpose();
+        if (vel_row_ >= 0)
+          rows.middleCols(vel_offset_, n_y_) += terms.block(vel_row_, 0, n_y_, b).transpose();
       }
       if (acc_offset_ >= 0)
         rows.middleCols(acc_offset_, n_y_).noalias() =
             acc.leftCols(b).transpose() * modal_output_.transpose();
       eta_ = disp.col(b - 1);
       eta_dot_ = vel.col(b - 1);
-      p_ = forces.col(b - 1);
       steps_ += b;
     }
-    w_ = inputs.row(n_t - 1).transpose();
-    updateOutputs();
+    // Ends at the last sample with exact input terms.
+    setInput(inputs.row(n_t - 1).transpose());
     return outputs;
   }
 
  private:
   using ArrayMap = Eigen::Map<Eigen::ArrayXd>;
   using ConstArrayMap = Eigen::Map<const Eigen::ArrayXd>;
+  /// Increments give way to a full product after this many steps (bounds rounding drift) ...
+  static constexpr long kAnchorSteps = 1000;
+  /// ... or when more than 1 / kDenseFraction of the inputs changed (the dense product, being
+  /// a blocked matrix product, is then the faster one).
+  static constexpr DofIndex kDenseFraction = 8;
 
-  void gatherActive(const Vector& input) {
-    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
-      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
+  void anchorInputTerms() {
+    input_terms_.noalias() = input_map_ * active_input_;
+    steps_since_anchor_ = 0;
+  }
+
+  // input_terms_ = G w_next and active_input_ = the active part of w_next.
+  void updateInputTerms(const Vector& input_next) {
+    changes_.clear();
+    bool finite = true;
+    const auto m = static_cast<DofIndex>(active_inputs_.size());
+    for (DofIndex j = 0; j < m; ++j) {
+      const double value = input_next(active_inputs_[static_cast<std::size_t>(j)]);
+      const double delta = value - active_input_(j);
+      if (delta != 0.0) {
+        changes_.emplace_back(j, delta);
+        active_input_(j) = value;
+        finite = finite && std::isfinite(delta);
+      }
+    }
+    // A non-finite input (or one just replaced) must not stay in the sums: full product.
+    if (++steps_since_anchor_ >= kAnchorSteps || !finite ||
+        static_cast<DofIndex>(changes_.size()) * kDenseFraction > m) {
+      anchorInputTerms();
+      return;
+    }
+    for (const auto& [j, delta] : changes_)
+      input_terms_.noalias() += input_map_.col(j) * delta;
   }
 
   // One step of every mode; eta_dot_out may alias eta_dot (coefficient-wise).
@@ -345,19 +424,17 @@ class ModalEngine : public SimulatorEngine {
     }
   }
 
-  // active_input_ holds the current w (gathered by setInput/advance).
+  // input_terms_ holds G w for the current w.
   void updateOutputs() {
     if (disp_offset_ >= 0) {
       y_.segment(disp_offset_, n_y_).noalias() = modal_output_ * eta_;
-      if (quasi_static_modes_ > 0) {
-        y_.segment(disp_offset_, n_y_).noalias() += residual_input_ * active_input_;
-        y_.segment(disp_offset_, n_y_) += residual_force_;
-      }
+      if (disp_row_ >= 0)
+        y_.segment(disp_offset_, n_y_) += input_terms_.segment(disp_row_, n_y_) + residual_force_;
     }
     if (vel_offset_ >= 0) {
       y_.segment(vel_offset_, n_y_).noalias() = modal_output_ * eta_dot_;
-      if (quasi_static_modes_ > 0)
-        y_.segment(vel_offset_, n_y_).noalias() += residual_rate_ * w_.tail(n_u_);
+      if (vel_row_ >= 0)
+        y_.segment(vel_offset_, n_y_) += input_terms_.segment(vel_row_, n_y_);
     }
     if (acc_offset_ >= 0) {
       eta_ddot_.array() = p_.array() + force_.array() - omega_squared_.array() * eta_.array() -
@@ -368,16 +445,22 @@ class ModalEngine : public SimulatorEngine {
 
   DiscreteModes coefficients_;
   bool first_order_ = false;
-  Matrix psi_, modal_output_, shapes_, mass_projection_;
+  Matrix modal_output_, shapes_, mass_projection_;
   Vector omega_squared_, damping_, force_, offset_disp_, offset_vel_;
-  Vector eta_, eta_dot_, eta_next_, eta_ddot_, p_, p_next_;
-  std::vector<DofIndex> active_inputs_;  // columns of w with a non-zero modal force
+  Vector eta_, eta_dot_, eta_next_, eta_ddot_, p_;
+  // Input terms g = G w (class comment): G = input_map_ on the active columns of w.
+  std::vector<DofIndex> active_inputs_;  // columns of w with a non-zero column of G
   Vector active_input_;                  // w restricted to active_inputs_
+  Matrix input_map_;
+  Vector input_terms_;
+  DofIndex disp_row_ = -1, vel_row_ = -1;  // rows of y_t, y_t' in g (-1: none)
+  std::vector<std::pair<DofIndex, double>> changes_;
+  long steps_since_anchor_ = 0;
   DofIndex n_y_ = 0;
   DofIndex disp_offset_ = -1, vel_offset_ = -1, acc_offset_ = -1;
   // Quasi-static (truncated) modes, see the constructor.
   DofIndex n_u_ = 0;
-  Matrix residual_input_, residual_rate_, truncated_shapes_, truncated_psi_;
+  Matrix truncated_shapes_, truncated_psi_;
   Vector residual_force_, truncated_gravity_;
 };
 

@@ -1,6 +1,8 @@
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 
 #include <chrono>
+#include <cstdint>
+#include <cstdio>
 #include <filesystem>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -190,6 +192,33 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   return reduced;
 }
 
+std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant variant,
+                                  const std::string& description_hash,
+                                  const VehicleReductionOptions& options) {
+  std::string name = std::string(vehicle::variantName(variant)) + "_" + description_hash;
+  const VehicleReductionOptions defaults;
+  const bool is_default = options.rule == defaults.rule &&
+                          options.global_modes == defaults.global_modes &&
+                          options.band_hz == defaults.band_hz &&
+                          options.mac_threshold == defaults.mac_threshold &&
+                          options.mogesec_masters == defaults.mogesec_masters &&
+                          options.mode_count == defaults.mode_count;
+  if (!is_default) {
+    // FNV-1a of the options' exact values (%a: every bit of the doubles).
+    char text[160];
+    std::snprintf(text, sizeof(text), "%d %d %a %a %d %d", static_cast<int>(options.rule),
+                  options.global_modes, options.band_hz, options.mac_threshold,
+                  options.mogesec_masters, options.mode_count);
+    std::uint64_t key = 14695981039346656037ull;
+    for (const char* c = text; *c != '\0'; ++c)
+      key = (key ^ static_cast<unsigned char>(*c)) * 1099511628211ull;
+    char hex[17];
+    std::snprintf(hex, sizeof(hex), "%08llx", static_cast<unsigned long long>(key >> 32));
+    name += std::string("_") + hex;
+  }
+  return (std::filesystem::path(cache_dir) / (name + ".mat")).string();
+}
+
 ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Variant variant,
                                  const std::string& cache_dir,
                                  const VehicleReductionOptions& options,
@@ -199,8 +228,7 @@ ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Varia
   const auto start = Clock::now();
   const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(vehicle_file);
   const std::string hash = vehicle::descriptionHashHex(description);
-  const std::filesystem::path path =
-      std::filesystem::path(cache_dir) / (std::string(vehicle::variantName(variant)) + "_" + hash + ".mat");
+  const std::filesystem::path path = reducedModelCachePath(cache_dir, variant, hash, options);
   rep.cache_file = path.string();
   if (std::filesystem::exists(path)) {
     try {

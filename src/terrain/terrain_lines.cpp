@@ -63,5 +63,22 @@ double TerrainLines::slope(double x, double y) const {
   return line->slopes(cell(x));
 }
 
+void TerrainLines::heightAndSlope(double x, double y, double& h, double& dhdx) const {
+  const Line* line = find(y);
+  if (line == nullptr || std::isnan(x)) {
+    h = terrain_.height(x, y);
+    dhdx = terrain_.slope(x, y);
+    return;
+  }
+  if (x <= x0_ || x >= x_end_) {
+    h = x <= x0_ ? line->heights(0) : line->heights(line->heights.size() - 1);
+    dhdx = x == x0_ && line->slopes.size() != 0 ? line->slopes(0) : 0.0;
+    return;
+  }
+  const Eigen::Index i = cell(x);
+  dhdx = line->slopes(i);
+  h = line->heights(i) + (x - terrain_.stations()(i)) * dhdx;
+}
+
 }  // namespace terrain
 }  // namespace tracked_vehicle_dynamics

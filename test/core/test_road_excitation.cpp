@@ -4,6 +4,8 @@
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 namespace tvd = tracked_vehicle_dynamics;
 
@@ -58,4 +60,27 @@ TEST(RoadExcitation, SeriesFollowsTheStation) {
       EXPECT_NEAR(w(j, q), a * (s0 + speed * (7 + j) * dt + xq(q)) + b * yq(q), 1e-12) << j;
       EXPECT_NEAR(w(j, 2 + q), speed * a, 1e-12) << j;
     }
+}
+
+// Through TerrainLines (one combined height-and-slope lookup per input) the inputs equal those
+// sampled from the terrain itself, and every row of a series equals sample() at its station.
+TEST(RoadExcitation, TerrainLinesGiveTheTerrainsInputs) {
+  const tvd::terrain::Terrain track = tvd::terrain::makeTrack("oop_waves");
+  tvd::Vector xq(4), yq(4);
+  xq << 2.4, 0.3, -0.9, -2.4;
+  yq << 1.3, -1.3, 0.7, 0.0;
+  const tvd::dynamics::RoadExcitation road(xq, yq, 1.0);
+  const tvd::terrain::TerrainLines lines(track, road.inputY());
+  const double speed = 30.0 / 3.6, dt = 1e-3, s0 = track.startStation();
+  const tvd::Matrix series = road.sampleSeries(lines, s0, speed, dt, 0, 4000);
+  tvd::Vector from_lines, from_terrain;
+  for (long j = 0; j < series.rows(); j += 7) {
+    const double station = s0 + speed * static_cast<double>(j) * dt;
+    road.sample(lines, station, speed, from_lines);
+    road.sample(track, station, speed, from_terrain);
+    EXPECT_EQ((series.row(j).transpose() - from_lines).cwiseAbs().maxCoeff(), 0.0) << j;
+    EXPECT_LT((from_lines - from_terrain).head(4).cwiseAbs().maxCoeff(), 1e-12) << j;
+    EXPECT_LT((from_lines - from_terrain).tail(4).cwiseAbs().maxCoeff(), 1e-9 * speed) << j;
+  }
+  EXPECT_GT(series.leftCols(4).cwiseAbs().maxCoeff(), 0.1);  // the waves are under the inputs
 }

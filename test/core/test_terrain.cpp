@@ -605,7 +605,7 @@ TEST(TerrainBuffer, RejectsBadPatches) {
 
 // The precomputed lines give Terrain::height()/slope() at their lateral positions (uniform and
 // non-uniform grids, inside and outside the stations, between lateral lines), and fall back to
-// the terrain for any other y.
+// the terrain for any other y; heightAndSlope() gives both at once.
 TEST(TerrainLines, EqualTerrainSampling) {
   const Terrain oop = makeTrack("oop_waves");
   Vector stations(6), lateral(3);
@@ -630,6 +630,11 @@ TEST(TerrainLines, EqualTerrainSampling) {
         EXPECT_NEAR(lines.height(xk, y), t->height(xk, y), 1e-12 * scale) << t->name() << " x " << xk;
         EXPECT_NEAR(lines.slope(xk, y), t->slope(xk, y), 1e-9 * (1.0 + std::abs(t->slope(xk, y))))
             << t->name() << " x " << xk;
+        // The combined lookup is the same arithmetic as the two separate ones.
+        double h = 0.0, dhdx = 0.0;
+        lines.heightAndSlope(xk, y, h, dhdx);
+        EXPECT_EQ(h, lines.height(xk, y)) << t->name() << " x " << xk;
+        EXPECT_EQ(dhdx, lines.slope(xk, y)) << t->name() << " x " << xk;
       }
     }
   }

@@ -10,6 +10,8 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/types.h"
@@ -32,28 +34,32 @@ class RoadExcitation {
 
   DofIndex inputCount() const { return x_.size(); }
   /// w = [u; u'] [2 n_inputs] into `w` (resized once) at station s [m] and speed v [m/s].
-  /// `terrain` is any height source with height(x, y) and slope(x, y) [m, -].
+  /// `terrain` is any height source with height(x, y) and slope(x, y) [m, -]; one that also has
+  /// heightAndSlope(x, y, h, dhdx) (e.g. TerrainLines) is asked once per input instead of twice.
   template <typename HeightSource>
   void sample(const HeightSource& terrain, double station, double speed, Vector& w) const {
     const DofIndex n = x_.size();
     if (w.size() != 2 * n) w.resize(2 * n);
-    for (DofIndex q = 0; q < n; ++q) {
-      const double x = station + x_(q);
-      w(q) = terrain.height(x, y_(q));
-      w(n + q) = speed * terrain.slope(x, y_(q));
-    }
+    for (DofIndex q = 0; q < n; ++q)
+      sampleOne(terrain, station + x_(q), y_(q), speed, w(q), w(n + q));
   }
 
   /// The input series of a constant-speed run for Simulator::simulate(): row j is w at time
   /// (first + j) dt, station s = station0 + speed (first + j) dt. [count x 2 n_inputs].
+  /// Row j equals sample() at that station.
   template <typename HeightSource>
   Matrix sampleSeries(const HeightSource& terrain, double station0, double speed, double dt,
                       long first, long count) const {
-    Matrix series(count, 2 * x_.size());
-    Vector w;
-    for (long j = 0; j < count; ++j) {
-      sample(terrain, station0 + speed * static_cast<double>(first + j) * dt, speed, w);
-      series.row(j) = w.transpose();
+    const DofIndex n = x_.size();
+    Matrix series(count, 2 * n);
+    // Input by input: the series is column-major, so each input's samples are contiguous.
+    for (DofIndex q = 0; q < n; ++q) {
+      double* u = series.col(q).data();
+      double* rate = series.col(n + q).data();
+      for (long j = 0; j < count; ++j) {
+        const double station = station0 + speed * static_cast<double>(first + j) * dt;
+        sampleOne(terrain, station + x_(q), y_(q), speed, u[j], rate[j]);
+      }
     }
     return series;
   }
@@ -62,6 +68,26 @@ class RoadExcitation {
   const Vector& inputY() const { return y_; }  ///< including the lateral offset
 
  private:
+  template <typename T, typename = void>
+  struct HasHeightAndSlope : std::false_type {};
+  template <typename T>
+  struct HasHeightAndSlope<T, std::void_t<decltype(std::declval<const T&>().heightAndSlope(
+                                  0.0, 0.0, std::declval<double&>(), std::declval<double&>()))>>
+      : std::true_type {};
+
+  template <typename HeightSource>
+  static void sampleOne(const HeightSource& terrain, double x, double y, double speed, double& u,
+                        double& rate) {
+    if constexpr (HasHeightAndSlope<HeightSource>::value) {
+      double slope = 0.0;
+      terrain.heightAndSlope(x, y, u, slope);
+      rate = speed * slope;
+    } else {
+      u = terrain.height(x, y);
+      rate = speed * terrain.slope(x, y);
+    }
+  }
+
   Vector x_;
   Vector y_;
 };

@@ -62,7 +62,14 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
                            const VehicleReductionOptions& options,
                            VehicleReductionReport* report = nullptr);
 
-/// Loads `cache_dir/<variant>_<hash>.mat` when it exists and matches the description's hash and
+/// The cache file of a reduced model: `cache_dir/<variant>_<description hash>.mat` for the
+/// default options, `cache_dir/<variant>_<description hash>_<options key>.mat` otherwise, the
+/// key a hash of every option, so models reduced with other options never share a file.
+std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant variant,
+                                  const std::string& description_hash,
+                                  const VehicleReductionOptions& options);
+
+/// Loads reducedModelCachePath() when it exists and matches the description's hash and
 /// the software version; otherwise runs reduceVehicle() and saves the result there (the cache
 /// directory is created). `report->from_cache` and `report->cache_note` say which happened.
 ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Variant variant,

@@ -25,6 +25,8 @@ class TerrainLines {
   /// h(x, y) [m] and dh/dx(x, y) [m/m], as Terrain::height() and slope().
   double height(double x, double y) const;
   double slope(double x, double y) const;
+  /// Both at once (one line and cell lookup): h = height(x, y), dhdx = slope(x, y).
+  void heightAndSlope(double x, double y, double& h, double& dhdx) const;
 
   /// Number of distinct lines.
   std::size_t lineCount() const { return lines_.size(); }

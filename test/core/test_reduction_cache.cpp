@@ -1,0 +1,68 @@
+// The reduced-model cache of loadOrReduceVehicle(): one file per description and reduction
+// options, so a model reduced with other options is never loaded in place of the one asked for.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include <unistd.h>
+
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+namespace tvd = tracked_vehicle_dynamics;
+using tvd::reduction::VehicleReductionOptions;
+
+namespace {
+const std::string kVehicle = std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
+}  // namespace
+
+TEST(ReductionCache, FileNameNamesVariantDescriptionAndOptions) {
+  const auto variant = tvd::vehicle::Variant::Untracked;
+  const std::string base = tvd::reduction::reducedModelCachePath("/c", variant, "abc", {});
+  EXPECT_EQ(base, "/c/untracked_abc.mat");
+  EXPECT_EQ(tvd::reduction::reducedModelCachePath("/c", tvd::vehicle::Variant::Tracked, "abc", {}),
+            "/c/tracked_abc.mat");
+  // Every option changes the name, each differently; the same options give the same name.
+  std::set<std::string> names = {base};
+  for (int which = 0; which < 6; ++which) {
+    VehicleReductionOptions o;
+    switch (which) {
+      case 0: o.rule = tvd::reduction::VehicleModeRule::Band; break;
+      case 1: o.global_modes = 41; break;
+      case 2: o.band_hz = 30.000001; break;
+      case 3: o.mac_threshold = 0.8; break;
+      case 4: o.mogesec_masters = 10; break;
+      default: o.mode_count = 30; break;
+    }
+    const std::string name = tvd::reduction::reducedModelCachePath("/c", variant, "abc", o);
+    EXPECT_EQ(name, tvd::reduction::reducedModelCachePath("/c", variant, "abc", o));
+    EXPECT_EQ(name.rfind("/c/untracked_abc_", 0), 0u) << name;
+    EXPECT_TRUE(names.insert(name).second) << "option " << which << " shares " << name;
+  }
+}
+
+// End to end: default options, then fewer MoGeSeC masters (another model, not the cached one),
+// then the same again (now from its own cache, equal to what was computed).
+TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("tvd_cache_test_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  const auto variant = tvd::vehicle::Variant::Untracked;
+  tvd::reduction::VehicleReductionReport first, second, third;
+  const auto defaults = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), {}, &first);
+  VehicleReductionOptions fewer;
+  fewer.mogesec_masters = 4;
+  const auto computed = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &second);
+  const auto cached = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
+  EXPECT_FALSE(first.from_cache);
+  EXPECT_FALSE(second.from_cache) << second.cache_note;
+  EXPECT_TRUE(third.from_cache) << third.cache_note;
+  EXPECT_NE(first.cache_file, second.cache_file);
+  EXPECT_EQ(second.cache_file, third.cache_file);
+  EXPECT_EQ(defaults.size() - computed.size(), 5);  // 9 MoGeSeC masters by default, now 4
+  EXPECT_EQ(cached.size(), computed.size());
+  EXPECT_EQ((cached.system.stiffness - computed.system.stiffness).cwiseAbs().maxCoeff(), 0.0);
+  std::filesystem::remove_all(dir);
+}
