@@ -29,6 +29,7 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
     }
   }
   held_.setZero(stations_.size());
+  lookups_.resize(static_cast<std::size_t>(stations_.size()));
   if (stations_.size() > 0) {
     rearmost_ = stations_.minCoeff();
     frontmost_ = stations_.maxCoeff();
@@ -38,6 +39,11 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
 int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double station, double speed,
                              double lateral_offset, Vector* w) {
   const Eigen::Index n = stations_.size();
+  if (&buffer != lookup_buffer_ || buffer.revision() != lookup_revision_) {
+    for (Lookup& lookup : lookups_) lookup.grid = nullptr;
+    lookup_buffer_ = &buffer;
+    lookup_revision_ = buffer.revision();
+  }
   // Contiguous coverage, computed once per call: inside it height() cannot throw.
   const double from = buffer.coveredFrom();
   const double until = buffer.coveredUntil();
@@ -48,7 +54,7 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
     const double y = lateral_(q) + lateral_offset;
     double rate = 0.0;
     if (covered(x)) {
-      held_(q) = buffer.height(x, y);
+      held_(q) = height(buffer, q, x, y);
       if (needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0) {
         const double xa = x - kSlopeStep, xb = x + kSlopeStep;
         const bool a = covered(xa), b = covered(xb);
@@ -67,6 +73,18 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
     (*w)(n + q) = rate;
   }
   return uncovered;
+}
+
+double RoadInputSampler::height(const terrain::TerrainBuffer& buffer, Eigen::Index q, double x,
+                                double y) {
+  Lookup& lookup = lookups_[static_cast<std::size_t>(q)];
+  if (lookup.grid == nullptr || !(x >= lookup.from && x <= lookup.until) || y != lookup.y) {
+    lookup.grid = std::isnan(y) ? nullptr : buffer.gridFor(x, &lookup.from, &lookup.until);
+    if (lookup.grid == nullptr) return buffer.height(x, y);  // bridged gap (or NaN)
+    lookup.y = y;
+    lookup.cell = lookup.grid->lateralCellOf(y);
+  }
+  return lookup.grid->height(x, lookup.cell);
 }
 
 void RoadInputSampler::setHeld(const Vector& heights) {

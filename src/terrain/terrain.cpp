@@ -108,11 +108,21 @@ void Terrain::lateralCell(double y, Eigen::Index* j, double* w) const {
   *w = (y - lateral_(*j)) / (lateral_(*j + 1) - lateral_(*j));
 }
 
+Terrain::LateralCell Terrain::lateralCellOf(double y) const {
+  LateralCell cell;
+  lateralCell(y, &cell.line, &cell.weight);
+  return cell;
+}
+
 double Terrain::height(double x, double y) const {
   if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
-  Eigen::Index j = 0;
-  double wy = 0.0;
-  lateralCell(y, &j, &wy);
+  return height(x, lateralCellOf(y));
+}
+
+double Terrain::height(double x, const LateralCell& cell) const {
+  if (std::isnan(x)) return std::numeric_limits<double>::quiet_NaN();
+  const Eigen::Index j = cell.line;
+  const double wy = cell.weight;
   const auto at = [&](Eigen::Index i) {
     return wy == 0.0 ? heights_(j, i) : (1.0 - wy) * heights_(j, i) + wy * heights_(j + 1, i);
   };

@@ -105,6 +105,29 @@ bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) co
   return gap <= kBridgeFactor * std::max((*left)->spacing, (*right)->spacing) * (1.0 + kSlack);
 }
 
+const Terrain* TerrainBuffer::gridFor(double x, double* from, double* until) const {
+  const Patch* winner = std::isnan(x) ? nullptr : containing(x);
+  if (winner == nullptr) return nullptr;
+  double lo = winner->grid.startStation();
+  double hi = winner->end();
+  // Newer patches overlapping the winner's range take over where they lie; none holds x (the
+  // winner is the newest that does), so each one trims the interval on one side of x.
+  const double reach = max_length_ * (1.0 + kSlack);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (auto it = patches_.lower_bound(lo - reach); it != patches_.end() && it->first <= hi; ++it) {
+    const Patch& patch = it->second;
+    if (patch.sequence <= winner->sequence || patch.end() < lo) continue;
+    if (patch.end() < x) {
+      lo = std::max(lo, std::nextafter(patch.end(), kInf));
+    } else if (patch.grid.startStation() > x) {
+      hi = std::min(hi, std::nextafter(patch.grid.startStation(), -kInf));
+    }
+  }
+  *from = lo;
+  *until = hi;
+  return &winner->grid;
+}
+
 bool TerrainBuffer::covers(double x) const {
   if (std::isnan(x)) return false;
   const Patch* left = nullptr;
@@ -186,6 +209,7 @@ void TerrainBuffer::clear() {
 }
 
 void TerrainBuffer::updateExtents() {
+  ++revision_;
   max_length_ = 0.0;
   max_spacing_ = 0.0;
   for (const auto& [start, patch] : patches_) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
@@ -581,6 +582,51 @@ TEST(TerrainBuffer, DropBehindFreesOldDataAndKeepsTheRest) {
   EXPECT_NEAR(buffer.height(2.95, 0.0), 0.295, kRoundoff);
   buffer.clear();
   EXPECT_TRUE(buffer.empty());
+}
+
+// gridFor(): the grid it returns answers exactly as height() everywhere in the interval it
+// gives (newer patches overlapping an older one cut the interval), and nothing outside patches.
+TEST(TerrainBuffer, GridForGivesTheAnsweringGridAndWhereItAnswers) {
+  TerrainBuffer buffer;
+  addPlane(&buffer, 0.0, 0.1, 30);  // 0 .. 2.9
+  Vector y(1);
+  y << 0.0;
+  buffer.addPatch(1.0, 0.1, y, Matrix::Constant(1, 5, 7.0));  // newer, 1.0 .. 1.4, inside
+  addPlane(&buffer, 3.0, 0.1, 10);                              // 3.0 .. 3.9 (bridged gap)
+  const std::uint64_t revision = buffer.revision();
+  double from = 0.0, until = 0.0;
+  const Terrain* grid = buffer.gridFor(0.5, &from, &until);
+  ASSERT_NE(grid, nullptr);
+  EXPECT_EQ(from, 0.0);
+  EXPECT_GT(until, 0.9);
+  EXPECT_LT(until, 1.0);  // the newer patch takes over at 1.0
+  EXPECT_EQ(buffer.gridFor(2.0, &from, &until), grid);
+  EXPECT_GT(from, 1.4);
+  EXPECT_LT(from, 1.5);
+  EXPECT_NEAR(until, 2.9, kRoundoff);
+  ASSERT_NE(buffer.gridFor(1.2, &from, &until), nullptr);
+  EXPECT_DOUBLE_EQ(buffer.gridFor(1.2, &from, &until)->height(1.2, 0.0), 7.0);
+  EXPECT_EQ(buffer.gridFor(2.95, &from, &until), nullptr);  // bridged gap: ask height()
+  EXPECT_EQ(buffer.gridFor(5.0, &from, &until), nullptr);   // not covered
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> station(-0.5, 4.5);
+  for (int k = 0; k < 500; ++k) {
+    const double x = station(rng);
+    const Terrain* g = buffer.gridFor(x, &from, &until);
+    if (g == nullptr) continue;
+    ASSERT_LE(from, x);
+    ASSERT_GE(until, x);
+    for (double t : {0.0, 0.37, 1.0}) {
+      const double xt = from + t * (until - from);
+      for (double yt : {-0.7, 0.0, 0.4}) {
+        const Terrain::LateralCell cell = g->lateralCellOf(yt);
+        EXPECT_EQ(g->height(xt, cell), buffer.height(xt, yt)) << "x " << x << " at " << xt;
+      }
+    }
+  }
+  EXPECT_EQ(buffer.revision(), revision);  // queries change nothing
+  buffer.dropBehind(0.2);
+  EXPECT_NE(buffer.revision(), revision);
 }
 
 TEST(TerrainBuffer, RejectsBadPatches) {

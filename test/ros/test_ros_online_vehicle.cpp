@@ -294,3 +294,47 @@ TEST(RoadInputSampler, SlopeIsTheCellSlopeAwayFromStations) {
   EXPECT_EQ(sampler.sample(buffer, 20.0, 4.0, 0.0, &w), 2);
   EXPECT_EQ(w(2), 0.0);
 }
+
+// The sampler remembers where each contact found its terrain (road_input_sampler.h); through
+// patches arriving, overlapping, dropped behind, gaps and a changing lateral offset its heights
+// stay those of the buffer itself, bit for bit.
+TEST(RoadInputSampler, RememberedLookupsGiveTheBuffersHeights) {
+  const terrain::Terrain t = bump();
+  Vector xq(5), yq(5);
+  xq << -2.0, -0.7, 0.0, 0.9, 2.1;
+  yq << 0.5, -0.5, 0.2, 0.5, -0.3;
+  RoadInputSampler sampler(xq, yq);
+  terrain::TerrainBuffer buffer;
+  Vector w(10);
+  const double spacing = t.spacing();
+  const Eigen::Index per_patch = 40;
+  Eigen::Index next = 0;  // first sample of the next patch to add
+  auto addNext = [&] {
+    const Eigen::Index count = std::min<Eigen::Index>(per_patch, t.stations().size() - next);
+    if (count <= 0) return;
+    buffer.addPatch(t.stations()(next), spacing, t.lateral(), t.heights().middleCols(next, count));
+    next += count;
+  };
+  for (int i = 0; i < 4; ++i) addNext();
+  long checked = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const double station = t.startStation() + 2.0 + 0.0013 * k;
+    const double offset = k < 1500 ? 0.25 : -0.1;
+    if (k % 97 == 0) addNext();
+    if (k % 211 == 0) buffer.dropBehind(station - 2.5);
+    if (k == 700) {  // a newer patch over part of the older ones
+      Vector y(1);
+      y << 0.0;
+      buffer.addPatch(station + 0.5, spacing, y, Matrix::Constant(1, 30, 0.3));
+    }
+    const int uncovered = sampler.sample(buffer, station, 0.0, offset, &w);
+    for (Eigen::Index q = 0; q < xq.size(); ++q) {
+      const double x = station + xq(q);
+      if (!buffer.covers(x)) continue;
+      ASSERT_EQ(w(q), buffer.height(x, yq(q) + offset)) << "contact " << q << " step " << k;
+      ++checked;
+    }
+    EXPECT_LE(uncovered, xq.size());
+  }
+  EXPECT_GT(checked, 10000);
+}

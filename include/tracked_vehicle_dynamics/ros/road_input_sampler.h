@@ -12,8 +12,14 @@
 //
 // A contact the buffer does not cover (no terrain yet, or a gap ahead) keeps its last height with
 // u' = 0 and is counted, so the state stays finite and the node can warn.
+//
+// Speed: at 1 kHz the same contacts are looked up again and again in the same patches. Each
+// contact remembers the patch grid that answered it, the station interval over which that grid
+// keeps answering (TerrainBuffer::gridFor) and its lateral cell, until the buffer changes
+// (TerrainBuffer::revision); the heights are the buffer's, bit for bit.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
@@ -49,12 +55,25 @@ class RoadInputSampler {
   double frontmost() const { return frontmost_; }
 
  private:
+  /// What contact q found last time (see the file comment).
+  struct Lookup {
+    const terrain::Terrain* grid = nullptr;  ///< nullptr: look up again
+    double from = 0.0, until = 0.0;          ///< stations where `grid` answers [m]
+    double y = 0.0;                          ///< lateral position of `cell` [m]
+    terrain::Terrain::LateralCell cell;
+  };
+  /// buffer.height(x, y), through the contact's Lookup when it still applies.
+  double height(const terrain::TerrainBuffer& buffer, Eigen::Index q, double x, double y);
+
   Vector stations_;
   Vector lateral_;
   std::vector<bool> needs_rate_;
   Vector held_;
   double rearmost_ = 0.0;
   double frontmost_ = 0.0;
+  std::vector<Lookup> lookups_;
+  const terrain::TerrainBuffer* lookup_buffer_ = nullptr;
+  std::uint64_t lookup_revision_ = 0;
 };
 
 }  // namespace ros_layer

@@ -26,6 +26,17 @@ class Terrain {
 
   /// Height at station x [m], lateral position y [m] -> [m]. NaN in either gives NaN.
   double height(double x, double y) const;
+
+  /// Where a lateral position falls between the lines: line j and weight w of line j + 1
+  /// (0 <= w <= 1, y clamped to the lines). For callers sampling one y many times.
+  struct LateralCell {
+    Eigen::Index line = 0;
+    double weight = 0.0;
+  };
+  LateralCell lateralCellOf(double y) const;
+  /// height(x, y) with y's lateral cell already found (by this terrain's lateralCellOf(y)):
+  /// the same value, bit for bit.
+  double height(double x, const LateralCell& cell) const;
   /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
   double slope(double x, double y) const;
   /// The longitudinal profile at lateral position y [m], one value per station [m].

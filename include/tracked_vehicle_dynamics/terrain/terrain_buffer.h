@@ -36,6 +36,14 @@ class TerrainBuffer {
   /// Height [m] at station x [m], lateral y [m]. Throws InputError when x is not covered.
   double height(double x, double y) const;
 
+  /// The patch grid answering height(x, ·) — its height(x, y) is this buffer's — and the
+  /// station interval [*from, *until] around x over which that grid keeps answering, as long as
+  /// revision() is unchanged. nullptr (interval unset) when x is in no patch (bridged gap or
+  /// not covered: ask height()). For callers sampling the same places at a high rate.
+  const Terrain* gridFor(double x, double* from, double* until) const;
+  /// Changes with every addPatch(), dropBehind() and clear(): pointers from gridFor() stay
+  /// valid, and its intervals exact, while it does not.
+  std::uint64_t revision() const { return revision_; }
   /// Frees data behind `station` [m]: patches ending before it are dropped and a patch straddling
   /// it is cut to its samples from the last one at or before `station`; queries at stations
   /// >= station keep their values.
@@ -67,6 +75,7 @@ class TerrainBuffer {
 
   PatchMap patches_;  // keyed by start station
   std::uint64_t next_sequence_ = 0;
+  std::uint64_t revision_ = 0;
   double max_length_ = 0.0;   // longest stored patch [m], bounds the backward search
   double max_spacing_ = 0.0;  // largest stored spacing [m]
 };
