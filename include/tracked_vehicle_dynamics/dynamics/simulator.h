@@ -12,7 +12,9 @@
 //   AugmentedExponential: dense Phi [2n x 2n] from discretize(); O(n^2) per step; any C.
 //   ModalDecoupled: q = Phi eta with mass-normalised modes; each mode an exact 2x2 discrete
 //     system (discrete_modes.h), modal forces p = Phi^T (K_u u + C_u u' + f_g) and outputs
-//     H Phi eta; O(n (n_w + n_y)) per step. Exact for proportional damping; for any other C it
+//     H Phi eta; O(n (n_w + n_y)) per step, less where few inputs change from one sample to the
+//     next (road inputs on flat terrain): the input terms are then updated by the changed inputs'
+//     columns only, exactly (simulator.cpp). Exact for proportional damping; for any other C it
 //     uses the modal damping approximation zeta_r = phi_r^T C phi_r / (2 omega_r)
 //     (maxOffDiagonalDampingRatio() reports the neglected coupling).
 //     Optionally truncated (max_mode_frequency_hz): modes above the cut-off respond
