@@ -223,10 +223,17 @@ ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Varia
                                  const std::string& cache_dir,
                                  const VehicleReductionOptions& options,
                                  VehicleReductionReport* report) {
+  return loadOrReduceVehicle(vehicle::loadVehicleDescription(vehicle_file), variant, cache_dir,
+                             options, report);
+}
+
+ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
+                                 vehicle::Variant variant, const std::string& cache_dir,
+                                 const VehicleReductionOptions& options,
+                                 VehicleReductionReport* report) {
   VehicleReductionReport local;
   VehicleReductionReport& rep = report ? *report : local;
   const auto start = Clock::now();
-  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(vehicle_file);
   const std::string hash = vehicle::descriptionHashHex(description);
   const std::filesystem::path path = reducedModelCachePath(cache_dir, variant, hash, options);
   rep.cache_file = path.string();

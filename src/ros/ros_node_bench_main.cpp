@@ -55,13 +55,13 @@ void printStats(const char* what, const rl::DurationStatistics& s) {
 int offline(const std::string& vehicle_file, const std::string& variant, const std::string& cache,
             const rl::TrackBagOptions& track, double rate, const std::string& method) {
   tvd::reduction::VehicleReductionReport report;
+  const tvd::vehicle::VehicleDescription description = tvd::vehicle::loadVehicleDescription(vehicle_file);
   const auto model = tvd::reduction::loadOrReduceVehicle(
-      vehicle_file, tvd::vehicle::parseVariant(variant), cache, {}, &report);
+      description, tvd::vehicle::parseVariant(variant), cache, {}, &report);
   rl::OnlineVehicleOptions options;
   options.rate = rate;
   options.method = rl::parseMethod(method, "--method");
-  rl::OnlineVehicle vehicle(
-      model, rl::vehicleGeometry(tvd::vehicle::loadVehicleDescription(vehicle_file)), options);
+  rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
   std::printf("model: %s %s, %ld DOFs, %ld road inputs, %ld outputs, method %s, %.0f Hz\n",
               vehicle_file.c_str(), variant.c_str(), static_cast<long>(model.size()),
               static_cast<long>(model.system.inputCount()),

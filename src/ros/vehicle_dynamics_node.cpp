@@ -88,10 +88,11 @@ void VehicleDynamicsNode::loadVehicle() {
   const auto start = Clock::now();
   const std::string vehicle_param = private_nh_.resolveName("vehicle");
   try {
-    const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
-        params_.vehicle, params_.variant, params_.cache_dir, params_.reduction_options, &report_);
+    // Parsed once: the reduction and the frames come from the same description.
     const vehicle::VehicleDescription description =
         vehicle::loadVehicleDescription(params_.vehicle);
+    const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
+        description, params_.variant, params_.cache_dir, params_.reduction_options, &report_);
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
                                                params_.vehicle_options);
     model_dofs_ = model.size();

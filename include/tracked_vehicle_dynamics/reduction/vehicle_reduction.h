@@ -76,6 +76,12 @@ ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Varia
                                  const std::string& cache_dir,
                                  const VehicleReductionOptions& options = {},
                                  VehicleReductionReport* report = nullptr);
+/// The same on a description already loaded (callers that also need its geometry parse the
+/// file once).
+ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
+                                 vehicle::Variant variant, const std::string& cache_dir,
+                                 const VehicleReductionOptions& options = {},
+                                 VehicleReductionReport* report = nullptr);
 
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics
