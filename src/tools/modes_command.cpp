@@ -17,6 +17,8 @@ namespace tools {
 
 namespace {
 
+constexpr double kRadToDegree = 57.29577951308232;
+
 struct ModesOptions {
   std::string model_file;
   std::string vehicle_file;
@@ -102,11 +104,13 @@ void runVehicle(const ModesOptions& opt) {
         .key("static")
         .beginObject()
         .field("hull_sag_m", a.statics.hull_sag)
-        .field("hull_pitch_deg", a.statics.hull_pitch_deg)
+        .field("hull_pitch_deg", a.statics.hull_pitch * kRadToDegree)
+        .field("hull_roll_deg", a.statics.hull_roll * kRadToDegree)
         .field("weight_n", a.statics.weight)
         .field("ground_reaction_sum_n", a.statics.ground_reaction)
-        .field("relative_balance_error",
-               std::abs(a.statics.ground_reaction - a.statics.weight) / a.statics.weight)
+        .field("relative_balance_error", a.statics.balanceError())
+        .field("road_wheel_loads_n", Vector(Eigen::Map<const Vector>(a.statics.wheel_loads.data(),
+                                                             static_cast<Eigen::Index>(a.statics.wheel_loads.size()))))
         .endObject();
     json.endObject();
     return;
@@ -114,7 +118,7 @@ void runVehicle(const ModesOptions& opt) {
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
              a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
   std::cout << "\nstatic equilibrium under gravity: hull sag " << std::setprecision(4)
-            << a.statics.hull_sag * 1000.0 << " mm, pitch " << a.statics.hull_pitch_deg
+            << a.statics.hull_sag * 1000.0 << " mm, pitch " << a.statics.hull_pitch * kRadToDegree
             << " deg; ground reactions " << std::setprecision(1) << a.statics.ground_reaction
             << " N = weight " << a.statics.weight << " N\n";
 }

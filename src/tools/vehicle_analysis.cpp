@@ -3,13 +3,11 @@
 #include <chrono>
 #include <cmath>
 
-#include "tracked_vehicle_dynamics/fem/static_solver.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
 namespace {
-constexpr double kRadToDeg = 57.29577951308232;
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
@@ -22,16 +20,8 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   a.build_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
   const auto t1 = Clock::now();
-  const fem::StaticResult st = fem::solveStatic(a.system, a.system.gravity_load);
-  const NodeId hull = a.vehicle.layout.hull;
-  a.statics.hull_sag = fem::physicalDisplacement(a.system, st.displacement, hull, 2);
-  a.statics.hull_pitch_deg = fem::physicalDisplacement(a.system, st.displacement, hull, 4) * kRadToDeg;
-  // The vertical force of ground spring q on the structure is -K_u,q^T x (spring_element.h);
-  // in equilibrium their sum balances the weight.
-  const Vector spring_forces = a.system.input_stiffness.transpose() * st.displacement;
-  a.statics.ground_reaction = -spring_forces.sum();
-  a.statics.weight = a.vehicle.model.totalMass() * std::abs(a.vehicle.model.gravity.z());
-  a.statics.seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+  a.statics = vehicle::computeStaticSummary(a.vehicle, a.system);
+  a.statics_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
 
   fem::ModalRequest request;
   request.count = count;

@@ -7,27 +7,20 @@
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
+#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// Static equilibrium under gravity.
-struct GravityStatics {
-  double hull_sag = 0.0;             ///< hull CoG vertical displacement [m] (negative down)
-  double hull_pitch_deg = 0.0;       ///< [deg], positive nose down (REP-103 ry)
-  double weight = 0.0;               ///< m g [N]
-  double ground_reaction = 0.0;      ///< sum of the vertical ground-spring forces [N]
-  double seconds = 0.0;
-};
-
 struct VehicleAnalysis {
   vehicle::VehicleModel vehicle;
   fem::System system;
   fem::ModalBasis modes;
   std::vector<vehicle::ModeClass> classes;
-  GravityStatics statics;
+  vehicle::StaticSummary statics;  ///< equilibrium under gravity
+  double statics_seconds = 0.0;
   double build_seconds = 0.0;  ///< vehicle build + assembly [s]
 };
 
