@@ -6,17 +6,16 @@ Needs no C++ build: the inputs are written here in the formats of `tvd mac --out
     /usr/bin/python3 test/scripts/test_plot_scripts.py [--xml OUTDIR/plot_scripts.xml] [TEST ...]
 --xml writes a JUnit-style report (one <testcase> per test method); the exit status is 1 on failure.
 """
-import argparse
 import os
 import subprocess
 import sys
 import tempfile
-import time
 import unittest
-import xml.etree.ElementTree as ET
 
 import numpy as np
 import scipy.io
+
+import junit_runner
 
 SCRIPTS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                         "scripts"))
@@ -259,71 +258,5 @@ class PlotScriptsTest(unittest.TestCase):
         self.assert_input_error(result, out, self.path("none.csv"))
 
 
-class RecordingResult(unittest.TextTestResult):
-    """Keeps (test id, outcome, message, seconds) of every test for the XML report."""
-
-    def __init__(self, *args, **kwargs):
-        super().__init__(*args, **kwargs)
-        self.records = []
-        self.started = time.monotonic()
-
-    def startTest(self, test):
-        self.started = time.monotonic()
-        super().startTest(test)
-
-    def record(self, test, outcome, message=""):
-        self.records.append((test.id(), outcome, message, time.monotonic() - self.started))
-
-    def addSuccess(self, test):
-        super().addSuccess(test)
-        self.record(test, None)
-
-    def addFailure(self, test, err):
-        super().addFailure(test, err)
-        self.record(test, "failure", self._exc_info_to_string(err, test))
-
-    def addError(self, test, err):
-        super().addError(test, err)
-        self.record(test, "error", self._exc_info_to_string(err, test))
-
-    def addSkip(self, test, reason):
-        super().addSkip(test, reason)
-        self.record(test, "skipped", reason)
-
-
-def write_junit_xml(path, records, seconds):
-    suite = ET.Element("testsuite", name="plot_scripts", tests=str(len(records)),
-                       failures=str(sum(r[1] == "failure" for r in records)),
-                       errors=str(sum(r[1] == "error" for r in records)),
-                       skipped=str(sum(r[1] == "skipped" for r in records)), time=f"{seconds:.3f}")
-    for test_id, outcome, message, duration in records:
-        classname, _, name = test_id.rpartition(".")
-        classname = classname.replace("__main__", "plot_scripts", 1)
-        case = ET.SubElement(suite, "testcase", classname=classname, name=name,
-                             time=f"{duration:.3f}")
-        if outcome:
-            element = ET.SubElement(case, outcome, message=message.strip().splitlines()[-1]
-                                    if message.strip() else outcome)
-            element.text = message
-    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
-    ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
-
-
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--xml", help="write a JUnit-style XML report to this file")
-    parser.add_argument("tests", nargs="*", help="test method names (default: all)")
-    args = parser.parse_args()
-    loader = unittest.defaultTestLoader
-    suite = (loader.loadTestsFromNames([f"PlotScriptsTest.{t}" for t in args.tests],
-                                       sys.modules[__name__])
-             if args.tests else loader.loadTestsFromTestCase(PlotScriptsTest))
-    start = time.monotonic()
-    result = unittest.TextTestRunner(resultclass=RecordingResult, verbosity=2).run(suite)
-    if args.xml:
-        write_junit_xml(args.xml, result.records, time.monotonic() - start)
-    return 0 if result.wasSuccessful() else 1
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(junit_runner.main(PlotScriptsTest, "plot_scripts", __doc__))

@@ -1,0 +1,183 @@
+#!/usr/bin/python3
+"""End-to-end tests of the `tvd` command line on the bundled vehicle (un-tracked variant: fast).
+
+What an engineer scripts against: the JSON fields and files each subcommand promises, their
+consistency with each other (CSV vs JSON, .mat vs JSON), closed-form checks (weight = m g, ground
+reactions = weight, the hill's height), and one clear error with exit status 2 for bad input.
+Run as
+    /usr/bin/python3 test/scripts/test_tvd_cli.py --tvd PATH/TO/tvd [--xml OUTDIR/tvd_cli.xml]
+"""
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+import scipy.io
+
+import junit_runner
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+VEHICLE = os.path.join(ROOT, "config", "vehicles", "paper_vehicle.yaml")
+GRAVITY = 9.80665  # [m/s^2], the description's gravity
+INPUT_ERROR_STATUS = 2
+TVD = None  # set from --tvd
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], np.array(rows[1:], dtype=float)
+    return header, body
+
+
+class TvdCliTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="tvd_cli_")
+        cls.cache = os.path.join(cls.work, "cache")
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def path(self, name):
+        return os.path.join(self.work, name)
+
+    def tvd(self, *args, status=0):
+        result = subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240)
+        self.assertEqual(result.returncode, status,
+                         f"tvd {' '.join(args)}\nstdout: {result.stdout[-2000:]}\n"
+                         f"stderr: {result.stderr[-2000:]}")
+        return result
+
+    def tvd_json(self, *args):
+        return json.loads(self.tvd(*args, "--json").stdout)
+
+    def test_modes_json_and_statics(self):
+        count = 12
+        d = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "untracked",
+                          "--count", str(count), "--out", self.path("modes"))
+        for key in ("frequencies_hz", "mode_types", "active_dofs", "mass_kg", "solve_seconds",
+                    "static"):
+            self.assertIn(key, d)
+        f = np.array(d["frequencies_hz"])
+        self.assertEqual(len(f), count)
+        self.assertEqual(len(d["mode_types"]), count)
+        self.assertGreater(f[0], 0.0)  # on its ground springs: no rigid-body mode
+        self.assertTrue(np.all(np.diff(f) >= 0.0))
+        s = d["static"]
+        # Weight = m g; the ground carries all of it; the hull sinks.
+        self.assertAlmostEqual(s["weight_n"] / (d["mass_kg"] * GRAVITY), 1.0, delta=1e-9)
+        self.assertLess(abs(s["ground_reaction_sum_n"] - s["weight_n"]) / s["weight_n"], 1e-6)
+        self.assertLess(s["relative_balance_error"], 1e-6)
+        self.assertLess(s["hull_sag_m"], 0.0)
+        wheels = np.array(s["road_wheel_loads_n"])
+        self.assertEqual(len(wheels), 14)
+        self.assertTrue(np.all(wheels > 0.0))
+        self.assertLess(wheels.sum(), s["weight_n"])  # the wheels carry the hull, not themselves
+        # --out: the same frequencies in the .mat file.
+        mats = [n for n in os.listdir(self.path("modes")) if n.endswith(".mat")]
+        self.assertTrue(mats, os.listdir(self.path("modes")))
+        m = scipy.io.loadmat(os.path.join(self.path("modes"), mats[0]))
+        stored = [k for k in m if "freq" in k]
+        self.assertTrue(stored, sorted(m))
+        np.testing.assert_allclose(np.ravel(m[stored[0]])[:count], f, rtol=1e-9)
+
+    def test_reduce_json_and_mat(self):
+        out = self.path("untracked.mat")
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", out)
+        for key in ("full_dofs", "interface_dofs", "mogesec_dofs", "flexible_modes",
+                    "reduced_dofs", "reduce_seconds"):
+            self.assertIn(key, d)
+        self.assertLess(d["reduced_dofs"], d["full_dofs"])
+        self.assertEqual(d["mogesec_dofs"], 9)  # paper Table 5
+        self.assertLess(d["max_relative_frequency_error"], 0.02)  # paper: 2 % at worst
+        m = scipy.io.loadmat(out)
+        self.assertEqual(str(np.ravel(m["description_hash"])[0]), d["description_hash"])
+        n = d["reduced_dofs"]
+        for name in ("M_R", "K_R", "C_R"):
+            self.assertEqual(m[name].shape, (n, n), name)
+            np.testing.assert_allclose(m[name], m[name].T, rtol=0, atol=1e-9 * abs(m[name]).max())
+        self.assertGreater(np.linalg.eigvalsh(m["M_R"]).min(), 0.0)
+
+    def test_simulate_json_and_csv_agree(self):
+        speed_kmh = 50.0
+        out = self.path("hill.csv")
+        d = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          "long_hill", "--speed-kmh", str(speed_kmh), "--cache-dir", self.cache,
+                          "--out", out)
+        for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg",
+                    "peak_roll_deg", "peak_wheel_displacement_m", "comfort", "simulated_seconds",
+                    "wall_seconds"):
+            self.assertIn(key, d)
+        header, rows = read_csv(out)
+        self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
+                                      "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
+        self.assertEqual(len(header), 6 + 14)
+        # 30 m at 50 km/h in 1 ms steps, plus the initial sample.
+        self.assertEqual(len(rows), round(30.0 / (speed_kmh / 3.6) / 1e-3) + 1)
+        self.assertAlmostEqual(rows[-1, 0], d["simulated_seconds"], places=9)
+        column = {name: rows[:, i] for i, name in enumerate(header)}
+        self.assertAlmostEqual(np.abs(column["hull_heave_m"]).max(), d["peak_hull_heave_m"], places=7)
+        self.assertAlmostEqual(np.abs(column["hull_pitch_deg"]).max(), d["peak_pitch_deg"], places=6)
+        # The hull climbs the 0.4 m hill (with some overshoot at 50 km/h); no roll on a hill
+        # that spans the whole width.
+        self.assertGreater(d["peak_hull_heave_m"], 0.35)
+        self.assertLess(d["peak_hull_heave_m"], 0.6)
+        self.assertLess(d["peak_roll_deg"], 1e-3)
+        self.assertGreater(d["comfort"]["weighted_rms_m_s2"], 0.0)
+
+    def test_frf_csv_columns_and_grid(self):
+        out = self.path("frf.csv")
+        d = self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
+                          self.cache, "--speed-kmh", "30", "--out", out)
+        header, rows = read_csv(out)
+        expected = ["frequency_hz"]
+        for name in ("hull_vertical_acc", "hull_pitch_acc", "front_wheel_acc", "rear_wheel_acc"):
+            expected += [name + "_mag", name + "_phase_deg"]
+        self.assertEqual(header, expected)
+        np.testing.assert_allclose(rows[:, 0], np.arange(len(rows)) * 0.05, atol=1e-9)
+        self.assertAlmostEqual(rows[-1, 0], 50.0, places=9)
+        self.assertEqual(len(d["outputs"]), 4)
+        self.assertTrue(np.all(rows[:, 1::2] >= 0.0))  # magnitudes
+        self.assertTrue(np.all(np.abs(rows[:, 2::2]) <= 180.0 + 1e-9))  # phases [deg]
+        # The hull's vertical-acceleration peak in the JSON is the CSV's.
+        self.assertAlmostEqual(rows[:, 1].max() / d["outputs"][0]["peak_magnitude"], 1.0, places=6)
+
+    def assert_input_error(self, args, *words):
+        result = self.tvd(*args, status=INPUT_ERROR_STATUS)
+        message = result.stderr + result.stdout
+        for word in words:
+            self.assertIn(word, message)
+        self.assertNotIn("Traceback", message)
+        self.assertNotIn("terminate called", message)
+
+    def test_bad_input_is_named(self):
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--track", "long_hill", "--speed-kmh", "-5"], "--speed-kmh", "-5")
+        self.assert_input_error(["modes", "--vehicle", self.path("none.yaml")], "none.yaml")
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "0"], "--count")
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--track", "moon_craters",
+                                 "--speed-kmh", "10", "--cache-dir", self.cache], "moon_craters")
+        truncated = self.path("truncated.yaml")
+        with open(VEHICLE) as f, open(truncated, "w") as g:
+            g.writelines(f.readlines()[:30])
+        self.assert_input_error(["modes", "--vehicle", truncated], "required key is missing")
+
+
+def configure(parser):
+    parser.add_argument("--tvd", required=True, help="path of the built tvd executable")
+
+    def apply(args):
+        global TVD
+        TVD = os.path.abspath(args.tvd)
+    return apply
+
+
+if __name__ == "__main__":
+    sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__, configure=configure))
