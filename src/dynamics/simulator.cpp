@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -295,37 +296,67 @@ class ModalEngine : public SimulatorEngine {
       return outputs;
     setInput(inputs.row(0).transpose());
     outputs.row(0) = y_.transpose();
+    // The input changes of every block, found input by input in one streaming pass over the
+    // column-major series (each input's samples are contiguous). A block where more than
+    // 1/kDenseFraction of the inputs change, or one changes to or from a non-finite value (it
+    // must not leak into later samples through the sums), takes the dense product instead.
+    struct Change {
+      DofIndex step;   // sample index in the series
+      DofIndex input;  // column of input_map_
+      double delta;
+    };
+    const DofIndex n_blocks = (n_t - 1 + kBlock - 1) / kBlock;
+    std::vector<std::vector<Change>> changes(static_cast<std::size_t>(n_blocks));
+    std::vector<char> dense(static_cast<std::size_t>(n_blocks), 0);
+    // Runs of identical samples (flat terrain) are skipped a chunk at a time: bitwise-equal
+    // samples are equal values (a NaN that stays NaN is NaN in the block's anchor anyway).
+    constexpr DofIndex kChunk = 32;
+    for (DofIndex j = 0; j < m; ++j) {
+      const double* column = inputs.data() + active_inputs_[static_cast<std::size_t>(j)] * n_t;
+      for (DofIndex k0 = 1; k0 < n_t; k0 += kChunk) {
+        const DofIndex len = std::min(kChunk, n_t - k0);
+        if (std::memcmp(column + k0, column + k0 - 1, static_cast<std::size_t>(len) * sizeof(double)) == 0)
+          continue;
+        for (DofIndex k = k0; k < k0 + len; ++k) {
+          const double delta = column[k] - column[k - 1];
+          if (delta == 0.0)
+            continue;
+          const auto block = static_cast<std::size_t>((k - 1) / kBlock);
+          if (dense[block])
+            continue;
+          const DofIndex b = std::min(kBlock, n_t - 1 - static_cast<DofIndex>(block) * kBlock);
+          std::vector<Change>& list = changes[block];
+          list.push_back({k, j, delta});
+          if (!std::isfinite(delta) ||
+              static_cast<DofIndex>(list.size()) * kDenseFraction > m * b) {
+            dense[block] = 1;
+            std::vector<Change>().swap(list);
+          }
+        }
+      }
+    }
     Matrix terms(input_map_.rows(), kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
+    const DofIndex g_rows = input_map_.rows();
     for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
       const DofIndex b = std::min(kBlock, n_t - k0);
+      const auto block = static_cast<std::size_t>((k0 - 1) / kBlock);
       // g at sample k0 - 1 (exact), then g_k = g_{k-1} + G dw_k inside the block.
       for (DofIndex j = 0; j < m; ++j)
         active_input_(j) = inputs(k0 - 1, active_inputs_[static_cast<std::size_t>(j)]);
       anchorInputTerms();
       p_ = input_terms_.head(n);
-      terms.leftCols(b).setZero();
-      DofIndex changed = 0;
-      const DofIndex g_rows = input_map_.rows();
-      for (DofIndex j = 0; j < m && changed * kDenseFraction <= m * b; ++j) {
-        // Column-major storage: input j's samples k0 - 1 .. k0 + b - 1 are contiguous.
-        const double* column =
-            inputs.data() + active_inputs_[static_cast<std::size_t>(j)] * inputs.rows() + k0 - 1;
-        const double* g = input_map_.col(j).data();
-        for (DofIndex k = 0; k < b; ++k) {
-          const double delta = column[k + 1] - column[k];
-          if (delta == 0.0)
-            continue;
-          double* t = terms.col(k).data();
-          for (DofIndex i = 0; i < g_rows; ++i)
-            t[i] += g[i] * delta;
-          // A non-finite input must not leak into later samples through the sums.
-          changed += std::isfinite(delta) ? 1 : m * b;
-        }
-      }
-      if (changed * kDenseFraction > m * b) {
+      if (dense[block]) {
         terms.leftCols(b).noalias() =
             input_map_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
       } else {
+        terms.leftCols(b).setZero();
+        for (const Change& c : changes[block]) {
+          const double* g = input_map_.col(c.input).data();
+          double* t = terms.col(c.step - k0).data();
+          for (DofIndex i = 0; i < g_rows; ++i)
+            t[i] += g[i] * c.delta;
+        }
+        std::vector<Change>().swap(changes[block]);
         terms.col(0) += input_terms_;
         for (DofIndex k = 1; k < b; ++k)
           terms.col(k) += terms.col(k - 1);
