@@ -134,7 +134,7 @@ class DenseEngine : public SimulatorEngine {
 // with p = Psi w, Psi = [Phi^T K_u, Phi^T C_u], p_g = Phi^T f_g (constant: exact for both holds).
 // Outputs: H Phi eta, H Phi eta', H Phi eta'' with eta'' = p + p_g - omega^2 eta - d eta'.
 //
-// Everything the road inputs drive is one linear map of w, stacked as G (see InputTerms):
+// Everything the road inputs drive is one linear map of w, stacked as G (input_map_):
 //   g = G w = [p; y_t; y_t'],  y_t, y_t' the quasi-static output terms (constructor).
 // G has (modes + outputs) x inputs entries, so g = G w is most of the work of a step. A road input
 // changes only where the terrain under its contact is not flat, so g is updated by increments,
@@ -251,8 +251,7 @@ class ModalEngine : public SimulatorEngine {
 
   void setInput(const Vector& input) override {
     w_ = input;
-    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
-      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
+    gatherActive(input);
     anchorInputTerms();
     p_ = input_terms_.head(p_.size());
     updateOutputs();
@@ -336,13 +335,11 @@ class ModalEngine : public SimulatorEngine {
       }
     }
     Matrix terms(input_map_.rows(), kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
-    const DofIndex g_rows = input_map_.rows();
     for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
       const DofIndex b = std::min(kBlock, n_t - k0);
       const auto block = static_cast<std::size_t>((k0 - 1) / kBlock);
       // g at sample k0 - 1 (exact), then g_k = g_{k-1} + G dw_k inside the block.
-      for (DofIndex j = 0; j < m; ++j)
-        active_input_(j) = inputs(k0 - 1, active_inputs_[static_cast<std::size_t>(j)]);
+      gatherActive(inputs.row(k0 - 1));
       anchorInputTerms();
       p_ = input_terms_.head(n);
       if (dense[block]) {
@@ -350,12 +347,8 @@ class ModalEngine : public SimulatorEngine {
             input_map_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
       } else {
         terms.leftCols(b).setZero();
-        for (const Change& c : changes[block]) {
-          const double* g = input_map_.col(c.input).data();
-          double* t = terms.col(c.step - k0).data();
-          for (DofIndex i = 0; i < g_rows; ++i)
-            t[i] += g[i] * c.delta;
-        }
+        for (const Change& c : changes[block])
+          addInputColumn(c.input, c.delta, terms.col(c.step - k0).data());
         std::vector<Change>().swap(changes[block]);
         terms.col(0) += input_terms_;
         for (DofIndex k = 1; k < b; ++k)
@@ -408,6 +401,20 @@ class ModalEngine : public SimulatorEngine {
   /// a blocked matrix product, is then the faster one).
   static constexpr DofIndex kDenseFraction = 8;
 
+  // active_input_ = the active columns of w (any vector or row expression of w).
+  template <typename Row>
+  void gatherActive(const Row& input) {
+    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
+      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
+  }
+
+  // terms += G(:, j) delta, over all rows of G.
+  void addInputColumn(DofIndex j, double delta, double* terms) const {
+    const double* g = input_map_.col(j).data();
+    for (DofIndex i = 0; i < input_map_.rows(); ++i)
+      terms[i] += g[i] * delta;
+  }
+
   void anchorInputTerms() {
     input_terms_.noalias() = input_map_ * active_input_;
     steps_since_anchor_ = 0;
@@ -434,7 +441,7 @@ class ModalEngine : public SimulatorEngine {
       return;
     }
     for (const auto& [j, delta] : changes_)
-      input_terms_.noalias() += input_map_.col(j) * delta;
+      addInputColumn(j, delta, input_terms_.data());
   }
 
   // One step of every mode; eta_dot_out may alias eta_dot (coefficient-wise).

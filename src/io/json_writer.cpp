@@ -87,6 +87,12 @@ JsonWriter& JsonWriter::value(const Vector& v) {
   return endArray();
 }
 
+JsonWriter& JsonWriter::value(const std::vector<double>& v) {
+  beginArray();
+  for (const double x : v) value(x);
+  return endArray();
+}
+
 JsonWriter& JsonWriter::value(const Matrix& m) {
   beginArray();
   for (Eigen::Index i = 0; i < m.rows(); ++i) value(Vector(m.row(i).transpose()));

@@ -192,26 +192,27 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   return reduced;
 }
 
+namespace {
+
+/// Every reduction option at full precision (%a: every bit of the doubles).
+std::string optionsText(const VehicleReductionOptions& o) {
+  char text[160];
+  std::snprintf(text, sizeof(text), "%d %d %a %a %d %d", static_cast<int>(o.rule), o.global_modes,
+                o.band_hz, o.mac_threshold, o.mogesec_masters, o.mode_count);
+  return text;
+}
+
+}  // namespace
+
 std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant variant,
                                   const std::string& description_hash,
                                   const VehicleReductionOptions& options) {
   std::string name = std::string(vehicle::variantName(variant)) + "_" + description_hash;
-  const VehicleReductionOptions defaults;
-  const bool is_default = options.rule == defaults.rule &&
-                          options.global_modes == defaults.global_modes &&
-                          options.band_hz == defaults.band_hz &&
-                          options.mac_threshold == defaults.mac_threshold &&
-                          options.mogesec_masters == defaults.mogesec_masters &&
-                          options.mode_count == defaults.mode_count;
-  if (!is_default) {
-    // FNV-1a of the options' exact values (%a: every bit of the doubles).
-    char text[160];
-    std::snprintf(text, sizeof(text), "%d %d %a %a %d %d", static_cast<int>(options.rule),
-                  options.global_modes, options.band_hz, options.mac_threshold,
-                  options.mogesec_masters, options.mode_count);
-    std::uint64_t key = 14695981039346656037ull;
-    for (const char* c = text; *c != '\0'; ++c)
-      key = (key ^ static_cast<unsigned char>(*c)) * 1099511628211ull;
+  const std::string text = optionsText(options);
+  if (text != optionsText(VehicleReductionOptions{})) {
+    std::uint64_t key = 14695981039346656037ull;  // FNV-1a
+    for (const char c : text)
+      key = (key ^ static_cast<unsigned char>(c)) * 1099511628211ull;
     char hex[17];
     std::snprintf(hex, sizeof(hex), "%08llx", static_cast<unsigned long long>(key >> 32));
     name += std::string("_") + hex;

@@ -115,7 +115,7 @@ Terrain::LateralCell Terrain::lateralCellOf(double y) const {
 }
 
 double Terrain::height(double x, double y) const {
-  if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
   return height(x, lateralCellOf(y));
 }
 

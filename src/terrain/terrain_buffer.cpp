@@ -1,6 +1,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -209,7 +210,10 @@ void TerrainBuffer::clear() {
 }
 
 void TerrainBuffer::updateExtents() {
-  ++revision_;
+  // Unique across all buffers, so a grid remembered from one buffer (or from an earlier buffer
+  // at the same address) never passes for another's.
+  static std::atomic<std::uint64_t> next_revision{1};
+  revision_ = next_revision.fetch_add(1, std::memory_order_relaxed);
   max_length_ = 0.0;
   max_spacing_ = 0.0;
   for (const auto& [start, patch] : patches_) {

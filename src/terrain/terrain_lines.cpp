@@ -48,19 +48,15 @@ Eigen::Index TerrainLines::cell(double x) const {
 }
 
 double TerrainLines::height(double x, double y) const {
-  const Line* line = find(y);
-  if (line == nullptr || std::isnan(x)) return terrain_.height(x, y);
-  if (x <= x0_) return line->heights(0);
-  if (x >= x_end_) return line->heights(line->heights.size() - 1);
-  const Eigen::Index i = cell(x);
-  return line->heights(i) + (x - terrain_.stations()(i)) * line->slopes(i);
+  double h = 0.0, dhdx = 0.0;
+  heightAndSlope(x, y, h, dhdx);
+  return h;
 }
 
 double TerrainLines::slope(double x, double y) const {
-  const Line* line = find(y);
-  if (line == nullptr || std::isnan(x)) return terrain_.slope(x, y);
-  if (line->slopes.size() == 0 || x < x0_ || x >= x_end_) return 0.0;
-  return line->slopes(cell(x));
+  double h = 0.0, dhdx = 0.0;
+  heightAndSlope(x, y, h, dhdx);
+  return dhdx;
 }
 
 void TerrainLines::heightAndSlope(double x, double y, double& h, double& dhdx) const {

@@ -109,8 +109,7 @@ void runVehicle(const ModesOptions& opt) {
         .field("weight_n", a.statics.weight)
         .field("ground_reaction_sum_n", a.statics.ground_reaction)
         .field("relative_balance_error", a.statics.balanceError())
-        .field("road_wheel_loads_n", Vector(Eigen::Map<const Vector>(a.statics.wheel_loads.data(),
-                                                             static_cast<Eigen::Index>(a.statics.wheel_loads.size()))))
+        .field("road_wheel_loads_n", a.statics.wheel_loads)
         .endObject();
     json.endObject();
     return;

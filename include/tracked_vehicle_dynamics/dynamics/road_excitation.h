@@ -10,8 +10,6 @@
 
 #include <cmath>
 #include <string>
-#include <type_traits>
-#include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/types.h"
@@ -34,8 +32,8 @@ class RoadExcitation {
 
   DofIndex inputCount() const { return x_.size(); }
   /// w = [u; u'] [2 n_inputs] into `w` (resized once) at station s [m] and speed v [m/s].
-  /// `terrain` is any height source with height(x, y) and slope(x, y) [m, -]; one that also has
-  /// heightAndSlope(x, y, h, dhdx) (e.g. TerrainLines) is asked once per input instead of twice.
+  /// `terrain` is any height source with heightAndSlope(x, y, h, dhdx) [m, -] (Terrain,
+  /// TerrainLines).
   template <typename HeightSource>
   void sample(const HeightSource& terrain, double station, double speed, Vector& w) const {
     const DofIndex n = x_.size();
@@ -68,24 +66,12 @@ class RoadExcitation {
   const Vector& inputY() const { return y_; }  ///< including the lateral offset
 
  private:
-  template <typename T, typename = void>
-  struct HasHeightAndSlope : std::false_type {};
-  template <typename T>
-  struct HasHeightAndSlope<T, std::void_t<decltype(std::declval<const T&>().heightAndSlope(
-                                  0.0, 0.0, std::declval<double&>(), std::declval<double&>()))>>
-      : std::true_type {};
-
   template <typename HeightSource>
   static void sampleOne(const HeightSource& terrain, double x, double y, double speed, double& u,
                         double& rate) {
-    if constexpr (HasHeightAndSlope<HeightSource>::value) {
-      double slope = 0.0;
-      terrain.heightAndSlope(x, y, u, slope);
-      rate = speed * slope;
-    } else {
-      u = terrain.height(x, y);
-      rate = speed * terrain.slope(x, y);
-    }
+    double slope = 0.0;
+    terrain.heightAndSlope(x, y, u, slope);
+    rate = speed * slope;
   }
 
   Vector x_;

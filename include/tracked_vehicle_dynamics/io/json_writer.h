@@ -28,6 +28,7 @@ class JsonWriter {
   JsonWriter& value(const std::string& v);
   JsonWriter& value(const char* v) { return value(std::string(v)); }
   JsonWriter& value(const Vector& v);
+  JsonWriter& value(const std::vector<double>& v);
   JsonWriter& value(const Matrix& m);  ///< array of rows
   JsonWriter& value(const std::vector<std::string>& v);
   template <typename T>

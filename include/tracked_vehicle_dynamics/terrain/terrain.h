@@ -39,6 +39,11 @@ class Terrain {
   double height(double x, const LateralCell& cell) const;
   /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
   double slope(double x, double y) const;
+  /// Both: h = height(x, y), dhdx = slope(x, y) (the interface RoadExcitation samples).
+  void heightAndSlope(double x, double y, double& h, double& dhdx) const {
+    h = height(x, y);
+    dhdx = slope(x, y);
+  }
   /// The longitudinal profile at lateral position y [m], one value per station [m].
   Vector profile(double y) const;
 

@@ -41,8 +41,9 @@ class TerrainBuffer {
   /// revision() is unchanged. nullptr (interval unset) when x is in no patch (bridged gap or
   /// not covered: ask height()). For callers sampling the same places at a high rate.
   const Terrain* gridFor(double x, double* from, double* until) const;
-  /// Changes with every addPatch(), dropBehind() and clear(): pointers from gridFor() stay
-  /// valid, and its intervals exact, while it does not.
+  /// Changes with every addPatch(), dropBehind() and clear(), to a value no other buffer has had
+  /// (0: never changed, empty): pointers from gridFor() stay valid, and its intervals exact,
+  /// while it does not. A copy starts with its original's revision (and its own grids).
   std::uint64_t revision() const { return revision_; }
   /// Frees data behind `station` [m]: patches ending before it are dropped and a patch straddling
   /// it is cut to its samples from the last one at or before `station`; queries at stations
