@@ -4,12 +4,13 @@
 #
 #   bench/ros_node_bench.sh            # environment: BUILD_DIR (build), VARIANT (tracked),
 #                                      # TRACK (long_hill), SPEED_KMH (30), PUBLISH_RATE (1000),
-#                                      # SKIP_BUILD=1
+#                                      # LAPS (3), SKIP_BUILD=1
 # 1. offline: OnlineVehicle::step() on the track without ROS (ros_node_bench offline).
 # 2. node: a private ROS master, the node on real time at 1 kHz, and the load driver
 #    (ros_node_bench node) publishing the track's terrain patches at the vehicle's pace and the
-#    speed at 50 Hz; it measures the node's CPU use (/proc), the latency from a speed message to
-#    the first published sample stepped with it, and reads the node's step-time diagnostics.
+#    speed at 50 Hz, LAPS times over the track (the node reset between laps); it measures the
+#    node's CPU use (/proc, per thread too), the latency from a speed message to the first
+#    published sample stepped with it, and reads the node's step-time diagnostics.
 # Timings depend on the machine's load: run it on a quiet machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -19,6 +20,7 @@ VARIANT="${VARIANT:-tracked}"
 TRACK="${TRACK:-long_hill}"
 SPEED_KMH="${SPEED_KMH:-30}"
 PUBLISH_RATE="${PUBLISH_RATE:-1000}"
+LAPS="${LAPS:-3}"
 VEHICLE="$(pwd)/config/vehicles/paper_vehicle.yaml"
 CACHE="${CACHE:-/tmp/tvd_bench_cache}"
 
@@ -55,5 +57,5 @@ rosparam set /vehicle_dynamics/publish_rate "$PUBLISH_RATE"
 echo "(node: $VARIANT, rate 1000 Hz, publish_rate $PUBLISH_RATE Hz; the driver subscribes road_wheels)"
 "$node" __name:=vehicle_dynamics >"$log_dir/node.log" 2>&1 &
 node_pid=$!
-"$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH"
+"$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
 echo "(logs in $log_dir)"

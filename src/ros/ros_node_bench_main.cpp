@@ -5,25 +5,33 @@
 //     OnlineVehicle::step() on a paper track without ROS: step time mean / p50 / p99 / max, and
 //     the share of the terrain sampling (the same steps on a bare Simulator).
 //
-//   ros_node_bench node --pid PID [--track T] [--speed-kmh V] [--duration S]
+//   ros_node_bench node --pid PID [--track T] [--speed-kmh V] [--duration S] [--laps N]
 //     A load driver for a running node on real time: publishes the track's terrain patches at
-//     the vehicle's pace and the speed at 50 Hz, alternating between two values every 0.25 s.
+//     the vehicle's pace and the speed at 50 Hz, alternating between two values every 0.25 s,
+//     for N laps of the track (the node's ~reset service between them). Its callbacks run on a
+//     spinner thread and it sleeps between messages, so it leaves the CPU to the node.
 //     Measures the latency from a speed message to the first road_wheels message stepped with
 //     it (published right after the tf of the same sample, so it bounds message -> tf), the
-//     node's CPU use from /proc/PID/stat, and reads the node's step-time diagnostics.
+//     node's CPU use from /proc/PID/stat (and per thread from /proc/PID/task), and reads the
+//     node's step-time diagnostics.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/ros.h>
 #include <std_msgs/Float64.h>
+#include <std_srvs/Empty.h>
+#include <dirent.h>
 #include <unistd.h>
 
 #include "tracked_vehicle_dynamics/RoadWheels.h"
@@ -61,26 +69,52 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   rl::OnlineVehicleOptions options;
   options.rate = rate;
   options.method = rl::parseMethod(method, "--method");
-  rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
   std::printf("model: %s %s, %ld DOFs, %ld road inputs, %ld outputs, method %s, %.0f Hz\n",
               vehicle_file.c_str(), variant.c_str(), static_cast<long>(model.size()),
               static_cast<long>(model.system.inputCount()),
               static_cast<long>(model.system.outputCount()), method.c_str(), rate);
   const rl::TrackRun run = rl::trackRun(track);
-  vehicle.setSpeed(track.speed);
-  rl::DurationStatistics step_stats;
-  std::size_t next_patch = 0;
   const long steps = static_cast<long>(run.duration * rate);
-  for (long k = 0; k < steps; ++k) {
-    const double t = static_cast<double>(k) / rate;
-    while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
-      vehicle.addTerrain(run.patches[next_patch++].patch);
+  rl::DurationStatistics step_stats;
+  {
+    rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
+    vehicle.setSpeed(track.speed);
+    std::size_t next_patch = 0;
+    for (long k = 0; k < steps; ++k) {
+      const double t = static_cast<double>(k) / rate;
+      while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
+        vehicle.addTerrain(run.patches[next_patch++].patch);
+      }
+      const auto a = Clock::now();
+      vehicle.step();
+      step_stats.add(seconds(a, Clock::now()));
     }
-    const auto a = Clock::now();
-    vehicle.step();
-    step_stats.add(seconds(a, Clock::now()));
   }
   printStats("OnlineVehicle::step", step_stats);
+
+  // The same run again, timing a second sampler on the vehicle's terrain buffer at the station
+  // of the coming step: the terrain sampling alone (its lookups are remembered like the
+  // vehicle's). A separate run, so that neither timing finds the other's data in the cache.
+  rl::DurationStatistics sample_stats;
+  {
+    rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
+    vehicle.setSpeed(track.speed);
+    rl::RoadInputSampler probe = vehicle.sampler();
+    tvd::Vector probe_input(2 * probe.size());
+    std::size_t next_patch = 0;
+    for (long k = 0; k < steps; ++k) {
+      const double t = static_cast<double>(k) / rate;
+      while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
+        vehicle.addTerrain(run.patches[next_patch++].patch);
+      }
+      const auto p = Clock::now();
+      probe.sample(vehicle.terrain(), vehicle.station() + track.speed / rate, track.speed,
+                   options.lateral_offset, &probe_input);
+      sample_stats.add(seconds(p, Clock::now()));
+      vehicle.step();
+    }
+  }
+  printStats("terrain sampling alone", sample_stats);
 
   // The simulator alone, same sizes, constant input: what the terrain sampling adds.
   const tvd::dynamics::SimulatorOptions sim_options = rl::simulatorOptions(model, options);
@@ -93,9 +127,7 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
     sim.step(w);
     sim_stats.add(seconds(a, Clock::now()));
   }
-  printStats("Simulator::step alone", sim_stats);
-  std::printf("terrain sampling + bookkeeping: %.1f us per step (mean)\n",
-              (step_stats.mean() - sim_stats.mean()) * 1e6);
+  printStats("Simulator::step, 1 input changing", sim_stats);
   std::printf("real-time factor of the step alone: %.1fx at %.0f Hz\n",
               1.0 / rate / step_stats.mean(), rate);
   return 0;
@@ -120,22 +152,97 @@ double cpuSeconds(int pid) {
   return (utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
 }
 
+/// One thread of a process: name, user and system CPU [s], context switches.
+struct ThreadSample {
+  std::string name;
+  double user = 0.0, system = 0.0;
+  long voluntary = 0, involuntary = 0;
+};
+
+/// Every thread of a process, by thread id (threads that ended are absent).
+std::map<int, ThreadSample> threadSamples(int pid) {
+  std::map<int, ThreadSample> samples;
+  const std::string task_dir = "/proc/" + std::to_string(pid) + "/task";
+  DIR* dir = opendir(task_dir.c_str());
+  if (dir == nullptr)
+    return samples;
+  const double tick = static_cast<double>(sysconf(_SC_CLK_TCK));
+  while (const dirent* entry = readdir(dir)) {
+    if (entry->d_name[0] == '.')
+      continue;
+    const std::string base = task_dir + "/" + entry->d_name;
+    ThreadSample s;
+    std::ifstream comm(base + "/comm");
+    std::getline(comm, s.name);
+    std::ifstream stat(base + "/stat");
+    std::string content((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+    const auto close = content.rfind(')');
+    if (close == std::string::npos)
+      continue;
+    std::istringstream rest(content.substr(close + 2));
+    std::string field;
+    for (int i = 3; i <= 15 && rest >> field; ++i) {
+      if (i == 14)
+        s.user = std::stod(field) / tick;
+      if (i == 15)
+        s.system = std::stod(field) / tick;
+    }
+    std::ifstream status(base + "/status");
+    std::string line;
+    while (std::getline(status, line)) {
+      if (line.rfind("voluntary_ctxt_switches:", 0) == 0)
+        s.voluntary = std::atol(line.c_str() + 24);
+      if (line.rfind("nonvoluntary_ctxt_switches:", 0) == 0)
+        s.involuntary = std::atol(line.c_str() + 27);
+    }
+    samples[std::atoi(entry->d_name)] = s;
+  }
+  closedir(dir);
+  return samples;
+}
+
+/// Where the node's CPU went: each thread's share of one core and its wake-ups per second.
+void printThreads(const std::map<int, ThreadSample>& before,
+                  const std::map<int, ThreadSample>& after, double wall) {
+  std::printf("node threads (CPU %% of one core: user + system; context switches per second):\n");
+  for (const auto& [tid, a] : after) {
+    const auto b = before.find(tid);
+    if (b == before.end())
+      continue;
+    const double user = a.user - b->second.user, system = a.system - b->second.system;
+    const double switches = static_cast<double>(a.voluntary - b->second.voluntary);
+    const double preempted = static_cast<double>(a.involuntary - b->second.involuntary);
+    if (user + system == 0.0 && switches + preempted < wall)
+      continue;  // idle threads (XML-RPC, rosout, ...)
+    std::printf("  %-16s %5.1f %% = %4.1f + %4.1f   %6.0f/s voluntary, %5.0f/s preempted\n",
+                a.name.c_str(), 100.0 * (user + system) / wall, 100.0 * user / wall,
+                100.0 * system / wall, switches / wall, preempted / wall);
+  }
+}
+
+/// The driver's view of the node. Callbacks run on a spinner thread, so every field they share
+/// with the publishing loop is behind `mutex`.
 struct Driver {
-  double v_old = 0.0, v_new = 0.0;
+  std::mutex mutex;
+  double v_new = 0.0;
   ros::WallTime sent;
   bool waiting = false;
   std::vector<double> latencies;
   std::size_t wheel_messages = 0;
-  double step_p99_us = -1.0, tick_p99_us = -1.0, steps = -1.0, late = -1.0, resyncs = -1.0;
+  double step_p99_us = -1.0, step_mean_us = -1.0, tick_p99_us = -1.0, steps = -1.0, late = -1.0,
+         resyncs = -1.0;
 
   void onWheels(const tvd::RoadWheels::ConstPtr& msg) {
+    const ros::WallTime received = ros::WallTime::now();
+    std::lock_guard<std::mutex> lock(mutex);
     ++wheel_messages;
     if (waiting && msg->speed == v_new) {
-      latencies.push_back((ros::WallTime::now() - sent).toSec());
+      latencies.push_back((received - sent).toSec());
       waiting = false;
     }
   }
   void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
+    std::lock_guard<std::mutex> lock(mutex);
     for (const auto& s : msg->status) {
       if (s.name.size() < 6 || s.name.compare(s.name.size() - 6, 6, ": loop") != 0)
         continue;
@@ -143,6 +250,8 @@ struct Driver {
         const double value = std::atof(kv.value.c_str());
         if (kv.key == "step time p99 since start [us]")
           step_p99_us = value;
+        if (kv.key == "step time mean since start [us]")
+          step_mean_us = value;
         if (kv.key == "tick time p99 since start [us]")
           tick_p99_us = value;
         if (kv.key == "steps")
@@ -156,7 +265,8 @@ struct Driver {
   }
 };
 
-int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, double duration) {
+int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, double duration,
+         int laps, const std::string& reset_service) {
   ros::init(argc, argv, "ros_node_bench", ros::init_options::AnonymousName);
   ros::NodeHandle nh;
   Driver d;
@@ -165,12 +275,16 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
   ros::Subscriber diag = nh.subscribe("/diagnostics", 10, &Driver::onDiagnostics, &d);
   ros::Publisher terrain = nh.advertise<tvd::TerrainProfile>("terrain_profile", 100);
   ros::Publisher speed = nh.advertise<std_msgs::Float64>("speed", 10);
+  // Callbacks on their own thread: a received sample is timed when it arrives, and the
+  // publishing loop below sleeps until its next message instead of polling (a load driver that
+  // spins would take the CPU the node is measured on; this machine has two cores).
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
   const ros::WallTime wait_end = ros::WallTime::now() + ros::WallDuration(60.0);
   while (ros::ok() &&
          (terrain.getNumSubscribers() == 0 || speed.getNumSubscribers() == 0 ||
           wheels.getNumPublishers() == 0) &&
          ros::WallTime::now() < wait_end) {
-    ros::spinOnce();
     ros::WallDuration(0.01).sleep();
   }
   ros::WallDuration(0.5).sleep();
@@ -183,47 +297,82 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
   std_msgs::Float64 v;
   // Speed alternates v / v + 1 mm/s every 0.25 s; the latency is measured on each change.
   const double v_low = track.speed, v_high = track.speed + 1e-3;
-  d.v_new = v_low;
+  {
+    std::lock_guard<std::mutex> lock(d.mutex);
+    d.v_new = v_low;
+  }
   const ros::WallTime start = ros::WallTime::now();
   const double cpu_start = cpuSeconds(pid);
-  const std::size_t wheels_start = d.wheel_messages;
+  const std::map<int, ThreadSample> threads_start = threadSamples(pid);
+  std::size_t wheels_start = 0;
+  {
+    std::lock_guard<std::mutex> lock(d.mutex);
+    wheels_start = d.wheel_messages;
+  }
   std::size_t next_patch = 0;
-  double next_speed = 0.0, next_change = 0.25;
+  double next_speed = 0.0, next_change = 0.25, lap_start = 0.0;
+  int lap = 0;
   while (ros::ok()) {
     const double t = (ros::WallTime::now() - start).toSec();
-    if (t >= run_time)
-      break;
-    while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
+    if (t >= lap_start + run_time) {
+      if (++lap == laps)
+        break;
+      // Next lap: the node back to equilibrium at station 0 (its ~reset service), the track
+      // again from its first patch.
+      std_srvs::Empty reset;
+      if (!ros::service::call(reset_service, reset))
+        throw std::runtime_error("could not call " + reset_service);
+      lap_start = (ros::WallTime::now() - start).toSec();
+      next_patch = 0;
+      continue;
+    }
+    while (next_patch < run.patches.size() && run.patches[next_patch].time <= t - lap_start) {
       msg.header.stamp = ros::Time::now();
       rl::toMsg(run.patches[next_patch++].patch, &msg);
       terrain.publish(msg);
     }
-    if (t >= next_change && !d.waiting) {
-      d.v_old = d.v_new;
-      d.v_new = d.v_old == v_low ? v_high : v_low;
-      v.data = d.v_new;
-      d.sent = ros::WallTime::now();
-      d.waiting = true;
+    bool change = false;
+    if (t >= next_change) {
+      std::lock_guard<std::mutex> lock(d.mutex);
+      if (!d.waiting) {  // the previous change has been seen
+        d.v_new = d.v_new == v_low ? v_high : v_low;
+        v.data = d.v_new;
+        d.sent = ros::WallTime::now();
+        d.waiting = true;
+        change = true;
+      }
+    }
+    if (change) {
       speed.publish(v);
       next_change += 0.25;
       next_speed = t + 0.02;
     } else if (t >= next_speed) {
-      v.data = d.v_new;
+      {
+        std::lock_guard<std::mutex> lock(d.mutex);
+        v.data = d.v_new;
+      }
       speed.publish(v);
       next_speed += 0.02;
     }
-    ros::spinOnce();
-    ros::WallDuration(0.0002).sleep();
+    double wake = std::min({next_speed, next_change, lap_start + run_time});
+    if (next_patch < run.patches.size())
+      wake = std::min(wake, lap_start + run.patches[next_patch].time);
+    const double now = (ros::WallTime::now() - start).toSec();
+    if (wake > now)
+      ros::WallDuration(wake - now).sleep();
   }
   const double wall = (ros::WallTime::now() - start).toSec();
   const double cpu = cpuSeconds(pid) - cpu_start;
-  const std::size_t received = d.wheel_messages - wheels_start;
-  // One more diagnostics report, covering the whole run.
-  const ros::WallTime diag_end = ros::WallTime::now() + ros::WallDuration(2.5);
-  while (ros::ok() && ros::WallTime::now() < diag_end) {
-    ros::spinOnce();
-    ros::WallDuration(0.01).sleep();
+  const std::map<int, ThreadSample> threads_end = threadSamples(pid);
+  std::size_t received = 0;
+  {
+    std::lock_guard<std::mutex> lock(d.mutex);
+    received = d.wheel_messages - wheels_start;
   }
+  // One more diagnostics report, covering the whole run.
+  ros::WallDuration(2.5).sleep();
+  spinner.stop();
+  std::lock_guard<std::mutex> lock(d.mutex);
   std::sort(d.latencies.begin(), d.latencies.end());
   auto pct = [&](double f) {
     if (d.latencies.empty())
@@ -231,18 +380,19 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
     return d.latencies[std::min(d.latencies.size() - 1,
                                 static_cast<std::size_t>(f * d.latencies.size()))];
   };
-  std::printf("run: %s at %.1f km/h, %.2f s wall, %zu road_wheels messages (%.0f Hz)\n",
-              track.track.c_str(), track.speed * 3.6, wall, received, received / wall);
+  std::printf("run: %s at %.1f km/h, %d lap(s), %.2f s wall, %zu road_wheels messages (%.0f Hz)\n",
+              track.track.c_str(), track.speed * 3.6, laps, wall, received, received / wall);
   std::printf("node CPU: %.3f s in %.2f s = %.1f %% of one core\n", cpu, wall, 100.0 * cpu / wall);
+  printThreads(threads_start, threads_end, wall);
   std::printf(
       "latency speed message -> next published sample (tf, then road_wheels): "
       "median %.2f ms, p95 %.2f ms, max %.2f ms (%zu changes)\n",
       pct(0.5) * 1e3, pct(0.95) * 1e3, d.latencies.empty() ? -1.0 : d.latencies.back() * 1e3,
       d.latencies.size());
   std::printf(
-      "node diagnostics: step time p99 %.0f us, tick time p99 %.0f us, %.0f steps, "
+      "node diagnostics: step time mean %.1f us, p99 %.0f us, tick time p99 %.0f us, %.0f steps, "
       "%.0f late ticks, %.0f resynchronisations\n",
-      d.step_p99_us, d.tick_p99_us, d.steps, d.late, d.resyncs);
+      d.step_mean_us, d.step_p99_us, d.tick_p99_us, d.steps, d.late, d.resyncs);
   return 0;
 }
 
@@ -264,7 +414,15 @@ int main(int argc, char** argv) {
   off->add_option("--method", method, "modal | exact")->capture_default_str();
   auto* nd = app.add_subcommand("node", "load driver for a running node (real time)");
   nd->add_option("--pid", pid, "the node's process id")->required();
-  nd->add_option("--duration", duration, "[s] at most the track's run")->capture_default_str();
+  nd->add_option("--duration", duration, "[s] of each lap, at most the track's run")
+      ->capture_default_str();
+  int laps = 3;
+  std::string reset_service = "/vehicle_dynamics/reset";
+  nd->add_option("--laps", laps, "runs of the track, the node reset between them")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  nd->add_option("--reset-service", reset_service, "the node's ~reset service")
+      ->capture_default_str();
   for (CLI::App* sub : {off, nd}) {
     sub->add_option("--track", track.track)->capture_default_str();
     sub->add_option("--speed-kmh", speed_kmh)->capture_default_str();
@@ -284,7 +442,7 @@ int main(int argc, char** argv) {
   try {
     if (off->parsed())
       return offline(vehicle, variant, cache, track, rate, method);
-    return node(argc, argv, pid, track, duration);
+    return node(argc, argv, pid, track, duration, laps, reset_service);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ros_node_bench: error: %s\n", e.what());
     return 1;
