@@ -1,6 +1,8 @@
 #include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -29,7 +31,18 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
     }
   }
   held_.setZero(stations_.size());
-  lookups_.resize(static_cast<std::size_t>(stations_.size()));
+  // Groups of contacts at exactly the same station, in station order.
+  members_.resize(static_cast<std::size_t>(stations_.size()));
+  std::iota(members_.begin(), members_.end(), Eigen::Index{0});
+  std::stable_sort(members_.begin(), members_.end(), [&](Eigen::Index a, Eigen::Index b) {
+    return stations_(a) < stations_(b);
+  });
+  for (std::size_t k = 0; k < members_.size(); ++k) {
+    if (k == 0 || stations_(members_[k]) != stations_(members_[k - 1])) group_begin_.push_back(k);
+  }
+  group_begin_.push_back(members_.size());
+  lookups_.resize(group_begin_.size() - 1);
+  cells_.resize(members_.size());
   if (stations_.size() > 0) {
     rearmost_ = stations_.minCoeff();
     frontmost_ = stations_.maxCoeff();
@@ -40,51 +53,65 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
                              double lateral_offset, Vector* w) {
   const Eigen::Index n = stations_.size();
   if (&buffer != lookup_buffer_ || buffer.revision() != lookup_revision_) {
+    // Grids may have been freed (and their addresses reused): forget every one.
     for (Lookup& lookup : lookups_) lookup.grid = nullptr;
+    for (ContactCell& cell : cells_) cell.grid = nullptr;
     lookup_buffer_ = &buffer;
     lookup_revision_ = buffer.revision();
   }
   // Contiguous coverage, computed once per call: inside it height() cannot throw.
   const double from = buffer.coveredFrom();
   const double until = buffer.coveredUntil();
-  auto covered = [&](double x) { return (x >= from && x <= until) || buffer.covers(x); };
   int uncovered = 0;
-  for (Eigen::Index q = 0; q < n; ++q) {
-    const double x = station + stations_(q);
-    const double y = lateral_(q) + lateral_offset;
-    double rate = 0.0;
-    if (covered(x)) {
-      held_(q) = height(buffer, q, x, y);
-      if (needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0) {
-        const double xa = x - kSlopeStep, xb = x + kSlopeStep;
-        const bool a = covered(xa), b = covered(xb);
-        if (a && b) {
-          rate = speed * (buffer.height(xb, y) - buffer.height(xa, y)) / (2.0 * kSlopeStep);
-        } else if (b) {
-          rate = speed * (buffer.height(xb, y) - held_(q)) / kSlopeStep;
-        } else if (a) {
-          rate = speed * (held_(q) - buffer.height(xa, y)) / kSlopeStep;
-        }
+  for (std::size_t g = 0; g + 1 < group_begin_.size(); ++g) {
+    const std::size_t first = group_begin_[g], last = group_begin_[g + 1];
+    const double x = station + stations_(members_[first]);
+    if (!((x >= from && x <= until) || buffer.covers(x))) {
+      for (std::size_t k = first; k < last; ++k) {
+        const Eigen::Index q = members_[k];
+        (*w)(q) = held_(q);
+        (*w)(n + q) = 0.0;
       }
-    } else {
-      ++uncovered;
+      uncovered += static_cast<int>(last - first);
+      continue;
     }
-    (*w)(q) = held_(q);
-    (*w)(n + q) = rate;
+    Lookup& lookup = lookups_[g];
+    if (lookup.grid == nullptr || !(x >= lookup.from && x <= lookup.until))
+      lookup.grid = buffer.gridFor(x, &lookup.from, &lookup.until);  // nullptr: a bridged gap
+    terrain::Terrain::StationWeight weight;
+    if (lookup.grid != nullptr) weight = lookup.grid->stationWeightOf(x);
+    for (std::size_t k = first; k < last; ++k) {
+      const Eigen::Index q = members_[k];
+      const double y = lateral_(q) + lateral_offset;
+      ContactCell& cell = cells_[k];
+      if (lookup.grid == nullptr || std::isnan(y)) {
+        held_(q) = buffer.height(x, y);
+      } else {
+        if (cell.grid != lookup.grid || cell.y != y) {
+          cell.grid = lookup.grid;
+          cell.y = y;
+          cell.cell = lookup.grid->lateralCellOf(y);
+        }
+        held_(q) = lookup.grid->height(weight, cell.cell);
+      }
+      (*w)(q) = held_(q);
+      (*w)(n + q) = needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0
+                        ? rate(buffer, x, y, held_(q), speed, from, until)
+                        : 0.0;
+    }
   }
   return uncovered;
 }
 
-double RoadInputSampler::height(const terrain::TerrainBuffer& buffer, Eigen::Index q, double x,
-                                double y) {
-  Lookup& lookup = lookups_[static_cast<std::size_t>(q)];
-  if (lookup.grid == nullptr || !(x >= lookup.from && x <= lookup.until) || y != lookup.y) {
-    lookup.grid = std::isnan(y) ? nullptr : buffer.gridFor(x, &lookup.from, &lookup.until);
-    if (lookup.grid == nullptr) return buffer.height(x, y);  // bridged gap (or NaN)
-    lookup.y = y;
-    lookup.cell = lookup.grid->lateralCellOf(y);
-  }
-  return lookup.grid->height(x, lookup.cell);
+double RoadInputSampler::rate(const terrain::TerrainBuffer& buffer, double x, double y,
+                              double height, double speed, double from, double until) const {
+  auto covered = [&](double s) { return (s >= from && s <= until) || buffer.covers(s); };
+  const double xa = x - kSlopeStep, xb = x + kSlopeStep;
+  const bool a = covered(xa), b = covered(xb);
+  if (a && b) return speed * (buffer.height(xb, y) - buffer.height(xa, y)) / (2.0 * kSlopeStep);
+  if (b) return speed * (buffer.height(xb, y) - height) / kSlopeStep;
+  if (a) return speed * (height - buffer.height(xa, y)) / kSlopeStep;
+  return 0.0;
 }
 
 void RoadInputSampler::setHeld(const Vector& heights) {

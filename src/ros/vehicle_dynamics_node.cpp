@@ -54,11 +54,11 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   publish_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.publish_rate));
   comfort_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.comfort_rate));
 
-  tf_pub_ = nh_.advertise<tf2_msgs::TFMessage>("/tf", 100);
-  accel_pub_ = nh_.advertise<geometry_msgs::AccelStamped>("hull/accel", 10);
-  twist_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("hull/twist", 10);
-  wheels_pub_ = nh_.advertise<RoadWheels>("road_wheels", 10);
-  comfort_pub_ = nh_.advertise<Comfort>("comfort", 10);
+  advertise<tf2_msgs::TFMessage>("/tf", 100, &tf_pub_);
+  advertise<geometry_msgs::AccelStamped>("hull/accel", 10, &accel_pub_);
+  advertise<geometry_msgs::TwistStamped>("hull/twist", 10, &twist_pub_);
+  advertise<RoadWheels>("road_wheels", 10, &wheels_pub_);
+  advertise<Comfort>("comfort", 10, &comfort_pub_);
   reset_service_ = loop_private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
 
   updater_.setHardwareID(report_.cache_file.empty()
@@ -84,6 +84,17 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            params_.publish_rate, methodName(params_.vehicle_options.method),
            holdName(params_.vehicle_options.hold));
+}
+
+template <class M>
+void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queue_size,
+                                    CountedPublisher* out) {
+  // The callbacks run on the spin thread, which starts after the constructor: `publisher` is
+  // assigned by then.
+  const auto recount = [out](const ros::SingleSubscriberPublisher&) {
+    out->subscribers.store(out->publisher.getNumSubscribers(), std::memory_order_relaxed);
+  };
+  out->publisher = nh_.advertise<M>(topic, queue_size, recount, recount);
 }
 
 void VehicleDynamicsNode::loadVehicle() {
@@ -358,10 +369,10 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
 
 void VehicleDynamicsNode::publishState() {
   // Only what someone listens to is built (a recorder or a tf listener subscribes).
-  const bool tf = tf_pub_.getNumSubscribers() > 0;
-  const bool twist = twist_pub_.getNumSubscribers() > 0;
-  const bool accel = accel_pub_.getNumSubscribers() > 0;
-  const bool wheels = wheels_pub_.getNumSubscribers() > 0;
+  const bool tf = tf_pub_.listened();
+  const bool twist = twist_pub_.listened();
+  const bool accel = accel_pub_.listened();
+  const bool wheels = wheels_pub_.listened();
   const OnlineVehicle& v = *vehicle_;
   const RigidPose pose = v.hullPose();
 
@@ -380,7 +391,7 @@ void VehicleDynamicsNode::publishState() {
       relative.translation = v.pointPosition(i);
       toMsg(relative, &transforms[k++].transform);
     }
-    tf_pub_.publish(tf_msg_);
+    tf_pub_.publisher.publish(tf_msg_);
   }
 
   // Hull CoG motion in base_link axes; the travel speed is part of the hull's velocity.
@@ -390,24 +401,24 @@ void VehicleDynamicsNode::publishState() {
     twist_msg_.header.stamp = sample_time_;
     twist_msg_.twist.linear = toMsg(to_base * (velocity.head<3>() + Vector3(v.speed(), 0.0, 0.0)));
     twist_msg_.twist.angular = toMsg(to_base * velocity.tail<3>());
-    twist_pub_.publish(twist_msg_);
+    twist_pub_.publisher.publish(twist_msg_);
   }
   if (accel) {
     const Vector6 acceleration = v.hullAcceleration();
     accel_msg_.header.stamp = sample_time_;
     accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
     accel_msg_.accel.angular = toMsg(to_base * acceleration.tail<3>());
-    accel_pub_.publish(accel_msg_);
+    accel_pub_.publisher.publish(accel_msg_);
   }
   if (wheels) {
     wheels_msg_.header.stamp = sample_time_;
     toMsg(v.wheels(), v.station(), v.speed(), &wheels_msg_);
-    wheels_pub_.publish(wheels_msg_);
+    wheels_pub_.publisher.publish(wheels_msg_);
   }
 }
 
 void VehicleDynamicsNode::publishComfort() {
-  if (comfort_pub_.getNumSubscribers() == 0)
+  if (!comfort_pub_.listened())
     return;
   const dynamics::ComfortMeter& meter = vehicle_->comfort();
   ComfortReport report;
@@ -418,7 +429,7 @@ void VehicleDynamicsNode::publishComfort() {
   report.peak_acceleration = vehicle_->peakAcceleration();
   comfort_msg_.header.stamp = sample_time_;
   toMsg(report, &comfort_msg_);
-  comfort_pub_.publish(comfort_msg_);
+  comfort_pub_.publisher.publish(comfort_msg_);
 }
 
 void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapper& status) {

@@ -121,17 +121,22 @@ double Terrain::height(double x, double y) const {
 
 double Terrain::height(double x, const LateralCell& cell) const {
   if (std::isnan(x)) return std::numeric_limits<double>::quiet_NaN();
-  const Eigen::Index j = cell.line;
-  const double wy = cell.weight;
-  const auto at = [&](Eigen::Index i) {
-    return wy == 0.0 ? heights_(j, i) : (1.0 - wy) * heights_(j, i) + wy * heights_(j + 1, i);
-  };
+  return height(stationWeightOf(x), cell);
+}
+
+Terrain::StationWeight Terrain::stationWeightOf(double x) const {
+  StationWeight station;
   const Eigen::Index n = stations_.size();
-  if (x <= stations_(0)) return at(0);
-  if (x >= stations_(n - 1)) return at(n - 1);
-  const Eigen::Index i = stationCell(x);
-  const double wx = (x - stations_(i)) / (stations_(i + 1) - stations_(i));
-  return (1.0 - wx) * at(i) + wx * at(i + 1);
+  if (x <= stations_(0)) {
+    station.edge = -1;
+  } else if (x >= stations_(n - 1)) {
+    station.edge = 1;
+  } else {
+    const Eigen::Index i = stationCell(x);
+    station.cell = i;
+    station.weight = (x - stations_(i)) / (stations_(i + 1) - stations_(i));
+  }
+  return station;
 }
 
 double Terrain::slope(double x, double y) const {

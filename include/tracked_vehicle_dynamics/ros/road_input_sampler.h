@@ -13,10 +13,14 @@
 // A contact the buffer does not cover (no terrain yet, or a gap ahead) keeps its last height with
 // u' = 0 and is counted, so the state stays finite and the node can warn.
 //
-// Speed: at 1 kHz the same contacts are looked up again and again in the same patches. Each
-// contact remembers the patch grid that answered it, the station interval over which that grid
-// keeps answering (TerrainBuffer::gridFor) and its lateral cell, until the buffer changes
-// (TerrainBuffer::revision); the heights are the buffer's, bit for bit.
+// Speed: at 1 kHz the same contacts are looked up again and again in the same patches.
+// - Contacts at the same station (the pads of one track assembly: 4 per station on the tracked
+//   vehicle) are sampled together: one search for the patch and the station cell, then each
+//   contact's lateral blend (Terrain::StationWeight, LateralCell).
+// - Each station remembers the patch grid that answered it and the station interval over which
+//   that grid keeps answering (TerrainBuffer::gridFor), each contact its lateral cell in that
+//   grid, until the buffer changes (TerrainBuffer::revision).
+// The heights are the buffer's, bit for bit.
 #pragma once
 
 #include <cstdint>
@@ -55,15 +59,20 @@ class RoadInputSampler {
   double frontmost() const { return frontmost_; }
 
  private:
-  /// What contact q found last time (see the file comment).
+  /// What the contacts at one station found last time (see the file comment).
   struct Lookup {
     const terrain::Terrain* grid = nullptr;  ///< nullptr: look up again
     double from = 0.0, until = 0.0;          ///< stations where `grid` answers [m]
-    double y = 0.0;                          ///< lateral position of `cell` [m]
+  };
+  /// Contact q's lateral cell in `grid` at lateral position y.
+  struct ContactCell {
+    const terrain::Terrain* grid = nullptr;  ///< nullptr: find again
+    double y = 0.0;                          ///< [m]
     terrain::Terrain::LateralCell cell;
   };
-  /// buffer.height(x, y), through the contact's Lookup when it still applies.
-  double height(const terrain::TerrainBuffer& buffer, Eigen::Index q, double x, double y);
+  /// u'_q by central differences on the buffer (see the file comment).
+  double rate(const terrain::TerrainBuffer& buffer, double x, double y, double height,
+              double speed, double from, double until) const;
 
   Vector stations_;
   Vector lateral_;
@@ -71,7 +80,11 @@ class RoadInputSampler {
   Vector held_;
   double rearmost_ = 0.0;
   double frontmost_ = 0.0;
-  std::vector<Lookup> lookups_;
+  // Contacts grouped by station: group g holds members_[group_begin_[g] .. group_begin_[g+1]).
+  std::vector<Eigen::Index> members_;
+  std::vector<std::size_t> group_begin_;
+  std::vector<Lookup> lookups_;     // per group
+  std::vector<ContactCell> cells_;  // per contact
   const terrain::TerrainBuffer* lookup_buffer_ = nullptr;
   std::uint64_t lookup_revision_ = 0;
 };

@@ -120,7 +120,17 @@ class VehicleDynamicsNode {
   ros::Subscriber terrain_sub_, speed_sub_, clock_sub_;
   // /tf is published like tf2_ros::TransformBroadcaster does, from a message kept between
   // publications (no per-sample allocation of frame ids).
-  ros::Publisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
+  // Each with its subscriber count, kept by roscpp's connect/disconnect callbacks (on the spin
+  // thread): the loop reads an atomic instead of asking roscpp's TopicManager for every topic
+  // at every sample, under a mutex its network thread takes right after each publication.
+  struct CountedPublisher {
+    ros::Publisher publisher;
+    std::atomic<std::uint32_t> subscribers{0};
+    bool listened() const { return subscribers.load(std::memory_order_relaxed) > 0; }
+  };
+  template <class M>
+  void advertise(const std::string& topic, std::uint32_t queue_size, CountedPublisher* out);
+  CountedPublisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
   ros::ServiceServer reset_service_;
   diagnostic_updater::Updater updater_;
 

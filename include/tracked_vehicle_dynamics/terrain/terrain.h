@@ -37,6 +37,24 @@ class Terrain {
   /// height(x, y) with y's lateral cell already found (by this terrain's lateralCellOf(y)):
   /// the same value, bit for bit.
   double height(double x, const LateralCell& cell) const;
+  /// Where a station falls between the samples: cell i and weight wx of sample i + 1, or a held
+  /// edge (before the first sample, after the last). For callers sampling several lateral
+  /// positions at one station.
+  struct StationWeight {
+    Eigen::Index cell = 0;
+    double weight = 0.0;
+    int edge = 0;  ///< -1: x <= first station, +1: x >= last station, 0: inside
+  };
+  /// x must not be NaN.
+  StationWeight stationWeightOf(double x) const;
+  /// height(x, cell) with x's station weight already found (by this terrain's
+  /// stationWeightOf(x)): the same value, bit for bit.
+  double height(const StationWeight& station, const LateralCell& cell) const {
+    if (station.edge < 0) return sampleHeight(0, cell);
+    if (station.edge > 0) return sampleHeight(stations_.size() - 1, cell);
+    const double wx = station.weight;
+    return (1.0 - wx) * sampleHeight(station.cell, cell) + wx * sampleHeight(station.cell + 1, cell);
+  }
   /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
   double slope(double x, double y) const;
   /// Both: h = height(x, y), dhdx = slope(x, y) (the interface RoadExcitation samples).
@@ -74,6 +92,12 @@ class Terrain {
   Eigen::Index stationCell(double x) const;
   /// Lateral cell index j and weight w of line j+1 (0 <= w <= 1), y clamped to the lines.
   void lateralCell(double y, Eigen::Index* j, double* w) const;
+  /// The height of station sample i on a lateral cell (its two lines blended).
+  double sampleHeight(Eigen::Index i, const LateralCell& cell) const {
+    const Eigen::Index j = cell.line;
+    const double wy = cell.weight;
+    return wy == 0.0 ? heights_(j, i) : (1.0 - wy) * heights_(j, i) + wy * heights_(j + 1, i);
+  }
 
   Vector stations_;
   Vector lateral_;
