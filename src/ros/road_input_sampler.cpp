@@ -43,6 +43,11 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
   group_begin_.push_back(members_.size());
   lookups_.resize(group_begin_.size() - 1);
   cells_.resize(members_.size());
+  group_rate_.assign(lookups_.size(), 0);
+  for (std::size_t g = 0; g < lookups_.size(); ++g) {
+    for (std::size_t k = group_begin_[g]; k < group_begin_[g + 1]; ++k)
+      if (needs_rate_[static_cast<std::size_t>(members_[k])]) group_rate_[g] = 1;
+  }
   if (stations_.size() > 0) {
     rearmost_ = stations_.minCoeff();
     frontmost_ = stations_.maxCoeff();
@@ -76,10 +81,29 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       continue;
     }
     Lookup& lookup = lookups_[g];
+    if (lookup.grid != nullptr && x >= lookup.from && x <= lookup.until &&
+        x >= lookup.flat_from && x <= lookup.flat_until && lateral_offset == lookup.offset) {
+      // Still on the same flat run of the same grid: the heights held are the terrain's.
+      for (std::size_t k = first; k < last; ++k) {
+        const Eigen::Index q = members_[k];
+        (*w)(q) = held_(q);
+        (*w)(n + q) = 0.0;
+      }
+      continue;
+    }
     if (lookup.grid == nullptr || !(x >= lookup.from && x <= lookup.until))
       lookup.grid = buffer.gridFor(x, &lookup.from, &lookup.until);  // nullptr: a bridged gap
     terrain::Terrain::StationWeight weight;
-    if (lookup.grid != nullptr) weight = lookup.grid->stationWeightOf(x);
+    lookup.flat_from = 1.0;
+    lookup.flat_until = 0.0;
+    if (lookup.grid != nullptr) {
+      weight = lookup.grid->stationWeightOf(x);
+      if (weight.edge == 0 && !group_rate_[g]) {
+        lookup.flat_from = lookup.grid->stations()(weight.cell);
+        lookup.flat_until = lookup.grid->flatRunEnd(weight.cell);
+        lookup.offset = lateral_offset;
+      }
+    }
     for (std::size_t k = first; k < last; ++k) {
       const Eigen::Index q = members_[k];
       const double y = lateral_(q) + lateral_offset;

@@ -63,6 +63,12 @@ Terrain::Terrain(Vector stations, Vector lateral, Matrix heights, std::string na
     }
   }
   const Eigen::Index n = stations_.size();
+  flat_end_.resize(static_cast<std::size_t>(n));
+  flat_end_[static_cast<std::size_t>(n - 1)] = n - 1;
+  for (Eigen::Index i = n - 2; i >= 0; --i) {
+    const auto k = static_cast<std::size_t>(i);
+    flat_end_[k] = heights_.col(i) == heights_.col(i + 1) ? flat_end_[k + 1] : i;
+  }
   if (n > 1) {
     spacing_ = (stations_(n - 1) - stations_(0)) / static_cast<double>(n - 1);
     uniform_ = true;
@@ -77,7 +83,8 @@ Eigen::Index Terrain::stationCell(double x) const {
   const Eigen::Index last_cell = stations_.size() - 2;
   Eigen::Index i = 0;
   if (uniform_) {
-    i = static_cast<Eigen::Index>(std::floor((x - stations_(0)) / spacing_));
+    // Truncation is the floor for x >= x0, and below x0 the clamp gives cell 0 all the same.
+    i = static_cast<Eigen::Index>((x - stations_(0)) / spacing_);
     i = std::clamp<Eigen::Index>(i, 0, last_cell);
     // Rounding of (x - x0) / dx may land one cell off; the grid values decide.
     if (i < last_cell && x >= stations_(i + 1)) ++i;

@@ -140,6 +140,35 @@ TEST(Terrain, HoldsEdgesInXAndClampsInY) {
   EXPECT_DOUBLE_EQ(t.height(std::numeric_limits<double>::infinity(), 0.0), 5.0);
 }
 
+// Flat runs: where consecutive samples are equal on every line, the height is the sample's,
+// exactly (not (1 - w) h + w h, which rounds), and flatRunEnd() says how far that holds.
+TEST(Terrain, FlatRunsAreExactAndKnowTheirEnd) {
+  Vector x = Vector::LinSpaced(9, 0.0, 0.08);
+  Vector y(2);
+  y << -1.0, 1.0;
+  Matrix h(2, 9);
+  h << 0.1, 0.4, 0.4, 0.4, 0.4, 0.3, 0.3, 0.7, 0.7,  //
+      0.2, 0.4, 0.4, 0.4, 0.4, 0.3, 0.5, 0.7, 0.7;
+  const Terrain t(x, y, h, "runs");
+  EXPECT_EQ(t.flatRunEnd(0), x(0));
+  EXPECT_EQ(t.flatRunEnd(1), x(4));
+  EXPECT_EQ(t.flatRunEnd(3), x(4));
+  EXPECT_EQ(t.flatRunEnd(5), x(5));  // line 1 changes 5 -> 6
+  EXPECT_EQ(t.flatRunEnd(7), x(8));
+  EXPECT_EQ(t.flatRunEnd(8), x(8));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> along(x(1), x(4));
+  for (int k = 0; k < 1000; ++k) {
+    const double s = along(rng);
+    for (const double lateral : {-1.0, -0.37, 0.0, 0.81, 1.0}) {
+      const Terrain::LateralCell cell = t.lateralCellOf(lateral);
+      const double w = cell.weight;
+      const double sample = w == 0.0 ? h(cell.line, 1) : (1.0 - w) * h(cell.line, 1) + w * h(cell.line + 1, 1);
+      ASSERT_EQ(t.height(s, lateral), sample) << s;
+    }
+  }
+}
+
 TEST(Terrain, SingleLateralLineIsUniformAcrossWidth) {
   Vector x(2), y(1);
   x << 0.0, 1.0;

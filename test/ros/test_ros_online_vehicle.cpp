@@ -307,9 +307,11 @@ TEST(RoadInputSampler, RememberedLookupsGiveTheBuffersHeights) {
   Vector xq(8), yq(8);
   xq << -2.0, -0.7, 0.0, 0.9, 2.1, 0.9, -2.0, 0.9;
   yq << 0.5, -0.5, 0.2, 0.5, -0.3, -0.8, 0.9, 0.1;
-  RoadInputSampler sampler(xq, yq);
+  // Without u' the flat runs are skipped (their heights held), with u' they are not.
+  RoadInputSampler sampler(xq, yq, std::vector<bool>(8, false));
+  RoadInputSampler with_rates(xq, yq);
   terrain::TerrainBuffer buffer;
-  Vector w(16);
+  Vector w(16), w_rates(16);
   const double spacing = t.spacing();
   const Eigen::Index per_patch = 40;
   Eigen::Index next = 0;  // first sample of the next patch to add
@@ -332,6 +334,7 @@ TEST(RoadInputSampler, RememberedLookupsGiveTheBuffersHeights) {
       buffer.addPatch(station + 0.5, spacing, y, Matrix::Constant(1, 30, 0.3));
     }
     const int uncovered = sampler.sample(buffer, station, 0.0, offset, &w);
+    EXPECT_EQ(with_rates.sample(buffer, station, 0.0, offset, &w_rates), uncovered);
     int not_covered = 0;
     for (Eigen::Index q = 0; q < xq.size(); ++q) {
       const double x = station + xq(q);
@@ -340,6 +343,7 @@ TEST(RoadInputSampler, RememberedLookupsGiveTheBuffersHeights) {
         continue;
       }
       ASSERT_EQ(w(q), buffer.height(x, yq(q) + offset)) << "contact " << q << " step " << k;
+      ASSERT_EQ(w_rates(q), w(q)) << "contact " << q << " step " << k;
       ++checked;
     }
     EXPECT_EQ(uncovered, not_covered) << "step " << k;

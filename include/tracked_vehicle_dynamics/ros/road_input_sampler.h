@@ -20,6 +20,8 @@
 // - Each station remembers the patch grid that answered it and the station interval over which
 //   that grid keeps answering (TerrainBuffer::gridFor), each contact its lateral cell in that
 //   grid, until the buffer changes (TerrainBuffer::revision).
+// - On flat terrain (a run of equal grid samples, Terrain::flatRunEnd) the heights are those of
+//   the last call, exactly: a station still in the run skips the lookups (most of a track).
 // The heights are the buffer's, bit for bit.
 #pragma once
 
@@ -63,6 +65,9 @@ class RoadInputSampler {
   struct Lookup {
     const terrain::Terrain* grid = nullptr;  ///< nullptr: look up again
     double from = 0.0, until = 0.0;          ///< stations where `grid` answers [m]
+    /// Stations [m] of the flat run the last heights came from (empty: flat_from > flat_until),
+    /// with the lateral offset [m] they were sampled at.
+    double flat_from = 1.0, flat_until = 0.0, offset = 0.0;
   };
   /// Contact q's lateral cell in `grid` at lateral position y.
   struct ContactCell {
@@ -84,6 +89,7 @@ class RoadInputSampler {
   std::vector<Eigen::Index> members_;
   std::vector<std::size_t> group_begin_;
   std::vector<Lookup> lookups_;     // per group
+  std::vector<char> group_rate_;    // per group: a member needs u' (no flat-run shortcut)
   std::vector<ContactCell> cells_;  // per contact
   const terrain::TerrainBuffer* lookup_buffer_ = nullptr;
   std::uint64_t lookup_revision_ = 0;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/types.h"
 
@@ -52,9 +53,15 @@ class Terrain {
   double height(const StationWeight& station, const LateralCell& cell) const {
     if (station.edge < 0) return sampleHeight(0, cell);
     if (station.edge > 0) return sampleHeight(stations_.size() - 1, cell);
+    const double h0 = sampleHeight(station.cell, cell), h1 = sampleHeight(station.cell + 1, cell);
+    if (h0 == h1) return h0;  // exactly, where (1 - w) h0 + w h0 may round
     const double wx = station.weight;
-    return (1.0 - wx) * sampleHeight(station.cell, cell) + wx * sampleHeight(station.cell + 1, cell);
+    return (1.0 - wx) * h0 + wx * h1;
   }
+  /// The end of the flat run from station sample i: the last station x_k such that samples
+  /// i..k are equal on every lateral line (x_i when sample i + 1 differs). Over [x_i, x_k]
+  /// height(x, y) is, exactly, the height of sample i at y.
+  double flatRunEnd(Eigen::Index i) const { return stations_(flat_end_[static_cast<std::size_t>(i)]); }
   /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
   double slope(double x, double y) const;
   /// Both: h = height(x, y), dhdx = slope(x, y) (the interface RoadExcitation samples).
@@ -105,6 +112,7 @@ class Terrain {
   std::string name_;
   bool uniform_ = false;
   double spacing_ = 0.0;
+  std::vector<Eigen::Index> flat_end_;  // flatRunEnd(): the index k for each i
 };
 
 }  // namespace terrain
