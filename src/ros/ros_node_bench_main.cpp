@@ -5,6 +5,11 @@
 //     OnlineVehicle::step() on a paper track without ROS: step time mean / p50 / p99 / max, and
 //     the share of the terrain sampling (the same steps on a bare Simulator).
 //
+//   ros_node_bench bare [--rate HZ] [--wheels N]
+//     The floor: a stand-in for the node with its topics, ~reset and loop (sleep to the tick,
+//     take the messages, publish a RoadWheels sample) that computes nothing. The same driver
+//     against it measures what roscpp and the kernel alone take at this rate.
+//
 //   ros_node_bench node --pid PID [--track T] [--speed-kmh V] [--duration S] [--laps N]
 //     A load driver for a running node on real time: publishes the track's terrain patches at
 //     the vehicle's pace and the speed at 50 Hz, alternating between two values every 0.25 s,
@@ -17,6 +22,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -25,13 +32,17 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
 #include <dirent.h>
+#include <pthread.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "tracked_vehicle_dynamics/RoadWheels.h"
@@ -389,10 +400,70 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
       "median %.2f ms, p95 %.2f ms, max %.2f ms (%zu changes)\n",
       pct(0.5) * 1e3, pct(0.95) * 1e3, d.latencies.empty() ? -1.0 : d.latencies.back() * 1e3,
       d.latencies.size());
+  if (d.steps < 0)
+    return 0;  // no diagnostics (the bare stand-in)
   std::printf(
       "node diagnostics: step time mean %.1f us, p99 %.0f us, tick time p99 %.0f us, %.0f steps, "
       "%.0f late ticks, %.0f resynchronisations\n",
       d.step_mean_us, d.step_p99_us, d.tick_p99_us, d.steps, d.late, d.resyncs);
+  return 0;
+}
+
+/// The floor: a node with vehicle_dynamics_node's interface and loop (the same subscriptions
+/// on a callback queue of its own, ~reset, an absolute-time sleep per tick, a RoadWheels sample
+/// published per tick to whoever listens) that computes nothing. Under the same load driver its
+/// CPU use is what roscpp and the kernel take at this rate, whatever the model.
+int bare(int argc, char** argv, double rate, int wheels) {
+  ros::init(argc, argv, "vehicle_dynamics");
+  ros::NodeHandle nh, private_nh("~");
+  ros::CallbackQueue queue;
+  ros::NodeHandle loop_nh(nh), loop_private_nh(private_nh);
+  loop_nh.setCallbackQueue(&queue);
+  loop_private_nh.setCallbackQueue(&queue);
+  std::atomic<std::uint32_t> listeners{0};
+  ros::Publisher pub;
+  const auto recount = [&](const ros::SingleSubscriberPublisher&) {
+    listeners.store(pub.getNumSubscribers(), std::memory_order_relaxed);
+  };
+  pub = nh.advertise<tvd::RoadWheels>("road_wheels", 10, recount, recount);
+  double speed = 0.0;
+  ros::Subscriber speed_sub = loop_nh.subscribe<std_msgs::Float64>(
+      "speed", 10, [&](const std_msgs::Float64::ConstPtr& m) { speed = m->data; },
+      ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+  ros::Subscriber terrain_sub = loop_nh.subscribe<tvd::TerrainProfile>(
+      "terrain_profile", 100, [](const tvd::TerrainProfile::ConstPtr&) {}, ros::VoidConstPtr(),
+      ros::TransportHints().tcpNoDelay());
+  boost::function<bool(std_srvs::Empty::Request&, std_srvs::Empty::Response&)> on_reset =
+      [](std_srvs::Empty::Request&, std_srvs::Empty::Response&) { return true; };
+  ros::ServiceServer reset = loop_private_nh.advertiseService("reset", on_reset);
+  std::thread loop([&] {
+    pthread_setname_np(pthread_self(), "bare_loop");
+    tvd::RoadWheels msg;
+    msg.header.frame_id = "base_link";
+    msg.wheels.resize(static_cast<std::size_t>(wheels));
+    for (int i = 0; i < wheels; ++i)
+      msg.wheels[static_cast<std::size_t>(i)].name = "road_wheel_" + std::to_string(i);
+    const long step_ns = std::lround(1e9 / rate);
+    timespec next{};
+    clock_gettime(CLOCK_MONOTONIC, &next);
+    while (ros::ok()) {
+      next.tv_nsec += step_ns;
+      while (next.tv_nsec >= 1000000000L) {
+        next.tv_nsec -= 1000000000L;
+        ++next.tv_sec;
+      }
+      while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
+      }
+      queue.callAvailable(ros::WallDuration(0));
+      if (listeners.load(std::memory_order_relaxed) == 0)
+        continue;
+      msg.header.stamp = ros::Time::now();
+      msg.speed = speed;
+      pub.publish(msg);
+    }
+  });
+  ros::spin();
+  loop.join();
   return 0;
 }
 
@@ -423,6 +494,12 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   nd->add_option("--reset-service", reset_service, "the node's ~reset service")
       ->capture_default_str();
+  int wheels = 14;
+  auto* bare_cmd = app.add_subcommand(
+      "bare", "a stand-in node with the node's topics and loop that computes nothing");
+  bare_cmd->add_option("--rate", rate, "[Hz]")->capture_default_str();
+  bare_cmd->add_option("--wheels", wheels, "road wheels in each published sample")
+      ->capture_default_str();
   for (CLI::App* sub : {off, nd}) {
     sub->add_option("--track", track.track)->capture_default_str();
     sub->add_option("--speed-kmh", speed_kmh)->capture_default_str();
@@ -442,6 +519,8 @@ int main(int argc, char** argv) {
   try {
     if (off->parsed())
       return offline(vehicle, variant, cache, track, rate, method);
+    if (bare_cmd->parsed())
+      return bare(argc, argv, rate, wheels);
     return node(argc, argv, pid, track, duration, laps, reset_service);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ros_node_bench: error: %s\n", e.what());
