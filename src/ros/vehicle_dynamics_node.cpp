@@ -4,9 +4,16 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <ctime>
+#include <stdexcept>
 
+#include <poll.h>
 #include <pthread.h>
+#include <sys/timerfd.h>
+#include <unistd.h>
+
+#include <ros/poll_manager.h>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
@@ -79,7 +86,10 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
     clock_sub_ = loop_nh_.subscribe("/clock", 10, &VehicleDynamicsNode::onClock, this,
                                     ros::TransportHints().tcpNoDelay());
   }
-  loop_ = std::thread(&VehicleDynamicsNode::run, this);
+  if (use_sim_time_)
+    loop_ = std::thread(&VehicleDynamicsNode::run, this);
+  else
+    startTickTimer();
   ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %.0f Hz, %s/%s",
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            params_.publish_rate, methodName(params_.vehicle_options.method),
@@ -213,8 +223,54 @@ void VehicleDynamicsNode::restart() {
 
 VehicleDynamicsNode::~VehicleDynamicsNode() {
   stop_ = true;
+  stopTickTimer();
   if (loop_.joinable())
     loop_.join();
+}
+
+void VehicleDynamicsNode::startTickTimer() {
+  tick_fd_ = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+  if (tick_fd_ < 0)
+    throw std::runtime_error(std::string("vehicle_dynamics_node: timerfd_create: ") +
+                             std::strerror(errno));
+  itimerspec period{};
+  period.it_interval.tv_sec = step_ns_ / 1000000000LL;
+  period.it_interval.tv_nsec = step_ns_ % 1000000000LL;
+  period.it_value = period.it_interval;
+  if (timerfd_settime(tick_fd_, 0, &period, nullptr) != 0) {
+    const std::string why = std::strerror(errno);
+    close(tick_fd_);
+    tick_fd_ = -1;
+    throw std::runtime_error("vehicle_dynamics_node: timerfd_settime: " + why);
+  }
+  tick_target_ = std::make_shared<TickTarget>();
+  tick_target_->node = this;
+  const std::shared_ptr<TickTarget> target = tick_target_;
+  const int fd = tick_fd_;
+  ros::PollSet& poll_set = ros::PollManager::instance()->getPollSet();
+  poll_set.addSocket(fd, [target, fd](int) {
+    std::lock_guard<std::mutex> lock(target->mutex);
+    if (target->node == nullptr)
+      return;  // stopped (and the descriptor perhaps closed)
+    std::uint64_t expirations = 0;  // several after a stall: tick() catches up by ROS time
+    if (read(fd, &expirations, sizeof expirations) != static_cast<ssize_t>(sizeof expirations))
+      return;
+    target->node->tick();
+  });
+  poll_set.addEvents(fd, POLLIN);
+}
+
+void VehicleDynamicsNode::stopTickTimer() {
+  if (tick_fd_ < 0)
+    return;
+  ros::PollManager::instance()->getPollSet().delSocket(tick_fd_);
+  {
+    // Waits for a tick in progress; later calls find no node.
+    std::lock_guard<std::mutex> lock(tick_target_->mutex);
+    tick_target_->node = nullptr;
+  }
+  close(tick_fd_);
+  tick_fd_ = -1;
 }
 
 void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
@@ -245,44 +301,30 @@ ros::Time VehicleDynamicsNode::now() const {
 void VehicleDynamicsNode::run() {
   // Named so that top -H, perf and the benchmark tell the integration loop from roscpp's threads.
   pthread_setname_np(pthread_self(), "tvd_step_loop");
-  // With use_sim_time every /clock message wakes the loop; the timeout only keeps it responsive
-  // to shutdown when the clock stops.
+  // Every /clock message wakes the loop; the timeout only keeps it responsive to shutdown when
+  // the clock stops.
   const ros::WallDuration sim_wait(0.05);
-  timespec next_tick{};
-  clock_gettime(CLOCK_MONOTONIC, &next_tick);
   while (!stop_ && ros::ok()) {
-    if (use_sim_time_) {
-      loop_queue_.callAvailable(sim_wait);
-    } else {
-      // One wake-up per tick: sleep to the tick (absolute, no drift), then take every message
-      // that arrived meanwhile; the step at this tick uses them.
-      next_tick.tv_nsec += step_ns_;
-      while (next_tick.tv_nsec >= 1000000000L) {
-        next_tick.tv_nsec -= 1000000000L;
-        ++next_tick.tv_sec;
-      }
-      timespec now_wall{};
-      clock_gettime(CLOCK_MONOTONIC, &now_wall);
-      const std::int64_t late_ns = (now_wall.tv_sec - next_tick.tv_sec) * 1000000000LL +
-                                   (now_wall.tv_nsec - next_tick.tv_nsec);
-      if (late_ns > step_ns_) {
-        next_tick = now_wall;  // after a stall, tick from now on (ROS time catches the steps up)
-      } else {
-        while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next_tick, nullptr) == EINTR) {
-        }
-      }
-      loop_queue_.callAvailable(ros::WallDuration(0));
-    }
-    const ros::Time t = now();
-    if (t.isZero())
-      continue;  // use_sim_time and no /clock yet
-    try {
-      advanceTo(t);
-      updater_.update();
-    } catch (const std::exception& e) {
-      // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
-      ROS_ERROR_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: step failed: %s", e.what());
-    }
+    loop_queue_.callAvailable(sim_wait);
+    step();
+  }
+}
+
+void VehicleDynamicsNode::tick() {
+  loop_queue_.callAvailable(ros::WallDuration(0));
+  step();
+}
+
+void VehicleDynamicsNode::step() {
+  const ros::Time t = now();
+  if (t.isZero())
+    return;  // use_sim_time and no /clock yet
+  try {
+    advanceTo(t);
+    updater_.update();
+  } catch (const std::exception& e) {
+    // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
+    ROS_ERROR_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: step failed: %s", e.what());
   }
 }
 

@@ -13,17 +13,24 @@
 // vehicle. Bad input never stops the node: it is rejected or held, with a throttled warning and
 // a diagnostics entry.
 //
-// Threading: one loop thread owns the vehicle and its own callback queue (terrain, speed, ~reset
-// and, with use_sim_time, /clock): no locks, a deterministic step order. On real time it sleeps to
-// each tick (clock_nanosleep, absolute), takes the messages that arrived meanwhile, steps and
-// publishes: one wake-up per tick, and a message is used at the next tick (latency <= one period
-// plus the step). On simulated time every /clock message wakes it. (A ros::Timer costs two thread
-// hand-offs per tick, which dominated the CPU use at 1 kHz.)
+// Threading: the vehicle is owned by one tick at a time, which takes its own callback queue
+// (terrain, speed, ~reset and, with use_sim_time, /clock) first: no locks, a deterministic step
+// order, and a message is used at the next tick (latency <= one period plus the step).
+// - Real time: the tick is a periodic timerfd (CLOCK_MONOTONIC) watched by roscpp's network
+//   thread (its PollSet), which then steps and publishes. Every publication is written to the
+//   subscribers' sockets by that thread anyway; ticking there makes a tick one wake-up of one
+//   thread, where a thread of our own costs a second wake-up and a hand-off per tick (at 1 kHz:
+//   about 2 % of a core on the reference machine, bench/ros_node_bench.sh; a ros::Timer costs
+//   more still). The step is microseconds, so the network thread's other work waits little.
+// - Simulated time: a thread of our own, woken by every /clock message.
+#pragma once
+
 #pragma once
 
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -87,8 +94,15 @@ class VehicleDynamicsNode {
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   void onClock(const rosgraph_msgs::Clock::ConstPtr& msg);
-  /// The loop thread: waits for messages or the next tick, steps, publishes, diagnoses.
+  /// The simulated-time loop thread: waits for /clock (and messages), then tick().
   void run();
+  /// Real time: the periodic timerfd in roscpp's network thread, which calls tick().
+  void startTickTimer();
+  void stopTickTimer();
+  /// Real time: takes the messages that arrived, then step().
+  void tick();
+  /// Steps to ROS time now, publishes, diagnoses.
+  void step();
   /// ROS time now; with use_sim_time the latest /clock this loop has seen.
   ros::Time now() const;
   /// Runs the steps due up to `now` and publishes.
@@ -159,6 +173,14 @@ class VehicleDynamicsNode {
   DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
 
   std::atomic<bool> stop_{false};
+  // The timerfd's callback holds this, not the node: after stopTickTimer() a callback already on
+  // its way finds node == nullptr.
+  struct TickTarget {
+    std::mutex mutex;
+    VehicleDynamicsNode* node = nullptr;
+  };
+  std::shared_ptr<TickTarget> tick_target_;
+  int tick_fd_ = -1;
   std::thread loop_;  // last: started when everything else exists
 };
 
