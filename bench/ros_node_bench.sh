@@ -12,7 +12,8 @@
 #    node's CPU use (/proc, per thread too), the latency from a speed message to the first
 #    published sample stepped with it, and reads the node's step-time diagnostics.
 # 3. the floor: the same driver against `ros_node_bench bare`, a stand-in with the node's topics
-#    and loop that computes nothing: what roscpp and the kernel take at this rate.
+#    and tick that computes nothing: what roscpp and the kernel take at this rate.
+# 4. the same stand-in ticking in a thread of its own: what the network-thread tick saves.
 # Timings depend on the machine's load: run it on a quiet machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -64,10 +65,18 @@ kill -INT "$node_pid" 2>/dev/null || true
 wait "$node_pid" 2>/dev/null || true
 
 echo
-echo "== 3. The floor: a bare stand-in with the node's topics and loop, computing nothing"
-echo "(ros_node_bench bare: sleep to the tick, take the messages, publish a 14-wheel sample at"
-echo " $PUBLISH_RATE Hz; the same driver. The node's CPU above this is the model's.)"
+echo "== 3. The floor: a bare stand-in with the node's topics and tick, computing nothing"
+echo "(ros_node_bench bare: a timerfd in roscpp's network thread takes the messages and publishes"
+echo " a 14-wheel sample at $PUBLISH_RATE Hz; the same driver. The node's CPU above this is the model's.)"
 "$bench" bare --rate "$PUBLISH_RATE" __name:=vehicle_dynamics >"$log_dir/bare.log" 2>&1 &
+node_pid=$!
+"$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
+kill -INT "$node_pid" 2>/dev/null || true
+wait "$node_pid" 2>/dev/null || true
+
+echo
+echo "== 4. The same stand-in ticking in a thread of its own (clock_nanosleep), the other design"
+"$bench" bare --own-thread --rate "$PUBLISH_RATE" __name:=vehicle_dynamics >"$log_dir/bare_thread.log" 2>&1 &
 node_pid=$!
 "$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
 echo "(logs in $log_dir)"

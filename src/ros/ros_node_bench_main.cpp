@@ -5,10 +5,11 @@
 //     OnlineVehicle::step() on a paper track without ROS: step time mean / p50 / p99 / max, and
 //     the share of the terrain sampling (the same steps on a bare Simulator).
 //
-//   ros_node_bench bare [--rate HZ] [--wheels N]
-//     The floor: a stand-in for the node with its topics, ~reset and loop (sleep to the tick,
-//     take the messages, publish a RoadWheels sample) that computes nothing. The same driver
-//     against it measures what roscpp and the kernel alone take at this rate.
+//   ros_node_bench bare [--rate HZ] [--wheels N] [--own-thread]
+//     The floor: a stand-in for the node with its topics, ~reset and tick (a periodic timerfd in
+//     roscpp's network thread: take the messages, publish a RoadWheels sample) that computes
+//     nothing. The same driver against it measures what roscpp and the kernel alone take at this
+//     rate. --own-thread: the tick in a thread of its own sleeping to each tick instead.
 //
 //   ros_node_bench node --pid PID [--track T] [--speed-kmh V] [--duration S] [--laps N]
 //     A load driver for a running node on real time: publishes the track's terrain patches at
@@ -26,6 +27,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <mutex>
@@ -37,11 +39,14 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/callback_queue.h>
+#include <ros/poll_manager.h>
 #include <ros/ros.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
 #include <dirent.h>
 #include <pthread.h>
+#include <poll.h>
+#include <sys/timerfd.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -409,11 +414,12 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
   return 0;
 }
 
-/// The floor: a node with vehicle_dynamics_node's interface and loop (the same subscriptions
-/// on a callback queue of its own, ~reset, an absolute-time sleep per tick, a RoadWheels sample
-/// published per tick to whoever listens) that computes nothing. Under the same load driver its
-/// CPU use is what roscpp and the kernel take at this rate, whatever the model.
-int bare(int argc, char** argv, double rate, int wheels) {
+/// The floor: a node with vehicle_dynamics_node's interface and tick (the same subscriptions
+/// on a callback queue of its own, ~reset, a periodic timerfd in roscpp's network thread, a
+/// RoadWheels sample published per tick to whoever listens) that computes nothing. Under the
+/// same load driver its CPU use is what roscpp and the kernel take at this rate, whatever the
+/// model. own_thread: the tick in a thread of its own (the node's earlier design).
+int bare(int argc, char** argv, double rate, int wheels, bool own_thread) {
   ros::init(argc, argv, "vehicle_dynamics");
   ros::NodeHandle nh, private_nh("~");
   ros::CallbackQueue queue;
@@ -436,34 +442,63 @@ int bare(int argc, char** argv, double rate, int wheels) {
   boost::function<bool(std_srvs::Empty::Request&, std_srvs::Empty::Response&)> on_reset =
       [](std_srvs::Empty::Request&, std_srvs::Empty::Response&) { return true; };
   ros::ServiceServer reset = loop_private_nh.advertiseService("reset", on_reset);
-  std::thread loop([&] {
-    pthread_setname_np(pthread_self(), "bare_loop");
-    tvd::RoadWheels msg;
-    msg.header.frame_id = "base_link";
-    msg.wheels.resize(static_cast<std::size_t>(wheels));
-    for (int i = 0; i < wheels; ++i)
-      msg.wheels[static_cast<std::size_t>(i)].name = "road_wheel_" + std::to_string(i);
-    const long step_ns = std::lround(1e9 / rate);
-    timespec next{};
-    clock_gettime(CLOCK_MONOTONIC, &next);
-    while (ros::ok()) {
-      next.tv_nsec += step_ns;
-      while (next.tv_nsec >= 1000000000L) {
-        next.tv_nsec -= 1000000000L;
-        ++next.tv_sec;
+  tvd::RoadWheels msg;
+  msg.header.frame_id = "base_link";
+  msg.wheels.resize(static_cast<std::size_t>(wheels));
+  for (int i = 0; i < wheels; ++i)
+    msg.wheels[static_cast<std::size_t>(i)].name = "road_wheel_" + std::to_string(i);
+  const auto tick = [&] {
+    queue.callAvailable(ros::WallDuration(0));
+    if (listeners.load(std::memory_order_relaxed) == 0)
+      return;
+    msg.header.stamp = ros::Time::now();
+    msg.speed = speed;
+    pub.publish(msg);
+  };
+  const long step_ns = std::lround(1e9 / rate);
+  std::thread loop;
+  int fd = -1;
+  if (own_thread) {
+    // vehicle_dynamics_node's design before the network-thread tick.
+    loop = std::thread([&] {
+      pthread_setname_np(pthread_self(), "bare_loop");
+      timespec next{};
+      clock_gettime(CLOCK_MONOTONIC, &next);
+      while (ros::ok()) {
+        next.tv_nsec += step_ns;
+        while (next.tv_nsec >= 1000000000L) {
+          next.tv_nsec -= 1000000000L;
+          ++next.tv_sec;
+        }
+        while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
+        }
+        tick();
       }
-      while (clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr) == EINTR) {
-      }
-      queue.callAvailable(ros::WallDuration(0));
-      if (listeners.load(std::memory_order_relaxed) == 0)
-        continue;
-      msg.header.stamp = ros::Time::now();
-      msg.speed = speed;
-      pub.publish(msg);
-    }
-  });
+    });
+  } else {
+    // vehicle_dynamics_node's design: a periodic timerfd in roscpp's network thread.
+    fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+    itimerspec period{};
+    period.it_interval.tv_sec = step_ns / 1000000000L;
+    period.it_interval.tv_nsec = step_ns % 1000000000L;
+    period.it_value = period.it_interval;
+    if (fd < 0 || timerfd_settime(fd, 0, &period, nullptr) != 0)
+      throw std::runtime_error("bare: timerfd: " + std::string(std::strerror(errno)));
+    ros::PollSet& poll_set = ros::PollManager::instance()->getPollSet();
+    poll_set.addSocket(fd, [&, fd](int) {
+      std::uint64_t expirations = 0;
+      if (read(fd, &expirations, sizeof expirations) == static_cast<ssize_t>(sizeof expirations))
+        tick();
+    });
+    poll_set.addEvents(fd, POLLIN);
+  }
   ros::spin();
-  loop.join();
+  if (loop.joinable())
+    loop.join();
+  if (fd >= 0) {
+    ros::PollManager::instance()->getPollSet().delSocket(fd);
+    close(fd);
+  }
   return 0;
 }
 
@@ -500,6 +535,10 @@ int main(int argc, char** argv) {
   bare_cmd->add_option("--rate", rate, "[Hz]")->capture_default_str();
   bare_cmd->add_option("--wheels", wheels, "road wheels in each published sample")
       ->capture_default_str();
+  bool bare_thread = false;
+  bare_cmd->add_flag("--own-thread", bare_thread,
+                     "tick in a thread of its own (clock_nanosleep) instead of roscpp's network "
+                     "thread");
   for (CLI::App* sub : {off, nd}) {
     sub->add_option("--track", track.track)->capture_default_str();
     sub->add_option("--speed-kmh", speed_kmh)->capture_default_str();
@@ -520,7 +559,7 @@ int main(int argc, char** argv) {
     if (off->parsed())
       return offline(vehicle, variant, cache, track, rate, method);
     if (bare_cmd->parsed())
-      return bare(argc, argv, rate, wheels);
+      return bare(argc, argv, rate, wheels, bare_thread);
     return node(argc, argv, pid, track, duration, laps, reset_service);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "ros_node_bench: error: %s\n", e.what());
