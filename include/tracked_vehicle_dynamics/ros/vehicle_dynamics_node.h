@@ -2,7 +2,7 @@
 //
 //   terrain_profile (TerrainProfile) ──► OnlineVehicle::addTerrain   (TerrainBuffer)
 //   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
-//   loop thread at ~rate on ROS time ──► OnlineVehicle::step() for every step due
+//   tick at ~rate on ROS time        ──► OnlineVehicle::step() for every step due
 //       ──► tf2 odom→base_link→{road wheels, named points}, hull/accel, hull/twist, road_wheels,
 //           comfort, /diagnostics
 //
@@ -62,7 +62,7 @@ class VehicleDynamicsNode {
   /// Reads the parameters, loads or builds the reduced model, advertises, subscribes and starts
   /// the loop. Throws ParameterError naming the parameter (or the description file) at fault.
   VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
-  /// Stops and joins the loop thread.
+  /// Stops the tick (timerfd or loop thread).
   ~VehicleDynamicsNode();
   VehicleDynamicsNode(const VehicleDynamicsNode&) = delete;
   VehicleDynamicsNode& operator=(const VehicleDynamicsNode&) = delete;
@@ -94,7 +94,7 @@ class VehicleDynamicsNode {
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   void onClock(const rosgraph_msgs::Clock::ConstPtr& msg);
-  /// The simulated-time loop thread: waits for /clock (and messages), then tick().
+  /// The simulated-time loop thread: waits for /clock (and messages), then step().
   void run();
   /// Real time: the periodic timerfd in roscpp's network thread, which calls tick().
   void startTickTimer();
@@ -121,7 +121,7 @@ class VehicleDynamicsNode {
 
   ros::NodeHandle nh_, private_nh_;
   NodeParameters params_;
-  ros::CallbackQueue loop_queue_;  // everything the loop thread handles
+  ros::CallbackQueue loop_queue_;  // everything the tick handles
   ros::NodeHandle loop_nh_, loop_private_nh_;
 
   std::unique_ptr<OnlineVehicle> vehicle_;
