@@ -311,7 +311,10 @@ class ModalEngine : public SimulatorEngine {
     };
     const DofIndex n_blocks = (n_t - 1 + kBlock - 1) / kBlock;
     std::vector<std::vector<Change>> changes(static_cast<std::size_t>(n_blocks));
+    // dense: 1 = many changes, 2 = a non-finite change (then every column is multiplied).
     std::vector<char> dense(static_cast<std::size_t>(n_blocks), 0);
+    // touched[block * m + j]: input j changes somewhere in the block.
+    std::vector<char> touched(static_cast<std::size_t>(n_blocks * m), 0);
     // Runs of identical samples (flat terrain) are skipped a chunk at a time: bitwise-equal
     // samples are equal values (a NaN that stays NaN is NaN in the block's anchor anyway).
     constexpr DofIndex kChunk = 32;
@@ -326,13 +329,15 @@ class ModalEngine : public SimulatorEngine {
           if (delta == 0.0)
             continue;
           const auto block = static_cast<std::size_t>((k - 1) / kBlock);
+          touched[block * static_cast<std::size_t>(m) + static_cast<std::size_t>(j)] = 1;
+          if (!std::isfinite(delta))
+            dense[block] = 2;
           if (dense[block])
             continue;
           const DofIndex b = std::min(kBlock, n_t - 1 - static_cast<DofIndex>(block) * kBlock);
           std::vector<Change>& list = changes[block];
           list.push_back({k, j, delta});
-          if (!std::isfinite(delta) ||
-              static_cast<DofIndex>(list.size()) * kDenseFraction > m * b) {
+          if (static_cast<DofIndex>(list.size()) * kDenseFraction > m * b) {
             dense[block] = 1;
             std::vector<Change>().swap(list);
           }
@@ -340,6 +345,7 @@ class ModalEngine : public SimulatorEngine {
       }
     }
     Matrix terms(input_map_.rows(), kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
+    std::vector<DofIndex> changing, rest, changing_inputs;
     for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
       const DofIndex b = std::min(kBlock, n_t - k0);
       const auto block = static_cast<std::size_t>((k0 - 1) / kBlock);
@@ -348,8 +354,26 @@ class ModalEngine : public SimulatorEngine {
       anchorInputTerms();
       p_ = input_terms_.head(n);
       if (dense[block]) {
-        terms.leftCols(b).noalias() =
-            input_map_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
+        // The inputs that change in the block (columns `changing` of G) times their samples,
+        // plus the constant part of the others: G(:, rest) w_{k0-1}(rest) for every sample.
+        changing.clear();
+        rest.clear();
+        for (DofIndex j = 0; j < m; ++j) {
+          const bool t = touched[block * static_cast<std::size_t>(m) + static_cast<std::size_t>(j)];
+          (t ? changing : rest).push_back(j);
+        }
+        if (dense[block] == 2 || 4 * static_cast<DofIndex>(changing.size()) > 3 * m) {
+          terms.leftCols(b).noalias() =
+              input_map_ * inputs.middleRows(k0, b)(Eigen::all, active_inputs_).transpose();
+        } else {
+          changing_inputs.clear();
+          for (const DofIndex j : changing)
+            changing_inputs.push_back(active_inputs_[static_cast<std::size_t>(j)]);
+          const Vector constant = input_map_(Eigen::all, rest) * active_input_(rest);
+          terms.leftCols(b).noalias() = input_map_(Eigen::all, changing) *
+                                        inputs.middleRows(k0, b)(Eigen::all, changing_inputs).transpose();
+          terms.leftCols(b).colwise() += constant;
+        }
       } else {
         terms.leftCols(b).setZero();
         for (const Change& c : changes[block])
