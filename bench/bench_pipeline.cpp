@@ -48,8 +48,24 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int repeat = 3;
-  for (int i = 1; i + 1 < argc; ++i)
-    if (std::strcmp(argv[i], "--repeat") == 0) repeat = std::max(1, std::atoi(argv[i + 1]));
+  const char* const usage =
+      "usage: bench_pipeline [--repeat N]   (N >= 1 repetitions, default 3)\n"
+      "The reduction pipeline and the simulation of the tracked paper vehicle, beside SciPy on\n"
+      "the same matrices (bench/scipy_pipeline.py); a few minutes.\n";
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
+      std::fputs(usage, stdout);
+      return 0;
+    }
+    if (std::strcmp(argv[i], "--repeat") == 0) {
+      repeat = i + 1 < argc ? std::atoi(argv[++i]) : 0;
+      if (repeat >= 1) continue;
+      std::fprintf(stderr, "bench_pipeline: --repeat needs a whole number >= 1\n%s", usage);
+      return 2;
+    }
+    std::fprintf(stderr, "bench_pipeline: unexpected argument '%s'\n%s", argv[i], usage);
+    return 2;
+  }
   const std::string vehicle_file = std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tvd_bench_pipeline";
   std::filesystem::create_directories(dir);
