@@ -57,26 +57,29 @@ rosparam set /vehicle_dynamics/vehicle "$VEHICLE"
 rosparam set /vehicle_dynamics/variant "$VARIANT"
 rosparam set /vehicle_dynamics/cache_dir "$CACHE"
 rosparam set /vehicle_dynamics/publish_rate "$PUBLISH_RATE"
+# Runs a node-like process in the background (its log: $log_dir/$1.log) under the load driver,
+# then stops it.
+drive() {
+  local log="$1"
+  shift
+  "$@" __name:=vehicle_dynamics >"$log_dir/$log.log" 2>&1 &
+  node_pid=$!
+  "$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
+  kill -INT "$node_pid" 2>/dev/null || true
+  wait "$node_pid" 2>/dev/null || true
+  node_pid=""
+}
+
 echo "(node: $VARIANT, rate 1000 Hz, publish_rate $PUBLISH_RATE Hz; the driver subscribes road_wheels)"
-"$node" __name:=vehicle_dynamics >"$log_dir/node.log" 2>&1 &
-node_pid=$!
-"$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
-kill -INT "$node_pid" 2>/dev/null || true
-wait "$node_pid" 2>/dev/null || true
+drive node "$node"
 
 echo
 echo "== 3. The floor: a bare stand-in with the node's topics and tick, computing nothing"
 echo "(ros_node_bench bare: a timerfd in roscpp's network thread takes the messages and publishes"
 echo " a 14-wheel sample at $PUBLISH_RATE Hz; the same driver. The node's CPU above this is the model's.)"
-"$bench" bare --rate "$PUBLISH_RATE" __name:=vehicle_dynamics >"$log_dir/bare.log" 2>&1 &
-node_pid=$!
-"$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
-kill -INT "$node_pid" 2>/dev/null || true
-wait "$node_pid" 2>/dev/null || true
+drive bare "$bench" bare --rate "$PUBLISH_RATE"
 
 echo
 echo "== 4. The same stand-in ticking in a thread of its own (clock_nanosleep), the other design"
-"$bench" bare --own-thread --rate "$PUBLISH_RATE" __name:=vehicle_dynamics >"$log_dir/bare_thread.log" 2>&1 &
-node_pid=$!
-"$bench" node --pid "$node_pid" --track "$TRACK" --speed-kmh "$SPEED_KMH" --laps "$LAPS"
+drive bare_thread "$bench" bare --own-thread --rate "$PUBLISH_RATE"
 echo "(logs in $log_dir)"

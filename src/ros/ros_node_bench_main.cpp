@@ -27,10 +27,11 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -39,14 +40,11 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/callback_queue.h>
-#include <ros/poll_manager.h>
 #include <ros/ros.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
 #include <dirent.h>
 #include <pthread.h>
-#include <poll.h>
-#include <sys/timerfd.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -56,6 +54,7 @@
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/duration_statistics.h"
+#include "tracked_vehicle_dynamics/ros/network_thread_timer.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
@@ -91,45 +90,44 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
               static_cast<long>(model.system.outputCount()), method.c_str(), rate);
   const rl::TrackRun run = rl::trackRun(track);
   const long steps = static_cast<long>(run.duration * rate);
-  rl::DurationStatistics step_stats;
-  {
+  // One run of the track on a fresh vehicle, the patches added at their times; step(vehicle)
+  // does (and times) each step.
+  const auto run_track = [&](const std::function<void(rl::OnlineVehicle&)>& step) {
     rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
     vehicle.setSpeed(track.speed);
     std::size_t next_patch = 0;
     for (long k = 0; k < steps; ++k) {
       const double t = static_cast<double>(k) / rate;
-      while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
+      while (next_patch < run.patches.size() && run.patches[next_patch].time <= t)
         vehicle.addTerrain(run.patches[next_patch++].patch);
-      }
-      const auto a = Clock::now();
-      vehicle.step();
-      step_stats.add(seconds(a, Clock::now()));
+      step(vehicle);
     }
-  }
+  };
+  rl::DurationStatistics step_stats;
+  run_track([&](rl::OnlineVehicle& vehicle) {
+    const auto a = Clock::now();
+    vehicle.step();
+    step_stats.add(seconds(a, Clock::now()));
+  });
   printStats("OnlineVehicle::step", step_stats);
 
   // The same run again, timing a second sampler on the vehicle's terrain buffer at the station
   // of the coming step: the terrain sampling alone (its lookups are remembered like the
   // vehicle's). A separate run, so that neither timing finds the other's data in the cache.
   rl::DurationStatistics sample_stats;
-  {
-    rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
-    vehicle.setSpeed(track.speed);
-    rl::RoadInputSampler probe = vehicle.sampler();
-    tvd::Vector probe_input(2 * probe.size());
-    std::size_t next_patch = 0;
-    for (long k = 0; k < steps; ++k) {
-      const double t = static_cast<double>(k) / rate;
-      while (next_patch < run.patches.size() && run.patches[next_patch].time <= t) {
-        vehicle.addTerrain(run.patches[next_patch++].patch);
-      }
-      const auto p = Clock::now();
-      probe.sample(vehicle.terrain(), vehicle.station() + track.speed / rate, track.speed,
-                   options.lateral_offset, &probe_input);
-      sample_stats.add(seconds(p, Clock::now()));
-      vehicle.step();
+  std::optional<rl::RoadInputSampler> probe;
+  tvd::Vector probe_input;
+  run_track([&](rl::OnlineVehicle& vehicle) {
+    if (!probe) {
+      probe.emplace(vehicle.sampler());
+      probe_input.resize(2 * probe->size());
     }
-  }
+    const auto a = Clock::now();
+    probe->sample(vehicle.terrain(), vehicle.station() + track.speed / rate, track.speed,
+                  options.lateral_offset, &probe_input);
+    sample_stats.add(seconds(a, Clock::now()));
+    vehicle.step();
+  });
   printStats("terrain sampling alone", sample_stats);
 
   // The simulator alone, same sizes, constant input: what the terrain sampling adds.
@@ -149,23 +147,32 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   return 0;
 }
 
-/// utime + stime of a process [s].
-double cpuSeconds(int pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+/// User and system CPU time [s] from a /proc/.../stat file (fields 14 and 15); false if it
+/// cannot be read (the process or thread ended).
+bool readCpuTimes(const std::string& stat_path, double* user, double* system) {
+  std::ifstream in(stat_path);
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto close = content.rfind(')');
+  const auto close = content.rfind(')');  // the command name may contain spaces
   if (close == std::string::npos)
-    return -1.0;
+    return false;
   std::istringstream rest(content.substr(close + 2));
   std::string field;
-  double utime = 0.0, stime = 0.0;
+  const double tick = static_cast<double>(sysconf(_SC_CLK_TCK));
   for (int i = 3; i <= 15 && rest >> field; ++i) {
     if (i == 14)
-      utime = std::stod(field);
+      *user = std::stod(field) / tick;
     if (i == 15)
-      stime = std::stod(field);
+      *system = std::stod(field) / tick;
   }
-  return (utime + stime) / static_cast<double>(sysconf(_SC_CLK_TCK));
+  return true;
+}
+
+/// utime + stime of a process [s], -1 if it cannot be read.
+double cpuSeconds(int pid) {
+  double user = 0.0, system = 0.0;
+  if (!readCpuTimes("/proc/" + std::to_string(pid) + "/stat", &user, &system))
+    return -1.0;
+  return user + system;
 }
 
 /// One thread of a process: name, user and system CPU [s], context switches.
@@ -182,7 +189,6 @@ std::map<int, ThreadSample> threadSamples(int pid) {
   DIR* dir = opendir(task_dir.c_str());
   if (dir == nullptr)
     return samples;
-  const double tick = static_cast<double>(sysconf(_SC_CLK_TCK));
   while (const dirent* entry = readdir(dir)) {
     if (entry->d_name[0] == '.')
       continue;
@@ -190,19 +196,8 @@ std::map<int, ThreadSample> threadSamples(int pid) {
     ThreadSample s;
     std::ifstream comm(base + "/comm");
     std::getline(comm, s.name);
-    std::ifstream stat(base + "/stat");
-    std::string content((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
-    const auto close = content.rfind(')');
-    if (close == std::string::npos)
+    if (!readCpuTimes(base + "/stat", &s.user, &s.system))
       continue;
-    std::istringstream rest(content.substr(close + 2));
-    std::string field;
-    for (int i = 3; i <= 15 && rest >> field; ++i) {
-      if (i == 14)
-        s.user = std::stod(field) / tick;
-      if (i == 15)
-        s.system = std::stod(field) / tick;
-    }
     std::ifstream status(base + "/status");
     std::string line;
     while (std::getline(status, line)) {
@@ -457,7 +452,7 @@ int bare(int argc, char** argv, double rate, int wheels, bool own_thread) {
   };
   const long step_ns = std::lround(1e9 / rate);
   std::thread loop;
-  int fd = -1;
+  std::unique_ptr<rl::NetworkThreadTimer> timer;
   if (own_thread) {
     // vehicle_dynamics_node's design before the network-thread tick.
     loop = std::thread([&] {
@@ -476,29 +471,12 @@ int bare(int argc, char** argv, double rate, int wheels, bool own_thread) {
       }
     });
   } else {
-    // vehicle_dynamics_node's design: a periodic timerfd in roscpp's network thread.
-    fd = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
-    itimerspec period{};
-    period.it_interval.tv_sec = step_ns / 1000000000L;
-    period.it_interval.tv_nsec = step_ns % 1000000000L;
-    period.it_value = period.it_interval;
-    if (fd < 0 || timerfd_settime(fd, 0, &period, nullptr) != 0)
-      throw std::runtime_error("bare: timerfd: " + std::string(std::strerror(errno)));
-    ros::PollSet& poll_set = ros::PollManager::instance()->getPollSet();
-    poll_set.addSocket(fd, [&, fd](int) {
-      std::uint64_t expirations = 0;
-      if (read(fd, &expirations, sizeof expirations) == static_cast<ssize_t>(sizeof expirations))
-        tick();
-    });
-    poll_set.addEvents(fd, POLLIN);
+    timer = std::make_unique<rl::NetworkThreadTimer>(step_ns, tick);  // the node's design
   }
   ros::spin();
+  timer.reset();
   if (loop.joinable())
     loop.join();
-  if (fd >= 0) {
-    ros::PollManager::instance()->getPollSet().delSocket(fd);
-    close(fd);
-  }
   return 0;
 }
 

@@ -4,16 +4,9 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <ctime>
-#include <stdexcept>
 
-#include <poll.h>
 #include <pthread.h>
-#include <sys/timerfd.h>
-#include <unistd.h>
-
-#include <ros/poll_manager.h>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
@@ -89,7 +82,7 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   if (use_sim_time_)
     loop_ = std::thread(&VehicleDynamicsNode::run, this);
   else
-    startTickTimer();
+    tick_timer_ = std::make_unique<NetworkThreadTimer>(step_ns_, [this] { tick(); });
   ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %.0f Hz, %s/%s",
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            params_.publish_rate, methodName(params_.vehicle_options.method),
@@ -223,54 +216,9 @@ void VehicleDynamicsNode::restart() {
 
 VehicleDynamicsNode::~VehicleDynamicsNode() {
   stop_ = true;
-  stopTickTimer();
+  tick_timer_.reset();
   if (loop_.joinable())
     loop_.join();
-}
-
-void VehicleDynamicsNode::startTickTimer() {
-  tick_fd_ = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
-  if (tick_fd_ < 0)
-    throw std::runtime_error(std::string("vehicle_dynamics_node: timerfd_create: ") +
-                             std::strerror(errno));
-  itimerspec period{};
-  period.it_interval.tv_sec = step_ns_ / 1000000000LL;
-  period.it_interval.tv_nsec = step_ns_ % 1000000000LL;
-  period.it_value = period.it_interval;
-  if (timerfd_settime(tick_fd_, 0, &period, nullptr) != 0) {
-    const std::string why = std::strerror(errno);
-    close(tick_fd_);
-    tick_fd_ = -1;
-    throw std::runtime_error("vehicle_dynamics_node: timerfd_settime: " + why);
-  }
-  tick_target_ = std::make_shared<TickTarget>();
-  tick_target_->node = this;
-  const std::shared_ptr<TickTarget> target = tick_target_;
-  const int fd = tick_fd_;
-  ros::PollSet& poll_set = ros::PollManager::instance()->getPollSet();
-  poll_set.addSocket(fd, [target, fd](int) {
-    std::lock_guard<std::mutex> lock(target->mutex);
-    if (target->node == nullptr)
-      return;  // stopped (and the descriptor perhaps closed)
-    std::uint64_t expirations = 0;  // several after a stall: tick() catches up by ROS time
-    if (read(fd, &expirations, sizeof expirations) != static_cast<ssize_t>(sizeof expirations))
-      return;
-    target->node->tick();
-  });
-  poll_set.addEvents(fd, POLLIN);
-}
-
-void VehicleDynamicsNode::stopTickTimer() {
-  if (tick_fd_ < 0)
-    return;
-  ros::PollManager::instance()->getPollSet().delSocket(tick_fd_);
-  {
-    // Waits for a tick in progress; later calls find no node.
-    std::lock_guard<std::mutex> lock(tick_target_->mutex);
-    tick_target_->node = nullptr;
-  }
-  close(tick_fd_);
-  tick_fd_ = -1;
 }
 
 void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {

@@ -188,22 +188,6 @@ double TerrainBuffer::coveredFrom() const {
   return empty() ? std::numeric_limits<double>::infinity() : patches_.begin()->first;
 }
 
-double TerrainBuffer::coveredUntil() const {
-  if (empty()) return -std::numeric_limits<double>::infinity();
-  double reach = patches_.begin()->first;
-  double reach_spacing = patches_.begin()->second.spacing;
-  for (const auto& [start, patch] : patches_) {
-    const double gap_limit =
-        kBridgeFactor * std::max(reach_spacing, patch.spacing) * (1.0 + kSlack);
-    if (start > reach + gap_limit) break;
-    if (patch.end() > reach) {
-      reach = patch.end();
-      reach_spacing = patch.spacing;
-    }
-  }
-  return reach;
-}
-
 void TerrainBuffer::clear() {
   patches_.clear();
   updateExtents();
@@ -220,6 +204,21 @@ void TerrainBuffer::updateExtents() {
     max_length_ = std::max(max_length_, patch.end() - start);
     max_spacing_ = std::max(max_spacing_, patch.spacing);
   }
+  // The contiguous reach from the first patch, across bridgeable gaps (read at every step).
+  covered_until_ = -std::numeric_limits<double>::infinity();
+  if (empty()) return;
+  double reach = patches_.begin()->first;
+  double reach_spacing = patches_.begin()->second.spacing;
+  for (const auto& [start, patch] : patches_) {
+    const double gap_limit =
+        kBridgeFactor * std::max(reach_spacing, patch.spacing) * (1.0 + kSlack);
+    if (start > reach + gap_limit) break;
+    if (patch.end() > reach) {
+      reach = patch.end();
+      reach_spacing = patch.spacing;
+    }
+  }
+  covered_until_ = reach;
 }
 
 }  // namespace terrain

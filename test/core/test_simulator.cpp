@@ -425,13 +425,30 @@ TEST(Simulator, QuasiStaticTruncationKeepsStaticsAndDisplacements) {
   EXPECT_THROW(Simulator(s, bad), InputError);
 }
 
-// Road inputs change only where the terrain under them is not flat, and the modal engine then
-// updates its input terms G w by increments (simulator.cpp). On 40 inputs crossing a short bump
-// one after the other (at most two of 80 input columns change per step, over more steps than
-// the re-anchoring interval) the result must still be the exact one: equal to the dense
-// augmented-exponential engine, stepped and blocked, and — with quasi-static modes, whose
-// output terms are in G too — equal by linearity to runs whose inputs change densely:
-//   y(W) = y(W + D) - y(D) + y(0)   for any input series D (y affine in W).
+// The outputs of the same input series through the dense augmented-exponential engine, and the
+// modal engine batched (simulate) and stepped, all from static equilibrium (first-order hold).
+struct EngineRuns {
+  Matrix dense, batch, stepped;
+};
+EngineRuns runEngines(const SecondOrderSystem& s, const Vector& f_g, const Matrix& w) {
+  SimulatorOptions dense_options =
+      options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
+  SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  dense_options.generalized_force = modal_options.generalized_force = f_g;
+  Simulator dense(s, dense_options), batch(s, modal_options), stepped(s, modal_options);
+  const Vector z0 = staticEquilibrium(s, Vector::Zero(s.inputCount()), f_g);
+  for (Simulator* sim : {&dense, &batch, &stepped})
+    sim->reset(z0, w.row(0).transpose());
+  EngineRuns runs{dense.simulate(w), batch.simulate(w), Matrix(w.rows(), 0)};
+  runs.stepped.resize(w.rows(), runs.batch.cols());
+  runs.stepped.row(0) = stepped.outputs().transpose();
+  for (DofIndex k = 1; k < w.rows(); ++k) {
+    stepped.step(w.row(k).transpose());
+    runs.stepped.row(k) = stepped.outputs().transpose();
+  }
+  return runs;
+}
+
 // Blocks where some of the inputs change at every sample and the others hold (non-zero) values:
 // simulate() multiplies only the changing columns and adds the others' constant part.
 TEST(Simulator, BlocksWithSomeInputsChangingAreExact) {
@@ -447,27 +464,20 @@ TEST(Simulator, BlocksWithSomeInputsChangingAreExact) {
     for (int q = first; q < first + 10; ++q)
       w(k, q) = 0.02 * std::sin(0.013 * k * (q + 1));
   }
-  SimulatorOptions dense_options =
-      options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
-  SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
-  dense_options.generalized_force = modal_options.generalized_force = f_g;
-  Simulator dense(s, dense_options), batch(s, modal_options), stepped(s, modal_options);
-  const Vector z0 = staticEquilibrium(s, Vector::Zero(inputs), f_g);
-  for (Simulator* sim : {&dense, &batch, &stepped})
-    sim->reset(z0, w.row(0).transpose());
-  const Matrix y_dense = dense.simulate(w);
-  const Matrix y_batch = batch.simulate(w);
-  Matrix y_stepped(w.rows(), y_batch.cols());
-  y_stepped.row(0) = stepped.outputs().transpose();
-  for (DofIndex k = 1; k < w.rows(); ++k) {
-    stepped.step(w.row(k).transpose());
-    y_stepped.row(k) = stepped.outputs().transpose();
-  }
+  const EngineRuns runs = runEngines(s, f_g, w);
+  const Matrix &y_dense = runs.dense, &y_batch = runs.batch, &y_stepped = runs.stepped;
   EXPECT_LT(relativeBlockError(y_batch, y_dense, outputs), kMethodAgreement);
   EXPECT_LT(relativeBlockError(y_stepped, y_dense, outputs), kMethodAgreement);
   EXPECT_LT(relativeBlockError(y_batch, y_stepped, outputs), 1e-9);
 }
 
+// Road inputs change only where the terrain under them is not flat, and the modal engine then
+// updates its input terms G w by increments (simulator.cpp). On 40 inputs crossing a short bump
+// one after the other (at most two of 80 input columns change per step, over more steps than
+// the re-anchoring interval) the result must still be the exact one: equal to the dense
+// augmented-exponential engine, stepped and blocked, and — with quasi-static modes, whose
+// output terms are in G too — equal by linearity to runs whose inputs change densely:
+//   y(W) = y(W + D) - y(D) + y(0)   for any input series D (y affine in W).
 TEST(Simulator, SparseInputChangesAreExact) {
   const int n = 40, inputs = 40, outputs = 6;
   const SecondOrderSystem s = test::randomVehicle(n, inputs, outputs, 3);
@@ -477,28 +487,16 @@ TEST(Simulator, SparseInputChangesAreExact) {
   for (DofIndex k = 1; k < w.rows(); ++k)
     ASSERT_LE(((w.row(k) - w.row(k - 1)).array() != 0.0).count(), 4);
 
-  SimulatorOptions dense_options =
-      options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
-  SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
-  dense_options.generalized_force = modal_options.generalized_force = f_g;
-  Simulator dense(s, dense_options), batch(s, modal_options), stepped(s, modal_options);
-  const Vector z0 = staticEquilibrium(s, Vector::Zero(inputs), f_g);
-  for (Simulator* sim : {&dense, &batch, &stepped})
-    sim->reset(z0, w.row(0).transpose());
-  const Matrix y_dense = dense.simulate(w);
-  const Matrix y_batch = batch.simulate(w);
-  Matrix y_stepped(w.rows(), y_batch.cols());
-  y_stepped.row(0) = stepped.outputs().transpose();
-  for (DofIndex k = 1; k < w.rows(); ++k) {
-    stepped.step(w.row(k).transpose());
-    y_stepped.row(k) = stepped.outputs().transpose();
-  }
+  const EngineRuns runs = runEngines(s, f_g, w);
+  const Matrix &y_dense = runs.dense, &y_batch = runs.batch, &y_stepped = runs.stepped;
   EXPECT_LT(relativeBlockError(y_batch, y_dense, outputs), kMethodAgreement);
   EXPECT_LT(relativeBlockError(y_stepped, y_dense, outputs), kMethodAgreement);
 
   // Quasi-static modes above the 20th: compare with dense input changes by linearity.
   const ModalSystem modal(s);
-  SimulatorOptions cut_options = modal_options;
+  SimulatorOptions cut_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  cut_options.generalized_force = f_g;
+  const Vector z0 = staticEquilibrium(s, Vector::Zero(inputs), f_g);
   cut_options.max_mode_frequency_hz = modal.naturalFrequencies()(20) / kTwoPi;
   const Matrix dither = 1e-3 * Matrix::Random(w.rows(), w.cols());
   auto run = [&](const Matrix& series, bool step_by_step) {

@@ -16,12 +16,9 @@
 // Threading: the vehicle is owned by one tick at a time, which takes its own callback queue
 // (terrain, speed, ~reset and, with use_sim_time, /clock) first: no locks, a deterministic step
 // order, and a message is used at the next tick (latency <= one period plus the step).
-// - Real time: the tick is a periodic timerfd (CLOCK_MONOTONIC) watched by roscpp's network
-//   thread (its PollSet), which then steps and publishes. Every publication is written to the
-//   subscribers' sockets by that thread anyway; ticking there makes a tick one wake-up of one
-//   thread, where a thread of our own costs a second wake-up and a hand-off per tick (at 1 kHz:
-//   about 2 % of a core on the reference machine, bench/ros_node_bench.sh; a ros::Timer costs
-//   more still). The step is microseconds, so the network thread's other work waits little.
+// - Real time: the tick runs in roscpp's network thread (NetworkThreadTimer), one wake-up per
+//   tick where a thread of our own costs two and a hand-off (a ros::Timer costs more still).
+//   The step is microseconds, so the network thread's other work waits little.
 // - Simulated time: a thread of our own, woken by every /clock message.
 #pragma once
 
@@ -30,7 +27,6 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -51,6 +47,7 @@
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/ros/duration_statistics.h"
+#include "tracked_vehicle_dynamics/ros/network_thread_timer.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 
@@ -96,9 +93,6 @@ class VehicleDynamicsNode {
   void onClock(const rosgraph_msgs::Clock::ConstPtr& msg);
   /// The simulated-time loop thread: waits for /clock (and messages), then step().
   void run();
-  /// Real time: the periodic timerfd in roscpp's network thread, which calls tick().
-  void startTickTimer();
-  void stopTickTimer();
   /// Real time: takes the messages that arrived, then step().
   void tick();
   /// Steps to ROS time now, publishes, diagnoses.
@@ -173,14 +167,7 @@ class VehicleDynamicsNode {
   DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
 
   std::atomic<bool> stop_{false};
-  // The timerfd's callback holds this, not the node: after stopTickTimer() a callback already on
-  // its way finds node == nullptr.
-  struct TickTarget {
-    std::mutex mutex;
-    VehicleDynamicsNode* node = nullptr;
-  };
-  std::shared_ptr<TickTarget> tick_target_;
-  int tick_fd_ = -1;
+  std::unique_ptr<NetworkThreadTimer> tick_timer_;  // real time: calls tick()
   std::thread loop_;  // last: started when everything else exists
 };
 

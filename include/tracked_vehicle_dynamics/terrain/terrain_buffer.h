@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <map>
 
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
@@ -51,7 +52,7 @@ class TerrainBuffer {
   void dropBehind(double station);
   /// End of the contiguous coverage (bridged gaps included) that starts at coveredFrom() [m];
   /// -infinity when empty.
-  double coveredUntil() const;
+  double coveredUntil() const { return covered_until_; }
   /// First covered station [m]; +infinity when empty.
   double coveredFrom() const;
 
@@ -79,6 +80,7 @@ class TerrainBuffer {
   std::uint64_t revision_ = 0;
   double max_length_ = 0.0;   // longest stored patch [m], bounds the backward search
   double max_spacing_ = 0.0;  // largest stored spacing [m]
+  double covered_until_ = -std::numeric_limits<double>::infinity();  // coveredUntil()
 };
 
 }  // namespace terrain
