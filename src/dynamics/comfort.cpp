@@ -103,6 +103,26 @@ std::complex<double> iso2631Response(Weighting weighting, double frequency) {
   return analogResponse(iso2631Sections(weighting), frequency);
 }
 
+std::vector<AnalogSection> absorbedPowerVerticalSections() {
+  // H_p(s) = 14.5 s (s + 44) / ((s + 63)(s^2 + 24 s + 750)) for ft/s^2 (header comment); a in
+  // m/s^2 is a / 0.3048 in ft/s^2, so the gain for m/s^2 is 14.5 / 0.3048.
+  constexpr double kGainPerFootPerSecond2 = 14.5;
+  constexpr double kMetresPerFoot = 0.3048;
+  const double gain = kGainPerFootPerSecond2 / kMetresPerFoot;
+  AnalogSection band;
+  band.b0 = 0.0;
+  band.b1 = 44.0 * gain;
+  band.b2 = gain;
+  band.a0 = 750.0;
+  band.a1 = 24.0;
+  band.a2 = 1.0;
+  AnalogSection low_pass;
+  low_pass.b0 = 1.0;
+  low_pass.a0 = 63.0;
+  low_pass.a1 = 1.0;
+  return {band, low_pass};
+}
+
 // ---------------------------------------------------------------------------------------------
 
 double WeightingFilter::Biquad::step(double x) {

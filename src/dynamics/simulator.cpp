@@ -9,6 +9,7 @@
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/discrete_modes.h"
 #include "tracked_vehicle_dynamics/dynamics/discretization.h"
+#include "tracked_vehicle_dynamics/dynamics/held_input_series.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/validation.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -45,6 +46,9 @@ class SimulatorEngine {
     }
     return outputs;
   }
+
+  /// Default: the dense series.
+  virtual Matrix simulate(const HeldInputSeries& inputs) { return simulate(inputs.dense()); }
 
   Vector y_;
   Vector w_;
@@ -289,11 +293,9 @@ class ModalEngine : public SimulatorEngine {
 
   // Blocked version: the input terms g of kBlock samples at a time (by increments, or as one
   // matrix-matrix product when the inputs change densely), then the O(n) per-mode recursion, then
-  // the outputs as matrix-matrix products.
+  // the outputs as matrix-matrix products (runBlocks).
   Matrix simulate(const Matrix& inputs) override {
-    constexpr DofIndex kBlock = 256;
     const DofIndex n_t = inputs.rows();
-    const DofIndex n = eta_.size();
     const DofIndex m = input_map_.cols();
     Matrix outputs(n_t, y_.size());
     if (n_t == 0)
@@ -344,15 +346,12 @@ class ModalEngine : public SimulatorEngine {
         }
       }
     }
-    Matrix terms(input_map_.rows(), kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
     std::vector<DofIndex> changing, rest, changing_inputs;
-    for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
-      const DofIndex b = std::min(kBlock, n_t - k0);
+    runBlocks(n_t, outputs, [&](DofIndex k0, DofIndex b, Matrix& terms) {
       const auto block = static_cast<std::size_t>((k0 - 1) / kBlock);
       // g at sample k0 - 1 (exact), then g_k = g_{k-1} + G dw_k inside the block.
       gatherActive(inputs.row(k0 - 1));
       anchorInputTerms();
-      p_ = input_terms_.head(n);
       if (dense[block]) {
         // The inputs that change in the block (columns `changing` of G) times their samples,
         // plus the constant part of the others: G(:, rest) w_{k0-1}(rest) for every sample.
@@ -374,15 +373,146 @@ class ModalEngine : public SimulatorEngine {
                                         inputs.middleRows(k0, b)(Eigen::all, changing_inputs).transpose();
           terms.leftCols(b).colwise() += constant;
         }
+        return;
+      }
+      terms.leftCols(b).setZero();
+      for (const Change& c : changes[block])
+        addInputColumn(input_map_.col(c.input).data(), c.delta, terms.col(c.step - k0).data());
+      std::vector<Change>().swap(changes[block]);
+      prefixSum(b, terms);
+    });
+    // Ends at the last sample with exact input terms.
+    setInput(inputs.row(n_t - 1).transpose());
+    return outputs;
+  }
+
+  // The held series (held_input_series.h): the changes are the channels' events, so nothing is
+  // scanned, and a channel shared by several columns is one column of the channel map
+  //   G_c(:, c) = sum over the active columns j of channel c of G(:, j),
+  // so contacts that see the same profile cost one product.
+  Matrix simulate(const HeldInputSeries& series) override {
+    const DofIndex n_t = series.samples;
+    const auto n_c = static_cast<DofIndex>(series.channels.size());
+    Matrix outputs(n_t, y_.size());
+    std::vector<DofIndex> active_index(static_cast<std::size_t>(series.inputCount()), -1);
+    for (std::size_t a = 0; a < active_inputs_.size(); ++a)
+      active_index[static_cast<std::size_t>(active_inputs_[a])] = static_cast<DofIndex>(a);
+    Matrix channel_map = Matrix::Zero(input_map_.rows(), n_c);
+    std::vector<double> value(static_cast<std::size_t>(n_c));
+    std::vector<std::size_t> next(static_cast<std::size_t>(n_c), 0);
+    for (DofIndex c = 0; c < n_c; ++c) {
+      const HeldInputSeries::Channel& ch = series.channels[static_cast<std::size_t>(c)];
+      for (const DofIndex j : ch.columns)
+        if (active_index[static_cast<std::size_t>(j)] >= 0)
+          channel_map.col(c) += input_map_.col(active_index[static_cast<std::size_t>(j)]);
+      value[static_cast<std::size_t>(c)] = ch.columns.empty() ? 0.0 : series.initial(ch.columns.front());
+    }
+    Vector w = series.initial;
+    setInput(w);
+    outputs.row(0) = y_.transpose();
+    struct Event {
+      DofIndex channel;
+      DofIndex offset;  // sample in the block
+      double delta;
+    };
+    std::vector<Event> events;
+    std::vector<DofIndex> touched, slot(static_cast<std::size_t>(n_c), -1);
+    Matrix deltas, map_touched;
+    runBlocks(n_t, outputs, [&](DofIndex k0, DofIndex b, Matrix& terms) {
+      gatherActive(w);
+      anchorInputTerms();
+      // This block's events; w advances to the block's last sample.
+      events.clear();
+      touched.clear();
+      for (DofIndex c = 0; c < n_c; ++c) {
+        const HeldInputSeries::Channel& ch = series.channels[static_cast<std::size_t>(c)];
+        std::size_t& e = next[static_cast<std::size_t>(c)];
+        double& v = value[static_cast<std::size_t>(c)];
+        const std::size_t first = e;
+        for (; e < ch.steps.size() && ch.steps[e] < k0 + b; ++e) {
+          const double delta = ch.values[e] - v;
+          v = ch.values[e];
+          if (delta != 0.0)
+            events.push_back({c, static_cast<DofIndex>(ch.steps[e] - k0), delta});
+        }
+        if (e != first) {
+          for (const DofIndex j : ch.columns) w(j) = v;
+          if (!events.empty() && events.back().channel == c && !channel_map.col(c).isZero(0.0)) {
+            slot[static_cast<std::size_t>(c)] = static_cast<DofIndex>(touched.size());
+            touched.push_back(c);
+          }
+        }
+      }
+      const auto n_touched = static_cast<DofIndex>(touched.size());
+      if (static_cast<DofIndex>(events.size()) * kDenseFraction > n_touched * b) {
+        // Dense: one product of the touched channels' columns with their deltas.
+        deltas.setZero(n_touched, b);
+        for (const Event& ev : events)
+          if (slot[static_cast<std::size_t>(ev.channel)] >= 0)
+            deltas(slot[static_cast<std::size_t>(ev.channel)], ev.offset) = ev.delta;
+        map_touched = channel_map(Eigen::all, touched);
+        terms.leftCols(b).noalias() = map_touched * deltas;
       } else {
         terms.leftCols(b).setZero();
-        for (const Change& c : changes[block])
-          addInputColumn(c.input, c.delta, terms.col(c.step - k0).data());
-        std::vector<Change>().swap(changes[block]);
-        terms.col(0) += input_terms_;
-        for (DofIndex k = 1; k < b; ++k)
-          terms.col(k) += terms.col(k - 1);
+        for (const Event& ev : events)
+          if (slot[static_cast<std::size_t>(ev.channel)] >= 0)
+            addInputColumn(channel_map.col(ev.channel).data(), ev.delta, terms.col(ev.offset).data());
       }
+      for (const DofIndex c : touched) slot[static_cast<std::size_t>(c)] = -1;
+      prefixSum(b, terms);
+    });
+    setInput(w);
+    return outputs;
+  }
+
+ private:
+  using ArrayMap = Eigen::Map<Eigen::ArrayXd>;
+  using ConstArrayMap = Eigen::Map<const Eigen::ArrayXd>;
+  /// Increments give way to a full product after this many steps (bounds rounding drift) ...
+  static constexpr long kAnchorSteps = 1000;
+  /// simulate(): a block of samples with more than 1 / kDenseFraction of the inputs changing
+  /// per sample takes the matrix-matrix product (blocked, it is then the faster one).
+  static constexpr DofIndex kDenseFraction = 8;
+  /// step(): changed columns at most this many unchanged columns apart share one product (a
+  /// zero column costs less than the call of another product).
+  static constexpr DofIndex kRunGap = 4;
+
+  // active_input_ = the active columns of w (any vector or row expression of w).
+  template <typename Row>
+  void gatherActive(const Row& input) {
+    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
+      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
+  }
+
+  /// Samples per block of simulate().
+  static constexpr DofIndex kBlock = 256;
+
+  // terms += g delta, g a column of input_map_'s height.
+  void addInputColumn(const double* g, double delta, double* terms) const {
+    for (DofIndex i = 0; i < input_map_.rows(); ++i)
+      terms[i] += g[i] * delta;
+  }
+
+  // terms(:, 0..b-1) hold the increments G dw_k of the block: turned into g_k from the anchor
+  // input_terms_ = g_{k0-1}.
+  void prefixSum(DofIndex b, Matrix& terms) const {
+    terms.col(0) += input_terms_;
+    for (DofIndex k = 1; k < b; ++k)
+      terms.col(k) += terms.col(k - 1);
+  }
+
+  // The simulate() loop after sample 0 (set, with outputs.row(0)): blocks of kBlock samples.
+  // fill(k0, b, terms) anchors input_terms_ at sample k0 - 1 and writes g_k for samples
+  // k0 .. k0 + b - 1 into terms' first b columns; then the modes advance through the block and
+  // the outputs of the block are matrix products.
+  template <typename Fill>
+  void runBlocks(DofIndex n_t, Matrix& outputs, Fill&& fill) {
+    const DofIndex n = eta_.size();
+    Matrix terms(input_map_.rows(), kBlock), disp(n, kBlock), vel(n, kBlock), acc(n, kBlock);
+    for (DofIndex k0 = 1; k0 < n_t; k0 += kBlock) {
+      const DofIndex b = std::min(kBlock, n_t - k0);
+      fill(k0, b, terms);
+      p_ = input_terms_.head(n);
       for (DofIndex j = 0; j < b; ++j) {
         const double* p_prev = j == 0 ? p_.data() : terms.col(j - 1).data();
         const double* eta_prev = j == 0 ? eta_.data() : disp.col(j - 1).data();
@@ -416,35 +546,6 @@ class ModalEngine : public SimulatorEngine {
       eta_dot_ = vel.col(b - 1);
       steps_ += b;
     }
-    // Ends at the last sample with exact input terms.
-    setInput(inputs.row(n_t - 1).transpose());
-    return outputs;
-  }
-
- private:
-  using ArrayMap = Eigen::Map<Eigen::ArrayXd>;
-  using ConstArrayMap = Eigen::Map<const Eigen::ArrayXd>;
-  /// Increments give way to a full product after this many steps (bounds rounding drift) ...
-  static constexpr long kAnchorSteps = 1000;
-  /// simulate(): a block of samples with more than 1 / kDenseFraction of the inputs changing
-  /// per sample takes the matrix-matrix product (blocked, it is then the faster one).
-  static constexpr DofIndex kDenseFraction = 8;
-  /// step(): changed columns at most this many unchanged columns apart share one product (a
-  /// zero column costs less than the call of another product).
-  static constexpr DofIndex kRunGap = 4;
-
-  // active_input_ = the active columns of w (any vector or row expression of w).
-  template <typename Row>
-  void gatherActive(const Row& input) {
-    for (std::size_t j = 0; j < active_inputs_.size(); ++j)
-      active_input_(static_cast<DofIndex>(j)) = input(active_inputs_[j]);
-  }
-
-  // terms += G(:, j) delta, over all rows of G.
-  void addInputColumn(DofIndex j, double delta, double* terms) const {
-    const double* g = input_map_.col(j).data();
-    for (DofIndex i = 0; i < input_map_.rows(); ++i)
-      terms[i] += g[i] * delta;
   }
 
   void anchorInputTerms() {
@@ -616,6 +717,15 @@ void Simulator::step(const Vector& input_begin, const Vector& input_end) {
 
 Matrix Simulator::simulate(const Matrix& inputs) {
   detail::requireSize("Simulator::simulate", "input series", inputs, inputs.rows(), inputCount());
+  return engine_->simulate(inputs);
+}
+
+Matrix Simulator::simulate(const HeldInputSeries& inputs) {
+  if (inputs.inputCount() != inputCount())
+    throw InputError("Simulator::simulate: the held input series has " +
+                     std::to_string(inputs.inputCount()) + " inputs, the system " +
+                     std::to_string(inputCount()));
+  inputs.validate();
   return engine_->simulate(inputs);
 }
 

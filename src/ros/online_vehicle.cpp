@@ -30,6 +30,7 @@ std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system) {
 dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
   dynamics::ComfortOptions comfort;
   comfort.running_rms_time = options.comfort_running_rms_time;
+  comfort.absorbed_power = dynamics::absorbedPowerVerticalSections();  // comfort.h: Chrono's filter
   return comfort;
 }
 

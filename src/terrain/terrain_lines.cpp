@@ -20,8 +20,63 @@ TerrainLines::TerrainLines(const Terrain& terrain, const Vector& lateral) : terr
     if (x.size() > 1)
       line.slopes = (line.heights.tail(x.size() - 1) - line.heights.head(x.size() - 1)).cwiseQuotient(
           x.tail(x.size() - 1) - x.head(x.size() - 1));
+    line.profile = static_cast<int>(lines_.size());
+    for (const Line& other : lines_)
+      if (other.heights.size() == line.heights.size() &&
+          std::equal(other.heights.data(), other.heights.data() + other.heights.size(), line.heights.data())) {
+        line.profile = other.profile;
+        break;
+      }
+    // Flat runs, from the last cell back: cell i is flat when h_{i+1} == h_i (slope exactly 0).
+    const Eigen::Index cells = line.slopes.size();
+    line.flat_end.assign(static_cast<std::size_t>(cells), cells);
+    for (Eigen::Index i = cells - 2; i >= 0; --i)
+      line.flat_end[static_cast<std::size_t>(i)] =
+          line.slopes(i + 1) == 0.0 ? line.flat_end[static_cast<std::size_t>(i + 1)] : i + 1;
     lines_.push_back(std::move(line));
   }
+}
+
+int TerrainLines::profileOf(double y) const {
+  const Line* line = find(y);
+  return line == nullptr ? -1 : line->profile;
+}
+
+double TerrainLines::flatRunEnd(int profile, double x) const {
+  double h = 0.0, dhdx = 0.0;
+  return sampleRun(profile, x, h, dhdx);
+}
+
+double TerrainLines::sampleRun(int profile, double x, double& h, double& dhdx) const {
+  const Line& line = lines_.at(static_cast<std::size_t>(profile));
+  constexpr double kForever = std::numeric_limits<double>::infinity();
+  // The branches of heightAndSlope(), each with the end of the run it is on: h_0 and slope 0
+  // before x_0, the last height and slope 0 from x_end on.
+  if (std::isnan(x)) {
+    heightAndSlope(x, line.y, h, dhdx);
+    return x;
+  }
+  if (x <= x0_ || x >= x_end_) {
+    h = x <= x0_ ? line.heights(0) : line.heights(line.heights.size() - 1);
+    dhdx = x == x0_ && line.slopes.size() != 0 ? line.slopes(0) : 0.0;
+    if (x >= x_end_ || line.slopes.size() == 0)
+      return kForever;
+    if (x < x0_ && line.slopes(0) != 0.0)
+      return x0_;
+    if (x == x0_ && dhdx != 0.0)
+      return x;
+  } else {
+    const Eigen::Index i = cell(x);
+    dhdx = line.slopes(i);
+    h = line.heights(i) + (x - terrain_.stations()(i)) * dhdx;
+    if (dhdx != 0.0)
+      return x;
+    const Eigen::Index j = line.flat_end[static_cast<std::size_t>(i)];
+    return j >= line.slopes.size() ? kForever : terrain_.stations()(j);
+  }
+  // x <= x_0 on a profile whose first cell is flat.
+  const Eigen::Index j = line.flat_end[0];
+  return j >= line.slopes.size() ? kForever : terrain_.stations()(j);
 }
 
 const TerrainLines::Line* TerrainLines::find(double y) const {

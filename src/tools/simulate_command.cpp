@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <utility>
 
 #include "commands.h"
 #include "output_files.h"
@@ -51,6 +52,69 @@ DofIndex rowOf(const std::vector<std::string>& names, const std::string& name) {
   if (it == names.end()) throw InputError("simulate: the reduced model has no output '" + name + "'");
   return static_cast<DofIndex>(it - names.begin());
 }
+
+// Ride comfort of the acceleration at one point: vertical a_w (Wk), VDV, MTVV and absorbed
+// power; horizontal a_w (Wd) in x and y; and the ISO 2631-1 (8.2.3) vibration total value
+// a_v = sqrt(a_wx^2 + a_wy^2 + a_wz^2) (seated comfort: k_x = k_y = k_z = 1).
+class PointComfort {
+ public:
+  PointComfort(std::string point, const std::vector<std::string>& names, double dt)
+      : point_(std::move(point)),
+        x_row_(rowOf(names, point_ + " ux/acc")),
+        y_row_(rowOf(names, point_ + " uy/acc")),
+        z_row_(rowOf(names, point_ + " uz/acc")),
+        vertical_(1.0 / dt, verticalOptions()),
+        longitudinal_(1.0 / dt, horizontalOptions()),
+        lateral_(1.0 / dt, horizontalOptions()) {}
+
+  void add(const Eigen::Ref<const Eigen::RowVectorXd>& y) {
+    vertical_.add(y(z_row_));
+    longitudinal_.add(y(x_row_));
+    lateral_.add(y(y_row_));
+  }
+
+  double totalValue() const {
+    return std::sqrt(std::pow(longitudinal_.weightedRms(), 2) + std::pow(lateral_.weightedRms(), 2) +
+                     std::pow(vertical_.weightedRms(), 2));
+  }
+
+  void writeJson(io::JsonWriter& json) const {
+    json.beginObject()
+        .field("point", point_)
+        .field("weighted_rms_m_s2", vertical_.weightedRms())
+        .field("vdv_m_s1_75", vertical_.vibrationDoseValue())
+        .field("mtvv_m_s2", vertical_.maximumTransientVibrationValue())
+        .field("absorbed_power_w", vertical_.absorbedPower().value_or(0.0))
+        .field("weighted_rms_x_m_s2", longitudinal_.weightedRms())
+        .field("weighted_rms_y_m_s2", lateral_.weightedRms())
+        .field("vibration_total_value_m_s2", totalValue())
+        .endObject();
+  }
+
+  void writeText(std::ostream& out) const {
+    out << "    " << point_ << ": a_wz " << vertical_.weightedRms() << " m/s^2, VDV "
+        << vertical_.vibrationDoseValue() << " m/s^1.75, absorbed power "
+        << vertical_.absorbedPower().value_or(0.0) << " W, a_wx " << longitudinal_.weightedRms()
+        << ", a_wy " << lateral_.weightedRms() << ", a_v " << totalValue() << " m/s^2\n";
+  }
+
+ private:
+  static dynamics::ComfortOptions verticalOptions() {
+    dynamics::ComfortOptions o;
+    o.weighting = dynamics::Weighting::Wk;
+    o.absorbed_power = dynamics::absorbedPowerVerticalSections();
+    return o;
+  }
+  static dynamics::ComfortOptions horizontalOptions() {
+    dynamics::ComfortOptions o;
+    o.weighting = dynamics::Weighting::Wd;
+    return o;
+  }
+
+  std::string point_;
+  DofIndex x_row_, y_row_, z_row_;
+  dynamics::ComfortMeter vertical_, longitudinal_, lateral_;
+};
 
 void run(const SimulateOptions& opt) {
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
@@ -116,21 +180,40 @@ void run(const SimulateOptions& opt) {
       wheel_names.push_back(sys.output_names[i]);
     }
 
+  // Ride comfort at the hull's CoG and at every named point of the description (crew seat,
+  // sensor mount, ...): ISO 2631-1 Wk and absorbed power vertically, Wd in x and y.
+  std::vector<PointComfort> comfort;
+  comfort.push_back(PointComfort("hull", names, opt.dt));
+  for (const std::string& n : sys.output_names) {
+    const std::string point = n.substr(0, n.rfind(' '));
+    if (n.size() > 3 && n.compare(n.size() - 3, 3, " uz") == 0 && point != "hull" &&
+        point.rfind("road_wheel", 0) != 0)
+      comfort.push_back(PointComfort(point, names, opt.dt));
+  }
+
   constexpr int kWheelColumn = 6;
   Matrix series(steps + 1, kWheelColumn + wheels.size());
-  dynamics::ComfortMeter comfort(1.0 / opt.dt);
   Vector y0;
   // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
   // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
   // sample of the previous one (the simulator's current input), so it is recorded only once.
-  constexpr long kBlock = 2048;
+  // The reduced model takes the inputs stored by their changes (sampled only where the terrain
+  // under a contact is not flat, shared by contacts on the same profile); the full model's static
+  // residual needs every sample.
+  constexpr long kBlock = 16384;
   const auto start = Clock::now();
   for (long first = 0; first == 0 || first < steps; first += kBlock) {
     const long last = std::min(first + kBlock, steps);
-    const Matrix w = road.sampleSeries(lines, track.startStation(), speed, opt.dt, first, last - first + 1);
-    Matrix y = sim.simulate(w);
-    // The full model adds its static residual to the displacements (rows 0..n_y-1).
-    if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
+    const long count = last - first + 1;
+    Matrix y;
+    if (full) {
+      const Matrix w = road.sampleSeries(lines, track.startStation(), speed, opt.dt, first, count);
+      y = sim.simulate(w);
+      // The full model adds its static residual to the displacements (rows 0..n_y-1).
+      full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
+    } else {
+      y = sim.simulate(road.sampleHeldSeries(lines, track.startStation(), speed, opt.dt, first, count));
+    }
     if (first == 0) y0 = y.row(0).transpose();
     for (long j = first == 0 ? 0 : 1; j < y.rows(); ++j) {
       const long k = first + j;
@@ -142,7 +225,7 @@ void run(const SimulateOptions& opt) {
       series(k, 5) = (y(j, roll) - y0(roll)) * kRadToDeg;
       for (std::size_t c = 0; c < wheels.size(); ++c)
         series(k, kWheelColumn + c) = y(j, wheels[c]) - y0(wheels[c]);
-      comfort.add(y(j, accel));
+      for (PointComfort& c : comfort) c.add(y.row(j));
     }
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
@@ -184,12 +267,11 @@ void run(const SimulateOptions& opt) {
         .field("peak_pitch_deg", peak_pitch)
         .field("peak_roll_deg", peak_roll)
         .field("peak_wheel_displacement_m", peak_wheel)
-        .key("comfort")
-        .beginObject()
-        .field("point", "hull")
-        .field("weighted_rms_m_s2", comfort.weightedRms())
-        .field("vdv_m_s1_75", comfort.vibrationDoseValue())
-        .endObject()
+        .key("comfort");
+    comfort.front().writeJson(json);
+    json.key("comfort_at_points").beginArray();
+    for (std::size_t i = 1; i < comfort.size(); ++i) comfort[i].writeJson(json);
+    json.endArray()
         .field("simulated_seconds", simulated)
         .field("wall_seconds", wall)
         .field("setup_seconds", setup_seconds)
@@ -206,9 +288,10 @@ void run(const SimulateOptions& opt) {
             << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
             << "  peak road-wheel displacement " << peak_wheel << " m\n"
-            << "  ISO 2631 Wk at the hull: a_w " << comfort.weightedRms() << " m/s^2, VDV "
-            << comfort.vibrationDoseValue() << " m/s^1.75\n"
-            << "  simulated " << simulated << " s in " << wall * 1e3 << " ms (real-time factor "
+            << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "
+               "vertical):\n";
+  for (const PointComfort& c : comfort) c.writeText(std::cout);
+  std::cout << "  simulated " << simulated << " s in " << wall * 1e3 << " ms (real-time factor "
             << std::setprecision(0) << simulated / wall << ")\n";
 }
 

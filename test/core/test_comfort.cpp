@@ -173,6 +173,80 @@ TEST(Comfort, AbsorbedPowerOfSinusoidIsFilterGainSquared) {
   }
 }
 
+// The built-in vertical absorbed-power filter against its public source: Project Chrono's
+// ChAbsorbed_Power_Vertical (src/chrono/utils/ChFilters.cpp) runs, for acceleration in ft/s^2 and
+// sample time T, the difference equation with these coefficients (all divided by a0 there). The
+// bilinear transform (K = 2/T) of our analogue sections, scaled back to ft/s^2, must give the
+// same ratios: a mistyped pole, zero or gain fails here.
+TEST(Comfort, AbsorbedPowerFilterReproducesChronosCoefficients) {
+  const std::vector<AnalogSection> sections = absorbedPowerVerticalSections();
+  ASSERT_EQ(sections.size(), 2u);
+  for (double t : {1e-3, 5e-3, 0.02}) {
+    const double b_chrono[4] = {29.0 * t * (22.0 * t + 1.0), 29.0 * t * (22.0 * t - 1.0),
+                                -29.0 * t * (22.0 * t + 1.0), -29.0 * t * (22.0 * t - 1.0)};
+    const double a_chrono[4] = {
+        (63.0 * t + 2.0) * (375.0 * t * t + 24.0 * t + 2.0),
+        (63.0 * t - 2.0) * (375.0 * t * t + 24.0 * t + 2.0) +
+            (63.0 * t + 2.0) * (750.0 * t * t - 4.0),
+        (63.0 * t + 2.0) * (375.0 * t * t - 24.0 * t + 2.0) +
+            (63.0 * t - 2.0) * (750.0 * t * t - 4.0),
+        (63.0 * t - 2.0) * (375.0 * t * t - 24.0 * t + 2.0)};
+    // Our H_p as one rational function in z^-1: the product of the sections, each bilinear.
+    std::vector<double> num{1.0}, den{1.0};
+    auto multiply = [](const std::vector<double>& p, const std::vector<double>& q) {
+      std::vector<double> r(p.size() + q.size() - 1, 0.0);
+      for (std::size_t i = 0; i < p.size(); ++i)
+        for (std::size_t j = 0; j < q.size(); ++j) r[i + j] += p[i] * q[j];
+      return r;
+    };
+    const double k = 2.0 / t;
+    for (const AnalogSection& a : sections) {
+      // (b0 + b1 s + b2 s^2) with s = k (1 - z^-1)/(1 + z^-1), times (1 + z^-1)^2.
+      num = multiply(num, {a.b0 + a.b1 * k + a.b2 * k * k, 2.0 * (a.b0 - a.b2 * k * k),
+                           a.b0 - a.b1 * k + a.b2 * k * k});
+      den = multiply(den, {a.a0 + a.a1 * k + a.a2 * k * k, 2.0 * (a.a0 - a.a2 * k * k),
+                           a.a0 - a.a1 * k + a.a2 * k * k});
+    }
+    // The first-order section leaves a common factor (1 + z^-1): degree 4 over degree 4, one
+    // root at z = -1 in both. Divide it out (synthetic division by 1 + z^-1).
+    auto divideByOnePlus = [](std::vector<double> p) {
+      std::vector<double> r(p.size() - 1);
+      for (std::size_t i = 0; i + 1 < p.size(); ++i) {
+        r[i] = p[i];
+        p[i + 1] -= p[i];
+      }
+      EXPECT_NEAR(p.back(), 0.0, 1e-9 * std::abs(r[0]));
+      return r;
+    };
+    num = divideByOnePlus(num);
+    den = divideByOnePlus(den);
+    const double ft = 0.3048;  // our input is m/s^2: times 0.3048 for ft/s^2
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_NEAR(num[i] * ft / den[0], b_chrono[i] / a_chrono[0], 1e-12) << "b" << i << " T " << t;
+      EXPECT_NEAR(den[i] / den[0], a_chrono[i] / a_chrono[0], 1e-12) << "a" << i << " T " << t;
+    }
+  }
+  // Its peak: K = |H_p|^2 of about 0.208 W/(ft/s^2)^2 at 4.5 Hz, the band of human body resonance.
+  const double k45 = std::norm(analogResponse(sections, 4.5)) * 0.3048 * 0.3048;
+  EXPECT_NEAR(k45, 0.2083, 0.0005);
+  for (double f : {1.0, 2.0, 8.0, 20.0})
+    EXPECT_LT(std::norm(analogResponse(sections, f)), std::norm(analogResponse(sections, 4.5)));
+}
+
+TEST(Comfort, BuiltInAbsorbedPowerOfSinusoid) {
+  const double fs = 1000.0;
+  const double amplitude = 1.5;  // [m/s^2]
+  ComfortOptions options;
+  options.absorbed_power = absorbedPowerVerticalSections();
+  for (double f : {1.0, 4.5, 10.0, 30.0}) {
+    const ComfortMetrics m = evaluateComfort(sinusoid(amplitude, f, fs, 30.0), fs, options);
+    const double k = std::norm(analogResponse(options.absorbed_power, f));
+    ASSERT_TRUE(m.absorbed_power.has_value());
+    EXPECT_NEAR(*m.absorbed_power / (k * amplitude * amplitude / 2.0), 1.0, kClosedFormTolerance)
+        << f << " Hz";
+  }
+}
+
 TEST(Comfort, OnlineMeterAgreesWithBatch) {
   const double fs = 1000.0;
   std::mt19937_64 rng(2024);

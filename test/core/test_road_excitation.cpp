@@ -1,6 +1,11 @@
 // Road inputs sampled from a terrain as the vehicle advances (dynamics/road_excitation.h).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstring>
+#include <set>
+#include <string>
+
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
@@ -83,4 +88,106 @@ TEST(RoadExcitation, TerrainLinesGiveTheTerrainsInputs) {
     EXPECT_LT((from_lines - from_terrain).tail(4).cwiseAbs().maxCoeff(), 1e-9 * speed) << j;
   }
   EXPECT_GT(series.leftCols(4).cwiseAbs().maxCoeff(), 0.1);  // the waves are under the inputs
+}
+
+// The held series (sampled only where the profile changes, contacts on identical profiles
+// sharing a channel) is the dense series bit for bit: on the three test tracks, with a lateral
+// offset, from a later first sample, and with an input off the lines (sampled every step).
+TEST(RoadExcitation, HeldSeriesIsTheDenseSeriesBitForBit) {
+  // Four contacts per station (left/right x inner/outer), five stations, as on a vehicle.
+  const double stations[5] = {2.34, 1.56, 0.0, -1.56, -2.34};
+  const double rows[4] = {1.6, 1.2, -1.2, -1.6};
+  tvd::Vector xq(20), yq(20);
+  for (int s = 0; s < 5; ++s)
+    for (int r = 0; r < 4; ++r) {
+      xq(4 * s + r) = stations[s];
+      yq(4 * s + r) = rows[r];
+    }
+  for (const char* name : {"long_hill", "separated_waves", "oop_waves"}) {
+    const tvd::terrain::Terrain track = tvd::terrain::makeTrack(name);
+    for (const double offset : {0.0, 1.0}) {
+      const tvd::dynamics::RoadExcitation road(xq, yq, offset);
+      const tvd::terrain::TerrainLines lines(track, road.inputY());
+      for (const double kmh : {5.0, 50.0}) {
+        const double speed = kmh / 3.6, dt = 1e-3, s0 = track.startStation();
+        const long count = static_cast<long>(std::ceil((track.endStation() - s0) / speed / dt)) + 1;
+        for (const long first : {0L, 1234L}) {
+          const tvd::Matrix dense = road.sampleSeries(lines, s0, speed, dt, first, count - first);
+          const tvd::dynamics::HeldInputSeries held =
+              road.sampleHeldSeries(lines, s0, speed, dt, first, count - first);
+          ASSERT_NO_THROW(held.validate());
+          const tvd::Matrix back = held.dense();
+          ASSERT_EQ(back.rows(), dense.rows());
+          EXPECT_EQ(std::memcmp(back.data(), dense.data(), sizeof(double) * dense.size()), 0)
+              << name << " offset " << offset << " at " << kmh << " km/h from " << first
+              << ": worst " << (back - dense).cwiseAbs().maxCoeff();
+          // One channel pair per station and distinct profile: on a laterally uniform track
+          // (the hill, the separated waves) the four pad rows are one profile.
+          std::set<int> profiles;
+          for (int r = 0; r < 4; ++r) profiles.insert(lines.profileOf(rows[r] + offset));
+          if (std::string(name) != "oop_waves") EXPECT_EQ(profiles.size(), 1u) << name;
+          if (std::string(name) == "oop_waves") EXPECT_GE(profiles.size(), 2u) << name;
+          EXPECT_EQ(held.channels.size(), 10 * profiles.size()) << name;
+          // Most samples are flat terrain: the events are a small part of the series.
+          std::size_t events = 0;
+          for (const auto& ch : held.channels) events += ch.steps.size() * ch.columns.size();
+          if (std::string(name) == "long_hill")
+            EXPECT_LT(events, static_cast<std::size_t>(dense.size() / 4)) << kmh;
+        }
+      }
+    }
+  }
+  // An input off the lines (not a profile of TerrainLines) is sampled at every step.
+  const tvd::terrain::Terrain track = tvd::terrain::makeTrack("long_hill");
+  const tvd::dynamics::RoadExcitation road(xq, yq);
+  const tvd::Vector other_y = (tvd::Vector(1) << 0.3).finished();
+  const tvd::terrain::TerrainLines lines(track, other_y);
+  const tvd::Matrix dense = road.sampleSeries(lines, track.startStation(), 2.0, 1e-3, 0, 3000);
+  const tvd::Matrix back = road.sampleHeldSeries(lines, track.startStation(), 2.0, 1e-3, 0, 3000).dense();
+  EXPECT_EQ(std::memcmp(back.data(), dense.data(), sizeof(double) * dense.size()), 0);
+}
+
+TEST(RoadExcitation, HeldSeriesRejectsInconsistentChannels) {
+  tvd::dynamics::HeldInputSeries s;
+  s.samples = 10;
+  s.initial = tvd::Vector::Zero(3);
+  s.channels.push_back({{0, 1}, {2, 5}, {0.1, 0.2}});
+  EXPECT_NO_THROW(s.validate());
+  auto expectError = [](const tvd::dynamics::HeldInputSeries& bad, const std::string& part) {
+    try {
+      bad.validate();
+      ADD_FAILURE() << "accepted; expected an error naming '" << part << "'";
+    } catch (const tvd::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  auto bad = s;
+  bad.channels[0].steps = {5, 2};
+  expectError(bad, "event 1 at step 2");
+  bad = s;
+  bad.channels[0].steps = {0, 5};
+  expectError(bad, "event 0 at step 0");
+  bad = s;
+  bad.channels.push_back({{1}, {}, {}});
+  expectError(bad, "column 1 is already in channel 0");
+  bad = s;
+  bad.channels[0].columns = {0, 3};
+  expectError(bad, "column 3 outside");
+  bad = s;
+  bad.channels[0].values[1] = std::nan("");
+  expectError(bad, "value of event 1");
+  bad = s;
+  bad.initial(1) = 0.5;
+  expectError(bad, "one channel is one signal");
+  bad = s;
+  bad.channels[0].values.pop_back();
+  expectError(bad, "2 steps but 1 values");
+  // dense() and row() agree with the hold rule.
+  const tvd::Matrix w = s.dense();
+  EXPECT_EQ(w(1, 0), 0.0);
+  EXPECT_EQ(w(2, 1), 0.1);
+  EXPECT_EQ(w(4, 0), 0.1);
+  EXPECT_EQ(w(9, 1), 0.2);
+  EXPECT_EQ(w(9, 2), 0.0);
+  for (long k = 0; k < 10; ++k) EXPECT_EQ((s.row(k) - w.row(k).transpose()).norm(), 0.0);
 }

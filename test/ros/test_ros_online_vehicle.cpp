@@ -171,6 +171,9 @@ TEST_P(OnlineVersusOffline, SameResponseAsTheSimulatorOnTheWholeTerrain) {
   // The bump moved the hull.
   EXPECT_GT(online.comfort().weightedRms(), 0.01);
   EXPECT_GT(online.peakAcceleration(), 0.1);
+  // The built-in absorbed-power filter runs in the node's meter.
+  ASSERT_TRUE(online.comfort().absorbedPower().has_value());
+  EXPECT_GT(*online.comfort().absorbedPower(), 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, OnlineVersusOffline,

@@ -46,12 +46,20 @@
 // Absorbed power (Pradko, Lee & Kaluza, "Theory of human vibration response", ASME 66-WA/BHF-15,
 // 1966; Lee & Pradko, "Analytical analysis of human vibration", SAE 680091, 1968) is defined in the
 // frequency domain as P = Σ_i K(f_i) a_rms(f_i)^2, K(f) [W/(m/s^2)^2] the vertical absorbed-power
-// coefficient. It is computed here in the time domain: the acceleration passes through a filter
-// H_p with |H_p(j2πf)|^2 = K(f), and P = mean(z^2) [W] — the same quantity for any signal, and the
-// form that runs online. The coefficients are NOT built in: no verified copy of the published
-// K(f) is available to this project, so the caller supplies H_p as analogue sections
-// (ComfortOptions::absorbed_power, in units of sqrt(W)/(m/s^2)); without them no absorbed power
-// is reported.
+// coefficient; the US Army's mobility models rate a vehicle's ride by the speed at which the
+// driver absorbs 6 W. It is computed here in the time domain: the acceleration passes through a
+// filter H_p with |H_p(j2πf)|^2 = K(f), and P = mean(z^2) [W] — the same quantity for any signal,
+// and the form that runs online.
+// The built-in H_p (absorbedPowerVerticalSections) is the vertical filter of Project Chrono
+// (projectchrono/chrono, src/chrono/utils/ChFilters.cpp, ChAbsorbed_Power_Vertical, BSD-3; used by
+// its "6 W absorbed power speed" tool). Chrono states it as a Tustin-discretised difference
+// equation for acceleration in ft/s^2; undoing the bilinear transform gives the analogue
+//   H_p(s) = 14.5 s (s + 44) / ((s + 63)(s^2 + 24 s + 750))     [sqrt(W) / (ft/s^2)]
+// (zeros 0 and -44 rad/s, poles -63 and -12 ± 24.6j rad/s: a band-pass peaking at 4.5 Hz, where
+// K = 0.208 W/(ft/s^2)^2 = 216 W/g^2). Chrono does not say which of the published forms it
+// transcribes; test_comfort.cpp checks that the sections below reproduce its coefficients.
+// The caller may supply another H_p as analogue sections (ComfortOptions::absorbed_power, in units
+// of sqrt(W)/(m/s^2)).
 #pragma once
 
 #include <complex>
@@ -97,6 +105,10 @@ Iso2631Parameters iso2631Parameters(Weighting weighting);
 std::vector<AnalogSection> iso2631Sections(Weighting weighting);
 /// The standard's analogue W(j 2π f) at frequency f [Hz].
 std::complex<double> iso2631Response(Weighting weighting, double frequency);
+/// The built-in vertical absorbed-power filter H_p (file comment) for acceleration in m/s^2:
+/// |H_p(j2πf)|^2 = K(f) [W/(m/s^2)^2]. Two sections: s (s + 44) / (s^2 + 24 s + 750) with the
+/// gain, and 1 / (s + 63).
+std::vector<AnalogSection> absorbedPowerVerticalSections();
 /// Product of the sections' analogue responses at frequency f [Hz].
 std::complex<double> analogResponse(const std::vector<AnalogSection>& sections, double frequency);
 

@@ -11,10 +11,14 @@
 #include <cmath>
 #include <string>
 
+#include "tracked_vehicle_dynamics/dynamics/held_input_series.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
+namespace terrain {
+class TerrainLines;
+}
 namespace dynamics {
 
 class RoadExcitation {
@@ -61,6 +65,14 @@ class RoadExcitation {
     }
     return series;
   }
+
+  /// The same series as sampleSeries(lines, ...), row for row and bit for bit, stored by its
+  /// changes (held_input_series.h): a contact is sampled only where its profile line is not flat
+  /// (TerrainLines::flatRunEnd), and contacts at the same station on lines with the same profile
+  /// share one channel. Needs speed > 0 and dt > 0 for skipping (otherwise every sample is
+  /// taken). Inputs whose lateral position is not one of the lines' are sampled at every step.
+  HeldInputSeries sampleHeldSeries(const terrain::TerrainLines& lines, double station0, double speed,
+                                   double dt, long first, long count) const;
 
   const Vector& inputX() const { return x_; }
   const Vector& inputY() const { return y_; }  ///< including the lateral offset

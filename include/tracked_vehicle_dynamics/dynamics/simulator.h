@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/dynamics/held_input_series.h"
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/second_order_system.h"
 #include "tracked_vehicle_dynamics/dynamics/state_space.h"
@@ -95,6 +96,11 @@ class Simulator {
   /// Y [n_samples x n_y], row k at t + k h. The simulator ends at the last sample.
   /// Throws InputError for a wrong number of columns.
   Matrix simulate(const Matrix& inputs);
+  /// Same, from a series stored by its changes (held_input_series.h): equal to
+  /// simulate(inputs.dense()) up to rounding, at a cost that grows with the events, not with
+  /// samples x inputs (the modal engine; the dense engine runs the dense series). Throws
+  /// InputError for a wrong number of inputs or an invalid series.
+  Matrix simulate(const HeldInputSeries& inputs);
 
   /// Outputs y at the current sample [n_y], rows as outputNames().
   const Vector& outputs() const;

@@ -31,11 +31,27 @@ class TerrainLines {
   /// Number of distinct lines.
   std::size_t lineCount() const { return lines_.size(); }
 
+  /// For sampling only where the profile changes (RoadExcitation::sampleHeldSeries):
+  /// the line holding y, as the index of the first line with the same profile bit for bit (so
+  /// lines of a laterally uniform terrain share one index); -1 when y is not a line.
+  int profileOf(double y) const;
+  /// The end of the flat run at x on profile `profile` (profileOf): height and slope are those at
+  /// x for every x' in [x, end). x itself when the profile is not flat at x (or x is NaN),
+  /// +infinity when it stays flat to the end of the terrain.
+  double flatRunEnd(int profile, double x) const;
+  /// Both at once on profile `profile` (one cell lookup): h and dh/dx as heightAndSlope(x, y) for
+  /// any y of that profile, bit for bit; returns flatRunEnd(profile, x).
+  double sampleRun(int profile, double x, double& h, double& dhdx) const;
+
  private:
   struct Line {
     double y = 0.0;
     Vector heights;  ///< h(x_i, y) [n_x]
     Vector slopes;   ///< cell slopes [n_x - 1] (empty for a single station)
+    int profile = 0;  ///< index of the first line with the same heights
+    /// flatRunEnd(): for a flat cell i (slope 0), the first station index j > i whose cell is
+    /// not flat (n_x - 1: flat to the end).
+    std::vector<Eigen::Index> flat_end;
   };
   /// Line holding y exactly, or nullptr.
   const Line* find(double y) const;
