@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/SVD>
 
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -24,7 +28,71 @@ Vector significantSquaredNorms(const Matrix& phi) {
   return norms;
 }
 
+// Groups of consecutive modes (ascending f) closer than relative_gap: [begin, end) ranges.
+std::vector<std::pair<Eigen::Index, Eigen::Index>> degenerateGroups(const Vector& f,
+                                                                     double relative_gap) {
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> groups;
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    if (i > 0 && std::abs(f(i) - f(i - 1)) <= relative_gap * std::max(std::abs(f(i)), std::abs(f(i - 1))))
+      groups.back().second = i + 1;
+    else
+      groups.emplace_back(i, i + 1);
+  }
+  return groups;
+}
+
+// Orthonormal basis of the significant part of the columns' span (singular values above
+// kNegligibleShape times the largest column norm of the whole set).
+Matrix orthonormalBasis(const Matrix& columns, double set_norm) {
+  const Eigen::JacobiSVD<Matrix> svd(columns, Eigen::ComputeThinU);
+  Eigen::Index rank = 0;
+  while (rank < svd.singularValues().size() && svd.singularValues()(rank) > kNegligibleShape * set_norm)
+    ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
 }  // namespace
+
+Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b, const Vector& f_b,
+                     double relative_gap) {
+  const Matrix plain = mac(phi_a, phi_b);  // checks the shapes
+  if (f_a.size() != phi_a.cols() || f_b.size() != phi_b.cols())
+    throw InputError("eigenspaceMac: " + std::to_string(f_a.size()) + " and " +
+                     std::to_string(f_b.size()) + " frequencies for " + std::to_string(phi_a.cols()) +
+                     " and " + std::to_string(phi_b.cols()) + " shapes");
+  if (!(relative_gap >= 0.0))
+    throw InputError("eigenspaceMac: relative gap must be >= 0");
+  const auto groups_a = degenerateGroups(f_a, relative_gap);
+  const auto groups_b = degenerateGroups(f_b, relative_gap);
+  const double norm_a = phi_a.cols() ? phi_a.colwise().norm().maxCoeff() : 0.0;
+  const double norm_b = phi_b.cols() ? phi_b.colwise().norm().maxCoeff() : 0.0;
+  std::vector<Matrix> basis_b;
+  for (const auto& [b0, b1] : groups_b)
+    basis_b.push_back(b1 - b0 > 1 ? orthonormalBasis(phi_b.middleCols(b0, b1 - b0), norm_b) : Matrix());
+  Matrix out = plain;
+  for (const auto& [a0, a1] : groups_a) {
+    const Matrix qa = a1 - a0 > 1 ? orthonormalBasis(phi_a.middleCols(a0, a1 - a0), norm_a) : Matrix();
+    for (std::size_t g = 0; g < groups_b.size(); ++g) {
+      const auto [b0, b1] = groups_b[g];
+      if (a1 - a0 == 1 && b1 - b0 == 1)
+        continue;  // two single modes: the plain MAC
+      // A single mode's basis is its normalised shape (none when negligible: MAC 0).
+      auto single = [](const Matrix& phi, Eigen::Index j, double set_norm) {
+        const double n = phi.col(j).norm();
+        return n > kNegligibleShape * set_norm ? Matrix(phi.col(j) / n) : Matrix(phi.rows(), 0);
+      };
+      const Matrix left = a1 - a0 > 1 ? qa : single(phi_a, a0, norm_a);
+      const Matrix right = b1 - b0 > 1 ? basis_b[g] : single(phi_b, b0, norm_b);
+      double value = 0.0;
+      if (left.cols() > 0 && right.cols() > 0) {
+        const Eigen::JacobiSVD<Matrix> svd(left.transpose() * right);
+        value = std::min(1.0, svd.singularValues()(0) * svd.singularValues()(0));
+      }
+      out.block(a0, b0, a1 - a0, b1 - b0).setConstant(value);
+    }
+  }
+  return out;
+}
 
 Matrix mac(const Matrix& phi_a, const Matrix& phi_b) {
   if (phi_a.rows() != phi_b.rows())

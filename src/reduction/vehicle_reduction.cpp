@@ -128,8 +128,12 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     const std::vector<fem::DofRef> common =
         vehicle::commonTranslationalDofs(model.vehicle, other.vehicle);
     ModeReference reference;
-    reference.mac = mac(vehicle::physicalShapes(model.system, common, model.modes.shapes),
-                        vehicle::physicalShapes(other.system, common, other.modes.shapes));
+    // Between eigenspaces: the wheels' repeated bounce frequency makes single-vector MACs
+    // round-off dependent (mac.h).
+    reference.mac = eigenspaceMac(vehicle::physicalShapes(model.system, common, model.modes.shapes),
+                                  model.modes.frequencies_hz,
+                                  vehicle::physicalShapes(other.system, common, other.modes.shapes),
+                                  other.modes.frequencies_hz);
     reference.frequencies_hz = other.modes.frequencies_hz;
     selection_options.rule = ModeSelectionRule::Correlation;
     selection_options.max_frequency_hz = options.band_hz;

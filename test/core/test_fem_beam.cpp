@@ -109,8 +109,12 @@ TEST(BeamModes, LanczosMatchesDenseAndIdentitiesHold) {
   const tvd::fem::ModalBasis lanczos = tvd::fem::solveModes(sys.stiffness, sys.mass, req);
   const tvd::fem::ModalBasis dense =
       tvd::fem::solveModesDense(tvd::Matrix(sys.stiffness), tvd::Matrix(sys.mass));
+  // Both are double-precision answers of a pencil whose eigenvalues spread from 689 to
+  // ||K|| ||M^-1||-scale ~1e10 (the axial modes): the lowest one is determined only to about
+  // eps * 1e8 = 2e-8 of itself (their Rayleigh quotients agree to that; SIMD builds moved both by
+  // 1.3e-8). A wrong mode or a missed one would be off by percents.
   for (int i = 0; i < 20; ++i)
-    EXPECT_NEAR(lanczos.eigenvalues(i), dense.eigenvalues(i), 1e-8 * dense.eigenvalues(i));
+    EXPECT_NEAR(lanczos.eigenvalues(i), dense.eigenvalues(i), 1e-7 * dense.eigenvalues(i));
   const tvd::Matrix& phi = lanczos.shapes;
   const tvd::Matrix orth = phi.transpose() * (sys.mass * phi);
   EXPECT_LT((orth - tvd::Matrix::Identity(20, 20)).cwiseAbs().maxCoeff(), kIdentityTolerance);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "steel_cantilever.h"
@@ -110,6 +111,43 @@ TEST(Mac, RejectsMismatchedOrNonFiniteShapes) {
   Matrix bad = Matrix::Ones(3, 2);
   bad(1, 1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(mac(bad, Matrix::Ones(3, 2)), InputError);
+}
+
+// Between eigenspaces: single modes get the plain MAC; a repeated eigenvalue's modes get the MAC
+// of their span, the same for any basis of it (a rotation within the pair changes the plain MAC
+// but not this), and a shape inside the span has MAC 1 with every mode of the group.
+TEST(EigenspaceMac, IsBasisInvariantForRepeatedModesAndPlainOtherwise) {
+  const Matrix phi_a = randomShapes(30, 5, 11);
+  Matrix phi_b = randomShapes(30, 4, 12);
+  // B's modes 1 and 2 are a repeated eigenvalue; B's mode 3 lies in the span of A's 2 and 3.
+  phi_b.col(3) = 0.3 * phi_a.col(2) - 2.0 * phi_a.col(3);
+  Vector f_a(5), f_b(4);
+  f_a << 1.0, 2.0, 3.0, 3.0 * (1.0 + 1e-9), 5.0;  // A: modes 2 and 3 repeated
+  f_b << 1.5, 2.5, 2.5, 4.0;                     // B: modes 1 and 2 repeated
+  const Matrix plain = mac(phi_a, phi_b);
+  const Matrix m = eigenspaceMac(phi_a, f_a, phi_b, f_b);
+  // Single with single: the plain MAC.
+  for (int j : {0, 1, 4})
+    for (int k : {0, 3}) EXPECT_NEAR(m(j, k), plain(j, k), kRoundOff) << j << "," << k;
+  // Group with anything: at least the best plain MAC of its members, one value for the group.
+  EXPECT_GE(m(0, 1) + kRoundOff, std::max(plain(0, 1), plain(0, 2)));
+  EXPECT_EQ(m(0, 1), m(0, 2));
+  EXPECT_EQ(m(2, 1), m(3, 2));
+  EXPECT_NEAR(m(2, 3), 1.0, kRoundOff);  // B's mode 3 is in span(A's 2, 3)
+  EXPECT_NEAR(m(3, 3), 1.0, kRoundOff);
+  // Another basis of B's repeated pair: plain MACs change, the eigenspace MAC does not.
+  const double c = std::cos(0.7), s = std::sin(0.7);
+  Matrix turned = phi_b;
+  turned.col(1) = c * phi_b.col(1) + s * phi_b.col(2);
+  turned.col(2) = -s * phi_b.col(1) + c * phi_b.col(2);
+  EXPECT_GT((mac(phi_a, turned) - plain).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_LT((eigenspaceMac(phi_a, f_a, turned, f_b) - m).cwiseAbs().maxCoeff(), kRoundOff);
+  // A gap below A's 1e-9 splitting keeps A's modes 2 and 3 apart: plain MACs with B's single modes.
+  const Matrix narrow = eigenspaceMac(phi_a, f_a, phi_b, f_b, 1e-12);
+  for (int j : {2, 3})
+    for (int k : {0, 3}) EXPECT_NEAR(narrow(j, k), plain(j, k), kRoundOff) << j << "," << k;
+  EXPECT_GT(m(2, 0), plain(2, 0) + 0.01);
+  EXPECT_THROW(eigenspaceMac(phi_a, f_b, phi_b, f_b), InputError);  // 4 frequencies, 5 shapes
 }
 
 TEST(CorrelateModes, ListsTheBestMatchAndEveryMatchAboveTheThreshold) {

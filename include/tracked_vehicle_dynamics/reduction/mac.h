@@ -26,6 +26,25 @@ constexpr double kNegligibleShape = 1e-8;
 /// anything. Throws InputError when the row counts differ or an entry is not finite.
 Matrix mac(const Matrix& phi_a, const Matrix& phi_b);
 
+/// Modes whose frequencies are closer than this (relative) form one eigenspace for
+/// eigenspaceMac(): the individual vectors of a repeated eigenvalue are any basis of its
+/// eigenspace, which round-off picks. A solver returns a repeated eigenvalue equal to ~1e-10;
+/// distinct modes closer than 1e-6 would turn with perturbations of 1e-6 of the matrices.
+/// (The vehicle's closest distinct pairs, the left and right chain modes, are 1e-5 apart.)
+constexpr double kDegenerateRelativeGap = 1e-6;
+
+/// The MAC between eigenspaces: modes of A (frequencies f_a [Hz], ascending) and of B whose
+/// neighbours lie within relative_gap in frequency are grouped; the entry of every mode j of a
+/// group C and k of a group D is the largest MAC between any shape of span(C) and any of span(D),
+///   MAC_jk = sigma_max(Q_C^T Q_D)^2,   Q_C, Q_D orthonormal bases of the groups' shapes
+/// (the cosine squared of their smallest principal angle). Between single modes it is mac(). On
+/// the un-tracked vehicle 11 road wheels bouncing alone share one frequency, so which vectors of
+/// that eigenspace the solver returns, and so each mode's plain MAC with them, is round-off (a
+/// build with FMA selected one tracked mode fewer); this is not. Shapes of negligible norm (see mac()) add nothing to a group's span.
+/// Throws InputError like mac(), or when a frequency vector does not have one entry per shape.
+Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b, const Vector& f_b,
+                     double relative_gap = kDegenerateRelativeGap);
+
 /// One mode of A with its matches among the modes of B.
 struct ModeMatch {
   int mode = 0;  ///< 0-based column of phi_b
