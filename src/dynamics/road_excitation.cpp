@@ -53,10 +53,9 @@ HeldInputSeries RoadExcitation::sampleHeldSeries(const terrain::TerrainLines& li
       rate.columns.push_back(n + q);
     }
     const double xq = x_(g.q), yq = y_(g.q);
-    // Height and rate at sample j, and the end of the flat run it is on (the station itself
-    // when the profile is not flat there).
-    auto sampleAt = [&](long j, double& h, double& rate) {
-      const double x = station(j) + xq;
+    // Height and rate at x = station + x_q, and the end of the flat run x is on (x itself when
+    // the profile is not flat there).
+    auto sampleAt = [&](double x, double& h, double& rate) {
       if (g.profile < 0) {
         sampleOne(lines, x, yq, speed, h, rate);
         return x;
@@ -67,7 +66,8 @@ HeldInputSeries RoadExcitation::sampleHeldSeries(const terrain::TerrainLines& li
       return end;
     };
     double h = 0.0, dh = 0.0;
-    double end = sampleAt(0, h, dh);
+    double x = station(0) + xq;
+    double end = sampleAt(x, h, dh);
     for (const DofIndex q : g.inputs) {
       series.initial(q) = h;
       series.initial(n + q) = dh;
@@ -76,21 +76,20 @@ HeldInputSeries RoadExcitation::sampleHeldSeries(const terrain::TerrainLines& li
     while (true) {
       // Samples after j on the same flat run hold j's values: jump to the first one past it.
       long next = j + 1;
-      if (skip) {
-        if (end > station(j) + xq) {
-          if (!std::isfinite(end))
-            break;
-          const double estimate = (end - xq - station0) / (speed * dt) - static_cast<double>(first);
-          next = std::max(next, static_cast<long>(std::min(estimate, static_cast<double>(count))) - 1);
-          while (next > j + 1 && station(next - 1) + xq >= end) --next;
-          while (next < count && station(next) + xq < end) ++next;
-        }
+      if (skip && end > x) {
+        if (!std::isfinite(end))
+          break;
+        const double estimate = (end - xq - station0) / (speed * dt) - static_cast<double>(first);
+        next = std::max(next, static_cast<long>(std::min(estimate, static_cast<double>(count))) - 1);
+        while (next > j + 1 && station(next - 1) + xq >= end) --next;
+        while (next < count && station(next) + xq < end) ++next;
       }
       if (next >= count)
         break;
       j = next;
+      x = station(j) + xq;
       double hj = 0.0, dhj = 0.0;
-      end = sampleAt(j, hj, dhj);
+      end = sampleAt(x, hj, dhj);
       // Events where the bits change, so dense() gives sampleSeries() exactly (signed zeros).
       if (std::memcmp(&hj, &h, sizeof h) != 0) {
         height.steps.push_back(j);

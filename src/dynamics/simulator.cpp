@@ -400,65 +400,62 @@ class ModalEngine : public SimulatorEngine {
     Matrix channel_map = Matrix::Zero(input_map_.rows(), n_c);
     std::vector<double> value(static_cast<std::size_t>(n_c));
     std::vector<std::size_t> next(static_cast<std::size_t>(n_c), 0);
+    std::vector<char> drives(static_cast<std::size_t>(n_c), 0);  // a non-zero column of the map
     for (DofIndex c = 0; c < n_c; ++c) {
       const HeldInputSeries::Channel& ch = series.channels[static_cast<std::size_t>(c)];
       for (const DofIndex j : ch.columns)
         if (active_index[static_cast<std::size_t>(j)] >= 0)
           channel_map.col(c) += input_map_.col(active_index[static_cast<std::size_t>(j)]);
       value[static_cast<std::size_t>(c)] = ch.columns.empty() ? 0.0 : series.initial(ch.columns.front());
+      drives[static_cast<std::size_t>(c)] = !channel_map.col(c).isZero(0.0);
     }
     Vector w = series.initial;
     setInput(w);
     outputs.row(0) = y_.transpose();
-    struct Event {
-      DofIndex channel;
-      DofIndex offset;  // sample in the block
-      double delta;
-    };
-    std::vector<Event> events;
-    std::vector<DofIndex> touched, slot(static_cast<std::size_t>(n_c), -1);
-    Matrix deltas, map_touched;
+    // deltas(s, j): change of the s-th touched channel of the block at its sample j (rows are
+    // zeroed when a channel is touched; only the first n_touched rows are in use).
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> deltas(n_c, kBlock);
+    Matrix map_touched;
+    std::vector<DofIndex> touched;
     runBlocks(n_t, outputs, [&](DofIndex k0, DofIndex b, Matrix& terms) {
       gatherActive(w);
       anchorInputTerms();
       // This block's events; w advances to the block's last sample.
-      events.clear();
       touched.clear();
+      long events = 0;
       for (DofIndex c = 0; c < n_c; ++c) {
         const HeldInputSeries::Channel& ch = series.channels[static_cast<std::size_t>(c)];
         std::size_t& e = next[static_cast<std::size_t>(c)];
+        if (e == ch.steps.size() || ch.steps[e] >= k0 + b)
+          continue;
         double& v = value[static_cast<std::size_t>(c)];
-        const std::size_t first = e;
+        const bool drives_c = drives[static_cast<std::size_t>(c)];
+        const auto slot = static_cast<DofIndex>(touched.size());
+        if (drives_c) {
+          touched.push_back(c);
+          deltas.row(slot).head(b).setZero();
+        }
         for (; e < ch.steps.size() && ch.steps[e] < k0 + b; ++e) {
-          const double delta = ch.values[e] - v;
+          if (drives_c)
+            deltas(slot, static_cast<DofIndex>(ch.steps[e] - k0)) = ch.values[e] - v;
           v = ch.values[e];
-          if (delta != 0.0)
-            events.push_back({c, static_cast<DofIndex>(ch.steps[e] - k0), delta});
+          ++events;
         }
-        if (e != first) {
-          for (const DofIndex j : ch.columns) w(j) = v;
-          if (!events.empty() && events.back().channel == c && !channel_map.col(c).isZero(0.0)) {
-            slot[static_cast<std::size_t>(c)] = static_cast<DofIndex>(touched.size());
-            touched.push_back(c);
-          }
-        }
+        for (const DofIndex j : ch.columns) w(j) = v;
       }
       const auto n_touched = static_cast<DofIndex>(touched.size());
-      if (static_cast<DofIndex>(events.size()) * kDenseFraction > n_touched * b) {
-        // Dense: one product of the touched channels' columns with their deltas.
-        deltas.setZero(n_touched, b);
-        for (const Event& ev : events)
-          if (slot[static_cast<std::size_t>(ev.channel)] >= 0)
-            deltas(slot[static_cast<std::size_t>(ev.channel)], ev.offset) = ev.delta;
+      if (events * kDenseFraction > n_touched * b) {
+        // Dense: one product of the touched channels' columns with their changes.
         map_touched = channel_map(Eigen::all, touched);
-        terms.leftCols(b).noalias() = map_touched * deltas;
+        terms.leftCols(b).noalias() = map_touched * deltas.topLeftCorner(n_touched, b);
       } else {
         terms.leftCols(b).setZero();
-        for (const Event& ev : events)
-          if (slot[static_cast<std::size_t>(ev.channel)] >= 0)
-            addInputColumn(channel_map.col(ev.channel).data(), ev.delta, terms.col(ev.offset).data());
+        for (DofIndex slot = 0; slot < n_touched; ++slot)
+          for (DofIndex j = 0; j < b; ++j)
+            if (deltas(slot, j) != 0.0)
+              addInputColumn(channel_map.col(touched[static_cast<std::size_t>(slot)]).data(),
+                             deltas(slot, j), terms.col(j).data());
       }
-      for (const DofIndex c : touched) slot[static_cast<std::size_t>(c)] = -1;
       prefixSum(b, terms);
     });
     setInput(w);

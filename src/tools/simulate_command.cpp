@@ -7,10 +7,10 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <utility>
 
 #include "commands.h"
 #include "output_files.h"
+#include "point_comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
@@ -53,68 +53,6 @@ DofIndex rowOf(const std::vector<std::string>& names, const std::string& name) {
   return static_cast<DofIndex>(it - names.begin());
 }
 
-// Ride comfort of the acceleration at one point: vertical a_w (Wk), VDV, MTVV and absorbed
-// power; horizontal a_w (Wd) in x and y; and the ISO 2631-1 (8.2.3) vibration total value
-// a_v = sqrt(a_wx^2 + a_wy^2 + a_wz^2) (seated comfort: k_x = k_y = k_z = 1).
-class PointComfort {
- public:
-  PointComfort(std::string point, const std::vector<std::string>& names, double dt)
-      : point_(std::move(point)),
-        x_row_(rowOf(names, point_ + " ux/acc")),
-        y_row_(rowOf(names, point_ + " uy/acc")),
-        z_row_(rowOf(names, point_ + " uz/acc")),
-        vertical_(1.0 / dt, verticalOptions()),
-        longitudinal_(1.0 / dt, horizontalOptions()),
-        lateral_(1.0 / dt, horizontalOptions()) {}
-
-  void add(const Eigen::Ref<const Eigen::RowVectorXd>& y) {
-    vertical_.add(y(z_row_));
-    longitudinal_.add(y(x_row_));
-    lateral_.add(y(y_row_));
-  }
-
-  double totalValue() const {
-    return std::sqrt(std::pow(longitudinal_.weightedRms(), 2) + std::pow(lateral_.weightedRms(), 2) +
-                     std::pow(vertical_.weightedRms(), 2));
-  }
-
-  void writeJson(io::JsonWriter& json) const {
-    json.beginObject()
-        .field("point", point_)
-        .field("weighted_rms_m_s2", vertical_.weightedRms())
-        .field("vdv_m_s1_75", vertical_.vibrationDoseValue())
-        .field("mtvv_m_s2", vertical_.maximumTransientVibrationValue())
-        .field("absorbed_power_w", vertical_.absorbedPower().value_or(0.0))
-        .field("weighted_rms_x_m_s2", longitudinal_.weightedRms())
-        .field("weighted_rms_y_m_s2", lateral_.weightedRms())
-        .field("vibration_total_value_m_s2", totalValue())
-        .endObject();
-  }
-
-  void writeText(std::ostream& out) const {
-    out << "    " << point_ << ": a_wz " << vertical_.weightedRms() << " m/s^2, VDV "
-        << vertical_.vibrationDoseValue() << " m/s^1.75, absorbed power "
-        << vertical_.absorbedPower().value_or(0.0) << " W, a_wx " << longitudinal_.weightedRms()
-        << ", a_wy " << lateral_.weightedRms() << ", a_v " << totalValue() << " m/s^2\n";
-  }
-
- private:
-  static dynamics::ComfortOptions verticalOptions() {
-    dynamics::ComfortOptions o;
-    o.weighting = dynamics::Weighting::Wk;
-    o.absorbed_power = dynamics::absorbedPowerVerticalSections();
-    return o;
-  }
-  static dynamics::ComfortOptions horizontalOptions() {
-    dynamics::ComfortOptions o;
-    o.weighting = dynamics::Weighting::Wd;
-    return o;
-  }
-
-  std::string point_;
-  DofIndex x_row_, y_row_, z_row_;
-  dynamics::ComfortMeter vertical_, longitudinal_, lateral_;
-};
 
 void run(const SimulateOptions& opt) {
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
@@ -183,12 +121,16 @@ void run(const SimulateOptions& opt) {
   // Ride comfort at the hull's CoG and at every named point of the description (crew seat,
   // sensor mount, ...): ISO 2631-1 Wk and absorbed power vertically, Wd in x and y.
   std::vector<PointComfort> comfort;
-  comfort.push_back(PointComfort("hull", names, opt.dt));
+  auto addPoint = [&](const std::string& point) {
+    comfort.emplace_back(point, rowOf(names, point + " ux/acc"), rowOf(names, point + " uy/acc"),
+                         rowOf(names, point + " uz/acc"), opt.dt);
+  };
+  addPoint("hull");
   for (const std::string& n : sys.output_names) {
     const std::string point = n.substr(0, n.rfind(' '));
     if (n.size() > 3 && n.compare(n.size() - 3, 3, " uz") == 0 && point != "hull" &&
         point.rfind("road_wheel", 0) != 0)
-      comfort.push_back(PointComfort(point, names, opt.dt));
+      addPoint(point);
   }
 
   constexpr int kWheelColumn = 6;
