@@ -448,15 +448,20 @@ class ModalEngine : public SimulatorEngine {
         // Dense: one product of the touched channels' columns with their changes.
         map_touched = channel_map(Eigen::all, touched);
         terms.leftCols(b).noalias() = map_touched * deltas.topLeftCorner(n_touched, b);
-      } else {
-        terms.leftCols(b).setZero();
-        for (DofIndex slot = 0; slot < n_touched; ++slot)
-          for (DofIndex j = 0; j < b; ++j)
-            if (deltas(slot, j) != 0.0)
-              addInputColumn(channel_map.col(touched[static_cast<std::size_t>(slot)]).data(),
-                             deltas(slot, j), terms.col(j).data());
+        prefixSum(b, terms);
+        return;
       }
-      prefixSum(b, terms);
+      // Few changes (none on flat terrain): g_k = g_{k-1} plus the changes at k, in one pass.
+      for (DofIndex j = 0; j < b; ++j) {
+        if (j == 0)
+          terms.col(0) = input_terms_;
+        else
+          terms.col(j) = terms.col(j - 1);
+        for (DofIndex slot = 0; slot < n_touched; ++slot)
+          if (deltas(slot, j) != 0.0)
+            addInputColumn(channel_map.col(touched[static_cast<std::size_t>(slot)]).data(),
+                           deltas(slot, j), terms.col(j).data());
+      }
     });
     setInput(w);
     return outputs;

@@ -216,7 +216,7 @@ TEST(OnlineVehicle, InvalidTerrainAndSpeedAreRejectedWithoutChange) {
   p.spacing = -0.1;
   EXPECT_THROW(vehicle.addTerrain(p), InputError);
   p.spacing = 0.1;
-  p.lateral = Eigen::Vector2d(1.0, -1.0);
+  p.lateral = (Eigen::VectorXd(2) << 1.0, -1.0).finished();  // lateral positions decreasing
   EXPECT_THROW(vehicle.addTerrain(p), InputError);
   EXPECT_TRUE(vehicle.terrain().empty());
   vehicle.setSpeed(3.0);
