@@ -42,11 +42,6 @@ int TerrainLines::profileOf(double y) const {
   return line == nullptr ? -1 : line->profile;
 }
 
-double TerrainLines::flatRunEnd(int profile, double x) const {
-  double h = 0.0, dhdx = 0.0;
-  return sampleRun(profile, x, h, dhdx);
-}
-
 double TerrainLines::sampleRun(int profile, double x, double& h, double& dhdx) const {
   const Line& line = lines_.at(static_cast<std::size_t>(profile));
   constexpr double kForever = std::numeric_limits<double>::infinity();

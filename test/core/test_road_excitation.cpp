@@ -125,14 +125,18 @@ TEST(RoadExcitation, HeldSeriesIsTheDenseSeriesBitForBit) {
           // (the hill, the separated waves) the four pad rows are one profile.
           std::set<int> profiles;
           for (int r = 0; r < 4; ++r) profiles.insert(lines.profileOf(rows[r] + offset));
-          if (std::string(name) != "oop_waves") EXPECT_EQ(profiles.size(), 1u) << name;
-          if (std::string(name) == "oop_waves") EXPECT_GE(profiles.size(), 2u) << name;
+          if (std::string(name) != "oop_waves") {
+            EXPECT_EQ(profiles.size(), 1u) << name;
+          } else {
+            EXPECT_GE(profiles.size(), 2u) << name;
+          }
           EXPECT_EQ(held.channels.size(), 10 * profiles.size()) << name;
           // Most samples are flat terrain: the events are a small part of the series.
           std::size_t events = 0;
           for (const auto& ch : held.channels) events += ch.steps.size() * ch.columns.size();
-          if (std::string(name) == "long_hill")
+          if (std::string(name) == "long_hill") {
             EXPECT_LT(events, static_cast<std::size_t>(dense.size() / 4)) << kmh;
+          }
         }
       }
     }

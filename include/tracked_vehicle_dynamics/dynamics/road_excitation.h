@@ -68,7 +68,7 @@ class RoadExcitation {
 
   /// The same series as sampleSeries(lines, ...), row for row and bit for bit, stored by its
   /// changes (held_input_series.h): a contact is sampled only where its profile line is not flat
-  /// (TerrainLines::flatRunEnd), and contacts at the same station on lines with the same profile
+  /// (TerrainLines::sampleRun), and contacts at the same station on lines with the same profile
   /// share one channel. Needs speed > 0 and dt > 0 for skipping (otherwise every sample is
   /// taken). Inputs whose lateral position is not one of the lines' are sampled at every step.
   HeldInputSeries sampleHeldSeries(const terrain::TerrainLines& lines, double station0, double speed,

@@ -35,12 +35,10 @@ class TerrainLines {
   /// the line holding y, as the index of the first line with the same profile bit for bit (so
   /// lines of a laterally uniform terrain share one index); -1 when y is not a line.
   int profileOf(double y) const;
-  /// The end of the flat run at x on profile `profile` (profileOf): height and slope are those at
-  /// x for every x' in [x, end). x itself when the profile is not flat at x (or x is NaN),
-  /// +infinity when it stays flat to the end of the terrain.
-  double flatRunEnd(int profile, double x) const;
-  /// Both at once on profile `profile` (one cell lookup): h and dh/dx as heightAndSlope(x, y) for
-  /// any y of that profile, bit for bit; returns flatRunEnd(profile, x).
+  /// h and dh/dx at x on profile `profile` (profileOf) in one cell lookup, as heightAndSlope(x, y)
+  /// for any y of that profile, bit for bit. Returns the end of the flat run at x: h and dh/dx
+  /// are the same for every x' in [x, end); x itself when the profile is not flat at x (or x is
+  /// NaN), +infinity when it stays flat to the end of the terrain.
   double sampleRun(int profile, double x, double& h, double& dhdx) const;
 
  private:
@@ -49,7 +47,7 @@ class TerrainLines {
     Vector heights;  ///< h(x_i, y) [n_x]
     Vector slopes;   ///< cell slopes [n_x - 1] (empty for a single station)
     int profile = 0;  ///< index of the first line with the same heights
-    /// flatRunEnd(): for a flat cell i (slope 0), the first station index j > i whose cell is
+    /// sampleRun(): for a flat cell i (slope 0), the first station index j > i whose cell is
     /// not flat (n_x - 1: flat to the end).
     std::vector<Eigen::Index> flat_end;
   };
