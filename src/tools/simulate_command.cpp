@@ -7,6 +7,9 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "commands.h"
 #include "output_files.h"
@@ -89,7 +92,8 @@ void run(const SimulateOptions& opt) {
   sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
   sim_options.method = opt.method == "modal" ? dynamics::DiscretizationMethod::ModalDecoupled
                                              : dynamics::DiscretizationMethod::AugmentedExponential;
-  sim_options.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Acceleration};
+  sim_options.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
+                            dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = gravity;
   if (sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled && !full)
     sim_options.max_mode_frequency_hz = opt.max_mode_hz < 0 ? 0.5 / opt.dt : opt.max_mode_hz;
@@ -107,34 +111,64 @@ void run(const SimulateOptions& opt) {
   const Vector w0 = road.sampleSeries(lines, track.startStation(), speed, opt.dt, 0, 1).row(0).transpose();
   sim.reset(dynamics::staticEquilibrium(sys, w0.head(road.inputCount()), gravity), w0);
 
+  // The CSV's columns after time and station: one simulator output row each, scaled to the unit
+  // in its name; displacements and angles relative to the initial static equilibrium.
   const auto& names = sim.outputNames();
-  const DofIndex heave = rowOf(names, "hull uz/disp"), roll = rowOf(names, "hull rx/disp"),
-                 pitch = rowOf(names, "hull ry/disp"), accel = rowOf(names, "hull uz/acc");
-  std::vector<DofIndex> wheels;
-  std::vector<std::string> wheel_names;
-  for (DofIndex i = 0; i < static_cast<DofIndex>(sys.output_names.size()); ++i)
-    if (sys.output_names[i].rfind("road_wheel", 0) == 0) {
-      wheels.push_back(rowOf(names, sys.output_names[i] + "/disp"));
-      wheel_names.push_back(sys.output_names[i]);
-    }
+  struct Column {
+    std::string header;
+    DofIndex row;
+    double scale;
+    bool relative;
+  };
+  std::vector<Column> columns;
+  auto add = [&](std::string header, const std::string& output, double scale = 1.0) {
+    const bool relative = output.size() > 5 && output.compare(output.size() - 5, 5, "/disp") == 0;
+    columns.push_back({std::move(header), rowOf(names, output), scale, relative});
+  };
+  // The first four as before this layout grew (scripts find columns by name, people by place).
+  add("hull_heave_m", "hull uz/disp");
+  add("hull_vertical_accel_m_s2", "hull uz/acc");
+  add("hull_pitch_deg", "hull ry/disp", kRadToDeg);
+  add("hull_roll_deg", "hull rx/disp", kRadToDeg);
+  add("hull_heave_rate_m_s", "hull uz/vel");
+  add("hull_pitch_rate_deg_s", "hull ry/vel", kRadToDeg);
+  add("hull_roll_rate_deg_s", "hull rx/vel", kRadToDeg);
+  add("hull_pitch_accel_deg_s2", "hull ry/acc", kRadToDeg);
+  add("hull_roll_accel_deg_s2", "hull rx/acc", kRadToDeg);
+  add("hull_longitudinal_accel_m_s2", "hull ux/acc");
+  add("hull_lateral_accel_m_s2", "hull uy/acc");
+  const std::size_t first_wheel = columns.size();
+  for (const std::string& n : sys.output_names)
+    if (n.rfind("road_wheel", 0) == 0) add(n.substr(0, n.find(' ')) + "_m", n + "/disp");
+  const std::size_t wheel_count = columns.size() - first_wheel;
+  // Named points of the hull (crew seat, sensor mount, ...): every output "<point> uz" that is
+  // neither the hull's CoG nor a wheel centre.
+  std::vector<std::string> points;
+  for (const std::string& n : sys.output_names) {
+    const std::string point = n.substr(0, n.rfind(' '));
+    if (n.size() > 3 && n.compare(n.size() - 3, 3, " uz") == 0 && point != "hull" &&
+        point.rfind("road_wheel", 0) != 0)
+      points.push_back(point);
+  }
+  for (const std::string& point : points) {
+    add(point + "_vertical_m", point + " uz/disp");
+    add(point + "_accel_x_m_s2", point + " ux/acc");
+    add(point + "_accel_y_m_s2", point + " uy/acc");
+    add(point + "_accel_z_m_s2", point + " uz/acc");
+  }
 
-  // Ride comfort at the hull's CoG and at every named point of the description (crew seat,
-  // sensor mount, ...): ISO 2631-1 Wk and absorbed power vertically, Wd in x and y.
+  // Ride comfort at the hull's CoG and at every named point: ISO 2631-1 Wk and absorbed power
+  // vertically, Wd in x and y.
   std::vector<PointComfort> comfort;
   auto addPoint = [&](const std::string& point) {
     comfort.emplace_back(point, rowOf(names, point + " ux/acc"), rowOf(names, point + " uy/acc"),
                          rowOf(names, point + " uz/acc"), opt.dt);
   };
   addPoint("hull");
-  for (const std::string& n : sys.output_names) {
-    const std::string point = n.substr(0, n.rfind(' '));
-    if (n.size() > 3 && n.compare(n.size() - 3, 3, " uz") == 0 && point != "hull" &&
-        point.rfind("road_wheel", 0) != 0)
-      addPoint(point);
-  }
+  for (const std::string& point : points) addPoint(point);
 
-  constexpr int kWheelColumn = 6;
-  Matrix series(steps + 1, kWheelColumn + wheels.size());
+  constexpr int kFirstColumn = 2;  // after time and station
+  Matrix series(steps + 1, kFirstColumn + columns.size());
   Vector y0;
   // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
   // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
@@ -161,29 +195,34 @@ void run(const SimulateOptions& opt) {
       const long k = first + j;
       series(k, 0) = k * opt.dt;
       series(k, 1) = track.startStation() + speed * k * opt.dt;
-      series(k, 2) = y(j, heave) - y0(heave);
-      series(k, 3) = y(j, accel);
-      series(k, 4) = (y(j, pitch) - y0(pitch)) * kRadToDeg;
-      series(k, 5) = (y(j, roll) - y0(roll)) * kRadToDeg;
-      for (std::size_t c = 0; c < wheels.size(); ++c)
-        series(k, kWheelColumn + c) = y(j, wheels[c]) - y0(wheels[c]);
+      for (std::size_t c = 0; c < columns.size(); ++c) {
+        const Column& col = columns[c];
+        series(k, kFirstColumn + c) = col.scale * (y(j, col.row) - (col.relative ? y0(col.row) : 0.0));
+      }
       for (PointComfort& c : comfort) c.add(y.row(j));
     }
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const double simulated = steps * opt.dt;
 
-  const double peak_heave = series.col(2).cwiseAbs().maxCoeff();
-  const double peak_accel = series.col(3).cwiseAbs().maxCoeff();
-  const double peak_pitch = series.col(4).cwiseAbs().maxCoeff();
-  const double peak_roll = series.col(5).cwiseAbs().maxCoeff();
-  const double peak_wheel = wheels.empty() ? 0.0 : series.rightCols(wheels.size()).cwiseAbs().maxCoeff();
+  auto peak = [&](const std::string& header) {
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (columns[c].header == header) return series.col(kFirstColumn + c).cwiseAbs().maxCoeff();
+    throw std::logic_error("simulate: no column " + header);
+  };
+  const double peak_heave = peak("hull_heave_m");
+  const double peak_accel = peak("hull_vertical_accel_m_s2");
+  const double peak_pitch = peak("hull_pitch_deg");
+  const double peak_roll = peak("hull_roll_deg");
+  const double peak_wheel =
+      wheel_count == 0 ? 0.0
+                       : series.middleCols(kFirstColumn + first_wheel, wheel_count).cwiseAbs().maxCoeff();
 
   if (!opt.out_file.empty()) {
     std::ofstream out(opt.out_file);
     if (!out) throw InputError("cannot write " + opt.out_file);
-    out << "time_s,station_m,hull_heave_m,hull_vertical_accel_m_s2,hull_pitch_deg,hull_roll_deg";
-    for (const auto& n : wheel_names) out << "," << n.substr(0, n.find(' ')) << "_m";
+    out << "time_s,station_m";
+    for (const Column& col : columns) out << "," << col.header;
     out << "\n" << std::setprecision(9);
     for (Eigen::Index k = 0; k < series.rows(); ++k) {
       for (Eigen::Index j = 0; j < series.cols(); ++j) out << (j ? "," : "") << series(k, j);
@@ -209,7 +248,19 @@ void run(const SimulateOptions& opt) {
         .field("peak_pitch_deg", peak_pitch)
         .field("peak_roll_deg", peak_roll)
         .field("peak_wheel_displacement_m", peak_wheel)
-        .key("comfort");
+        .field("peak_hull_heave_rate_m_s", peak("hull_heave_rate_m_s"))
+        .field("peak_pitch_rate_deg_s", peak("hull_pitch_rate_deg_s"))
+        .field("peak_roll_rate_deg_s", peak("hull_roll_rate_deg_s"))
+        .field("peak_pitch_accel_deg_s2", peak("hull_pitch_accel_deg_s2"))
+        .field("peak_roll_accel_deg_s2", peak("hull_roll_accel_deg_s2"));
+    json.key("peaks_at_points").beginArray();
+    for (const std::string& point : points)
+      json.beginObject()
+          .field("point", point)
+          .field("peak_vertical_displacement_m", peak(point + "_vertical_m"))
+          .field("peak_vertical_accel_m_s2", peak(point + "_accel_z_m_s2"))
+          .endObject();
+    json.endArray().key("comfort");
     comfort.front().writeJson(json);
     json.key("comfort_at_points").beginArray();
     for (std::size_t i = 1; i < comfort.size(); ++i) comfort[i].writeJson(json);
@@ -229,8 +280,11 @@ void run(const SimulateOptions& opt) {
             << (report.from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n"
             << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
-            << "  peak road-wheel displacement " << peak_wheel << " m\n"
-            << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "
+            << "  peak road-wheel displacement " << peak_wheel << " m\n";
+  for (const std::string& point : points)
+    std::cout << "  peak at " << point << ": vertical displacement " << peak(point + "_vertical_m")
+              << " m, vertical acceleration " << peak(point + "_accel_z_m_s2") << " m/s^2\n";
+  std::cout << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "
                "vertical):\n";
   for (const PointComfort& c : comfort) c.writeText(std::cout);
   std::cout << "  simulated " << simulated << " s in " << wall * 1e3 << " ms (real-time factor "

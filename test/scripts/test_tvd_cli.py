@@ -18,6 +18,7 @@ import unittest
 
 import numpy as np
 import scipy.io
+import yaml
 from scipy.signal import lfilter
 
 import junit_runner
@@ -119,7 +120,8 @@ class TvdCliTest(unittest.TestCase):
         header, rows = read_csv(out)
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
-        self.assertEqual(len(header), 6 + 14)
+        # 7 more hull rates and accelerations, 14 wheels, 4 columns for each of 2 named points.
+        self.assertEqual(len(header), 6 + 7 + 14 + 2 * 4)
         # 30 m at 50 km/h in 1 ms steps, plus the initial sample.
         self.assertEqual(len(rows), round(30.0 / (speed_kmh / 3.6) / 1e-3) + 1)
         self.assertAlmostEqual(rows[-1, 0], d["simulated_seconds"], places=9)
@@ -154,6 +156,56 @@ class TvdCliTest(unittest.TestCase):
         for p in [hull] + list(points.values()):
             self.assertGreaterEqual(p["vibration_total_value_m_s2"], p["weighted_rms_m_s2"])
             self.assertGreater(p["weighted_rms_x_m_s2"], 0.0)  # the hill pitches the hull
+
+    def test_simulate_rates_and_named_points_are_consistent(self):
+        """The CSV's rates are the time derivatives of its displacements, and a named point moves
+        with the hull as a rigid body: u_z(P) = u_z(G) + roll (y_P - y_G) - pitch (x_P - x_G) for
+        the small rotations of the linear model, and the same for accelerations. Out-of-phase
+        waves with the 1 m lateral offset of paper §4.2.1, so that the hull rolls as well."""
+        out = self.path("oop.csv")
+        dt = 1e-3
+        d = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          "oop_waves", "--lateral-offset", "1", "--speed-kmh", "10", "--dt",
+                          str(dt), "--cache-dir", self.cache, "--out", out)
+        header, rows = read_csv(out)
+        c = {name: rows[:, i] for i, name in enumerate(header)}
+        deg = np.pi / 180.0
+
+        def assert_derivative(value, rate, scale=1.0):
+            # Central differences: O(dt^2 f^2) off for the few-Hz hull motion.
+            numeric = np.gradient(c[value], dt)[1:-1]
+            err = np.abs(numeric - scale * c[rate][1:-1]).max()
+            self.assertLess(err, 0.01 * np.abs(c[rate]).max(), f"d/dt {value} vs {rate}")
+
+        assert_derivative("hull_heave_m", "hull_heave_rate_m_s")
+        assert_derivative("hull_pitch_deg", "hull_pitch_rate_deg_s")
+        assert_derivative("hull_roll_deg", "hull_roll_rate_deg_s")
+        assert_derivative("hull_heave_rate_m_s", "hull_vertical_accel_m_s2")
+        assert_derivative("hull_pitch_rate_deg_s", "hull_pitch_accel_deg_s2")
+        assert_derivative("hull_roll_rate_deg_s", "hull_roll_accel_deg_s2")
+        self.assertGreater(d["peak_roll_deg"], 0.5)
+        self.assertAlmostEqual(d["peak_roll_rate_deg_s"], np.abs(c["hull_roll_rate_deg_s"]).max(),
+                               places=5)
+
+        with open(VEHICLE) as f:
+            description = yaml.safe_load(f)
+        cog = np.array([description["hull"]["cog_x"]["value"], 0.0,
+                        description["hull"]["cog_height"]["value"]])
+        peaks = {p["point"]: p for p in d["peaks_at_points"]}
+        self.assertEqual(sorted(peaks), ["crew_seat", "sensor_mount"])
+        for name, peak in peaks.items():
+            r = np.array(description["named_points"][name]["value"]) - cog
+            for value, heave, roll, pitch in (
+                    ("_vertical_m", "hull_heave_m", "hull_roll_deg", "hull_pitch_deg"),
+                    ("_accel_z_m_s2", "hull_vertical_accel_m_s2", "hull_roll_accel_deg_s2",
+                     "hull_pitch_accel_deg_s2")):
+                rigid = c[heave] + deg * (c[roll] * r[1] - c[pitch] * r[0])
+                np.testing.assert_allclose(c[name + value], rigid, rtol=0,
+                                           atol=1e-6 * np.abs(rigid).max(), err_msg=name + value)
+            self.assertAlmostEqual(peak["peak_vertical_displacement_m"],
+                                   np.abs(c[name + "_vertical_m"]).max(), places=7)
+            self.assertAlmostEqual(peak["peak_vertical_accel_m_s2"],
+                                   np.abs(c[name + "_accel_z_m_s2"]).max(), places=5)
 
     def test_frf_csv_columns_and_grid(self):
         out = self.path("frf.csv")
