@@ -34,14 +34,6 @@ std::string utcNow() {
 
 }  // namespace
 
-const char* softwareVersion() {
-#ifdef TVD_VERSION
-  return TVD_VERSION;
-#else
-  return "0.1.0";
-#endif
-}
-
 std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
     const fem::DofMap& dofs, const std::vector<OutputDof>& outputs) {
   const SparseMatrix by_row = dofs.transformation().transpose();  // column p = physical row p

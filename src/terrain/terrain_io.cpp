@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -10,10 +9,10 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <string_view>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/csv_reader.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
@@ -40,80 +39,9 @@ std::string quoted(const std::string& text) {
 
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
-std::string trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return "";
-  const auto last = text.find_last_not_of(" \t\r");
-  return std::string(text.substr(first, last - first + 1));
-}
-
-/// Parses a whole cell as a number (locale-independent); non-finite spellings parse too, so the
-/// caller can report them as such rather than as "not a number".
-std::optional<double> parseNumber(const std::string& cell) {
-  std::string_view digits(cell);
-  if (digits.size() > 1 && digits.front() == '+') digits.remove_prefix(1);
-  if (digits.empty()) return std::nullopt;
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (error != std::errc() || end != digits.data() + digits.size()) return std::nullopt;
-  return value;
-}
-
-/// One CSV line that is neither blank nor a comment.
-struct CsvRow {
-  int line;  // 1-based line in the file
-  std::vector<std::string> cells;
-};
-
-class CsvReader {
- public:
-  explicit CsvReader(std::string path) : path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(path_ + ": " + what); }
-  [[noreturn]] void fail(const CsvRow& row, const std::string& what) const {
-    fail("row " + std::to_string(row.line) + ": " + what);
-  }
-  [[noreturn]] void fail(const CsvRow& row, std::size_t column, const std::string& what) const {
-    fail("row " + std::to_string(row.line) + ", column " + std::to_string(column + 1) + ": " +
-         what);
-  }
-
-  std::vector<CsvRow> readRows() const {
-    std::error_code error;
-    if (!std::filesystem::exists(path_, error)) fail("file not found");
-    std::ifstream in(path_);
-    if (!in) fail("cannot be opened");
-    std::vector<CsvRow> rows;
-    std::string text;
-    for (int line = 1; std::getline(in, text); ++line) {
-      const std::string content = trim(text);
-      if (content.empty() || content.front() == '#') continue;
-      CsvRow row{line, {}};
-      std::size_t begin = 0;
-      while (true) {
-        const std::size_t comma = content.find(',', begin);
-        row.cells.push_back(trim(std::string_view(content).substr(begin, comma - begin)));
-        if (comma == std::string::npos) break;
-        begin = comma + 1;
-      }
-      rows.push_back(std::move(row));
-    }
-    if (in.bad()) fail("cannot be read");
-    return rows;
-  }
-
-  /// A finite number from a cell; `what` names the quantity ("station", "height", ...).
-  double number(const CsvRow& row, std::size_t column, const std::string& what) const {
-    const std::string& cell = row.cells[column];
-    const std::optional<double> value = parseNumber(cell);
-    if (!value) fail(row, column, what + " '" + cell + "' is not a number");
-    if (!std::isfinite(*value)) fail(row, column, what + " '" + cell + "' is not a finite number");
-    return *value;
-  }
-
- private:
-  std::string path_;
-};
+using io::CsvReader;
+using io::CsvRow;
+using io::parseNumber;
 
 std::ofstream openForWriting(const std::string& path) {
   std::ofstream out(path);

@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
@@ -39,6 +41,7 @@ struct SimulateOptions {
   std::string variant = "tracked";
   std::string track = "long_hill";
   double speed_kmh = 30.0;
+  std::string speed_profile;  // CSV time_s,speed_kmh; replaces speed_kmh
   double dt = 1e-3;
   double lateral_offset = 0.0;
   std::string method = "modal";
@@ -61,6 +64,12 @@ void run(const SimulateOptions& opt) {
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
     throw InputError("simulate: --speed-kmh must be in (0, 200], got " + std::to_string(opt.speed_kmh));
+  std::optional<dynamics::SpeedProfile> profile;
+  if (!opt.speed_profile.empty()) {
+    profile = dynamics::loadSpeedProfile(opt.speed_profile);
+    if (profile->maxSpeed() * 3.6 > 200)
+      throw InputError(opt.speed_profile + ": speeds above 200 km/h are outside the model's use");
+  }
   const terrain::Terrain track = [&] {
     const auto names = terrain::trackNames();
     if (std::find(names.begin(), names.end(), opt.track) != names.end()) return terrain::makeTrack(opt.track);
@@ -104,11 +113,40 @@ void run(const SimulateOptions& opt) {
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
   const double speed = opt.speed_kmh / 3.6;
-  // From the start of the track until the station has covered its length (paper: 30 m).
+  // From the start of the track until the station has covered its length (paper: 30 m), or until
+  // the speed profile ends.
   const double distance = track.endStation() - track.startStation();
-  const long steps = static_cast<long>(std::ceil(distance / speed / opt.dt));
+  long steps = 0;
+  if (profile) {
+    const auto last = static_cast<long>(std::floor(profile->endTime() / opt.dt * (1 + 1e-12)));
+    if (last < 1)
+      throw InputError(opt.speed_profile + ": the profile lasts " + std::to_string(profile->endTime()) +
+                       " s, less than one time step");
+    steps = last;
+    for (long k = 1; k <= last; ++k)
+      if (profile->station(k * opt.dt) >= distance) {
+        steps = k;
+        break;
+      }
+  } else {
+    steps = static_cast<long>(std::ceil(distance / speed / opt.dt));
+  }
+  // Station and speed of sample k.
+  auto stationAt = [&](long k) {
+    return track.startStation() + (profile ? profile->station(k * opt.dt) : speed * k * opt.dt);
+  };
+  // The dense input series of samples first .. first + count - 1 (every input at every sample).
+  auto denseInputs = [&](long first, long count) {
+    if (!profile) return road.sampleSeries(lines, track.startStation(), speed, opt.dt, first, count);
+    Vector stations(count), speeds(count);
+    for (long j = 0; j < count; ++j) {
+      stations(j) = stationAt(first + j);
+      speeds(j) = profile->speed((first + j) * opt.dt);
+    }
+    return road.sampleSeries(lines, stations, speeds);
+  };
   // Start from static equilibrium on the entry of the track, at rest relative to it.
-  const Vector w0 = road.sampleSeries(lines, track.startStation(), speed, opt.dt, 0, 1).row(0).transpose();
+  const Vector w0 = denseInputs(0, 1).row(0).transpose();
   sim.reset(dynamics::staticEquilibrium(sys, w0.head(road.inputCount()), gravity), w0);
 
   // The CSV's columns after time and station: one simulator output row each, scaled to the unit
@@ -173,20 +211,20 @@ void run(const SimulateOptions& opt) {
   // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
   // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
   // sample of the previous one (the simulator's current input), so it is recorded only once.
-  // The reduced model takes the inputs stored by their changes (sampled only where the terrain
-  // under a contact is not flat, shared by contacts on the same profile); the full model's static
-  // residual needs every sample.
+  // At constant speed the reduced model takes the inputs stored by their changes (sampled only
+  // where the terrain under a contact is not flat, shared by contacts on the same profile); the
+  // full model's static residual and a varying speed take every sample.
   constexpr long kBlock = 16384;
   const auto start = Clock::now();
   for (long first = 0; first == 0 || first < steps; first += kBlock) {
     const long last = std::min(first + kBlock, steps);
     const long count = last - first + 1;
     Matrix y;
-    if (full) {
-      const Matrix w = road.sampleSeries(lines, track.startStation(), speed, opt.dt, first, count);
+    if (full || profile) {
+      const Matrix w = denseInputs(first, count);
       y = sim.simulate(w);
       // The full model adds its static residual to the displacements (rows 0..n_y-1).
-      full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
+      if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
     } else {
       y = sim.simulate(road.sampleHeldSeries(lines, track.startStation(), speed, opt.dt, first, count));
     }
@@ -194,7 +232,7 @@ void run(const SimulateOptions& opt) {
     for (long j = first == 0 ? 0 : 1; j < y.rows(); ++j) {
       const long k = first + j;
       series(k, 0) = k * opt.dt;
-      series(k, 1) = track.startStation() + speed * k * opt.dt;
+      series(k, 1) = stationAt(k);
       for (std::size_t c = 0; c < columns.size(); ++c) {
         const Column& col = columns[c];
         series(k, kFirstColumn + c) = col.scale * (y(j, col.row) - (col.relative ? y0(col.row) : 0.0));
@@ -204,6 +242,7 @@ void run(const SimulateOptions& opt) {
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   const double simulated = steps * opt.dt;
+  const double travelled = series(steps, 1) - track.startStation();
 
   auto peak = [&](const std::string& header) {
     for (std::size_t c = 0; c < columns.size(); ++c)
@@ -234,8 +273,15 @@ void run(const SimulateOptions& opt) {
     json.beginObject()
         .field("vehicle", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
-        .field("track", track.name())
-        .field("speed_kmh", opt.speed_kmh)
+        .field("track", track.name());
+    if (profile) {
+      json.field("speed_profile", opt.speed_profile)
+          .field("mean_speed_kmh", travelled / simulated * 3.6)
+          .field("max_speed_kmh", profile->maxSpeed() * 3.6);
+    } else {
+      json.field("speed_kmh", opt.speed_kmh);
+    }
+    json.field("travelled_m", travelled)
         .field("time_step_s", opt.dt)
         .field("model", full ? "full" : "reduced")
         .field(full ? "modal_coordinates" : "reduced_dofs", static_cast<long long>(sys.size()))
@@ -273,8 +319,14 @@ void run(const SimulateOptions& opt) {
     json.endObject();
     return;
   }
-  std::cout << std::fixed << std::setprecision(3) << track.name() << " at " << opt.speed_kmh
-            << " km/h, " << vehicle::variantName(variant)
+  std::cout << std::fixed << std::setprecision(3) << track.name();
+  if (profile)
+    std::cout << " with the speed profile " << opt.speed_profile << " (mean "
+              << travelled / simulated * 3.6 << " km/h, " << travelled << " m travelled"
+              << (travelled < distance ? ", the profile ends before the track does" : "") << ")";
+  else
+    std::cout << " at " << opt.speed_kmh << " km/h";
+  std::cout << ", " << vehicle::variantName(variant)
             << (full ? " full model (" + std::to_string(sys.size()) + " modes + static residual"
                      : " reduced model (" + std::to_string(sys.size()) + " DOFs")
             << (report.from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n"
@@ -299,7 +351,12 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
   cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | terrain file (CSV/YAML)");
-  cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
+  CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
+  cmd->add_option("--speed-profile", opt->speed_profile,
+                  "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), linear "
+                  "between rows; the run ends at the track's end or the profile's")
+      ->check(CLI::ExistingFile)
+      ->excludes(speed);
   cmd->add_option("--dt", opt->dt, "time step [s]")->check(CLI::Range(1e-5, 0.1));
   cmd->add_option("--lateral-offset", opt->lateral_offset, "lateral offset of the path [m] (y left)");
   cmd->add_option("--method", opt->method, "discretisation: modal (decoupled, fast) | exact (augmented exponential)")

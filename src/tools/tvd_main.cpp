@@ -5,11 +5,12 @@
 
 #include "commands.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model.h"
 
 int main(int argc, char** argv) {
   namespace tvd = tracked_vehicle_dynamics;
   CLI::App app{"tvd: tracked vehicle vertical dynamics from a reduced finite-element model"};
-  app.set_version_flag("--version", std::string(TVD_VERSION));
+  app.set_version_flag("--version", std::string(tvd::reduction::softwareVersion()));
   app.require_subcommand(1);
   tvd::tools::registerModesCommand(app);
   tvd::tools::registerMacCommand(app);

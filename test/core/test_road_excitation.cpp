@@ -67,6 +67,36 @@ TEST(RoadExcitation, SeriesFollowsTheStation) {
     }
 }
 
+// A varying-speed series: row j is sample() at its own station and speed, so the rate column
+// u' = v dh/dx follows the speed; at equal speeds it is the constant-speed series.
+TEST(RoadExcitation, VaryingSpeedSeriesSamplesEachRowAtItsStationAndSpeed) {
+  const double a = 0.02, b = -0.01;
+  tvd::Vector xq(2), yq(2);
+  xq << 1.5, -1.5;
+  yq << 1.0, -1.0;
+  const tvd::dynamics::RoadExcitation road(xq, yq);
+  tvd::Vector stations(4), speeds(4);
+  stations << 3.0, 3.3, 3.4, 3.42;
+  speeds << 12.0, 6.0, 2.0, 0.0;
+  const tvd::Matrix w = road.sampleSeries(plane(a, b), stations, speeds);
+  ASSERT_EQ(w.rows(), 4);
+  for (int j = 0; j < 4; ++j)
+    for (int q = 0; q < 2; ++q) {
+      EXPECT_NEAR(w(j, q), a * (stations(j) + xq(q)) + b * yq(q), 1e-12) << j;
+      EXPECT_NEAR(w(j, 2 + q), speeds(j) * a, 1e-12) << j;
+    }
+  const double s0 = 3.0, speed = 8.0, dt = 0.01;
+  tvd::Vector even(30);
+  for (int j = 0; j < 30; ++j) even(j) = s0 + speed * (5 + j) * dt;
+  // (Not bit for bit: the compiler may contract s0 + v k dt into an FMA in one place only.)
+  EXPECT_LT((road.sampleSeries(plane(a, b), even, tvd::Vector::Constant(30, speed)) -
+             road.sampleSeries(plane(a, b), s0, speed, dt, 5, 30))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-15);
+  EXPECT_THROW(road.sampleSeries(plane(a, b), stations, tvd::Vector::Zero(3)), tvd::InputError);
+}
+
 // Through TerrainLines (one combined height-and-slope lookup per input) the inputs equal those
 // sampled from the terrain itself, and every row of a series equals sample() at its station.
 TEST(RoadExcitation, TerrainLinesGiveTheTerrainsInputs) {

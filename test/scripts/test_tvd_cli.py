@@ -161,11 +161,12 @@ class TvdCliTest(unittest.TestCase):
         """The CSV's rates are the time derivatives of its displacements, and a named point moves
         with the hull as a rigid body: u_z(P) = u_z(G) + roll (y_P - y_G) - pitch (x_P - x_G) for
         the small rotations of the linear model, and the same for accelerations. Out-of-phase
-        waves with the 1 m lateral offset of paper §4.2.1, so that the hull rolls as well."""
+        waves (built in with the 1 m lateral offset of paper §4.2.1), so that the hull rolls as
+        well."""
         out = self.path("oop.csv")
         dt = 1e-3
         d = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
-                          "oop_waves", "--lateral-offset", "1", "--speed-kmh", "10", "--dt",
+                          "oop_waves", "--speed-kmh", "10", "--dt",
                           str(dt), "--cache-dir", self.cache, "--out", out)
         header, rows = read_csv(out)
         c = {name: rows[:, i] for i, name in enumerate(header)}
@@ -206,6 +207,74 @@ class TvdCliTest(unittest.TestCase):
                                    np.abs(c[name + "_vertical_m"]).max(), places=7)
             self.assertAlmostEqual(peak["peak_vertical_accel_m_s2"],
                                    np.abs(c[name + "_accel_z_m_s2"]).max(), places=5)
+
+    def test_simulate_speed_profile(self):
+        """--speed-profile: a constant profile is the --speed-kmh run; a braking profile's
+        stations are the closed-form integral of its speed; a profile that ends first ends the
+        run; bad profiles are named."""
+        common = ("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                  "long_hill", "--cache-dir", self.cache)
+        constant = self.path("constant.csv")
+        with open(constant, "w") as f:
+            f.write("time_s,speed_kmh\n0,30\n10,30\n")
+        self.tvd(*common, "--speed-kmh", "30", "--out", self.path("v30.csv"))
+        d = self.tvd_json(*common, "--speed-profile", constant, "--out", self.path("p30.csv"))
+        self.assertEqual(d["speed_profile"], constant)
+        self.assertAlmostEqual(d["mean_speed_kmh"], 30.0, places=6)
+        self.assertAlmostEqual(d["travelled_m"], 30.0, places=6)
+        h1, a = read_csv(self.path("v30.csv"))
+        h2, b = read_csv(self.path("p30.csv"))
+        self.assertEqual(h1, h2)
+        self.assertEqual(a.shape, b.shape)
+        # Dense vs held input paths, stations computed two ways: displacements and accelerations
+        # agree to round-off; the rates carry the slope input u' = v dh/dx, which jumps at the
+        # terrain's grid nodes, where a sample lands every 6 steps at 30 km/h and round-off
+        # picks the side (1.7e-5 of the peak heave rate; on this symmetric hill the roll rate is
+        # round-off, below 1e-3 deg/s, and so are its jumps).
+        for i, name in enumerate(h1):
+            rate = "_rate_" in name
+            np.testing.assert_allclose(
+                b[:, i], a[:, i], rtol=0, err_msg=name,
+                atol=(1e-4 if rate else 1e-9) * np.abs(a[:, i]).max() + (1e-3 if rate else 1e-8))
+
+        # 50 km/h for 1 s, then braking at a constant rate to 10 km/h at 3 s, then held.
+        braking = self.path("braking.csv")
+        with open(braking, "w") as f:
+            f.write("# brake before the hill\ntime_s,speed_kmh\n0,50\n1,50\n3,10\n20,10\n")
+        out = self.path("braking_run.csv")
+        d = self.tvd_json(*common, "--speed-profile", braking, "--out", out)
+        header, rows = read_csv(out)
+        c = {name: rows[:, i] for i, name in enumerate(header)}
+        t = c["time_s"]
+        v0, v1 = 50 / 3.6, 10 / 3.6
+        accel = (v1 - v0) / 2.0
+        s = np.where(t <= 1, v0 * t,
+                     np.where(t <= 3, v0 + v0 * (t - 1) + accel * (t - 1) ** 2 / 2,
+                              v0 + (v0 + v1) + v1 * (t - 3)))
+        # (the CSV has 9 significant digits)
+        np.testing.assert_allclose(c["station_m"] - c["station_m"][0], s, rtol=0, atol=1e-7)
+        self.assertGreaterEqual(s[-1], 30.0)  # ends when the track is covered ...
+        self.assertLess(s[-2], 30.0)          # ... and not a step later
+        self.assertAlmostEqual(d["travelled_m"], s[-1], places=6)
+        self.assertAlmostEqual(d["max_speed_kmh"], 50.0, places=9)
+        self.assertGreater(d["peak_hull_heave_m"], 0.35)  # it still climbs the hill
+
+        short = self.path("short.csv")
+        with open(short, "w") as f:
+            f.write("time_s,speed_m_s\n0,5\n1,5\n")
+        d = self.tvd_json(*common, "--speed-profile", short)
+        self.assertAlmostEqual(d["simulated_seconds"], 1.0, places=9)
+        self.assertAlmostEqual(d["travelled_m"], 5.0, places=9)
+
+        bad = self.path("bad_profile.csv")
+        with open(bad, "w") as f:
+            f.write("time_s,speed_kmh\n0,30\n2,30\n1,20\n")
+        r = self.tvd(*common, "--speed-profile", bad, status=INPUT_ERROR_STATUS)
+        self.assertIn("bad_profile.csv: row 4, column 1: time 1 s is not after", r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1)
+        r = self.tvd(*common, "--speed-profile", constant, "--speed-kmh", "30",
+                     status=INPUT_ERROR_STATUS)
+        self.assertIn("excludes", r.stderr)
 
     def test_frf_csv_columns_and_grid(self):
         out = self.path("frf.csv")

@@ -46,24 +46,35 @@ class RoadExcitation {
       sampleOne(terrain, station + x_(q), y_(q), speed, w(q), w(n + q));
   }
 
+  /// The input series of a run: row j is sample() at station stations(j) [m] and speed
+  /// speeds(j) [m/s]. [rows x 2 n_inputs].
+  template <typename HeightSource>
+  Matrix sampleSeries(const HeightSource& terrain, const Vector& stations, const Vector& speeds) const {
+    if (stations.size() != speeds.size())
+      throw InputError("road excitation: " + std::to_string(stations.size()) + " stations but " +
+                       std::to_string(speeds.size()) + " speeds");
+    const DofIndex n = x_.size();
+    const Eigen::Index count = stations.size();
+    Matrix series(count, 2 * n);
+    // Input by input: the series is column-major, so each input's samples are contiguous.
+    for (DofIndex q = 0; q < n; ++q) {
+      double* u = series.col(q).data();
+      double* rate = series.col(n + q).data();
+      for (Eigen::Index j = 0; j < count; ++j)
+        sampleOne(terrain, stations(j) + x_(q), y_(q), speeds(j), u[j], rate[j]);
+    }
+    return series;
+  }
+
   /// The input series of a constant-speed run for Simulator::simulate(): row j is w at time
   /// (first + j) dt, station s = station0 + speed (first + j) dt. [count x 2 n_inputs].
   /// Row j equals sample() at that station.
   template <typename HeightSource>
   Matrix sampleSeries(const HeightSource& terrain, double station0, double speed, double dt,
                       long first, long count) const {
-    const DofIndex n = x_.size();
-    Matrix series(count, 2 * n);
-    // Input by input: the series is column-major, so each input's samples are contiguous.
-    for (DofIndex q = 0; q < n; ++q) {
-      double* u = series.col(q).data();
-      double* rate = series.col(n + q).data();
-      for (long j = 0; j < count; ++j) {
-        const double station = station0 + speed * static_cast<double>(first + j) * dt;
-        sampleOne(terrain, station + x_(q), y_(q), speed, u[j], rate[j]);
-      }
-    }
-    return series;
+    Vector stations(count);
+    for (long j = 0; j < count; ++j) stations(j) = station0 + speed * static_cast<double>(first + j) * dt;
+    return sampleSeries(terrain, stations, Vector::Constant(count, speed));
   }
 
   /// The same series as sampleSeries(lines, ...), row for row and bit for bit, stored by its

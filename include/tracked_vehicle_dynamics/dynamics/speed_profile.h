@@ -1,0 +1,45 @@
+// A vehicle speed that varies in time (paper §4.2.1 drives at constant speed; engineers also brake
+// and accelerate over a track): v(t) piecewise linear between samples (t_k, v_k), and the
+// travelled station its exact integral,
+//   s(t) = S_k + v_k tau + (v_{k+1} - v_k) tau^2 / (2 h_k),   tau = t - t_k,  h_k = t_{k+1} - t_k,
+//   S_k  = sum_{i<k} (v_i + v_{i+1}) h_i / 2            (trapezoids: exact for linear v).
+// After the last sample the speed is held.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+class SpeedProfile {
+ public:
+  /// time [s]: at least two samples, the first 0, strictly increasing, finite; speed [m/s]: one
+  /// per time, finite and >= 0 (the road inputs assume forward travel). `name` prefixes errors
+  /// (e.g. the file). Throws InputError naming the offending sample.
+  SpeedProfile(std::vector<double> time, std::vector<double> speed,
+               const std::string& name = "speed profile");
+
+  /// v(t) [m/s]; t >= 0 (t < 0 is read as 0).
+  double speed(double t) const;
+  /// s(t) = integral of v from 0 to t [m].
+  double station(double t) const;
+  /// Time of the last sample [s].
+  double endTime() const { return time_.back(); }
+  /// Largest sampled speed [m/s].
+  double maxSpeed() const;
+
+  const std::vector<double>& times() const { return time_; }
+  const std::vector<double>& speeds() const { return speed_; }
+
+ private:
+  /// Index k of the segment [t_k, t_{k+1}) that holds t (the last sample for t >= endTime()).
+  std::size_t segment(double t) const;
+
+  std::vector<double> time_;
+  std::vector<double> speed_;
+  std::vector<double> station_;  // S_k at each sample
+};
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics
