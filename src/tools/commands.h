@@ -37,6 +37,7 @@ void registerMacCommand(CLI::App& app);
 void registerReduceCommand(CLI::App& app);
 void registerSimulateCommand(CLI::App& app);
 void registerFrfCommand(CLI::App& app);
+void registerTerrainCommand(CLI::App& app);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

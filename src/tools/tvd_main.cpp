@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   tvd::tools::registerReduceCommand(app);
   tvd::tools::registerFrfCommand(app);
   tvd::tools::registerSimulateCommand(app);
+  tvd::tools::registerTerrainCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -276,6 +276,55 @@ class TvdCliTest(unittest.TestCase):
                      status=INPUT_ERROR_STATUS)
         self.assertIn("excludes", r.stderr)
 
+    def test_terrain_iso8608_road_and_ride_on_it(self):
+        """tvd terrain --iso8608: the road's r.m.s. height is the PSD's over the generated band
+        (closed form); simulated on it, a class-D road (4x the PSD of C, same seed, so every height
+        exactly doubles) doubles every response of the linear model, a_w and VDV, and quadruples
+        the absorbed power."""
+        length, n0, n_low, n_high = 80.0, 0.1, 0.011, 2.83
+        runs = {}
+        for road_class, reference_psd in (("C", 256e-6), ("D", 1024e-6)):
+            road = self.path(f"road_{road_class}.csv")
+            d = self.tvd_json("terrain", "--iso8608", road_class, "--length", str(length),
+                              "--taper", "0", "--seed", "7", "--out", road)
+            band = reference_psd * n0 ** 2 * (1 / n_low - 1 / n_high)  # integral of G_d(n0)(n/n0)^-2
+            self.assertAlmostEqual(d["band_rms_height_m"] / np.sqrt(band), 1.0, places=8)
+            self.assertAlmostEqual(d["rms_height_m"] / d["band_rms_height_m"], 1.0, places=9)
+            self.assertEqual(d["stations"], round(length / 0.05) + 1)
+            self.assertEqual(d["end_station_m"], length)
+            out = self.path(f"ride_{road_class}.csv")
+            runs[road_class] = (self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant",
+                                              "untracked", "--track", road, "--speed-kmh", "40",
+                                              "--cache-dir", self.cache, "--out", out),
+                                *read_csv(out))
+        (c, header, c_rows), (d, _, d_rows) = runs["C"], runs["D"]
+        self.assertGreater(c["comfort"]["weighted_rms_m_s2"], 0.1)
+        for i, name in enumerate(header[2:], start=2):
+            if any(k in name for k in ("roll", "lateral", "accel_y")):
+                continue  # round-off on this road, uniform across the width
+            np.testing.assert_allclose(d_rows[:, i], 2 * c_rows[:, i], rtol=0,
+                                       atol=1e-7 * np.abs(d_rows[:, i]).max() + 1e-12,
+                                       err_msg=name)
+        for key in ("weighted_rms_m_s2", "vdv_m_s1_75", "mtvv_m_s2"):
+            self.assertAlmostEqual(d["comfort"][key] / c["comfort"][key], 2.0, places=7, msg=key)
+        self.assertAlmostEqual(d["comfort"]["absorbed_power_w"] / c["comfort"]["absorbed_power_w"],
+                               4.0, places=6)
+
+        r = self.tvd("terrain", "--out", self.path("x.csv"), status=INPUT_ERROR_STATUS)
+        self.assertIn("give --track NAME or --iso8608 CLASS", r.stderr)
+        r = self.tvd("terrain", "--iso8608", "Q", "--out", self.path("x.csv"),
+                     status=INPUT_ERROR_STATUS)
+        self.assertIn("road class A..H, got 'Q'", r.stderr)
+        # A built-in track written out and read back simulates like the built-in itself.
+        hill = self.path("hill.yaml")
+        self.tvd("terrain", "--track", "long_hill", "--out", hill)
+        a = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          hill, "--speed-kmh", "30", "--cache-dir", self.cache)
+        b = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          "long_hill", "--speed-kmh", "30", "--cache-dir", self.cache)
+        for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
+            self.assertAlmostEqual(a[key], b[key], places=9, msg=key)
+
     def test_frf_csv_columns_and_grid(self):
         out = self.path("frf.csv")
         d = self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",

@@ -1,0 +1,143 @@
+// `tvd terrain`: writes a terrain file that `tvd simulate --track FILE` (and the ROS node's track
+// player) read: one of the paper's built-in tracks, or an ISO 8608 random road (classes A-H,
+// seeded), which the paper does not use but ride engineers test on.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/terrain/iso8608.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+struct TerrainOptions {
+  std::string track;     // a built-in track ...
+  std::string iso_class; // ... or an ISO 8608 class A-H
+  double length = 200.0;
+  double width = terrain::kTrackWidth;
+  double spacing = 0.05;
+  std::uint64_t seed = 1;
+  bool independent_sides = false;
+  double taper = 5.0;
+  double min_frequency = terrain::Iso8608Options{}.min_frequency;
+  double max_frequency = terrain::Iso8608Options{}.max_frequency;
+  std::string out_file;
+  bool json = false;
+};
+
+// Root-mean-square height of every lateral line over the stations [first, last).
+double rmsHeight(const terrain::Terrain& t, Eigen::Index first, Eigen::Index last) {
+  const Matrix block = t.heights().middleCols(first, last - first);
+  return std::sqrt(block.squaredNorm() / static_cast<double>(block.size()));
+}
+
+void run(const TerrainOptions& opt) {
+  const std::string extension = std::filesystem::path(opt.out_file).extension().string();
+  if (extension != ".csv" && extension != ".yaml" && extension != ".yml")
+    throw InputError("terrain: --out must end in .csv, .yaml or .yml, got '" + opt.out_file + "'");
+
+  const bool iso = !opt.iso_class.empty();
+  char road_class = 0;
+  terrain::Iso8608Options iso_options;
+  terrain::Terrain t = [&] {
+    if (!iso) return terrain::makeTrack(opt.track);
+    if (opt.iso_class.size() != 1 || std::toupper(static_cast<unsigned char>(opt.iso_class[0])) < 'A' ||
+        std::toupper(static_cast<unsigned char>(opt.iso_class[0])) > 'H')
+      throw InputError("terrain: --iso8608 must be one road class A..H, got '" + opt.iso_class + "'");
+    road_class = static_cast<char>(std::toupper(static_cast<unsigned char>(opt.iso_class[0])));
+    iso_options.min_frequency = opt.min_frequency;
+    iso_options.max_frequency = opt.max_frequency;
+    iso_options.taper_length = opt.taper;
+    iso_options.correlation = opt.independent_sides ? terrain::LateralCorrelation::IndependentSides
+                                                    : terrain::LateralCorrelation::Uniform;
+    return terrain::makeIso8608(road_class, opt.length, opt.width, opt.spacing, opt.seed, iso_options);
+  }();
+  if (extension == ".csv")
+    terrain::saveTerrainCsv(t, opt.out_file);
+  else
+    terrain::saveTerrainYaml(t, opt.out_file);
+
+  const Eigen::Index n = t.stations().size();
+  // The ISO road is periodic over its length, its last station repeating the first: over one
+  // period, untapered, its variance is exactly that of the PSD over the generated band
+  // [max(n_min, 1/(2 L)), n_max] (iso8608.h).
+  const double rms = rmsHeight(t, 0, iso ? n - 1 : n);
+  double expected_rms = 0.0;
+  if (iso) {
+    const double n_low = std::max(opt.min_frequency, 0.5 / opt.length);
+    expected_rms = std::sqrt(terrain::iso8608Variance(road_class, n_low, opt.max_frequency));
+  }
+
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject().field("name", t.name()).field("out", opt.out_file);
+    if (iso)
+      json.field("iso8608_class", std::string(1, road_class))
+          .field("seed", static_cast<long long>(opt.seed))
+          .field("psd_at_n0_m3", terrain::iso8608ReferencePsd(road_class))
+          .field("band_cycles_per_m", std::vector<double>{opt.min_frequency, opt.max_frequency})
+          .field("taper_m", opt.taper)
+          .field("band_rms_height_m", expected_rms);
+    json.field("stations", static_cast<long long>(n))
+        .field("start_station_m", t.startStation())
+        .field("end_station_m", t.endStation())
+        .field("lateral_m", t.lateral())
+        .field("min_height_m", t.heights().minCoeff())
+        .field("max_height_m", t.heights().maxCoeff())
+        .field("rms_height_m", rms)
+        .endObject();
+    return;
+  }
+  std::cout << std::setprecision(4) << t.name() << ": " << n << " stations, " << t.startStation()
+            << " .. " << t.endStation() << " m, " << t.lateral().size() << " lateral lines; height "
+            << t.heights().minCoeff() << " .. " << t.heights().maxCoeff() << " m, r.m.s. " << rms << " m";
+  if (iso) std::cout << " (ISO 8608 class " << road_class << ": " << expected_rms << " m r.m.s. in the band, untapered)";
+  std::cout << "\n  wrote " << opt.out_file << "\n";
+}
+
+}  // namespace
+
+void registerTerrainCommand(CLI::App& app) {
+  auto opt = std::make_shared<TerrainOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "terrain", "Write a terrain file: a built-in track or an ISO 8608 random road (for simulate --track FILE)");
+  CLI::Option* track = cmd->add_option("--track", opt->track, "built-in track: long_hill | separated_waves | oop_waves")
+                           ->check(CLI::IsMember(terrain::trackNames()));
+  CLI::Option* iso = cmd->add_option("--iso8608", opt->iso_class, "random road of ISO 8608 class A..H instead");
+  track->excludes(iso);
+  cmd->add_option("--length", opt->length, "random road: length [m] (default 200)")->check(positiveNumber());
+  cmd->add_option("--width", opt->width, "random road: width [m] (default 5)")->check(positiveNumber());
+  cmd->add_option("--spacing", opt->spacing, "random road: station step [m] (default 0.05)")->check(positiveNumber());
+  cmd->add_option("--seed", opt->seed, "random road: seed of the phases (default 1)");
+  cmd->add_flag("--independent-sides", opt->independent_sides,
+                "random road: left and right halves independent (default: one profile across the width)");
+  cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m] (default 5)")
+      ->check(nonNegativeNumber());
+  cmd->add_option("--min-frequency", opt->min_frequency, "random road: lowest spatial frequency [cycles/m] (default 0.011)")
+      ->check(positiveNumber());
+  cmd->add_option("--max-frequency", opt->max_frequency, "random road: highest spatial frequency [cycles/m] (default 2.83)")
+      ->check(positiveNumber());
+  cmd->add_option("--out", opt->out_file, "terrain file to write (.csv or .yaml)")->required();
+  cmd->add_flag("--json", opt->json, "print a JSON summary");
+  cmd->callback([opt, track, iso]() {
+    if (track->count() == 0 && iso->count() == 0)
+      throw InputError("terrain: give --track NAME or --iso8608 CLASS");
+    run(*opt);
+  });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
