@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Plays the rosbag of a paper test track at a constant speed with --clock (1 kHz), writing it
-# first with tvd_make_bag when it is not there yet.
+# Plays the rosbag of a track at a constant speed with --clock (1 kHz), writing it first with
+# tvd_make_bag when it is not there yet (or, for a terrain file, older than the file).
 #   play_track_bag.sh TRACK SPEED_KMH BAG_DIR [rosbag play options...]
-# TRACK: long_hill | separated_waves | oop_waves. The bag is BAG_DIR/TRACK_SPEEDkmh.bag.
+# TRACK: long_hill | separated_waves | oop_waves | a terrain file (.csv/.yaml, e.g. from
+# `tvd terrain --iso8608 C`). The bag is BAG_DIR/NAME_SPEEDkmh.bag, NAME the track or file stem.
 # Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
 set -euo pipefail
 args=()
@@ -16,10 +17,12 @@ track=${args[0]:-long_hill}
 speed=${args[1]:-30}
 dir=${args[2]:-/tmp/tvd_bags}
 extra=("${args[@]:3}")
-bag="$dir/${track}_${speed}kmh.bag"
+name=$(basename "$track")
+name=${name%.*}
+bag="$dir/${name}_${speed}kmh.bag"
 mkdir -p "$dir"
-if [ ! -s "$bag" ]; then
-  tmp="$dir/.${track}_${speed}kmh.$$.bag"
+if [ ! -s "$bag" ] || { [ -f "$track" ] && [ "$track" -nt "$bag" ]; }; then
+  tmp="$dir/.${name}_${speed}kmh.$$.bag"
   # The devel/install space's executable (rosrun may see several build trees in the source).
   make_bag=$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics tvd_make_bag \
     2>/dev/null | head -n 1)

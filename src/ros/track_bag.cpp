@@ -1,7 +1,11 @@
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
@@ -11,6 +15,7 @@
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 namespace tracked_vehicle_dynamics {
@@ -38,14 +43,43 @@ void checkOptions(const TrackBagOptions& o) {
           o.start_time, "in (0, 4e9) s");
 }
 
+/// The run's terrain in the vehicle path frame: a built-in track (its own lateral offset unless
+/// one is given), or a terrain file (terrain_io.h) with its first station moved to station 0,
+/// where the vehicle starts, and its lateral lines shifted by the given centre-line position.
+terrain::Terrain runTerrain(const TrackBagOptions& options) {
+  const std::vector<std::string> names = terrain::trackNames();
+  if (std::find(names.begin(), names.end(), options.track) != names.end()) {
+    terrain::TrackOptions track_options;
+    track_options.lateral_offset = options.lateral_offset;
+    return terrain::makeTrack(options.track, track_options);
+  }
+  const std::string extension = std::filesystem::path(options.track).extension().string();
+  if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
+    std::string known;
+    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("track bag: track '" + options.track + "' is neither a built-in track (" + known +
+                     ") nor a terrain file (.csv, .yaml)");
+  }
+  const terrain::Terrain file = terrain::loadTerrain(options.track);
+  return terrain::Terrain(file.stations().array() - file.startStation(),
+                          file.lateral().array() - options.lateral_offset.value_or(0.0),
+                          file.heights(), file.name());
+}
+
+/// Station step of the patches: the terrain's own on a uniform grid, else its smallest one, so
+/// that no sample of the file falls between two of the bag's by more than that step.
+double patchSpacing(const terrain::Terrain& t) {
+  if (t.isUniform()) return t.spacing();
+  const Vector& x = t.stations();
+  return (x.tail(x.size() - 1) - x.head(x.size() - 1)).minCoeff();
+}
+
 }  // namespace
 
 TrackRun trackRun(const TrackBagOptions& options) {
   checkOptions(options);
-  terrain::TrackOptions track_options;
-  track_options.lateral_offset = options.lateral_offset;
-  const terrain::Terrain track = terrain::makeTrack(options.track, track_options);
-  const double spacing = track.spacing();
+  const terrain::Terrain track = runTerrain(options);
+  const double spacing = patchSpacing(track);
   TrackRun run;
   run.end_station = track.endStation() + options.behind;
   run.duration = run.end_station / options.speed;

@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
   std::string out;
   double speed_kmh = options.speed * 3.6;
   double lateral_offset = 0.0;
-  CLI::App app{"tvd_make_bag: rosbag of a paper test track at a constant speed"};
-  app.add_option("--track", options.track, "long_hill, separated_waves or oop_waves")
+  CLI::App app{"tvd_make_bag: rosbag of a paper test track or a terrain file at a constant speed"};
+  app.add_option("--track", options.track,
+                 "long_hill, separated_waves, oop_waves or a terrain file (.csv/.yaml, e.g. from tvd terrain)")
       ->capture_default_str();
   app.add_option("--speed-kmh", speed_kmh, "vehicle speed [km/h]")->capture_default_str();
   app.add_option("--out", out, "bag file to write")->required();

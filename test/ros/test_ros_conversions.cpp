@@ -14,7 +14,9 @@
 #include "tracked_vehicle_dynamics/ros/duration_statistics.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/terrain/iso8608.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 using namespace tracked_vehicle_dynamics;
@@ -208,6 +210,40 @@ TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
     for (double y : {-1.555, -1.245, 0.0, 1.245, 1.555}) {
       ASSERT_NEAR(buffer.height(x, y), track.height(x, y), 1e-12) << "x = " << x << ", y = " << y;
     }
+  }
+}
+
+// A terrain file (here an ISO 8608 road starting at station 12 m): the bag holds it with its
+// first station at 0 and its lines shifted by the centre-line position, on its own grid.
+TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
+  const terrain::Terrain road = terrain::makeIso8608('C', 40.0, 5.0, 0.05, 3);
+  const terrain::Terrain shifted(road.stations().array() + 12.0, road.lateral(), road.heights(), "road");
+  const std::string file = temporaryPath("road.csv");
+  terrain::saveTerrainCsv(shifted, file);
+  TrackBagOptions options;
+  options.track = file;
+  options.speed = 8.0;
+  options.lateral_offset = 0.4;
+  const TrackRun run = trackRun(options);
+  std::remove(file.c_str());
+  EXPECT_NEAR(run.end_station, 40.0 + options.behind, 1e-9);
+  terrain::TerrainBuffer buffer;
+  for (const TimedPatch& timed : run.patches) {
+    EXPECT_DOUBLE_EQ(timed.patch.spacing, 0.05);
+    buffer.addPatch(timed.patch.start_station, timed.patch.spacing, timed.patch.lateral,
+                    timed.patch.heights);
+  }
+  for (double x = 0.0; x < 40.0; x += 0.173)
+    for (double y : {-1.5, 0.0, 1.2})
+      ASSERT_NEAR(buffer.height(x, y), shifted.height(x + 12.0, y + 0.4), 1e-12) << x << ", " << y;
+
+  options.track = "moon_craters";
+  try {
+    trackRun(options);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("neither a built-in track (long_hill"), std::string::npos)
+        << e.what();
   }
 }
 

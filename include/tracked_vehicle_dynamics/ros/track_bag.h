@@ -1,6 +1,6 @@
-// Rosbags of the paper's test tracks (terrain/tracks.h) driven at a constant speed, as the node
-// consumes them online: terrain patches published ahead of the vehicle, the speed, and optionally
-// /clock. Replay with `rosbag play --clock` and use_sim_time (launch/replay_track.launch).
+// Rosbags of the paper's test tracks (terrain/tracks.h) or of terrain files driven at a constant
+// speed, as the node consumes them online: terrain patches published ahead of the vehicle, the
+// speed, and optionally /clock. Replay with `rosbag play --clock` and use_sim_time (launch/replay_track.launch).
 //
 // The run: the vehicle reference point starts at station 0 at bag time start_time and drives at
 // speed v until station s_end = track end + behind (the rear contacts have left the track), so it
@@ -24,14 +24,17 @@ namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 
 struct TrackBagOptions {
-  std::string track = "long_hill";  ///< long_hill, separated_waves or oop_waves
+  /// long_hill, separated_waves, oop_waves, or a terrain file (.csv/.yaml, terrain_io.h, e.g. from
+  /// `tvd terrain --iso8608 C`): its first station becomes station 0, where the vehicle starts.
+  std::string track = "long_hill";
   double speed = 30.0 / 3.6;        ///< [m/s], > 0
   double patch_length = 2.0;        ///< terrain per message [m]
   double lookahead = 10.0;          ///< terrain published ahead of the reference point [m]
   double behind = 5.0;              ///< terrain before station 0 and run-out after the track [m]
   double speed_rate = 50.0;         ///< speed messages [Hz]
   double clock_rate = 0.0;          ///< /clock messages in the bag [Hz]; 0: none
-  /// Vehicle centre line on the track, y_t [m]; unset: the track's default (terrain/tracks.h).
+  /// Vehicle centre line on the track, y_t [m]; unset: the track's default (terrain/tracks.h),
+  /// 0 for a terrain file.
   std::optional<double> lateral_offset;
   double start_time = 1000.0;  ///< bag time of the start [s] (> 0: time 0 means "no clock")
   std::string terrain_topic = "/terrain_profile";
