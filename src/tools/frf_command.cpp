@@ -106,19 +106,20 @@ void run(const FrfOptions& opt) {
   const std::vector<NamedColumn> columns = comfortOutputs(names);
 
   if (!opt.out_file.empty()) {
-    std::ofstream out(opt.out_file);
-    if (!out) throw InputError("cannot write " + opt.out_file);
-    out << "frequency_hz";
-    for (const NamedColumn& c : columns) out << "," << c.column << "_mag," << c.column << "_phase_deg";
-    out << "\n" << std::setprecision(10);
-    for (Eigen::Index i = 0; i < hz.size(); ++i) {
-      out << hz(i);
-      for (const NamedColumn& c : columns) {
-        const dynamics::Complex v = h(i, c.index);
-        out << "," << std::abs(v) << "," << std::arg(v) * kRadToDeg;
+    std::vector<std::string> headers = {"frequency_hz"};
+    Matrix table(hz.size(), 1 + 2 * columns.size());
+    table.col(0) = hz;
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+      headers.push_back(columns[c].column + "_mag");
+      headers.push_back(columns[c].column + "_phase_deg");
+      for (Eigen::Index i = 0; i < hz.size(); ++i) {
+        const dynamics::Complex v = h(i, columns[c].index);
+        table(i, 1 + 2 * c) = std::abs(v);
+        table(i, 2 + 2 * c) = std::arg(v) * kRadToDeg;
       }
-      out << "\n";
     }
+    writeTable(opt.out_file, headers, table, 10,
+               {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"model", opt.model}});
   }
 
   // Per output: the largest peak and every local maximum above 10 % of it (the resonances).
@@ -196,7 +197,8 @@ void registerFrfCommand(CLI::App& app) {
   cmd->add_option("--max-mode-hz", opt->max_mode_hz, "full model: dynamic modes up to this frequency [Hz] (default 100)")
       ->check(positiveNumber());
   cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
-  cmd->add_option("--out", opt->out_file, "CSV: frequency_hz, then <output>_mag and <output>_phase_deg");
+  cmd->add_option("--out", opt->out_file,
+                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and <output>_phase_deg");
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt]() { run(*opt); });
 }

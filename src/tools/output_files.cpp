@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <stdexcept>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
@@ -69,6 +70,31 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
   mat.writeStrings("dof_labels", labels);
   if (typed) mat.writeStrings("mode_types", mode_types);
   mat.close();
+}
+
+void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
+                int precision, const std::vector<std::pair<std::string, std::string>>& metadata) {
+  if (static_cast<Eigen::Index>(names.size()) != data.cols())
+    throw std::logic_error("writeTable: " + std::to_string(names.size()) + " names for " +
+                           std::to_string(data.cols()) + " columns");
+  const std::filesystem::path file(path);
+  if (file.extension() == ".mat") {
+    io::MatWriter mat(path);
+    for (const auto& [name, text] : metadata) mat.writeString(name, text);
+    for (std::size_t c = 0; c < names.size(); ++c) mat.writeMatrix(names[c], data.col(static_cast<Eigen::Index>(c)));
+    mat.close();
+    return;
+  }
+  auto out = openForWriting(file);
+  out << std::setprecision(precision);
+  for (std::size_t c = 0; c < names.size(); ++c) out << (c ? "," : "") << names[c];
+  out << "\n";
+  for (Eigen::Index k = 0; k < data.rows(); ++k) {
+    for (Eigen::Index j = 0; j < data.cols(); ++j) out << (j ? "," : "") << data(k, j);
+    out << "\n";
+  }
+  out.close();
+  if (!out) throw InputError("cannot write " + path);
 }
 
 std::string defaultCacheDir() {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -16,6 +17,13 @@ namespace tools {
 /// InputError if it cannot write.
 void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
                     const std::vector<std::string>& mode_types);
+
+/// Writes a table of named columns: MATLAB/Octave/SciPy .mat when `path` ends in ".mat" (one n x 1
+/// variable per column, named by its header, plus the `metadata` strings as char variables), CSV
+/// otherwise (a header row, then `precision` significant digits; metadata not written). Names
+/// must be valid MATLAB identifiers. Throws InputError naming the file when it cannot be written.
+void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
+                int precision, const std::vector<std::pair<std::string, std::string>>& metadata = {});
 
 /// Where reduced models are cached: $XDG_CACHE_HOME/tracked_vehicle_dynamics, else
 /// ~/.cache/tracked_vehicle_dynamics, else /tmp/tracked_vehicle_dynamics.

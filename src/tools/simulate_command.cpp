@@ -258,15 +258,13 @@ void run(const SimulateOptions& opt) {
                        : series.middleCols(kFirstColumn + first_wheel, wheel_count).cwiseAbs().maxCoeff();
 
   if (!opt.out_file.empty()) {
-    std::ofstream out(opt.out_file);
-    if (!out) throw InputError("cannot write " + opt.out_file);
-    out << "time_s,station_m";
-    for (const Column& col : columns) out << "," << col.header;
-    out << "\n" << std::setprecision(9);
-    for (Eigen::Index k = 0; k < series.rows(); ++k) {
-      for (Eigen::Index j = 0; j < series.cols(); ++j) out << (j ? "," : "") << series(k, j);
-      out << "\n";
-    }
+    std::vector<std::string> headers = {"time_s", "station_m"};
+    for (const Column& col : columns) headers.push_back(col.header);
+    writeTable(opt.out_file, headers, series, 9,
+               {{"vehicle", opt.vehicle_file},
+                {"variant", vehicle::variantName(variant)},
+                {"track", track.name()},
+                {"model", full ? "full" : "reduced"}});
   }
   if (opt.json) {
     io::JsonWriter json(std::cout);
@@ -370,7 +368,7 @@ void registerSimulateCommand(CLI::App& app) {
                   "100 Hz, plus static residual: the reference)")
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
-  cmd->add_option("--out", opt->out_file, "time series CSV");
+  cmd->add_option("--out", opt->out_file, "time series: CSV, or .mat (one variable per column)");
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt]() { run(*opt); });
 }

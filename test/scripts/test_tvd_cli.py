@@ -325,6 +325,25 @@ class TvdCliTest(unittest.TestCase):
         for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
             self.assertAlmostEqual(a[key], b[key], places=9, msg=key)
 
+    def test_mat_outputs_hold_the_csv_columns(self):
+        """--out FILE.mat (simulate, frf): one n x 1 variable per CSV column, the same values
+        (to the CSV's digits), and the run's vehicle/variant/model as strings."""
+        for command, extra, digits in (("simulate", ("--track", "separated_waves", "--speed-kmh", "20"), 9),
+                                       ("frf", ("--speed-kmh", "30"), 10)):
+            args = (command, "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
+                    self.cache, *extra)
+            csv_file, mat_file = self.path(command + ".csv"), self.path(command + ".mat")
+            self.tvd(*args, "--out", csv_file)
+            self.tvd(*args, "--out", mat_file)
+            header, rows = read_csv(csv_file)
+            m = scipy.io.loadmat(mat_file)
+            self.assertEqual(str(m["variant"][0]), "untracked")
+            self.assertEqual(str(m["vehicle"][0]), VEHICLE)
+            for i, name in enumerate(header):
+                self.assertEqual(m[name].shape, (len(rows), 1), name)
+                np.testing.assert_allclose(m[name][:, 0], rows[:, i], rtol=10.0 ** (1 - digits),
+                                           atol=1e-300, err_msg=f"{command} {name}")
+
     def test_frf_csv_columns_and_grid(self):
         out = self.path("frf.csv")
         d = self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
