@@ -28,19 +28,6 @@ Vector significantSquaredNorms(const Matrix& phi) {
   return norms;
 }
 
-// Groups of consecutive modes (ascending f) closer than relative_gap: [begin, end) ranges.
-std::vector<std::pair<Eigen::Index, Eigen::Index>> degenerateGroups(const Vector& f,
-                                                                     double relative_gap) {
-  std::vector<std::pair<Eigen::Index, Eigen::Index>> groups;
-  for (Eigen::Index i = 0; i < f.size(); ++i) {
-    if (i > 0 && std::abs(f(i) - f(i - 1)) <= relative_gap * std::max(std::abs(f(i)), std::abs(f(i - 1))))
-      groups.back().second = i + 1;
-    else
-      groups.emplace_back(i, i + 1);
-  }
-  return groups;
-}
-
 // Orthonormal basis of the significant part of the columns' span (singular values above
 // kNegligibleShape times the largest column norm of the whole set).
 Matrix orthonormalBasis(const Matrix& columns, double set_norm) {
@@ -52,6 +39,17 @@ Matrix orthonormalBasis(const Matrix& columns, double set_norm) {
 }
 
 }  // namespace
+
+std::vector<std::pair<Eigen::Index, Eigen::Index>> degenerateGroups(const Vector& f, double relative_gap) {
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> groups;
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    if (i > 0 && std::abs(f(i) - f(i - 1)) <= relative_gap * std::max(std::abs(f(i)), std::abs(f(i - 1))))
+      groups.back().second = i + 1;
+    else
+      groups.emplace_back(i, i + 1);
+  }
+  return groups;
+}
 
 Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b, const Vector& f_b,
                      double relative_gap) {

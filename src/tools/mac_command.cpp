@@ -26,9 +26,11 @@ struct MacOptions {
   std::string out_dir;
 };
 
-// One row of the correlation table: an un-tracked hull or wheel mode and its tracked partners.
+// One row of the correlation table: an un-tracked hull or wheel mode (or a group of modes of one
+// repeated frequency) and its tracked partners.
 struct CorrelationRow {
-  int untracked_mode = 0;  // 0-based
+  int untracked_mode = 0;  // 0-based, the group's first
+  int multiplicity = 1;    // modes in the group
   reduction::ModeCorrelation correlation;
 };
 
@@ -38,23 +40,32 @@ void run(const MacOptions& opt) {
   const VehicleAnalysis tv = analyseVehicle(description, vehicle::Variant::Tracked, opt.count);
   // MAC on the translations of the nodes both variants share (rotations ignored, paper §3.1.1).
   const std::vector<fem::DofRef> common = vehicle::commonTranslationalDofs(uv.vehicle, tv.vehicle);
-  const Matrix mac = reduction::mac(vehicle::physicalShapes(uv.system, common, uv.modes.shapes),
-                                    vehicle::physicalShapes(tv.system, common, tv.modes.shapes));
+  const Matrix uv_shapes = vehicle::physicalShapes(uv.system, common, uv.modes.shapes);
+  const Matrix tv_shapes = vehicle::physicalShapes(tv.system, common, tv.modes.shapes);
+  // Fig. 9: the MAC of eq. (11) between single modes.
+  const Matrix mac = reduction::mac(uv_shapes, tv_shapes);
+  // Table 4, as the reduction's mode selection sees it: between eigenspaces, since which vectors
+  // of a repeated frequency (the un-tracked wheels bouncing alone) the solver returns, and so
+  // their single-mode MACs, is round-off (mac.h).
+  const Matrix space_mac = reduction::eigenspaceMac(uv_shapes, uv.modes.frequencies_hz, tv_shapes,
+                                                    tv.modes.frequencies_hz);
   const std::vector<reduction::ModeCorrelation> correlations =
-      reduction::correlateModes(mac, opt.threshold);
+      reduction::correlateModes(space_mac, opt.threshold);
 
-  // Table 4 lists the un-tracked hull and wheel-bounce modes of the band.
+  // Table 4 lists the un-tracked hull and wheel-bounce modes of the band, one row per eigenspace.
   std::vector<CorrelationRow> rows;
-  for (int i = 0; i < uv.modes.count(); ++i) {
+  for (const auto& [first, end] : reduction::degenerateGroups(uv.modes.frequencies_hz)) {
+    const int i = static_cast<int>(first);
     if (uv.modes.frequencies_hz(i) > opt.band_hz) break;
     if (uv.classes[i].kind == vehicle::ModeKind::TrackLocal) continue;
-    rows.push_back({i, correlations[i]});
+    rows.push_back({i, static_cast<int>(end - first), correlations[i]});
   }
 
   if (!opt.out_dir.empty()) {
     makeOutputDirectory(opt.out_dir);
     io::MatWriter mat(opt.out_dir + "/mac.mat");
     mat.writeMatrix("mac", mac);
+    mat.writeMatrix("eigenspace_mac", space_mac);
     mat.writeMatrix("untracked_frequencies_hz", uv.modes.frequencies_hz);
     mat.writeMatrix("tracked_frequencies_hz", tv.modes.frequencies_hz);
     std::vector<std::string> uv_types, tv_types;
@@ -85,11 +96,13 @@ void run(const MacOptions& opt) {
         .field("untracked_frequencies_hz", uv.modes.frequencies_hz)
         .field("tracked_frequencies_hz", tv.modes.frequencies_hz)
         .field("mac", mac)
+        .field("eigenspace_mac", space_mac)
         .key("correlation")
         .beginArray();
     for (const CorrelationRow& r : rows) {
       json.beginObject()
           .field("untracked_mode", r.untracked_mode + 1)
+          .field("multiplicity", r.multiplicity)
           .field("untracked_hz", uv.modes.frequencies_hz(r.untracked_mode))
           .field("type", uv.classes[r.untracked_mode].label)
           .field("tracked_mode", r.correlation.best_match + 1)
@@ -114,13 +127,22 @@ void run(const MacOptions& opt) {
             << tv.system.size() << " DOFs) models on " << common.size()
             << " common translational DOFs; first " << opt.count << " modes.\n\n"
             << "correlation (like Table 4): un-tracked hull and wheel modes up to " << opt.band_hz
-            << " Hz; best tracked match, then (other matches with MAC >= " << opt.threshold << ")\n\n";
+            << " Hz (modes of one repeated frequency as one row, compared as an eigenspace); best "
+               "tracked match, then (other matches with MAC >= "
+            << opt.threshold << ")\n\n";
   std::cout << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
   for (const CorrelationRow& r : rows) {
     const int best = r.correlation.best_match;
-    std::cout << std::setw(9) << r.untracked_mode + 1 << std::setw(11) << std::fixed
+    const std::string modes =
+        r.multiplicity == 1 ? std::to_string(r.untracked_mode + 1)
+                            : std::to_string(r.untracked_mode + 1) + "-" +
+                                  std::to_string(r.untracked_mode + r.multiplicity);
+    std::cout << std::setw(9) << modes << std::setw(11) << std::fixed
               << std::setprecision(2) << uv.modes.frequencies_hz(r.untracked_mode) << "  "
-              << std::left << std::setw(26) << uv.classes[r.untracked_mode].label << std::right
+              << std::left << std::setw(26)
+              << (r.multiplicity == 1 ? uv.classes[r.untracked_mode].label
+                                      : uv.classes[r.untracked_mode].label + " x" + std::to_string(r.multiplicity))
+              << std::right
               << std::setw(7) << best + 1 << std::setw(11) << tv.modes.frequencies_hz(best)
               << std::setw(6) << std::setprecision(2) << r.correlation.best_mac << "   ";
     for (const auto& m : r.correlation.matches)

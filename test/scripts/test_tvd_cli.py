@@ -344,6 +344,39 @@ class TvdCliTest(unittest.TestCase):
                 np.testing.assert_allclose(m[name][:, 0], rows[:, i], rtol=10.0 ** (1 - digits),
                                            atol=1e-300, err_msg=f"{command} {name}")
 
+    def test_mac_correlation_between_eigenspaces(self):
+        """tvd mac: the correlation table compares eigenspaces (one row per repeated frequency,
+        the un-tracked wheels bouncing alone); the eigenspace MAC is at least the plain MAC of
+        eq. (11) everywhere and equal to it between single modes; each row's partner is its
+        row's maximum."""
+        d = self.tvd_json("mac", "--vehicle", VEHICLE, "--count", "40")
+        plain, space = np.array(d["mac"]), np.array(d["eigenspace_mac"])
+        self.assertEqual(plain.shape, (40, 40))
+        self.assertTrue(np.all(space >= plain - 1e-12))
+        f_uv, f_tv = np.array(d["untracked_frequencies_hz"]), np.array(d["tracked_frequencies_hz"])
+
+        def single(f, i):
+            return all(abs(f[j] - f[i]) > 1e-6 * f[i] for j in (i - 1, i + 1) if 0 <= j < len(f))
+
+        for i in range(40):
+            for j in range(40):
+                if single(f_uv, i) and single(f_tv, j):
+                    self.assertAlmostEqual(space[i, j], plain[i, j], places=9)
+        rows = d["correlation"]
+        wheels = [r for r in rows if r["multiplicity"] > 1]
+        self.assertEqual(len(wheels), 1)  # the 11 wheels bouncing alone at one frequency
+        self.assertEqual(wheels[0]["multiplicity"], 11)
+        first = wheels[0]["untracked_mode"] - 1
+        np.testing.assert_array_equal(space[first:first + 11], np.tile(space[first], (11, 1)))
+        for r in rows:
+            i, j = r["untracked_mode"] - 1, r["tracked_mode"] - 1
+            self.assertAlmostEqual(r["mac"], space[i].max(), places=9)
+            self.assertAlmostEqual(space[i, j], space[i].max(), places=12)
+        # The roll mode pairs with the tracked roll (Table 4: 6.73 -> 13.7 Hz).
+        roll = next(r for r in rows if r["type"] == "roll")
+        self.assertEqual(roll["tracked_type"], "roll")
+        self.assertGreater(roll["mac"], 0.9)
+
     def test_frf_csv_columns_and_grid(self):
         out = self.path("frf.csv")
         d = self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",

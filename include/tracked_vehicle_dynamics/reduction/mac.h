@@ -2,6 +2,7 @@
 // (paper §3.1.1, Fig. 9-10, Table 4).
 #pragma once
 
+#include <utility>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/types.h"
@@ -44,6 +45,11 @@ constexpr double kDegenerateRelativeGap = 1e-6;
 /// Throws InputError like mac(), or when a frequency vector does not have one entry per shape.
 Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b, const Vector& f_b,
                      double relative_gap = kDegenerateRelativeGap);
+
+/// The groups eigenspaceMac() forms: consecutive modes (frequencies ascending) whose neighbours lie
+/// within relative_gap, as [begin, end) index ranges covering every mode.
+std::vector<std::pair<Eigen::Index, Eigen::Index>> degenerateGroups(
+    const Vector& frequencies_hz, double relative_gap = kDegenerateRelativeGap);
 
 /// One mode of A with its matches among the modes of B.
 struct ModeMatch {
