@@ -13,8 +13,10 @@
 #include <vector>
 
 #include "commands.h"
+#include "drive.h"
 #include "output_files.h"
 #include "point_comfort.h"
+#include "simulation_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
@@ -33,7 +35,6 @@ namespace tools {
 
 namespace {
 
-constexpr double kRadToDeg = 57.29577951308232;
 using Clock = std::chrono::steady_clock;
 
 struct SimulateOptions {
@@ -51,13 +52,6 @@ struct SimulateOptions {
   std::string out_file;
   bool json = false;
 };
-
-
-DofIndex rowOf(const std::vector<std::string>& names, const std::string& name) {
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw InputError("simulate: the reduced model has no output '" + name + "'");
-  return static_cast<DofIndex>(it - names.begin());
-}
 
 
 void run(const SimulateOptions& opt) {
@@ -112,101 +106,29 @@ void run(const SimulateOptions& opt) {
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
-  const double speed = opt.speed_kmh / 3.6;
   // From the start of the track until the station has covered its length (paper: 30 m), or until
   // the speed profile ends.
   const double distance = track.endStation() - track.startStation();
-  long steps = 0;
-  if (profile) {
-    const auto last = static_cast<long>(std::floor(profile->endTime() / opt.dt * (1 + 1e-12)));
-    if (last < 1)
-      throw InputError(opt.speed_profile + ": the profile lasts " + std::to_string(profile->endTime()) +
-                       " s, less than one time step");
-    steps = last;
-    for (long k = 1; k <= last; ++k)
-      if (profile->station(k * opt.dt) >= distance) {
-        steps = k;
-        break;
-      }
-  } else {
-    steps = static_cast<long>(std::ceil(distance / speed / opt.dt));
-  }
-  // Station and speed of sample k.
-  auto stationAt = [&](long k) {
-    return track.startStation() + (profile ? profile->station(k * opt.dt) : speed * k * opt.dt);
-  };
-  // The dense input series of samples first .. first + count - 1 (every input at every sample).
-  auto denseInputs = [&](long first, long count) {
-    if (!profile) return road.sampleSeries(lines, track.startStation(), speed, opt.dt, first, count);
-    Vector stations(count), speeds(count);
-    for (long j = 0; j < count; ++j) {
-      stations(j) = stationAt(first + j);
-      speeds(j) = profile->speed((first + j) * opt.dt);
-    }
-    return road.sampleSeries(lines, stations, speeds);
-  };
+  const Drive drive = profile ? Drive(track.startStation(), distance, opt.dt, *profile, opt.speed_profile)
+                              : Drive(track.startStation(), distance, opt.dt, opt.speed_kmh / 3.6);
+  const long steps = drive.steps();
   // Start from static equilibrium on the entry of the track, at rest relative to it.
-  const Vector w0 = denseInputs(0, 1).row(0).transpose();
+  const Vector w0 = drive.denseInputs(road, lines, 0, 1).row(0).transpose();
   sim.reset(dynamics::staticEquilibrium(sys, w0.head(road.inputCount()), gravity), w0);
 
-  // The CSV's columns after time and station: one simulator output row each, scaled to the unit
-  // in its name; displacements and angles relative to the initial static equilibrium.
-  const auto& names = sim.outputNames();
-  struct Column {
-    std::string header;
-    DofIndex row;
-    double scale;
-    bool relative;
-  };
-  std::vector<Column> columns;
-  auto add = [&](std::string header, const std::string& output, double scale = 1.0) {
-    const bool relative = output.size() > 5 && output.compare(output.size() - 5, 5, "/disp") == 0;
-    columns.push_back({std::move(header), rowOf(names, output), scale, relative});
-  };
-  // The first four as before this layout grew (scripts find columns by name, people by place).
-  add("hull_heave_m", "hull uz/disp");
-  add("hull_vertical_accel_m_s2", "hull uz/acc");
-  add("hull_pitch_deg", "hull ry/disp", kRadToDeg);
-  add("hull_roll_deg", "hull rx/disp", kRadToDeg);
-  add("hull_heave_rate_m_s", "hull uz/vel");
-  add("hull_pitch_rate_deg_s", "hull ry/vel", kRadToDeg);
-  add("hull_roll_rate_deg_s", "hull rx/vel", kRadToDeg);
-  add("hull_pitch_accel_deg_s2", "hull ry/acc", kRadToDeg);
-  add("hull_roll_accel_deg_s2", "hull rx/acc", kRadToDeg);
-  add("hull_longitudinal_accel_m_s2", "hull ux/acc");
-  add("hull_lateral_accel_m_s2", "hull uy/acc");
-  const std::size_t first_wheel = columns.size();
-  for (const std::string& n : sys.output_names)
-    if (n.rfind("road_wheel", 0) == 0) add(n.substr(0, n.find(' ')) + "_m", n + "/disp");
-  const std::size_t wheel_count = columns.size() - first_wheel;
-  // Named points of the hull (crew seat, sensor mount, ...): every output "<point> uz" that is
-  // neither the hull's CoG nor a wheel centre.
-  std::vector<std::string> points;
-  for (const std::string& n : sys.output_names) {
-    const std::string point = n.substr(0, n.rfind(' '));
-    if (n.size() > 3 && n.compare(n.size() - 3, 3, " uz") == 0 && point != "hull" &&
-        point.rfind("road_wheel", 0) != 0)
-      points.push_back(point);
-  }
-  for (const std::string& point : points) {
-    add(point + "_vertical_m", point + " uz/disp");
-    add(point + "_accel_x_m_s2", point + " ux/acc");
-    add(point + "_accel_y_m_s2", point + " uy/acc");
-    add(point + "_accel_z_m_s2", point + " uz/acc");
-  }
-
+  const std::vector<std::string>& names = sim.outputNames();
+  const SimulationLayout layout = simulationLayout(names, sys.output_names);
   // Ride comfort at the hull's CoG and at every named point: ISO 2631-1 Wk and absorbed power
   // vertically, Wd in x and y.
+  std::vector<std::string> comfort_points = {"hull"};
+  comfort_points.insert(comfort_points.end(), layout.points.begin(), layout.points.end());
   std::vector<PointComfort> comfort;
-  auto addPoint = [&](const std::string& point) {
-    comfort.emplace_back(point, rowOf(names, point + " ux/acc"), rowOf(names, point + " uy/acc"),
-                         rowOf(names, point + " uz/acc"), opt.dt);
-  };
-  addPoint("hull");
-  for (const std::string& point : points) addPoint(point);
+  for (const std::string& point : comfort_points)
+    comfort.emplace_back(point, outputRow(names, point + " ux/acc"), outputRow(names, point + " uy/acc"),
+                         outputRow(names, point + " uz/acc"), opt.dt);
 
   constexpr int kFirstColumn = 2;  // after time and station
-  Matrix series(steps + 1, kFirstColumn + columns.size());
+  Matrix series(steps + 1, kFirstColumn + layout.columns.size());
   Vector y0;
   // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
   // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
@@ -217,24 +139,23 @@ void run(const SimulateOptions& opt) {
   constexpr long kBlock = 16384;
   const auto start = Clock::now();
   for (long first = 0; first == 0 || first < steps; first += kBlock) {
-    const long last = std::min(first + kBlock, steps);
-    const long count = last - first + 1;
+    const long count = std::min(first + kBlock, steps) - first + 1;
     Matrix y;
     if (full || profile) {
-      const Matrix w = denseInputs(first, count);
+      const Matrix w = drive.denseInputs(road, lines, first, count);
       y = sim.simulate(w);
       // The full model adds its static residual to the displacements (rows 0..n_y-1).
       if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
     } else {
-      y = sim.simulate(road.sampleHeldSeries(lines, track.startStation(), speed, opt.dt, first, count));
+      y = sim.simulate(drive.heldInputs(road, lines, first, count));
     }
     if (first == 0) y0 = y.row(0).transpose();
     for (long j = first == 0 ? 0 : 1; j < y.rows(); ++j) {
       const long k = first + j;
       series(k, 0) = k * opt.dt;
-      series(k, 1) = stationAt(k);
-      for (std::size_t c = 0; c < columns.size(); ++c) {
-        const Column& col = columns[c];
+      series(k, 1) = drive.station(k);
+      for (std::size_t c = 0; c < layout.columns.size(); ++c) {
+        const SimulationColumn& col = layout.columns[c];
         series(k, kFirstColumn + c) = col.scale * (y(j, col.row) - (col.relative ? y0(col.row) : 0.0));
       }
       for (PointComfort& c : comfort) c.add(y.row(j));
@@ -245,21 +166,20 @@ void run(const SimulateOptions& opt) {
   const double travelled = series(steps, 1) - track.startStation();
 
   auto peak = [&](const std::string& header) {
-    for (std::size_t c = 0; c < columns.size(); ++c)
-      if (columns[c].header == header) return series.col(kFirstColumn + c).cwiseAbs().maxCoeff();
-    throw std::logic_error("simulate: no column " + header);
+    return series.col(kFirstColumn + layout.column(header)).cwiseAbs().maxCoeff();
   };
   const double peak_heave = peak("hull_heave_m");
   const double peak_accel = peak("hull_vertical_accel_m_s2");
   const double peak_pitch = peak("hull_pitch_deg");
   const double peak_roll = peak("hull_roll_deg");
   const double peak_wheel =
-      wheel_count == 0 ? 0.0
-                       : series.middleCols(kFirstColumn + first_wheel, wheel_count).cwiseAbs().maxCoeff();
+      layout.wheel_count == 0
+          ? 0.0
+          : series.middleCols(kFirstColumn + layout.first_wheel, layout.wheel_count).cwiseAbs().maxCoeff();
 
   if (!opt.out_file.empty()) {
     std::vector<std::string> headers = {"time_s", "station_m"};
-    for (const Column& col : columns) headers.push_back(col.header);
+    for (const SimulationColumn& col : layout.columns) headers.push_back(col.header);
     writeTable(opt.out_file, headers, series, 9,
                {{"vehicle", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
@@ -298,7 +218,7 @@ void run(const SimulateOptions& opt) {
         .field("peak_pitch_accel_deg_s2", peak("hull_pitch_accel_deg_s2"))
         .field("peak_roll_accel_deg_s2", peak("hull_roll_accel_deg_s2"));
     json.key("peaks_at_points").beginArray();
-    for (const std::string& point : points)
+    for (const std::string& point : layout.points)
       json.beginObject()
           .field("point", point)
           .field("peak_vertical_displacement_m", peak(point + "_vertical_m"))
@@ -331,7 +251,7 @@ void run(const SimulateOptions& opt) {
             << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
             << "  peak road-wheel displacement " << peak_wheel << " m\n";
-  for (const std::string& point : points)
+  for (const std::string& point : layout.points)
     std::cout << "  peak at " << point << ": vertical displacement " << peak(point + "_vertical_m")
               << " m, vertical acceleration " << peak(point + "_accel_z_m_s2") << " m/s^2\n";
   std::cout << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "

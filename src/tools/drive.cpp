@@ -1,0 +1,55 @@
+#include "drive.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+Drive::Drive(double start, double distance, double dt, double speed)
+    : start_(start), dt_(dt), speed_(speed), steps_(static_cast<long>(std::ceil(distance / speed / dt))) {}
+
+Drive::Drive(double start, double distance, double dt, dynamics::SpeedProfile profile,
+             const std::string& profile_name)
+    : start_(start), dt_(dt), profile_(std::move(profile)) {
+  const auto last = static_cast<long>(std::floor(profile_->endTime() / dt * (1 + 1e-12)));
+  if (last < 1)
+    throw InputError(profile_name + ": the profile lasts " + std::to_string(profile_->endTime()) +
+                     " s, less than one time step");
+  // The first sample at or past the track's end, else the profile's last.
+  steps_ = last;
+  for (long k = 1; k <= last; ++k)
+    if (profile_->station(k * dt) >= distance) {
+      steps_ = k;
+      break;
+    }
+}
+
+double Drive::station(long k) const {
+  return start_ + (profile_ ? profile_->station(k * dt_) : speed_ * k * dt_);
+}
+
+double Drive::speed(long k) const { return profile_ ? profile_->speed(k * dt_) : speed_; }
+
+Matrix Drive::denseInputs(const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
+                          long first, long count) const {
+  if (!profile_) return road.sampleSeries(lines, start_, speed_, dt_, first, count);
+  Vector stations(count), speeds(count);
+  for (long j = 0; j < count; ++j) {
+    stations(j) = station(first + j);
+    speeds(j) = speed(first + j);
+  }
+  return road.sampleSeries(lines, stations, speeds);
+}
+
+dynamics::HeldInputSeries Drive::heldInputs(const dynamics::RoadExcitation& road,
+                                            const terrain::TerrainLines& lines, long first,
+                                            long count) const {
+  if (profile_) throw std::logic_error("Drive::heldInputs: constant speed only");
+  return road.sampleHeldSeries(lines, start_, speed_, dt_, first, count);
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

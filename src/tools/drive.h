@@ -1,0 +1,51 @@
+// How the vehicle advances in a `tvd simulate` run: from the start of the track at a constant
+// speed or along a speed profile (speed_profile.h), sample k at time k dt, until the station has
+// covered the track (or the profile ends first).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
+#include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+class Drive {
+ public:
+  /// Constant speed [m/s] > 0 from station `start` [m] over `distance` [m], time step dt [s].
+  Drive(double start, double distance, double dt, double speed);
+  /// Along `profile` (named `profile_name` in errors). Throws InputError when the profile lasts
+  /// less than one time step.
+  Drive(double start, double distance, double dt, dynamics::SpeedProfile profile,
+        const std::string& profile_name);
+
+  /// Steps of the run: the samples are 0 .. steps().
+  long steps() const { return steps_; }
+  double timeStep() const { return dt_; }
+  /// Station of sample k [m].
+  double station(long k) const;
+  /// Speed at sample k [m/s].
+  double speed(long k) const;
+  /// The profile, or nullptr at constant speed.
+  const dynamics::SpeedProfile* profile() const { return profile_ ? &*profile_ : nullptr; }
+
+  /// The road inputs of samples first .. first + count - 1, every input at every sample.
+  Matrix denseInputs(const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
+                     long first, long count) const;
+  /// The same series stored by its changes (RoadExcitation::sampleHeldSeries); constant speed
+  /// only (at a varying speed a flat run is not a fixed number of steps).
+  dynamics::HeldInputSeries heldInputs(const dynamics::RoadExcitation& road,
+                                       const terrain::TerrainLines& lines, long first, long count) const;
+
+ private:
+  double start_, dt_, speed_ = 0.0;
+  std::optional<dynamics::SpeedProfile> profile_;
+  long steps_ = 0;
+};
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,69 @@
+#include "simulation_layout.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+constexpr double kRadToDeg = 57.29577951308232;
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+}  // namespace
+
+DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name) {
+  const auto it = std::find(simulator_rows.begin(), simulator_rows.end(), name);
+  if (it == simulator_rows.end()) throw InputError("simulate: the model has no output '" + name + "'");
+  return static_cast<DofIndex>(it - simulator_rows.begin());
+}
+
+std::size_t SimulationLayout::column(const std::string& header) const {
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c].header == header) return c;
+  throw std::logic_error("simulate: no column " + header);
+}
+
+SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows,
+                                  const std::vector<std::string>& system_outputs) {
+  SimulationLayout layout;
+  auto add = [&](std::string header, const std::string& output, double scale = 1.0) {
+    layout.columns.push_back(
+        {std::move(header), outputRow(simulator_rows, output), scale, endsWith(output, "/disp")});
+  };
+  add("hull_heave_m", "hull uz/disp");
+  add("hull_vertical_accel_m_s2", "hull uz/acc");
+  add("hull_pitch_deg", "hull ry/disp", kRadToDeg);
+  add("hull_roll_deg", "hull rx/disp", kRadToDeg);
+  add("hull_heave_rate_m_s", "hull uz/vel");
+  add("hull_pitch_rate_deg_s", "hull ry/vel", kRadToDeg);
+  add("hull_roll_rate_deg_s", "hull rx/vel", kRadToDeg);
+  add("hull_pitch_accel_deg_s2", "hull ry/acc", kRadToDeg);
+  add("hull_roll_accel_deg_s2", "hull rx/acc", kRadToDeg);
+  add("hull_longitudinal_accel_m_s2", "hull ux/acc");
+  add("hull_lateral_accel_m_s2", "hull uy/acc");
+  layout.first_wheel = layout.columns.size();
+  for (const std::string& n : system_outputs)
+    if (n.rfind("road_wheel", 0) == 0) add(n.substr(0, n.find(' ')) + "_m", n + "/disp");
+  layout.wheel_count = layout.columns.size() - layout.first_wheel;
+  // Every output "<point> uz" that is neither the hull's CoG nor a wheel centre.
+  for (const std::string& n : system_outputs) {
+    const std::string point = n.substr(0, n.rfind(' '));
+    if (endsWith(n, " uz") && point != "hull" && point.rfind("road_wheel", 0) != 0)
+      layout.points.push_back(point);
+  }
+  for (const std::string& point : layout.points) {
+    add(point + "_vertical_m", point + " uz/disp");
+    add(point + "_accel_x_m_s2", point + " ux/acc");
+    add(point + "_accel_y_m_s2", point + " uy/acc");
+    add(point + "_accel_z_m_s2", point + " uz/acc");
+  }
+  return layout;
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,44 @@
+// The columns `tvd simulate` writes after time and station: each one row of the simulator's
+// stacked outputs (output_layout.h), scaled to the unit in its header.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+struct SimulationColumn {
+  std::string header;  ///< e.g. "hull_pitch_deg"
+  DofIndex row = 0;    ///< row of the simulator's outputs
+  double scale = 1.0;  ///< to the header's unit (rad -> deg)
+  bool relative = false;  ///< a displacement: reported from the initial static equilibrium
+};
+
+struct SimulationLayout {
+  std::vector<SimulationColumn> columns;
+  std::size_t first_wheel = 0;      ///< first road-wheel column
+  std::size_t wheel_count = 0;      ///< road-wheel columns
+  std::vector<std::string> points;  ///< named points of the hull (crew seat, sensor mount, ...)
+
+  /// Index of the column named `header` in `columns`; throws std::logic_error when absent.
+  std::size_t column(const std::string& header) const;
+};
+
+/// Hull heave, vertical acceleration, pitch and roll (the first four, in this order: scripts find
+/// columns by name, people by place), the hull's rates and angular and horizontal accelerations,
+/// every road-wheel displacement, then per named point its vertical displacement and its
+/// accelerations in x, y, z. `simulator_rows`: Simulator::outputNames() ("hull uz/disp", ...);
+/// `system_outputs`: the system's output names ("hull uz", "road_wheel_left_1 uz",
+/// "crew_seat ux", ...). Throws InputError naming an output the model lacks.
+SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows,
+                                  const std::vector<std::string>& system_outputs);
+
+/// Row of `name` in `simulator_rows`; throws InputError naming it when absent.
+DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
