@@ -8,6 +8,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -106,6 +107,20 @@ void run(const SimulateOptions& opt) {
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
+  // Contacts beyond the terrain's outermost lines take the edge line's heights (terrain.h): say
+  // so, since a terrain narrower than the vehicle is more often a mistake than a choice.
+  std::vector<std::string> warnings;
+  if (track.lateral().size() > 1) {
+    const double y_min = road.inputY().minCoeff(), y_max = road.inputY().maxCoeff();
+    const double t_min = track.lateral()(0), t_max = track.lateral()(track.lateral().size() - 1);
+    if (y_min < t_min - 1e-9 || y_max > t_max + 1e-9) {
+      std::ostringstream w;
+      w << "the contacts span y = " << y_min << " .. " << y_max << " m but the terrain's lines only "
+        << t_min << " .. " << t_max << " m; contacts outside take the edge line's heights";
+      warnings.push_back(w.str());
+      std::cerr << "tvd: warning: " << warnings.back() << "\n";
+    }
+  }
   // From the start of the track until the station has covered its length (paper: 30 m), or until
   // the speed profile ends.
   const double distance = track.endStation() - track.startStation();
@@ -199,7 +214,7 @@ void run(const SimulateOptions& opt) {
     } else {
       json.field("speed_kmh", opt.speed_kmh);
     }
-    json.field("travelled_m", travelled)
+    json.field("warnings", warnings).field("travelled_m", travelled)
         .field("time_step_s", opt.dt)
         .field("model", full ? "full" : "reduced")
         .field(full ? "modal_coordinates" : "reduced_dofs", static_cast<long long>(sys.size()))

@@ -315,6 +315,14 @@ class TvdCliTest(unittest.TestCase):
         r = self.tvd("terrain", "--iso8608", "Q", "--out", self.path("x.csv"),
                      status=INPUT_ERROR_STATUS)
         self.assertIn("road class A..H, got 'Q'", r.stderr)
+        # A road narrower than the vehicle is accepted with one warning naming both spans.
+        narrow = self.path("narrow.csv")
+        self.tvd("terrain", "--iso8608", "C", "--width", "1", "--length", "20", "--out", narrow)
+        r = self.tvd("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", narrow,
+                     "--speed-kmh", "30", "--cache-dir", self.cache, "--json")
+        self.assertEqual(len(json.loads(r.stdout)["warnings"]), 1)
+        self.assertEqual(r.stderr.count("tvd: warning: the contacts span y = -1.555 .. 1.555 m but "
+                                        "the terrain's lines only -0.5 .. 0.5 m"), 1, r.stderr)
         # A built-in track written out and read back simulates like the built-in itself.
         hill = self.path("hill.yaml")
         self.tvd("terrain", "--track", "long_hill", "--out", hill)
@@ -324,6 +332,7 @@ class TvdCliTest(unittest.TestCase):
                           "long_hill", "--speed-kmh", "30", "--cache-dir", self.cache)
         for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
             self.assertAlmostEqual(a[key], b[key], places=9, msg=key)
+        self.assertEqual(a["warnings"], [])
 
     def test_mat_outputs_hold_the_csv_columns(self):
         """--out FILE.mat (simulate, frf): one n x 1 variable per CSV column, the same values
