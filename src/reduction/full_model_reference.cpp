@@ -164,7 +164,10 @@ FullModelReference buildVehicleReference(const vehicle::VehicleDescription& desc
   const vehicle::VehicleModel model = vehicle::buildVehicleModel(description, variant);
   const fem::System system = fem::assemble(model.model);
   options.damping = vehicleDamping(description.damping);
-  return buildFullReference(system, vehicleOutputs(model, description), options);
+  FullModelReference ref = buildFullReference(system, vehicleOutputs(model, description), options);
+  // Where each input reads the road, as in reduceVehicle().
+  ref.modal.input_stations = vehicle::roadInputStations(model.layout, system.ground_inputs);
+  return ref;
 }
 
 }  // namespace reduction

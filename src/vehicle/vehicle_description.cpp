@@ -145,6 +145,10 @@ const char* dampingModelName(DampingModel m) {
   return m == DampingModel::Modal ? "modal" : "rayleigh";
 }
 
+const char* roadInputStationName(RoadInputStation s) {
+  return s == RoadInputStation::PadCentre ? "pad_centre" : "sole";
+}
+
 /// Full precision, for the canonical text.
 std::string format(double v) {
   char buffer[64];
@@ -377,6 +381,8 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
         keys.insert(f.key);
     if (std::string(section_name) == "damping")
       keys.insert("model");
+    if (std::string(section_name) == "ties")
+      keys.insert("road_input_station");
     expectKeys(section, keys);
     for (const Field& f : fields)
       if (std::string(f.section) == section_name)
@@ -390,6 +396,16 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
         d.damping.model = DampingModel::Rayleigh;
       else
         v.fail("unknown damping model '" + m + "' (modal or rayleigh)");
+    }
+    if (std::string(section_name) == "ties") {
+      const io::YamlValue v = quantity(section["road_input_station"], nullptr, d.sources);
+      const std::string m = v.asString();
+      if (m == "pad_centre")
+        d.ties.road_input_station = RoadInputStation::PadCentre;
+      else if (m == "sole")
+        d.ties.road_input_station = RoadInputStation::Sole;
+      else
+        v.fail("unknown road input station '" + m + "' (pad_centre or sole)");
     }
   }
   const io::YamlValue points = root["named_points"];
@@ -438,6 +454,7 @@ std::string canonicalDescription(const VehicleDescription& d) {
     out << "\n";
   }
   out << "damping.model=" << dampingModelName(d.damping.model) << "\n";
+  out << "ties.road_input_station=" << roadInputStationName(d.ties.road_input_station) << "\n";
   for (const NamedPoint& p : d.named_points)
     out << "named_points." << p.name << "=" << format(p.position.x()) << ","
         << format(p.position.y()) << "," << format(p.position.z()) << "\n";

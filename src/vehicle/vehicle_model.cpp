@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
@@ -174,9 +176,13 @@ class Builder {
         in.node = sole;
         in.side = side;
         in.assembly = index;
-        const Vector3 pos = frame.origin + frame.axes * localSole(sole - base);
+        const Vector3 local = localSole(sole - base);
+        const Vector3 pos = frame.origin + frame.axes * local;
         in.x = pos.x();
         in.y = pos.y();
+        in.road_x = d_.ties.road_input_station == RoadInputStation::Sole
+                        ? pos.x()
+                        : (frame.origin + frame.axes * Vector3(0.0, local.y(), local.z())).x();
         layout().road_inputs.push_back(in);
       }
     }
@@ -411,6 +417,21 @@ Variant parseVariant(const std::string& text) {
   if (text == "tracked")
     return Variant::Tracked;
   throw InputError("unknown vehicle variant '" + text + "' (untracked or tracked)");
+}
+
+Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::DofRef>& ground_inputs) {
+  if (ground_inputs.size() != layout.road_inputs.size())
+    throw std::logic_error("roadInputStations: " + std::to_string(ground_inputs.size()) +
+                           " ground inputs, " + std::to_string(layout.road_inputs.size()) + " road inputs");
+  Vector x(static_cast<Eigen::Index>(ground_inputs.size()));
+  for (std::size_t q = 0; q < ground_inputs.size(); ++q) {
+    if (ground_inputs[q].node != layout.road_inputs[q].node)
+      throw std::logic_error("roadInputStations: input " + std::to_string(q) + " is node " +
+                             std::to_string(ground_inputs[q].node) + " in the system, " +
+                             std::to_string(layout.road_inputs[q].node) + " in the layout");
+    x(static_cast<Eigen::Index>(q)) = layout.road_inputs[q].road_x;
+  }
+  return x;
 }
 
 VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant) {

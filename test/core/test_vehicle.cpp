@@ -107,6 +107,8 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
       {"shear_stiffness_x: {value: 1.4e6,", "shear_stiffness_x: {value: .nan,",
        "track_assembly.shear_stiffness_x", "not a finite number"},
       {"model: {value: modal,", "model: {value: viscous,", "damping.model", "unknown damping"},
+      {"road_input_station: {value: pad_centre,", "road_input_station: {value: tyre,",
+       "ties.road_input_station", "unknown road input station 'tyre' (pad_centre or sole)"},
       {"  mass: {value: 27, unit: kg, source: \"Table 1, track assembly mass m_t\"}",
        "  mass: {value: 27, unit: kg, source: \"\"}", "track_assembly.mass.source", "source"},
   };

@@ -126,9 +126,21 @@ struct ReturnRollerDescription {
   double mass = 0.0;      ///< each [kg]
 };
 
+/// Where along the path a pad ground node reads the road, u_q = h(s + x_q, y_q) (road_excitation.h).
+enum class RoadInputStation {
+  /// At its pad's centre: the three sole columns of a pad share one height, so a pad transmits
+  /// every wavelength (no contact-length filter inside a pad). The paper's reading: its
+  /// un-tracked road wheels, each on one assembly, respond the same at every speed (§4.1.3).
+  PadCentre,
+  /// At the sole column's own station (0.14 m apart along a pad): the pad averages wavelengths
+  /// of the order of its length, as a tyre's contact patch does.
+  Sole,
+};
+
 /// How the chain is tied to the running gear and the ground.
 struct ChainTieDescription {
   double ground_stiffness = 2e10;  ///< each pad ground node, x y z (rigid road) [N/m]
+  RoadInputStation road_input_station = RoadInputStation::PadCentre;
 };
 
 /// Damping model for the dynamics stage (paper eq. 20 uses modal damping ratios).

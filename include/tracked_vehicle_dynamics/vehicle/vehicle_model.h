@@ -74,8 +74,11 @@ struct RoadInput {
   int assembly = 0;        ///< index into VehicleLayout::assemblies
   double x = 0.0;          ///< [m]
   double y = 0.0;          ///< [m]
+  /// Where it reads the road [m]: x, or its pad's centre (ChainTieDescription::road_input_station).
+  double road_x = 0.0;
   std::size_t spring = 0;  ///< index into Model::springs of its ground spring
 };
+
 
 /// Masses by part [kg].
 struct MassBreakdown {
@@ -109,6 +112,11 @@ struct VehicleModel {
   fem::Model model;
   VehicleLayout layout;
 };
+
+/// The road station of every ground input, in the order of the assembled system's inputs
+/// (fem::System::ground_inputs, which follow the model's ground springs). Throws std::logic_error
+/// when the two lists disagree.
+Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::DofRef>& ground_inputs);
 
 /// Builds the vehicle model of a description. Throws InputError (naming the description key)
 /// when the description is inconsistent.
