@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,27 +42,14 @@ void checkOptions(const TrackBagOptions& o) {
           o.start_time, "in (0, 4e9) s");
 }
 
-/// The run's terrain in the vehicle path frame: a built-in track (its own lateral offset unless
-/// one is given), or a terrain file (terrain_io.h) with its first station moved to station 0,
-/// where the vehicle starts, and its lateral lines shifted by the given centre-line position.
+/// The run's terrain in the vehicle path frame (terrain_io.h: loadTrack), its first station moved
+/// to station 0, where the vehicle starts (built-in tracks start there already).
 terrain::Terrain runTerrain(const TrackBagOptions& options) {
-  const std::vector<std::string> names = terrain::trackNames();
-  if (std::find(names.begin(), names.end(), options.track) != names.end()) {
-    terrain::TrackOptions track_options;
-    track_options.lateral_offset = options.lateral_offset;
-    return terrain::makeTrack(options.track, track_options);
-  }
-  const std::string extension = std::filesystem::path(options.track).extension().string();
-  if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
-    std::string known;
-    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw InputError("track bag: track '" + options.track + "' is neither a built-in track (" + known +
-                     ") nor a terrain file (.csv, .yaml)");
-  }
-  const terrain::Terrain file = terrain::loadTerrain(options.track);
-  return terrain::Terrain(file.stations().array() - file.startStation(),
-                          file.lateral().array() - options.lateral_offset.value_or(0.0),
-                          file.heights(), file.name());
+  terrain::TrackOptions track_options;
+  track_options.lateral_offset = options.lateral_offset;
+  const terrain::Terrain t = terrain::loadTrack(options.track, track_options);
+  if (t.startStation() == 0.0) return t;
+  return terrain::Terrain(t.stations().array() - t.startStation(), t.lateral(), t.heights(), t.name());
 }
 
 /// Station step of the patches: the terrain's own on a uniform grid, else its smallest one, so

@@ -211,6 +211,22 @@ Terrain loadTerrain(const std::string& path) {
                    "' (expected .csv, .yaml or .yml)");
 }
 
+Terrain loadTrack(const std::string& track, const TrackOptions& options) {
+  const std::vector<std::string> names = trackNames();
+  if (std::find(names.begin(), names.end(), track) != names.end()) return makeTrack(track, options);
+  const std::string extension = std::filesystem::path(track).extension().string();
+  if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
+    std::string known;
+    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    throw InputError("track '" + track + "' is neither a built-in track (" + known +
+                     ") nor a terrain file (.csv, .yaml)");
+  }
+  Terrain file = loadTerrain(track);
+  if (!options.lateral_offset || *options.lateral_offset == 0.0) return file;
+  return Terrain(file.stations(), file.lateral().array() - *options.lateral_offset, file.heights(),
+                 file.name());
+}
+
 void saveTerrainCsv(const Terrain& terrain, const std::string& path) {
   std::ofstream out = openForWriting(path);
   out << "# tracked_vehicle_dynamics terrain '" << terrain.name()

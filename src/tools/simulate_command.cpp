@@ -65,11 +65,7 @@ void run(const SimulateOptions& opt) {
     if (profile->maxSpeed() * 3.6 > 200)
       throw InputError(opt.speed_profile + ": speeds above 200 km/h are outside the model's use");
   }
-  const terrain::Terrain track = [&] {
-    const auto names = terrain::trackNames();
-    if (std::find(names.begin(), names.end(), opt.track) != names.end()) return terrain::makeTrack(opt.track);
-    return terrain::loadTerrain(opt.track);
-  }();
+  const terrain::Terrain track = terrain::loadTrack(opt.track);
 
   // The reduced model (cached), or the full FE model in modal form with its static residual.
   reduction::VehicleReductionReport report;

@@ -417,7 +417,8 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["modes", "--vehicle", self.path("none.yaml")], "none.yaml")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "0"], "--count")
         self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--track", "moon_craters",
-                                 "--speed-kmh", "10", "--cache-dir", self.cache], "moon_craters")
+                                 "--speed-kmh", "10", "--cache-dir", self.cache], "moon_craters",
+                                "neither a built-in track (long_hill")
         truncated = self.path("truncated.yaml")
         with open(VEHICLE) as f, open(truncated, "w") as g:
             g.writelines(f.readlines()[:30])

@@ -25,6 +25,7 @@
 #include <string>
 
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 namespace tracked_vehicle_dynamics {
 namespace terrain {
@@ -35,6 +36,12 @@ Terrain loadTerrainCsv(const std::string& path);
 Terrain loadTerrainYaml(const std::string& path);
 /// loadTerrainCsv() for ".csv", loadTerrainYaml() for ".yaml"/".yml"; InputError otherwise.
 Terrain loadTerrain(const std::string& path);
+
+/// A built-in track (tracks.h: makeTrack(track, options)) or, when `track` names none, a terrain
+/// file (.csv, .yaml, .yml) in the path frame of a centre line at options.lateral_offset
+/// (y = y_file - offset; 0 when unset). Throws InputError naming the built-in tracks and the file
+/// extensions for anything else, or the file's own error.
+Terrain loadTrack(const std::string& track, const TrackOptions& options = {});
 
 /// Writes `terrain` as CSV (17 significant digits: a save/load round trip is exact).
 /// Throws InputError when the file cannot be written.
