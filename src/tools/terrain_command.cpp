@@ -118,18 +118,24 @@ void registerTerrainCommand(CLI::App& app) {
                            ->check(CLI::IsMember(terrain::trackNames()));
   CLI::Option* iso = cmd->add_option("--iso8608", opt->iso_class, "random road of ISO 8608 class A..H instead");
   track->excludes(iso);
-  cmd->add_option("--length", opt->length, "random road: length [m] (default 200)")->check(positiveNumber());
-  cmd->add_option("--width", opt->width, "random road: width [m] (default 5)")->check(positiveNumber());
-  cmd->add_option("--spacing", opt->spacing, "random road: station step [m] (default 0.05)")->check(positiveNumber());
-  cmd->add_option("--seed", opt->seed, "random road: seed of the phases (default 1)");
-  cmd->add_flag("--independent-sides", opt->independent_sides,
-                "random road: left and right halves independent (default: one profile across the width)");
-  cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m] (default 5)")
-      ->check(nonNegativeNumber());
-  cmd->add_option("--min-frequency", opt->min_frequency, "random road: lowest spatial frequency [cycles/m] (default 0.011)")
-      ->check(positiveNumber());
-  cmd->add_option("--max-frequency", opt->max_frequency, "random road: highest spatial frequency [cycles/m] (default 2.83)")
-      ->check(positiveNumber());
+  // The random road's options need --iso8608 (CLI11 names both when one comes without the other).
+  for (CLI::Option* o :
+       {cmd->add_option("--length", opt->length, "random road: length [m] (default 200)")->check(positiveNumber()),
+        cmd->add_option("--width", opt->width, "random road: width [m] (default 5)")->check(positiveNumber()),
+        cmd->add_option("--spacing", opt->spacing, "random road: station step [m] (default 0.05)")
+            ->check(positiveNumber()),
+        cmd->add_option("--seed", opt->seed, "random road: seed of the phases (default 1)"),
+        cmd->add_flag("--independent-sides", opt->independent_sides,
+                      "random road: left and right halves independent (default: one profile across the width)"),
+        cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m] (default 5)")
+            ->check(nonNegativeNumber()),
+        cmd->add_option("--min-frequency", opt->min_frequency,
+                        "random road: lowest spatial frequency [cycles/m] (default 0.011)")
+            ->check(positiveNumber()),
+        cmd->add_option("--max-frequency", opt->max_frequency,
+                        "random road: highest spatial frequency [cycles/m] (default 2.83)")
+            ->check(positiveNumber())})
+    o->needs(iso);
   cmd->add_option("--out", opt->out_file, "terrain file to write (.csv or .yaml)")->required();
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt, track, iso]() {

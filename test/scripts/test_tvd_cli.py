@@ -315,6 +315,9 @@ class TvdCliTest(unittest.TestCase):
         r = self.tvd("terrain", "--iso8608", "Q", "--out", self.path("x.csv"),
                      status=INPUT_ERROR_STATUS)
         self.assertIn("road class A..H, got 'Q'", r.stderr)
+        r = self.tvd("terrain", "--track", "long_hill", "--length", "50", "--out",
+                     self.path("x.csv"), status=INPUT_ERROR_STATUS)
+        self.assertIn("--length requires --iso8608", r.stderr)
         # A road narrower than the vehicle is accepted with one warning naming both spans.
         narrow = self.path("narrow.csv")
         self.tvd("terrain", "--iso8608", "C", "--width", "1", "--length", "20", "--out", narrow)
