@@ -59,6 +59,9 @@ void run(const SimulateOptions& opt) {
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
     throw InputError("simulate: --speed-kmh must be in (0, 200], got " + std::to_string(opt.speed_kmh));
+  if (opt.method != "modal" && opt.max_mode_hz >= 0)
+    throw InputError("simulate: --max-mode-hz applies to --method modal only (the exact method "
+                     "integrates every mode)");
   std::optional<dynamics::SpeedProfile> profile;
   if (!opt.speed_profile.empty()) {
     profile = dynamics::loadSpeedProfile(opt.speed_profile);

@@ -418,6 +418,9 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
                                  "--track", "long_hill", "--speed-kmh", "-5"], "--speed-kmh", "-5")
         self.assert_input_error(["modes", "--vehicle", self.path("none.yaml")], "none.yaml")
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--method", "exact",
+                                 "--max-mode-hz", "50", "--cache-dir", self.cache],
+                                "--max-mode-hz applies to --method modal only")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "0"], "--count")
         self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--track", "moon_craters",
                                  "--speed-kmh", "10", "--cache-dir", self.cache], "moon_craters",
