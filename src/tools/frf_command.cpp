@@ -194,13 +194,18 @@ void registerFrfCommand(CLI::App& app) {
   cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
   cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)");
   cmd->add_option("--step-hz", opt->step_hz, "frequency step [Hz] (default 0.05)");
-  cmd->add_option("--max-mode-hz", opt->max_mode_hz, "full model: dynamic modes up to this frequency [Hz] (default 100)")
-      ->check(positiveNumber());
+  CLI::Option* max_mode =
+      cmd->add_option("--max-mode-hz", opt->max_mode_hz, "full model: dynamic modes up to this frequency [Hz] (default 100)")
+          ->check(positiveNumber());
   cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
   cmd->add_option("--out", opt->out_file,
                   "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and <output>_phase_deg");
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt, max_mode]() {
+    if (max_mode->count() > 0 && opt->model != "full")
+      throw InputError("frf: --max-mode-hz applies to --model full only");
+    run(*opt);
+  });
 }
 
 }  // namespace tools

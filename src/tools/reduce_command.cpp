@@ -118,10 +118,16 @@ void registerReduceCommand(CLI::App& app) {
   cmd->add_option("--global-modes", opt->reduction.global_modes, "modes per variant for the MAC")->check(CLI::Range(1, 2000));
   cmd->add_option("--masters", opt->reduction.mogesec_masters, "MoGeSeC master DOFs (paper: 9)")->check(CLI::Range(0, 10000));
   cmd->add_option("--modes", opt->reduction.mode_count, "fixed-interface modes (0: as many as selected)")->check(CLI::Range(0, 10000));
-  cmd->add_option("--mac-threshold", opt->reduction.mac_threshold, "MAC threshold (paper: 0.7)")->check(CLI::Range(0.0, 1.0));
+  CLI::Option* threshold =
+      cmd->add_option("--mac-threshold", opt->reduction.mac_threshold, "MAC threshold (paper: 0.7)")
+          ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--json", opt->json, "print a JSON document");
   cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt, threshold]() {
+    if (threshold->count() > 0 && opt->rule != "mac")
+      throw InputError("reduce: --mac-threshold applies to --rule mac only");
+    run(*opt);
+  });
 }
 
 }  // namespace tools

@@ -421,6 +421,10 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--method", "exact",
                                  "--max-mode-hz", "50", "--cache-dir", self.cache],
                                 "--max-mode-hz applies to --method modal only")
+        self.assert_input_error(["frf", "--vehicle", VEHICLE, "--max-mode-hz", "50",
+                                 "--cache-dir", self.cache], "--max-mode-hz applies to --model full")
+        self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--rule", "band",
+                                 "--mac-threshold", "0.8"], "--mac-threshold applies to --rule mac")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "0"], "--count")
         self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--track", "moon_craters",
                                  "--speed-kmh", "10", "--cache-dir", self.cache], "moon_craters",
