@@ -13,7 +13,7 @@ tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simu
 
 Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
-rear one). Bad input (missing file, missing column, non-numeric value) exits with status 2 and one
+rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Bad input (missing file, missing column, non-numeric value) exits with status 2 and one
 line on stderr naming the file.
 """
 import argparse
@@ -38,8 +38,9 @@ PANELS = {
 LINE_STYLES = ["-", "--", "-.", ":"]
 
 
-def load(path, x_column):
-    """x values and {panel key: values} of one simulation file."""
+def load(path, x_column, points=()):
+    """x values and {panel key: values} of one simulation file; `points`: named points whose
+    vertical acceleration gets a panel (column <point>_accel_z_m_s2)."""
     header, rows = read_csv(path)
     wheel = re.compile(r"road_wheel_left_(\d+)_m")
     rear = max((int(m.group(1)) for m in map(wheel.fullmatch, header) if m), default=1)
@@ -48,8 +49,14 @@ def load(path, x_column):
     columns["rear_left_wheel"] = f"road_wheel_left_{rear}_m"
     if "hull_roll_deg" not in header:  # older files
         del columns["hull_roll_deg"]
+    for point in points:
+        columns[point_panel(point)] = f"{point}_accel_z_m_s2"
     x = column(path, header, rows, x_column)
     return x, {key: column(path, header, rows, name) for key, name in columns.items()}
+
+
+def point_panel(point):
+    return f"{point}_accel_z_m_s2"
 
 
 def main():
@@ -58,13 +65,19 @@ def main():
     parser.add_argument("--out", required=True, help="PNG file to write")
     parser.add_argument("--title", default="", help="figure title")
     parser.add_argument("--x", choices=X_AXES, default="station", help="x axis (default station)")
+    parser.add_argument("--point", action="append", default=[], metavar="NAME",
+                        help="add a panel of this named point's vertical acceleration (column "
+                             "NAME_accel_z_m_s2, e.g. crew_seat); repeatable")
     parser.add_argument("files", nargs="+", type=labelled, metavar="LABEL=FILE.csv",
                         help="one line per file, named LABEL in the legend")
     args = parser.parse_args()
 
     x_column, x_label = X_AXES[args.x]
-    runs = [(label, *load(path, x_column)) for label, path in args.files]
-    present = [key for key in PANELS if any(key in series for _, _, series in runs)]
+    runs = [(label, *load(path, x_column, args.point)) for label, path in args.files]
+    labels = dict(PANELS)
+    for point in args.point:
+        labels[point_panel(point)] = f"{point} vertical acceleration [m/s$^2$]"
+    present = [key for key in labels if any(key in series for _, _, series in runs)]
     nrows = math.ceil(len(present) / 2)
     fig, axes = plt.subplots(nrows, 2, figsize=(12, 3.2 * nrows), sharex=True, squeeze=False)
     for ax in axes.flat[len(present):]:
@@ -73,7 +86,7 @@ def main():
         for k, (label, x, series) in enumerate(runs):
             if key in series:
                 ax.plot(x, series[key], linestyle=LINE_STYLES[k % len(LINE_STYLES)], label=label)
-        ax.set_ylabel(PANELS[key])
+        ax.set_ylabel(labels[key])
         ax.set_xlabel(x_label)
         ax.xaxis.set_tick_params(labelbottom=True)
         ax.grid(True, alpha=0.3)

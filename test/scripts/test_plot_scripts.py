@@ -231,6 +231,18 @@ class PlotScriptsTest(unittest.TestCase):
                                      "long hill", f"5 km/h={slow}", f"50 km/h={fast}")
             self.assert_png(result, out)
 
+    def test_simulation_named_point_panel(self):
+        columns = simulation_columns()
+        columns["crew_seat_accel_z_m_s2"] = 1.3 * columns["hull_vertical_accel_m_s2"]
+        path = write_csv(self.path("seat.csv"), columns)
+        out = self.path("seat.png")
+        self.assert_png(self.run_script("plot_simulation.py", "--out", out, "--point", "crew_seat",
+                                        f"run={path}"), out)
+        # A point the file does not have is named with the file.
+        result = self.run_script("plot_simulation.py", "--out", self.path("no.png"), "--point",
+                                 "turret", f"run={path}")
+        self.assert_input_error(result, self.path("no.png"), path, "turret_accel_z_m_s2")
+
     def test_simulation_missing_column(self):
         columns = simulation_columns()
         del columns["hull_pitch_deg"]
