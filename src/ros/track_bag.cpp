@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -60,6 +61,35 @@ double patchSpacing(const terrain::Terrain& t) {
   return (x.tail(x.size() - 1) - x.head(x.size() - 1)).minCoeff();
 }
 
+/// How the reference point moves from the start of the run: at the constant speed, or along the
+/// speed profile (its station is the exact integral of v, speed_profile.h).
+class Motion {
+ public:
+  explicit Motion(const TrackBagOptions& o) : o_(o) {}
+  double speed(double t) const { return o_.speed_profile ? o_.speed_profile->speed(t) : o_.speed; }
+  /// The first time [s] at which the station reaches s [m]; +inf when it never does (a profile
+  /// that ends standing still short of s). s(t) is non-decreasing, so bisection finds it.
+  double timeAt(double s) const {
+    if (s <= 0.0) return 0.0;
+    if (!o_.speed_profile) return s / o_.speed;
+    const dynamics::SpeedProfile& p = *o_.speed_profile;
+    const double end = p.endTime(), s_end = p.station(end);
+    if (s_end < s) {
+      const double v = p.speeds().back();  // held after the profile's end
+      return v > 0.0 ? end + (s - s_end) / v : std::numeric_limits<double>::infinity();
+    }
+    double lo = 0.0, hi = end;
+    while (hi - lo > 1e-12 * (1.0 + hi)) {
+      const double mid = 0.5 * (lo + hi);
+      (p.station(mid) >= s ? hi : lo) = mid;
+    }
+    return hi;
+  }
+
+ private:
+  const TrackBagOptions& o_;
+};
+
 }  // namespace
 
 TrackRun trackRun(const TrackBagOptions& options) {
@@ -68,7 +98,9 @@ TrackRun trackRun(const TrackBagOptions& options) {
   const double spacing = patchSpacing(track);
   TrackRun run;
   run.end_station = track.endStation() + options.behind;
-  run.duration = run.end_station / options.speed;
+  const Motion motion(options);
+  run.duration = motion.timeAt(run.end_station);
+  if (!std::isfinite(run.duration)) run.duration = options.speed_profile->endTime();  // stopped
   // Terrain on the track's own grid, stations k * spacing, patch by patch.
   const auto first = static_cast<long>(std::floor(-options.behind / spacing + 1e-9));
   const auto last =
@@ -88,7 +120,7 @@ TrackRun trackRun(const TrackBagOptions& options) {
             track.height(static_cast<double>(k0 + i) * spacing, track.lateral()(j));
       }
     }
-    timed.time = std::max(0.0, (patch.start_station - options.lookahead) / options.speed);
+    timed.time = std::min(motion.timeAt(patch.start_station - options.lookahead), run.duration);
     run.patches.push_back(std::move(timed));
   }
   run.covered_from = static_cast<double>(first) * spacing;
@@ -117,10 +149,12 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
     ++summary.patches;
   }
   std_msgs::Float64 speed;
-  speed.data = options.speed;
+  const Motion motion(options);
   const auto speed_count = static_cast<long>(std::floor(run.duration * options.speed_rate)) + 1;
   for (long k = 0; k < speed_count; ++k) {
-    bag.write(options.speed_topic, at(static_cast<double>(k) / options.speed_rate), speed);
+    const double t = static_cast<double>(k) / options.speed_rate;
+    speed.data = motion.speed(t);
+    bag.write(options.speed_topic, at(t), speed);
     ++summary.speed_messages;
   }
   if (options.clock_rate > 0.0) {

@@ -1,12 +1,15 @@
-// tvd_make_bag: writes a rosbag of one of the paper's test tracks driven at a constant speed
-// (terrain patches ahead of the vehicle + speed [+ /clock]); see ros/track_bag.h.
+// tvd_make_bag: writes a rosbag of one of the paper's test tracks or a terrain file driven at a
+// constant speed or along a speed profile (terrain patches ahead of the vehicle + speed
+// [+ /clock]); see ros/track_bag.h.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include <ros/time.h>
 
+#include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 
@@ -20,7 +23,13 @@ int main(int argc, char** argv) {
   app.add_option("--track", options.track,
                  "long_hill, separated_waves, oop_waves or a terrain file (.csv/.yaml, e.g. from tvd terrain)")
       ->capture_default_str();
-  app.add_option("--speed-kmh", speed_kmh, "vehicle speed [km/h]")->capture_default_str();
+  CLI::Option* speed_option =
+      app.add_option("--speed-kmh", speed_kmh, "vehicle speed [km/h]")->capture_default_str();
+  std::string profile_file;
+  app.add_option("--speed-profile", profile_file,
+                 "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), as tvd simulate")
+      ->check(CLI::ExistingFile)
+      ->excludes(speed_option);
   app.add_option("--out", out, "bag file to write")->required();
   app.add_option("--patch-length", options.patch_length, "terrain per message [m]")
       ->capture_default_str();
@@ -41,13 +50,14 @@ int main(int argc, char** argv) {
   if (offset->count() > 0)
     options.lateral_offset = lateral_offset;
   try {
+    if (!profile_file.empty()) options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
     ros::Time::init();
     const rl::TrackBagSummary s = rl::writeTrackBag(out, options);
-    std::printf(
-        "%s: %s at %.1f km/h, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, "
-        "%zu clock messages\n",
-        out.c_str(), options.track.c_str(), speed_kmh, s.duration, s.patches, s.covered_from,
-        s.covered_until, s.speed_messages, s.clock_messages);
+    const std::string how = profile_file.empty() ? "at " + std::to_string(speed_kmh) + " km/h"
+                                                 : "with the speed profile " + profile_file;
+    std::printf("%s: %s %s, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, %zu clock messages\n",
+                out.c_str(), options.track.c_str(), how.c_str(), s.duration, s.patches, s.covered_from,
+                s.covered_until, s.speed_messages, s.clock_messages);
   } catch (const tracked_vehicle_dynamics::InputError& e) {
     std::cerr << "tvd_make_bag: error: " << e.what() << "\n";
     return 2;

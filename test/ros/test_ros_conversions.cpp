@@ -247,6 +247,39 @@ TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
   }
 }
 
+// A speed profile (brake from 10 to 2 m/s over the first 4 s, then hold): the run lasts until
+// the station, the profile's exact integral, reaches the end; the speed messages carry v(t); and
+// each patch is written when the reference point is `lookahead` before it.
+TEST(TrackBag, SpeedProfileMovesTheReferencePointByItsIntegral) {
+  TrackBagOptions options;
+  options.track = "long_hill";
+  options.speed_profile = dynamics::SpeedProfile({0.0, 4.0}, {10.0, 2.0});
+  const std::string path = temporaryPath("braking.bag");
+  const TrackBagSummary summary = writeTrackBag(path, options);
+  const TrackBagContent bag = readTrackBag(path);
+  std::remove(path.c_str());
+  // 24 m in the first 4 s, then 2 m/s to the end station.
+  const double end_station = terrain::kTrackLength + options.behind;
+  EXPECT_NEAR(summary.duration, 4.0 + (end_station - 24.0) / 2.0, 1e-9);
+  const ros::Time start(options.start_time);
+  for (const auto& [time, v] : bag.speeds) {
+    const double t = (time - start).toSec();
+    EXPECT_NEAR(v, t < 4.0 ? 10.0 - 2.0 * t : 2.0, 1e-9) << "t = " << t;
+  }
+  const TrackRun run = trackRun(options);
+  for (const TimedPatch& timed : run.patches) {
+    const double due = timed.patch.start_station - options.lookahead;
+    if (due <= 0.0) {
+      EXPECT_EQ(timed.time, 0.0);
+    } else {
+      EXPECT_NEAR(options.speed_profile->station(timed.time), due, 1e-9) << timed.patch.start_station;
+    }
+  }
+  // A profile that stops short of the end ends the run with it.
+  options.speed_profile = dynamics::SpeedProfile({0.0, 2.0, 3.0}, {5.0, 5.0, 0.0});
+  EXPECT_NEAR(trackRun(options).duration, 3.0, 1e-12);
+}
+
 TEST(TrackBag, InvalidOptionsNameTheField) {
   TrackBagOptions options;
   options.speed = 0.0;

@@ -3,8 +3,8 @@
 // speed, and optionally /clock. Replay with `rosbag play --clock` and use_sim_time (launch/replay_track.launch).
 //
 // The run: the vehicle reference point starts at station 0 at bag time start_time and drives at
-// speed v until station s_end = track end + behind (the rear contacts have left the track), so it
-// lasts s_end / v. The terrain is the track sampled on its own grid (stations k * spacing, its
+// speed v (or along a speed profile) until station s_end = track end + behind (the rear contacts
+// have left the track), so it lasts s_end / v. The terrain is the track sampled on its own grid (stations k * spacing, its
 // lateral lines), held flat beyond both ends (Terrain's edge rule), from station -behind to
 // s_end + lookahead, cut into patches of patch_length; a patch starting at station a is written
 // at the time the reference point reaches a - lookahead (at the start for the first ones), so
@@ -18,6 +18,7 @@
 
 #include <ros/time.h>
 
+#include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 
 namespace tracked_vehicle_dynamics {
@@ -28,6 +29,10 @@ struct TrackBagOptions {
   /// `tvd terrain --iso8608 C`): its first station becomes station 0, where the vehicle starts.
   std::string track = "long_hill";
   double speed = 30.0 / 3.6;        ///< [m/s], > 0
+  /// A speed varying in time instead of `speed` (dynamics/speed_profile.h): the reference point
+  /// moves by its exact station, the speed messages carry v(t), and the run ends where the
+  /// station reaches its end, or where the profile stops for good.
+  std::optional<dynamics::SpeedProfile> speed_profile;
   double patch_length = 2.0;        ///< terrain per message [m]
   double lookahead = 10.0;          ///< terrain published ahead of the reference point [m]
   double behind = 5.0;              ///< terrain before station 0 and run-out after the track [m]
