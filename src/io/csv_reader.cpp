@@ -50,6 +50,8 @@ std::vector<CsvRow> CsvReader::readRows() const {
   std::vector<CsvRow> rows;
   std::string text;
   for (int line = 1; std::getline(in, text); ++line) {
+    // A UTF-8 byte-order mark (spreadsheets write one) is not part of the first cell.
+    if (line == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
     const std::string content = trim(text);
     if (content.empty() || content.front() == '#') continue;
     CsvRow row{line, {}};

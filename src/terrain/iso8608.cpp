@@ -18,6 +18,11 @@ constexpr double kPi = 3.14159265358979323846;
 // G_d(n0) of class A [m^3]; each further class is x4 (ISO 8608, the classes' geometric means).
 constexpr double kClassAReferencePsd = 16e-6;
 constexpr double kClassRatio = 4.0;
+// The profile is summed harmonic by harmonic at every station (K cosines per station): bound the
+// work (about a minute per 5e9 terms on this project's machine) and the memory, so that a typo in
+// the length is an error rather than an hour-long run or an exhausted machine.
+constexpr double kMaxStations = 2e7;
+constexpr double kMaxTerms = 1e10;
 
 std::string format(double value) {
   std::ostringstream out;
@@ -100,6 +105,15 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
   if (sides && !(options.side_gap > 0.0 && options.side_gap < width)) {
     fail("side_gap " + format(options.side_gap) + " m must be in (0, width = " + format(width) +
          " m) for independent sides");
+  }
+
+  const double stations = std::floor(length / spacing + 1e-9) + 1.0;
+  const double harmonics = (std::min(options.max_frequency, nyquist) - options.min_frequency) * length;
+  if (stations > kMaxStations || stations * harmonics > kMaxTerms) {
+    fail("length " + format(length) + " m at spacing " + format(spacing) + " m needs " +
+         format(stations) + " stations x " + format(harmonics) + " harmonics; at most " +
+         format(kMaxStations) + " stations and " + format(kMaxTerms) +
+         " station-harmonic terms (13 km at 0.05 m spacing, about two minutes): generate a shorter road");
   }
 
   // Harmonics k Δn whose bins [(k - 1/2) Δn, (k + 1/2) Δn] meet the band, below Nyquist.

@@ -1,6 +1,7 @@
 #include "drive.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -8,16 +9,34 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-Drive::Drive(double start, double distance, double dt, double speed)
-    : start_(start), dt_(dt), speed_(speed), steps_(static_cast<long>(std::ceil(distance / speed / dt))) {}
+Drive::Drive(double start, double distance, double dt, double speed) : start_(start), dt_(dt), speed_(speed) {
+  const double samples = std::ceil(distance / speed / dt);
+  if (samples > kMaxSteps) {
+    std::ostringstream message;
+    message << "simulate: " << distance << " m at " << speed * 3.6 << " km/h take " << samples
+            << " time steps of " << dt << " s; at most " << kMaxSteps;
+    throw InputError(message.str());
+  }
+  steps_ = static_cast<long>(samples);
+}
 
 Drive::Drive(double start, double distance, double dt, dynamics::SpeedProfile profile,
              const std::string& profile_name)
     : start_(start), dt_(dt), profile_(std::move(profile)) {
-  const auto last = static_cast<long>(std::floor(profile_->endTime() / dt * (1 + 1e-12)));
-  if (last < 1)
-    throw InputError(profile_name + ": the profile lasts " + std::to_string(profile_->endTime()) +
-                     " s, less than one time step");
+  const double samples = std::floor(profile_->endTime() / dt * (1 + 1e-12));
+  if (samples < 1) {
+    std::ostringstream message;
+    message << profile_name << ": the profile lasts " << profile_->endTime()
+            << " s, less than one time step (" << dt << " s)";
+    throw InputError(message.str());
+  }
+  if (samples > kMaxSteps) {
+    std::ostringstream message;
+    message << profile_name << ": the profile lasts " << profile_->endTime() << " s, "
+            << samples << " time steps of " << dt << " s; at most " << kMaxSteps;
+    throw InputError(message.str());
+  }
+  const auto last = static_cast<long>(samples);
   // The first sample at or past the track's end, else the profile's last.
   steps_ = last;
   for (long k = 1; k <= last; ++k)

@@ -16,6 +16,9 @@ namespace tools {
 
 class Drive {
  public:
+  /// Longest run [steps]: 1e7 (2.8 h at 1 ms), whose output table of ~35 columns takes 2.8 GB.
+  static constexpr double kMaxSteps = 1e7;
+
   /// Constant speed [m/s] > 0 from station `start` [m] over `distance` [m], time step dt [s].
   Drive(double start, double distance, double dt, double speed);
   /// Along `profile` (named `profile_name` in errors). Throws InputError when the profile lasts

@@ -99,6 +99,10 @@ TEST(SpeedProfile, LoadsCsvInKilometresPerHourOrMetresPerSecond) {
     const ProfileFile f("time_s,speed_m_s\n0,10\n2,10\n6,2\n8,0\n");
     EXPECT_NEAR(tvd::dynamics::loadSpeedProfile(f.path()).station(7.0), 45.5, 1e-12);
   }
+  {  // As a spreadsheet saves it: a UTF-8 byte-order mark and CR-LF line ends.
+    const ProfileFile f("\xEF\xBB\xBFtime_s,speed_m_s\r\n0,10\r\n2,10\r\n6,2\r\n8,0\r\n");
+    EXPECT_NEAR(tvd::dynamics::loadSpeedProfile(f.path()).station(7.0), 45.5, 1e-12);
+  }
 }
 
 TEST(SpeedProfile, RejectsBadFilesNamingTheRow) {

@@ -275,6 +275,12 @@ class TvdCliTest(unittest.TestCase):
         r = self.tvd(*common, "--speed-profile", constant, "--speed-kmh", "30",
                      status=INPUT_ERROR_STATUS)
         self.assertIn("excludes", r.stderr)
+        endless = self.path("endless.csv")
+        with open(endless, "w") as f:
+            f.write("time_s,speed_kmh\n0,10\n1e300,10\n")
+        r = self.tvd(*common, "--speed-profile", endless, status=INPUT_ERROR_STATUS)
+        self.assertIn("endless.csv: the profile lasts 1e+300 s", r.stderr)
+        self.assertIn("at most 1e+07", r.stderr)
 
     def test_terrain_iso8608_road_and_ride_on_it(self):
         """tvd terrain --iso8608: the road's r.m.s. height is the PSD's over the generated band

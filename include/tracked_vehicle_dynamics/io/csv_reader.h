@@ -1,5 +1,6 @@
 // Strict reading of small numeric CSV files (terrain, speed profiles): comma separated, blank
-// lines and lines starting with '#' skipped, cells trimmed; every error throws InputError naming
+// lines and lines starting with '#' skipped, cells trimmed, a leading UTF-8 byte-order mark and
+// CR-LF line ends accepted; every error throws InputError naming
 // the file, the file line and the column: "<file>: row 7, column 3: height 'nan' is not a
 // finite number".
 #pragma once
