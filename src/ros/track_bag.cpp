@@ -30,6 +30,8 @@ void require(bool valid, const std::string& field, double value, const std::stri
   }
 }
 
+constexpr double kMaxMessages = 1e7;
+
 void checkOptions(const TrackBagOptions& o) {
   require(std::isfinite(o.speed) && o.speed > 0.0, "speed", o.speed, "> 0 m/s");
   require(std::isfinite(o.patch_length) && o.patch_length > 0.0, "patch_length", o.patch_length,
@@ -101,6 +103,16 @@ TrackRun trackRun(const TrackBagOptions& options) {
   const Motion motion(options);
   run.duration = motion.timeAt(run.end_station);
   if (!std::isfinite(run.duration)) run.duration = options.speed_profile->endTime();  // stopped
+  // A bag is replayed in real time: refuse a run that would write millions of timed messages (a
+  // terrain file with a stray far station, a crawl speed) instead of filling the disk.
+  const double messages = run.duration * (options.speed_rate + options.clock_rate);
+  if (messages > kMaxMessages || options.start_time + run.duration >= 4e9) {
+    std::ostringstream message;
+    message << "track bag: the run to station " << run.end_station << " m lasts " << run.duration
+            << " s, " << messages << " speed and clock messages; at most " << kMaxMessages
+            << " (about 55 h at 50 Hz): use a shorter terrain or a higher speed";
+    throw InputError(message.str());
+  }
   // Terrain on the track's own grid, stations k * spacing, patch by patch.
   const auto first = static_cast<long>(std::floor(-options.behind / spacing + 1e-9));
   const auto last =

@@ -278,6 +278,15 @@ TEST(TrackBag, SpeedProfileMovesTheReferencePointByItsIntegral) {
   // A profile that stops short of the end ends the run with it.
   options.speed_profile = dynamics::SpeedProfile({0.0, 2.0, 3.0}, {5.0, 5.0, 0.0});
   EXPECT_NEAR(trackRun(options).duration, 3.0, 1e-12);
+  // A crawl that would last months is refused by name, before anything is written.
+  options.speed_profile = dynamics::SpeedProfile({0.0, 1.0}, {1e-5, 1e-5});
+  try {
+    trackRun(options);
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("use a shorter terrain or a higher speed"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(TrackBag, InvalidOptionsNameTheField) {
