@@ -154,7 +154,7 @@ FullModelReference buildFullReference(const fem::System& system,
   s.input_damping = phi_b.rightCols(n_u);
   s.output = h_phi;
   s.output_names = outputNames(outputs);
-  inputPositions(system, &s.input_stations, &s.input_lateral);
+  inputPositions(system, options.input_stations, &s.input_stations, &s.input_lateral);
   ref.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return ref;
 }
@@ -164,10 +164,8 @@ FullModelReference buildVehicleReference(const vehicle::VehicleDescription& desc
   const vehicle::VehicleModel model = vehicle::buildVehicleModel(description, variant);
   const fem::System system = fem::assemble(model.model);
   options.damping = vehicleDamping(description.damping);
-  FullModelReference ref = buildFullReference(system, vehicleOutputs(model, description), options);
-  // Where each input reads the road, as in reduceVehicle().
-  ref.modal.input_stations = vehicle::roadInputStations(model.layout, system.ground_inputs);
-  return ref;
+  options.input_stations = vehicle::roadInputStations(model.layout, system.ground_inputs);
+  return buildFullReference(system, vehicleOutputs(model, description), options);
 }
 
 }  // namespace reduction

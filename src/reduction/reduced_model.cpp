@@ -65,9 +65,13 @@ std::vector<std::string> outputNames(const std::vector<OutputDof>& outputs) {
   return output_names;
 }
 
-void inputPositions(const fem::System& system, Vector* stations, Vector* lateral) {
+void inputPositions(const fem::System& system, const Vector& road_stations, Vector* stations,
+                    Vector* lateral) {
   const fem::DofMap& dofs = system.dofs;
   const auto inputs = static_cast<DofIndex>(system.ground_inputs.size());
+  if (road_stations.size() != 0 && road_stations.size() != inputs)
+    throw InputError("input stations: " + std::to_string(road_stations.size()) + " given for " +
+                     std::to_string(inputs) + " road inputs");
   Vector x(inputs), y(inputs);
   for (DofIndex q = 0; q < inputs; ++q) {
     const fem::DofRef& d = system.ground_inputs[static_cast<std::size_t>(q)];
@@ -82,7 +86,7 @@ void inputPositions(const fem::System& system, Vector* stations, Vector* lateral
     x(q) = dofs.positionOf(active).x();
     y(q) = dofs.positionOf(active).y();
   }
-  *stations = x;
+  *stations = road_stations.size() != 0 ? road_stations : x;
   *lateral = y;
 }
 
@@ -118,7 +122,7 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   const auto inputs = static_cast<DofIndex>(system.ground_inputs.size());
   for (DofIndex q = 0; q < inputs; ++q)
     model.input_labels.push_back(label(system.ground_inputs[static_cast<std::size_t>(q)]));
-  inputPositions(system, &s.input_stations, &s.input_lateral);
+  inputPositions(system, request.input_stations, &s.input_stations, &s.input_lateral);
 
   model.gravity_load = cb.gravity_load;
   for (const DofIndex master : cb.masters) {

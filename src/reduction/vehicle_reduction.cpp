@@ -184,9 +184,9 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   request.selection = selection;
   request.description_hash = vehicle::descriptionHashHex(description);
   request.creator = std::string("reduceVehicle ") + vehicle::variantName(variant);
-  ReducedModel reduced = buildReducedModel(model.system, request);
   // Where each input reads the road: its node's station, or its pad's centre (description).
-  reduced.system.input_stations = vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
+  request.input_stations = vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
+  ReducedModel reduced = buildReducedModel(model.system, request);
   rep.reduce_seconds = secondsSince(reduce_start);
   rep.flexible_modes = static_cast<int>(reduced.modeCount());
   rep.reduced_dofs = reduced.size();

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <initializer_list>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -360,6 +362,22 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
 
 namespace {
 
+/// A value {value: name, source: ...} that must be one of `choices`; `what` names it in the
+/// error: "unknown damping model 'viscous' (modal or rayleigh)".
+template <typename E>
+E readChoice(const io::YamlValue& entry, const std::string& what,
+             std::initializer_list<std::pair<const char*, E>> choices,
+             std::map<std::string, std::string>& sources) {
+  const io::YamlValue v = quantity(entry, nullptr, sources);
+  const std::string name = v.asString();
+  std::string names;
+  for (const auto& [choice, value] : choices) {
+    if (name == choice) return value;
+    names += (names.empty() ? "" : " or ") + std::string(choice);
+  }
+  v.fail("unknown " + what + " '" + name + "' (" + names + ")");
+}
+
 VehicleDescription fromYaml(const io::YamlValue& root) {
   const std::string& file = root.file();
   std::set<std::string> top = {"name", "named_points"};
@@ -379,34 +397,25 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
     for (const Field& f : fields)
       if (std::string(f.section) == section_name)
         keys.insert(f.key);
-    if (std::string(section_name) == "damping")
+    const bool damping = std::string(section_name) == "damping";
+    const bool ties = std::string(section_name) == "ties";
+    if (damping)
       keys.insert("model");
-    if (std::string(section_name) == "ties")
+    if (ties)
       keys.insert("road_input_station");
     expectKeys(section, keys);
     for (const Field& f : fields)
       if (std::string(f.section) == section_name)
         readField(section, f, d.sources);
-    if (std::string(section_name) == "damping") {
-      const io::YamlValue v = quantity(section["model"], nullptr, d.sources);
-      const std::string m = v.asString();
-      if (m == "modal")
-        d.damping.model = DampingModel::Modal;
-      else if (m == "rayleigh")
-        d.damping.model = DampingModel::Rayleigh;
-      else
-        v.fail("unknown damping model '" + m + "' (modal or rayleigh)");
-    }
-    if (std::string(section_name) == "ties") {
-      const io::YamlValue v = quantity(section["road_input_station"], nullptr, d.sources);
-      const std::string m = v.asString();
-      if (m == "pad_centre")
-        d.ties.road_input_station = RoadInputStation::PadCentre;
-      else if (m == "sole")
-        d.ties.road_input_station = RoadInputStation::Sole;
-      else
-        v.fail("unknown road input station '" + m + "' (pad_centre or sole)");
-    }
+    if (damping)
+      d.damping.model = readChoice<DampingModel>(section["model"], "damping model",
+                                   {{"modal", DampingModel::Modal}, {"rayleigh", DampingModel::Rayleigh}},
+                                   d.sources);
+    if (ties)
+      d.ties.road_input_station =
+          readChoice<RoadInputStation>(section["road_input_station"], "road input station",
+                     {{"pad_centre", RoadInputStation::PadCentre}, {"sole", RoadInputStation::Sole}},
+                     d.sources);
   }
   const io::YamlValue points = root["named_points"];
   d.named_points.clear();

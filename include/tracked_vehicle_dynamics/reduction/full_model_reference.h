@@ -37,6 +37,8 @@ struct FullReferenceOptions {
   int max_modes = 2000;
   /// Damping: Modal (ratio per mode) or Rayleigh; the discrete dampers are always included.
   DampingOptions damping;
+  /// Where each road input reads the road [m], as ReductionRequest::input_stations.
+  Vector input_stations;
 };
 
 struct FullModelReference {

@@ -62,6 +62,9 @@ struct ReductionRequest {
   ModeSelection selection;            ///< recorded with the model for the report
   std::string description_hash;
   std::string creator;
+  /// Where each road input reads the road [m] (x forward), one per input; empty: its node's x.
+  /// (A vehicle's pad ground nodes read it at their pad's centre, vehicle_model.h.)
+  Vector input_stations;
 };
 
 /// Each output as a combination of active DOFs, one (active index, coefficient) list per output:
@@ -75,9 +78,11 @@ std::vector<std::vector<std::pair<DofIndex, double>>> outputTerms(
 /// name.
 std::vector<std::string> outputNames(const std::vector<OutputDof>& outputs);
 
-/// x and y [m] of the node under each road input of the system (x forward, y left); both empty
-/// when some input's node has no active DOF.
-void inputPositions(const fem::System& system, Vector* stations, Vector* lateral);
+/// x and y [m] of the node under each road input of the system (x forward, y left), x replaced by
+/// `road_stations` when it is given (one per input); both empty when some input's node has no
+/// active DOF. Throws InputError when road_stations has the wrong length.
+void inputPositions(const fem::System& system, const Vector& road_stations, Vector* stations,
+                    Vector* lateral);
 
 /// Runs craigBampton() on `system` and packages the result. Throws InputError for an output on
 /// an unknown node or bad direction, repeated output names, and whatever craigBampton() throws.
