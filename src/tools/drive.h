@@ -28,13 +28,10 @@ class Drive {
 
   /// Steps of the run: the samples are 0 .. steps().
   long steps() const { return steps_; }
-  double timeStep() const { return dt_; }
   /// Station of sample k [m].
   double station(long k) const;
   /// Speed at sample k [m/s].
   double speed(long k) const;
-  /// The profile, or nullptr at constant speed.
-  const dynamics::SpeedProfile* profile() const { return profile_ ? &*profile_ : nullptr; }
 
   /// The road inputs of samples first .. first + count - 1, every input at every sample.
   Matrix denseInputs(const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,

@@ -28,7 +28,6 @@ class CsvReader {
  public:
   explicit CsvReader(std::string path) : path_(std::move(path)) {}
 
-  const std::string& path() const { return path_; }
   [[noreturn]] void fail(const std::string& what) const;
   [[noreturn]] void fail(const CsvRow& row, const std::string& what) const;
   [[noreturn]] void fail(const CsvRow& row, std::size_t column, const std::string& what) const;
