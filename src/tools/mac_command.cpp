@@ -2,7 +2,6 @@
 // correlation table of Table 4.
 #include <iomanip>
 #include <iostream>
-#include <fstream>
 
 #include "commands.h"
 #include "output_files.h"
@@ -75,16 +74,13 @@ void run(const MacOptions& opt) {
     mat.writeStrings("tracked_mode_types", tv_types);
     mat.writeScalar("threshold", opt.threshold);
     mat.close();
-    std::ofstream csv(opt.out_dir + "/mac.csv");
-    if (!csv) throw InputError("cannot write " + opt.out_dir + "/mac.csv");
-    csv << "untracked_mode";  // then one column per tracked mode, named by its number
-    for (int j = 0; j < mac.cols(); ++j) csv << "," << j + 1;
-    csv << "\n" << std::setprecision(6);
-    for (int i = 0; i < mac.rows(); ++i) {
-      csv << i + 1;
-      for (int j = 0; j < mac.cols(); ++j) csv << "," << mac(i, j);
-      csv << "\n";
-    }
+    // One row per un-tracked mode, then one column per tracked mode, named by its number.
+    std::vector<std::string> headers = {"untracked_mode"};
+    Matrix table(mac.rows(), mac.cols() + 1);
+    table.col(0) = Vector::LinSpaced(mac.rows(), 1.0, static_cast<double>(mac.rows()));
+    table.rightCols(mac.cols()) = mac;
+    for (int j = 0; j < mac.cols(); ++j) headers.push_back(std::to_string(j + 1));
+    writeTable(opt.out_dir + "/mac.csv", headers, table, 6);
   }
 
   if (opt.json) {
