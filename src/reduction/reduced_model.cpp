@@ -135,6 +135,7 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   model.selected_modes = request.selection.modes;
   model.damping = describe(options.damping);
   model.description_hash = request.description_hash;
+  model.reduction = request.reduction;
   model.version = softwareVersion();
   model.created_utc = utcNow();
   model.creator = request.creator;

@@ -69,6 +69,7 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
       numeric("format_version", Matrix::Constant(1, 1, kReducedModelFormatVersion)),
       text("version", model.version),
       text("description_hash", model.description_hash),
+      text("reduction", model.reduction),
       text("created_utc", model.created_utc),
       text("creator", model.creator),
       text("damping_model", model.damping),
@@ -238,6 +239,10 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
     throw InputError(where +
                      ": incomplete file: the final 'checksum' variable is missing "
                      "(truncated or interrupted write)");
+  model.reduction = in.readString("reduction");
+  if (!options.expected_reduction.empty() && model.reduction != options.expected_reduction)
+    throw InputError(where + ": stale cache: reduced as '" + model.reduction + "', expected '" +
+                     options.expected_reduction + "'");
 
   model.created_utc = in.readString("created_utc");
   model.creator = in.readString("creator");

@@ -183,6 +183,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   request.outputs = vehicleOutputs(model.vehicle, description);
   request.selection = selection;
   request.description_hash = vehicle::descriptionHashHex(description);
+  request.reduction = reductionKey(variant, options);
   request.creator = std::string("reduceVehicle ") + vehicle::variantName(variant);
   // Where each input reads the road: its node's station, or its pad's centre (description).
   request.input_stations = vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
@@ -200,15 +201,22 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
 
 namespace {
 
-/// Every reduction option at full precision (%a: every bit of the doubles).
+/// Every reduction option, the doubles to the last bit (%.17g round-trips).
 std::string optionsText(const VehicleReductionOptions& o) {
-  char text[160];
-  std::snprintf(text, sizeof(text), "%d %d %a %a %d %d", static_cast<int>(o.rule), o.global_modes,
-                o.band_hz, o.mac_threshold, o.mogesec_masters, o.mode_count);
+  char text[200];
+  std::snprintf(text, sizeof(text),
+                "rule %s; global_modes %d; band_hz %.17g; mac_threshold %.17g; "
+                "mogesec_masters %d; modes %d",
+                o.rule == VehicleModeRule::Band ? "band" : "mac", o.global_modes, o.band_hz,
+                o.mac_threshold, o.mogesec_masters, o.mode_count);
   return text;
 }
 
 }  // namespace
+
+std::string reductionKey(vehicle::Variant variant, const VehicleReductionOptions& options) {
+  return std::string("variant ") + vehicle::variantName(variant) + "; " + optionsText(options);
+}
 
 std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant variant,
                                   const std::string& description_hash,
@@ -246,7 +254,9 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
   rep.cache_file = path.string();
   if (std::filesystem::exists(path)) {
     try {
-      ReducedModel cached = loadReducedModel(path.string(), hash);
+      ReducedModelLoadOptions load;
+      load.expected_reduction = reductionKey(variant, options);
+      ReducedModel cached = loadReducedModel(path.string(), hash, load);
       rep.from_cache = true;
       rep.cache_note = "loaded " + path.string();
       rep.reduced_dofs = cached.size();

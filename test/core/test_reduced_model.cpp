@@ -157,6 +157,7 @@ ReductionRequest request(const fem::System& system) {
   r.selection.modes = {{0, 10.2, "MAC 0.97 with un-tracked mode 1 (9.8 Hz)"},
                        {2, 64.1, "MAC 0.81 with un-tracked mode 3 (60 Hz)"}};
   r.description_hash = kHash;
+  r.reduction = "variant tracked; modes 4";
   r.creator = "test_reduced_model";
   return r;
 }
@@ -250,6 +251,24 @@ TEST_F(ReducedModelFileTest, SaveLoadRoundTripIsExact) {
 
 TEST_F(ReducedModelFileTest, DifferentHashIsStale) {
   expectStale(path_, "sha256:ffff", "description hash");
+}
+
+// The same description reduced for another variant or with other options is another model.
+TEST_F(ReducedModelFileTest, OtherReductionIsStaleWhenOneIsExpected) {
+  EXPECT_EQ(loadReducedModel(path_, kHash).reduction, "variant tracked; modes 4");
+  ReducedModelLoadOptions options;
+  options.expected_reduction = "variant tracked; modes 4";
+  EXPECT_EQ(loadReducedModel(path_, kHash, options).size(), model_.size());
+  options.expected_reduction = "variant untracked; modes 4";
+  try {
+    loadReducedModel(path_, kHash, options);
+    ADD_FAILURE() << "a tracked model was loaded as an untracked one";
+  } catch (const StaleCacheError& e) {
+    EXPECT_NE(std::string(e.what()).find("reduced as 'variant tracked; modes 4', expected "
+                                         "'variant untracked; modes 4'"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(ReducedModelFileTest, OtherSoftwareVersionIsStaleUnlessAllowed) {

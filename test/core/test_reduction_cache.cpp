@@ -43,8 +43,9 @@ TEST(ReductionCache, FileNameNamesVariantDescriptionAndOptions) {
   }
 }
 
-// End to end: default options, then fewer MoGeSeC masters (another model, not the cached one),
-// then the same again (now from its own cache, equal to what was computed).
+// End to end: default options, then fewer MoGeSeC masters (another model, not the cached one,
+// even when the default's file is copied to its name), then the same again (now from its own
+// cache, equal to what was computed).
 TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("tvd_cache_test_" + std::to_string(::getpid()));
@@ -54,10 +55,19 @@ TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
   const auto defaults = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), {}, &first);
   VehicleReductionOptions fewer;
   fewer.mogesec_masters = 4;
+  const std::string hash =
+      tvd::vehicle::descriptionHashHex(tvd::vehicle::loadVehicleDescription(kVehicle));
+  std::filesystem::copy_file(first.cache_file,
+                             tvd::reduction::reducedModelCachePath(dir.string(), variant, hash, fewer));
   const auto computed = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &second);
   const auto cached = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
   EXPECT_FALSE(first.from_cache);
   EXPECT_FALSE(second.from_cache) << second.cache_note;
+  EXPECT_NE(second.cache_note.find("stale cache: reduced as 'variant untracked; rule mac; "
+                                   "global_modes 40; band_hz 30; mac_threshold 0.69999999999999996; "
+                                   "mogesec_masters 9; modes 0', expected"),
+            std::string::npos)
+      << second.cache_note;
   EXPECT_TRUE(third.from_cache) << third.cache_note;
   EXPECT_NE(first.cache_file, second.cache_file);
   EXPECT_EQ(second.cache_file, third.cache_file);

@@ -45,6 +45,9 @@ struct ReducedModel {
   std::vector<SelectedMode> selected_modes;
   std::string damping;           ///< describe(DampingOptions)
   std::string description_hash;  ///< hash of the description it was built from (caller's)
+  /// What was reduced and how (caller's), e.g. "variant tracked; rule mac; ...": one description
+  /// gives a model per variant and per reduction option, and a cache must serve only its own.
+  std::string reduction;
   std::string version;           ///< softwareVersion() at creation
   std::string created_utc;       ///< "2024-05-01T12:00:00Z"
   std::string creator;           ///< free text, e.g. "tvd reduce"
@@ -61,6 +64,7 @@ struct ReductionRequest {
   std::vector<OutputDof> outputs;     ///< rows of H
   ModeSelection selection;            ///< recorded with the model for the report
   std::string description_hash;
+  std::string reduction;  ///< ReducedModel::reduction
   std::string creator;
   /// Where each road input reads the road [m] (x forward), one per input; empty: its node's x.
   /// (A vehicle's pad ground nodes read it at their pad's centre, vehicle_model.h.)

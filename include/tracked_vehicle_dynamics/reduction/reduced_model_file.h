@@ -4,6 +4,7 @@
 //   format_version                 1x1      layout version (kReducedModelFormatVersion)
 //   version                        char     software version that wrote it (softwareVersion())
 //   description_hash               char     hash of the vehicle description (the caller's)
+//   reduction                      char     variant and reduction options (the caller's)
 //   created_utc, creator, damping_model  char
 //   full_dof_count                 1x1      active DOFs of the full model
 //   M_R, K_R, C_R                  k x k    reduced mass, stiffness, damping (paper eq. 9)
@@ -34,7 +35,7 @@ namespace tracked_vehicle_dynamics {
 namespace reduction {
 
 /// Layout version of the file above; a file with another one is stale.
-constexpr int kReducedModelFormatVersion = 1;
+constexpr int kReducedModelFormatVersion = 2;
 
 /// A cached reduced model that cannot be used: missing, unreadable, truncated, corrupted,
 /// inconsistent, or built from another description or software version. The caller rebuilds it.
@@ -47,6 +48,8 @@ struct ReducedModelLoadOptions {
   /// Refuse a file written by another software version: the reduction or the assembly may have
   /// changed even when the description did not.
   bool require_same_version = true;
+  /// When not empty, the file's `reduction` must equal it (same variant and reduction options).
+  std::string expected_reduction;
   /// Relative symmetry tolerance of M_R, K_R, C_R: max|A - A^T| <= tol * max|A|.
   double symmetry_tolerance = 1e-9;
 };

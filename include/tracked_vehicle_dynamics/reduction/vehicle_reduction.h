@@ -31,6 +31,10 @@ struct VehicleReductionOptions {
   int mode_count = 0;              ///< fixed-interface modes; 0: twice the selected global modes
 };
 
+/// The variant and every reduction option as text, e.g. "variant tracked; rule mac; global_modes
+/// 40; ...": recorded in the model (ReducedModel::reduction) and required of a cached one.
+std::string reductionKey(vehicle::Variant variant, const VehicleReductionOptions& options);
+
 /// Output rows of every reduced vehicle model, in this order:
 ///   "hull ux", "hull uy", "hull uz", "hull rx", "hull ry", "hull rz"   (hull CoG node)
 ///   "<wheel name> uz" for every road wheel (e.g. "road_wheel_left_1 uz")
