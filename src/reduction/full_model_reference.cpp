@@ -34,7 +34,8 @@ fem::ModalBasis modesUpTo(const fem::System& system, double limit_hz, int max_mo
     if (count >= max_modes || count >= n - 1)
       throw InputError("full-model reference: more than " + std::to_string(count) +
                        " modes below " + std::to_string(limit_hz) +
-                       " Hz; lower max_frequency_hz or raise max_modes");
+                       " Hz; lower the frequency limit (tvd: --max-mode-hz), the modes above it "
+                       "enter statically");
     count = static_cast<int>(std::min<DofIndex>(std::min(2 * count, max_modes), n - 1));
   }
 }

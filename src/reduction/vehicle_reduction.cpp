@@ -275,7 +275,8 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
     std::filesystem::create_directories(cache_dir);
     saveReducedModel(model, path.string());
   } catch (const std::exception& e) {
-    rep.cache_note += std::string("; not cached: ") + e.what();
+    rep.cache_error = e.what();
+    rep.cache_note += "; not cached: " + rep.cache_error;
   }
   rep.from_cache = false;
   rep.total_seconds = secondsSince(start);

@@ -38,14 +38,20 @@ void toMsg(const TerrainPatch& patch, TerrainProfile* msg) {
       msg->heights.data(), patch.heights.rows(), patch.heights.cols()) = patch.heights;
 }
 
-void toMsg(const std::vector<WheelState>& wheels, double station, double speed, RoadWheels* msg) {
+void toMsg(const std::vector<WheelState>& wheels, double station, double speed, RoadWheels* msg,
+           const std::string& name_prefix) {
   msg->station = station;
   msg->speed = speed;
   msg->wheels.resize(wheels.size());
   for (std::size_t i = 0; i < wheels.size(); ++i) {
     RoadWheelState& out = msg->wheels[i];
-    if (out.name != wheels[i].name)
-      out.name = wheels[i].name;
+    const std::string& name = wheels[i].name;
+    // Compared in place: the node publishes every sample and must not allocate for the names.
+    const bool same = out.name.size() == name_prefix.size() + name.size() &&
+                      out.name.compare(0, name_prefix.size(), name_prefix) == 0 &&
+                      out.name.compare(name_prefix.size(), name.size(), name) == 0;
+    if (!same)
+      out.name = name_prefix + name;
     out.displacement = wheels[i].displacement;
     out.velocity = wheels[i].velocity;
     out.acceleration = wheels[i].acceleration;

@@ -159,6 +159,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   if (p.odom_frame == p.base_frame)
     throw in.error("base_frame", "must differ from ~odom_frame");
   p.publish_points_all = !in.read("points", &p.points, "a list of strings");
+  // <= 0 would make diagnostic_updater publish at every tick (1 kHz).
+  p.diagnostic_period = in.positive("diagnostic_period", p.diagnostic_period, "s");
 
   reduction::VehicleReductionOptions& r = p.reduction_options;
   const std::string rule = in.string("reduction/rule", "mac");

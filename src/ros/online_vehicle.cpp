@@ -106,6 +106,7 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   for (const auto& point : geometry_.points) {
     for (const char* t : kTranslations)
       point_rows_.push_back(outputRow(point.name + " " + t));
+    point_rigid_.push_back(movesWithHull(model.system.output, point.position));
   }
   if (comfort_point_.empty())
     comfort_point_ = "hull";
@@ -121,6 +122,23 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   reset();
   static_outputs_ = simulator_.outputs().segment(disp_offset_, layout.baseCount());
   static_hull_ = hullDisplacement();
+}
+
+bool OnlineVehicle::movesWithHull(const Matrix& output, const Vector3& point) const {
+  // Rigid with the hull: u_p = u_G + theta x r, r = p - p_G, row by row of H (y = H q):
+  // H_px = H_x + r_z H_ry - r_y H_rz, H_py = H_y + r_x H_rz - r_z H_rx,
+  // H_pz = H_z + r_y H_rx - r_x H_ry.
+  constexpr double kRelativeTolerance = 1e-9;
+  const Vector3 r = point - geometry_.cog;
+  const auto hull = [&](int k) { return output.row(hull_rows_[k]); };
+  const std::size_t first = point_rows_.size() - 3;
+  Matrix rigid(3, output.cols()), actual(3, output.cols());
+  rigid << hull(0) + r.z() * hull(4) - r.y() * hull(5), hull(1) + r.x() * hull(5) - r.z() * hull(3),
+      hull(2) + r.y() * hull(3) - r.x() * hull(4);
+  for (int k = 0; k < 3; ++k)
+    actual.row(k) = output.row(point_rows_[first + k]);
+  const double scale = rigid.norm() + actual.norm();
+  return scale > 0.0 && (actual - rigid).norm() <= kRelativeTolerance * scale;
 }
 
 Eigen::Index OnlineVehicle::outputRow(const std::string& name) const {

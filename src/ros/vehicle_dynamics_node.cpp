@@ -21,6 +21,14 @@ using Clock = std::chrono::steady_clock;
 // Throttle period of repeated warnings [s].
 constexpr double kWarnPeriod = 5.0;
 
+// Wall time [s] for which inputs are kept in case simulated time jumps back to them. rosbag
+// play -l publishes a loop's first messages and its first /clock within milliseconds, on
+// separate connections, so either may arrive first.
+constexpr double kRewindWindow = 0.25;
+
+// Publisher queues hold at least this many messages; more when one tick may publish more.
+constexpr std::uint32_t kMinQueue = 10;
+
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -54,11 +62,19 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   publish_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.publish_rate));
   comfort_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.comfort_rate));
 
-  advertise<tf2_msgs::TFMessage>("/tf", 100, &tf_pub_);
-  advertise<geometry_msgs::AccelStamped>("hull/accel", 10, &accel_pub_);
-  advertise<geometry_msgs::TwistStamped>("hull/twist", 10, &twist_pub_);
-  advertise<RoadWheels>("road_wheels", 10, &wheels_pub_);
-  advertise<Comfort>("comfort", 10, &comfort_pub_);
+  // One tick publishes up to max_catch_up_steps_ / publish_every_ samples before roscpp writes
+  // any of them (on real time the tick runs in the network thread that writes them): each
+  // queue holds a whole catch-up, so none is dropped.
+  const auto queue = [this](std::int64_t every) {
+    return static_cast<std::uint32_t>(
+        std::max<std::int64_t>(kMinQueue, (max_catch_up_steps_ + every - 1) / every + 1));
+  };
+  advertise<tf2_msgs::TFMessage>("/tf", std::max<std::uint32_t>(100, queue(publish_every_)),
+                                 &tf_pub_);
+  advertise<geometry_msgs::AccelStamped>("hull/accel", queue(publish_every_), &accel_pub_);
+  advertise<geometry_msgs::TwistStamped>("hull/twist", queue(publish_every_), &twist_pub_);
+  advertise<RoadWheels>("road_wheels", queue(publish_every_), &wheels_pub_);
+  advertise<Comfort>("comfort", queue(comfort_every_), &comfort_pub_);
   reset_service_ = loop_private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
 
   updater_.setHardwareID(report_.cache_file.empty()
@@ -119,13 +135,26 @@ void VehicleDynamicsNode::loadVehicle() {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }
   load_seconds_ = secondsSince(start);
-  ROS_INFO(
-      "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
-      "inputs, %ld outputs (%s)",
-      report_.from_cache ? "loaded" : "built and cached", vehicle::variantName(params_.variant),
-      params_.vehicle.c_str(), load_seconds_, static_cast<long>(model_dofs_),
-      static_cast<long>(model_inputs_), static_cast<long>(model_outputs_),
-      report_.cache_file.c_str());
+  // loadOrReduceVehicle() still builds when the cache cannot be written, and says why.
+  cached_ = report_.from_cache || report_.cache_error.empty();
+  not_cached_reason_ = report_.cache_error;
+  const char* what = report_.from_cache ? "loaded" : cached_ ? "built and cached" : "built";
+  if (cached_) {
+    ROS_INFO(
+        "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+        "inputs, %ld outputs (%s)",
+        what, vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
+        static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+        static_cast<long>(model_outputs_), report_.cache_file.c_str());
+  } else {
+    ROS_WARN(
+        "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+        "inputs, %ld outputs; not cached: %s (%s): the next start builds it again",
+        what, vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
+        static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+        static_cast<long>(model_outputs_), not_cached_reason_.c_str(),
+        report_.cache_file.c_str());
+  }
   if (!report_.cache_note.empty())
     ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
 }
@@ -149,6 +178,24 @@ void VehicleDynamicsNode::setUpFrames() {
       published_points_.push_back(static_cast<std::size_t>(it - geometry.points.begin()));
     }
   }
+  // Points rigid with the hull never move in base_link: /tf_static once, not /tf every sample.
+  std::vector<std::size_t> moving;
+  for (std::size_t i : published_points_)
+    (vehicle_->pointIsRigid(i) ? static_points_ : moving).push_back(i);
+  published_points_ = moving;
+  if (!static_points_.empty()) {
+    std::vector<geometry_msgs::TransformStamped> fixed(static_points_.size());
+    for (std::size_t k = 0; k < static_points_.size(); ++k) {
+      const VehicleGeometry::Body& point = geometry.points[static_points_[k]];
+      fixed[k].header.frame_id = params_.base_frame;
+      fixed[k].child_frame_id = params_.frame_prefix + point.name;
+      RigidPose pose;
+      pose.translation = point.position;
+      toMsg(pose, &fixed[k].transform);
+    }
+    static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
+    static_broadcaster_->sendTransform(fixed);
+  }
   auto& transforms_ = tf_msg_.transforms;
   transforms_.resize(1 + geometry.wheels.size() + published_points_.size());
   transforms_[0].header.frame_id = params_.odom_frame;
@@ -165,13 +212,28 @@ void VehicleDynamicsNode::setUpFrames() {
   accel_msg_.header.frame_id = params_.base_frame;
   twist_msg_.header.frame_id = params_.base_frame;
   wheels_msg_.header.frame_id = params_.base_frame;
+  // The comfort metrics are of the acceleration at the comfort point: its frame when it is
+  // published as one, else the hull's (the "hull" point is the hull CoG, rigid in base_link).
   comfort_msg_.header.frame_id = params_.base_frame;
+  for (const auto* points : {&published_points_, &static_points_}) {
+    for (std::size_t i : *points) {
+      if (geometry.points[i].name == vehicle_->comfortPoint())
+        comfort_msg_.header.frame_id = params_.frame_prefix + geometry.points[i].name;
+    }
+  }
 }
 
 void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     vehicle_->addTerrain(fromMsg(*msg));
     ++events_.patches_accepted;
+    if (use_sim_time_) {
+      const ros::WallTime arrival = ros::WallTime::now();
+      const ros::WallTime oldest = arrival - ros::WallDuration(kRewindWindow);
+      while (!recent_patches_.empty() && recent_patches_.front().arrival < oldest)
+        recent_patches_.pop_front();
+      recent_patches_.push_back({msg, latest_clock_, arrival});
+    }
   } catch (const std::exception& e) {  // InputError, or bad_alloc for an absurd patch
     ++events_.patches_rejected;
     last_patch_error_ = e.what();
@@ -199,13 +261,17 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   }
   vehicle_->setSpeed(v);
   ++events_.speeds_accepted;
+  recent_speed_ = v;
+  recent_speed_arrival_ = ros::WallTime::now();
 }
 
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
   ROS_INFO("vehicle_dynamics_node: reset requested: back to static equilibrium at station 0");
+  // Not published here: the current sample's stamp is already out, and tf2 discards a second
+  // transform at the same stamp (TF_REPEATED_DATA). The next published sample shows the reset.
   restart();
-  if (clock_started_)
-    publishState();
+  recent_patches_.clear();
+  recent_speed_arrival_ = ros::WallTime();
   return true;
 }
 
@@ -238,8 +304,38 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
                     (sample_time_ - now).toSec());
   restart();
   sample_time_ = now;
+  reapplyRecentInputs(now);
   publishState();
   updater_.force_update();
+}
+
+void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
+  // A patch of the new time (a bag's next loop) that arrived before the jump was stamped near
+  // `now`, long before the old time it arrived at; one of the old time was stamped near the
+  // old time. Unstamped patches cannot be told apart and are not re-applied.
+  const ros::WallTime oldest = ros::WallTime::now() - ros::WallDuration(kRewindWindow);
+  for (const RecentPatch& recent : recent_patches_) {
+    const ros::Time& stamp = recent.msg->header.stamp;
+    if (recent.arrival < oldest || stamp.isZero())
+      continue;
+    if (std::abs((stamp - now).toSec()) >= std::abs((stamp - recent.ros_arrival).toSec()))
+      continue;
+    try {
+      vehicle_->addTerrain(fromMsg(*recent.msg));
+      ++events_.patches_reapplied;
+    } catch (const std::exception& e) {  // accepted once, so not expected
+      ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: terrain patch rejected: %s",
+                        e.what());
+    }
+  }
+  recent_patches_.clear();
+  // std_msgs/Float64 carries no stamp: the last speed is taken if it arrived just before the
+  // jump (rosbag sends a loop's first speed with its first patches).
+  if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
+    vehicle_->setSpeed(recent_speed_);
+    ++events_.speeds_reapplied;
+  }
+  recent_speed_arrival_ = ros::WallTime();
 }
 
 ros::Time VehicleDynamicsNode::now() const {
@@ -402,7 +498,7 @@ void VehicleDynamicsNode::publishState() {
   }
   if (wheels) {
     wheels_msg_.header.stamp = sample_time_;
-    toMsg(v.wheels(), v.station(), v.speed(), &wheels_msg_);
+    toMsg(v.wheels(), v.station(), v.speed(), &wheels_msg_, params_.frame_prefix);
     wheels_pub_.publisher.publish(wheels_msg_);
   }
 }
@@ -457,6 +553,8 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("skipped time [s]", events_.skipped_steps * period);
   status.add("time jumps back (total)", events_.time_jumps_back);
   status.add("resets (total)", events_.resets);
+  status.add("patches re-applied after a jump back (total)", events_.patches_reapplied);
+  status.add("speeds re-applied after a jump back (total)", events_.speeds_reapplied);
   status.add("non-finite resets (total)", events_.diverged);
   status.add("step time mean [us]", step_window_.mean() * 1e6);
   status.add("step time p99 [us]", step_p99 * 1e6);
@@ -514,8 +612,14 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
 }
 
 void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  status.summary(diagnostic_msgs::DiagnosticStatus::OK,
-                 report_.from_cache ? "loaded from cache" : "built and cached");
+  if (report_.from_cache) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "loaded from cache");
+  } else if (cached_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "built and cached");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "built; not cached: " + not_cached_reason_);
+  }
   status.add("vehicle file", params_.vehicle);
   status.add("vehicle", vehicle_->geometry().vehicle_name);
   status.add("variant", vehicle::variantName(params_.variant));
@@ -528,6 +632,7 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
   status.add("method", methodName(params_.vehicle_options.method));
   status.add("hold", holdName(params_.vehicle_options.hold));
   status.add("cache file", report_.cache_file);
+  status.add("cached", cached_);
   status.add("cache note", report_.cache_note);
   status.add("load time [s]", load_seconds_);
   status.add("comfort point", vehicle_->comfortPoint());

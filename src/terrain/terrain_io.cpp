@@ -1,7 +1,6 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -13,6 +12,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/csv_reader.h"
+#include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
@@ -202,9 +202,7 @@ Terrain loadTerrainYaml(const std::string& path) {
 }
 
 Terrain loadTerrain(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = io::lowerExtension(path);
   if (extension == ".csv") return loadTerrainCsv(path);
   if (extension == ".yaml" || extension == ".yml") return loadTerrainYaml(path);
   throw InputError(path + ": unknown terrain file type '" + extension +
@@ -214,7 +212,7 @@ Terrain loadTerrain(const std::string& path) {
 Terrain loadTrack(const std::string& track, const TrackOptions& options) {
   const std::vector<std::string> names = trackNames();
   if (std::find(names.begin(), names.end(), track) != names.end()) return makeTrack(track, options);
-  const std::string extension = std::filesystem::path(track).extension().string();
+  const std::string extension = io::lowerExtension(track);
   if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
     std::string known;
     for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;

@@ -3,8 +3,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "tracked_vehicle_dynamics/io/file_type.h"
+
+#include <unistd.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <string>
+#include <vector>
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -30,6 +38,55 @@ inline CLI::Validator nonNegativeNumber() {
         return std::string();
       },
       "NONNEGATIVE");
+}
+
+/// A number in [lo, hi] (CLI::Range lets NaN through and prints its bounds to 17 digits).
+inline CLI::Validator numberIn(double lo, double hi, const std::string& unit = "") {
+  return CLI::Validator(
+      [lo, hi, unit](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v) || !(v >= lo && v <= hi)) {
+          char bounds[80];
+          std::snprintf(bounds, sizeof(bounds), "[%.16g, %.16g]", lo, hi);
+          return "must be a number in " + std::string(bounds) + (unit.empty() ? "" : " " + unit) +
+                 ", got " + text;
+        }
+        return std::string();
+      },
+      "NUMBER");
+}
+inline CLI::Validator finiteNumber() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        double v = 0.0;
+        if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v))
+          return "must be a finite number, got " + text;
+        return std::string();
+      },
+      "FINITE");
+}
+
+/// An output file, checked before any work: one of `extensions` (".csv", any case) and in a
+/// directory that exists and is writable.
+inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
+  return CLI::Validator(
+      [extensions](std::string& text) -> std::string {
+        const std::filesystem::path path(text);
+        const std::string ext = io::lowerExtension(text);
+        std::string allowed;
+        for (const std::string& e : extensions) allowed += (allowed.empty() ? "" : " or ") + e;
+        if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
+          return "'" + text + "' must end in " + allowed;
+        const std::filesystem::path dir =
+            path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+        std::error_code ec;
+        if (!std::filesystem::is_directory(dir, ec))
+          return "'" + text + "': the directory " + dir.string() + " does not exist";
+        if (::access(dir.c_str(), W_OK) != 0)
+          return "'" + text + "': the directory " + dir.string() + " is not writable";
+        return std::string();
+      },
+      "FILE");
 }
 
 void registerModesCommand(CLI::App& app);

@@ -192,14 +192,18 @@ void registerFrfCommand(CLI::App& app) {
   cmd->add_option("--model", opt->model, "reduced (Craig-Bampton, cached) | full (FE modes + static residual)")
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
-  cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)");
-  cmd->add_option("--step-hz", opt->step_hz, "frequency step [Hz] (default 0.05)");
+  cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)")->check(positiveNumber());
+  cmd->add_option("--step-hz", opt->step_hz, "frequency step [Hz] (default 0.05)")->check(positiveNumber());
+  // Up to 100 Hz (twice the FRF band): the modes above enter statically, and above 100 Hz the
+  // tracked model's chain-link modes make the Lanczos run take minutes (200 Hz: > 4 min).
   CLI::Option* max_mode =
-      cmd->add_option("--max-mode-hz", opt->max_mode_hz, "full model: dynamic modes up to this frequency [Hz] (default 100)")
-          ->check(positiveNumber());
+      cmd->add_option("--max-mode-hz", opt->max_mode_hz,
+                      "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
+          ->check(positiveNumber() & numberIn(0.0, 100.0, "Hz"));
   cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
   cmd->add_option("--out", opt->out_file,
-                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and <output>_phase_deg");
+                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and <output>_phase_deg")
+      ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt, max_mode]() {
     if (max_mode->count() > 0 && opt->model != "full")

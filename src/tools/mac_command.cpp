@@ -158,7 +158,7 @@ void registerMacCommand(CLI::App& app) {
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--count,-n", opt->count, "modes of each variant (paper: 40)")->check(CLI::Range(1, 2000));
+  cmd->add_option("--count,-n", opt->count, "modes of each variant (paper: 40)")->check(CLI::Range(1, 500));
   cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match (paper: 0.7)")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")

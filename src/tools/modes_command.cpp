@@ -48,6 +48,12 @@ void runModel(const ModesOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const fem::Model model = io::loadModelYaml(opt.model_file);
   const fem::System sys = fem::assemble(model);
+  // A free DOF without mass makes M singular: its frequency would be infinite.
+  const Vector mass_diagonal = sys.mass.diagonal();
+  for (DofIndex i = 0; i < sys.size(); ++i)
+    if (!(mass_diagonal(i) > 0.0))
+      throw InputError(opt.model_file + ": " + sys.dofs.label(i) +
+                       " is free but has no mass or inertia; add a mass or fix the DOF");
   const double build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fem::ModalRequest request;
@@ -134,12 +140,16 @@ void registerModesCommand(CLI::App& app) {
                                   "vehicle description (e.g. config/vehicles/paper_vehicle.yaml)")
                       ->check(CLI::ExistingFile);
   model->excludes(vehicle);
-  cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
-      ->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--count,-n", opt->count, "number of modes")->check(CLI::Range(1, 100000));
-  cmd->add_option("--max-frequency", opt->max_frequency_hz,
-                  "return every mode below this frequency [Hz] (at most --count; --model only)")
-      ->check(nonNegativeNumber());
+  CLI::Option* variant = cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
+                             ->check(CLI::IsMember({"untracked", "tracked"}));
+  // At most 500: a Lanczos run for more modes than that takes minutes on the tracked model.
+  cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")->check(CLI::Range(1, 500));
+  CLI::Option* max_frequency =
+      cmd->add_option("--max-frequency", opt->max_frequency_hz,
+                      "return every mode below this frequency [Hz] (at most --count; --model only)")
+          ->check(nonNegativeNumber());
+  max_frequency->needs(model);
+  variant->needs(vehicle);
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");
   cmd->add_option("--out", opt->out_dir, "write modes.csv, shapes.csv and modes.mat to this directory");
   cmd->callback([opt, model, vehicle]() {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 
 namespace tracked_vehicle_dynamics {
@@ -78,7 +79,7 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
     throw std::logic_error("writeTable: " + std::to_string(names.size()) + " names for " +
                            std::to_string(data.cols()) + " columns");
   const std::filesystem::path file(path);
-  if (file.extension() == ".mat") {
+  if (io::lowerExtension(path) == ".mat") {
     io::MatWriter mat(path);
     for (const auto& [name, text] : metadata) mat.writeString(name, text);
     for (std::size_t c = 0; c < names.size(); ++c) mat.writeMatrix(names[c], data.col(static_cast<Eigen::Index>(c)));

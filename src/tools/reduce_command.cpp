@@ -115,14 +115,14 @@ void registerReduceCommand(CLI::App& app) {
   cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--rule", opt->rule, "mode selection: mac (paper) | band")->check(CLI::IsMember({"mac", "band"}));
   cmd->add_option("--band", opt->reduction.band_hz, "bandwidth of interest [Hz]")->check(positiveNumber());
-  cmd->add_option("--global-modes", opt->reduction.global_modes, "modes per variant for the MAC")->check(CLI::Range(1, 2000));
-  cmd->add_option("--masters", opt->reduction.mogesec_masters, "MoGeSeC master DOFs (paper: 9)")->check(CLI::Range(0, 10000));
-  cmd->add_option("--modes", opt->reduction.mode_count, "fixed-interface modes (0: as many as selected)")->check(CLI::Range(0, 10000));
+  cmd->add_option("--global-modes", opt->reduction.global_modes, "modes per variant for the MAC")->check(CLI::Range(1, 500));
+  cmd->add_option("--masters", opt->reduction.mogesec_masters, "MoGeSeC master DOFs (paper: 9)")->check(CLI::Range(0, 1000));
+  cmd->add_option("--modes", opt->reduction.mode_count, "fixed-interface modes (0: twice the selected)")->check(CLI::Range(0, 1000));
   CLI::Option* threshold =
       cmd->add_option("--mac-threshold", opt->reduction.mac_threshold, "MAC threshold (paper: 0.7)")
           ->check(CLI::Range(0.0, 1.0));
   cmd->add_flag("--json", opt->json, "print a JSON document");
-  cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)");
+  cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")->check(outputFile({".mat"}));
   cmd->callback([opt, threshold]() {
     if (threshold->count() > 0 && opt->rule != "mac")
       throw InputError("reduce: --mac-threshold applies to --rule mac only");

@@ -124,7 +124,9 @@ void registerTerrainCommand(CLI::App& app) {
         cmd->add_option("--width", opt->width, "random road: width [m] (default 5)")->check(positiveNumber()),
         cmd->add_option("--spacing", opt->spacing, "random road: station step [m] (default 0.05)")
             ->check(positiveNumber()),
-        cmd->add_option("--seed", opt->seed, "random road: seed of the phases (default 1)"),
+        // Up to 2^53: every seed is then exact in the JSON summary (a double in most readers).
+        cmd->add_option("--seed", opt->seed, "random road: seed of the phases, 0 .. 2^53 (default 1)")
+            ->check(numberIn(0.0, 9007199254740992.0)),
         cmd->add_flag("--independent-sides", opt->independent_sides,
                       "random road: left and right halves independent (default: one profile across the width)"),
         cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m] (default 5)")

@@ -1,5 +1,7 @@
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -249,6 +251,8 @@ void readField(const io::YamlValue& section, const Field& f,
       for (const io::YamlValue& e : v.elements("a list of integers")) {
         const std::int64_t n = e.asInteger();
         checkRange(e, static_cast<double>(n), f.range);
+        if (n > 1000000)
+          e.fail("value " + std::to_string(n) + " is implausibly large");
         ns.push_back(static_cast<int>(n));
       }
       *static_cast<std::vector<int>*>(f.target) = ns;
@@ -352,11 +356,55 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   for (double x : d.return_rollers.x)
     c.require(x > d.sprocket.centre_x, "return_rollers.x",
               "roller at x = " + brief(x) + " m lies behind the sprocket");
+  std::vector<double> rollers = d.return_rollers.x;
+  std::sort(rollers.begin(), rollers.end());
+  for (std::size_t i = 1; i < rollers.size(); ++i)
+    c.require(rollers[i] - rollers[i - 1] >= 2.0 * d.return_rollers.radius, "return_rollers.x",
+              "rollers at x = " + brief(rollers[i - 1]) + " and " + brief(rollers[i]) +
+                  " m overlap (radius " + brief(d.return_rollers.radius) + " m)");
+  // Geometry a builder would accept but no vehicle has: each of these once gave a model.
+  c.require(2.0 * d.road_wheel.radius < g.axle_spacing, "road_wheel.radius",
+            "wheels of radius " + brief(d.road_wheel.radius) + " m overlap at the axle spacing " +
+                brief(g.axle_spacing) + " m");
+  c.require(wheelbase < d.hull.length, "hull.length",
+            brief(d.hull.length) + " m is shorter than the wheelbase " + brief(wheelbase) + " m");
+  c.require(g.track_centre_distance < d.hull.width, "hull.width",
+            brief(d.hull.width) + " m is narrower than the track centre distance " +
+                brief(g.track_centre_distance) + " m");
+  // Arm pivot z_p = z_w + a sin(beta) (vehicle_model.cpp) must be above the ground.
+  const double wheel_z = t.upper_surface_height + d.road_wheel.radius;
+  const double pivot_z = wheel_z + d.suspension.arm_length * std::sin(d.suspension.arm_angle);
+  c.require(pivot_z > 0.0, "suspension.arm_angle",
+            "the arm pivot lies below the ground (z = " + brief(pivot_z) + " m)");
+  c.require(d.suspension.arm_length < d.hull.length, "suspension.arm_length",
+            "an arm of " + brief(d.suspension.arm_length) + " m is longer than the hull");
   std::set<std::string> names;
   for (const NamedPoint& p : d.named_points) {
+    const std::string key = "named_points." + p.name;
     c.require(!p.name.empty(), "named_points", "a point has no name");
-    c.require(names.insert(p.name).second, "named_points." + p.name, "name given twice");
-    c.require(p.position.allFinite(), "named_points." + p.name, "non-finite position");
+    c.require(names.insert(p.name).second, key, "name given twice");
+    // The name becomes CSV columns, MAT variables ("<name>_accel_z_m_s2", at most 63 characters)
+    // and a tf frame, next to the hull's and the road wheels' own.
+    const bool identifier =
+        std::isalpha(static_cast<unsigned char>(p.name[0])) &&
+        std::all_of(p.name.begin(), p.name.end(), [](char ch) {
+          return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+        });
+    c.require(identifier && p.name.size() <= 40, key,
+              "a name must start with a letter, hold only letters, digits and '_', and have at "
+              "most 40 characters");
+    c.require(p.name != "hull" && p.name != "base_link" && p.name != "odom" &&
+                  p.name.rfind("road_wheel_", 0) != 0,
+              key, "the name is reserved (hull, base_link, odom, road_wheel_*)");
+    c.require(p.position.allFinite(), key, "non-finite position");
+    // Rigid with the hull: inside its envelope, with 1 m to spare (masts, bumpers).
+    const Vector3& x = p.position;
+    c.require(std::abs(x.x()) <= 0.5 * d.hull.length + 1.0 &&
+                  std::abs(x.y()) <= 0.5 * d.hull.width + 1.0 && x.z() >= -1.0 &&
+                  x.z() <= d.hull.height + 1.0,
+              key,
+              "the point lies more than 1 m outside the hull (" + brief(d.hull.length) + " x " +
+                  brief(d.hull.width) + " x " + brief(d.hull.height) + " m)");
   }
 }
 
@@ -387,6 +435,7 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
 
   VehicleDescription d;
   d.sources.clear();
+  d.origin = file;
   d.name = root["name"].asString();
   if (d.name.empty())
     root["name"].fail("name must not be empty");

@@ -60,7 +60,7 @@ class Builder {
   }
 
   VehicleModel build() {
-    validateDescription(d_, "vehicle description '" + d_.name + "'");
+    validateDescription(d_, d_.origin);
     out_.layout.pad_springs = calibrateTrackAssembly(d_.track_assembly);
     addTrackAssemblyProperties(out_.model, d_.track_assembly);
     addHull();
@@ -435,7 +435,16 @@ Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::Dof
 }
 
 VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant) {
-  return Builder(description, variant).build();
+  // The builder's geometric checks (the chain path around sprocket and idler) name the key;
+  // the file they came from is prefixed here, once.
+  try {
+    return Builder(description, variant).build();
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.rfind(description.origin + ":", 0) == 0)
+      throw;
+    throw InputError(description.origin + ": " + what);
+  }
 }
 
 }  // namespace vehicle

@@ -111,6 +111,26 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "ties.road_input_station", "unknown road input station 'tyre' (pad_centre or sole)"},
       {"  mass: {value: 27, unit: kg, source: \"Table 1, track assembly mass m_t\"}",
        "  mass: {value: 27, unit: kg, source: \"\"}", "track_assembly.mass.source", "source"},
+      // Geometry that once built a model no vehicle has.
+      {"  radius: {value: 0.34, unit: m,", "  radius: {value: 0.4, unit: m,", "road_wheel.radius",
+       "overlap at the axle spacing 0.78 m"},
+      {"  length: {value: 7.6, unit: m,", "  length: {value: 4, unit: m,", "hull.length",
+       "shorter than the wheelbase 4.68 m"},
+      {"  arm_angle: {value: 9, unit: deg,", "  arm_angle: {value: -89, unit: deg,",
+       "suspension.arm_angle", "below the ground"},
+      {"damped_stations: {value: [],", "damped_stations: {value: [4294967297],",
+       "damping.damped_stations", "implausibly large"},
+      {"  x: {value: [], unit: m, source: \"estimated: none;", "  x: {value: [0, 0.2], unit: m, source: \"estimated: none;",
+       "return_rollers.x", "overlap (radius 0.15 m)"},
+      // Named points become CSV columns, MAT variables and tf frames.
+      {"  crew_seat: {value:", "  \"crew,seat\": {value:", "named_points.crew,seat",
+       "must start with a letter"},
+      {"  crew_seat: {value:", "  1seat: {value:", "named_points.1seat", "must start with a letter"},
+      {"  crew_seat: {value:", "  hull: {value:", "named_points.hull", "reserved"},
+      {"  crew_seat: {value:", "  road_wheel_left_9: {value:", "named_points.road_wheel_left_9",
+       "reserved"},
+      {"  crew_seat: {value: [2.4, 0.55, 1.15]", "  crew_seat: {value: [1e300, 0.55, 1.15]",
+       "named_points.crew_seat", "more than 1 m outside the hull (7.6 x 3.42 x 2.2 m)"},
   };
   for (const Case& c : cases) {
     const std::string message = loadError(replaced(text, c.from, c.to));
@@ -131,6 +151,16 @@ TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
     FAIL() << "expected InputError";
   } catch (const tvd::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("suspension.contact_stiffness"), std::string::npos);
+  }
+  // The builder's own geometric checks name the file the description came from.
+  d = veh::VehicleDescription{};
+  d.origin = "mine.yaml";
+  d.sprocket.centre_x = 0.0;
+  try {
+    veh::buildVehicleModel(d, veh::Variant::Tracked);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("mine.yaml: sprocket.centre_x: ", 0), 0u) << e.what();
   }
   EXPECT_EQ(veh::parseVariant("tracked"), veh::Variant::Tracked);
   EXPECT_THROW(veh::parseVariant("wheeled"), tvd::InputError);

@@ -1,7 +1,12 @@
 // rostest tier 2: bad input keeps the node alive, publishing finite values, with a diagnostics
-// entry for each kind; the loop holds its rate (node_bad_input.test, real time).
+// entry for each kind; the loop holds its rate (node_bad_input.test, real time). A bad parameter
+// stops a second node at once with one FATAL line naming it.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
 #include <limits>
 
 #include <geometry_msgs/AccelStamped.h>
@@ -143,6 +148,67 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
             static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
+}
+
+struct NodeRun {
+  int exit_status = -1;  // -1: killed or not exited
+  std::string output;    // stdout and stderr
+};
+
+/// Runs vehicle_dynamics_node with `arguments` until it exits (at most `timeout` seconds). The
+/// node is the one beside this test executable (both in the devel space's lib/<package>; rosrun
+/// refuses to choose when several devel spaces hold the package).
+NodeRun runNode(const std::string& arguments, int timeout) {
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const std::string node = self.substr(0, self.rfind('/') + 1) + "vehicle_dynamics_node";
+  const std::string command =
+      "timeout " + std::to_string(timeout) + " " + node + " " + arguments + " 2>&1";
+  NodeRun run;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr)
+    return run;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe) != nullptr)
+    run.output += buffer;
+  const int status = pclose(pipe);
+  if (WIFEXITED(status))
+    run.exit_status = WEXITSTATUS(status);
+  return run;
+}
+
+// ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.
+TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  int index = 0;
+  for (const std::string value : {"0", "-1", "nan", "inf"}) {
+    SCOPED_TRACE("~diagnostic_period " + value);
+    const std::string name = "bad_diagnostic_period_" + std::to_string(index++);
+    const NodeRun run = runNode("__name:=" + name + " _vehicle:=" + vehicle +
+                                    " _cache_dir:=" + cache_dir + " _diagnostic_period:=" + value,
+                                timeout);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("/" + name + "/diagnostic_period: must be"), std::string::npos)
+        << run.output;
+  }
+}
+
+// An unwritable ~cache_dir does not stop the node (the model is built), but it must not be
+// reported as cached: a WARN says "not cached" and why.
+TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  // The node runs until the timeout; the WARN goes to stderr, unbuffered.
+  const NodeRun run = runNode("__name:=unwritable_cache _vehicle:=" + vehicle +
+                                  " _variant:=untracked _cache_dir:=/proc/tvd_no_cache",
+                              timeout);
+  EXPECT_NE(run.output.find("WARN"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("not cached: "), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("built and cached"), std::string::npos) << run.output;
 }
 
 }  // namespace

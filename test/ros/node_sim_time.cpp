@@ -1,12 +1,15 @@
 // rostest tier 2 on simulated time (node_sim_time.test, use_sim_time): the test owns /clock. The
 // node steps exactly as the clock advances (every fixed step, caught up when the clock moves in
 // bursts), resynchronises after a jump longer than ~catch_up_limit, and resets when time goes
-// backwards (a bag loop) — each with a diagnostics entry, always publishing finite values.
+// backwards (a bag loop) — each with a diagnostics entry, always publishing finite values. No
+// stamp is published twice in a row (~reset included: tf2 would drop the second as
+// TF_REPEATED_DATA).
 #include <gtest/gtest.h>
 
 #include <rosgraph_msgs/Clock.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
+#include <tf2_msgs/TFMessage.h>
 
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
@@ -24,16 +27,30 @@ class NodeSimTime : public ::testing::Test {
   NodeSimTime() : private_nh_("~"), diagnostics_(nh_) {
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
     wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeSimTime::onWheels, this);
+    tf_sub_ = nh_.subscribe("/tf", 10000, &NodeSimTime::onTf, this);
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10, true);
   }
 
   void onWheels(const RoadWheels::ConstPtr& msg) {
+    if (messages_ > 0 && msg->header.stamp == last_.header.stamp)
+      ++repeated_wheel_stamps_;
     last_ = *msg;
     ++messages_;
     for (const auto& w : msg->wheels) {
       if (!std::isfinite(w.displacement) || !std::isfinite(w.acceleration))
         ++non_finite_;
+    }
+  }
+
+  void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
+    for (const auto& t : msg->transforms) {
+      if (t.child_frame_id != "base_link")
+        continue;
+      if (tf_messages_ > 0 && t.header.stamp == last_tf_stamp_)
+        ++repeated_tf_stamps_;
+      last_tf_stamp_ = t.header.stamp;
+      ++tf_messages_;
     }
   }
 
@@ -52,9 +69,11 @@ class NodeSimTime : public ::testing::Test {
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
   ros::Publisher clock_pub_, terrain_pub_, speed_pub_;
-  ros::Subscriber wheels_sub_;
+  ros::Subscriber wheels_sub_, tf_sub_;
   RoadWheels last_;
   std::size_t messages_ = 0, non_finite_ = 0;
+  ros::Time last_tf_stamp_;
+  std::size_t tf_messages_ = 0, repeated_wheel_stamps_ = 0, repeated_tf_stamps_ = 0;
 };
 
 TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
@@ -119,12 +138,20 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   t += ros::Duration(0.02);
   ASSERT_TRUE(advanceTo(t));
   ASSERT_GT(last_.station, 0.0);
+  const std::size_t before_reset = messages_;
   std_srvs::Empty reset;
   ASSERT_TRUE(ros::service::call("/vehicle_dynamics/reset", reset));
+  test::spinFor(0.2);  // anything the reset publishes arrives
+  // The reset state goes out with the next sample, at a new stamp; nothing is published at the
+  // stamp already used.
+  EXPECT_EQ(messages_, before_reset);
   t += ros::Duration(0.001);
   ASSERT_TRUE(advanceTo(t));
   EXPECT_EQ(last_.station, 0.0);
   EXPECT_EQ(last_.speed, 0.0);
+  EXPECT_EQ(repeated_wheel_stamps_, 0u) << "road_wheels published a stamp twice in a row";
+  EXPECT_GT(tf_messages_, 0u);
+  EXPECT_EQ(repeated_tf_stamps_, 0u) << "/tf published base_link twice at one stamp";
 
   EXPECT_EQ(non_finite_, 0u);
   t += ros::Duration(2.0);  // let the diagnostics period pass on simulated time

@@ -26,13 +26,23 @@ class NodeStatic : public ::testing::Test {
  protected:
   NodeStatic() : private_nh_("~"), diagnostics_(nh_) {
     tf_sub_ = nh_.subscribe("/tf", 1000, &NodeStatic::onTf, this);
+    tf_static_sub_ = nh_.subscribe("/tf_static", 10, &NodeStatic::onTfStatic, this);
     wheels_sub_ = nh_.subscribe("road_wheels", 1000, &NodeStatic::onWheels, this);
+    comfort_sub_ = nh_.subscribe<Comfort>(
+        "comfort", 10, [this](const Comfort::ConstPtr& msg) { comfort_frame_ = msg->header.frame_id; });
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
   }
 
+  void onTfStatic(const tf2_msgs::TFMessage::ConstPtr& msg) {
+    for (const auto& t : msg->transforms) {
+      parents_[t.child_frame_id] = t.header.frame_id;
+      static_positions_[t.child_frame_id] = fromMsg(t.transform).translation;
+    }
+  }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
     for (const auto& t : msg->transforms) {
       parents_[t.child_frame_id] = t.header.frame_id;
+      on_tf_.insert(t.child_frame_id);
       if (collecting_ && t.child_frame_id == "base_link") {
         poses_.push_back({t.header.stamp, fromMsg(t.transform)});
       }
@@ -50,9 +60,12 @@ class NodeStatic : public ::testing::Test {
 
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
-  ros::Subscriber tf_sub_, wheels_sub_;
+  ros::Subscriber tf_sub_, tf_static_sub_, wheels_sub_, comfort_sub_;
+  std::string comfort_frame_;
   ros::Publisher terrain_pub_;
   std::map<std::string, std::string> parents_;
+  std::set<std::string> on_tf_;
+  std::map<std::string, Vector3> static_positions_;
   std::vector<TfSample> poses_;
   bool collecting_ = false;
   std::size_t wheel_messages_ = 0;
@@ -81,6 +94,21 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
     EXPECT_EQ(parents_[frame], "base_link") << frame;
   }
   EXPECT_EQ(parents_.size(), expected_frames.size() + 1) << "unexpected frames";
+  // The named points are rigid with the hull: on /tf_static at their description position, never
+  // on /tf.
+  std::vector<std::string> static_frames;
+  ASSERT_TRUE(private_nh_.getParam("static_frames", static_frames));
+  const auto description =
+      vehicle::loadVehicleDescription(test::requiredParam<std::string>(private_nh_, "vehicle"));
+  for (const std::string& frame : static_frames) {
+    EXPECT_EQ(on_tf_.count(frame), 0u) << frame << " is published on /tf at every sample";
+    ASSERT_EQ(static_positions_.count(frame), 1u) << frame << " not on /tf_static";
+    for (const auto& point : description.named_points) {
+      if (point.name == frame) {
+        EXPECT_EQ(static_positions_[frame], point.position) << frame;
+      }
+    }
+  }
 
   // Static equilibrium: constant pose, wheels at their static position, no travel.
   ASSERT_GT(poses_.size(), 100u);
@@ -106,6 +134,9 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   EXPECT_NEAR(poses_.back().pose.rotation.angularDistance(expected.rotation), 0.0, tolerance);
   // The hull sags under gravity.
   EXPECT_LT(expected.translation.z(), 0.0);
+
+  // The comfort metrics are stamped in the frame of the point they are taken at.
+  EXPECT_EQ(comfort_frame_, "crew_seat");
 
   // Diagnostics: every task reports; the model is described.
   ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": model"); }, 5.0));

@@ -115,6 +115,25 @@ TEST(RoadWheelsConversion, RoundTrip) {
   }
 }
 
+// With ~frame_prefix the wheel names are the tf frame ids (RoadWheelState.name: "wheel frame id"),
+// also when the message is reused with another prefix or without one.
+TEST(RoadWheelsConversion, NamesCarryTheFramePrefix) {
+  std::vector<WheelState> wheels(2);
+  wheels[0].name = "road_wheel_left_1";
+  wheels[1].name = "road_wheel_right_1";
+  RoadWheels msg;
+  toMsg(wheels, 0.0, 0.0, &msg, "car1/");
+  ASSERT_EQ(msg.wheels.size(), 2u);
+  EXPECT_EQ(msg.wheels[0].name, "car1/road_wheel_left_1");
+  EXPECT_EQ(msg.wheels[1].name, "car1/road_wheel_right_1");
+  toMsg(wheels, 0.0, 0.0, &msg, "car1/");
+  EXPECT_EQ(msg.wheels[0].name, "car1/road_wheel_left_1");
+  toMsg(wheels, 0.0, 0.0, &msg, "car2/");
+  EXPECT_EQ(msg.wheels[1].name, "car2/road_wheel_right_1");
+  toMsg(wheels, 0.0, 0.0, &msg);
+  EXPECT_EQ(msg.wheels[0].name, "road_wheel_left_1");
+}
+
 TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
   ComfortReport report;
   report.point = "crew_seat";

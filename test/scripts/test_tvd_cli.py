@@ -440,6 +440,68 @@ class TvdCliTest(unittest.TestCase):
             g.writelines(f.readlines()[:30])
         self.assert_input_error(["modes", "--vehicle", truncated], "required key is missing")
 
+    def test_options_are_checked_before_any_work(self):
+        # Each of these once ran the whole job first, or wrote a file of another type, or let
+        # NaN through (CLI11's Range does).
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache]
+        self.assert_input_error(sim + ["--out", self.path("no_dir/x.csv")], "does not exist")
+        self.assert_input_error(sim + ["--out", self.path("x.json")], "must end in .csv or .mat")
+        self.assert_input_error(sim + ["--dt", "nan"], "--dt", "[1e-05, 0.01] s")
+        self.assert_input_error(sim + ["--dt", "0.05"], "--dt")
+        self.assert_input_error(sim + ["--lateral-offset", "nan"], "--lateral-offset", "finite")
+        self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", self.path("r.csv")],
+                                "must end in .mat")
+        self.assert_input_error(["frf", "--vehicle", VEHICLE, "--model", "full",
+                                 "--max-mode-hz", "1e5"], "--max-mode-hz", "[0, 100] Hz")
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "100000"], "--count")
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--max-frequency", "5"],
+                                "--max-frequency requires --model")
+        self.assert_input_error(["terrain", "--iso8608", "C", "--seed", "-1", "--out",
+                                 self.path("t.csv")], "--seed", "[0, 9007199254740992]")
+        # A terrain of one station covers no length.
+        one = self.path("one.csv")
+        with open(one, "w") as f:
+            f.write("x,h\n0,0.1\n")
+        self.assert_input_error(sim + ["--track", one], "one.csv", "single station")
+        # Upper-case extensions are terrain files too; .MAT is a MAT file.
+        flat = self.path("FLAT.CSV")
+        with open(flat, "w") as f:
+            f.write("x,h\n0,0\n20,0\n")
+        out = self.path("flat.MAT")
+        self.tvd(*sim, "--track", flat, "--speed-kmh", "60", "--out", out)
+        with open(out, "rb") as f:
+            self.assertTrue(f.read(10).startswith(b"MATLAB 5.0"))
+
+    def test_speed_profile_ending_early_is_a_warning_in_the_json(self):
+        profile = self.path("short_profile.csv")
+        with open(profile, "w") as f:
+            f.write("time_s,speed_kmh\n0,36\n2,36\n")  # 20 m of the 30 m long hill
+        result = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                               "--track", "long_hill", "--speed-profile", profile,
+                               "--cache-dir", self.cache)
+        self.assertAlmostEqual(result["travelled_m"], 20.0, delta=1e-6)
+        self.assertEqual(len(result["warnings"]), 1, result["warnings"])
+        self.assertIn("ends after 20", result["warnings"][0])
+
+    def test_built_in_oop_track_runs_without_an_edge_warning(self):
+        result = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                               "--track", "oop_waves", "--speed-kmh", "30", "--cache-dir", self.cache)
+        self.assertEqual(result["warnings"], [])
+        # The same track as a file is user data: the 5.5 cm overhang is reported.
+        track = self.path("oop.csv")
+        self.tvd("terrain", "--track", "oop_waves", "--out", track)
+        result = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                               "--track", track, "--speed-kmh", "30", "--cache-dir", self.cache)
+        self.assertEqual(len(result["warnings"]), 1)
+        self.assertIn("edge line", result["warnings"][0])
+
+    def test_free_dof_without_mass_is_named(self):
+        model = self.path("no_mass.yaml")
+        with open(model, "w") as f:
+            f.write("nodes:\n  - {id: 1, x: [0, 0, 0]}\nsprings:\n  - {nodes: [1, ground], kz: 1e4}\n")
+        self.assert_input_error(["modes", "--model", model], "no_mass.yaml", "node 1 uz",
+                                "no mass or inertia")
+
 
 def configure(parser):
     parser.add_argument("--tvd", required=True, help="path of the built tvd executable")

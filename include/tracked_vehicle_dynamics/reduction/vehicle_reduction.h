@@ -59,6 +59,7 @@ struct VehicleReductionReport {
   bool from_cache = false;
   std::string cache_file;
   std::string cache_note;        ///< why the cache was (not) used
+  std::string cache_error;       ///< why a model built here could not be cached (empty: it was)
 };
 
 /// Runs the pipeline on a loaded description.

@@ -25,9 +25,11 @@ TerrainPatch fromMsg(const TerrainProfile& msg);
 /// Patch -> TerrainProfile (header untouched).
 void toMsg(const TerrainPatch& patch, TerrainProfile* msg);
 
-/// Wheel states, station [m] and speed [m/s] -> RoadWheels (header untouched). Reuses the
+/// Wheel states, station [m] and speed [m/s] -> RoadWheels (header untouched); each wheel's name
+/// is `name_prefix` + its name, i.e. its tf frame id (the node's ~frame_prefix). Reuses the
 /// message's storage when the wheel count is unchanged.
-void toMsg(const std::vector<WheelState>& wheels, double station, double speed, RoadWheels* msg);
+void toMsg(const std::vector<WheelState>& wheels, double station, double speed, RoadWheels* msg,
+           const std::string& name_prefix = "");
 /// RoadWheels -> wheel states (station and speed through the pointers, when given).
 std::vector<WheelState> fromMsg(const RoadWheels& msg, double* station = nullptr,
                                 double* speed = nullptr);

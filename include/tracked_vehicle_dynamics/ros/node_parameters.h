@@ -38,6 +38,8 @@ struct NodeParameters {
   /// ~points: named points published as frames; empty: all points of the description.
   std::vector<std::string> points;
   bool publish_points_all = true;  ///< true when ~points was not given
+  /// ~diagnostic_period [s]; diagnostic_updater reads the key itself, the node validates it.
+  double diagnostic_period = 1.0;
 };
 
 /// $ROS_HOME/tracked_vehicle_dynamics, or $HOME/.ros/tracked_vehicle_dynamics.

@@ -132,6 +132,10 @@ class OnlineVehicle {
   Vector3 wheelPosition(std::size_t i) const;
   /// Position [m] in base_link of named point i.
   Vector3 pointPosition(std::size_t i) const;
+  /// True when named point i moves rigidly with the hull in the model (its output rows are
+  /// u_G + theta x (p - p_G) of the hull rows, to rounding): its base_link position is then its
+  /// static position, geometry().points[i].position, at every step.
+  bool pointIsRigid(std::size_t i) const { return point_rigid_.at(i); }
 
   const dynamics::ComfortMeter& comfort() const { return comfort_; }
   /// The point the comfort meter watches (options.comfort_point).
@@ -151,6 +155,8 @@ class OnlineVehicle {
  private:
   Vector6 block(const std::vector<Eigen::Index>& rows, Eigen::Index offset) const;
   Eigen::Index outputRow(const std::string& name) const;
+  /// Whether the last three point_rows_ (a point at `point`) are the hull's rigid motion in H.
+  bool movesWithHull(const Matrix& output, const Vector3& point) const;
 
   VehicleGeometry geometry_;
   OnlineVehicleOptions options_;
@@ -168,6 +174,7 @@ class OnlineVehicle {
   std::vector<Eigen::Index> hull_rows_;   // 6 base rows
   std::vector<Eigen::Index> wheel_rows_;  // one base row ("<wheel> uz") per wheel
   std::vector<Eigen::Index> point_rows_;  // 3 base rows per named point
+  std::vector<bool> point_rigid_;         // per named point
   Eigen::Index comfort_row_ = 0;          // full row of the comfort acceleration
   Vector static_outputs_;                 // displacement block at equilibrium
   Vector6 static_hull_ = Vector6::Zero();

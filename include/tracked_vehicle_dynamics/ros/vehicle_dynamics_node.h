@@ -3,14 +3,17 @@
 //   terrain_profile (TerrainProfile) ──► OnlineVehicle::addTerrain   (TerrainBuffer)
 //   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
 //   tick at ~rate on ROS time        ──► OnlineVehicle::step() for every step due
-//       ──► tf2 odom→base_link→{road wheels, named points}, hull/accel, hull/twist, road_wheels,
-//           comfort, /diagnostics
+//       ──► tf2 odom→base_link→{road wheels, moving named points}, hull/accel, hull/twist,
+//           road_wheels, comfort, /diagnostics
+//   start-up                         ──► /tf_static base_link→{named points rigid with the hull}
 //
 // Time: the node keeps the time of its current sample. Each tick runs every fixed step due up to
 // ROS time now (so use_sim_time with `rosbag play --clock` works and a late tick is caught up);
 // more than ~catch_up_limit of simulated time is not caught up: the older part is skipped
 // (resynchronisation, warned and counted). ROS time going backwards (a bag loop) resets the
-// vehicle. Bad input never stops the node: it is rejected or held, with a throttled warning and
+// vehicle and re-applies the terrain and speed that arrived just before the jump but belong to
+// the new time (rosbag sends a loop's first messages before its first /clock, on other
+// connections). Bad input never stops the node: it is rejected or held, with a throttled warning and
 // a diagnostics entry.
 //
 // Threading: the vehicle is owned by one tick at a time, which takes its own callback queue
@@ -22,10 +25,9 @@
 // - Simulated time: a thread of our own, woken by every /clock message.
 #pragma once
 
-#pragma once
-
 #include <atomic>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
 #include <thread>
@@ -41,6 +43,7 @@
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
 #include <tf2_msgs/TFMessage.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 
 #include "tracked_vehicle_dynamics/Comfort.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
@@ -74,6 +77,13 @@ class VehicleDynamicsNode {
     std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
     std::uint64_t ticks = 0, late_ticks = 0;  // late: more than one step due at a tick
     std::uint64_t resets = 0;
+    std::uint64_t patches_reapplied = 0, speeds_reapplied = 0;  // after a jump back
+  };
+  /// A terrain patch kept for kRewindWindow of wall time, in case ROS time jumps back to it.
+  struct RecentPatch {
+    TerrainProfile::ConstPtr msg;
+    ros::Time ros_arrival;   // the loop's ROS time when it was handled
+    ros::WallTime arrival;
   };
   /// Change of a counter since the previous diagnostics report.
   struct Window {
@@ -103,8 +113,13 @@ class VehicleDynamicsNode {
   void advanceTo(const ros::Time& now);
   /// Vehicle back to equilibrium at station 0, terrain and metrics cleared.
   void restart();
-  /// Simulated time went back (a bag loop): restart at `now` and publish the equilibrium.
+  /// Simulated time went back (a bag loop): restart at `now`, re-apply the recent inputs that
+  /// belong to the new time (reapplyRecentInputs) and publish the equilibrium.
   void restartAfterJump(const ros::Time& now);
+  /// After a jump back to `now`: the patches that arrived in the last kRewindWindow of wall time
+  /// stamped nearer `now` than the ROS time they arrived at, and the last speed if it arrived in
+  /// that window, go to the restarted vehicle. Clears the kept inputs.
+  void reapplyRecentInputs(const ros::Time& now);
   void publishState();
   void publishComfort();
 
@@ -123,7 +138,8 @@ class VehicleDynamicsNode {
   double load_seconds_ = 0.0;
   DofIndex model_dofs_ = 0, model_inputs_ = 0, model_outputs_ = 0;
   std::string model_damping_;
-  std::vector<std::size_t> published_points_;  // indices into geometry().points
+  std::vector<std::size_t> published_points_;  // indices into geometry().points, on /tf
+  std::vector<std::size_t> static_points_;     // rigid with the hull: once on /tf_static
 
   ros::Subscriber terrain_sub_, speed_sub_, clock_sub_;
   // /tf is published like tf2_ros::TransformBroadcaster does, from a message kept between
@@ -140,6 +156,7 @@ class VehicleDynamicsNode {
   void advertise(const std::string& topic, std::uint32_t queue_size, CountedPublisher* out);
   CountedPublisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
   ros::ServiceServer reset_service_;
+  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   diagnostic_updater::Updater updater_;
 
   // Messages reused every publication.
@@ -163,6 +180,11 @@ class VehicleDynamicsNode {
   Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
       terrain_uncovered_, speed_rejected_;
   std::string last_patch_error_, last_speed_error_;
+  std::deque<RecentPatch> recent_patches_;  // sim time only
+  double recent_speed_ = 0.0;
+  ros::WallTime recent_speed_arrival_;  // zero: none kept
+  bool cached_ = false;                 // the reduced model is in the cache file
+  std::string not_cached_reason_;
   std::int64_t max_steps_in_tick_ = 0;
   DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
 

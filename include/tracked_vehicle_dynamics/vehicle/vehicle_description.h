@@ -178,6 +178,8 @@ struct VehicleDescription {
                                        {"sensor_mount", Vector3(0.3, 0.0, 2.2)}};
   /// Key path -> source text, as read from the file (not part of the hash).
   std::map<std::string, std::string> sources;
+  /// Where it was read from, for messages (not part of the hash).
+  std::string origin = "vehicle description";
 };
 
 /// Reads a description file. Every key is required; each value is a map

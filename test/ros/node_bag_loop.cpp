@@ -1,0 +1,240 @@
+// rostest tier 2 on simulated time (node_bag_loop.test, use_sim_time): a bag loop. The test owns
+// /clock and plays the same short "bag" four times: the first patches and the speed, stamped
+// with the start time, then the clock from there in bursts. On the loops after the first the
+// clock jumps back to the start time, and the inputs are sent
+//   - before the /clock message of the jump, with no pause in between (what `rosbag play -l`
+//     does: its time publisher is already past the first messages' time; the connections may
+//     still deliver either first),
+//   - before it, with a pause that makes sure the node has them first (the order that lost
+//     them), or
+//   - after it.
+// Each loop must give the first loop's samples: the same stamps (none dropped on catch-up
+// bursts), stations and wheel displacements.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <vector>
+
+#include <rosgraph_msgs/Clock.h>
+#include <std_msgs/Float64.h>
+
+#include "node_test_utils.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+struct Sample {
+  double station = 0.0;
+  std::vector<double> wheels;  // vertical displacement [m]
+};
+using LoopRun = std::map<std::int64_t, Sample>;  // by nanoseconds since the loop's start
+
+/// A patch from `from` to `to` [m] on a 1 cm grid, flat but for a cosine bump of `height` [m]
+/// between `bump_from` and `bump_from` + `bump_length` on every line.
+TerrainProfile bumpProfile(double from, double to, double bump_from, double bump_length,
+                           double height) {
+  TerrainProfile msg = test::flatProfile(from, to, 0.01);
+  for (std::size_t j = 0; j < msg.lateral.size(); ++j) {
+    for (std::uint32_t k = 0; k < msg.samples; ++k) {
+      const double x = (msg.start_station + k * msg.spacing - bump_from) / bump_length;
+      if (x > 0.0 && x < 1.0)
+        msg.heights[j * msg.samples + k] = 0.5 * height * (1.0 - std::cos(2.0 * M_PI * x));
+    }
+  }
+  return msg;
+}
+
+class NodeBagLoop : public ::testing::Test {
+ protected:
+  NodeBagLoop() : private_nh_("~"), diagnostics_(nh_) {
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    wheels_sub_ = nh_.subscribe("road_wheels", 100000, &NodeBagLoop::onWheels, this);
+    terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10);
+    speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10);
+  }
+
+  void onWheels(const RoadWheels::ConstPtr& msg) {
+    last_ = *msg;
+    ++messages_;
+    if (recording_ && msg->header.stamp >= start_) {
+      Sample& s = (*recording_)[(msg->header.stamp - start_).toNSec()];
+      s.station = msg->station;
+      s.wheels.clear();
+      for (const auto& w : msg->wheels)
+        s.wheels.push_back(w.displacement);
+    }
+  }
+
+  void setClock(const ros::Time& t) {
+    rosgraph_msgs::Clock c;
+    c.clock = t;
+    clock_pub_.publish(c);
+  }
+
+  bool waitForSample(const ros::Time& t) {
+    return test::spinUntil([&] { return messages_ > 0 && last_.header.stamp == t; }, 10.0);
+  }
+
+  /// The loop's first messages, stamped with its start time.
+  void publishInputs() {
+    for (TerrainProfile patch : patches_) {
+      patch.header.stamp = start_;
+      terrain_pub_.publish(patch);
+    }
+    std_msgs::Float64 v;
+    v.data = speed_;
+    speed_pub_.publish(v);
+  }
+
+  /// The clock from the loop's start on, in bursts of 1 to 100 steps; every sample is recorded.
+  void play(LoopRun* run) {
+    recording_ = run;
+    ros::Time t = start_;
+    for (int burst : bursts_) {
+      t += ros::Duration(burst * 1e-3);
+      setClock(t);
+      ASSERT_TRUE(waitForSample(t)) << "no sample at " << t;
+    }
+    test::spinFor(0.1);  // the last messages of a burst
+    recording_ = nullptr;
+  }
+
+  ros::NodeHandle nh_, private_nh_;
+  test::DiagnosticsCache diagnostics_;
+  ros::Publisher clock_pub_, terrain_pub_, speed_pub_;
+  ros::Subscriber wheels_sub_;
+  RoadWheels last_;
+  std::size_t messages_ = 0;
+  LoopRun* recording_ = nullptr;
+  ros::Time start_;
+  double speed_ = 0.0;
+  std::vector<TerrainProfile> patches_;
+  std::vector<int> bursts_;
+};
+
+void expectSameRun(const LoopRun& first, const LoopRun& loop, double tolerance, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(loop.size(), first.size()) << "samples in the loop and in the first run";
+  std::size_t missing = 0, compared = 0;
+  double worst = 0.0, worst_station = 0.0;
+  for (const auto& [ns, reference] : first) {
+    const auto it = loop.find(ns);
+    if (it == loop.end()) {
+      ++missing;
+      continue;
+    }
+    ++compared;
+    worst_station = std::max(worst_station, std::abs(it->second.station - reference.station));
+    ASSERT_EQ(it->second.wheels.size(), reference.wheels.size());
+    for (std::size_t i = 0; i < reference.wheels.size(); ++i)
+      worst = std::max(worst, std::abs(it->second.wheels[i] - reference.wheels[i]));
+  }
+  EXPECT_EQ(missing, 0u) << "samples of the first run missing in the loop";
+  ASSERT_GT(compared, 0u);
+  EXPECT_LE(worst_station, tolerance) << "largest station difference [m]";
+  EXPECT_LE(worst, tolerance) << "largest wheel displacement difference [m]";
+}
+
+TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
+  speed_ = test::requiredParam<double>(private_nh_, "speed");
+  const double tolerance = test::requiredParam<double>(private_nh_, "tolerance");
+  const double rate = test::requiredParam<double>(private_nh_, "rate");
+  const double min_displacement = test::requiredParam<double>(private_nh_, "min_displacement");
+  ASSERT_EQ(rate, 1000.0) << "the bursts are in 1 ms steps";
+  // 0.7 s, with bursts as long as ~catch_up_limit (0.1 s = 100 steps).
+  bursts_ = {1, 1, 2, 5, 10, 20, 50, 100, 3, 7, 100, 1, 100, 50, 100, 20, 30, 100};
+  // The first patches, as a bag sends them: flat under the vehicle, a 5 cm bump at 4-5 m (the
+  // front road wheels are at 2.34 m), more beyond.
+  patches_ = {bumpProfile(-5.0, 2.0, 4.0, 1.0, 0.05), bumpProfile(2.01, 6.0, 4.0, 1.0, 0.05),
+              bumpProfile(6.01, 14.0, 4.0, 1.0, 0.05)};
+
+  // The clock ticks 1 ms per 10 ms of wall time until the node publishes its first sample.
+  ros::Time t(200.0);
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        t += ros::Duration(0.001);
+        setClock(t);
+        ros::WallDuration(0.01).sleep();
+        return messages_ > 0;
+      },
+      45.0))
+      << "the node published nothing";
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return terrain_pub_.getNumSubscribers() > 0 && speed_pub_.getNumSubscribers() > 0;
+      },
+      5.0));
+  t += ros::Duration(0.001);
+  setClock(t);
+  ASSERT_TRUE(waitForSample(t));
+  start_ = t;
+
+  // First loop: the inputs reach the node before its clock moves.
+  LoopRun first;
+  publishInputs();
+  test::spinFor(0.5);
+  play(&first);
+  ASSERT_FALSE(HasFailure());
+  double peak = 0.0;
+  for (const auto& [ns, s] : first) {
+    for (double w : s.wheels)
+      peak = std::max(peak, std::abs(w));
+  }
+  EXPECT_GE(peak, min_displacement) << "the bump must move the wheels";
+  // Every step of the loop was published (a catch-up burst of 100 samples included).
+  EXPECT_EQ(first.size(),
+            static_cast<std::size_t>(std::accumulate(bursts_.begin(), bursts_.end(), 0)));
+
+  // Second loop: the first patches and the speed before the clock jumps back, no pause.
+  LoopRun inputs_first;
+  publishInputs();
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  test::spinFor(0.1);
+  play(&inputs_first);
+  expectSameRun(first, inputs_first, tolerance, "inputs before the jump back");
+
+  // Third loop: the inputs surely handled before the jump back.
+  LoopRun inputs_handled_first;
+  publishInputs();
+  test::spinFor(0.05);
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  test::spinFor(0.1);
+  play(&inputs_handled_first);
+  expectSameRun(first, inputs_handled_first, tolerance, "inputs handled before the jump back");
+
+  // Fourth loop: the jump back first, then the inputs.
+  LoopRun clock_first;
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  publishInputs();
+  test::spinFor(0.1);
+  play(&clock_first);
+  expectSameRun(first, clock_first, tolerance, "inputs after the jump back");
+
+  t = start_ + ros::Duration(5.0);  // let the diagnostics period pass on simulated time
+  setClock(t);
+  ASSERT_TRUE(test::spinUntil(
+      [&] { return diagnostics_.value(": loop", "time jumps back (total)") >= 3; }, 10.0))
+      << diagnostics_.describe();
+  // The third loop's inputs were re-applied after the jump (the second's may have been).
+  EXPECT_GE(diagnostics_.value(": loop", "patches re-applied after a jump back (total)"),
+            static_cast<double>(patches_.size()));
+  EXPECT_GE(diagnostics_.value(": loop", "speeds re-applied after a jump back (total)"), 1.0);
+  std::printf("%s", diagnostics_.describe().c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "node_bag_loop_test");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
