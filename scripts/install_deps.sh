@@ -8,7 +8,7 @@ PACKAGES=(
   # ROS 1 as packaged by Debian
   ros-core-dev catkin libroscpp-dev librosbag-dev libtf2-ros-dev libtf2-geometry-msgs-dev
   ros-message-generation libstd-msgs-dev libgeometry-msgs-dev libstd-srvs-dev
-  libdiagnostic-updater-dev python3-rostest librostest-dev tf2-tools python3-rosbag python3-roslaunch python3-rostopic
+  libdiagnostic-updater-dev libdiagnostic-msgs-dev libtf2-msgs-dev libros-rosgraph-msgs-dev python3-rostest librostest-dev tf2-tools python3-rosbag python3-roslaunch python3-rostopic
   rosbash  # rosrun (a Recommends of ros-core-dev, which --no-install-recommends leaves out)
   # numerics and I/O
   libeigen3-dev libspectra-dev libsuitesparse-dev libyaml-cpp-dev libmatio-dev libcli11-dev
