@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -110,6 +111,14 @@ FullModelReference buildFullReference(const fem::System& system,
   const fem::ModalBasis modes = modesUpTo(system, options.max_frequency_hz, options.max_modes);
   DofIndex k = 0;
   while (k < modes.count() && modes.frequencies_hz(k) <= options.max_frequency_hz) ++k;
+  if (k == 0) {
+    char text[200];
+    std::snprintf(text, sizeof(text),
+                  "full-model reference: no mode lies below %g Hz (the lowest is at %.4g Hz); raise "
+                  "the frequency limit (tvd: --max-mode-hz)",
+                  options.max_frequency_hz, modes.count() > 0 ? modes.frequencies_hz(0) : 0.0);
+    throw InputError(text);
+  }
   const Matrix phi = modes.shapes.leftCols(k);
   const Vector omega2 = modes.eigenvalues.head(k).cwiseMax(0.0);
   ref.frequencies_hz = modes.frequencies_hz.head(k);

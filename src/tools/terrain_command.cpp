@@ -143,6 +143,8 @@ void registerTerrainCommand(CLI::App& app) {
   cmd->callback([opt, track, iso]() {
     if (track->count() == 0 && iso->count() == 0)
       throw InputError("terrain: give --track NAME or --iso8608 CLASS");
+    if (iso->count() > 0 && opt->iso_class.empty())
+      throw InputError("terrain: --iso8608 must be one road class A..H, got ''");
     run(*opt);
   });
 }

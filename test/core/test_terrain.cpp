@@ -189,7 +189,11 @@ TEST(Terrain, RejectsBadGrids) {
   x << 0.0, 1.0, 2.0;
   Matrix h = Matrix::Zero(2, 3);
   h(1, 2) = std::nan("");
-  expectInputError([&] { Terrain(x, y, h, "nan"); }, {"lateral line 1", "station 2", "not finite"});
+  expectInputError([&] { Terrain(x, y, h, "nan"); }, {"lateral line 1", "station 2", "finite"});
+  h(1, 2) = 1e300;  // e.g. millimetres read as metres many times over: no road is that high
+  expectInputError([&] { Terrain(x, y, h, "high"); }, {"station 2", "is 1e+300 m", "+-10000 m"});
+  h(1, 2) = -9000.0;  // the shore of the Dead Sea is at -430 m, Everest at 8849 m: both accepted
+  EXPECT_EQ(Terrain(x, y, h, "deep").height(2.0, 1.0), -9000.0);
   expectInputError([&] { Terrain(x, y, Matrix::Zero(3, 3), "size"); },
                    {"heights are 3 x 3", "expected 2 lateral lines x 3 stations"});
   expectInputError([&] { Terrain(Vector(), y, Matrix::Zero(2, 0), "empty"); }, {"no stations"});

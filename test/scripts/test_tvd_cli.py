@@ -458,6 +458,11 @@ class TvdCliTest(unittest.TestCase):
                                 "--max-frequency requires --model")
         self.assert_input_error(["terrain", "--iso8608", "C", "--seed", "-1", "--out",
                                  self.path("t.csv")], "--seed", "[0, 9007199254740992]")
+        self.assert_input_error(["terrain", "--iso8608", "", "--out", self.path("t.csv")],
+                                "--iso8608 must be one road class A..H")
+        self.assert_input_error(["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--model",
+                                 "full", "--max-mode-hz", "0.001"], "no mode lies below 0.001 Hz",
+                                "--max-mode-hz")
         # A terrain of one station covers no length.
         one = self.path("one.csv")
         with open(one, "w") as f:
