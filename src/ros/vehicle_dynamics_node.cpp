@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <sstream>
 
 #include <pthread.h>
 
@@ -123,6 +124,17 @@ void VehicleDynamicsNode::loadVehicle() {
     // Parsed once: the reduction and the frames come from the same description.
     const vehicle::VehicleDescription description =
         vehicle::loadVehicleDescription(params_.vehicle);
+    // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
+    const std::string& point = params_.vehicle_options.comfort_point;
+    std::string known = "hull";
+    bool found = point == "hull";
+    for (const vehicle::NamedPoint& p : description.named_points) {
+      known += ", " + p.name;
+      found = found || p.name == point;
+    }
+    if (!found)
+      throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
+                           "' (" + known + " in " + params_.vehicle + ")");
     const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
         description, params_.variant, params_.cache_dir, params_.reduction_options, &report_);
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
@@ -225,8 +237,23 @@ void VehicleDynamicsNode::setUpFrames() {
 
 void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
-    vehicle_->addTerrain(fromMsg(*msg));
+    const TerrainPatch patch = fromMsg(*msg);
+    vehicle_->addTerrain(patch);
     ++events_.patches_accepted;
+    // Contacts beyond a patch's outer lines take the edge line's heights (terrain.h); a patch
+    // narrower than the vehicle is more often a unit or frame mistake than a choice.
+    const Vector& y = vehicle_->sampler().lateral();
+    const double offset = params_.vehicle_options.lateral_offset;
+    if (y.size() > 0 && patch.lateral.size() > 0 &&
+        (y.minCoeff() + offset < patch.lateral(0) - 1e-9 ||
+         y.maxCoeff() + offset > patch.lateral(patch.lateral.size() - 1) + 1e-9)) {
+      ++events_.patches_narrow;
+      std::ostringstream text;
+      text << "patch at x = " << patch.start_station << " m spans y = " << patch.lateral(0)
+           << " .. " << patch.lateral(patch.lateral.size() - 1) << " m, the contacts "
+           << y.minCoeff() + offset << " .. " << y.maxCoeff() + offset << " m";
+      last_narrow_patch_ = text.str();
+    }
     if (use_sim_time_) {
       const ros::WallTime arrival = ros::WallTime::now();
       const ros::WallTime oldest = arrival - ros::WallDuration(kRewindWindow);
@@ -571,16 +598,21 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
 void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const std::uint64_t rejected = terrain_rejected_.delta(events_.patches_rejected);
   const std::uint64_t uncovered = terrain_uncovered_.delta(events_.uncovered_steps);
+  const std::uint64_t narrow = terrain_narrow_.delta(events_.patches_narrow);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
   if (buffer.empty()) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "no terrain: holding the last heights (flat at start)");
+                   vehicle_->station() == 0.0 ? "no terrain yet: flat ground at the start"
+                                              : "no terrain: holding the last heights");
   } else if (uncovered > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "terrain underrun: contacts off the terrain held at their last height");
   } else if (rejected > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "terrain patches rejected");
+  } else if (narrow > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "patches narrower than the contacts: the outer ones read the edge lines");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "covered");
   }
@@ -588,6 +620,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("patches rejected (total)", events_.patches_rejected);
   status.add("patches rejected (since last report)", rejected);
   status.add("last rejection", last_patch_error_);
+  status.add("patches narrower than the contacts (total)", events_.patches_narrow);
+  status.add("last narrow patch", last_narrow_patch_);
   status.add("steps with uncovered contacts (total)", events_.uncovered_steps);
   status.add("steps with uncovered contacts (since last report)", uncovered);
   status.add("patches stored", buffer.patchCount());

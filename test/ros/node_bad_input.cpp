@@ -110,6 +110,11 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   bad.spacing = 0.0;
   terrain_pub_.publish(bad);
   const int bad_patches = 5;
+  // Valid, but 1 m wide: the road wheels at +-1.4 m would read its edge lines (a unit mistake).
+  TerrainProfile narrow = test::flatProfile(terrain_end + 40.0, terrain_end + 50.0);
+  narrow.lateral = {-0.5, 0.5};
+  narrow.heights.resize(2 * (narrow.heights.size() / 11));
+  terrain_pub_.publish(narrow);
 
   publishSpeed(speed);
   test::spinFor(0.2);
@@ -138,12 +143,14 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
       [&] {
         return diagnostics_.value(": terrain", "patches rejected (total)") >= bad_patches &&
                diagnostics_.value(": speed", "speeds rejected (total)") >= bad_speeds &&
-               diagnostics_.value(": terrain", "steps with uncovered contacts (total)") > 0;
+               diagnostics_.value(": terrain", "steps with uncovered contacts (total)") > 0 &&
+               diagnostics_.value(": terrain", "patches narrower than the contacts (total)") > 0;
       },
       5.0))
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": terrain", "patches rejected (total)"), bad_patches);
   EXPECT_EQ(diagnostics_.value(": speed", "speeds rejected (total)"), bad_speeds);
+  EXPECT_EQ(diagnostics_.value(": terrain", "patches narrower than the contacts (total)"), 1.0);
   EXPECT_EQ(diagnostics_.level(": terrain"),
             static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);
@@ -194,6 +201,22 @@ TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
     EXPECT_NE(run.output.find("/" + name + "/diagnostic_period: must be"), std::string::npos)
         << run.output;
   }
+}
+
+// An unknown ~comfort_point is that parameter's error (it once read as one of ~vehicle's).
+TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const NodeRun run = runNode("__name:=bad_comfort_point _vehicle:=" + vehicle + " _cache_dir:=" +
+                                  cache_dir + " _comfort_point:=nowhere",
+                              timeout);
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find("/bad_comfort_point/comfort_point: unknown point 'nowhere' (hull, "
+                            "crew_seat, sensor_mount in "),
+            std::string::npos)
+      << run.output;
 }
 
 // An unwritable ~cache_dir does not stop the node (the model is built), but it must not be
