@@ -365,6 +365,13 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   recent_speed_arrival_ = ros::WallTime();
 }
 
+void VehicleDynamicsNode::reportOnWallTime(const ros::WallTime& wall) {
+  if (wall < next_wall_report_)
+    return;
+  next_wall_report_ = wall + ros::WallDuration(params_.diagnostic_period);
+  updater_.force_update();
+}
+
 ros::Time VehicleDynamicsNode::now() const {
   return use_sim_time_ ? latest_clock_ : ros::Time::now();
 }
@@ -388,6 +395,13 @@ void VehicleDynamicsNode::tick() {
 
 void VehicleDynamicsNode::step() {
   const ros::Time t = now();
+  const ros::WallTime wall = ros::WallTime::now();
+  if (t != last_step_time_) {
+    last_step_time_ = t;
+    last_time_change_ = wall;
+  } else if (wall - last_time_change_ > ros::WallDuration(params_.diagnostic_period)) {
+    reportOnWallTime(wall);
+  }
   if (t.isZero())
     return;  // use_sim_time and no /clock yet
   try {

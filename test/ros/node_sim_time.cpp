@@ -76,6 +76,20 @@ class NodeSimTime : public ::testing::Test {
   std::size_t tf_messages_ = 0, repeated_wheel_stamps_ = 0, repeated_tf_stamps_ = 0;
 };
 
+// Before the first /clock, ROS time stands at 0 and diagnostic_updater (on ROS time) would say
+// nothing; the node reports why on wall time. (Runs first: no /clock has been published yet.)
+TEST_F(NodeSimTime, DiagnosticsSayWaitingBeforeTheClock) {
+  // (diagnostic_updater's own "Node starting up" comes first, while the model loads.)
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.describe().find("loop [1] waiting for ROS time (/clock)") !=
+               std::string::npos;
+      },
+      45.0))
+      << "no WARN 'waiting for ROS time' before the first /clock:\n" << diagnostics_.describe();
+  EXPECT_EQ(messages_, 0u);
+}
+
 TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   const double speed = test::requiredParam<double>(private_nh_, "speed");
   const double catch_up_limit = test::requiredParam<double>(private_nh_, "catch_up_limit");

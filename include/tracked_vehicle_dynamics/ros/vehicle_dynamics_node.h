@@ -108,6 +108,9 @@ class VehicleDynamicsNode {
   void tick();
   /// Steps to ROS time now, publishes, diagnoses.
   void step();
+  /// /diagnostics on wall time while ROS time stands still (use_sim_time with no /clock yet, or a
+  /// paused one): diagnostic_updater publishes on ROS time and would say nothing, not even why.
+  void reportOnWallTime(const ros::WallTime& wall);
   /// ROS time now; with use_sim_time the latest /clock this loop has seen.
   ros::Time now() const;
   /// Runs the steps due up to `now` and publishes.
@@ -184,6 +187,9 @@ class VehicleDynamicsNode {
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
   ros::WallTime recent_speed_arrival_;  // zero: none kept
+  ros::Time last_step_time_;            // ROS time of the previous step() call
+  ros::WallTime last_time_change_;      // wall time at which ROS time last moved
+  ros::WallTime next_wall_report_;      // reportOnWallTime() publishes from then on
   bool cached_ = false;                 // the reduced model is in the cache file
   std::string not_cached_reason_;
   std::int64_t max_steps_in_tick_ = 0;
