@@ -147,6 +147,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   v.terrain_keep_behind = in.nonNegative("terrain_keep_behind", v.terrain_keep_behind, "m");
 
   p.max_speed = in.positive("max_speed", p.max_speed, "m/s");
+  p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
 
   p.odom_frame = in.string("odom_frame", p.odom_frame);

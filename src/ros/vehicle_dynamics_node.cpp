@@ -288,6 +288,7 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   }
   vehicle_->setSpeed(v);
   ++events_.speeds_accepted;
+  last_speed_time_ = now();
   recent_speed_ = v;
   recent_speed_arrival_ = ros::WallTime::now();
 }
@@ -360,6 +361,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   // jump (rosbag sends a loop's first speed with its first patches).
   if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
     vehicle_->setSpeed(recent_speed_);
+    last_speed_time_ = now;
     ++events_.speeds_reapplied;
   }
   recent_speed_arrival_ = ros::WallTime();
@@ -404,6 +406,16 @@ void VehicleDynamicsNode::step() {
   }
   if (t.isZero())
     return;  // use_sim_time and no /clock yet
+  // A driver that stopped publishing must not leave the vehicle driving on: it stops where it is
+  // and the next speed message moves it again.
+  if (params_.speed_timeout > 0.0 && vehicle_->speed() > 0.0 &&
+      (t - last_speed_time_).toSec() > params_.speed_timeout) {
+    ROS_WARN("vehicle_dynamics_node: no speed message for %.3f s (~speed_timeout %.3f s): "
+             "stopping the vehicle at station %.3f m",
+             (t - last_speed_time_).toSec(), params_.speed_timeout, vehicle_->station());
+    vehicle_->setSpeed(0.0);
+    ++events_.speed_timeouts;
+  }
   try {
     advanceTo(t);
     updater_.update();
@@ -646,7 +658,11 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
 
 void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const std::uint64_t rejected = speed_rejected_.delta(events_.speeds_rejected);
-  if (rejected > 0) {
+  const std::uint64_t timeouts = speed_timed_out_.delta(events_.speed_timeouts);
+  if (timeouts > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "no speed message within ~speed_timeout: vehicle stopped");
+  } else if (rejected > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "speed messages rejected");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
@@ -657,6 +673,8 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
   status.add("speeds rejected (total)", events_.speeds_rejected);
   status.add("speeds rejected (since last report)", rejected);
   status.add("last rejection", last_speed_error_);
+  status.add("speed timeout [s]", params_.speed_timeout);
+  status.add("stops after the speed timeout (total)", events_.speed_timeouts);
 }
 
 void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status) {

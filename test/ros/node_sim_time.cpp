@@ -93,6 +93,7 @@ TEST_F(NodeSimTime, DiagnosticsSayWaitingBeforeTheClock) {
 TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   const double speed = test::requiredParam<double>(private_nh_, "speed");
   const double catch_up_limit = test::requiredParam<double>(private_nh_, "catch_up_limit");
+  const double speed_timeout = test::requiredParam<double>(private_nh_, "speed_timeout");
   // The clock ticks 1 ms per 10 ms of wall time until the node publishes its first sample.
   ros::Time t(100.0);
   ASSERT_TRUE(test::spinUntil(
@@ -167,17 +168,37 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   EXPECT_GT(tf_messages_, 0u);
   EXPECT_EQ(repeated_tf_stamps_, 0u) << "/tf published base_link twice at one stamp";
 
+  // ~speed_timeout: a driver that stops publishing stops the vehicle where it is (without it, the
+  // jump below would drive on by speed x catch_up_limit).
+  speed_pub_.publish(v);
+  test::spinFor(0.3);
+  t += ros::Duration(0.01);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_EQ(last_.speed, speed);
+  const double moving_station = last_.station;
+  t += ros::Duration(speed_timeout + 1.0);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_EQ(last_.speed, 0.0);
+  EXPECT_EQ(last_.station, moving_station);
+  speed_pub_.publish(v);  // and the next speed message moves it again
+  test::spinFor(0.3);
+  t += ros::Duration(0.01);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_NEAR(last_.station - moving_station, speed * 0.01, kStation);
+
   EXPECT_EQ(non_finite_, 0u);
   t += ros::Duration(2.0);  // let the diagnostics period pass on simulated time
   setClock(t);
   ASSERT_TRUE(test::spinUntil(
       [&] {
         return diagnostics_.value(": loop", "time jumps back (total)") >= 1 &&
-               diagnostics_.value(": loop", "resynchronisations (total)") >= 1;
+               diagnostics_.value(": loop", "resynchronisations (total)") >= 1 &&
+               diagnostics_.value(": speed", "stops after the speed timeout (total)") >= 1;
       },
       10.0))
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": loop", "time jumps back (total)"), 1.0);
+  EXPECT_EQ(diagnostics_.value(": speed", "stops after the speed timeout (total)"), 1.0);
 }
 
 }  // namespace

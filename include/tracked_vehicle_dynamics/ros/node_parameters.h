@@ -31,6 +31,9 @@ struct NodeParameters {
   double publish_rate = 0.0;                             ///< ~publish_rate [Hz], default ~rate
   double comfort_rate = 10.0;                            ///< ~comfort_rate [Hz]
   double max_speed = 30.0;          ///< ~max_speed [m/s]; faster speed messages are rejected
+  /// ~speed_timeout [s] of ROS time without a valid speed message after which the vehicle stops
+  /// where it is (a driver that died must not leave it driving on); 0: never.
+  double speed_timeout = 0.0;
   double catch_up_limit = 0.1;      ///< ~catch_up_limit [s] of simulated time caught up at once
   std::string odom_frame = "odom";  ///< ~odom_frame
   std::string base_frame = "base_link";  ///< ~base_frame

@@ -73,6 +73,7 @@ class VehicleDynamicsNode {
     std::uint64_t patches_accepted = 0, patches_rejected = 0;
     std::uint64_t patches_narrow = 0;  // accepted, but narrower than the contacts' lateral span
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
+    std::uint64_t speed_timeouts = 0;  // stops after ~speed_timeout without a speed message
     std::uint64_t uncovered_steps = 0;  // steps with at least one contact off the terrain
     std::uint64_t diverged = 0;
     std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
@@ -182,12 +183,13 @@ class VehicleDynamicsNode {
 
   Events events_;
   Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
-      terrain_uncovered_, terrain_narrow_, speed_rejected_;
+      terrain_uncovered_, terrain_narrow_, speed_rejected_, speed_timed_out_;
   std::string last_patch_error_, last_speed_error_, last_narrow_patch_;
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
   ros::WallTime recent_speed_arrival_;  // zero: none kept
   ros::Time last_step_time_;            // ROS time of the previous step() call
+  ros::Time last_speed_time_;           // ROS time of the last valid speed message
   ros::WallTime last_time_change_;      // wall time at which ROS time last moved
   ros::WallTime next_wall_report_;      // reportOnWallTime() publishes from then on
   bool cached_ = false;                 // the reduced model is in the cache file
