@@ -22,6 +22,9 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
 /// Relative tolerance of the chain-length checks (pitch x count against the stated lengths).
 constexpr double kLengthTolerance = 1e-3;
+/// No value of a vehicle comes near 1e15 in SI (the stiffest, k_w, is 2e10 N/m); beyond it a value
+/// is a typo, and 1e300 kg once overflowed the statics into -4.8e293 m of sag.
+constexpr double kImplausible = 1e15;
 
 enum class Kind { Real, Integer, RealList, IntegerList, Angle };
 enum class Range { Any, Positive, NonNegative, Fraction };
@@ -221,6 +224,8 @@ void readField(const io::YamlValue& section, const Field& f,
     case Kind::Angle: {
       double x = v.asNumber();
       checkRange(v, x, f.range);
+      if (std::abs(x) > kImplausible)
+        v.fail("value " + brief(x) + " is implausibly large");
       if (f.kind == Kind::Angle) {
         if (std::abs(x) >= 90.0)
           v.fail("angle must lie in (-90, 90) deg, got " + brief(x));
@@ -242,6 +247,8 @@ void readField(const io::YamlValue& section, const Field& f,
       for (const io::YamlValue& e : v.elements("a list of numbers")) {
         xs.push_back(e.asNumber());
         checkRange(e, xs.back(), f.range);
+        if (std::abs(xs.back()) > kImplausible)
+          e.fail("value " + brief(xs.back()) + " is implausibly large");
       }
       *static_cast<std::vector<double>*>(f.target) = xs;
       break;
@@ -285,7 +292,7 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   VehicleDescription copy = d;
   for (const Field& f : fieldsOf(copy)) {
     auto bad = [&](double x) {
-      return !std::isfinite(x) || (f.range == Range::Positive && !(x > 0.0)) ||
+      return !std::isfinite(x) || std::abs(x) > kImplausible || (f.range == Range::Positive && !(x > 0.0)) ||
              (f.range == Range::NonNegative && x < 0.0) ||
              (f.range == Range::Fraction && (x < 0.0 || x > 1.0));
     };

@@ -111,6 +111,7 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "ties.road_input_station", "unknown road input station 'tyre' (pad_centre or sole)"},
       {"  mass: {value: 27, unit: kg, source: \"Table 1, track assembly mass m_t\"}",
        "  mass: {value: 27, unit: kg, source: \"\"}", "track_assembly.mass.source", "source"},
+      {"  mass: {value: 30300,", "  mass: {value: 1e300,", "hull.mass", "implausibly large"},
       // Geometry that once built a model no vehicle has.
       {"  radius: {value: 0.34, unit: m,", "  radius: {value: 0.4, unit: m,", "road_wheel.radius",
        "overlap at the axle spacing 0.78 m"},
