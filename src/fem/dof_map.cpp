@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/fem/dof_map.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -25,35 +26,70 @@ class Resolver {
       : status_(status), link_of_(link_of), links_(links), memo_(status.size()),
         state_(status.size(), 0) {}
 
-  const Expression& resolve(DofIndex p) {
-    if (state_[p] == 2) return memo_[p];
-    if (state_[p] == 1)
-      throw InputError("rigid joints form a cycle through physical DOF " + std::to_string(p));
-    state_[p] = 1;
-    Expression e;
-    if (status_[p] == 's') {
+  // Iterative (a chain of 200,000 rigid joints overflowed the stack when this recursed), and each
+  // expression is merged per DOF: a slave in a chain depends on the 6 DOFs of the chain's root
+  // however long the chain is (appending unmerged grew as the square of its length).
+  const Expression& resolve(DofIndex root) {
+    std::vector<DofIndex> stack{root};
+    while (!stack.empty()) {
+      const DofIndex p = stack.back();
+      if (state_[p] == 2) {
+        stack.pop_back();
+        continue;
+      }
+      if (status_[p] != 's') {
+        if (status_[p] == 'a') memo_[p].emplace_back(p, 1.0);
+        state_[p] = 2;
+        stack.pop_back();
+        continue;
+      }
       const SlaveLink& link = links_[link_of_[p]];
       const int d = static_cast<int>(p % kDofsPerNode);
       const DofIndex base = link.master_node * kDofsPerNode;
-      append(e, resolve(base + d), 1.0);
-      if (d < 3) {
-        // u_s = u_m + theta_m x r:  (theta x r)_d = sum_j c_j theta_j
-        const Vector3& r = link.arm;
-        const double c[3][3] = {{0.0, r.z(), -r.y()}, {-r.z(), 0.0, r.x()}, {r.y(), -r.x(), 0.0}};
+      // u_s = u_m + theta_m x r:  (theta x r)_d = sum_j c_j theta_j
+      const Vector3& r = link.arm;
+      const double c[3][3] = {{0.0, r.z(), -r.y()}, {-r.z(), 0.0, r.x()}, {r.y(), -r.x(), 0.0}};
+      std::pair<DofIndex, double> terms[4];
+      int count = 0;
+      terms[count++] = {base + d, 1.0};
+      if (d < 3)
         for (int j = 0; j < 3; ++j)
-          if (c[d][j] != 0.0) append(e, resolve(base + 3 + j), c[d][j]);
+          if (c[d][j] != 0.0) terms[count++] = {base + 3 + j, c[d][j]};
+      if (state_[p] == 0) {  // first visit: resolve the master's DOFs first
+        state_[p] = 1;
+        for (int k = 0; k < count; ++k) {
+          const DofIndex q = terms[k].first;
+          if (state_[q] == 1)
+            throw InputError("rigid joints form a cycle through physical DOF " + std::to_string(q));
+          if (state_[q] == 0) stack.push_back(q);
+        }
+        continue;
       }
-    } else if (status_[p] == 'a') {
-      e.emplace_back(p, 1.0);
+      Expression e;
+      for (int k = 0; k < count; ++k) append(e, memo_[terms[k].first], terms[k].second);
+      memo_[p] = merged(std::move(e));
+      state_[p] = 2;
+      stack.pop_back();
     }
-    memo_[p] = std::move(e);
-    state_[p] = 2;
-    return memo_[p];
+    return memo_[root];
   }
 
  private:
   static void append(Expression& e, const Expression& src, double scale) {
     for (const auto& [dof, coef] : src) e.emplace_back(dof, coef * scale);
+  }
+  /// One term per DOF, coefficients summed.
+  static Expression merged(Expression e) {
+    std::sort(e.begin(), e.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    Expression out;
+    for (const auto& term : e) {
+      if (!out.empty() && out.back().first == term.first)
+        out.back().second += term.second;
+      else
+        out.push_back(term);
+    }
+    return out;
   }
   const std::vector<char>& status_;
   const std::vector<int>& link_of_;

@@ -116,6 +116,12 @@ class Validator {
       if (!node.position.allFinite()) {
         fail(item("nodes", i), "non-finite coordinates of node " + std::to_string(node.id));
       }
+      // Beyond 1e9 m a coordinate is a unit mistake, and lengths squared lose all precision
+      // (1e300 overflowed into a misleading "orientation parallel to the axis").
+      if (node.position.cwiseAbs().maxCoeff() > 1e9) {
+        fail(item("nodes", i), "coordinates of node " + std::to_string(node.id) +
+                                   " lie beyond 1e9 m");
+      }
       scale_ = std::max(scale_, node.position.cwiseAbs().maxCoeff());
     }
   }
@@ -294,28 +300,38 @@ class Validator {
       }
     }
   }
-  void visit(NodeId node, std::map<NodeId, char>& state, std::vector<NodeId>& path) const {
-    state[node] = 'g';
-    path.push_back(node);
-    const auto children = children_.find(node);
-    if (children != children_.end()) {
-      for (const auto& [slave, joint] : children->second) {
-        const auto it = state.find(slave);
-        if (it == state.end()) {
-          visit(slave, state, path);
-        } else if (it->second == 'g') {
-          std::string cycle;
-          const auto start = std::find(path.begin(), path.end(), slave);
-          for (auto p = start; p != path.end(); ++p) {
-            cycle += "node " + std::to_string(*p) + " -> ";
-          }
-          fail(item("rigid_joints", joint), "rigid joints form a cycle (master -> slave): " +
-                                                cycle + "node " + std::to_string(slave));
+  // Depth-first without recursion: a chain of 200,000 rigid joints overflowed the stack.
+  void visit(NodeId root, std::map<NodeId, char>& state, std::vector<NodeId>& path) const {
+    std::vector<std::size_t> next_child;  // per node on `path`: its next child to visit
+    state[root] = 'g';
+    path.push_back(root);
+    next_child.push_back(0);
+    while (!path.empty()) {
+      const NodeId node = path.back();
+      const auto children = children_.find(node);
+      const std::size_t k = next_child.back()++;
+      if (children == children_.end() || k >= children->second.size()) {
+        state[node] = 'b';
+        path.pop_back();
+        next_child.pop_back();
+        continue;
+      }
+      const auto& [slave, joint] = children->second[k];
+      const auto it = state.find(slave);
+      if (it == state.end()) {
+        state[slave] = 'g';
+        path.push_back(slave);
+        next_child.push_back(0);
+      } else if (it->second == 'g') {
+        std::string cycle;
+        const auto start = std::find(path.begin(), path.end(), slave);
+        for (auto p = start; p != path.end(); ++p) {
+          cycle += "node " + std::to_string(*p) + " -> ";
         }
+        fail(item("rigid_joints", joint), "rigid joints form a cycle (master -> slave): " +
+                                              cycle + "node " + std::to_string(slave));
       }
     }
-    path.pop_back();
-    state[node] = 'b';
   }
 
   void checkFixed(std::size_t i) const {

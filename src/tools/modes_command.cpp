@@ -1,5 +1,8 @@
 // `tvd modes`: modal analysis of a generic FE model file or of a vehicle description.
+#include <Eigen/SparseCholesky>
+
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
@@ -7,6 +10,7 @@
 #include "output_files.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
@@ -44,22 +48,78 @@ void printTable(const std::string& name, DofIndex dofs, double mass, const fem::
   }
 }
 
+/// Refuses a mass matrix that is not positive definite on the free DOFs, naming a DOF: a free
+/// DOF without mass (diag M = 0), or a coupled massless motion (a point mass on an offset with no
+/// rotary inertia: diag M > 0 everywhere, yet M singular). Either would give infinite
+/// frequencies and NaN shapes.
+void requirePositiveMass(const fem::System& sys, const std::string& file) {
+  const Vector diagonal = sys.mass.diagonal();
+  for (DofIndex i = 0; i < sys.size(); ++i)
+    if (!(diagonal(i) > 0.0))
+      throw InputError(file + ": " + sys.dofs.label(i) +
+                       " is free but has no mass or inertia; add a mass or fix the DOF");
+  // LDL^T of P M P^T: a pivot that vanishes against the largest diagonal marks the motion.
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt(sys.mass);
+  const Vector pivots = ldlt.info() == Eigen::Success ? Vector(ldlt.vectorD()) : Vector();
+  const double scale = diagonal.cwiseAbs().maxCoeff();
+  Eigen::Index worst = -1;
+  if (pivots.size() == sys.size() && pivots.minCoeff(&worst) > 1e-12 * scale) return;
+  // Position k of the permuted matrix holds the DOF i with indices(i) == k.
+  const auto& indices = ldlt.permutationP().indices();
+  DofIndex dof = 0;
+  for (DofIndex i = 0; i < sys.size(); ++i)
+    if (worst >= 0 && indices(i) == worst) dof = i;
+  throw InputError(file + ": the mass matrix is singular: a free motion through " +
+                   sys.dofs.label(dof) +
+                   " has no mass or inertia (e.g. a point mass on an offset without rotary "
+                   "inertia); add inertia or fix the DOF");
+}
+
+/// Static deflection under the model's gravity: the largest translation and where.
+struct GravitySag {
+  bool solved = false;
+  std::string note;  // why not, when not solved
+  double max_translation = 0.0;
+  std::string at;
+};
+
+GravitySag gravitySag(const fem::System& sys) {
+  GravitySag sag;
+  if (sys.gravity_load.size() == 0 || sys.gravity_load.isZero(0.0)) {
+    sag.note = "no gravity load";
+    return sag;
+  }
+  try {
+    const fem::StaticResult r = fem::solveStatic(sys, sys.gravity_load);
+    for (DofIndex i = 0; i < sys.size(); ++i) {
+      if (sys.dofs.dofOf(i).direction >= 3 || std::abs(r.displacement(i)) <= sag.max_translation)
+        continue;
+      sag.max_translation = std::abs(r.displacement(i));
+      sag.at = sys.dofs.label(i);
+      sag.solved = true;
+    }
+    if (!sag.solved) sag.note = "no translation";
+  } catch (const SolverError& e) {  // a free-floating model has modes but no statics
+    sag.note = e.what();
+  }
+  return sag;
+}
+
 void runModel(const ModesOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const fem::Model model = io::loadModelYaml(opt.model_file);
   const fem::System sys = fem::assemble(model);
-  // A free DOF without mass makes M singular: its frequency would be infinite.
-  const Vector mass_diagonal = sys.mass.diagonal();
-  for (DofIndex i = 0; i < sys.size(); ++i)
-    if (!(mass_diagonal(i) > 0.0))
-      throw InputError(opt.model_file + ": " + sys.dofs.label(i) +
-                       " is free but has no mass or inertia; add a mass or fix the DOF");
+  if (sys.size() == 0)
+    throw InputError(opt.model_file + ": no free DOF (every DOF is fixed, or nothing is attached "
+                     "to the nodes)");
+  requirePositiveMass(sys, opt.model_file);
   const double build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fem::ModalRequest request;
   request.count = opt.count;
   request.max_frequency_hz = opt.max_frequency_hz;
   const fem::ModalBasis basis = fem::solveModes(sys.stiffness, sys.mass, request);
+  const GravitySag sag = gravitySag(sys);
   if (!opt.out_dir.empty()) writeModeFiles(opt.out_dir, sys, basis, {});
   if (opt.json) {
     io::JsonWriter json(std::cout);
@@ -72,10 +132,20 @@ void runModel(const ModesOptions& opt) {
         .field("eigenvalues", basis.eigenvalues)
         .field("assemble_seconds", build_seconds)
         .field("solve_seconds", basis.seconds);
-    json.endObject();
+    json.key("static").beginObject().field("solved", sag.solved);
+    if (sag.solved)
+      json.field("max_translation_m", sag.max_translation).field("at", sag.at);
+    else
+      json.field("note", sag.note);
+    json.endObject().endObject();
   } else {
     printTable(model.name.empty() ? opt.model_file : model.name, sys.size(), model.totalMass(),
                basis, build_seconds, {});
+    if (sag.solved)
+      std::cout << "\nstatic deflection under gravity: largest translation " << std::setprecision(6)
+                << sag.max_translation * 1000.0 << " mm at " << sag.at << "\n";
+    else
+      std::cout << "\nstatic deflection under gravity: not computed (" << sag.note << ")\n";
   }
 }
 

@@ -199,6 +199,39 @@ TEST(RigidJoint, EliminationEqualsTheMergedRigidBody) {
     EXPECT_NEAR(ma.eigenvalues(i), mb.eigenvalues(i), 1e-9 * mb.eigenvalues(i));
 }
 
+// A chain of rigid joints (joint i: master i, slave i + 1) is one rigid body however long: each
+// physical DOF is a combination of at most the root's 6, found without recursion (100,000 links
+// once overflowed the stack, and unmerged expressions grew as the square of the length).
+TEST(RigidJoint, LongChainIsOneRigidBodyOfBoundedTerms) {
+  const int n = 100000;
+  const double spacing = 0.01, m = 1.0;
+  Model chain;
+  for (int i = 1; i <= n; ++i) {
+    chain.addNode(i, tvd::Vector3(i * spacing, 0.0, 0.0));
+    chain.masses.push_back(pointMass(i, m));
+    if (i > 1) {
+      tvd::fem::RigidJoint joint;
+      joint.master = i - 1;
+      joint.slaves = {i};
+      chain.rigid_joints.push_back(joint);
+    }
+  }
+  tvd::fem::Spring ground;
+  ground.n1 = 1;
+  ground.stiffness << 1e4, 1e4, 1e4, 1e4, 1e4, 1e4;
+  chain.springs.push_back(ground);
+  const tvd::fem::System sys = tvd::fem::assemble(chain);
+  ASSERT_EQ(sys.size(), 6);
+  // At most 3 terms per translation (u + theta x r), 1 per rotation.
+  EXPECT_LE(sys.dofs.transformation().nonZeros(), static_cast<Eigen::Index>(n) * 12);
+  const tvd::Matrix mass(sys.mass);
+  EXPECT_NEAR(mass(0, 0), n * m, 1e-9 * n * m);  // ux of the root carries every mass
+  // theta_z of the root about its own node: sum of m (x_i - x_1)^2.
+  double inertia = 0.0;
+  for (int i = 1; i <= n; ++i) inertia += m * std::pow((i - 1) * spacing, 2);
+  EXPECT_NEAR(mass(5, 5), inertia, 1e-9 * inertia);
+}
+
 TEST(RigidJoint, RevoluteJointLeavesOneRotationFree) {
   // A pendulum-like lever: the arm node follows the pivot in all DOFs but ry; a torsion spring
   // k_t about y and a tip mass m at arm length a give omega^2 = k_t / (m a^2).

@@ -500,6 +500,34 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(len(result["warnings"]), 1)
         self.assertIn("edge line", result["warnings"][0])
 
+    def test_model_statics_under_gravity_match_the_closed_form(self):
+        # config/models/cantilever_beam.yaml: m_t g L^3/(3 EI) + rho A g L^4/(8 EI) = 2.54214 mm
+        # at the tip (node 21, down); the gravity key is what loads it.
+        model = os.path.join(ROOT, "config", "models", "cantilever_beam.yaml")
+        result = self.tvd_json("modes", "--model", model, "--count", "2")
+        self.assertTrue(result["static"]["solved"])
+        self.assertEqual(result["static"]["at"], "node 21 uz")
+        self.assertAlmostEqual(result["static"]["max_translation_m"] * 1e3, 2.54214, delta=2e-5)
+        # Without gravity there is nothing to solve, and the report says so.
+        weightless = self.path("weightless.yaml")
+        with open(model) as f, open(weightless, "w") as g:
+            g.write(f.read().replace("gravity: [0, 0, -9.80665]", "gravity: [0, 0, 0]"))
+        result = self.tvd_json("modes", "--model", weightless, "--count", "2")
+        self.assertFalse(result["static"]["solved"])
+        self.assertEqual(result["static"]["note"], "no gravity load")
+
+    def test_massless_motion_through_an_offset_mass_is_named(self):
+        # Every diagonal of M is positive, yet M is singular: a point mass on an offset without
+        # rotary inertia leaves a rotation without inertia. It used to print modes at 11 and
+        # 16 Hz that do not exist, and NaN shapes, with exit 0.
+        model = self.path("offset_mass.yaml")
+        with open(model, "w") as f:
+            f.write("nodes:\n  - {id: 1, x: [0, 0, 0]}\n"
+                    "masses:\n  - {node: 1, mass: 1, offset: [0.1, 0.1, 0]}\n"
+                    "springs:\n  - {nodes: [1, ground], k: [100, 100, 100, 0, 0, 0]}\n")
+        self.assert_input_error(["modes", "--model", model], "offset_mass.yaml",
+                                "the mass matrix is singular", "has no mass or inertia")
+
     def test_free_dof_without_mass_is_named(self):
         model = self.path("no_mass.yaml")
         with open(model, "w") as f:
