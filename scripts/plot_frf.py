@@ -2,28 +2,37 @@
 """Comfort FRF magnitudes, like Figs. 13-16 of Dimauro et al. (2024).
 
 Fig. 13: full vs CMS-reduced model; Fig. 14: un-tracked vs tracked; Figs. 15-16: synchronous vs
-wheelbase-delayed excitation at several speeds. Each LABEL=FILE.csv becomes one line per panel.
+wheelbase-delayed excitation at several speeds. Each LABEL=FILE becomes one line per panel.
 
-Input: CSV files written by `tvd frf` (header by name, any column order):
+Input: files written by `tvd frf --out FILE.csv` (header by name, any column order) or
+`--out FILE.mat` (one n x 1 variable per column, same names; the char variables are ignored):
     frequency_hz, then for N in hull_vertical_acc, hull_pitch_acc, front_wheel_acc, rear_wheel_acc
     the columns N_mag [(m/s^2)/m; pitch (rad/s^2)/m] and N_phase_deg (not plotted).
-Outputs absent from every file get no panel. `tvd frf` is not written yet; its options below are
-assumed to mirror `tvd simulate`:
+Outputs absent from every file get no panel; an output that is zero in every file is drawn on a
+linear scale (log scale otherwise) and its panel says so. For example
 
     TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
+    $TVD frf --vehicle $V --variant tracked --model full --out /tmp/full.csv
+    $TVD frf --vehicle $V --variant tracked --out /tmp/reduced.csv
+    scripts/plot_frf.py --out fig13.png full=/tmp/full.csv reduced=/tmp/reduced.csv
     $TVD frf --vehicle $V --variant untracked --out /tmp/uv.csv
-    $TVD frf --vehicle $V --variant tracked --out /tmp/tv.csv
-    scripts/plot_frf.py --out fig14.png untracked=/tmp/uv.csv tracked=/tmp/tv.csv
+    scripts/plot_frf.py --out fig14.png untracked=/tmp/uv.csv tracked=/tmp/reduced.csv
+    $TVD frf --vehicle $V --variant tracked --speed-kmh 30 --out /tmp/v30.mat
+    scripts/plot_frf.py --out fig15.pdf synchronous=/tmp/reduced.csv "30 km/h=/tmp/v30.mat"
 
-Bad input (missing file, missing column, non-numeric value) exits with status 2 and one line on
-stderr naming the file.
+The figure type follows the extension of --out (.png, .pdf, .svg, ...). Bad input (missing or
+corrupt file, missing or repeated column, ragged row, non-numeric value or negative magnitude, an
+option that is not a finite number > 0, an output that cannot be written) exits with status 2 and
+one line on stderr naming the file; no figure is written then.
 """
 import argparse
 import math
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import column, fail, labelled, read_csv, save
+from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs, fail,
+                         labelled, positive_float, save)
 import matplotlib.pyplot as plt
+import numpy as np
 
 
 # Output name -> (panel title, y label).
@@ -38,26 +47,36 @@ LINE_STYLES = ["-", "--", ":", (0, (5, 1, 1, 1))]  # "-." is the band line
 
 def load(path):
     """frequency_hz and {output: magnitude} of one FRF file."""
-    header, rows = read_csv(path)
-    frequency = column(path, header, rows, "frequency_hz")
-    present = [n for n in OUTPUTS if n + "_mag" in header or n + "_phase_deg" in header]
+    table = Table(path)
+    frequency = table.column("frequency_hz")
+    present = [n for n in OUTPUTS if n + "_mag" in table.header or n + "_phase_deg" in table.header]
     if not present:
         fail(f"{path}: no FRF column (expected e.g. 'hull_vertical_acc_mag')")
-    return frequency, {n: column(path, header, rows, n + "_mag") for n in present}
+    magnitudes = {}
+    for name in present:
+        values = table.column(name + "_mag")
+        if np.any(values < 0):
+            k = int(np.argmax(values < 0))
+            fail(f"{path}: {table.where(k)}, column '{name}_mag': {values[k]:g} is negative "
+                 f"(a magnitude)")
+        magnitudes[name] = values
+    return frequency, magnitudes
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", required=True, help="PNG file to write")
+    parser = ArgumentParser(description=__doc__,
+                            formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", required=True, help=f"figure file to write; {OUT_HELP}")
     parser.add_argument("--title", default="", help="figure title")
-    parser.add_argument("--band-hz", type=float, default=30.0,
-                        help="CMS truncation band, drawn dash-dot [Hz] (default 30)")
-    parser.add_argument("--f-max", type=float, default=50.0, help="x axis limit [Hz] (default 50)")
-    parser.add_argument("files", nargs="+", type=labelled, metavar="LABEL=FILE.csv",
-                        help="one line per file, named LABEL in the legend")
+    parser.add_argument("--band-hz", type=positive_float, default=30.0,
+                        help="CMS truncation band, drawn dash-dot [Hz], > 0 (default 30)")
+    parser.add_argument("--f-max", type=positive_float, default=50.0,
+                        help="x axis limit [Hz], > 0 (default 50)")
+    parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE",
+                        help=LABELLED_HELP)
     args = parser.parse_args()
 
+    check_outputs(("--out", args.out))  # before reading: bad input writes no figure
     curves = [(label, *load(path)) for label, path in args.files]
     present = [n for n in OUTPUTS if any(n in outputs for _, _, outputs in curves)]
     ncols = 1 if len(present) == 1 else 2
@@ -72,19 +91,22 @@ def main():
                         label=label)
         ax.axvline(args.band_hz, color="k", linestyle="-.", linewidth=1,
                    label=f"{args.band_hz:g} Hz band")
-        ax.set_yscale("log")
-        # Wheelbase-filter notches reach ~0: show 6 decades below the peak, not down to 1e-13.
         peak = max(outputs[name].max() for _, _, outputs in curves if name in outputs)
-        ax.set_ylim(bottom=max(ax.get_ylim()[0], 1e-6 * peak))
+        if peak > 0:
+            ax.set_yscale("log")
+            # Wheelbase-filter notches reach ~0: show 6 decades below the peak, not down to 1e-13.
+            ax.set_ylim(bottom=max(ax.get_ylim()[0], 1e-6 * peak))
+        else:  # nothing to draw on a log scale
+            ax.set_ylim(-0.05, 1)
         ax.set_xlim(0, args.f_max)
-        ax.set_title(OUTPUTS[name][0])
+        ax.set_title(OUTPUTS[name][0] + ("" if peak > 0 else " (zero in every file)"))
         ax.set_xlabel("frequency [Hz]")
         ax.set_ylabel(OUTPUTS[name][1])
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize="small")
     if args.title:
         fig.suptitle(args.title)
-    save(fig, args.out)
+    save((fig, args.out))
 
 
 if __name__ == "__main__":

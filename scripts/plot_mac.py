@@ -13,18 +13,22 @@ DIR/mac.csv: header 'untracked_mode' (un-tracked mode number of each row), then 
 column per tracked mode named by its number. DIR/mac.mat (read only for --freq-out): the vectors
 untracked_frequencies_hz and tracked_frequencies_hz [Hz], indexed by mode number - 1.
 
-Bad input (missing file, missing column or variable, non-numeric value) exits with status 2 and one
-line on stderr naming the file.
+The figure type of --out and --freq-out follows the extension (.png, .pdf, .svg, ...). Bad input
+(missing or corrupt file, missing or repeated column or variable, non-numeric value, an option that
+is not a finite number in range, an output that cannot be written) exits with status 2 and one line
+on stderr naming the file; every input and output is checked before a figure is written, so bad
+input writes no figure at all.
 """
 import argparse
 import os
+import re
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import column, fail, read_csv, save
+from plot_common import (OUT_HELP, ArgumentParser, Table, check_outputs, fail, load_mat,
+                         positive_float, save)
 import matplotlib
 import matplotlib.pyplot as plt
 import numpy as np
-import scipy.io
 
 
 ROW_COLUMN = "untracked_mode"
@@ -33,37 +37,39 @@ RED = matplotlib.colors.ListedColormap(matplotlib.colormaps["Reds"](np.linspace(
 GRAY = matplotlib.colors.ListedColormap(matplotlib.colormaps["Greys"](np.linspace(0, 0.85, 256)))
 
 
+MAX_MODE = 10**6  # far more modes than any MAT vector of frequencies holds
+
+
 def mode_numbers(path, what, values):
     if np.any(values != np.round(values)) or np.any(values < 1):
         fail(f"{path}: {what} are not mode numbers >= 1")
+    if np.any(values > MAX_MODE):
+        fail(f"{path}: {what} include a mode number above {MAX_MODE}")
     return values.astype(int)
 
 
 def load_mac(path):
     """(un-tracked mode numbers, tracked mode numbers, MAC[untracked, tracked]) from mac.csv."""
-    header, rows = read_csv(path)
-    untracked = mode_numbers(path, f"the values of '{ROW_COLUMN}'",
-                             column(path, header, rows, ROW_COLUMN))
-    names = [name for name in header if name != ROW_COLUMN]
-    if not names or not all(name.isdigit() for name in names):
+    table = Table(path)
+    untracked = mode_numbers(path, f"the values of '{ROW_COLUMN}'", table.column(ROW_COLUMN))
+    names = [name for name in table.header if name != ROW_COLUMN]
+    if not names or not all(re.fullmatch("[0-9]+", name) for name in names):
         fail(f"{path}: the columns after '{ROW_COLUMN}' must be named by tracked mode numbers")
-    tracked = mode_numbers(path, "the column names", np.array([int(name) for name in names]))
-    mac = np.column_stack([column(path, header, rows, name) for name in names])
+    tracked = mode_numbers(path, "the column names",
+                           np.array([min(int(name), MAX_MODE + 1) for name in names], dtype=float))
+    mac = np.column_stack([table.column(name) for name in names])
     if mac.min() < 0 or mac.max() > 1 + 1e-9:
         fail(f"{path}: MAC values outside [0, 1]")
     return untracked, tracked, mac
 
 
-def load_frequencies(path, name, modes):
+def load_frequencies(path, data, name, modes):
     """Natural frequencies [Hz] of the given mode numbers, from variable `name` of mac.mat."""
-    try:
-        data = scipy.io.loadmat(path, variable_names=[name])
-    except (OSError, ValueError, TypeError, scipy.io.matlab.MatReadError) as error:
-        fail(f"{path}: cannot read MAT file ({getattr(error, 'strerror', None) or error})")
     if name not in data:
         fail(f"{path}: missing variable '{name}'")
     values = data[name]
-    if not np.issubdtype(values.dtype, np.number) or not np.all(np.isfinite(values)):
+    if (not isinstance(values, np.ndarray) or values.dtype.kind not in "iuf"
+            or not np.all(np.isfinite(values))):
         fail(f"{path}: variable '{name}' is not a vector of finite numbers")
     values = values.ravel()
     if modes.max() > values.size:
@@ -79,7 +85,7 @@ def mode_ticks(ax, untracked, tracked):
         axis.set_ticklabels([str(m) for m in modes[::step]], fontsize=6)
 
 
-def plot_matrix(untracked, tracked, mac, threshold, out):
+def plot_matrix(untracked, tracked, mac, threshold):
     """Fig. 9."""
     fig, ax = plt.subplots(figsize=(9, 7.5))
     shown = mac.T  # rows: tracked modes (y), columns: un-tracked modes (x)
@@ -95,14 +101,14 @@ def plot_matrix(untracked, tracked, mac, threshold, out):
     ax.set_xlabel("un-tracked (minimal track chain) model mode #")
     ax.set_ylabel("tracked model mode #")
     ax.set_title("MAC between un-tracked and tracked vehicle modes")
-    save(fig, out)
+    return fig
 
 
-def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold, f_max, out):
+def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold, f_max):
     """Fig. 10; pairs with either frequency above f_max [Hz] (if given) are left out."""
     fig, ax = plt.subplots(figsize=(7.5, 6.5))
     pairs = np.argwhere(mac >= threshold)
-    if f_max:
+    if f_max is not None:
         pairs = pairs[(f_untracked[pairs[:, 0]] <= f_max) & (f_tracked[pairs[:, 1]] <= f_max)]
     i, j = pairs[:, 0], pairs[:, 1]
     limit = f_max or 1.05 * max([1.0, *f_untracked[i], *f_tracked[j]])
@@ -129,33 +135,42 @@ def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold,
     ax.set_title(f"{len(pairs)} mode pairs with MAC $\\geq$ {threshold:g} (un-tracked/tracked #)")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left")
-    save(fig, out)
+    return fig
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser = ArgumentParser(description=__doc__,
+                            formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--mac-dir", required=True, help="directory written by `tvd mac --out`")
-    parser.add_argument("--out", required=True, help="PNG file of the MAC matrix (Fig. 9)")
-    parser.add_argument("--freq-out", help="PNG file of the frequency map (Fig. 10)")
+    parser.add_argument("--out", required=True,
+                        help=f"figure file of the MAC matrix (Fig. 9); {OUT_HELP}")
+    parser.add_argument("--freq-out",
+                        help="figure file of the frequency map (Fig. 10), same types as --out")
     parser.add_argument("--threshold", type=float, default=0.7,
-                        help="MAC of a match (default 0.7, as in the paper)")
-    parser.add_argument("--f-max", type=float,
-                        help="Fig. 10: leave out pairs above this frequency [Hz] (default: none)")
+                        help="MAC of a match, in [0, 1] (default 0.7, as in the paper)")
+    parser.add_argument("--f-max", type=positive_float,
+                        help="Fig. 10: leave out pairs above this frequency [Hz], > 0 "
+                             "(default: none)")
     args = parser.parse_args()
     if not 0 <= args.threshold <= 1:
         parser.error("--threshold must be in [0, 1]")
 
+    # Every output and input is checked before plotting, so that bad input writes no figure.
+    check_outputs(("--out", args.out), ("--freq-out", args.freq_out))
     csv_path = os.path.join(args.mac_dir, "mac.csv")
     untracked, tracked, mac = load_mac(csv_path)
-    if args.freq_out:  # read before plotting so that bad input writes no PNG at all
-        mat_path = os.path.join(args.mac_dir, "mac.mat")
-        f_untracked = load_frequencies(mat_path, "untracked_frequencies_hz", untracked)
-        f_tracked = load_frequencies(mat_path, "tracked_frequencies_hz", tracked)
-    plot_matrix(untracked, tracked, mac, args.threshold, args.out)
+    figures = []
     if args.freq_out:
-        plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, args.threshold,
-                         args.f_max, args.freq_out)
+        mat_path = os.path.join(args.mac_dir, "mac.mat")
+        names = ["untracked_frequencies_hz", "tracked_frequencies_hz"]
+        data = load_mat(mat_path, names)
+        f_untracked = load_frequencies(mat_path, data, names[0], untracked)
+        f_tracked = load_frequencies(mat_path, data, names[1], tracked)
+    figures.append((plot_matrix(untracked, tracked, mac, args.threshold), args.out))
+    if args.freq_out:
+        figures.append((plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac,
+                                         args.threshold, args.f_max), args.freq_out))
+    save(*figures)
 
 
 if __name__ == "__main__":

@@ -3,8 +3,9 @@
 
 Panels: hull heave [m], hull vertical acceleration [m/s^2], pitch [deg], roll [deg] (only if a file
 has hull_roll_deg), front-left and rear-left road wheel displacement [m]; x is station [m] or time
-[s]. Each LABEL=FILE.csv becomes one line per panel, e.g. full/reduced (Figs. 18-19), untracked/
-tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simulate --out` writes:
+[s]. Each LABEL=FILE becomes one line per panel, e.g. full/reduced (Figs. 18-19), untracked/
+tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simulate --out` writes,
+CSV or .mat (one n x 1 variable per column, same names; the char variables are ignored):
 
     TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
     $TVD simulate --vehicle $V --variant untracked --track long_hill --speed-kmh 30 --out /tmp/u.csv
@@ -13,15 +14,18 @@ tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simu
 
 Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
-rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Bad input (missing file, missing column, non-numeric value) exits with status 2 and one
-line on stderr naming the file.
+rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). The figure type
+follows the extension of --out (.png, .pdf, .svg, ...). Bad input (missing or corrupt file, missing
+or repeated column, ragged row, non-numeric value, an output that cannot be written) exits with
+status 2 and one line on stderr naming the file; no figure is written then.
 """
 import argparse
 import math
 import re
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import column, labelled, read_csv, save
+from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs, labelled,
+                         save)
 import matplotlib.pyplot as plt
 
 
@@ -41,7 +45,8 @@ LINE_STYLES = ["-", "--", "-.", ":"]
 def load(path, x_column, points=()):
     """x values and {panel key: values} of one simulation file; `points`: named points whose
     vertical acceleration gets a panel (column <point>_accel_z_m_s2)."""
-    header, rows = read_csv(path)
+    table = Table(path)
+    header = table.header
     wheel = re.compile(r"road_wheel_left_(\d+)_m")
     rear = max((int(m.group(1)) for m in map(wheel.fullmatch, header) if m), default=1)
     columns = {key: key for key in PANELS if key.startswith("hull_")}
@@ -51,8 +56,8 @@ def load(path, x_column, points=()):
         del columns["hull_roll_deg"]
     for point in points:
         columns[point_panel(point)] = f"{point}_accel_z_m_s2"
-    x = column(path, header, rows, x_column)
-    return x, {key: column(path, header, rows, name) for key, name in columns.items()}
+    x = table.column(x_column)
+    return x, {key: table.column(name) for key, name in columns.items()}
 
 
 def point_panel(point):
@@ -60,17 +65,19 @@ def point_panel(point):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--out", required=True, help="PNG file to write")
+    parser = ArgumentParser(description=__doc__,
+                            formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", required=True, help=f"figure file to write; {OUT_HELP}")
     parser.add_argument("--title", default="", help="figure title")
     parser.add_argument("--x", choices=X_AXES, default="station", help="x axis (default station)")
     parser.add_argument("--point", action="append", default=[], metavar="NAME",
                         help="add a panel of this named point's vertical acceleration (column "
                              "NAME_accel_z_m_s2, e.g. crew_seat); repeatable")
-    parser.add_argument("files", nargs="+", type=labelled, metavar="LABEL=FILE.csv",
-                        help="one line per file, named LABEL in the legend")
+    parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE",
+                        help=LABELLED_HELP)
     args = parser.parse_args()
+
+    check_outputs(("--out", args.out))  # before reading: bad input writes no figure
 
     x_column, x_label = X_AXES[args.x]
     runs = [(label, *load(path, x_column, args.point)) for label, path in args.files]
@@ -93,7 +100,7 @@ def main():
         ax.legend(fontsize="small")
     if args.title:
         fig.suptitle(args.title)
-    save(fig, args.out)
+    save((fig, args.out))
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@ Needs no C++ build: the inputs are written here in the formats of `tvd mac --out
 --xml writes a JUnit-style report (one <testcase> per test method); the exit status is 1 on failure.
 """
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -20,6 +21,7 @@ import junit_runner
 SCRIPTS = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
                                         "scripts"))
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+PDF_SIGNATURE = b"%PDF-"
 MIN_PNG_BYTES = 10_000  # a rendered figure, not an empty canvas
 INPUT_ERROR_STATUS = 2
 FRF_OUTPUTS = ["hull_vertical_acc", "hull_pitch_acc", "front_wheel_acc", "rear_wheel_acc"]
@@ -31,6 +33,36 @@ def write_csv(path, columns):
     names = list(columns)
     np.savetxt(path, np.column_stack([columns[n] for n in names]), delimiter=",", fmt="%.9g",
                header=",".join(names), comments="")
+    return path
+
+
+def write_mat(path, columns, metadata=None):
+    """columns in the format of `tvd frf/simulate --out FILE.mat`: one n x 1 variable per column,
+    plus char metadata variables."""
+    variables = dict(metadata or {"vehicle": "synthetic", "variant": "tracked", "model": "reduced"})
+    variables.update({n: np.asarray(v, dtype=float).reshape(-1, 1) for n, v in columns.items()})
+    scipy.io.savemat(path, variables)
+    return path
+
+
+def corrupt_mat(path):
+    """Flips 8 bytes in the middle of the first data element of a MAT v5 file."""
+    with open(path, "rb") as stream:
+        data = bytearray(stream.read())
+    size = struct.unpack("<I", data[132:136])[0]
+    middle = 136 + size // 2
+    data[middle:middle + 8] = bytes(b ^ 0x5A for b in data[middle:middle + 8])
+    with open(path, "wb") as stream:
+        stream.write(data)
+
+
+def rewrite_lines(path, edit):
+    """Applies edit(list of lines) to a text file."""
+    with open(path) as stream:
+        lines = stream.read().splitlines()
+    edit(lines)
+    with open(path, "w") as stream:
+        stream.write("\n".join(lines) + "\n")
     return path
 
 
@@ -82,7 +114,8 @@ def simulation_columns(with_roll=True, speed_kmh=30.0):
 
 
 def write_mac_dir(directory, n_untracked=6, n_tracked=8, with_mat=True, row_column=MAC_ROW_COLUMN,
-                  mat_variables=("untracked_frequencies_hz", "tracked_frequencies_hz")):
+                  mat_variables=("untracked_frequencies_hz", "tracked_frequencies_hz"),
+                  compress=False):
     """A small directory in the format of `tvd mac --out DIR`: mac.csv and mac.mat."""
     os.makedirs(directory, exist_ok=True)
     rng = np.random.default_rng(7)
@@ -99,7 +132,7 @@ def write_mac_dir(directory, n_untracked=6, n_tracked=8, with_mat=True, row_colu
         variables = {"mac": mac, "threshold": np.array([[0.7]]),
                      "untracked_mode_types": np.array([["bounce"]] * n_untracked, dtype=object)}
         variables.update({n: frequencies[n].reshape(-1, 1) for n in mat_variables})
-        scipy.io.savemat(os.path.join(directory, "mac.mat"), variables)
+        scipy.io.savemat(os.path.join(directory, "mac.mat"), variables, do_compression=compress)
     return directory
 
 
@@ -144,6 +177,60 @@ class PlotScriptsTest(unittest.TestCase):
             self.assertEqual(result.returncode, 0, result.stderr)
             self.assertIn("--out", result.stdout)
 
+    def test_help_is_current(self):
+        # `tvd frf` exists (README); the help gives its real options and the .mat/'=' rules.
+        result = self.run_script("plot_frf.py", "--help")
+        self.assertNotIn("not written yet", result.stdout)
+        for words in ("--speed-kmh", "--model full", ".mat"):
+            self.assertIn(words, result.stdout)
+        for script in ("plot_frf.py", "plot_simulation.py"):
+            result = self.run_script(script, "--help")
+            self.assertIn(".mat", result.stdout)
+            self.assertIn("contains '='", result.stdout)
+
+    # every script: options, outputs
+
+    def test_options_must_be_finite_and_positive(self):
+        mac_dir = write_mac_dir(self.path("mac"))
+        frf = write_csv(self.path("frf.csv"), frf_columns())
+        out, freq_out = self.path("a.png"), self.path("b.png")
+        for value in ("nan", "inf", "-inf", "-3", "0", "x"):
+            result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out,
+                                     "--freq-out", freq_out, f"--f-max={value}")
+            self.assert_input_error(result, out, "--f-max", value)
+            self.assertFalse(os.path.exists(freq_out))
+            for option in ("--f-max", "--band-hz"):
+                result = self.run_script("plot_frf.py", "--out", out, f"{option}={value}",
+                                         f"a={frf}")
+                self.assert_input_error(result, out, option, value)
+
+    def test_mac_unwritable_freq_out_writes_no_figure(self):
+        mac_dir = write_mac_dir(self.path("mac"))
+        out = self.path("mac.png")
+        for freq_out in (self.path("nowhere/freq.png"), self.dir, self.path("freq.txt"), out):
+            result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out,
+                                     "--freq-out", freq_out)
+            self.assert_input_error(result, out, freq_out)
+
+    def test_output_type_follows_extension(self):
+        mac_dir = write_mac_dir(self.path("mac"))
+        frf = write_csv(self.path("frf.csv"), frf_columns())
+        sim = write_csv(self.path("sim.csv"), simulation_columns())
+        runs = {"plot_mac.py": ["--mac-dir", mac_dir, "--out"],
+                "plot_frf.py": [f"a={frf}", "--out"],
+                "plot_simulation.py": [f"a={sim}", "--out"]}
+        for script, args in runs.items():
+            pdf, svg = self.path(f"{script}.PDF"), self.path(f"{script}.svg")
+            for out, signature in ((pdf, PDF_SIGNATURE), (svg, b"<?xml")):
+                result = self.run_script(script, *args, out)
+                self.assertEqual(result.returncode, 0, result.stderr)
+                self.assertEqual(result.stdout.splitlines(), [out])
+                with open(out, "rb") as stream:
+                    self.assertEqual(stream.read(len(signature)), signature, out)
+            for bad in ("fig.txt", "fig"):
+                result = self.run_script(script, *args, self.path(bad))
+                self.assert_input_error(result, self.path(bad), "--out", self.path(bad))
+
     # plot_mac.py
 
     def test_mac_matrix_and_frequency_map(self):
@@ -175,6 +262,50 @@ class PlotScriptsTest(unittest.TestCase):
         out = self.path("mac.png")
         result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out)
         self.assert_input_error(result, out, "mac.csv", MAC_ROW_COLUMN)
+
+    def test_mac_corrupt_mat_file(self):
+        mac_dir = write_mac_dir(self.path("mac"), compress=True)
+        corrupt_mat(os.path.join(mac_dir, "mac.mat"))  # zlib: incorrect data check
+        out, freq_out = self.path("mac.png"), self.path("freq.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out, "--freq-out",
+                                 freq_out)
+        self.assert_input_error(result, out, os.path.join(mac_dir, "mac.mat"),
+                                "cannot read MAT file")
+        self.assertFalse(os.path.exists(freq_out))
+
+    def test_mac_truncated_mat_file(self):
+        for compress in (False, True):
+            mac_dir = write_mac_dir(self.path(f"mac{compress}"), compress=compress)
+            mat = os.path.join(mac_dir, "mac.mat")
+            with open(mat, "rb") as stream:
+                data = stream.read()
+            for size in (len(data) // 2, 100):
+                with open(mat, "wb") as stream:
+                    stream.write(data[:size])
+                out = self.path("mac.png")
+                result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out,
+                                         "--freq-out", self.path("freq.png"))
+                self.assert_input_error(result, out, mat, "cannot read MAT file", "truncated")
+
+    def test_mac_duplicate_column_and_huge_mode_number(self):
+        mac_dir = write_mac_dir(self.path("mac"))
+        path = os.path.join(mac_dir, "mac.csv")
+        with open(path) as stream:
+            original = stream.read().splitlines()
+
+        def duplicate(lines):
+            lines[0] = lines[0].replace(",2,", ",1,")
+        rewrite_lines(path, duplicate)
+        out = self.path("mac.png")
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out)
+        self.assert_input_error(result, out, path, "'1'", "twice")
+
+        def huge(lines):
+            lines[:] = original
+            lines[2] = "1e300" + lines[2][lines[2].index(","):]
+        rewrite_lines(path, huge)  # no numpy overflow warning before the error line
+        result = self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out)
+        self.assert_input_error(result, out, path, MAC_ROW_COLUMN)
 
     def test_mac_missing_frequency_variable(self):
         mac_dir = write_mac_dir(self.path("mac"), mat_variables=("untracked_frequencies_hz",))
@@ -214,6 +345,49 @@ class PlotScriptsTest(unittest.TestCase):
         out = self.path("frf.png")
         result = self.run_script("plot_frf.py", "--out", out, f"full={path}")
         self.assert_input_error(result, out, path, "hull_pitch_acc_mag")
+
+    def test_frf_mat_input(self):
+        columns = frf_columns()
+        csv_path = write_csv(self.path("full.csv"), columns)
+        mat_path = write_mat(self.path("reduced.mat"), columns)
+        out = self.path("frf.png")
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, f"full={csv_path}",
+                                        f"reduced={mat_path}"), out)
+        # A corrupt or inconsistent .mat file is named as a MAT file.
+        corrupt = write_mat(self.path("corrupt.mat"), columns)
+        with open(corrupt, "r+b") as stream:
+            stream.truncate(os.path.getsize(corrupt) // 2)
+        result = self.run_script("plot_frf.py", "--out", out + "2.png", corrupt)
+        self.assert_input_error(result, out + "2.png", corrupt, "cannot read MAT file")
+        columns["hull_pitch_acc_mag"] = columns["hull_pitch_acc_mag"][:-1]
+        short = write_mat(self.path("short.mat"), columns)
+        result = self.run_script("plot_frf.py", "--out", out + "3.png", short)
+        self.assert_input_error(result, out + "3.png", short, "'hull_pitch_acc_mag'")
+
+    def test_frf_ragged_row(self):
+        path = write_csv(self.path("ragged.csv"), frf_columns())
+        rewrite_lines(path, lambda lines: lines.__setitem__(3, lines[3] + ",7"))
+        out = self.path("frf.png")
+        result = self.run_script("plot_frf.py", "--out", out, f"full={path}")
+        self.assert_input_error(result, out, path, "line 4")
+
+    def test_frf_output_zero_in_every_file(self):
+        columns = frf_columns()
+        columns["hull_pitch_acc_mag"][:] = 0.0
+        path = write_csv(self.path("zero.csv"), columns)
+        out = self.path("frf.png")
+        result = self.run_script("plot_frf.py", "--out", out, f"full={path}")
+        self.assert_png(result, out)
+        self.assertEqual(result.stderr, "")  # no matplotlib warning about the log scale
+
+    def test_frf_path_with_equals_sign(self):
+        path = write_csv(self.path("v=30.csv"), frf_columns())
+        out = self.path("frf.png")
+        # An existing file is a bare FILE; LABEL= in front works too.
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, path, f"30 km/h={path}"), out)
+        missing = self.path("v=40.csv")  # neither the whole nor the part after '=' exists
+        result = self.run_script("plot_frf.py", "--out", self.path("no.png"), missing)
+        self.assert_input_error(result, self.path("no.png"), "40.csv", "LABEL=FILE", missing)
 
     def test_frf_missing_file(self):
         out = self.path("frf.png")
@@ -263,6 +437,27 @@ class PlotScriptsTest(unittest.TestCase):
         out = self.path("sim.png")
         result = self.run_script("plot_simulation.py", "--out", out, f"full={path}")
         self.assert_input_error(result, out, path, "line 6", "hull_heave_m", "abc")
+
+    def test_simulation_mat_input(self):
+        columns = simulation_columns()
+        columns["crew_seat_accel_z_m_s2"] = 1.3 * columns["hull_vertical_accel_m_s2"]
+        path = write_mat(self.path("run.mat"), columns,
+                         {"vehicle": "v", "variant": "tracked", "track": "hill", "model": "full"})
+        out = self.path("sim.png")
+        self.assert_png(self.run_script("plot_simulation.py", "--out", out, "--point", "crew_seat",
+                                        f"run={path}"), out)
+        del columns["hull_pitch_deg"]
+        bad = write_mat(self.path("bad.mat"), columns)
+        result = self.run_script("plot_simulation.py", "--out", self.path("no.png"), bad)
+        self.assert_input_error(result, self.path("no.png"), bad, "hull_pitch_deg")
+
+    def test_simulation_duplicate_column(self):
+        path = write_csv(self.path("dup.csv"), simulation_columns())
+        rewrite_lines(path, lambda lines: lines.__setitem__(
+            0, lines[0].replace("hull_roll_deg", "hull_pitch_deg")))
+        out = self.path("sim.png")
+        result = self.run_script("plot_simulation.py", "--out", out, f"full={path}")
+        self.assert_input_error(result, out, path, "'hull_pitch_deg'", "twice")
 
     def test_simulation_missing_file(self):
         out = self.path("sim.png")
