@@ -1,6 +1,5 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -210,12 +209,11 @@ Terrain loadTerrain(const std::string& path) {
 }
 
 Terrain loadTrack(const std::string& track, const TrackOptions& options) {
-  const std::vector<std::string> names = trackNames();
-  if (std::find(names.begin(), names.end(), track) != names.end()) return makeTrack(track, options);
+  if (isBuiltInTrack(track)) return makeTrack(track, options);
   const std::string extension = io::lowerExtension(track);
   if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
     std::string known;
-    for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& n : trackNames()) known += (known.empty() ? "" : ", ") + n;
     throw InputError("track '" + track + "' is neither a built-in track (" + known +
                      ") nor a terrain file (.csv, .yaml)");
   }

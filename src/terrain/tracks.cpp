@@ -83,6 +83,11 @@ Terrain buildTrack(const std::string& name, const TrackOptions& options,
 
 std::vector<std::string> trackNames() { return {kLongHill, kSeparatedWaves, kOopWaves}; }
 
+bool isBuiltInTrack(const std::string& name) {
+  const std::vector<std::string> names = trackNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
 double defaultLateralOffset(const std::string& name) {
   if (name == kLongHill || name == kSeparatedWaves) return 0.0;
   if (name == kOopWaves) return kOopWavesLateralOffset;

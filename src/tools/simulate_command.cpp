@@ -112,9 +112,7 @@ void run(const SimulateOptions& opt) {
   // than a choice. (The built-in oop_waves, 5 m wide and driven 1 m off centre as in the paper,
   // leaves the left outer pad row 5.5 cm beyond its edge: README, time domain.)
   std::vector<std::string> warnings;
-  const std::vector<std::string> built_in = terrain::trackNames();
-  const bool is_file = std::find(built_in.begin(), built_in.end(), opt.track) == built_in.end();
-  if (is_file && track.lateral().size() > 1) {
+  if (!terrain::isBuiltInTrack(opt.track) && track.lateral().size() > 1) {
     const double y_min = road.inputY().minCoeff(), y_max = road.inputY().maxCoeff();
     const double t_min = track.lateral()(0), t_max = track.lateral()(track.lateral().size() - 1);
     if (y_min < t_min - 1e-9 || y_max > t_max + 1e-9) {

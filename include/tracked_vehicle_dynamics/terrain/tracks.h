@@ -73,6 +73,8 @@ struct TrackOptions {
 
 /// "long_hill", "separated_waves", "oop_waves".
 std::vector<std::string> trackNames();
+/// Whether `name` is one of trackNames().
+bool isBuiltInTrack(const std::string& name);
 
 /// The named built-in track. Throws InputError for an unknown name (listing the known ones) or
 /// invalid options (naming the field).
