@@ -54,11 +54,7 @@ class NodeSimTime : public ::testing::Test {
     }
   }
 
-  void setClock(const ros::Time& t) {
-    rosgraph_msgs::Clock c;
-    c.clock = t;
-    clock_pub_.publish(c);
-  }
+  void setClock(const ros::Time& t) { test::publishClock(clock_pub_, t); }
 
   /// Moves the clock to `t` and waits until the node has published its sample at `t`.
   bool advanceTo(const ros::Time& t) {
@@ -94,16 +90,9 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   const double speed = test::requiredParam<double>(private_nh_, "speed");
   const double catch_up_limit = test::requiredParam<double>(private_nh_, "catch_up_limit");
   const double speed_timeout = test::requiredParam<double>(private_nh_, "speed_timeout");
-  // The clock ticks 1 ms per 10 ms of wall time until the node publishes its first sample.
+  // Simulated time runs once the node has loaded its model and published its first sample.
   ros::Time t(100.0);
-  ASSERT_TRUE(test::spinUntil(
-      [&] {
-        t += ros::Duration(0.001);
-        setClock(t);
-        ros::WallDuration(0.01).sleep();
-        return messages_ > 0;
-      },
-      45.0))
+  ASSERT_TRUE(test::tickClockUntil(clock_pub_, &t, [&] { return messages_ > 0; }, 45.0))
       << "the node published nothing";
   ASSERT_TRUE(advanceTo(t + ros::Duration(0.001)));
   t = last_.header.stamp;

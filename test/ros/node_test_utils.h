@@ -10,6 +10,7 @@
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
 
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
@@ -29,6 +30,27 @@ inline bool spinUntil(const std::function<bool()>& done, double timeout) {
     ros::WallDuration(0.001).sleep();
   }
   return done();
+}
+
+/// Publishes simulated time `t` on a /clock publisher.
+inline void publishClock(const ros::Publisher& clock, const ros::Time& t) {
+  rosgraph_msgs::Clock c;
+  c.clock = t;
+  clock.publish(c);
+}
+
+/// With use_sim_time: advances *t by 1 ms of simulated time per 10 ms of wall time (the node
+/// loads its model meanwhile) until `started()`, at most `timeout` seconds; returns started().
+inline bool tickClockUntil(const ros::Publisher& clock, ros::Time* t,
+                           const std::function<bool()>& started, double timeout) {
+  return spinUntil(
+      [&] {
+        *t += ros::Duration(0.001);
+        publishClock(clock, *t);
+        ros::WallDuration(0.01).sleep();
+        return started();
+      },
+      timeout);
 }
 
 /// Spins for `seconds` of wall time.
