@@ -14,7 +14,9 @@ CSV or .mat (one n x 1 variable per column, same names; the char variables are i
 
 Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
-rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). The figure type
+rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Where a file has
+road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey in its panel (the paper's
+dashed h_F and h_R). The figure type
 follows the extension of --out (.png, .pdf, .svg, ...). Bad input (missing or corrupt file, missing
 or repeated column, ragged row, non-numeric value, an output that cannot be written) exits with
 status 2 and one line on stderr naming the file; no figure is written then.
@@ -56,8 +58,17 @@ def load(path, x_column, points=()):
         del columns["hull_roll_deg"]
     for point in points:
         columns[point_panel(point)] = f"{point}_accel_z_m_s2"
+    # The road under each wheel (newer files), drawn dashed under its wheel like the paper's h_F
+    # and h_R.
+    for key in ("front_left_wheel", "rear_left_wheel"):
+        if f"road_under_{columns[key]}" in header:
+            columns[road_panel(key)] = f"road_under_{columns[key]}"
     x = table.column(x_column)
     return x, {key: table.column(name) for key, name in columns.items()}
+
+
+def road_panel(key):
+    return f"{key}/road"
 
 
 def point_panel(point):
@@ -93,6 +104,10 @@ def main():
         for k, (label, x, series) in enumerate(runs):
             if key in series:
                 ax.plot(x, series[key], linestyle=LINE_STYLES[k % len(LINE_STYLES)], label=label)
+            if road_panel(key) in series:
+                ax.plot(x, series[road_panel(key)], color="grey", linewidth=0.8,
+                        linestyle=LINE_STYLES[(k + 1) % len(LINE_STYLES)],
+                        label=f"road under it ({label})" if len(runs) > 1 else "road under it")
         ax.set_ylabel(labels[key])
         ax.set_xlabel(x_label)
         ax.xaxis.set_tick_params(labelbottom=True)

@@ -7,7 +7,6 @@
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
-#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -53,23 +52,6 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
     sim.max_mode_frequency_hz =
         options.max_mode_frequency_hz < 0 ? 0.5 * options.rate : options.max_mode_frequency_hz;
   return sim;
-}
-
-VehicleGeometry vehicleGeometry(const vehicle::VehicleDescription& description) {
-  const vehicle::VehicleModel built =
-      vehicle::buildVehicleModel(description, vehicle::Variant::Untracked);
-  const auto index = built.model.nodeIndex();
-  auto position = [&](NodeId id) { return built.model.nodes.at(index.at(id)).position; };
-  VehicleGeometry geometry;
-  geometry.vehicle_name = description.name;
-  geometry.cog = position(built.layout.hull);
-  for (const vehicle::WheelStation& wheel : built.layout.wheels) {
-    geometry.wheels.push_back({wheel.name, position(wheel.centre)});
-  }
-  for (const vehicle::NamedPoint& point : description.named_points) {
-    geometry.points.push_back({point.name, point.position});
-  }
-  return geometry;
 }
 
 OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,

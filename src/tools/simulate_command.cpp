@@ -30,6 +30,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -74,6 +75,7 @@ void run(const SimulateOptions& opt) {
   reduction::VehicleReductionReport report;
   reduction::ReducedModel model;
   std::unique_ptr<reduction::FullModelReference> full;
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
   if (opt.model == "full") {
     if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
     if (opt.max_mode_hz == 0 || opt.max_mode_hz > 100)
@@ -83,7 +85,7 @@ void run(const SimulateOptions& opt) {
     reduction::FullReferenceOptions ref_options;
     if (opt.max_mode_hz >= 0) ref_options.max_frequency_hz = opt.max_mode_hz;
     full = std::make_unique<reduction::FullModelReference>(reduction::buildVehicleReference(
-        vehicle::loadVehicleDescription(opt.vehicle_file), variant, ref_options));
+        description, variant, ref_options));
   } else {
     model = reduction::loadOrReduceVehicle(
         opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
@@ -137,6 +139,13 @@ void run(const SimulateOptions& opt) {
 
   const std::vector<std::string>& names = sim.outputNames();
   const SimulationLayout layout = simulationLayout(names, sys.output_names);
+  // The road under each wheel centre, from its height at the start like the displacements.
+  const std::vector<RoadUnderWheel> roads = roadUnderWheels(layout, vehicle::vehicleGeometry(description));
+  auto roadHeight = [&](const RoadUnderWheel& r, long k) {
+    return track.height(drive.station(k) + r.x, r.y + opt.lateral_offset);
+  };
+  Vector road0(static_cast<Eigen::Index>(roads.size()));
+  for (std::size_t r = 0; r < roads.size(); ++r) road0(static_cast<Eigen::Index>(r)) = roadHeight(roads[r], 0);
   // Ride comfort at the hull's CoG and at every named point: ISO 2631-1 Wk and absorbed power
   // vertically, Wd in x and y.
   std::vector<std::string> comfort_points = {"hull"};
@@ -147,7 +156,8 @@ void run(const SimulateOptions& opt) {
                          outputRow(names, point + " uz/acc"), opt.dt);
 
   constexpr int kFirstColumn = 2;  // after time and station
-  Matrix series(steps + 1, kFirstColumn + layout.columns.size());
+  const auto first_road = static_cast<Eigen::Index>(kFirstColumn + layout.columns.size());
+  Matrix series(steps + 1, first_road + static_cast<Eigen::Index>(roads.size()));
   Vector y0;
   // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
   // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
@@ -181,6 +191,11 @@ void run(const SimulateOptions& opt) {
     }
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  for (long k = 0; k <= steps; ++k)
+    for (std::size_t r = 0; r < roads.size(); ++r) {
+      const auto i = static_cast<Eigen::Index>(r);
+      series(k, first_road + i) = roadHeight(roads[r], k) - road0(i);
+    }
   const double simulated = steps * opt.dt;
   const double travelled = series(steps, 1) - track.startStation();
   if (travelled < distance * (1 - 1e-9)) {
@@ -205,6 +220,7 @@ void run(const SimulateOptions& opt) {
   if (!opt.out_file.empty()) {
     std::vector<std::string> headers = {"time_s", "station_m"};
     for (const SimulationColumn& col : layout.columns) headers.push_back(col.header);
+    for (const RoadUnderWheel& r : roads) headers.push_back(r.header);
     writeTable(opt.out_file, headers, series, 9,
                {{"vehicle", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},

@@ -65,5 +65,21 @@ SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows
   return layout;
 }
 
+std::vector<RoadUnderWheel> roadUnderWheels(const SimulationLayout& layout,
+                                            const vehicle::VehicleGeometry& geometry) {
+  std::vector<RoadUnderWheel> roads;
+  for (std::size_t c = layout.first_wheel; c < layout.first_wheel + layout.wheel_count; ++c) {
+    const std::string& header = layout.columns[c].header;  // "<wheel>_m"
+    const std::string wheel = header.substr(0, header.size() - 2);
+    const auto it = std::find_if(geometry.wheels.begin(), geometry.wheels.end(),
+                                 [&](const vehicle::VehicleGeometry::Body& b) { return b.name == wheel; });
+    if (it == geometry.wheels.end())
+      throw InputError("simulate: the vehicle description has no road wheel '" + wheel +
+                       "', which the model outputs");
+    roads.push_back({"road_under_" + header, it->position.x(), it->position.y()});
+  }
+  return roads;
+}
+
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/types.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -36,6 +37,20 @@ struct SimulationLayout {
 /// "crew_seat ux", ...). Throws InputError naming an output the model lacks.
 SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows,
                                   const std::vector<std::string>& system_outputs);
+
+/// The road under a road-wheel centre: the terrain's height at the wheel's static position on
+/// the ground plane, (s + x_w, y_w + y_0) for station s and lateral offset y_0, the line the
+/// paper's Fig. 18 draws dashed as h_F and h_R under the front and rear axles.
+struct RoadUnderWheel {
+  std::string header;  ///< "road_under_road_wheel_left_1_m"
+  double x = 0.0;      ///< wheel centre, ahead of the reference point [m]
+  double y = 0.0;      ///< wheel centre, left of the path's centre line [m]
+};
+
+/// One entry per road-wheel column of `layout`, in its order, placed by `geometry`. Throws
+/// InputError when the geometry lacks a wheel the model outputs.
+std::vector<RoadUnderWheel> roadUnderWheels(const SimulationLayout& layout,
+                                            const vehicle::VehicleGeometry& geometry);
 
 /// Row of `name` in `simulator_rows`; throws InputError naming it when absent.
 DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name);

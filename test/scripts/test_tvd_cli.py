@@ -120,8 +120,9 @@ class TvdCliTest(unittest.TestCase):
         header, rows = read_csv(out)
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
-        # 7 more hull rates and accelerations, 14 wheels, 4 columns for each of 2 named points.
-        self.assertEqual(len(header), 6 + 7 + 14 + 2 * 4)
+        # 7 more hull rates and accelerations, 14 wheels, 4 columns for each of 2 named points,
+        # the road under each of the 14 wheels.
+        self.assertEqual(len(header), 6 + 7 + 14 + 2 * 4 + 14)
         # 30 m at 50 km/h in 1 ms steps, plus the initial sample.
         self.assertEqual(len(rows), round(30.0 / (speed_kmh / 3.6) / 1e-3) + 1)
         self.assertAlmostEqual(rows[-1, 0], d["simulated_seconds"], places=9)
@@ -499,6 +500,45 @@ class TvdCliTest(unittest.TestCase):
                                "--track", track, "--speed-kmh", "30", "--cache-dir", self.cache)
         self.assertEqual(len(result["warnings"]), 1)
         self.assertIn("edge line", result["warnings"][0])
+
+    def test_road_under_each_wheel_is_the_terrain_at_the_wheel(self):
+        # The out-of-phase waves differ left and right and along the track: each column must be
+        # the terrain file's height at its own wheel's (station + x_w, y_w), bilinear between the
+        # file's samples, from its value at the start (0 on the flat entry). The CSV's 9
+        # significant digits of station (up to 5e-8 m) times the waves' slope (up to 1.6) bound
+        # the difference to 1e-7 m; a wheel misplaced by 1 mm would differ by up to 1.6 mm.
+        track, out = self.path("oop_road.csv"), self.path("oop_run.csv")
+        self.tvd("terrain", "--track", "oop_waves", "--out", track)
+        with open(track) as f:
+            lines = [line for line in f if not line.startswith("#")]
+        y_lines = np.array(lines[0].strip().split(",")[1:], dtype=float)
+        grid = np.array([line.split(",") for line in lines[1:]], dtype=float)
+        stations, heights = grid[:, 0], grid[:, 1:]
+        self.tvd("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", track,
+                 "--speed-kmh", "30", "--cache-dir", self.cache, "--out", out)
+        header, rows = read_csv(out)
+        column = {name: rows[:, i] for i, name in enumerate(header)}
+        with open(VEHICLE) as f:
+            gear = yaml.safe_load(f)["running_gear"]
+        n, spacing = gear["axle_count"]["value"], gear["axle_spacing"]["value"]
+        half_track = 0.5 * gear["track_centre_distance"]["value"]
+        for side, y in (("left", half_track), ("right", -half_track)):
+            # Between the file's two lines around y, then along the stations (held at the ends).
+            j = np.searchsorted(y_lines, y) - 1
+            w = (y - y_lines[j]) / (y_lines[j + 1] - y_lines[j])
+            profile = (1 - w) * heights[:, j] + w * heights[:, j + 1]
+            for k in range(1, n + 1):
+                x = (0.5 * (n - 1) - (k - 1)) * spacing  # axle k, front first, centred on 0
+                expected = np.interp(column["station_m"] + x, stations, profile) - profile[0]
+                name = f"road_under_road_wheel_{side}_{k}_m"
+                np.testing.assert_allclose(column[name], expected, rtol=0, atol=1e-7, err_msg=name)
+        # The track is not the same left and right, so the test above is not one line twice.
+        self.assertGreater(np.abs(column["road_under_road_wheel_left_1_m"]
+                                  - column["road_under_road_wheel_right_1_m"]).max(), 0.1)
+        # The wheel stands on its road: at 30 km/h the un-tracked front wheel follows the road
+        # under it to within its pad's compliance and the waves' curvature, not a wave height.
+        self.assertLess(np.abs(column["road_wheel_left_1_m"]
+                               - column["road_under_road_wheel_left_1_m"]).max(), 0.15)
 
     def test_model_statics_under_gravity_match_the_closed_form(self):
         # config/models/cantilever_beam.yaml: m_t g L^3/(3 EI) + rho A g L^4/(8 EI) = 2.54214 mm

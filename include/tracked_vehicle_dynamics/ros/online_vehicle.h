@@ -23,6 +23,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 #include "tracked_vehicle_dynamics/types.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -35,22 +36,9 @@ struct TerrainPatch {
   Matrix heights;              ///< [n_lines x n_samples] [m]
 };
 
-/// Static positions, in base_link [m], of what the node publishes frames for.
-struct VehicleGeometry {
-  struct Body {
-    std::string name;
-    Vector3 position = Vector3::Zero();  ///< undeformed [m]
-  };
-  std::string vehicle_name;
-  Vector3 cog = Vector3::Zero();  ///< hull centre of gravity p_G [m]
-  std::vector<Body> wheels;       ///< road-wheel centres, left 1..n then right 1..n
-  std::vector<Body> points;       ///< named points of the description
-};
-
-/// Positions of the hull CoG, road-wheel centres and named points of a description (from its
-/// untracked FE model: the wheel centres are the same in both variants). Throws InputError like
-/// vehicle::buildVehicleModel().
-VehicleGeometry vehicleGeometry(const vehicle::VehicleDescription& description);
+// The node publishes frames at the description's static positions (vehicle_geometry.h).
+using vehicle::VehicleGeometry;
+using vehicle::vehicleGeometry;
 
 struct OnlineVehicleOptions {
   double rate = 1000.0;  ///< step rate 1/h [Hz]
