@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Tests of launch/vehicle_dynamics.launch and launch/replay_track.launch without a master.
+
+`roslaunch --dump-params` resolves a launch file's parameters and `roslaunch --args NODE` a node's
+command line, both offline. What they must show: the node's parameter file (config:=FILE) is in
+force unless an argument is given on the command line, the arguments then win, replay_track passes
+its arguments through, and its recorder keeps /tf_static (the named points' frames). Run as
+    /usr/bin/python3 test/scripts/test_launch_files.py --env-sh DEVEL/env.sh [--xml OUTDIR/launch_files.xml]
+"""
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import yaml
+
+import junit_runner
+
+PACKAGE = "tracked_vehicle_dynamics"
+NODE = "/vehicle_dynamics"
+ENV_SH = None  # set from --env-sh: the devel space's env.sh, which finds the package
+
+
+def roslaunch(*args):
+    result = subprocess.run([ENV_SH, "roslaunch", *args], capture_output=True, text=True,
+                            timeout=120)
+    if result.returncode != 0:
+        raise AssertionError(f"roslaunch {' '.join(args)} failed:\n{result.stdout}\n{result.stderr}")
+    return result.stdout
+
+
+def params(launch_file, *args):
+    """The node's private parameters as roslaunch would set them: {name: value}."""
+    dumped = yaml.safe_load(roslaunch("--dump-params", PACKAGE, launch_file, *args))
+    return {key[len(NODE) + 1:]: value for key, value in dumped.items() if key.startswith(NODE + "/")}
+
+
+class LaunchFilesTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="tvd_launch_")
+        # A user's edited copy of the parameter file: other values than the defaults.
+        cls.config = os.path.join(cls.work, "my_vehicle_dynamics.yaml")
+        with open(cls.config, "w") as f:
+            yaml.safe_dump({"variant": "untracked", "rate": 500.0, "lateral_offset": 0.75,
+                            "max_speed": 12.0}, f)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def test_defaults_come_from_the_bundled_parameter_file(self):
+        p = params("vehicle_dynamics.launch")
+        self.assertEqual(p["variant"], "tracked")
+        self.assertEqual(p["rate"], 1000.0)
+        self.assertEqual(p["lateral_offset"], 0.0)
+        self.assertTrue(p["vehicle"].endswith("config/vehicles/paper_vehicle.yaml"))
+        self.assertNotIn("cache_dir", p)  # the node's own default
+
+    def test_an_edited_parameter_file_is_not_overridden_by_argument_defaults(self):
+        p = params("vehicle_dynamics.launch", f"config:={self.config}")
+        self.assertEqual((p["variant"], p["rate"], p["lateral_offset"], p["max_speed"]),
+                         ("untracked", 500.0, 0.75, 12.0))
+
+    def test_arguments_given_win_over_the_parameter_file(self):
+        p = params("vehicle_dynamics.launch", f"config:={self.config}", "variant:=tracked",
+                   "rate:=200", "lateral_offset:=-1", "cache_dir:=/tmp/tvd_cache")
+        self.assertEqual((p["variant"], p["rate"], p["lateral_offset"], p["cache_dir"]),
+                         ("tracked", 200.0, -1.0, "/tmp/tvd_cache"))
+        self.assertIsInstance(p["rate"], float)  # the node reads a double
+        self.assertEqual(p["max_speed"], 12.0)   # the rest of the file still applies
+
+    def test_replay_track_passes_its_arguments_and_config_through(self):
+        p = params("replay_track.launch", f"config:={self.config}")
+        self.assertEqual((p["variant"], p["rate"], p["lateral_offset"]), ("untracked", 500.0, 0.75))
+        p = params("replay_track.launch", f"config:={self.config}", "rate:=250")
+        self.assertEqual(p["rate"], 250.0)
+
+    def test_replay_track_records_the_static_frames(self):
+        recorder = roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch").split()
+        for topic in ("/tf", "/tf_static", "/hull/accel", "/road_wheels", "/comfort"):
+            self.assertIn(topic, recorder)
+
+
+def configure(parser):
+    parser.add_argument("--env-sh", required=True, help="the devel space's env.sh")
+
+    def apply(args):
+        global ENV_SH
+        ENV_SH = os.path.abspath(args.env_sh)
+    return apply
+
+
+if __name__ == "__main__":
+    sys.exit(junit_runner.main(LaunchFilesTest, "launch_files", __doc__, configure=configure))
