@@ -89,6 +89,28 @@ inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
       "FILE");
 }
 
+/// An output directory, checked before any work: an existing writable directory, or one that can
+/// be created (its nearest existing ancestor is a writable directory).
+inline CLI::Validator outputDirectory() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        fs::path dir = text.empty() ? fs::path(".") : fs::path(text);
+        if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+          return "'" + text + "' exists and is not a directory";
+        fs::path existing = dir;
+        while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
+        if (existing.empty()) existing = ".";
+        if (!fs::is_directory(existing, ec))
+          return "'" + text + "': " + existing.string() + " is not a directory";
+        if (::access(existing.c_str(), W_OK) != 0)
+          return "'" + text + "': the directory " + existing.string() + " is not writable";
+        return std::string();
+      },
+      "DIR");
+}
+
 void registerModesCommand(CLI::App& app);
 void registerMacCommand(CLI::App& app);
 void registerReduceCommand(CLI::App& app);

@@ -164,7 +164,8 @@ void registerMacCommand(CLI::App& app) {
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")
       ->check(positiveNumber());
   cmd->add_flag("--json", opt->json, "print a JSON document (MAC matrix, correlation table)");
-  cmd->add_option("--out", opt->out_dir, "write mac.csv and mac.mat to this directory");
+  cmd->add_option("--out", opt->out_dir, "write mac.csv and mac.mat to this directory (created if missing)")
+      ->check(outputDirectory());
   cmd->callback([opt]() { run(*opt); });
 }
 

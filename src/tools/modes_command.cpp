@@ -221,7 +221,8 @@ void registerModesCommand(CLI::App& app) {
   max_frequency->needs(model);
   variant->needs(vehicle);
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");
-  cmd->add_option("--out", opt->out_dir, "write modes.csv, shapes.csv and modes.mat to this directory");
+  cmd->add_option("--out", opt->out_dir, "write modes.csv, shapes.csv and modes.mat to this directory (created if missing)")
+      ->check(outputDirectory());
   cmd->callback([opt, model, vehicle]() {
     if (model->count() == 0 && vehicle->count() == 0)
       throw InputError("modes: give --model FILE or --vehicle FILE");

@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -13,6 +12,7 @@
 
 #include "commands.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
@@ -45,10 +45,6 @@ double rmsHeight(const terrain::Terrain& t, Eigen::Index first, Eigen::Index las
 }
 
 void run(const TerrainOptions& opt) {
-  const std::string extension = std::filesystem::path(opt.out_file).extension().string();
-  if (extension != ".csv" && extension != ".yaml" && extension != ".yml")
-    throw InputError("terrain: --out must end in .csv, .yaml or .yml, got '" + opt.out_file + "'");
-
   const bool iso = !opt.iso_class.empty();
   char road_class = 0;
   terrain::Iso8608Options iso_options;
@@ -65,7 +61,7 @@ void run(const TerrainOptions& opt) {
                                                     : terrain::LateralCorrelation::Uniform;
     return terrain::makeIso8608(road_class, opt.length, opt.width, opt.spacing, opt.seed, iso_options);
   }();
-  if (extension == ".csv")
+  if (io::lowerExtension(opt.out_file) == ".csv")  // else .yaml / .yml: checked by --out's validator
     terrain::saveTerrainCsv(t, opt.out_file);
   else
     terrain::saveTerrainYaml(t, opt.out_file);
@@ -138,7 +134,9 @@ void registerTerrainCommand(CLI::App& app) {
                         "random road: highest spatial frequency [cycles/m] (default 2.83)")
             ->check(positiveNumber())})
     o->needs(iso);
-  cmd->add_option("--out", opt->out_file, "terrain file to write (.csv or .yaml)")->required();
+  cmd->add_option("--out", opt->out_file, "terrain file to write (.csv, .yaml or .yml)")
+      ->required()
+      ->check(outputFile({".csv", ".yaml", ".yml"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt, track, iso]() {
     if (track->count() == 0 && iso->count() == 0)

@@ -455,6 +455,24 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["frf", "--vehicle", VEHICLE, "--model", "full",
                                  "--max-mode-hz", "1e5"], "--max-mode-hz", "[0, 100] Hz")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "100000"], "--count")
+        # Output directories of modes and mac: checked before the solve, not after it.
+        a_file = self.path("a_file")
+        with open(a_file, "w") as f:
+            f.write("x")
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--out", a_file], "--out",
+                                "is not a directory")
+        self.assert_input_error(["mac", "--vehicle", VEHICLE, "--out",
+                                 os.path.join(a_file, "mac")], "--out", "is not a directory")
+        self.tvd("modes", "--vehicle", VEHICLE, "--count", "2", "--out", self.path("new/modes"))
+        self.assertTrue(os.path.isfile(self.path("new/modes/modes.csv")))
+        # Terrain files: the directory is checked, the extension in any case.
+        self.assert_input_error(["terrain", "--track", "long_hill", "--out",
+                                 self.path("no_dir/t.csv")], "does not exist")
+        self.assert_input_error(["terrain", "--track", "long_hill", "--out", self.path("t.txt")],
+                                "must end in .csv or .yaml or .yml")
+        self.tvd("terrain", "--track", "long_hill", "--out", self.path("HILL.YAML"))
+        with open(self.path("HILL.YAML")) as f:
+            self.assertEqual(yaml.safe_load(f)["name"], "long_hill")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--max-frequency", "5"],
                                 "--max-frequency requires --model")
         self.assert_input_error(["terrain", "--iso8608", "C", "--seed", "-1", "--out",
