@@ -217,7 +217,8 @@ void registerModesCommand(CLI::App& app) {
   CLI::Option* max_frequency =
       cmd->add_option("--max-frequency", opt->max_frequency_hz,
                       "return every mode below this frequency [Hz] (at most --count; --model only)")
-          ->check(nonNegativeNumber());
+          ->check(nonNegativeNumber())
+          ->default_str("none: --count modes");
   max_frequency->needs(model);
   variant->needs(vehicle);
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");

@@ -327,7 +327,8 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "
                   "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic)")
-      ->check(nonNegativeNumber());
+      ->check(nonNegativeNumber())
+      ->default_str("1/(2 dt)");
   cmd->add_option("--model", opt->model,
                   "reduced (Craig-Bampton, cached) | full (FE modes up to --max-mode-hz, default "
                   "100 Hz, plus static residual: the reference)")

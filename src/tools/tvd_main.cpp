@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   CLI::App app{"tvd: tracked vehicle vertical dynamics from a reduced finite-element model"};
   app.set_version_flag("--version", std::string(tvd::reduction::softwareVersion()));
   app.require_subcommand(1);
+  // Every option's help shows its default value ("[30]"): the subcommands inherit this.
+  app.option_defaults()->always_capture_default();
   tvd::tools::registerModesCommand(app);
   tvd::tools::registerMacCommand(app);
   tvd::tools::registerReduceCommand(app);
