@@ -6,6 +6,7 @@ Needs no C++ build: the inputs are written here in the formats of `tvd mac --out
     /usr/bin/python3 test/scripts/test_plot_scripts.py [--xml OUTDIR/plot_scripts.xml] [TEST ...]
 --xml writes a JUnit-style report (one <testcase> per test method); the exit status is 1 on failure.
 """
+import math
 import os
 import struct
 import subprocess
@@ -172,7 +173,7 @@ class PlotScriptsTest(unittest.TestCase):
     # --help
 
     def test_help(self):
-        for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py"):
+        for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py", "plot_terrain.py"):
             result = self.run_script(script, "--help")
             self.assertEqual(result.returncode, 0, result.stderr)
             self.assertIn("--out", result.stdout)
@@ -463,6 +464,80 @@ class PlotScriptsTest(unittest.TestCase):
         out = self.path("sim.png")
         result = self.run_script("plot_simulation.py", "--out", out, self.path("none.csv"))
         self.assert_input_error(result, out, self.path("none.csv"))
+
+    # plot_terrain.py (Fig. 17)
+
+    def write_vehicle(self, track_centre_distance=2.8, pad_lateral_offset=0.155):
+        """The two keys plot_terrain.py reads, in the description's {value, unit, source} form."""
+        path = self.path("vehicle.yaml")
+        with open(path, "w") as f:
+            f.write(f"running_gear:\n  track_centre_distance: {{value: {track_centre_distance}, "
+                    f"unit: m, source: test}}\ntrack_assembly:\n  pad_lateral_offset: "
+                    f"{{value: {pad_lateral_offset}, unit: m, source: test}}\n")
+        return path
+
+    def write_twist(self, heights_of=lambda x, y: 0.1 * y * np.sin(x)):
+        """A terrain file as `tvd terrain` writes it: lines at y = -2, 0, 2 m."""
+        stations, lines = np.linspace(0.0, 10.0, 101), [-2.0, 0.0, 2.0]
+        path = self.path("twist.csv")
+        with open(path, "w") as f:
+            f.write("# tracked_vehicle_dynamics terrain 'twist'\nx," + ",".join(map(str, lines)) + "\n")
+            for x in stations:
+                f.write(f"{x!r}," + ",".join(repr(heights_of(x, y)) for y in lines) + "\n")
+        return path, stations
+
+    def test_terrain_profiles_under_the_pad_rows(self):
+        # h = 0.1 y sin x is linear in y, so the profile of a row inside the lines is exact:
+        # 0.1 y_row sin x at y_row = +-(1.4 +- 0.155) m; with a 1 m offset the left outer row
+        # (2.555 m) lies beyond the last line (2 m) and reads that line.
+        terrain, x = self.write_twist()
+        vehicle = self.write_vehicle()
+        for offset, expected_y in ((0.0, {"LO": 1.555, "LI": 1.245, "RI": -1.245, "RO": -1.555}),
+                                   (1.0, {"LO": 2.0, "LI": 2.245, "RI": -0.245, "RO": -0.555})):
+            if offset:  # the inner left row 2.245 m is beyond the edge too
+                expected_y["LI"] = 2.0
+            out, profiles = self.path(f"fig17_{offset}.png"), self.path(f"p_{offset}.csv")
+            result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
+                                     "--lateral-offset", str(offset), "--profiles-out", profiles,
+                                     terrain)
+            self.assert_png(result, out)
+            table = np.genfromtxt(profiles, delimiter=",", names=True)
+            np.testing.assert_allclose(table["station_m"], x, atol=1e-12)
+            for row, y in expected_y.items():
+                np.testing.assert_allclose(table[f"p_{row}_m"], 0.1 * y * np.sin(x), atol=1e-11,
+                                           err_msg=f"row {row} at offset {offset}")
+
+    def test_terrain_yaml_uniform_profile(self):
+        path = self.path("bump.yaml")
+        with open(path, "w") as f:
+            f.write("name: bump\nspacing: 0.5\nstart: 1.0\nheights: [0, 0, 0.1, 0.2, 0.1, 0, 0]\n")
+        out, profiles = self.path("bump.png"), self.path("bump.csv")
+        result = self.run_script("plot_terrain.py", "--vehicle", self.write_vehicle(), "--out",
+                                 out, "--profiles-out", profiles, "--detail", "1:4", path)
+        self.assert_png(result, out)
+        table = np.genfromtxt(profiles, delimiter=",", names=True)
+        np.testing.assert_allclose(table["station_m"], 1.0 + 0.5 * np.arange(7))
+        for row in ("LO", "LI", "RI", "RO"):
+            np.testing.assert_allclose(table[f"p_{row}_m"], [0, 0, 0.1, 0.2, 0.1, 0, 0])
+
+    def test_terrain_bad_input_is_one_line(self):
+        out = self.path("t.png")
+        vehicle = self.write_vehicle()
+        bad, _ = self.write_twist(lambda x, y: math.nan if x > 5 else 0.0)
+        result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out, bad)
+        self.assert_input_error(result, out, "twist.csv", "row 54", "not a finite number")  # x = 5.1: file line 3 + 51
+        terrain, _ = self.write_twist()
+        no_keys = self.path("no_keys.yaml")
+        with open(no_keys, "w") as f:
+            f.write("running_gear: {}\n")
+        result = self.run_script("plot_terrain.py", "--vehicle", no_keys, "--out", out, terrain)
+        self.assert_input_error(result, out, "no_keys.yaml", "track_centre_distance")
+        result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
+                                 "--detail", "3:1", terrain)
+        self.assert_input_error(result, out, "--detail", "X0 < X1")
+        result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
+                                 "--profiles-out", self.path("p.txt"), terrain)
+        self.assert_input_error(result, out, "--profiles-out", ".csv")
 
 
 if __name__ == "__main__":
