@@ -42,6 +42,7 @@ echo; echo "== 7. Figures (PNG) =="
   "reduced, 30 km/h"="$OUT/frf_tracked_reduced_30kmh.csv"
 /usr/bin/python3 scripts/plot_simulation.py --out "$OUT/long_hill_30kmh.png" \
   --title "long hill, 30 km/h" tracked="$OUT/long_hill_30kmh.csv"
+/usr/bin/python3 scripts/plot_masters.py --out "$OUT/masters.png" tracked="$OUT/tracked_reduced.mat"
 tvd terrain --track oop_waves --out "$OUT/oop_waves.csv" > /dev/null
 /usr/bin/python3 scripts/plot_terrain.py --vehicle "$VEHICLE" --out "$OUT/oop_waves_profiles.png" \
   --title "out-of-phase waves under the pad rows (Fig. 17c)" "$OUT/oop_waves.csv"

@@ -40,14 +40,15 @@ double distance(const Vector3& a, const Vector3& b, double p) {
   return std::pow(std::pow(d.x(), p) + std::pow(d.y(), p) + std::pow(d.z(), p), 1.0 / p);
 }
 
-// Running state of eq. 14: sum_i d(q, i)^-k_g over the masters so far, and co-location flags.
+// Running state of eq. 14: sum_i d(q, i)^-(k_g p) over the masters so far, and co-location flags.
 class GeometricWeight {
  public:
   GeometricWeight(const std::vector<Vector3>& positions, const MogesecOptions& o)
       : positions_(positions),
         options_(o),
         inverse_sum_(Vector::Zero(static_cast<DofIndex>(positions.size()))),
-        colocated_(positions.size(), false) {}
+        colocated_(positions.size(), false),
+        exponent_(o.geometric_exponent * o.norm_order) {}
 
   void addMaster(DofIndex master) {
     ++masters_;
@@ -56,10 +57,10 @@ class GeometricWeight {
       const double d = distance(positions_[q], x, options_.norm_order);
       if (d <= options_.colocation_tolerance)
         colocated_[q] = true;
-      else if (options_.geometric_exponent == 2.0)  // the paper's k_g: skip std::pow
-        inverse_sum_(static_cast<DofIndex>(q)) += 1.0 / (d * d);
+      else if (exponent_ == 4.0)  // the paper's k_g = p = 2: skip std::pow
+        inverse_sum_(static_cast<DofIndex>(q)) += 1.0 / ((d * d) * (d * d));
       else
-        inverse_sum_(static_cast<DofIndex>(q)) += std::pow(d, -options_.geometric_exponent);
+        inverse_sum_(static_cast<DofIndex>(q)) += std::pow(d, -exponent_);
     }
   }
 
@@ -76,6 +77,7 @@ class GeometricWeight {
   const MogesecOptions& options_;
   Vector inverse_sum_;
   std::vector<bool> colocated_;
+  double exponent_;  ///< k_g p: eq. 14 sums ||q - q_i||_p^(-k_g p)
   int masters_ = 0;
 };
 

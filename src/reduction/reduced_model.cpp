@@ -125,9 +125,18 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   inputPositions(system, request.input_stations, &s.input_stations, &s.input_lateral);
 
   model.gravity_load = cb.gravity_load;
-  for (const DofIndex master : cb.masters) {
+  if (!request.master_groups.empty() && request.master_groups.size() != request.masters.size())
+    throw std::logic_error("buildReducedModel: " + std::to_string(request.master_groups.size()) +
+                           " master groups for " + std::to_string(request.masters.size()) + " masters");
+  model.master_positions.resize(cb.masterCount(), 3);
+  for (DofIndex i = 0; i < cb.masterCount(); ++i) {
+    const DofIndex master = cb.masters[static_cast<std::size_t>(i)];  // request.masters, in order
     model.masters.push_back(dofs.dofOf(master));
     model.dof_labels.push_back(dofs.label(master));
+    model.master_positions.row(i) = dofs.positionOf(master).transpose();
+    model.master_groups.push_back(request.master_groups.empty()
+                                      ? "master"
+                                      : request.master_groups[static_cast<std::size_t>(i)]);
   }
   model.fixed_interface_frequencies_hz = cb.fixed_interface_frequencies_hz;
   for (DofIndex j = 0; j < cb.modeCount(); ++j)

@@ -87,6 +87,8 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
       numeric("input_stations", column(s.input_stations)),
       numeric("input_lateral", column(s.input_lateral)),
       numeric("masters", masters),
+      numeric("master_positions", model.master_positions),
+      texts("master_groups", model.master_groups),
       numeric("fixed_interface_frequencies_hz", column(model.fixed_interface_frequencies_hz)),
       numeric("selected_mode_numbers", numbers),
       numeric("selected_mode_frequencies_hz", frequencies),
@@ -191,6 +193,8 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
     throw InputError(where + ": " + std::to_string(model.masterCount()) + " masters and " +
                      std::to_string(model.modeCount()) + " fixed-interface modes for " +
                      std::to_string(k) + " reduced coordinates");
+  checkSize(where, "master_positions", model.master_positions, model.masterCount(), 3);
+  checkCount(where, "master_groups", model.master_groups.size(), static_cast<std::size_t>(model.masterCount()));
   for (const fem::DofRef& d : model.masters)
     if (d.direction < 0 || d.direction >= kDofsPerNode)
       throw InputError(where + ": master of node " + std::to_string(d.node) + " has direction " +
@@ -267,6 +271,8 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
     model.masters.push_back(
         fem::DofRef{static_cast<NodeId>(integer(where, "masters", masters(i, 0))),
                     static_cast<int>(integer(where, "masters", masters(i, 1)))});
+  model.master_positions = in.readMatrix("master_positions", masters.rows(), 3);
+  model.master_groups = in.readStrings("master_groups", masters.rows());
   model.fixed_interface_frequencies_hz = vectorOf(in, "fixed_interface_frequencies_hz");
   const Vector numbers = vectorOf(in, "selected_mode_numbers");
   const Vector frequencies = vectorOf(in, "selected_mode_frequencies_hz");

@@ -164,6 +164,10 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
                     CandidateFilter::lateralAndVertical(), mogesec_options);
   rep.interface_dofs = interface_count;
   rep.mogesec_dofs = static_cast<DofIndex>(masters.picks.size());
+  rep.mogesec_picks = masters.picks;
+  rep.master_parts.clear();
+  for (const DofIndex m : masters.masters)
+    rep.master_parts.push_back(vehicle::nodePart(model.vehicle.layout, model.system.dofs.dofOf(m).node));
   rep.selection_seconds = secondsSince(selection_start);
 
   // 4. Craig-Bampton. The paper keeps as many fixed-interface modes as global modes were selected
@@ -173,6 +177,12 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   const auto reduce_start = Clock::now();
   ReductionRequest request;
   request.masters = masters.masters;
+  // Why each is a master, in interfaceMasters()' order, then the picks in MoGeSeC's order.
+  request.master_groups.assign(static_cast<std::size_t>(interface_count), "road input");
+  request.master_groups.insert(request.master_groups.end(), kDofsPerNode, "hull");
+  request.master_groups.resize(imposed.size(), "wheel arm");
+  for (std::size_t k = 0; k < masters.picks.size(); ++k)
+    request.master_groups.push_back("MoGeSeC " + std::to_string(k + 1));
   FixedInterfaceOptions fixed_interface;
   fixed_interface.rule = FixedInterfaceRule::SameCount;
   fixed_interface.extra_modes = selection.count();

@@ -45,6 +45,23 @@ void run(ReduceOptions opt) {
     if (report.full_frequencies_hz[i] > 0.1) worst = std::max(worst, std::abs(errors.back()));
   }
 
+  // The MoGeSeC picks (paper Fig. 12): the masters after the imposed ones, in pick order.
+  struct MogesecMaster {
+    int pick = 0;
+    std::string dof, part;
+    Vector3 position;
+    double weight = 0.0, modal_weight = 0.0, geometric_weight = 0.0;
+  };
+  std::vector<MogesecMaster> mogesec;
+  const std::size_t first_pick = model.masters.size() - report.mogesec_picks.size();
+  for (std::size_t k = 0; k < report.mogesec_picks.size(); ++k) {
+    const std::size_t i = first_pick + k;
+    const reduction::MogesecPick& p = report.mogesec_picks[k];
+    mogesec.push_back({static_cast<int>(k + 1), model.dof_labels[i], report.master_parts[i],
+                       model.master_positions.row(static_cast<Eigen::Index>(i)).transpose(), p.weight,
+                       p.modal_weight, p.geometric_weight});
+  }
+
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
@@ -71,6 +88,17 @@ void run(ReduceOptions opt) {
           .field("reduced_hz", report.reduced_frequencies_hz[i])
           .field("relative_error", errors[i])
           .endObject();
+    json.endArray().key("mogesec_masters").beginArray();
+    for (const MogesecMaster& m : mogesec)
+      json.beginObject()
+          .field("pick", m.pick)
+          .field("dof", m.dof)
+          .field("part", m.part)
+          .field("position_m", std::vector<double>{m.position.x(), m.position.y(), m.position.z()})
+          .field("weight", m.weight)
+          .field("modal_weight", m.modal_weight)
+          .field("geometric_weight", m.geometric_weight)
+          .endObject();
     json.endArray()
         .field("max_relative_frequency_error", worst)
         .field("build_seconds", report.build_seconds)
@@ -93,6 +121,11 @@ void run(ReduceOptions opt) {
   for (const auto& m : model.selected_modes)
     std::cout << "    mode " << std::setw(2) << m.mode + 1 << std::setw(8) << std::setprecision(2)
               << m.frequency_hz << " Hz  " << m.reason << "\n";
+  std::cout << "  MoGeSeC masters (in pick order; weight = modal x geometric):\n";
+  for (const MogesecMaster& m : mogesec)
+    std::cout << "    " << std::setw(2) << m.pick << "  " << m.dof << " (" << m.part << ") at ("
+              << std::setprecision(2) << m.position.x() << ", " << m.position.y() << ", "
+              << m.position.z() << ") m, weight " << std::setprecision(3) << m.weight << "\n";
   std::cout << "  modes up to " << opt.reduction.band_hz << " Hz, full vs reduced:\n";
   for (std::size_t i = 0; i < pairs; ++i)
     std::cout << "    " << std::setw(2) << i + 1 << std::setw(9) << std::setprecision(3)

@@ -88,7 +88,7 @@ void run(const SimulateOptions& opt) {
         description, variant, ref_options));
   } else {
     model = reduction::loadOrReduceVehicle(
-        opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
+        description, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
   }
   const dynamics::SecondOrderSystem& sys = full ? full->modal : model.system;
   const Vector& gravity = full ? full->modal_gravity : model.gravity_load;

@@ -434,6 +434,35 @@ Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::Dof
   return x;
 }
 
+std::string nodePart(const VehicleLayout& layout, NodeId node) {
+  if (node == layout.hull) return "hull";
+  for (const auto& [name, id] : layout.named_points)
+    if (id == node) return name;
+  // Station nodes: stationNode(side, axle, part), parts 0..6 as in vehicle_model.h.
+  static const char* const kStationParts[] = {"pivot", "arm", "centre", "wheel contact",
+                                              "link contact", "wheel guide contact",
+                                              "link guide contact"};
+  for (const WheelStation& wheel : layout.wheels) {
+    const NodeId base = stationNode(wheel.side, wheel.axle, 0);
+    if (node >= base && node < base + 7) return wheel.name + " " + kStationParts[node - base];
+  }
+  for (const AssemblyRecord& a : layout.assemblies) {
+    const TrackAssemblyNodes& n = a.nodes;
+    if (node < n.base || node >= n.base + 100) continue;
+    auto in = [node](const auto& ids) { return std::find(ids.begin(), ids.end(), node) != ids.end(); };
+    const char* part = in(n.soles) ? "sole" : in(n.cores) ? "pad core" : in(n.tops) ? "pad top"
+                       : in(n.front_pin) || in(n.rear_pin) ? "pin" : "link";
+    return std::string("track assembly ") + sideName(a.side) + " " + std::to_string(a.index + 1) + " " + part;
+  }
+  for (std::size_t side = 0; side < layout.sprockets.size(); ++side) {  // one per side, left first
+    if (layout.sprockets[side] == node) return std::string("sprocket ") + sideName(static_cast<int>(side));
+    if (layout.idlers[side] == node) return std::string("idler ") + sideName(static_cast<int>(side));
+  }
+  for (std::size_t i = 0; i < layout.return_rollers.size(); ++i)
+    if (layout.return_rollers[i] == node) return "return roller " + std::to_string(i + 1);
+  return "node " + std::to_string(node);
+}
+
 VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant) {
   // The builder's geometric checks (the chain path around sprocket and idler) name the key;
   // the file they came from is prefixed here, once.

@@ -21,9 +21,9 @@ TEST(Mogesec, HandComputedCase) {
   // Four candidates on the x axis, one mode; candidate 3 sits at the position of candidate 2
   // (two directions of one node). Initial master: candidate 0.
   //   W_Phi = phi^2                    = 1, 4, 1, 2.25
-  // Pick 1: W_g = 1 / d^-2 from x = 0  =  -, 1, 9, 9     -> W = W_Phi/4 * W_g/9
-  //                                    =  -, 1/36, 1/4, 0.5625   -> candidate 3
-  // Pick 2: candidate 2 is co-located with 3: W_g = 0; candidate 1: 1 / (1 + 1/4) = 0.8
+  // Pick 1: W_g = 1 / d^-4 from x = 0  =  -, 1, 81, 81   -> W = W_Phi/4 * W_g/81
+  //                                    =  -, 1/324, 1/4, 0.5625  -> candidate 3
+  // Pick 2: candidate 2 is co-located with 3: W_g = 0; candidate 1: 1 / (1 + 1/16) = 16/17
   //         -> candidate 1 with W = 1 * 1
   // Pick 3: only candidate 2 is left, W_g = 0 for all: geometry cannot rank, W = W_Phi,N = 1.
   Matrix shapes(4, 1);
@@ -43,6 +43,25 @@ TEST(Mogesec, HandComputedCase) {
   EXPECT_EQ(result.picks[2].index, 2);
   EXPECT_NEAR(result.picks[2].geometric_weight, 1.0, kRoundOff);
   EXPECT_NEAR(result.modal_weight(3), 2.25, kRoundOff);
+}
+
+TEST(Mogesec, GeometricWeightUsesTheDistanceToThePowerMinusKgTimesP) {
+  // Masters at x = 0 and 2; candidate A (index 2) at x = 1, B (index 3) at x = -0.8, equal
+  // modal weights. Eq. 14 with k_g = p = 2: W_g(A) = 1 / (1 + 1) = 0.5,
+  // W_g(B) = 1 / (0.8^-4 + 2.8^-4) = 0.407 -> A. With the exponent k_g alone (d^-2) B would win:
+  // 1 / (0.8^-2 + 2.8^-2) = 0.592 > 0.5. With p = 1 (the same distances on the axis) the
+  // exponent is k_g p = 2 and B wins.
+  Matrix shapes = Matrix::Ones(4, 1);
+  const std::vector<Vector3> positions = {Vector3(0, 0, 0), Vector3(2, 0, 0), Vector3(1, 0, 0),
+                                          Vector3(-0.8, 0, 0)};
+  MogesecOptions options;
+  options.count = 1;
+  MogesecResult result = mogesec(shapes, positions, {0, 1}, options);
+  EXPECT_EQ(result.picks[0].index, 2);
+  EXPECT_NEAR(result.picks[0].geometric_weight, 1.0, kRoundOff);  // A has the largest W_g
+  options.norm_order = 1.0;
+  result = mogesec(shapes, positions, {0, 1}, options);
+  EXPECT_EQ(result.picks[0].index, 3);
 }
 
 TEST(Mogesec, TiesGoToTheLowestIndex) {

@@ -150,6 +150,7 @@ ReductionRequest request(const fem::System& system) {
   ReductionRequest r;
   r.masters = {system.dofs.requireActive(10, 2), system.dofs.requireActive(5, 2),
                system.dofs.requireActive(10, 1)};
+  r.master_groups = {"road input", "support", "MoGeSeC 1"};
   r.craig_bampton.fixed_interface.count = 4;
   r.craig_bampton.damping.model = DampingModel::Rayleigh;
   r.craig_bampton.damping.beta = 1e-4;
@@ -178,6 +179,20 @@ TEST(ReducedModel, BuildsLabelsOutputsAndInputs) {
   EXPECT_EQ(model.full_dof_count, system.size());
   EXPECT_EQ(model.version, softwareVersion());
   EXPECT_EQ(model.selected_modes.size(), 2u);
+  // Where each master is and why, in the request's order.
+  ASSERT_EQ(model.master_positions.rows(), 3);
+  ASSERT_EQ(model.master_positions.cols(), 3);
+  for (DofIndex i = 0; i < 3; ++i)
+    EXPECT_EQ(model.master_positions.row(i).transpose(),
+              system.dofs.positionOf(req.masters[static_cast<std::size_t>(i)]));
+  EXPECT_EQ(model.master_positions(0, 0), 2.0);  // node 10: the beam's tip, 2 m along x
+  EXPECT_EQ(model.master_groups, req.master_groups);
+  ReductionRequest ungrouped = req;
+  ungrouped.master_groups.clear();
+  EXPECT_EQ(buildReducedModel(system, ungrouped).master_groups,
+            (std::vector<std::string>(3, "master")));
+  ungrouped.master_groups = {"one"};
+  EXPECT_THROW(buildReducedModel(system, ungrouped), std::logic_error);
 
   // H rows are rows of T_CMS: a master gives a unit row, a fixed DOF a zero row, and the
   // rigid-joint slave u_x(100) = u_x(10) + 0.5 theta_y(10) combines two rows.
@@ -234,6 +249,8 @@ TEST_F(ReducedModelFileTest, SaveLoadRoundTripIsExact) {
   EXPECT_EQ(loaded.dof_labels, model_.dof_labels);
   EXPECT_EQ(loaded.input_labels, model_.input_labels);
   EXPECT_EQ(loaded.masters, model_.masters);
+  EXPECT_EQ(loaded.master_positions, model_.master_positions);
+  EXPECT_EQ(loaded.master_groups, model_.master_groups);
   EXPECT_EQ(loaded.fixed_interface_frequencies_hz, model_.fixed_interface_frequencies_hz);
   ASSERT_EQ(loaded.selected_modes.size(), model_.selected_modes.size());
   for (std::size_t i = 0; i < loaded.selected_modes.size(); ++i) {

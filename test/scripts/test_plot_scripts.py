@@ -173,7 +173,8 @@ class PlotScriptsTest(unittest.TestCase):
     # --help
 
     def test_help(self):
-        for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py", "plot_terrain.py"):
+        for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py", "plot_terrain.py",
+                       "plot_masters.py"):
             result = self.run_script(script, "--help")
             self.assertEqual(result.returncode, 0, result.stderr)
             self.assertIn("--out", result.stdout)
@@ -538,6 +539,43 @@ class PlotScriptsTest(unittest.TestCase):
         result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
                                  "--profiles-out", self.path("p.txt"), terrain)
         self.assert_input_error(result, out, "--profiles-out", ".csv")
+
+    # plot_masters.py (Fig. 12)
+
+    def write_masters(self, name, groups=None, positions=None, masters=None):
+        """A reduced model's master variables as `tvd reduce --out` writes them."""
+        groups = groups or ["road input"] * 4 + ["hull"] + ["wheel arm"] * 2 + ["MoGeSeC 1",
+                                                                                "MoGeSeC 2"]
+        n = len(groups)
+        if positions is None:
+            positions = np.column_stack([np.linspace(-2, 2, n), np.zeros(n), np.linspace(0, 1, n)])
+        if masters is None:
+            masters = np.column_stack([np.arange(1, n + 1), [2] * (n - 1) + [1]])  # last: uy
+        path = self.path(name)
+        scipy.io.savemat(path, {"master_positions": positions, "masters": masters,
+                                "master_groups": np.array(groups, dtype=object).reshape(-1, 1),
+                                "M_R": np.eye(n)})
+        return path
+
+    def test_masters_two_models(self):
+        out = self.path("fig12.png")
+        result = self.run_script("plot_masters.py", "--out", out,
+                                 f"untracked={self.write_masters('u.mat')}",
+                                 f"tracked={self.write_masters('t.mat')}")
+        self.assert_png(result, out)
+
+    def test_masters_bad_input_is_one_line(self):
+        out = self.path("fig12.png")
+        old = self.path("old.mat")
+        scipy.io.savemat(old, {"M_R": np.eye(2), "masters": np.ones((2, 2))})
+        result = self.run_script("plot_masters.py", "--out", out, old)
+        self.assert_input_error(result, out, "old.mat", "no master_positions, master_groups")
+        ragged = self.write_masters("ragged.mat", positions=np.zeros((3, 3)))
+        result = self.run_script("plot_masters.py", "--out", out, ragged)
+        self.assert_input_error(result, out, "ragged.mat", "do not match")
+        nan = self.write_masters("nan.mat", positions=np.full((9, 3), np.nan))
+        result = self.run_script("plot_masters.py", "--out", out, nan)
+        self.assert_input_error(result, out, "nan.mat", "non-finite")
 
 
 if __name__ == "__main__":

@@ -106,6 +106,27 @@ class TvdCliTest(unittest.TestCase):
             self.assertEqual(m[name].shape, (n, n), name)
             np.testing.assert_allclose(m[name], m[name].T, rtol=0, atol=1e-9 * abs(m[name]).max())
         self.assertGreater(np.linalg.eigvalsh(m["M_R"]).min(), 0.0)
+        # Where the masters are and why (paper Fig. 12): the 84 pad soles' uz on the ground, the
+        # hull's 6 DOFs at its CoG (1.57 m up), 14 arms, then the 9 MoGeSeC picks in order.
+        groups = [str(np.ravel(g)[0]) for g in np.ravel(m["master_groups"])]
+        positions = m["master_positions"]
+        self.assertEqual(positions.shape, (len(groups), 3))
+        self.assertEqual(groups[:84], ["road input"] * 84)
+        self.assertEqual(groups[84:90], ["hull"] * 6)
+        self.assertEqual(groups[90:104], ["wheel arm"] * 14)
+        self.assertEqual(groups[104:], [f"MoGeSeC {k}" for k in range(1, 10)])
+        np.testing.assert_allclose(positions[:84, 2], 0.0, atol=1e-12)
+        np.testing.assert_allclose(positions[84:90], [[0.12, 0.0, 1.57]] * 6, atol=1e-12)
+        picks = d["mogesec_masters"]
+        self.assertEqual([p["pick"] for p in picks], list(range(1, 10)))
+        self.assertEqual(len({p["dof"] for p in picks}), 9)  # none repeated
+        labels = [str(np.ravel(x)[0]) for x in np.ravel(m["dof_labels"])]
+        for k, p in enumerate(picks):
+            self.assertEqual(p["dof"], labels[104 + k])
+            np.testing.assert_allclose(p["position_m"], positions[104 + k], atol=1e-12)
+            self.assertTrue(p["part"].startswith(("track assembly", "road_wheel")), p["part"])
+            self.assertAlmostEqual(p["weight"], p["modal_weight"] * p["geometric_weight"], places=9)
+            self.assertLessEqual(p["weight"], 1.0)
 
     def test_simulate_json_and_csv_agree(self):
         speed_kmh = 50.0

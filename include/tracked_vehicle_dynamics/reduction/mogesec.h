@@ -4,8 +4,10 @@
 //
 //   W_Phi(q) = sum_j |Phi_j(q)|^k_Phi                               (eq. 13, computed once)
 //   W_g(q)   = 1                              with no master yet     (eq. 14)
-//            = 1 / sum_i d_p(q, i)^(-k_g)     otherwise, over the masters i chosen so far,
+//            = 1 / sum_i d_p(q, i)^(-k_g p)   otherwise, over the masters i chosen so far,
 //              d_p(q, i) = ||x_q - x_i||_p the distance between the nodes carrying q and i [m]
+//              (the paper's exponent -k_g p; with k_g = p = 2, 1 / sum_i d^-4, as Bonisoli et
+//              al.'s squared Euclidean distance to the power -k_g: the nearest masters dominate)
 //   W(q)     = W_Phi(q) / max W_Phi  *  W_g(q) / max W_g              (eq. 12)
 //
 // and the next master is argmax W over the candidates not chosen yet. The maxima are taken over
@@ -33,7 +35,7 @@ namespace reduction {
 struct MogesecOptions {
   int count = 9;                       ///< DOFs picked beyond the initial masters (Table 5: 9)
   double modal_exponent = 2.0;         ///< k_Phi, eq. 13 (2: optimal per Bonisoli et al.)
-  double geometric_exponent = 2.0;     ///< k_g, eq. 14
+  double geometric_exponent = 2.0;     ///< k_g, eq. 14 (the distance's exponent is -k_g p)
   double norm_order = 2.0;             ///< p of the distance norm, eq. 14 (2: Euclidean)
   double colocation_tolerance = 1e-9;  ///< [m] distance below which two DOFs are co-located
 };

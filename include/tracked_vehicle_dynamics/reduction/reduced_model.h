@@ -39,6 +39,10 @@ struct ReducedModel {
   Vector gravity_load;                    ///< T^T f_g [k] [N, N m]
   std::vector<std::string> dof_labels;    ///< k labels: "node 12 uz", then "mode 3 (12.4 Hz)"
   std::vector<fem::DofRef> masters;       ///< physical DOF of each of the m master coordinates
+  Matrix master_positions;                ///< [m x 3] undeformed position of each master's node [m]
+  /// One per master: why it is one, e.g. "road input", "hull", "wheel arm", "MoGeSeC 3" (the
+  /// third MoGeSeC pick); "master" when the caller did not say.
+  std::vector<std::string> master_groups;
   Vector fixed_interface_frequencies_hz;  ///< one per fixed-interface mode [Hz]
   std::vector<std::string> input_labels;  ///< one per road input: "node 5 uz"
   /// The global modes the reduction was sized for, with the reason for each.
@@ -60,6 +64,7 @@ struct ReducedModel {
 
 struct ReductionRequest {
   std::vector<DofIndex> masters;      ///< active DOFs, e.g. MasterSelection::masters
+  std::vector<std::string> master_groups;  ///< ReducedModel::master_groups; empty: "master"
   CraigBamptonOptions craig_bampton;  ///< its recovery_dofs are set from `outputs`
   std::vector<OutputDof> outputs;     ///< rows of H
   ModeSelection selection;            ///< recorded with the model for the report

@@ -16,6 +16,8 @@
 //   input_labels                   cell n_in x 1  "node 5 uz"
 //   input_stations, input_lateral  n_in x 1 (or 0 x 1)  x, y of each road input [m]
 //   masters                        m x 2    node id, direction (0 ux .. 5 rz) of each master
+//   master_positions               m x 3    undeformed x, y, z of each master's node [m]
+//   master_groups                  cell m x 1  why each is a master: "road input", "hull", ...
 //   fixed_interface_frequencies_hz r x 1    [Hz]
 //   selected_mode_numbers          n_sel x 1  1-based global mode numbers (as in the reasons)
 //   selected_mode_frequencies_hz   n_sel x 1  [Hz]
@@ -35,7 +37,7 @@ namespace tracked_vehicle_dynamics {
 namespace reduction {
 
 /// Layout version of the file above; a file with another one is stale.
-constexpr int kReducedModelFormatVersion = 2;
+constexpr int kReducedModelFormatVersion = 3;  // 3: master_positions, master_groups
 
 /// A cached reduced model that cannot be used: missing, unreadable, truncated, corrupted,
 /// inconsistent, or built from another description or software version. The caller rebuilds it.

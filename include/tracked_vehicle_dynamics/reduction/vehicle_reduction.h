@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/reduction/mogesec.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
@@ -50,6 +51,10 @@ struct VehicleReductionReport {
   DofIndex full_dofs = 0;
   DofIndex interface_dofs = 0;   ///< masters imposed (road inputs' nodes, hull)
   DofIndex mogesec_dofs = 0;
+  /// vehicle::nodePart() of each master's node, in the model's master order (built models only).
+  std::vector<std::string> master_parts;
+  /// Weights of each MoGeSeC pick at the moment it was picked, in pick order (built models only).
+  std::vector<MogesecPick> mogesec_picks;
   int flexible_modes = 0;
   DofIndex reduced_dofs = 0;
   std::vector<double> full_frequencies_hz;     ///< full-model modes (band)

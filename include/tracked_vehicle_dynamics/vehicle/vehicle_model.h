@@ -118,6 +118,11 @@ struct VehicleModel {
 /// when the two lists disagree.
 Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::DofRef>& ground_inputs);
 
+/// What a node of the model belongs to, for reports: "hull", "road_wheel_left_3 arm",
+/// "track assembly left 17 sole", "sprocket right", a named point's name, ... ("node N" when
+/// none of these).
+std::string nodePart(const VehicleLayout& layout, NodeId node);
+
 /// Builds the vehicle model of a description. Throws InputError (naming the description key)
 /// when the description is inconsistent.
 VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant);
