@@ -282,6 +282,29 @@ TEST_F(VehicleModels, LayoutFollowsThePaper) {
               static_cast<long>(tracked_->system.size()));
 }
 
+TEST_F(VehicleModels, NodePartsNameWhatANodeBelongsTo) {
+  // Every node of both models gets a part, and the ones users see in reports read as such.
+  for (const Solved* s : {untracked_, tracked_}) {
+    const veh::VehicleLayout& l = s->vehicle.layout;
+    for (const auto& n : s->vehicle.model.nodes)
+      EXPECT_NE(veh::nodePart(l, n.id).rfind("node ", 0), 0u) << "node " << n.id << " has no part";
+    EXPECT_EQ(veh::nodePart(l, l.hull), "hull");
+    EXPECT_EQ(veh::nodePart(l, l.named_points.at("crew_seat")), "crew_seat");
+    EXPECT_EQ(veh::nodePart(l, l.wheels[2].arm), "road_wheel_left_3 arm");
+    EXPECT_EQ(veh::nodePart(l, l.wheels[7].centre), "road_wheel_right_1 centre");
+    const veh::AssemblyRecord& a = l.assemblies.back();
+    EXPECT_EQ(veh::nodePart(l, a.nodes.soles[4]),
+              std::string("track assembly ") + (a.side == 0 ? "left " : "right ") +
+                  std::to_string(a.index + 1) + " sole");
+    const std::string pin = veh::nodePart(l, a.nodes.front_pin[1]);
+    EXPECT_EQ(pin.substr(pin.size() - 4), " pin") << pin;
+  }
+  const veh::VehicleLayout& t = tracked_->vehicle.layout;
+  EXPECT_EQ(veh::nodePart(t, t.sprockets[1]), "sprocket right");
+  EXPECT_EQ(veh::nodePart(t, t.idlers[0]), "idler left");
+  EXPECT_EQ(veh::nodePart(t, 987654321), "node 987654321");
+}
+
 TEST_F(VehicleModels, ChainLoopClosesWithThirtyPitchesOnTheGround) {
   const auto& d = description();
   const veh::ChainPath path(d, tracked_->vehicle.layout.idler_x);
