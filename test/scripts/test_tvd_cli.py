@@ -10,6 +10,7 @@ Run as
 import csv
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -127,6 +128,33 @@ class TvdCliTest(unittest.TestCase):
             self.assertTrue(p["part"].startswith(("track assembly", "road_wheel")), p["part"])
             self.assertAlmostEqual(p["weight"], p["modal_weight"] * p["geometric_weight"], places=9)
             self.assertLessEqual(p["weight"], 1.0)
+
+    def test_reduced_model_file_doc_is_current_and_its_example_runs(self):
+        # doc/reduced_model_file.md: its table lists exactly the file's variables, and its SciPy
+        # example, run on a fresh file, gives the full model's frequencies and static sag.
+        with open(os.path.join(ROOT, "doc", "reduced_model_file.md")) as f:
+            doc = f.read()
+        documented = set()
+        for row in re.findall(r"^\| (`[^|]+`) \|", doc, re.M):
+            documented.update(re.findall(r"`([A-Za-z_]+)`", row))
+        work = self.path("doc_example")
+        os.makedirs(work)
+        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "tracked", "--out",
+                 os.path.join(work, "tracked.mat"))
+        stored = {k for k in scipy.io.loadmat(os.path.join(work, "tracked.mat")) if not k.startswith("__")}
+        self.assertEqual(documented, stored)
+        code = re.search(r"```python\n(.*?)```", doc, re.S).group(1)
+        namespace = {}
+        cwd = os.getcwd()
+        try:
+            os.chdir(work)
+            exec(compile(code, "reduced_model_file.md", "exec"), namespace)  # noqa: S102
+        finally:
+            os.chdir(cwd)
+        full = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "tracked", "--count", "6")
+        np.testing.assert_allclose(namespace["frequencies_hz"][:6], full["frequencies_hz"], rtol=1e-3)
+        self.assertAlmostEqual(namespace["hull_sag_m"] / full["static"]["hull_sag_m"], 1.0, delta=1e-6)
+        self.assertEqual(namespace["A"].shape, (862, 862))
 
     def test_simulate_json_and_csv_agree(self):
         speed_kmh = 50.0

@@ -1,5 +1,6 @@
 // The reduced model on disk: a MAT 5 file (the cache of the reduction, and readable by MATLAB,
-// Octave and scipy.io.loadmat). Variables, with k = m + r reduced coordinates:
+// Octave and scipy.io.loadmat; for users: doc/reduced_model_file.md). Variables, with k = m + r
+// reduced coordinates:
 //
 //   format_version                 1x1      layout version (kReducedModelFormatVersion)
 //   version                        char     software version that wrote it (softwareVersion())
