@@ -50,6 +50,8 @@ def load(path):
             or masters.shape != (len(positions), 2):
         fail(f"{path}: master_positions {positions.shape}, {len(groups)} master_groups and "
              f"masters {masters.shape} do not match")
+    if len(positions) == 0:
+        fail(f"{path}: the model has no master DOFs")
     if not np.all(np.isfinite(positions)):
         fail(f"{path}: master_positions holds a non-finite value")
     directions = [DIRECTIONS[int(d)] if 0 <= d < 6 else "?" for d in masters[:, 1]]

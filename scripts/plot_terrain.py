@@ -35,17 +35,23 @@ ROW_STYLES = {"LO": ("tab:red", "-"), "LI": ("tab:orange", "--"), "RI": ("tab:cy
 
 def read_terrain(path):
     """(stations [n], lateral lines y [m] or None for a uniform profile, heights [lines x n])."""
+    extension = os.path.splitext(path)[1].lower()
+    if extension not in (".csv", ".yaml", ".yml"):
+        fail(f"{path}: a terrain file is .csv, .yaml or .yml")
+    if os.path.isdir(path):
+        fail(f"{path}: cannot read the terrain (it is a directory)")
     try:
-        if os.path.splitext(path)[1].lower() in (".yaml", ".yml"):
-            return read_terrain_yaml(path)
-        return read_terrain_csv(path)
-    except (OSError, UnicodeDecodeError, yaml.YAMLError) as error:
+        if extension == ".csv":
+            return read_terrain_csv(path)
+        return read_terrain_yaml(path)
+    except (OSError, UnicodeDecodeError, csv.Error, yaml.YAMLError) as error:
         fail(f"{path}: cannot read the terrain ({reason(error)})")
 
 
 def read_terrain_csv(path):
-    with open(path, newline="") as f:
-        rows = [(n, row) for n, row in enumerate(csv.reader(f), start=1)
+    # utf-8-sig: a byte-order mark is not part of the first cell (as tvd reads it).
+    with open(path, newline="", encoding="utf-8-sig") as f:
+        rows = [(n, [c.strip() for c in row]) for n, row in enumerate(csv.reader(f), start=1)
                 if row and not row[0].lstrip().startswith("#")]
     if not rows:
         fail(f"{path}: no terrain rows")
@@ -68,26 +74,45 @@ def read_terrain_csv(path):
     return data[:, 0], lateral, data[:, 1:].T
 
 
+def numbers(path, doc, key, ndim):
+    """doc[key] as a float array of `ndim` dimensions, or one error line naming the key."""
+    try:
+        value = np.array(doc[key], dtype=float)
+    except (TypeError, ValueError) as error:
+        fail(f"{path}: {key}: not a list of numbers ({reason(error)})")
+    if value.ndim != ndim:
+        shape = {1: "a list of numbers", 2: "a list of lists of numbers (one per y)"}[ndim]
+        fail(f"{path}: {key}: expected {shape}")
+    if not np.all(np.isfinite(value)):
+        fail(f"{path}: {key}: every value must be a finite number")
+    return value
+
+
 def read_terrain_yaml(path):
-    with open(path) as f:
+    with open(path, encoding="utf-8-sig") as f:
         doc = yaml.safe_load(f)
     if not isinstance(doc, dict) or "heights" not in doc:
         fail(f"{path}: expected a map with 'heights'")
-    try:
-        heights = np.array(doc["heights"], dtype=float)
-        lateral = np.array(doc["y"], dtype=float) if "y" in doc else None
-        if heights.ndim == 1:
-            heights = heights[np.newaxis, :]
-        if "x" in doc:
-            stations = np.array(doc["x"], dtype=float)
-        else:
-            spacing = float(doc["spacing"])
-            stations = float(doc.get("start", 0.0)) + spacing * np.arange(heights.shape[1])
-    except (KeyError, TypeError, ValueError) as error:
-        fail(f"{path}: malformed terrain ({reason(error)})")
-    if heights.shape[1] != len(stations) or (lateral is not None and len(lateral) != len(heights)):
-        fail(f"{path}: heights of shape {heights.shape} do not match {len(stations)} stations"
-             + ("" if lateral is None else f" and {len(lateral)} lateral lines"))
+    lateral = numbers(path, doc, "y", 1) if "y" in doc else None
+    heights = numbers(path, doc, "heights", 1 if lateral is None else 2)
+    if lateral is None:
+        heights = heights[np.newaxis, :]
+    elif len(heights) != len(lateral):
+        fail(f"{path}: heights: {len(heights)} lists for {len(lateral)} lateral lines (y)")
+    if ("x" in doc) == ("spacing" in doc):
+        fail(f"{path}: give exactly one of 'x' (the stations) and 'spacing'")
+    if "x" in doc:
+        stations = numbers(path, doc, "x", 1)
+    else:
+        spacing = numbers(path, doc, "spacing", 0)
+        start = numbers(path, doc, "start", 0) if "start" in doc else 0.0
+        if not spacing > 0:
+            fail(f"{path}: spacing: must be > 0")
+        stations = start + spacing * np.arange(heights.shape[1])
+    if heights.shape[1] != len(stations):
+        fail(f"{path}: heights: {heights.shape[1]} per line for {len(stations)} stations")
+    if len(stations) < 2:
+        fail(f"{path}: a terrain needs at least two stations")
     return stations, lateral, heights
 
 
@@ -128,9 +153,13 @@ def pad_rows(vehicle):
             d = yaml.safe_load(f)
         b = float(d["running_gear"]["track_centre_distance"]["value"])
         e = float(d["track_assembly"]["pad_lateral_offset"]["value"])
-    except (OSError, yaml.YAMLError, KeyError, TypeError, ValueError) as error:
+    except (OSError, UnicodeDecodeError, yaml.YAMLError, KeyError, TypeError,
+            ValueError) as error:
         fail(f"{vehicle}: cannot read running_gear.track_centre_distance and "
              f"track_assembly.pad_lateral_offset ({reason(error)})")
+    if not (math.isfinite(b) and math.isfinite(e) and b > 0 and e > 0):
+        fail(f"{vehicle}: running_gear.track_centre_distance and "
+             f"track_assembly.pad_lateral_offset must be finite and > 0")
     return {"LO": b / 2 + e, "LI": b / 2 - e, "RI": -b / 2 + e, "RO": -b / 2 - e}
 
 
@@ -172,11 +201,17 @@ def main():
     if not math.isfinite(args.lateral_offset):
         fail(f"--lateral-offset {args.lateral_offset} is not finite")
     if args.profiles_out is not None:
-        directory = os.path.dirname(args.profiles_out) or "."
-        if not os.path.splitext(args.profiles_out)[1].lower() == ".csv":
-            fail(f"--profiles-out {args.profiles_out}: must end in .csv")
+        out = args.profiles_out
+        directory = os.path.dirname(out) or "."
+        if not os.path.splitext(out)[1].lower() == ".csv":
+            fail(f"--profiles-out {out}: must end in .csv")
+        if os.path.isdir(out):
+            fail(f"--profiles-out {out}: it is a directory")
         if not os.path.isdir(directory) or not os.access(directory, os.W_OK):
-            fail(f"--profiles-out {args.profiles_out}: directory {directory} is not writable")
+            fail(f"--profiles-out {out}: directory {directory} is not writable")
+        for other, what in ((args.terrain, "the terrain file"), (args.out, "--out")):
+            if os.path.realpath(out) == os.path.realpath(other):
+                fail(f"--profiles-out {out} is {what}: it would be overwritten")
 
     stations, lateral, heights = read_terrain(args.terrain)
     check_increasing(args.terrain, stations, "stations")

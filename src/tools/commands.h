@@ -80,6 +80,9 @@ inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
         const std::filesystem::path dir =
             path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
         std::error_code ec;
+        if (std::filesystem::is_directory(path, ec)) return "'" + text + "' is a directory";
+        if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+          return "'" + text + "': " + dir.string() + " is not a directory";
         if (!std::filesystem::is_directory(dir, ec))
           return "'" + text + "': the directory " + dir.string() + " does not exist";
         if (::access(dir.c_str(), W_OK) != 0)
@@ -97,6 +100,8 @@ inline CLI::Validator outputDirectory() {
         namespace fs = std::filesystem;
         std::error_code ec;
         fs::path dir = text.empty() ? fs::path(".") : fs::path(text);
+        if (fs::is_symlink(fs::symlink_status(dir, ec)) && !fs::exists(dir, ec))
+          return "'" + text + "' is a link to nothing";
         if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
           return "'" + text + "' exists and is not a directory";
         fs::path existing = dir;

@@ -363,6 +363,9 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   for (double x : d.return_rollers.x)
     c.require(x > d.sprocket.centre_x, "return_rollers.x",
               "roller at x = " + brief(x) + " m lies behind the sprocket");
+  c.require(d.return_rollers.x.size() <= 50, "return_rollers.x",
+            std::to_string(d.return_rollers.x.size()) +
+                " rollers per side; at most 50 are supported (node numbering)");
   std::vector<double> rollers = d.return_rollers.x;
   std::sort(rollers.begin(), rollers.end());
   for (std::size_t i = 1; i < rollers.size(); ++i)

@@ -26,6 +26,10 @@ double sideY(const VehicleDescription& d, int side) {
 NodeId stationNode(int side, int axle, int part) {
   return 1000 + 100 * side + 10 * axle + part;
 }
+/// Return roller r (0-based) of a side; at most 50 per side (validateDescription).
+NodeId rollerNode(int side, int r) {
+  return 2010 + 100 * side + r;
+}
 NodeId chainAssemblyBase(int side, int k) {
   return 100000 * (side + 1) + 100 * k;
 }
@@ -350,7 +354,7 @@ class Builder {
         if (best < 0)
           throw InputError("return_rollers.x: the top run holds no assembly");
         const NodeId roller =
-            model().addNode(2010 + 100 * side + static_cast<NodeId>(r),
+            model().addNode(rollerNode(side, static_cast<int>(r)),
                             Vector3(xr, y, path.topRunHeight(xr) - d_.return_rollers.radius));
         addWheelMass(roller, d_.return_rollers.mass, 0.0, "return_roller");
         layout().return_rollers.push_back(roller);
@@ -458,8 +462,12 @@ std::string nodePart(const VehicleLayout& layout, NodeId node) {
     if (layout.sprockets[side] == node) return std::string("sprocket ") + sideName(static_cast<int>(side));
     if (layout.idlers[side] == node) return std::string("idler ") + sideName(static_cast<int>(side));
   }
-  for (std::size_t i = 0; i < layout.return_rollers.size(); ++i)
-    if (layout.return_rollers[i] == node) return "return roller " + std::to_string(i + 1);
+  for (const NodeId roller : layout.return_rollers)
+    if (roller == node)
+      for (int side = 0; side < 2; ++side)
+        if (node >= rollerNode(side, 0) && node < rollerNode(side, 50))
+          return std::string("return roller ") + sideName(side) + " " +
+                 std::to_string(node - rollerNode(side, 0) + 1);
   return "node " + std::to_string(node);
 }
 

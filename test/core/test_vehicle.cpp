@@ -183,6 +183,20 @@ TEST(VehicleOptions, ReturnRollersAndArmDampers) {
   EXPECT_EQ(damped, 4);  // stations 1 and 7 on both sides
   const tvd::fem::System sys = tvd::fem::assemble(v.model);
   EXPECT_GT(sys.damping.norm(), 0.0);
+  // Rollers are named by side, front to rear as given.
+  EXPECT_EQ(veh::nodePart(v.layout, v.layout.return_rollers[1]), "return roller left 2");
+  EXPECT_EQ(veh::nodePart(v.layout, v.layout.return_rollers[5]), "return roller right 3");
+
+  // More rollers than node numbers: refused, not two nodes with one id.
+  veh::VehicleDescription many;
+  many.return_rollers.radius = 0.01;
+  for (int i = 0; i < 51; ++i) many.return_rollers.x.push_back(-2.0 + 0.05 * i);
+  try {
+    veh::validateDescription(many);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 50"), std::string::npos) << e.what();
+  }
 
   d.return_rollers.x = {5.0};  // ahead of the idler
   try {

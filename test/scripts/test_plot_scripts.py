@@ -539,13 +539,50 @@ class PlotScriptsTest(unittest.TestCase):
         result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
                                  "--profiles-out", self.path("p.txt"), terrain)
         self.assert_input_error(result, out, "--profiles-out", ".csv")
+        # The input is never overwritten by the profiles.
+        with open(terrain) as f:
+            before = f.read()
+        result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
+                                 "--profiles-out", terrain, terrain)
+        self.assert_input_error(result, out, "would be overwritten")
+        with open(terrain) as f:
+            self.assertEqual(f.read(), before)
+        # Malformed YAML terrains: one line naming the key, never a traceback.
+        for text, words in (("heights: 5\nspacing: 1\n", "heights"),
+                            ("heights: []\nspacing: 1\n", "at least two stations"),
+                            ("y: [0]\nheights: [[]]\nspacing: 1\n", "at least two stations"),
+                            ("heights: [[[0, 1]]]\nspacing: 1\n", "heights"),
+                            ("y: 0.5\nheights: [[0, 1]]\nspacing: 1\n", "y"),
+                            ("heights: [0, 1]\nx: 5\n", "x"),
+                            ("heights: [0, 1]\nx: [0, 1]\nspacing: 1\n", "exactly one"),
+                            ("heights: [[0, 1], [0, 2]]\nspacing: 1\n", "heights")):
+            bad_yaml = self.path("bad.yaml")
+            with open(bad_yaml, "w") as f:
+                f.write(text)
+            result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out, bad_yaml)
+            self.assert_input_error(result, out, "bad.yaml", *([words] if words else []))
+        result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
+                                 self.path("terrain.txt"))
+        self.assert_input_error(result, out, ".csv, .yaml or .yml")
+
+    def test_terrain_csv_with_a_byte_order_mark_keeps_its_first_row(self):
+        bom = self.path("bom.csv")
+        with open(bom, "wb") as f:
+            f.write(b"\xef\xbb\xbf0,0\n1,1\n2,2\n")
+        out, profiles = self.path("bom.png"), self.path("bom_p.csv")
+        result = self.run_script("plot_terrain.py", "--vehicle", self.write_vehicle(), "--out",
+                                 out, "--profiles-out", profiles, "--detail", "0:2", bom)
+        self.assert_png(result, out)
+        table = np.genfromtxt(profiles, delimiter=",", names=True)
+        np.testing.assert_allclose(table["station_m"], [0, 1, 2])
+        np.testing.assert_allclose(table["p_LO_m"], [0, 1, 2])
 
     # plot_masters.py (Fig. 12)
 
     def write_masters(self, name, groups=None, positions=None, masters=None):
         """A reduced model's master variables as `tvd reduce --out` writes them."""
-        groups = groups or ["road input"] * 4 + ["hull"] + ["wheel arm"] * 2 + ["MoGeSeC 1",
-                                                                                "MoGeSeC 2"]
+        if groups is None:
+            groups = ["road input"] * 4 + ["hull"] + ["wheel arm"] * 2 + ["MoGeSeC 1", "MoGeSeC 2"]
         n = len(groups)
         if positions is None:
             positions = np.column_stack([np.linspace(-2, 2, n), np.zeros(n), np.linspace(0, 1, n)])
@@ -573,6 +610,10 @@ class PlotScriptsTest(unittest.TestCase):
         ragged = self.write_masters("ragged.mat", positions=np.zeros((3, 3)))
         result = self.run_script("plot_masters.py", "--out", out, ragged)
         self.assert_input_error(result, out, "ragged.mat", "do not match")
+        empty = self.write_masters("empty.mat", groups=[], positions=np.zeros((0, 3)),
+                                   masters=np.zeros((0, 2)))
+        result = self.run_script("plot_masters.py", "--out", out, empty)
+        self.assert_input_error(result, out, "empty.mat", "no master DOFs")
         nan = self.write_masters("nan.mat", positions=np.full((9, 3), np.nan))
         result = self.run_script("plot_masters.py", "--out", out, nan)
         self.assert_input_error(result, out, "nan.mat", "non-finite")

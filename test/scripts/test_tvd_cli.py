@@ -512,6 +512,15 @@ class TvdCliTest(unittest.TestCase):
                                 "is not a directory")
         self.assert_input_error(["mac", "--vehicle", VEHICLE, "--out",
                                  os.path.join(a_file, "mac")], "--out", "is not a directory")
+        os.symlink(self.path("nowhere"), self.path("dangling"))
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--out", self.path("dangling")],
+                                "--out", "link to nothing")
+        # A directory where a file is expected, and a file where a directory is.
+        os.makedirs(self.path("m.mat"))
+        self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", self.path("m.mat")],
+                                "--out", "is a directory")
+        self.assert_input_error(["terrain", "--track", "long_hill", "--out",
+                                 os.path.join(a_file, "t.csv")], "--out", "is not a directory")
         self.tvd("modes", "--vehicle", VEHICLE, "--count", "2", "--out", self.path("new/modes"))
         self.assertTrue(os.path.isfile(self.path("new/modes/modes.csv")))
         # Terrain files: the directory is checked, the extension in any case.
