@@ -212,6 +212,13 @@ class Table:
             values.append(value)
         return np.array(values)
 
+    def text(self, name):
+        """The column called `name` as strings (CSV files; e.g. the mode types of modes.csv)."""
+        if self._columns is not None or name not in self.header:
+            fail(f"{self.path}: missing text column '{name}'")
+        j = self.header.index(name)
+        return [row[j].strip() for _, row in self._rows]
+
     def where(self, line_or_row):
         """'line L' (CSV) or 'row R' (MAT) of the k-th data row (0-based)."""
         if self._columns is not None:

@@ -3,10 +3,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
 #include "commands.h"
+#include "node_shapes.h"
 #include "output_files.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -155,7 +157,11 @@ void runVehicle(const ModesOptions& opt) {
   const VehicleAnalysis a = analyseVehicle(description, variant, opt.count);
   std::vector<std::string> types;
   for (const auto& c : a.classes) types.push_back(c.label);
-  if (!opt.out_dir.empty()) writeModeFiles(opt.out_dir, a.system, a.modes, types);
+  if (!opt.out_dir.empty()) {
+    writeModeFiles(opt.out_dir, a.system, a.modes, types);
+    writeNodeShapes((std::filesystem::path(opt.out_dir) / "node_shapes.csv").string(), a.vehicle,
+                    a.system, a.modes);
+  }
   const vehicle::MassBreakdown& m = a.vehicle.layout.mass;
   if (opt.json) {
     io::JsonWriter json(std::cout);

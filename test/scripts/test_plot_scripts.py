@@ -174,7 +174,7 @@ class PlotScriptsTest(unittest.TestCase):
 
     def test_help(self):
         for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py", "plot_terrain.py",
-                       "plot_masters.py"):
+                       "plot_masters.py", "plot_modes.py"):
             result = self.run_script(script, "--help")
             self.assertEqual(result.returncode, 0, result.stderr)
             self.assertIn("--out", result.stdout)
@@ -617,6 +617,50 @@ class PlotScriptsTest(unittest.TestCase):
         nan = self.write_masters("nan.mat", positions=np.full((9, 3), np.nan))
         result = self.run_script("plot_masters.py", "--out", out, nan)
         self.assert_input_error(result, out, "nan.mat", "non-finite")
+
+    # plot_modes.py (Fig. 11)
+
+    def write_modes_dir(self, name, modes=2):
+        """What `tvd modes --vehicle --out DIR` writes, for a 5-node bar: modes.csv and
+        node_shapes.csv (mode k bends it with k half waves)."""
+        directory = self.path(name)
+        os.makedirs(directory)
+        with open(os.path.join(directory, "modes.csv"), "w") as f:
+            f.write("mode,frequency_hz,eigenvalue_rad2_s2,type\n")
+            for k in range(1, modes + 1):
+                f.write(f"{k},{2.5 * k},{(2 * np.pi * 2.5 * k) ** 2},bounce\n")
+        x = np.linspace(-2, 2, 5)
+        with open(os.path.join(directory, "node_shapes.csv"), "w") as f:
+            f.write("node,part,x_m,y_m,z_m" + "".join(f",mode_{k}_ux,mode_{k}_uy,mode_{k}_uz"
+                                                     for k in range(1, modes + 1)) + "\n")
+            for i, xi in enumerate(x):
+                values = "".join(f",0,0,{np.sin(k * np.pi * (xi + 2) / 4)}"
+                                 for k in range(1, modes + 1))
+                f.write(f"{i + 1},track assembly left {i + 1} link,{xi},1.4,0.1{values}\n")
+        return directory
+
+    def test_modes_two_rows(self):
+        out = self.path("fig11.png")
+        u, t = self.write_modes_dir("mu"), self.write_modes_dir("mt")
+        result = self.run_script("plot_modes.py", "--out", out, f"un-tracked={u}:1", f"{t}:2")
+        self.assert_png(result, out)
+
+    def test_modes_bad_input_is_one_line(self):
+        out = self.path("fig11.png")
+        u = self.write_modes_dir("mu")
+        result = self.run_script("plot_modes.py", "--out", out, f"{u}:3")
+        self.assert_input_error(result, out, "no mode 3", "1..2")
+        result = self.run_script("plot_modes.py", "--out", out, f"{self.path('none')}:1")
+        self.assert_input_error(result, out, "none", "not a directory")
+        result = self.run_script("plot_modes.py", "--out", out, u)
+        self.assert_input_error(result, out, "DIR:MODE")
+        result = self.run_script("plot_modes.py", "--out", out, "--scale", "-1", f"{u}:1")
+        self.assert_input_error(result, out, "--scale")
+        def not_a_number(lines):
+            lines[2] = lines[2].replace(",0.1,", ",nan,", 1)
+        rewrite_lines(os.path.join(u, "node_shapes.csv"), not_a_number)
+        result = self.run_script("plot_modes.py", "--out", out, f"{u}:1")
+        self.assert_input_error(result, out, "node_shapes.csv", "z_m")
 
 
 if __name__ == "__main__":

@@ -91,6 +91,35 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(stored, sorted(m))
         np.testing.assert_allclose(np.ravel(m[stored[0]])[:count], f, rtol=1e-9)
 
+    def test_node_shapes_recover_the_rigid_hull(self):
+        # node_shapes.csv holds every node, slaves included: the crew seat, rigid with the hull,
+        # must move as u_G + theta x (p - p_G) with the hull node's six DOFs from shapes.csv.
+        out = self.path("modes_nodes")
+        self.tvd("modes", "--vehicle", VEHICLE, "--variant", "untracked", "--count", "8",
+                 "--out", out)
+        with open(os.path.join(out, "shapes.csv")) as f:
+            hull = {r[1]: np.array(r[2:], dtype=float) for r in csv.reader(f) if r[0] == "1"}
+        with open(os.path.join(out, "node_shapes.csv")) as f:
+            table = list(csv.reader(f))
+        names = table[0]
+        self.assertEqual(names[:5], ["node", "part", "x_m", "y_m", "z_m"])
+        self.assertEqual(len(names), 5 + 3 * 8)
+        by_part = {row[1]: row for row in table[1:]}
+        self.assertEqual(len({row[0] for row in table[1:]}), len(table) - 1)  # one row per node
+        for part in ("hull", "crew_seat", "road_wheel_left_1 centre", "road_wheel_right_7 arm"):
+            self.assertIn(part, by_part)
+        p_g = np.array(by_part["hull"][2:5], dtype=float)
+        seat = by_part["crew_seat"]
+        p = np.array(seat[2:5], dtype=float)
+        for k in range(8):
+            u_g = np.array([hull[d][k] for d in ("ux", "uy", "uz")])
+            theta = np.array([hull[d][k] for d in ("rx", "ry", "rz")])
+            expected = u_g + np.cross(theta, p - p_g)
+            got = np.array(seat[5 + 3 * k:8 + 3 * k], dtype=float)
+            np.testing.assert_allclose(got, expected, rtol=0, atol=1e-9 * np.abs(expected).max() + 1e-15)
+            np.testing.assert_allclose(np.array(by_part["hull"][5 + 3 * k:8 + 3 * k], dtype=float),
+                                       u_g, rtol=0, atol=1e-12)
+
     def test_reduce_json_and_mat(self):
         out = self.path("untracked.mat")
         d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", out)

@@ -1,0 +1,104 @@
+#!/usr/bin/python3
+"""Vehicle mode shapes, like Fig. 11 of Dimauro et al. (2024).
+
+Reads what `tvd modes --vehicle ... --out DIR` writes (DIR/modes.csv and DIR/node_shapes.csv:
+every node's undeformed position and its translation in each mode, wheel centres and named points
+included) and draws each requested mode in a side view (x, z) and a top view (x, y): the
+undeformed vehicle in grey, the deformed one coloured by the displacement magnitude, blue for
+none to red for the largest, as the paper does. Each LABEL=DIR:MODE is one row, e.g. a MAC pair
+of `tvd mac` (the un-tracked mode and its tracked partner):
+
+    TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
+    $TVD modes --vehicle $V --variant untracked --count 20 --out /tmp/mu
+    $TVD modes --vehicle $V --variant tracked --count 40 --out /tmp/mt
+    scripts/plot_modes.py --out fig11.png "un-tracked=/tmp/mu:5" "tracked=/tmp/mt:15"
+
+--scale sets the drawn largest displacement [m] (default 0.4). Bad input (a missing directory or
+file, a mode the files do not hold, a malformed row) exits with status 2 and one line on stderr
+naming it; no figure is written then.
+"""
+import argparse
+import os
+
+# First: plot_common selects the Agg backend before pyplot loads.
+from plot_common import OUT_HELP, ArgumentParser, Table, check_outputs, fail, positive_float, save
+import matplotlib.pyplot as plt
+import numpy as np
+
+
+def spec(text):
+    """'[LABEL=]DIR:MODE' -> (label, dir, mode number)."""
+    label, _, rest = text.rpartition("=") if "=" in text and not os.path.isdir(text) else ("", "", text)
+    directory, colon, mode = rest.rpartition(":")
+    try:
+        number = int(mode)
+    except ValueError:
+        number = 0
+    if not colon or number < 1:
+        raise argparse.ArgumentTypeError(f"'{text}': expected [LABEL=]DIR:MODE with MODE >= 1")
+    return (label or f"{os.path.basename(os.path.normpath(directory))} mode {number}", directory,
+            number)
+
+
+def load(directory, mode):
+    """(positions [n x 3], displacements [n x 3], title) of one mode of a modes directory."""
+    if not os.path.isdir(directory):
+        fail(f"{directory}: not a directory (the --out of `tvd modes --vehicle`)")
+    modes = Table(os.path.join(directory, "modes.csv"))
+    numbers = modes.column("mode")
+    if mode not in numbers:
+        fail(f"{directory}: no mode {mode} (modes {int(numbers.min())}..{int(numbers.max())})")
+    row = int(np.flatnonzero(numbers == mode)[0])
+    frequency = modes.column("frequency_hz")[row]
+    nodes = Table(os.path.join(directory, "node_shapes.csv"))
+    positions = np.column_stack([nodes.column(c) for c in ("x_m", "y_m", "z_m")])
+    shape = np.column_stack([nodes.column(f"mode_{mode}_{c}") for c in ("ux", "uy", "uz")])
+    if not (np.all(np.isfinite(positions)) and np.all(np.isfinite(shape))):
+        fail(f"{directory}/node_shapes.csv: a non-finite value")
+    kind = modes.text("type")[row] if "type" in modes.header else ""
+    title = f"mode {mode}, {frequency:.2f} Hz" + (f" ({kind})" if kind else "")
+    return positions, shape, title
+
+
+def draw(ax, positions, shape, scale, axis):
+    """One view: x against `axis` (1: y, top view; 2: z, side view)."""
+    magnitude = np.linalg.norm(shape, axis=1)
+    largest = magnitude.max()
+    factor = scale / largest if largest > 0 else 0.0
+    moved = positions + factor * shape
+    ax.scatter(positions[:, 0], positions[:, axis], s=3, color="0.8", zorder=1)
+    order = np.argsort(magnitude)  # the largest on top
+    ax.scatter(moved[order, 0], moved[order, axis], s=6, zorder=2, cmap="jet",
+               c=magnitude[order] / largest if largest > 0 else magnitude[order], vmin=0.0, vmax=1.0)
+    ax.set_xlabel("x [m] (forward)")
+    ax.set_ylabel("z [m] (up)" if axis == 2 else "y [m] (left)")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, alpha=0.3)
+
+
+def main():
+    parser = ArgumentParser(description=__doc__,
+                            formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", required=True, help=f"figure file to write; {OUT_HELP}")
+    parser.add_argument("--scale", type=positive_float, default=0.4,
+                        help="largest displacement as drawn [m] (default 0.4)")
+    parser.add_argument("modes", nargs="+", type=spec, metavar="[LABEL=]DIR:MODE",
+                        help="a `tvd modes --vehicle --out` directory and a mode number, one row each")
+    args = parser.parse_args()
+    check_outputs(("--out", args.out))
+
+    rows = [(label, *load(directory, mode)) for label, directory, mode in args.modes]
+    fig, axes = plt.subplots(len(rows), 2, figsize=(14, 3.8 * len(rows)), squeeze=False,
+                             gridspec_kw={"width_ratios": [1, 1]})
+    for (label, positions, shape, title), (side, top) in zip(rows, axes):
+        draw(side, positions, shape, args.scale, 2)
+        draw(top, positions, shape, args.scale, 1)
+        side.set_title(f"{label}: {title}, side view")
+        top.set_title("top view")
+    fig.suptitle(f"grey: undeformed; colour: displacement |u| / max |u| of the mode, blue 0 to red 1 "
+                 f"(drawn {args.scale:g} m at the largest)")
+    save((fig, args.out))
+
+
+if __name__ == "__main__":
+    main()
