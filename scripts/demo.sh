@@ -44,7 +44,7 @@ echo; echo "== 7. Figures (PNG) =="
   --title "long hill, 30 km/h" tracked="$OUT/long_hill_30kmh.csv"
 /usr/bin/python3 scripts/plot_masters.py --out "$OUT/masters.png" tracked="$OUT/tracked_reduced.mat"
 /usr/bin/python3 scripts/plot_modes.py --out "$OUT/mode_pair.png" \
-  "un-tracked bounce=$OUT/modes_untracked:5" "tracked partner (MAC 0.85)=$OUT/modes_tracked:15"
+  "un-tracked=$OUT/modes_untracked:5" "tracked=$OUT/modes_tracked:15"
 tvd terrain --track oop_waves --out "$OUT/oop_waves.csv" > /dev/null
 /usr/bin/python3 scripts/plot_terrain.py --vehicle "$VEHICLE" --out "$OUT/oop_waves_profiles.png" \
   --title "out-of-phase waves under the pad rows (Fig. 17c)" "$OUT/oop_waves.csv"
