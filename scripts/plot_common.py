@@ -45,15 +45,29 @@ class ArgumentParser(argparse.ArgumentParser):
         fail(message)
 
 
+def to_float(text):
+    """float(text), or NaN when it is not a number (callers reject what is not finite)."""
+    try:
+        return float(text)
+    except ValueError:
+        return math.nan
+
+
 def positive_float(text):
     """argparse type: a finite number > 0."""
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
+    value = to_float(text)
     if not (math.isfinite(value) and value > 0):
         raise argparse.ArgumentTypeError(f"'{text}' is not a finite number > 0")
     return value
+
+
+def vehicle_view(ax, axis):
+    """Axes of a view of the vehicle: x forward against y (axis 1, top view) or z (axis 2, side
+    view), equal scales (REP-103 frame)."""
+    ax.set_xlabel("x [m] (forward)")
+    ax.set_ylabel("z [m] (up)" if axis == 2 else "y [m] (left)")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.grid(True, alpha=0.3)
 
 
 def reason(error):
@@ -203,10 +217,7 @@ class Table:
         values = []
         for line, row in self._rows:
             text = row[j].strip()
-            try:
-                value = float(text)
-            except ValueError:
-                value = math.nan
+            value = to_float(text)
             if not math.isfinite(value):
                 fail(f"{path}: line {line}, column '{name}': '{text}' is not a finite number")
             values.append(value)

@@ -20,7 +20,7 @@ import argparse
 
 # First: plot_common selects the Agg backend before pyplot loads.
 from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, labelled, load_mat,
-                         save)
+                         save, vehicle_view)
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -79,10 +79,7 @@ def draw(ax, positions, groups, directions, vertical_axis):
     others = [i for i, g in enumerate(groups) if g not in STYLES and not g.startswith("MoGeSeC")]
     if others:
         ax.scatter(positions[others, 0], positions[others, v], color="k", s=10, label="other")
-    ax.set_xlabel("x [m] (forward)")
-    ax.set_ylabel("z [m] (up)" if v == 2 else "y [m] (left)")
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.grid(True, alpha=0.3)
+    vehicle_view(ax, v)
 
 
 def main():

@@ -21,7 +21,8 @@ import argparse
 import os
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import OUT_HELP, ArgumentParser, Table, check_outputs, fail, positive_float, save
+from plot_common import (OUT_HELP, ArgumentParser, Table, check_outputs, fail, positive_float,
+                         save, vehicle_view)
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -70,10 +71,7 @@ def draw(ax, positions, shape, scale, axis):
     order = np.argsort(magnitude)  # the largest on top
     ax.scatter(moved[order, 0], moved[order, axis], s=6, zorder=2, cmap="jet",
                c=magnitude[order] / largest if largest > 0 else magnitude[order], vmin=0.0, vmax=1.0)
-    ax.set_xlabel("x [m] (forward)")
-    ax.set_ylabel("z [m] (up)" if axis == 2 else "y [m] (left)")
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.grid(True, alpha=0.3)
+    vehicle_view(ax, axis)
 
 
 def main():

@@ -24,7 +24,7 @@ import math
 import os
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import OUT_HELP, ArgumentParser, check_outputs, fail, reason, save
+from plot_common import OUT_HELP, ArgumentParser, check_outputs, fail, reason, save, to_float
 import matplotlib.pyplot as plt
 import numpy as np
 import yaml
@@ -117,18 +117,11 @@ def read_terrain_yaml(path):
 
 
 def is_number(text):
-    try:
-        float(text)
-        return True
-    except ValueError:
-        return False
+    return not math.isnan(to_float(text))
 
 
 def number(path, line, text, what):
-    try:
-        value = float(text)
-    except ValueError:
-        value = math.nan
+    value = to_float(text)
     if not math.isfinite(value):
         fail(f"{path}: row {line}: {what} '{text.strip()}' is not a finite number")
     return value
