@@ -175,9 +175,10 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   rep.interface_dofs = interface_count;
   rep.mogesec_dofs = static_cast<DofIndex>(masters.picks.size());
   rep.mogesec_picks = masters.picks;
-  rep.master_parts.clear();
-  for (const DofIndex m : masters.masters)
-    rep.master_parts.push_back(vehicle::nodePart(model.vehicle.layout, model.system.dofs.dofOf(m).node));
+  rep.mogesec_parts.clear();
+  for (const MogesecPick& pick : masters.picks)
+    rep.mogesec_parts.push_back(
+        vehicle::nodePart(model.vehicle.layout, model.system.dofs.dofOf(pick.index).node));
   rep.selection_seconds = secondsSince(selection_start);
 
   // 4. Craig-Bampton. The paper keeps as many fixed-interface modes as global modes were selected

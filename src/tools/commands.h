@@ -17,27 +17,26 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// Option checks with a short message ("must be positive, got -2"): CLI11's own
-/// PositiveNumber/NonNegativeNumber print their range up to 1.8e308.
-inline CLI::Validator positiveNumber() {
+/// Option checks with a short message ("must be a positive number, got -2"; CLI11's own
+/// PositiveNumber/NonNegativeNumber print their range up to 1.8e308): a finite number that
+/// satisfies `ok`, otherwise "must be <requirement>, got <text>".
+template <typename Predicate>
+CLI::Validator finiteNumberWhere(Predicate ok, const std::string& requirement,
+                                 const std::string& name) {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [ok, requirement](std::string& text) -> std::string {
         double v = 0.0;
-        if (!CLI::detail::lexical_cast(text, v) || !(v > 0.0) || !std::isfinite(v))
-          return "must be a positive number, got " + text;
+        if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v) || !ok(v))
+          return "must be " + requirement + ", got " + text;
         return std::string();
       },
-      "POSITIVE");
+      name);
+}
+inline CLI::Validator positiveNumber() {
+  return finiteNumberWhere([](double v) { return v > 0.0; }, "a positive number", "POSITIVE");
 }
 inline CLI::Validator nonNegativeNumber() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double v = 0.0;
-        if (!CLI::detail::lexical_cast(text, v) || !(v >= 0.0) || !std::isfinite(v))
-          return "must be a number >= 0, got " + text;
-        return std::string();
-      },
-      "NONNEGATIVE");
+  return finiteNumberWhere([](double v) { return v >= 0.0; }, "a number >= 0", "NONNEGATIVE");
 }
 
 /// A number in [lo, hi] (CLI::Range lets NaN through and prints its bounds to 17 digits).
@@ -56,14 +55,7 @@ inline CLI::Validator numberIn(double lo, double hi, const std::string& unit = "
       "NUMBER");
 }
 inline CLI::Validator finiteNumber() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        double v = 0.0;
-        if (!CLI::detail::lexical_cast(text, v) || !std::isfinite(v))
-          return "must be a finite number, got " + text;
-        return std::string();
-      },
-      "FINITE");
+  return finiteNumberWhere([](double) { return true; }, "a finite number", "FINITE");
 }
 
 /// An output file, checked before any work: one of `extensions` (".csv", any case) and in a

@@ -57,7 +57,7 @@ void run(ReduceOptions opt) {
   for (std::size_t k = 0; k < report.mogesec_picks.size(); ++k) {
     const std::size_t i = first_pick + k;
     const reduction::MogesecPick& p = report.mogesec_picks[k];
-    mogesec.push_back({static_cast<int>(k + 1), model.dof_labels[i], report.master_parts[i],
+    mogesec.push_back({static_cast<int>(k + 1), model.dof_labels[i], report.mogesec_parts[k],
                        model.master_positions.row(static_cast<Eigen::Index>(i)).transpose(), p.weight,
                        p.modal_weight, p.geometric_weight});
   }

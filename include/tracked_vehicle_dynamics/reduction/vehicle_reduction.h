@@ -51,10 +51,10 @@ struct VehicleReductionReport {
   DofIndex full_dofs = 0;
   DofIndex interface_dofs = 0;   ///< masters imposed (road inputs' nodes, hull)
   DofIndex mogesec_dofs = 0;
-  /// vehicle::nodePart() of each master's node, in the model's master order (built models only).
-  std::vector<std::string> master_parts;
-  /// Weights of each MoGeSeC pick at the moment it was picked, in pick order (built models only).
+  /// Each MoGeSeC pick, in pick order (built models only): its weights at the moment it was
+  /// picked, and vehicle::nodePart() of its node.
   std::vector<MogesecPick> mogesec_picks;
+  std::vector<std::string> mogesec_parts;
   int flexible_modes = 0;
   DofIndex reduced_dofs = 0;
   std::vector<double> full_frequencies_hz;     ///< full-model modes (band)
