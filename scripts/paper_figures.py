@@ -1,0 +1,90 @@
+"""The figures of scripts/paper_report.py: the paper's Figs. 9-24 drawn from the runs of
+paper_runs.py by the plot scripts beside this file (plot_mac.py, plot_modes.py, ...), one PNG each
+in <report>/figures/, named after the paper's figure."""
+import os
+import subprocess
+import sys
+
+from paper_runs import COUPLING_SPEED_KMH, FRF_SPEEDS_KMH, MOR_SPEEDS_KMH, TRACKED_SPEEDS_KMH, TRACKS, RunError
+
+SCRIPTS = os.path.dirname(os.path.abspath(__file__))
+TRACK_NAMES = {"long_hill": "long hill", "separated_waves": "separated waves",
+               "oop_waves": "out-of-phase waves"}
+
+
+def _speed_label(speed):
+    return "synchronous" if not speed else f"{speed} km/h"
+
+
+def figure_jobs(runs, vehicle, figures_dir, untracked_mode, tracked_mode):
+    """[(file name, script, arguments)] for every figure."""
+    fig = lambda name: os.path.join(figures_dir, name)  # noqa: E731
+    jobs = [
+        ("fig09_mac.png", "plot_mac.py", ["--mac-dir", runs.path("mac"), "--out", fig("fig09_mac.png"),
+                                         "--freq-out", fig("fig10_mac_frequencies.png")]),
+        ("fig11_modes.png", "plot_modes.py",
+         ["--out", fig("fig11_modes.png"),
+          f"un-tracked={runs.path('modes_untracked')}:{untracked_mode}",
+          f"tracked, its MAC partner={runs.path('modes_tracked')}:{tracked_mode}"]),
+        ("fig12_masters.png", "plot_masters.py",
+         ["--out", fig("fig12_masters.png"), f"un-tracked={runs.path('reduced_untracked.mat')}",
+          f"tracked={runs.path('reduced_tracked.mat')}"]),
+    ]
+    for v, letter in (("untracked", "a"), ("tracked", "b")):
+        jobs.append((f"fig13{letter}_frf_{v}_full_vs_reduced.png", "plot_frf.py",
+                     ["--out", fig(f"fig13{letter}_frf_{v}_full_vs_reduced.png"), "--title",
+                      f"{v}: full vs reduced, synchronous",
+                      f"full={runs.frf_csv(v, 'full')}", f"reduced={runs.frf_csv(v, 'reduced')}"]))
+    jobs.append(("fig14_frf_track_coupling.png", "plot_frf.py",
+                 ["--out", fig("fig14_frf_track_coupling.png"), "--title",
+                  "track coupling: un-tracked vs tracked (reduced, synchronous)",
+                  f"un-tracked={runs.frf_csv('untracked', 'reduced')}",
+                  f"tracked={runs.frf_csv('tracked', 'reduced')}"]))
+    for v in ("untracked", "tracked"):
+        name = f"fig15_16_frf_{v}_wheelbase_filter.png"
+        jobs.append((name, "plot_frf.py",
+                     ["--out", fig(name), "--title", f"{v}: wheelbase filter (reduced)"]
+                     + [f"{_speed_label(s)}={runs.frf_csv(v, 'reduced', s)}"
+                        for s in (0, *FRF_SPEEDS_KMH)]))
+    for track, letter in zip(TRACKS, "abc"):
+        name = f"fig17{letter}_terrain_{track}.png"
+        jobs.append((name, "plot_terrain.py",
+                     ["--vehicle", vehicle, "--out", fig(name), "--title",
+                      f"{TRACK_NAMES[track]} under the pad rows", runs.terrain_csv(track)]))
+    for speed, number in zip(MOR_SPEEDS_KMH, (18, 19)):
+        name = f"fig{number}_untracked_long_hill_{speed}kmh_full_vs_reduced.png"
+        jobs.append((name, "plot_simulation.py",
+                     ["--out", fig(name), "--title", f"un-tracked, long hill, {speed} km/h",
+                      f"full={runs.sim_csv('untracked', 'full', 'long_hill', speed)}",
+                      f"reduced={runs.sim_csv('untracked', 'reduced', 'long_hill', speed)}"]))
+    for track, number in zip(TRACKS, (20, 21, 22)):
+        v = COUPLING_SPEED_KMH
+        name = f"fig{number}_{track}_{v}kmh_untracked_vs_tracked.png"
+        jobs.append((name, "plot_simulation.py",
+                     ["--out", fig(name), "--title", f"{TRACK_NAMES[track]}, {v} km/h",
+                      f"un-tracked={runs.sim_csv('untracked', 'reduced', track, v)}",
+                      f"tracked={runs.sim_csv('tracked', 'reduced', track, v)}"]))
+    for track, number in (("long_hill", 23), ("separated_waves", 24)):
+        name = f"fig{number}_tracked_{track}_speeds.png"
+        jobs.append((name, "plot_simulation.py",
+                     ["--out", fig(name), "--title", f"tracked, {TRACK_NAMES[track]}"]
+                     + [f"{s} km/h={runs.sim_csv('tracked', 'reduced', track, s)}"
+                        for s in TRACKED_SPEEDS_KMH]))
+    return jobs
+
+
+def draw_all(runs, vehicle, figures_dir, untracked_mode, tracked_mode, log=print):
+    """Draws every figure; returns the files written (Fig. 10 comes with Fig. 9)."""
+    os.makedirs(figures_dir, exist_ok=True)
+    written = []
+    for name, script, args in figure_jobs(runs, vehicle, figures_dir, untracked_mode, tracked_mode):
+        log(f"{script} -> {name}")
+        result = subprocess.run([sys.executable, os.path.join(SCRIPTS, script), *args],
+                                capture_output=True, text=True, timeout=300)
+        if result.returncode != 0:
+            last = (result.stderr.strip().splitlines() or ["(no message)"])[-1]
+            raise RunError(f"{script} failed for {name}: {last}")
+        written.append(name)
+        if script == "plot_mac.py":
+            written.append("fig10_mac_frequencies.png")
+    return written

@@ -1,0 +1,129 @@
+"""The `tvd` runs behind scripts/paper_report.py: every analysis of the paper's Sections 3-4 on one
+vehicle description, each written to its own file in the report directory and its JSON kept.
+
+One concern: running `tvd` and knowing where each result lies. The tables (paper_tables.py) and
+the figures (paper_figures.py) only read what these runs wrote.
+"""
+import json
+import os
+import subprocess
+
+VARIANTS = ("untracked", "tracked")
+TRACKS = ("long_hill", "separated_waves", "oop_waves")
+FRF_SPEEDS_KMH = (10, 30, 50)  # Figs. 15-16
+TRACKED_SPEEDS_KMH = (10, 30, 50)  # Figs. 23-24
+COUPLING_SPEED_KMH = 30  # §4.2.3, Figs. 20-22
+MOR_SPEEDS_KMH = (5, 50)  # §4.2.2, Figs. 18-19
+MODE_COUNT = {"untracked": 20, "tracked": 40}  # Table 4 lists UV modes up to 20, TV up to 40
+MAC_COUNT = 40
+
+
+class RunError(Exception):
+    """A `tvd` run failed: the command and the last line it printed on stderr."""
+
+
+def _speed_name(speed_kmh):
+    return "sync" if not speed_kmh else f"{speed_kmh:g}kmh"
+
+
+class Runs:
+    """Runs `tvd` into `out_dir` and remembers each run's JSON. The reduced models are cached in
+    out_dir/cache, so each variant is reduced once."""
+
+    def __init__(self, tvd, vehicle, out_dir, log=print):
+        self.tvd = tvd
+        self.vehicle = vehicle
+        self.out = out_dir
+        self.cache = os.path.join(out_dir, "cache")
+        self.log = log
+        self.modes = {}
+        self.reduce = {}
+        self.mac = None
+        self.frf = {}  # (variant, model, speed_kmh or 0) -> {"json": ..., "csv": path}
+        self.sim = {}  # (variant, model, track, speed_kmh) -> {"json": ..., "csv": path}
+        self.commands = []  # every command run, as typed
+
+    def path(self, *parts):
+        return os.path.join(self.out, *parts)
+
+    def _run(self, command, *args, vehicle=True):
+        argv = [self.tvd, command, *(["--vehicle", self.vehicle] if vehicle else []),
+                *map(str, args), "--json"]
+        self.commands.append("tvd " + " ".join(argv[1:]))
+        self.log(self.commands[-1])
+        try:
+            result = subprocess.run(argv, capture_output=True, text=True, timeout=600)
+        except OSError as error:
+            raise RunError(f"cannot run {self.tvd}: {error.strerror}") from None
+        if result.returncode != 0:
+            last = (result.stderr.strip().splitlines() or ["(no message)"])[-1]
+            raise RunError(f"`tvd {' '.join(argv[1:])}` failed (status {result.returncode}): {last}")
+        try:
+            return json.loads(result.stdout)
+        except json.JSONDecodeError:
+            raise RunError(f"`tvd {' '.join(argv[1:])}` did not print JSON") from None
+
+    def run_modes(self):
+        for v in VARIANTS:
+            self.modes[v] = self._run("modes", "--variant", v, "--count", MODE_COUNT[v],
+                                      "--out", self.path(f"modes_{v}"))
+
+    def run_mac(self):
+        self.mac = self._run("mac", "--count", MAC_COUNT, "--out", self.path("mac"))
+
+    def run_reduce(self):
+        for v in VARIANTS:
+            self.reduce[v] = self._run("reduce", "--variant", v, "--out",
+                                       self.path(f"reduced_{v}.mat"))
+
+    def frf_csv(self, variant, model, speed_kmh=0):
+        return self.path("frf", f"{variant}_{model}_{_speed_name(speed_kmh)}.csv")
+
+    def run_frf(self):
+        os.makedirs(self.path("frf"), exist_ok=True)
+        for v in VARIANTS:
+            cases = [("full", 0), ("full", COUPLING_SPEED_KMH), ("reduced", 0)]
+            cases += [("reduced", s) for s in FRF_SPEEDS_KMH]
+            for model, speed in cases:
+                csv = self.frf_csv(v, model, speed)
+                args = ["--variant", v, "--model", model, "--cache-dir", self.cache, "--out", csv]
+                if speed:
+                    args += ["--speed-kmh", speed]
+                self.frf[(v, model, speed)] = {"json": self._run("frf", *args), "csv": csv}
+
+    def sim_csv(self, variant, model, track, speed_kmh):
+        return self.path("simulate", f"{variant}_{model}_{track}_{speed_kmh:g}kmh.csv")
+
+    def simulation_cases(self):
+        cases = {("untracked", m, "long_hill", s) for m in ("full", "reduced") for s in MOR_SPEEDS_KMH}
+        cases |= {(v, "reduced", t, COUPLING_SPEED_KMH) for v in VARIANTS for t in TRACKS}
+        cases |= {("tracked", "reduced", t, s) for t in ("long_hill", "separated_waves")
+                  for s in TRACKED_SPEEDS_KMH}
+        return sorted(cases)
+
+    def run_simulations(self):
+        os.makedirs(self.path("simulate"), exist_ok=True)
+        for case in self.simulation_cases():
+            v, model, track, speed = case
+            csv = self.sim_csv(*case)
+            self.sim[case] = {"json": self._run("simulate", "--variant", v, "--model", model,
+                                                "--track", track, "--speed-kmh", speed,
+                                                "--cache-dir", self.cache, "--out", csv),
+                              "csv": csv}
+
+    def terrain_csv(self, track):
+        return self.path("terrain", f"{track}.csv")
+
+    def run_terrains(self):
+        os.makedirs(self.path("terrain"), exist_ok=True)
+        for track in TRACKS:
+            self._run("terrain", "--track", track, "--out", self.terrain_csv(track), vehicle=False)
+
+    def run_all(self):
+        self.run_modes()
+        self.run_terrains()
+        self.run_mac()
+        self.run_reduce()
+        self.run_frf()
+        self.run_simulations()
+        return self

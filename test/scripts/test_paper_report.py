@@ -1,0 +1,187 @@
+#!/usr/bin/python3
+"""Tests of scripts/paper_report.py: the whole report on the bundled vehicle (one run, about a
+minute), the README's generated tables against it, and the pieces it computes on its own (mode
+type matching, the dB comparison, the README blocks, bad input). Run as
+    /usr/bin/python3 test/scripts/test_paper_report.py --tvd PATH/TO/tvd [--xml OUTDIR/paper_report.xml]
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+import junit_runner
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+SCRIPTS = os.path.join(ROOT, "scripts")
+sys.path.insert(0, SCRIPTS)
+import paper_report  # noqa: E402
+import paper_tables  # noqa: E402
+
+REPORT = os.path.join(SCRIPTS, "paper_report.py")
+README = os.path.join(ROOT, "README.md")
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+MIN_PNG_BYTES = 10_000
+TVD = None  # set from --tvd
+
+
+def run_report(*args):
+    return subprocess.run([sys.executable, REPORT, *args], capture_output=True, text=True,
+                          timeout=900, cwd=ROOT)
+
+
+class PaperReportTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.work = tempfile.mkdtemp(prefix="paper_report_")
+        cls.out = os.path.join(cls.work, "report")
+        cls.result = run_report("--tvd", TVD, "--out", cls.out, "--readme", README, "--check")
+        path = os.path.join(cls.out, "report.json")
+        cls.json = json.load(open(path)) if os.path.exists(path) else None
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.work, ignore_errors=True)
+
+    def sections(self):
+        self.assertIsNotNone(self.json, self.result.stderr)
+        return self.json["sections"]
+
+    # --- the whole report --------------------------------------------------------------------
+
+    def test_readme_tables_are_what_the_code_computes(self):
+        self.assertEqual(self.result.returncode, 0,
+                         f"the README's generated tables differ from this build's results; "
+                         f"run scripts/paper_report.py --readme README.md --update\n"
+                         f"{self.result.stdout[-4000:]}\n{self.result.stderr[-2000:]}")
+
+    def test_every_figure_is_drawn(self):
+        figures = self.json["figures"] if self.json else []
+        numbers = {int(n) for name in figures
+                   for n in re.match(r"fig(\d\d)(?:_(\d\d))?", name).groups() if n}
+        self.assertEqual(numbers, set(range(9, 25)), figures)
+        for name in figures:
+            path = os.path.join(self.out, "figures", name)
+            with open(path, "rb") as stream:
+                data = stream.read()
+            self.assertTrue(data.startswith(PNG_SIGNATURE), name)
+            self.assertGreater(len(data), MIN_PNG_BYTES, name)
+
+    def test_table4_rows_are_the_modes_tvd_found(self):
+        # The frequencies and labels of the table are those `tvd modes --out` wrote.
+        with open(os.path.join(self.out, "modes_untracked", "modes.csv")) as stream:
+            modes = {int(r[0]): (float(r[1]), r[3]) for r in
+                     (line.strip().split(",") for line in list(stream)[1:])}
+        rows = self.sections()["table4_untracked"]
+        self.assertEqual(len(rows), 8)
+        for r in rows:
+            self.assertIsNotNone(r["mode"], r)
+            self.assertAlmostEqual(modes[r["mode"]][0], r["hz"], places=6)
+            self.assertEqual(modes[r["mode"]][1], r["label"])
+            off = abs(r["hz"] - r["paper_hz"]) > 0.10 * r["paper_hz"]
+            self.assertEqual(off, r["status"] == "**not met**", r)
+
+    def test_reduction_and_frf_targets_hold(self):
+        s = self.sections()
+        self.assertLessEqual(s["table5"]["tracked"]["reduced_dofs"],
+                             0.03 * s["table5"]["tracked"]["full_dofs"])
+        for v in ("untracked", "tracked"):
+            self.assertLess(s["table5"][v]["worst_band_error_percent"], 2.0)
+        for row in s["frf_agreement"]:
+            self.assertLess(row["worst_db"], 1.0, row)
+            self.assertGreater(row["fraction_compared"], 0.45, row)
+        for row in s["full_vs_reduced"]:
+            if row["output"] != "hull vertical acceleration":
+                self.assertLess(row["relative_to_peak"], 0.02, row)
+
+    def test_commands_are_listed(self):
+        runs = self.json["runs"] if self.json else []
+        self.assertTrue(any(r.startswith("tvd modes ") for r in runs), runs)
+        self.assertTrue(any(" --model full " in f" {r} " and r.startswith("tvd simulate")
+                            for r in runs), runs)
+        with open(os.path.join(self.out, "report.md"), encoding="utf-8") as stream:
+            text = stream.read()
+        for r in runs:
+            self.assertIn(r, text)
+
+    # --- pieces ------------------------------------------------------------------------------
+
+    def test_mode_types_match_as_the_classifier_does(self):
+        m = paper_tables.matches
+        self.assertTrue(m("pitch+bounce", "pitch"))
+        self.assertTrue(m("pitch+bounce", "pitch+bounce"))
+        self.assertFalse(m("pitch+bounce", "bounce"))        # bounce is not the main motion
+        self.assertFalse(m("longitudinal", "longitudinal+pitch"))
+        self.assertTrue(m("yaw+lateral+roll", "yaw+roll"))
+        self.assertTrue(m("wheel bounce+roll", "wheel bounce+pitch"))  # any wheel-bounce mode
+        self.assertFalse(m("track chain local", "pitch"))
+        self.assertFalse(m("track chain local", "wheel bounce"))
+        # Nearest of its type, each mode once; wheel targets need a hull-coupled wheel mode.
+        targets = [("pitch", 3.0), ("pitch", 3.1), ("wheel bounce+roll", 18.0)]
+        found = paper_tables.match_targets(targets, [2.0, 3.2, 5.0, 18.0, 18.5],
+                                           ["bounce", "pitch", "pitch+roll", "wheel bounce",
+                                            "wheel bounce+roll"], primary_only=False)
+        self.assertEqual(found, [1, 2, 4])
+
+    def test_worst_db_skips_anti_resonances(self):
+        hz = np.arange(0, 40.0001, 0.05)
+        full = 1.0 + 0.5 * np.sin(hz)
+        full[400] = 1e-6  # an anti-resonance at 20 Hz
+        reduced = full * 10 ** (0.5 / 20)
+        reduced[400] = 1.0  # off by 120 dB there, which must not count
+        db, fraction = paper_tables.worst_db(hz, full, reduced, 30.0, 0.25, 1.0)
+        self.assertAlmostEqual(db, 0.5, places=9)
+        self.assertAlmostEqual(fraction, 599 / 600)
+
+    def test_readme_blocks_are_checked_and_rewritten(self):
+        sections = [paper_tables.Section("a", "A", "| x |\n|---|\n| 1 |", None)]
+        path = os.path.join(self.work, "readme.md")
+        with open(path, "w") as stream:
+            stream.write("intro\n<!-- paper_report:a -->\nstale\n<!-- /paper_report:a -->\nend\n")
+        self.assertEqual(paper_report.sync_readme(path, sections, update=False), ["a"])
+        self.assertEqual(paper_report.sync_readme(path, sections, update=True), ["a"])
+        self.assertEqual(paper_report.sync_readme(path, sections, update=False), [])
+        with open(path) as stream:
+            self.assertEqual(stream.read(), "intro\n<!-- paper_report:a -->\n| x |\n|---|\n| 1 |\n"
+                                            "<!-- /paper_report:a -->\nend\n")
+
+    def test_bad_input_is_one_line(self):
+        cases = [
+            (["--tvd", os.path.join(self.work, "nowhere")], "no tvd executable"),
+            (["--tvd", TVD, "--vehicle", os.path.join(self.work, "none.yaml")], "none.yaml"),
+            (["--tvd", TVD, "--readme", README], "--readme needs --check or --update"),
+            (["--tvd", TVD, "--check"], "need --readme"),
+            (["--tvd", TVD, "--out", README], "is not a directory"),
+        ]
+        for args, text in cases:
+            result = run_report(*args)
+            self.assertEqual(result.returncode, 2, args)
+            self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+            self.assertIn(text, result.stderr)
+        # A description tvd refuses: the failing command and tvd's own message.
+        bad = os.path.join(self.work, "bad.yaml")
+        with open(bad, "w") as stream:
+            stream.write("name: bad\n")
+        result = run_report("--tvd", TVD, "--vehicle", bad, "--out", os.path.join(self.work, "b"),
+                            "--no-figures")
+        self.assertEqual(result.returncode, 2)
+        self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+        self.assertIn("tvd modes --vehicle " + bad, result.stderr)
+
+
+def configure(parser):
+    parser.add_argument("--tvd", required=True, help="path of the built tvd executable")
+
+    def apply(args):
+        global TVD
+        TVD = os.path.abspath(args.tvd)
+    return apply
+
+
+if __name__ == "__main__":
+    sys.exit(junit_runner.main(PaperReportTest, "paper_report", __doc__, configure=configure))
