@@ -48,7 +48,12 @@ echo; echo "== 7. Figures (PNG) =="
 tvd terrain --track oop_waves --out "$OUT/oop_waves.csv" > /dev/null
 /usr/bin/python3 scripts/plot_terrain.py --vehicle "$VEHICLE" --out "$OUT/oop_waves_profiles.png" \
   --title "out-of-phase waves under the pad rows (Fig. 17c)" "$OUT/oop_waves.csv"
-echo; echo "== 8. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
+echo; echo "== 8. Paper vs ours: every table and Figs. 9-24 (scripts/paper_report.py) =="
+/usr/bin/python3 scripts/paper_report.py --vehicle "$VEHICLE" --out "$OUT/paper_report" \
+  > "$OUT/paper_report.log"
+sed -n '/^## Summary/,/^## Table 4/p' "$OUT/paper_report/report.md" | grep '^\*'
+echo "  full tables: $OUT/paper_report/report.md; figures: $OUT/paper_report/figures/"
+echo; echo "== 9. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
 SKIP_BUILD=1 OUT="$OUT/ros" scripts/ros_demo.sh
 echo
 echo "Results in $OUT/. Next: source build/devel/setup.bash; rosrun tracked_vehicle_dynamics tvd --help"

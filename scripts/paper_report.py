@@ -4,15 +4,16 @@ Dimauro et al. (2024), Sections 3-4, run with `tvd`, the side-by-side tables of 
 figures (config/paper_reference.yaml) against ours, and the paper's Figs. 9-24.
 
     scripts/paper_report.py [--vehicle FILE] [--out DIR] [--tvd PATH] [--no-figures]
-                            [--readme README.md (--check | --update)]
+                            [--readme FILE [--readme FILE ...] (--check | --update)]
 
 Writes DIR (default paper_report/): report.md (the tables, with the commands that produced the
 numbers), report.json (the same numbers), figures/figNN_*.png, and every run's own output (modes,
 MAC, reduced models, FRF and simulation CSVs) in subdirectories. About a minute on the paper vehicle.
 
---readme FILE --check compares the README's generated tables (between the markers
-`<!-- paper_report:NAME -->` and `<!-- /paper_report:NAME -->`) with this run's and exits with
-status 1 listing those that differ; --update rewrites them. Bad input (a missing `tvd` or
+--readme FILE --check compares the generated tables of a Markdown file (between the markers
+`<!-- paper_report:NAME -->` and `<!-- /paper_report:NAME -->`; the README and
+doc/vehicle_model.md have them) with this run's and exits with status 1 naming those that
+differ; --update rewrites them. Bad input (a missing `tvd` or
 description, a failed run) exits with status 2 and one line naming it.
 """
 import argparse
@@ -79,6 +80,8 @@ def render_report(sections, runs, vehicle, figures):
              f"Vehicle description `{vehicle}`; paper: Dimauro et al., Defence Technology (2024). "
              "Produced by `scripts/paper_report.py`; every number below comes from the `tvd` "
              "runs listed at the end (their outputs are in this directory).", ""]
+    lines += ["## Summary", ""] + [f"* **{s.title}**: {s.summary}" for s in sections if s.summary]
+    lines += [""]
     for s in sections:
         lines += [f"## {s.title}", "", f"<!-- paper_report:{s.name} -->", s.markdown,
                   f"<!-- /paper_report:{s.name} -->", ""]
@@ -141,7 +144,8 @@ def main():
     parser.add_argument("--reference", default=DEFAULT_REFERENCE,
                         help="the paper's values (default config/paper_reference.yaml)")
     parser.add_argument("--no-figures", action="store_true", help="tables only")
-    parser.add_argument("--readme", help="a Markdown file with <!-- paper_report:NAME --> blocks")
+    parser.add_argument("--readme", action="append", metavar="FILE",
+                        help="a Markdown file with <!-- paper_report:NAME --> blocks (repeatable)")
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--check", action="store_true", help="with --readme: exit 1 if a block differs")
     mode.add_argument("--update", action="store_true", help="with --readme: rewrite the blocks")
@@ -174,12 +178,14 @@ def main():
                    "figures": figures, "runs": runs.commands}, stream, indent=1)
     print(f"report: {os.path.join(args.out, 'report.md')} ({len(sections)} tables, "
           f"{len(figures)} figures)")
-    if args.readme:
-        differ = sync_readme(args.readme, sections, args.update)
-        if differ and args.check:
-            fail(f"{args.readme}: generated tables differ: {', '.join(differ)} "
-                 f"(rerun with --update to rewrite them)", status=1)
-        print(f"{args.readme}: {'rewrote ' + ', '.join(differ) if differ else 'up to date'}")
+    stale = []
+    for readme in args.readme or []:
+        differ = sync_readme(readme, sections, args.update)
+        print(f"{readme}: {('rewrote ' if args.update else 'differs: ') + ', '.join(differ) if differ else 'up to date'}")
+        stale += [f"{readme} ({', '.join(differ)})"] if differ else []
+    if stale and args.check:
+        fail(f"generated tables differ in {'; '.join(stale)} (rerun with --update to rewrite them)",
+             status=1)
 
 
 if __name__ == "__main__":

@@ -399,6 +399,7 @@ struct Target {
   double hz;
   const char* type;
   Reproduced reproduced;
+  double floor = 0.75;  ///< Below: the mode must still lie above floor * hz
 };
 
 /// Best match of each target: the nearest mode of its type (wheel targets take the wheel-bounce
@@ -451,7 +452,7 @@ void checkTargets(const std::vector<Target>& targets, const std::vector<int>& fu
     const double f = b.frequencies_hz(match[k]);
     if (t.reproduced == Reproduced::Below) {
       EXPECT_LT(f, (1.0 - tolerance) * t.hz) << t.type << " now within tolerance: update";
-      EXPECT_GT(f, 0.75 * t.hz) << t.type;
+      EXPECT_GT(f, t.floor * t.hz) << t.type;
     } else {
       EXPECT_NEAR(f, t.hz, tolerance * t.hz) << t.type;
     }
@@ -486,7 +487,11 @@ TEST_F(VehicleModels, UntrackedModesReproduceTable4) {
 
 TEST_F(VehicleModels, TrackedModesRiseAsInTable4) {
   using R = Reproduced;
+  // Table 4's tracked lateral+roll (9.36 Hz) is not among the tracked targets; the pads'
+  // lateral shear bounds it as in the un-tracked model (README, "Modes"): ours is a lateral mode
+  // near 0.58 of it.
   const std::vector<Target> targets = {{5.25, "longitudinal+pitch", R::MainMotion},
+                                       {9.36, "lateral+roll", R::Below, 0.5},
                                        {7.12, "yaw", R::Full},
                                        {8.49, "bounce", R::Full},
                                        {9.37, "pitch", R::Full},
