@@ -8,6 +8,8 @@ import json
 import os
 import subprocess
 
+import yaml
+
 VARIANTS = ("untracked", "tracked")
 TRACKS = ("long_hill", "separated_waves", "oop_waves")
 FRF_SPEEDS_KMH = (10, 30, 50)  # Figs. 15-16
@@ -16,6 +18,14 @@ COUPLING_SPEED_KMH = 30  # §4.2.3, Figs. 20-22
 MOR_SPEEDS_KMH = (5, 50)  # §4.2.2, Figs. 18-19
 MODE_COUNT = {"untracked": 20, "tracked": 40}  # Table 4 lists UV modes up to 20, TV up to 40
 MAC_COUNT = 40
+# How far damping (which the paper does not give) moves the §4.2.2 magnitudes: the description's
+# `damping` replaced by each of these, un-tracked long hill at MOR_SPEEDS_KMH.
+DAMPING_VARIANTS = (("modal_2", {"model": "modal", "modal_ratio": 0.02}),
+                    ("modal_1", {"model": "modal", "modal_ratio": 0.01}),
+                    ("rayleigh_0.002", {"model": "rayleigh", "rayleigh_alpha": 0.0,
+                                        "rayleigh_beta": 0.002}),
+                    ("rayleigh_0.005", {"model": "rayleigh", "rayleigh_alpha": 0.0,
+                                        "rayleigh_beta": 0.005}))
 
 
 class RunError(Exception):
@@ -41,13 +51,16 @@ class Runs:
         self.mac = None
         self.frf = {}  # (variant, model, speed_kmh or 0) -> {"json": ..., "csv": path}
         self.sim = {}  # (variant, model, track, speed_kmh) -> {"json": ..., "csv": path}
+        self.damping = {}  # (variant name, speed_kmh) -> simulate JSON
         self.commands = []  # every command run, as typed
 
     def path(self, *parts):
         return os.path.join(self.out, *parts)
 
-    def _run(self, command, *args, vehicle=True):
-        argv = [self.tvd, command, *(["--vehicle", self.vehicle] if vehicle else []),
+    def _run(self, command, *args, vehicle=None):
+        """`tvd COMMAND --vehicle V ARGS --json`; vehicle None: the report's, False: none."""
+        vehicle = self.vehicle if vehicle is None else vehicle
+        argv = [self.tvd, command, *(["--vehicle", vehicle] if vehicle else []),
                 *map(str, args), "--json"]
         self.commands.append("tvd " + " ".join(argv[1:]))
         self.log(self.commands[-1])
@@ -119,6 +132,40 @@ class Runs:
         for track in TRACKS:
             self._run("terrain", "--track", track, "--out", self.terrain_csv(track), vehicle=False)
 
+    def damping_description(self, name, values):
+        """A copy of the description with its `damping` values replaced, in out/damping/."""
+        try:
+            with open(self.vehicle, encoding="utf-8") as stream:
+                description = yaml.safe_load(stream)
+            for key, value in values.items():
+                description["damping"][key]["value"] = value
+        except (OSError, yaml.YAMLError, KeyError, TypeError) as error:
+            raise RunError(f"{self.vehicle}: cannot vary its damping ({error})") from None
+        path = self.path("damping", f"{name}.yaml")
+        with open(path, "w", encoding="utf-8") as stream:
+            yaml.safe_dump(description, stream, sort_keys=False, allow_unicode=True)
+        return path
+
+    def description_damping(self):
+        """The description's own damping values {key: value}."""
+        try:
+            with open(self.vehicle, encoding="utf-8") as stream:
+                damping = yaml.safe_load(stream)["damping"]
+            return {key: item["value"] for key, item in damping.items()}
+        except (OSError, yaml.YAMLError, KeyError, TypeError, AttributeError) as error:
+            raise RunError(f"{self.vehicle}: cannot read its damping ({error})") from None
+
+    def run_damping(self):
+        os.makedirs(self.path("damping"), exist_ok=True)
+        for name, values in DAMPING_VARIANTS:
+            vehicle = self.damping_description(name, values)
+            for speed in MOR_SPEEDS_KMH:
+                self.damping[(name, speed)] = self._run(
+                    "simulate", "--variant", "untracked", "--track", "long_hill", "--speed-kmh",
+                    speed, "--cache-dir", self.cache,
+                    "--out", self.path("damping", f"{name}_long_hill_{speed}kmh.csv"),
+                    vehicle=vehicle)
+
     def run_all(self):
         self.run_modes()
         self.run_terrains()
@@ -126,4 +173,5 @@ class Runs:
         self.run_reduce()
         self.run_frf()
         self.run_simulations()
+        self.run_damping()
         return self

@@ -8,7 +8,8 @@ import math
 
 import numpy as np
 
-from paper_runs import COUPLING_SPEED_KMH, FRF_SPEEDS_KMH, MOR_SPEEDS_KMH, TRACKED_SPEEDS_KMH
+from paper_runs import (COUPLING_SPEED_KMH, DAMPING_VARIANTS, FRF_SPEEDS_KMH, MOR_SPEEDS_KMH,
+                        TRACKED_SPEEDS_KMH)
 from plot_common import Table
 
 HULL_MOTIONS = ("longitudinal", "lateral", "bounce", "roll", "pitch", "yaw")
@@ -410,6 +411,48 @@ def time_domain_section(runs, reference):
     return Section("time_domain", "Time domain (\u00a74.2, Figs. 18-24)", text, data)
 
 
+def damping_name(values):
+    """'modal 2 %' or 'Rayleigh β = 0.002 s (ζ = 3 % at 5 Hz, 11 % at 18 Hz)'."""
+    if values["model"] == "modal":
+        return f"modal {100 * values['modal_ratio']:g} %"
+    alpha, beta = values.get("rayleigh_alpha", 0.0), values["rayleigh_beta"]
+    zeta = lambda hz: 100 * (alpha / (4 * math.pi * hz) + beta * math.pi * hz)  # noqa: E731
+    head = f"Rayleigh \u03b1 = {alpha:g} 1/s, \u03b2 = {beta:g} s" if alpha else f"Rayleigh \u03b2 = {beta:g} s"
+    return f"{head} (\u03b6 = {zeta(5):.0f} % at 5 Hz, {zeta(18):.0f} % at 18 Hz)"
+
+
+def damping_section(runs, reference):
+    """The §4.2.2 magnitudes under other damping (the paper gives none)."""
+    td = reference["time_domain"]
+    height = td["hill_height_m"]
+    slow, fast = MOR_SPEEDS_KMH
+    description = runs.description_damping()
+    cases = [(damping_name(description) + " (the description's)",
+              sim(runs, "untracked", "long_hill", slow), sim(runs, "untracked", "long_hill", fast))]
+    cases += [(damping_name(values), runs.damping[(name, slow)], runs.damping[(name, fast)])
+              for name, values in DAMPING_VARIANTS]
+    body, data = [], []
+    for name, a, b in cases:
+        seat = [crew_seat(a), crew_seat(b)]
+        body.append([name, f"{a['peak_hull_vertical_accel_m_s2']:.2f} m/s\u00b2, "
+                           f"{a['peak_pitch_deg']:.2f}\u00b0",
+                     f"{b['peak_hull_vertical_accel_m_s2']:.1f} m/s\u00b2, "
+                     f"{b['peak_wheel_displacement_m'] - height:.3f} m",
+                     "\u2013" if None in seat else f"{seat[0]:.1f} / {seat[1]:.0f} m/s\u00b2"])
+        data.append({"damping": name, "slow": a["peak_hull_vertical_accel_m_s2"],
+                     "fast": b["peak_hull_vertical_accel_m_s2"]})
+    p5, p50 = td["long_hill_5kmh"], td["long_hill_50kmh"]
+    body.append(["paper", f"\u2248 {p5['peak_hull_vertical_accel_m_s2']:g} m/s\u00b2, "
+                          f"\u2248 {p5['peak_pitch_deg']:g}\u00b0",
+                 f"\u2248 {p50['peak_hull_vertical_accel_m_s2']:g} m/s\u00b2, "
+                 f"\u2248 {p50['wheel_overshoot_m']:g} m", "\u2013"])
+    text = markdown_table(["damping", f"{slow} km/h: peak hull acceleration, pitch",
+                           f"{fast} km/h: peak hull acceleration, wheel overshoot",
+                           f"crew seat, {slow} / {fast} km/h"], body)
+    return Section("damping_sweep", "Damping (not given by the paper), un-tracked long hill", text,
+                   data)
+
+
 def all_sections(runs, reference):
     return [table4_section("table4_untracked", "untracked", runs, reference),
             table4_section("table4_tracked", "tracked", runs, reference),
@@ -418,4 +461,5 @@ def all_sections(runs, reference):
             frf_agreement_section(runs, reference),
             wheelbase_section(runs, reference),
             full_vs_reduced_section(runs, reference),
-            time_domain_section(runs, reference)]
+            time_domain_section(runs, reference),
+            damping_section(runs, reference)]
