@@ -24,4 +24,8 @@ class SolverError : public Error {
   using Error::Error;
 };
 
+/// A number for an error message: six significant digits ("3.5", "1.2e-05"), not std::to_string's
+/// fixed six decimals ("3.500000").
+std::string brief(double value);
+
 }  // namespace tracked_vehicle_dynamics

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "output_files.h"
+#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
@@ -80,10 +81,11 @@ void run(const FrfOptions& opt) {
     return opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / 3.6)
                              : dynamics::InputDelay::synchronous();
   };
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   if (opt.model == "reduced") {
     reduction::VehicleReductionReport report;
     const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
-        opt.vehicle_file, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {},
+        description, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {},
         &report);
     names = model.system.output_names;
     h = dynamics::frfModal(model.system, hz, delayFor(model.system.input_stations),
@@ -95,7 +97,7 @@ void run(const FrfOptions& opt) {
     reduction::FullReferenceOptions ref_options;
     ref_options.max_frequency_hz = opt.max_mode_hz;
     const reduction::FullModelReference ref = reduction::buildVehicleReference(
-        vehicle::loadVehicleDescription(opt.vehicle_file), variant, ref_options);
+        description, variant, ref_options);
     names = ref.modal.output_names;
     h = ref.frf(hz, delayFor(ref.modal.input_stations), dynamics::OutputQuantity::Acceleration);
     dofs = ref.full_dofs;

@@ -34,7 +34,7 @@ struct CorrelationRow {
 };
 
 void run(const MacOptions& opt) {
-  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const VehicleAnalysis uv = analyseVehicle(description, vehicle::Variant::Untracked, opt.count);
   const VehicleAnalysis tv = analyseVehicle(description, vehicle::Variant::Tracked, opt.count);
   // MAC on the translations of the nodes both variants share (rotations ignored, paper §3.1.1).

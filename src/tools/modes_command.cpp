@@ -152,7 +152,7 @@ void runModel(const ModesOptions& opt) {
 }
 
 void runVehicle(const ModesOptions& opt) {
-  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const VehicleAnalysis a = analyseVehicle(description, variant, opt.count);
   std::vector<std::string> types;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
@@ -25,7 +26,7 @@ struct ReduceOptions {
 };
 
 void run(ReduceOptions opt) {
-  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   opt.reduction.rule = opt.rule == "mac" ? reduction::VehicleModeRule::MacCorrelation
                                          : reduction::VehicleModeRule::Band;

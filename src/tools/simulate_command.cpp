@@ -18,6 +18,7 @@
 #include "output_files.h"
 #include "point_comfort.h"
 #include "simulation_layout.h"
+#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
@@ -75,7 +76,8 @@ void run(const SimulateOptions& opt) {
   reduction::VehicleReductionReport report;
   reduction::ReducedModel model;
   std::unique_ptr<reduction::FullModelReference> full;
-  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(opt.vehicle_file);
+  std::vector<std::string> warnings;  // printed on stderr as they arise, and in the JSON
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
   if (opt.model == "full") {
     if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
     if (opt.max_mode_hz == 0 || opt.max_mode_hz > 100)
@@ -113,7 +115,6 @@ void run(const SimulateOptions& opt) {
   // so for a terrain file, since a terrain narrower than the vehicle is more often a mistake
   // than a choice. (The built-in oop_waves, 5 m wide and driven 1 m off centre as in the paper,
   // leaves the left outer pad row 5.5 cm beyond its edge: README, time domain.)
-  std::vector<std::string> warnings;
   if (!terrain::isBuiltInTrack(opt.track) && track.lateral().size() > 1) {
     const double y_min = road.inputY().minCoeff(), y_max = road.inputY().maxCoeff();
     const double t_min = track.lateral()(0), t_max = track.lateral()(track.lateral().size() - 1);

@@ -2,7 +2,7 @@
 
 #include <chrono>
 #include <cmath>
-
+#include <iostream>
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -10,6 +10,15 @@ namespace tools {
 namespace {
 using Clock = std::chrono::steady_clock;
 }  // namespace
+
+vehicle::VehicleDescription loadVehicle(const std::string& file, std::vector<std::string>* warnings) {
+  vehicle::VehicleDescription description = vehicle::loadVehicleDescription(file);
+  for (const std::string& w : vehicle::descriptionWarnings(description)) {
+    std::cerr << "tvd: warning: " << file << ": " << w << "\n";
+    if (warnings) warnings->push_back(file + ": " + w);
+  }
+  return description;
+}
 
 VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
                                vehicle::Variant variant, int count) {

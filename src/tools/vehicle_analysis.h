@@ -24,6 +24,11 @@ struct VehicleAnalysis {
   double build_seconds = 0.0;  ///< vehicle build + assembly [s]
 };
 
+/// Loads a vehicle description and prints its physical warnings (vehicle::descriptionWarnings)
+/// on stderr as "tvd: warning: FILE: ..."; appends them to `warnings` when given.
+vehicle::VehicleDescription loadVehicle(const std::string& file,
+                                        std::vector<std::string>* warnings = nullptr);
+
 /// Builds, assembles, solves statics and the lowest `count` modes, and classifies them.
 VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
                                vehicle::Variant variant, int count);

@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -156,11 +157,20 @@ double solveIdlerX(const VehicleDescription& d) {
   const auto& t = d.track_assembly;
   const double target = t.count * t.pitch;
   const double front = 0.5 * t.ground_count * t.pitch;
-  // The loop grows monotonically as the idler moves forward.
-  double lo = front + 1e-3, hi = front + 50.0;
+  // The loop grows monotonically as the idler moves forward; the idler wheel may reach at most
+  // kWheelOverhang beyond the hull's front end.
+  const double hull_front = 0.5 * d.hull.length;
+  const double farthest = hull_front + kWheelOverhang - d.idler.radius;
+  double lo = front + 1e-3, hi = std::max(farthest, lo + 1e-3);
+  const std::string chain = "track_assembly.count: a chain of " + std::to_string(t.count) +
+                            " assemblies (" + brief(target) + " m)";
   if (ChainPath(d, lo).length() > target)
-    throw InputError("track_assembly.count: a chain of " + std::to_string(t.count) +
-                     " assemblies is too short to wrap the sprocket and the idler");
+    throw InputError(chain + " is too short to wrap the sprocket and the idler");
+  if (ChainPath(d, hi).length() < target)
+    throw InputError(chain + " is too long: it closes only with the idler beyond x = " +
+                     brief(farthest) + " m, i.e. more than " + brief(kWheelOverhang) +
+                     " m ahead of the hull's front end (x = " + brief(hull_front) +
+                     " m; hull.length " + brief(d.hull.length) + " m)");
   while (hi - lo > kClosureTolerance) {
     const double mid = 0.5 * (lo + hi);
     if (ChainPath(d, mid).length() < target)

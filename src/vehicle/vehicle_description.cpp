@@ -163,13 +163,6 @@ std::string format(double v) {
   return buffer;
 }
 
-/// Short form, for messages.
-std::string brief(double v) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", v);
-  return buffer;
-}
-
 // ------------------------------------------------------------------------------------------
 // Loading
 // ------------------------------------------------------------------------------------------
@@ -353,13 +346,41 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
             "the centre of gravity lies outside the hull length");
   c.require(d.hull.cog_height < d.hull.height, "hull.cog_height",
             "the centre of gravity lies above the hull height");
+  // Principal moments of a rigid body: each at most the sum of the other two.
   const double inertia_sum = d.hull.roll_inertia + d.hull.pitch_inertia + d.hull.yaw_inertia;
-  for (double i : {d.hull.roll_inertia, d.hull.pitch_inertia, d.hull.yaw_inertia})
-    c.require(2.0 * i <= inertia_sum, "hull.roll_inertia",
-              "principal inertias violate the triangle inequality");
+  const std::pair<double, const char*> inertias[] = {{d.hull.roll_inertia, "hull.roll_inertia"},
+                                                     {d.hull.pitch_inertia, "hull.pitch_inertia"},
+                                                     {d.hull.yaw_inertia, "hull.yaw_inertia"}};
+  for (const auto& [i, key] : inertias)
+    c.require(2.0 * i <= inertia_sum, key,
+              brief(i) + " kg*m^2 exceeds the sum of the other two principal inertias (" +
+                  brief(inertia_sum - i) + "), which no rigid body has");
   for (int s : d.damping.damped_stations)
     c.require(s >= 1 && s <= g.axle_count, "damping.damped_stations",
               "station " + std::to_string(s) + " is not in 1.." + std::to_string(g.axle_count));
+  // Geometry a builder would accept but no vehicle has: each of these once gave a model.
+  c.require(2.0 * d.road_wheel.radius < g.axle_spacing, "road_wheel.radius",
+            "wheels of radius " + brief(d.road_wheel.radius) + " m overlap at the axle spacing " +
+                brief(g.axle_spacing) + " m");
+  c.require(wheelbase < d.hull.length, "hull.length",
+            brief(d.hull.length) + " m is shorter than the wheelbase " + brief(wheelbase) + " m");
+  c.require(g.track_centre_distance < d.hull.width, "hull.width",
+            brief(d.hull.width) + " m is narrower than the track centre distance " +
+                brief(g.track_centre_distance) + " m");
+  // The chain runs rear sprocket -> top run -> front idler (vehicle_model.h); a front drive
+  // sprocket would reverse it, which the chain builder does not do.
+  c.require(d.sprocket.centre_x < -0.5 * t.ground_length, "sprocket.centre_x",
+            "the sprocket must lie behind the ground run (x < " + brief(-0.5 * t.ground_length) +
+                " m): the model has a rear drive sprocket and a front idler; front-drive chains "
+                "are not supported");
+  // The sprocket wheel within the hull length, with kWheelOverhang to spare (the idler follows
+  // from the chain length: solveIdlerX checks it).
+  c.require(std::abs(d.sprocket.centre_x) + d.sprocket.radius <=
+                0.5 * d.hull.length + kWheelOverhang,
+            "sprocket.centre_x",
+            "the sprocket reaches x = " + brief(d.sprocket.centre_x - d.sprocket.radius) +
+                " m, more than " + brief(kWheelOverhang) + " m beyond the hull's rear end (x = " +
+                brief(-0.5 * d.hull.length) + " m)");
   for (double x : d.return_rollers.x)
     c.require(x > d.sprocket.centre_x, "return_rollers.x",
               "roller at x = " + brief(x) + " m lies behind the sprocket");
@@ -372,15 +393,6 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     c.require(rollers[i] - rollers[i - 1] >= 2.0 * d.return_rollers.radius, "return_rollers.x",
               "rollers at x = " + brief(rollers[i - 1]) + " and " + brief(rollers[i]) +
                   " m overlap (radius " + brief(d.return_rollers.radius) + " m)");
-  // Geometry a builder would accept but no vehicle has: each of these once gave a model.
-  c.require(2.0 * d.road_wheel.radius < g.axle_spacing, "road_wheel.radius",
-            "wheels of radius " + brief(d.road_wheel.radius) + " m overlap at the axle spacing " +
-                brief(g.axle_spacing) + " m");
-  c.require(wheelbase < d.hull.length, "hull.length",
-            brief(d.hull.length) + " m is shorter than the wheelbase " + brief(wheelbase) + " m");
-  c.require(g.track_centre_distance < d.hull.width, "hull.width",
-            brief(d.hull.width) + " m is narrower than the track centre distance " +
-                brief(g.track_centre_distance) + " m");
   // Arm pivot z_p = z_w + a sin(beta) (vehicle_model.cpp) must be above the ground.
   const double wheel_z = t.upper_surface_height + d.road_wheel.radius;
   const double pivot_z = wheel_z + d.suspension.arm_length * std::sin(d.suspension.arm_angle);
@@ -544,6 +556,30 @@ std::string descriptionHashHex(const VehicleDescription& d) {
   std::snprintf(buffer, sizeof(buffer), "%016llx",
                 static_cast<unsigned long long>(descriptionHash(d)));
   return buffer;
+}
+
+std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
+  std::vector<std::string> warnings;
+  const auto& damping = d.damping;
+  const bool proportional = damping.model == DampingModel::Modal
+                                ? damping.modal_ratio > 0.0
+                                : damping.rayleigh_alpha > 0.0 || damping.rayleigh_beta > 0.0;
+  const bool dampers = !damping.damped_stations.empty() && d.suspension.arm_damping > 0.0;
+  if (!proportional && !dampers)
+    warnings.push_back(
+        std::string(damping.model == DampingModel::Modal ? "damping.modal_ratio"
+                                                         : "damping.rayleigh_beta") +
+        ": the vehicle has no damping at all: FRF peaks are unbounded at the resonances and "
+        "free vibrations never decay (the paper gives no value; 0.05 modal is the default)");
+  const double half_wheelbase = 0.5 * d.running_gear.axle_spacing * (d.running_gear.axle_count - 1);
+  if (std::abs(d.hull.cog_x) > half_wheelbase)
+    warnings.push_back("hull.cog_x: the centre of gravity (x = " + brief(d.hull.cog_x) +
+                       " m) lies " + (d.hull.cog_x > 0 ? "ahead of the front" : "behind the rear") +
+                       " axle (x = " + brief(d.hull.cog_x > 0 ? half_wheelbase : -half_wheelbase) +
+                       " m): the suspensions at the other end then carry negative static loads, and the "
+                       "linear model's ground holds those wheels down where a real vehicle would "
+                       "tip");
+  return warnings;
 }
 
 }  // namespace vehicle

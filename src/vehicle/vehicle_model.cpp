@@ -106,6 +106,26 @@ class Builder {
     }
   }
 
+  // A return roller hangs under the top run (centre z_r = top-run height - r); it must clear the
+  // road wheels (centre distance >= R + r) and the ground run below them.
+  void checkRollerClearance(double xr, double zr) const {
+    const double r = d_.return_rollers.radius, rw = d_.road_wheel.radius;
+    const std::string roller = "return_rollers.x: the roller at x = " + brief(xr) + " m (radius " +
+                               brief(r) + " m, hanging under the top run to z = " + brief(zr) +
+                               " m)";
+    if (zr - r <= d_.track_assembly.upper_surface_height)
+      throw InputError(roller + " reaches down to the ground run (return_rollers.radius, or the "
+                                "top run is too low)");
+    const double zw = d_.track_assembly.upper_surface_height + rw;
+    for (int axle = 0; axle < d_.running_gear.axle_count; ++axle) {
+      const double xw = axleX(d_, axle);
+      if (std::hypot(xr - xw, zr - zw) < r + rw)
+        throw InputError(roller + " overlaps road wheel " + std::to_string(axle + 1) +
+                         " (centre x = " + brief(xw) + " m, z = " + brief(zw) + " m, radius " +
+                         brief(rw) + " m)");
+    }
+  }
+
   // Trailing arm: pivot ahead of and above the wheel centre, x_p = x_w + a cos(beta),
   // z_p = z_w + a sin(beta). The revolute joint frees only ry; the torsion bar is a k_t spring
   // about y between the hull-side and arm-side pivot nodes.
@@ -338,9 +358,10 @@ class Builder {
       for (std::size_t r = 0; r < d_.return_rollers.x.size(); ++r) {
         const double xr = d_.return_rollers.x[r];
         if (xr >= path.idlerCentre().x())
-          throw InputError(
-              "return_rollers.x: roller at x = " + std::to_string(xr) +
-              " m lies ahead of the idler (x = " + std::to_string(path.idlerCentre().x()) + " m)");
+          throw InputError("return_rollers.x: roller at x = " + brief(xr) +
+                           " m lies ahead of the idler (x = " + brief(path.idlerCentre().x()) +
+                           " m)");
+        checkRollerClearance(xr, path.topRunHeight(xr) - d_.return_rollers.radius);
         int best = -1;
         double best_dist = 1e300;
         for (int k = 0; k < t.count; ++k) {

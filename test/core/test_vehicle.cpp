@@ -123,6 +123,12 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "damping.damped_stations", "implausibly large"},
       {"  x: {value: [], unit: m, source: \"estimated: none;", "  x: {value: [0, 0.2], unit: m, source: \"estimated: none;",
        "return_rollers.x", "overlap (radius 0.15 m)"},
+      {"  yaw_inertia: {value: 1.6e5,", "  yaw_inertia: {value: 2.0e5,", "hull.yaw_inertia",
+       "exceeds the sum of the other two principal inertias (179000)"},
+      {"  centre_x: {value: -3.05,", "  centre_x: {value: 3.05,", "sprocket.centre_x",
+       "front-drive chains are not supported"},
+      {"  centre_x: {value: -3.05,", "  centre_x: {value: -4.2,", "sprocket.centre_x",
+       "reaches x = -4.534 m, more than 0.5 m beyond the hull's rear end (x = -3.8 m)"},
       // Named points become CSV columns, MAT variables and tf frames.
       {"  crew_seat: {value:", "  \"crew,seat\": {value:", "named_points.crew,seat",
        "must start with a letter"},
@@ -167,9 +173,71 @@ TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
   EXPECT_THROW(veh::parseVariant("wheeled"), tvd::InputError);
 }
 
+// The tracked builder's geometry: a chain that only closes with the idler far ahead of the hull
+// once gave a model whose loop never closed (an idler 50 m ahead, the hull sagging upwards), and
+// return rollers were placed under the ground or inside the road wheels.
+TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
+  const auto buildError = [](const veh::VehicleDescription& d) {
+    try {
+      veh::buildVehicleModel(d, veh::Variant::Tracked);
+    } catch (const tvd::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  veh::VehicleDescription d;
+  for (int count : {102, 900}) {  // a few links more than fit, and far too many
+    d.track_assembly.count = count;
+    d.track_assembly.chain_length = count * d.track_assembly.pitch;
+    const std::string e = buildError(d);
+    EXPECT_NE(e.find("track_assembly.count: a chain of " + std::to_string(count)), std::string::npos) << e;
+    EXPECT_NE(e.find("is too long"), std::string::npos) << e;
+    EXPECT_NE(e.find("hull's front end (x = 3.8 m"), std::string::npos) << e;
+  }
+  d = veh::VehicleDescription{};
+  EXPECT_EQ(buildError(d), "");  // the paper's 92 links close with the idler inside the hull
+  d.return_rollers.x = {-1.5};
+  d.return_rollers.radius = 0.5;
+  d.return_rollers.mass = 30;
+  std::string e = buildError(d);
+  EXPECT_NE(e.find("return_rollers.x: the roller at x = -1.5 m (radius 0.5 m"), std::string::npos) << e;
+  EXPECT_NE(e.find("reaches down to the ground run"), std::string::npos) << e;
+  d.return_rollers.x = {-1.56};  // over road wheel 6 (x = -1.56 m), hanging into it
+  d.return_rollers.radius = 0.2;
+  e = buildError(d);
+  EXPECT_NE(e.find("overlaps road wheel 6 (centre x = -1.56 m"), std::string::npos) << e;
+  d.return_rollers.radius = 0.05;  // a small roller clears the wheel below it
+  EXPECT_EQ(buildError(d), "");
+}
+
+TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {
+  veh::VehicleDescription d;
+  EXPECT_TRUE(veh::descriptionWarnings(d).empty());
+  d.damping.modal_ratio = 0.0;
+  std::vector<std::string> w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("damping.modal_ratio: the vehicle has no damping at all", 0), 0u) << w[0];
+  d.damping.damped_stations = {1, 7};  // discrete arm dampers are damping enough
+  d.suspension.arm_damping = 1e4;
+  EXPECT_TRUE(veh::descriptionWarnings(d).empty());
+  d = veh::VehicleDescription{};
+  d.damping.model = veh::DampingModel::Rayleigh;  // alpha = beta = 0
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("damping.rayleigh_beta:", 0), 0u) << w[0];
+  d = veh::VehicleDescription{};
+  d.hull.cog_x = -2.5;  // behind the rear axle at -2.34 m
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("hull.cog_x: the centre of gravity (x = -2.5 m) lies behind the rear axle "
+                      "(x = -2.34 m)"), std::string::npos) << w[0];
+  d.hull.cog_x = 2.34;  // on the front axle: still inside
+  EXPECT_TRUE(veh::descriptionWarnings(d).empty());
+}
+
 TEST(VehicleOptions, ReturnRollersAndArmDampers) {
   veh::VehicleDescription d;
-  d.return_rollers.x = {-1.5, 0.0, 1.5};
+  d.return_rollers.x = {-1.17, 0.39, 1.95};  // between the road wheels, under the top run
   d.return_rollers.mass = 80.0;
   d.suspension.arm_damping = 2.0e4;
   d.damping.damped_stations = {1, 7};

@@ -10,7 +10,8 @@
 //                     holds at least kWheelShare of the energy (in the tracked vehicle the chain
 //                     under the wheels moves with them); "+<hull component>" is appended when the
 //                     hull holds at least kCouplingShare of the energy, e.g. "wheel bounce+roll"
-//   track chain local otherwise
+//   track chain local otherwise; "+<hull component>" is appended when the hull holds at least
+//                     kChainCouplingShare of the energy, e.g. "track chain local+roll"
 // The wheels' energy from riding along with the hull (rigid transport of the hull's motion to the
 // wheel centre) counts as the hull's, so hull modes with heavy wheels stay hull modes.
 #pragma once
@@ -32,6 +33,8 @@ constexpr double kComponentShare = 0.25;
 constexpr double kWheelShare = 0.25;
 /// A wheel mode names the hull's main component when the hull holds this share of the energy.
 constexpr double kCouplingShare = 0.002;
+/// A chain mode names the hull's main component when the hull holds this share of the energy.
+constexpr double kChainCouplingShare = 0.1;
 
 enum class ModeKind { Hull, WheelBounce, TrackLocal };
 

@@ -160,6 +160,9 @@ struct NamedPoint {
   Vector3 position = Vector3::Zero();  ///< [m]
 };
 
+/// How far the sprocket and idler wheels may reach beyond the hull's ends [m] (validation).
+constexpr double kWheelOverhang = 0.5;
+
 /// Every parameter of the vehicle. Defaults are the paper vehicle (config/vehicles/
 /// paper_vehicle.yaml holds the same values with units and sources).
 struct VehicleDescription {
@@ -191,6 +194,12 @@ VehicleDescription loadVehicleDescription(const std::string& path);
 
 /// Same from YAML text; `file` names the source in messages.
 VehicleDescription parseVehicleDescription(const std::string& text, const std::string& file);
+
+/// What a valid description may still get physically wrong, one sentence each, starting with the
+/// key (the tools print them as warnings; nothing is changed): no damping at all (resonances
+/// without bound, vibrations that never decay), and a hull centre of gravity outside the
+/// wheelbase (end wheels loaded negatively: the linear model's ground pulls the vehicle down).
+std::vector<std::string> descriptionWarnings(const VehicleDescription& d);
 
 /// Checks ranges and consistency (chain length = pitch x count, ground-contact assemblies not
 /// more than the chain has, the wheelbase fits on the ground run, ...). Throws InputError
