@@ -157,6 +157,9 @@ void run(const FrfOptions& opt) {
           .field("unit", c.unit)
           .field("peak_hz", hz(top))
           .field("peak_magnitude", std::abs(h(top, c.index)))
+          // The largest value at the last frequency is the band's edge, not a resonance: the
+          // response still rises there (resonances_hz lists the local maxima).
+          .field("peak_at_band_edge", top == hz.size() - 1)
           .key("resonances_hz")
           .beginArray();
       for (const auto& [f, m] : local) json.value(f);
@@ -176,7 +179,8 @@ void run(const FrfOptions& opt) {
     const auto [top, local] = peaks(c);
     std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "
               << std::setprecision(4) << std::abs(h(top, c.index)) << " " << c.unit
-              << " at " << hz(top) << " Hz; resonances [Hz]:";
+              << " at " << hz(top) << " Hz" << (top == hz.size() - 1 ? " (band edge)" : "")
+              << "; resonances [Hz]:";
     for (const auto& [f, m] : local) std::cout << " " << f;
     std::cout << "\n";
   }

@@ -490,6 +490,13 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(np.all(np.abs(rows[:, 2::2]) <= 180.0 + 1e-9))  # phases [deg]
         # The hull's vertical-acceleration peak in the JSON is the CSV's.
         self.assertAlmostEqual(rows[:, 1].max() / d["outputs"][0]["peak_magnitude"], 1.0, places=6)
+        # A peak at the last frequency is flagged as the band's edge, not taken for a resonance.
+        for k, o in enumerate(d["outputs"]):
+            at_edge = int(np.argmax(rows[:, 1 + 2 * k])) == len(rows) - 1
+            self.assertEqual(o["peak_at_band_edge"], at_edge, o["column"])
+        low = self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
+                            self.cache, "--max-hz", "3")
+        self.assertTrue(low["outputs"][0]["peak_at_band_edge"])  # still rising towards 5 Hz bounce
 
     def assert_input_error(self, args, *words):
         result = self.tvd(*args, status=INPUT_ERROR_STATUS)
