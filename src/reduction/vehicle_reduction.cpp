@@ -122,7 +122,17 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     const vehicle::Variant other_variant = variant == vehicle::Variant::Tracked
                                                ? vehicle::Variant::Untracked
                                                : vehicle::Variant::Tracked;
-    const AssembledVariant other = buildAndSolve(description, other_variant, options.global_modes);
+    // The un-tracked reduction builds the tracked variant too: say why when only that fails.
+    const auto other = [&] {
+      try {
+        return buildAndSolve(description, other_variant, options.global_modes);
+      } catch (const InputError& e) {
+        if (variant == vehicle::Variant::Tracked) throw;
+        throw InputError(std::string(e.what()) +
+                         " (the un-tracked reduction builds the tracked variant for its MAC mode "
+                         "selection; the band rule, `tvd reduce --rule band`, does not)");
+      }
+    }();
     // MAC on the translations of the nodes both variants share (hull, spider, arms, wheel
     // centres), recovered through the constraint transformation since many are slaves.
     const std::vector<fem::DofRef> common =
