@@ -6,7 +6,56 @@
 # `tvd terrain --iso8608 C`). SPEED: km/h, or a speed-profile CSV (time_s,speed_kmh). The bag is
 # BAG_DIR/NAME_SPEEDkmh.bag (NAME_PROFILE.bag for a profile), NAME the track or file stem.
 # Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
+# The options are those of rosbag's play executable (`rosbag play`'s; /usr/lib/rosbag/play --help),
+# which runs as this script's child: a SIGINT, SIGTERM or SIGHUP to the script stops it (and
+# tvd_make_bag) before the script ends, so no player is left behind.
 set -euo pipefail
+
+# roslaunch stops a node with SIGINT to its process group and SIGTERM 15 s later. play ignores
+# SIGINT while it waits for subscribers (--wait-for-subscribers), and `rosbag play` (Python) exits
+# on SIGINT at once, leaving play running on its own; so play is started directly, and a child that
+# has not ended 2 s after SIGINT gets SIGTERM.
+child=""
+child_command=""
+tmp=""
+stty_saved=""
+if [ -t 0 ]; then stty_saved=$(stty -g 2>/dev/null || true); fi
+stop() {  # stop SIGNAL STATUS: stops the child, exits with STATUS
+  trap '' INT TERM HUP
+  if [ -n "$child" ]; then
+    if [ "$1" = INT ]; then
+      kill -s INT "$child" 2>/dev/null || true
+      for _ in $(seq 20); do
+        kill -0 "$child" 2>/dev/null || break
+        sleep 0.1
+      done
+      if kill -0 "$child" 2>/dev/null; then
+        echo "play_track_bag.sh: $(basename "$child_command") still running 2 s after SIGINT:" \
+          "SIGTERM" >&2
+      fi
+    fi
+    kill -s TERM "$child" 2>/dev/null || true
+    wait "$child" 2>/dev/null || true
+    # play's terminal settings (it reads keys) are not restored by SIGTERM.
+    if [ -n "$stty_saved" ]; then stty "$stty_saved" 2>/dev/null || true; fi
+  fi
+  if [ -n "$tmp" ]; then rm -f "$tmp"; fi
+  exit "$2"
+}
+trap 'stop INT 130' INT
+trap 'stop TERM 143' TERM
+trap 'stop HUP 129' HUP
+run_child() {  # run_child COMMAND...: runs it as the child the traps stop (with this stdin)
+  child_command=$1
+  # An asynchronous command ignores SIGINT unless it resets it; `wait` lets the traps run at once.
+  (trap - INT QUIT; exec "$@") <&0 &
+  child=$!
+  local status=0
+  wait "$child" || status=$?
+  child=""
+  return "$status"
+}
+
 args=()
 for a in "$@"; do
   case "$a" in
@@ -40,7 +89,13 @@ if [ ! -s "$bag" ] || stale "$track" || stale "$speed"; then
     echo "play_track_bag.sh: tvd_make_bag not found (build the package and source its setup.bash)" >&2
     exit 2
   fi
-  "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp"
+  run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp"
   mv -f "$tmp" "$bag"
+  tmp=""
 fi
-exec rosbag play --clock --hz=1000 "${extra[@]}" "$bag"
+play=$(catkin_find --libexec rosbag play 2>/dev/null | head -n 1)
+if [ -z "$play" ] || [ ! -x "$play" ]; then
+  echo "play_track_bag.sh: rosbag's play executable not found (catkin_find --libexec rosbag play)" >&2
+  exit 2
+fi
+run_child "$play" --clock --hz=1000 "${extra[@]}" "$bag"

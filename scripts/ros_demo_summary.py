@@ -9,15 +9,30 @@ acceleration against the station.
 """
 import argparse
 import math
+import re
 import sys
-
-import rosbag
 
 
 def pitch_of(q):
     """Pitch [rad] of a quaternion, R = Rz Ry Rx (REP-103)."""
     s = 2.0 * (q.w * q.y - q.z * q.x)
     return math.asin(max(-1.0, min(1.0, s)))
+
+
+def plotted_wheels(names):
+    """The front, middle and rear left road wheels among the wheel names of /road_wheels
+    ([frame prefix]road_wheel_left_N, N = 1..axle count front to rear), front first; fewer when
+    the vehicle has fewer than three axles."""
+    left = {}
+    for n in names:
+        m = re.search(r"road_wheel_left_(\d+)$", n)
+        if m:
+            left[int(m.group(1))] = n
+    axles = sorted(left)
+    if not axles:
+        return []
+    picks = [axles[0], axles[len(axles) // 2], axles[-1]]
+    return [left[a] for a in sorted(set(picks))]
 
 
 def main():
@@ -30,6 +45,7 @@ def main():
     parser.add_argument("--base-frame", default="base_link",
                         help="the node's ~frame_prefix + ~base_frame (default base_link)")
     args = parser.parse_args()
+    import rosbag
 
     pose = {}        # stamp -> (z [m], pitch [rad])
     wheels = {}      # stamp -> (station, {name: displacement})
@@ -113,9 +129,8 @@ def main():
     axes[0].set_ylabel("base_link z\nfrom static [m]")
     axes[1].plot(station, [v - p0 for v in pitch])
     axes[1].set_ylabel("pitch [deg]\n(+ nose down)")
-    for n in names:
-        if n.endswith(("_1", "_4", "_7")) and "left" in n:
-            axes[2].plot(station, [wheels[t][1][n] for t in stamps], label=n)
+    for n in plotted_wheels(names):
+        axes[2].plot(station, [wheels[t][1][n] for t in stamps], label=n)
     axes[2].set_ylabel("wheel displacement\n[m]")
     axes[2].legend(loc="upper right", fontsize=8)
     axes[3].plot(station, acc)

@@ -134,7 +134,8 @@ void VehicleDynamicsNode::loadVehicle() {
     }
     if (!found)
       throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
-                           "' (" + known + " in " + params_.vehicle + ")");
+                           "' (" + known + " in " + params_.vehicle +
+                           "); set ~comfort_point (launch argument comfort_point) to one of these");
     const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
         description, params_.variant, params_.cache_dir, params_.reduction_options, &report_);
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
@@ -185,7 +186,8 @@ void VehicleDynamicsNode::setUpFrames() {
         for (const auto& p : geometry.points)
           known += (known.empty() ? "" : ", ") + p.name;
         throw ParameterError(private_nh_.resolveName("points") + ": unknown point '" + name +
-                             "' (the description has: " + known + ")");
+                             "' (the description has: " + known +
+                             "); list only these in ~points (launch argument points)");
       }
       published_points_.push_back(static_cast<std::size_t>(it - geometry.points.begin()));
     }

@@ -217,6 +217,11 @@ TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
                             "crew_seat, sensor_mount in "),
             std::string::npos)
       << run.output;
+  // ... and says how to choose another (a vehicle without a crew_seat point needs it).
+  EXPECT_NE(
+      run.output.find("); set ~comfort_point (launch argument comfort_point) to one of these"),
+      std::string::npos)
+      << run.output;
 }
 
 // An unwritable ~cache_dir does not stop the node (the model is built), but it must not be

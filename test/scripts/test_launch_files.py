@@ -45,7 +45,8 @@ class LaunchFilesTest(unittest.TestCase):
         cls.config = os.path.join(cls.work, "my_vehicle_dynamics.yaml")
         with open(cls.config, "w") as f:
             yaml.safe_dump({"variant": "untracked", "rate": 500.0, "lateral_offset": 0.75,
-                            "max_speed": 12.0}, f)
+                            "max_speed": 12.0, "comfort_point": "sensor_mount",
+                            "points": ["crew_seat"]}, f)
 
     @classmethod
     def tearDownClass(cls):
@@ -58,11 +59,14 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertEqual(p["lateral_offset"], 0.0)
         self.assertTrue(p["vehicle"].endswith("config/vehicles/paper_vehicle.yaml"))
         self.assertNotIn("cache_dir", p)  # the node's own default
+        self.assertEqual(p["comfort_point"], "crew_seat")
+        self.assertNotIn("points", p)  # the node's default: every named point
 
     def test_an_edited_parameter_file_is_not_overridden_by_argument_defaults(self):
         p = params("vehicle_dynamics.launch", f"config:={self.config}")
         self.assertEqual((p["variant"], p["rate"], p["lateral_offset"], p["max_speed"]),
                          ("untracked", 500.0, 0.75, 12.0))
+        self.assertEqual((p["comfort_point"], p["points"]), ("sensor_mount", ["crew_seat"]))
 
     def test_arguments_given_win_over_the_parameter_file(self):
         p = params("vehicle_dynamics.launch", f"config:={self.config}", "variant:=tracked",
@@ -72,11 +76,32 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertIsInstance(p["rate"], float)  # the node reads a double
         self.assertEqual(p["max_speed"], 12.0)   # the rest of the file still applies
 
+    def test_comfort_point_and_points_given_win_over_the_parameter_file(self):
+        # A vehicle without a crew_seat point needs comfort_point:=hull (or another point).
+        p = params("vehicle_dynamics.launch", "comfort_point:=hull")
+        self.assertEqual(p["comfort_point"], "hull")
+        p = params("vehicle_dynamics.launch", f"config:={self.config}", "comfort_point:=crew_seat",
+                   "points:=[sensor_mount, crew_seat]")
+        self.assertEqual((p["comfort_point"], p["points"]),
+                         ("crew_seat", ["sensor_mount", "crew_seat"]))
+        p = params("vehicle_dynamics.launch", f"config:={self.config}", "points:=[]")
+        self.assertEqual(p["points"], [])  # no named point as a frame
+        self.assertEqual(p["comfort_point"], "sensor_mount")
+        # A point named like a number stays a string (the node reads a string).
+        self.assertEqual(params("vehicle_dynamics.launch", "comfort_point:=1")["comfort_point"],
+                         "1")
+
     def test_replay_track_passes_its_arguments_and_config_through(self):
         p = params("replay_track.launch", f"config:={self.config}")
         self.assertEqual((p["variant"], p["rate"], p["lateral_offset"]), ("untracked", 500.0, 0.75))
-        p = params("replay_track.launch", f"config:={self.config}", "rate:=250")
-        self.assertEqual(p["rate"], 250.0)
+        self.assertEqual((p["comfort_point"], p["points"]), ("sensor_mount", ["crew_seat"]))
+        p = params("replay_track.launch", f"config:={self.config}", "rate:=250",
+                   "comfort_point:=hull", "points:=[sensor_mount]")
+        self.assertEqual((p["rate"], p["comfort_point"], p["points"]),
+                         (250.0, "hull", ["sensor_mount"]))
+        p = params("replay_track.launch")
+        self.assertEqual(p["comfort_point"], "crew_seat")
+        self.assertNotIn("points", p)
 
     def test_replay_track_records_the_static_frames(self):
         recorder = roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch").split()

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Tests of scripts/plot_mac.py, plot_frf.py and plot_simulation.py on small synthetic inputs.
+"""Tests of scripts/plot_mac.py, plot_frf.py and plot_simulation.py on small synthetic inputs
+(and of the wheel choice of ros_demo_summary.py).
 
 Needs no C++ build: the inputs are written here in the formats of `tvd mac --out`, `tvd frf` and
 `tvd simulate --out`. Run as
@@ -661,6 +662,29 @@ class PlotScriptsTest(unittest.TestCase):
         rewrite_lines(os.path.join(u, "node_shapes.csv"), not_a_number)
         result = self.run_script("plot_modes.py", "--out", out, f"{u}:1")
         self.assert_input_error(result, out, "node_shapes.csv", "z_m")
+
+    # ros_demo_summary.py (its bag reading needs the node's messages; the wheel choice does not)
+
+    def test_demo_summary_plots_the_front_middle_and_rear_left_wheels(self):
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import ros_demo_summary
+        finally:
+            sys.path.remove(SCRIPTS)
+
+        def wheels(axles, prefix=""):
+            return sorted(f"{prefix}road_wheel_{side}_{k}" for side in ("left", "right")
+                          for k in range(1, axles + 1))
+        pick = ros_demo_summary.plotted_wheels
+        self.assertEqual(pick(wheels(7)),
+                         ["road_wheel_left_1", "road_wheel_left_4", "road_wheel_left_7"])
+        self.assertEqual(pick(wheels(6)),  # the rear wheel too, not only _1 and _4
+                         ["road_wheel_left_1", "road_wheel_left_4", "road_wheel_left_6"])
+        self.assertEqual(pick(wheels(10, "tank/")),  # numbers, not text order (_10 after _1)
+                         ["tank/road_wheel_left_1", "tank/road_wheel_left_6",
+                          "tank/road_wheel_left_10"])
+        self.assertEqual(pick(wheels(2)), ["road_wheel_left_1", "road_wheel_left_2"])
+        self.assertEqual(pick([]), [])
 
 
 if __name__ == "__main__":

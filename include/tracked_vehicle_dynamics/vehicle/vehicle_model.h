@@ -49,7 +49,8 @@ constexpr NodeId kHullNode = 1;
 
 /// One road-wheel station.
 struct WheelStation {
-  std::string name;   ///< "road_wheel_left_1" (front) ... "road_wheel_right_7" (rear)
+  std::string name;   ///< "road_wheel_<left|right>_<k>", k = 1 (front) ... N (rear),
+                      ///< N = running_gear.axle_count (7 for the paper vehicle)
   int side = 0;       ///< 0 left (+y), 1 right (-y)
   int axle = 0;       ///< 0 front ... axle_count - 1 rear
   NodeId pivot = 0;   ///< on the hull (rigid-joint slave of the hull node)
