@@ -124,6 +124,8 @@ void VehicleDynamicsNode::loadVehicle() {
     // Parsed once: the reduction and the frames come from the same description.
     const vehicle::VehicleDescription description =
         vehicle::loadVehicleDescription(params_.vehicle);
+    for (const std::string& w : vehicle::descriptionWarnings(description))
+      ROS_WARN("vehicle_dynamics_node: %s: %s", params_.vehicle.c_str(), w.c_str());
     // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
     const std::string& point = params_.vehicle_options.comfort_point;
     std::string known = "hull";
