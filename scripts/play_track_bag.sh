@@ -99,3 +99,7 @@ if [ -z "$play" ] || [ ! -x "$play" ]; then
   exit 2
 fi
 run_child "$play" --clock --hz=1000 "${extra[@]}" "$bag"
+# The player is the launch's required node: its end stops the recorder. The node publishes the
+# last /clock tick's sample after play has sent it; linger so the recorder receives it too
+# (TVD_REPLAY_LINGER seconds, default 1).
+sleep "${TVD_REPLAY_LINGER:-1}"
