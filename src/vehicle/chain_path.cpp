@@ -52,6 +52,10 @@ double angleOf(const Vector2& v) {
 
 }  // namespace
 
+bool frontDrive(const VehicleDescription& d) {
+  return d.sprocket.centre_x > 0.0;
+}
+
 ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
   const auto& t = d.track_assembly;
   const double z = t.pitch_line_height;
@@ -64,18 +68,29 @@ ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
     throw InputError("sprocket.centre_z: the sprocket reaches down to the ground run");
   if (idler_centre_.y() - ri <= z)
     throw InputError("idler.centre_z: the idler reaches down to the ground run");
-  if (sprocket_centre_.x() >= rear.x())
-    throw InputError("sprocket.centre_x: the sprocket must lie behind the ground run");
+  if (std::abs(sprocket_centre_.x()) <= half)
+    throw InputError("sprocket.centre_x: the sprocket must lie beyond an end of the ground run "
+                     "(|x| > " + brief(half) + " m)");
+  // The wheel at each end of the loop: a rear drive sprocket with the idler in front, or a front
+  // drive sprocket with the idler behind.
+  const bool drive_front = frontDrive(d);
+  const Vector2 front_centre = drive_front ? sprocket_centre_ : idler_centre_;
+  const Vector2 rear_centre = drive_front ? idler_centre_ : sprocket_centre_;
+  const double r_front = drive_front ? rs : ri, r_rear = drive_front ? ri : rs;
+  const char* front_key = drive_front ? "sprocket.centre_z" : "idler.centre_z";
+  const char* rear_key = drive_front ? "idler.centre_z" : "sprocket.centre_z";
+  const ChainSegment front_arc = drive_front ? ChainSegment::Sprocket : ChainSegment::Idler;
+  const ChainSegment rear_arc = drive_front ? ChainSegment::Idler : ChainSegment::Sprocket;
 
-  const Vector2 t1 = tangentPointFrom(front, idler_centre_, ri, "idler.centre_z");
-  // Top run: external tangent from the idler to the sprocket, both circles on the inward side:
-  // d = C2 - C1 = D (cos a t + sin a n), sin a = (r2 - r1) / D.
-  const Vector2 dc = sprocket_centre_ - idler_centre_;
+  const Vector2 t1 = tangentPointFrom(front, front_centre, r_front, front_key);
+  // Top run: external tangent from the front wheel to the rear one, both circles on the inward
+  // side: d = C2 - C1 = D (cos a t + sin a n), sin a = (r2 - r1) / D.
+  const Vector2 dc = rear_centre - front_centre;
   const double dist = dc.norm();
-  const Vector2 top_t = rotate(dc / dist, -std::asin((rs - ri) / dist));
-  const Vector2 t2 = idler_centre_ - ri * normalOf(top_t);
-  const Vector2 t3 = sprocket_centre_ - rs * normalOf(top_t);
-  const Vector2 t4 = tangentPointTo(sprocket_centre_, rs, rear, "sprocket.centre_z");
+  const Vector2 top_t = rotate(dc / dist, -std::asin((r_rear - r_front) / dist));
+  const Vector2 t2 = front_centre - r_front * normalOf(top_t);
+  const Vector2 t3 = rear_centre - r_rear * normalOf(top_t);
+  const Vector2 t4 = tangentPointTo(rear_centre, r_rear, rear, rear_key);
 
   auto line = [&](ChainSegment seg, const Vector2& a, const Vector2& b) {
     Piece p;
@@ -100,12 +115,12 @@ ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
   };
   line(ChainSegment::Ground, rear, front);
   line(ChainSegment::FrontIncline, front, t1);
-  arc(ChainSegment::Idler, idler_centre_, ri, t1, t2);
+  arc(front_arc, front_centre, r_front, t1, t2);
   line(ChainSegment::TopRun, t2, t3);
-  arc(ChainSegment::Sprocket, sprocket_centre_, rs, t3, t4);
+  arc(rear_arc, rear_centre, r_rear, t3, t4);
   line(ChainSegment::RearIncline, t4, rear);
   if (top_t.x() >= 0.0)
-    throw InputError("idler: the top run must run rearwards (idler ahead of sprocket)");
+    throw InputError("idler: the top run must run rearwards (the front wheel ahead of the rear one)");
   for (Piece& p : pieces_) {
     p.s0 = length_;
     length_ += p.len;
@@ -156,29 +171,33 @@ double ChainPath::topRunHeight(double x) const {
 double solveIdlerX(const VehicleDescription& d) {
   const auto& t = d.track_assembly;
   const double target = t.count * t.pitch;
-  const double front = 0.5 * t.ground_count * t.pitch;
-  // The loop grows monotonically as the idler moves forward; the idler wheel may reach at most
-  // kWheelOverhang beyond the hull's front end.
-  const double hull_front = 0.5 * d.hull.length;
-  const double farthest = hull_front + kWheelOverhang - d.idler.radius;
-  double lo = front + 1e-3, hi = std::max(farthest, lo + 1e-3);
+  const double half = 0.5 * t.ground_count * t.pitch;
+  // The idler stands at the end of the ground run opposite the sprocket, at distance u beyond it;
+  // the loop grows monotonically with u. Its wheel may reach at most kWheelOverhang beyond the
+  // hull's end.
+  const double side = frontDrive(d) ? -1.0 : 1.0;  // +1: idler in front
+  const double hull_end = 0.5 * d.hull.length;
+  const double farthest = hull_end + kWheelOverhang - d.idler.radius - half;
+  const auto idlerX = [&](double u) { return side * (half + u); };
+  double lo = 1e-3, hi = std::max(farthest, lo + 1e-3);
   const std::string chain = "track_assembly.count: a chain of " + std::to_string(t.count) +
                             " assemblies (" + brief(target) + " m)";
-  if (ChainPath(d, lo).length() > target)
+  if (ChainPath(d, idlerX(lo)).length() > target)
     throw InputError(chain + " is too short to wrap the sprocket and the idler");
-  if (ChainPath(d, hi).length() < target)
+  if (ChainPath(d, idlerX(hi)).length() < target)
     throw InputError(chain + " is too long: it closes only with the idler beyond x = " +
-                     brief(farthest) + " m, i.e. more than " + brief(kWheelOverhang) +
-                     " m ahead of the hull's front end (x = " + brief(hull_front) +
-                     " m; hull.length " + brief(d.hull.length) + " m)");
+                     brief(idlerX(hi)) + " m, i.e. more than " + brief(kWheelOverhang) +
+                     " m " + (side > 0 ? "ahead of the hull's front" : "behind the hull's rear") +
+                     " end (x = " + brief(side * hull_end) + " m; hull.length " +
+                     brief(d.hull.length) + " m)");
   while (hi - lo > kClosureTolerance) {
     const double mid = 0.5 * (lo + hi);
-    if (ChainPath(d, mid).length() < target)
+    if (ChainPath(d, idlerX(mid)).length() < target)
       lo = mid;
     else
       hi = mid;
   }
-  return 0.5 * (lo + hi);
+  return idlerX(0.5 * (lo + hi));
 }
 
 }  // namespace vehicle

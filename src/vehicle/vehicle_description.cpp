@@ -367,23 +367,27 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   c.require(g.track_centre_distance < d.hull.width, "hull.width",
             brief(d.hull.width) + " m is narrower than the track centre distance " +
                 brief(g.track_centre_distance) + " m");
-  // The chain runs rear sprocket -> top run -> front idler (vehicle_model.h); a front drive
-  // sprocket would reverse it, which the chain builder does not do.
-  c.require(d.sprocket.centre_x < -0.5 * t.ground_length, "sprocket.centre_x",
-            "the sprocket must lie behind the ground run (x < " + brief(-0.5 * t.ground_length) +
-                " m): the model has a rear drive sprocket and a front idler; front-drive chains "
-                "are not supported");
+  // The chain wraps the sprocket at one end of the ground run and the idler at the other
+  // (chain_path.h): a rear drive sprocket (x < 0, the paper's vehicle) or a front one (x > 0).
+  const bool front_drive = d.sprocket.centre_x > 0.0;
+  c.require(std::abs(d.sprocket.centre_x) > 0.5 * t.ground_length, "sprocket.centre_x",
+            "the sprocket must lie beyond an end of the ground run (|x| > " +
+                brief(0.5 * t.ground_length) + " m; x < 0 for a rear drive, x > 0 for a front one)");
   // The sprocket wheel within the hull length, with kWheelOverhang to spare (the idler follows
   // from the chain length: solveIdlerX checks it).
   c.require(std::abs(d.sprocket.centre_x) + d.sprocket.radius <=
                 0.5 * d.hull.length + kWheelOverhang,
             "sprocket.centre_x",
-            "the sprocket reaches x = " + brief(d.sprocket.centre_x - d.sprocket.radius) +
-                " m, more than " + brief(kWheelOverhang) + " m beyond the hull's rear end (x = " +
-                brief(-0.5 * d.hull.length) + " m)");
+            "the sprocket reaches x = " +
+                brief(d.sprocket.centre_x + (front_drive ? 1.0 : -1.0) * d.sprocket.radius) +
+                " m, more than " + brief(kWheelOverhang) + " m beyond the hull's " +
+                (front_drive ? "front end (x = " + brief(0.5 * d.hull.length)
+                             : "rear end (x = " + brief(-0.5 * d.hull.length)) +
+                " m)");
   for (double x : d.return_rollers.x)
-    c.require(x > d.sprocket.centre_x, "return_rollers.x",
-              "roller at x = " + brief(x) + " m lies behind the sprocket");
+    c.require(front_drive ? x < d.sprocket.centre_x : x > d.sprocket.centre_x, "return_rollers.x",
+              "roller at x = " + brief(x) + " m lies " + (front_drive ? "ahead of" : "behind") +
+                  " the sprocket");
   c.require(d.return_rollers.x.size() <= 50, "return_rollers.x",
             std::to_string(d.return_rollers.x.size()) +
                 " rollers per side; at most 50 are supported (node numbering)");

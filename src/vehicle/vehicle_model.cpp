@@ -357,10 +357,11 @@ class Builder {
       const auto top = path.interval(ChainSegment::TopRun);
       for (std::size_t r = 0; r < d_.return_rollers.x.size(); ++r) {
         const double xr = d_.return_rollers.x[r];
-        if (xr >= path.idlerCentre().x())
-          throw InputError("return_rollers.x: roller at x = " + brief(xr) +
-                           " m lies ahead of the idler (x = " + brief(path.idlerCentre().x()) +
-                           " m)");
+        const bool idler_in_front = path.idlerCentre().x() > path.sprocketCentre().x();
+        if (idler_in_front ? xr >= path.idlerCentre().x() : xr <= path.idlerCentre().x())
+          throw InputError("return_rollers.x: roller at x = " + brief(xr) + " m lies " +
+                           (idler_in_front ? "ahead of" : "behind") + " the idler (x = " +
+                           brief(path.idlerCentre().x()) + " m)");
         checkRollerClearance(xr, path.topRunHeight(xr) - d_.return_rollers.radius);
         int best = -1;
         double best_dist = 1e300;

@@ -125,8 +125,8 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "return_rollers.x", "overlap (radius 0.15 m)"},
       {"  yaw_inertia: {value: 1.6e5,", "  yaw_inertia: {value: 2.0e5,", "hull.yaw_inertia",
        "exceeds the sum of the other two principal inertias (179000)"},
-      {"  centre_x: {value: -3.05,", "  centre_x: {value: 3.05,", "sprocket.centre_x",
-       "front-drive chains are not supported"},
+      {"  centre_x: {value: -3.05,", "  centre_x: {value: 1.0,", "sprocket.centre_x",
+       "must lie beyond an end of the ground run (|x| > 2.4225 m"},
       {"  centre_x: {value: -3.05,", "  centre_x: {value: -4.2,", "sprocket.centre_x",
        "reaches x = -4.534 m, more than 0.5 m beyond the hull's rear end (x = -3.8 m)"},
       // Named points become CSV columns, MAT variables and tf frames.
@@ -208,6 +208,59 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   EXPECT_NE(e.find("overlaps road wheel 6 (centre x = -1.56 m"), std::string::npos) << e;
   d.return_rollers.radius = 0.05;  // a small roller clears the wheel below it
   EXPECT_EQ(buildError(d), "");
+}
+
+// A front drive sprocket (sprocket.centre_x > 0) puts the idler behind the ground run: the paper
+// vehicle's sprocket moved to x = +3.05 m gives the mirror image of its chain loop.
+TEST(VehicleDescription, FrontDriveSprocketMirrorsTheChain) {
+  const veh::VehicleDescription rear;
+  veh::VehicleDescription front;
+  front.sprocket.centre_x = -rear.sprocket.centre_x;
+  EXPECT_FALSE(veh::frontDrive(rear));
+  EXPECT_TRUE(veh::frontDrive(front));
+  const double x_rear = veh::solveIdlerX(rear), x_front = veh::solveIdlerX(front);
+  EXPECT_GT(x_rear, 0.0);
+  EXPECT_NEAR(x_front, -x_rear, 1e-8);
+  const veh::ChainPath a(rear, x_rear), b(front, x_front);
+  EXPECT_NEAR(b.length(), a.length(), 1e-8);
+  const auto arc = [](const veh::ChainPath& p, veh::ChainSegment s) {
+    return p.interval(s).second - p.interval(s).first;
+  };
+  EXPECT_NEAR(arc(b, veh::ChainSegment::Sprocket), arc(a, veh::ChainSegment::Sprocket), 1e-9);
+  EXPECT_NEAR(arc(b, veh::ChainSegment::Idler), arc(a, veh::ChainSegment::Idler), 1e-9);
+  // The front wheel comes right after the front incline: the sprocket now, the idler before.
+  EXPECT_NEAR(b.interval(veh::ChainSegment::Sprocket).first,
+              b.interval(veh::ChainSegment::FrontIncline).second, 1e-12);
+  EXPECT_NEAR(a.interval(veh::ChainSegment::Idler).first,
+              a.interval(veh::ChainSegment::FrontIncline).second, 1e-12);
+  // Mirror image: the point at arc length s of one loop is the mirror of the point at (L - s)
+  // measured from the ground run's other end, i.e. x -> -x along the reversed loop.
+  const double ground = rear.track_assembly.ground_length;
+  for (double s : {0.3, 2.0, 5.5, 7.7, 10.1, 13.9}) {
+    const veh::Vector2 p = a.at(ground + s).position;  // from the front end of the ground run
+    const veh::Vector2 q = b.at(-s).position;         // back from the rear end
+    EXPECT_NEAR(q.x(), -p.x(), 1e-8) << s;
+    EXPECT_NEAR(q.y(), p.y(), 1e-8) << s;
+  }
+  // The whole vehicle builds and stands on the ground.
+  const veh::VehicleModel v = veh::buildVehicleModel(front, veh::Variant::Tracked);
+  EXPECT_NEAR(v.layout.idler_x, x_front, 1e-12);
+  // Rollers belong between the two wheels.
+  front.return_rollers.x = {3.5};
+  try {
+    veh::validateDescription(front);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("roller at x = 3.5 m lies ahead of the sprocket"),
+              std::string::npos) << e.what();
+  }
+  front.return_rollers.x = {-3.5};
+  try {
+    veh::buildVehicleModel(front, veh::Variant::Tracked);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lies behind the idler"), std::string::npos) << e.what();
+  }
 }
 
 TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {

@@ -1,6 +1,8 @@
 // The closed path of one track chain in the side (x-z) plane: the pitch line (pin axes) runs
-// forward along the ground, up the front incline, around the idler, back along the top run,
-// around the sprocket and down the rear incline. Straight segments are tangent to the wheel
+// forward along the ground, up the front incline, around the front wheel, back along the top run,
+// around the rear wheel and down the rear incline. The front wheel is the idler and the rear one
+// the drive sprocket (rear drive, the paper's vehicle), or the other way round when the sprocket
+// stands ahead of the ground run (front drive, sprocket.centre_x > 0). Straight segments are tangent to the wheel
 // circles; the only corners are at the ends of the ground run, where an assembly joint lies.
 #pragma once
 
@@ -57,9 +59,13 @@ class ChainPath {
   Vector2 sprocket_centre_, idler_centre_;
 };
 
+/// Whether the sprocket is the front wheel of the loop (sprocket.centre_x > 0).
+bool frontDrive(const VehicleDescription& description);
+
 /// The idler centre x at which the loop length equals count x pitch (the track tensioner's
-/// setting), by bisection. Throws InputError "track_assembly.count" when the chain is too short
-/// to wrap the running gear.
+/// setting), by bisection; the idler stands at the end opposite the sprocket. Throws InputError
+/// "track_assembly.count" when the chain is too short to wrap the running gear or so long that
+/// the idler would reach more than kWheelOverhang beyond the hull's end.
 double solveIdlerX(const VehicleDescription& description);
 
 }  // namespace vehicle
