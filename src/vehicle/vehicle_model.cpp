@@ -106,24 +106,52 @@ class Builder {
     }
   }
 
+  // The first road wheel centre [x, z] whose circle (radius R) overlaps the circle (x, z, r), or
+  // -1: wheels of the running gear must not interpenetrate.
+  int overlappedRoadWheel(double x, double z, double r) const {
+    const double rw = d_.road_wheel.radius;
+    const double zw = d_.track_assembly.upper_surface_height + rw;
+    for (int axle = 0; axle < d_.running_gear.axle_count; ++axle)
+      if (std::hypot(x - axleX(d_, axle), z - zw) < r + rw)
+        return axle;
+    return -1;
+  }
+
+  std::string roadWheelText(int axle) const {
+    const double rw = d_.road_wheel.radius;
+    return "road wheel " + std::to_string(axle + 1) + " (centre x = " + brief(axleX(d_, axle)) +
+           " m, z = " + brief(d_.track_assembly.upper_surface_height + rw) + " m, radius " +
+           brief(rw) + " m)";
+  }
+
+  // The sprocket and the idler (whose x the chain length sets) clear the road wheels.
+  void checkEndWheelClearance(const ChainPath& path) const {
+    const Vector2 s = path.sprocketCentre(), i = path.idlerCentre();
+    int axle = overlappedRoadWheel(s.x(), s.y(), d_.sprocket.radius);
+    if (axle >= 0)
+      throw InputError("sprocket.centre_x: the sprocket (centre x = " + brief(s.x()) + " m, z = " +
+                       brief(s.y()) + " m, radius " + brief(d_.sprocket.radius) +
+                       " m) overlaps " + roadWheelText(axle));
+    axle = overlappedRoadWheel(i.x(), i.y(), d_.idler.radius);
+    if (axle >= 0)
+      throw InputError("idler.centre_z: the idler (centre x = " + brief(i.x()) +
+                       " m, set by the chain length; z = " + brief(i.y()) + " m, radius " +
+                       brief(d_.idler.radius) + " m) overlaps " + roadWheelText(axle) +
+                       ": raise the idler or lengthen the chain (track_assembly.count)");
+  }
+
   // A return roller hangs under the top run (centre z_r = top-run height - r); it must clear the
   // road wheels (centre distance >= R + r) and the ground run below them.
   void checkRollerClearance(double xr, double zr) const {
-    const double r = d_.return_rollers.radius, rw = d_.road_wheel.radius;
+    const double r = d_.return_rollers.radius;
     const std::string roller = "return_rollers.x: the roller at x = " + brief(xr) + " m (radius " +
                                brief(r) + " m, hanging under the top run to z = " + brief(zr) +
                                " m)";
     if (zr - r <= d_.track_assembly.upper_surface_height)
       throw InputError(roller + " reaches down to the ground run (return_rollers.radius, or the "
                                 "top run is too low)");
-    const double zw = d_.track_assembly.upper_surface_height + rw;
-    for (int axle = 0; axle < d_.running_gear.axle_count; ++axle) {
-      const double xw = axleX(d_, axle);
-      if (std::hypot(xr - xw, zr - zw) < r + rw)
-        throw InputError(roller + " overlaps road wheel " + std::to_string(axle + 1) +
-                         " (centre x = " + brief(xw) + " m, z = " + brief(zw) + " m, radius " +
-                         brief(rw) + " m)");
-    }
+    const int axle = overlappedRoadWheel(xr, zr, r);
+    if (axle >= 0) throw InputError(roller + " overlaps " + roadWheelText(axle));
   }
 
   // Trailing arm: pivot ahead of and above the wheel centre, x_p = x_w + a cos(beta),
@@ -299,6 +327,7 @@ class Builder {
     const auto& s = d_.suspension;
     layout().idler_x = solveIdlerX(d_);
     const ChainPath path(d_, layout().idler_x);
+    checkEndWheelClearance(path);
     const auto sprocket_arc = path.interval(ChainSegment::Sprocket);
     const auto idler_arc = path.interval(ChainSegment::Idler);
     for (int side = 0; side < 2; ++side) {

@@ -208,6 +208,12 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   EXPECT_NE(e.find("overlaps road wheel 6 (centre x = -1.56 m"), std::string::npos) << e;
   d.return_rollers.radius = 0.05;  // a small roller clears the wheel below it
   EXPECT_EQ(buildError(d), "");
+  d = veh::VehicleDescription{};
+  d.sprocket.centre_x = -2.8;  // 0.46 m behind the rear road wheel: the wheels interpenetrate
+  d.sprocket.centre_z = 0.5;
+  e = buildError(d);
+  EXPECT_NE(e.find("sprocket.centre_x: the sprocket (centre x = -2.8 m"), std::string::npos) << e;
+  EXPECT_NE(e.find("overlaps road wheel 7 (centre x = -2.34 m"), std::string::npos) << e;
 }
 
 // A front drive sprocket (sprocket.centre_x > 0) puts the idler behind the ground run: the paper
