@@ -57,10 +57,11 @@ def kind(label):
 
 def matches(label, paper_type):
     """vehicle::ModeClass::matches on the label: a hull type matches when its primary motion is
-    the mode's strongest component and its secondary, if any, is among the mode's named ones; a
-    wheel-bounce type matches any wheel-bounce mode."""
+    the mode's strongest component and its secondary, if any, is among the mode's named ones;
+    "wheel bounce" matches any wheel-bounce mode, "wheel bounce+roll" one whose suffix is roll."""
     if paper_type.startswith(WHEEL):
-        return kind(label) == "wheel"
+        wanted = paper_type.partition("+")[2]
+        return kind(label) == "wheel" and (not wanted or label.partition("+")[2] == wanted)
     if kind(label) != "hull":
         return False
     primary, _, secondary = paper_type.partition("+")
@@ -69,53 +70,63 @@ def matches(label, paper_type):
 
 
 def match_targets(targets, frequencies, labels, primary_only):
-    """The nearest mode of each target's type, each mode used once (the test's matchTargets):
-    wheel targets take only the wheel-bounce modes coupled with the hull, as the paper's are.
+    """The nearest mode of each target's type, each mode used once (the test's matchTargets).
     targets: [(type, hz)]; returns 0-based mode indices or None."""
     used, found = set(), []
     for paper_type, hz in targets:
         wanted = paper_type.split("+")[0] if primary_only else paper_type
-        best = None
-        for i, label in enumerate(labels):
-            if i in used or not matches(label, wanted):
-                continue
-            if kind(label) == "wheel" and "+" not in label:
-                continue
-            if best is None or abs(frequencies[i] - hz) < abs(frequencies[best] - hz):
-                best = i
+        best = nearest_of_type(wanted, hz, frequencies, labels, used)
         found.append(best)
         if best is not None:
             used.add(best)
     return found
 
 
+def nearest_of_type(paper_type, hz, frequencies, labels, used):
+    """The unused mode of `paper_type` nearest to hz (wheel types: hull-coupled wheel modes only,
+    as the paper's are), or None."""
+    best = None
+    for i, label in enumerate(labels):
+        if i in used or not matches(label, paper_type):
+            continue
+        if kind(label) == "wheel" and "+" not in label:
+            continue
+        if best is None or abs(frequencies[i] - hz) < abs(frequencies[best] - hz):
+            best = i
+    return best
+
+
 def mode_targets(modes_json, targets, tolerance):
-    """Per target: the matched mode (full type when that is within the tolerance, else the one
-    with the paper's main motion), its deviation and a status."""
+    """Per target, in order, each mode used once: the nearest mode of the full type if it lies
+    within the tolerance ("met"), else the nearest with the paper's main motion ("met (main
+    motion)" within the tolerance, "not met" otherwise)."""
     f, labels = modes_json["frequencies_hz"], modes_json["mode_types"]
-    full = match_targets(targets, f, labels, primary_only=False)
-    main = match_targets(targets, f, labels, primary_only=True)
-    result = []
-    for (paper_type, hz), i_full, i_main in zip(targets, full, main):
+    used, result = set(), []
+    for paper_type, hz in targets:
         within = lambda i: i is not None and abs(f[i] - hz) <= tolerance * hz  # noqa: E731
-        if within(i_full):
-            i, status = i_full, "met"
-        elif within(i_main):
-            i, status = i_main, "met (main motion)"
-        else:
-            i = i_main if i_main is not None else i_full
-            status = "**not met**"
+        i = nearest_of_type(paper_type, hz, f, labels, used)
+        status = "met"
+        if not within(i):
+            i = nearest_of_type(paper_type.split("+")[0], hz, f, labels, used)
+            status = "met (main motion)" if within(i) else "**not met**"
+        if i is not None:
+            used.add(i)
         result.append({"type": paper_type, "paper_hz": hz, "mode": None if i is None else i + 1,
                        "hz": None if i is None else f[i],
                        "label": None if i is None else labels[i], "status": status})
     return result
 
 
-def table4_section(name, variant, runs, reference):
+def table4_rows(runs, reference, variant):
     t4 = reference["table4"]
-    tolerance = t4[f"{variant}_tolerance"]
     key = "uv_hz" if variant == "untracked" else "tv_hz"
-    rows = mode_targets(runs.modes[variant], [(r["type"], r[key]) for r in t4["rows"]], tolerance)
+    return mode_targets(runs.modes[variant], [(r["type"], r[key]) for r in t4["rows"]],
+                        t4[f"{variant}_tolerance"])
+
+
+def table4_section(name, variant, runs, reference):
+    tolerance = reference["table4"][f"{variant}_tolerance"]
+    rows = table4_rows(runs, reference, variant)
     body = []
     for r in rows:
         ours = "none" if r["mode"] is None else f"{r['hz']:.2f} ({r['mode']})"
@@ -123,10 +134,17 @@ def table4_section(name, variant, runs, reference):
         body.append([r["type"], f"{r['paper_hz']:.2f}", ours, delta, r["label"] or "", r["status"]])
     met = sum(r["status"] != "**not met**" for r in rows)
     title = f"Table 4, {variant} modes (target \u00b1{tolerance * 100:.0f} %)"
+    how = ("" if variant == "untracked" else
+           "; Table 4 itself lists each un-tracked mode's MAC partner: see the pairing")
     text = (markdown_table(["Table 4 mode", "paper [Hz]", "ours [Hz] (mode)", "\u0394",
                             "our label", "status"], body)
-            + f"\n\n{met} of {len(rows)} within \u00b1{tolerance * 100:.0f} %.")
+            + f"\n\n{met} of {len(rows)} within \u00b1{tolerance * 100:.0f} %, each matched to "
+              f"the nearest mode of its type{how}.")
     return Section(name, title, text, rows)
+
+
+def pairing_data(runs, reference):
+    return pairing_section(runs, reference).data
 
 
 def pairing_section(runs, reference):
@@ -136,6 +154,7 @@ def pairing_section(runs, reference):
     ours_uv = match_targets([(r["type"], r["uv_hz"]) for r in t4["rows"]], uv["frequencies_hz"],
                             uv["mode_types"], primary_only=True)
     correlation = {c["untracked_mode"]: c for c in runs.mac["correlation"]}
+    tolerance = t4["tracked_tolerance"]
     body, data = [], []
     for r, i in zip(t4["rows"], ours_uv):
         c = correlation.get(i + 1) if i is not None else None
@@ -148,19 +167,80 @@ def pairing_section(runs, reference):
                     f"({c['tracked_hz']:.2f}), {tv_type}, MAC {c['mac']:.2f}")
         else:
             same, tv_type, ours = False, None, "no partner"
+        close = partner and abs(c["tracked_hz"] - r["tv_hz"]) <= tolerance * r["tv_hz"]
+        delta = percent(c["tracked_hz"], r["tv_hz"]) if partner else ""
         body.append([r["type"], f"{r['uv_mode']} ({r['uv_hz']:.2f}) \u2192 {r['tv_mode']} "
-                     f"({r['tv_hz']:.2f})", ours, "yes" if same else "**no**"])
+                     f"({r['tv_hz']:.2f})", ours, "yes" if same else "**no**",
+                     f"{delta}" + ("" if close else " **not met**")])
         data.append({"type": r["type"], "untracked_mode": None if i is None else i + 1,
                      "tracked_mode": c["tracked_mode"] if partner else None,
+                     "tracked_hz": c["tracked_hz"] if partner else None,
                      "tracked_type": tv_type, "mac": c["mac"] if partner else None,
-                     "same_motion_as_paper": same})
+                     "same_motion_as_paper": same, "frequency_within_tolerance": bool(close)})
     same = sum(d["same_motion_as_paper"] for d in data)
+    close = sum(d["frequency_within_tolerance"] for d in data)
     text = (markdown_table(["Table 4 type", "paper: UV mode (Hz) \u2192 TV mode (Hz)",
                             "ours: UV mode (Hz) \u2192 TV partner by MAC (Hz), its label, MAC",
-                            "partner has the paper's motion"], body)
-            + f"\n\n{same} of {len(data)} partners have the paper's main motion "
-              f"(MAC on the {runs.mac['common_dofs']} translational DOFs both variants share).")
+                            "partner has the paper's motion",
+                            f"partner vs the paper's TV frequency (\u00b1{tolerance * 100:.0f} %)"],
+                           body)
+            + f"\n\n{same} of {len(data)} partners have the paper's main motion, {close} of "
+              f"{len(data)} its tracked frequency within \u00b1{tolerance * 100:.0f} % (MAC on "
+              f"the {runs.mac['common_dofs']} translational DOFs both variants share).")
     return Section("mac_pairing", "Table 4, un-tracked \u2192 tracked pairing by MAC", text, data)
+
+
+def hull_band(modes_json):
+    f = [hz for hz, label in zip(modes_json["frequencies_hz"], modes_json["mode_types"])
+         if kind(label) == "hull"]
+    return (min(f), max(f)) if f else (math.nan, math.nan)
+
+
+def coupling_section(runs, reference):
+    """§3.1.1: what the track chain does to the natural frequencies."""
+    t4, c = reference["table4"], reference["coupling"]
+    rows = t4["rows"]
+    uv_band, tv_band = hull_band(runs.modes["untracked"]), hull_band(runs.modes["tracked"])
+    paper_uv = (min(r["uv_hz"] for r in rows[:6]), max(r["uv_hz"] for r in rows[:6]))
+    paper_tv = (min(r["tv_hz"] for r in rows[:6]), max(r["tv_hz"] for r in rows[:6]))
+    lo, hi = c["hull_band_ratio"]
+    body, data = [], []
+    for end, k in (("lowest", 0), ("highest", 1)):
+        ratio = tv_band[k] / uv_band[k]
+        ok = lo <= ratio <= hi
+        body.append([f"{end} hull mode, tracked / un-tracked",
+                     f"{paper_tv[k]:g} / {paper_uv[k]:g} Hz = {paper_tv[k] / paper_uv[k]:.2f}",
+                     f"{tv_band[k]:.2f} / {uv_band[k]:.2f} Hz = {ratio:.2f}",
+                     "holds" if ok else "**does not hold**"])
+        data.append({"what": f"{end} hull mode ratio", "ours": ratio, "ok": ok})
+    # The wheel modes of Table 4 (rows 19, 20): their MAC partners, and the tracked modes of the
+    # same type.
+    wheel_rows = [r for r in rows if r["type"].startswith(WHEEL)]
+    uv_rows = table4_rows(runs, reference, "untracked")
+    tv_rows = table4_rows(runs, reference, "tracked")
+    pairing = {d["type"]: d for d in pairing_data(runs, reference)}
+    wlo, whi = c["wheel_rise_percent"]
+    for r in wheel_rows:
+        uv = next(x for x in uv_rows if x["type"] == r["type"])
+        tv = next(x for x in tv_rows if x["type"] == r["type"])
+        paper = 100.0 * (r["tv_hz"] / r["uv_hz"] - 1.0)
+        for how, hz in (("MAC partner", pairing[r["type"]]["tracked_hz"]),
+                        ("nearest tracked mode of the type", tv["hz"])):
+            if hz is None or uv["hz"] is None:
+                continue
+            rise = 100.0 * (hz / uv["hz"] - 1.0)
+            ok = wlo <= rise <= whi
+            body.append([f"{r['type']}: rise, {how}",
+                         f"{r['uv_hz']:g} \u2192 {r['tv_hz']:g} Hz: +{paper:.0f} %",
+                         f"{uv['hz']:.2f} \u2192 {hz:.2f} Hz: {signed(rise, 0)} %",
+                         "holds" if ok else "**does not hold**"])
+            data.append({"what": f"{r['type']} rise ({how})", "ours": rise, "ok": ok})
+    held = sum(d["ok"] for d in data)
+    text = markdown_table(["\u00a73.1.1: the track chain", "paper", "ours", "status"], body)
+    text += (f"\n\n{held} of {len(data)} hold (\"almost double\": a factor {lo:g}\u2013{hi:g}; "
+             f"\"about 60\u201370 %\": {wlo:g}\u2013{whi:g} %).")
+    return Section("track_coupling", "Track coupling of the natural frequencies (\u00a73.1.1)",
+                   text, data)
 
 
 # --- Table 5: reduction -------------------------------------------------------------------------
@@ -176,14 +256,18 @@ def table5_section(runs, reference):
               ("interface DOFs", "interface_dofs", "interface_dofs"),
               ("input DOFs (hull + wheels)", "input_dofs", "input_dofs"),
               ("MoGeSeC DOFs", "mogesec_dofs", "mogesec_dofs"),
-              ("fixed-interface (flexible) modes", "flexible_modes", "flexible_modes"),
+              ("global modes selected by MAC (paper: Table 5's flexible modes)",
+               "flexible_modes", None),
+              ("fixed-interface modes kept (the paper keeps as many as it selects)",
+               "flexible_modes", "flexible_modes"),
               ("reduced DOFs", "reduced_dofs", "reduced_dofs")]
     body, data = [], {}
     for label, paper_key, our_key in fields:
         row = [label]
         for v in ("untracked", "tracked"):
-            row += [f"{t5[v][paper_key]:,}", f"{runs.reduce[v][our_key]:,}"]
-            data.setdefault(v, {})[our_key] = runs.reduce[v][our_key]
+            ours = runs.reduce[v][our_key] if our_key else len(runs.reduce[v]["selected_modes"])
+            row += [f"{t5[v][paper_key]:,}", f"{ours:,}"]
+            data.setdefault(v, {})[our_key or "selected_modes"] = ours
         body.append(row)
     row = ["reduced size"]
     for v in ("untracked", "tracked"):
@@ -195,15 +279,19 @@ def table5_section(runs, reference):
     for v in ("untracked", "tracked"):
         error = band_error_percent(runs.reduce[v], band)
         data[v]["worst_band_error_percent"] = error
-        row += [f"\u2264 {t5['frequency_error_percent']:g} %", f"{error:.2g} %"]
+        row += ["\u2013" if v == "untracked" else "2 % at one resonance near 30 Hz (\u00a74.1.1)",
+                f"{error:.2g} %"]
     body.append(row)
     text = markdown_table(["", "paper UV", "ours UV", "paper TV", "ours TV"], body)
-    share = runs.reduce["tracked"]["reduced_size_percent"]
+    share = {v: runs.reduce[v]["reduced_size_percent"] for v in ("untracked", "tracked")}
     errors = [data[v]["worst_band_error_percent"] for v in ("untracked", "tracked")]
-    text += (f"\n\nTracked reduced model {share:.3f} % of the full one (target \u2264 3 %: "
-             f"{'met' if share <= 3.0 else '**not met**'}); every mode below {band:g} Hz within "
-             f"{max(errors):.2g} % (target {t5['frequency_error_percent']:g} %: "
-             f"{'met' if max(errors) <= t5['frequency_error_percent'] else '**not met**'}).")
+    limit = t5["frequency_error_percent"]
+    text += (f"\n\nTracked reduced model {share['tracked']:.3f} % of the full one (the issue's "
+             f"target \u2264 3 %: {'met' if share['tracked'] <= 3.0 else '**not met**'}; the paper "
+             f"reaches {t5['tracked']['reduced_size_percent']:g} %), un-tracked "
+             f"{share['untracked']:.3f} % (paper {t5['untracked']['reduced_size_percent']:g} %, no "
+             f"target); every mode below {band:g} Hz within {max(errors):.2g} % (the issue's bound "
+             f"{limit:g} %: {'met' if max(errors) <= limit else '**not met**'}).")
     return Section("table5", "Table 5, model sizes", text, data)
 
 
@@ -235,59 +323,112 @@ def frf_agreement_section(runs, reference):
             full = Table(runs.frf[(v, "full", speed)]["csv"])
             reduced = Table(runs.frf[(v, "reduced", speed)]["csv"])
             hz = full.column("frequency_hz")
-            cells, worst, fraction = [], 0.0, 1.0
+            cells, worst, fraction, every, wide = [], 0.0, 1.0, 0.0, 0.0
             for column, _ in FRF_OUTPUTS:
-                db, share = worst_db(hz, full.column(column + "_mag"),
-                                     reduced.column(column + "_mag"), f["band_hz"],
-                                     f["anti_resonance_ratio"], f["anti_resonance_window_hz"])
+                a, b = full.column(column + "_mag"), reduced.column(column + "_mag")
+                db, share = worst_db(hz, a, b, f["band_hz"], f["anti_resonance_ratio"],
+                                     f["anti_resonance_window_hz"])
                 cells.append(f"{db:.2g}")
                 worst, fraction = max(worst, db), min(fraction, share)
+                every = max(every, worst_db(hz, a, b, f["band_hz"], 0.0, 0.0)[0])
+                wide = max(wide, worst_db(hz, a, b, hz[-1], f["anti_resonance_ratio"],
+                                          f["anti_resonance_window_hz"])[0])
             excitation = "synchronous" if not speed else f"{speed} km/h"
             status = "met" if worst <= f["tolerance_db"] else "**not met**"
-            body.append([v, excitation, *cells, f"{100 * fraction:.0f} %", status])
+            body.append([v, excitation, *cells, f"{100 * fraction:.0f} %", status,
+                         f"{every:.2g}", f"{wide:.2g}"])
             data.append({"variant": v, "speed_kmh": speed, "worst_db": worst,
-                         "fraction_compared": fraction})
+                         "fraction_compared": fraction, "worst_db_every_point": every,
+                         "worst_db_to_max_hz": wide})
+    band, top = f["band_hz"], hz[-1]
     text = markdown_table(["variant", "excitation", *[f"{n} [dB]" for _, n in FRF_OUTPUTS],
-                           "points compared (fewest)", f"within {f['tolerance_db']:g} dB"], body)
+                           "points compared (fewest)", f"within {f['tolerance_db']:g} dB",
+                           f"worst at every point to {band:g} Hz [dB]",
+                           f"worst to {top:g} Hz [dB]"], body)
     met = sum(d["worst_db"] <= f["tolerance_db"] for d in data)
-    text += f"\n\n{met} of {len(data)} within {f['tolerance_db']:g} dB."
-    return Section("frf_agreement", "Reduced vs full comfort FRFs up to "
-                   f"{f['band_hz']:g} Hz, worst difference away from anti-resonances", text, data)
+    text += (f"\n\n{met} of {len(data)} within {f['tolerance_db']:g} dB (the issue's target; "
+             "the paper shows Fig. 13 without a number). Columns per output: away from "
+             "anti-resonances, where the full FRF is 12 dB below its largest value within \u00b11 "
+             "Hz and a small frequency shift makes any dB difference large; the last two columns: "
+             f"every point up to {band:g} Hz, and away from anti-resonances up to {top:g} Hz, "
+             "beyond the band the reduction was made for.")
+    return Section("frf_agreement", "Reduced vs full comfort FRFs, worst difference",
+                   text, data)
 
 
-def peak_in_band(path, column, band_hz):
+def band_magnitude(path, column, band_hz):
+    """(frequencies, |FRF|) of one output over (0, band]."""
     t = Table(path)
     hz, mag = t.column("frequency_hz"), t.column(column + "_mag")
     inside = (hz > 0) & (hz <= band_hz + 1e-9)
-    return mag[inside].max()
+    return hz[inside], mag[inside]
+
+
+def pointwise_excess(sync_hz, sync, travelled, ratio, window_hz):
+    """Largest |travelled| / |synchronous| and its frequency, skipping the synchronous FRF's
+    anti-resonances (below `ratio` of its largest value within +-window_hz), where any finite
+    travelled response would count as an excess."""
+    step = sync_hz[1] - sync_hz[0]
+    w = int(round(window_hz / step))
+    best, at = 0.0, math.nan
+    for i in range(len(sync_hz)):
+        if sync[i] < ratio * sync[max(0, i - w):i + w + 1].max():
+            continue
+        if travelled[i] / sync[i] > best:
+            best, at = travelled[i] / sync[i], sync_hz[i]
+    return best, at
 
 
 def wheelbase_section(runs, reference):
-    band = reference["frf"]["band_hz"]
+    f = reference["frf"]
+    band = f["band_hz"]
     body, data = [], []
+    excess = []
     for v in ("untracked", "tracked"):
         for column, name in FRF_OUTPUTS:
             if column == "hull_pitch_acc":
                 continue
-            sync = peak_in_band(runs.frf[(v, "reduced", 0)]["csv"], column, band)
-            ratios = [peak_in_band(runs.frf[(v, "reduced", s)]["csv"], column, band) / sync
-                      for s in FRF_SPEEDS_KMH]
-            body.append([v, name, *[f"{r:.2f}" for r in ratios]])
+            hz, sync = band_magnitude(runs.frf[(v, "reduced", 0)]["csv"], column, band)
+            curves = [band_magnitude(runs.frf[(v, "reduced", sp)]["csv"], column, band)[1]
+                      for sp in FRF_SPEEDS_KMH]
+            ratios = [c.max() / sync.max() for c in curves]
+            body.append([v, f"{name}: peak / synchronous peak", *[f"{r:.2f}" for r in ratios]])
             data.append({"variant": v, "output": column, "ratios": dict(zip(FRF_SPEEDS_KMH, ratios))})
-    text = markdown_table(["variant", "output", *[f"{s} km/h" for s in FRF_SPEEDS_KMH]], body)
+            if column == "hull_vertical_acc":
+                points = [pointwise_excess(hz, sync, c, f["anti_resonance_ratio"],
+                                           f["anti_resonance_window_hz"]) for c in curves]
+                body.append([v, f"{name}: largest travelled / synchronous, pointwise (at Hz)",
+                             *[f"{r:.2f} ({at:.2f})" for r, at in points]])
+                excess += [(r, at, v, sp) for (r, at), sp in zip(points, FRF_SPEEDS_KMH)]
+                data[-1]["pointwise"] = dict(zip(FRF_SPEEDS_KMH, [r for r, _ in points]))
+    text = markdown_table(["variant", "output (acceleration FRF up to 30 Hz)",
+                           *[f"{sp} km/h" for sp in FRF_SPEEDS_KMH]], body)
     ratios = {(d["variant"], d["output"]): list(d["ratios"].values()) for d in data}
-    hull = [r for v in ("untracked", "tracked") for r in ratios[(v, "hull_vertical_acc")]]
+    hull_peaks = [r for v in ("untracked", "tracked") for r in ratios[(v, "hull_vertical_acc")]]
+    # Touching: equal to 0.01 dB (the delays line up at some frequencies); above that, exceeding.
+    exceeded = [e for e in excess if e[0] > 10 ** (0.01 / 20)]
+    worst = max(excess)
     wheels = ("front_wheel_acc", "rear_wheel_acc")
     untracked = [r for w in wheels for r in ratios[("untracked", w)]]
+    tracked = [r for w in wheels for r in ratios[("tracked", w)]]
     falling = [all(b < a for a, b in zip(ratios[("tracked", w)], ratios[("tracked", w)][1:]))
                for w in wheels]
-    text += ("\n\nPeak acceleration FRF up to "
-             f"{band:g} Hz at each speed (travelled excitation) over the synchronous peak "
-             "(reduced model). The paper (\u00a74.1.3): travelled FRFs at most tangent to the "
-             f"synchronous one (hull vertical: {sum(r <= 1.0 for r in hull)} of {len(hull)} at "
-             "most 1); un-tracked wheels unaffected by speed (within 10 %: "
-             f"{sum(abs(r - 1.0) <= 0.1 for r in untracked)} of {len(untracked)}); tracked wheels "
-             f"lower at increasing speed ({sum(falling)} of {len(falling)} falling at every step).")
+    verdict = lambda ok: "holds" if ok else "**does not hold**"  # noqa: E731
+    text += ("\n\nReduced models; speeds ours (the paper does not name those of Figs. 15-16). "
+             "The paper (\u00a74.1.3) and what ours shows: travelled FRFs \"at least tangent\" "
+             "to the synchronous one, read by the issue as touching but never exceeding it: "
+             f"{verdict(not exceeded)}: the hull-vertical FRF exceeds the synchronous one "
+             f"somewhere below {band:g} Hz in {len(exceeded)} of {len(excess)} cases (at most "
+             f"{worst[0]:.2f}\u00d7, {worst[2]} at {worst[3]} km/h, {worst[1]:.2f} Hz) and touches "
+             f"it (within 0.01 dB) in the others, though its "
+             f"peak stays at or below the synchronous peak in "
+             f"{sum(r <= 1.0 for r in hull_peaks)} of {len(hull_peaks)}. Un-tracked wheels "
+             f"unaffected by speed: {verdict(all(abs(r - 1.0) <= 0.1 for r in untracked))} "
+             f"({sum(abs(r - 1.0) <= 0.1 for r in untracked)} of {len(untracked)} within 10 %). "
+             f"Tracked wheels lower at increasing speed: {verdict(all(falling))} "
+             f"({sum(falling)} of {len(falling)} falling at every step); lower than synchronous: "
+             f"{verdict(all(r < 1.0 for r in tracked))} "
+             f"({sum(r < 1.0 for r in tracked)} of {len(tracked)}).")
     return Section("wheelbase_filter", "Wheelbase filter (Figs. 15-16)", text, data)
 
 
@@ -334,12 +475,13 @@ def full_vs_reduced_section(runs, reference):
 
 
 def approx_row(what, paper, ours, unit, tolerance, digits):
-    ok = abs(ours - paper) <= tolerance * paper
+    ok = bool(abs(ours - paper) <= tolerance * paper)
     return [what, f"\u2248 {paper:g} {unit}", f"{ours:.{digits}f} {unit}", percent(ours, paper),
             "met" if ok else "**not met**"], ok
 
 
 def claim_row(what, paper, ours, holds):
+    holds = bool(holds)
     return [what, paper, ours, "", "holds" if holds else "**does not hold**"], holds
 
 
@@ -365,40 +507,74 @@ def time_domain_section(runs, reference):
         rows.append(([f"same runs at the crew seat: peak vertical acceleration, 5 / 50 km/h",
                       "not given", f"{seat[0]:.1f} / {seat[1]:.0f} m/s\u00b2", "", ""], None))
     v = COUPLING_SPEED_KMH
-    uv = {t: sim(runs, "untracked", t, v) for t in ("long_hill", "separated_waves", "oop_waves")}
-    tv = {t: sim(runs, "tracked", t, v) for t in ("long_hill", "separated_waves", "oop_waves")}
-    acc, wheel = "peak_hull_vertical_accel_m_s2", "peak_wheel_displacement_m"
+    tracks = ("long_hill", "separated_waves", "oop_waves")
+    uv = {t: sim(runs, "untracked", t, v) for t in tracks}
+    tv = {t: sim(runs, "tracked", t, v) for t in tracks}
+    acc, wheel, heave = "peak_hull_vertical_accel_m_s2", "peak_wheel_displacement_m", "peak_hull_heave_m"
+    pitch, roll = "peak_pitch_deg", "peak_roll_deg"
+    marginal = td["marginal_tolerance"]
+
+    def similar(what, t, name, key, unit, digits):
+        a, b = tv[t][key], uv[t][key]
+        return claim_row(f"{name} {v} km/h: {what}", f"TV \u2248 UV",
+                         f"TV {a:.{digits}f}, UV {b:.{digits}f} {unit}",
+                         abs(a - b) <= marginal * abs(b))
+
+    def larger(what, t, name, key, unit, digits, paper="TV > UV"):
+        a, b = tv[t][key], uv[t][key]
+        return claim_row(f"{name} {v} km/h: {what}", paper,
+                         f"TV {a:.{digits}f}, UV {b:.{digits}f} {unit}", a > b)
+
+    # Fig. 20: the front wheel overshoots the hill, the rear one undershoots the flat exit.
+    ends = {}
+    for variant in ("untracked", "tracked"):
+        table = Table(runs.sim_csv(variant, "reduced", "long_hill", v))
+        left = sorted((c for c in table.header if c.startswith("road_wheel_left_") and c.endswith("_m")),
+                      key=lambda c: int(c.split("_")[3]))
+        ends[variant] = (table.column(left[0]).max() - height, -table.column(left[-1]).min())
     rows += [
-        claim_row(f"long hill {v} km/h: the track raises hull acceleration", "TV > UV",
-                  f"TV {tv['long_hill'][acc]:.1f}, UV {uv['long_hill'][acc]:.1f} m/s\u00b2",
-                  tv["long_hill"][acc] > uv["long_hill"][acc]),
+        similar("marginal effect of the track on hull heave", "long_hill", "long hill", heave, "m", 3),
+        claim_row(f"long hill {v} km/h: wide front-wheel overshoot and rear-wheel undershoot "
+                  "with the track", "TV > UV",
+                  f"front {ends['tracked'][0]:.3f} vs {ends['untracked'][0]:.3f} m, rear "
+                  f"{ends['tracked'][1]:.3f} vs {ends['untracked'][1]:.3f} m",
+                  ends["tracked"][0] > ends["untracked"][0] and ends["tracked"][1] > ends["untracked"][1]),
+        larger("the track raises hull acceleration (\"much higher\")", "long_hill", "long hill",
+               acc, "m/s\u00b2", 1),
+        larger("hull pitch marginally higher with the track", "long_hill", "long hill", pitch,
+               "\u00b0", 2),
+        claim_row(f"separated waves {v} km/h: the track filters wheel displacement", "TV < UV",
+                  f"TV {tv['separated_waves'][wheel]:.3f}, UV {uv['separated_waves'][wheel]:.3f} m",
+                  tv["separated_waves"][wheel] < uv["separated_waves"][wheel]),
+        similar("negligible effect of the track on hull heave", "separated_waves",
+                "separated waves", heave, "m", 3),
+        larger("the track raises hull acceleration", "separated_waves", "separated waves", acc,
+               "m/s\u00b2", 1),
+        claim_row(f"OOP waves {v} km/h: the track filters wheel displacement", "TV < UV",
+                  f"TV {tv['oop_waves'][wheel]:.3f}, UV {uv['oop_waves'][wheel]:.3f} m",
+                  tv["oop_waves"][wheel] < uv["oop_waves"][wheel]),
+        larger("the track raises hull acceleration", "oop_waves", "OOP waves", acc, "m/s\u00b2", 1),
+        larger("larger roll, read as tracked > un-tracked", "oop_waves", "OOP waves", roll,
+               "\u00b0", 2, paper="TV > UV (no numbers)"),
     ]
-    for t, name in (("separated_waves", "separated waves"), ("oop_waves", "OOP waves")):
-        rows += [
-            claim_row(f"{name} {v} km/h: the track filters wheel displacement", "TV < UV",
-                      f"TV {tv[t][wheel]:.3f}, UV {uv[t][wheel]:.3f} m", tv[t][wheel] < uv[t][wheel]),
-            claim_row(f"{name} {v} km/h: the track raises hull acceleration", "TV > UV",
-                      f"TV {tv[t][acc]:.1f}, UV {uv[t][acc]:.1f} m/s\u00b2", tv[t][acc] > uv[t][acc]),
-        ]
-    roll = "peak_roll_deg"
     other = max(max(uv[t][roll], tv[t][roll]) for t in ("long_hill", "separated_waves"))
-    rows += [
-        claim_row(f"OOP waves {v} km/h: larger roll than on the other tracks", "larger",
+    rows.append(([f"OOP waves {v} km/h: roll against the other tracks", "larger",
                   f"UV {uv['oop_waves'][roll]:.2f}\u00b0, TV {tv['oop_waves'][roll]:.2f}\u00b0; "
-                  f"other tracks \u2264 {other:.2g}\u00b0",
-                  min(uv["oop_waves"][roll], tv["oop_waves"][roll]) > other),
-        claim_row(f"OOP waves {v} km/h: roll, read as tracked > un-tracked", "TV > UV (no numbers)",
-                  f"TV {tv['oop_waves'][roll]:.2f}\u00b0, UV {uv['oop_waves'][roll]:.2f}\u00b0",
-                  tv["oop_waves"][roll] > uv["oop_waves"][roll]),
-    ]
-    for t, name, quantities in (("long_hill", "long hill", (acc,)),
-                                ("separated_waves", "separated waves", ("peak_hull_heave_m", acc))):
-        for q in quantities:
+                  f"other tracks \u2264 {other:.1g}\u00b0 (uniform across their width: no roll "
+                  "by symmetry, so this proves nothing)", "", ""], None))
+    # §4.2.4, Figs. 23-24: the tracked vehicle at increasing speed.
+    claims = (("long_hill", "long hill", ((heave, "hull heave slightly grows"),
+                                          (acc, "hull acceleration strongly grows"),
+                                          (pitch, "pitch marginally grows"))),
+              ("separated_waves", "separated waves", ((heave, "hull heave grows"),
+                                                      (acc, "hull acceleration grows"),
+                                                      (pitch, "pitch grows (\"wide effect\")"))))
+    speeds = " / ".join(f"{s}" for s in TRACKED_SPEEDS_KMH)
+    for t, name, quantities in claims:
+        for q, what in quantities:
             values = [sim(runs, "tracked", t, s)[q] for s in TRACKED_SPEEDS_KMH]
-            unit, digits = ("m", 3) if q.endswith("_m") else ("m/s\u00b2", 1)
-            what = "hull heave" if q.endswith("_m") else "hull acceleration"
-            speeds = " / ".join(f"{s}" for s in TRACKED_SPEEDS_KMH)
-            rows.append(claim_row(f"TV {name} {speeds} km/h: {what} grows with speed", "grows",
+            unit, digits = {heave: ("m", 3), acc: ("m/s\u00b2", 1), pitch: ("\u00b0", 2)}[q]
+            rows.append(claim_row(f"TV {name} {speeds} km/h: {what} with speed", "grows",
                                   " / ".join(f"{x:.{digits}f}" for x in values) + f" {unit}",
                                   all(b > a for a, b in zip(values, values[1:]))))
     body = [r for r, _ in rows]
@@ -406,7 +582,11 @@ def time_domain_section(runs, reference):
     judged = sum(ok is not None for _, ok in rows)
     text = markdown_table(["case", "paper", "ours", "\u0394", "status"], body)
     text += (f"\n\n{met} of {judged} met or holding (approximate values: within "
-             f"\u00b1{100 * tol:g} %). Reduced models, modal damping of the description.")
+             f"\u00b1{100 * tol:g} %; \"marginal\", \"negligible\": within "
+             f"{100 * marginal:g} %). Reduced models, modal damping of the description. Where "
+             "the hull's acceleration exceeds g, as in most runs at 30-50 km/h, a real vehicle "
+             "would leave the road at times; the linear model keeps every pad on it, so those "
+             "peaks are the model's, not a vehicle's.")
     data = [{"case": r[0], "paper": r[1], "ours": r[2], "ok": ok} for r, ok in rows]
     return Section("time_domain", "Time domain (\u00a74.2, Figs. 18-24)", text, data)
 
@@ -457,6 +637,7 @@ def all_sections(runs, reference):
     return [table4_section("table4_untracked", "untracked", runs, reference),
             table4_section("table4_tracked", "tracked", runs, reference),
             pairing_section(runs, reference),
+            coupling_section(runs, reference),
             table5_section(runs, reference),
             frf_agreement_section(runs, reference),
             wheelbase_section(runs, reference),

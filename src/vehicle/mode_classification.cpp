@@ -41,8 +41,13 @@ bool ModeClass::matches(const std::string& paper_type) const {
   std::string t;
   for (char ch : paper_type)
     t += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  if (t.rfind("wheel bounce", 0) == 0)
-    return kind == ModeKind::WheelBounce;
+  if (t.rfind("wheel bounce", 0) == 0) {
+    // "wheel bounce" matches any wheel mode; "wheel bounce+roll" one that rolls the hull.
+    const auto plus = t.find('+');
+    if (kind != ModeKind::WheelBounce) return false;
+    return plus == std::string::npos ||
+           (!hull_motions.empty() && t.substr(plus + 1) == hullMotionName(hull_motions.front()));
+  }
   if (kind != ModeKind::Hull || hull_motions.empty())
     return false;
   const auto plus = t.find('+');

@@ -121,7 +121,9 @@ class PaperReportTest(unittest.TestCase):
         self.assertFalse(m("pitch+bounce", "bounce"))        # bounce is not the main motion
         self.assertFalse(m("longitudinal", "longitudinal+pitch"))
         self.assertTrue(m("yaw+lateral+roll", "yaw+roll"))
-        self.assertTrue(m("wheel bounce+roll", "wheel bounce+pitch"))  # any wheel-bounce mode
+        self.assertTrue(m("wheel bounce+roll", "wheel bounce"))  # any wheel-bounce mode
+        self.assertTrue(m("wheel bounce+roll", "wheel bounce+roll"))
+        self.assertFalse(m("wheel bounce+roll", "wheel bounce+pitch"))
         self.assertFalse(m("track chain local", "pitch"))
         self.assertFalse(m("track chain local", "wheel bounce"))
         # Nearest of its type, each mode once; wheel targets need a hull-coupled wheel mode.

@@ -57,7 +57,8 @@ struct ModeClass {
   /// Whether the mode is of a paper type (Table 4): "<primary>[+<secondary>]", e.g. "pitch",
   /// "lateral+roll", "wheel bounce" (case-insensitive). A hull type matches when its primary
   /// motion is the mode's strongest component and its secondary, if any, is among the mode's
-  /// named components; "wheel bounce[+...]" matches any wheel-bounce mode.
+  /// named components; "wheel bounce" matches any wheel-bounce mode, "wheel bounce+<motion>" one
+  /// whose hull suffix is <motion>.
   bool matches(const std::string& paper_type) const;
 };
 
