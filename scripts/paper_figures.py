@@ -16,16 +16,25 @@ def _speed_label(speed):
     return "synchronous" if not speed else f"{speed} km/h"
 
 
-def figure_jobs(runs, vehicle, figures_dir, untracked_mode, tracked_mode):
-    """[(file name, script, arguments)] for every figure."""
+def figure_jobs(runs, vehicle, figures_dir, pairs):
+    """[(file name, script, arguments)] for every figure. pairs: the MAC pairs of Table 4's rows
+    (paper_tables.pairing_section's data), one Fig. 11 panel each, as the paper's (a)-(h)."""
     fig = lambda name: os.path.join(figures_dir, name)  # noqa: E731
     jobs = [
         ("fig09_mac.png", "plot_mac.py", ["--mac-dir", runs.path("mac"), "--out", fig("fig09_mac.png"),
                                          "--freq-out", fig("fig10_mac_frequencies.png")]),
-        ("fig11_modes.png", "plot_modes.py",
-         ["--out", fig("fig11_modes.png"),
-          f"un-tracked={runs.path('modes_untracked')}:{untracked_mode}",
-          f"tracked, its MAC partner={runs.path('modes_tracked')}:{tracked_mode}"]),
+    ]
+    for letter, pair in zip("abcdefghijklmnop", pairs):
+        if not (pair["untracked_mode"] and pair["tracked_mode"]):
+            continue
+        name = f"fig11{letter}_modes_{pair['type'].replace(' ', '_').replace('+', '_')}.png"
+        jobs.append((name, "plot_modes.py",
+                     ["--out", fig(name),
+                      f"un-tracked ({pair['type']})={runs.path('modes_untracked')}:"
+                      f"{pair['untracked_mode']}",
+                      f"tracked, its MAC partner (MAC {pair['mac']:.2f})="
+                      f"{runs.path('modes_tracked')}:{pair['tracked_mode']}"]))
+    jobs += [
         ("fig12_masters.png", "plot_masters.py",
          ["--out", fig("fig12_masters.png"), f"un-tracked={runs.path('reduced_untracked.mat')}",
           f"tracked={runs.path('reduced_tracked.mat')}"]),
@@ -40,12 +49,15 @@ def figure_jobs(runs, vehicle, figures_dir, untracked_mode, tracked_mode):
                   "track coupling: un-tracked vs tracked (reduced, synchronous)",
                   f"un-tracked={runs.frf_csv('untracked', 'reduced')}",
                   f"tracked={runs.frf_csv('tracked', 'reduced')}"]))
-    for v in ("untracked", "tracked"):
-        name = f"fig15_16_frf_{v}_wheelbase_filter.png"
-        jobs.append((name, "plot_frf.py",
-                     ["--out", fig(name), "--title", f"{v}: wheelbase filter (reduced)"]
-                     + [f"{_speed_label(s)}={runs.frf_csv(v, 'reduced', s)}"
-                        for s in (0, *FRF_SPEEDS_KMH)]))
+    for number, outputs, what in ((15, "hull_vertical_acc", "hull"),
+                                  (16, "front_wheel_acc,rear_wheel_acc", "wheels")):
+        for v, letter in (("untracked", "a"), ("tracked", "b")):
+            name = f"fig{number}{letter}_frf_{v}_wheelbase_filter_{what}.png"
+            jobs.append((name, "plot_frf.py",
+                         ["--out", fig(name), "--outputs", outputs, "--title",
+                          f"{v}: wheelbase filter (reduced model)"]
+                         + [f"{_speed_label(s)}={runs.frf_csv(v, 'reduced', s)}"
+                            for s in (0, *FRF_SPEEDS_KMH)]))
     for track, letter in zip(TRACKS, "abc"):
         name = f"fig17{letter}_terrain_{track}.png"
         jobs.append((name, "plot_terrain.py",
@@ -73,11 +85,14 @@ def figure_jobs(runs, vehicle, figures_dir, untracked_mode, tracked_mode):
     return jobs
 
 
-def draw_all(runs, vehicle, figures_dir, untracked_mode, tracked_mode, log=print):
+def draw_all(runs, vehicle, figures_dir, pairs, log=print):
     """Draws every figure; returns the files written (Fig. 10 comes with Fig. 9)."""
     os.makedirs(figures_dir, exist_ok=True)
+    for old in os.listdir(figures_dir):  # an earlier run's figures, which this one may not redraw
+        if old.startswith("fig") and old.endswith(".png"):
+            os.remove(os.path.join(figures_dir, old))
     written = []
-    for name, script, args in figure_jobs(runs, vehicle, figures_dir, untracked_mode, tracked_mode):
+    for name, script, args in figure_jobs(runs, vehicle, figures_dir, pairs):
         log(f"{script} -> {name}")
         result = subprocess.run([sys.executable, os.path.join(SCRIPTS, script), *args],
                                 capture_output=True, text=True, timeout=300)

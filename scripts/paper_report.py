@@ -124,15 +124,6 @@ def sync_readme(path, sections, update):
     return differ
 
 
-def figure_modes(sections):
-    """Fig. 11's pair: the un-tracked bounce mode and its tracked partner by MAC."""
-    pairing = next(s for s in sections if s.name == "mac_pairing").data
-    bounce = next((p for p in pairing if p["type"] == "bounce"), None)
-    if bounce and bounce["untracked_mode"] and bounce["tracked_mode"]:
-        return bounce["untracked_mode"], bounce["tracked_mode"]
-    return 1, 1
-
-
 def main():
     parser = ArgumentParser(description=__doc__.split("\n\n")[0],
                             formatter_class=argparse.RawDescriptionHelpFormatter,
@@ -166,8 +157,9 @@ def main():
     try:
         runs.run_all()
         sections = paper_tables.all_sections(runs, reference)
+        pairs = next(s for s in sections if s.name == "mac_pairing").data
         figures = [] if args.no_figures else paper_figures.draw_all(
-            runs, args.vehicle, os.path.join(args.out, "figures"), *figure_modes(sections),
+            runs, args.vehicle, os.path.join(args.out, "figures"), pairs,
             log=lambda line: print(line, flush=True))
     except RunError as error:
         fail(str(error))

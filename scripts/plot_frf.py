@@ -63,6 +63,17 @@ def load(path):
     return frequency, magnitudes
 
 
+def output_list(text):
+    """argparse type: comma-separated output names, each one of OUTPUTS, none twice."""
+    names = [n.strip() for n in text.split(",")]
+    for n in names:
+        if n not in OUTPUTS:
+            raise argparse.ArgumentTypeError(f"'{n}' is not an output ({', '.join(OUTPUTS)})")
+    if len(set(names)) != len(names):
+        raise argparse.ArgumentTypeError(f"'{text}' names an output twice")
+    return names
+
+
 def main():
     parser = ArgumentParser(description=__doc__,
                             formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -72,13 +83,20 @@ def main():
                         help="CMS truncation band, drawn dash-dot [Hz], > 0 (default 30)")
     parser.add_argument("--f-max", type=positive_float, default=50.0,
                         help="x axis limit [Hz], > 0 (default 50)")
+    parser.add_argument("--outputs", type=output_list, default=list(OUTPUTS),
+                        metavar="NAME[,NAME...]",
+                        help="panels to draw, in this order (default: every output present): "
+                             + ", ".join(OUTPUTS) + "; e.g. hull_vertical_acc for Fig. 15, "
+                             "front_wheel_acc,rear_wheel_acc for Fig. 16")
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE",
                         help=LABELLED_HELP)
     args = parser.parse_args()
 
     check_outputs(("--out", args.out))  # before reading: bad input writes no figure
     curves = [(label, *load(path)) for label, path in args.files]
-    present = [n for n in OUTPUTS if any(n in outputs for _, _, outputs in curves)]
+    present = [n for n in args.outputs if any(n in outputs for _, _, outputs in curves)]
+    if not present:
+        fail(f"--outputs {','.join(args.outputs)}: none of these is in any file")
     ncols = 1 if len(present) == 1 else 2
     nrows = math.ceil(len(present) / ncols)
     fig, axes = plt.subplots(nrows, ncols, figsize=(6 * ncols, 4 * nrows), squeeze=False)

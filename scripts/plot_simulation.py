@@ -31,7 +31,13 @@ from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_o
 import matplotlib.pyplot as plt
 
 
-X_AXES = {"station": ("station_m", "station [m]"), "time": ("time_s", "time [s]")}
+# The station is that of the vehicle's reference point, the wheelbase centre (the front wheel
+# meets a feature 3 axle spacings earlier).
+X_AXES = {"station": ("station_m", "station of the wheelbase centre [m]"),
+          "time": ("time_s", "time [s]")}
+# Smallest y range drawn per panel: a symmetric track leaves roll at round-off (1e-7 deg), which
+# an autoscaled axis would blow up into what looks like a signal.
+MIN_SPAN = {"hull_roll_deg": 0.02, "hull_pitch_deg": 0.02}
 # Panel key -> y label; the wheel panels' columns depend on the wheel count.
 PANELS = {
     "hull_heave_m": "hull heave [m]",
@@ -109,6 +115,10 @@ def main():
                         linestyle=LINE_STYLES[(k + 1) % len(LINE_STYLES)],
                         label=f"road under it ({label})" if len(runs) > 1 else "road under it")
         ax.set_ylabel(labels[key])
+        low, high = ax.get_ylim()
+        if key in MIN_SPAN and high - low < MIN_SPAN[key]:
+            centre = 0.5 * (low + high)
+            ax.set_ylim(centre - 0.5 * MIN_SPAN[key], centre + 0.5 * MIN_SPAN[key])
         ax.set_xlabel(x_label)
         ax.xaxis.set_tick_params(labelbottom=True)
         ax.grid(True, alpha=0.3)

@@ -333,6 +333,21 @@ class PlotScriptsTest(unittest.TestCase):
         out = self.path("frf.png")
         self.assert_png(self.run_script("plot_frf.py", "--out", out, f"full={path}"), out)
 
+    def test_frf_selected_outputs(self):
+        # Fig. 15 draws the hull only, Fig. 16 the wheels: --outputs picks the panels.
+        path = write_csv(self.path("all.csv"), frf_columns())
+        out = self.path("frf.png")
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, "--outputs",
+                                        "front_wheel_acc,rear_wheel_acc", f"full={path}"), out)
+        hull = write_csv(self.path("hull.csv"), frf_columns(outputs=["hull_vertical_acc"]))
+        bad = self.path("bad.png")
+        for outputs, words in (("tyre_acc", ["'tyre_acc' is not an output"]),
+                               ("hull_pitch_acc,hull_pitch_acc", ["names an output twice"]),
+                               ("rear_wheel_acc", ["none of these is in any file"])):
+            result = self.run_script("plot_frf.py", "--out", bad, "--outputs", outputs,
+                                     f"full={hull}")
+            self.assert_input_error(result, bad, *words)
+
     def test_frf_missing_frequency_column(self):
         columns = frf_columns()
         columns["f"] = columns.pop("frequency_hz")
