@@ -8,6 +8,38 @@ import sys
 from paper_runs import COUPLING_SPEED_KMH, FRF_SPEEDS_KMH, MOR_SPEEDS_KMH, TRACKED_SPEEDS_KMH, TRACKS, RunError
 
 SCRIPTS = os.path.dirname(os.path.abspath(__file__))
+# The paper's captions, by figure number (its Fig. 11 caption abridged).
+CAPTIONS = {
+    9: "MAC index applied to vehicle model mode shapes.",
+    10: "Mode selection based on MAC index.",
+    11: "Vehicle model mode shape comparison: minimal track chain coupling and tracked model.",
+    12: "Significant master DOFs identified by MoGeSeC: un-tracked and tracked vehicle models.",
+    13: "MOR effect on vehicle model sprung mass FRFs: un-tracked vehicle (a) and tracked "
+        "vehicle (b).",
+    14: "Track coupling effect on vehicle models: sprung mass FRFs.",
+    15: "Wheelbase filter on sprung mass vertical acceleration FRF: un-tracked vehicle (a) and "
+        "tracked vehicle (b).",
+    16: "Wheelbase filter on unsprung masses vertical acceleration FRFs: un-tracked vehicle and "
+        "tracked vehicle.",
+    17: "Track vertical road profiles and details: long hill track (a), separated waves track "
+        "(b), and OOP waves track with Y+ offset (c).",
+    18: "MOR effect on un-tracked vehicle model: long hill track at 5 km/h.",
+    19: "MOR effect on un-tracked vehicle model: long hill track at 50 km/h.",
+    20: "Track chain coupling effect on tracked vehicle CMS model: long hill track.",
+    21: "Track chain coupling effect on tracked vehicle CMS model: separated waves track.",
+    22: "Track chain coupling effect on tracked vehicle CMS model: out-of-phase waves + shift "
+        "track.",
+    23: "Longitudinal speed effect on tracked vehicle CMS model: long hill track.",
+    24: "Longitudinal speed effect on tracked vehicle CMS model: separated waves track.",
+}
+
+
+def caption(name):
+    """'Fig. 13 (a): <the paper's caption>' for a file name figNN[x]_..."""
+    number, letter = int(name[3:5]), name[5] if name[5].isalpha() else ""
+    return f"Fig. {number}{f' ({letter})' if letter else ''}: {CAPTIONS.get(number, '')}"
+
+
 TRACK_NAMES = {"long_hill": "long hill", "separated_waves": "separated waves",
                "oop_waves": "out-of-phase waves"}
 

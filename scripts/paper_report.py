@@ -86,7 +86,9 @@ def render_report(sections, runs, vehicle, figures):
         lines += [f"## {s.title}", "", f"<!-- paper_report:{s.name} -->", s.markdown,
                   f"<!-- /paper_report:{s.name} -->", ""]
     if figures:
-        lines += ["## Figures", ""] + [f"* [figures/{f}](figures/{f})" for f in figures] + [""]
+        lines += ["## Figures", "", "Ours, under the paper's caption of the figure they redraw.", ""]
+        for f in figures:
+            lines += [f"**{paper_figures.caption(f)}**", "", f"![{f}](figures/{f})", ""]
     lines += ["## Runs", "", "```"] + runs.commands + ["```", ""]
     return "\n".join(lines)
 

@@ -68,7 +68,11 @@ class PaperReportTest(unittest.TestCase):
         numbers = {int(n) for name in figures
                    for n in re.match(r"fig(\d\d)(?:_(\d\d))?", name).groups() if n}
         self.assertEqual(numbers, set(range(9, 25)), figures)
+        with open(os.path.join(self.out, "report.md"), encoding="utf-8") as stream:
+            report = stream.read()
         for name in figures:
+            self.assertIn(f"![{name}](figures/{name})", report)  # embedded, under its caption
+            self.assertIn(f"**Fig. {int(name[3:5])}", report)
             path = os.path.join(self.out, "figures", name)
             with open(path, "rb") as stream:
                 data = stream.read()
