@@ -159,6 +159,10 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("base_frame", "must not be empty");
   if (p.odom_frame == p.base_frame)
     throw in.error("base_frame", "must differ from ~odom_frame");
+  // The prefix names one vehicle's whole tree (REP-105 per robot: veh1/odom -> veh1/base_link
+  // -> veh1/road_wheel_left_1), so that two nodes in one tf tree never share a frame.
+  p.odom_frame = p.frame_prefix + p.odom_frame;
+  p.base_frame = p.frame_prefix + p.base_frame;
   p.publish_points_all = !in.read("points", &p.points, "a list of strings");
   // <= 0 would make diagnostic_updater publish at every tick (1 kHz).
   p.diagnostic_period = in.positive("diagnostic_period", p.diagnostic_period, "s");

@@ -292,6 +292,7 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   }
   vehicle_->setSpeed(v);
   ++events_.speeds_accepted;
+  stopped_by_timeout_ = false;
   last_speed_time_ = now();
   recent_speed_ = v;
   recent_speed_arrival_ = ros::WallTime::now();
@@ -390,11 +391,15 @@ void VehicleDynamicsNode::run() {
   const ros::WallDuration sim_wait(0.05);
   while (!stop_ && ros::ok()) {
     loop_queue_.callAvailable(sim_wait);
+    tick_start_ = Clock::now();  // the wait for /clock is not the node's time
     step();
   }
 }
 
 void VehicleDynamicsNode::tick() {
+  // The tick's time includes handling the messages that arrived: a huge terrain patch is copied
+  // and checked here, on the loop's thread, and delays the steps.
+  tick_start_ = Clock::now();
   loop_queue_.callAvailable(ros::WallDuration(0));
   step();
 }
@@ -419,6 +424,7 @@ void VehicleDynamicsNode::step() {
              (t - last_speed_time_).toSec(), params_.speed_timeout, vehicle_->station());
     vehicle_->setSpeed(0.0);
     ++events_.speed_timeouts;
+    stopped_by_timeout_ = true;
   }
   try {
     advanceTo(t);
@@ -430,7 +436,7 @@ void VehicleDynamicsNode::step() {
 }
 
 void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
-  const auto tick_start = Clock::now();
+  const auto tick_start = tick_start_;
   ++events_.ticks;
   if (!clock_started_) {
     clock_started_ = true;
@@ -463,7 +469,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
                                      : (ahead_ns + step_ns_ / 2) / step_ns_;
   if (due == 0)
     return;
-  if (due > 1)
+  if (due > 1 && !use_sim_time_)  // on simulated time the /clock period sets the steps per tick
     ++events_.late_ticks;
   if (due > max_catch_up_steps_) {
     const std::int64_t skipped = due - max_catch_up_steps_;
@@ -489,11 +495,17 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const bool waiting = vehicle_->terrain().empty() && vehicle_->speed() == 0.0;
     if (result.uncovered > 0 && !waiting) {
       ++events_.uncovered_steps;
-      ROS_WARN_THROTTLE(kWarnPeriod,
-                        "vehicle_dynamics_node: no terrain under %d of %d contacts at station "
-                        "%.2f m (terrain covers %.2f .. %.2f m): holding their last height",
-                        result.uncovered, vehicle_->sampler().size(), vehicle_->station(),
-                        vehicle_->terrain().coveredFrom(), vehicle_->terrain().coveredUntil());
+      if (vehicle_->terrain().empty())
+        ROS_WARN_THROTTLE(kWarnPeriod,
+                          "vehicle_dynamics_node: no terrain received yet, moving at %.3f m/s at "
+                          "station %.2f m: the contacts hold their last height",
+                          vehicle_->speed(), vehicle_->station());
+      else
+        ROS_WARN_THROTTLE(kWarnPeriod,
+                          "vehicle_dynamics_node: no terrain under %d of %d contacts at station "
+                          "%.2f m (terrain covers %.2f .. %.2f m): holding their last height",
+                          result.uncovered, vehicle_->sampler().size(), vehicle_->station(),
+                          vehicle_->terrain().coveredFrom(), vehicle_->terrain().coveredUntil());
     }
     if (result.diverged) {
       ++events_.diverged;
@@ -663,7 +675,7 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
 void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const std::uint64_t rejected = speed_rejected_.delta(events_.speeds_rejected);
   const std::uint64_t timeouts = speed_timed_out_.delta(events_.speed_timeouts);
-  if (timeouts > 0) {
+  if (timeouts > 0 || stopped_by_timeout_) {  // until the next speed message moves it again
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no speed message within ~speed_timeout: vehicle stopped");
   } else if (rejected > 0) {

@@ -25,6 +25,9 @@ struct TfSample {
 class NodeStatic : public ::testing::Test {
  protected:
   NodeStatic() : private_nh_("~"), diagnostics_(nh_) {
+    // With ~frame_prefix (node_static_prefixed.test) every frame the node publishes carries it.
+    prefix_ = private_nh_.param<std::string>("frame_prefix", "");
+    base_ = prefix_ + "base_link";
     tf_sub_ = nh_.subscribe("/tf", 1000, &NodeStatic::onTf, this);
     tf_static_sub_ = nh_.subscribe("/tf_static", 10, &NodeStatic::onTfStatic, this);
     wheels_sub_ = nh_.subscribe("road_wheels", 1000, &NodeStatic::onWheels, this);
@@ -43,7 +46,7 @@ class NodeStatic : public ::testing::Test {
     for (const auto& t : msg->transforms) {
       parents_[t.child_frame_id] = t.header.frame_id;
       on_tf_.insert(t.child_frame_id);
-      if (collecting_ && t.child_frame_id == "base_link") {
+      if (collecting_ && t.child_frame_id == base_) {
         poses_.push_back({t.header.stamp, fromMsg(t.transform)});
       }
     }
@@ -59,6 +62,7 @@ class NodeStatic : public ::testing::Test {
   }
 
   ros::NodeHandle nh_, private_nh_;
+  std::string prefix_, base_;
   test::DiagnosticsCache diagnostics_;
   ros::Subscriber tf_sub_, tf_static_sub_, wheels_sub_, comfort_sub_;
   std::string comfort_frame_;
@@ -88,10 +92,11 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   collecting_ = false;
 
   // Frames and parents.
-  EXPECT_EQ(parents_["base_link"], "odom");
-  for (const std::string& frame : expected_frames) {
+  EXPECT_EQ(parents_[base_], prefix_ + "odom");
+  for (const std::string& name : expected_frames) {
+    const std::string frame = prefix_ + name;
     ASSERT_TRUE(parents_.count(frame)) << "frame " << frame << " never published";
-    EXPECT_EQ(parents_[frame], "base_link") << frame;
+    EXPECT_EQ(parents_[frame], base_) << frame;
   }
   EXPECT_EQ(parents_.size(), expected_frames.size() + 1) << "unexpected frames";
   // The named points are rigid with the hull: on /tf_static at their description position, never
@@ -100,11 +105,12 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   ASSERT_TRUE(private_nh_.getParam("static_frames", static_frames));
   const auto description =
       vehicle::loadVehicleDescription(test::requiredParam<std::string>(private_nh_, "vehicle"));
-  for (const std::string& frame : static_frames) {
+  for (const std::string& name : static_frames) {
+    const std::string frame = prefix_ + name;
     EXPECT_EQ(on_tf_.count(frame), 0u) << frame << " is published on /tf at every sample";
     ASSERT_EQ(static_positions_.count(frame), 1u) << frame << " not on /tf_static";
     for (const auto& point : description.named_points) {
-      if (point.name == frame) {
+      if (point.name == name) {
         EXPECT_EQ(static_positions_[frame], point.position) << frame;
       }
     }
@@ -136,7 +142,7 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   EXPECT_LT(expected.translation.z(), 0.0);
 
   // The comfort metrics are stamped in the frame of the point they are taken at.
-  EXPECT_EQ(comfort_frame_, "crew_seat");
+  EXPECT_EQ(comfort_frame_, prefix_ + "crew_seat");
 
   // Diagnostics: every task reports; the model is described.
   ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": model"); }, 5.0));

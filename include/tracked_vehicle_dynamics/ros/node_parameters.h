@@ -35,9 +35,9 @@ struct NodeParameters {
   /// where it is (a driver that died must not leave it driving on); 0: never.
   double speed_timeout = 0.0;
   double catch_up_limit = 0.1;      ///< ~catch_up_limit [s] of simulated time caught up at once
-  std::string odom_frame = "odom";  ///< ~odom_frame
-  std::string base_frame = "base_link";  ///< ~base_frame
-  std::string frame_prefix;              ///< ~frame_prefix, before wheel and point frame ids
+  std::string odom_frame = "odom";  ///< ~frame_prefix + ~odom_frame
+  std::string base_frame = "base_link";  ///< ~frame_prefix + ~base_frame
+  std::string frame_prefix;  ///< ~frame_prefix, before every frame id (odom, base, wheels, points)
   /// ~points: named points published as frames; empty: all points of the description.
   std::vector<std::string> points;
   bool publish_points_all = true;  ///< true when ~points was not given

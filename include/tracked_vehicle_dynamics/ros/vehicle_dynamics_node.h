@@ -27,6 +27,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <string>
@@ -190,6 +191,8 @@ class VehicleDynamicsNode {
   ros::WallTime recent_speed_arrival_;  // zero: none kept
   ros::Time last_step_time_;            // ROS time of the previous step() call
   ros::Time last_speed_time_;           // ROS time of the last valid speed message
+  bool stopped_by_timeout_ = false;     // ~speed_timeout stopped the vehicle; a speed clears it
+  std::chrono::steady_clock::time_point tick_start_;  // before the tick's message callbacks
   ros::WallTime last_time_change_;      // wall time at which ROS time last moved
   ros::WallTime next_wall_report_;      // reportOnWallTime() publishes from then on
   bool cached_ = false;                 // the reduced model is in the cache file
