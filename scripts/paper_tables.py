@@ -504,7 +504,7 @@ def time_domain_section(runs, reference):
     ]
     seat = [crew_seat(slow), crew_seat(fast)]
     if None not in seat:
-        rows.append(([f"same runs at the crew seat: peak vertical acceleration, 5 / 50 km/h",
+        rows.append((["same runs at the crew seat: peak vertical acceleration, 5 / 50 km/h",
                       "not given", f"{seat[0]:.1f} / {seat[1]:.0f} m/s\u00b2", "", ""], None))
     v = COUPLING_SPEED_KMH
     tracks = ("long_hill", "separated_waves", "oop_waves")
@@ -516,7 +516,7 @@ def time_domain_section(runs, reference):
 
     def similar(what, t, name, key, unit, digits):
         a, b = tv[t][key], uv[t][key]
-        return claim_row(f"{name} {v} km/h: {what}", f"TV \u2248 UV",
+        return claim_row(f"{name} {v} km/h: {what}", "TV \u2248 UV",
                          f"TV {a:.{digits}f}, UV {b:.{digits}f} {unit}",
                          abs(a - b) <= marginal * abs(b))
 
