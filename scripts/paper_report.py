@@ -34,7 +34,7 @@ import paper_figures  # noqa: E402
 import paper_tables  # noqa: E402
 from paper_runs import RunError, Runs  # noqa: E402
 
-DEFAULT_VEHICLE = os.path.join("config", "vehicles", "paper_vehicle.yaml")
+DEFAULT_VEHICLE = os.path.relpath(os.path.join(ROOT, "config", "vehicles", "paper_vehicle.yaml"))
 DEFAULT_REFERENCE = os.path.join(ROOT, "config", "paper_reference.yaml")
 BLOCK = re.compile(r"<!-- paper_report:(?P<name>[a-z0-9_]+) -->\n(?P<body>.*?)"
                    r"<!-- /paper_report:(?P=name) -->", re.S)

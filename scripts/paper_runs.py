@@ -37,8 +37,9 @@ def _speed_name(speed_kmh):
 
 
 class Runs:
-    """Runs `tvd` into `out_dir` and remembers each run's JSON. The reduced models are cached in
-    out_dir/cache, so each variant is reduced once."""
+    """Runs `tvd` into `out_dir` and remembers each run's JSON. `tvd reduce` writes the reduced
+    models of the report (Table 5, Fig. 12); the FRF and simulation runs share a cache in
+    out_dir/cache, where each description (a damping variant is one) is reduced once."""
 
     def __init__(self, tvd, vehicle, out_dir, log=print):
         self.tvd = tvd

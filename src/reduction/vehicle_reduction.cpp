@@ -130,7 +130,8 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
         if (variant == vehicle::Variant::Tracked) throw;
         throw InputError(std::string(e.what()) +
                          " (the un-tracked reduction builds the tracked variant for its MAC mode "
-                         "selection; the band rule, `tvd reduce --rule band`, does not)");
+                         "selection; the band rule does not: `tvd reduce --rule band`, the "
+                         "node's ~reduction/rule)");
       }
     }();
     // MAC on the translations of the nodes both variants share (hull, spider, arms, wheel

@@ -154,7 +154,7 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
       c.label = "track chain local";
       // A chain mode that carries the hull along (e.g. rolls it) says so: its hull motion is what
       // a MAC with the un-tracked hull modes finds.
-      if (c.hull_share >= kChainCouplingShare) {
+      if (hull >= kChainCouplingShare) {  // the hull's own energy, as for wheel modes
         c.hull_motions.push_back(HullMotion(order[0]));
         c.label += std::string("+") + hullMotionName(HullMotion(order[0]));
       }
