@@ -133,14 +133,21 @@ class Runs:
         for track in TRACKS:
             self._run("terrain", "--track", track, "--out", self.terrain_csv(track), vehicle=False)
 
-    def damping_description(self, name, values):
-        """A copy of the description with its `damping` values replaced, in out/damping/."""
+    def _description(self):
+        """The description as YAML data."""
         try:
             with open(self.vehicle, encoding="utf-8") as stream:
-                description = yaml.safe_load(stream)
+                return yaml.safe_load(stream)
+        except (OSError, yaml.YAMLError) as error:
+            raise RunError(f"{self.vehicle}: cannot read it ({error})") from None
+
+    def damping_description(self, name, values):
+        """A copy of the description with its `damping` values replaced, in out/damping/."""
+        description = self._description()
+        try:
             for key, value in values.items():
                 description["damping"][key]["value"] = value
-        except (OSError, yaml.YAMLError, KeyError, TypeError) as error:
+        except (KeyError, TypeError) as error:
             raise RunError(f"{self.vehicle}: cannot vary its damping ({error})") from None
         path = self.path("damping", f"{name}.yaml")
         with open(path, "w", encoding="utf-8") as stream:
@@ -150,10 +157,8 @@ class Runs:
     def description_damping(self):
         """The description's own damping values {key: value}."""
         try:
-            with open(self.vehicle, encoding="utf-8") as stream:
-                damping = yaml.safe_load(stream)["damping"]
-            return {key: item["value"] for key, item in damping.items()}
-        except (OSError, yaml.YAMLError, KeyError, TypeError, AttributeError) as error:
+            return {key: item["value"] for key, item in self._description()["damping"].items()}
+        except (KeyError, TypeError, AttributeError) as error:
             raise RunError(f"{self.vehicle}: cannot read its damping ({error})") from None
 
     def run_damping(self):

@@ -31,6 +31,11 @@ class Section:
         return tail[1] if len(tail) == 2 and not tail[1].startswith("|") else ""
 
 
+def verdict(ok):
+    """A statement of the paper against ours."""
+    return "holds" if ok else "**does not hold**"
+
+
 def signed(x, digits=1):
     """'+2.6 %'-style numbers with a true minus sign, as the README writes them."""
     text = f"{x:+.{digits}f}"
@@ -152,10 +157,6 @@ def table4_section(name, variant, runs, reference):
     return Section(name, title, text, rows)
 
 
-def pairing_data(runs, reference):
-    return pairing_section(runs, reference).data
-
-
 def pairing_section(runs, reference):
     """Table 4's un-tracked -> tracked pairing against ours by MAC (`tvd mac`)."""
     t4 = reference["table4"]
@@ -205,8 +206,9 @@ def hull_band(modes_json):
     return (min(f), max(f)) if f else (math.nan, math.nan)
 
 
-def coupling_section(runs, reference):
-    """§3.1.1: what the track chain does to the natural frequencies."""
+def coupling_section(runs, reference, uv_rows, tv_rows, pairs):
+    """§3.1.1: what the track chain does to the natural frequencies. uv_rows, tv_rows, pairs: the
+    data of the Table 4 and pairing sections."""
     t4, c = reference["table4"], reference["coupling"]
     rows = t4["rows"]
     uv_band, tv_band = hull_band(runs.modes["untracked"]), hull_band(runs.modes["tracked"])
@@ -220,14 +222,12 @@ def coupling_section(runs, reference):
         body.append([f"{end} hull mode, tracked / un-tracked",
                      f"{paper_tv[k]:g} / {paper_uv[k]:g} Hz = {paper_tv[k] / paper_uv[k]:.2f}",
                      f"{tv_band[k]:.2f} / {uv_band[k]:.2f} Hz = {ratio:.2f}",
-                     "holds" if ok else "**does not hold**"])
+                     verdict(ok)])
         data.append({"what": f"{end} hull mode ratio", "ours": ratio, "ok": ok})
     # The wheel modes of Table 4 (rows 19, 20): their MAC partners, and the tracked modes of the
     # same type.
     wheel_rows = [r for r in rows if r["type"].startswith(WHEEL)]
-    uv_rows = table4_rows(runs, reference, "untracked")
-    tv_rows = table4_rows(runs, reference, "tracked")
-    pairing = {d["type"]: d for d in pairing_data(runs, reference)}
+    pairing = {d["type"]: d for d in pairs}
     wlo, whi = c["wheel_rise_percent"]
     for r in wheel_rows:
         uv = next(x for x in uv_rows if x["type"] == r["type"])
@@ -242,7 +242,7 @@ def coupling_section(runs, reference):
             body.append([f"{r['type']}: rise, {how}",
                          f"{r['uv_hz']:g} \u2192 {r['tv_hz']:g} Hz: +{paper:.0f} %",
                          f"{uv['hz']:.2f} \u2192 {hz:.2f} Hz: {signed(rise, 0)} %",
-                         "holds" if ok else "**does not hold**"])
+                         verdict(ok)])
             data.append({"what": f"{r['type']} rise ({how})", "ours": rise, "ok": ok})
     held = sum(d["ok"] for d in data)
     text = markdown_table(["\u00a73.1.1: the track chain", "paper", "ours", "status"], body)
@@ -425,7 +425,6 @@ def wheelbase_section(runs, reference):
     tracked = [r for w in wheels for r in ratios[("tracked", w)]]
     falling = [all(b < a for a, b in zip(ratios[("tracked", w)], ratios[("tracked", w)][1:]))
                for w in wheels]
-    verdict = lambda ok: "holds" if ok else "**does not hold**"  # noqa: E731
     text += ("\n\nReduced models; speeds ours (the paper does not name those of Figs. 15-16). "
              "The paper (\u00a74.1.3) and what ours shows: travelled FRFs \"at least tangent\" "
              "to the synchronous one, read by the issue as touching but never exceeding it: "
@@ -494,7 +493,7 @@ def approx_row(what, paper, ours, unit, tolerance, digits):
 
 def claim_row(what, paper, ours, holds):
     holds = bool(holds)
-    return [what, paper, ours, "", "holds" if holds else "**does not hold**"], holds
+    return [what, paper, ours, "", verdict(holds)], holds
 
 
 def time_domain_section(runs, reference):
@@ -651,10 +650,11 @@ def damping_section(runs, reference):
 
 
 def all_sections(runs, reference):
-    return [table4_section("table4_untracked", "untracked", runs, reference),
-            table4_section("table4_tracked", "tracked", runs, reference),
-            pairing_section(runs, reference),
-            coupling_section(runs, reference),
+    untracked = table4_section("table4_untracked", "untracked", runs, reference)
+    tracked = table4_section("table4_tracked", "tracked", runs, reference)
+    pairing = pairing_section(runs, reference)
+    return [untracked, tracked, pairing,
+            coupling_section(runs, reference, untracked.data, tracked.data, pairing.data),
             table5_section(runs, reference),
             frf_agreement_section(runs, reference),
             wheelbase_section(runs, reference),

@@ -310,6 +310,7 @@ bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Re
 
 void VehicleDynamicsNode::restart() {
   vehicle_->reset();
+  stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   ++events_.resets;
 }
 
@@ -366,6 +367,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   // jump (rosbag sends a loop's first speed with its first patches).
   if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
     vehicle_->setSpeed(recent_speed_);
+    stopped_by_timeout_ = false;
     last_speed_time_ = now;
     ++events_.speeds_reapplied;
   }

@@ -52,10 +52,6 @@ double angleOf(const Vector2& v) {
 
 }  // namespace
 
-bool frontDrive(const VehicleDescription& d) {
-  return d.sprocket.centre_x > 0.0;
-}
-
 ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
   const auto& t = d.track_assembly;
   const double z = t.pitch_line_height;

@@ -369,7 +369,7 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
                 brief(g.track_centre_distance) + " m");
   // The chain wraps the sprocket at one end of the ground run and the idler at the other
   // (chain_path.h): a rear drive sprocket (x < 0, the paper's vehicle) or a front one (x > 0).
-  const bool front_drive = d.sprocket.centre_x > 0.0;
+  const bool front_drive = frontDrive(d);
   c.require(std::abs(d.sprocket.centre_x) > 0.5 * t.ground_length, "sprocket.centre_x",
             "the sprocket must lie beyond an end of the ground run (|x| > " +
                 brief(0.5 * t.ground_length) + " m; x < 0 for a rear drive, x > 0 for a front one)");
@@ -398,7 +398,7 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
               "rollers at x = " + brief(rollers[i - 1]) + " and " + brief(rollers[i]) +
                   " m overlap (radius " + brief(d.return_rollers.radius) + " m)");
   // Arm pivot z_p = z_w + a sin(beta) (vehicle_model.cpp) must be above the ground.
-  const double wheel_z = t.upper_surface_height + d.road_wheel.radius;
+  const double wheel_z = wheelCentreZ(d);
   const double pivot_z = wheel_z + d.suspension.arm_length * std::sin(d.suspension.arm_angle);
   c.require(pivot_z > 0.0, "suspension.arm_angle",
             "the arm pivot lies below the ground (z = " + brief(pivot_z) + " m)");
@@ -560,6 +560,14 @@ std::string descriptionHashHex(const VehicleDescription& d) {
   std::snprintf(buffer, sizeof(buffer), "%016llx",
                 static_cast<unsigned long long>(descriptionHash(d)));
   return buffer;
+}
+
+bool frontDrive(const VehicleDescription& d) {
+  return d.sprocket.centre_x > 0.0;
+}
+
+double wheelCentreZ(const VehicleDescription& d) {
+  return d.track_assembly.upper_surface_height + d.road_wheel.radius;
 }
 
 std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {

@@ -109,8 +109,7 @@ class Builder {
   // The first road wheel centre [x, z] whose circle (radius R) overlaps the circle (x, z, r), or
   // -1: wheels of the running gear must not interpenetrate.
   int overlappedRoadWheel(double x, double z, double r) const {
-    const double rw = d_.road_wheel.radius;
-    const double zw = d_.track_assembly.upper_surface_height + rw;
+    const double rw = d_.road_wheel.radius, zw = wheelCentreZ(d_);
     for (int axle = 0; axle < d_.running_gear.axle_count; ++axle)
       if (std::hypot(x - axleX(d_, axle), z - zw) < r + rw)
         return axle;
@@ -118,10 +117,9 @@ class Builder {
   }
 
   std::string roadWheelText(int axle) const {
-    const double rw = d_.road_wheel.radius;
     return "road wheel " + std::to_string(axle + 1) + " (centre x = " + brief(axleX(d_, axle)) +
-           " m, z = " + brief(d_.track_assembly.upper_surface_height + rw) + " m, radius " +
-           brief(rw) + " m)";
+           " m, z = " + brief(wheelCentreZ(d_)) + " m, radius " + brief(d_.road_wheel.radius) +
+           " m)";
   }
 
   // The sprocket and the idler (whose x the chain length sets) clear the road wheels.
@@ -161,7 +159,7 @@ class Builder {
     const auto& s = d_.suspension;
     const double y = sideY(d_, side);
     const double x = axleX(d_, axle);
-    const double zw = d_.track_assembly.upper_surface_height + d_.road_wheel.radius;
+    const double zw = wheelCentreZ(d_);
     const Vector3 centre(x, y, zw);
     const Vector3 pivot(x + s.arm_length * std::cos(s.arm_angle), (side == 0 ? 1 : -1) * s.pivot_y,
                         zw + s.arm_length * std::sin(s.arm_angle));

@@ -61,17 +61,21 @@ def write_junit_xml(path, suite_name, records, seconds):
     ET.ElementTree(suite).write(path, encoding="utf-8", xml_declaration=True)
 
 
-def main(test_class, suite_name, doc, argv=None, configure=None):
-    """configure(parser) may add options; it returns a function called with the parsed args."""
+def main(test_class, suite_name, doc, argv=None, paths=None):
+    """paths: {"--option": help} of required path options the tests need (e.g. "--tvd"); each
+    sets the test module's global named after it in capitals ("--env-sh" -> ENV_SH) to the
+    absolute path."""
     parser = argparse.ArgumentParser(description=(doc or "").split("\n")[0])
     parser.add_argument("--xml", help="write a JUnit-style XML report to this file")
     parser.add_argument("tests", nargs="*", help="test method names (default: all)")
-    apply = configure(parser) if configure else None
+    for option, help_text in (paths or {}).items():
+        parser.add_argument(option, required=True, help=help_text)
     args = parser.parse_args(argv)
-    if apply:
-        apply(args)
-    loader = unittest.defaultTestLoader
     module = sys.modules[test_class.__module__]
+    for option in paths or {}:
+        dest = option.lstrip("-").replace("-", "_")
+        setattr(module, dest.upper(), os.path.abspath(getattr(args, dest)))
+    loader = unittest.defaultTestLoader
     suite = (loader.loadTestsFromNames([f"{test_class.__name__}.{t}" for t in args.tests], module)
              if args.tests else loader.loadTestsFromTestCase(test_class))
     start = time.monotonic()

@@ -109,14 +109,6 @@ class LaunchFilesTest(unittest.TestCase):
             self.assertIn(topic, recorder)
 
 
-def configure(parser):
-    parser.add_argument("--env-sh", required=True, help="the devel space's env.sh")
-
-    def apply(args):
-        global ENV_SH
-        ENV_SH = os.path.abspath(args.env_sh)
-    return apply
-
-
 if __name__ == "__main__":
-    sys.exit(junit_runner.main(LaunchFilesTest, "launch_files", __doc__, configure=configure))
+    sys.exit(junit_runner.main(LaunchFilesTest, "launch_files", __doc__,
+                               paths={"--env-sh": "the devel space's env.sh"}))

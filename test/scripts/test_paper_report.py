@@ -183,14 +183,6 @@ class PaperReportTest(unittest.TestCase):
         self.assertIn("tvd modes --vehicle " + bad, result.stderr)
 
 
-def configure(parser):
-    parser.add_argument("--tvd", required=True, help="path of the built tvd executable")
-
-    def apply(args):
-        global TVD
-        TVD = os.path.abspath(args.tvd)
-    return apply
-
-
 if __name__ == "__main__":
-    sys.exit(junit_runner.main(PaperReportTest, "paper_report", __doc__, configure=configure))
+    sys.exit(junit_runner.main(PaperReportTest, "paper_report", __doc__,
+                               paths={"--tvd": "path of the built tvd executable"}))

@@ -688,14 +688,6 @@ class TvdCliTest(unittest.TestCase):
                                 "no mass or inertia")
 
 
-def configure(parser):
-    parser.add_argument("--tvd", required=True, help="path of the built tvd executable")
-
-    def apply(args):
-        global TVD
-        TVD = os.path.abspath(args.tvd)
-    return apply
-
-
 if __name__ == "__main__":
-    sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__, configure=configure))
+    sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__,
+                               paths={"--tvd": "path of the built tvd executable"}))

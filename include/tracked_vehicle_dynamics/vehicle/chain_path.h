@@ -59,9 +59,6 @@ class ChainPath {
   Vector2 sprocket_centre_, idler_centre_;
 };
 
-/// Whether the sprocket is the front wheel of the loop (sprocket.centre_x > 0).
-bool frontDrive(const VehicleDescription& description);
-
 /// The idler centre x at which the loop length equals count x pitch (the track tensioner's
 /// setting), by bisection; the idler stands at the end opposite the sprocket. Throws InputError
 /// "track_assembly.count" when the chain is too short to wrap the running gear or so long that

@@ -195,6 +195,14 @@ VehicleDescription loadVehicleDescription(const std::string& path);
 /// Same from YAML text; `file` names the source in messages.
 VehicleDescription parseVehicleDescription(const std::string& text, const std::string& file);
 
+/// Whether the sprocket is the front wheel of the chain loop (sprocket.centre_x > 0, a front
+/// drive), the idler then standing behind the ground run.
+bool frontDrive(const VehicleDescription& d);
+
+/// Height of the road-wheel centres above the ground at static equilibrium [m]: the wheels rest
+/// on the links' upper surface.
+double wheelCentreZ(const VehicleDescription& d);
+
 /// What a valid description may still get physically wrong, one sentence each, starting with the
 /// key (the tools print them as warnings; nothing is changed): no damping at all (resonances
 /// without bound, vibrations that never decay), and a hull centre of gravity outside the
