@@ -85,8 +85,24 @@ def mode_ticks(ax, untracked, tracked):
         axis.set_ticklabels([str(m) for m in modes[::step]], fontsize=6)
 
 
-def plot_matrix(untracked, tracked, mac, threshold):
-    """Fig. 9."""
+def band_edges(ax, f_untracked, f_tracked, f_max):
+    """Dashed lines after the last mode at or below f_max [Hz] on each axis: the modes beyond are
+    outside the band of interest (the paper ignores them, §3.1.1)."""
+    for frequencies, line, place in ((f_untracked, ax.axvline, "x"), (f_tracked, ax.axhline, "y")):
+        inside = int(np.count_nonzero(frequencies <= f_max))
+        if inside == frequencies.size:
+            continue
+        line(inside - 0.5, color="tab:blue", linestyle="--", linewidth=1)
+        if place == "x":
+            ax.text(inside - 0.3, frequencies.size - 0.8, f"> {f_max:g} Hz", color="tab:blue",
+                    fontsize=7, va="top")
+        else:
+            ax.text(0.2, inside - 0.3, f"> {f_max:g} Hz",
+                    color="tab:blue", fontsize=7, va="bottom")
+
+
+def plot_matrix(untracked, tracked, mac, threshold, frequencies=None, f_max=None):
+    """Fig. 9; with frequencies = (un-tracked, tracked) [Hz] and f_max, the band edges are drawn."""
     fig, ax = plt.subplots(figsize=(9, 7.5))
     shown = mac.T  # rows: tracked modes (y), columns: un-tracked modes (x)
     low = ax.imshow(np.ma.masked_where(shown >= threshold, shown), cmap=GRAY, vmin=0,
@@ -98,6 +114,8 @@ def plot_matrix(untracked, tracked, mac, threshold):
     fig.colorbar(low, ax=ax, pad=0.01, label=f"MAC < {threshold:g}")
     fig.colorbar(high, ax=ax, pad=0.02, label=f"MAC $\\geq$ {threshold:g}")
     mode_ticks(ax, untracked, tracked)
+    if frequencies is not None and f_max is not None:
+        band_edges(ax, *frequencies, f_max)
     ax.set_xlabel("un-tracked (minimal track chain) model mode #")
     ax.set_ylabel("tracked model mode #")
     ax.set_title("MAC between un-tracked and tracked vehicle modes")
@@ -116,16 +134,22 @@ def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold,
     markers = ax.scatter(f_untracked[i], f_tracked[j], s=300 * mac[i, j] ** 2, c=mac[i, j],
                          cmap=RED, vmin=threshold, vmax=1, edgecolors="k", linewidths=0.5,
                          label=f"MAC $\\geq$ {threshold:g}", zorder=3)
-    labels = []  # (x, y, names); a label is about 6 % of the axis wide: neighbours share one
+    # A label is about 6 % of the axis wide: neighbours share one, written right of the
+    # rightmost marker of the group and clear of its disc (the marker area is s = 300 MAC² pt²).
+    labels = []  # [x, y, names, largest marker radius in pt]
     for a, b in zip(i, j):
         x, y, name = f_untracked[a], f_tracked[b], f"{untracked[a]}/{tracked[b]}"
+        radius = np.sqrt(300 / np.pi) * mac[a, b]
         near = [g for g in labels if abs(g[0] - x) < 0.06 * limit and abs(g[1] - y) < 0.03 * limit]
         if near:
             near[0][2].append(name)
+            near[0][3] = max(near[0][3], radius)
+            if x > near[0][0]:
+                near[0][0], near[0][1] = x, y
         else:
-            labels.append((x, y, [name]))
-    for x, y, names in labels:
-        ax.annotate(", ".join(names), (x, y), xytext=(10, -2), textcoords="offset points",
+            labels.append([x, y, [name], radius])
+    for x, y, names, radius in labels:
+        ax.annotate(", ".join(names), (x, y), xytext=(radius + 3, -2), textcoords="offset points",
                     fontsize=6)
     fig.colorbar(markers, ax=ax, label="MAC")
     ax.set_xlim(0, limit)
@@ -149,8 +173,8 @@ def main():
     parser.add_argument("--threshold", type=float, default=0.7,
                         help="MAC of a match, in [0, 1] (default 0.7, as in the paper)")
     parser.add_argument("--f-max", type=positive_float,
-                        help="Fig. 10: leave out pairs above this frequency [Hz], > 0 "
-                             "(default: none)")
+                        help="Fig. 10: leave out pairs above this frequency [Hz]; Fig. 9 (with "
+                             "--freq-out): mark where the modes pass it. > 0 (default: none)")
     args = parser.parse_args()
     if not 0 <= args.threshold <= 1:
         parser.error("--threshold must be in [0, 1]")
@@ -166,7 +190,9 @@ def main():
         data = load_mat(mat_path, names)
         f_untracked = load_frequencies(mat_path, data, names[0], untracked)
         f_tracked = load_frequencies(mat_path, data, names[1], tracked)
-    figures.append((plot_matrix(untracked, tracked, mac, args.threshold), args.out))
+    band = (f_untracked, f_tracked) if args.freq_out else None
+    figures.append((plot_matrix(untracked, tracked, mac, args.threshold, band, args.f_max),
+                    args.out))
     if args.freq_out:
         figures.append((plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac,
                                          args.threshold, args.f_max), args.freq_out))

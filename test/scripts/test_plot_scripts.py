@@ -243,6 +243,28 @@ class PlotScriptsTest(unittest.TestCase):
                                  "--freq-out", freq_out, "--threshold", "0.7")
         self.assert_png(result, out, freq_out)
 
+    def test_mac_matrix_marks_the_band_edge_after_the_last_mode_inside(self):
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_mac
+        finally:
+            sys.path.remove(SCRIPTS)
+        untracked, tracked = np.arange(1, 7), np.arange(1, 9)
+        f_untracked = np.array([2.0, 4.0, 9.0, 10.0, 35.0, 35.0])  # 4 inside 10 Hz (edge included)
+        f_tracked = np.array([1.0, 3.0, 5.0, 7.0, 9.5, 12.0, 30.0, 40.0])  # 5 inside
+        mac = np.full((6, 8), 0.1)
+        fig = plot_mac.plot_matrix(untracked, tracked, mac, 0.7, (f_untracked, f_tracked), 10.0)
+        vertical = [line.get_xdata()[0] for line in fig.axes[0].lines
+                    if line.get_xdata()[0] == line.get_xdata()[1]]
+        horizontal = [line.get_ydata()[0] for line in fig.axes[0].lines
+                      if line.get_ydata()[0] == line.get_ydata()[1]]
+        self.assertEqual(len(fig.axes[0].lines), 2)
+        self.assertEqual(vertical, [3.5])  # between image columns 3 (mode 4) and 4 (mode 5)
+        self.assertEqual(horizontal, [4.5])
+        # every mode inside: no edge drawn
+        fig = plot_mac.plot_matrix(untracked, tracked, mac, 0.7, (f_untracked, f_tracked), 50.0)
+        self.assertEqual(len(fig.axes[0].lines), 0)
+
     def test_mac_matrix_needs_no_mat_file(self):
         mac_dir = write_mac_dir(self.path("mac"), with_mat=False)
         out = self.path("mac.png")
