@@ -73,9 +73,15 @@ def draw(ax, positions, groups, directions, vertical_axis):
             ax.scatter(positions[rows, 0], positions[rows, v], marker=marker, s=60,
                        facecolors="none", edgecolors="tab:blue", linewidths=1.5, zorder=3,
                        label=label)
+    # Picks that coincide in this view (left and right of a symmetric pair, seen from the side)
+    # share one label, "1,2", instead of two printed over each other.
+    labels = {}  # rounded (x, view coordinate) -> pick numbers
     for i, group in picks:
-        ax.annotate(group.split()[-1], (positions[i, 0], positions[i, v]), fontsize=8,
-                    xytext=(4, 4), textcoords="offset points", color="tab:blue")
+        key = (round(positions[i, 0], 3), round(positions[i, v], 3))
+        labels.setdefault(key, []).append(group.split()[-1])
+    for (x, y), numbers in labels.items():
+        ax.annotate(",".join(numbers), (x, y), fontsize=8, xytext=(4, 4),
+                    textcoords="offset points", color="tab:blue")
     others = [i for i, g in enumerate(groups) if g not in STYLES and not g.startswith("MoGeSeC")]
     if others:
         ax.scatter(positions[others, 0], positions[others, v], color="k", s=10, label="other")
