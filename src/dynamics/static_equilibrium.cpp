@@ -16,28 +16,38 @@ constexpr double kSingularPivotRatio = 1e-13;
 
 }  // namespace
 
-Vector staticEquilibrium(const SecondOrderSystem& system, const Vector& heights,
-                         const Vector& generalized_force) {
+StaticEquilibriumSolver::StaticEquilibriumSolver(const SecondOrderSystem& system,
+                                                 const Vector& generalized_force)
+    : input_stiffness_(system.input_stiffness), generalized_force_(generalized_force) {
   validateSystem(system);
   const DofIndex n = system.size();
-  detail::requireLength("staticEquilibrium", "road heights u0", heights, system.inputCount());
-  Vector load = system.input_stiffness * heights;
-  if (generalized_force.size() != 0) {
-    detail::requireLength("staticEquilibrium", "generalized force f_g", generalized_force, n);
-    load += generalized_force;
-  }
+  if (generalized_force_.size() != 0)
+    detail::requireLength("staticEquilibrium", "generalized force f_g", generalized_force_, n);
   // K is symmetric positive (semi-)definite: pivoted LDL^T. A free motion leaves a pivot at
   // rounding level (Eigen then solves in the least-squares sense, so test the pivots).
-  const Eigen::LDLT<Matrix> factor(system.stiffness);
-  const Vector pivots = factor.vectorD().cwiseAbs();
-  if (factor.info() != Eigen::Success ||
+  factor_.compute(system.stiffness);
+  const Vector pivots = factor_.vectorD().cwiseAbs();
+  if (factor_.info() != Eigen::Success ||
       !(pivots.minCoeff() > kSingularPivotRatio * pivots.maxCoeff()) ||
-      factor.rcond() < std::numeric_limits<double>::epsilon())
+      factor_.rcond() < std::numeric_limits<double>::epsilon())
     throw SolverError("staticEquilibrium: stiffness matrix K (" + detail::sizeText(n, n) +
                       ") is singular (free rigid-body motion); no static equilibrium");
+}
+
+Vector StaticEquilibriumSolver::solve(const Vector& heights) const {
+  const DofIndex n = size();
+  detail::requireLength("staticEquilibrium", "road heights u0", heights, inputCount());
+  Vector load = input_stiffness_ * heights;
+  if (generalized_force_.size() != 0)
+    load += generalized_force_;
   Vector state = Vector::Zero(2 * n);
-  state.head(n) = factor.solve(load);
+  state.head(n) = factor_.solve(load);
   return state;
+}
+
+Vector staticEquilibrium(const SecondOrderSystem& system, const Vector& heights,
+                         const Vector& generalized_force) {
+  return StaticEquilibriumSolver(system, generalized_force).solve(heights);
 }
 
 }  // namespace dynamics

@@ -63,7 +63,8 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
       sampler_(model.system.input_stations, model.system.input_lateral,
                inputsWithRate(model.system)),
       comfort_(options.rate, comfortOptions(options)),
-      comfort_point_(options.comfort_point) {
+      comfort_point_(options.comfort_point),
+      equilibrium_solver_(model.system, model.gravity_load) {
   if (!std::isfinite(options.lateral_offset)) {
     throw InputError("online vehicle: lateral_offset is not finite");
   }
@@ -95,8 +96,7 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   comfort_row_ = acc_offset_ + outputRow(comfort_point_ + " uz");
 
   input_.setZero(simulator_.inputCount());
-  equilibrium_ =
-      dynamics::staticEquilibrium(model.system, Vector::Zero(sampler_.size()), model.gravity_load);
+  equilibrium_ = equilibrium_solver_.solve(Vector::Zero(sampler_.size()));
   wheel_states_.resize(geometry_.wheels.size());
   for (std::size_t i = 0; i < geometry_.wheels.size(); ++i) {
     wheel_states_[i].name = geometry_.wheels[i].name;
@@ -133,14 +133,35 @@ Eigen::Index OnlineVehicle::outputRow(const std::string& name) const {
 }
 
 void OnlineVehicle::reset() {
-  station_ = 0.0;
-  speed_ = 0.0;
+  resetTo(0.0, 0.0, ResetTerrain::Clear);
+}
+
+int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
+  if (!std::isfinite(station)) {
+    throw InputError("online vehicle: reset station " + std::to_string(station) +
+                     " m is not finite");
+  }
+  if (!std::isfinite(speed) || speed < 0.0) {
+    throw InputError("online vehicle: reset speed " + std::to_string(speed) +
+                     " m/s must be finite and not negative");
+  }
+  station_ = station;
+  speed_ = speed;
   peak_acceleration_ = 0.0;
-  terrain_.clear();
-  sampler_.setHeld(Vector::Zero(sampler_.size()));
-  input_.setZero();
-  simulator_.reset(equilibrium_, input_);
+  int uncovered = 0;
+  if (terrain == ResetTerrain::Clear) {
+    terrain_.clear();
+    sampler_.setHeld(Vector::Zero(sampler_.size()));
+    input_.setZero();
+    simulator_.reset(equilibrium_, input_);
+  } else {
+    // The input the next step interpolates from (first-order hold) is the one a step at this
+    // station would have sampled, u' included; the state is at rest on its heights u.
+    uncovered = sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &input_);
+    simulator_.reset(equilibrium_solver_.solve(input_.head(sampler_.size())), input_);
+  }
   comfort_.reset();
+  return uncovered;
 }
 
 void OnlineVehicle::addTerrain(const TerrainPatch& patch) {

@@ -77,6 +77,8 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   advertise<RoadWheels>("road_wheels", queue(publish_every_), &wheels_pub_);
   advertise<Comfort>("comfort", queue(comfort_every_), &comfort_pub_);
   reset_service_ = loop_private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
+  reset_to_service_ =
+      loop_private_nh_.advertiseService("reset_to", &VehicleDynamicsNode::onResetTo, this);
 
   updater_.setHardwareID(report_.cache_file.empty()
                              ? vehicle_->geometry().vehicle_name
@@ -272,17 +274,21 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   }
 }
 
+std::string VehicleDynamicsNode::speedProblem(double v) const {
+  if (!std::isfinite(v))
+    return "speed is not finite";
+  if (v < 0.0)
+    return "negative speed " + std::to_string(v) + " m/s (reverse driving is not modelled)";
+  if (v > params_.max_speed) {
+    return "speed " + std::to_string(v) + " m/s above ~max_speed " +
+           std::to_string(params_.max_speed) + " m/s";
+  }
+  return "";
+}
+
 void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   const double v = msg->data;
-  std::string why;
-  if (!std::isfinite(v)) {
-    why = "speed is not finite";
-  } else if (v < 0.0) {
-    why = "negative speed " + std::to_string(v) + " m/s (reverse driving is not modelled)";
-  } else if (v > params_.max_speed) {
-    why = "speed " + std::to_string(v) + " m/s above ~max_speed " +
-          std::to_string(params_.max_speed) + " m/s";
-  }
+  const std::string why = speedProblem(v);
   if (!why.empty()) {
     ++events_.speeds_rejected;
     last_speed_error_ = why;
@@ -305,6 +311,54 @@ bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Re
   restart();
   recent_patches_.clear();
   recent_speed_arrival_ = ros::WallTime();
+  return true;
+}
+
+bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
+                                    ResetVehicle::Response& response) {
+  // Checked here, before anything changes: the node's ~max_speed applies as to `speed`.
+  std::string why;
+  if (!std::isfinite(request.station))
+    why = "station " + std::to_string(request.station) + " m is not finite";
+  else
+    why = speedProblem(request.speed);
+  if (!why.empty()) {
+    response.success = false;
+    response.message = "~reset_to rejected: " + why + "; nothing changed";
+    ROS_WARN("vehicle_dynamics_node: %s", response.message.c_str());
+    return true;  // the call itself succeeded: the answer is in the response
+  }
+  const ResetTerrain terrain = request.keep_terrain ? ResetTerrain::Keep : ResetTerrain::Clear;
+  int uncovered = 0;
+  try {
+    uncovered = vehicle_->resetTo(request.station, request.speed, terrain);
+  } catch (const std::exception& e) {  // checked above, so not expected
+    response.success = false;
+    response.message = std::string("~reset_to failed: ") + e.what();
+    ROS_ERROR("vehicle_dynamics_node: %s", response.message.c_str());
+    return true;
+  }
+  // As ~reset: not published here (the current sample's stamp is already out, and tf2 discards
+  // a second transform at it, TF_REPEATED_DATA); the next published sample shows the new state.
+  stopped_by_timeout_ = false;
+  ++events_.resets;
+  // The requested speed counts as a speed message for ~speed_timeout.
+  last_speed_time_ = now();
+  recent_patches_.clear();
+  recent_speed_arrival_ = ros::WallTime();
+  std::ostringstream text;
+  text << "at station " << request.station << " m, speed " << request.speed
+       << " m/s, in static equilibrium ";
+  if (terrain == ResetTerrain::Clear)
+    text << "on flat ground (terrain cleared)";
+  else if (uncovered == 0)
+    text << "on the terrain there";
+  else
+    text << "on the terrain there; " << uncovered << " of " << vehicle_->sampler().size()
+         << " contacts off the terrain hold their last height";
+  response.success = true;
+  response.message = text.str();
+  ROS_INFO("vehicle_dynamics_node: ~reset_to: %s", response.message.c_str());
   return true;
 }
 

@@ -256,6 +256,62 @@ TEST(OnlineVehicle, ResetReturnsToEquilibriumAtStationZero) {
   EXPECT_EQ(vehicle.comfort().sampleCount(), 0u);
 }
 
+// resetTo(s, v, Keep): at rest in static equilibrium on the terrain sampled at s, K q0 = f_g +
+// K_u u(s), and it stays there; contacts off the terrain hold their last height; Clear: flat
+// ground at s; an invalid request throws and changes nothing.
+TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
+  const reduction::ReducedModel model = test::toyModel();
+  OnlineVehicle vehicle(model, test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  const Vector6 rest = vehicle.hullDisplacement();
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  vehicle.setSpeed(10.0);
+  for (int k = 0; k < 100; ++k)
+    vehicle.step();
+
+  // Front contact (x = +1) on the bump's crest at 3 m, rear one (x = -1) on flat ground at 1 m.
+  EXPECT_EQ(vehicle.resetTo(2.0, 0.0, ResetTerrain::Keep), 0);
+  EXPECT_EQ(vehicle.station(), 2.0);
+  EXPECT_EQ(vehicle.speed(), 0.0);
+  EXPECT_EQ(vehicle.stepCount(), 0);
+  EXPECT_EQ(vehicle.comfort().sampleCount(), 0u);
+  EXPECT_FALSE(vehicle.terrain().empty());
+  const Vector u = Eigen::Vector2d(0.1, 0.0);
+  const Vector z0 = dynamics::staticEquilibrium(model.system, u, model.gravity_load);
+  EXPECT_LT((vehicle.simulator().state() - z0).cwiseAbs().maxCoeff(), 1e-12);
+  const Vector6 on_bump = vehicle.hullDisplacement();
+  EXPECT_GT(on_bump(2), rest(2));  // heave up
+  EXPECT_LT(on_bump(4), 0.0);      // nose up (REP-103: positive pitch is nose down)
+  EXPECT_NEAR(vehicle.wheels()[0].displacement, 0.1, 1e-4);  // the tyre is stiff
+  for (int k = 0; k < 200; ++k)
+    vehicle.step();
+  EXPECT_LT((vehicle.hullDisplacement() - on_bump).cwiseAbs().maxCoeff(), kAtRest);
+  EXPECT_EQ(vehicle.station(), 2.0);
+
+  // Off the terrain (it ends at 10 m): both contacts hold the heights they had, so the
+  // equilibrium is the same.
+  EXPECT_EQ(vehicle.resetTo(20.0, 0.0, ResetTerrain::Keep), 2);
+  EXPECT_LT((vehicle.simulator().state() - z0).cwiseAbs().maxCoeff(), 1e-12);
+
+  // Invalid: nothing changes.
+  EXPECT_THROW(vehicle.resetTo(std::nan(""), 0.0, ResetTerrain::Clear), InputError);
+  EXPECT_THROW(vehicle.resetTo(5.0, -1.0, ResetTerrain::Clear), InputError);
+  EXPECT_THROW(vehicle.resetTo(5.0, std::numeric_limits<double>::infinity(), ResetTerrain::Clear),
+               InputError);
+  EXPECT_EQ(vehicle.station(), 20.0);
+  EXPECT_FALSE(vehicle.terrain().empty());
+  EXPECT_LT((vehicle.simulator().state() - z0).cwiseAbs().maxCoeff(), 1e-12);
+
+  // Clear: flat ground at the station, moving on at the requested speed.
+  EXPECT_EQ(vehicle.resetTo(5.0, 3.0, ResetTerrain::Clear), 0);
+  EXPECT_TRUE(vehicle.terrain().empty());
+  EXPECT_NEAR((vehicle.hullDisplacement() - rest).norm(), 0.0, 1e-15);
+  vehicle.step();
+  EXPECT_NEAR(vehicle.station(), 5.0 + 3.0 / kRate, 1e-12);
+  EXPECT_LT((vehicle.hullDisplacement() - rest).cwiseAbs().maxCoeff(), kAtRest);
+}
+
 #if defined(__GLIBC__)
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,

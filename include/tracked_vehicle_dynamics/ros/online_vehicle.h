@@ -8,7 +8,8 @@
 //   Simulator::step(w_{k+1})                               exact discretisation (simulator.h)
 // and the comfort meter takes the vertical acceleration at the comfort point. The simulator
 // starts from static equilibrium under gravity on flat ground (u = 0), K q0 = f_g, so a vehicle
-// at rest on flat terrain stays exactly where it is. step() allocates nothing.
+// at rest on flat terrain stays exactly where it is; resetTo() restarts it at any station in
+// static equilibrium on the terrain there, K q0 = f_g + K_u u(s). step() allocates nothing.
 #pragma once
 
 #include <optional>
@@ -17,6 +18,7 @@
 
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
 #include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
@@ -72,6 +74,15 @@ struct WheelState {
   double acceleration = 0.0;  ///< vertical [m/s^2]
 };
 
+/// What resetTo() does with the terrain buffer.
+enum class ResetTerrain {
+  /// Buffer cleared, held heights 0: flat ground (u = 0) until new patches arrive, as reset().
+  Clear,
+  /// Buffer kept: the inputs are sampled from it at the new station as a step samples them
+  /// (uncovered contacts keep their last height, u' = 0).
+  Keep,
+};
+
 /// What one step met.
 struct StepResult {
   int uncovered = 0;      ///< contacts the terrain did not cover (held at their last height)
@@ -87,8 +98,15 @@ class OnlineVehicle {
                 const OnlineVehicleOptions& options = {});
 
   /// Back to static equilibrium on flat ground at station 0, speed 0; terrain and comfort
-  /// metrics cleared.
+  /// metrics cleared: resetTo(0, 0, ResetTerrain::Clear).
   void reset();
+  /// Restarts at station s [m] with speed v [m/s], at rest in static equilibrium on the road
+  /// there: w = [u; u'] sampled at s exactly as step() samples it (u = 0 with
+  /// ResetTerrain::Clear), then K q0 = f_g + K_u u, q0' = 0 (StaticEquilibriumSolver). Time,
+  /// step count and comfort metrics restart from zero. Returns the number of contacts the kept
+  /// terrain did not cover (they hold their last height; 0 with Clear). Throws InputError,
+  /// changing nothing, when s is not finite or v is negative or not finite.
+  int resetTo(double station, double speed, ResetTerrain terrain);
   /// Stores a patch (newest wins where patches overlap) and frees terrain behind the vehicle.
   /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.
   void addTerrain(const TerrainPatch& patch);
@@ -155,6 +173,7 @@ class OnlineVehicle {
   dynamics::ComfortMeter comfort_;
   std::string comfort_point_;
 
+  dynamics::StaticEquilibriumSolver equilibrium_solver_;
   Vector equilibrium_;  // z0 on flat ground [2k]
   Vector input_;        // w [2 n_inputs], reused every step
   std::vector<std::string> base_names_;

@@ -2,6 +2,7 @@
 //
 //   terrain_profile (TerrainProfile) ──► OnlineVehicle::addTerrain   (TerrainBuffer)
 //   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
+//   ~reset, ~reset_to (ResetVehicle) ──► OnlineVehicle::reset, resetTo
 //   tick at ~rate on ROS time        ──► OnlineVehicle::step() for every step due
 //       ──► tf2 odom→base_link→{road wheels, moving named points}, hull/accel, hull/twist,
 //           road_wheels, comfort, /diagnostics
@@ -17,8 +18,9 @@
 // a diagnostics entry.
 //
 // Threading: the vehicle is owned by one tick at a time, which takes its own callback queue
-// (terrain, speed, ~reset and, with use_sim_time, /clock) first: no locks, a deterministic step
-// order, and a message is used at the next tick (latency <= one period plus the step).
+// (terrain, speed, ~reset, ~reset_to and, with use_sim_time, /clock) first: no locks, a
+// deterministic step order, and a message is used at the next tick (latency <= one period plus
+// the step).
 // - Real time: the tick runs in roscpp's network thread (NetworkThreadTimer), one wake-up per
 //   tick where a thread of our own costs two and a hand-off (a ros::Timer costs more still).
 //   The step is microseconds, so the network thread's other work waits little.
@@ -47,6 +49,7 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 
 #include "tracked_vehicle_dynamics/Comfort.h"
+#include "tracked_vehicle_dynamics/ResetVehicle.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
@@ -103,6 +106,11 @@ class VehicleDynamicsNode {
   void onTerrain(const TerrainProfile::ConstPtr& msg);
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
+  /// ~reset_to: restart at a station in static equilibrium on its terrain (or on flat ground).
+  /// An invalid request gets success = false naming the field, and changes nothing.
+  bool onResetTo(ResetVehicle::Request& request, ResetVehicle::Response& response);
+  /// Why a speed [m/s] is not accepted (not finite, negative, above ~max_speed); empty if it is.
+  std::string speedProblem(double speed) const;
   void onClock(const rosgraph_msgs::Clock::ConstPtr& msg);
   /// The simulated-time loop thread: waits for /clock (and messages), then step().
   void run();
@@ -161,7 +169,7 @@ class VehicleDynamicsNode {
   template <class M>
   void advertise(const std::string& topic, std::uint32_t queue_size, CountedPublisher* out);
   CountedPublisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
-  ros::ServiceServer reset_service_;
+  ros::ServiceServer reset_service_, reset_to_service_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   diagnostic_updater::Updater updater_;
 
