@@ -224,28 +224,27 @@ Vector vectorOf(const io::MatReader& in, const std::string& name) {
 ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash,
                        const ReducedModelLoadOptions& options) {
   const std::string& where = in.path();
-  // The stale checks first: they give the most useful message.
+  // The checks of where the file comes from first: they give the most useful message.
   const double format = in.readScalar("format_version");
   if (format != kReducedModelFormatVersion)
-    throw InputError(where + ": stale cache: format version " + std::to_string(format) +
-                     ", this software reads " + std::to_string(kReducedModelFormatVersion));
+    throw InputError(where + ": file format version " + std::to_string(format) +
+                     ", this software reads version " + std::to_string(kReducedModelFormatVersion));
   ReducedModel model;
   model.version = in.readString("version");
   if (options.require_same_version && model.version != softwareVersion())
-    throw InputError(where + ": stale cache: written by version " + model.version +
-                     ", this is version " + softwareVersion());
+    throw InputError(where + ": written by version " + model.version + ", this is version " +
+                     softwareVersion());
   model.description_hash = in.readString("description_hash");
   if (model.description_hash != expected_hash)
-    throw InputError(where + ": stale cache: built from description hash '" +
-                     model.description_hash + "', expected '" + expected_hash +
-                     "' (the description changed)");
+    throw InputError(where + ": reduced from another description (description hash " +
+                     model.description_hash + ", this one's " + expected_hash + ")");
   if (!in.has("checksum"))
     throw InputError(where +
                      ": incomplete file: the final 'checksum' variable is missing "
                      "(truncated or interrupted write)");
   model.reduction = in.readString("reduction");
   if (!options.expected_reduction.empty() && model.reduction != options.expected_reduction)
-    throw InputError(where + ": stale cache: reduced as '" + model.reduction + "', expected '" +
+    throw InputError(where + ": reduced as '" + model.reduction + "', expected '" +
                      options.expected_reduction + "'");
 
   model.created_utc = in.readString("created_utc");

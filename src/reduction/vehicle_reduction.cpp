@@ -250,6 +250,32 @@ std::string reductionKey(vehicle::Variant variant, const VehicleReductionOptions
   return std::string("variant ") + vehicle::variantName(variant) + "; " + optionsText(options);
 }
 
+bool parseReductionKey(const std::string& key, vehicle::Variant* variant,
+                       VehicleReductionOptions* options) {
+  char variant_name[16] = {}, rule[8] = {};
+  VehicleReductionOptions o;
+  int end = 0;
+  const int fields = std::sscanf(
+      key.c_str(),
+      "variant %15[a-z]; rule %7[a-z]; global_modes %d; band_hz %lf; mac_threshold %lf; "
+      "mogesec_masters %d; modes %d%n",
+      variant_name, rule, &o.global_modes, &o.band_hz, &o.mac_threshold, &o.mogesec_masters,
+      &o.mode_count, &end);
+  if (fields != 7 || static_cast<std::size_t>(end) != key.size())
+    return false;
+  const std::string name = variant_name;
+  if (name != "tracked" && name != "untracked")
+    return false;
+  const vehicle::Variant v = vehicle::parseVariant(name);
+  o.rule = std::string(rule) == "band" ? VehicleModeRule::Band : VehicleModeRule::MacCorrelation;
+  // Exactly reductionKey()'s text: no other spelling, every double to the last bit.
+  if (reductionKey(v, o) != key)
+    return false;
+  *variant = v;
+  *options = o;
+  return true;
+}
+
 std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant variant,
                                   const std::string& description_hash,
                                   const VehicleReductionOptions& options) {
@@ -297,7 +323,7 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
       rep.total_seconds = secondsSince(start);
       return cached;
     } catch (const StaleCacheError& e) {
-      rep.cache_note = std::string("rebuilt: ") + e.what();
+      rep.cache_note = std::string("rebuilt, the cached model is stale: ") + e.what();
     }
   } else {
     rep.cache_note = "built: no cached model " + path.string();

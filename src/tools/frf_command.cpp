@@ -5,9 +5,11 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include "commands.h"
 #include "output_files.h"
+#include "reduction_options.h"
 #include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -30,7 +32,8 @@ struct FrfOptions {
   double max_hz = 50.0;
   double step_hz = 0.05;
   double max_mode_hz = 100.0;  // full model: dynamic modes up to here
-  std::string cache_dir;
+  ReducedModelFlags reduced;
+  bool variant_given = false;
   std::string out_file;
   bool json = false;
 };
@@ -62,7 +65,7 @@ std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
 }
 
 void run(const FrfOptions& opt) {
-  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
     throw InputError("frf: --speed-kmh must be in [0, 200] (0: synchronous), got " +
                      std::to_string(opt.speed_kmh));
@@ -77,22 +80,24 @@ void run(const FrfOptions& opt) {
   dynamics::ComplexMatrix h;
   DofIndex dofs = 0, full_dofs = 0;
   std::string source;
+  std::optional<ReducedModelSource> reduced;
   auto delayFor = [&](const Vector& x) {
     return opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / 3.6)
                              : dynamics::InputDelay::synchronous();
   };
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   if (opt.model == "reduced") {
-    reduction::VehicleReductionReport report;
-    const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
-        description, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {},
-        &report);
+    reduced = obtainReducedModel(description, variant, opt.variant_given, "frf", opt.reduced);
+    variant = reduced->variant;  // a --reduced file's
+    const reduction::ReducedModel& model = reduced->model;
     names = model.system.output_names;
     h = dynamics::frfModal(model.system, hz, delayFor(model.system.input_stations),
                            dynamics::OutputQuantity::Acceleration);
     dofs = model.size();
     full_dofs = model.full_dof_count;
-    source = report.from_cache ? "reduced (cached)" : "reduced";
+    source = reduced->kind == ReducedModelSource::Kind::Cache  ? "reduced (cached)"
+             : reduced->kind == ReducedModelSource::Kind::File ? "reduced (file)"
+                                                               : "reduced";
   } else {
     reduction::FullReferenceOptions ref_options;
     ref_options.max_frequency_hz = opt.max_mode_hz;
@@ -146,9 +151,10 @@ void run(const FrfOptions& opt) {
         .field("excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous")
         .field("speed_kmh", opt.speed_kmh)
         .field("frequencies", static_cast<long long>(hz.size()))
-        .field("max_hz", hz(hz.size() - 1))
-        .key("outputs")
-        .beginArray();
+        .field("max_hz", hz(hz.size() - 1));
+    if (reduced)
+      writeReductionJson(json.key("reduction"), *reduced);
+    json.key("outputs").beginArray();
     for (const NamedColumn& c : columns) {
       const auto [top, local] = peaks(c);
       json.beginObject()
@@ -175,6 +181,8 @@ void run(const FrfOptions& opt) {
             << (opt.speed_kmh > 0 ? "travelled at " + std::to_string(opt.speed_kmh) + " km/h"
                                   : std::string("synchronous excitation"))
             << ", 0-" << hz(hz.size() - 1) << " Hz\n";
+  if (reduced)
+    std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
   for (const NamedColumn& c : columns) {
     const auto [top, local] = peaks(c);
     std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "
@@ -194,8 +202,12 @@ void registerFrfCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "frf", "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel)");
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--model", opt->model, "reduced (Craig-Bampton, cached) | full (FE modes + static residual)")
+  CLI::Option* variant =
+      cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
+          ->check(CLI::IsMember({"untracked", "tracked"}));
+  cmd->add_option("--model", opt->model,
+                  "reduced (Craig-Bampton: cached with the reduction options, or --reduced FILE) | "
+                  "full (FE modes + static residual)")
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
   cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)")->check(positiveNumber());
@@ -206,14 +218,16 @@ void registerFrfCommand(CLI::App& app) {
       cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                       "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
           ->check(positiveNumber() & numberIn(0.0, 100.0, "Hz"));
-  cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
+  opt->reduced.addTo(cmd);
   cmd->add_option("--out", opt->out_file,
                   "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and <output>_phase_deg")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt, max_mode]() {
+  cmd->callback([opt, max_mode, variant]() {
     if (max_mode->count() > 0 && opt->model != "full")
       throw InputError("frf: --max-mode-hz applies to --model full only");
+    opt->reduced.check("frf", opt->model);
+    opt->variant_given = variant->count() > 0;
     run(*opt);
   });
 }

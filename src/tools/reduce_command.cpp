@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "reduction_options.h"
 #include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
@@ -19,19 +20,17 @@ namespace {
 struct ReduceOptions {
   std::string vehicle_file;
   std::string variant = "tracked";
-  std::string rule = "mac";
-  reduction::VehicleReductionOptions reduction;
+  ReductionFlags reduction_flags;
   bool json = false;
   std::string out_file;
 };
 
-void run(ReduceOptions opt) {
+void run(const ReduceOptions& opt) {
+  const reduction::VehicleReductionOptions options = opt.reduction_flags.options("reduce");
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
-  opt.reduction.rule = opt.rule == "mac" ? reduction::VehicleModeRule::MacCorrelation
-                                         : reduction::VehicleModeRule::Band;
   reduction::VehicleReductionReport report;
-  reduction::ReducedModel model = reduction::reduceVehicle(description, variant, opt.reduction, &report);
+  reduction::ReducedModel model = reduction::reduceVehicle(description, variant, options, &report);
   model.creator = "tvd reduce";
   if (!opt.out_file.empty()) reduction::saveReducedModel(model, opt.out_file);
 
@@ -109,6 +108,12 @@ void run(ReduceOptions opt) {
         .field("total_seconds", report.total_seconds)
         .field("description_hash", model.description_hash);
     if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    ReducedModelSource source;
+    source.model = model;
+    source.file = opt.out_file;
+    source.variant = variant;
+    source.options = options;
+    writeReductionJson(json.key("reduction"), source);
     json.endObject();
     return;
   }
@@ -127,7 +132,7 @@ void run(ReduceOptions opt) {
     std::cout << "    " << std::setw(2) << m.pick << "  " << m.dof << " (" << m.part << ") at ("
               << std::setprecision(2) << m.position.x() << ", " << m.position.y() << ", "
               << m.position.z() << ") m, weight " << std::setprecision(3) << m.weight << "\n";
-  std::cout << "  modes up to " << opt.reduction.band_hz << " Hz, full vs reduced:\n";
+  std::cout << "  modes up to " << options.band_hz << " Hz, full vs reduced:\n";
   for (std::size_t i = 0; i < pairs; ++i)
     std::cout << "    " << std::setw(2) << i + 1 << std::setw(9) << std::setprecision(3)
               << report.full_frequencies_hz[i] << std::setw(9) << report.reduced_frequencies_hz[i]
@@ -147,21 +152,10 @@ void registerReduceCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("reduce", "Craig-Bampton reduction of a vehicle (MAC + MoGeSeC)");
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
   cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--rule", opt->rule, "mode selection: mac (paper) | band")->check(CLI::IsMember({"mac", "band"}));
-  cmd->add_option("--band", opt->reduction.band_hz, "bandwidth of interest [Hz]")->check(positiveNumber());
-  cmd->add_option("--global-modes", opt->reduction.global_modes, "modes per variant for the MAC")->check(CLI::Range(1, 500));
-  cmd->add_option("--masters", opt->reduction.mogesec_masters, "MoGeSeC master DOFs (paper: 9)")->check(CLI::Range(0, 1000));
-  cmd->add_option("--modes", opt->reduction.mode_count, "fixed-interface modes (0: twice the selected)")->check(CLI::Range(0, 1000));
-  CLI::Option* threshold =
-      cmd->add_option("--mac-threshold", opt->reduction.mac_threshold, "MAC threshold (paper: 0.7)")
-          ->check(CLI::Range(0.0, 1.0));
+  opt->reduction_flags.addTo(cmd);
   cmd->add_flag("--json", opt->json, "print a JSON document");
   cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")->check(outputFile({".mat"}));
-  cmd->callback([opt, threshold]() {
-    if (threshold->count() > 0 && opt->rule != "mac")
-      throw InputError("reduce: --mac-threshold applies to --rule mac only");
-    run(*opt);
-  });
+  cmd->callback([opt]() { run(*opt); });
 }
 
 }  // namespace tools

@@ -17,6 +17,7 @@
 #include "drive.h"
 #include "output_files.h"
 #include "point_comfort.h"
+#include "reduction_options.h"
 #include "simulation_layout.h"
 #include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
@@ -51,14 +52,15 @@ struct SimulateOptions {
   std::string method = "modal";
   std::string model = "reduced";
   double max_mode_hz = -1.0;  // < 0: the Nyquist frequency 1 / (2 dt)
-  std::string cache_dir;
+  ReducedModelFlags reduced;
+  bool variant_given = false;
   std::string out_file;
   bool json = false;
 };
 
 
 void run(const SimulateOptions& opt) {
-  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
     throw InputError("simulate: --speed-kmh must be in (0, 200], got " + std::to_string(opt.speed_kmh));
   if (opt.method != "modal" && opt.max_mode_hz >= 0)
@@ -72,9 +74,9 @@ void run(const SimulateOptions& opt) {
   }
   const terrain::Terrain track = terrain::loadTrack(opt.track);
 
-  // The reduced model (cached), or the full FE model in modal form with its static residual.
-  reduction::VehicleReductionReport report;
-  reduction::ReducedModel model;
+  // The reduced model (cached or from a file), or the full FE model in modal form with its
+  // static residual.
+  std::optional<ReducedModelSource> reduced;
   std::unique_ptr<reduction::FullModelReference> full;
   std::vector<std::string> warnings;  // printed on stderr as they arise, and in the JSON
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
@@ -89,11 +91,12 @@ void run(const SimulateOptions& opt) {
     full = std::make_unique<reduction::FullModelReference>(reduction::buildVehicleReference(
         description, variant, ref_options));
   } else {
-    model = reduction::loadOrReduceVehicle(
-        description, variant, opt.cache_dir.empty() ? defaultCacheDir() : opt.cache_dir, {}, &report);
+    reduced = obtainReducedModel(description, variant, opt.variant_given, "simulate", opt.reduced);
+    variant = reduced->variant;  // a --reduced file's
   }
-  const dynamics::SecondOrderSystem& sys = full ? full->modal : model.system;
-  const Vector& gravity = full ? full->modal_gravity : model.gravity_load;
+  const dynamics::SecondOrderSystem& sys = full ? full->modal : reduced->model.system;
+  const Vector& gravity = full ? full->modal_gravity : reduced->model.gravity_load;
+  const bool from_cache = reduced && reduced->kind == ReducedModelSource::Kind::Cache;
 
   dynamics::SimulatorOptions sim_options;
   sim_options.time_step = opt.dt;
@@ -241,15 +244,19 @@ void run(const SimulateOptions& opt) {
     } else {
       json.field("speed_kmh", opt.speed_kmh);
     }
-    json.field("warnings", warnings).field("travelled_m", travelled)
+    json.field("warnings", warnings)
+        .field("travelled_m", travelled)
         .field("time_step_s", opt.dt)
         .field("model", full ? "full" : "reduced")
         .field(full ? "modal_coordinates" : "reduced_dofs", static_cast<long long>(sys.size()))
-        .field("full_dofs", static_cast<long long>(full ? full->full_dofs : model.full_dof_count))
+        .field("full_dofs",
+               static_cast<long long>(full ? full->full_dofs : reduced->model.full_dof_count))
         .field("dynamic_modes", static_cast<long long>(sim.dynamicModeCount()))
         .field("quasi_static_modes", static_cast<long long>(sim.quasiStaticModeCount()))
-        .field("model_from_cache", report.from_cache)
-        .field("peak_hull_heave_m", peak_heave)
+        .field("model_from_cache", from_cache);
+    if (reduced)
+      writeReductionJson(json.key("reduction"), *reduced);
+    json.field("peak_hull_heave_m", peak_heave)
         .field("peak_hull_vertical_accel_m_s2", peak_accel)
         .field("peak_pitch_deg", peak_pitch)
         .field("peak_roll_deg", peak_roll)
@@ -289,8 +296,10 @@ void run(const SimulateOptions& opt) {
   std::cout << ", " << vehicle::variantName(variant)
             << (full ? " full model (" + std::to_string(sys.size()) + " modes + static residual"
                      : " reduced model (" + std::to_string(sys.size()) + " DOFs")
-            << (report.from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n"
-            << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
+            << (from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n";
+  if (reduced)
+    std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
+  std::cout << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
             << "  peak road-wheel displacement " << peak_wheel << " m\n";
   for (const std::string& point : layout.points)
@@ -309,7 +318,9 @@ void registerSimulateCommand(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand("simulate", "Time response of the reduced (or full) vehicle over a track");
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
+  CLI::Option* variant =
+      cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
+          ->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | terrain file (CSV/YAML)");
   CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
   cmd->add_option("--speed-profile", opt->speed_profile,
@@ -331,14 +342,19 @@ void registerSimulateCommand(CLI::App& app) {
       ->check(nonNegativeNumber())
       ->default_str("1/(2 dt)");
   cmd->add_option("--model", opt->model,
-                  "reduced (Craig-Bampton, cached) | full (FE modes up to --max-mode-hz, default "
-                  "100 Hz, plus static residual: the reference)")
+                  "reduced (Craig-Bampton: cached with the reduction options, or --reduced FILE) | "
+                  "full (FE modes up to --max-mode-hz, default 100 Hz, plus static residual: the "
+                  "reference)")
       ->check(CLI::IsMember({"reduced", "full"}));
-  cmd->add_option("--cache-dir", opt->cache_dir, "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics)");
+  opt->reduced.addTo(cmd);
   cmd->add_option("--out", opt->out_file, "time series: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt, variant]() {
+    opt->reduced.check("simulate", opt->model);
+    opt->variant_given = variant->count() > 0;
+    run(*opt);
+  });
 }
 
 }  // namespace tools

@@ -267,7 +267,7 @@ TEST_F(ReducedModelFileTest, SaveLoadRoundTripIsExact) {
 }
 
 TEST_F(ReducedModelFileTest, DifferentHashIsStale) {
-  expectStale(path_, "sha256:ffff", "description hash");
+  expectStale(path_, "sha256:ffff", "reduced from another description (description hash ");
 }
 
 // The same description reduced for another variant or with other options is another model.

@@ -43,6 +43,48 @@ TEST(ReductionCache, FileNameNamesVariantDescriptionAndOptions) {
   }
 }
 
+// A model's `reduction` text gives back the variant and options it was reduced with (what
+// `tvd frf --reduced FILE` reports), and nothing else parses.
+TEST(ReductionCache, ReductionKeyRoundTrips) {
+  VehicleReductionOptions band;
+  band.rule = tvd::reduction::VehicleModeRule::Band;
+  band.band_hz = 40.000000000000007;
+  band.mac_threshold = 0.1 + 0.2;
+  band.global_modes = 12;
+  band.mogesec_masters = 0;
+  band.mode_count = 31;
+  for (const auto variant : {tvd::vehicle::Variant::Tracked, tvd::vehicle::Variant::Untracked})
+    for (const VehicleReductionOptions& o : {VehicleReductionOptions{}, band}) {
+      const std::string key = tvd::reduction::reductionKey(variant, o);
+      auto parsed_variant = variant == tvd::vehicle::Variant::Tracked
+                                ? tvd::vehicle::Variant::Untracked
+                                : tvd::vehicle::Variant::Tracked;
+      VehicleReductionOptions parsed;
+      ASSERT_TRUE(tvd::reduction::parseReductionKey(key, &parsed_variant, &parsed)) << key;
+      EXPECT_EQ(parsed_variant, variant);
+      EXPECT_EQ(parsed.rule, o.rule);
+      EXPECT_EQ(parsed.global_modes, o.global_modes);
+      EXPECT_EQ(parsed.band_hz, o.band_hz);  // to the last bit
+      EXPECT_EQ(parsed.mac_threshold, o.mac_threshold);
+      EXPECT_EQ(parsed.mogesec_masters, o.mogesec_masters);
+      EXPECT_EQ(parsed.mode_count, o.mode_count);
+      EXPECT_FALSE(tvd::reduction::parseReductionKey(key + ";", &parsed_variant, &parsed));
+    }
+  const std::string good = tvd::reduction::reductionKey(tvd::vehicle::Variant::Tracked, {});
+  for (const std::string bad :
+       {std::string(), std::string("variant tracked; modes 4"),
+        std::string("variant flying") + good.substr(15),
+        std::string("variant tracked; rule all") + good.substr(good.find("; global_modes")),
+        std::string("variant tracked;  rule mac") + good.substr(good.find("; global_modes"))}) {
+    auto variant = tvd::vehicle::Variant::Untracked;
+    VehicleReductionOptions options;
+    options.band_hz = 1.0;
+    EXPECT_FALSE(tvd::reduction::parseReductionKey(bad, &variant, &options)) << bad;
+    EXPECT_EQ(variant, tvd::vehicle::Variant::Untracked);  // unchanged
+    EXPECT_EQ(options.band_hz, 1.0);
+  }
+}
+
 // End to end: default options, then fewer MoGeSeC masters (another model, not the cached one,
 // even when the default's file is copied to its name), then the same again (now from its own
 // cache, equal to what was computed).
@@ -63,10 +105,12 @@ TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
   const auto cached = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
   EXPECT_FALSE(first.from_cache);
   EXPECT_FALSE(second.from_cache) << second.cache_note;
-  EXPECT_NE(second.cache_note.find("stale cache: reduced as 'variant untracked; rule mac; "
-                                   "global_modes 40; band_hz 30; mac_threshold 0.69999999999999996; "
-                                   "mogesec_masters 9; modes 0', expected"),
-            std::string::npos)
+  EXPECT_NE(
+      second.cache_note.find("is stale: " + second.cache_file +
+                             ": reduced as 'variant untracked; rule mac; "
+                             "global_modes 40; band_hz 30; mac_threshold 0.69999999999999996; "
+                             "mogesec_masters 9; modes 0', expected"),
+      std::string::npos)
       << second.cache_note;
   EXPECT_TRUE(third.from_cache) << third.cache_note;
   EXPECT_NE(first.cache_file, second.cache_file);

@@ -498,6 +498,168 @@ class TvdCliTest(unittest.TestCase):
                             self.cache, "--max-hz", "3")
         self.assertTrue(low["outputs"][0]["peak_at_band_edge"])  # still rising towards 5 Hz bounce
 
+    # --- Reduction options and reduced-model files of frf and simulate ----------------------
+    # The un-tracked variant with the band rule: no tracked modes to solve, so each reduction
+    # takes a fraction of a second; the options still differ from the defaults in every way the
+    # cache keys on (rule and band).
+    BAND = ("--rule", "band", "--band", "40")
+
+    def band_model(self):
+        """`tvd reduce --rule band --band 40 --out m.mat` (once) and its JSON."""
+        cls = type(self)
+        if not hasattr(cls, "_band_model"):
+            out = self.path("band40.mat")
+            d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", *self.BAND,
+                              "--out", out)
+            cls._band_model = (out, d)
+        return cls._band_model
+
+    def frf_mat(self, name, *args):
+        out = self.path(name)
+        d = self.tvd_json("frf", "--vehicle", VEHICLE, *args, "--max-hz", "30", "--out", out)
+        m = scipy.io.loadmat(out)
+        return d, {k: np.ravel(v) for k, v in m.items() if k.endswith(("_mag", "_phase_deg"))}
+
+    def test_frf_of_a_reduced_file_is_that_of_its_options(self):
+        mat, reduced = self.band_model()
+        self.assertEqual(reduced["reduction"]["rule"], "band")
+        self.assertEqual(reduced["reduction"]["band_hz"], 40.0)
+        cache = self.path("cache_band_frf")
+        from_file, h_file = self.frf_mat("frf_file.mat", "--reduced", mat)
+        computed, h_computed = self.frf_mat("frf_band.mat", "--variant", "untracked", *self.BAND,
+                                            "--cache-dir", cache)
+        r = from_file["reduction"]
+        self.assertEqual(r["source"], "file")
+        self.assertEqual(r["file"], mat)
+        self.assertEqual(from_file["variant"], "untracked")  # the file's, --variant not given
+        self.assertEqual((r["rule"], r["band_hz"], r["variant"]), ("band", 40.0, "untracked"))
+        self.assertEqual(r["reduced_dofs"], reduced["reduced_dofs"])
+        self.assertEqual(from_file["dofs"], reduced["reduced_dofs"])
+        self.assertEqual(r["fixed_interface_modes"], reduced["flexible_modes"])
+        self.assertEqual(r["mogesec_masters"], 9)
+        self.assertEqual(r["master_dofs"] + r["fixed_interface_modes"], r["reduced_dofs"])
+        self.assertEqual(computed["reduction"]["source"], "computed")
+        for key in ("rule", "band_hz", "global_modes", "mac_threshold", "mogesec_masters",
+                    "mode_count", "selected_global_modes", "fixed_interface_modes",
+                    "master_dofs", "reduced_dofs"):
+            self.assertEqual(computed["reduction"][key], r[key], key)
+        self.assertEqual(sorted(h_file), sorted(h_computed))
+        self.assertEqual(len(h_file), 8)
+        for name in h_file:
+            if name.endswith("_mag"):
+                np.testing.assert_allclose(h_file[name], h_computed[name], rtol=1e-9, atol=0,
+                                           err_msg=name)
+        # The text output says where the model came from.
+        text = self.tvd("frf", "--vehicle", VEHICLE, "--reduced", mat, "--max-hz", "5").stdout
+        self.assertIn("reduction: rule band, 0-40 Hz", text)
+        self.assertIn("from " + mat, text)
+
+    def test_cache_keeps_each_reduction_apart(self):
+        # A band-40 FRF, then one with the default options in the same cache: the default model,
+        # computed (not the band-40 file), then both again from their own cache files.
+        cache = self.path("cache_apart")
+        _, band = self.band_model()
+        default = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked")
+        self.assertNotEqual(default["reduced_dofs"], band["reduced_dofs"])
+        args = ("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--max-hz", "5",
+                "--cache-dir", cache)
+        runs = [("band", self.tvd_json(*args, *self.BAND), "computed", band),
+                ("default", self.tvd_json(*args), "computed", default),
+                ("band", self.tvd_json(*args, *self.BAND), "cache", band),
+                ("default", self.tvd_json(*args), "cache", default)]
+        for name, d, source, expected in runs:
+            r = d["reduction"]
+            self.assertEqual(r["source"], source, name)
+            self.assertEqual(r["rule"], "band" if name == "band" else "mac", name)
+            self.assertEqual(r["reduced_dofs"], expected["reduced_dofs"], name)
+            self.assertEqual(d["dofs"], expected["reduced_dofs"], name)
+            self.assertTrue(r["file"].startswith(cache), r["file"])
+        self.assertNotEqual(runs[0][1]["reduction"]["file"], runs[1][1]["reduction"]["file"])
+        self.assertEqual(len([n for n in os.listdir(cache) if n.endswith(".mat")]), 2)
+
+    def test_reduced_file_of_another_description_or_damaged_is_refused(self):
+        mat, _ = self.band_model()
+        heavier = self.path("heavier_hull.yaml")
+        with open(VEHICLE) as f:
+            text = f.read()
+        old = "mass: {value: 30300, unit: kg"
+        self.assertEqual(text.count(old), 1)
+        with open(heavier, "w") as f:
+            f.write(text.replace(old, "mass: {value: 31300, unit: kg"))
+        cut = self.path("band40_cut.mat")
+        with open(mat, "rb") as f, open(cut, "wb") as g:
+            data = f.read()
+            g.write(data[:len(data) // 2])
+        for command in (["frf", "--vehicle", heavier, "--reduced", mat],
+                        ["simulate", "--vehicle", heavier, "--reduced", mat],
+                        ["frf", "--vehicle", VEHICLE, "--reduced", cut]):
+            result = self.tvd(*command, status=INPUT_ERROR_STATUS)
+            self.assertEqual(result.stdout, "")
+            lines = result.stderr.strip().splitlines()
+            self.assertEqual(len(lines), 1, result.stderr)
+            file = command[-1]
+            self.assertTrue(lines[0].startswith(f"tvd: error: {file}: "), lines[0])
+            self.assertIn("run tvd reduce again", lines[0])
+            if file == mat:
+                self.assertIn("reduced from another description", lines[0])
+            else:
+                self.assertIn("truncated", lines[0])
+
+    def test_reduced_file_conflicts_are_named(self):
+        mat, _ = self.band_model()
+        frf = ["frf", "--vehicle", VEHICLE, "--cache-dir", self.cache]
+        sim = ["simulate", "--vehicle", VEHICLE, "--cache-dir", self.cache]
+        for cmd in (frf, sim):
+            name = cmd[0]
+            self.assert_input_error(cmd + ["--reduced", mat, "--model", "full"],
+                                    f"{name}: --reduced {mat} is a reduced model; it cannot be "
+                                    "used with --model full")
+            self.assert_input_error(cmd + ["--reduced", mat, "--band", "30"],
+                                    f"{name}: --band is a reduction option; --reduced {mat}")
+            self.assert_input_error(cmd + ["--reduced", mat, "--rule", "mac"], "--rule is a reduction")
+            self.assert_input_error(cmd + ["--model", "full", "--masters", "4"],
+                                    f"{name}: --masters applies to --model reduced only")
+            self.assert_input_error(cmd + ["--reduced", mat, "--variant", "tracked"],
+                                    f"{name}: --reduced {mat} is the untracked variant, --variant "
+                                    "is tracked")
+            self.assert_input_error(cmd + ["--reduced", self.path("none.mat")], "--reduced",
+                                    "none.mat")
+        # The reduction options: the same flags, ranges and messages as tvd reduce.
+        for cmd in (["reduce", "--vehicle", VEHICLE], frf, sim):
+            name = cmd[0]
+            self.assert_input_error(cmd + ["--rule", "band", "--mac-threshold", "0.8"],
+                                    f"{name}: --mac-threshold applies to --rule mac only")
+            for value in ("0", "1.5", "nan"):
+                self.assert_input_error(cmd + ["--mac-threshold", value], "--mac-threshold",
+                                        f"must be a number in (0, 1], got {value}")
+            self.assert_input_error(cmd + ["--band", "-1"], "--band",
+                                    "must be a positive number, got -1")
+            self.assert_input_error(cmd + ["--rule", "all"], "--rule", "all")
+            self.assert_input_error(cmd + ["--global-modes", "0"], "--global-modes")
+        for command in ("reduce", "frf", "simulate"):
+            text = self.tvd(command, "--help").stdout
+            for flag in ("--rule", "--band", "--global-modes", "--masters", "--modes",
+                         "--mac-threshold"):
+                self.assertIn(flag, text, command)
+            if command != "reduce":
+                self.assertIn("--reduced", text)
+
+    def test_simulate_runs_a_reduced_file(self):
+        mat, reduced = self.band_model()
+        args = ("simulate", "--vehicle", VEHICLE, "--track", "long_hill", "--speed-kmh", "30")
+        d = self.tvd_json(*args, "--reduced", mat)
+        r = d["reduction"]
+        self.assertEqual((r["source"], r["file"], r["rule"], r["band_hz"]), ("file", mat, "band", 40.0))
+        self.assertEqual(d["variant"], "untracked")
+        self.assertEqual(d["reduced_dofs"], reduced["reduced_dofs"])
+        self.assertFalse(d["model_from_cache"])
+        # The same run with the options themselves (through the cache) gives the same response.
+        again = self.tvd_json(*args, "--variant", "untracked", *self.BAND, "--cache-dir",
+                              self.path("cache_band_sim"))
+        self.assertEqual(again["reduction"]["source"], "computed")
+        for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
+            self.assertAlmostEqual(again[key] / d[key], 1.0, delta=1e-9, msg=key)
+
     def assert_input_error(self, args, *words):
         result = self.tvd(*args, status=INPUT_ERROR_STATUS)
         message = result.stderr + result.stdout

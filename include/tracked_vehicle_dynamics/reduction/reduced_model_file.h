@@ -40,8 +40,9 @@ namespace reduction {
 /// Layout version of the file above; a file with another one is stale.
 constexpr int kReducedModelFormatVersion = 3;  // 3: master_positions, master_groups
 
-/// A cached reduced model that cannot be used: missing, unreadable, truncated, corrupted,
-/// inconsistent, or built from another description or software version. The caller rebuilds it.
+/// A reduced model file that cannot be used: missing, unreadable, truncated, corrupted,
+/// inconsistent, or built from another description, software version or reduction. A cache
+/// rebuilds it; a file the user named (`tvd frf --reduced`) is refused with the message.
 class StaleCacheError : public InputError {
  public:
   using InputError::InputError;

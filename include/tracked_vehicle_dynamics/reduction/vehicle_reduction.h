@@ -36,6 +36,11 @@ struct VehicleReductionOptions {
 /// 40; ...": recorded in the model (ReducedModel::reduction) and required of a cached one.
 std::string reductionKey(vehicle::Variant variant, const VehicleReductionOptions& options);
 
+/// The inverse of reductionKey(): the variant and options of a model's `reduction` text. Returns
+/// false (and leaves both unchanged) when `key` is not exactly what reductionKey() writes.
+bool parseReductionKey(const std::string& key, vehicle::Variant* variant,
+                       VehicleReductionOptions* options);
+
 /// Output rows of every reduced vehicle model, in this order:
 ///   "hull ux", "hull uy", "hull uz", "hull rx", "hull ry", "hull rz"   (hull CoG node)
 ///   "<wheel name> uz" for every road wheel (e.g. "road_wheel_left_1 uz")

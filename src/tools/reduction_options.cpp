@@ -1,0 +1,186 @@
+#include "reduction_options.h"
+
+#include <sstream>
+
+#include "commands.h"
+#include "output_files.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+void ReductionFlags::addTo(CLI::App* command) {
+  reduction::VehicleReductionOptions& o = options_;
+  flags_ = {
+      command
+          ->add_option("--rule", rule_,
+                       "mode selection: mac (paper) | band (node: ~reduction/rule)")
+          ->check(CLI::IsMember({"mac", "band"})),
+      command->add_option("--band", o.band_hz, "bandwidth of interest [Hz] (~reduction/band_hz)")
+          ->check(positiveNumber()),
+      command
+          ->add_option("--global-modes", o.global_modes,
+                       "modes per variant for the MAC (~reduction/global_modes)")
+          ->check(CLI::Range(1, 500)),
+      command
+          ->add_option("--masters", o.mogesec_masters,
+                       "MoGeSeC master DOFs (paper: 9; ~reduction/mogesec_masters)")
+          ->check(CLI::Range(0, 1000)),
+      command
+          ->add_option("--modes", o.mode_count,
+                       "fixed-interface modes (0: twice the selected; ~reduction/mode_count)")
+          ->check(CLI::Range(0, 1000)),
+  };
+  // (0, 1] as the node's ~reduction/mac_threshold: at 0 every mode would correlate.
+  mac_threshold_ =
+      command
+          ->add_option("--mac-threshold", o.mac_threshold,
+                       "MAC threshold, --rule mac only (paper: 0.7; ~reduction/mac_threshold)")
+          ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 1.0; },
+                                    "a number in (0, 1]", "NUMBER"));
+  flags_.push_back(mac_threshold_);
+}
+
+reduction::VehicleReductionOptions ReductionFlags::options(const std::string& command) const {
+  if (mac_threshold_->count() > 0 && rule_ != "mac")
+    throw InputError(command + ": --mac-threshold applies to --rule mac only");
+  reduction::VehicleReductionOptions o = options_;
+  o.rule = rule_ == "band" ? reduction::VehicleModeRule::Band
+                           : reduction::VehicleModeRule::MacCorrelation;
+  return o;
+}
+
+std::string ReductionFlags::firstGiven() const {
+  for (const CLI::Option* flag : flags_)
+    if (flag->count() > 0)
+      return flag->get_name();
+  return std::string();
+}
+
+void ReducedModelFlags::addTo(CLI::App* command) {
+  command
+      ->add_option("--reduced", reduced_file_,
+                   "reduced model from `tvd reduce --out` (.mat) instead of the cache; it keeps "
+                   "the reduction options it was made with")
+      ->check(CLI::ExistingFile);
+  command->add_option(
+      "--cache-dir", cache_dir_,
+      "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics; not used with --reduced)");
+  reduction_.addTo(command);
+}
+
+void ReducedModelFlags::check(const std::string& command, const std::string& model) const {
+  const std::string flag = reduction_.firstGiven();
+  if (!reduced_file_.empty() && model == "full")
+    throw InputError(command + ": --reduced " + reduced_file_ +
+                     " is a reduced model; it cannot be used with --model full");
+  if (!reduced_file_.empty() && !flag.empty())
+    throw InputError(command + ": " + flag + " is a reduction option; --reduced " + reduced_file_ +
+                     " was reduced with its own (run tvd reduce again to change them)");
+  if (model == "full" && !flag.empty())
+    throw InputError(command + ": " + flag + " applies to --model reduced only");
+  reduction_.options(command);  // --mac-threshold with --rule band
+}
+
+const char* sourceName(ReducedModelSource::Kind kind) {
+  switch (kind) {
+    case ReducedModelSource::Kind::Cache:
+      return "cache";
+    case ReducedModelSource::Kind::File:
+      return "file";
+    case ReducedModelSource::Kind::Computed:
+      break;
+  }
+  return "computed";
+}
+
+namespace {
+
+ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& description,
+                                   vehicle::Variant variant, bool variant_given,
+                                   const std::string& command, const std::string& file) {
+  ReducedModelSource s;
+  s.kind = ReducedModelSource::Kind::File;
+  s.file = file;
+  const std::string again = "; run tvd reduce again";
+  try {
+    s.model = reduction::loadReducedModel(file, vehicle::descriptionHashHex(description));
+  } catch (const reduction::StaleCacheError& e) {
+    throw InputError(e.what() + again);
+  }
+  if (!reduction::parseReductionKey(s.model.reduction, &s.variant, &s.options))
+    throw InputError(file + ": its reduction '" + s.model.reduction +
+                     "' is not one tvd reduce writes" + again);
+  if (variant_given && s.variant != variant)
+    throw InputError(command + ": --reduced " + file + " is the " +
+                     vehicle::variantName(s.variant) + " variant, --variant is " +
+                     vehicle::variantName(variant));
+  return s;
+}
+
+}  // namespace
+
+ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& description,
+                                      vehicle::Variant variant, bool variant_given,
+                                      const std::string& command, const ReducedModelFlags& flags) {
+  if (!flags.reducedFile().empty())
+    return loadReducedFile(description, variant, variant_given, command, flags.reducedFile());
+  ReducedModelSource s;
+  s.variant = variant;
+  s.options = flags.reduction().options(command);
+  reduction::VehicleReductionReport report;
+  s.model = reduction::loadOrReduceVehicle(
+      description, variant, flags.cacheDir().empty() ? defaultCacheDir() : flags.cacheDir(),
+      s.options, &report);
+  s.kind = report.from_cache ? ReducedModelSource::Kind::Cache : ReducedModelSource::Kind::Computed;
+  if (report.cache_error.empty())
+    s.file = report.cache_file;
+  return s;
+}
+
+void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& s) {
+  const reduction::VehicleReductionOptions& o = s.options;
+  json.beginObject().field("source", sourceName(s.kind));
+  if (!s.file.empty())
+    json.field("file", s.file);
+  json.field("variant", vehicle::variantName(s.variant))
+      .field("rule", o.rule == reduction::VehicleModeRule::Band ? "band" : "mac")
+      .field("band_hz", o.band_hz)
+      .field("global_modes", o.global_modes)
+      .field("mac_threshold", o.mac_threshold)
+      .field("mogesec_masters", o.mogesec_masters)
+      .field("mode_count", o.mode_count)
+      .field("selected_global_modes", static_cast<long long>(s.model.selected_modes.size()))
+      .field("fixed_interface_modes", static_cast<long long>(s.model.modeCount()))
+      .field("master_dofs", static_cast<long long>(s.model.masterCount()))
+      .field("reduced_dofs", static_cast<long long>(s.model.size()))
+      .field("full_dofs", static_cast<long long>(s.model.full_dof_count))
+      .field("created_utc", s.model.created_utc)
+      .field("creator", s.model.creator)
+      .endObject();
+}
+
+std::string describeReduction(const ReducedModelSource& s) {
+  const reduction::VehicleReductionOptions& o = s.options;
+  std::ostringstream text;
+  text << "rule " << (o.rule == reduction::VehicleModeRule::Band ? "band" : "mac") << ", 0-"
+       << o.band_hz << " Hz, " << s.model.selected_modes.size() << " global modes -> "
+       << s.model.modeCount() << " fixed-interface modes, " << s.model.masterCount()
+       << " masters; ";
+  switch (s.kind) {
+    case ReducedModelSource::Kind::File:
+      text << "from " << s.file;
+      break;
+    case ReducedModelSource::Kind::Cache:
+      text << "cached";
+      break;
+    case ReducedModelSource::Kind::Computed:
+      text << "computed";
+      break;
+  }
+  return text.str();
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
