@@ -183,6 +183,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("reduction/mac_threshold", "must be <= 1");
   r.mogesec_masters = in.integer("reduction/mogesec_masters", r.mogesec_masters, 0);
   r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0);
+  p.reduced_model = in.string("reduced_model", "");
   return p;
 }
 

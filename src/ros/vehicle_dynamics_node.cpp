@@ -10,6 +10,7 @@
 #include <pthread.h>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
@@ -140,8 +141,11 @@ void VehicleDynamicsNode::loadVehicle() {
       throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
                            "' (" + known + " in " + params_.vehicle +
                            "); set ~comfort_point (launch argument comfort_point) to one of these");
-    const reduction::ReducedModel model = reduction::loadOrReduceVehicle(
-        description, params_.variant, params_.cache_dir, params_.reduction_options, &report_);
+    const reduction::ReducedModel model =
+        params_.reduced_model.empty()
+            ? reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,
+                                             params_.reduction_options, &report_)
+            : loadGivenModel(description);
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
                                                params_.vehicle_options);
     model_dofs_ = model.size();
@@ -152,6 +156,17 @@ void VehicleDynamicsNode::loadVehicle() {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }
   load_seconds_ = secondsSince(start);
+  if (!params_.reduced_model.empty()) {
+    cached_ = true;  // nothing to cache: the file is the model
+    ROS_INFO(
+        "vehicle_dynamics_node: loaded the reduced %s model of '%s' from ~reduced_model %s in "
+        "%.3f s: %ld DOFs, %ld road inputs, %ld outputs (reduction %s; ~reduction/* not used)",
+        vehicle::variantName(params_.variant), params_.vehicle.c_str(),
+        params_.reduced_model.c_str(), load_seconds_, static_cast<long>(model_dofs_),
+        static_cast<long>(model_inputs_), static_cast<long>(model_outputs_),
+        given_reduction_.c_str());
+    return;
+  }
   // loadOrReduceVehicle() still builds when the cache cannot be written, and says why.
   cached_ = report_.from_cache || report_.cache_error.empty();
   not_cached_reason_ = report_.cache_error;
@@ -174,6 +189,43 @@ void VehicleDynamicsNode::loadVehicle() {
   }
   if (!report_.cache_note.empty())
     ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
+}
+
+// ~reduced_model: a file of `tvd reduce --out`, checked as the cache is (complete MAT file,
+// checksum, format and software version, the description's hash) and holding the ~variant. It is
+// the user's explicit choice, so a file that fails a check stops the node instead of being
+// rebuilt behind their back; the message says how to make a good one.
+reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
+    const vehicle::VehicleDescription& description) {
+  const std::string param = private_nh_.resolveName("reduced_model");
+  const std::string& file = params_.reduced_model;
+  const std::string again = "; write it again with `tvd reduce --vehicle " + params_.vehicle +
+                            " --variant " + vehicle::variantName(params_.variant) +
+                            " --out FILE.mat`, or leave " + param + " unset to use the cache";
+  reduction::ReducedModel model;
+  try {
+    model = reduction::loadReducedModel(file, vehicle::descriptionHashHex(description));
+  } catch (const reduction::StaleCacheError& e) {
+    throw ParameterError(param + ": " + e.what() + again);
+  }
+  vehicle::Variant variant = params_.variant;
+  reduction::VehicleReductionOptions options;
+  if (!reduction::parseReductionKey(model.reduction, &variant, &options))
+    throw ParameterError(param + ": " + file + ": its reduction '" + model.reduction +
+                         "' is not one tvd reduce writes" + again);
+  if (variant != params_.variant)
+    throw ParameterError(param + ": " + file + " holds the " + vehicle::variantName(variant) +
+                         " variant, " + private_nh_.resolveName("variant") + " is " +
+                         vehicle::variantName(params_.variant) + " (launch argument variant)");
+  given_reduction_ = model.reduction;
+  report_ = {};
+  report_.from_cache = true;  // loaded, not built: what the diagnostics report of a cache hit
+  report_.cache_file = file;
+  report_.cache_note = "~reduced_model " + file + " (reduction " + model.reduction + ")";
+  report_.full_dofs = model.full_dof_count;
+  report_.reduced_dofs = model.size();
+  report_.flexible_modes = static_cast<int>(model.modeCount());
+  return model;
 }
 
 void VehicleDynamicsNode::setUpFrames() {
@@ -750,7 +802,9 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
 }
 
 void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status) {
-  if (report_.from_cache) {
+  if (!params_.reduced_model.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "loaded from ~reduced_model");
+  } else if (report_.from_cache) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "loaded from cache");
   } else if (cached_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "built and cached");

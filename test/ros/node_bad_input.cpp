@@ -6,8 +6,12 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
+#include <vector>
 
 #include <geometry_msgs/AccelStamped.h>
 #include <geometry_msgs/TwistStamped.h>
@@ -237,6 +241,110 @@ TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
   EXPECT_NE(run.output.find("WARN"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("not cached: "), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find("built and cached"), std::string::npos) << run.output;
+}
+
+// The tracked model the fixture's node cached with the default reduction options:
+// cache_dir/tracked_<description hash>.mat (other options add a second suffix). The newest such
+// file: the directory outlives test runs, and files of older descriptions stay behind. Waits.
+std::string defaultTrackedCacheFile(const std::string& cache_dir) {
+  std::string found;
+  test::spinUntil(
+      [&] {
+        std::error_code error;
+        std::filesystem::file_time_type newest{};
+        for (const auto& entry : std::filesystem::directory_iterator(cache_dir, error)) {
+          const std::string name = entry.path().filename().string();
+          if (name.rfind("tracked_", 0) == 0 && name.size() > 12 &&
+              name.compare(name.size() - 4, 4, ".mat") == 0 &&
+              name.find('_', 8) == std::string::npos &&
+              (found.empty() || entry.last_write_time() > newest)) {
+            found = entry.path().string();
+            newest = entry.last_write_time();
+          }
+        }
+        return !found.empty();
+      },
+      120.0);
+  return found;
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+// ~reduced_model runs a `tvd reduce --out` file instead of the cache; the cache's own file is one.
+TEST(NodeReducedModel, GivenFileIsRunAndNamed) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const std::string file = defaultTrackedCacheFile(cache_dir);
+  ASSERT_FALSE(file.empty()) << "no tracked model in " << cache_dir;
+  const std::string empty_cache = cache_dir + "_unused";
+  std::filesystem::remove_all(empty_cache);
+  // The node keeps running (killed by the timeout, 124) and never reduces into the cache. Its
+  // INFO lines go to stdout, a pipe here: line-buffered, or the kill would lose them.
+  setenv("ROSCONSOLE_STDOUT_LINE_BUFFERED", "1", 1);
+  const NodeRun run = runNode("__name:=given_model _vehicle:=" + vehicle +
+                                  " _variant:=tracked _cache_dir:=" + empty_cache +
+                                  " _reduced_model:=" + file,
+                              timeout);
+  EXPECT_EQ(run.exit_status, 124) << run.output;
+  EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("from ~reduced_model " + file), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(empty_cache)) << "the node reduced into the cache";
+}
+
+// A given file that fails a check stops the node with one FATAL line naming the parameter and
+// the file, and how to write a good one; it is never silently rebuilt.
+TEST(NodeReducedModel, BadFileStopsTheNodeNamingIt) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const std::string file = defaultTrackedCacheFile(cache_dir);
+  ASSERT_FALSE(file.empty()) << "no tracked model in " << cache_dir;
+  const std::string bytes = readFile(file);
+  const std::string truncated = cache_dir + "/truncated_copy.mat";
+  writeFile(truncated, bytes.substr(0, bytes.size() / 2));
+  // Another description: the same vehicle with a heavier hull.
+  std::string description = readFile(vehicle);
+  const std::string mass = "mass: {value: 30300";
+  ASSERT_NE(description.find(mass), std::string::npos);
+  description.replace(description.find(mass), mass.size(), "mass: {value: 31300");
+  const std::string heavier = cache_dir + "/heavier_hull.yaml";
+  writeFile(heavier, description);
+
+  struct Case {
+    std::string name, vehicle, variant, file, says;
+  };
+  const std::vector<Case> cases = {
+      {"truncated_model", vehicle, "tracked", truncated, truncated + ": "},
+      {"missing_model", vehicle, "tracked", cache_dir + "/none.mat", cache_dir + "/none.mat: "},
+      {"other_description", heavier, "tracked", file, "reduced from another description"},
+      {"other_variant", vehicle, "untracked", file,
+       file + " holds the tracked variant, /other_variant/variant is untracked"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const NodeRun run = runNode("__name:=" + c.name + " _vehicle:=" + c.vehicle + " _variant:=" +
+                                    c.variant + " _cache_dir:=" + cache_dir +
+                                    " _reduced_model:=" + c.file,
+                                timeout);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("/" + c.name + "/reduced_model: "), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(c.says), std::string::npos) << run.output;
+    if (c.name != "other_variant")
+      EXPECT_NE(run.output.find("--out FILE.mat`, or leave /" + c.name + "/reduced_model unset"),
+                std::string::npos)
+          << run.output;
+  }
 }
 
 }  // namespace

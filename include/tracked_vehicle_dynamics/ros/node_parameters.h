@@ -28,6 +28,9 @@ struct NodeParameters {
   std::string cache_dir;  ///< ~cache_dir; default $ROS_HOME/tracked_vehicle_dynamics (~/.ros/...)
   OnlineVehicleOptions vehicle_options;  ///< ~rate, ~method, ~hold, ~lateral_offset, ...
   reduction::VehicleReductionOptions reduction_options;  ///< ~reduction/*
+  /// ~reduced_model: a file written by `tvd reduce --out`, run instead of the cache (its own
+  /// reduction options replace ~reduction/*); empty: the cache.
+  std::string reduced_model;
   double publish_rate = 0.0;                             ///< ~publish_rate [Hz], default ~rate
   double comfort_rate = 10.0;                            ///< ~comfort_rate [Hz]
   double max_speed = 30.0;          ///< ~max_speed [m/s]; faster speed messages are rejected

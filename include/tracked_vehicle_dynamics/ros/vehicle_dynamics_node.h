@@ -102,6 +102,7 @@ class VehicleDynamicsNode {
   };
 
   void loadVehicle();
+  reduction::ReducedModel loadGivenModel(const vehicle::VehicleDescription& description);
   void setUpFrames();
   void onTerrain(const TerrainProfile::ConstPtr& msg);
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
@@ -150,6 +151,7 @@ class VehicleDynamicsNode {
   std::unique_ptr<OnlineVehicle> vehicle_;
   reduction::VehicleReductionReport report_;
   double load_seconds_ = 0.0;
+  std::string given_reduction_;  ///< the reduction key of ~reduced_model's file, when given
   DofIndex model_dofs_ = 0, model_inputs_ = 0, model_outputs_ = 0;
   std::string model_damping_;
   std::vector<std::size_t> published_points_;  // indices into geometry().points, on /tf
