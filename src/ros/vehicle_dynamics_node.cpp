@@ -217,6 +217,14 @@ reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
     throw ParameterError(param + ": " + file + " holds the " + vehicle::variantName(variant) +
                          " variant, " + private_nh_.resolveName("variant") + " is " +
                          vehicle::variantName(params_.variant) + " (launch argument variant)");
+  // tvd frf|simulate refuse reduction options with --reduced. The stock parameter file sets
+  // every ~reduction/* to its default, so only values changed from the defaults are taken as
+  // asked for; they are reported when the file was reduced otherwise.
+  const std::string asked = reduction::reductionKey(variant, params_.reduction_options);
+  if (asked != model.reduction && asked != reduction::reductionKey(variant, {}))
+    ROS_WARN("vehicle_dynamics_node: %s: ~reduction/* ('%s') differ from the reduction of %s "
+             "('%s'); the file's model runs and ~reduction/* are not used",
+             param.c_str(), asked.c_str(), file.c_str(), model.reduction.c_str());
   given_reduction_ = model.reduction;
   report_ = {};
   report_.from_cache = true;  // loaded, not built: what the diagnostics report of a cache hit
@@ -399,6 +407,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   recent_patches_.clear();
   recent_speed_arrival_ = ros::WallTime();
   std::ostringstream text;
+  text.precision(10);  // the default 6 digits would print station 123456.7 m as 123457
   text << "at station " << request.station << " m, speed " << request.speed
        << " m/s, in static equilibrium ";
   if (terrain == ResetTerrain::Clear)

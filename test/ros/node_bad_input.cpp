@@ -290,13 +290,20 @@ TEST(NodeReducedModel, GivenFileIsRunAndNamed) {
   // The node keeps running (killed by the timeout, 124) and never reduces into the cache. Its
   // INFO lines go to stdout, a pipe here: line-buffered, or the kill would lose them.
   setenv("ROSCONSOLE_STDOUT_LINE_BUFFERED", "1", 1);
+  // ~reduction/band_hz other than the file's: the file's model runs, and a WARN says so (tvd
+  // frf|simulate refuse a reduction option with --reduced).
   const NodeRun run = runNode("__name:=given_model _vehicle:=" + vehicle +
                                   " _variant:=tracked _cache_dir:=" + empty_cache +
-                                  " _reduced_model:=" + file,
+                                  " _reduced_model:=" + file + " _reduction/band_hz:=40.0",
                               timeout);
   EXPECT_EQ(run.exit_status, 124) << run.output;
   EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("from ~reduced_model " + file), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("band_hz 40; "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("differ from the reduction of " + file + " ('variant tracked; rule "
+                            "mac; global_modes 40; band_hz 30; "),
+            std::string::npos)
+      << run.output;
   EXPECT_FALSE(std::filesystem::exists(empty_cache)) << "the node reduced into the cache";
 }
 
