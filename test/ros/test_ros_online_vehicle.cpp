@@ -312,6 +312,32 @@ TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
   EXPECT_LT((vehicle.hullDisplacement() - rest).cwiseAbs().maxCoeff(), kAtRest);
 }
 
+// resetTo(s, v > 0, Keep): the first step interpolates from w = [u; u'] with u' = v dh/dx, as a
+// step at s samples it, and the state is the equilibrium on u alone (q0' = 0). The front contact
+// (x = +1) at 2.525 m is mid-cell on the bump's rising flank: bilinear, u = the mean of the
+// samples at 2.5 and 2.55 m and dh/dx = their difference / 0.05 m; the rear one is on flat ground.
+TEST(OnlineVehicle, ResetToAtASpeedStartsFromTheSampledInputRate) {
+  const reduction::ReducedModel model = test::toyModel();
+  OnlineVehicle vehicle(model, test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  const double v = 4.0;  // [m/s]
+  const auto h = [](double x) { return 0.05 * (1.0 - std::cos(M_PI * (x - 2.0))); };
+  EXPECT_EQ(vehicle.resetTo(1.525, v, ResetTerrain::Keep), 0);
+  const Vector& w = vehicle.simulator().input();
+  ASSERT_EQ(w.size(), 4);
+  const double rate = v * (h(2.55) - h(2.5)) / 0.05;
+  ASSERT_GT(rate, 0.5);  // [m/s]: a sampler that dropped u' fails below
+  EXPECT_NEAR(w(0), 0.5 * (h(2.5) + h(2.55)), 1e-12);
+  EXPECT_NEAR(w(1), 0.0, 1e-12);
+  EXPECT_NEAR(w(2), rate, 1e-8);  // central difference of +-1e-6 m: rounding / 2e-6
+  EXPECT_NEAR(w(3), 0.0, 1e-12);
+  const Vector z0 = dynamics::staticEquilibrium(model.system, w.head(2), model.gravity_load);
+  EXPECT_LT((vehicle.simulator().state() - z0).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(vehicle.speed(), v);
+}
+
 #if defined(__GLIBC__)
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
