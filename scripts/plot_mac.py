@@ -93,8 +93,8 @@ def band_edges(ax, f_untracked, f_tracked, f_max):
         if inside == frequencies.size:
             continue
         line(inside - 0.5, color="tab:blue", linestyle="--", linewidth=1)
-        if place == "x":
-            ax.text(inside - 0.3, frequencies.size - 0.8, f"> {f_max:g} Hz", color="tab:blue",
+        if place == "x":  # in the top image row: the y axis counts the tracked modes
+            ax.text(inside - 0.3, f_tracked.size - 0.8, f"> {f_max:g} Hz", color="tab:blue",
                     fontsize=7, va="top")
         else:
             ax.text(0.2, inside - 0.3, f"> {f_max:g} Hz",

@@ -261,6 +261,9 @@ class PlotScriptsTest(unittest.TestCase):
         self.assertEqual(len(fig.axes[0].lines), 2)
         self.assertEqual(vertical, [3.5])  # between image columns 3 (mode 4) and 4 (mode 5)
         self.assertEqual(horizontal, [4.5])
+        # The vertical edge's label hangs from the top image row (8 tracked modes, not 6).
+        self.assertEqual(sorted(t.get_position() for t in fig.axes[0].texts),
+                         [(0.2, 4.7), (3.7, 7.2)])
         # every mode inside: no edge drawn
         fig = plot_mac.plot_matrix(untracked, tracked, mac, 0.7, (f_untracked, f_tracked), 50.0)
         self.assertEqual(len(fig.axes[0].lines), 0)
