@@ -292,6 +292,16 @@ std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant
   return (std::filesystem::path(cache_dir) / (name + ".mat")).string();
 }
 
+VehicleModelFile loadVehicleModelFile(const std::string& path,
+                                      const vehicle::VehicleDescription& description) {
+  VehicleModelFile f;
+  f.model = loadReducedModel(path, vehicle::descriptionHashHex(description));
+  if (!parseReductionKey(f.model.reduction, &f.variant, &f.options))
+    throw StaleCacheError(path + ": its reduction '" + f.model.reduction +
+                          "' is not one tvd reduce writes");
+  return f;
+}
+
 ReducedModel loadOrReduceVehicle(const std::string& vehicle_file, vehicle::Variant variant,
                                  const std::string& cache_dir,
                                  const VehicleReductionOptions& options,

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <ctime>
 #include <sstream>
+#include <utility>
 
 #include <pthread.h>
 
@@ -202,17 +203,14 @@ reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
   const std::string again = "; write it again with `tvd reduce --vehicle " + params_.vehicle +
                             " --variant " + vehicle::variantName(params_.variant) +
                             " --out FILE.mat`, or leave " + param + " unset to use the cache";
-  reduction::ReducedModel model;
+  reduction::VehicleModelFile loaded;
   try {
-    model = reduction::loadReducedModel(file, vehicle::descriptionHashHex(description));
+    loaded = reduction::loadVehicleModelFile(file, description);
   } catch (const reduction::StaleCacheError& e) {
     throw ParameterError(param + ": " + e.what() + again);
   }
-  vehicle::Variant variant = params_.variant;
-  reduction::VehicleReductionOptions options;
-  if (!reduction::parseReductionKey(model.reduction, &variant, &options))
-    throw ParameterError(param + ": " + file + ": its reduction '" + model.reduction +
-                         "' is not one tvd reduce writes" + again);
+  const reduction::ReducedModel& model = loaded.model;
+  const vehicle::Variant variant = loaded.variant;
   if (variant != params_.variant)
     throw ParameterError(param + ": " + file + " holds the " + vehicle::variantName(variant) +
                          " variant, " + private_nh_.resolveName("variant") + " is " +
@@ -233,7 +231,7 @@ reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
   report_.full_dofs = model.full_dof_count;
   report_.reduced_dofs = model.size();
   report_.flexible_modes = static_cast<int>(model.modeCount());
-  return model;
+  return std::move(loaded.model);
 }
 
 void VehicleDynamicsNode::setUpFrames() {

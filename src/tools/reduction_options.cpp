@@ -105,13 +105,13 @@ ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& descriptio
   s.file = file;
   const std::string again = "; run tvd reduce again";
   try {
-    s.model = reduction::loadReducedModel(file, vehicle::descriptionHashHex(description));
+    reduction::VehicleModelFile loaded = reduction::loadVehicleModelFile(file, description);
+    s.model = std::move(loaded.model);
+    s.variant = loaded.variant;
+    s.options = loaded.options;
   } catch (const reduction::StaleCacheError& e) {
     throw InputError(e.what() + again);
   }
-  if (!reduction::parseReductionKey(s.model.reduction, &s.variant, &s.options))
-    throw InputError(file + ": its reduction '" + s.model.reduction +
-                     "' is not one tvd reduce writes" + again);
   if (variant_given && s.variant != variant)
     throw InputError(command + ": --reduced " + file + " is the " +
                      vehicle::variantName(s.variant) + " variant, --variant is " +

@@ -71,7 +71,7 @@ TEST(ReductionCache, ReductionKeyRoundTrips) {
       EXPECT_FALSE(tvd::reduction::parseReductionKey(key + ";", &parsed_variant, &parsed));
     }
   const std::string good = tvd::reduction::reductionKey(tvd::vehicle::Variant::Tracked, {});
-  for (const std::string bad :
+  for (const std::string& bad :
        {std::string(), std::string("variant tracked; modes 4"),
         std::string("variant flying") + good.substr(15),
         std::string("variant tracked; rule all") + good.substr(good.find("; global_modes")),

@@ -347,10 +347,11 @@ TEST(NodeReducedModel, BadFileStopsTheNodeNamingIt) {
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("/" + c.name + "/reduced_model: "), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(c.says), std::string::npos) << run.output;
-    if (c.name != "other_variant")
+    if (c.name != "other_variant") {
       EXPECT_NE(run.output.find("--out FILE.mat`, or leave /" + c.name + "/reduced_model unset"),
                 std::string::npos)
           << run.output;
+    }
   }
 }
 

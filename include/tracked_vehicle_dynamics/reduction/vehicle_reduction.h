@@ -41,6 +41,21 @@ std::string reductionKey(vehicle::Variant variant, const VehicleReductionOptions
 bool parseReductionKey(const std::string& key, vehicle::Variant* variant,
                        VehicleReductionOptions* options);
 
+/// A reduced vehicle model read from a file the user names (`tvd reduce --out`, or a cache file),
+/// with the variant and options its reduction key records.
+struct VehicleModelFile {
+  ReducedModel model;
+  vehicle::Variant variant = vehicle::Variant::Tracked;
+  VehicleReductionOptions options;
+};
+
+/// Loads `path` with the cache's checks (complete MAT file, checksum, format and software
+/// version, the hash of `description`) and parses its reduction key. Throws StaleCacheError,
+/// whose message starts with the file name and says what is wrong, also for a key that
+/// reductionKey() does not write; callers append how to make a good file.
+VehicleModelFile loadVehicleModelFile(const std::string& path,
+                                      const vehicle::VehicleDescription& description);
+
 /// Output rows of every reduced vehicle model, in this order:
 ///   "hull ux", "hull uy", "hull uz", "hull rx", "hull ry", "hull rz"   (hull CoG node)
 ///   "<wheel name> uz" for every road wheel (e.g. "road_wheel_left_1 uz")
