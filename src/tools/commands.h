@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -53,6 +54,18 @@ inline CLI::Validator numberIn(double lo, double hi, const std::string& unit = "
         return std::string();
       },
       "NUMBER");
+}
+/// An integer in [0, hi], compared as an integer: a double would round 2^53 + 1 down to 2^53 and
+/// let it through.
+inline CLI::Validator unsignedIn(std::uint64_t hi) {
+  return CLI::Validator(
+      [hi](std::string& text) -> std::string {
+        std::uint64_t v = 0;
+        if (!CLI::detail::lexical_cast(text, v) || v > hi)
+          return "must be an integer in [0, " + std::to_string(hi) + "], got " + text;
+        return std::string();
+      },
+      "UINT");
 }
 inline CLI::Validator finiteNumber() {
   return finiteNumberWhere([](double) { return true; }, "a finite number", "FINITE");

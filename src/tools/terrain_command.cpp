@@ -122,7 +122,7 @@ void registerTerrainCommand(CLI::App& app) {
             ->check(positiveNumber()),
         // Up to 2^53: every seed is then exact in the JSON summary (a double in most readers).
         cmd->add_option("--seed", opt->seed, "random road: seed of the phases, 0 .. 2^53 (default 1)")
-            ->check(numberIn(0.0, 9007199254740992.0)),
+            ->check(unsignedIn(std::uint64_t{1} << 53)),
         cmd->add_flag("--independent-sides", opt->independent_sides,
                       "random road: left and right halves independent (default: one profile across the width)"),
         cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m] (default 5)")

@@ -733,6 +733,11 @@ class TvdCliTest(unittest.TestCase):
                                 "--max-frequency requires --model")
         self.assert_input_error(["terrain", "--iso8608", "C", "--seed", "-1", "--out",
                                  self.path("t.csv")], "--seed", "[0, 9007199254740992]")
+        # 2^53 + 1 is one above the bound, though as a double it rounds down to 2^53.
+        self.assert_input_error(["terrain", "--iso8608", "C", "--seed", "9007199254740993",
+                                 "--out", self.path("t.csv")], "--seed", "[0, 9007199254740992]")
+        self.tvd("terrain", "--iso8608", "C", "--seed", "9007199254740992", "--length", "20",
+                 "--out", self.path("t.csv"))
         self.assert_input_error(["terrain", "--iso8608", "", "--out", self.path("t.csv")],
                                 "--iso8608 must be one road class A..H")
         self.assert_input_error(["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--model",
