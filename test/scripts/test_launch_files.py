@@ -37,6 +37,18 @@ def params(launch_file, *args):
     return {key[len(NODE) + 1:]: value for key, value in dumped.items() if key.startswith(NODE + "/")}
 
 
+def cleared_namespaces(launch_file):
+    """The namespaces roslaunch deletes from the master before setting the launch's parameters."""
+    code = ("import sys, rospkg, roslaunch.config\n"
+            "path = rospkg.RosPack().get_path(sys.argv[1]) + '/launch/' + sys.argv[2]\n"
+            "print('\\n'.join(roslaunch.config.load_config_default([path], None).clear_params))\n")
+    result = subprocess.run([ENV_SH, "/usr/bin/python3", "-c", code, PACKAGE, launch_file],
+                            capture_output=True, text=True, timeout=120)
+    if result.returncode != 0:
+        raise AssertionError(f"loading {launch_file} failed:\n{result.stdout}\n{result.stderr}")
+    return result.stdout.split()
+
+
 class LaunchFilesTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -102,6 +114,12 @@ class LaunchFilesTest(unittest.TestCase):
         p = params("replay_track.launch")
         self.assertEqual(p["comfort_point"], "crew_seat")
         self.assertNotIn("points", p)
+
+    def test_parameters_of_an_earlier_launch_are_cleared(self):
+        # Without clear_params a parameter the launch does not set (reduced_model, cache_dir,
+        # points: not in the parameter file) would keep an earlier launch's value on the master.
+        for launch_file in ("vehicle_dynamics.launch", "replay_track.launch"):
+            self.assertEqual(cleared_namespaces(launch_file), [NODE + "/"], launch_file)
 
     def test_replay_track_records_the_static_frames(self):
         recorder = roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch").split()
