@@ -10,6 +10,9 @@ PACKAGES=(
   ros-message-generation libstd-msgs-dev libgeometry-msgs-dev libstd-srvs-dev
   libdiagnostic-updater-dev libdiagnostic-msgs-dev libtf2-msgs-dev libros-rosgraph-msgs-dev python3-rostest librostest-dev tf2-tools python3-rosbag python3-roslaunch python3-rostopic
   rosbash  # rosrun (a Recommends of ros-core-dev, which --no-install-recommends leaves out)
+  # the command-line tools load the Python bindings of the types they handle: rosservice call
+  # ~reset (std_srvs/Empty), rostopic echo /diagnostics
+  python3-rosservice python3-std-srvs python3-diagnostic-msgs
   # numerics and I/O
   libeigen3-dev libspectra-dev libsuitesparse-dev libyaml-cpp-dev libmatio-dev libcli11-dev
   # an optimised BLAS for CHOLMOD's supernodal factorisations and dense products (serial: the
