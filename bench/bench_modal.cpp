@@ -109,11 +109,28 @@ double median(std::vector<double> v) {
 
 int main(int argc, char** argv) {
   int repeat = 5, modes = 40, assemblies = 92, nodes_per_link = 15;
-  for (int i = 1; i + 1 < argc; i += 2) {
+  const char* const usage =
+      "usage: bench_modal [--repeat N] [--modes N] [--assemblies N]   (whole numbers >= 1;\n"
+      "defaults 5, 40, 92)\n"
+      "The lowest modes of a beam/spring model shaped like two track chains, beside SciPy's\n"
+      "eigsh on the same K and M (bench/scipy_modal.py).\n";
+  for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--repeat") repeat = std::atoi(argv[i + 1]);
-    else if (a == "--modes") modes = std::atoi(argv[i + 1]);
-    else if (a == "--assemblies") assemblies = std::atoi(argv[i + 1]);
+    if (a == "--help" || a == "-h") {
+      std::fputs(usage, stdout);
+      return 0;
+    }
+    int* value = a == "--repeat" ? &repeat : a == "--modes" ? &modes
+               : a == "--assemblies" ? &assemblies : nullptr;
+    if (value == nullptr) {
+      std::fprintf(stderr, "bench_modal: unexpected argument '%s'\n%s", a.c_str(), usage);
+      return 2;
+    }
+    *value = i + 1 < argc ? std::atoi(argv[++i]) : 0;
+    if (*value < 1) {
+      std::fprintf(stderr, "bench_modal: %s needs a whole number >= 1\n%s", a.c_str(), usage);
+      return 2;
+    }
   }
   const tvd::fem::Model model = makeChainModel(assemblies, nodes_per_link);
   const auto t0 = std::chrono::steady_clock::now();
