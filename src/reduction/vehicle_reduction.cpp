@@ -231,6 +231,10 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   return reduced;
 }
 
+const char* modeRuleName(VehicleModeRule rule) {
+  return rule == VehicleModeRule::Band ? "band" : "mac";
+}
+
 namespace {
 
 /// Every reduction option, the doubles to the last bit (%.17g round-trips).
@@ -239,7 +243,7 @@ std::string optionsText(const VehicleReductionOptions& o) {
   std::snprintf(text, sizeof(text),
                 "rule %s; global_modes %d; band_hz %.17g; mac_threshold %.17g; "
                 "mogesec_masters %d; modes %d",
-                o.rule == VehicleModeRule::Band ? "band" : "mac", o.global_modes, o.band_hz,
+                modeRuleName(o.rule), o.global_modes, o.band_hz,
                 o.mac_threshold, o.mogesec_masters, o.mode_count);
   return text;
 }

@@ -141,12 +141,8 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
     throw InputError("online vehicle: reset station " + std::to_string(station) +
                      " m is not finite");
   }
-  if (!std::isfinite(speed) || speed < 0.0) {
-    throw InputError("online vehicle: reset speed " + std::to_string(speed) +
-                     " m/s must be finite and not negative");
-  }
+  setSpeed(speed);  // validates first: a bad speed throws before anything changes
   station_ = station;
-  speed_ = speed;
   peak_acceleration_ = 0.0;
   int uncovered = 0;
   if (terrain == ResetTerrain::Clear) {

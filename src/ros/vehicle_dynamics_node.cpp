@@ -367,8 +367,7 @@ bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Re
   // Not published here: the current sample's stamp is already out, and tf2 discards a second
   // transform at the same stamp (TF_REPEATED_DATA). The next published sample shows the reset.
   restart();
-  recent_patches_.clear();
-  recent_speed_arrival_ = ros::WallTime();
+  forgetRecentInputs();
   return true;
 }
 
@@ -389,7 +388,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   const ResetTerrain terrain = request.keep_terrain ? ResetTerrain::Keep : ResetTerrain::Clear;
   int uncovered = 0;
   try {
-    uncovered = vehicle_->resetTo(request.station, request.speed, terrain);
+    uncovered = restart(request.station, request.speed, terrain);
   } catch (const std::exception& e) {  // checked above, so not expected
     response.success = false;
     response.message = std::string("~reset_to failed: ") + e.what();
@@ -398,12 +397,9 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   }
   // As ~reset: not published here (the current sample's stamp is already out, and tf2 discards
   // a second transform at it, TF_REPEATED_DATA); the next published sample shows the new state.
-  stopped_by_timeout_ = false;
-  ++events_.resets;
+  forgetRecentInputs();
   // The requested speed counts as a speed message for ~speed_timeout.
   last_speed_time_ = now();
-  recent_patches_.clear();
-  recent_speed_arrival_ = ros::WallTime();
   std::ostringstream text;
   text.precision(10);  // the default 6 digits would print station 123456.7 m as 123457
   text << "at station " << request.station << " m, speed " << request.speed
@@ -421,10 +417,16 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   return true;
 }
 
-void VehicleDynamicsNode::restart() {
-  vehicle_->reset();
+int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terrain) {
+  const int uncovered = vehicle_->resetTo(station, speed, terrain);
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   ++events_.resets;
+  return uncovered;
+}
+
+void VehicleDynamicsNode::forgetRecentInputs() {
+  recent_patches_.clear();
+  recent_speed_arrival_ = ros::WallTime();
 }
 
 VehicleDynamicsNode::~VehicleDynamicsNode() {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <utility>
 
 #include "commands.h"
 #include "reduction_options.h"
@@ -109,7 +110,7 @@ void run(const ReduceOptions& opt) {
         .field("description_hash", model.description_hash);
     if (!opt.out_file.empty()) json.field("out", opt.out_file);
     ReducedModelSource source;
-    source.model = model;
+    source.model = std::move(model);  // not used after the JSON
     source.file = opt.out_file;
     source.variant = variant;
     source.options = options;

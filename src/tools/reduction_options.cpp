@@ -145,7 +145,7 @@ void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& s) {
   if (!s.file.empty())
     json.field("file", s.file);
   json.field("variant", vehicle::variantName(s.variant))
-      .field("rule", o.rule == reduction::VehicleModeRule::Band ? "band" : "mac")
+      .field("rule", reduction::modeRuleName(o.rule))
       .field("band_hz", o.band_hz)
       .field("global_modes", o.global_modes)
       .field("mac_threshold", o.mac_threshold)
@@ -164,7 +164,7 @@ void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& s) {
 std::string describeReduction(const ReducedModelSource& s) {
   const reduction::VehicleReductionOptions& o = s.options;
   std::ostringstream text;
-  text << "rule " << (o.rule == reduction::VehicleModeRule::Band ? "band" : "mac") << ", 0-"
+  text << "rule " << reduction::modeRuleName(o.rule) << ", 0-"
        << o.band_hz << " Hz, " << s.model.selected_modes.size() << " global modes -> "
        << s.model.modeCount() << " fixed-interface modes, " << s.model.masterCount()
        << " masters; ";

@@ -277,14 +277,24 @@ void writeFile(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
 }
 
+// ~reduced_model tests: the tracked model the fixture's node cached is a file of the right kind.
+class NodeReducedModel : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ros::NodeHandle private_nh("~");
+    vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+    cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+    timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+    file = defaultTrackedCacheFile(cache_dir);
+    ASSERT_FALSE(file.empty()) << "no tracked model in " << cache_dir;
+  }
+
+  std::string vehicle, cache_dir, file;
+  int timeout = 0;
+};
+
 // ~reduced_model runs a `tvd reduce --out` file instead of the cache; the cache's own file is one.
-TEST(NodeReducedModel, GivenFileIsRunAndNamed) {
-  ros::NodeHandle private_nh("~");
-  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
-  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
-  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
-  const std::string file = defaultTrackedCacheFile(cache_dir);
-  ASSERT_FALSE(file.empty()) << "no tracked model in " << cache_dir;
+TEST_F(NodeReducedModel, GivenFileIsRunAndNamed) {
   const std::string empty_cache = cache_dir + "_unused";
   std::filesystem::remove_all(empty_cache);
   // The node keeps running (killed by the timeout, 124) and never reduces into the cache. Its
@@ -309,13 +319,7 @@ TEST(NodeReducedModel, GivenFileIsRunAndNamed) {
 
 // A given file that fails a check stops the node with one FATAL line naming the parameter and
 // the file, and how to write a good one; it is never silently rebuilt.
-TEST(NodeReducedModel, BadFileStopsTheNodeNamingIt) {
-  ros::NodeHandle private_nh("~");
-  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
-  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
-  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
-  const std::string file = defaultTrackedCacheFile(cache_dir);
-  ASSERT_FALSE(file.empty()) << "no tracked model in " << cache_dir;
+TEST_F(NodeReducedModel, BadFileStopsTheNodeNamingIt) {
   const std::string bytes = readFile(file);
   const std::string truncated = cache_dir + "/truncated_copy.mat";
   writeFile(truncated, bytes.substr(0, bytes.size() / 2));

@@ -83,6 +83,15 @@ std::vector<TerrainPatch> patches(const terrain::Terrain& t, int per_patch) {
   return out;
 }
 
+/// Drives `vehicle` at 10 m/s over the bump for `steps` steps: a state away from rest.
+void driveOverBump(OnlineVehicle& vehicle, int steps) {
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  vehicle.setSpeed(10.0);
+  for (int k = 0; k < steps; ++k)
+    vehicle.step();
+}
+
 OnlineVehicleOptions options(dynamics::DiscretizationMethod method) {
   OnlineVehicleOptions o;
   o.rate = kRate;
@@ -242,11 +251,7 @@ TEST(OnlineVehicle, UnknownOutputsAreNamed) {
 TEST(OnlineVehicle, ResetReturnsToEquilibriumAtStationZero) {
   OnlineVehicle vehicle(test::toyModel(), test::toyGeometry());
   const Vector6 rest = vehicle.hullDisplacement();
-  for (const TerrainPatch& p : patches(bump(), 50))
-    vehicle.addTerrain(p);
-  vehicle.setSpeed(10.0);
-  for (int k = 0; k < 300; ++k)
-    vehicle.step();
+  driveOverBump(vehicle, 300);
   EXPECT_GT((vehicle.hullDisplacement() - rest).norm(), 1e-4);
   vehicle.reset();
   EXPECT_EQ(vehicle.station(), 0.0);
@@ -264,11 +269,7 @@ TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
   OnlineVehicle vehicle(model, test::toyGeometry(),
                         options(dynamics::DiscretizationMethod::ModalDecoupled));
   const Vector6 rest = vehicle.hullDisplacement();
-  for (const TerrainPatch& p : patches(bump(), 50))
-    vehicle.addTerrain(p);
-  vehicle.setSpeed(10.0);
-  for (int k = 0; k < 100; ++k)
-    vehicle.step();
+  driveOverBump(vehicle, 100);
 
   // Front contact (x = +1) on the bump's crest at 3 m, rear one (x = -1) on flat ground at 1 m.
   EXPECT_EQ(vehicle.resetTo(2.0, 0.0, ResetTerrain::Keep), 0);

@@ -23,6 +23,9 @@ enum class VehicleModeRule {
   Band,
 };
 
+/// "mac" or "band": the rule's name in option values, reduction keys and reports.
+const char* modeRuleName(VehicleModeRule rule);
+
 struct VehicleReductionOptions {
   VehicleModeRule rule = VehicleModeRule::MacCorrelation;
   int global_modes = 40;           ///< modes of each variant computed for MAC (paper: 40)

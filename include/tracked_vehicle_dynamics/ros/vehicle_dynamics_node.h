@@ -126,8 +126,13 @@ class VehicleDynamicsNode {
   ros::Time now() const;
   /// Runs the steps due up to `now` and publishes.
   void advanceTo(const ros::Time& now);
-  /// Vehicle back to equilibrium at station 0, terrain and metrics cleared.
-  void restart();
+  /// A new run: the vehicle restarts (OnlineVehicle::resetTo, by default station 0 on flat
+  /// ground) and the old run's speed timeout is forgotten. Returns the uncovered contacts.
+  int restart(double station = 0.0, double speed = 0.0,
+              ResetTerrain terrain = ResetTerrain::Clear);
+  /// A reset the user asked for (~reset, ~reset_to): the inputs kept for a bag loop belong to
+  /// the old run.
+  void forgetRecentInputs();
   /// Simulated time went back (a bag loop): restart at `now`, re-apply the recent inputs that
   /// belong to the new time (reapplyRecentInputs) and publish the equilibrium.
   void restartAfterJump(const ros::Time& now);
