@@ -22,19 +22,21 @@ echo; echo "== 1. Modes of the un-tracked vehicle (paper Fig. 2a) =="
 tvd modes --vehicle "$VEHICLE" --variant untracked --count 20 --out "$OUT/modes_untracked"
 echo; echo "== 2. Modes of the fully tracked vehicle (paper Fig. 2b) =="
 tvd modes --vehicle "$VEHICLE" --variant tracked --count 40 --out "$OUT/modes_tracked" | head -50
-echo; echo "== 3. MAC correlation between the variants (paper Fig. 9, Table 4) =="
+echo; echo "== 3. The tracked vehicle at rest: wheel loads, ground pressure under the track =="
+tvd statics --vehicle "$VEHICLE" --out "$OUT/ground_loads_tracked.csv" | tail -5
+echo; echo "== 4. MAC correlation between the variants (paper Fig. 9, Table 4) =="
 tvd mac --vehicle "$VEHICLE" --count 40 --out "$OUT/mac"
-echo; echo "== 4. Craig-Bampton reduction of the tracked vehicle (paper Table 5) =="
+echo; echo "== 5. Craig-Bampton reduction of the tracked vehicle (paper Table 5) =="
 tvd reduce --vehicle "$VEHICLE" --variant tracked --out "$OUT/tracked_reduced.mat" | tail -4
-echo; echo "== 5. Long hill at 30 km/h, tracked reduced model (paper §4.2) =="
+echo; echo "== 6. Long hill at 30 km/h, tracked reduced model (paper §4.2) =="
 tvd simulate --vehicle "$VEHICLE" --variant tracked --track long_hill --speed-kmh 30 \
   --cache-dir "$OUT/cache" --out "$OUT/long_hill_30kmh.csv"
-echo; echo "== 6. Comfort FRFs of the tracked vehicle: full vs reduced, and at 30 km/h (paper Figs. 13-16) =="
+echo; echo "== 7. Comfort FRFs of the tracked vehicle: full vs reduced, and at 30 km/h (paper Figs. 13-16) =="
 tvd frf --vehicle "$VEHICLE" --variant tracked --model full --out "$OUT/frf_tracked_full.csv"
 tvd frf --vehicle "$VEHICLE" --variant tracked --cache-dir "$OUT/cache" --out "$OUT/frf_tracked_reduced.csv"
 tvd frf --vehicle "$VEHICLE" --variant tracked --cache-dir "$OUT/cache" --speed-kmh 30 \
   --out "$OUT/frf_tracked_reduced_30kmh.csv" | tail -1
-echo; echo "== 7. Figures (PNG) =="
+echo; echo "== 8. Figures (PNG) =="
 /usr/bin/python3 scripts/plot_mac.py --mac-dir "$OUT/mac" --out "$OUT/mac.png" \
   --freq-out "$OUT/mac_frequencies.png"
 /usr/bin/python3 scripts/plot_frf.py --out "$OUT/frf_tracked.png" --title "tracked vehicle" \
@@ -48,12 +50,12 @@ echo; echo "== 7. Figures (PNG) =="
 tvd terrain --track oop_waves --out "$OUT/oop_waves.csv" > /dev/null
 /usr/bin/python3 scripts/plot_terrain.py --vehicle "$VEHICLE" --out "$OUT/oop_waves_profiles.png" \
   --title "out-of-phase waves under the pad rows (Fig. 17c)" "$OUT/oop_waves.csv"
-echo; echo "== 8. Paper vs ours: every table and Figs. 9-24 (scripts/paper_report.py) =="
+echo; echo "== 9. Paper vs ours: every table and Figs. 9-24 (scripts/paper_report.py) =="
 /usr/bin/python3 scripts/paper_report.py --vehicle "$VEHICLE" --out "$OUT/paper_report" \
   > "$OUT/paper_report.log"
 sed -n '/^## Summary/,/^## Table 4/p' "$OUT/paper_report/report.md" | grep '^\*'
 echo "  full tables: $OUT/paper_report/report.md; figures: $OUT/paper_report/figures/"
-echo; echo "== 9. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
+echo; echo "== 10. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
 SKIP_BUILD=1 OUT="$OUT/ros" scripts/ros_demo.sh
 echo
 echo "Results in $OUT/. Next: source build/devel/setup.bash; rosrun tracked_vehicle_dynamics tvd --help"

@@ -127,6 +127,7 @@ void registerReduceCommand(CLI::App& app);
 void registerSimulateCommand(CLI::App& app);
 void registerFrfCommand(CLI::App& app);
 void registerTerrainCommand(CLI::App& app);
+void registerStaticsCommand(CLI::App& app);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

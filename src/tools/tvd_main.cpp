@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   // Every option's help shows its default value ("[30]"): the subcommands inherit this.
   app.option_defaults()->always_capture_default();
   tvd::tools::registerModesCommand(app);
+  tvd::tools::registerStaticsCommand(app);
   tvd::tools::registerMacCommand(app);
   tvd::tools::registerReduceCommand(app);
   tvd::tools::registerFrfCommand(app);

@@ -91,6 +91,48 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(stored, sorted(m))
         np.testing.assert_allclose(np.ravel(m[stored[0]])[:count], f, rtol=1e-9)
 
+    def test_statics_loads_match_modes_and_files(self):
+        """tvd statics: the same equilibrium as `modes`, wheel and ground loads that balance the
+        weight, the per-assembly CSV/.mat equal to the JSON, and the closed-form NGP."""
+        modes = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "tracked", "--count", "1")
+        csv_file, mat_file = self.path("statics.csv"), self.path("statics.mat")
+        d = self.tvd_json("statics", "--vehicle", VEHICLE, "--out", csv_file)  # tracked by default
+        self.assertEqual(d["variant"], "tracked")
+        s = modes["static"]
+        self.assertAlmostEqual(d["hull_sag_m"], s["hull_sag_m"], delta=1e-12)
+        self.assertAlmostEqual(d["weight_n"] / (d["mass_kg"] * GRAVITY), 1.0, delta=1e-9)
+        np.testing.assert_allclose([w["load_n"] for w in d["road_wheels"]], s["road_wheel_loads_n"],
+                                   rtol=1e-12)
+        self.assertEqual([w["name"] for w in d["road_wheels"]][:2],
+                         ["road_wheel_left_1", "road_wheel_left_2"])
+        loads = np.array([a["load_n"] for a in d["track_assemblies"]])
+        self.assertEqual(len(loads), 60)  # 30 per side on the ground (paper §2)
+        self.assertLess(abs(loads.sum() - d["weight_n"]) / d["weight_n"], 1e-6)
+        np.testing.assert_allclose(d["side_loads_n"], [d["weight_n"] / 2] * 2, rtol=1e-6)
+        self.assertEqual(d["lifting_assemblies"], int((loads < 0).sum()))
+        np.testing.assert_allclose(np.mean([w["peak_pressure_pa"] for w in d["road_wheels"]]),
+                                   d["mean_peak_pressure_pa"], rtol=1e-9)
+        peak = max(a["pressure_pa"] for a in d["track_assemblies"])
+        self.assertEqual(d["peak_assembly_pressure"]["pressure_pa"], peak)
+        # NGP = W / (2 b L): Table 1's track width 0.62 m, the 4,845 mm ground run.
+        self.assertAlmostEqual(d["nominal_ground_pressure_pa"] / (d["weight_n"] / (2 * 0.62 * 4.845)),
+                               1.0, delta=1e-9)
+        header, rows = read_csv(csv_file)
+        self.assertEqual(header, ["side", "assembly", "x_m", "load_n", "inner_pad_n", "outer_pad_n",
+                                  "pressure_pa"])
+        np.testing.assert_allclose(rows[:, 3], loads, rtol=1e-9)
+        np.testing.assert_allclose(rows[:, 4] + rows[:, 5], rows[:, 3], rtol=1e-9, atol=1e-6)
+        self.assertEqual(list(rows[:, 0]), [0.0] * 30 + [1.0] * 30)
+        self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked", "--out", mat_file)
+        m = scipy.io.loadmat(mat_file)
+        self.assertEqual(str(m["variant"][0]), "untracked")
+        self.assertEqual(m["load_n"].shape, (14, 1))
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
+        self.assertIn("nominal ground pressure", text)
+        self.assertIn("road_wheel_right_7", text)
+        self.assert_input_error(["statics", "--vehicle", VEHICLE, "--out", self.path("s.json")],
+                                "must end in .csv or .mat")
+
     def test_node_shapes_recover_the_rigid_hull(self):
         # node_shapes.csv holds every node, slaves included: the crew seat, rigid with the hull,
         # must move as u_G + theta x (p - p_G) with the hull node's six DOFs from shapes.csv.

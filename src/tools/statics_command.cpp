@@ -1,0 +1,172 @@
+// `tvd statics`: the vehicle at rest under gravity (paper §2, issue 3): hull sag and attitude,
+// road-wheel loads, and the ground reaction under every track assembly with the ground-pressure
+// figures (vehicle/ground_pressure.h). Linear statics K x = f_g, no modal solve.
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <unordered_map>
+
+#include "commands.h"
+#include "output_files.h"
+#include "vehicle_analysis.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/vehicle/ground_pressure.h"
+#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+constexpr double kRadToDegree = 57.29577951308232;
+
+struct StaticsOptions {
+  std::string vehicle_file;
+  std::string variant = "tracked";
+  bool json = false;
+  std::string out_file;
+};
+
+const char* sideName(int side) { return side == 0 ? "left" : "right"; }
+
+void run(const StaticsOptions& opt) {
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
+  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  const auto t0 = std::chrono::steady_clock::now();
+  const vehicle::VehicleModel model = vehicle::buildVehicleModel(description, variant);
+  const fem::System system = fem::assemble(model.model);
+  const vehicle::StaticSummary s = vehicle::computeStaticSummary(model, system);
+  const vehicle::GroundPressure g = vehicle::groundPressure(model, description, s);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  const std::unordered_map<NodeId, std::size_t> nodes = model.model.nodeIndex();
+  auto wheelX = [&](const vehicle::WheelStation& w) {
+    return model.model.nodes[nodes.at(w.centre)].position.x();
+  };
+
+  if (!opt.out_file.empty()) {
+    Matrix table(static_cast<Eigen::Index>(g.assemblies.size()), 7);
+    for (std::size_t k = 0; k < g.assemblies.size(); ++k) {
+      const vehicle::AssemblyGroundLoad& a = g.assemblies[k];
+      table.row(static_cast<Eigen::Index>(k)) << a.side, a.assembly, a.x, a.load, a.inner, a.outer,
+          a.pressure;
+    }
+    writeTable(opt.out_file, {"side", "assembly", "x_m", "load_n", "inner_pad_n", "outer_pad_n", "pressure_pa"},
+               table, 10, {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}});
+  }
+  const vehicle::AssemblyGroundLoad* peak =
+      g.peak >= 0 ? &g.assemblies[static_cast<std::size_t>(g.peak)] : nullptr;
+
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", description.name)
+        .field("variant", vehicle::variantName(variant))
+        .field("active_dofs", static_cast<long long>(system.size()))
+        .field("mass_kg", model.model.totalMass())
+        .field("weight_n", s.weight)
+        .field("hull_sag_m", s.hull_sag)
+        .field("hull_pitch_deg", s.hull_pitch * kRadToDegree)
+        .field("hull_roll_deg", s.hull_roll * kRadToDegree)
+        .field("ground_reaction_sum_n", s.ground_reaction)
+        .field("relative_balance_error", s.balanceError())
+        .field("solve_residual", s.residual)
+        .field("side_loads_n", std::vector<double>{g.side_load[0], g.side_load[1]})
+        .field("nominal_ground_pressure_pa", g.nominal_pressure)
+        .field("mean_maximum_pressure_pa", g.mean_maximum_pressure)
+        .field("mean_peak_pressure_pa", g.mean_peak_pressure);
+    json.key("peak_assembly_pressure").beginObject();
+    if (peak)
+      json.field("pressure_pa", peak->pressure).field("side", sideName(peak->side)).field("x_m", peak->x);
+    json.endObject().field("lifting_assemblies", g.lifting);
+    json.key("road_wheels").beginArray();
+    for (std::size_t i = 0; i < model.layout.wheels.size(); ++i) {
+      const vehicle::WheelStation& w = model.layout.wheels[i];
+      json.beginObject()
+          .field("name", w.name)
+          .field("x_m", wheelX(w))
+          .field("load_n", s.wheel_loads[i])
+          .field("peak_pressure_pa", g.wheel_peak_pressure[i])
+          .endObject();
+    }
+    json.endArray().key("track_assemblies").beginArray();
+    for (const vehicle::AssemblyGroundLoad& a : g.assemblies)
+      json.beginObject()
+          .field("name", std::string("track_") + sideName(a.side) + "_" + std::to_string(a.assembly))
+          .field("side", sideName(a.side))
+          .field("assembly", a.assembly)
+          .field("x_m", a.x)
+          .field("load_n", a.load)
+          .field("inner_pad_n", a.inner)
+          .field("outer_pad_n", a.outer)
+          .field("pressure_pa", a.pressure)
+          .endObject();
+    json.endArray().field("seconds", seconds);
+    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    json.endObject();
+    return;
+  }
+
+  std::cout << std::fixed << "model: " << description.name << " (" << vehicle::variantName(variant)
+            << ")   active DOFs: " << system.size() << "   mass: " << std::setprecision(1)
+            << model.model.totalMass() << " kg   weight: " << std::setprecision(2) << s.weight / 1e3
+            << " kN   solve: " << std::setprecision(3) << seconds << " s\n\n"
+            << "hull at rest: sag " << std::setprecision(3) << s.hull_sag * 1e3 << " mm, pitch "
+            << std::setprecision(4) << s.hull_pitch * kRadToDegree << " deg (nose down +), roll "
+            << s.hull_roll * kRadToDegree << " deg (left up +)\n\n"
+            << "road wheels: normal force on the track [kN] (negative: pulling on it, would lift off);\n"
+            << "the largest assembly pressure within half an axle spacing [kPa]\n"
+            << "  wheel                   x [m]   load [kN]   peak pressure under it [kPa]\n";
+  for (std::size_t i = 0; i < model.layout.wheels.size(); ++i) {
+    const vehicle::WheelStation& w = model.layout.wheels[i];
+    std::cout << "  " << std::left << std::setw(20) << w.name << std::right << std::setw(8)
+              << std::setprecision(3) << wheelX(w) << std::setw(12) << std::setprecision(2)
+              << s.wheel_loads[i] / 1e3 << std::setw(20) << std::setprecision(1)
+              << g.wheel_peak_pressure[i] / 1e3 << "\n";
+  }
+  std::cout << "\ntrack assemblies on the ground: vertical reaction [kN] (inner / outer pad row), "
+               "pressure = load / (width x pitch) [kPa]\n"
+            << "  side   assembly    x [m]   load [kN]   inner   outer   pressure [kPa]\n";
+  for (const vehicle::AssemblyGroundLoad& a : g.assemblies)
+    std::cout << "  " << std::left << std::setw(5) << sideName(a.side) << std::right << std::setw(10)
+              << a.assembly << std::setw(9) << std::setprecision(3) << a.x << std::setw(12)
+              << std::setprecision(2) << a.load / 1e3 << std::setw(8) << a.inner / 1e3 << std::setw(8)
+              << a.outer / 1e3 << std::setw(17) << std::setprecision(1) << a.pressure / 1e3 << "\n";
+  std::cout << "\nground reactions " << std::setprecision(1) << s.ground_reaction << " N (left "
+            << g.side_load[0] << ", right " << g.side_load[1] << ") = weight " << s.weight
+            << " N, relative error " << std::scientific << std::setprecision(1) << s.balanceError()
+            << std::fixed << "\n"
+            << "nominal ground pressure W / (2 b L): " << std::setprecision(1)
+            << g.nominal_pressure / 1e3 << " kPa\n"
+            << "mean maximum pressure: " << g.mean_peak_pressure / 1e3
+            << " kPa (mean of the peaks under the wheels); Rowland's empirical estimate "
+            << g.mean_maximum_pressure / 1e3 << " kPa\n";
+  if (peak)
+    std::cout << "largest assembly pressure: " << peak->pressure / 1e3 << " kPa (" << sideName(peak->side)
+              << ", x = " << std::setprecision(3) << peak->x << " m)";
+  std::cout << "; " << g.lifting << " assemblies pulled down (the linear model holds them on the road)\n";
+  if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
+}
+
+}  // namespace
+
+void registerStaticsCommand(CLI::App& app) {
+  auto opt = std::make_shared<StaticsOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "statics", "The vehicle at rest under gravity: hull sag, wheel loads, ground load and pressure under the track");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--variant", opt->variant, "untracked | tracked")
+      ->check(CLI::IsMember({"untracked", "tracked"}));
+  cmd->add_option("--out", opt->out_file,
+                  "CSV (or .mat: one variable per column), one row per assembly on the ground: side "
+                  "(0 left, 1 right), assembly, x_m, load_n, inner_pad_n, outer_pad_n, pressure_pa")
+      ->check(outputFile({".csv", ".mat"}));
+  cmd->add_flag("--json", opt->json, "print a JSON document instead of the tables");
+  cmd->callback([opt]() { run(*opt); });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
