@@ -1,6 +1,7 @@
 // `tvd statics`: the vehicle at rest under gravity (paper §2, issue 3): hull sag and attitude,
 // road-wheel loads, and the ground reaction under every track assembly with the ground-pressure
 // figures (vehicle/ground_pressure.h). Linear statics K x = f_g, no modal solve.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -13,6 +14,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/vehicle/contact_statics.h"
 #include "tracked_vehicle_dynamics/vehicle/ground_pressure.h"
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
 
@@ -26,6 +28,7 @@ constexpr double kRadToDegree = 57.29577951308232;
 struct StaticsOptions {
   std::string vehicle_file;
   std::string variant = "tracked";
+  std::string contact = "unilateral";
   bool json = false;
   std::string out_file;
 };
@@ -36,10 +39,27 @@ void run(const StaticsOptions& opt) {
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const auto t0 = std::chrono::steady_clock::now();
-  const vehicle::VehicleModel model = vehicle::buildVehicleModel(description, variant);
-  const fem::System system = fem::assemble(model.model);
-  const vehicle::StaticSummary s = vehicle::computeStaticSummary(model, system);
+  const vehicle::VehicleModel built = vehicle::buildVehicleModel(description, variant);
+  // Unilateral: the equilibrium of a modified model (the lifted contacts' springs removed).
+  vehicle::ContactStatics contact;
+  const bool unilateral = opt.contact == "unilateral";
+  if (unilateral) {
+    contact = vehicle::computeContactStatics(built);
+  } else {
+    contact.vehicle = built;
+    contact.system = fem::assemble(built.model);
+    contact.summary = vehicle::computeStaticSummary(built, contact.system);
+    contact.iterations = 1;
+  }
+  const vehicle::VehicleModel& model = contact.vehicle;
+  const fem::System& system = contact.system;
+  const vehicle::StaticSummary& s = contact.summary;
   const vehicle::GroundPressure g = vehicle::groundPressure(model, description, s);
+  const auto count = [](const std::vector<bool>& v) {
+    return static_cast<int>(std::count(v.begin(), v.end(), true));
+  };
+  const int pads_lifted = count(contact.pad_lifted);
+  const int wheels_lifted = count(contact.wheel_lifted);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   const std::unordered_map<NodeId, std::size_t> nodes = model.model.nodeIndex();
@@ -55,7 +75,8 @@ void run(const StaticsOptions& opt) {
           a.pressure;
     }
     writeTable(opt.out_file, {"side", "assembly", "x_m", "load_n", "inner_pad_n", "outer_pad_n", "pressure_pa"},
-               table, 10, {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}});
+               table, 10, {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)},
+                           {"contact", opt.contact}});
   }
   const vehicle::AssemblyGroundLoad* peak =
       g.peak >= 0 ? &g.assemblies[static_cast<std::size_t>(g.peak)] : nullptr;
@@ -65,6 +86,10 @@ void run(const StaticsOptions& opt) {
     json.beginObject()
         .field("vehicle", description.name)
         .field("variant", vehicle::variantName(variant))
+        .field("contact", opt.contact)
+        .field("iterations", contact.iterations)
+        .field("lifted_pads", pads_lifted)
+        .field("lifted_wheels", wheels_lifted)
         .field("active_dofs", static_cast<long long>(system.size()))
         .field("mass_kg", model.model.totalMass())
         .field("weight_n", s.weight)
@@ -89,6 +114,7 @@ void run(const StaticsOptions& opt) {
           .field("name", w.name)
           .field("x_m", wheelX(w))
           .field("load_n", s.wheel_loads[i])
+          .field("lifted", unilateral && contact.wheel_lifted[i])
           .field("peak_pressure_pa", g.wheel_peak_pressure[i])
           .endObject();
     }
@@ -113,7 +139,15 @@ void run(const StaticsOptions& opt) {
   std::cout << std::fixed << "model: " << description.name << " (" << vehicle::variantName(variant)
             << ")   active DOFs: " << system.size() << "   mass: " << std::setprecision(1)
             << model.model.totalMass() << " kg   weight: " << std::setprecision(2) << s.weight / 1e3
-            << " kN   solve: " << std::setprecision(3) << seconds << " s\n\n"
+            << " kN   solve: " << std::setprecision(3) << seconds << " s\n";
+  if (unilateral)
+    std::cout << "contacts: unilateral (pads on the road, wheels on the links push but cannot pull): "
+              << pads_lifted << " of " << contact.pad_lifted.size() << " pad soles and "
+              << wheels_lifted << " of " << contact.wheel_lifted.size() << " road wheels lifted, "
+              << contact.iterations << (contact.iterations == 1 ? " solve\n" : " solves\n");
+  else
+    std::cout << "contacts: bilateral (the linear model: the equilibrium the dynamics start from)\n";
+  std::cout << "\n"
             << "hull at rest: sag " << std::setprecision(3) << s.hull_sag * 1e3 << " mm, pitch "
             << std::setprecision(4) << s.hull_pitch * kRadToDegree << " deg (nose down +), roll "
             << s.hull_roll * kRadToDegree << " deg (left up +)\n\n"
@@ -147,7 +181,11 @@ void run(const StaticsOptions& opt) {
   if (peak)
     std::cout << "largest assembly pressure: " << peak->pressure / 1e3 << " kPa (" << sideName(peak->side)
               << ", x = " << std::setprecision(3) << peak->x << " m)";
-  std::cout << "; " << g.lifting << " assemblies pulled down (the linear model holds them on the road)\n";
+  if (unilateral)
+    std::cout << "\n";
+  else
+    std::cout << "; " << g.lifting << " assemblies pulled down (the linear model holds them on the "
+                 "road; --contact unilateral lets them lift)\n";
   if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
 }
 
@@ -164,6 +202,11 @@ void registerStaticsCommand(CLI::App& app) {
                   "CSV (or .mat: one variable per column), one row per assembly on the ground: side "
                   "(0 left, 1 right), assembly, x_m, load_n, inner_pad_n, outer_pad_n, pressure_pa")
       ->check(outputFile({".csv", ".mat"}));
+  cmd->add_option("--contact", opt->contact,
+                  "unilateral: pads and road wheels push but cannot pull, those in tension lift "
+                  "off | bilateral: the linear model, every contact bonded (the equilibrium the "
+                  "dynamics start from, as tvd modes reports)")
+      ->check(CLI::IsMember({"unilateral", "bilateral"}));
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the tables");
   cmd->callback([opt]() { run(*opt); });
 }

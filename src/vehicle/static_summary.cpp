@@ -13,7 +13,11 @@ double StaticSummary::balanceError() const {
 }
 
 StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system) {
-  const fem::StaticResult r = fem::solveStatic(system, system.gravity_load);
+  return staticSummaryOf(vehicle, system, fem::solveStatic(system, system.gravity_load));
+}
+
+StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,
+                              const fem::StaticResult& r) {
   const Vector u = system.dofs.transformation() * r.displacement;
   auto nodal = [&](NodeId id) -> Vector6 {
     return u.segment<kDofsPerNode>(system.dofs.physical(id, 0));
@@ -39,7 +43,7 @@ StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::Syste
     // d = q2 - q1; the wheel load is its downward component.
     const fem::Spring& c = springs[w.contact_spring];
     const Vector6 f = -fem::bushingMatrix(c.stiffness, c.frame) * (nodal(c.n2) - nodal(c.n1));
-    s.wheel_loads.push_back(-f(2));
+    s.wheel_loads.push_back(-f(2) + 0.0);  // + 0.0: a released contact reads 0, not -0
   }
   return s;
 }

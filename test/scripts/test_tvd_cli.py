@@ -96,8 +96,10 @@ class TvdCliTest(unittest.TestCase):
         weight, the per-assembly CSV/.mat equal to the JSON, and the closed-form NGP."""
         modes = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "tracked", "--count", "1")
         csv_file, mat_file = self.path("statics.csv"), self.path("statics.mat")
-        d = self.tvd_json("statics", "--vehicle", VEHICLE, "--out", csv_file)  # tracked by default
+        d = self.tvd_json("statics", "--vehicle", VEHICLE, "--contact", "bilateral",
+                          "--out", csv_file)  # tracked by default
         self.assertEqual(d["variant"], "tracked")
+        self.assertEqual(d["contact"], "bilateral")
         s = modes["static"]
         self.assertAlmostEqual(d["hull_sag_m"], s["hull_sag_m"], delta=1e-12)
         self.assertAlmostEqual(d["weight_n"] / (d["mass_kg"] * GRAVITY), 1.0, delta=1e-9)
@@ -127,11 +129,28 @@ class TvdCliTest(unittest.TestCase):
         m = scipy.io.loadmat(mat_file)
         self.assertEqual(str(m["variant"][0]), "untracked")
         self.assertEqual(m["load_n"].shape, (14, 1))
+        # Unilateral contacts (the default): nothing pulls, the weight is still carried, and the
+        # contacts in tension in the bonded model are the ones that lift.
+        u = self.tvd_json("statics", "--vehicle", VEHICLE)
+        self.assertEqual(u["contact"], "unilateral")
+        pads = np.array([a["load_n"] for a in u["track_assemblies"]])
+        wheels = np.array([w["load_n"] for w in u["road_wheels"]])
+        self.assertGreaterEqual(pads.min(), -1e-6 * u["weight_n"])
+        self.assertGreaterEqual(wheels.min(), -1e-6 * u["weight_n"])
+        self.assertLess(abs(pads.sum() - u["weight_n"]) / u["weight_n"], 1e-6)
+        self.assertEqual(u["lifting_assemblies"], 0)
+        lifted = [w["name"] for w in u["road_wheels"] if w["lifted"]]
+        self.assertEqual(u["lifted_wheels"], len(lifted))
+        self.assertTrue(all(wheels[[w["lifted"] for w in u["road_wheels"]]] == 0.0))
+        bonded = [w["name"] for w in d["road_wheels"] if w["load_n"] < 0]
+        self.assertEqual(sorted(lifted), sorted(bonded))
         text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
         self.assertIn("nominal ground pressure", text)
         self.assertIn("road_wheel_right_7", text)
         self.assert_input_error(["statics", "--vehicle", VEHICLE, "--out", self.path("s.json")],
                                 "must end in .csv or .mat")
+        self.assert_input_error(["statics", "--vehicle", VEHICLE, "--contact", "sticky"],
+                                "--contact", "sticky")
 
     def test_node_shapes_recover_the_rigid_hull(self):
         # node_shapes.csv holds every node, slaves included: the crew seat, rigid with the hull,

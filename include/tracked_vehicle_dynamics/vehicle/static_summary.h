@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
@@ -29,6 +30,11 @@ struct StaticSummary {
 /// Solves the gravity load case of an assembled vehicle model. Throws SolverError if the model
 /// is not supported (a free rigid-body motion).
 StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system);
+
+/// The summary of a solution already computed (`solution` solves `system`, assembled from
+/// `vehicle.model`, under its gravity load).
+StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,
+                              const fem::StaticResult& solution);
 
 }  // namespace vehicle
 }  // namespace tracked_vehicle_dynamics

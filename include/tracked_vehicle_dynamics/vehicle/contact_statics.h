@@ -1,0 +1,40 @@
+// The vehicle at rest with contacts that push but cannot pull. The linear model (paper §2) bonds
+// every pad to the road and every road wheel to its link; in the tracked model the chain then
+// pulls on the road between the wheels and the rearmost wheels pull on the chain (statics of the
+// linear model: doc/vehicle_model.md). Here the pads' ground springs and the wheels' contact
+// patches are unilateral in their normal (fem::solveUnilateralStatic): those in tension are
+// released until the rest carry the vehicle in compression; their tangential ties stay, as the
+// guide horns, sprockets, idlers and rollers do. For ground loads and pressures; the dynamics stay
+// linear about the bonded equilibrium.
+#pragma once
+
+#include <vector>
+
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/fem/unilateral_static.h"
+#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+
+/// The unilateral contacts of a vehicle: every road input's ground spring (pushing its sole up),
+/// then every road wheel's contact patch (pushing the wheel away from the link, along the contact
+/// frame's normal), in VehicleLayout order.
+std::vector<fem::UnilateralSpring> unilateralContacts(const VehicleModel& vehicle);
+
+struct ContactStatics {
+  VehicleModel vehicle;         ///< the model with the released contacts' normal stiffness 0
+  fem::System system;           ///< it, assembled
+  StaticSummary summary;        ///< its equilibrium (pad_loads 0 where a pad has lifted)
+  std::vector<bool> pad_lifted;    ///< per road input
+  std::vector<bool> wheel_lifted;  ///< per road wheel: its patch has left the link
+  int iterations = 0;           ///< solves of the active-set iteration
+};
+
+/// Equilibrium under gravity with unilateral contacts. Throws SolverError as
+/// fem::solveUnilateralStatic does.
+ContactStatics computeContactStatics(const VehicleModel& vehicle);
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

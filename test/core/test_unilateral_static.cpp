@@ -1,0 +1,160 @@
+// Statics with unilateral springs (fem/unilateral_static.h) against a hand-solved lift-off, and the
+// vehicle at rest with pads and wheels that cannot pull (vehicle/contact_statics.h).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/fem/unilateral_static.h"
+#include "tracked_vehicle_dynamics/vehicle/contact_statics.h"
+#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+#ifndef TVD_SOURCE_DIR
+#define TVD_SOURCE_DIR "."
+#endif
+
+namespace tvd = tracked_vehicle_dynamics;
+namespace fem = tracked_vehicle_dynamics::fem;
+namespace veh = tracked_vehicle_dynamics::vehicle;
+
+namespace {
+
+constexpr double kGravity = 9.80665;  // [m/s^2], fem::Model's default gravity
+constexpr double kK = 1e6;            // [N/m] each support
+constexpr double kMass = 1000.0;      // [kg]
+
+/// A rigid bar along x on three vertical supports at x = 0, 1, 2 (nodes 1, 2, 3; node 2 carries
+/// the bar), its weight at x = 1 + `eccentricity`. Node 2's support also holds x, y, roll and yaw,
+/// which the vertical supports do not, with stiffness that is not unilateral.
+fem::Model barOnThreeSupports(double eccentricity) {
+  fem::Model m;
+  for (int i = 0; i < 3; ++i) m.addNode(i + 1, tvd::Vector3(i, 0, 0));
+  fem::RigidJoint bar;
+  bar.master = 2;
+  bar.slaves = {1, 3};
+  m.rigid_joints.push_back(bar);
+  for (int i = 0; i < 3; ++i) {
+    fem::Spring s;
+    s.n1 = i + 1;
+    s.stiffness(2) = kK;
+    if (i == 1) s.stiffness << kK, kK, kK, kK, 0.0, kK;
+    s.name = "support_" + std::to_string(i);
+    m.springs.push_back(s);
+  }
+  fem::Mass w;
+  w.node = 2;
+  w.mass = kMass;
+  w.offset = tvd::Vector3(eccentricity, 0, 0);
+  w.inertia = tvd::Matrix3::Identity();
+  m.masses.push_back(w);
+  return m;
+}
+
+std::vector<fem::UnilateralSpring> supports() { return {{0, 2, 1.0}, {1, 2, 1.0}, {2, 2, 1.0}}; }
+
+double verticalDisplacement(const fem::System& system, const fem::StaticResult& r, tvd::NodeId n) {
+  return fem::physicalDisplacement(system, r.displacement, n, 2);
+}
+
+}  // namespace
+
+TEST(UnilateralStatic, BarLiftsOffItsUnloadedSupport) {
+  // Weight F at x = 1.8. Bonded, the three equal supports take F/3 + 0.4 F (x_i - 1): the one at
+  // x = 0 pulls, -F/15. Unilateral it lets go; the other two share F as a bar on two supports,
+  // 0.2 F and 0.8 F, and the free end rises by 0.4 F / k (the bar's slope times 1 m).
+  const double f = kMass * kGravity;
+  const fem::Model model = barOnThreeSupports(0.8);
+  const fem::System bonded = fem::assemble(model);
+  const fem::StaticResult b = fem::solveStatic(bonded, bonded.gravity_load);
+  EXPECT_NEAR(-kK * verticalDisplacement(bonded, b, 1), -f / 15.0, 1e-9 * f);
+
+  const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, supports());
+  ASSERT_EQ(r.released, (std::vector<bool>{true, false, false}));
+  EXPECT_EQ(r.iterations, 2);
+  EXPECT_DOUBLE_EQ(r.normal_force[0], 0.0);
+  EXPECT_NEAR(r.normal_force[1], 0.2 * f, 1e-9 * f);
+  EXPECT_NEAR(r.normal_force[2], 0.8 * f, 1e-9 * f);
+  EXPECT_NEAR(verticalDisplacement(r.system, r.statics, 1), 0.4 * f / kK, 1e-9 * f / kK);
+  // The released support lost its normal stiffness only; the model given is untouched.
+  EXPECT_EQ(r.model.springs[0].stiffness(2), 0.0);
+  EXPECT_EQ(model.springs[0].stiffness(2), kK);
+  EXPECT_EQ(r.model.springs[1].stiffness(0), kK);
+}
+
+TEST(UnilateralStatic, NoTensionMeansTheBondedSolution) {
+  // Weight within the middle third: every support pushes, nothing is released.
+  const fem::Model model = barOnThreeSupports(0.3);
+  const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, supports());
+  EXPECT_EQ(std::count(r.released.begin(), r.released.end(), true), 0);
+  EXPECT_EQ(r.iterations, 1);
+  const fem::System bonded = fem::assemble(model);
+  const fem::StaticResult b = fem::solveStatic(bonded, bonded.gravity_load);
+  EXPECT_NEAR((r.statics.displacement - b.displacement).norm(), 0.0, 1e-12 * b.displacement.norm());
+}
+
+TEST(UnilateralStatic, BadSpringsAndATotalLiftOffAreNamed) {
+  const fem::Model model = barOnThreeSupports(0.0);
+  EXPECT_THROW(fem::solveUnilateralStatic(model, {{7, 2, 1.0}}), tvd::InputError);
+  EXPECT_THROW(fem::solveUnilateralStatic(model, {{0, 3, 1.0}}), tvd::InputError);
+  EXPECT_THROW(fem::solveUnilateralStatic(model, {{0, 2, 0.0}}), tvd::InputError);
+  EXPECT_THROW(fem::solveUnilateralStatic(model, {{0, 0, 1.0}}), tvd::InputError);  // no kx
+  // Gravity upwards: every support would pull; released, the bar floats.
+  fem::Model up = model;
+  up.gravity = tvd::Vector3(0, 0, kGravity);
+  try {
+    fem::solveUnilateralStatic(up, supports());
+    FAIL() << "no error";
+  } catch (const tvd::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("released"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ContactStatics, TrackedVehicleRestsOnPadsAndWheelsThatPush) {
+  const veh::VehicleDescription d =
+      veh::loadVehicleDescription(std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const veh::VehicleModel vehicle = veh::buildVehicleModel(d, veh::Variant::Tracked);
+  const veh::ContactStatics c = veh::computeContactStatics(vehicle);
+  const veh::StaticSummary& s = c.summary;
+  EXPECT_LT(s.balanceError(), 1e-6);
+  // Complementarity: no ground reaction pulls, a lifted sole carries nothing and has not sunk
+  // below the road; no wheel pulls on its link, a lifted one carries nothing.
+  const tvd::Vector u = c.system.dofs.transformation() *
+                        fem::solveStatic(c.system, c.system.gravity_load).displacement;
+  const double tolerance = 1e-6 * s.weight;
+  int lifted = 0;
+  for (std::size_t i = 0; i < s.pad_loads.size(); ++i) {
+    EXPECT_GE(s.pad_loads[i], -tolerance) << i;
+    if (!c.pad_lifted[i]) continue;
+    ++lifted;
+    EXPECT_EQ(s.pad_loads[i], 0.0) << i;
+    EXPECT_GE(u(c.system.dofs.physical(vehicle.layout.road_inputs[i].node, 2)), -1e-12) << i;
+  }
+  for (std::size_t i = 0; i < s.wheel_loads.size(); ++i) {
+    EXPECT_GE(s.wheel_loads[i], -tolerance) << vehicle.layout.wheels[i].name;
+    if (c.wheel_lifted[i]) {
+      EXPECT_EQ(s.wheel_loads[i], 0.0) << vehicle.layout.wheels[i].name;
+    }
+  }
+  // The bonded model pulls on the road between the wheels and at its rearmost wheels: here
+  // those let go (some soles, both rear wheels), the rest stays down.
+  EXPECT_GT(lifted, 0);
+  EXPECT_LT(lifted, static_cast<int>(s.pad_loads.size()) / 2);
+  EXPECT_TRUE(c.wheel_lifted[6] && c.wheel_lifted[13]);  // road_wheel_left_7, road_wheel_right_7
+}
+
+TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
+  const veh::VehicleDescription d =
+      veh::loadVehicleDescription(std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const veh::VehicleModel vehicle = veh::buildVehicleModel(d, veh::Variant::Untracked);
+  const veh::ContactStatics c = veh::computeContactStatics(vehicle);
+  EXPECT_EQ(c.iterations, 1);
+  EXPECT_EQ(std::count(c.pad_lifted.begin(), c.pad_lifted.end(), true), 0);
+  const veh::StaticSummary bonded = veh::computeStaticSummary(vehicle, fem::assemble(vehicle.model));
+  EXPECT_NEAR(c.summary.hull_sag, bonded.hull_sag, 1e-12);
+  for (std::size_t i = 0; i < bonded.wheel_loads.size(); ++i)
+    EXPECT_NEAR(c.summary.wheel_loads[i], bonded.wheel_loads[i], 1e-9 * bonded.weight);
+}
