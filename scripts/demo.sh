@@ -24,6 +24,8 @@ echo; echo "== 2. Modes of the fully tracked vehicle (paper Fig. 2b) =="
 tvd modes --vehicle "$VEHICLE" --variant tracked --count 40 --out "$OUT/modes_tracked" | head -50
 echo; echo "== 3. The tracked vehicle at rest: wheel loads, ground pressure under the track =="
 tvd statics --vehicle "$VEHICLE" --out "$OUT/ground_loads_tracked.csv" | tail -5
+tvd statics --vehicle "$VEHICLE" --json >"$OUT/statics_unilateral.json"
+tvd statics --vehicle "$VEHICLE" --contact bilateral --json >"$OUT/statics_bilateral.json"
 echo; echo "== 4. MAC correlation between the variants (paper Fig. 9, Table 4) =="
 tvd mac --vehicle "$VEHICLE" --count 40 --out "$OUT/mac"
 echo; echo "== 5. Craig-Bampton reduction of the tracked vehicle (paper Table 5) =="
@@ -45,6 +47,8 @@ echo; echo "== 8. Figures (PNG) =="
 /usr/bin/python3 scripts/plot_simulation.py --out "$OUT/long_hill_30kmh.png" \
   --title "long hill, 30 km/h" tracked="$OUT/long_hill_30kmh.csv"
 /usr/bin/python3 scripts/plot_masters.py --out "$OUT/masters.png" tracked="$OUT/tracked_reduced.mat"
+/usr/bin/python3 scripts/plot_ground_pressure.py --out "$OUT/ground_pressure.png" \
+  unilateral="$OUT/statics_unilateral.json" bilateral="$OUT/statics_bilateral.json"
 /usr/bin/python3 scripts/plot_modes.py --out "$OUT/mode_pair.png" \
   "un-tracked=$OUT/modes_untracked:5" "tracked=$OUT/modes_tracked:15"
 tvd terrain --track oop_waves --out "$OUT/oop_waves.csv" > /dev/null

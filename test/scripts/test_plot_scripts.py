@@ -7,6 +7,7 @@ Needs no C++ build: the inputs are written here in the formats of `tvd mac --out
     /usr/bin/python3 test/scripts/test_plot_scripts.py [--xml OUTDIR/plot_scripts.xml] [TEST ...]
 --xml writes a JUnit-style report (one <testcase> per test method); the exit status is 1 on failure.
 """
+import json
 import math
 import os
 import struct
@@ -175,7 +176,7 @@ class PlotScriptsTest(unittest.TestCase):
 
     def test_help(self):
         for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py", "plot_terrain.py",
-                       "plot_masters.py", "plot_modes.py"):
+                       "plot_masters.py", "plot_modes.py", "plot_ground_pressure.py"):
             result = self.run_script(script, "--help")
             self.assertEqual(result.returncode, 0, result.stderr)
             self.assertIn("--out", result.stdout)
@@ -658,6 +659,56 @@ class PlotScriptsTest(unittest.TestCase):
         nan = self.write_masters("nan.mat", positions=np.full((9, 3), np.nan))
         result = self.run_script("plot_masters.py", "--out", out, nan)
         self.assert_input_error(result, out, "nan.mat", "non-finite")
+
+    # plot_ground_pressure.py
+
+    def write_statics(self, name, **changes):
+        """A small `tvd statics --json` document: 3 assemblies and 2 wheels per side."""
+        doc = {"contact": "unilateral", "nominal_ground_pressure_pa": 9e4,
+               "mean_peak_pressure_pa": 2.6e5, "mean_maximum_pressure_pa": 2.4e5,
+               "track_assemblies": [{"side": side, "x_m": x, "pressure_pa": p}
+                                    for side in ("left", "right")
+                                    for x, p in ((0.5, 2.6e5), (0.0, 1e3), (-0.5, 2.6e5))],
+               "road_wheels": [{"name": f"road_wheel_{side}_{k}", "x_m": 0.5 - k + 1}
+                               for side in ("left", "right") for k in (1, 2)]}
+        doc.update(changes)
+        path = self.path(name)
+        with open(path, "w") as f:
+            f.write(doc if isinstance(doc, str) else json.dumps(doc))
+        return path
+
+    def test_ground_pressure_two_runs(self):
+        out = self.path("ground.png")
+        result = self.run_script("plot_ground_pressure.py", "--out", out,
+                                 f"unilateral={self.write_statics('u.json')}",
+                                 self.write_statics("b.json", contact="bilateral"))
+        self.assert_png(result, out)
+
+    def test_ground_pressure_bad_input_is_one_line(self):
+        out = self.path("ground.png")
+        bad = self.path("bad.json")
+        with open(bad, "w") as f:
+            f.write("{not json")
+        result = self.run_script("plot_ground_pressure.py", "--out", out, bad)
+        self.assert_input_error(result, out, "bad.json", "not JSON")
+        frf = self.write_statics("frf.json")
+        with open(frf, "w") as f:
+            json.dump({"outputs": []}, f)
+        result = self.run_script("plot_ground_pressure.py", "--out", out, frf)
+        self.assert_input_error(result, out, "frf.json", "tvd statics --json", "track_assemblies")
+        nan = self.write_statics("nan.json", nominal_ground_pressure_pa=None)
+        result = self.run_script("plot_ground_pressure.py", "--out", out, nan)
+        self.assert_input_error(result, out, "nan.json", "nominal_ground_pressure_pa",
+                                "not a finite number")
+        side = self.write_statics("side.json", track_assemblies=[{"side": "middle", "x_m": 0,
+                                                                   "pressure_pa": 1}])
+        result = self.run_script("plot_ground_pressure.py", "--out", out, side)
+        self.assert_input_error(result, out, "side.json", "track_assemblies[0]")
+        none = self.write_statics("none.json", track_assemblies=[])
+        result = self.run_script("plot_ground_pressure.py", "--out", out, none)
+        self.assert_input_error(result, out, "none.json", "no track assembly")
+        result = self.run_script("plot_ground_pressure.py", "--out", out, self.path("missing.json"))
+        self.assert_input_error(result, out, "missing.json")
 
     # plot_modes.py (Fig. 11)
 
