@@ -40,5 +40,7 @@ int parseDirection(const std::string& name);
 
 /// Standard gravity [m/s^2].
 constexpr double kStandardGravity = 9.80665;
+/// Degrees per radian (180 / pi), for angles in reports.
+constexpr double kRadToDegree = 57.29577951308232;
 
 }  // namespace tracked_vehicle_dynamics

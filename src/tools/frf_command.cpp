@@ -22,7 +22,6 @@ namespace tools {
 
 namespace {
 
-constexpr double kRadToDeg = 57.29577951308232;
 
 struct FrfOptions {
   std::string vehicle_file;
@@ -122,7 +121,7 @@ void run(const FrfOptions& opt) {
       for (Eigen::Index i = 0; i < hz.size(); ++i) {
         const dynamics::Complex v = h(i, columns[c].index);
         table(i, 1 + 2 * c) = std::abs(v);
-        table(i, 2 + 2 * c) = std::arg(v) * kRadToDeg;
+        table(i, 2 + 2 * c) = std::arg(v) * kRadToDegree;
       }
     }
     writeTable(opt.out_file, headers, table, 10,

@@ -9,7 +9,6 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 namespace {
-constexpr double kRadToDeg = 57.29577951308232;
 
 bool endsWith(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -37,13 +36,13 @@ SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows
   };
   add("hull_heave_m", "hull uz/disp");
   add("hull_vertical_accel_m_s2", "hull uz/acc");
-  add("hull_pitch_deg", "hull ry/disp", kRadToDeg);
-  add("hull_roll_deg", "hull rx/disp", kRadToDeg);
+  add("hull_pitch_deg", "hull ry/disp", kRadToDegree);
+  add("hull_roll_deg", "hull rx/disp", kRadToDegree);
   add("hull_heave_rate_m_s", "hull uz/vel");
-  add("hull_pitch_rate_deg_s", "hull ry/vel", kRadToDeg);
-  add("hull_roll_rate_deg_s", "hull rx/vel", kRadToDeg);
-  add("hull_pitch_accel_deg_s2", "hull ry/acc", kRadToDeg);
-  add("hull_roll_accel_deg_s2", "hull rx/acc", kRadToDeg);
+  add("hull_pitch_rate_deg_s", "hull ry/vel", kRadToDegree);
+  add("hull_roll_rate_deg_s", "hull rx/vel", kRadToDegree);
+  add("hull_pitch_accel_deg_s2", "hull ry/acc", kRadToDegree);
+  add("hull_roll_accel_deg_s2", "hull rx/acc", kRadToDegree);
   add("hull_longitudinal_accel_m_s2", "hull ux/acc");
   add("hull_lateral_accel_m_s2", "hull uy/acc");
   layout.first_wheel = layout.columns.size();

@@ -23,7 +23,6 @@ namespace tools {
 
 namespace {
 
-constexpr double kRadToDegree = 57.29577951308232;
 
 struct StaticsOptions {
   std::string vehicle_file;
