@@ -46,6 +46,9 @@ def load(path):
     if not isinstance(doc, dict) or any(k not in doc for k in KEYS):
         missing = [k for k in KEYS if not isinstance(doc, dict) or k not in doc]
         fail(f"{path}: not the output of `tvd statics --json` (no {', '.join(missing)})")
+    for key in KEYS[:2]:
+        if not isinstance(doc[key], list):
+            fail(f"{path}: {key} is not a list")
     assemblies = {side: [] for side in SIDES}
     for i, a in enumerate(doc["track_assemblies"]):
         if not isinstance(a, dict) or a.get("side") not in SIDES:
@@ -57,7 +60,8 @@ def load(path):
         fail(f"{path}: no track assembly on the ground")
     wheels = {side: [] for side in SIDES}
     for i, w in enumerate(doc["road_wheels"]):
-        name = w.get("name", "") if isinstance(w, dict) else ""
+        name = w.get("name") if isinstance(w, dict) else None
+        name = name if isinstance(name, str) else ""
         side = "left" if "_left_" in name else "right" if "_right_" in name else None
         if side is None:
             fail(f"{path}: road_wheels[{i}] is not named road_wheel_<left|right>_<k>")

@@ -709,6 +709,14 @@ class PlotScriptsTest(unittest.TestCase):
         self.assert_input_error(result, out, "none.json", "no track assembly")
         result = self.run_script("plot_ground_pressure.py", "--out", out, self.path("missing.json"))
         self.assert_input_error(result, out, "missing.json")
+        # Lists that are not lists, a wheel name that is not a string: one line, not a traceback.
+        for key in ("track_assemblies", "road_wheels"):
+            scalar = self.write_statics(f"{key}.json", **{key: 5})
+            result = self.run_script("plot_ground_pressure.py", "--out", out, scalar)
+            self.assert_input_error(result, out, f"{key}.json", f"{key} is not a list")
+        name = self.write_statics("name.json", road_wheels=[{"name": 5, "x_m": 0.0}])
+        result = self.run_script("plot_ground_pressure.py", "--out", out, name)
+        self.assert_input_error(result, out, "name.json", "road_wheels[0]")
 
     # plot_modes.py (Fig. 11)
 
