@@ -25,7 +25,7 @@ import matplotlib.pyplot as plt
 
 SIDES = ("left", "right")
 KEYS = ("track_assemblies", "road_wheels", "nominal_ground_pressure_pa", "mean_peak_pressure_pa",
-        "mean_maximum_pressure_pa")
+        "rowland_mean_maximum_pressure_pa")
 
 
 def number(path, what, value):
@@ -95,8 +95,8 @@ def main():
             if k == 0:
                 ax.axhline(figures["nominal_ground_pressure_pa"], color="0.4", ls=":", lw=1,
                            label=f"nominal ground pressure {figures['nominal_ground_pressure_pa']:.0f} kPa")
-                ax.axhline(figures["mean_maximum_pressure_pa"], color="0.4", ls="-.", lw=1,
-                           label=f"Rowland's MMP {figures['mean_maximum_pressure_pa']:.0f} kPa")
+                ax.axhline(figures["rowland_mean_maximum_pressure_pa"], color="0.4", ls="-.", lw=1,
+                           label=f"Rowland's MMP {figures['rowland_mean_maximum_pressure_pa']:.0f} kPa")
                 for x in wheels[side]:
                     ax.axvline(x, color="0.85", lw=3, zorder=0)
         ax.axhline(0.0, color="k", lw=0.5)

@@ -100,7 +100,7 @@ void run(const StaticsOptions& opt) {
         .field("solve_residual", s.residual)
         .field("side_loads_n", std::vector<double>{g.side_load[0], g.side_load[1]})
         .field("nominal_ground_pressure_pa", g.nominal_pressure)
-        .field("mean_maximum_pressure_pa", g.mean_maximum_pressure)
+        .field("rowland_mean_maximum_pressure_pa", g.rowland_mean_maximum_pressure)
         .field("mean_peak_pressure_pa", g.mean_peak_pressure);
     json.key("peak_assembly_pressure").beginObject();
     if (peak)
@@ -176,7 +176,7 @@ void run(const StaticsOptions& opt) {
             << g.nominal_pressure / 1e3 << " kPa\n"
             << "mean maximum pressure: " << g.mean_peak_pressure / 1e3
             << " kPa (mean of the peaks under the wheels); Rowland's empirical estimate "
-            << g.mean_maximum_pressure / 1e3 << " kPa\n";
+            << g.rowland_mean_maximum_pressure / 1e3 << " kPa\n";
   if (peak)
     std::cout << "largest assembly pressure: " << peak->pressure / 1e3 << " kPa (" << sideName(peak->side)
               << ", x = " << std::setprecision(3) << peak->x << " m)";

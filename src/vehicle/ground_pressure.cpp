@@ -79,7 +79,7 @@ GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescript
   const double weight = statics.weight;
   g.nominal_pressure = weight / (2.0 * track.width * track.ground_length);
   const double wheel_diameter = 2.0 * description.road_wheel.radius;
-  g.mean_maximum_pressure =
+  g.rowland_mean_maximum_pressure =
       kRowlandConstant * weight /
       (2.0 * description.running_gear.axle_count * track.width *
        std::sqrt(track.pitch * wheel_diameter));

@@ -665,7 +665,7 @@ class PlotScriptsTest(unittest.TestCase):
     def write_statics(self, name, **changes):
         """A small `tvd statics --json` document: 3 assemblies and 2 wheels per side."""
         doc = {"contact": "unilateral", "nominal_ground_pressure_pa": 9e4,
-               "mean_peak_pressure_pa": 2.6e5, "mean_maximum_pressure_pa": 2.4e5,
+               "mean_peak_pressure_pa": 2.6e5, "rowland_mean_maximum_pressure_pa": 2.4e5,
                "track_assemblies": [{"side": side, "x_m": x, "pressure_pa": p}
                                     for side in ("left", "right")
                                     for x, p in ((0.5, 2.6e5), (0.0, 1e3), (-0.5, 2.6e5))],

@@ -119,6 +119,11 @@ class TvdCliTest(unittest.TestCase):
         # NGP = W / (2 b L): Table 1's track width 0.62 m, the 4,845 mm ground run.
         self.assertAlmostEqual(d["nominal_ground_pressure_pa"] / (d["weight_n"] / (2 * 0.62 * 4.845)),
                                1.0, delta=1e-9)
+        # Rowland's MMP = 1.26 W / (2 n b sqrt(t D)) under a name of its own: the text's "mean
+        # maximum pressure" is the FE figure, mean_peak_pressure_pa.
+        rowland = 1.26 * d["weight_n"] / (2 * 7 * 0.62 * (0.1615 * 0.68) ** 0.5)
+        self.assertAlmostEqual(d["rowland_mean_maximum_pressure_pa"] / rowland, 1.0, delta=1e-9)
+        self.assertNotIn("mean_maximum_pressure_pa", d)
         header, rows = read_csv(csv_file)
         self.assertEqual(header, ["side", "assembly", "x_m", "load_n", "inner_pad_n", "outer_pad_n",
                                   "pressure_pa"])
@@ -144,6 +149,9 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(all(wheels[[w["lifted"] for w in u["road_wheels"]]] == 0.0))
         bonded = [w["name"] for w in d["road_wheels"] if w["load_n"] < 0]
         self.assertEqual(sorted(lifted), sorted(bonded))
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--contact", "bilateral").stdout
+        self.assertIn(f"mean maximum pressure: {d['mean_peak_pressure_pa'] / 1e3:.1f} kPa", text)
+        self.assertIn(f"Rowland's empirical estimate {rowland / 1e3:.1f} kPa", text)
         text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
         self.assertIn("nominal ground pressure", text)
         self.assertIn("road_wheel_right_7", text)

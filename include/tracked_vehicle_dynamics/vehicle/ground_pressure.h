@@ -41,7 +41,9 @@ struct GroundPressure {
   std::vector<AssemblyGroundLoad> assemblies;
   double side_load[2] = {0.0, 0.0};   ///< sum per side [N]
   double nominal_pressure = 0.0;      ///< NGP [Pa]
-  double mean_maximum_pressure = 0.0; ///< Rowland's MMP [Pa]
+  /// Rowland's empirical estimate of the mean maximum pressure, MMP [Pa] (the FE model's own
+  /// figure is mean_peak_pressure).
+  double rowland_mean_maximum_pressure = 0.0;
   /// Per road wheel (VehicleLayout::wheels order): the largest assembly pressure on its side within
   /// half an axle spacing of its centre's x [Pa].
   std::vector<double> wheel_peak_pressure;
