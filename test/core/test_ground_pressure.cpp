@@ -135,6 +135,42 @@ TEST(GroundPressure, NominalAndMeanMaximumPressureClosedForms) {
   EXPECT_NEAR(r.ground.rowland_mean_maximum_pressure, 239.13e3, 10.0);
 }
 
+TEST(GroundPressure, PadRowsAndWheelReachOfGivenReactions) {
+  // Reactions set by hand on the tracked model: each sole carries its distance from the vehicle
+  // centre line [N], so an assembly's inner row (3 soles at 1.4 - 0.155 m) carries 3 x 1.245 and
+  // its outer row 3 x 1.555; and left assembly 26 (x = 1.857 m) carries 1 N more per sole.
+  AtRest r = atRest(veh::Variant::Tracked);
+  const auto& inputs = r.model.layout.road_inputs;
+  int spiked = 0;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const bool spike = inputs[i].side == 0 &&
+                       r.model.layout.assemblies[static_cast<std::size_t>(inputs[i].assembly)].index == 26;
+    spiked += spike;
+    r.statics.pad_loads[i] = std::abs(inputs[i].y) + (spike ? 1.0 : 0.0);
+  }
+  ASSERT_EQ(spiked, 6);
+  const veh::GroundPressure g = veh::groundPressure(r.model, r.description, r.statics);
+  const double footprint = 0.62 * 0.1615;
+  for (const veh::AssemblyGroundLoad& a : g.assemblies) {
+    const double extra = a.side == 0 && a.assembly == 26 ? 3.0 : 0.0;
+    EXPECT_NEAR(a.inner, 3 * 1.245 + extra, 1e-9) << a.side << " " << a.assembly;
+    EXPECT_NEAR(a.outer, 3 * 1.555 + extra, 1e-9) << a.side << " " << a.assembly;
+  }
+  // Assembly 26 lies 0.483 m behind wheel 1 (x = 2.34 m), beyond half the 0.78 m spacing, and
+  // 0.297 m ahead of wheel 2 (x = 1.56 m): its peak is under wheel 2 only, on the left only.
+  const double base = 3 * (1.245 + 1.555) / footprint;
+  const double peak = base + 6.0 / footprint;
+  const auto& wheels = r.model.layout.wheels;
+  for (std::size_t i = 0; i < wheels.size(); ++i) {
+    const bool under = wheels[i].side == 0 && wheels[i].axle == 1;
+    EXPECT_NEAR(g.wheel_peak_pressure[i], under ? peak : base, 1e-9 * peak) << wheels[i].name;
+  }
+  EXPECT_NEAR(g.mean_peak_pressure, base + (peak - base) / wheels.size(), 1e-9 * peak);
+  ASSERT_GE(g.peak, 0);
+  EXPECT_EQ(g.assemblies[static_cast<std::size_t>(g.peak)].side, 0);
+  EXPECT_EQ(g.assemblies[static_cast<std::size_t>(g.peak)].assembly, 26);
+}
+
 TEST(GroundPressure, MismatchedStaticSummaryIsALogicError) {
   AtRest r = atRest(veh::Variant::Untracked);
   r.statics.pad_loads.pop_back();

@@ -85,6 +85,36 @@ TEST(UnilateralStatic, BarLiftsOffItsUnloadedSupport) {
   EXPECT_EQ(r.model.springs[1].stiffness(0), kK);
 }
 
+TEST(UnilateralStatic, NormalFollowsTheSpringFrameAndTheSign) {
+  // The same supports with their frames turned 180 deg about x (local z = global -z): with sign
+  // -1 they still push the bar up, and the lift-off is the one above; with sign +1 they would
+  // pull it down, all in tension under gravity, and the released bar floats.
+  const double f = kMass * kGravity;
+  fem::Model model = barOnThreeSupports(0.8);
+  for (fem::Spring& s : model.springs) s.frame = tvd::Vector3(1.0, -1.0, -1.0).asDiagonal();
+  std::vector<fem::UnilateralSpring> down = supports();
+  for (fem::UnilateralSpring& c : down) c.sign = -1.0;
+  const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, down);
+  ASSERT_EQ(r.released, (std::vector<bool>{true, false, false}));
+  EXPECT_NEAR(r.normal_force[1], 0.2 * f, 1e-9 * f);
+  EXPECT_NEAR(r.normal_force[2], 0.8 * f, 1e-9 * f);
+  EXPECT_NEAR(verticalDisplacement(r.system, r.statics, 1), 0.4 * f / kK, 1e-9 * f / kK);
+  EXPECT_THROW(fem::solveUnilateralStatic(model, supports()), tvd::SolverError);
+}
+
+TEST(UnilateralStatic, TooFewSolvesIsASolverError) {
+  // The lift-off above takes 2 solves (bonded, then with the first support released).
+  const fem::Model model = barOnThreeSupports(0.8);
+  try {
+    fem::solveUnilateralStatic(model, supports(), 1);
+    FAIL() << "no error";
+  } catch (const tvd::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not settle after 1 solves"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(fem::solveUnilateralStatic(model, supports(), 2).iterations, 2);
+}
+
 TEST(UnilateralStatic, NoTensionMeansTheBondedSolution) {
   // Weight within the middle third: every support pushes, nothing is released.
   const fem::Model model = barOnThreeSupports(0.3);
