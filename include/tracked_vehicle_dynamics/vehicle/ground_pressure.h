@@ -11,8 +11,11 @@
 //                             spacing of the wheel (the pressure peaks under the wheels, which
 //                             Rowland's formula estimates)
 //
-// NGP and MMP are properties of the description; p_k is what this linear FE model says, pads
-// bonded to the road: a negative F_k is an assembly the model holds down that would lift off.
+// NGP and MMP take the description's dimensions and the model's weight (StaticSummary::weight:
+// the un-tracked model, without most of the chain, the sprockets and idlers, is lighter); p_k is
+// what the static solution says: with bonded contacts (computeStaticSummary) a negative F_k is an
+// assembly the model holds down that would lift off; with unilateral ones (computeContactStatics)
+// none is negative.
 #pragma once
 
 #include <vector>
