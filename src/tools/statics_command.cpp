@@ -34,6 +34,12 @@ struct StaticsOptions {
 
 const char* sideName(int side) { return side == 0 ? "left" : "right"; }
 
+/// `value` as printed with `decimals` fixed decimals, without the sign of a round-off residue
+/// ("-0.0000" for a symmetric vehicle's roll of -1e-13 deg).
+double printed(double value, int decimals) {
+  return std::abs(value) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : value;
+}
+
 void run(const StaticsOptions& opt) {
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
@@ -148,8 +154,9 @@ void run(const StaticsOptions& opt) {
     std::cout << "contacts: bilateral (the linear model: the equilibrium the dynamics start from)\n";
   std::cout << "\n"
             << "hull at rest: sag " << std::setprecision(3) << s.hull_sag * 1e3 << " mm, pitch "
-            << std::setprecision(4) << s.hull_pitch * kRadToDegree << " deg (nose down +), roll "
-            << s.hull_roll * kRadToDegree << " deg (left up +)\n\n"
+            << std::setprecision(4) << printed(s.hull_pitch * kRadToDegree, 4)
+            << " deg (nose down +), roll " << printed(s.hull_roll * kRadToDegree, 4)
+            << " deg (left up +)\n\n"
             << "road wheels: normal force on the track [kN] (negative: pulling on it, would lift off);\n"
             << "the largest assembly pressure within half an axle spacing [kPa]\n"
             << "  wheel                   x [m]   load [kN]   peak pressure under it [kPa]\n";

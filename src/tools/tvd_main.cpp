@@ -1,4 +1,4 @@
-// tvd: the offline command-line tool (modes, MAC, reduction, FRF, simulation).
+// tvd: the offline command-line tool (modes, statics, MAC, reduction, FRF, simulation, terrain).
 #include <CLI/CLI.hpp>
 
 #include <iostream>

@@ -61,7 +61,10 @@ GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescript
     const AssemblyGroundLoad& a = g.assemblies[k];
     g.side_load[a.side == 0 ? 0 : 1] += a.load;
     if (a.load < 0.0) ++g.lifting;
-    if (g.peak < 0 || a.pressure > g.assemblies[static_cast<std::size_t>(g.peak)].pressure)
+    // Strictly larger by more than round-off: of mirror-image twins the left one is the peak.
+    if (g.peak < 0 ||
+        a.pressure > g.assemblies[static_cast<std::size_t>(g.peak)].pressure +
+                         1e-9 * std::abs(g.assemblies[static_cast<std::size_t>(g.peak)].pressure))
       g.peak = static_cast<int>(k);
   }
   // The pressure peak under each wheel: the assemblies within half an axle spacing of its centre.

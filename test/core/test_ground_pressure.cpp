@@ -67,8 +67,11 @@ void expectConsistent(const AtRest& r, std::size_t assemblies_per_side) {
   EXPECT_NEAR(g.side_load[0] + g.side_load[1], sum, 1e-9 * r.statics.weight);
   EXPECT_NEAR(g.side_load[0], g.side_load[1], 1e-6 * r.statics.weight);
   ASSERT_GE(g.peak, 0);
+  // Mirror-image twins tie to round-off: the left one is reported.
+  EXPECT_EQ(g.assemblies[static_cast<std::size_t>(g.peak)].side, 0);
+  const double largest = g.assemblies[static_cast<std::size_t>(g.peak)].pressure;
   for (const veh::AssemblyGroundLoad& a : g.assemblies)
-    EXPECT_LE(a.pressure, g.assemblies[static_cast<std::size_t>(g.peak)].pressure);
+    EXPECT_LE(a.pressure, largest * (1.0 + 1e-9));
 }
 
 }  // namespace
