@@ -31,7 +31,7 @@ double normalForce(const System& system, const Vector& u, const Spring& s, const
 
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
-                                             int max_iterations) {
+                                             int max_iterations, ActiveSetUpdate update) {
   std::vector<double> normal_stiffness;
   for (const UnilateralSpring& c : springs) {
     if (c.spring >= model.springs.size())
@@ -50,7 +50,7 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
   r.released.assign(springs.size(), false);
   r.normal_force.assign(springs.size(), 0.0);
   std::set<std::vector<bool>> visited{r.released};
-  bool single_change = false;
+  bool single_change = update == ActiveSetUpdate::WorstOnly;
   for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations) {
     for (std::size_t i = 0; i < springs.size(); ++i)
       r.model.springs[springs[i].spring].stiffness(springs[i].axis) =

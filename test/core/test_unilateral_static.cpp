@@ -115,6 +115,55 @@ TEST(UnilateralStatic, TooFewSolvesIsASolverError) {
   EXPECT_EQ(fem::solveUnilateralStatic(model, supports(), 2).iterations, 2);
 }
 
+/// A rigid bar on seven equal vertical supports at x = 0 .. 6 (nodes 1 .. 7; node 4, at x = 3,
+/// carries the bar and holds its other DOFs), its weight at x = 5.4.
+fem::Model barOnSevenSupports() {
+  fem::Model m;
+  for (int i = 0; i < 7; ++i) m.addNode(i + 1, tvd::Vector3(i, 0, 0));
+  fem::RigidJoint bar;
+  bar.master = 4;
+  bar.slaves = {1, 2, 3, 5, 6, 7};
+  m.rigid_joints.push_back(bar);
+  for (int i = 0; i < 7; ++i) {
+    fem::Spring s;
+    s.n1 = i + 1;
+    s.stiffness(2) = kK;
+    if (i == 3) s.stiffness << kK, kK, kK, kK, 0.0, kK;
+    m.springs.push_back(s);
+  }
+  fem::Mass w;
+  w.node = 4;
+  w.mass = kMass;
+  w.offset = tvd::Vector3(2.4, 0, 0);
+  w.inertia = tvd::Matrix3::Identity();
+  m.masses.push_back(w);
+  return m;
+}
+
+TEST(UnilateralStatic, BothUpdateRulesFindTheOneSolution) {
+  // Equal supports under a rigid bar carry F/n + F e (x_i - xm) / sum (x_j - xm)^2 over the
+  // active ones (mean xm, weight e ahead of it). Only {4, 5, 6} carries F at x = 5.4 in
+  // compression: F (2/15, 1/3, 8/15); the bar then rises 1/15 F/k at x = 3 (no overlap there).
+  // Releasing every violated support at once and the worst one at a time (the fallback) must
+  // both arrive there: the problem has one solution.
+  const double f = kMass * kGravity;
+  const fem::Model model = barOnSevenSupports();
+  std::vector<fem::UnilateralSpring> all;
+  for (std::size_t i = 0; i < 7; ++i) all.push_back({i, 2, 1.0});
+  for (const fem::ActiveSetUpdate update :
+       {fem::ActiveSetUpdate::AllViolated, fem::ActiveSetUpdate::WorstOnly}) {
+    const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, all, 100, update);
+    EXPECT_EQ(r.released, (std::vector<bool>{true, true, true, true, false, false, false}));
+    const double expected[7] = {0, 0, 0, 0, 2.0 / 15.0, 1.0 / 3.0, 8.0 / 15.0};
+    for (int i = 0; i < 7; ++i) EXPECT_NEAR(r.normal_force[i], expected[i] * f, 1e-9 * f) << i;
+    EXPECT_NEAR(verticalDisplacement(r.system, r.statics, 4), f / (15.0 * kK), 1e-9 * f / kK);
+  }
+  // Released all at once: {0, 1}, then {2}, then {3}: four solves; one at a time, five.
+  EXPECT_EQ(fem::solveUnilateralStatic(model, all).iterations, 4);
+  EXPECT_EQ(fem::solveUnilateralStatic(model, all, 100, fem::ActiveSetUpdate::WorstOnly).iterations,
+            5);
+}
+
 TEST(UnilateralStatic, NoTensionMeansTheBondedSolution) {
   // Weight within the middle third: every support pushes, nothing is released.
   const fem::Model model = barOnThreeSupports(0.3);

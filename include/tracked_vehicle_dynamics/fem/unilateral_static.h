@@ -37,14 +37,20 @@ struct UnilateralStaticResult {
   int iterations = 0;          ///< solves done
 };
 
+/// How the active set changes between solves.
+enum class ActiveSetUpdate {
+  AllViolated,  ///< every violated spring at once; the worst one at a time once a set repeats
+  WorstOnly,    ///< the worst violated spring only (slower; what the first falls back to)
+};
+
 /// Solves the gravity load case of `model` with the listed springs unilateral. Throws InputError
 /// for a spring index out of range, an axis not in 0..2 or a zero sign or normal stiffness,
-/// SolverError when the released springs leave
-/// a free motion (the structure would lift off entirely) or the active set has not settled after
-/// `max_iterations` solves.
+/// SolverError when the released springs leave a free motion (the structure would lift off
+/// entirely) or the active set has not settled after `max_iterations` solves.
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
-                                             int max_iterations = 100);
+                                             int max_iterations = 100,
+                                             ActiveSetUpdate update = ActiveSetUpdate::AllViolated);
 
 }  // namespace fem
 }  // namespace tracked_vehicle_dynamics
