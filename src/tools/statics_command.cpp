@@ -6,7 +6,6 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-#include <unordered_map>
 
 #include "commands.h"
 #include "output_files.h"
@@ -67,10 +66,6 @@ void run(const StaticsOptions& opt) {
   const int wheels_lifted = count(contact.wheel_lifted);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  const std::unordered_map<NodeId, std::size_t> nodes = model.model.nodeIndex();
-  auto wheelX = [&](const vehicle::WheelStation& w) {
-    return model.model.nodes[nodes.at(w.centre)].position.x();
-  };
 
   if (!opt.out_file.empty()) {
     Matrix table(static_cast<Eigen::Index>(g.assemblies.size()), 7);
@@ -117,7 +112,7 @@ void run(const StaticsOptions& opt) {
       const vehicle::WheelStation& w = model.layout.wheels[i];
       json.beginObject()
           .field("name", w.name)
-          .field("x_m", wheelX(w))
+          .field("x_m", g.wheel_x[i])
           .field("load_n", s.wheel_loads[i])
           .field("lifted", unilateral && contact.wheel_lifted[i])
           .field("peak_pressure_pa", g.wheel_peak_pressure[i])
@@ -163,7 +158,7 @@ void run(const StaticsOptions& opt) {
   for (std::size_t i = 0; i < model.layout.wheels.size(); ++i) {
     const vehicle::WheelStation& w = model.layout.wheels[i];
     std::cout << "  " << std::left << std::setw(20) << w.name << std::right << std::setw(8)
-              << std::setprecision(3) << wheelX(w) << std::setw(12) << std::setprecision(2)
+              << std::setprecision(3) << g.wheel_x[i] << std::setw(12) << std::setprecision(2)
               << s.wheel_loads[i] / 1e3 << std::setw(20) << std::setprecision(1)
               << g.wheel_peak_pressure[i] / 1e3 << "\n";
   }

@@ -77,6 +77,7 @@ GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescript
       if (a.side == w.side && std::abs(a.x - x) <= reach) peak = std::max(peak, a.pressure);
     if (!std::isfinite(peak)) peak = 0.0;  // no assembly under it (cannot happen on a built model)
     g.wheel_peak_pressure.push_back(peak);
+    g.wheel_x.push_back(x);
     g.mean_peak_pressure += peak / static_cast<double>(layout.wheels.size());
   }
   const double weight = statics.weight;

@@ -27,26 +27,28 @@ constexpr double kGravity = 9.80665;  // [m/s^2], fem::Model's default gravity
 constexpr double kK = 1e6;            // [N/m] each support
 constexpr double kMass = 1000.0;      // [kg]
 
-/// A rigid bar along x on three vertical supports at x = 0, 1, 2 (nodes 1, 2, 3; node 2 carries
-/// the bar), its weight at x = 1 + `eccentricity`. Node 2's support also holds x, y, roll and yaw,
-/// which the vertical supports do not, with stiffness that is not unilateral.
-fem::Model barOnThreeSupports(double eccentricity) {
+/// A rigid bar along x on n (odd) equal vertical supports at x = 0, 1, ..., n - 1 (nodes 1 .. n;
+/// the middle node carries the bar), its weight `eccentricity` ahead of the middle. The middle
+/// support also holds x, y, roll and yaw, which the vertical supports do not, with stiffness that
+/// is not unilateral.
+fem::Model barOnSupports(int n, double eccentricity) {
+  const int middle = (n + 1) / 2;
   fem::Model m;
-  for (int i = 0; i < 3; ++i) m.addNode(i + 1, tvd::Vector3(i, 0, 0));
   fem::RigidJoint bar;
-  bar.master = 2;
-  bar.slaves = {1, 3};
-  m.rigid_joints.push_back(bar);
-  for (int i = 0; i < 3; ++i) {
+  bar.master = middle;
+  for (int i = 0; i < n; ++i) {
+    m.addNode(i + 1, tvd::Vector3(i, 0, 0));
+    if (i + 1 != middle) bar.slaves.push_back(i + 1);
     fem::Spring s;
     s.n1 = i + 1;
     s.stiffness(2) = kK;
-    if (i == 1) s.stiffness << kK, kK, kK, kK, 0.0, kK;
+    if (i + 1 == middle) s.stiffness << kK, kK, kK, kK, 0.0, kK;
     s.name = "support_" + std::to_string(i);
     m.springs.push_back(s);
   }
+  m.rigid_joints.push_back(bar);
   fem::Mass w;
-  w.node = 2;
+  w.node = middle;
   w.mass = kMass;
   w.offset = tvd::Vector3(eccentricity, 0, 0);
   w.inertia = tvd::Matrix3::Identity();
@@ -54,7 +56,12 @@ fem::Model barOnThreeSupports(double eccentricity) {
   return m;
 }
 
-std::vector<fem::UnilateralSpring> supports() { return {{0, 2, 1.0}, {1, 2, 1.0}, {2, 2, 1.0}}; }
+/// Every support of barOnSupports(n, ...) unilateral, pushing up.
+std::vector<fem::UnilateralSpring> supports(std::size_t n = 3) {
+  std::vector<fem::UnilateralSpring> all;
+  for (std::size_t i = 0; i < n; ++i) all.push_back({i, 2, 1.0});
+  return all;
+}
 
 double verticalDisplacement(const fem::System& system, const fem::StaticResult& r, tvd::NodeId n) {
   return fem::physicalDisplacement(system, r.displacement, n, 2);
@@ -67,7 +74,7 @@ TEST(UnilateralStatic, BarLiftsOffItsUnloadedSupport) {
   // x = 0 pulls, -F/15. Unilateral it lets go; the other two share F as a bar on two supports,
   // 0.2 F and 0.8 F, and the free end rises by 0.4 F / k (the bar's slope times 1 m).
   const double f = kMass * kGravity;
-  const fem::Model model = barOnThreeSupports(0.8);
+  const fem::Model model = barOnSupports(3, 0.8);
   const fem::System bonded = fem::assemble(model);
   const fem::StaticResult b = fem::solveStatic(bonded, bonded.gravity_load);
   EXPECT_NEAR(-kK * verticalDisplacement(bonded, b, 1), -f / 15.0, 1e-9 * f);
@@ -90,7 +97,7 @@ TEST(UnilateralStatic, NormalFollowsTheSpringFrameAndTheSign) {
   // -1 they still push the bar up, and the lift-off is the one above; with sign +1 they would
   // pull it down, all in tension under gravity, and the released bar floats.
   const double f = kMass * kGravity;
-  fem::Model model = barOnThreeSupports(0.8);
+  fem::Model model = barOnSupports(3, 0.8);
   for (fem::Spring& s : model.springs) s.frame = tvd::Vector3(1.0, -1.0, -1.0).asDiagonal();
   std::vector<fem::UnilateralSpring> down = supports();
   for (fem::UnilateralSpring& c : down) c.sign = -1.0;
@@ -104,7 +111,7 @@ TEST(UnilateralStatic, NormalFollowsTheSpringFrameAndTheSign) {
 
 TEST(UnilateralStatic, TooFewSolvesIsASolverError) {
   // The lift-off above takes 2 solves (bonded, then with the first support released).
-  const fem::Model model = barOnThreeSupports(0.8);
+  const fem::Model model = barOnSupports(3, 0.8);
   try {
     fem::solveUnilateralStatic(model, supports(), 1);
     FAIL() << "no error";
@@ -115,31 +122,6 @@ TEST(UnilateralStatic, TooFewSolvesIsASolverError) {
   EXPECT_EQ(fem::solveUnilateralStatic(model, supports(), 2).iterations, 2);
 }
 
-/// A rigid bar on seven equal vertical supports at x = 0 .. 6 (nodes 1 .. 7; node 4, at x = 3,
-/// carries the bar and holds its other DOFs), its weight at x = 5.4.
-fem::Model barOnSevenSupports() {
-  fem::Model m;
-  for (int i = 0; i < 7; ++i) m.addNode(i + 1, tvd::Vector3(i, 0, 0));
-  fem::RigidJoint bar;
-  bar.master = 4;
-  bar.slaves = {1, 2, 3, 5, 6, 7};
-  m.rigid_joints.push_back(bar);
-  for (int i = 0; i < 7; ++i) {
-    fem::Spring s;
-    s.n1 = i + 1;
-    s.stiffness(2) = kK;
-    if (i == 3) s.stiffness << kK, kK, kK, kK, 0.0, kK;
-    m.springs.push_back(s);
-  }
-  fem::Mass w;
-  w.node = 4;
-  w.mass = kMass;
-  w.offset = tvd::Vector3(2.4, 0, 0);
-  w.inertia = tvd::Matrix3::Identity();
-  m.masses.push_back(w);
-  return m;
-}
-
 TEST(UnilateralStatic, BothUpdateRulesFindTheOneSolution) {
   // Equal supports under a rigid bar carry F/n + F e (x_i - xm) / sum (x_j - xm)^2 over the
   // active ones (mean xm, weight e ahead of it). Only {4, 5, 6} carries F at x = 5.4 in
@@ -147,9 +129,8 @@ TEST(UnilateralStatic, BothUpdateRulesFindTheOneSolution) {
   // Releasing every violated support at once and the worst one at a time (the fallback) must
   // both arrive there: the problem has one solution.
   const double f = kMass * kGravity;
-  const fem::Model model = barOnSevenSupports();
-  std::vector<fem::UnilateralSpring> all;
-  for (std::size_t i = 0; i < 7; ++i) all.push_back({i, 2, 1.0});
+  const fem::Model model = barOnSupports(7, 2.4);  // weight at x = 5.4
+  const std::vector<fem::UnilateralSpring> all = supports(7);
   for (const fem::ActiveSetUpdate update :
        {fem::ActiveSetUpdate::AllViolated, fem::ActiveSetUpdate::WorstOnly}) {
     const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, all, 100, update);
@@ -166,7 +147,7 @@ TEST(UnilateralStatic, BothUpdateRulesFindTheOneSolution) {
 
 TEST(UnilateralStatic, NoTensionMeansTheBondedSolution) {
   // Weight within the middle third: every support pushes, nothing is released.
-  const fem::Model model = barOnThreeSupports(0.3);
+  const fem::Model model = barOnSupports(3, 0.3);
   const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, supports());
   EXPECT_EQ(std::count(r.released.begin(), r.released.end(), true), 0);
   EXPECT_EQ(r.iterations, 1);
@@ -176,7 +157,7 @@ TEST(UnilateralStatic, NoTensionMeansTheBondedSolution) {
 }
 
 TEST(UnilateralStatic, BadSpringsAndATotalLiftOffAreNamed) {
-  const fem::Model model = barOnThreeSupports(0.0);
+  const fem::Model model = barOnSupports(3, 0.0);
   EXPECT_THROW(fem::solveUnilateralStatic(model, {{7, 2, 1.0}}), tvd::InputError);
   EXPECT_THROW(fem::solveUnilateralStatic(model, {{0, 3, 1.0}}), tvd::InputError);
   EXPECT_THROW(fem::solveUnilateralStatic(model, {{0, 2, 0.0}}), tvd::InputError);

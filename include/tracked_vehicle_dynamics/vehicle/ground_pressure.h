@@ -50,6 +50,7 @@ struct GroundPressure {
   /// Per road wheel (VehicleLayout::wheels order): the largest assembly pressure on its side within
   /// half an axle spacing of its centre's x [Pa].
   std::vector<double> wheel_peak_pressure;
+  std::vector<double> wheel_x;         ///< per road wheel: its centre's station [m]
   double mean_peak_pressure = 0.0;    ///< their mean: the FE model's mean maximum pressure [Pa]
   int peak = -1;                      ///< index into `assemblies` of the largest pressure
   int lifting = 0;                    ///< assemblies with a downward (negative) reaction
