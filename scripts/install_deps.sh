@@ -8,11 +8,12 @@ PACKAGES=(
   # ROS 1 as packaged by Debian
   ros-core-dev catkin libroscpp-dev librosbag-dev libtf2-ros-dev libtf2-geometry-msgs-dev
   ros-message-generation libstd-msgs-dev libgeometry-msgs-dev libstd-srvs-dev
+  libnav-msgs-dev libsensor-msgs-dev
   libdiagnostic-updater-dev libdiagnostic-msgs-dev libtf2-msgs-dev libros-rosgraph-msgs-dev python3-rostest librostest-dev tf2-tools python3-rosbag python3-roslaunch python3-rostopic
   rosbash  # rosrun (a Recommends of ros-core-dev, which --no-install-recommends leaves out)
   # the command-line tools load the Python bindings of the types they handle: rosservice call
-  # ~reset (std_srvs/Empty), rostopic echo /diagnostics
-  python3-rosservice python3-std-srvs python3-diagnostic-msgs
+  # ~reset (std_srvs/Empty), rostopic echo /diagnostics, odom and imu/<point>
+  python3-rosservice python3-std-srvs python3-diagnostic-msgs python3-nav-msgs python3-sensor-msgs
   # numerics and I/O
   libeigen3-dev libspectra-dev libsuitesparse-dev libyaml-cpp-dev libmatio-dev libcli11-dev
   # an optimised BLAS for CHOLMOD's supernodal factorisations and dense products (serial: the

@@ -104,19 +104,42 @@ ComfortReport fromMsg(const Comfort& msg) {
   return report;
 }
 
+geometry_msgs::Quaternion toMsg(const Eigen::Quaterniond& q) {
+  geometry_msgs::Quaternion msg;
+  msg.x = q.x();
+  msg.y = q.y();
+  msg.z = q.z();
+  msg.w = q.w();
+  return msg;
+}
+
+Eigen::Quaterniond fromMsg(const geometry_msgs::Quaternion& msg) {
+  return Eigen::Quaterniond(msg.w, msg.x, msg.y, msg.z);
+}
+
 void toMsg(const RigidPose& pose, geometry_msgs::Transform* msg) {
   msg->translation = toMsg(pose.translation);
-  msg->rotation.x = pose.rotation.x();
-  msg->rotation.y = pose.rotation.y();
-  msg->rotation.z = pose.rotation.z();
-  msg->rotation.w = pose.rotation.w();
+  msg->rotation = toMsg(pose.rotation);
 }
 
 RigidPose fromMsg(const geometry_msgs::Transform& msg) {
   RigidPose pose;
   pose.translation = fromMsg(msg.translation);
-  pose.rotation =
-      Eigen::Quaterniond(msg.rotation.w, msg.rotation.x, msg.rotation.y, msg.rotation.z);
+  pose.rotation = fromMsg(msg.rotation);
+  return pose;
+}
+
+void toMsg(const RigidPose& pose, geometry_msgs::Pose* msg) {
+  msg->position.x = pose.translation.x();
+  msg->position.y = pose.translation.y();
+  msg->position.z = pose.translation.z();
+  msg->orientation = toMsg(pose.rotation);
+}
+
+RigidPose fromMsg(const geometry_msgs::Pose& msg) {
+  RigidPose pose;
+  pose.translation = Vector3(msg.position.x, msg.position.y, msg.position.z);
+  pose.rotation = fromMsg(msg.orientation);
   return pose;
 }
 

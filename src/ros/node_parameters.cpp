@@ -164,6 +164,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.odom_frame = p.frame_prefix + p.odom_frame;
   p.base_frame = p.frame_prefix + p.base_frame;
   p.publish_points_all = !in.read("points", &p.points, "a list of strings");
+  in.read("imu_points", &p.imu_points, "a list of strings");
   // <= 0 would make diagnostic_updater publish at every tick (1 kHz).
   p.diagnostic_period = in.positive("diagnostic_period", p.diagnostic_period, "s");
 

@@ -226,12 +226,20 @@ Vector3 OnlineVehicle::wheelPosition(std::size_t i) const {
   return relativePosition(geometry_.cog, hull, p, Vector3(u_hull.x(), u_hull.y(), uz));
 }
 
+Vector3 OnlineVehicle::pointBlock(std::size_t i, Eigen::Index offset) const {
+  const Vector& y = simulator_.outputs();
+  const std::size_t first = 3 * i;
+  return Vector3(y(offset + point_rows_.at(first)), y(offset + point_rows_.at(first + 1)),
+                 y(offset + point_rows_.at(first + 2)));
+}
+
 Vector3 OnlineVehicle::pointPosition(std::size_t i) const {
   const Vector3& p = geometry_.points.at(i).position;
-  const Vector& y = simulator_.outputs();
-  const Vector3 u(y(disp_offset_ + point_rows_[3 * i]), y(disp_offset_ + point_rows_[3 * i + 1]),
-                  y(disp_offset_ + point_rows_[3 * i + 2]));
-  return relativePosition(geometry_.cog, hullDisplacement(), p, u);
+  return relativePosition(geometry_.cog, hullDisplacement(), p, pointBlock(i, disp_offset_));
+}
+
+Vector3 OnlineVehicle::pointAcceleration(std::size_t i) const {
+  return pointBlock(i, acc_offset_);
 }
 
 }  // namespace ros_layer

@@ -10,9 +10,12 @@
 
 #include <pthread.h>
 
+#include <ros/names.h>
+
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 namespace tracked_vehicle_dynamics {
@@ -78,6 +81,12 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   advertise<geometry_msgs::TwistStamped>("hull/twist", queue(publish_every_), &twist_pub_);
   advertise<RoadWheels>("road_wheels", queue(publish_every_), &wheels_pub_);
   advertise<Comfort>("comfort", queue(comfort_every_), &comfort_pub_);
+  advertise<nav_msgs::Odometry>("odom", queue(publish_every_), &odom_pub_);
+  for (std::size_t i : imu_points_) {
+    imu_pubs_.push_back(std::make_unique<CountedPublisher>());
+    advertise<sensor_msgs::Imu>("imu/" + vehicle_->geometry().points[i].name,
+                                queue(publish_every_), imu_pubs_.back().get());
+  }
   reset_service_ = loop_private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
   reset_to_service_ =
       loop_private_nh_.advertiseService("reset_to", &VehicleDynamicsNode::onResetTo, this);
@@ -234,26 +243,55 @@ reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
   return std::move(loaded.model);
 }
 
+std::size_t VehicleDynamicsNode::pointIndex(const std::string& name, const std::string& key) const {
+  const auto& points = vehicle_->geometry().points;
+  const auto it = std::find_if(points.begin(), points.end(),
+                               [&](const VehicleGeometry::Body& b) { return b.name == name; });
+  if (it == points.end()) {
+    std::string known;
+    for (const auto& p : points)
+      known += (known.empty() ? "" : ", ") + p.name;
+    throw ParameterError(private_nh_.resolveName(key) + ": unknown point '" + name +
+                         "' (the description has: " + known + "); list only these in ~" + key +
+                         " (launch argument " + key + ")");
+  }
+  return static_cast<std::size_t>(it - points.begin());
+}
+
+void VehicleDynamicsNode::setUpImus() {
+  // An IMU reading is of its frame's origin, so the point must be one of the published frames
+  // (published_points_ still holds every one of them here).
+  for (const std::string& name : params_.imu_points) {
+    const std::size_t i = pointIndex(name, "imu_points");
+    const std::string key = private_nh_.resolveName("imu_points");
+    if (std::find(published_points_.begin(), published_points_.end(), i) ==
+        published_points_.end())
+      throw ParameterError(key + ": point '" + name +
+                           "' is not published as a frame; add it to ~points (launch argument "
+                           "points) or leave ~points unset");
+    if (std::find(imu_points_.begin(), imu_points_.end(), i) != imu_points_.end())
+      throw ParameterError(key + ": point '" + name + "' is listed twice");
+    const std::string topic = "imu/" + name;
+    std::string why;
+    if (!ros::names::validate(topic, why))
+      throw ParameterError(key + ": point '" + name + "' does not make a valid topic name " +
+                           topic + " (" + why + ")");
+    imu_points_.push_back(i);
+    imu_msgs_.emplace_back();
+    imu_msgs_.back().header.frame_id = params_.frame_prefix + name;
+  }
+}
+
 void VehicleDynamicsNode::setUpFrames() {
   const VehicleGeometry& geometry = vehicle_->geometry();
   if (params_.publish_points_all) {
     for (std::size_t i = 0; i < geometry.points.size(); ++i)
       published_points_.push_back(i);
   } else {
-    for (const std::string& name : params_.points) {
-      const auto it = std::find_if(geometry.points.begin(), geometry.points.end(),
-                                   [&](const VehicleGeometry::Body& b) { return b.name == name; });
-      if (it == geometry.points.end()) {
-        std::string known;
-        for (const auto& p : geometry.points)
-          known += (known.empty() ? "" : ", ") + p.name;
-        throw ParameterError(private_nh_.resolveName("points") + ": unknown point '" + name +
-                             "' (the description has: " + known +
-                             "); list only these in ~points (launch argument points)");
-      }
-      published_points_.push_back(static_cast<std::size_t>(it - geometry.points.begin()));
-    }
+    for (const std::string& name : params_.points)
+      published_points_.push_back(pointIndex(name, "points"));
   }
+  setUpImus();
   // Points rigid with the hull never move in base_link: /tf_static once, not /tf every sample.
   std::vector<std::size_t> moving;
   for (std::size_t i : published_points_)
@@ -287,6 +325,8 @@ void VehicleDynamicsNode::setUpFrames() {
   }
   accel_msg_.header.frame_id = params_.base_frame;
   twist_msg_.header.frame_id = params_.base_frame;
+  odom_msg_.header.frame_id = params_.odom_frame;
+  odom_msg_.child_frame_id = params_.base_frame;
   wheels_msg_.header.frame_id = params_.base_frame;
   // The comfort metrics are of the acceleration at the comfort point: its frame when it is
   // published as one, else the hull's (the "hull" point is the hull CoG, rigid in base_link).
@@ -666,14 +706,47 @@ void VehicleDynamicsNode::publishState() {
     tf_pub_.publisher.publish(tf_msg_);
   }
 
-  // Hull CoG motion in base_link axes; the travel speed is part of the hull's velocity.
+  // Hull CoG motion in base_link axes; the travel speed is part of the hull's velocity. The
+  // angular velocity is the body rate of the published orientation (vehicle_frames.h).
   const Matrix3 to_base = pose.rotation.toRotationMatrix().transpose();
-  if (twist) {
+  const bool odom = odom_pub_.listened();
+  const bool imu = std::any_of(imu_pubs_.begin(), imu_pubs_.end(),
+                               [](const auto& p) { return p->listened(); });
+  if (twist || odom || imu) {
+    const Vector6 displacement = v.hullDisplacement();
     const Vector6 velocity = v.hullVelocity();
-    twist_msg_.header.stamp = sample_time_;
-    twist_msg_.twist.linear = toMsg(to_base * (velocity.head<3>() + Vector3(v.speed(), 0.0, 0.0)));
-    twist_msg_.twist.angular = toMsg(to_base * velocity.tail<3>());
-    twist_pub_.publisher.publish(twist_msg_);
+    const Vector6 base_twist =
+        baseLinkTwist(v.speed(), v.geometry().cog, displacement, velocity);
+    const geometry_msgs::Vector3 angular = toMsg(Vector3(base_twist.tail<3>()));
+    if (twist) {
+      twist_msg_.header.stamp = sample_time_;
+      twist_msg_.twist.linear =
+          toMsg(to_base * (velocity.head<3>() + Vector3(v.speed(), 0.0, 0.0)));
+      twist_msg_.twist.angular = angular;
+      twist_pub_.publisher.publish(twist_msg_);
+    }
+    if (odom) {
+      // nav_msgs/Odometry: the pose of base_link in odom (as on /tf) and the twist of its
+      // origin in its own axes (REP-105); exact model values, covariances left 0.
+      odom_msg_.header.stamp = sample_time_;
+      toMsg(pose, &odom_msg_.pose.pose);
+      odom_msg_.twist.twist.linear = toMsg(Vector3(base_twist.head<3>()));
+      odom_msg_.twist.twist.angular = angular;
+      odom_pub_.publisher.publish(odom_msg_);
+    }
+    for (std::size_t k = 0; k < imu_points_.size(); ++k) {
+      if (!imu_pubs_[k]->listened())
+        continue;
+      // The point's frame is parallel to base_link: the hull's orientation and body rate, and
+      // the specific force of the point's acceleration (REP-145: gravity included).
+      sensor_msgs::Imu& msg = imu_msgs_[k];
+      msg.header.stamp = sample_time_;
+      msg.orientation = toMsg(pose.rotation);
+      msg.angular_velocity = angular;
+      msg.linear_acceleration =
+          toMsg(specificForce(pose.rotation, v.pointAcceleration(imu_points_[k])));
+      imu_pubs_[k]->publisher.publish(msg);
+    }
   }
   if (accel) {
     const Vector6 acceleration = v.hullAcceleration();

@@ -47,5 +47,34 @@ Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement, c
   return point + displacement - hullPointDisplacement(cog, hull_displacement, point);
 }
 
+Vector3 bodyRate(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_rate) {
+  const double sr = std::sin(roll_pitch_yaw(0)), cr = std::cos(roll_pitch_yaw(0));
+  const double sp = std::sin(roll_pitch_yaw(1)), cp = std::cos(roll_pitch_yaw(1));
+  Matrix3 e;
+  e << 1.0, 0.0, -sp,  //
+      0.0, cr, sr * cp,  //
+      0.0, -sr, cr * cp;
+  return e * roll_pitch_yaw_rate;
+}
+
+Vector6 baseLinkTwist(double speed, const Vector3& cog, const Vector6& hull_displacement,
+                      const Vector6& hull_velocity) {
+  const Matrix3 r = rotationFromRollPitchYaw(hull_displacement(3), hull_displacement(4),
+                                             hull_displacement(5))
+                        .toRotationMatrix();
+  const Vector3 omega_body = bodyRate(hull_displacement.tail<3>(), hull_velocity.tail<3>());
+  const Vector3 omega = r * omega_body;
+  // t' = (v, 0, 0) + u_G' - omega x (R p_G), in odom axes; R^T t' in base_link axes.
+  const Vector3 origin_velocity =
+      Vector3(speed, 0.0, 0.0) + hull_velocity.head<3>() - omega.cross(r * cog);
+  Vector6 twist;
+  twist << r.transpose() * origin_velocity, omega_body;
+  return twist;
+}
+
+Vector3 specificForce(const Eigen::Quaterniond& rotation, const Vector3& acceleration) {
+  return rotation.conjugate() * (acceleration + Vector3(0.0, 0.0, kStandardGravity));
+}
+
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics

@@ -228,6 +228,48 @@ TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
       << run.output;
 }
 
+// ~imu_points: each entry a published point frame, once; every bad entry is named.
+TEST(NodeBadParameters, BadImuPointsAreNamed) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  // Lists cannot be given on a node's command line (roscpp reads scalars there): they go on the
+  // master under the node's name first.
+  struct Case {
+    std::string name;
+    std::vector<std::string> points, imu_points;  // points empty: ~points unset
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {"imu_unknown", {}, {"nowhere"},
+       "imu_points: unknown point 'nowhere' (the description has: crew_seat, sensor_mount)"},
+      {"imu_unpublished", {"crew_seat"}, {"sensor_mount"},
+       "imu_points: point 'sensor_mount' is not published as a frame; add it to ~points"},
+      {"imu_twice", {}, {"crew_seat", "crew_seat"},
+       "imu_points: point 'crew_seat' is listed twice"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    ros::param::set("/" + c.name + "/imu_points", c.imu_points);
+    if (!c.points.empty())
+      ros::param::set("/" + c.name + "/points", c.points);
+    const NodeRun run = runNode(
+        "__name:=" + c.name + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir, timeout);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("/" + c.name + "/" + c.message), std::string::npos) << run.output;
+  }
+  // Not a list (a scalar on the command line).
+  const NodeRun run = runNode("__name:=imu_scalar _vehicle:=" + vehicle + " _cache_dir:=" +
+                                  cache_dir + " _imu_points:=sensor_mount",
+                              timeout);
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find("/imu_scalar/imu_points: must be a list of strings"),
+            std::string::npos)
+      << run.output;
+}
+
 // An unwritable ~cache_dir does not stop the node (the model is built), but it must not be
 // reported as cached: a WARN says "not cached" and why.
 TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {

@@ -1,7 +1,8 @@
 // rostest tier 3 (end to end): a long-hill bag replayed with `rosbag play --clock` through the
 // node gives the hull heave, hull pitch and road-wheel displacements of an offline run of the same
 // core Simulator on the same track, within a fraction of the peak (node_long_hill_replay.test
-// holds the expected values and tolerances).
+// holds the expected values and tolerances), and on imu/<point> the specific force an accelerometer
+// at that named point reads in the offline run.
 //
 // Samples are matched by station: with a constant speed v the node's k-th moving step is at
 // s = k v h whenever it started moving, exactly as the offline run's k-th step.
@@ -9,6 +10,7 @@
 
 #include <map>
 
+#include <sensor_msgs/Imu.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "node_test_utils.h"
@@ -17,6 +19,7 @@
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
@@ -35,32 +38,46 @@ struct NodeSample {
   std::vector<double> wheels;  // displacement from static [m]
   bool has_pose = false;
   RigidPose pose;
+  bool has_imu = false;
+  Vector3 specific_force = Vector3::Zero();  // imu/<point> linear_acceleration [m/s^2]
 };
 
 /// The offline run: hull heave, pitch and wheel displacements per step k (station k v h).
 struct Reference {
   std::vector<double> heave, pitch;
   std::vector<std::vector<double>> wheels;  // [k][wheel]
+  std::vector<Vector3> specific_force;      // [k] at the IMU point, in its axes [m/s^2]
   double heave_peak = 0.0, pitch_peak = 0.0, wheel_peak = 0.0;
+  double vibration_peak = 0.0;  // max |f - f at rest| [m/s^2]
 };
 
 Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry& geometry,
                      const terrain::Terrain& track, double v, double rate, double end_station,
                      dynamics::DiscretizationMethod method, dynamics::InputHold hold,
-                     double lateral_offset) {
+                     double lateral_offset, const std::string& imu_point) {
   const dynamics::SecondOrderSystem& sys = model.system;
   dynamics::SimulatorOptions options;
   options.time_step = 1.0 / rate;
   options.hold = hold;
   options.method = method;
   options.generalized_force = model.gravity_load;
+  // As the node by default (~max_mode_frequency = ~rate / 2): modes above respond quasi-statically.
+  if (method == dynamics::DiscretizationMethod::ModalDecoupled)
+    options.max_mode_frequency_hz = 0.5 * rate;
+  options.quantities = {dynamics::OutputQuantity::Displacement,
+                        dynamics::OutputQuantity::Acceleration};
   dynamics::Simulator sim(sys, options);
   const Eigen::Index n = sys.inputCount();
   const Vector z0 = dynamics::staticEquilibrium(sys, Vector::Zero(n), model.gravity_load);
   sim.reset(z0, Vector::Zero(2 * n));
-  const dynamics::OutputLayout layout(sys.output_names, {dynamics::OutputQuantity::Displacement});
+  const dynamics::OutputLayout layout(sys.output_names, options.quantities);
   const Eigen::Index heave_row = layout.row("hull uz", dynamics::OutputQuantity::Displacement);
   const Eigen::Index pitch_row = layout.row("hull ry", dynamics::OutputQuantity::Displacement);
+  std::vector<Eigen::Index> hull_rows, imu_rows;
+  for (const char* dof : {"ux", "uy", "uz", "rx", "ry", "rz"})
+    hull_rows.push_back(layout.row(std::string("hull ") + dof, dynamics::OutputQuantity::Displacement));
+  for (const char* dof : {"ux", "uy", "uz"})
+    imu_rows.push_back(layout.row(imu_point + " " + dof, dynamics::OutputQuantity::Acceleration));
   std::vector<Eigen::Index> wheel_rows;
   for (const auto& w : geometry.wheels) {
     wheel_rows.push_back(layout.row(w.name + " uz", dynamics::OutputQuantity::Displacement));
@@ -79,6 +96,13 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     ref.pitch_peak = std::max(ref.pitch_peak, std::abs(y(pitch_row) - rest(pitch_row)));
     for (double w : wheels)
       ref.wheel_peak = std::max(ref.wheel_peak, std::abs(w));
+    Vector6 hull;
+    for (int i = 0; i < 6; ++i)
+      hull(i) = y(hull_rows[static_cast<std::size_t>(i)]);
+    const Vector3 a(y(imu_rows[0]), y(imu_rows[1]), y(imu_rows[2]));
+    ref.specific_force.push_back(specificForce(hullPose(0.0, geometry.cog, hull).rotation, a));
+    ref.vibration_peak = std::max(
+        ref.vibration_peak, (ref.specific_force.back() - ref.specific_force.front()).norm());
   };
   record();
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, lateral_offset);
@@ -98,6 +122,13 @@ class LongHillReplay : public ::testing::Test {
   LongHillReplay() : private_nh_("~") {
     tf_sub_ = nh_.subscribe("/tf", 10000, &LongHillReplay::onTf, this);
     wheels_sub_ = nh_.subscribe("road_wheels", 10000, &LongHillReplay::onWheels, this);
+    imu_point_ = test::requiredParam<std::string>(private_nh_, "imu_point");
+    imu_sub_ = nh_.subscribe<sensor_msgs::Imu>(
+        "imu/" + imu_point_, 10000, [this](const sensor_msgs::Imu::ConstPtr& msg) {
+          NodeSample& s = samples_[msg->header.stamp];
+          s.specific_force = fromMsg(msg->linear_acceleration);
+          s.has_imu = true;
+        });
   }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
     for (const auto& t : msg->transforms) {
@@ -120,7 +151,8 @@ class LongHillReplay : public ::testing::Test {
   }
 
   ros::NodeHandle nh_, private_nh_;
-  ros::Subscriber tf_sub_, wheels_sub_;
+  ros::Subscriber tf_sub_, wheels_sub_, imu_sub_;
+  std::string imu_point_;
   std::map<ros::Time, NodeSample> samples_;
   double max_station_ = 0.0;
   ros::WallTime last_message_;
@@ -160,10 +192,12 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   const VehicleGeometry geometry = vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file));
   const terrain::Terrain track = terrain::makeTrack(track_name);
   const Reference ref =
-      offlineRun(model, geometry, track, v, rate, max_station_, method, hold, lateral_offset);
+      offlineRun(model, geometry, track, v, rate, max_station_, method, hold, lateral_offset,
+                 imu_point_);
   ASSERT_GT(ref.heave_peak, 0.0);
 
-  double heave_error = 0.0, pitch_error = 0.0, wheel_error = 0.0;
+  double heave_error = 0.0, pitch_error = 0.0, wheel_error = 0.0, imu_error = 0.0;
+  std::size_t imu_compared = 0;
   double node_heave_peak = 0.0;
   double min_station = 1e9, max_station = -1e9;
   std::size_t compared = 0;
@@ -183,6 +217,10 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
     for (std::size_t i = 0; i < s.wheels.size(); ++i) {
       wheel_error = std::max(wheel_error, std::abs(s.wheels[i] - ref.wheels[k][i]));
     }
+    if (s.has_imu) {
+      imu_error = std::max(imu_error, (s.specific_force - ref.specific_force[k]).norm());
+      ++imu_compared;
+    }
     node_heave_peak = std::max(node_heave_peak, std::abs(u(2) - rest_heave));
     min_station = std::min(min_station, s.station);
     max_station = std::max(max_station, s.station);
@@ -197,11 +235,18 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
               pitch_error, pitch_error / ref.pitch_peak);
   std::printf("wheels: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.wheel_peak, wheel_error,
               wheel_error / ref.wheel_peak);
+  std::printf("imu/%s: %zu samples, vibration peak %.3f m/s^2, max error %.3g m/s^2\n",
+              imu_point_.c_str(), imu_compared, ref.vibration_peak, imu_error);
   EXPECT_LE(min_station, covered_from) << "the replay's start was not seen";
   EXPECT_GE(max_station, covered_until);
   EXPECT_LE(heave_error, tolerance * ref.heave_peak);
   EXPECT_LE(pitch_error, tolerance * ref.pitch_peak);
   EXPECT_LE(wheel_error, tolerance * ref.wheel_peak);
+  EXPECT_GE(imu_compared, compared / 2) << "imu/" << imu_point_ << " samples missing";
+  EXPECT_GT(ref.vibration_peak, 1.0);  // the hill shakes the point
+  EXPECT_LE(imu_error, tolerance * ref.vibration_peak);
+  // At rest before the hill the accelerometer reads gravity (static attitude: about +g0 up).
+  EXPECT_NEAR(ref.specific_force.front().z(), kStandardGravity, 1e-3);
   EXPECT_NEAR(node_heave_peak, heave_peak_expected, heave_peak_tolerance);
 }
 

@@ -1,14 +1,18 @@
 // rostest tier 1: the node on flat terrain at rest holds static equilibrium and publishes every
-// tf frame with the right parent (node_static.test).
+// tf frame with the right parent, the same pose on odom (nav_msgs/Odometry) as on /tf, and on
+// imu/<point> the specific force of gravity in the point's frame (node_static.test).
 #include <gtest/gtest.h>
 
 #include <map>
 #include <set>
 
+#include <nav_msgs/Odometry.h>
+#include <sensor_msgs/Imu.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
+#include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
@@ -34,6 +38,22 @@ class NodeStatic : public ::testing::Test {
     comfort_sub_ = nh_.subscribe<Comfort>(
         "comfort", 10, [this](const Comfort::ConstPtr& msg) { comfort_frame_ = msg->header.frame_id; });
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
+    odom_sub_ = nh_.subscribe("odom", 1000, &NodeStatic::onOdom, this);
+    private_nh_.getParam("imu_points", imu_points_);
+    for (const std::string& name : imu_points_) {
+      imu_subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(
+          "imu/" + name, 1000,
+          [this, name](const sensor_msgs::Imu::ConstPtr& msg) { last_imu_[name] = *msg; }));
+    }
+  }
+
+  void onOdom(const nav_msgs::Odometry::ConstPtr& msg) {
+    odom_frames_ = {msg->header.frame_id, msg->child_frame_id};
+    if (collecting_) {
+      odom_poses_[msg->header.stamp] = fromMsg(msg->pose.pose);
+      max_odom_speed_ = std::max({max_odom_speed_, fromMsg(msg->twist.twist.linear).norm(),
+                                  fromMsg(msg->twist.twist.angular).norm()});
+    }
   }
 
   void onTfStatic(const tf2_msgs::TFMessage::ConstPtr& msg) {
@@ -64,7 +84,13 @@ class NodeStatic : public ::testing::Test {
   ros::NodeHandle nh_, private_nh_;
   std::string prefix_, base_;
   test::DiagnosticsCache diagnostics_;
-  ros::Subscriber tf_sub_, tf_static_sub_, wheels_sub_, comfort_sub_;
+  ros::Subscriber tf_sub_, tf_static_sub_, wheels_sub_, comfort_sub_, odom_sub_;
+  std::vector<ros::Subscriber> imu_subs_;
+  std::vector<std::string> imu_points_;
+  std::map<std::string, sensor_msgs::Imu> last_imu_;
+  std::pair<std::string, std::string> odom_frames_;
+  std::map<ros::Time, RigidPose> odom_poses_;
+  double max_odom_speed_ = 0.0;
   std::string comfort_frame_;
   ros::Publisher terrain_pub_;
   std::map<std::string, std::string> parents_;
@@ -140,6 +166,34 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   EXPECT_NEAR(poses_.back().pose.rotation.angularDistance(expected.rotation), 0.0, tolerance);
   // The hull sags under gravity.
   EXPECT_LT(expected.translation.z(), 0.0);
+
+  // odom (nav_msgs/Odometry) carries the pose of /tf at the same stamps, and no motion at rest.
+  EXPECT_EQ(odom_frames_.first, prefix_ + "odom");
+  EXPECT_EQ(odom_frames_.second, base_);
+  std::size_t matched = 0;
+  for (const TfSample& s : poses_) {
+    const auto it = odom_poses_.find(s.stamp);
+    if (it == odom_poses_.end())
+      continue;
+    ++matched;
+    EXPECT_EQ(it->second.translation, s.pose.translation);
+    EXPECT_NEAR(it->second.rotation.angularDistance(s.pose.rotation), 0.0, 1e-15);
+  }
+  EXPECT_GT(matched, 100u) << "odom and /tf share too few stamps";
+  EXPECT_LE(max_odom_speed_, tolerance);
+  // Each IMU reads the specific force of gravity in its frame, which is parallel to base_link:
+  // R^T (0, 0, g0) with R the static attitude, the hull's orientation and no rotation rate.
+  const Vector3 gravity_reading = specificForce(expected.rotation, Vector3::Zero());
+  EXPECT_NEAR(gravity_reading.z(), kStandardGravity, 1e-3);
+  for (const std::string& name : imu_points_) {
+    ASSERT_EQ(last_imu_.count(name), 1u) << "nothing on imu/" << name;
+    const sensor_msgs::Imu& imu = last_imu_[name];
+    EXPECT_EQ(imu.header.frame_id, prefix_ + name);
+    EXPECT_NEAR((fromMsg(imu.linear_acceleration) - gravity_reading).norm(), 0.0, 1e-6) << name;
+    EXPECT_NEAR(fromMsg(imu.angular_velocity).norm(), 0.0, tolerance) << name;
+    EXPECT_NEAR(fromMsg(imu.orientation).angularDistance(expected.rotation), 0.0, tolerance)
+        << name;
+  }
 
   // The comfort metrics are stamped in the frame of the point they are taken at.
   EXPECT_EQ(comfort_frame_, prefix_ + "crew_seat");

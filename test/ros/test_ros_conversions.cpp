@@ -1,5 +1,5 @@
 // ROS-layer conversions without a master: message round trips (core -> msg -> core), the frame
-// kinematics and its inverse, bag save -> load of a track bag, and the duration statistics.
+// kinematics and its inverse, its rates and the accelerometer reading, bag save -> load of a track bag, and the duration statistics.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -201,6 +201,86 @@ TEST(VehicleFrames, PitchNoseDownLowersTheFrontPoints) {
   const Vector3 p(2.0, 0.5, 1.5);
   const Vector3 rigid = hullPointDisplacement(cog, u, p);
   EXPECT_NEAR((relativePosition(cog, u, p, rigid) - p).norm(), 0.0, 1e-15);
+}
+
+TEST(PoseConversion, RoundTrip) {
+  RigidPose pose;
+  pose.translation = Vector3(-3.5, 0.75, 1.125);
+  pose.rotation = rotationFromRollPitchYaw(-0.2, 0.07, 0.3);
+  geometry_msgs::Pose msg;
+  toMsg(pose, &msg);
+  const RigidPose back = fromMsg(msg);
+  EXPECT_EQ(back.translation, pose.translation);
+  EXPECT_EQ(back.rotation.coeffs(), pose.rotation.coeffs());
+}
+
+// theta(t) = theta + theta' t about a state with every angle non-zero, so that the Euler-rate
+// matrix differs from the identity by far more than the tolerance.
+class VehicleFrameRates : public ::testing::Test {
+ protected:
+  VehicleFrameRates() {
+    u_ << 0.01, -0.02, -0.08, 0.15, -0.25, 0.3;
+    du_ << 0.3, -0.1, 0.7, 0.9, -1.3, 0.4;
+  }
+  Vector6 at(double t) const { return u_ + t * du_; }
+  static constexpr double kStep = 1e-5;        // central differences [s]
+  static constexpr double kDifference = 1e-8;  // O(kStep^2) and rounding / kStep
+  const Vector3 cog_ = Vector3(-0.1, 0.02, 1.57);
+  const double station_ = 17.0, speed_ = 8.5;
+  Vector6 u_, du_;
+};
+
+TEST_F(VehicleFrameRates, BodyRateIsTheRotationsDerivative) {
+  // R^T R' = [omega_b]x for the rotation of the Euler angles theta(t).
+  const auto rotation = [&](double t) {
+    const Vector6 u = at(t);
+    return rotationFromRollPitchYaw(u(3), u(4), u(5)).toRotationMatrix();
+  };
+  const Matrix3 derivative = (rotation(kStep) - rotation(-kStep)) / (2.0 * kStep);
+  const Matrix3 skew = rotation(0.0).transpose() * derivative;
+  const Vector3 omega(skew(2, 1), skew(0, 2), skew(1, 0));
+  EXPECT_NEAR((bodyRate(u_.tail<3>(), du_.tail<3>()) - omega).norm(), 0.0, kDifference);
+  // Not simply theta' at these angles.
+  EXPECT_GT((bodyRate(u_.tail<3>(), du_.tail<3>()) - du_.tail<3>()).norm(), 0.1);
+  // Level: the body rate is the Euler rate.
+  EXPECT_EQ(bodyRate(Vector3::Zero(), du_.tail<3>()), Vector3(du_.tail<3>()));
+}
+
+TEST_F(VehicleFrameRates, BaseLinkTwistIsThePosesDerivative) {
+  const auto pose = [&](double t) { return hullPose(station_ + speed_ * t, cog_, at(t)); };
+  const Vector3 velocity =
+      (pose(kStep).translation - pose(-kStep).translation) / (2.0 * kStep);  // odom axes
+  const Vector6 twist = baseLinkTwist(speed_, cog_, u_, du_);
+  const Eigen::Quaterniond r = pose(0.0).rotation;
+  EXPECT_NEAR((r * Vector3(twist.head<3>()) - velocity).norm(), 0.0, kDifference);
+  EXPECT_EQ(Vector3(twist.tail<3>()), bodyRate(u_.tail<3>(), du_.tail<3>()));
+  // At rest: only the travel speed, along base_link's own axes.
+  const Vector6 level = baseLinkTwist(speed_, cog_, Vector6::Zero(), Vector6::Zero());
+  EXPECT_EQ(Vector3(level.head<3>()), Vector3(speed_, 0.0, 0.0));
+  EXPECT_EQ(Vector3(level.tail<3>()), Vector3::Zero());
+}
+
+TEST(VehicleFrames, SpecificForceIsWhatAnAccelerometerReads) {
+  const double g = kStandardGravity;
+  const double angle = 0.2;
+  const auto reading = [](double roll, double pitch, const Vector3& a) {
+    return specificForce(rotationFromRollPitchYaw(roll, pitch, 0.0), a);
+  };
+  // Level at rest: +g0 up.
+  EXPECT_NEAR((reading(0.0, 0.0, Vector3::Zero()) - Vector3(0.0, 0.0, g)).norm(), 0.0, 1e-15);
+  // Nose down (positive pitch, REP-103): gravity pulls along +x, the reading is -g0 sin(pitch).
+  EXPECT_NEAR(
+      (reading(0.0, angle, Vector3::Zero()) - g * Vector3(-std::sin(angle), 0.0, std::cos(angle)))
+          .norm(),
+      0.0, 1e-14);
+  // Left side up (positive roll): +g0 sin(roll) along y.
+  EXPECT_NEAR(
+      (reading(angle, 0.0, Vector3::Zero()) - g * Vector3(0.0, std::sin(angle), std::cos(angle)))
+          .norm(),
+      0.0, 1e-14);
+  // Free fall reads nothing, whatever the attitude; heaving up at 2 m/s^2 level reads g0 + 2.
+  EXPECT_NEAR(reading(0.3, -0.2, Vector3(0.0, 0.0, -g)).norm(), 0.0, 1e-14);
+  EXPECT_NEAR(reading(0.0, 0.0, Vector3(0.0, 0.0, 2.0)).z(), g + 2.0, 1e-14);
 }
 
 TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {

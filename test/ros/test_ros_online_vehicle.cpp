@@ -340,6 +340,28 @@ TEST(OnlineVehicle, ResetToAtASpeedStartsFromTheSampledInputRate) {
 }
 
 #if defined(__GLIBC__)
+TEST(OnlineVehicle, PointAccelerationIsTheHullsRigidMotionAtThePoint) {
+  // The toy's crew seat rows are the hull's rigid motion, so its acceleration (what the node's
+  // imu/<point> reads, less gravity) is a_G + alpha x (p - p_G) of the hull's acceleration rows.
+  const reduction::ReducedModel model = test::toyModel();
+  OnlineVehicle vehicle(model, test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  double peak = 0.0, worst = 0.0;
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  vehicle.setSpeed(10.0);
+  const Vector3 arm = vehicle.geometry().points[0].position - vehicle.geometry().cog;
+  for (int k = 0; k < 600; ++k) {
+    vehicle.step();
+    const Vector6 a = vehicle.hullAcceleration();
+    const Vector3 rigid = a.head<3>() + a.tail<3>().cross(arm);
+    peak = std::max(peak, rigid.norm());
+    worst = std::max(worst, (vehicle.pointAcceleration(0) - rigid).norm());
+  }
+  EXPECT_GT(peak, 1.0);  // the bump shook the seat
+  EXPECT_LE(worst, 1e-9 * peak);
+}
+
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
                       dynamics::DiscretizationMethod::AugmentedExponential}) {

@@ -8,6 +8,8 @@ its arguments through, and its recorder keeps /tf_static (the named points' fram
     /usr/bin/python3 test/scripts/test_launch_files.py --env-sh DEVEL/env.sh [--xml OUTDIR/launch_files.xml]
 """
 import os
+import re
+import shlex
 import shutil
 import subprocess
 import sys
@@ -122,9 +124,21 @@ class LaunchFilesTest(unittest.TestCase):
             self.assertEqual(cleared_namespaces(launch_file), [NODE + "/"], launch_file)
 
     def test_replay_track_records_the_static_frames(self):
-        recorder = roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch").split()
-        for topic in ("/tf", "/tf_static", "/hull/accel", "/road_wheels", "/comfort"):
-            self.assertIn(topic, recorder)
+        recorder = shlex.split(roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch"))
+        # rosbag record matches a topic against the whole of the --regex pattern.
+        pattern = re.compile(recorder[recorder.index("--regex") + 1])
+        for topic in ("/tf", "/tf_static", "/odom", "/hull/accel", "/hull/twist", "/road_wheels",
+                      "/comfort", "/diagnostics", "/imu/sensor_mount", "/imu/crew_seat"):
+            self.assertTrue(pattern.fullmatch(topic), topic)
+        for topic in ("/speed", "/terrain_profile", "/clock", "/rosout", "/tf_extra"):
+            self.assertFalse(pattern.fullmatch(topic), topic)
+
+    def test_imu_points_are_passed_through(self):
+        self.assertEqual(params("vehicle_dynamics.launch")["imu_points"], [])  # the file's: none
+        self.assertEqual(params("vehicle_dynamics.launch", "imu_points:=[sensor_mount]")["imu_points"],
+                         ["sensor_mount"])
+        self.assertEqual(params("replay_track.launch", "imu_points:=[crew_seat, sensor_mount]")
+                         ["imu_points"], ["crew_seat", "sensor_mount"])
 
 
 if __name__ == "__main__":

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/Pose.h>
+#include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/Vector3.h>
 
@@ -46,9 +48,15 @@ struct ComfortReport {
 void toMsg(const ComfortReport& report, Comfort* msg);
 ComfortReport fromMsg(const Comfort& msg);
 
-/// Pose <-> geometry_msgs/Transform.
+/// Pose <-> geometry_msgs/Transform and geometry_msgs/Pose.
 void toMsg(const RigidPose& pose, geometry_msgs::Transform* msg);
 RigidPose fromMsg(const geometry_msgs::Transform& msg);
+void toMsg(const RigidPose& pose, geometry_msgs::Pose* msg);
+RigidPose fromMsg(const geometry_msgs::Pose& msg);
+
+/// Eigen quaternion <-> geometry_msgs/Quaternion.
+geometry_msgs::Quaternion toMsg(const Eigen::Quaterniond& q);
+Eigen::Quaterniond fromMsg(const geometry_msgs::Quaternion& msg);
 
 /// Eigen vector <-> geometry_msgs/Vector3.
 geometry_msgs::Vector3 toMsg(const Vector3& v);

@@ -44,6 +44,9 @@ struct NodeParameters {
   /// ~points: named points published as frames; empty: all points of the description.
   std::vector<std::string> points;
   bool publish_points_all = true;  ///< true when ~points was not given
+  /// ~imu_points: named points (published as frames) with a simulated IMU, sensor_msgs/Imu on
+  /// imu/<point>; empty: none.
+  std::vector<std::string> imu_points;
   /// ~diagnostic_period [s]; diagnostic_updater reads the key itself, the node validates it.
   double diagnostic_period = 1.0;
 };

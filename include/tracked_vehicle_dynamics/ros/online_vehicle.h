@@ -138,6 +138,9 @@ class OnlineVehicle {
   Vector3 wheelPosition(std::size_t i) const;
   /// Position [m] in base_link of named point i.
   Vector3 pointPosition(std::size_t i) const;
+  /// Vibration acceleration [m/s^2] of named point i in odom axes (rows "<point> ux|uy|uz" of
+  /// the acceleration block; without gravity and without a change of the travel speed).
+  Vector3 pointAcceleration(std::size_t i) const;
   /// True when named point i moves rigidly with the hull in the model (its output rows are
   /// u_G + theta x (p - p_G) of the hull rows, to rounding): its base_link position is then its
   /// static position, geometry().points[i].position, at every step.
@@ -160,6 +163,8 @@ class OnlineVehicle {
 
  private:
   Vector6 block(const std::vector<Eigen::Index>& rows, Eigen::Index offset) const;
+  /// Named point i's three outputs of the block starting at `offset`.
+  Vector3 pointBlock(std::size_t i, Eigen::Index offset) const;
   Eigen::Index outputRow(const std::string& name) const;
   /// Whether the last three point_rows_ (a point at `point`) are the hull's rigid motion in H.
   bool movesWithHull(const Matrix& output, const Vector3& point) const;

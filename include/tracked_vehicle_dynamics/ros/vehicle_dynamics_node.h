@@ -4,8 +4,9 @@
 //   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
 //   ~reset, ~reset_to (ResetVehicle) ──► OnlineVehicle::reset, resetTo
 //   tick at ~rate on ROS time        ──► OnlineVehicle::step() for every step due
-//       ──► tf2 odom→base_link→{road wheels, moving named points}, hull/accel, hull/twist,
-//           road_wheels, comfort, /diagnostics
+//       ──► tf2 odom→base_link→{road wheels, moving named points}, odom (nav_msgs/Odometry),
+//           hull/accel, hull/twist, imu/<point> (sensor_msgs/Imu, ~imu_points), road_wheels,
+//           comfort, /diagnostics
 //   start-up                         ──► /tf_static base_link→{named points rigid with the hull}
 //
 // Time: the node keeps the time of its current sample. Each tick runs every fixed step due up to
@@ -40,9 +41,11 @@
 #include <geometry_msgs/AccelStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/TwistStamped.h>
+#include <nav_msgs/Odometry.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <sensor_msgs/Imu.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
 #include <tf2_msgs/TFMessage.h>
@@ -104,6 +107,10 @@ class VehicleDynamicsNode {
   void loadVehicle();
   reduction::ReducedModel loadGivenModel(const vehicle::VehicleDescription& description);
   void setUpFrames();
+  /// Index of the named point `name`; ParameterError naming ~`key` and the known points if none.
+  std::size_t pointIndex(const std::string& name, const std::string& key) const;
+  /// ~imu_points: each a published point frame, listed once, a valid topic name imu/<point>.
+  void setUpImus();
   void onTerrain(const TerrainProfile::ConstPtr& msg);
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
@@ -161,6 +168,7 @@ class VehicleDynamicsNode {
   std::string model_damping_;
   std::vector<std::size_t> published_points_;  // indices into geometry().points, on /tf
   std::vector<std::size_t> static_points_;     // rigid with the hull: once on /tf_static
+  std::vector<std::size_t> imu_points_;        // ~imu_points, indices into geometry().points
 
   ros::Subscriber terrain_sub_, speed_sub_, clock_sub_;
   // /tf is published like tf2_ros::TransformBroadcaster does, from a message kept between
@@ -175,7 +183,8 @@ class VehicleDynamicsNode {
   };
   template <class M>
   void advertise(const std::string& topic, std::uint32_t queue_size, CountedPublisher* out);
-  CountedPublisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_;
+  CountedPublisher tf_pub_, accel_pub_, twist_pub_, wheels_pub_, comfort_pub_, odom_pub_;
+  std::vector<std::unique_ptr<CountedPublisher>> imu_pubs_;  // one per imu_points_ entry
   ros::ServiceServer reset_service_, reset_to_service_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   diagnostic_updater::Updater updater_;
@@ -186,6 +195,8 @@ class VehicleDynamicsNode {
   geometry_msgs::TwistStamped twist_msg_;
   RoadWheels wheels_msg_;
   Comfort comfort_msg_;
+  nav_msgs::Odometry odom_msg_;
+  std::vector<sensor_msgs::Imu> imu_msgs_;  // one per imu_points_ entry
 
   // Time keeping: sample_time_ is the ROS time of the vehicle's current sample.
   bool use_sim_time_ = false;

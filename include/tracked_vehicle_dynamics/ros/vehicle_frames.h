@@ -17,6 +17,19 @@
 // order in theta: a point rigid with the hull at p would displace by
 //   u_hull(p) = u_G + theta x (p - p_G),
 // so a point whose displacement is u_p sits in base_link at p + (u_p - u_hull(p)).
+//
+// Rates. The published orientation is R(theta) with theta = (roll, pitch, yaw) read as the
+// Z-Y-X Euler angles of R, so the body-axis angular velocity of the published frames is
+//   omega_b = E(theta) theta',  E = [1, 0, -sin(pitch);
+//                                    0, cos(roll), sin(roll) cos(pitch);
+//                                    0, -sin(roll), cos(roll) cos(pitch)]
+// (= theta' to first order), and base_link's origin moves at
+//   t' = (v, 0, 0) + u_G' - omega x (R p_G)     (omega = R omega_b, in odom axes)
+// with v the travel speed: the exact time derivative of the pose above, so a twist integrated
+// reproduces the published poses.
+//
+// An accelerometer at a point reads the specific force f = R^T (a - g), g = (0, 0, -g0) in odom
+// axes: +g0 along the sensor's z at rest on level ground, -g0 sin(pitch) along x nose down.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -52,6 +65,22 @@ Vector3 hullPointDisplacement(const Vector3& cog, const Vector6& hull_displaceme
 /// whose displacement is `displacement` [m]: p + (u_p - u_hull(p)).
 Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement, const Vector3& point,
                          const Vector3& displacement);
+
+/// Body-axis angular velocity omega_b = E(theta) theta' [rad/s] of the rotation of Euler angles
+/// theta = (roll, pitch, yaw) [rad] changing at theta' [rad/s] (equation above).
+Vector3 bodyRate(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_rate);
+
+/// The velocity of base_link in its own axes: {linear velocity of its origin [m/s]; angular
+/// velocity [rad/s]}, the time derivative of hullPose() at travel speed `speed` [m/s] for the hull
+/// CoG displacement {u_G; theta} and its rate {u_G'; theta'} (equations above). What
+/// nav_msgs/Odometry's twist holds (child frame base_link).
+Vector6 baseLinkTwist(double speed, const Vector3& cog, const Vector6& hull_displacement,
+                      const Vector6& hull_velocity);
+
+/// Specific force [m/s^2] in the axes of a frame at `rotation` (in odom) of a point accelerating
+/// at `acceleration` [m/s^2] in odom axes: f = R^T (a - g), g = (0, 0, -kStandardGravity). What
+/// an accelerometer there reads (sensor_msgs/Imu linear_acceleration, REP-145).
+Vector3 specificForce(const Eigen::Quaterniond& rotation, const Vector3& acceleration);
 
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics
