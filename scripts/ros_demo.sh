@@ -5,6 +5,7 @@
 # prints a short summary (peaks, comfort, real-time figures) with a PNG plot.
 #
 #   scripts/ros_demo.sh            # environment: TRACK, SPEED_KMH, VARIANT, OUT, BUILD_DIR,
+#                                  # IMU_POINTS (default [sensor_mount]: a simulated IMU there),
 #                                  # SKIP_BUILD=1 to use an existing build
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +14,7 @@ BUILD_DIR="${BUILD_DIR:-build}"
 TRACK="${TRACK:-long_hill}"
 SPEED_KMH="${SPEED_KMH:-30}"
 VARIANT="${VARIANT:-tracked}"
+IMU_POINTS="${IMU_POINTS:-[sensor_mount]}"
 OUT="${OUT:-demo_output/ros}"
 
 # shellcheck source=scripts/ros_env.sh
@@ -51,7 +53,7 @@ rm -f "$output_bag"
 echo "== Replaying $TRACK at $SPEED_KMH km/h through vehicle_dynamics_node ($VARIANT)"
 start=$(date +%s.%N)
 roslaunch tracked_vehicle_dynamics replay_track.launch track:="$TRACK" speed_kmh:="$SPEED_KMH" \
-  variant:="$VARIANT" bag_dir:="$OUT" output:="$output_bag" >"$OUT/roslaunch.log" 2>&1 || {
+  variant:="$VARIANT" imu_points:="$IMU_POINTS" bag_dir:="$OUT" output:="$output_bag" >"$OUT/roslaunch.log" 2>&1 || {
   echo "roslaunch failed; the last lines of $OUT/roslaunch.log:"
   tail -n 30 "$OUT/roslaunch.log"
   exit 1

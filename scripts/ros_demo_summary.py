@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Summary and plot of a bag recorded from vehicle_dynamics_node (launch/replay_track.launch).
 
-Prints the peaks of the hull motion and road-wheel displacements, the final ride-comfort metrics
-and the real-time figures, and writes a PNG of heave, pitch, wheel displacements and the vertical
+Prints the peaks of the hull motion and road-wheel displacements, what the simulated IMUs read
+(imu/<point>, the node's ~imu_points), the final ride-comfort metrics and the real-time figures, and writes a PNG of heave, pitch, wheel displacements and the vertical
 acceleration against the station.
 
     ros_demo_summary.py OUTPUT.bag --png plot.png [--wall-seconds S] [--title TEXT]
@@ -53,9 +53,11 @@ def main():
     comfort = None
     loop = {}
     model = {}
+    imus = {}        # frame -> [(specific force x, y, z [m/s^2], |body rate| [rad/s])]
     with rosbag.Bag(args.bag) as bag:
-        for topic, msg, _ in bag.read_messages(
-                topics=["/tf", "/road_wheels", "/hull/accel", "/comfort", "/diagnostics"]):
+        topics = ["/tf", "/road_wheels", "/hull/accel", "/comfort", "/diagnostics"]
+        topics += [t for t in bag.get_type_and_topic_info().topics if t.startswith("/imu/")]
+        for topic, msg, _ in bag.read_messages(topics=topics):
             if topic == "/tf":
                 for t in msg.transforms:
                     if t.child_frame_id == args.base_frame:
@@ -68,6 +70,10 @@ def main():
                 accel[msg.header.stamp.to_sec()] = msg.accel.linear.z
             elif topic == "/comfort":
                 comfort = msg
+            elif topic.startswith("/imu/"):
+                a, w = msg.linear_acceleration, msg.angular_velocity
+                imus.setdefault(msg.header.frame_id, []).append(
+                    (a.x, a.y, a.z, math.sqrt(w.x ** 2 + w.y ** 2 + w.z ** 2)))
             elif topic == "/diagnostics":
                 for s in msg.status:
                     values = {kv.key: kv.value for kv in s.values}
@@ -103,6 +109,12 @@ def main():
     finite_acc = [a for a in acc if not math.isnan(a)]
     if finite_acc:
         print("hull CoG vertical acceleration: peak %.2f m/s^2" % max(abs(a) for a in finite_acc))
+    for frame, readings in sorted(imus.items()):
+        fz = [r[2] for r in readings]
+        print("IMU at %s (specific force, gravity included: %+.2f m/s^2 at rest): z %+.2f .. "
+              "%+.2f m/s^2, |x| up to %.2f m/s^2, body rate up to %.1f deg/s"
+              % (frame, fz[0], min(fz), max(fz), max(abs(r[0]) for r in readings),
+                 math.degrees(max(r[3] for r in readings))))
     if comfort is not None:
         print("comfort at %s (ISO 2631-1 %s): a_w,rms %.3f m/s^2, VDV %.3f m/s^1.75, MTVV %.3f "
               "m/s^2, peak |a| %.2f m/s^2 over %.2f s"
