@@ -165,6 +165,14 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.base_frame = p.frame_prefix + p.base_frame;
   p.publish_points_all = !in.read("points", &p.points, "a list of strings");
   in.read("imu_points", &p.imu_points, "a list of strings");
+  MeasurementVariances& var = p.variances;
+  var.odom_pose = in.nonNegative("variance/odom_pose", var.odom_pose, "m^2 (rad^2)");
+  var.odom_twist = in.nonNegative("variance/odom_twist", var.odom_twist, "(m/s)^2 ((rad/s)^2)");
+  var.imu_orientation = in.nonNegative("variance/imu_orientation", var.imu_orientation, "rad^2");
+  var.imu_angular_velocity =
+      in.nonNegative("variance/imu_angular_velocity", var.imu_angular_velocity, "(rad/s)^2");
+  var.imu_linear_acceleration =
+      in.nonNegative("variance/imu_linear_acceleration", var.imu_linear_acceleration, "(m/s^2)^2");
   // <= 0 would make diagnostic_updater publish at every tick (1 kHz).
   p.diagnostic_period = in.positive("diagnostic_period", p.diagnostic_period, "s");
 

@@ -239,7 +239,13 @@ Vector3 OnlineVehicle::pointPosition(std::size_t i) const {
 }
 
 Vector3 OnlineVehicle::pointAcceleration(std::size_t i) const {
-  return pointBlock(i, acc_offset_);
+  const Vector3& p = geometry_.points.at(i).position;
+  const Vector6 u = hullDisplacement(), du = hullVelocity(), ddu = hullAcceleration();
+  // The model's (linear) point acceleration less its rigid part u_G'' + theta'' x r is the
+  // elastic part, zero for a point on the rigid hull; the rigid part is then taken exactly.
+  const Vector3 elastic =
+      pointBlock(i, acc_offset_) - (ddu.head<3>() + ddu.tail<3>().cross(p - geometry_.cog));
+  return rigidPointAcceleration(geometry_.cog, u, du, ddu, p) + elastic;
 }
 
 }  // namespace ros_layer

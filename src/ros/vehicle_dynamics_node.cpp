@@ -277,8 +277,14 @@ void VehicleDynamicsNode::setUpImus() {
       throw ParameterError(key + ": point '" + name + "' does not make a valid topic name " +
                            topic + " (" + why + ")");
     imu_points_.push_back(i);
-    imu_msgs_.emplace_back();
-    imu_msgs_.back().header.frame_id = params_.frame_prefix + name;
+    sensor_msgs::Imu& msg = imu_msgs_.emplace_back();
+    msg.header.frame_id = params_.frame_prefix + name;
+    const MeasurementVariances& v = params_.variances;
+    for (int d = 0; d < 3; ++d) {
+      msg.orientation_covariance[4 * d] = v.imu_orientation;
+      msg.angular_velocity_covariance[4 * d] = v.imu_angular_velocity;
+      msg.linear_acceleration_covariance[4 * d] = v.imu_linear_acceleration;
+    }
   }
 }
 
@@ -327,6 +333,10 @@ void VehicleDynamicsNode::setUpFrames() {
   twist_msg_.header.frame_id = params_.base_frame;
   odom_msg_.header.frame_id = params_.odom_frame;
   odom_msg_.child_frame_id = params_.base_frame;
+  for (int d = 0; d < 6; ++d) {
+    odom_msg_.pose.covariance[7 * d] = params_.variances.odom_pose;
+    odom_msg_.twist.covariance[7 * d] = params_.variances.odom_twist;
+  }
   wheels_msg_.header.frame_id = params_.base_frame;
   // The comfort metrics are of the acceleration at the comfort point: its frame when it is
   // published as one, else the hull's (the "hull" point is the hull CoG, rigid in base_link).
@@ -727,7 +737,7 @@ void VehicleDynamicsNode::publishState() {
     }
     if (odom) {
       // nav_msgs/Odometry: the pose of base_link in odom (as on /tf) and the twist of its
-      // origin in its own axes (REP-105); exact model values, covariances left 0.
+      // origin in its own axes (child_frame_id); covariance diagonals from ~variance/*.
       odom_msg_.header.stamp = sample_time_;
       toMsg(pose, &odom_msg_.pose.pose);
       odom_msg_.twist.twist.linear = toMsg(Vector3(base_twist.head<3>()));
@@ -738,7 +748,8 @@ void VehicleDynamicsNode::publishState() {
       if (!imu_pubs_[k]->listened())
         continue;
       // The point's frame is parallel to base_link: the hull's orientation and body rate, and
-      // the specific force of the point's acceleration (REP-145: gravity included).
+      // the specific force of the point's acceleration, the second derivative of its published
+      // position (REP-145: gravity included).
       sensor_msgs::Imu& msg = imu_msgs_[k];
       msg.header.stamp = sample_time_;
       msg.orientation = toMsg(pose.rotation);
@@ -752,7 +763,9 @@ void VehicleDynamicsNode::publishState() {
     const Vector6 acceleration = v.hullAcceleration();
     accel_msg_.header.stamp = sample_time_;
     accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
-    accel_msg_.accel.angular = toMsg(to_base * acceleration.tail<3>());
+    // The derivative of the body rate on hull/twist.
+    accel_msg_.accel.angular = toMsg(bodyAcceleration(
+        v.hullDisplacement().tail<3>(), v.hullVelocity().tail<3>(), acceleration.tail<3>()));
     accel_pub_.publisher.publish(accel_msg_);
   }
   if (wheels) {

@@ -47,14 +47,52 @@ Vector3 relativePosition(const Vector3& cog, const Vector6& hull_displacement, c
   return point + displacement - hullPointDisplacement(cog, hull_displacement, point);
 }
 
-Vector3 bodyRate(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_rate) {
+namespace {
+
+/// E(theta): body rate = E theta' (vehicle_frames.h).
+Matrix3 eulerRateMatrix(const Vector3& roll_pitch_yaw) {
   const double sr = std::sin(roll_pitch_yaw(0)), cr = std::cos(roll_pitch_yaw(0));
   const double sp = std::sin(roll_pitch_yaw(1)), cp = std::cos(roll_pitch_yaw(1));
   Matrix3 e;
   e << 1.0, 0.0, -sp,  //
       0.0, cr, sr * cp,  //
       0.0, -sr, cr * cp;
-  return e * roll_pitch_yaw_rate;
+  return e;
+}
+
+/// dE/dt for Euler angles theta changing at theta'.
+Matrix3 eulerRateMatrixDerivative(const Vector3& roll_pitch_yaw, const Vector3& rate) {
+  const double sr = std::sin(roll_pitch_yaw(0)), cr = std::cos(roll_pitch_yaw(0));
+  const double sp = std::sin(roll_pitch_yaw(1)), cp = std::cos(roll_pitch_yaw(1));
+  const double droll = rate(0), dpitch = rate(1);
+  Matrix3 de;
+  de << 0.0, 0.0, -cp * dpitch,  //
+      0.0, -sr * droll, cr * cp * droll - sr * sp * dpitch,  //
+      0.0, -cr * droll, -sr * cp * droll - cr * sp * dpitch;
+  return de;
+}
+
+}  // namespace
+
+Vector3 bodyRate(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_rate) {
+  return eulerRateMatrix(roll_pitch_yaw) * roll_pitch_yaw_rate;
+}
+
+Vector3 bodyAcceleration(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_rate,
+                         const Vector3& roll_pitch_yaw_acceleration) {
+  return eulerRateMatrix(roll_pitch_yaw) * roll_pitch_yaw_acceleration +
+         eulerRateMatrixDerivative(roll_pitch_yaw, roll_pitch_yaw_rate) * roll_pitch_yaw_rate;
+}
+
+Vector3 rigidPointAcceleration(const Vector3& cog, const Vector6& hull_displacement,
+                               const Vector6& hull_velocity, const Vector6& hull_acceleration,
+                               const Vector3& point) {
+  const Vector3 theta = hull_displacement.tail<3>();
+  const Vector3 omega = bodyRate(theta, hull_velocity.tail<3>());
+  const Vector3 alpha = bodyAcceleration(theta, hull_velocity.tail<3>(), hull_acceleration.tail<3>());
+  const Vector3 r = point - cog;
+  const Eigen::Quaterniond rotation = rotationFromRollPitchYaw(theta(0), theta(1), theta(2));
+  return hull_acceleration.head<3>() + rotation * (alpha.cross(r) + omega.cross(omega.cross(r)));
 }
 
 Vector6 baseLinkTwist(double speed, const Vector3& cog, const Vector6& hull_displacement,

@@ -10,6 +10,7 @@
 
 #include <map>
 
+#include <nav_msgs/Odometry.h>
 #include <sensor_msgs/Imu.h>
 #include <tf2_msgs/TFMessage.h>
 
@@ -40,6 +41,10 @@ struct NodeSample {
   RigidPose pose;
   bool has_imu = false;
   Vector3 specific_force = Vector3::Zero();  // imu/<point> linear_acceleration [m/s^2]
+  Vector3 body_rate = Vector3::Zero();       // imu/<point> angular_velocity [rad/s]
+  Eigen::Quaterniond orientation;            // imu/<point> orientation
+  bool has_odom = false;
+  Vector6 odom_twist = Vector6::Zero();      // odom twist {linear; angular}
 };
 
 /// The offline run: hull heave, pitch and wheel displacements per step k (station k v h).
@@ -47,6 +52,9 @@ struct Reference {
   std::vector<double> heave, pitch;
   std::vector<std::vector<double>> wheels;  // [k][wheel]
   std::vector<Vector3> specific_force;      // [k] at the IMU point, in its axes [m/s^2]
+  std::vector<Vector3> body_rate;           // [k] [rad/s]
+  std::vector<Vector6> odom_twist;          // [k] base_link's twist in its axes
+  double twist_peak = 0.0;                  // max |odom twist - travel speed| [m/s, rad/s]
   double heave_peak = 0.0, pitch_peak = 0.0, wheel_peak = 0.0;
   double vibration_peak = 0.0;  // max |f - f at rest| [m/s^2]
 };
@@ -65,6 +73,7 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
   if (method == dynamics::DiscretizationMethod::ModalDecoupled)
     options.max_mode_frequency_hz = 0.5 * rate;
   options.quantities = {dynamics::OutputQuantity::Displacement,
+                        dynamics::OutputQuantity::Velocity,
                         dynamics::OutputQuantity::Acceleration};
   dynamics::Simulator sim(sys, options);
   const Eigen::Index n = sys.inputCount();
@@ -73,11 +82,22 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
   const dynamics::OutputLayout layout(sys.output_names, options.quantities);
   const Eigen::Index heave_row = layout.row("hull uz", dynamics::OutputQuantity::Displacement);
   const Eigen::Index pitch_row = layout.row("hull ry", dynamics::OutputQuantity::Displacement);
-  std::vector<Eigen::Index> hull_rows, imu_rows;
-  for (const char* dof : {"ux", "uy", "uz", "rx", "ry", "rz"})
-    hull_rows.push_back(layout.row(std::string("hull ") + dof, dynamics::OutputQuantity::Displacement));
-  for (const char* dof : {"ux", "uy", "uz"})
-    imu_rows.push_back(layout.row(imu_point + " " + dof, dynamics::OutputQuantity::Acceleration));
+  // Hull displacement, velocity and acceleration rows; the IMU point's acceleration rows.
+  using Q = dynamics::OutputQuantity;
+  const auto rows = [&](const std::string& body, const std::vector<const char*>& dofs, Q q) {
+    std::vector<Eigen::Index> out;
+    for (const char* dof : dofs)
+      out.push_back(layout.row(body + " " + dof, q));
+    return out;
+  };
+  const std::vector<const char*> six = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  const auto hull_u = rows("hull", six, Q::Displacement), hull_v = rows("hull", six, Q::Velocity),
+             hull_a = rows("hull", six, Q::Acceleration);
+  const auto imu_a = rows(imu_point, {"ux", "uy", "uz"}, Q::Acceleration);
+  Vector3 imu_position = Vector3::Zero();
+  for (const auto& p : geometry.points)
+    if (p.name == imu_point)
+      imu_position = p.position;
   std::vector<Eigen::Index> wheel_rows;
   for (const auto& w : geometry.wheels) {
     wheel_rows.push_back(layout.row(w.name + " uz", dynamics::OutputQuantity::Displacement));
@@ -96,13 +116,26 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     ref.pitch_peak = std::max(ref.pitch_peak, std::abs(y(pitch_row) - rest(pitch_row)));
     for (double w : wheels)
       ref.wheel_peak = std::max(ref.wheel_peak, std::abs(w));
-    Vector6 hull;
-    for (int i = 0; i < 6; ++i)
-      hull(i) = y(hull_rows[static_cast<std::size_t>(i)]);
-    const Vector3 a(y(imu_rows[0]), y(imu_rows[1]), y(imu_rows[2]));
-    ref.specific_force.push_back(specificForce(hullPose(0.0, geometry.cog, hull).rotation, a));
+    Vector6 u, du, ddu;
+    for (std::size_t i = 0; i < 6; ++i) {
+      u(static_cast<Eigen::Index>(i)) = y(hull_u[i]);
+      du(static_cast<Eigen::Index>(i)) = y(hull_v[i]);
+      ddu(static_cast<Eigen::Index>(i)) = y(hull_a[i]);
+    }
+    // The point's acceleration as the node takes it: exact rigid part + the model's elastic part.
+    const Vector3 r = imu_position - geometry.cog;
+    const Vector3 model_a(y(imu_a[0]), y(imu_a[1]), y(imu_a[2]));
+    const Vector3 a = rigidPointAcceleration(geometry.cog, u, du, ddu, imu_position) + model_a -
+                      (ddu.head<3>() + ddu.tail<3>().cross(r));
+    ref.specific_force.push_back(specificForce(hullPose(0.0, geometry.cog, u).rotation, a));
     ref.vibration_peak = std::max(
         ref.vibration_peak, (ref.specific_force.back() - ref.specific_force.front()).norm());
+    ref.body_rate.push_back(bodyRate(u.tail<3>(), du.tail<3>()));
+    const bool moving = !ref.odom_twist.empty();  // record() runs once at rest first
+    ref.odom_twist.push_back(baseLinkTwist(moving ? v : 0.0, geometry.cog, u, du));
+    Vector6 vibration = ref.odom_twist.back();
+    vibration(0) -= moving ? v : 0.0;
+    ref.twist_peak = std::max(ref.twist_peak, vibration.norm());
   };
   record();
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, lateral_offset);
@@ -127,7 +160,15 @@ class LongHillReplay : public ::testing::Test {
         "imu/" + imu_point_, 10000, [this](const sensor_msgs::Imu::ConstPtr& msg) {
           NodeSample& s = samples_[msg->header.stamp];
           s.specific_force = fromMsg(msg->linear_acceleration);
+          s.body_rate = fromMsg(msg->angular_velocity);
+          s.orientation = fromMsg(msg->orientation);
           s.has_imu = true;
+        });
+    odom_sub_ = nh_.subscribe<nav_msgs::Odometry>(
+        "odom", 10000, [this](const nav_msgs::Odometry::ConstPtr& msg) {
+          NodeSample& s = samples_[msg->header.stamp];
+          s.odom_twist << fromMsg(msg->twist.twist.linear), fromMsg(msg->twist.twist.angular);
+          s.has_odom = true;
         });
   }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
@@ -151,7 +192,7 @@ class LongHillReplay : public ::testing::Test {
   }
 
   ros::NodeHandle nh_, private_nh_;
-  ros::Subscriber tf_sub_, wheels_sub_, imu_sub_;
+  ros::Subscriber tf_sub_, wheels_sub_, imu_sub_, odom_sub_;
   std::string imu_point_;
   std::map<ros::Time, NodeSample> samples_;
   double max_station_ = 0.0;
@@ -167,6 +208,7 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   const double v = test::requiredParam<double>(private_nh_, "speed_kmh") / 3.6;
   const double rate = test::requiredParam<double>(private_nh_, "rate");
   const double tolerance = test::requiredParam<double>(private_nh_, "tolerance_of_peak");
+  const double rate_tolerance = test::requiredParam<double>(private_nh_, "rate_tolerance_of_peak");
   const double covered_from = test::requiredParam<double>(private_nh_, "covered_from");
   const double covered_until = test::requiredParam<double>(private_nh_, "covered_until");
   const double heave_peak_expected = test::requiredParam<double>(private_nh_, "heave_peak");
@@ -197,7 +239,8 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   ASSERT_GT(ref.heave_peak, 0.0);
 
   double heave_error = 0.0, pitch_error = 0.0, wheel_error = 0.0, imu_error = 0.0;
-  std::size_t imu_compared = 0;
+  double rate_error = 0.0, orientation_error = 0.0, twist_error = 0.0;
+  std::size_t imu_compared = 0, odom_compared = 0, odom_seen = 0;
   double node_heave_peak = 0.0;
   double min_station = 1e9, max_station = -1e9;
   std::size_t compared = 0;
@@ -219,7 +262,15 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
     }
     if (s.has_imu) {
       imu_error = std::max(imu_error, (s.specific_force - ref.specific_force[k]).norm());
+      rate_error = std::max(rate_error, (s.body_rate - ref.body_rate[k]).norm());
+      orientation_error =
+          std::max(orientation_error, s.orientation.angularDistance(s.pose.rotation));
       ++imu_compared;
+    }
+    odom_seen += s.has_odom ? 1 : 0;
+    if (s.has_odom && k > 0) {  // moving (at k = 0 the node may or may not have its speed yet)
+      twist_error = std::max(twist_error, (s.odom_twist - ref.odom_twist[k]).norm());
+      ++odom_compared;
     }
     node_heave_peak = std::max(node_heave_peak, std::abs(u(2) - rest_heave));
     min_station = std::min(min_station, s.station);
@@ -235,16 +286,26 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
               pitch_error, pitch_error / ref.pitch_peak);
   std::printf("wheels: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.wheel_peak, wheel_error,
               wheel_error / ref.wheel_peak);
-  std::printf("imu/%s: %zu samples, vibration peak %.3f m/s^2, max error %.3g m/s^2\n",
-              imu_point_.c_str(), imu_compared, ref.vibration_peak, imu_error);
+  std::printf("imu/%s: %zu samples, vibration peak %.3f m/s^2, max error %.3g m/s^2 (%.3g of "
+              "peak); body rate error %.3g rad/s; orientation vs /tf %.3g rad\n",
+              imu_point_.c_str(), imu_compared, ref.vibration_peak, imu_error,
+              imu_error / ref.vibration_peak, rate_error, orientation_error);
+  std::printf("odom: %zu samples, twist peak (less the travel speed) %.3f, max error %.3g\n",
+              odom_compared, ref.twist_peak, twist_error);
   EXPECT_LE(min_station, covered_from) << "the replay's start was not seen";
   EXPECT_GE(max_station, covered_until);
   EXPECT_LE(heave_error, tolerance * ref.heave_peak);
   EXPECT_LE(pitch_error, tolerance * ref.pitch_peak);
   EXPECT_LE(wheel_error, tolerance * ref.wheel_peak);
-  EXPECT_GE(imu_compared, compared / 2) << "imu/" << imu_point_ << " samples missing";
+  // Every sample of the pose and wheels came with an IMU reading and an odom message.
+  EXPECT_EQ(imu_compared, compared) << "imu/" << imu_point_ << " samples missing";
+  EXPECT_EQ(odom_seen, compared) << "odom samples missing";
+  EXPECT_GT(odom_compared, compared - 100);
   EXPECT_GT(ref.vibration_peak, 1.0);  // the hill shakes the point
-  EXPECT_LE(imu_error, tolerance * ref.vibration_peak);
+  EXPECT_LE(imu_error, rate_tolerance * ref.vibration_peak);
+  EXPECT_LE(rate_error, rate_tolerance * ref.twist_peak);
+  EXPECT_LE(orientation_error, 1e-12);  // the IMU's orientation is the /tf pose's
+  EXPECT_LE(twist_error, rate_tolerance * ref.twist_peak);
   // At rest before the hill the accelerometer reads gravity (static attitude: about +g0 up).
   EXPECT_NEAR(ref.specific_force.front().z(), kStandardGravity, 1e-3);
   EXPECT_NEAR(node_heave_peak, heave_peak_expected, heave_peak_tolerance);

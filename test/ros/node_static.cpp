@@ -40,6 +40,9 @@ class NodeStatic : public ::testing::Test {
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
     odom_sub_ = nh_.subscribe("odom", 1000, &NodeStatic::onOdom, this);
     private_nh_.getParam("imu_points", imu_points_);
+    // The node's ~variance/* as the .test file sets them (0: the default, "unknown").
+    imu_acceleration_variance_ = private_nh_.param("imu_linear_acceleration_variance", 0.0);
+    odom_twist_variance_ = private_nh_.param("odom_twist_variance", 0.0);
     for (const std::string& name : imu_points_) {
       imu_subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(
           "imu/" + name, 1000,
@@ -49,6 +52,8 @@ class NodeStatic : public ::testing::Test {
 
   void onOdom(const nav_msgs::Odometry::ConstPtr& msg) {
     odom_frames_ = {msg->header.frame_id, msg->child_frame_id};
+    odom_twist_covariance_ = msg->twist.covariance;
+    odom_pose_covariance_ = msg->pose.covariance;
     if (collecting_) {
       odom_poses_[msg->header.stamp] = fromMsg(msg->pose.pose);
       max_odom_speed_ = std::max({max_odom_speed_, fromMsg(msg->twist.twist.linear).norm(),
@@ -91,6 +96,8 @@ class NodeStatic : public ::testing::Test {
   std::pair<std::string, std::string> odom_frames_;
   std::map<ros::Time, RigidPose> odom_poses_;
   double max_odom_speed_ = 0.0;
+  double imu_acceleration_variance_ = 0.0, odom_twist_variance_ = 0.0;
+  boost::array<double, 36> odom_twist_covariance_{}, odom_pose_covariance_{};
   std::string comfort_frame_;
   ros::Publisher terrain_pub_;
   std::map<std::string, std::string> parents_;
@@ -181,6 +188,11 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   }
   EXPECT_GT(matched, 100u) << "odom and /tf share too few stamps";
   EXPECT_LE(max_odom_speed_, tolerance);
+  for (int i = 0; i < 36; ++i) {
+    EXPECT_EQ(odom_twist_covariance_[i], i % 7 == 0 ? odom_twist_variance_ : 0.0) << i;
+    EXPECT_EQ(odom_pose_covariance_[i], 0.0) << i;  // ~variance/odom_pose left at 0
+  }
+  ASSERT_FALSE(imu_points_.empty()) << "the .test file lists no imu_points to check";
   // Each IMU reads the specific force of gravity in its frame, which is parallel to base_link:
   // R^T (0, 0, g0) with R the static attitude, the hull's orientation and no rotation rate.
   const Vector3 gravity_reading = specificForce(expected.rotation, Vector3::Zero());
@@ -193,6 +205,12 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
     EXPECT_NEAR(fromMsg(imu.angular_velocity).norm(), 0.0, tolerance) << name;
     EXPECT_NEAR(fromMsg(imu.orientation).angularDistance(expected.rotation), 0.0, tolerance)
         << name;
+    for (int i = 0; i < 9; ++i) {
+      EXPECT_EQ(imu.linear_acceleration_covariance[i],
+                i % 4 == 0 ? imu_acceleration_variance_ : 0.0)
+          << name << " " << i;
+      EXPECT_EQ(imu.orientation_covariance[i], 0.0) << name << " " << i;
+    }
   }
 
   // The comfort metrics are stamped in the frame of the point they are taken at.

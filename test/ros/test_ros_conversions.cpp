@@ -221,13 +221,16 @@ class VehicleFrameRates : public ::testing::Test {
   VehicleFrameRates() {
     u_ << 0.01, -0.02, -0.08, 0.15, -0.25, 0.3;
     du_ << 0.3, -0.1, 0.7, 0.9, -1.3, 0.4;
+    ddu_ << -2.0, 1.5, 30.0, 12.0, -25.0, 4.0;
   }
   Vector6 at(double t) const { return u_ + t * du_; }
+  /// With the acceleration as well: u + t u' + t^2/2 u''.
+  Vector6 accelerated(double t) const { return u_ + t * du_ + 0.5 * t * t * ddu_; }
   static constexpr double kStep = 1e-5;        // central differences [s]
   static constexpr double kDifference = 1e-8;  // O(kStep^2) and rounding / kStep
   const Vector3 cog_ = Vector3(-0.1, 0.02, 1.57);
   const double station_ = 17.0, speed_ = 8.5;
-  Vector6 u_, du_;
+  Vector6 u_, du_, ddu_;
 };
 
 TEST_F(VehicleFrameRates, BodyRateIsTheRotationsDerivative) {
@@ -258,6 +261,36 @@ TEST_F(VehicleFrameRates, BaseLinkTwistIsThePosesDerivative) {
   const Vector6 level = baseLinkTwist(speed_, cog_, Vector6::Zero(), Vector6::Zero());
   EXPECT_EQ(Vector3(level.head<3>()), Vector3(speed_, 0.0, 0.0));
   EXPECT_EQ(Vector3(level.tail<3>()), Vector3::Zero());
+}
+
+TEST_F(VehicleFrameRates, BodyAccelerationIsTheBodyRatesDerivative) {
+  const auto omega = [&](double t) {
+    const Vector6 u = accelerated(t);
+    return bodyRate(u.tail<3>(), (du_ + t * ddu_).tail<3>());
+  };
+  const Vector3 derivative = (omega(kStep) - omega(-kStep)) / (2.0 * kStep);
+  const Vector3 alpha = bodyAcceleration(u_.tail<3>(), du_.tail<3>(), ddu_.tail<3>());
+  EXPECT_NEAR((alpha - derivative).norm(), 0.0, 1e-6);
+  EXPECT_GT((alpha - ddu_.tail<3>()).norm(), 0.5);  // the Euler-rate terms count here
+}
+
+TEST_F(VehicleFrameRates, RigidPointAccelerationIsItsPositionsSecondDerivative) {
+  // A point rigid with the hull sits at t + R p in odom; at constant speed its second central
+  // difference is the acceleration (O(step^2) plus rounding / step^2: a larger step).
+  const double step = 1e-4;
+  const Vector3 point(2.4, -0.6, 2.1);
+  const auto position = [&](double t) {
+    const RigidPose pose = hullPose(speed_ * t, cog_, accelerated(t));
+    return Vector3(pose.rotation * point + pose.translation);
+  };
+  const Vector3 second =
+      (position(step) - 2.0 * position(0.0) + position(-step)) / (step * step);
+  const Vector3 a = rigidPointAcceleration(cog_, u_, du_, ddu_, point);
+  EXPECT_NEAR((a - second).norm(), 0.0, 1e-5 * a.norm()) << a.transpose() << " / "
+                                                          << second.transpose();
+  // The linear model's u_G'' + theta'' x r is off by the centripetal and Euler-rate terms.
+  const Vector3 linear = ddu_.head<3>() + ddu_.tail<3>().cross(point - cog_);
+  EXPECT_GT((a - linear).norm(), 0.1 * a.norm());
 }
 
 TEST(VehicleFrames, SpecificForceIsWhatAnAccelerometerReads) {

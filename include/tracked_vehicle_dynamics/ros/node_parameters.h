@@ -22,6 +22,18 @@ class ParameterError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// ~variance/*: the diagonals the node writes into the covariances of odom and imu/<point>. The
+/// values are exact model outputs; 0 leaves a covariance all zeros, which the message definitions
+/// read as "unknown" (robot_localization clamps such a variance to 1e-9): a stack that fuses
+/// them sets what its filter should assume.
+struct MeasurementVariances {
+  double odom_pose = 0.0;                ///< [m^2] and [rad^2], pose diagonal of odom
+  double odom_twist = 0.0;               ///< [(m/s)^2] and [(rad/s)^2], twist diagonal of odom
+  double imu_orientation = 0.0;          ///< [rad^2]
+  double imu_angular_velocity = 0.0;     ///< [(rad/s)^2]
+  double imu_linear_acceleration = 0.0;  ///< [(m/s^2)^2]
+};
+
 struct NodeParameters {
   std::string vehicle;  ///< ~vehicle: description YAML file (required)
   vehicle::Variant variant = vehicle::Variant::Tracked;  ///< ~variant
@@ -47,6 +59,7 @@ struct NodeParameters {
   /// ~imu_points: named points (published as frames) with a simulated IMU, sensor_msgs/Imu on
   /// imu/<point>; empty: none.
   std::vector<std::string> imu_points;
+  MeasurementVariances variances;  ///< ~variance/*
   /// ~diagnostic_period [s]; diagnostic_updater reads the key itself, the node validates it.
   double diagnostic_period = 1.0;
 };

@@ -138,8 +138,10 @@ class OnlineVehicle {
   Vector3 wheelPosition(std::size_t i) const;
   /// Position [m] in base_link of named point i.
   Vector3 pointPosition(std::size_t i) const;
-  /// Vibration acceleration [m/s^2] of named point i in odom axes (rows "<point> ux|uy|uz" of
-  /// the acceleration block; without gravity and without a change of the travel speed).
+  /// Acceleration [m/s^2, odom axes] of named point i: the second time derivative of its
+  /// published position (vehicle_frames.h rigidPointAcceleration, exact in the hull rotation,
+  /// plus the model's elastic part: rows "<point> ux|uy|uz" less their rigid part). Without
+  /// gravity and without a change of the travel speed.
   Vector3 pointAcceleration(std::size_t i) const;
   /// True when named point i moves rigidly with the hull in the model (its output rows are
   /// u_G + theta x (p - p_G) of the hull rows, to rounding): its base_link position is then its

@@ -26,7 +26,14 @@
 // (= theta' to first order), and base_link's origin moves at
 //   t' = (v, 0, 0) + u_G' - omega x (R p_G)     (omega = R omega_b, in odom axes)
 // with v the travel speed: the exact time derivative of the pose above, so a twist integrated
-// reproduces the published poses.
+// reproduces the published poses. Differentiating once more,
+//   alpha_b = E theta'' + E' theta'     (E' = dE/dt, the body-axis angular acceleration)
+// and a point rigid with the hull at p (at t + R p in odom) accelerates at
+//   a_p = u_G'' + R (alpha_b x r + omega_b x (omega_b x r)),  r = p - p_G,
+// the exact second derivative of its published position (the travel acceleration aside: the
+// station advances at the speed last given, so it has none between speed messages). The linear
+// model's own point acceleration u_G'' + theta'' x r drops the centripetal and Euler-rate terms
+// (about 2 m/s^2 at the sensor mount on the long hill at 30 km/h).
 //
 // An accelerometer at a point reads the specific force f = R^T (a - g), g = (0, 0, -g0) in odom
 // axes: +g0 along the sensor's z at rest on level ground, -g0 sin(pitch) along x nose down.
@@ -76,6 +83,19 @@ Vector3 bodyRate(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_ra
 /// nav_msgs/Odometry's twist holds (child frame base_link).
 Vector6 baseLinkTwist(double speed, const Vector3& cog, const Vector6& hull_displacement,
                       const Vector6& hull_velocity);
+
+/// Body-axis angular acceleration alpha_b = E theta'' + E' theta' [rad/s^2], the time derivative
+/// of bodyRate() (equations above).
+Vector3 bodyAcceleration(const Vector3& roll_pitch_yaw, const Vector3& roll_pitch_yaw_rate,
+                         const Vector3& roll_pitch_yaw_acceleration);
+
+/// Acceleration [m/s^2, odom axes] of a point rigid with the hull at `point` [m, base_link]:
+/// u_G'' + R (alpha_b x r + omega_b x (omega_b x r)), r = point - cog, for the hull CoG
+/// displacement {u_G; theta}, its rate and its acceleration (equations above): the second time
+/// derivative of the point's published position, the travel acceleration aside.
+Vector3 rigidPointAcceleration(const Vector3& cog, const Vector6& hull_displacement,
+                               const Vector6& hull_velocity, const Vector6& hull_acceleration,
+                               const Vector3& point);
 
 /// Specific force [m/s^2] in the axes of a frame at `rotation` (in odom) of a point accelerating
 /// at `acceleration` [m/s^2] in odom axes: f = R^T (a - g), g = (0, 0, -kStandardGravity). What
