@@ -7,7 +7,9 @@ wheelbase-delayed excitation at several speeds. Each LABEL=FILE becomes one line
 Input: files written by `tvd frf --out FILE.csv` (header by name, any column order) or
 `--out FILE.mat` (one n x 1 variable per column, same names; the char variables are ignored):
     frequency_hz, then for N in hull_vertical_acc, hull_pitch_acc, front_wheel_acc, rear_wheel_acc
-    the columns N_mag [(m/s^2)/m; pitch (rad/s^2)/m] and N_phase_deg (not plotted).
+    the columns N_mag [(m/s^2)/m; pitch (rad/s^2)/m] and N_phase_deg (not plotted); with
+    `tvd frf --points P`, also P_vertical_acc_mag, _phase_deg and _wk_mag (ISO 2631-1
+    Wk-weighted), drawn in a panel of their own after the others, the weighted one thinner.
 Outputs absent from every file get no panel; an output that is zero in every file is drawn on a
 linear scale (log scale otherwise) and its panel says so. For example
 
@@ -43,32 +45,53 @@ OUTPUTS = {
     "rear_wheel_acc": ("rear road wheel acceleration", r"$|\ddot z_{u,R} / h|$ [(m/s$^2$)/m]"),
 }
 LINE_STYLES = ["-", "--", ":", (0, (5, 1, 1, 1))]  # "-." is the band line
+POINT_SUFFIX = "_vertical_acc"  # `tvd frf --points`: <point>_vertical_acc_mag, ..._wk_mag
+
+
+def is_point(name):
+    return name not in OUTPUTS and name.endswith(POINT_SUFFIX) and len(name) > len(POINT_SUFFIX)
+
+
+def panel(name):
+    """(title, y label) of an output's panel."""
+    if name in OUTPUTS:
+        return OUTPUTS[name]
+    return (f"{name[:-len(POINT_SUFFIX)]} vertical acceleration (thin: Wk-weighted)",
+            r"$|\ddot z_p / h|$ [(m/s$^2$)/m]")
 
 
 def load(path):
-    """frequency_hz and {output: magnitude} of one FRF file."""
+    """frequency_hz, {output: magnitude} and {point output: Wk-weighted magnitude} of one FRF
+    file."""
     table = Table(path)
     frequency = table.column("frequency_hz")
     present = [n for n in OUTPUTS if n + "_mag" in table.header or n + "_phase_deg" in table.header]
+    present += [c[:-len("_mag")] for c in table.header
+                if c.endswith("_mag") and not c.endswith("_wk_mag") and is_point(c[:-len("_mag")])]
     if not present:
         fail(f"{path}: no FRF column (expected e.g. 'hull_vertical_acc_mag')")
-    magnitudes = {}
+    magnitudes, weighted = {}, {}
     for name in present:
-        values = table.column(name + "_mag")
-        if np.any(values < 0):
-            k = int(np.argmax(values < 0))
-            fail(f"{path}: {table.where(k)}, column '{name}_mag': {values[k]:g} is negative "
-                 f"(a magnitude)")
-        magnitudes[name] = values
-    return frequency, magnitudes
+        for suffix, into in (("_mag", magnitudes), ("_wk_mag", weighted)):
+            if suffix == "_wk_mag" and name + suffix not in table.header:
+                continue
+            values = table.column(name + suffix)
+            if np.any(values < 0):
+                k = int(np.argmax(values < 0))
+                fail(f"{path}: {table.where(k)}, column '{name}{suffix}': {values[k]:g} is "
+                     f"negative (a magnitude)")
+            into[name] = values
+    return frequency, magnitudes, weighted
 
 
 def output_list(text):
-    """argparse type: comma-separated output names, each one of OUTPUTS, none twice."""
+    """argparse type: comma-separated output names, each one of OUTPUTS or a point's
+    <point>_vertical_acc, none twice."""
     names = [n.strip() for n in text.split(",")]
     for n in names:
-        if n not in OUTPUTS:
-            raise argparse.ArgumentTypeError(f"'{n}' is not an output ({', '.join(OUTPUTS)})")
+        if n not in OUTPUTS and not is_point(n):
+            raise argparse.ArgumentTypeError(f"'{n}' is not an output ({', '.join(OUTPUTS)}, "
+                                             f"<point>{POINT_SUFFIX})")
     if len(set(names)) != len(names):
         raise argparse.ArgumentTypeError(f"'{text}' names an output twice")
     return names
@@ -83,10 +106,11 @@ def main():
                         help="CMS truncation band, drawn dash-dot [Hz], > 0 (default 30)")
     parser.add_argument("--f-max", type=positive_float, default=50.0,
                         help="x axis limit [Hz], > 0 (default 50)")
-    parser.add_argument("--outputs", type=output_list, default=list(OUTPUTS),
+    parser.add_argument("--outputs", type=output_list, default=None,
                         metavar="NAME[,NAME...]",
                         help="panels to draw, in this order (default: every output present): "
-                             + ", ".join(OUTPUTS) + "; e.g. hull_vertical_acc for Fig. 15, "
+                             + ", ".join(OUTPUTS) + ", <point>" + POINT_SUFFIX + " (tvd frf "
+                             "--points); e.g. hull_vertical_acc for Fig. 15, "
                              "front_wheel_acc,rear_wheel_acc for Fig. 16")
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE",
                         help=LABELLED_HELP)
@@ -94,7 +118,10 @@ def main():
 
     check_outputs(("--out", args.out))  # before reading: bad input writes no figure
     curves = [(label, *load(path)) for label, path in args.files]
-    present = [n for n in args.outputs if any(n in outputs for _, _, outputs in curves)]
+    if args.outputs is None:  # every output of any file: the paper's, then the points
+        points = [n for _, _, outputs, _ in curves for n in outputs if is_point(n)]
+        args.outputs = list(OUTPUTS) + list(dict.fromkeys(points))
+    present = [n for n in args.outputs if any(n in outputs for _, _, outputs, _ in curves)]
     if not present:
         fail(f"--outputs {','.join(args.outputs)}: none of these is in any file")
     ncols = 1 if len(present) == 1 else 2
@@ -103,13 +130,16 @@ def main():
     for ax in axes.flat[len(present):]:
         ax.set_visible(False)
     for ax, name in zip(axes.flat, present):
-        for k, (label, frequency, outputs) in enumerate(curves):
+        for k, (label, frequency, outputs, weighted) in enumerate(curves):
+            style = LINE_STYLES[k % len(LINE_STYLES)]
             if name in outputs:
-                ax.plot(frequency, outputs[name], linestyle=LINE_STYLES[k % len(LINE_STYLES)],
-                        label=label)
+                line, = ax.plot(frequency, outputs[name], linestyle=style, label=label)
+            if name in weighted:
+                ax.plot(frequency, weighted[name], linestyle=style, color=line.get_color(),
+                        linewidth=0.8, label=label + ", Wk")
         ax.axvline(args.band_hz, color="k", linestyle="-.", linewidth=1,
                    label=f"{args.band_hz:g} Hz band")
-        peak = max(outputs[name].max() for _, _, outputs in curves if name in outputs)
+        peak = max(outputs[name].max() for _, _, outputs, _ in curves if name in outputs)
         if peak > 0:
             ax.set_yscale("log")
             # Wheelbase-filter notches reach ~0: show 6 decades below the peak, not down to 1e-13.
@@ -117,9 +147,9 @@ def main():
         else:  # nothing to draw on a log scale
             ax.set_ylim(-0.05, 1)
         ax.set_xlim(0, args.f_max)
-        ax.set_title(OUTPUTS[name][0] + ("" if peak > 0 else " (zero in every file)"))
+        ax.set_title(panel(name)[0] + ("" if peak > 0 else " (zero in every file)"))
         ax.set_xlabel("frequency [Hz]")
-        ax.set_ylabel(OUTPUTS[name][1])
+        ax.set_ylabel(panel(name)[1])
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize="small")
     if args.title:

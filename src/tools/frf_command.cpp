@@ -1,5 +1,6 @@
 // `tvd frf`: comfort FRFs per unit road height (paper §4.1, eqs. 15-25) of the full or reduced
-// vehicle, synchronous or travelled at a speed (the wheelbase filter).
+// vehicle, synchronous or travelled at a speed (the wheelbase filter), at the hull, the wheels
+// and (--points) the description's named points, there also ISO 2631-1 Wk-weighted.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "output_files.h"
 #include "reduction_options.h"
 #include "vehicle_analysis.h"
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
@@ -35,15 +37,26 @@ struct FrfOptions {
   bool variant_given = false;
   std::string out_file;
   bool json = false;
+  std::vector<std::string> points;  ///< named points of the description (--points)
 };
 
-// The paper's comfort outputs (Figs. 13-16): hull vertical and pitch, front and rear left wheel.
+// One output of the FRF matrix as written: the paper's comfort outputs (Figs. 13-16: hull
+// vertical and pitch, front and rear left wheel) and the named points' vertical accelerations.
 struct NamedColumn {
   std::string column;
   std::string output;
   std::string unit;
   DofIndex index = -1;  ///< column of the FRF matrix
+  /// Also |H(f)| |Wk(f)|: the ISO 2631-1 weighting of vertical acceleration at a seat, which
+  /// ride engineers compare designs with (a named point's column).
+  bool wk_weighted = false;
 };
+
+DofIndex outputIndex(const std::vector<std::string>& names, const std::string& output) {
+  const auto it = std::find(names.begin(), names.end(), output);
+  if (it == names.end()) throw InputError("frf: the model has no output '" + output + "'");
+  return static_cast<DofIndex>(it - names.begin());
+}
 
 std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
   int rear = 0;
@@ -55,10 +68,37 @@ std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
                                   {"front_wheel_acc", "road_wheel_left_1 uz", "(m/s^2)/m"}};
   if (rear > 1)
     out.push_back({"rear_wheel_acc", "road_wheel_left_" + std::to_string(rear) + " uz", "(m/s^2)/m"});
-  for (NamedColumn& c : out) {
-    const auto it = std::find(names.begin(), names.end(), c.output);
-    if (it == names.end()) throw InputError("frf: the model has no output '" + c.output + "'");
-    c.index = static_cast<DofIndex>(it - names.begin());
+  for (NamedColumn& c : out) c.index = outputIndex(names, c.output);
+  return out;
+}
+
+// --points, checked against the description before any work: each a named point, none twice.
+void checkPoints(const std::vector<std::string>& points,
+                 const vehicle::VehicleDescription& description) {
+  std::string known;
+  for (const vehicle::NamedPoint& p : description.named_points)
+    known += (known.empty() ? "" : ", ") + p.name;
+  for (auto it = points.begin(); it != points.end(); ++it) {
+    const bool named = std::any_of(description.named_points.begin(), description.named_points.end(),
+                                   [&](const vehicle::NamedPoint& p) { return p.name == *it; });
+    if (!named)
+      throw InputError("frf: --points: unknown point '" + *it + "' (the description has: " +
+                       (known.empty() ? std::string("no named points") : known) + ")");
+    if (std::find(points.begin(), it, *it) != it)
+      throw InputError("frf: --points: point '" + *it + "' is listed twice");
+  }
+}
+
+// Every model has the outputs "<point> ux|uy|uz" of each named point (vehicleOutputs()); the
+// vertical one is what a seat transmits to the crew.
+std::vector<NamedColumn> pointOutputs(const std::vector<std::string>& names,
+                                      const std::vector<std::string>& points) {
+  std::vector<NamedColumn> out;
+  for (const std::string& point : points) {
+    NamedColumn c{point + "_vertical_acc", point + " uz", "(m/s^2)/m"};
+    c.index = outputIndex(names, c.output);
+    c.wk_weighted = true;
+    out.push_back(c);
   }
   return out;
 }
@@ -85,6 +125,7 @@ void run(const FrfOptions& opt) {
                              : dynamics::InputDelay::synchronous();
   };
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
+  checkPoints(opt.points, description);
   if (opt.model == "reduced") {
     reduced = obtainReducedModel(description, variant, opt.variant_given, "frf", opt.reduced);
     variant = reduced->variant;  // a --reduced file's
@@ -109,28 +150,40 @@ void run(const FrfOptions& opt) {
     source = "full (" + std::to_string(ref.frequencies_hz.size()) + " modes up to " +
              std::to_string(static_cast<int>(opt.max_mode_hz)) + " Hz + static residual)";
   }
-  const std::vector<NamedColumn> columns = comfortOutputs(names);
+  std::vector<NamedColumn> columns = comfortOutputs(names);
+  const std::vector<NamedColumn> point_columns = pointOutputs(names, opt.points);
+  columns.insert(columns.end(), point_columns.begin(), point_columns.end());
+  // |Wk(j 2 pi f)| on the grid (0 at 0 Hz: the weighting's high-pass).
+  Vector wk(hz.size());
+  for (Eigen::Index i = 0; i < hz.size(); ++i)
+    wk(i) = std::abs(dynamics::iso2631Response(dynamics::Weighting::Wk, hz(i)));
+  auto magnitude = [&](const NamedColumn& c) -> Vector { return h.col(c.index).cwiseAbs(); };
+  auto weighted = [&](const NamedColumn& c) -> Vector { return magnitude(c).cwiseProduct(wk); };
 
   if (!opt.out_file.empty()) {
     std::vector<std::string> headers = {"frequency_hz"};
-    Matrix table(hz.size(), 1 + 2 * columns.size());
-    table.col(0) = hz;
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      headers.push_back(columns[c].column + "_mag");
-      headers.push_back(columns[c].column + "_phase_deg");
-      for (Eigen::Index i = 0; i < hz.size(); ++i) {
-        const dynamics::Complex v = h(i, columns[c].index);
-        table(i, 1 + 2 * c) = std::abs(v);
-        table(i, 2 + 2 * c) = std::arg(v) * kRadToDegree;
+    std::vector<Vector> data = {hz};
+    for (const NamedColumn& c : columns) {
+      Vector phase(hz.size());
+      for (Eigen::Index i = 0; i < hz.size(); ++i)
+        phase(i) = std::arg(h(i, c.index)) * kRadToDegree;
+      headers.push_back(c.column + "_mag");
+      data.push_back(magnitude(c));
+      headers.push_back(c.column + "_phase_deg");
+      data.push_back(phase);
+      if (c.wk_weighted) {
+        headers.push_back(c.column + "_wk_mag");
+        data.push_back(weighted(c));
       }
     }
+    Matrix table(hz.size(), static_cast<Eigen::Index>(data.size()));
+    for (std::size_t k = 0; k < data.size(); ++k) table.col(static_cast<Eigen::Index>(k)) = data[k];
     writeTable(opt.out_file, headers, table, 10,
                {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"model", opt.model}});
   }
 
   // Per output: the largest peak and every local maximum above 10 % of it (the resonances).
-  auto peaks = [&](const NamedColumn& c) {
-    const Vector mag = h.col(c.index).cwiseAbs();
+  auto peaks = [&](const Vector& mag) {
     Eigen::Index top = 0;
     mag.maxCoeff(&top);
     std::vector<std::pair<double, double>> local;
@@ -155,7 +208,7 @@ void run(const FrfOptions& opt) {
       writeReductionJson(json.key("reduction"), *reduced);
     json.key("outputs").beginArray();
     for (const NamedColumn& c : columns) {
-      const auto [top, local] = peaks(c);
+      const auto [top, local] = peaks(magnitude(c));
       json.beginObject()
           .field("column", c.column)
           .field("output", c.output)
@@ -168,7 +221,15 @@ void run(const FrfOptions& opt) {
           .key("resonances_hz")
           .beginArray();
       for (const auto& [f, m] : local) json.value(f);
-      json.endArray().endObject();
+      json.endArray();
+      if (c.wk_weighted) {
+        const Vector w = weighted(c);
+        const Eigen::Index wk_top = peaks(w).first;
+        json.field("wk_peak_hz", hz(wk_top))
+            .field("wk_peak_magnitude", w(wk_top))
+            .field("wk_peak_at_band_edge", wk_top == hz.size() - 1);
+      }
+      json.endObject();
     }
     json.endArray();
     if (!opt.out_file.empty()) json.field("out", opt.out_file);
@@ -183,12 +244,18 @@ void run(const FrfOptions& opt) {
   if (reduced)
     std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
   for (const NamedColumn& c : columns) {
-    const auto [top, local] = peaks(c);
+    const auto [top, local] = peaks(magnitude(c));
     std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "
               << std::setprecision(4) << std::abs(h(top, c.index)) << " " << c.unit
               << " at " << hz(top) << " Hz" << (top == hz.size() - 1 ? " (band edge)" : "")
               << "; resonances [Hz]:";
     for (const auto& [f, m] : local) std::cout << " " << f;
+    if (c.wk_weighted) {
+      const Vector w = weighted(c);
+      const Eigen::Index wk_top = peaks(w).first;
+      std::cout << "; Wk-weighted peak " << w(wk_top) << " " << c.unit << " at " << hz(wk_top)
+                << " Hz" << (wk_top == hz.size() - 1 ? " (band edge)" : "");
+    }
     std::cout << "\n";
   }
   if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
@@ -199,7 +266,8 @@ void run(const FrfOptions& opt) {
 void registerFrfCommand(CLI::App& app) {
   auto opt = std::make_shared<FrfOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "frf", "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel)");
+      "frf", "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel, "
+             "named points)");
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
   CLI::Option* variant =
       cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
@@ -218,8 +286,18 @@ void registerFrfCommand(CLI::App& app) {
                       "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
           ->check(positiveNumber() & numberIn(0.0, 100.0, "Hz"));
   opt->reduced.addTo(cmd);
+  cmd->add_option("--points", opt->points,
+                  "named points of the description (e.g. crew_seat), comma-separated or repeated: "
+                  "adds <point>_vertical_acc (output '<point> uz') with its ISO 2631-1 "
+                  "Wk-weighted magnitude <point>_vertical_acc_wk_mag")
+      ->type_name("NAME[,NAME...]")
+      ->default_str("")
+      ->delimiter(',')
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--out", opt->out_file,
-                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and <output>_phase_deg")
+                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and "
+                  "<output>_phase_deg (a point's also <point>_vertical_acc_wk_mag)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt, max_mode, variant]() {

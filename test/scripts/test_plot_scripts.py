@@ -374,6 +374,31 @@ class PlotScriptsTest(unittest.TestCase):
                                      f"full={hull}")
             self.assert_input_error(result, bad, *words)
 
+    def test_frf_point_panels(self):
+        # `tvd frf --points crew_seat`: the point's magnitude and its Wk-weighted one.
+        columns = frf_columns()
+        f = columns["frequency_hz"]
+        columns["crew_seat_vertical_acc_mag"] = 1.3 * columns["hull_vertical_acc_mag"]
+        columns["crew_seat_vertical_acc_phase_deg"] = columns["hull_vertical_acc_phase_deg"]
+        columns["crew_seat_vertical_acc_wk_mag"] = (columns["crew_seat_vertical_acc_mag"]
+                                                    * f / np.hypot(f, 2.0))
+        path = write_csv(self.path("points.csv"), columns)
+        plain = write_csv(self.path("plain.csv"), frf_columns())
+        out = self.path("frf.png")
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, f"seat={path}",
+                                        f"no points={plain}"), out)
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, "--outputs",
+                                        "crew_seat_vertical_acc", f"seat={path}"), out)
+        bad = self.path("bad.png")
+        result = self.run_script("plot_frf.py", "--out", bad, "--outputs",
+                                 "crew_seat_vertical_acc", f"no points={plain}")
+        self.assert_input_error(result, bad, "none of these is in any file")
+        columns["crew_seat_vertical_acc_wk_mag"][5] = -1.0
+        negative = write_csv(self.path("negative.csv"), columns)
+        result = self.run_script("plot_frf.py", "--out", bad, negative)
+        self.assert_input_error(result, bad, negative, "'crew_seat_vertical_acc_wk_mag'",
+                                "negative")
+
     def test_frf_missing_frequency_column(self):
         columns = frf_columns()
         columns["f"] = columns.pop("frequency_hz")

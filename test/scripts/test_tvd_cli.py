@@ -567,6 +567,172 @@ class TvdCliTest(unittest.TestCase):
                             self.cache, "--max-hz", "3")
         self.assertTrue(low["outputs"][0]["peak_at_band_edge"])  # still rising towards 5 Hz bounce
 
+    # --- frf --points: the description's named points ---------------------------------------
+    # ISO 2631-1:1997 one-third-octave table (comfort.h): |Wk| at 1 and 6.3 Hz, to its 3 digits.
+    WK_TABLE = {1.0: 0.482, 6.3: 1.054}
+    WK_TABLE_TOLERANCE = 1e-3
+    # The CSV's 10 significant digits of magnitude and phase rebuild a complex FRF to about 1e-9
+    # of its largest value; a point misplaced by 1 mm along x would err by 1e-3 |H_pitch|.
+    RIGID_POINT_TOLERANCE = 1e-7
+    # The reduced model is not exactly left-right symmetric (MoGeSeC's masters are not mirrored:
+    # their y sum to -1.4 m), so under the same road on both sides the hull rolls a little
+    # (un-tracked: 0.09 (rad/s^2)/m against a pitch of 2100) and a point off the centre line
+    # (the crew seat, y = 0.55 m) moves by theta_x y_p more: 5.3e-6 of its peak synchronous,
+    # 1.3e-5 at 30 km/h. A point misplaced by 1 mm along x would still err by 2e-4, the opposite
+    # pitch sign by 0.1 and more.
+    REDUCED_OFF_CENTRE_TOLERANCE = 3e-5
+    # test_vehicle_frf's reduced-vs-full criterion: 1 dB up to 30 Hz, away from anti-resonances
+    # (the full FRF 12 dB below its largest value within +-1 Hz), over at least 45 % of the band.
+    FRF_TOLERANCE_DB, ANTI_RESONANCE_RATIO, ANTI_RESONANCE_WINDOW_HZ = 1.0, 0.25, 1.0
+    BAND_HZ = 30.0
+
+    def frf_columns(self, name, *args):
+        """`tvd frf --variant untracked --max-hz 30 ARGS --out NAME --json`: the JSON, the CSV's
+        columns by name and its text."""
+        out = self.path(name)
+        d = self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--max-hz",
+                          str(self.BAND_HZ), *args, "--out", out)
+        header, rows = read_csv(out)
+        with open(out) as f:
+            text = f.read()
+        return d, {n: rows[:, i] for i, n in enumerate(header)}, text
+
+    @staticmethod
+    def complex_frf(columns, name):
+        return columns[name + "_mag"] * np.exp(1j * np.radians(columns[name + "_phase_deg"]))
+
+    def assert_rigid_with_the_hull(self, columns, point, what, tolerance):
+        """The point's vertical acceleration is the hull's rigid motion there (the point is a
+        slave of the hull's node, at its CoG):  H_p = H_z - (x_p - x_G) H_pitch, from small-angle
+        kinematics u = u_G + theta x (p - G) with REP-103 axes (x forward, z up; a positive pitch
+        about +y lowers the nose): u_z(p) = u_zG + theta_x (y_p - y_G) - theta_y (x_p - x_G).
+        Both tracks read the same road, so the symmetric vehicle does not roll and y_p drops out
+        (up to `tolerance`, relative to the point's peak)."""
+        with open(VEHICLE) as f:
+            d = yaml.safe_load(f)
+        arm = d["named_points"][point]["value"][0] - d["hull"]["cog_x"]["value"]
+        h_z = self.complex_frf(columns, "hull_vertical_acc")
+        h_pitch = self.complex_frf(columns, "hull_pitch_acc")
+        h_p = self.complex_frf(columns, point + "_vertical_acc")
+        scale = np.abs(h_p).max()
+        error = np.abs(h_p - (h_z - arm * h_pitch)).max() / scale
+        self.assertLess(error, tolerance, f"{point}, {what}")
+        # Not true of any point: the pitch term is 2 % of the response or more (sensor mount,
+        # 0.18 m behind the CoG: 5 %; crew seat: 50 %), and the opposite sign (nose up) is off.
+        self.assertGreater(np.abs(arm * h_pitch).max() / scale, 0.02, f"{point}, {what}")
+        self.assertGreater(np.abs(h_p - (h_z + arm * h_pitch)).max() / scale, 0.04,
+                           f"{point}, {what}")
+
+    def test_frf_points_are_rigid_with_the_hull_and_wk_weighted(self):
+        points = ["crew_seat", "sensor_mount"]
+        for speed in ("0", "30"):
+            plain, plain_columns, plain_text = self.frf_columns(
+                f"frf_plain_{speed}.csv", "--cache-dir", self.cache, "--speed-kmh", speed)
+            # Comma-separated or repeated: the same list.
+            listed = (["--points", ",".join(points)] if speed == "0" else
+                      ["--points", points[0], "--points", points[1]])
+            d, c, text = self.frf_columns(f"frf_points_{speed}.csv", "--cache-dir", self.cache,
+                                          "--speed-kmh", speed, *listed)
+            extra = [p + "_vertical_acc" + s for p in points for s in ("_mag", "_phase_deg",
+                                                                       "_wk_mag")]
+            self.assertEqual(list(c), list(plain_columns) + extra)
+            # The points add columns and outputs and change nothing else, to the byte.
+            plain_lines, lines = plain_text.splitlines(), text.splitlines()
+            self.assertEqual(len(lines), len(plain_lines))
+            for a, b in zip(plain_lines, lines):
+                self.assertTrue(b.startswith(a + ","), (a, b))
+            self.assertEqual(d["outputs"][:4], plain["outputs"])
+            # The rest alike too, but for where the model came from (the first run of a fresh
+            # cache reduces, the second reads the file).
+            rest = [json.loads(json.dumps(j)) for j in (d, plain)]
+            for j in rest:
+                del j["outputs"], j["out"], j["model"], j["reduction"]["source"]
+            self.assertEqual(rest[0], rest[1])
+            # (a) Rigid with the hull.
+            for point, tolerance in zip(points, (self.REDUCED_OFF_CENTRE_TOLERANCE,
+                                                 self.RIGID_POINT_TOLERANCE)):
+                self.assert_rigid_with_the_hull(c, point, f"{speed} km/h", tolerance)
+            # (b) The weighting: |H| |Wk(f)|, the same factor at both points, the standard's
+            # table at 1 and 6.3 Hz, 0 at 0 Hz (Wk's high-pass).
+            f = c["frequency_hz"]
+            ratio = {}
+            for point in points:
+                mag, wk = c[point + "_vertical_acc_mag"], c[point + "_vertical_acc_wk_mag"]
+                self.assertEqual(wk[0], 0.0)
+                self.assertTrue(np.all(mag[1:] > 0.0))
+                ratio[point] = wk[1:] / mag[1:]
+                for hz, table in self.WK_TABLE.items():
+                    i = int(np.argmin(np.abs(f - hz)))
+                    self.assertAlmostEqual(f[i], hz, places=9)
+                    self.assertAlmostEqual(wk[i] / mag[i], table, delta=self.WK_TABLE_TOLERANCE,
+                                           msg=f"{point}, |Wk({hz:g} Hz)|")
+            np.testing.assert_allclose(ratio[points[0]], ratio[points[1]], rtol=1e-8)
+            # The JSON: each point's peak and Wk-weighted peak are the CSV's.
+            for o, point in zip(d["outputs"][4:], points):
+                self.assertEqual((o["column"], o["output"], o["unit"]),
+                                 (point + "_vertical_acc", point + " uz", "(m/s^2)/m"))
+                for prefix, column in (("", "_mag"), ("wk_", "_wk_mag")):
+                    values = c[point + "_vertical_acc" + column]
+                    k = int(np.argmax(values))
+                    self.assertAlmostEqual(o[prefix + "peak_magnitude"] / values[k], 1.0, places=8)
+                    self.assertAlmostEqual(o[prefix + "peak_hz"], f[k], places=9)
+                    self.assertEqual(o[prefix + "peak_at_band_edge"], k == len(f) - 1)
+                self.assertTrue(o["resonances_hz"])
+        # The text report names the points and their Wk-weighted peaks.
+        text = self.tvd("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
+                        self.cache, "--max-hz", "5", "--points", "crew_seat").stdout
+        self.assertIn("crew_seat_vertical_acc peak", text)
+        self.assertIn("Wk-weighted peak", text)
+
+    def test_frf_points_of_the_full_model_match_the_reduced(self):
+        if os.path.join(ROOT, "scripts") not in sys.path:
+            sys.path.insert(0, os.path.join(ROOT, "scripts"))
+        import paper_tables  # noqa: E402  (worst_db: test_vehicle_frf's comparison)
+        _, reduced, _ = self.frf_columns("frf_points_reduced.csv", "--cache-dir", self.cache,
+                                         "--points", "crew_seat")
+        full_json, full, _ = self.frf_columns("frf_points_full.csv", "--model", "full",
+                                              "--points", "crew_seat")
+        self.assertTrue(full_json["model"].startswith("full ("), full_json["model"])
+        np.testing.assert_array_equal(full["frequency_hz"], reduced["frequency_hz"])
+        # The full model is symmetric: its crew seat is rigid with the hull to rounding.
+        self.assert_rigid_with_the_hull(full, "crew_seat", "full model", self.RIGID_POINT_TOLERANCE)
+        for column in ("crew_seat_vertical_acc_mag", "crew_seat_vertical_acc_wk_mag"):
+            db, share = paper_tables.worst_db(full["frequency_hz"], full[column], reduced[column],
+                                              self.BAND_HZ, self.ANTI_RESONANCE_RATIO,
+                                              self.ANTI_RESONANCE_WINDOW_HZ)
+            self.assertLess(db, self.FRF_TOLERANCE_DB, column)
+            self.assertGreater(share, 0.45, column)
+
+    def test_frf_points_bad_names_are_refused(self):
+        renamed = self.path("renamed_seat.yaml")
+        with open(VEHICLE) as f:
+            text = f.read()
+        self.assertEqual(text.count("\n  crew_seat:"), 1)
+        with open(renamed, "w") as f:
+            f.write(text.replace("\n  crew_seat:", "\n  driver_seat:"))
+        cache = self.path("cache_points_refused")
+        frf = ["frf", "--variant", "untracked", "--cache-dir", cache]
+        cases = [
+            ([VEHICLE, "--points", "crew_seat,turret"],
+             "unknown point 'turret' (the description has: crew_seat, sensor_mount)"),
+            ([VEHICLE, "--points", "crew_seat", "--points", "crew_seat"],
+             "point 'crew_seat' is listed twice"),
+            ([VEHICLE, "--points", "sensor_mount,crew_seat,sensor_mount"],
+             "point 'sensor_mount' is listed twice"),
+            ([VEHICLE, "--model", "full", "--points", "Crew_Seat"],
+             "unknown point 'Crew_Seat' (the description has: crew_seat, sensor_mount)"),
+            # The names are the description's, not a built-in list.
+            ([renamed, "--points", "crew_seat"],
+             "unknown point 'crew_seat' (the description has: driver_seat, sensor_mount)"),
+        ]
+        for args, message in cases:
+            result = self.tvd(*frf, "--vehicle", *args, status=INPUT_ERROR_STATUS)
+            self.assertEqual(result.stdout, "")
+            lines = result.stderr.strip().splitlines()
+            self.assertEqual(len(lines), 1, result.stderr)
+            self.assertEqual(lines[0], "tvd: error: frf: --points: " + message)
+        self.assertFalse(os.path.exists(cache))  # refused before any reduction
+
     # --- Reduction options and reduced-model files of frf and simulate ----------------------
     # The un-tracked variant with the band rule: no tracked modes to solve, so each reduction
     # takes a fraction of a second; the options still differ from the defaults in every way the
