@@ -59,13 +59,13 @@ struct VehicleModelFile {
 VehicleModelFile loadVehicleModelFile(const std::string& path,
                                       const vehicle::VehicleDescription& description);
 
+/// The damping the description asks for (modal ratio or Rayleigh, plus its discrete dampers).
+DampingOptions vehicleDamping(const vehicle::DampingDescription& damping);
+
 /// Output rows of every reduced vehicle model, in this order:
 ///   "hull ux", "hull uy", "hull uz", "hull rx", "hull ry", "hull rz"   (hull CoG node)
 ///   "<wheel name> uz" for every road wheel (e.g. "road_wheel_left_1 uz")
 ///   "<point name> ux|uy|uz" for every named point of the description.
-/// The damping the description asks for (modal ratio or Rayleigh, plus its discrete dampers).
-DampingOptions vehicleDamping(const vehicle::DampingDescription& damping);
-
 std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& vehicle,
                                       const vehicle::VehicleDescription& description);
 
