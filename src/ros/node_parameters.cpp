@@ -161,8 +161,15 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("base_frame", "must differ from ~odom_frame");
   // The prefix names one vehicle's whole tree (REP-105 per robot: veh1/odom -> veh1/base_link
   // -> veh1/road_wheel_left_1), so that two nodes in one tf tree never share a frame.
+  p.footprint_frame = in.string("footprint_frame", "");
+  if (!p.footprint_frame.empty() &&
+      (p.footprint_frame == p.odom_frame || p.footprint_frame == p.base_frame))
+    throw in.error("footprint_frame", "must differ from ~odom_frame and ~base_frame");
+  in.read("publish_odom_tf", &p.publish_odom_tf, "a boolean");
   p.odom_frame = p.frame_prefix + p.odom_frame;
   p.base_frame = p.frame_prefix + p.base_frame;
+  if (!p.footprint_frame.empty())
+    p.footprint_frame = p.frame_prefix + p.footprint_frame;
   p.publish_points_all = !in.read("points", &p.points, "a list of strings");
   in.read("imu_points", &p.imu_points, "a list of strings");
   MeasurementVariances& var = p.variances;

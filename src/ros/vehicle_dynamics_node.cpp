@@ -316,11 +316,22 @@ void VehicleDynamicsNode::setUpFrames() {
     static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
     static_broadcaster_->sendTransform(fixed);
   }
+  // The hull's transforms first: odom -> base_link, or odom -> footprint -> base_link, less the
+  // one from odom when another source owns it (~publish_odom_tf false).
+  std::vector<std::pair<std::string, std::string>> hull_links;
+  const bool footprint = !params_.footprint_frame.empty();
+  if (params_.publish_odom_tf)
+    hull_links.emplace_back(params_.odom_frame,
+                            footprint ? params_.footprint_frame : params_.base_frame);
+  if (footprint)
+    hull_links.emplace_back(params_.footprint_frame, params_.base_frame);
   auto& transforms_ = tf_msg_.transforms;
-  transforms_.resize(1 + geometry.wheels.size() + published_points_.size());
-  transforms_[0].header.frame_id = params_.odom_frame;
-  transforms_[0].child_frame_id = params_.base_frame;
-  std::size_t k = 1;
+  transforms_.resize(hull_links.size() + geometry.wheels.size() + published_points_.size());
+  std::size_t k = 0;
+  for (const auto& [parent, child] : hull_links) {
+    transforms_[k].header.frame_id = parent;
+    transforms_[k++].child_frame_id = child;
+  }
   for (const auto& wheel : geometry.wheels) {
     transforms_[k].header.frame_id = params_.base_frame;
     transforms_[k++].child_frame_id = params_.frame_prefix + wheel.name;
@@ -702,8 +713,18 @@ void VehicleDynamicsNode::publishState() {
     auto& transforms = tf_msg_.transforms;
     for (auto& t : transforms)
       t.header.stamp = sample_time_;
-    toMsg(pose, &transforms[0].transform);
-    std::size_t k = 1;
+    std::size_t k = 0;
+    if (params_.footprint_frame.empty()) {
+      if (params_.publish_odom_tf)
+        toMsg(pose, &transforms[k++].transform);
+    } else {
+      if (params_.publish_odom_tf) {
+        RigidPose path;  // the footprint: (s, 0, 0), unrotated
+        path.translation.x() = v.station();
+        toMsg(path, &transforms[k++].transform);
+      }
+      toMsg(relativeToPath(pose, v.station()), &transforms[k++].transform);
+    }
     RigidPose relative;
     for (std::size_t i = 0; i < v.geometry().wheels.size(); ++i) {
       relative.translation = v.wheelPosition(i);

@@ -29,6 +29,12 @@ RigidPose hullPose(double station, const Vector3& cog, const Vector6& hull_displ
   return pose;
 }
 
+RigidPose relativeToPath(const RigidPose& pose, double station) {
+  RigidPose relative = pose;
+  relative.translation.x() -= station;
+  return relative;
+}
+
 Vector6 hullDisplacement(double station, const Vector3& cog, const RigidPose& pose) {
   Vector6 u;
   u.head<3>() = pose.translation + pose.rotation * cog - cog - Vector3(station, 0.0, 0.0);

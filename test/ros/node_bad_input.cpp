@@ -270,6 +270,26 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
       << run.output;
 }
 
+// ~footprint_frame must be a frame of its own; ~publish_odom_tf a boolean.
+TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
+  ros::NodeHandle private_nh("~");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"footprint_is_odom _footprint_frame:=odom",
+       "/footprint_is_odom/footprint_frame: must differ from ~odom_frame and ~base_frame"},
+      {"odom_tf_maybe _publish_odom_tf:=maybe", "/odom_tf_maybe/publish_odom_tf: must be a boolean"},
+  };
+  for (const auto& [arguments, message] : cases) {
+    SCOPED_TRACE(arguments);
+    const NodeRun run = runNode(
+        "__name:=" + arguments + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir, timeout);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
+  }
+}
+
 // An unwritable ~cache_dir does not stop the node (the model is built), but it must not be
 // reported as cached: a WARN says "not cached" and why.
 TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {

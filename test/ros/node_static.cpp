@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <optional>
 #include <set>
 
 #include <nav_msgs/Odometry.h>
@@ -32,6 +33,11 @@ class NodeStatic : public ::testing::Test {
     // With ~frame_prefix (node_static_prefixed.test) every frame the node publishes carries it.
     prefix_ = private_nh_.param<std::string>("frame_prefix", "");
     base_ = prefix_ + "base_link";
+    odom_ = prefix_ + "odom";
+    // The node's ~footprint_frame and ~publish_odom_tf as the .test file sets them.
+    const std::string footprint = private_nh_.param<std::string>("footprint_frame", "");
+    footprint_ = footprint.empty() ? "" : prefix_ + footprint;
+    publish_odom_tf_ = private_nh_.param("publish_odom_tf", true);
     tf_sub_ = nh_.subscribe("/tf", 1000, &NodeStatic::onTf, this);
     tf_static_sub_ = nh_.subscribe("/tf_static", 10, &NodeStatic::onTfStatic, this);
     wheels_sub_ = nh_.subscribe("road_wheels", 1000, &NodeStatic::onWheels, this);
@@ -68,12 +74,34 @@ class NodeStatic : public ::testing::Test {
     }
   }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
+    // base_link in odom: one transform, or odom -> footprint -> base_link composed.
+    std::optional<RigidPose> direct, path, above;
     for (const auto& t : msg->transforms) {
       parents_[t.child_frame_id] = t.header.frame_id;
       on_tf_.insert(t.child_frame_id);
-      if (collecting_ && t.child_frame_id == base_) {
-        poses_.push_back({t.header.stamp, fromMsg(t.transform)});
-      }
+      from_odom_ += t.header.frame_id == odom_ ? 1 : 0;
+      if (t.child_frame_id == base_ && t.header.frame_id == odom_)
+        direct = fromMsg(t.transform);
+      if (t.child_frame_id == base_ && !footprint_.empty() && t.header.frame_id == footprint_)
+        above = fromMsg(t.transform);
+      if (t.child_frame_id == footprint_ && t.header.frame_id == odom_)
+        path = fromMsg(t.transform);
+    }
+    if (!collecting_ || msg->transforms.empty())
+      return;
+    const ros::Time stamp = msg->transforms.front().header.stamp;
+    if (direct) {
+      poses_.push_back({stamp, *direct});
+    } else if (above && path) {
+      RigidPose pose;
+      pose.rotation = path->rotation * above->rotation;
+      pose.translation = path->rotation * above->translation + path->translation;
+      poses_.push_back({stamp, pose});
+      // At rest at station 0: odom -> footprint is the identity.
+      path_offsets_.push_back(path->translation.norm() +
+                              path->rotation.angularDistance(Eigen::Quaterniond::Identity()));
+    } else if (above) {
+      above_poses_[stamp] = *above;
     }
   }
   void onWheels(const RoadWheels::ConstPtr& msg) {
@@ -87,7 +115,11 @@ class NodeStatic : public ::testing::Test {
   }
 
   ros::NodeHandle nh_, private_nh_;
-  std::string prefix_, base_;
+  std::string prefix_, base_, odom_, footprint_;
+  bool publish_odom_tf_ = true;
+  std::size_t from_odom_ = 0;                    // /tf transforms whose parent is odom
+  std::map<ros::Time, RigidPose> above_poses_;   // footprint -> base_link without odom's
+  std::vector<double> path_offsets_;  // |odom -> footprint - (s, 0, 0)| + its rotation
   test::DiagnosticsCache diagnostics_;
   ros::Subscriber tf_sub_, tf_static_sub_, wheels_sub_, comfort_sub_, odom_sub_;
   std::vector<ros::Subscriber> imu_subs_;
@@ -124,14 +156,44 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   test::spinFor(duration);
   collecting_ = false;
 
-  // Frames and parents.
-  EXPECT_EQ(parents_[base_], prefix_ + "odom");
+  // Frames and parents: base_link under odom, or under the footprint (itself under odom unless
+  // ~publish_odom_tf is false, when nothing on /tf hangs from odom).
+  const bool base_published = !footprint_.empty() || publish_odom_tf_;
+  if (base_published)
+    EXPECT_EQ(parents_[base_], footprint_.empty() ? odom_ : footprint_);
+  else
+    EXPECT_EQ(parents_.count(base_), 0u) << base_ << " published without odom's transform";
+  const bool footprint_published = !footprint_.empty() && publish_odom_tf_;
+  if (footprint_published)
+    EXPECT_EQ(parents_[footprint_], odom_);
+  if (!publish_odom_tf_)
+    EXPECT_EQ(from_odom_, 0u) << "a transform from odom with ~publish_odom_tf false";
   for (const std::string& name : expected_frames) {
     const std::string frame = prefix_ + name;
     ASSERT_TRUE(parents_.count(frame)) << "frame " << frame << " never published";
     EXPECT_EQ(parents_[frame], base_) << frame;
   }
-  EXPECT_EQ(parents_.size(), expected_frames.size() + 1) << "unexpected frames";
+  EXPECT_EQ(parents_.size(),
+            expected_frames.size() + (base_published ? 1 : 0) + (footprint_published ? 1 : 0))
+      << "unexpected frames";
+  // Without odom's transform the poses come from the odom topic; footprint -> base_link is that
+  // pose less the travel (station 0 here).
+  if (!publish_odom_tf_) {
+    ASSERT_TRUE(poses_.empty());
+    for (const auto& [stamp, pose] : odom_poses_)
+      poses_.push_back({stamp, pose});
+    for (const auto& [stamp, above] : above_poses_) {
+      const auto it = odom_poses_.find(stamp);
+      if (it == odom_poses_.end())
+        continue;
+      EXPECT_EQ(above.translation, relativeToPath(it->second, 0.0).translation);
+      EXPECT_NEAR(above.rotation.angularDistance(it->second.rotation), 0.0, 1e-15);
+    }
+    if (!footprint_.empty())
+      EXPECT_GT(above_poses_.size(), 100u);
+  }
+  for (double offset : path_offsets_)
+    EXPECT_LE(offset, 1e-12) << "odom -> footprint must be (s, 0, 0), unrotated";
   // The named points are rigid with the hull: on /tf_static at their description position, never
   // on /tf.
   std::vector<std::string> static_frames;

@@ -191,6 +191,20 @@ TEST(VehicleFrames, HullPoseAndItsInverse) {
   EXPECT_NEAR((hullDisplacement(17.0, cog, pose) - u).norm(), 0.0, kRoundTrip);
 }
 
+TEST(VehicleFrames, FootprintCarriesTheTravelAndBaseLinkTheRest) {
+  // odom -> footprint = (s, 0, 0) unrotated; footprint -> base_link = relativeToPath(pose, s);
+  // composed they give hullPose.
+  Vector6 u;
+  u << 0.002, -0.001, -0.08, 0.03, -0.12, 0.01;
+  const Vector3 cog(-0.1, 0.0, 1.57);
+  const RigidPose pose = hullPose(42.5, cog, u);
+  const RigidPose above = relativeToPath(pose, 42.5);
+  EXPECT_EQ(above.rotation.coeffs(), pose.rotation.coeffs());
+  EXPECT_EQ(above.translation + Vector3(42.5, 0.0, 0.0), pose.translation);
+  // ... and is the pose at station 0.
+  EXPECT_NEAR((above.translation - hullPose(0.0, cog, u).translation).norm(), 0.0, 1e-14);
+}
+
 TEST(VehicleFrames, PitchNoseDownLowersTheFrontPoints) {
   // REP-103: positive pitch (about +y) turns +x towards -z.
   Vector6 u = Vector6::Zero();

@@ -140,6 +140,14 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertEqual(recorder[recorder.index("-O") + 1].rsplit("/", 1)[-1],
                          "long_hill_30kmh_output.bag")
 
+    def test_footprint_frame_and_publish_odom_tf(self):
+        p = params("vehicle_dynamics.launch")
+        self.assertEqual((p["footprint_frame"], p["publish_odom_tf"]), ("", True))  # the file's
+        p = params("vehicle_dynamics.launch",
+                   "footprint_frame:=base_footprint", "publish_odom_tf:=false")
+        self.assertEqual((p["footprint_frame"], p["publish_odom_tf"]), ("base_footprint", False))
+        self.assertIsInstance(p["publish_odom_tf"], bool)  # the node reads a boolean
+
     def test_imu_points_are_passed_through(self):
         self.assertEqual(params("vehicle_dynamics.launch")["imu_points"], [])  # the file's: none
         self.assertEqual(params("vehicle_dynamics.launch", "imu_points:=[sensor_mount]")["imu_points"],

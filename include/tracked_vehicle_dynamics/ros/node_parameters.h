@@ -53,6 +53,13 @@ struct NodeParameters {
   std::string odom_frame = "odom";  ///< ~frame_prefix + ~odom_frame
   std::string base_frame = "base_link";  ///< ~frame_prefix + ~base_frame
   std::string frame_prefix;  ///< ~frame_prefix, before every frame id (odom, base, wheels, points)
+  /// ~footprint_frame (~frame_prefix + it): when set, odom -> footprint carries the travel along
+  /// the path, (s, 0, 0), and footprint -> base_link the hull's motion on it (REP-120's
+  /// base_footprint); empty: odom -> base_link in one transform.
+  std::string footprint_frame;
+  /// ~publish_odom_tf: publish the transform whose parent is ~odom_frame (another source, e.g.
+  /// the simulator's own vehicle pose or a localisation filter, may own it).
+  bool publish_odom_tf = true;
   /// ~points: named points published as frames; empty: all points of the description.
   std::vector<std::string> points;
   bool publish_points_all = true;  ///< true when ~points was not given

@@ -60,6 +60,10 @@ Vector3 rollPitchYaw(const Eigen::Quaterniond& rotation);
 /// base_link in odom for station s [m], CoG position p_G [m] in base_link and hull CoG
 /// displacement {u_G [m]; theta [rad]} (equations above).
 RigidPose hullPose(double station, const Vector3& cog, const Vector6& hull_displacement);
+/// base_link relative to the path frame at station s [m] (REP-120's base_footprint: at (s, 0, 0)
+/// in odom, unrotated): the pose less the travel, so path(s) * relativeToPath(pose, s) = pose.
+RigidPose relativeToPath(const RigidPose& pose, double station);
+
 /// The inverse of hullPose(): {u_G; theta} from the pose, the station and p_G.
 Vector6 hullDisplacement(double station, const Vector3& cog, const RigidPose& pose);
 
