@@ -27,6 +27,26 @@ double normalForce(const System& system, const Vector& u, const Spring& s, const
   return k * c.sign * s.frame.col(c.axis).dot(nodal(s.n2) - nodal(s.n1));
 }
 
+/// The names of the released springs, the first kNamesShown of them, for an error message.
+std::string releasedNames(const Model& model, const std::vector<UnilateralSpring>& springs,
+                          const std::vector<bool>& released) {
+  constexpr int kNamesShown = 8;
+  std::string names;
+  int shown = 0, more = 0;
+  for (std::size_t i = 0; i < springs.size(); ++i) {
+    if (!released[i])
+      continue;
+    if (shown == kNamesShown) {
+      ++more;
+      continue;
+    }
+    names += (shown++ ? ", " : "") + model.springs[springs[i].spring].name;
+  }
+  if (more > 0)
+    names += " and " + std::to_string(more) + " more";
+  return names;
+}
+
 }  // namespace
 
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
@@ -62,7 +82,8 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
       const auto lifted = std::count(r.released.begin(), r.released.end(), true);
       if (lifted == 0) throw;
       throw SolverError("with the " + std::to_string(lifted) + " unilateral springs in tension " +
-                        "released: " + e.what());
+                        "released (" + releasedNames(r.model, springs, r.released) +
+                        "): " + e.what());
     }
     const Vector u = r.system.dofs.transformation() * r.statics.displacement;
     // Each spring's force with its own stiffness: what it carries when active, what it would
@@ -102,7 +123,7 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
       const auto worst = std::max_element(violation.begin(), violation.end());
       if (*worst > 0.0) {
         const std::size_t i = static_cast<std::size_t>(worst - violation.begin());
-            r.released[i] = !r.released[i];
+        r.released[i] = !r.released[i];
         changed = true;
       }
     }

@@ -64,6 +64,15 @@ void run(const StaticsOptions& opt) {
   };
   const int pads_lifted = count(contact.pad_lifted);
   const int wheels_lifted = count(contact.wheel_lifted);
+  // Bilateral: nothing released, one false flag per contact, so both modes report alike.
+  if (!unilateral)
+    contact.chain_wheel_released.assign(built.layout.chain_wheel_contacts.size(), false);
+  const std::vector<vehicle::ChainWheelContact>& chain_wheels = built.layout.chain_wheel_contacts;
+  const vehicle::ChainWheel kChainWheels[] = {
+      vehicle::ChainWheel::Sprocket, vehicle::ChainWheel::Idler, vehicle::ChainWheel::ReturnRoller};
+  const auto release = [&](int side, vehicle::ChainWheel wheel) {
+    return vehicle::chainWheelRelease(built.layout, contact.chain_wheel_released, side, wheel);
+  };
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
 
@@ -90,6 +99,16 @@ void run(const StaticsOptions& opt) {
         .field("iterations", contact.iterations)
         .field("lifted_pads", pads_lifted)
         .field("lifted_wheels", wheels_lifted)
+        .field("released_chain_wheel_contacts", count(contact.chain_wheel_released));
+    // Per side and chain wheel kind: how many of its contacts with the links were released.
+    json.key("released_chain_wheel_contacts_by_side").beginObject();
+    for (int side = 0; side < 2; ++side) {
+      json.key(sideName(side)).beginObject();
+      for (const vehicle::ChainWheel wheel : kChainWheels)
+        json.field(vehicle::chainWheelName(wheel), release(side, wheel).released);
+      json.endObject();
+    }
+    json.endObject()
         .field("active_dofs", static_cast<long long>(system.size()))
         .field("mass_kg", model.model.totalMass())
         .field("weight_n", s.weight)
@@ -118,6 +137,18 @@ void run(const StaticsOptions& opt) {
           .field("peak_pressure_pa", g.wheel_peak_pressure[i])
           .endObject();
     }
+    json.endArray().key("chain_wheel_contacts").beginArray();
+    for (std::size_t i = 0; i < chain_wheels.size(); ++i) {
+      const vehicle::ChainWheelContact& c = chain_wheels[i];
+      json.beginObject()
+          .field("name", model.model.springs[c.spring].name)
+          .field("wheel", vehicle::chainWheelName(c.wheel))
+          .field("side", sideName(c.side))
+          .field("assembly", model.layout.assemblies[static_cast<std::size_t>(c.assembly)].index)
+          .field("load_n", s.chain_wheel_loads[i])
+          .field("released", static_cast<bool>(contact.chain_wheel_released[i]))
+          .endObject();
+    }
     json.endArray().key("track_assemblies").beginArray();
     for (const vehicle::AssemblyGroundLoad& a : g.assemblies)
       json.beginObject()
@@ -141,12 +172,32 @@ void run(const StaticsOptions& opt) {
             << model.model.totalMass() << " kg   weight: " << std::setprecision(2) << s.weight / 1e3
             << " kN   solve: " << std::setprecision(3) << seconds << " s\n";
   if (unilateral)
-    std::cout << "contacts: unilateral (pads on the road, wheels on the links push but cannot pull): "
+    std::cout << "contacts: unilateral (pads on the road, wheels on the links, links on the "
+                 "sprockets, idlers and rollers push but cannot pull): "
               << pads_lifted << " of " << contact.pad_lifted.size() << " pad soles and "
               << wheels_lifted << " of " << contact.wheel_lifted.size() << " road wheels lifted, "
               << contact.iterations << (contact.iterations == 1 ? " solve\n" : " solves\n");
   else
     std::cout << "contacts: bilateral (the linear model: the equilibrium the dynamics start from)\n";
+  if (!chain_wheels.empty()) {
+    // Unilateral: the contacts released; bilateral: those the link pulls on (N < 0).
+    std::vector<bool> shown = contact.chain_wheel_released;
+    if (!unilateral)
+      for (std::size_t i = 0; i < chain_wheels.size(); ++i)
+        shown[i] = s.chain_wheel_loads[i] < 0.0;
+    std::cout << (unilateral ? "chain wheel contacts released (the link has left the wheel):"
+                             : "chain wheel contacts pulling (would leave the wheel):");
+    for (int side = 0; side < 2; ++side) {
+      std::cout << (side == 0 ? " " : "; ") << sideName(side);
+      for (const vehicle::ChainWheel wheel : kChainWheels) {
+        const vehicle::ChainWheelRelease r =
+            vehicle::chainWheelRelease(built.layout, shown, side, wheel);
+        std::cout << (wheel == vehicle::ChainWheel::Sprocket ? " " : ", ")
+                  << vehicle::chainWheelName(wheel) << " " << r.released << " of " << r.contacts;
+      }
+    }
+    std::cout << "\n";
+  }
   std::cout << "\n"
             << "hull at rest: sag " << std::setprecision(3) << s.hull_sag * 1e3 << " mm, pitch "
             << std::setprecision(4) << printed(s.hull_pitch * kRadToDegree, 4)
@@ -204,9 +255,10 @@ void registerStaticsCommand(CLI::App& app) {
                   "(0 left, 1 right), assembly, x_m, load_n, inner_pad_n, outer_pad_n, pressure_pa")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_option("--contact", opt->contact,
-                  "unilateral: pads and road wheels push but cannot pull, those in tension lift "
-                  "off | bilateral: the linear model, every contact bonded (the equilibrium the "
-                  "dynamics start from, as tvd modes reports)")
+                  "unilateral: pads, road wheels and the links on the sprockets, idlers and "
+                  "return rollers push but cannot pull, those in tension lift off | bilateral: "
+                  "the linear model, every contact bonded (the equilibrium the dynamics start "
+                  "from, as tvd modes reports)")
       ->check(CLI::IsMember({"unilateral", "bilateral"}));
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the tables");
   cmd->callback([opt]() { run(*opt); });

@@ -45,6 +45,14 @@ StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& sy
     const Vector6 f = -fem::bushingMatrix(c.stiffness, c.frame) * (nodal(c.n2) - nodal(c.n1));
     s.wheel_loads.push_back(-f(2) + 0.0);  // + 0.0: a released contact reads 0, not -0
   }
+  for (const ChainWheelContact& w : vehicle.layout.chain_wheel_contacts) {
+    // The same bushing in the link's frame, diagonal there: N = k_z z . (u_link - u_wheel), z
+    // the inward normal. Taken from k_z directly, not as z . (K d), so a released contact
+    // (k_z = 0) reads exactly 0 rather than the round-off of its turned tangential stiffness.
+    const fem::Spring& c = springs[w.spring];
+    const Vector3 d = (nodal(c.n2) - nodal(c.n1)).head<3>();
+    s.chain_wheel_loads.push_back(c.stiffness(2) * c.frame.col(2).dot(d) + 0.0);
+  }
   return s;
 }
 

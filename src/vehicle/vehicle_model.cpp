@@ -275,6 +275,16 @@ class Builder {
     model().springs.push_back(s);
   }
 
+  void recordChainWheelContact(ChainWheel wheel, int side, int roller, int assembly) {
+    ChainWheelContact c;
+    c.wheel = wheel;
+    c.side = side;
+    c.roller = roller;
+    c.assembly = assembly;
+    c.spring = model().springs.size() - 1;
+    layout().chain_wheel_contacts.push_back(c);
+  }
+
   /// The point of the link's upper surface above the assembly's centre line at `along` from it.
   Vector3 upperSurface(const AssemblyRecord& a, const Matrix3& frame, double along) const {
     const fem::Node& centre = nodeById(a.nodes.linkCentre());
@@ -374,12 +384,16 @@ class Builder {
         const double kc = s.contact_stiffness, ks = s.contact_shear_stiffness;
         const NodeId base = a.nodes.base;
         const std::string tag = std::string(sideName(side)) + "_" + std::to_string(k);
-        if (sk >= sprocket_arc.first && sk < sprocket_arc.second)
+        if (sk >= sprocket_arc.first && sk < sprocket_arc.second) {
           addContact(sprocket, base + kWheelContact, base + kLinkContact, a,
                      upperSurface(a, frame, 0.0), frame, kc, ks, kc, "sprocket_" + tag);
-        if (sk >= idler_arc.first && sk < idler_arc.second)
+          recordChainWheelContact(ChainWheel::Sprocket, side, 0, index[k]);
+        }
+        if (sk >= idler_arc.first && sk < idler_arc.second) {
           addContact(idler, base + kWheelContact, base + kLinkContact, a,
                      upperSurface(a, frame, 0.0), frame, 0.0, ks, kc, "idler_" + tag);
+          recordChainWheelContact(ChainWheel::Idler, side, 0, index[k]);
+        }
       }
       const auto top = path.interval(ChainSegment::TopRun);
       for (std::size_t r = 0; r < d_.return_rollers.x.size(); ++r) {
@@ -414,6 +428,7 @@ class Builder {
                    upperSurface(a, frame, 0.0), frame, 0.0, s.contact_shear_stiffness,
                    s.contact_stiffness,
                    std::string("return_roller_") + sideName(side) + "_" + std::to_string(r));
+        recordChainWheelContact(ChainWheel::ReturnRoller, side, static_cast<int>(r), index[best]);
       }
     }
   }
@@ -462,6 +477,18 @@ class Builder {
 
 const char* variantName(Variant variant) {
   return variant == Variant::Untracked ? "untracked" : "tracked";
+}
+
+const char* chainWheelName(ChainWheel wheel) {
+  switch (wheel) {
+    case ChainWheel::Sprocket:
+      return "sprocket";
+    case ChainWheel::Idler:
+      return "idler";
+    case ChainWheel::ReturnRoller:
+      return "return_roller";
+  }
+  return "?";
 }
 
 Variant parseVariant(const std::string& text) {

@@ -1,9 +1,12 @@
 // Statics with unilateral springs (fem/unilateral_static.h) against a hand-solved lift-off, and the
-// vehicle at rest with pads and wheels that cannot pull (vehicle/contact_statics.h).
+// vehicle at rest with pads, road wheels, sprockets, idlers and return rollers that cannot pull
+// (vehicle/contact_statics.h).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
@@ -65,6 +68,37 @@ std::vector<fem::UnilateralSpring> supports(std::size_t n = 3) {
 
 double verticalDisplacement(const fem::System& system, const fem::StaticResult& r, tvd::NodeId n) {
   return fem::physicalDisplacement(system, r.displacement, n, 2);
+}
+
+veh::VehicleDescription paperDescription() {
+  return veh::loadVehicleDescription(std::string(TVD_SOURCE_DIR) +
+                                     "/config/vehicles/paper_vehicle.yaml");
+}
+
+/// The paper vehicle, tracked, and the same with three return rollers per side under its top
+/// run (it has none: a free return run).
+std::vector<veh::VehicleModel> trackedVehicles() {
+  veh::VehicleDescription rollers = paperDescription();
+  rollers.return_rollers.x = {-1.17, 0.39, 1.95};  // between the road wheels
+  rollers.return_rollers.mass = 80.0;
+  return {veh::buildVehicleModel(paperDescription(), veh::Variant::Tracked),
+          veh::buildVehicleModel(rollers, veh::Variant::Tracked)};
+}
+
+/// The centre node of the sprocket, idler or roller a chain wheel contact belongs to.
+tvd::NodeId wheelCentre(const veh::VehicleLayout& layout, const veh::ChainWheelContact& c) {
+  const auto side = static_cast<std::size_t>(c.side);
+  switch (c.wheel) {
+    case veh::ChainWheel::Sprocket:
+      return layout.sprockets.at(side);
+    case veh::ChainWheel::Idler:
+      return layout.idlers.at(side);
+    case veh::ChainWheel::ReturnRoller: {
+      const std::size_t per_side = layout.return_rollers.size() / 2;
+      return layout.return_rollers.at(side * per_side + static_cast<std::size_t>(c.roller));
+    }
+  }
+  return 0;
 }
 
 }  // namespace
@@ -169,7 +203,10 @@ TEST(UnilateralStatic, BadSpringsAndATotalLiftOffAreNamed) {
     fem::solveUnilateralStatic(up, supports());
     FAIL() << "no error";
   } catch (const tvd::SolverError& e) {
-    EXPECT_NE(std::string(e.what()).find("released"), std::string::npos) << e.what();
+    // It names the springs it released and the free motion they leave.
+    const std::string what = e.what();
+    EXPECT_NE(what.find("released (support_0, support_1, support_2)"), std::string::npos) << what;
+    EXPECT_NE(what.find("singular"), std::string::npos) << what;
   }
 }
 
@@ -199,11 +236,18 @@ TEST(ContactStatics, TrackedVehicleRestsOnPadsAndWheelsThatPush) {
       EXPECT_EQ(s.wheel_loads[i], 0.0) << vehicle.layout.wheels[i].name;
     }
   }
-  // The bonded model pulls on the road between the wheels and at its rearmost wheels: here
-  // those let go (some soles, both rear wheels), the rest stays down.
+  // The bonded model pulls on the road between the wheels, at its rearmost wheels and at the
+  // sprocket's lowest links (towards the rear incline): here the soles between the wheels and
+  // those sprocket links let go, the rest stays down. With the chain free to leave the sprocket
+  // the rearmost wheels no longer pull on it (with the sprocket bonded, they lifted).
   EXPECT_GT(lifted, 0);
   EXPECT_LT(lifted, static_cast<int>(s.pad_loads.size()) / 2);
-  EXPECT_TRUE(c.wheel_lifted[6] && c.wheel_lifted[13]);  // road_wheel_left_7, road_wheel_right_7
+  EXPECT_FALSE(c.wheel_lifted[6] || c.wheel_lifted[13]);  // road_wheel_left_7, road_wheel_right_7
+  EXPECT_GT(s.wheel_loads[6], 0.0);
+  const veh::ChainWheelRelease sprocket =
+      veh::chainWheelRelease(vehicle.layout, c.chain_wheel_released, 0, veh::ChainWheel::Sprocket);
+  EXPECT_GT(sprocket.released, 0);
+  EXPECT_LT(sprocket.released, sprocket.contacts);
 }
 
 TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
@@ -213,8 +257,124 @@ TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
   const veh::ContactStatics c = veh::computeContactStatics(vehicle);
   EXPECT_EQ(c.iterations, 1);
   EXPECT_EQ(std::count(c.pad_lifted.begin(), c.pad_lifted.end(), true), 0);
+  // No chain, no sprocket, idler or roller contacts.
+  EXPECT_TRUE(vehicle.layout.chain_wheel_contacts.empty());
+  EXPECT_TRUE(c.chain_wheel_released.empty());
+  EXPECT_TRUE(c.summary.chain_wheel_loads.empty());
   const veh::StaticSummary bonded = veh::computeStaticSummary(vehicle, fem::assemble(vehicle.model));
   EXPECT_NEAR(c.summary.hull_sag, bonded.hull_sag, 1e-12);
   for (std::size_t i = 0; i < bonded.wheel_loads.size(); ++i)
     EXPECT_NEAR(c.summary.wheel_loads[i], bonded.wheel_loads[i], 1e-9 * bonded.weight);
+}
+
+TEST(ContactStatics, LinksPushTheirSprocketsIdlersAndRollersOrLeaveThem) {
+  // Complementarity of the chain wheel contacts, with the normal checked against the geometry:
+  // the contact frame's z must point from the contact point on the link to the wheel's centre,
+  // the direction in which the link pushes the wheel. A bonded contact carries
+  // N = k z . (u_link - u_wheel) >= 0; a released one carries nothing and its link has not moved
+  // into the wheel, z . (u_link - u_wheel) <= 0. With the sign of unilateralContacts flipped the
+  // solver would keep the pulling contacts and release the pushing ones, and both checks fail;
+  // so would the rollers', which carry the top run in compression.
+  for (const veh::VehicleModel& vehicle : trackedVehicles()) {
+    const veh::VehicleLayout& layout = vehicle.layout;
+    SCOPED_TRACE(std::to_string(layout.return_rollers.size()) + " return rollers");
+    const veh::ContactStatics c = veh::computeContactStatics(vehicle);
+    const veh::StaticSummary& s = c.summary;
+    EXPECT_LT(s.balanceError(), 1e-6);
+    ASSERT_FALSE(layout.chain_wheel_contacts.empty());
+    ASSERT_EQ(c.chain_wheel_released.size(), layout.chain_wheel_contacts.size());
+    ASSERT_EQ(s.chain_wheel_loads.size(), layout.chain_wheel_contacts.size());
+    const tvd::Vector u = c.system.dofs.transformation() *
+                          fem::solveStatic(c.system, c.system.gravity_load).displacement;
+    const auto index = vehicle.model.nodeIndex();
+    const auto position = [&](tvd::NodeId id) { return vehicle.model.nodes[index.at(id)].position; };
+    const auto displacement = [&](tvd::NodeId id) -> tvd::Vector3 {
+      return u.segment<3>(c.system.dofs.physical(id, 0));
+    };
+    const double tolerance = 1e-6 * s.weight;
+    int rollers = 0, released = 0;
+    for (std::size_t i = 0; i < layout.chain_wheel_contacts.size(); ++i) {
+      const veh::ChainWheelContact& w = layout.chain_wheel_contacts[i];
+      const fem::Spring& spring = vehicle.model.springs[w.spring];
+      const std::string& name = spring.name;
+      const tvd::Vector3 to_centre =
+          (position(wheelCentre(layout, w)) - position(spring.n1)).normalized();
+      const tvd::Vector3 n = spring.frame.col(2);
+      ASSERT_GT(n.dot(to_centre), 0.5) << name;
+      const double approach = n.dot(displacement(spring.n2) - displacement(spring.n1));
+      const double k = vehicle.model.springs[w.spring].stiffness(2);
+      if (c.chain_wheel_released[i]) {
+        ++released;
+        EXPECT_EQ(s.chain_wheel_loads[i], 0.0) << name;
+        EXPECT_LE(k * approach, tolerance) << name << ": released but overlapping";
+      } else {
+        EXPECT_GE(k * approach, -tolerance) << name << ": bonded but pulling";
+        EXPECT_NEAR(s.chain_wheel_loads[i], k * approach, 1e-9 * s.weight) << name;
+      }
+      if (w.wheel == veh::ChainWheel::ReturnRoller) {
+        // The top run rests on the rollers: in compression, bonded.
+        ++rollers;
+        EXPECT_FALSE(c.chain_wheel_released[i]) << name;
+        EXPECT_GT(s.chain_wheel_loads[i], 0.0) << name;
+      }
+    }
+    EXPECT_EQ(rollers, static_cast<int>(layout.return_rollers.size()));
+    // The bonded model pulls on some of them (the lowest sprocket links): the case is not void.
+    EXPECT_GT(released, 0);
+  }
+}
+
+TEST(ContactStatics, ReleasedSetsMirrorLeftAndRight) {
+  // The vehicle is symmetric about x-z: each side releases the same contacts (the chain wheel
+  // contacts and road wheels are listed in the same sequence per side).
+  const veh::VehicleModel vehicle = trackedVehicles()[1];  // with return rollers
+  const veh::VehicleLayout& layout = vehicle.layout;
+  const veh::ContactStatics c = veh::computeContactStatics(vehicle);
+  const std::size_t contacts = layout.chain_wheel_contacts.size() / 2;
+  ASSERT_EQ(2 * contacts, layout.chain_wheel_contacts.size());
+  for (std::size_t i = 0; i < contacts; ++i) {
+    const veh::ChainWheelContact& left = layout.chain_wheel_contacts[i];
+    const veh::ChainWheelContact& right = layout.chain_wheel_contacts[contacts + i];
+    ASSERT_EQ(left.side, 0);
+    ASSERT_EQ(right.side, 1);
+    ASSERT_EQ(left.wheel, right.wheel) << i;
+    EXPECT_EQ(c.chain_wheel_released[i], c.chain_wheel_released[contacts + i])
+        << vehicle.model.springs[left.spring].name;
+    EXPECT_NEAR(c.summary.chain_wheel_loads[i], c.summary.chain_wheel_loads[contacts + i],
+                1e-6 * c.summary.weight);
+  }
+  for (const veh::ChainWheel wheel :
+       {veh::ChainWheel::Sprocket, veh::ChainWheel::Idler, veh::ChainWheel::ReturnRoller}) {
+    const veh::ChainWheelRelease l =
+        veh::chainWheelRelease(layout, c.chain_wheel_released, 0, wheel);
+    const veh::ChainWheelRelease r =
+        veh::chainWheelRelease(layout, c.chain_wheel_released, 1, wheel);
+    EXPECT_GT(l.contacts, 0) << veh::chainWheelName(wheel);
+    EXPECT_EQ(l.contacts, r.contacts) << veh::chainWheelName(wheel);
+    EXPECT_EQ(l.released, r.released) << veh::chainWheelName(wheel);
+  }
+  const std::size_t wheels = layout.wheels.size() / 2;
+  for (std::size_t i = 0; i < wheels; ++i)
+    EXPECT_EQ(c.wheel_lifted[i], c.wheel_lifted[wheels + i]) << layout.wheels[i].name;
+  int lifted[2] = {0, 0};
+  for (std::size_t i = 0; i < layout.road_inputs.size(); ++i)
+    lifted[layout.road_inputs[i].side] += c.pad_lifted[i] ? 1 : 0;
+  EXPECT_EQ(lifted[0], lifted[1]);
+  EXPECT_THROW(veh::chainWheelRelease(layout, {true}, 0, veh::ChainWheel::Idler),
+               std::invalid_argument);
+}
+
+TEST(ContactStatics, ChainHangsInItsPinsWithEveryChainWheelLetGo) {
+  // A released sprocket, idler or roller contact leaves no mechanism: the chain is a continuous
+  // beam pin to pin, on the road wheels and the ground. Even with the normal of every one of
+  // them released the stiffness matrix stays regular and the ground carries the weight.
+  veh::VehicleModel vehicle = trackedVehicles()[1];
+  for (const veh::ChainWheelContact& w : vehicle.layout.chain_wheel_contacts)
+    vehicle.model.springs[w.spring].stiffness(2) = 0.0;
+  const fem::System system = fem::assemble(vehicle.model);
+  veh::StaticSummary s;
+  ASSERT_NO_THROW(s = veh::computeStaticSummary(vehicle, system));
+  EXPECT_LT(s.balanceError(), 1e-6);
+  for (double load : s.chain_wheel_loads)
+    EXPECT_EQ(load, 0.0);
 }

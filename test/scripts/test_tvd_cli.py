@@ -134,8 +134,9 @@ class TvdCliTest(unittest.TestCase):
         m = scipy.io.loadmat(mat_file)
         self.assertEqual(str(m["variant"][0]), "untracked")
         self.assertEqual(m["load_n"].shape, (14, 1))
-        # Unilateral contacts (the default): nothing pulls, the weight is still carried, and the
-        # contacts in tension in the bonded model are the ones that lift.
+        # Unilateral contacts (the default): nothing pulls, the weight is still carried. The
+        # rearmost wheels pull on the chain in the bonded model, but once the sprocket's lowest
+        # links may leave it (they pull on it too) they stay down.
         u = self.tvd_json("statics", "--vehicle", VEHICLE)
         self.assertEqual(u["contact"], "unilateral")
         pads = np.array([a["load_n"] for a in u["track_assemblies"]])
@@ -148,7 +149,8 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(u["lifted_wheels"], len(lifted))
         self.assertTrue(all(wheels[[w["lifted"] for w in u["road_wheels"]]] == 0.0))
         bonded = [w["name"] for w in d["road_wheels"] if w["load_n"] < 0]
-        self.assertEqual(sorted(lifted), sorted(bonded))
+        self.assertEqual(sorted(bonded), ["road_wheel_left_7", "road_wheel_right_7"])
+        self.assertEqual(lifted, [])
         text = self.tvd("statics", "--vehicle", VEHICLE, "--contact", "bilateral").stdout
         self.assertIn(f"mean maximum pressure: {d['mean_peak_pressure_pa'] / 1e3:.1f} kPa", text)
         self.assertIn(f"Rowland's empirical estimate {rowland / 1e3:.1f} kPa", text)
@@ -159,6 +161,66 @@ class TvdCliTest(unittest.TestCase):
                                 "must end in .csv or .mat")
         self.assert_input_error(["statics", "--vehicle", VEHICLE, "--contact", "sticky"],
                                 "--contact", "sticky")
+
+    def test_statics_chain_wheel_contacts(self):
+        """tvd statics lists the links' contacts with the sprockets, idlers and return rollers:
+        unilateral, none pulls, a released one carries nothing, the rollers carry the top run;
+        the per-side counts agree with the list and mirror; bilateral releases none; un-tracked
+        has none."""
+        kinds = ["sprocket", "idler", "return_roller"]
+        # The bundled vehicle has a free return run; here three rollers per side under it.
+        rollers = self.path("return_rollers.yaml")
+        with open(VEHICLE) as f:
+            text = f.read()
+        old = "x: {value: [], unit: m"
+        self.assertEqual(text.count(old), 1)
+        with open(rollers, "w") as f:
+            f.write(text.replace(old, "x: {value: [-1.17, 0.39, 1.95], unit: m"))
+        u = self.tvd_json("statics", "--vehicle", rollers)
+        contacts = u["chain_wheel_contacts"]
+        self.assertEqual(sorted({c["wheel"] for c in contacts}), sorted(kinds))
+        self.assertEqual(sorted({c["side"] for c in contacts}), ["left", "right"])
+        for c in contacts:
+            self.assertGreaterEqual(c["load_n"], -1e-6 * u["weight_n"], c["name"])
+            if c["released"]:
+                self.assertEqual(c["load_n"], 0.0, c["name"])
+            if c["wheel"] == "return_roller":
+                self.assertFalse(c["released"], c["name"])
+                self.assertGreater(c["load_n"], 0.0, c["name"])
+        by_side = u["released_chain_wheel_contacts_by_side"]
+        for side in ("left", "right"):
+            for kind in kinds:
+                self.assertEqual(by_side[side][kind],
+                                 sum(c["released"] for c in contacts
+                                     if c["side"] == side and c["wheel"] == kind), (side, kind))
+        self.assertEqual(by_side["left"], by_side["right"])
+        self.assertEqual(u["released_chain_wheel_contacts"], sum(c["released"] for c in contacts))
+        pads = np.array([a["load_n"] for a in u["track_assemblies"]])
+        self.assertLess(abs(pads.sum() - u["weight_n"]) / u["weight_n"], 1e-6)
+        text = self.tvd("statics", "--vehicle", rollers).stdout
+        total = {k: sum(c["side"] == "left" and c["wheel"] == k for c in contacts) for k in kinds}
+        self.assertIn("chain wheel contacts released (the link has left the wheel): left "
+                      + ", ".join(f"{k} {by_side['left'][k]} of {total[k]}" for k in kinds), text)
+        # The bundled vehicle: the bonded model pulls on the sprocket's lowest links, which let
+        # go; the same on both sides.
+        p = self.tvd_json("statics", "--vehicle", VEHICLE)
+        self.assertGreater(p["released_chain_wheel_contacts_by_side"]["left"]["sprocket"], 0)
+        self.assertEqual(p["released_chain_wheel_contacts_by_side"]["left"],
+                         p["released_chain_wheel_contacts_by_side"]["right"])
+        b = self.tvd_json("statics", "--vehicle", rollers, "--contact", "bilateral")
+        self.assertEqual(b["released_chain_wheel_contacts"], 0)
+        self.assertFalse(any(c["released"] for c in b["chain_wheel_contacts"]))
+        self.assertEqual([c["name"] for c in b["chain_wheel_contacts"]],
+                         [c["name"] for c in contacts])
+        text = self.tvd("statics", "--vehicle", rollers, "--contact", "bilateral").stdout
+        self.assertIn("chain wheel contacts pulling (would leave the wheel): left sprocket", text)
+        t = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked")
+        self.assertEqual(t["chain_wheel_contacts"], [])
+        self.assertEqual(t["released_chain_wheel_contacts"], 0)
+        self.assertEqual(t["released_chain_wheel_contacts_by_side"]["right"],
+                         {k: 0 for k in kinds})
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
+        self.assertNotIn("chain wheel contacts", text)
 
     def test_node_shapes_recover_the_rigid_hull(self):
         # node_shapes.csv holds every node, slaves included: the crew seat, rigid with the hull,

@@ -46,7 +46,9 @@ enum class ActiveSetUpdate {
 /// Solves the gravity load case of `model` with the listed springs unilateral. Throws InputError
 /// for a spring index out of range, an axis not in 0..2 or a zero sign or normal stiffness,
 /// SolverError when the released springs leave a free motion (the structure would lift off
-/// entirely) or the active set has not settled after `max_iterations` solves.
+/// entirely, or a part would hang on nothing but released springs: a mechanism; the message names
+/// the released springs and the DOFs that move freely) or the active set has not settled after
+/// `max_iterations` solves.
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
                                              int max_iterations = 100,

@@ -17,6 +17,10 @@ struct StaticSummary {
   double hull_roll = 0.0;           ///< rotation about +x [rad] (positive: left side up)
   std::vector<double> wheel_loads;  ///< normal force of each road wheel on the track [N]
                                     ///< (VehicleLayout::wheels order, positive: compression)
+  std::vector<double> chain_wheel_loads;  ///< normal force of each sprocket, idler and roller
+                                          ///< contact [N] (VehicleLayout::chain_wheel_contacts
+                                          ///< order, positive: compression, the link pushing
+                                          ///< the wheel)
   std::vector<double> pad_loads;    ///< vertical ground reaction at each road input [N]
                                     ///< (VehicleLayout::road_inputs order, positive: upwards)
   double ground_reaction = 0.0;     ///< sum of the vertical ground reactions [N]

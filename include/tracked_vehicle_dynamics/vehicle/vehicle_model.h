@@ -80,6 +80,25 @@ struct RoadInput {
   std::size_t spring = 0;  ///< index into Model::springs of its ground spring
 };
 
+/// The chain wheels a link can touch besides the road wheels (tracked only).
+enum class ChainWheel { Sprocket, Idler, ReturnRoller };
+
+/// "sprocket" / "idler" / "return_roller".
+const char* chainWheelName(ChainWheel wheel);
+
+/// A contact of a chain link with the sprocket, the idler or a return roller: a bushing from the
+/// wheel's contact node (n1) to the link's (n2), both at the link's upper (inner) surface, in the
+/// link's frame: x along the chain (travel direction), y lateral, z the loop's inward normal
+/// (ChainPoint), which points from the link towards the wheel's centre. Its normal force
+/// N = k_z z . (u_link - u_wheel) is compressive when positive: the link pushes the wheel along
+/// +z, as a road wheel's patch (identity frame, z up) is pushed by its link.
+struct ChainWheelContact {
+  ChainWheel wheel = ChainWheel::Sprocket;
+  int side = 0;            ///< 0 left, 1 right
+  int roller = 0;          ///< return roller r (0-based, return_rollers.x order); 0 otherwise
+  int assembly = 0;        ///< index into VehicleLayout::assemblies of the link
+  std::size_t spring = 0;  ///< index into Model::springs (its name: "<wheel>_<side>_<k or r>")
+};
 
 /// Masses by part [kg].
 struct MassBreakdown {
@@ -101,6 +120,9 @@ struct VehicleLayout {
   std::vector<RoadInput> road_inputs;  ///< in the order of the model's ground springs
   std::map<std::string, NodeId> named_points;
   std::vector<NodeId> sprockets, idlers, return_rollers;  ///< per side (tracked only)
+  /// Per side (left first): the sprocket's and the idler's contacts in chain order, then one per
+  /// return roller (tracked only; the same sequence on both sides).
+  std::vector<ChainWheelContact> chain_wheel_contacts;
   double idler_x = 0.0;    ///< idler centre x set by the tensioner [m]
   PadSprings pad_springs;  ///< calibrated pad springs
   MassBreakdown mass;
