@@ -159,15 +159,18 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   // Frames and parents: base_link under odom, or under the footprint (itself under odom unless
   // ~publish_odom_tf is false, when nothing on /tf hangs from odom).
   const bool base_published = !footprint_.empty() || publish_odom_tf_;
-  if (base_published)
+  if (base_published) {
     EXPECT_EQ(parents_[base_], footprint_.empty() ? odom_ : footprint_);
-  else
+  } else {
     EXPECT_EQ(parents_.count(base_), 0u) << base_ << " published without odom's transform";
+  }
   const bool footprint_published = !footprint_.empty() && publish_odom_tf_;
-  if (footprint_published)
+  if (footprint_published) {
     EXPECT_EQ(parents_[footprint_], odom_);
-  if (!publish_odom_tf_)
+  }
+  if (!publish_odom_tf_) {
     EXPECT_EQ(from_odom_, 0u) << "a transform from odom with ~publish_odom_tf false";
+  }
   for (const std::string& name : expected_frames) {
     const std::string frame = prefix_ + name;
     ASSERT_TRUE(parents_.count(frame)) << "frame " << frame << " never published";
@@ -189,8 +192,9 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
       EXPECT_EQ(above.translation, relativeToPath(it->second, 0.0).translation);
       EXPECT_NEAR(above.rotation.angularDistance(it->second.rotation), 0.0, 1e-15);
     }
-    if (!footprint_.empty())
+    if (!footprint_.empty()) {
       EXPECT_GT(above_poses_.size(), 100u);
+    }
   }
   for (double offset : path_offsets_)
     EXPECT_LE(offset, 1e-12) << "odom -> footprint must be (s, 0, 0), unrotated";
