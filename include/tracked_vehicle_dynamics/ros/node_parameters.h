@@ -23,9 +23,9 @@ class ParameterError : public std::runtime_error {
 };
 
 /// ~variance/*: the diagonals the node writes into the covariances of odom and imu/<point>. The
-/// values are exact model outputs; 0 leaves a covariance all zeros, which the message definitions
-/// read as "unknown" (robot_localization clamps such a variance to 1e-9): a stack that fuses
-/// them sets what its filter should assume.
+/// values are exact model outputs; 0 leaves a covariance all zeros, which sensor_msgs/Imu defines
+/// as "unknown" and nav_msgs/Odometry not at all (robot_localization clamps such a variance to
+/// 1e-9): a stack that fuses them sets what its filter should assume.
 struct MeasurementVariances {
   double odom_pose = 0.0;                ///< [m^2] and [rad^2], pose diagonal of odom
   double odom_twist = 0.0;               ///< [(m/s)^2] and [(rad/s)^2], twist diagonal of odom
