@@ -680,7 +680,7 @@ class TvdCliTest(unittest.TestCase):
         error = np.abs(h_p - (h_z - arm * h_pitch)).max() / scale
         self.assertLess(error, tolerance, f"{point}, {what}")
         # Not true of any point: the pitch term is 2 % of the response or more (sensor mount,
-        # 0.18 m behind the CoG: 5 %; crew seat: 50 %), and the opposite sign (nose up) is off.
+        # 0.18 m ahead of the CoG: 5 %; crew seat: 50 %), and the opposite sign (nose up) is off.
         self.assertGreater(np.abs(arm * h_pitch).max() / scale, 0.02, f"{point}, {what}")
         self.assertGreater(np.abs(h_p - (h_z + arm * h_pitch)).max() / scale, 0.04,
                            f"{point}, {what}")

@@ -120,8 +120,10 @@ struct VehicleLayout {
   std::vector<RoadInput> road_inputs;  ///< in the order of the model's ground springs
   std::map<std::string, NodeId> named_points;
   std::vector<NodeId> sprockets, idlers, return_rollers;  ///< per side (tracked only)
-  /// Per side (left first): the sprocket's and the idler's contacts in chain order, then one per
-  /// return roller (tracked only; the same sequence on both sides).
+  /// Per side (left first): the sprocket's and the idler's contacts in the chain order of their
+  /// links (k ascending from the rear end of the ground run: on the paper's rear-drive vehicle
+  /// the idler's come first), then one per return roller (tracked only; the same sequence on
+  /// both sides).
   std::vector<ChainWheelContact> chain_wheel_contacts;
   double idler_x = 0.0;    ///< idler centre x set by the tensioner [m]
   PadSprings pad_springs;  ///< calibrated pad springs
