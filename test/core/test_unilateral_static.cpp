@@ -75,14 +75,19 @@ veh::VehicleDescription paperDescription() {
                                      "/config/vehicles/paper_vehicle.yaml");
 }
 
-/// The paper vehicle, tracked, and the same with three return rollers per side under its top
-/// run (it has none: a free return run).
-std::vector<veh::VehicleModel> trackedVehicles() {
+/// The paper vehicle, tracked, with three return rollers per side under its top run (it has
+/// none: a free return run).
+veh::VehicleModel trackedWithReturnRollers() {
   veh::VehicleDescription rollers = paperDescription();
   rollers.return_rollers.x = {-1.17, 0.39, 1.95};  // between the road wheels
   rollers.return_rollers.mass = 80.0;
+  return veh::buildVehicleModel(rollers, veh::Variant::Tracked);
+}
+
+/// The paper vehicle, tracked, as it is and with return rollers.
+std::vector<veh::VehicleModel> trackedVehicles() {
   return {veh::buildVehicleModel(paperDescription(), veh::Variant::Tracked),
-          veh::buildVehicleModel(rollers, veh::Variant::Tracked)};
+          trackedWithReturnRollers()};
 }
 
 /// The centre node of the sprocket, idler or roller a chain wheel contact belongs to.
@@ -211,8 +216,7 @@ TEST(UnilateralStatic, BadSpringsAndATotalLiftOffAreNamed) {
 }
 
 TEST(ContactStatics, TrackedVehicleRestsOnPadsAndWheelsThatPush) {
-  const veh::VehicleDescription d =
-      veh::loadVehicleDescription(std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const veh::VehicleDescription d = paperDescription();
   const veh::VehicleModel vehicle = veh::buildVehicleModel(d, veh::Variant::Tracked);
   const veh::ContactStatics c = veh::computeContactStatics(vehicle);
   const veh::StaticSummary& s = c.summary;
@@ -251,8 +255,7 @@ TEST(ContactStatics, TrackedVehicleRestsOnPadsAndWheelsThatPush) {
 }
 
 TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
-  const veh::VehicleDescription d =
-      veh::loadVehicleDescription(std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const veh::VehicleDescription d = paperDescription();
   const veh::VehicleModel vehicle = veh::buildVehicleModel(d, veh::Variant::Untracked);
   const veh::ContactStatics c = veh::computeContactStatics(vehicle);
   EXPECT_EQ(c.iterations, 1);
@@ -327,7 +330,7 @@ TEST(ContactStatics, LinksPushTheirSprocketsIdlersAndRollersOrLeaveThem) {
 TEST(ContactStatics, ReleasedSetsMirrorLeftAndRight) {
   // The vehicle is symmetric about x-z: each side releases the same contacts (the chain wheel
   // contacts and road wheels are listed in the same sequence per side).
-  const veh::VehicleModel vehicle = trackedVehicles()[1];  // with return rollers
+  const veh::VehicleModel vehicle = trackedWithReturnRollers();
   const veh::VehicleLayout& layout = vehicle.layout;
   const veh::ContactStatics c = veh::computeContactStatics(vehicle);
   const std::size_t contacts = layout.chain_wheel_contacts.size() / 2;
@@ -368,7 +371,7 @@ TEST(ContactStatics, ChainHangsInItsPinsWithEveryChainWheelLetGo) {
   // A released sprocket, idler or roller contact leaves no mechanism: the chain is a continuous
   // beam pin to pin, on the road wheels and the ground. Even with the normal of every one of
   // them released the stiffness matrix stays regular and the ground carries the weight.
-  veh::VehicleModel vehicle = trackedVehicles()[1];
+  veh::VehicleModel vehicle = trackedWithReturnRollers();
   for (const veh::ChainWheelContact& w : vehicle.layout.chain_wheel_contacts)
     vehicle.model.springs[w.spring].stiffness(2) = 0.0;
   const fem::System system = fem::assemble(vehicle.model);
