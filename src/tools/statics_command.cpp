@@ -189,11 +189,15 @@ void run(const StaticsOptions& opt) {
                              : "chain wheel contacts pulling (would leave the wheel):");
     for (int side = 0; side < 2; ++side) {
       std::cout << (side == 0 ? " " : "; ") << sideName(side);
+      const char* separator = " ";
       for (const vehicle::ChainWheel wheel : kChainWheels) {
         const vehicle::ChainWheelRelease r =
             vehicle::chainWheelRelease(built.layout, shown, side, wheel);
-        std::cout << (wheel == vehicle::ChainWheel::Sprocket ? " " : ", ")
-                  << vehicle::chainWheelName(wheel) << " " << r.released << " of " << r.contacts;
+        if (r.contacts == 0)
+          continue;  // no return rollers: not "return_roller 0 of 0"
+        std::cout << separator << vehicle::chainWheelName(wheel) << " " << r.released << " of "
+                  << r.contacts;
+        separator = ", ";
       }
     }
     std::cout << "\n";

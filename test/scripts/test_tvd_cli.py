@@ -205,6 +205,11 @@ class TvdCliTest(unittest.TestCase):
         # go; the same on both sides.
         p = self.tvd_json("statics", "--vehicle", VEHICLE)
         self.assertGreater(p["released_chain_wheel_contacts_by_side"]["left"]["sprocket"], 0)
+        # Without return rollers the text leaves them out rather than print "0 of 0".
+        text = self.tvd("statics", "--vehicle", VEHICLE).stdout
+        self.assertIn("chain wheel contacts released (the link has left the wheel): left "
+                      "sprocket ", text)
+        self.assertNotIn("return_roller", text)
         self.assertEqual(p["released_chain_wheel_contacts_by_side"]["left"],
                          p["released_chain_wheel_contacts_by_side"]["right"])
         b = self.tvd_json("statics", "--vehicle", rollers, "--contact", "bilateral")
