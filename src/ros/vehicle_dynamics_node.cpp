@@ -317,20 +317,21 @@ void VehicleDynamicsNode::setUpFrames() {
     static_broadcaster_->sendTransform(fixed);
   }
   // The hull's transforms first: odom -> base_link, or odom -> footprint -> base_link, less the
-  // one from odom when another source owns it (~publish_odom_tf false).
-  std::vector<std::pair<std::string, std::string>> hull_links;
+  // one from odom when another source owns it (~publish_odom_tf false). publishState() fills
+  // them from hull_links_, in this order.
   const bool footprint = !params_.footprint_frame.empty();
   if (params_.publish_odom_tf)
-    hull_links.emplace_back(params_.odom_frame,
-                            footprint ? params_.footprint_frame : params_.base_frame);
+    hull_links_.push_back(footprint ? HullLink::Path : HullLink::Whole);
   if (footprint)
-    hull_links.emplace_back(params_.footprint_frame, params_.base_frame);
+    hull_links_.push_back(HullLink::AbovePath);
   auto& transforms_ = tf_msg_.transforms;
-  transforms_.resize(hull_links.size() + geometry.wheels.size() + published_points_.size());
+  transforms_.resize(hull_links_.size() + geometry.wheels.size() + published_points_.size());
   std::size_t k = 0;
-  for (const auto& [parent, child] : hull_links) {
-    transforms_[k].header.frame_id = parent;
-    transforms_[k++].child_frame_id = child;
+  for (HullLink link : hull_links_) {
+    transforms_[k].header.frame_id =
+        link == HullLink::AbovePath ? params_.footprint_frame : params_.odom_frame;
+    transforms_[k++].child_frame_id =
+        link == HullLink::Path ? params_.footprint_frame : params_.base_frame;
   }
   for (const auto& wheel : geometry.wheels) {
     transforms_[k].header.frame_id = params_.base_frame;
@@ -714,16 +715,15 @@ void VehicleDynamicsNode::publishState() {
     for (auto& t : transforms)
       t.header.stamp = sample_time_;
     std::size_t k = 0;
-    if (params_.footprint_frame.empty()) {
-      if (params_.publish_odom_tf)
-        toMsg(pose, &transforms[k++].transform);
-    } else {
-      if (params_.publish_odom_tf) {
-        RigidPose path;  // the footprint: (s, 0, 0), unrotated
-        path.translation.x() = v.station();
-        toMsg(path, &transforms[k++].transform);
-      }
-      toMsg(relativeToPath(pose, v.station()), &transforms[k++].transform);
+    for (HullLink link : hull_links_) {
+      RigidPose hull;
+      if (link == HullLink::Whole)
+        hull = pose;
+      else if (link == HullLink::Path)
+        hull.translation.x() = v.station();  // the footprint: (s, 0, 0), unrotated
+      else
+        hull = relativeToPath(pose, v.station());
+      toMsg(hull, &transforms[k++].transform);
     }
     RigidPose relative;
     for (std::size_t i = 0; i < v.geometry().wheels.size(); ++i) {

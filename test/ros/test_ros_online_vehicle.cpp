@@ -3,6 +3,7 @@
 // rejected input, and no allocation per step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -368,6 +369,34 @@ TEST(OnlineVehicle, PointAccelerationIsTheHullsRigidMotionAtThePoint) {
 }
 
 #if defined(__GLIBC__)  // the allocation counter hooks glibc's malloc
+TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
+  // A crew seat that also follows the front wheel by 0.3 of its travel (a seat on a flexible
+  // mount, say): its acceleration is the hull's exact rigid motion plus 0.3 of the wheel's.
+  reduction::ReducedModel model = test::toyModel();
+  const auto& names = model.system.output_names;
+  const auto row = std::find(names.begin(), names.end(), "crew_seat uz") - names.begin();
+  model.system.output(row, 2) = 0.3;  // state 2: the front wheel's vertical displacement
+  OnlineVehicle vehicle(model, test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  EXPECT_FALSE(vehicle.pointIsRigid(0));
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  vehicle.setSpeed(10.0);
+  const Vector3 point = vehicle.geometry().points[0].position;
+  double peak = 0.0, worst = 0.0;
+  for (int k = 0; k < 600; ++k) {
+    vehicle.step();
+    const Vector3 rigid = rigidPointAcceleration(vehicle.geometry().cog, vehicle.hullDisplacement(),
+                                                 vehicle.hullVelocity(),
+                                                 vehicle.hullAcceleration(), point);
+    const Vector3 expected = rigid + Vector3(0.0, 0.0, 0.3 * vehicle.wheels()[0].acceleration);
+    peak = std::max(peak, 0.3 * std::abs(vehicle.wheels()[0].acceleration));
+    worst = std::max(worst, (vehicle.pointAcceleration(0) - expected).norm());
+  }
+  EXPECT_GT(peak, 1.0);  // the elastic part is there
+  EXPECT_LE(worst, 1e-9 * peak);
+}
+
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
                       dynamics::DiscretizationMethod::AugmentedExponential}) {

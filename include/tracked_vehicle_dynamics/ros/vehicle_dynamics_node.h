@@ -169,6 +169,13 @@ class VehicleDynamicsNode {
   std::vector<std::size_t> published_points_;  // indices into geometry().points, on /tf
   std::vector<std::size_t> static_points_;     // rigid with the hull: once on /tf_static
   std::vector<std::size_t> imu_points_;        // ~imu_points, indices into geometry().points
+  /// The hull's transforms at the front of tf_msg_, in order (setUpFrames()).
+  enum class HullLink {
+    Whole,      // odom -> base_link: the pose
+    Path,       // odom -> footprint: (s, 0, 0)
+    AbovePath,  // footprint -> base_link: the pose less (s, 0, 0)
+  };
+  std::vector<HullLink> hull_links_;
 
   ros::Subscriber terrain_sub_, speed_sub_, clock_sub_;
   // /tf is published like tf2_ros::TransformBroadcaster does, from a message kept between
