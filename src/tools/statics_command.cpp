@@ -54,6 +54,10 @@ void run(const StaticsOptions& opt) {
     contact.system = fem::assemble(built.model);
     contact.summary = vehicle::computeStaticSummary(built, contact.system);
     contact.iterations = 1;
+    // Nothing released: one false flag per contact, so both modes report alike.
+    contact.pad_lifted.assign(built.layout.road_inputs.size(), false);
+    contact.wheel_lifted.assign(built.layout.wheels.size(), false);
+    contact.chain_wheel_released.assign(built.layout.chain_wheel_contacts.size(), false);
   }
   const vehicle::VehicleModel& model = contact.vehicle;
   const fem::System& system = contact.system;
@@ -64,15 +68,9 @@ void run(const StaticsOptions& opt) {
   };
   const int pads_lifted = count(contact.pad_lifted);
   const int wheels_lifted = count(contact.wheel_lifted);
-  // Bilateral: nothing released, one false flag per contact, so both modes report alike.
-  if (!unilateral)
-    contact.chain_wheel_released.assign(built.layout.chain_wheel_contacts.size(), false);
   const std::vector<vehicle::ChainWheelContact>& chain_wheels = built.layout.chain_wheel_contacts;
   const vehicle::ChainWheel kChainWheels[] = {
       vehicle::ChainWheel::Sprocket, vehicle::ChainWheel::Idler, vehicle::ChainWheel::ReturnRoller};
-  const auto release = [&](int side, vehicle::ChainWheel wheel) {
-    return vehicle::chainWheelRelease(built.layout, contact.chain_wheel_released, side, wheel);
-  };
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
 
@@ -105,7 +103,10 @@ void run(const StaticsOptions& opt) {
     for (int side = 0; side < 2; ++side) {
       json.key(sideName(side)).beginObject();
       for (const vehicle::ChainWheel wheel : kChainWheels)
-        json.field(vehicle::chainWheelName(wheel), release(side, wheel).released);
+        json.field(vehicle::chainWheelName(wheel),
+                   vehicle::chainWheelRelease(built.layout, contact.chain_wheel_released, side,
+                                              wheel)
+                       .released);
       json.endObject();
     }
     json.endObject()
@@ -133,7 +134,7 @@ void run(const StaticsOptions& opt) {
           .field("name", w.name)
           .field("x_m", g.wheel_x[i])
           .field("load_n", s.wheel_loads[i])
-          .field("lifted", unilateral && contact.wheel_lifted[i])
+          .field("lifted", static_cast<bool>(contact.wheel_lifted[i]))
           .field("peak_pressure_pa", g.wheel_peak_pressure[i])
           .endObject();
     }
