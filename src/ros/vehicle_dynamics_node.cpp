@@ -709,6 +709,8 @@ void VehicleDynamicsNode::publishState() {
   const bool wheels = wheels_pub_.listened();
   const OnlineVehicle& v = *vehicle_;
   const RigidPose pose = v.hullPose();
+  const Vector6 displacement = v.hullDisplacement();  // {u_G; theta}
+  const Vector6 velocity = v.hullVelocity();          // their rates (vibration only)
 
   if (tf) {
     auto& transforms = tf_msg_.transforms;
@@ -744,8 +746,6 @@ void VehicleDynamicsNode::publishState() {
   const bool imu = std::any_of(imu_pubs_.begin(), imu_pubs_.end(),
                                [](const auto& p) { return p->listened(); });
   if (twist || odom || imu) {
-    const Vector6 displacement = v.hullDisplacement();
-    const Vector6 velocity = v.hullVelocity();
     const Vector6 base_twist =
         baseLinkTwist(v.speed(), v.geometry().cog, displacement, velocity);
     const geometry_msgs::Vector3 angular = toMsg(Vector3(base_twist.tail<3>()));
@@ -785,8 +785,8 @@ void VehicleDynamicsNode::publishState() {
     accel_msg_.header.stamp = sample_time_;
     accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
     // The derivative of the body rate on hull/twist.
-    accel_msg_.accel.angular = toMsg(bodyAcceleration(
-        v.hullDisplacement().tail<3>(), v.hullVelocity().tail<3>(), acceleration.tail<3>()));
+    accel_msg_.accel.angular = toMsg(
+        bodyAcceleration(displacement.tail<3>(), velocity.tail<3>(), acceleration.tail<3>()));
     accel_pub_.publisher.publish(accel_msg_);
   }
   if (wheels) {

@@ -187,19 +187,25 @@ NodeRun runNode(const std::string& arguments, int timeout) {
   return run;
 }
 
-// ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.
-TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
+/// Runs the node named `name` on the test's ~vehicle and ~cache_dir with `arguments` (more
+/// private parameters), for at most ~bad_parameter_timeout seconds.
+NodeRun runNamed(const std::string& name, const std::string& arguments) {
   ros::NodeHandle private_nh("~");
   const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
   const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
   const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  return runNode("__name:=" + name + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir + " " +
+                     arguments,
+                 timeout);
+}
+
+// ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.
+TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
   int index = 0;
   for (const std::string value : {"0", "-1", "nan", "inf"}) {
     SCOPED_TRACE("~diagnostic_period " + value);
     const std::string name = "bad_diagnostic_period_" + std::to_string(index++);
-    const NodeRun run = runNode("__name:=" + name + " _vehicle:=" + vehicle +
-                                    " _cache_dir:=" + cache_dir + " _diagnostic_period:=" + value,
-                                timeout);
+    const NodeRun run = runNamed(name, "_diagnostic_period:=" + value);
     EXPECT_EQ(run.exit_status, 1) << run.output;
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("/" + name + "/diagnostic_period: must be"), std::string::npos)
@@ -209,13 +215,7 @@ TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
 
 // An unknown ~comfort_point is that parameter's error (it once read as one of ~vehicle's).
 TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
-  ros::NodeHandle private_nh("~");
-  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
-  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
-  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
-  const NodeRun run = runNode("__name:=bad_comfort_point _vehicle:=" + vehicle + " _cache_dir:=" +
-                                  cache_dir + " _comfort_point:=nowhere",
-                              timeout);
+  const NodeRun run = runNamed("bad_comfort_point", "_comfort_point:=nowhere");
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_NE(run.output.find("/bad_comfort_point/comfort_point: unknown point 'nowhere' (hull, "
                             "crew_seat, sensor_mount in "),
@@ -230,10 +230,6 @@ TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
 
 // ~imu_points: each entry a published point frame, once; every bad entry is named.
 TEST(NodeBadParameters, BadImuPointsAreNamed) {
-  ros::NodeHandle private_nh("~");
-  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
-  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
-  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
   // Lists cannot be given on a node's command line (roscpp reads scalars there): they go on the
   // master under the node's name first.
   struct Case {
@@ -254,16 +250,13 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
     ros::param::set("/" + c.name + "/imu_points", c.imu_points);
     if (!c.points.empty())
       ros::param::set("/" + c.name + "/points", c.points);
-    const NodeRun run = runNode(
-        "__name:=" + c.name + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir, timeout);
+    const NodeRun run = runNamed(c.name, "");
     EXPECT_EQ(run.exit_status, 1) << run.output;
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("/" + c.name + "/" + c.message), std::string::npos) << run.output;
   }
   // Not a list (a scalar on the command line).
-  const NodeRun run = runNode("__name:=imu_scalar _vehicle:=" + vehicle + " _cache_dir:=" +
-                                  cache_dir + " _imu_points:=sensor_mount",
-                              timeout);
+  const NodeRun run = runNamed("imu_scalar", "_imu_points:=sensor_mount");
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_NE(run.output.find("/imu_scalar/imu_points: must be a list of strings"),
             std::string::npos)
@@ -272,19 +265,18 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
 
 // ~footprint_frame must be a frame of its own; ~publish_odom_tf a boolean.
 TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
-  ros::NodeHandle private_nh("~");
-  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
-  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
-  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {"footprint_is_odom _footprint_frame:=odom",
-       "/footprint_is_odom/footprint_frame: must differ from ~odom_frame and ~base_frame"},
-      {"odom_tf_maybe _publish_odom_tf:=maybe", "/odom_tf_maybe/publish_odom_tf: must be a boolean"},
+  struct Case {
+    std::string name, arguments, message;
   };
-  for (const auto& [arguments, message] : cases) {
+  const std::vector<Case> cases = {
+      {"footprint_is_odom", "_footprint_frame:=odom",
+       "/footprint_is_odom/footprint_frame: must differ from ~odom_frame and ~base_frame"},
+      {"odom_tf_maybe", "_publish_odom_tf:=maybe",
+       "/odom_tf_maybe/publish_odom_tf: must be a boolean"},
+  };
+  for (const auto& [name, arguments, message] : cases) {
     SCOPED_TRACE(arguments);
-    const NodeRun run = runNode(
-        "__name:=" + arguments + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir, timeout);
+    const NodeRun run = runNamed(name, arguments);
     EXPECT_EQ(run.exit_status, 1) << run.output;
     EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
   }

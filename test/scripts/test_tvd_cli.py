@@ -51,6 +51,17 @@ class TvdCliTest(unittest.TestCase):
     def path(self, name):
         return os.path.join(self.work, name)
 
+    def vehicle_with(self, name, old, new):
+        """A copy of the bundled vehicle description with its one occurrence of `old` replaced
+        by `new`, written as `name` in the work directory; its path."""
+        with open(VEHICLE) as f:
+            text = f.read()
+        self.assertEqual(text.count(old), 1, old)
+        path = self.path(name)
+        with open(path, "w") as f:
+            f.write(text.replace(old, new))
+        return path
+
     def tvd(self, *args, status=0):
         result = subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240)
         self.assertEqual(result.returncode, status,
@@ -169,13 +180,8 @@ class TvdCliTest(unittest.TestCase):
         has none."""
         kinds = ["sprocket", "idler", "return_roller"]
         # The bundled vehicle has a free return run; here three rollers per side under it.
-        rollers = self.path("return_rollers.yaml")
-        with open(VEHICLE) as f:
-            text = f.read()
-        old = "x: {value: [], unit: m"
-        self.assertEqual(text.count(old), 1)
-        with open(rollers, "w") as f:
-            f.write(text.replace(old, "x: {value: [-1.17, 0.39, 1.95], unit: m"))
+        rollers = self.vehicle_with("return_rollers.yaml", "x: {value: [], unit: m",
+                                    "x: {value: [-1.17, 0.39, 1.95], unit: m")
         u = self.tvd_json("statics", "--vehicle", rollers)
         contacts = u["chain_wheel_contacts"]
         self.assertEqual(sorted({c["wheel"] for c in contacts}), sorted(kinds))
@@ -771,12 +777,7 @@ class TvdCliTest(unittest.TestCase):
             self.assertGreater(share, 0.45, column)
 
     def test_frf_points_bad_names_are_refused(self):
-        renamed = self.path("renamed_seat.yaml")
-        with open(VEHICLE) as f:
-            text = f.read()
-        self.assertEqual(text.count("\n  crew_seat:"), 1)
-        with open(renamed, "w") as f:
-            f.write(text.replace("\n  crew_seat:", "\n  driver_seat:"))
+        renamed = self.vehicle_with("renamed_seat.yaml", "\n  crew_seat:", "\n  driver_seat:")
         cache = self.path("cache_points_refused")
         frf = ["frf", "--variant", "untracked", "--cache-dir", cache]
         cases = [
@@ -881,13 +882,8 @@ class TvdCliTest(unittest.TestCase):
 
     def test_reduced_file_of_another_description_or_damaged_is_refused(self):
         mat, _ = self.band_model()
-        heavier = self.path("heavier_hull.yaml")
-        with open(VEHICLE) as f:
-            text = f.read()
-        old = "mass: {value: 30300, unit: kg"
-        self.assertEqual(text.count(old), 1)
-        with open(heavier, "w") as f:
-            f.write(text.replace(old, "mass: {value: 31300, unit: kg"))
+        heavier = self.vehicle_with("heavier_hull.yaml", "mass: {value: 30300, unit: kg",
+                                    "mass: {value: 31300, unit: kg")
         cut = self.path("band40_cut.mat")
         with open(mat, "rb") as f, open(cut, "wb") as g:
             data = f.read()
