@@ -125,6 +125,7 @@ void registerModesCommand(CLI::App& app);
 void registerMacCommand(CLI::App& app);
 void registerReduceCommand(CLI::App& app);
 void registerSimulateCommand(CLI::App& app);
+void registerRideCommand(CLI::App& app);
 void registerFrfCommand(CLI::App& app);
 void registerTerrainCommand(CLI::App& app);
 void registerStaticsCommand(CLI::App& app);

@@ -32,6 +32,8 @@ class Drive {
   double station(long k) const;
   /// Speed at sample k [m/s].
   double speed(long k) const;
+  /// Whether the speed follows a profile (else it is constant).
+  bool varyingSpeed() const { return profile_.has_value(); }
 
   /// The road inputs of samples first .. first + count - 1, every input at every sample.
   Matrix denseInputs(const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,

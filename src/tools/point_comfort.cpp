@@ -32,7 +32,7 @@ PointComfort::PointComfort(std::string point, DofIndex x_row, DofIndex y_row, Do
       longitudinal_(1.0 / dt, horizontalOptions()),
       lateral_(1.0 / dt, horizontalOptions()) {}
 
-void PointComfort::add(const Eigen::Ref<const Eigen::RowVectorXd>& outputs) {
+void PointComfort::add(const OutputRow& outputs) {
   vertical_.add(outputs(z_row_));
   longitudinal_.add(outputs(x_row_));
   lateral_.add(outputs(y_row_));

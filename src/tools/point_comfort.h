@@ -4,6 +4,7 @@
 #include <ostream>
 #include <string>
 
+#include "output_row.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/types.h"
@@ -21,8 +22,10 @@ class PointComfort {
   PointComfort(std::string point, DofIndex x_row, DofIndex y_row, DofIndex z_row, double dt);
 
   /// One output row of the simulator (all outputs at one sample).
-  void add(const Eigen::Ref<const Eigen::RowVectorXd>& outputs);
+  void add(const OutputRow& outputs);
   double totalValue() const;
+  /// The vertical (Wk, absorbed power) meter.
+  const dynamics::ComfortMeter& vertical() const { return vertical_; }
   void writeJson(io::JsonWriter& json) const;
   void writeText(std::ostream& out) const;
 

@@ -15,23 +15,23 @@
 
 #include "commands.h"
 #include "drive.h"
+#include "drive_over.h"
 #include "output_files.h"
 #include "point_comfort.h"
 #include "reduction_options.h"
 #include "simulation_layout.h"
+#include "terrain_coverage.h"
 #include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
-#include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
-#include "tracked_vehicle_dynamics/terrain/tracks.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 
 namespace tracked_vehicle_dynamics {
@@ -114,20 +114,9 @@ void run(const SimulateOptions& opt) {
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
-  // Contacts beyond the terrain's outermost lines take the edge line's heights (terrain.h): say
-  // so for a terrain file, since a terrain narrower than the vehicle is more often a mistake
-  // than a choice. (The built-in oop_waves, 5 m wide and driven 1 m off centre as in the paper,
-  // leaves the left outer pad row 5.5 cm beyond its edge: README, time domain.)
-  if (!terrain::isBuiltInTrack(opt.track) && track.lateral().size() > 1) {
-    const double y_min = road.inputY().minCoeff(), y_max = road.inputY().maxCoeff();
-    const double t_min = track.lateral()(0), t_max = track.lateral()(track.lateral().size() - 1);
-    if (y_min < t_min - 1e-9 || y_max > t_max + 1e-9) {
-      std::ostringstream w;
-      w << "the contacts span y = " << y_min << " .. " << y_max << " m but the terrain's lines only "
-        << t_min << " .. " << t_max << " m; contacts outside take the edge line's heights";
-      warnings.push_back(w.str());
-      std::cerr << "tvd: warning: " << warnings.back() << "\n";
-    }
+  if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
+    warnings.push_back(*w);
+    std::cerr << "tvd: warning: " << *w << "\n";
   }
   // From the start of the track until the station has covered its length (paper: 30 m), or until
   // the speed profile ends.
@@ -137,9 +126,6 @@ void run(const SimulateOptions& opt) {
   const Drive drive = profile ? Drive(track.startStation(), distance, opt.dt, *profile, opt.speed_profile)
                               : Drive(track.startStation(), distance, opt.dt, opt.speed_kmh / 3.6);
   const long steps = drive.steps();
-  // Start from static equilibrium on the entry of the track, at rest relative to it.
-  const Vector w0 = drive.denseInputs(road, lines, 0, 1).row(0).transpose();
-  sim.reset(dynamics::staticEquilibrium(sys, w0.head(road.inputCount()), gravity), w0);
 
   const std::vector<std::string>& names = sim.outputNames();
   const SimulationLayout layout = simulationLayout(names, sys.output_names);
@@ -163,37 +149,18 @@ void run(const SimulateOptions& opt) {
   const auto first_road = static_cast<Eigen::Index>(kFirstColumn + layout.columns.size());
   Matrix series(steps + 1, first_road + static_cast<Eigen::Index>(roads.size()));
   Vector y0;
-  // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
-  // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
-  // sample of the previous one (the simulator's current input), so it is recorded only once.
-  // At constant speed the reduced model takes the inputs stored by their changes (sampled only
-  // where the terrain under a contact is not flat, shared by contacts on the same profile); the
-  // full model's static residual and a varying speed take every sample.
-  constexpr long kBlock = 16384;
   const auto start = Clock::now();
-  for (long first = 0; first == 0 || first < steps; first += kBlock) {
-    const long count = std::min(first + kBlock, steps) - first + 1;
-    Matrix y;
-    if (full || profile) {
-      const Matrix w = drive.denseInputs(road, lines, first, count);
-      y = sim.simulate(w);
-      // The full model adds its static residual to the displacements (rows 0..n_y-1).
-      if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(sys.outputCount()));
-    } else {
-      y = sim.simulate(drive.heldInputs(road, lines, first, count));
-    }
-    if (first == 0) y0 = y.row(0).transpose();
-    for (long j = first == 0 ? 0 : 1; j < y.rows(); ++j) {
-      const long k = first + j;
-      series(k, 0) = k * opt.dt;
-      series(k, 1) = drive.station(k);
-      for (std::size_t c = 0; c < layout.columns.size(); ++c) {
-        const SimulationColumn& col = layout.columns[c];
-        series(k, kFirstColumn + c) = col.scale * (y(j, col.row) - (col.relative ? y0(col.row) : 0.0));
-      }
-      for (PointComfort& c : comfort) c.add(y.row(j));
-    }
-  }
+  driveOver(sim, sys, gravity, drive, road, lines, full.get(),
+            [&](long k, const OutputRow& y) {
+              if (k == 0) y0 = y.transpose();
+              series(k, 0) = k * opt.dt;
+              series(k, 1) = drive.station(k);
+              for (std::size_t c = 0; c < layout.columns.size(); ++c) {
+                const SimulationColumn& col = layout.columns[c];
+                series(k, kFirstColumn + c) = col.scale * (y(col.row) - (col.relative ? y0(col.row) : 0.0));
+              }
+              for (PointComfort& c : comfort) c.add(y);
+            });
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   for (long k = 0; k <= steps; ++k)
     for (std::size_t r = 0; r < roads.size(); ++r) {

@@ -27,6 +27,15 @@ std::size_t SimulationLayout::column(const std::string& header) const {
   throw std::logic_error("simulate: no column " + header);
 }
 
+std::vector<std::string> namedPoints(const std::vector<std::string>& system_outputs) {
+  std::vector<std::string> points;
+  for (const std::string& n : system_outputs) {
+    const std::string point = n.substr(0, n.rfind(' '));
+    if (endsWith(n, " uz") && point != "hull" && point.rfind("road_wheel", 0) != 0) points.push_back(point);
+  }
+  return points;
+}
+
 SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows,
                                   const std::vector<std::string>& system_outputs) {
   SimulationLayout layout;
@@ -49,12 +58,7 @@ SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows
   for (const std::string& n : system_outputs)
     if (n.rfind("road_wheel", 0) == 0) add(n.substr(0, n.find(' ')) + "_m", n + "/disp");
   layout.wheel_count = layout.columns.size() - layout.first_wheel;
-  // Every output "<point> uz" that is neither the hull's CoG nor a wheel centre.
-  for (const std::string& n : system_outputs) {
-    const std::string point = n.substr(0, n.rfind(' '));
-    if (endsWith(n, " uz") && point != "hull" && point.rfind("road_wheel", 0) != 0)
-      layout.points.push_back(point);
-  }
+  layout.points = namedPoints(system_outputs);
   for (const std::string& point : layout.points) {
     add(point + "_vertical_m", point + " uz/disp");
     add(point + "_accel_x_m_s2", point + " ux/acc");

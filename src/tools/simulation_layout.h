@@ -35,6 +35,10 @@ struct SimulationLayout {
 /// accelerations in x, y, z. `simulator_rows`: Simulator::outputNames() ("hull uz/disp", ...);
 /// `system_outputs`: the system's output names ("hull uz", "road_wheel_left_1 uz",
 /// "crew_seat ux", ...). Throws InputError naming an output the model lacks.
+/// The named points of the hull among a model's outputs: every "<point> uz" that is neither the
+/// hull's CoG nor a road-wheel centre, in output order.
+std::vector<std::string> namedPoints(const std::vector<std::string>& system_outputs);
+
 SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows,
                                   const std::vector<std::string>& system_outputs);
 

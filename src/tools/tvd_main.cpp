@@ -1,4 +1,4 @@
-// tvd: the offline command-line tool (modes, statics, MAC, reduction, FRF, simulation, terrain).
+// tvd: the offline command-line tool (modes, statics, MAC, reduction, FRF, simulation, ride limits, terrain).
 #include <CLI/CLI.hpp>
 
 #include <iostream>
@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   tvd::tools::registerReduceCommand(app);
   tvd::tools::registerFrfCommand(app);
   tvd::tools::registerSimulateCommand(app);
+  tvd::tools::registerRideCommand(app);
   tvd::tools::registerTerrainCommand(app);
   try {
     app.parse(argc, argv);

@@ -564,6 +564,124 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(a[key], b[key], places=9, msg=key)
         self.assertEqual(a["warnings"], [])
 
+    def ride_road(self):
+        """An 80 m class-C road (seed 7, no taper) shared by the ride tests; its path."""
+        road = self.path("ride_road_C.csv")
+        if not os.path.exists(road):
+            self.tvd("terrain", "--iso8608", "C", "--length", "80", "--taper", "0", "--seed", "7",
+                     "--out", road)
+        return road
+
+    def test_ride_sweep_is_simulate_and_finds_each_limit(self):
+        """tvd ride: every run's metrics are those tvd simulate reports at that speed (the peak
+        independently, as SciPy's 4th-order Butterworth at 30 Hz of simulate's acceleration);
+        each limit is bracketed within the tolerance by runs on either side of it, and at the
+        interpolated speed simulate absorbs the limit; the three outcomes (reached, already at
+        the lowest speed, not reached) are told apart; CSV rows = JSON runs."""
+        from scipy.signal import butter, sosfilt
+        road, out = self.ride_road(), self.path("ride.csv")
+        power_limit, peak_limit, tolerance = 2.0, 0.5, 0.1
+        d = self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", road,
+                          "--speeds", "10:40:10", "--power-limit-w", str(power_limit),
+                          "--peak-limit-g", str(peak_limit), "--cache-dir", self.cache,
+                          "--out", out)
+        self.assertEqual(d["points"], ["hull", "crew_seat", "sensor_mount"])
+        self.assertEqual(d["speeds_kmh"], [10, 20, 30, 40])
+        speeds = [r["speed_kmh"] for r in d["runs"]]
+        self.assertEqual(speeds, sorted(speeds))
+        self.assertEqual([v for v, r in zip(speeds, d["runs"]) if r["in_sweep"]], [10, 20, 30, 40])
+        self.assertEqual(d["simulations"], len(d["runs"]))
+        header, rows = read_csv(out)
+        self.assertEqual(rows.shape[0], len(d["runs"]))
+        np.testing.assert_allclose(rows[:, 0], speeds, rtol=1e-9)
+        for i, point in enumerate(d["points"]):
+            for key in ("absorbed_power_w", "peak_up_g", "vdv_z_m_s1_75"):
+                column = rows[:, header.index(f"{point}_{key}")]
+                np.testing.assert_allclose(column, [r["points"][i][key] for r in d["runs"]],
+                                           rtol=1e-8, err_msg=f"{point} {key}")
+
+        # One sweep speed against tvd simulate.
+        by_speed = {r["speed_kmh"]: {p["point"]: p for p in r["points"]} for r in d["runs"]}
+        series = self.path("ride_20.csv")
+        s = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          road, "--speed-kmh", "20", "--cache-dir", self.cache, "--out", series)
+        comfort = {c["point"]: c for c in [s["comfort"]] + s["comfort_at_points"]}
+        sim_header, sim_rows = read_csv(series)
+        sos = butter(4, 30.0, fs=1.0 / s["time_step_s"], output="sos")
+        for point, column in (("hull", "hull_vertical_accel_m_s2"),
+                              ("crew_seat", "crew_seat_accel_z_m_s2"),
+                              ("sensor_mount", "sensor_mount_accel_z_m_s2")):
+            r = by_speed[20][point]
+            for ride_key, sim_key in (("absorbed_power_w", "absorbed_power_w"),
+                                      ("weighted_rms_z_m_s2", "weighted_rms_m_s2"),
+                                      ("vdv_z_m_s1_75", "vdv_m_s1_75"),
+                                      ("vibration_total_value_m_s2", "vibration_total_value_m_s2")):
+                self.assertAlmostEqual(r[ride_key] / comfort[point][sim_key], 1.0, places=9,
+                                       msg=f"{point} {ride_key}")
+            filtered = sosfilt(sos, sim_rows[:, sim_header.index(column)]) / GRAVITY
+            self.assertAlmostEqual(r["peak_up_g"] / filtered.max(), 1.0, places=6, msg=point)
+            self.assertAlmostEqual(r["peak_abs_g"] / np.abs(filtered).max(), 1.0, places=6,
+                                   msg=point)
+
+        outcomes = set()
+        limits = {l["point"]: l for l in d["limits"]}
+        for point in d["points"]:
+            for name, key, limit in (("absorbed_power", "absorbed_power_w", power_limit),
+                                     ("peak_acceleration", "peak_up_g", peak_limit)):
+                l = limits[point][name]
+                outcomes.add(l["status"])
+                sweep_values = [by_speed[v][point][key] for v in d["speeds_kmh"]]
+                if l["status"] == "at_lowest_speed":
+                    self.assertGreaterEqual(sweep_values[0], limit)
+                    self.assertEqual(l["speed_kmh"], 10)
+                    continue
+                if l["status"] == "not_reached":
+                    self.assertLess(max(sweep_values), limit)
+                    self.assertEqual(l["speed_kmh"], 40)
+                    continue
+                self.assertEqual(l["status"], "reached")
+                lo, hi = l["bracket_kmh"]
+                self.assertLessEqual(hi - lo, tolerance + 1e-12)
+                self.assertTrue(lo <= l["speed_kmh"] <= hi)
+                self.assertLess(by_speed[lo][point][key], limit)
+                self.assertGreaterEqual(by_speed[hi][point][key], limit)
+                # The lowest crossing: every sweep speed below the bracket is under the limit.
+                self.assertTrue(all(by_speed[v][point][key] < limit
+                                    for v in d["speeds_kmh"] if v <= lo))
+                if name == "absorbed_power":
+                    at = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                                       "--track", road, "--speed-kmh", repr(l["speed_kmh"]),
+                                       "--cache-dir", self.cache)
+                    got = {c["point"]: c for c in [at["comfort"]] + at["comfort_at_points"]}
+                    self.assertAlmostEqual(got[point]["absorbed_power_w"] / limit, 1.0, delta=0.01,
+                                           msg=point)
+        self.assertEqual(outcomes, {"reached", "at_lowest_speed", "not_reached"})
+
+    def test_ride_bad_options_are_named_before_any_work(self):
+        ride = ["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", self.ride_road(),
+                "--cache-dir", self.cache]
+        for speeds, words in (("40:10:10", ["LAST must not be below FIRST"]),
+                              ("10,x", ["'x' is not a number"]),
+                              ("0,10", ["speed 0 km/h is outside (0, 200]"]),
+                              ("10,10", ["strictly increasing"]),
+                              ("10:20", ["three fields"]),
+                              ("1:200:0.5", ["more than 200 speeds"]),
+                              ("", ["no speeds"])):
+            self.assert_input_error(ride + ["--speeds", speeds], "--speeds", *words)
+        self.assert_input_error(ride + ["--points", "moon"], "--points", "no point 'moon'",
+                                "(it has hull, crew_seat, sensor_mount)")
+        self.assert_input_error(ride + ["--points", "hull,hull"], "'hull' is listed twice")
+        self.assert_input_error(ride + ["--points", "hull,"], "an empty name")
+        self.assert_input_error(ride + ["--dt", "0.005"], "--dt", "[0.0001, 0.002] s")
+        self.assert_input_error(ride + ["--dt", "0.002", "--lowpass-hz", "300"], "--lowpass-hz 300",
+                                "Nyquist frequency 1/(2 dt) = 250 Hz")
+        self.assert_input_error(ride + ["--tolerance-kmh", "0"], "--tolerance-kmh")
+        self.assert_input_error(ride + ["--power-limit-w", "-1"], "--power-limit-w", "positive")
+        self.assert_input_error(ride + ["--peak-limit-g", "nan"], "--peak-limit-g", "positive")
+        self.assert_input_error(ride + ["--out", self.path("r.json")], "must end in .csv or .mat")
+        self.assert_input_error(["ride", "--vehicle", VEHICLE], "--track is required")
+        self.assert_input_error(ride + ["--model", "full"], "--model")
+
     def test_mat_outputs_hold_the_csv_columns(self):
         """--out FILE.mat (simulate, frf): one n x 1 variable per CSV column, the same values
         (to the CSV's digits), and the run's vehicle/variant/model as strings."""

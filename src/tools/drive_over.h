@@ -1,0 +1,31 @@
+// Runs a simulator over a whole Drive (drive.h), from static equilibrium at the track's entry,
+// handing every output sample to the caller: the loop `tvd simulate` and `tvd ride` share.
+#pragma once
+
+#include <functional>
+
+#include "drive.h"
+#include "output_row.h"
+#include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
+#include "tracked_vehicle_dynamics/types.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+/// Called once per sample k = 0 .. drive.steps() with the outputs at that sample.
+using SampleSink = std::function<void(long k, const OutputRow& outputs)>;
+
+/// Resets `sim` (built from `system`) to static equilibrium under `gravity` on the road inputs of
+/// sample 0, at rest relative to the track, then steps it through every sample of `drive`.
+/// `full`, when given, is the full model whose static residual is added to the displacements
+/// (system = full->modal). At constant speed without `full` the inputs are sampled by their
+/// changes (sampleHeldSeries), otherwise every input at every sample.
+void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& system, const Vector& gravity,
+               const Drive& drive, const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
+               const reduction::FullModelReference* full, const SampleSink& sink);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

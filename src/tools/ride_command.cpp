@@ -1,0 +1,368 @@
+// `tvd ride`: ride-limiting speeds. The reduced vehicle drives a track at each speed of a sweep;
+// at each chosen point of the hull the run gives the vertical absorbed power (comfort.h) and the
+// peak low-passed vertical acceleration (shock_meter.h), with the ISO 2631-1 values beside them.
+// The lowest speed at which each reaches its limit, 6 W and 2.5 g by default (the mobility
+// models' "6 W speed" on a rough course and "2.5 g speed" over an obstacle), is bracketed by the
+// sweep and narrowed by bisection (limit_crossing.h).
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "commands.h"
+#include "drive.h"
+#include "drive_over.h"
+#include "output_files.h"
+#include "point_comfort.h"
+#include "reduction_options.h"
+#include "simulation_layout.h"
+#include "speed_sweep.h"
+#include "terrain_coverage.h"
+#include "vehicle_analysis.h"
+#include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
+#include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
+#include "tracked_vehicle_dynamics/dynamics/shock_meter.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_io.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct RideOptions {
+  std::string vehicle_file;
+  std::string variant = "tracked";
+  bool variant_given = false;
+  std::string track;
+  std::string speeds = "5:70:5";
+  std::string points;  // empty: the hull's CoG and every named point
+  double power_limit_w = 6.0;
+  double peak_limit_g = 2.5;
+  double lowpass_hz = 30.0;
+  double tolerance_kmh = 0.1;
+  double dt = 1e-3;
+  double lateral_offset = 0.0;
+  ReducedModelFlags reduced;
+  std::string out_file;
+  bool json = false;
+};
+
+/// What one run gives at one point.
+struct PointRide {
+  double absorbed_power = 0.0;  ///< [W]
+  double weighted_rms_z = 0.0;  ///< a_wz [m/s^2]
+  double vdv_z = 0.0;           ///< [m/s^1.75]
+  double total_value = 0.0;     ///< a_v [m/s^2]
+  double peak_up_g = 0.0;       ///< low-passed [g]
+  double peak_abs_g = 0.0;      ///< low-passed [g]
+};
+
+struct Run {
+  bool in_sweep = false;
+  std::vector<PointRide> points;  // as RideSetup::points
+};
+
+/// The points the user asked for (in the simulator's rows), or the hull and every named point.
+std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named) {
+  std::vector<std::string> known = {"hull"};
+  known.insert(known.end(), named.begin(), named.end());
+  if (spec.empty()) return known;
+  std::vector<std::string> chosen;
+  std::istringstream in(spec);
+  std::string name;
+  while (std::getline(in, name, ',')) {
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError("ride: --points: the model has no point '" + name + "' (it has " + list + ")");
+    }
+    if (std::find(chosen.begin(), chosen.end(), name) != chosen.end())
+      throw InputError("ride: --points: '" + name + "' is listed twice");
+    chosen.push_back(name);
+  }
+  if (chosen.empty() || spec.back() == ',') throw InputError("ride: --points: an empty name in '" + spec + "'");
+  return chosen;
+}
+
+void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit, const char* unit) {
+  json.beginObject()
+      .field("limit", limit)
+      .field("unit", std::string(unit))
+      .field("status", std::string(dynamics::limitStatusName(c.status)))
+      .field("speed_kmh", c.speed)
+      .field("bracket_kmh", std::vector<double>{c.lower, c.upper})
+      .field("refinements", static_cast<long long>(c.refinements))
+      .endObject();
+}
+
+std::string describeLimit(const dynamics::LimitCrossing& c, const std::string& what) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2);
+  switch (c.status) {
+    case dynamics::LimitCrossing::Status::Reached:
+      out << what << " at " << c.speed << " km/h (between " << c.lower << " and " << c.upper << ")";
+      break;
+    case dynamics::LimitCrossing::Status::AtLowest:
+      out << what << " already at the lowest speed, " << c.speed << " km/h";
+      break;
+    case dynamics::LimitCrossing::Status::NotReached:
+      out << what << " not reached up to " << c.speed << " km/h";
+      break;
+  }
+  return out.str();
+}
+
+void run(const RideOptions& opt) {
+  const std::vector<double> sweep = parseSpeedSweep(opt.speeds);
+  vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  const terrain::Terrain track = terrain::loadTrack(opt.track);
+  const double distance = track.endStation() - track.startStation();
+  if (!(distance > 0))
+    throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
+
+  if (opt.lowpass_hz >= 0.5 / opt.dt) {
+    std::ostringstream m;
+    m << "ride: --lowpass-hz " << opt.lowpass_hz << " must be below the Nyquist frequency 1/(2 dt) = "
+      << 0.5 / opt.dt << " Hz";
+    throw InputError(m.str());
+  }
+  std::vector<std::string> warnings;
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
+  std::vector<std::string> named;
+  for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
+  const std::vector<std::string> points = choosePoints(opt.points, named);  // before any work
+  const ReducedModelSource reduced = obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced);
+  variant = reduced.variant;
+  const dynamics::SecondOrderSystem& sys = reduced.model.system;
+
+  dynamics::SimulatorOptions sim_options;
+  sim_options.time_step = opt.dt;
+  sim_options.hold = dynamics::InputHold::FirstOrder;
+  sim_options.method = dynamics::DiscretizationMethod::ModalDecoupled;
+  sim_options.max_mode_frequency_hz = 0.5 / opt.dt;  // as tvd simulate: modes above Nyquist quasi-static
+  sim_options.quantities = {dynamics::OutputQuantity::Acceleration};
+  sim_options.generalized_force = reduced.model.gravity_load;
+  dynamics::Simulator sim(sys, sim_options);
+
+  const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
+  const terrain::TerrainLines lines(track, road.inputY());
+  if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
+    warnings.push_back(*w);
+    std::cerr << "tvd: warning: " << *w << "\n";
+  }
+  const std::vector<std::string>& names = sim.outputNames();
+  dynamics::ShockOptions shock;
+  shock.lowpass_corner_hz = opt.lowpass_hz;
+
+  // One run per speed, kept by speed: the sweep's, then those the bisections ask for (a speed
+  // both limits of several points want is simulated once).
+  std::map<double, Run> runs;
+  double simulated = 0.0;
+  const auto start = Clock::now();
+  auto ride = [&](double speed_kmh) -> const Run& {
+    auto found = runs.find(speed_kmh);
+    if (found != runs.end()) return found->second;
+    const Drive drive(track.startStation(), distance, opt.dt, speed_kmh / 3.6);
+    std::vector<PointComfort> comfort;
+    std::vector<dynamics::ShockMeter> peaks;
+    std::vector<DofIndex> z_rows;
+    for (const std::string& p : points) {
+      comfort.emplace_back(p, outputRow(names, p + " ux/acc"), outputRow(names, p + " uy/acc"),
+                           outputRow(names, p + " uz/acc"), opt.dt);
+      peaks.emplace_back(1.0 / opt.dt, shock);
+      z_rows.push_back(outputRow(names, p + " uz/acc"));
+    }
+    driveOver(sim, sys, reduced.model.gravity_load, drive, road, lines, nullptr,
+              [&](long, const OutputRow& y) {
+                for (std::size_t i = 0; i < points.size(); ++i) {
+                  comfort[i].add(y);
+                  peaks[i].add(y(z_rows[i]));
+                }
+              });
+    simulated += drive.steps() * opt.dt;
+    Run r;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const dynamics::ComfortMeter& z = comfort[i].vertical();
+      r.points.push_back({z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
+                          comfort[i].totalValue(), peaks[i].peakUp() / dynamics::kStandardGravity,
+                          peaks[i].peakAbsolute() / dynamics::kStandardGravity});
+    }
+    return runs.emplace(speed_kmh, std::move(r)).first->second;
+  };
+  for (double v : sweep) ride(v);
+  for (double v : sweep) runs.at(v).in_sweep = true;
+
+  struct Limits {
+    dynamics::LimitCrossing power, peak;
+  };
+  std::vector<Limits> limits;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    std::vector<double> power, peak;
+    for (double v : sweep) {
+      power.push_back(runs.at(v).points[i].absorbed_power);
+      peak.push_back(runs.at(v).points[i].peak_up_g);
+    }
+    Limits l;
+    l.power = dynamics::findLimitCrossing(sweep, power, opt.power_limit_w, opt.tolerance_kmh,
+                                          [&](double v) { return ride(v).points[i].absorbed_power; });
+    l.peak = dynamics::findLimitCrossing(sweep, peak, opt.peak_limit_g, opt.tolerance_kmh,
+                                         [&](double v) { return ride(v).points[i].peak_up_g; });
+    limits.push_back(l);
+  }
+  const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+
+  // Every run, by speed: the table's rows.
+  std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
+  for (const std::string& p : points)
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
+                          "_vibration_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
+      headers.push_back(p + q);
+  Matrix table(static_cast<Eigen::Index>(runs.size()), static_cast<Eigen::Index>(headers.size()));
+  Eigen::Index row = 0;
+  for (const auto& [speed, r] : runs) {
+    table(row, 0) = speed;
+    table(row, 1) = r.in_sweep ? 1.0 : 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const PointRide& m = r.points[i];
+      const auto c = static_cast<Eigen::Index>(2 + 6 * i);
+      table.block(row, c, 1, 6) << m.absorbed_power, m.weighted_rms_z, m.vdv_z, m.total_value, m.peak_up_g,
+          m.peak_abs_g;
+    }
+    ++row;
+  }
+  if (!opt.out_file.empty())
+    writeTable(opt.out_file, headers, table, 9,
+               {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"track", track.name()}});
+
+  if (opt.json) {
+    io::JsonWriter json(std::cout);
+    json.beginObject()
+        .field("vehicle", opt.vehicle_file)
+        .field("variant", vehicle::variantName(variant))
+        .field("track", track.name())
+        .field("travelled_m", distance)
+        .field("warnings", warnings)
+        .field("time_step_s", opt.dt)
+        .field("power_limit_w", opt.power_limit_w)
+        .field("peak_limit_g", opt.peak_limit_g)
+        .field("peak_lowpass_hz", opt.lowpass_hz)
+        .field("peak_lowpass_order", static_cast<long long>(shock.lowpass_order))
+        .field("tolerance_kmh", opt.tolerance_kmh)
+        .field("reduced_dofs", static_cast<long long>(sys.size()));
+    writeReductionJson(json.key("reduction"), reduced);
+    json.field("points", points).field("speeds_kmh", sweep);
+    json.key("runs").beginArray();
+    for (const auto& [speed, r] : runs) {
+      json.beginObject().field("speed_kmh", speed).field("in_sweep", r.in_sweep).key("points").beginArray();
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const PointRide& m = r.points[i];
+        json.beginObject()
+            .field("point", points[i])
+            .field("absorbed_power_w", m.absorbed_power)
+            .field("weighted_rms_z_m_s2", m.weighted_rms_z)
+            .field("vdv_z_m_s1_75", m.vdv_z)
+            .field("vibration_total_value_m_s2", m.total_value)
+            .field("peak_up_g", m.peak_up_g)
+            .field("peak_abs_g", m.peak_abs_g)
+            .endObject();
+      }
+      json.endArray().endObject();
+    }
+    json.endArray().key("limits").beginArray();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      json.beginObject().field("point", points[i]).key("absorbed_power");
+      writeLimitJson(json, limits[i].power, opt.power_limit_w, "W");
+      json.key("peak_acceleration");
+      writeLimitJson(json, limits[i].peak, opt.peak_limit_g, "g");
+      json.endObject();
+    }
+    json.endArray()
+        .field("simulations", static_cast<long long>(runs.size()))
+        .field("simulated_seconds", simulated)
+        .field("wall_seconds", wall);
+    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    json.endObject();
+    return;
+  }
+
+  std::cout << std::fixed << std::setprecision(3) << "ride limits on " << track.name() << " (" << distance
+            << " m), " << vehicle::variantName(variant) << " reduced model (" << sys.size() << " DOFs), dt "
+            << opt.dt * 1e3 << " ms\n  reduction: " << describeReduction(reduced) << "\n"
+            << "  absorbed power P [W] (vertical) and peak upward acceleration a [g] (";
+  if (opt.lowpass_hz > 0)
+    std::cout << std::defaultfloat << opt.lowpass_hz << " Hz low-pass" << std::fixed;
+  else
+    std::cout << "unfiltered";
+  std::cout << ") per speed:\n  speed km/h";
+  for (const std::string& p : points) std::cout << std::setw(22) << p + " P" << std::setw(12) << "a";
+  std::cout << "\n";
+  for (const auto& [speed, r] : runs) {
+    std::cout << "  " << std::setw(9) << std::setprecision(2) << speed << (r.in_sweep ? " " : "*");
+    for (const PointRide& m : r.points)
+      std::cout << std::setw(22) << std::setprecision(3) << m.absorbed_power << std::setw(12) << m.peak_up_g;
+    std::cout << "\n";
+  }
+  std::cout << "  (* speeds the bisection added)\n";
+  std::ostringstream power_limit, peak_limit;
+  power_limit << std::defaultfloat << opt.power_limit_w << " W";
+  peak_limit << std::defaultfloat << opt.peak_limit_g << " g";
+  for (std::size_t i = 0; i < points.size(); ++i)
+    std::cout << "  " << points[i] << ": " << describeLimit(limits[i].power, power_limit.str()) << "; "
+              << describeLimit(limits[i].peak, peak_limit.str()) << "\n";
+  std::cout << std::setprecision(3) << "  " << runs.size() << " runs, " << simulated << " s simulated in "
+            << wall << " s\n";
+}
+
+}  // namespace
+
+void registerRideCommand(CLI::App& app) {
+  auto opt = std::make_shared<RideOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "ride", "Ride-limiting speeds: absorbed power and peak acceleration over a speed sweep (6 W / 2.5 g)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  CLI::Option* variant = cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
+                             ->check(CLI::IsMember({"untracked", "tracked"}));
+  cmd->add_option("--track", opt->track,
+                  "built-in track or terrain file (CSV/YAML), e.g. an ISO 8608 road from tvd terrain")
+      ->required();
+  cmd->add_option("--speeds", opt->speeds, "speeds [km/h]: FIRST:LAST:STEP or a list 5,10,20");
+  cmd->add_option("--points", opt->points,
+                  "points of the hull, comma-separated: hull (the CoG) and the description's named "
+                  "points (default: all)");
+  cmd->add_option("--power-limit-w", opt->power_limit_w, "absorbed-power limit [W]")->check(positiveNumber());
+  cmd->add_option("--peak-limit-g", opt->peak_limit_g, "peak upward acceleration limit [g]")->check(positiveNumber());
+  cmd->add_option("--lowpass-hz", opt->lowpass_hz,
+                  "Butterworth (4th order) low-pass before the peak is read [Hz]; 0: unfiltered")
+      ->check(nonNegativeNumber());
+  cmd->add_option("--tolerance-kmh", opt->tolerance_kmh, "bisection stops at this bracket width [km/h]")
+      ->check(numberIn(1e-3, 10.0, "km/h"));
+  // At most 2 ms: the 30 Hz low-pass and the absorbed-power filter (peaking at 4.5 Hz, K up to
+  // 80 Hz) need fs well above 60 Hz.
+  cmd->add_option("--dt", opt->dt, "time step [s] (1e-4 .. 0.002)")->check(numberIn(1e-4, 0.002, "s"));
+  cmd->add_option("--lateral-offset", opt->lateral_offset, "lateral offset of the path [m] (y left)")
+      ->check(finiteNumber());
+  opt->reduced.addTo(cmd);
+  cmd->add_option("--out", opt->out_file, "every run, by speed: CSV, or .mat (one variable per column)")
+      ->check(outputFile({".csv", ".mat"}));
+  cmd->add_flag("--json", opt->json, "print a JSON summary");
+  cmd->callback([opt, variant]() {
+    opt->reduced.check("ride", "reduced");
+    opt->variant_given = variant->count() > 0;
+    run(*opt);
+  });
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
