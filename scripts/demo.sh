@@ -38,7 +38,21 @@ tvd frf --vehicle "$VEHICLE" --variant tracked --model full --out "$OUT/frf_trac
 tvd frf --vehicle "$VEHICLE" --variant tracked --cache-dir "$OUT/cache" --out "$OUT/frf_tracked_reduced.csv"
 tvd frf --vehicle "$VEHICLE" --variant tracked --cache-dir "$OUT/cache" --speed-kmh 30 \
   --out "$OUT/frf_tracked_reduced_30kmh.csv" | tail -1
-echo; echo "== 8. Figures (PNG) =="
+echo; echo "== 8. Ride-limiting speeds at the crew seat on 300 m of an ISO 8608 class-D road (6 W, 2.5 g) =="
+tvd terrain --iso8608 D --length 300 --independent-sides --out "$OUT/road_D.csv" > /dev/null
+tvd ride --vehicle "$VEHICLE" --variant tracked --track "$OUT/road_D.csv" --points crew_seat \
+  --cache-dir "$OUT/cache" --json > "$OUT/ride_D.json"
+/usr/bin/python3 - "$OUT/ride_D.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+for l in d["limits"]:
+    for kind in ("absorbed_power", "peak_acceleration"):
+        x = l[kind]
+        print(f"  {l['point']}: {x['limit']:g} {x['unit']} {x['status'].replace('_', ' ')} "
+              f"at {x['speed_kmh']:.1f} km/h")
+print(f"  {d['simulations']} runs, {d['simulated_seconds']:.0f} s simulated in {d['wall_seconds']:.1f} s")
+PY
+echo; echo "== 9. Figures (PNG) =="
 /usr/bin/python3 scripts/plot_mac.py --mac-dir "$OUT/mac" --out "$OUT/mac.png" \
   --freq-out "$OUT/mac_frequencies.png"
 /usr/bin/python3 scripts/plot_frf.py --out "$OUT/frf_tracked.png" --title "tracked vehicle" \
@@ -49,17 +63,18 @@ echo; echo "== 8. Figures (PNG) =="
 /usr/bin/python3 scripts/plot_masters.py --out "$OUT/masters.png" tracked="$OUT/tracked_reduced.mat"
 /usr/bin/python3 scripts/plot_ground_pressure.py --out "$OUT/ground_pressure.png" \
   unilateral="$OUT/statics_unilateral.json" bilateral="$OUT/statics_bilateral.json"
+/usr/bin/python3 scripts/plot_ride.py --out "$OUT/ride_D.png" "class D=$OUT/ride_D.json"
 /usr/bin/python3 scripts/plot_modes.py --out "$OUT/mode_pair.png" \
   "un-tracked=$OUT/modes_untracked:5" "tracked=$OUT/modes_tracked:15"
 tvd terrain --track oop_waves --out "$OUT/oop_waves.csv" > /dev/null
 /usr/bin/python3 scripts/plot_terrain.py --vehicle "$VEHICLE" --out "$OUT/oop_waves_profiles.png" \
   --title "out-of-phase waves under the pad rows (Fig. 17c)" "$OUT/oop_waves.csv"
-echo; echo "== 9. Paper vs ours: every table and Figs. 9-24 (scripts/paper_report.py) =="
+echo; echo "== 10. Paper vs ours: every table and Figs. 9-24 (scripts/paper_report.py) =="
 /usr/bin/python3 scripts/paper_report.py --vehicle "$VEHICLE" --out "$OUT/paper_report" \
   > "$OUT/paper_report.log"
 sed -n '/^## Summary/,/^## Table 4/p' "$OUT/paper_report/report.md" | grep '^\*'
 echo "  full tables: $OUT/paper_report/report.md; figures: $OUT/paper_report/figures/"
-echo; echo "== 10. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
+echo; echo "== 11. The ROS node: long-hill bag replayed at 30 km/h with --clock (scripts/ros_demo.sh) =="
 SKIP_BUILD=1 OUT="$OUT/ros" scripts/ros_demo.sh
 echo
 echo "Results in $OUT/. Next: source build/devel/setup.bash; rosrun tracked_vehicle_dynamics tvd --help"

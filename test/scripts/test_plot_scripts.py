@@ -176,7 +176,8 @@ class PlotScriptsTest(unittest.TestCase):
 
     def test_help(self):
         for script in ("plot_mac.py", "plot_frf.py", "plot_simulation.py", "plot_terrain.py",
-                       "plot_masters.py", "plot_modes.py", "plot_ground_pressure.py"):
+                       "plot_masters.py", "plot_modes.py", "plot_ground_pressure.py",
+                       "plot_ride.py"):
             result = self.run_script(script, "--help")
             self.assertEqual(result.returncode, 0, result.stderr)
             self.assertIn("--out", result.stdout)
@@ -701,6 +702,58 @@ class PlotScriptsTest(unittest.TestCase):
         with open(path, "w") as f:
             f.write(doc if isinstance(doc, str) else json.dumps(doc))
         return path
+
+    def write_ride(self, name, **changes):
+        """A small `tvd ride --json` document: two points, three runs, one limit of each kind."""
+        limit = {"reached": {"status": "reached", "speed_kmh": 15.0},
+                 "not": {"status": "not_reached", "speed_kmh": 20.0}}
+        doc = {"track": "road_C", "points": ["hull", "crew_seat"], "power_limit_w": 6.0,
+               "peak_limit_g": 2.5, "peak_lowpass_hz": 30.0,
+               "runs": [{"speed_kmh": v, "in_sweep": v != 15.0,
+                         "points": [{"point": p, "absorbed_power_w": w, "peak_up_g": g}
+                                    for p in ("hull", "crew_seat")]}
+                        for v, w, g in ((10.0, 2.0, 1.0), (15.0, 6.0, 2.0), (20.0, 9.0, 2.4))],
+               "limits": [{"point": p, "absorbed_power": limit["reached"],
+                           "peak_acceleration": limit["not"]} for p in ("hull", "crew_seat")]}
+        doc.update(changes)
+        path = self.path(name)
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        return path
+
+    def test_ride_two_files_and_chosen_points(self):
+        out = self.path("ride.png")
+        result = self.run_script("plot_ride.py", "--out", out, f"C={self.write_ride('c.json')}",
+                                 self.write_ride("d.json", peak_lowpass_hz=0.0))
+        self.assert_png(result, out)
+        out = self.path("seat.png")
+        result = self.run_script("plot_ride.py", "--out", out, "--points", "crew_seat",
+                                 self.write_ride("c.json"))
+        self.assert_png(result, out)
+
+    def test_ride_bad_input_is_one_line(self):
+        out = self.path("ride.png")
+        statics = self.write_statics("statics.json")
+        result = self.run_script("plot_ride.py", "--out", out, statics)
+        self.assert_input_error(result, out, "statics.json", "tvd ride --json", "points")
+        ride = self.write_ride("r.json")
+        result = self.run_script("plot_ride.py", "--out", out, "--points", "moon", ride)
+        self.assert_input_error(result, out, "--points", "'moon'")
+        runs = self.write_ride("runs.json", runs=[{"speed_kmh": 10, "points": [{"point": "moon"}]}])
+        result = self.run_script("plot_ride.py", "--out", out, runs)
+        self.assert_input_error(result, out, "runs.json", "runs[0].points[0]")
+        nan = self.write_ride("nan.json", runs=[{"speed_kmh": None, "points": []}])
+        result = self.run_script("plot_ride.py", "--out", out, nan)
+        self.assert_input_error(result, out, "nan.json", "runs[0].speed_kmh", "not a finite number")
+        status = self.write_ride("status.json", limits=[{"point": "hull", "absorbed_power": {}}])
+        result = self.run_script("plot_ride.py", "--out", out, status)
+        self.assert_input_error(result, out, "status.json", "limits[0].absorbed_power")
+        for key in ("points", "runs", "limits"):
+            scalar = self.write_ride(f"{key}.json", **{key: 5})
+            result = self.run_script("plot_ride.py", "--out", out, scalar)
+            self.assert_input_error(result, out, f"{key}.json", key)
+        result = self.run_script("plot_ride.py", "--out", out, self.path("missing.json"))
+        self.assert_input_error(result, out, "missing.json")
 
     def test_ground_pressure_two_runs(self):
         out = self.path("ground.png")
