@@ -2,7 +2,7 @@
 # Plays the rosbag of a track at a constant speed with --clock (1 kHz), writing it first with
 # tvd_make_bag when it is not there yet (or, for a terrain file, older than the file).
 #   play_track_bag.sh TRACK SPEED BAG_DIR [rosbag play options...]
-# TRACK: long_hill | separated_waves | oop_waves | a terrain file (.csv/.yaml, e.g. from
+# TRACK: long_hill | separated_waves | oop_waves | half_round:H | a terrain file (.csv/.yaml, e.g. from
 # `tvd terrain --iso8608 C`). SPEED: km/h, or a speed-profile CSV (time_s,speed_kmh). The bag is
 # BAG_DIR/NAME_SPEEDkmh.bag (NAME_PROFILE.bag for a profile), NAME the track or file stem.
 # Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
@@ -68,7 +68,8 @@ speed=${args[1]:-30}
 dir=${args[2]:-/tmp/tvd_bags}
 extra=("${args[@]:3}")
 name=$(basename "$track")
-name=${name%.*}
+# A terrain file's stem; a built-in track as named (half_round:0.2 has a '.' of its own).
+if [ -f "$track" ]; then name=${name%.*}; fi
 if [[ "$speed" == *.csv ]]; then
   profile=$(basename "$speed")
   run="${name}_${profile%.*}"

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
   double lateral_offset = 0.0;
   CLI::App app{"tvd_make_bag: rosbag of a paper test track or a terrain file at a constant speed"};
   app.add_option("--track", options.track,
-                 "long_hill, separated_waves, oop_waves or a terrain file (.csv/.yaml, e.g. from tvd terrain)")
+                 "long_hill, separated_waves, oop_waves, half_round:H (the NRMM obstacle, H its height in m) or a "
+                 "terrain file (.csv/.yaml, e.g. from tvd terrain)")
       ->capture_default_str();
   CLI::Option* speed_option =
       app.add_option("--speed-kmh", speed_kmh, "vehicle speed [km/h]")->capture_default_str();

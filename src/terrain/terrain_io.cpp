@@ -209,11 +209,13 @@ Terrain loadTerrain(const std::string& path) {
 }
 
 Terrain loadTrack(const std::string& track, const TrackOptions& options) {
-  if (isBuiltInTrack(track)) return makeTrack(track, options);
+  // A half-round spec is the built-in obstacle even when malformed: halfRoundHeight() then throws
+  // naming its fault, rather than calling it neither a track nor a file.
+  if (isBuiltInTrack(track) || halfRoundHeight(track)) return makeTrack(track, options);
   const std::string extension = io::lowerExtension(track);
   if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
     std::string known;
-    for (const std::string& n : trackNames()) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& n : trackForms()) known += (known.empty() ? "" : ", ") + n;
     throw InputError("track '" + track + "' is neither a built-in track (" + known +
                      ") nor a terrain file (.csv, .yaml)");
   }

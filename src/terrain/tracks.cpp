@@ -1,11 +1,13 @@
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <sstream>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/csv_reader.h"
 #include "tracked_vehicle_dynamics/terrain/moving_average.h"
 
 namespace tracked_vehicle_dynamics {
@@ -16,6 +18,57 @@ constexpr double kPi = 3.14159265358979323846;
 const char* const kLongHill = "long_hill";
 const char* const kSeparatedWaves = "separated_waves";
 const char* const kOopWaves = "oop_waves";
+const char* const kHalfRoundForm = "half_round:H";
+
+/// "a, b, c": the names and forms of trackForms(), for messages.
+std::string knownTracks() {
+  std::string known;
+  for (const std::string& track : trackForms()) known += (known.empty() ? "" : ", ") + track;
+  return known;
+}
+
+bool isFixedName(const std::string& name) {
+  const std::vector<std::string> names = trackNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+/// A half-round spec, well formed or not: "half_round" alone or followed by ':' and anything.
+bool isHalfRoundFamily(const std::string& name) {
+  const std::string prefix = kHalfRoundPrefix;  // "half_round:"
+  return name == prefix.substr(0, prefix.size() - 1) || name.rfind(prefix, 0) == 0;
+}
+
+/// Why `height` [m] is no half-round height (tracks.h: the bounds); empty when it is one.
+std::string halfRoundFault(double height) {
+  if (std::isfinite(height) && height > 0.0 && height <= kHalfRoundMaxHeight) return "";
+  std::string fault = "the obstacle height must be in (0, " + brief(kHalfRoundMaxHeight) +
+                      "] m, got " + brief(height);
+  if (height > kHalfRoundMaxHeight && std::isfinite(height)) {
+    fault += " (more than any vehicle's ground clearance: a height in cm or inches?)";
+  }
+  return fault;
+}
+
+/// The height of a half-round spec, or why it has none (`fault` non-empty). Only for names of
+/// isHalfRoundFamily().
+double parseHalfRound(const std::string& spec, std::string* fault) {
+  const std::size_t prefix = std::string(kHalfRoundPrefix).size();
+  const std::string text = spec.size() > prefix ? spec.substr(prefix) : "";  // "half_round": ""
+  if (text.empty()) {
+    *fault = "the obstacle height is missing; give it in metres after the colon, e.g. " +
+             halfRoundName(0.2);
+    return 0.0;
+  }
+  // Spelled as in a terrain file: the whole text one number, no blanks or units around it.
+  const std::optional<double> height = io::parseNumber(text);
+  if (!height) {
+    *fault = "the obstacle height '" + text + "' is not a number (metres, e.g. " +
+             halfRoundName(0.2) + ")";
+    return 0.0;
+  }
+  *fault = halfRoundFault(*height);
+  return *height;
+}
 
 void checkOption(bool valid, const std::string& track, const std::string& field, double value,
                  const std::string& requirement) {
@@ -83,24 +136,51 @@ Terrain buildTrack(const std::string& name, const TrackOptions& options,
 
 std::vector<std::string> trackNames() { return {kLongHill, kSeparatedWaves, kOopWaves}; }
 
+std::vector<std::string> trackForms() {
+  std::vector<std::string> forms = trackNames();
+  forms.push_back(kHalfRoundForm);
+  return forms;
+}
+
 bool isBuiltInTrack(const std::string& name) {
-  const std::vector<std::string> names = trackNames();
-  return std::find(names.begin(), names.end(), name) != names.end();
+  if (isFixedName(name)) return true;
+  if (!isHalfRoundFamily(name)) return false;
+  std::string fault;
+  parseHalfRound(name, &fault);
+  return fault.empty();
+}
+
+void checkTrackName(const std::string& name) {
+  if (isFixedName(name) || halfRoundHeight(name)) return;  // a bad spec throws its own fault
+  throw InputError("unknown track '" + name + "' (known tracks: " + knownTracks() + ")");
+}
+
+std::optional<double> halfRoundHeight(const std::string& name) {
+  if (!isHalfRoundFamily(name)) return std::nullopt;
+  std::string fault;
+  const double height = parseHalfRound(name, &fault);
+  if (!fault.empty()) throw InputError("track '" + name + "': " + fault);
+  return height;
+}
+
+std::string halfRoundName(double height) {
+  // std::to_chars without a precision: the shortest text that reads back as the same double.
+  char digits[32];
+  const std::to_chars_result result = std::to_chars(digits, digits + sizeof(digits), height);
+  return kHalfRoundPrefix + std::string(digits, result.ptr);
 }
 
 double defaultLateralOffset(const std::string& name) {
-  if (name == kLongHill || name == kSeparatedWaves) return 0.0;
-  if (name == kOopWaves) return kOopWavesLateralOffset;
-  std::string known;
-  for (const std::string& track : trackNames()) known += (known.empty() ? "" : ", ") + track;
-  throw InputError("unknown track '" + name + "' (known tracks: " + known + ")");
+  checkTrackName(name);
+  return name == kOopWaves ? kOopWavesLateralOffset : 0.0;
 }
 
 Terrain makeTrack(const std::string& name, const TrackOptions& options) {
-  defaultLateralOffset(name);  // rejects unknown names with the list of known ones
+  checkTrackName(name);  // rejects unknown names with the list of known ones
   if (name == kLongHill) return makeLongHill(options);
   if (name == kSeparatedWaves) return makeSeparatedWaves(options);
-  return makeOopWaves(options);
+  if (name == kOopWaves) return makeOopWaves(options);
+  return makeHalfRound(*halfRoundHeight(name), options);
 }
 
 Terrain makeLongHill(const TrackOptions& options) {
@@ -133,6 +213,18 @@ Terrain makeOopWaves(const TrackOptions& options) {
     // Amplitude linear in y_t: opposite phase left/right, larger on the outer pad rows.
     const double amplitude = 0.5 * kOopWavesDepth * y_track / (0.5 * kTrackWidth);
     return amplitude * std::sin(phase);
+  });
+}
+
+Terrain makeHalfRound(double height, const TrackOptions& options) {
+  const std::string name = halfRoundName(height);
+  const std::string fault = halfRoundFault(height);
+  if (!fault.empty()) throw InputError("track '" + name + "': " + fault);
+  return buildTrack(name, options, [=](double x, double) {
+    const double d = std::abs(x - kHalfRoundCentre);
+    if (d >= height) return 0.0;
+    // sqrt(H² - d²) as sqrt((H - d)(H + d)): no cancellation near the feet, H exactly at d = 0.
+    return std::sqrt((height - d) * (height + d));
   });
 }
 

@@ -335,7 +335,7 @@ void registerRideCommand(CLI::App& app) {
   CLI::Option* variant = cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
                              ->check(CLI::IsMember({"untracked", "tracked"}));
   cmd->add_option("--track", opt->track,
-                  "built-in track or terrain file (CSV/YAML), e.g. an ISO 8608 road from tvd terrain")
+                  "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 m) or terrain file (CSV/YAML), e.g. an ISO 8608 road from tvd terrain")
       ->required();
   cmd->add_option("--speeds", opt->speeds, "speeds [km/h]: FIRST:LAST:STEP or a list 5,10,20");
   cmd->add_option("--points", opt->points,

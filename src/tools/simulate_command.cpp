@@ -288,7 +288,7 @@ void registerSimulateCommand(CLI::App& app) {
   CLI::Option* variant =
       cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
           ->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | terrain file (CSV/YAML)");
+  cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | half_round:H (obstacle, H in m) | terrain file (CSV/YAML)");
   CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
   cmd->add_option("--speed-profile", opt->speed_profile,
                   "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), linear "

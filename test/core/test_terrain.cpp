@@ -1,13 +1,16 @@
-// Terrain: grid interpolation, the paper's tracks (closed forms), ISO 8608 roads (PSD identities),
-// file round trips and every bad-input message, and the online TerrainBuffer.
+// Terrain: grid interpolation, the paper's tracks and the half-round obstacle (closed forms),
+// ISO 8608 roads (PSD identities), file round trips and every bad-input message, and the online
+// TerrainBuffer.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <cstdint>
 #include <random>
 #include <string>
@@ -242,7 +245,13 @@ TEST(Tracks, FactoryKnowsThePaperTracks) {
     EXPECT_DOUBLE_EQ(t.height(0.0, 0.0), 0.0);
     EXPECT_DOUBLE_EQ(t.height(kTrackLength, 0.0), 0.0);
   }
-  expectInputError([] { makeTrack("moon"); }, {"unknown track 'moon'", "long_hill", "oop_waves"});
+  expectInputError([] { makeTrack("moon"); },
+                   {"unknown track 'moon'", "long_hill", "oop_waves", "half_round:H"});
+  // Listings add the parameterised obstacle as a form, not as a name.
+  std::vector<std::string> forms = names;
+  forms.push_back("half_round:H");
+  EXPECT_EQ(trackForms(), forms);
+  EXPECT_FALSE(isBuiltInTrack("half_round:H"));
   TrackOptions bad;
   bad.spacing = 0.0;
   expectInputError([&] { makeTrack("long_hill", bad); }, {"TrackOptions::spacing"});
@@ -344,6 +353,162 @@ TEST(Tracks, OopWavesDefaultOffsetShiftsThePathFrame) {
   // With the offset the two sides no longer cancel: the vehicle also heaves.
   const double crest = kOopWavesStart + 2.25 * kOopWavesWavelength;
   EXPECT_GT(driven.height(crest, 1.4) + driven.height(crest, -1.4), 0.1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The half-round obstacle, half_round:H (NRMM)
+
+/// Closed-form crest of the smoothed half-round: the mean of sqrt(H² - u²) over |u| <= W/2, the
+/// circular segment's area [a sqrt(H² - a²) + H² asin(a/H)] / W, a = W/2 (the whole half-disc,
+/// πH²/2 / W, when W/2 >= H).
+double smoothedCrest(double height, double window) {
+  const double a = std::min(0.5 * window, height);
+  return (a * std::sqrt(height * height - a * a) + height * height * std::asin(a / height)) /
+         window;
+}
+
+/// What point sampling every dx loses of ∫ sqrt(H² - u²) du at its two feet, where the slope is
+/// vertical: the trapezoidal rule on a square-root end point errs by |ζ(-1/2)| sqrt(2H) dx^1.5
+/// (Navot's extension of Euler-Maclaurin, ζ(-1/2) = -0.2078862...), an end point on a station.
+double footSamplingError(double height, double dx) {
+  return 2.0 * 0.2078862250 * std::sqrt(2.0 * height) * std::pow(dx, 1.5);
+}
+
+/// ∫ h dx of one line of a track (zero at both ends): the trapezoidal rule, exact for the
+/// piecewise-linear interpolant Terrain uses.
+double area(const Terrain& t, Eigen::Index line) {
+  return t.heights().row(line).sum() * t.spacing();
+}
+
+TEST(Tracks, HalfRoundUnsmoothedIsTheSemicircle) {
+  const double height = 0.2;
+  TrackOptions exact;
+  exact.smoothing_window = 0.0;
+  const Terrain t = makeTrack("half_round:0.2", exact);
+  EXPECT_EQ(t.name(), "half_round:0.2");
+  EXPECT_EQ(t.stations().size(), 3001);
+  EXPECT_NEAR(t.endStation(), kTrackLength, kRoundoff);
+  EXPECT_NEAR(t.lateral().maxCoeff() - t.lateral().minCoeff(), kTrackWidth, kRoundoff);
+  EXPECT_DOUBLE_EQ(t.lateral().minCoeff(), -kTrackWidth / 2);  // centred: no default offset
+  // Every station: the semicircle on the obstacle, exactly 0 off it.
+  const Vector& x = t.stations();
+  int on_obstacle = 0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const double d = x(i) - kHalfRoundCentre;
+    if (std::abs(d) < height - 1e-9) {
+      ++on_obstacle;
+      EXPECT_NEAR(t.heights()(0, i), std::sqrt(height * height - d * d), kRoundoff) << x(i);
+    } else if (std::abs(d) > height + 1e-9) {
+      EXPECT_EQ(t.heights()(0, i), 0.0) << "x = " << x(i);
+    } else {
+      EXPECT_NEAR(t.heights()(0, i), 0.0, 1e-7) << "foot at x = " << x(i);  // sqrt of round-off
+    }
+  }
+  EXPECT_EQ(on_obstacle, 39);  // 2 H / dx - 1 stations strictly between the feet
+  // The crest is H exactly, at xc, on every line; between stations the chord of the arc.
+  for (Eigen::Index j = 0; j < t.lateral().size(); ++j) {
+    EXPECT_EQ(t.height(kHalfRoundCentre, t.lateral()(j)), height);
+    EXPECT_EQ(t.profile(t.lateral()(j)), t.profile(0.0)) << "line " << j;  // uniform
+  }
+  EXPECT_NEAR(t.height(kHalfRoundCentre + 0.12, 1.0), std::sqrt(0.04 - 0.0144), kRoundoff);
+  EXPECT_EQ(t.heights().maxCoeff(), height);
+  EXPECT_EQ(t.heights().minCoeff(), 0.0);
+}
+
+TEST(Tracks, HalfRoundSmoothedKeepsTheAreaAndLowersTheCrest) {
+  const double w = kTrackSmoothingWindow;
+  const double dx = kTrackSpacing;
+  for (const double height : {0.1, 0.15, 0.3}) {
+    SCOPED_TRACE("H = " + std::to_string(height));
+    const std::string name = halfRoundName(height);
+    TrackOptions exact;
+    exact.smoothing_window = 0.0;
+    const Terrain raw = makeTrack(name, exact);
+    const Terrain t = makeTrack(name);
+    // The moving average conserves ∫h dx exactly (the profile is 0 at both ends); the sampled
+    // semicircle has the half-disc's area πH²/2 less the feet's sampling error.
+    EXPECT_NEAR(area(t, 0), area(raw, 0), kRoundoff);
+    EXPECT_NEAR(area(t, 0), 0.5 * kPi * height * height, 1.1 * footSamplingError(height, dx));
+    // Crest: the moving average of the semicircle at xc, of the sampled arc's chords. With the
+    // feet inside the window (H <= W/2) their sampling error divided by W; otherwise the chords'
+    // mean sag, dx² |h''| / 12, at most at the window's edge: h'' = -H² / (H² - u²)^1.5.
+    const double a = 0.5 * w;
+    const double tolerance =
+        height <= a + 1e-12
+            ? 1.1 * footSamplingError(height, dx) / w
+            : dx * dx / 12.0 * height * height / std::pow(height * height - a * a, 1.5);
+    const double crest = smoothedCrest(height, w);
+    EXPECT_NEAR(t.height(kHalfRoundCentre, 0.0), crest, tolerance);
+    EXPECT_LT(crest, height - 5.0 * tolerance);  // lower than H, measurably
+    EXPECT_EQ(t.heights().maxCoeff(), t.height(kHalfRoundCentre, 0.0));
+    // Flat run-in and run-out, exactly 0, from W/2 (one station more for round-off) beyond the
+    // feet; uniform across the width.
+    for (Eigen::Index i = 0; i < t.stations().size(); ++i) {
+      if (std::abs(t.stations()(i) - kHalfRoundCentre) >= height + a + dx) {
+        ASSERT_EQ(t.heights()(0, i), 0.0) << "x = " << t.stations()(i);
+      }
+    }
+    EXPECT_EQ(t.heights().minCoeff(), 0.0);
+    EXPECT_EQ(t.profile(-kTrackWidth / 2), t.profile(kTrackWidth / 2));
+  }
+  // The crest ratios quoted in tracks.h.
+  EXPECT_NEAR(smoothedCrest(0.1, w) / 0.1, kPi / 4, 1e-12);
+  EXPECT_NEAR(smoothedCrest(0.15, w) / 0.15, 0.920, 5e-4);
+  EXPECT_NEAR(smoothedCrest(0.2, w) / 0.2, 0.957, 5e-4);
+  EXPECT_NEAR(smoothedCrest(0.3, w) / 0.3, 0.981, 5e-4);
+}
+
+TEST(Tracks, HalfRoundSpecsAreReadAndBadOnesNamed) {
+  EXPECT_TRUE(isBuiltInTrack("half_round:0.2"));
+  EXPECT_TRUE(isBuiltInTrack("half_round:1"));  // the bound itself
+  EXPECT_EQ(halfRoundHeight("half_round:0.25"), 0.25);
+  EXPECT_EQ(halfRoundHeight("half_round:2e-1"), 0.2);
+  EXPECT_EQ(halfRoundHeight("long_hill"), std::nullopt);
+  EXPECT_EQ(halfRoundHeight("half_round.csv"), std::nullopt);  // a file, not a spec
+  EXPECT_EQ(halfRoundName(0.1), "half_round:0.1");
+  EXPECT_EQ(halfRoundHeight(halfRoundName(0.123456789012345)), 0.123456789012345);
+  EXPECT_EQ(makeTrack("half_round:2e-1").name(), "half_round:0.2");  // one name per height
+  EXPECT_EQ(defaultLateralOffset("half_round:0.2"), 0.0);
+  EXPECT_NO_THROW(checkTrackName("half_round:0.3"));
+  // loadTrack reads a spec as the built-in track, the same terrain.
+  const Terrain built = makeTrack("half_round:0.15");
+  const Terrain loaded = loadTrack("half_round:0.15");
+  EXPECT_EQ(loaded.heights(), built.heights());
+  EXPECT_EQ(loaded.lateral(), built.lateral());
+
+  struct Bad {
+    std::string spec;
+    std::string fault;
+  };
+  const std::vector<Bad> bad = {
+      {"half_round", "the obstacle height is missing"},
+      {"half_round:", "the obstacle height is missing"},
+      {"half_round:abc", "'abc' is not a number"},
+      {"half_round:0.2x", "'0.2x' is not a number"},
+      {"half_round:0.2 m", "'0.2 m' is not a number"},
+      {"half_round: 0.2", "' 0.2' is not a number"},
+      {"half_round:0", "must be in (0, 1] m, got 0"},
+      {"half_round:-0.1", "must be in (0, 1] m, got -0.1"},
+      {"half_round:nan", "must be in (0, 1] m, got nan"},
+      {"half_round:inf", "must be in (0, 1] m, got inf"},
+      {"half_round:20", "got 20 (more than any vehicle's ground clearance"},
+  };
+  for (const Bad& b : bad) {
+    SCOPED_TRACE(b.spec);
+    EXPECT_FALSE(isBuiltInTrack(b.spec));
+    const std::vector<std::string> parts = {"track '" + b.spec + "': ", b.fault};
+    expectInputError([&] { makeTrack(b.spec); }, parts);
+    expectInputError([&] { checkTrackName(b.spec); }, parts);
+    expectInputError([&] { defaultLateralOffset(b.spec); }, parts);
+    // Not "neither a built-in track nor a terrain file": the spec's own fault.
+    expectInputError([&] { loadTrack(b.spec); }, parts);
+  }
+  expectInputError([] { makeHalfRound(-0.2); }, {"track 'half_round:-0.2'", "got -0.2"});
+  expectInputError([] { loadTrack("moon"); }, {"neither a built-in track", "half_round:H"});
+  TrackOptions bad_options;
+  bad_options.smoothing_window = -1.0;
+  expectInputError([&] { makeTrack("half_round:0.2", bad_options); },
+                   {"track 'half_round:0.2'", "TrackOptions::smoothing_window"});
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1196,6 +1196,96 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(len(result["warnings"]), 1)
         self.assertIn("edge line", result["warnings"][0])
 
+    def test_half_round_obstacle_track(self):
+        """--track half_round:H, the NRMM half-round obstacle: `tvd terrain` writes it (uniform
+        across the width, flat before and after, the half-disc's area, the crest of the 0.2 m
+        moving average of the semicircle: closed forms), the file reads back and simulates like
+        the built-in; the vehicle rides over it from rest and settles; bad specs are named."""
+        height, window, centre, dx = 0.15, 0.2, 10.0, 0.01
+        track = self.path("half_round.csv")
+        d = self.tvd_json("terrain", "--track", f"half_round:{height}", "--out", track)
+        self.assertEqual(d["name"], "half_round:0.15")
+        self.assertEqual((d["stations"], d["start_station_m"], d["end_station_m"]), (3001, 0, 30))
+        self.assertEqual(d["min_height_m"], 0.0)
+        with open(track) as f:
+            lines = [line.strip().split(",") for line in f if not line.startswith("#")]
+        y_lines, rows = np.array(lines[0][1:], dtype=float), np.array(lines[1:], dtype=float)
+        stations, heights = rows[:, 0], rows[:, 1:]
+        self.assertEqual((y_lines[0], y_lines[-1]), (-2.5, 2.5))
+        for j in range(1, heights.shape[1]):
+            np.testing.assert_array_equal(heights[:, j], heights[:, 0])  # uniform across the width
+        h = heights[:, 0]
+        # Crest: the mean of sqrt(H^2 - u^2) over |u| <= W/2 (a circular segment), at x = 10 m,
+        # to the chords' sag between 1 cm samples (tracks.h); lower than H.
+        a = window / 2
+        crest = (a * np.sqrt(height ** 2 - a ** 2) + height ** 2 * np.arcsin(a / height)) / window
+        self.assertAlmostEqual(stations[np.argmax(h)], centre, places=9)
+        self.assertAlmostEqual(h.max(), crest, delta=2e-4)
+        self.assertAlmostEqual(d["max_height_m"], h.max(), places=9)
+        self.assertLess(h.max(), height - 0.01)
+        # Area: the moving average keeps the sampled half-disc's, pi H^2 / 2 to the sampling error
+        # at the vertical feet (0.23 mm^2 of 35 mm^2 here).
+        self.assertAlmostEqual(h.sum() * dx / (np.pi * height ** 2 / 2), 1.0, delta=0.01)
+        # Flat (exactly) from W/2 beyond the feet, a station more for round-off; raised within.
+        distance = np.abs(stations - centre)
+        self.assertTrue(np.all(h[distance > height + a + dx / 2] == 0.0))
+        self.assertTrue(np.all(h[distance < height + a - dx / 2] > 0.0))
+
+        # The file reads back and simulates like the built-in track (the same grid, exactly).
+        out = self.path("half_round_10kmh.csv")
+        common = ("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
+                  self.cache)
+        built_in = self.tvd_json(*common, "--track", "half_round:0.15", "--speed-kmh", "10",
+                                 "--out", out)
+        from_file = self.tvd_json(*common, "--track", track, "--speed-kmh", "10")
+        for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
+            self.assertAlmostEqual(from_file[key] / built_in[key], 1.0, places=9, msg=key)
+        self.assertEqual(built_in["warnings"], [])
+        self.assertEqual(built_in["track"], "half_round:0.15")
+        # At rest on the flat until the front wheel (2.34 m ahead of the reference point) meets
+        # the obstacle's foot; the peak while the wheels cross it; then it rings down on the 17 m
+        # of flat after it, to a small fraction of the peak.
+        header, rows = read_csv(out)
+        c = {name: rows[:, i] for i, name in enumerate(header)}
+        station, heave = c["station_m"], c["hull_heave_m"]
+        accel = c["hull_vertical_accel_m_s2"]
+        before = station + 2.34 < centre - height - a
+        self.assertLess(np.abs(heave[before]).max(), 1e-6)
+        self.assertLess(np.abs(accel[before]).max(), 1e-3)
+        self.assertGreater(built_in["peak_hull_heave_m"], 0.01)
+        self.assertGreater(heave.max(), 0.01)  # lifted, not only shaken
+        peak_station = station[np.argmax(np.abs(accel))]
+        self.assertTrue(centre - height - a - 2.34 <= peak_station <= centre + height + a + 2.34,
+                        peak_station)
+        end = station > station[-1] - 2.0
+        self.assertLess(np.abs(heave[end]).max(), 0.02 * np.abs(heave).max())
+        self.assertLess(np.abs(accel[end]).max(), 0.02 * np.abs(accel).max())
+        # A fixed obstacle taken faster shakes the hull harder: peak hull acceleration at 5 and
+        # 20 km/h (un-tracked 14 -> 25 m/s^2, tracked 7 -> 147 m/s^2).
+        for variant in ("untracked", "tracked"):
+            slow, fast = (self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", variant,
+                                        "--track", "half_round:0.15", "--speed-kmh", speed,
+                                        "--cache-dir", self.cache)
+                          for speed in ("5", "20"))
+            self.assertGreater(fast["peak_hull_vertical_accel_m_s2"],
+                               1.5 * slow["peak_hull_vertical_accel_m_s2"], variant)
+
+        # Bad specs: one message naming the spec, from terrain (its --track check) and simulate.
+        for spec, fault in (("half_round:", "the obstacle height is missing"),
+                            ("half_round:abc", "'abc' is not a number"),
+                            ("half_round:0.2x", "'0.2x' is not a number"),
+                            ("half_round:0", "must be in (0, 1] m, got 0"),
+                            ("half_round:-0.1", "got -0.1"),
+                            ("half_round:nan", "got nan"),
+                            ("half_round:15", "got 15 (more than any vehicle's ground clearance")):
+            self.assert_input_error(["terrain", "--track", spec, "--out", self.path("x.csv")],
+                                    f"track '{spec}': ", fault)
+            self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                                     "--track", spec, "--cache-dir", self.cache],
+                                    f"track '{spec}': ", fault)
+        self.assert_input_error(["terrain", "--track", "moon", "--out", self.path("x.csv")],
+                                "unknown track 'moon'", "long_hill", "half_round:H")
+
     def test_road_under_each_wheel_is_the_terrain_at_the_wheel(self):
         # The out-of-phase waves differ left and right and along the track: each column must be
         # the terrain file's height at its own wheel's (station + x_w, y_w), bilinear between the

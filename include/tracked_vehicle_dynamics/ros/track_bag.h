@@ -25,8 +25,9 @@ namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 
 struct TrackBagOptions {
-  /// long_hill, separated_waves, oop_waves, or a terrain file (.csv/.yaml, terrain_io.h, e.g. from
-  /// `tvd terrain --iso8608 C`): its first station becomes station 0, where the vehicle starts.
+  /// long_hill, separated_waves, oop_waves, half_round:H (tracks.h), or a terrain file
+  /// (.csv/.yaml, terrain_io.h, e.g. from `tvd terrain --iso8608 C`): its first station becomes
+  /// station 0, where the vehicle starts.
   std::string track = "long_hill";
   double speed = 30.0 / 3.6;        ///< [m/s], > 0
   /// A speed varying in time instead of `speed` (dynamics/speed_profile.h): the reference point

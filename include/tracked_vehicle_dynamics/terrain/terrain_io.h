@@ -37,10 +37,12 @@ Terrain loadTerrainYaml(const std::string& path);
 /// loadTerrainCsv() for ".csv", loadTerrainYaml() for ".yaml"/".yml"; InputError otherwise.
 Terrain loadTerrain(const std::string& path);
 
-/// A built-in track (tracks.h: makeTrack(track, options)) or, when `track` names none, a terrain
-/// file (.csv, .yaml, .yml) in the path frame of a centre line at options.lateral_offset
-/// (y = y_file - offset; 0 when unset). Throws InputError naming the built-in tracks and the file
-/// extensions for anything else, or the file's own error.
+/// A built-in track (tracks.h: makeTrack(track, options), "half_round:0.2" included) or, when
+/// `track` names none, a terrain file (.csv, .yaml, .yml) in the path frame of a centre line at
+/// options.lateral_offset (y = y_file - offset; 0 when unset). Throws InputError naming the
+/// built-in tracks and the file extensions for anything else, the fault of a malformed
+/// half-round spec (anything starting "half_round:" is read as one: a file of such a name needs a
+/// directory before it, "./half_round:0.2.csv"), or the file's own error.
 Terrain loadTrack(const std::string& track, const TrackOptions& options = {});
 
 /// Writes `terrain` as CSV (17 significant digits: a save/load round trip is exact).
