@@ -15,6 +15,11 @@ road class:
     done
     scripts/plot_ride.py --out ride.png C=/tmp/ride_C.json D=/tmp/ride_D.json
 
+A spectral document (`tvd ride --iso8608 CLASS --json`, "method": "spectral") has the absorbed
+power only: its curves are drawn dashed on the power panel, beside any time-domain file's (e.g.
+C=/tmp/ride_C.json "C spectral"=/tmp/spectral_C.json); with spectral files alone the figure has
+the power panel only.
+
 Bad input (a missing or malformed file, a JSON document that is not `tvd ride --json`, a --points
 name no file has) exits with status 2 and one line on stderr naming the file; no figure is
 written then.
@@ -28,6 +33,8 @@ from plot_common import OUT_HELP, ArgumentParser, check_outputs, fail, labelled,
 import matplotlib.pyplot as plt
 
 KEYS = ("points", "runs", "limits", "power_limit_w", "peak_limit_g", "peak_lowpass_hz")
+# The spectral method computes no peak (a PSD gives variances): its documents lack these.
+PEAK_KEYS = ("peak_limit_g", "peak_lowpass_hz")
 METRICS = (("absorbed_power", "absorbed_power_w", "power_limit_w", "absorbed power [W]", "W"),
            ("peak_acceleration", "peak_up_g", "peak_limit_g", "peak upward acceleration [g]", "g"))
 
@@ -39,7 +46,8 @@ def number(path, what, value):
 
 
 def load(path):
-    """The ride document: (points, {point: {key: [(speed, value)]}}, {point: limits}, figures)."""
+    """The ride document: (points, {point: {key: [(speed, value)]}}, {point: limits}, figures);
+    a spectral document's curves and limits hold the absorbed power only."""
     try:
         with open(path, encoding="utf-8-sig") as stream:
             doc = json.load(stream)
@@ -47,7 +55,10 @@ def load(path):
         fail(f"{path}: cannot read ({reason(error)})")
     except ValueError as error:
         fail(f"{path}: not JSON ({reason(error)})")
-    missing = [k for k in KEYS if not isinstance(doc, dict) or k not in doc]
+    spectral = isinstance(doc, dict) and doc.get("method") == "spectral"
+    keys = [k for k in KEYS if not (spectral and k in PEAK_KEYS)]
+    metrics = METRICS[:1] if spectral else METRICS
+    missing = [k for k in keys if not isinstance(doc, dict) or k not in doc]
     if missing:
         fail(f"{path}: not the output of `tvd ride --json` (no {', '.join(missing)})")
     for key in KEYS[:3]:
@@ -56,7 +67,7 @@ def load(path):
     points = [p for p in doc["points"] if isinstance(p, str)]
     if len(points) != len(doc["points"]) or not points:
         fail(f"{path}: points is not a list of names")
-    curves = {p: {m[1]: [] for m in METRICS} for p in points}
+    curves = {p: {m[1]: [] for m in metrics} for p in points}
     for i, run in enumerate(doc["runs"]):
         if not isinstance(run, dict) or not isinstance(run.get("points"), list):
             fail(f"{path}: runs[{i}] has no list of points")
@@ -65,7 +76,7 @@ def load(path):
             name = p.get("point") if isinstance(p, dict) else None
             if name not in curves:
                 fail(f"{path}: runs[{i}].points[{j}] is not one of the points")
-            for _, key, *_ in METRICS:
+            for _, key, *_ in metrics:
                 curves[name][key].append((speed, number(path, f"runs[{i}].points[{j}].{key}", p.get(key))))
     limits = {}
     for i, entry in enumerate(doc["limits"]):
@@ -73,15 +84,17 @@ def load(path):
         if name not in curves:
             fail(f"{path}: limits[{i}] is not one of the points")
         limits[name] = {}
-        for kind, *_ in METRICS:
+        for kind, *_ in metrics:
             limit = entry.get(kind)
             if not isinstance(limit, dict) or limit.get("status") not in (
                     "reached", "at_lowest_speed", "not_reached"):
                 fail(f"{path}: limits[{i}].{kind} has no status")
             limits[name][kind] = (limit["status"],
                                   number(path, f"limits[{i}].{kind}.speed_kmh", limit.get("speed_kmh")))
-    figures = {k: number(path, k, doc[k]) for k in KEYS[3:]}
-    figures["track"] = str(doc.get("track", ""))
+    figures = {k: number(path, k, doc[k]) for k in keys[3:]}
+    road = doc.get("road")
+    figures["track"] = str(doc.get("track", road.get("name", "") if isinstance(road, dict) else ""))
+    figures["spectral"] = spectral
     return points, curves, limits, figures
 
 
@@ -103,33 +116,43 @@ def main():
             if not any(name in points for _, points, *_ in runs):
                 fail(f"--points: no file has the point '{name}'")
 
-    fig, axes = plt.subplots(2, 1, figsize=(11, 8), sharex=True)
+    # The peak panel only when a time-domain file has peaks to draw.
+    timed = [figures for *_, figures in runs if not figures["spectral"]]
+    panels = METRICS if timed else METRICS[:1]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(11, 4 + 4 * (len(panels) - 1)), sharex=True,
+                             squeeze=False)
+    axes = axes[:, 0]
     k = 0
     for label, points, curves, limits, figures in runs:
+        style = "--" if figures["spectral"] else "-"
         for point in points:
             if wanted is not None and point not in wanted:
                 continue
             color = f"C{k % 10}"
             k += 1
-            for ax, (kind, key, limit_key, _, unit) in zip(axes, METRICS):
+            for ax, (kind, key, limit_key, _, unit) in zip(axes, panels):
+                if key not in curves[point]:
+                    continue  # a spectral file on the peak panel
                 curve = sorted(curves[point][key])
-                ax.plot([c[0] for c in curve], [c[1] for c in curve], ".-", ms=4, lw=1,
+                ax.plot([c[0] for c in curve], [c[1] for c in curve], "." + style, ms=4, lw=1,
                         color=color, label=f"{label}: {point}")
                 status, speed = limits[point][kind]
                 if status == "reached":
                     ax.plot([speed], [figures[limit_key]], "o", ms=9, mfc="none", mew=2, color=color,
                             label=f"{label}: {point}, {figures[limit_key]:g} {unit} at {speed:.1f} km/h")
     first = runs[0][4]
-    for ax, (_, _, limit_key, ylabel, unit) in zip(axes, METRICS):
-        ax.axhline(first[limit_key], color="k", ls="--", lw=1, label=f"limit {first[limit_key]:g} {unit}")
+    for ax, (_, _, limit_key, ylabel, unit) in zip(axes, panels):
+        source = first if limit_key in first else timed[0]
+        ax.axhline(source[limit_key], color="k", ls="--", lw=1, label=f"limit {source[limit_key]:g} {unit}")
         ax.set_ylabel(ylabel)
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
     axes[0].set_yscale("log")
     axes[0].set_title("ride limits: vertical absorbed power" + (f" on {first['track']}" if first["track"] else ""))
-    axes[1].set_title(f"peak upward acceleration ({first['peak_lowpass_hz']:g} Hz low-pass)"
-                      if first["peak_lowpass_hz"] > 0 else "peak upward acceleration (unfiltered)")
-    axes[1].set_xlabel("speed [km/h]")
+    if timed:
+        axes[1].set_title(f"peak upward acceleration ({timed[0]['peak_lowpass_hz']:g} Hz low-pass)"
+                          if timed[0]["peak_lowpass_hz"] > 0 else "peak upward acceleration (unfiltered)")
+    axes[-1].set_xlabel("speed [km/h]")
     save((fig, args.out))
 
 

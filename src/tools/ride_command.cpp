@@ -3,7 +3,8 @@
 // peak low-passed vertical acceleration (shock_meter.h), with the ISO 2631-1 values beside them.
 // The lowest speed at which each reaches its limit, 6 W and 2.5 g by default (the mobility
 // models' "6 W speed" on a rough course and "2.5 g speed" over an obstacle), is bracketed by the
-// sweep and narrowed by bisection (limit_crossing.h).
+// sweep and narrowed by bisection (limit_crossing.h). With --iso8608 CLASS instead of a track,
+// the road is that class's PSD and every speed is evaluated spectrally (ride_spectral.cpp).
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -21,6 +22,9 @@
 #include "output_files.h"
 #include "point_comfort.h"
 #include "reduction_options.h"
+#include "ride_options.h"
+#include "ride_report.h"
+#include "ride_spectral.h"
 #include "simulation_layout.h"
 #include "speed_sweep.h"
 #include "terrain_coverage.h"
@@ -41,24 +45,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-struct RideOptions {
-  std::string vehicle_file;
-  std::string variant = "tracked";
-  bool variant_given = false;
-  std::string track;
-  std::string speeds = "5:70:5";
-  std::string points;  // empty: the hull's CoG and every named point
-  double power_limit_w = 6.0;
-  double peak_limit_g = 2.5;
-  double lowpass_hz = 30.0;
-  double tolerance_kmh = 0.1;
-  double dt = 1e-3;
-  double lateral_offset = 0.0;
-  ReducedModelFlags reduced;
-  std::string out_file;
-  bool json = false;
-};
-
 /// What one run gives at one point.
 struct PointRide {
   double absorbed_power = 0.0;  ///< [W]
@@ -73,56 +59,6 @@ struct Run {
   bool in_sweep = false;
   std::vector<PointRide> points;  // as RideSetup::points
 };
-
-/// The points the user asked for (in the simulator's rows), or the hull and every named point.
-std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named) {
-  std::vector<std::string> known = {"hull"};
-  known.insert(known.end(), named.begin(), named.end());
-  if (spec.empty()) return known;
-  std::vector<std::string> chosen;
-  std::istringstream in(spec);
-  std::string name;
-  while (std::getline(in, name, ',')) {
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError("ride: --points: the model has no point '" + name + "' (it has " + list + ")");
-    }
-    if (std::find(chosen.begin(), chosen.end(), name) != chosen.end())
-      throw InputError("ride: --points: '" + name + "' is listed twice");
-    chosen.push_back(name);
-  }
-  if (chosen.empty() || spec.back() == ',') throw InputError("ride: --points: an empty name in '" + spec + "'");
-  return chosen;
-}
-
-void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit, const char* unit) {
-  json.beginObject()
-      .field("limit", limit)
-      .field("unit", std::string(unit))
-      .field("status", std::string(dynamics::limitStatusName(c.status)))
-      .field("speed_kmh", c.speed)
-      .field("bracket_kmh", std::vector<double>{c.lower, c.upper})
-      .field("refinements", static_cast<long long>(c.refinements))
-      .endObject();
-}
-
-std::string describeLimit(const dynamics::LimitCrossing& c, const std::string& what) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(2);
-  switch (c.status) {
-    case dynamics::LimitCrossing::Status::Reached:
-      out << what << " at " << c.speed << " km/h (between " << c.lower << " and " << c.upper << ")";
-      break;
-    case dynamics::LimitCrossing::Status::AtLowest:
-      out << what << " already at the lowest speed, " << c.speed << " km/h";
-      break;
-    case dynamics::LimitCrossing::Status::NotReached:
-      out << what << " not reached up to " << c.speed << " km/h";
-      break;
-  }
-  return out.str();
-}
 
 void run(const RideOptions& opt) {
   const std::vector<double> sweep = parseSpeedSweep(opt.speeds);
@@ -330,37 +266,80 @@ void run(const RideOptions& opt) {
 void registerRideCommand(CLI::App& app) {
   auto opt = std::make_shared<RideOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "ride", "Ride-limiting speeds: absorbed power and peak acceleration over a speed sweep (6 W / 2.5 g)");
+      "ride",
+      "Ride-limiting speeds: absorbed power and peak acceleration over a speed sweep (6 W / 2.5 g), simulated "
+      "over a --track, or the absorbed power spectrally on an ISO 8608 class (--iso8608)");
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
   CLI::Option* variant = cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
                              ->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--track", opt->track,
-                  "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 m) or terrain file (CSV/YAML), e.g. an ISO 8608 road from tvd terrain")
-      ->required();
+  CLI::Option* track =
+      cmd->add_option("--track", opt->track,
+                       "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 m) or terrain file (CSV/YAML), e.g. an "
+                       "ISO 8608 road from tvd terrain: "
+                      "simulated in time at every speed");
+  CLI::Option* iso = cmd->add_option(
+      "--iso8608", opt->iso_class,
+      "instead of --track: the PSD of ISO 8608 road class A..H, evaluated spectrally at every speed "
+      "(absorbed power, a_wz, r.m.s.; no peaks)");
   cmd->add_option("--speeds", opt->speeds, "speeds [km/h]: FIRST:LAST:STEP or a list 5,10,20");
   cmd->add_option("--points", opt->points,
                   "points of the hull, comma-separated: hull (the CoG) and the description's named "
                   "points (default: all)");
   cmd->add_option("--power-limit-w", opt->power_limit_w, "absorbed-power limit [W]")->check(positiveNumber());
-  cmd->add_option("--peak-limit-g", opt->peak_limit_g, "peak upward acceleration limit [g]")->check(positiveNumber());
-  cmd->add_option("--lowpass-hz", opt->lowpass_hz,
-                  "Butterworth (4th order) low-pass before the peak is read [Hz]; 0: unfiltered")
-      ->check(nonNegativeNumber());
+  // The time-domain run's own options, refused with --iso8608.
+  const std::vector<CLI::Option*> time_only = {
+      cmd->add_option("--peak-limit-g", opt->peak_limit_g, "peak upward acceleration limit [g]")
+          ->check(positiveNumber()),
+      cmd->add_option("--lowpass-hz", opt->lowpass_hz,
+                      "Butterworth (4th order) low-pass before the peak is read [Hz]; 0: unfiltered")
+          ->check(nonNegativeNumber()),
+      // At most 2 ms: the 30 Hz low-pass and the absorbed-power filter (peaking at 4.5 Hz, K up
+      // to 80 Hz) need fs well above 60 Hz.
+      cmd->add_option("--dt", opt->dt, "time step [s] (1e-4 .. 0.002)")->check(numberIn(1e-4, 0.002, "s"))};
   cmd->add_option("--tolerance-kmh", opt->tolerance_kmh, "bisection stops at this bracket width [km/h]")
       ->check(numberIn(1e-3, 10.0, "km/h"));
-  // At most 2 ms: the 30 Hz low-pass and the absorbed-power filter (peaking at 4.5 Hz, K up to
-  // 80 Hz) need fs well above 60 Hz.
-  cmd->add_option("--dt", opt->dt, "time step [s] (1e-4 .. 0.002)")->check(numberIn(1e-4, 0.002, "s"));
   cmd->add_option("--lateral-offset", opt->lateral_offset, "lateral offset of the path [m] (y left)")
       ->check(finiteNumber());
+  // The road spectrum's options (those of tvd terrain --iso8608, and the grid), refused without
+  // --iso8608.
+  const std::vector<CLI::Option*> spectral_only = {
+      cmd->add_flag("--independent-sides", opt->independent_sides,
+                    "--iso8608: left and right tracks on independent profiles (default: one profile "
+                    "across the width)"),
+      cmd->add_option("--waviness", opt->waviness, "--iso8608: PSD slope w in G_d(n0) (n/n0)^-w (default 2)")
+          ->check(positiveNumber()),
+      cmd->add_option("--min-frequency", opt->min_frequency,
+                      "--iso8608: lowest spatial frequency [cycles/m] (default 0.011)")
+          ->check(positiveNumber()),
+      cmd->add_option("--max-frequency", opt->max_frequency,
+                      "--iso8608: highest spatial frequency [cycles/m] (default 2.83)")
+          ->check(positiveNumber()),
+      cmd->add_option("--points-per-decade", opt->points_per_decade,
+                      "--iso8608: frequencies per decade of the integration grid (default 400)")
+          ->check(numberIn(10.0, 1e5))};
   opt->reduced.addTo(cmd);
   cmd->add_option("--out", opt->out_file, "every run, by speed: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt, variant]() {
+  cmd->callback([opt, variant, track, iso, time_only, spectral_only]() {
+    const bool spectral = iso->count() > 0;
+    if (spectral && track->count() > 0)
+      throw InputError("ride: --track and --iso8608 exclude each other: give a terrain to simulate over, "
+                       "or an ISO 8608 class to evaluate spectrally");
+    if (!spectral && track->count() == 0)
+      throw InputError("ride: --track is required (a terrain to simulate over), or --iso8608 CLASS for "
+                       "the spectral method");
+    for (const CLI::Option* o : spectral ? time_only : spectral_only)
+      if (o->count() > 0)
+        throw InputError("ride: " + o->get_name() +
+                         (spectral ? " applies to a --track simulation, not to the spectral --iso8608"
+                                   : " applies to --iso8608 (the spectral method) only"));
     opt->reduced.check("ride", "reduced");
     opt->variant_given = variant->count() > 0;
-    run(*opt);
+    if (spectral)
+      runSpectralRide(*opt);
+    else
+      run(*opt);
   });
 }
 

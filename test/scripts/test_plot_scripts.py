@@ -731,6 +731,50 @@ class PlotScriptsTest(unittest.TestCase):
                                  self.write_ride("c.json"))
         self.assert_png(result, out)
 
+    def write_spectral_ride(self, name, **changes):
+        """A small `tvd ride --iso8608 C --json` document: the absorbed power only (no peaks)."""
+        doc = {"method": "spectral", "road": {"name": "iso8608_C_psd"},
+               "points": ["hull", "crew_seat"], "power_limit_w": 6.0,
+               "runs": [{"speed_kmh": v, "in_sweep": True,
+                         "points": [{"point": p, "absorbed_power_w": w, "weighted_rms_z_m_s2": 1.0,
+                                     "rms_z_m_s2": 1.5} for p in ("hull", "crew_seat")]}
+                        for v, w in ((10.0, 2.5), (15.0, 6.0), (20.0, 8.0))],
+               "limits": [{"point": p, "absorbed_power": {"status": "reached", "speed_kmh": 15.0}}
+                          for p in ("hull", "crew_seat")]}
+        doc.update(changes)
+        path = self.path(name)
+        with open(path, "w") as f:
+            json.dump(doc, f)
+        return path
+
+    def test_ride_spectral_alone_and_beside_a_time_domain_file(self):
+        # Spectral alone: the power panel only; beside a time-domain file: both panels, the
+        # spectral curve on the first.
+        out = self.path("spectral.png")
+        result = self.run_script("plot_ride.py", "--out", out, self.write_spectral_ride("s.json"))
+        self.assert_png(result, out)
+        out = self.path("both.png")
+        result = self.run_script("plot_ride.py", "--out", out, "spectral=" + self.path("s.json"),
+                                 f"time={self.write_ride('t.json')}", "--points", "crew_seat")
+        self.assert_png(result, out)
+        # A spectral document needs what it has: the power limit, a status per point.
+        bad = self.write_spectral_ride("nolimit.json")
+        with open(bad) as f:
+            doc = json.load(f)
+        del doc["power_limit_w"]
+        with open(bad, "w") as f:
+            json.dump(doc, f)
+        result = self.run_script("plot_ride.py", "--out", out + ".png", bad)
+        self.assert_input_error(result, out + ".png", "nolimit.json", "tvd ride --json", "power_limit_w")
+        status = self.write_spectral_ride("sstatus.json", limits=[{"point": "hull", "absorbed_power": {}}])
+        result = self.run_script("plot_ride.py", "--out", out + ".png", status)
+        self.assert_input_error(result, out + ".png", "sstatus.json", "limits[0].absorbed_power")
+        # A time-domain document still needs its peaks.
+        nopeak = self.write_ride("nopeak.json", limits=[{"point": "hull", "absorbed_power": {
+            "status": "reached", "speed_kmh": 15.0}}])
+        result = self.run_script("plot_ride.py", "--out", out + ".png", nopeak)
+        self.assert_input_error(result, out + ".png", "nopeak.json", "limits[0].peak_acceleration")
+
     def test_ride_bad_input_is_one_line(self):
         out = self.path("ride.png")
         statics = self.write_statics("statics.json")

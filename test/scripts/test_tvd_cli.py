@@ -682,6 +682,164 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["ride", "--vehicle", VEHICLE], "--track is required")
         self.assert_input_error(ride + ["--model", "full"], "--model")
 
+    # --- tvd ride --iso8608: the spectral method ------------------------------------------
+    # On a road of harmonics with fixed amplitudes (tvd terrain: a_k^2/2 = the PSD's integral over
+    # bin k), a linear model's mean square over one period is sum_k |H(v n_k)|^2 a_k^2/2 whatever
+    # the phases: on a uniform road one realisation is the spectral integral up to the bins, the
+    # terrain's linear interpolation (power sinc^4(n dx), -0.3 % at 15 km/h for dx = 2 cm), the
+    # start from rest and the ends (-3 to -4 % at 40 km/h on 300 m; on 600 m under 0.5 % with the
+    # interpolation) and the digital filters. Independent sides add cross terms 2 Re(H_L H_R* e^{j(phi_L - phi_R)}) that scatter
+    # by 5-7 % per realisation of 600 m (16 seeds, README); a road with one side flat has none,
+    # and the left-only and right-only runs add up to the spectral independent-sides power as
+    # the uniform road's matches the uniform PSD.
+    SPECTRAL_SPEEDS = "15,40"
+    SPECTRAL_POWER_TOLERANCE = 0.015  # measured: 0.57 % (P), 0.27 % (a_wz) on 600 m at 2 cm
+    SPECTRAL_AWZ_TOLERANCE = 0.008
+
+    def spectral_ride(self, *args, points="crew_seat,hull"):
+        return self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked",
+                             "--points", points, "--cache-dir", self.cache, *args)
+
+    def simulated_ride(self, road):
+        """tvd ride's time-domain metrics on `road` at SPECTRAL_SPEEDS, {(speed, point): metrics}
+        (limits out of reach: the sweep only, no bisection)."""
+        d = self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", road,
+                          "--speeds", self.SPECTRAL_SPEEDS, "--points", "crew_seat,hull",
+                          "--power-limit-w", "1e9", "--peak-limit-g", "1e9",
+                          "--cache-dir", self.cache)
+        return {(r["speed_kmh"], p["point"]): p for r in d["runs"] for p in r["points"]}
+
+    def test_ride_spectral_agrees_with_the_time_domain(self):
+        """tvd ride --iso8608 C against tvd ride --track on a 600 m class-C road of tvd terrain
+        (2 cm spacing, untapered): uniform, and independent sides as the sum of the road with
+        only its left and only its right half (the rest flat)."""
+        road = self.path("spectral_road_C.csv")
+        self.tvd("terrain", "--iso8608", "C", "--length", "600", "--spacing", "0.02", "--taper",
+                 "0", "--seed", "3", "--out", road)
+        with open(road) as f:
+            lines = [line for line in f if not line.startswith("#")]
+        self.assertEqual(lines[0].strip(), "x,-2.5,2.5")  # one profile across the width
+        rows = np.loadtxt(lines[1:], delimiter=",")
+        x, h = rows[:, 0], rows[:, 1]
+        sides = {}
+        for side in ("left", "right"):
+            path = sides[side] = self.path(f"spectral_road_{side}.csv")
+            left, right = (h, 0 * h) if side == "left" else (0 * h, h)
+            np.savetxt(path, np.column_stack([x, right, right, left, left]), delimiter=",",
+                       header="x,-2.5,-0.05,0.05,2.5", comments="", fmt="%.17g")
+        spectral = {}
+        for name, extra in (("uniform", ()), ("sides", ("--independent-sides",))):
+            d = self.spectral_ride("--iso8608", "C", "--speeds", self.SPECTRAL_SPEEDS,
+                                   "--power-limit-w", "1e9", *extra)
+            spectral[name] = {(r["speed_kmh"], p["point"]): p for r in d["runs"]
+                              for p in r["points"]}
+        uniform = self.simulated_ride(road)
+        left, right = self.simulated_ride(sides["left"]), self.simulated_ride(sides["right"])
+        for key, s in spectral["uniform"].items():
+            i = spectral["sides"][key]
+            self.assertAlmostEqual(uniform[key]["absorbed_power_w"] / s["absorbed_power_w"], 1.0,
+                                   delta=self.SPECTRAL_POWER_TOLERANCE, msg=key)
+            self.assertAlmostEqual(uniform[key]["weighted_rms_z_m_s2"] / s["weighted_rms_z_m_s2"],
+                                   1.0, delta=self.SPECTRAL_AWZ_TOLERANCE, msg=key)
+            power = left[key]["absorbed_power_w"] + right[key]["absorbed_power_w"]
+            self.assertAlmostEqual(power / i["absorbed_power_w"], 1.0,
+                                   delta=self.SPECTRAL_POWER_TOLERANCE, msg=key)
+            awz = np.hypot(left[key]["weighted_rms_z_m_s2"], right[key]["weighted_rms_z_m_s2"])
+            self.assertAlmostEqual(awz / i["weighted_rms_z_m_s2"], 1.0,
+                                   delta=self.SPECTRAL_AWZ_TOLERANCE, msg=key)
+            # The sides differ: independent profiles are not the uniform road's.
+            self.assertGreater(abs(i["absorbed_power_w"] / s["absorbed_power_w"] - 1.0), 0.05)
+
+    def test_ride_spectral_sweep_limits_and_scale_law(self):
+        """tvd ride --iso8608: the JSON's road and runs; the 6 W speed is where a spectral run at
+        it absorbs 6 W; class D is 4x the power of class C and 2x its r.m.s. values, exactly; the
+        CSV rows are the JSON's runs; 4000 points per decade change nothing that matters."""
+        out = self.path("spectral.csv")
+        c = self.spectral_ride("--iso8608", "C", "--speeds", "5:40:5", "--out", out)
+        self.assertEqual(c["method"], "spectral")
+        self.assertEqual(c["road"]["iso8608_class"], "C")
+        self.assertEqual(c["road"]["lateral_correlation"], "uniform")
+        self.assertEqual(c["road"]["band_cycles_per_m"], [0.011, 2.83])
+        band = 256e-6 * 0.1 ** 2 * (1 / 0.011 - 1 / 2.83)  # closed form, waviness 2
+        self.assertAlmostEqual(c["road"]["band_rms_height_m"] / np.sqrt(band), 1.0, places=9)
+        for key in ("peak_acceleration", "peak_up_g", "vdv_z_m_s1_75"):
+            self.assertIn(key, c["not_computed"])
+        self.assertNotIn("peak_limit_g", c)
+        speeds = [r["speed_kmh"] for r in c["runs"]]
+        self.assertEqual(speeds, sorted(speeds))
+        self.assertEqual(c["evaluations"], len(speeds))
+        for r in c["runs"]:
+            v = r["speed_kmh"] / 3.6
+            np.testing.assert_allclose(r["frequency_band_hz"], [0.011 * v, 2.83 * v], rtol=1e-9)
+            self.assertEqual(r["frequencies"], int(np.ceil(400 * np.log10(2.83 / 0.011))) + 1)
+            self.assertEqual([p["point"] for p in r["points"]], ["crew_seat", "hull"])
+            self.assertNotIn("peak_up_g", r["points"][0])
+        header, rows = read_csv(out)
+        self.assertEqual(header[:5], ["speed_kmh", "in_sweep", "crew_seat_absorbed_power_w",
+                                      "crew_seat_weighted_rms_z_m_s2", "crew_seat_rms_z_m_s2"])
+        np.testing.assert_allclose(rows[:, 0], speeds, rtol=1e-9)
+        np.testing.assert_allclose(rows[:, header.index("hull_absorbed_power_w")],
+                                   [r["points"][1]["absorbed_power_w"] for r in c["runs"]],
+                                   rtol=1e-8)
+        limits = {l["point"]: l for l in c["limits"]}
+        self.assertEqual(set(limits["crew_seat"]), {"point", "absorbed_power"})
+        for point, l in limits.items():
+            l = l["absorbed_power"]
+            self.assertEqual(l["status"], "reached", point)
+            lo, hi = l["bracket_kmh"]
+            self.assertLessEqual(hi - lo, 0.1 + 1e-12)
+            at = self.spectral_ride("--iso8608", "C", "--speeds", repr(l["speed_kmh"]),
+                                    points=point)
+            self.assertAlmostEqual(at["runs"][0]["points"][0]["absorbed_power_w"] / 6.0, 1.0,
+                                   delta=0.01, msg=point)
+
+        d = self.spectral_ride("--iso8608", "D", "--speeds", "5:40:5", "--power-limit-w", "24")
+        by_speed = {r["speed_kmh"]: r for r in c["runs"]}
+        for r in d["runs"]:
+            for p, q in zip(r["points"], by_speed[r["speed_kmh"]]["points"]):
+                # To the JSON's 10 digits (in the core, x4 is a power of two: bit for bit).
+                self.assertAlmostEqual(p["absorbed_power_w"] / q["absorbed_power_w"], 4.0, places=8)
+                for key in ("weighted_rms_z_m_s2", "rms_z_m_s2"):
+                    self.assertAlmostEqual(p[key] / q[key], 2.0, places=8)
+        # A limit 4x as high on a road 4x as rough: the same speed, to the bisection.
+        for p, q in zip(d["limits"], c["limits"]):
+            self.assertEqual(p["absorbed_power"]["bracket_kmh"], q["absorbed_power"]["bracket_kmh"])
+
+        fine = self.spectral_ride("--iso8608", "C", "--speeds", "5:40:5", "--power-limit-w", "1e9",
+                                  "--points-per-decade", "4000")
+        for r in fine["runs"]:
+            for p, q in zip(r["points"], by_speed[r["speed_kmh"]]["points"]):
+                # 400 per decade: within 5e-4 of a 100x finer grid (README), 4000: 100x closer.
+                self.assertAlmostEqual(q["absorbed_power_w"] / p["absorbed_power_w"], 1.0,
+                                       delta=5e-4)
+
+    def test_ride_spectral_bad_options_are_named_before_any_work(self):
+        cache = self.path("cache_spectral_refused")
+        ride = ["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", cache]
+        for args, words in (
+                (["--iso8608", "C", "--track", "long_hill"], ["--track and --iso8608 exclude each other"]),
+                (["--iso8608", "Q"], ["--iso8608 must be one road class A..H, got 'Q'"]),
+                (["--iso8608", "CD"], ["got 'CD'"]),
+                (["--iso8608", ""], ["got ''"]),
+                (["--iso8608", "C", "--dt", "0.001"], ["--dt applies to a --track simulation"]),
+                (["--iso8608", "C", "--peak-limit-g", "2"], ["--peak-limit-g applies to a --track"]),
+                (["--iso8608", "C", "--lowpass-hz", "10"], ["--lowpass-hz applies to a --track"]),
+                (["--track", "long_hill", "--waviness", "3"],
+                 ["--waviness applies to --iso8608 (the spectral method) only"]),
+                (["--track", "long_hill", "--independent-sides"], ["--independent-sides applies to --iso8608"]),
+                (["--track", "long_hill", "--points-per-decade", "100"], ["--points-per-decade applies"]),
+                (["--iso8608", "C", "--min-frequency", "3"],
+                 ["--min-frequency 3 must be below --max-frequency 2.83 cycles/m"]),
+                (["--iso8608", "C", "--points-per-decade", "5"], ["--points-per-decade", "[10, 100000]"]),
+                (["--iso8608", "C", "--waviness", "0"], ["--waviness", "positive"]),
+                (["--iso8608", "C", "--min-frequency", "1e-300", "--points-per-decade", "1e5"],
+                 ["needs 3.00452e+07 frequencies; at most 1e+06"]),
+                (["--iso8608", "C", "--points", "moon"], ["no point 'moon'"]),
+                (["--iso8608", "C", "--speeds", "0,10"], ["speed 0 km/h is outside (0, 200]"]),
+                ([], ["--track is required", "or --iso8608 CLASS for the spectral method"])):
+            self.assert_input_error(ride + args, *words)
+        self.assertFalse(os.path.exists(cache))  # refused before any reduction
+
     def test_mat_outputs_hold_the_csv_columns(self):
         """--out FILE.mat (simulate, frf): one n x 1 variable per CSV column, the same values
         (to the CSV's digits), and the run's vehicle/variant/model as strings."""

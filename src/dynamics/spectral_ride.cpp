@@ -1,0 +1,263 @@
+#include "tracked_vehicle_dynamics/dynamics/spectral_ride.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "checks.h"
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586;
+// Frequencies evaluated together: one matrix product forms their modal forces. 256 keeps the
+// block's products (modes x 512 doubles, about 1.8 MB for 430 modes) in cache-friendly sizes.
+constexpr Eigen::Index kBlock = 256;
+constexpr double kMinPointsPerDecade = 10.0;
+constexpr double kMaxPointsPerDecade = 1e5;
+constexpr double kMaxGridPoints = 1e6;
+
+[[noreturn]] void fail(const std::string& what) {
+  throw InputError("spectral ride: " + what);
+}
+
+// Class (iso8608ReferencePsd throws naming it), band and waviness, as terrain::makeIso8608
+// checks them (the band without the Nyquist bound: a PSD has no sampling).
+double checkRoad(const RoadSpectrum& road) {
+  const double reference = terrain::iso8608ReferencePsd(road.road_class);
+  if (!(std::isfinite(road.min_frequency) && std::isfinite(road.max_frequency) &&
+        road.min_frequency > 0.0 && road.min_frequency < road.max_frequency))
+    fail("band [" + brief(road.min_frequency) + ", " + brief(road.max_frequency) +
+         "] cycles/m must satisfy 0 < n_min < n_max");
+  if (!(std::isfinite(road.waviness) && road.waviness > 0.0))
+    fail("waviness " + brief(road.waviness) + " must be > 0");
+  if (road.correlation == terrain::LateralCorrelation::IndependentSides &&
+      !(std::isfinite(road.side_gap) && road.side_gap > 0.0))
+    fail("side gap " + brief(road.side_gap) + " m must be > 0 for independent sides");
+  return reference;
+}
+
+void checkSpeed(double speed) {
+  if (!(std::isfinite(speed) && speed > 0.0))
+    fail("speed " + brief(speed) + " m/s must be positive and finite");
+}
+
+// Weight of the left profile in the height an input at y sees (terrain::makeIso8608's blend
+// across the centre strip): 1 left of it, 0 right of it, linear in between.
+double leftWeight(double y, double gap) {
+  return std::clamp((y + 0.5 * gap) / gap, 0.0, 1.0);
+}
+
+}  // namespace
+
+void checkSpectralInput(const RoadSpectrum& road, const SpectralRideOptions& options) {
+  checkRoad(road);
+  if (!(options.points_per_decade >= kMinPointsPerDecade &&
+        options.points_per_decade <= kMaxPointsPerDecade))
+    fail("points per decade " + brief(options.points_per_decade) + " must be in [" +
+         brief(kMinPointsPerDecade) + ", " + brief(kMaxPointsPerDecade) + "]");
+  // The grid's size depends on the band's ratio only: [v n_min, v n_max] spans the same decades
+  // at every speed.
+  const double points =
+      std::ceil(options.points_per_decade * std::log10(road.max_frequency / road.min_frequency)) +
+      1.0;
+  if (!(points <= kMaxGridPoints))
+    fail("the band [" + brief(road.min_frequency) + ", " + brief(road.max_frequency) +
+         "] cycles/m at " + brief(options.points_per_decade) + " points per decade needs " +
+         brief(points) + " frequencies; at most " + brief(kMaxGridPoints));
+}
+
+double temporalRoadPsd(const RoadSpectrum& road, double frequency, double speed) {
+  const double reference = checkRoad(road);
+  checkSpeed(speed);
+  // The band's ends inclusive, to rounding: v n_min / v may come out an ulp below n_min.
+  constexpr double kEnd = 1e-12;
+  const double n = frequency / speed;
+  if (!(n >= road.min_frequency * (1.0 - kEnd) && n <= road.max_frequency * (1.0 + kEnd)))
+    return 0.0;
+  return reference * std::pow(n / terrain::kIso8608ReferenceFrequency, -road.waviness) / speed;
+}
+
+SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral,
+                           const std::vector<DofIndex>& output_rows, const RoadSpectrum& road,
+                           const SpectralRideOptions& options)
+    : road_(road), options_(options) {
+  checkSpectralInput(road, options);
+  reference_psd_ = terrain::iso8608ReferencePsd(road.road_class);
+  const DofIndex inputs = modal.inputCount();
+  const Vector& stations = modal.inputStations();
+  if (inputs == 0)
+    fail("the model has no road input");
+  if (stations.size() != inputs)
+    fail("the model has " + std::to_string(stations.size()) + " input stations for " +
+         std::to_string(inputs) + " inputs");
+  detail::requireLength("spectral ride", "input lateral positions", input_lateral, inputs);
+  if (!stations.allFinite() || !input_lateral.allFinite())
+    fail("input stations and lateral positions must be finite");
+  if (output_rows.empty())
+    fail("no output to rate");
+  output_.resize(static_cast<Eigen::Index>(output_rows.size()), modal.modeCount());
+  for (std::size_t i = 0; i < output_rows.size(); ++i) {
+    const DofIndex row = output_rows[i];
+    if (row < 0 || row >= modal.outputCount())
+      fail("output row " + std::to_string(row) + " is not one of the model's " +
+           std::to_string(modal.outputCount()) + " outputs");
+    output_.row(static_cast<Eigen::Index>(i)) = modal.modalOutput().row(row);
+  }
+  omega_squared_ = modal.naturalFrequencies().cwiseAbs2();
+  damping_ = modal.dampingCoefficients();
+
+  // Per side, the weight of each input in that side's profile: Uniform, every input 1 on the one
+  // profile; IndependentSides, w_L on the left and 1 - w_L on the right.
+  std::vector<Vector> weights;
+  if (road.correlation == terrain::LateralCorrelation::Uniform) {
+    weights.push_back(Vector::Ones(inputs));
+  } else {
+    Vector left(inputs);
+    for (DofIndex q = 0; q < inputs; ++q)
+      left(q) = leftWeight(input_lateral(q), road.side_gap);
+    weights.push_back(left);
+    weights.push_back(Vector::Ones(inputs) - left);
+  }
+  // L_q behind the front-most input (InputDelay::travelling).
+  const double front = stations.maxCoeff();
+  const Matrix& k_u = modal.modalInputStiffness();
+  const Matrix& c_u = modal.modalInputDamping();
+  for (const Vector& w : weights) {
+    // Inputs of one station and one weight see one signal: their columns are summed once here,
+    // which divides the per-frequency work by the inputs per station (12 on the tracked reduced
+    // model: 360 inputs at 30 stations).
+    std::map<std::pair<double, double>, std::vector<DofIndex>> groups;
+    for (DofIndex q = 0; q < inputs; ++q)
+      if (w(q) != 0.0)
+        groups[{stations(q), w(q)}].push_back(q);
+    Side side;
+    const auto count = static_cast<Eigen::Index>(groups.size());
+    side.lags.resize(count);
+    side.input = Matrix::Zero(modal.modeCount(), 2 * count);
+    Eigen::Index g = 0;
+    for (const auto& [key, members] : groups) {
+      side.lags(g) = front - key.first;
+      for (DofIndex q : members) {
+        side.input.col(g) += key.second * k_u.col(q);
+        side.input.col(count + g) += key.second * c_u.col(q);
+      }
+      ++g;
+    }
+    sides_.push_back(std::move(side));
+  }
+}
+
+Vector SpectralRide::grid(double speed) const {
+  checkSpeed(speed);
+  const double low = speed * road_.min_frequency, high = speed * road_.max_frequency;
+  const double decades = std::log10(high / low);
+  const auto count = std::max<Eigen::Index>(
+      2, static_cast<Eigen::Index>(std::ceil(options_.points_per_decade * decades - 1e-9)) + 1);
+  Vector f(count);
+  for (Eigen::Index i = 0; i < count; ++i)
+    f(i) = low * std::pow(high / low, static_cast<double>(i) / static_cast<double>(count - 1));
+  f(0) = low;
+  f(count - 1) = high;
+  return f;
+}
+
+std::vector<DofIndex> SpectralRide::inputGroupCounts() const {
+  std::vector<DofIndex> counts;
+  for (const Side& s : sides_)
+    counts.push_back(s.lags.size());
+  return counts;
+}
+
+SpectralRideResult SpectralRide::evaluate(double speed) const {
+  const Vector f = grid(speed);
+  const Eigen::Index count = f.size(), outputs = output_.rows(), modes = output_.cols();
+
+  // Σ_sides |H_v,side|^2 per frequency and output.
+  Matrix gain = Matrix::Zero(count, outputs);
+  Matrix x, forces, eta(modes, 2 * kBlock), y;
+  for (Eigen::Index first = 0; first < count; first += kBlock) {
+    const Eigen::Index nb = std::min(kBlock, count - first);
+    for (const Side& side : sides_) {
+      const Eigen::Index groups = side.lags.size();
+      // [Re τ, Im τ; -ω Im τ, ω Re τ], τ_g = exp(-jω L_g / v): times [Φ^T K_u | Φ^T C_u] it gives
+      // [Re F | Im F] of F = (Φ^T K_u + jω Φ^T C_u) τ.
+      x.resize(2 * groups, 2 * nb);
+      for (Eigen::Index i = 0; i < nb; ++i) {
+        const double omega = kTwoPi * f(first + i);
+        for (Eigen::Index g = 0; g < groups; ++g) {
+          const double phase = omega * side.lags(g) / speed;
+          const double re = std::cos(phase), im = -std::sin(phase);
+          x(g, i) = re;
+          x(g, nb + i) = im;
+          x(groups + g, i) = -omega * im;
+          x(groups + g, nb + i) = omega * re;
+        }
+      }
+      forces.noalias() = side.input * x;
+      // η_r = F_r / D_r, D_r = ω_r^2 - ω^2 + j d_r ω.
+      eta.resize(modes, 2 * nb);
+      for (Eigen::Index i = 0; i < nb; ++i) {
+        const double omega = kTwoPi * f(first + i);
+        for (Eigen::Index r = 0; r < modes; ++r) {
+          const std::complex<double> d(omega_squared_(r) - omega * omega, damping_(r) * omega);
+          const std::complex<double> e = std::complex<double>(forces(r, i), forces(r, nb + i)) / d;
+          eta(r, i) = e.real();
+          eta(r, nb + i) = e.imag();
+        }
+      }
+      y.noalias() = output_ * eta;
+      // Acceleration -ω^2 H Φ η: |.|^2 = ω^4 |H Φ η|^2.
+      for (Eigen::Index i = 0; i < nb; ++i) {
+        const double omega = kTwoPi * f(first + i);
+        const double omega4 = omega * omega * omega * omega;
+        for (Eigen::Index o = 0; o < outputs; ++o)
+          gain(first + i, o) += omega4 * (y(o, i) * y(o, i) + y(o, nb + i) * y(o, nb + i));
+      }
+    }
+  }
+
+  // Trapezoidal weights on the (non-uniform) grid: ∫ g df ≈ Σ_i w_i g_i.
+  Vector weight(count);
+  for (Eigen::Index i = 0; i < count; ++i)
+    weight(i) = 0.5 * (f(std::min(i + 1, count - 1)) - f(std::max<Eigen::Index>(i - 1, 0)));
+  const std::vector<AnalogSection> power_filter = absorbedPowerVerticalSections();
+  SpectralRideResult result;
+  result.speed = speed;
+  Vector road_psd(count);
+  Vector sum_squares = Vector::Zero(outputs), sum_weighted = Vector::Zero(outputs),
+         sum_power = Vector::Zero(outputs);
+  for (Eigen::Index i = 0; i < count; ++i) {
+    // S_h = G_d(f / v) / v; every grid point lies in [v n_min, v n_max].
+    road_psd(i) = reference_psd_ *
+                  std::pow(f(i) / (speed * terrain::kIso8608ReferenceFrequency), -road_.waviness) /
+                  speed;
+    result.road_variance += weight(i) * road_psd(i);
+    const double wk = std::norm(iso2631Response(Weighting::Wk, f(i)));
+    const double k = std::norm(analogResponse(power_filter, f(i)));
+    for (Eigen::Index o = 0; o < outputs; ++o) {
+      const double s = weight(i) * gain(i, o) * road_psd(i);
+      sum_squares(o) += s;
+      sum_weighted(o) += wk * s;
+      sum_power(o) += k * s;
+    }
+  }
+  for (Eigen::Index o = 0; o < outputs; ++o)
+    result.outputs.push_back({std::sqrt(sum_squares(o)), std::sqrt(sum_weighted(o)), sum_power(o)});
+  if (options_.keep_psd) {
+    result.frequencies_hz = f;
+    result.psd = gain.array().colwise() * road_psd.array();
+    result.road_psd = std::move(road_psd);
+  }
+  return result;
+}
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,62 @@
+#include "ride_report.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named) {
+  std::vector<std::string> known = {"hull"};
+  known.insert(known.end(), named.begin(), named.end());
+  if (spec.empty()) return known;
+  std::vector<std::string> chosen;
+  std::istringstream in(spec);
+  std::string name;
+  while (std::getline(in, name, ',')) {
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw InputError("ride: --points: the model has no point '" + name + "' (it has " + list + ")");
+    }
+    if (std::find(chosen.begin(), chosen.end(), name) != chosen.end())
+      throw InputError("ride: --points: '" + name + "' is listed twice");
+    chosen.push_back(name);
+  }
+  if (chosen.empty() || spec.back() == ',') throw InputError("ride: --points: an empty name in '" + spec + "'");
+  return chosen;
+}
+
+void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit, const char* unit) {
+  json.beginObject()
+      .field("limit", limit)
+      .field("unit", std::string(unit))
+      .field("status", std::string(dynamics::limitStatusName(c.status)))
+      .field("speed_kmh", c.speed)
+      .field("bracket_kmh", std::vector<double>{c.lower, c.upper})
+      .field("refinements", static_cast<long long>(c.refinements))
+      .endObject();
+}
+
+std::string describeLimit(const dynamics::LimitCrossing& c, const std::string& what) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2);
+  switch (c.status) {
+    case dynamics::LimitCrossing::Status::Reached:
+      out << what << " at " << c.speed << " km/h (between " << c.lower << " and " << c.upper << ")";
+      break;
+    case dynamics::LimitCrossing::Status::AtLowest:
+      out << what << " already at the lowest speed, " << c.speed << " km/h";
+      break;
+    case dynamics::LimitCrossing::Status::NotReached:
+      out << what << " not reached up to " << c.speed << " km/h";
+      break;
+  }
+  return out.str();
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

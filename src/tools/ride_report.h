@@ -1,0 +1,26 @@
+// What both methods of `tvd ride` report alike: the points rated and the limit speeds found.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
+#include "tracked_vehicle_dynamics/io/json_writer.h"
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+/// The points the user asked for (`spec`, comma-separated), or "hull" and every named point when
+/// `spec` is empty. Throws InputError for a point the model lacks, one listed twice or an empty
+/// name.
+std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named);
+
+/// {limit, unit, status, speed_kmh, bracket_kmh, refinements} of one crossing.
+void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit, const char* unit);
+
+/// "6 W at 14.03 km/h (between 14.00 and 14.06)", "... already at the lowest speed, ...",
+/// "... not reached up to ... km/h"; `what` names the limit ("6 W").
+std::string describeLimit(const dynamics::LimitCrossing& c, const std::string& what);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
