@@ -274,8 +274,8 @@ void registerRideCommand(CLI::App& app) {
                              ->check(CLI::IsMember({"untracked", "tracked"}));
   CLI::Option* track =
       cmd->add_option("--track", opt->track,
-                       "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 m) or terrain file (CSV/YAML), e.g. an "
-                       "ISO 8608 road from tvd terrain: "
+                      "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 m) or terrain file (CSV/YAML), e.g. an "
+                      "ISO 8608 road from tvd terrain: "
                       "simulated in time at every speed");
   CLI::Option* iso = cmd->add_option(
       "--iso8608", opt->iso_class,
