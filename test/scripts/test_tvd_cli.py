@@ -326,6 +326,9 @@ class TvdCliTest(unittest.TestCase):
         np.testing.assert_allclose(namespace["frequencies_hz"][:6], full["frequencies_hz"], rtol=1e-3)
         self.assertAlmostEqual(namespace["hull_sag_m"] / full["static"]["hull_sag_m"], 1.0, delta=1e-6)
         self.assertEqual(namespace["A"].shape, (862, 862))
+        # The full FE model's static pitch under 0.3 g braking (test_travel_inertia: 0.314577
+        # mrad; the reduced model's equals it to 1e-11).
+        self.assertAlmostEqual(namespace["brake_pitch_mrad"] / 0.314577, 1.0, delta=1e-5)
 
     def test_simulate_json_and_csv_agree(self):
         speed_kmh = 50.0
