@@ -11,6 +11,8 @@
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 #include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
@@ -505,6 +507,39 @@ TEST(OnlineVehicle, ConstantBrakingPitchesToTheStaticValueAndTheImuReadsTheBraki
   EXPECT_EQ(vehicle.speed(), 0.0);
   EXPECT_EQ(vehicle.travelAcceleration(), 0.0);
   EXPECT_NEAR(vehicle.hullDisplacement()(4), rest(4), 1e-2 * pitch);
+}
+
+TEST(OnlineVehicle, BrakingPaperVehicleSettlesToTheReducedModelsStaticPitch) {
+  // The bundled vehicle (un-tracked, reduced as the node reduces it) braking at 1 m/s^2 from
+  // 25 m/s for 20 s on flat ground: its hull pitch settles to a H K_R^-1 travel_load, the steady
+  // value of tvd simulate and test_travel_inertia (5 % modal damping: the onset's transient is
+  // below 0.1 % after 20 s), nose down.
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(
+      std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const reduction::ReducedModel model =
+      reduction::reduceVehicle(description, vehicle::Variant::Untracked, {});
+  constexpr double kBraking = 1.0;  // [m/s^2]
+  OnlineVehicle vehicle(model, vehicleGeometry(description), slewing(1.0, kBraking));
+  TerrainPatch flat;
+  flat.start_station = -10.0;
+  flat.spacing = 1.0;
+  flat.lateral = Eigen::Vector2d(-3.0, 3.0);
+  flat.heights = Matrix::Zero(2, 400);
+  vehicle.addTerrain(flat);
+  vehicle.resetTo(0.0, 25.0, ResetTerrain::Keep);
+  const double rest = vehicle.hullDisplacement()(4);
+  vehicle.setSpeed(0.0);
+  for (int k = 0; k < 20000; ++k)
+    ASSERT_EQ(vehicle.step().uncovered, 0) << k;
+  ASSERT_NEAR(vehicle.travelAcceleration(), -kBraking, 1e-6);
+  const auto& names = model.system.output_names;
+  const auto ry = std::find(names.begin(), names.end(), "hull ry") - names.begin();
+  const double pitch =
+      -kBraking * (model.system.output * model.system.stiffness.ldlt().solve(model.travel_load))(ry);
+  EXPECT_GT(pitch, 0.0);  // nose down
+  EXPECT_NEAR(vehicle.hullDisplacement()(4) - rest, pitch, 1e-2 * pitch);
+  // Settled, the crew seat's accelerometer reads the braking along the path's x.
+  EXPECT_NEAR(vehicle.pointAcceleration(0).x(), -kBraking, 1e-2 * kBraking);
 }
 
 #if defined(__GLIBC__)  // the allocation counter hooks glibc's malloc
