@@ -304,6 +304,9 @@ void run(const SimulateOptions& opt) {
   std::cout << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
             << "  peak road-wheel displacement " << peak_wheel << " m\n";
+  if (travel)
+    std::cout << "  peak travel acceleration " << series.col(travel_column).cwiseAbs().maxCoeff()
+              << " m/s^2 (its inertia loads the model; x accelerations are absolute)\n";
   for (const std::string& point : layout.points)
     std::cout << "  peak at " << point << ": vertical displacement " << peak(point + "_vertical_m")
               << " m, vertical acceleration " << peak(point + "_accel_z_m_s2") << " m/s^2\n";
@@ -327,7 +330,8 @@ void registerSimulateCommand(CLI::App& app) {
   CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
   cmd->add_option("--speed-profile", opt->speed_profile,
                   "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), linear "
-                  "between rows; the run ends at the track's end or the profile's")
+                  "between rows; the run ends at the track's end or the profile's; its "
+                  "acceleration's inertia loads the model (braking pitches the nose down)")
       ->check(CLI::ExistingFile)
       ->excludes(speed);
   // Up to 10 ms: 100 Hz sampling still resolves the 0-30 Hz band, and ISO 2631's Wk weighting
