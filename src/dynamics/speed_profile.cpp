@@ -62,6 +62,12 @@ double SpeedProfile::station(double t) const {
   return station_[k] + speed_[k] * tau + (speed_[k + 1] - speed_[k]) * tau * tau / (2.0 * h);
 }
 
+double SpeedProfile::acceleration(double t) const {
+  const std::size_t k = segment(t);
+  if (k + 1 == time_.size()) return 0.0;  // the speed is held after the last sample
+  return (speed_[k + 1] - speed_[k]) / (time_[k + 1] - time_[k]);
+}
+
 double SpeedProfile::maxSpeed() const { return *std::max_element(speed_.begin(), speed_.end()); }
 
 }  // namespace dynamics

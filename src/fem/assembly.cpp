@@ -140,6 +140,12 @@ System assemble(const Model& model, const AssemblyOptions& options) {
   for (DofIndex n = 0; n < static_cast<DofIndex>(model.nodes.size()); ++n)
     accel.segment<3>(n * kDofsPerNode) = model.gravity;
   sys.gravity_load = t.transpose() * (m_phys * accel);
+  // Travel inertia per unit forward acceleration a of the path frame (d'Alembert): the same
+  // consistent projection with a = -e_x, f_a = -T^T M_phys e_x.
+  Vector forward = Vector::Zero(n_phys);
+  for (DofIndex n = 0; n < static_cast<DofIndex>(model.nodes.size()); ++n)
+    forward(n * kDofsPerNode) = -1.0;
+  sys.travel_load = t.transpose() * (m_phys * forward);
 
   for (const auto& [name, refs] : model.dof_sets) {
     auto& out = sys.dof_sets[name];

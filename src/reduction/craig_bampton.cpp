@@ -72,6 +72,7 @@ struct Inputs {
   const SparseMatrix* ku = nullptr;
   const SparseMatrix* cu = nullptr;
   const Vector* gravity = nullptr;
+  const Vector* travel = nullptr;  // f_a, the travel inertia per unit forward acceleration
 };
 
 void checkInputs(const Inputs& in, const std::vector<DofIndex>& masters,
@@ -226,6 +227,8 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
   result.input_stiffness = in.ku ? Matrix(t.transpose() * *in.ku) : Matrix(m + r, 0);
   result.input_damping = in.cu ? Matrix(t.transpose() * *in.cu) : Matrix(m + r, inputs);
   result.gravity_load = in.gravity ? Vector(t.transpose() * *in.gravity) : Vector::Zero(m + r);
+  // A load reduces like gravity: its work on x = T x_R is x_R^T (T^T f).
+  result.travel_load = in.travel ? Vector(t.transpose() * *in.travel) : Vector::Zero(m + r);
   result.masters = masters;
   result.recovery.resize(static_cast<DofIndex>(options.recovery_dofs.size()), m + r);
   for (std::size_t i = 0; i < options.recovery_dofs.size(); ++i)
@@ -251,7 +254,13 @@ CraigBamptonResult craigBampton(const fem::System& system, const std::vector<Dof
     throw InputError("craigBampton: gravity load has " +
                      std::to_string(system.gravity_load.size()) + " entries, expected " +
                      std::to_string(n));
-  Inputs in{system.stiffness, system.mass, system.damping, &ku, &cu, &system.gravity_load};
+  if (system.travel_load.size() != n)
+    throw InputError("craigBampton: travel inertia load has " +
+                     std::to_string(system.travel_load.size()) + " entries, expected " +
+                     std::to_string(n));
+  Inputs in{system.stiffness, system.mass,         system.damping,
+            &ku,              &cu,                 &system.gravity_load,
+            &system.travel_load};
   return reduce(in, masters, options);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
@@ -77,6 +78,19 @@ void FullModelReference::addResidual(const Matrix& inputs, dynamics::OutputQuant
   }
 }
 
+FullModelReference FullModelReference::withTravelInertia() const {
+  FullModelReference out = *this;
+  out.modal = dynamics::withTravelInertia(modal, modal_travel);
+  // [H R K_u | H R C_u] -> [H R K_u, H R f_a | H R C_u, 0]: the travel input's rate carries no
+  // load (C_u' = [C_u, 0]).
+  const DofIndex n_u = modal.inputCount();
+  const DofIndex n_y = residual_input.rows();
+  out.residual_input.resize(n_y, 2 * (n_u + 1));
+  out.residual_input << residual_input.leftCols(n_u), residual_travel,
+      residual_input.rightCols(n_u), Vector::Zero(n_y);
+  return out;
+}
+
 dynamics::ComplexMatrix FullModelReference::frf(const Vector& frequencies_hz,
                                                 const dynamics::InputDelay& delay,
                                                 dynamics::OutputQuantity quantity) const {
@@ -143,6 +157,13 @@ FullModelReference buildFullReference(const fem::System& system,
   ref.modal_gravity = phi.transpose() * f_g;
   ref.residual_gravity =
       g.transpose() * f_g - h_phi * inverse_omega2.asDiagonal() * ref.modal_gravity;
+  const Vector& f_a = system.travel_load;
+  if (f_a.size() != system.size())
+    throw InputError("full-model reference: travel inertia load has " + std::to_string(f_a.size()) +
+                     " entries, expected " + std::to_string(system.size()));
+  ref.modal_travel = phi.transpose() * f_a;
+  ref.residual_travel =
+      g.transpose() * f_a - h_phi * inverse_omega2.asDiagonal() * ref.modal_travel;
 
   // The modal coordinates, damped as the options say (discrete dampers projected on top).
   dynamics::SecondOrderSystem& s = ref.modal;

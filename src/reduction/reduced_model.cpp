@@ -125,6 +125,7 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   inputPositions(system, request.input_stations, &s.input_stations, &s.input_lateral);
 
   model.gravity_load = cb.gravity_load;
+  model.travel_load = cb.travel_load;
   if (!request.master_groups.empty() && request.master_groups.size() != request.masters.size())
     throw std::logic_error("buildReducedModel: " + std::to_string(request.master_groups.size()) +
                            " master groups for " + std::to_string(request.masters.size()) + " masters");

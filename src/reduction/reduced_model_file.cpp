@@ -80,6 +80,7 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
       numeric("K_u", s.input_stiffness),
       numeric("C_u", s.input_damping),
       numeric("gravity_load", column(model.gravity_load)),
+      numeric("travel_load", column(model.travel_load)),
       numeric("H", s.output),
       texts("output_names", s.output_names),
       texts("dof_labels", model.dof_labels),
@@ -182,6 +183,7 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
   checkSize(where, "C_u", s.input_damping, k, inputs);
   checkSize(where, "H", s.output, s.output.rows(), k);
   checkCount(where, "gravity_load", static_cast<std::size_t>(model.gravity_load.size()), k);
+  checkCount(where, "travel_load", static_cast<std::size_t>(model.travel_load.size()), k);
   checkCount(where, "output_names", s.output_names.size(), s.output.rows());
   checkCount(where, "dof_labels", model.dof_labels.size(), k);
   checkCount(where, "input_labels", model.input_labels.size(), inputs);
@@ -203,6 +205,8 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
        {&s.mass, &s.stiffness, &s.damping, &s.input_stiffness, &s.input_damping, &s.output})
     if (!a->allFinite())
       throw InputError(where + ": a system matrix has a non-finite entry");
+  if (!model.gravity_load.allFinite() || !model.travel_load.allFinite())
+    throw InputError(where + ": gravity_load or travel_load has a non-finite entry");
   checkSymmetric(where, "M_R", s.mass, symmetry_tolerance);
   checkSymmetric(where, "K_R", s.stiffness, symmetry_tolerance);
   checkSymmetric(where, "C_R", s.damping, symmetry_tolerance);
@@ -259,6 +263,7 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
   s.input_stiffness = in.readMatrix("K_u");
   s.input_damping = in.readMatrix("C_u");
   model.gravity_load = vectorOf(in, "gravity_load");
+  model.travel_load = vectorOf(in, "travel_load");
   s.output = in.readMatrix("H");
   s.output_names = in.readStrings("output_names");
   model.dof_labels = in.readStrings("dof_labels");

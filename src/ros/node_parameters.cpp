@@ -145,6 +145,9 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   v.comfort_running_rms_time =
       in.positive("comfort_running_rms_time", v.comfort_running_rms_time, "s");
   v.terrain_keep_behind = in.nonNegative("terrain_keep_behind", v.terrain_keep_behind, "m");
+  // Speed slew (online_vehicle.h): 0 and 0 = a new speed applies at once, without travel inertia.
+  v.max_acceleration = in.nonNegative("max_acceleration", v.max_acceleration, "m/s^2");
+  v.max_deceleration = in.nonNegative("max_deceleration", v.max_deceleration, "m/s^2");
 
   p.max_speed = in.positive("max_speed", p.max_speed, "m/s");
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");

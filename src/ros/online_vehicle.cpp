@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <unordered_map>
+#include <utility>
 
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -31,6 +34,29 @@ dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
   comfort.running_rms_time = options.comfort_running_rms_time;
   comfort.absorbed_power = dynamics::absorbedPowerVerticalSections();  // comfort.h: Chrono's filter
   return comfort;
+}
+
+// a_max and d_max of the options, checked; one 0 and the other > 0: the 0 one takes the other's
+// value (online_vehicle.h).
+std::pair<double, double> slewRates(const OnlineVehicleOptions& options) {
+  for (const auto& [name, value] : {std::pair<const char*, double>{"max_acceleration", options.max_acceleration},
+                                    std::pair<const char*, double>{"max_deceleration", options.max_deceleration}})
+    if (!std::isfinite(value) || value < 0.0)
+      throw InputError(std::string("online vehicle: ") + name + " " + std::to_string(value) +
+                       " m/s^2 must be finite and not negative");
+  const double a = options.max_acceleration > 0.0 ? options.max_acceleration : options.max_deceleration;
+  const double d = options.max_deceleration > 0.0 ? options.max_deceleration : options.max_acceleration;
+  return {a, d};
+}
+
+// The system the simulator runs: the model, with the travel inertia input when the speed slews.
+dynamics::SecondOrderSystem simulatedSystem(const reduction::ReducedModel& model,
+                                            const OnlineVehicleOptions& options) {
+  if (slewRates(options).first == 0.0) return model.system;
+  if (model.travel_load.size() != model.size())
+    throw InputError("online vehicle: the reduced model has no travel inertia load (travel_load), "
+                     "which a speed slew (max_acceleration, max_deceleration) needs");
+  return dynamics::withTravelInertia(model.system, model.travel_load);
 }
 
 }  // namespace
@@ -59,7 +85,7 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
     : geometry_(std::move(geometry)),
       options_(options),
       time_step_(1.0 / options.rate),
-      simulator_(model.system, simulatorOptions(model, options)),
+      simulator_(simulatedSystem(model, options), simulatorOptions(model, options)),
       sampler_(model.system.input_stations, model.system.input_lateral,
                inputsWithRate(model.system)),
       comfort_(options.rate, comfortOptions(options)),
@@ -95,7 +121,9 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
     comfort_point_ = "hull";
   comfort_row_ = acc_offset_ + outputRow(comfort_point_ + " uz");
 
+  std::tie(max_acceleration_, max_deceleration_) = slewRates(options);
   input_.setZero(simulator_.inputCount());
+  road_input_.setZero(2 * sampler_.size());
   equilibrium_ = equilibrium_solver_.solve(Vector::Zero(sampler_.size()));
   wheel_states_.resize(geometry_.wheels.size());
   for (std::size_t i = 0; i < geometry_.wheels.size(); ++i) {
@@ -142,6 +170,8 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
                      " m is not finite");
   }
   setSpeed(speed);  // validates first: a bad speed throws before anything changes
+  speed_ = speed;   // at once, also with a slew: the vehicle restarts at rest relative to it
+  travel_acceleration_ = 0.0;
   station_ = station;
   peak_acceleration_ = 0.0;
   int uncovered = 0;
@@ -153,8 +183,8 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
   } else {
     // The input the next step interpolates from (first-order hold) is the one a step at this
     // station would have sampled, u' included; the state is at rest on its heights u.
-    uncovered = sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &input_);
-    simulator_.reset(equilibrium_solver_.solve(input_.head(sampler_.size())), input_);
+    uncovered = sampleInput();
+    simulator_.reset(equilibrium_solver_.solve(road_input_.head(sampler_.size())), input_);
   }
   comfort_.reset();
   return uncovered;
@@ -170,13 +200,35 @@ void OnlineVehicle::setSpeed(double speed) {
     throw InputError("online vehicle: speed " + std::to_string(speed) +
                      " m/s must be finite and not negative");
   }
-  speed_ = speed;
+  commanded_speed_ = speed;
+  if (!slews()) speed_ = speed;
+}
+
+int OnlineVehicle::sampleInput() {
+  const int uncovered =
+      sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &road_input_);
+  if (slews())
+    dynamics::widenTravelInput(road_input_, travel_acceleration_, input_);
+  else
+    input_ = road_input_;  // same size: a copy, no allocation
+  return uncovered;
 }
 
 StepResult OnlineVehicle::step() {
   StepResult result;
-  station_ += speed_ * time_step_;
-  result.uncovered = sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &input_);
+  if (slews()) {
+    // v_{k+1} = v_k + clamp(v_c - v_k, -d_max h, a_max h); the commanded speed itself once
+    // within reach (exactly, not to rounding). s advances by the trapezoid, exact for constant a.
+    const double rise = max_acceleration_ * time_step_, fall = max_deceleration_ * time_step_;
+    const double change = commanded_speed_ - speed_;
+    const double next = change > rise ? speed_ + rise : change < -fall ? speed_ - fall : commanded_speed_;
+    travel_acceleration_ = (next - speed_) / time_step_;
+    station_ += 0.5 * (speed_ + next) * time_step_;
+    speed_ = next;
+  } else {
+    station_ += speed_ * time_step_;
+  }
+  result.uncovered = sampleInput();
   simulator_.step(input_);
   const double acceleration = simulator_.outputs()(comfort_row_);
   if (!simulator_.outputs().allFinite()) {
@@ -245,7 +297,9 @@ Vector3 OnlineVehicle::pointAcceleration(std::size_t i) const {
   // elastic part, zero for a point on the rigid hull; the rigid part is then taken exactly.
   const Vector3 elastic =
       pointBlock(i, acc_offset_) - (ddu.head<3>() + ddu.tail<3>().cross(p - geometry_.cog));
-  return rigidPointAcceleration(geometry_.cog, u, du, ddu, p) + elastic;
+  // Relative to the path frame, plus the frame's own acceleration along odom x.
+  return rigidPointAcceleration(geometry_.cog, u, du, ddu, p) + elastic +
+         Vector3(travel_acceleration_, 0.0, 0.0);
 }
 
 }  // namespace ros_layer

@@ -595,8 +595,9 @@ void VehicleDynamicsNode::step() {
   if (t.isZero())
     return;  // use_sim_time and no /clock yet
   // A driver that stopped publishing must not leave the vehicle driving on: it stops where it is
-  // and the next speed message moves it again.
-  if (params_.speed_timeout > 0.0 && vehicle_->speed() > 0.0 &&
+  // and the next speed message moves it again. With a speed slew it brakes to a stop at
+  // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
+  if (params_.speed_timeout > 0.0 && vehicle_->commandedSpeed() > 0.0 &&
       (t - last_speed_time_).toSec() > params_.speed_timeout) {
     ROS_WARN("vehicle_dynamics_node: no speed message for %.3f s (~speed_timeout %.3f s): "
              "stopping the vehicle at station %.3f m",
@@ -770,7 +771,7 @@ void VehicleDynamicsNode::publishState() {
         continue;
       // The point's frame is parallel to base_link: the hull's orientation and body rate, and
       // the specific force of the point's acceleration, the second derivative of its published
-      // position (REP-145: gravity included).
+      // position plus the travel acceleration along odom x (REP-145: gravity included).
       sensor_msgs::Imu& msg = imu_msgs_[k];
       msg.header.stamp = sample_time_;
       msg.orientation = toMsg(pose.rotation);
@@ -783,7 +784,10 @@ void VehicleDynamicsNode::publishState() {
   if (accel) {
     const Vector6 acceleration = v.hullAcceleration();
     accel_msg_.header.stamp = sample_time_;
-    accel_msg_.accel.linear = toMsg(to_base * acceleration.head<3>());
+    // Absolute: the model's acceleration relative to the path frame plus the frame's own travel
+    // acceleration along odom x (0 without a speed slew), in base_link axes.
+    accel_msg_.accel.linear = toMsg(
+        to_base * (acceleration.head<3>() + Vector3(v.travelAcceleration(), 0.0, 0.0)));
     // The derivative of the body rate on hull/twist.
     accel_msg_.accel.angular = toMsg(
         bodyAcceleration(displacement.tail<3>(), velocity.tail<3>(), acceleration.tail<3>()));
@@ -908,6 +912,10 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
   }
   status.add("speed [m/s]", vehicle_->speed());
+  if (vehicle_->slews()) {  // ~max_acceleration / ~max_deceleration
+    status.add("commanded speed [m/s]", vehicle_->commandedSpeed());
+    status.add("travel acceleration [m/s^2]", vehicle_->travelAcceleration());
+  }
   status.add("max speed [m/s]", params_.max_speed);
   status.add("speeds accepted (total)", events_.speeds_accepted);
   status.add("speeds rejected (total)", events_.speeds_rejected);

@@ -52,6 +52,8 @@ double Drive::station(long k) const {
 
 double Drive::speed(long k) const { return profile_ ? profile_->speed(k * dt_) : speed_; }
 
+double Drive::acceleration(long k) const { return profile_ ? profile_->acceleration(k * dt_) : 0.0; }
+
 Matrix Drive::denseInputs(const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
                           long first, long count) const {
   if (!profile_) return road.sampleSeries(lines, start_, speed_, dt_, first, count);

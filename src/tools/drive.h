@@ -32,6 +32,9 @@ class Drive {
   double station(long k) const;
   /// Speed at sample k [m/s].
   double speed(long k) const;
+  /// Forward acceleration at sample k [m/s^2]: the profile's exact derivative (piecewise constant
+  /// between its rows, SpeedProfile::acceleration), 0 at constant speed.
+  double acceleration(long k) const;
   /// Whether the speed follows a profile (else it is constant).
   bool varyingSpeed() const { return profile_.has_value(); }
 

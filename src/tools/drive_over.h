@@ -20,6 +20,11 @@ using SampleSink = std::function<void(long k, const OutputRow& outputs)>;
 
 /// Resets `sim` (built from `system`) to static equilibrium under `gravity` on the road inputs of
 /// sample 0, at rest relative to the track, then steps it through every sample of `drive`.
+/// When `system` has one input more than `road` it is a travel-inertia system
+/// (dynamics::withTravelInertia, travel_inertia.h) and that input carries the drive's forward
+/// acceleration a(t) (drive.acceleration(k)). The static start is under gravity alone (a = 0): the
+/// displacements are then reported from the vehicle's rest state whatever the profile does, and a
+/// profile that brakes or accelerates from t = 0 applies a(0) as a step when the run starts.
 /// `full`, when given, is the full model whose static residual is added to the displacements
 /// (system = full->modal). At constant speed without `full` the inputs are sampled by their
 /// changes (sampleHeldSeries), otherwise every input at every sample.

@@ -26,6 +26,7 @@
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
+#include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
@@ -94,8 +95,21 @@ void run(const SimulateOptions& opt) {
     reduced = obtainReducedModel(description, variant, opt.variant_given, "simulate", opt.reduced);
     variant = reduced->variant;  // a --reduced file's
   }
-  const dynamics::SecondOrderSystem& sys = full ? full->modal : reduced->model.system;
+  const dynamics::SecondOrderSystem& model_sys = full ? full->modal : reduced->model.system;
   const Vector& gravity = full ? full->modal_gravity : reduced->model.gravity_load;
+  // A varying speed accelerates the path frame the model lives in: the travel acceleration a(t)
+  // rides as one more input (travel_inertia.h). At constant speed the model is run as it is,
+  // so those runs are unchanged.
+  const bool travel = profile.has_value();
+  std::unique_ptr<reduction::FullModelReference> full_travel;
+  dynamics::SecondOrderSystem reduced_travel;
+  if (travel && full)
+    full_travel = std::make_unique<reduction::FullModelReference>(full->withTravelInertia());
+  else if (travel)
+    reduced_travel = dynamics::withTravelInertia(model_sys, reduced->model.travel_load);
+  const reduction::FullModelReference* full_run = full_travel ? full_travel.get() : full.get();
+  const dynamics::SecondOrderSystem& sys =
+      full_run ? full_run->modal : travel ? reduced_travel : model_sys;
   const bool from_cache = reduced && reduced->kind == ReducedModelSource::Kind::Cache;
 
   dynamics::SimulatorOptions sim_options;
@@ -112,7 +126,9 @@ void run(const SimulateOptions& opt) {
   dynamics::Simulator sim(sys, sim_options);
   const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
 
-  const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
+  // The road under the model's own inputs (the travel input reads none).
+  const dynamics::RoadExcitation road(model_sys.input_stations, model_sys.input_lateral,
+                                      opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
   if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
     warnings.push_back(*w);
@@ -147,11 +163,28 @@ void run(const SimulateOptions& opt) {
 
   constexpr int kFirstColumn = 2;  // after time and station
   const auto first_road = static_cast<Eigen::Index>(kFirstColumn + layout.columns.size());
-  Matrix series(steps + 1, first_road + static_cast<Eigen::Index>(roads.size()));
+  // The last column: the travel acceleration a(t) (0 at constant speed).
+  const auto travel_column = first_road + static_cast<Eigen::Index>(roads.size());
+  Matrix series(steps + 1, travel_column + 1);
+  // The model's accelerations are relative to the path frame; along x an accelerometer on the
+  // hull also reads the frame's own acceleration: absolute x acceleration = relative + a(t), so
+  // the x columns and ISO 2631's a_wx of a braking run include the braking.
+  std::vector<DofIndex> x_accelerations;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i].size() > 7 && names[i].compare(names[i].size() - 7, 7, " ux/acc") == 0)
+      x_accelerations.push_back(static_cast<DofIndex>(i));
+  Eigen::RowVectorXd absolute(static_cast<Eigen::Index>(names.size()));
   Vector y0;
   const auto start = Clock::now();
-  driveOver(sim, sys, gravity, drive, road, lines, full.get(),
-            [&](long k, const OutputRow& y) {
+  driveOver(sim, sys, gravity, drive, road, lines, full_run,
+            [&](long k, const OutputRow& relative) {
+              const double a = drive.acceleration(k);
+              series(k, travel_column) = a;
+              if (travel) {
+                absolute = relative;
+                for (const DofIndex r : x_accelerations) absolute(r) += a;
+              }
+              const OutputRow y = travel ? OutputRow(absolute) : relative;
               if (k == 0) y0 = y.transpose();
               series(k, 0) = k * opt.dt;
               series(k, 1) = drive.station(k);
@@ -192,6 +225,7 @@ void run(const SimulateOptions& opt) {
     std::vector<std::string> headers = {"time_s", "station_m"};
     for (const SimulationColumn& col : layout.columns) headers.push_back(col.header);
     for (const RoadUnderWheel& r : roads) headers.push_back(r.header);
+    headers.push_back("travel_accel_m_s2");
     writeTable(opt.out_file, headers, series, 9,
                {{"vehicle", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
@@ -232,7 +266,8 @@ void run(const SimulateOptions& opt) {
         .field("peak_pitch_rate_deg_s", peak("hull_pitch_rate_deg_s"))
         .field("peak_roll_rate_deg_s", peak("hull_roll_rate_deg_s"))
         .field("peak_pitch_accel_deg_s2", peak("hull_pitch_accel_deg_s2"))
-        .field("peak_roll_accel_deg_s2", peak("hull_roll_accel_deg_s2"));
+        .field("peak_roll_accel_deg_s2", peak("hull_roll_accel_deg_s2"))
+        .field("peak_travel_accel_m_s2", series.col(travel_column).cwiseAbs().maxCoeff());
     json.key("peaks_at_points").beginArray();
     for (const std::string& point : layout.points)
       json.beginObject()
@@ -269,6 +304,9 @@ void run(const SimulateOptions& opt) {
   std::cout << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
             << " m/s^2, pitch " << peak_pitch << " deg, roll " << peak_roll << " deg\n"
             << "  peak road-wheel displacement " << peak_wheel << " m\n";
+  if (travel)
+    std::cout << "  peak travel acceleration " << series.col(travel_column).cwiseAbs().maxCoeff()
+              << " m/s^2 (its inertia loads the model; x accelerations are absolute)\n";
   for (const std::string& point : layout.points)
     std::cout << "  peak at " << point << ": vertical displacement " << peak(point + "_vertical_m")
               << " m, vertical acceleration " << peak(point + "_accel_z_m_s2") << " m/s^2\n";
@@ -292,7 +330,8 @@ void registerSimulateCommand(CLI::App& app) {
   CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
   cmd->add_option("--speed-profile", opt->speed_profile,
                   "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), linear "
-                  "between rows; the run ends at the track's end or the profile's")
+                  "between rows; the run ends at the track's end or the profile's; its "
+                  "acceleration's inertia loads the model (braking pitches the nose down)")
       ->check(CLI::ExistingFile)
       ->excludes(speed);
   // Up to 10 ms: 100 Hz sampling still resolves the 0-30 Hz band, and ISO 2631's Wk weighting

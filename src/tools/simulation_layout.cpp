@@ -54,6 +54,7 @@ SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows
   add("hull_roll_accel_deg_s2", "hull rx/acc", kRadToDegree);
   add("hull_longitudinal_accel_m_s2", "hull ux/acc");
   add("hull_lateral_accel_m_s2", "hull uy/acc");
+  add("hull_surge_m", "hull ux/disp");
   layout.first_wheel = layout.columns.size();
   for (const std::string& n : system_outputs)
     if (n.rfind("road_wheel", 0) == 0) add(n.substr(0, n.find(' ')) + "_m", n + "/disp");

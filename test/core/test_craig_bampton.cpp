@@ -182,6 +182,9 @@ TEST(CraigBampton, InputsGravityAndRecoveryAreProjected) {
   EXPECT_LT(relativeError(cb.input_damping, t.transpose() * Matrix(system.input_damping)),
             kExactTolerance);
   EXPECT_LT(relativeError(cb.gravity_load, t.transpose() * system.gravity_load), kExactTolerance);
+  // The travel inertia per unit forward acceleration reduces the same way (T^T f_a).
+  ASSERT_GT(system.travel_load.norm(), 0.0);
+  EXPECT_LT(relativeError(cb.travel_load, t.transpose() * system.travel_load), kExactTolerance);
   EXPECT_EQ(cb.recovery.row(0), t.row(options.recovery_dofs[0]));
   EXPECT_EQ(cb.recovery.row(1), t.row(m[1]));
   EXPECT_LT(relativeError(cb.damping, t.transpose() * Matrix(system.damping) * t), kExactTolerance);
@@ -234,6 +237,7 @@ TEST(CraigBampton, BareMatricesGiveTheSameReducedSystem) {
   EXPECT_EQ(a.damping, b.damping);
   EXPECT_EQ(b.input_stiffness.cols(), 0);
   EXPECT_EQ(b.gravity_load, Vector::Zero(b.size()));
+  EXPECT_EQ(b.travel_load, Vector::Zero(b.size()));
 }
 
 TEST(CraigBampton, FrequencyLimitedFixedInterfaceModes) {

@@ -246,6 +246,9 @@ TEST_F(ReducedModelFileTest, SaveLoadRoundTripIsExact) {
   EXPECT_EQ(b.input_stations, a.input_stations);
   EXPECT_EQ(b.input_lateral, a.input_lateral);
   EXPECT_EQ(loaded.gravity_load, model_.gravity_load);
+  ASSERT_EQ(model_.travel_load.size(), model_.size());
+  EXPECT_GT(model_.travel_load.norm(), 0.0);
+  EXPECT_EQ(loaded.travel_load, model_.travel_load);
   EXPECT_EQ(loaded.dof_labels, model_.dof_labels);
   EXPECT_EQ(loaded.input_labels, model_.input_labels);
   EXPECT_EQ(loaded.masters, model_.masters);
@@ -346,6 +349,32 @@ TEST_F(ReducedModelFileTest, ChangedValuesFailTheChecksum) {
     out.close();
   }
   expectStale(other, kHash, "checksum");
+  std::remove(other.c_str());
+}
+
+TEST_F(ReducedModelFileTest, FileWithoutTheTravelLoadIsRefusedNamingIt) {
+  // A file of this layout that lacks travel_load (every other variable copied as it is).
+  const io::MatReader in(path_);
+  const std::string other = tempPath("no_travel_load.mat");
+  {
+    io::MatWriter out(other);
+    for (const std::string& name : in.names()) {
+      if (name == "travel_load") continue;
+      if (name == "checksum" || name == "version" || name == "description_hash" ||
+          name == "reduction" || name == "created_utc" || name == "creator" ||
+          name == "damping_model") {
+        out.writeString(name, in.readString(name));
+      } else {
+        try {
+          out.writeMatrix(name, in.readMatrix(name));
+        } catch (const InputError&) {
+          out.writeStrings(name, in.readStrings(name));
+        }
+      }
+    }
+    out.close();
+  }
+  expectStale(other, kHash, "'travel_load' is missing");
   std::remove(other.c_str());
 }
 

@@ -71,6 +71,23 @@ TEST(SpeedProfile, StationIsTheExactIntegralOfThePiecewiseLinearSpeed) {
   }
 }
 
+TEST(SpeedProfile, AccelerationIsTheExactDerivativeOfTheSpeed) {
+  const SpeedProfile p = cruiseAndBrake();  // 10 m/s to 2 s, -2 m/s^2 to 6 s, -1 m/s^2 to 8 s
+  EXPECT_EQ(p.acceleration(0.0), 0.0);
+  EXPECT_EQ(p.acceleration(1.999), 0.0);
+  EXPECT_EQ(p.acceleration(2.0), -2.0);  // right-continuous: the next segment's at a sample
+  EXPECT_EQ(p.acceleration(5.0), -2.0);
+  EXPECT_EQ(p.acceleration(6.0), -1.0);
+  EXPECT_EQ(p.acceleration(8.0), 0.0);  // speed held after the last sample
+  EXPECT_EQ(p.acceleration(20.0), 0.0);
+  // dv/dt = a inside every segment.
+  for (double t = 0.05; t < 9.0; t += 0.1) {
+    const double h = 1e-4;
+    if (std::abs(t - 2.0) < 2 * h || std::abs(t - 6.0) < 2 * h || std::abs(t - 8.0) < 2 * h) continue;
+    EXPECT_NEAR((p.speed(t + h) - p.speed(t - h)) / (2 * h), p.acceleration(t), 1e-9) << t;
+  }
+}
+
 TEST(SpeedProfile, RejectsBadSamplesByIndex) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(messageOf([] { SpeedProfile({0.0, 1.0}, {1.0}, "p"); }).find("2 times but 1 speeds"),

@@ -263,6 +263,24 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
       << run.output;
 }
 
+// ~max_acceleration and ~max_deceleration: >= 0 m/s^2 and finite, a number; each named.
+TEST(NodeBadParameters, BadSpeedSlewRatesAreNamed) {
+  int index = 0;
+  for (const std::string key : {"max_acceleration", "max_deceleration"}) {
+    for (const auto& [value, message] :
+         std::vector<std::pair<std::string, std::string>>{{"-1", ": must be >= 0 m/s^2, got -1"},
+                                                          {"nan", ": must be"},  // a string or NaN on the command line
+                                                          {"fast", ": must be a number"}}) {
+      SCOPED_TRACE("~" + key + " " + value);
+      const std::string name = "bad_slew_" + std::to_string(index++);
+      const NodeRun run = runNamed(name, "_" + key + ":=" + value);
+      EXPECT_EQ(run.exit_status, 1) << run.output;
+      EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
+      EXPECT_NE(run.output.find("/" + name + "/" + key + message), std::string::npos) << run.output;
+    }
+  }
+}
+
 // ~footprint_frame must be a frame of its own; ~publish_odom_tf a boolean.
 TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
   struct Case {

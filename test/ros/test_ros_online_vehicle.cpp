@@ -11,6 +11,8 @@
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 #include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
@@ -368,6 +370,178 @@ TEST(OnlineVehicle, PointAccelerationIsTheHullsRigidMotionAtThePoint) {
   EXPECT_GT(centripetal, 1e-6 * peak);  // the exact kinematics is not the linear one
 }
 
+namespace {
+
+OnlineVehicleOptions slewing(double max_acceleration, double max_deceleration) {
+  OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  o.max_acceleration = max_acceleration;
+  o.max_deceleration = max_deceleration;
+  return o;
+}
+
+TerrainPatch flatPatch(double length) {
+  TerrainPatch flat;
+  flat.start_station = -5.0;
+  flat.spacing = 0.5;
+  flat.lateral = Eigen::Vector2d(-1.0, 1.0);
+  flat.heights = Matrix::Zero(2, static_cast<Eigen::Index>(length / flat.spacing) + 1);
+  return flat;
+}
+
+}  // namespace
+
+TEST(OnlineVehicle, WithoutSlewASpeedAppliesAtOnceWithoutTravelInertia) {
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), slewing(0.0, 0.0));
+  EXPECT_FALSE(vehicle.slews());
+  EXPECT_EQ(vehicle.simulator().inputCount(), 4);  // [u; u'] of the two contacts
+  vehicle.setSpeed(10.0);
+  EXPECT_EQ(vehicle.speed(), 10.0);
+  vehicle.step();
+  EXPECT_EQ(vehicle.travelAcceleration(), 0.0);
+  EXPECT_DOUBLE_EQ(vehicle.station(), 10.0 / kRate);
+}
+
+TEST(OnlineVehicle, SlewReachesTheCommandedSpeedAlongUniformlyAcceleratedMotion) {
+  constexpr double kAccel = 2.0, kDecel = 4.0;  // [m/s^2]
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), slewing(kAccel, kDecel));
+  EXPECT_TRUE(vehicle.slews());
+  EXPECT_EQ(vehicle.simulator().inputCount(), 6);  // [u; a; u'; 0]
+  vehicle.addTerrain(flatPatch(200.0));
+  const double h = 1.0 / kRate;
+  // 0 -> 10 m/s at 2 m/s^2: 5 s = 5000 steps, s = a t^2 / 2.
+  vehicle.setSpeed(10.0);
+  EXPECT_EQ(vehicle.speed(), 0.0);  // from the next step on
+  EXPECT_EQ(vehicle.commandedSpeed(), 10.0);
+  const long rise = std::lround(10.0 / kAccel / h);
+  for (long k = 1; k <= rise; ++k) {
+    vehicle.step();
+    const double t = k * h;
+    ASSERT_NEAR(vehicle.speed(), std::min(kAccel * t, 10.0), 1e-9) << k;
+    ASSERT_NEAR(vehicle.station(), 0.5 * kAccel * t * t, 1e-9) << k;
+    ASSERT_NEAR(vehicle.travelAcceleration(), kAccel, 1e-6) << k;
+  }
+  // Reached at |dv| / a_max (to rounding: the last step may leave 1e-12 m/s to the next one),
+  // then held exactly.
+  EXPECT_NEAR(vehicle.speed(), 10.0, 1e-9);
+  vehicle.step();
+  EXPECT_EQ(vehicle.speed(), 10.0);
+  EXPECT_NEAR(vehicle.travelAcceleration(), 0.0, 1e-6);
+  EXPECT_NEAR(vehicle.station(), 25.0 + 10.0 * h, 1e-9);
+  vehicle.step();
+  EXPECT_EQ(vehicle.travelAcceleration(), 0.0);
+  // 10 -> 2 m/s at 4 m/s^2: 2 s, s = s_0 + v_0 t - d t^2 / 2.
+  const double s0 = vehicle.station();
+  vehicle.setSpeed(2.0);
+  const long fall = std::lround(8.0 / kDecel / h);
+  for (long k = 1; k <= fall; ++k) {
+    vehicle.step();
+    const double t = k * h;
+    ASSERT_NEAR(vehicle.speed(), 10.0 - kDecel * t, 1e-9) << k;
+    ASSERT_NEAR(vehicle.station(), s0 + 10.0 * t - 0.5 * kDecel * t * t, 1e-9) << k;
+    ASSERT_NEAR(vehicle.travelAcceleration(), -kDecel, 1e-6) << k;
+  }
+  EXPECT_NEAR(vehicle.speed(), 2.0, 1e-9);
+  vehicle.step();
+  EXPECT_EQ(vehicle.speed(), 2.0);
+  // reset_to sets the speed at once, at rest relative to it (a = 0).
+  vehicle.resetTo(3.0, 7.0, ResetTerrain::Keep);
+  EXPECT_EQ(vehicle.speed(), 7.0);
+  EXPECT_EQ(vehicle.commandedSpeed(), 7.0);
+  EXPECT_EQ(vehicle.travelAcceleration(), 0.0);
+  vehicle.step();
+  EXPECT_EQ(vehicle.speed(), 7.0);
+  EXPECT_EQ(vehicle.travelAcceleration(), 0.0);
+}
+
+TEST(OnlineVehicle, OneSlewRateSetBoundsBothDirections) {
+  for (const auto& [accel, decel] : {std::pair<double, double>{3.0, 0.0}, {0.0, 3.0}}) {
+    OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), slewing(accel, decel));
+    EXPECT_TRUE(vehicle.slews());
+    vehicle.setSpeed(6.0);
+    vehicle.step();
+    EXPECT_NEAR(vehicle.travelAcceleration(), 3.0, 1e-9);
+    vehicle.resetTo(0.0, 6.0, ResetTerrain::Clear);
+    vehicle.setSpeed(0.0);
+    vehicle.step();
+    EXPECT_NEAR(vehicle.travelAcceleration(), -3.0, 1e-9);
+  }
+  EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), slewing(-1.0, 0.0)), InputError);
+  EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), slewing(0.0, NAN)), InputError);
+  reduction::ReducedModel without = test::toyModel();
+  without.travel_load.resize(0);
+  EXPECT_THROW(OnlineVehicle(without, test::toyGeometry(), slewing(1.0, 1.0)), InputError);
+  EXPECT_NO_THROW(OnlineVehicle(without, test::toyGeometry(), slewing(0.0, 0.0)));
+}
+
+TEST(OnlineVehicle, ConstantBrakingPitchesToTheStaticValueAndTheImuReadsTheBraking) {
+  // 0.3 g from 20 m/s on flat ground: 6.8 s of braking; the toy's damped pitch settles within 2 s.
+  constexpr double kBraking = 0.3 * kStandardGravity;
+  const reduction::ReducedModel model = test::toyModel();
+  OnlineVehicle vehicle(model, test::toyGeometry(), slewing(1.0, kBraking));
+  vehicle.addTerrain(flatPatch(200.0));
+  vehicle.resetTo(0.0, 20.0, ResetTerrain::Keep);
+  const Vector6 rest = vehicle.hullDisplacement();
+  vehicle.setSpeed(0.0);
+  for (int k = 0; k < 6000; ++k)
+    vehicle.step();
+  ASSERT_NEAR(vehicle.travelAcceleration(), -kBraking, 1e-6);
+  // Static pitch: K q = f_a a (u = 0); the hull's row of H picks theta.
+  const Vector q = model.system.stiffness.ldlt().solve(model.travel_load * -kBraking);
+  const double pitch = (model.system.output * q)(4);
+  EXPECT_GT(pitch, 0.0);  // nose down (REP-103)
+  EXPECT_NEAR(vehicle.hullDisplacement()(4) - rest(4), pitch, 1e-2 * pitch);
+  // The IMU at the crew seat: the point's acceleration in odom is the braking itself (settled),
+  // and its specific force in the hull's axes f = R^T (a - g) reads, with the hull pitched by
+  // theta about y, f_x = a cos(theta) - g sin(theta), f_z = a sin(theta) + g cos(theta).
+  const Vector3 acceleration = vehicle.pointAcceleration(0);
+  EXPECT_NEAR(acceleration.x(), -kBraking, 1e-3 * kBraking);
+  EXPECT_NEAR(acceleration.z(), 0.0, 1e-3 * kBraking);
+  const double theta = vehicle.hullDisplacement()(4);
+  const Vector3 f = specificForce(vehicle.hullPose().rotation, acceleration);
+  EXPECT_NEAR(f.x(), -kBraking * std::cos(theta) - kStandardGravity * std::sin(theta), 1e-3 * kBraking);
+  EXPECT_NEAR(f.z(), -kBraking * std::sin(theta) + kStandardGravity * std::cos(theta), 1e-3 * kBraking);
+  EXPECT_LT(f.x(), -kBraking);  // the nose-down pitch adds gravity's share to the braking
+  // Stopped: the acceleration ends and the pitch returns.
+  for (int k = 0; k < 4000; ++k)
+    vehicle.step();
+  EXPECT_EQ(vehicle.speed(), 0.0);
+  EXPECT_EQ(vehicle.travelAcceleration(), 0.0);
+  EXPECT_NEAR(vehicle.hullDisplacement()(4), rest(4), 1e-2 * pitch);
+}
+
+TEST(OnlineVehicle, BrakingPaperVehicleSettlesToTheReducedModelsStaticPitch) {
+  // The bundled vehicle (un-tracked, reduced as the node reduces it) braking at 1 m/s^2 from
+  // 25 m/s for 20 s on flat ground: its hull pitch settles to a H K_R^-1 travel_load, the steady
+  // value of tvd simulate and test_travel_inertia (5 % modal damping: the onset's transient is
+  // below 0.1 % after 20 s), nose down.
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(
+      std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const reduction::ReducedModel model =
+      reduction::reduceVehicle(description, vehicle::Variant::Untracked, {});
+  constexpr double kBraking = 1.0;  // [m/s^2]
+  OnlineVehicle vehicle(model, vehicleGeometry(description), slewing(1.0, kBraking));
+  TerrainPatch flat;
+  flat.start_station = -10.0;
+  flat.spacing = 1.0;
+  flat.lateral = Eigen::Vector2d(-3.0, 3.0);
+  flat.heights = Matrix::Zero(2, 400);
+  vehicle.addTerrain(flat);
+  vehicle.resetTo(0.0, 25.0, ResetTerrain::Keep);
+  const double rest = vehicle.hullDisplacement()(4);
+  vehicle.setSpeed(0.0);
+  for (int k = 0; k < 20000; ++k)
+    ASSERT_EQ(vehicle.step().uncovered, 0) << k;
+  ASSERT_NEAR(vehicle.travelAcceleration(), -kBraking, 1e-6);
+  const auto& names = model.system.output_names;
+  const auto ry = std::find(names.begin(), names.end(), "hull ry") - names.begin();
+  const double pitch =
+      -kBraking * (model.system.output * model.system.stiffness.ldlt().solve(model.travel_load))(ry);
+  EXPECT_GT(pitch, 0.0);  // nose down
+  EXPECT_NEAR(vehicle.hullDisplacement()(4) - rest, pitch, 1e-2 * pitch);
+  // Settled, the crew seat's accelerometer reads the braking along the path's x.
+  EXPECT_NEAR(vehicle.pointAcceleration(0).x(), -kBraking, 1e-2 * kBraking);
+}
+
 #if defined(__GLIBC__)  // the allocation counter hooks glibc's malloc
 TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
   // A crew seat that also follows the front wheel by 0.3 of its travel (a seat on a flexible
@@ -399,8 +573,11 @@ TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
 
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
-                      dynamics::DiscretizationMethod::AugmentedExponential}) {
-    OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), options(method));
+                      dynamics::DiscretizationMethod::AugmentedExponential})
+  for (const double slew : {0.0, 2.0}) {  // without and with the speed slew (travel inertia)
+    OnlineVehicleOptions o = options(method);
+    o.max_acceleration = o.max_deceleration = slew;
+    OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), o);
     for (const TerrainPatch& p : patches(bump(), 40))
       vehicle.addTerrain(p);
     vehicle.setSpeed(5.0);

@@ -73,6 +73,10 @@ inline reduction::ReducedModel toyModel() {
   sys.input_lateral = Eigen::Vector2d(0.0, 0.0);
   model.gravity_load =
       -kStandardGravity * Vector(Eigen::Vector4d(T::kHullMass, 0.0, T::kWheelMass, T::kWheelMass));
+  // Travel inertia per unit forward acceleration: the hull's -M a at its CoG, kCogHeight above
+  // the ground, is a pitch moment -M kCogHeight a taken by the suspension (the model has no x
+  // coordinate; the wheels' own inertia is neglected). Braking (a < 0) pitches the nose down.
+  model.travel_load = Vector(Eigen::Vector4d(0.0, -T::kHullMass * T::kCogHeight, 0.0, 0.0));
   model.damping = "toy";
   return model;
 }

@@ -155,6 +155,15 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertEqual(params("replay_track.launch", "imu_points:=[crew_seat, sensor_mount]")
                          ["imu_points"], ["crew_seat", "sensor_mount"])
 
+    def test_speed_slew_rates_are_passed_through(self):
+        p = params("vehicle_dynamics.launch")
+        self.assertEqual((p["max_acceleration"], p["max_deceleration"]), (0.0, 0.0))  # the file's
+        p = params("vehicle_dynamics.launch", "max_acceleration:=1.5", "max_deceleration:=3")
+        self.assertEqual((p["max_acceleration"], p["max_deceleration"]), (1.5, 3.0))
+        self.assertIsInstance(p["max_deceleration"], float)  # the node reads a number
+        p = params("replay_track.launch", "max_acceleration:=1", "max_deceleration:=2.5")
+        self.assertEqual((p["max_acceleration"], p["max_deceleration"]), (1.0, 2.5))
+
 
 if __name__ == "__main__":
     sys.exit(junit_runner.main(LaunchFilesTest, "launch_files", __doc__,

@@ -326,6 +326,9 @@ class TvdCliTest(unittest.TestCase):
         np.testing.assert_allclose(namespace["frequencies_hz"][:6], full["frequencies_hz"], rtol=1e-3)
         self.assertAlmostEqual(namespace["hull_sag_m"] / full["static"]["hull_sag_m"], 1.0, delta=1e-6)
         self.assertEqual(namespace["A"].shape, (862, 862))
+        # The full FE model's static pitch under 0.3 g braking (test_travel_inertia: 0.314577
+        # mrad; the reduced model's equals it to 1e-11).
+        self.assertAlmostEqual(namespace["brake_pitch_mrad"] / 0.314577, 1.0, delta=1e-5)
 
     def test_simulate_json_and_csv_agree(self):
         speed_kmh = 50.0
@@ -340,9 +343,11 @@ class TvdCliTest(unittest.TestCase):
         header, rows = read_csv(out)
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
-        # 7 more hull rates and accelerations, 14 wheels, 4 columns for each of 2 named points,
-        # the road under each of the 14 wheels.
-        self.assertEqual(len(header), 6 + 7 + 14 + 2 * 4 + 14)
+        # 7 more hull rates and accelerations and the hull's surge, 14 wheels, 4 columns for each
+        # of 2 named points, the road under each of the 14 wheels, the travel acceleration.
+        self.assertEqual(len(header), 6 + 8 + 14 + 2 * 4 + 14 + 1)
+        self.assertEqual(header[-1], "travel_accel_m_s2")
+        self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)
         # 30 m at 50 km/h in 1 ms steps, plus the initial sample.
         self.assertEqual(len(rows), round(30.0 / (speed_kmh / 3.6) / 1e-3) + 1)
         self.assertAlmostEqual(rows[-1, 0], d["simulated_seconds"], places=9)
@@ -428,6 +433,68 @@ class TvdCliTest(unittest.TestCase):
                                    np.abs(c[name + "_vertical_m"]).max(), places=7)
             self.assertAlmostEqual(peak["peak_vertical_accel_m_s2"],
                                    np.abs(c[name + "_accel_z_m_s2"]).max(), places=5)
+
+    def test_simulate_braking_travel_inertia(self):
+        """A braking profile loads the model with the travel inertia a(t) f_a: on a flat track at
+        a constant rate the hull pitch settles to a H K_R^-1 travel_load (the reduced-model
+        file's own static response, 1 %), nose down; travel_accel_m_s2 is the profile's exact
+        derivative and the x accelerations are absolute (relative + a); at constant speed the
+        travel column is 0 and the x accelerations are the model's."""
+        model = self.path("untracked.mat")
+        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", model)
+        m = scipy.io.loadmat(model)
+        names = [str(c[0]) for c in m["output_names"].ravel()]
+        per_a = m["H"] @ np.linalg.solve(m["K_R"], m["travel_load"].ravel())
+        flat = self.path("flat.csv")
+        with open(flat, "w") as f:
+            f.write("x,h\n-10,0\n400,0\n")
+        # 60 km/h for 1 s, then -0.5 m/s^2 for 25 s (to 15 km/h): 5 % modal damping lets the
+        # lowest modes' transient die out well within 25 s.
+        accel = -0.5
+        profile = self.path("brake.csv")
+        with open(profile, "w") as f:
+            f.write(f"time_s,speed_m_s\n0,{60 / 3.6!r}\n1,{60 / 3.6!r}\n26,{60 / 3.6 + 25 * accel!r}\n")
+        common = ("simulate", "--vehicle", VEHICLE, "--reduced", model, "--track", flat)
+        out = self.path("brake_run.csv")
+        d = self.tvd_json(*common, "--speed-profile", profile, "--out", out)
+        header, rows = read_csv(out)
+        c = {name: rows[:, i] for i, name in enumerate(header)}
+        t = c["time_s"]
+        self.assertEqual(header[-1], "travel_accel_m_s2")
+        np.testing.assert_allclose(c["travel_accel_m_s2"],
+                                   np.where((t >= 1 - 1e-9) & (t < 26 - 1e-9), accel, 0.0),
+                                   rtol=0, atol=1e-9)
+        self.assertAlmostEqual(d["peak_travel_accel_m_s2"], -accel, places=9)
+        end = t > 25.5
+        pitch = accel * per_a[names.index("hull ry")]
+        surge = accel * per_a[names.index("hull ux")]
+        self.assertGreater(pitch, 0.0)  # braking: nose down (+ry, REP-103)
+        self.assertGreater(surge, 0.0)  # and the hull surges forward
+        np.testing.assert_allclose(c["hull_pitch_deg"][end], np.degrees(pitch), rtol=1e-2)
+        np.testing.assert_allclose(c["hull_surge_m"][end], surge, rtol=1e-2)
+        # Settled, the hull moves with the path frame: an accelerometer reads a itself.
+        np.testing.assert_allclose(c["hull_longitudinal_accel_m_s2"][end], accel, rtol=1e-2)
+        points = [name for name in header if name.endswith("_accel_x_m_s2")]
+        self.assertIn("crew_seat_accel_x_m_s2", points)
+        for name in points:
+            np.testing.assert_allclose(c[name][end], accel, rtol=2e-2, err_msg=name)
+        # Before the braking nothing moves on the flat track (round-off of the modal engine's
+        # equilibrium: 3e-9 deg, against the braking's 0.02 deg).
+        self.assertLess(np.abs(c["hull_pitch_deg"][t < 1]).max(), 1e-6)
+        self.assertLess(np.abs(c["hull_longitudinal_accel_m_s2"][t < 1]).max(), 1e-6)
+        braking = d
+
+        steady = self.path("steady.csv")
+        d = self.tvd_json(*common, "--speed-kmh", "60", "--out", steady)
+        # The braking is in ISO 2631's horizontal a_wx (Wd passes its onset and end; on the flat
+        # track at constant speed there is nothing).
+        self.assertLess(d["comfort"]["weighted_rms_x_m_s2"], 1e-6)
+        self.assertGreater(braking["comfort"]["weighted_rms_x_m_s2"], 1e-3)
+        header, rows = read_csv(steady)
+        self.assertEqual(header[-1], "travel_accel_m_s2")
+        self.assertEqual(np.abs(rows[:, -1]).max(), 0.0)
+        self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)
+        self.assertLess(np.abs(rows[:, header.index("hull_longitudinal_accel_m_s2")]).max(), 1e-6)
 
     def test_simulate_speed_profile(self):
         """--speed-profile: a constant profile is the --speed-kmh run; a braking profile's

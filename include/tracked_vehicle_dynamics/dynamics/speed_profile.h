@@ -22,6 +22,9 @@ class SpeedProfile {
 
   /// v(t) [m/s]; t >= 0 (t < 0 is read as 0).
   double speed(double t) const;
+  /// a(t) = dv/dt [m/s^2]: (v_{k+1} - v_k) / h_k on the segment [t_k, t_{k+1}) (piecewise
+  /// constant, right-continuous: at a sample the next segment's), 0 after the last sample.
+  double acceleration(double t) const;
   /// s(t) = integral of v from 0 to t [m].
   double station(double t) const;
   /// Time of the last sample [s].

@@ -17,6 +17,11 @@ struct System {
   SparseMatrix stiffness;  ///< K [N/m, N/rad, N m/rad]
   SparseMatrix damping;    ///< C from discrete dampers [N s/m, ...]
   Vector gravity_load;     ///< f_g = T^T M_phys a_g [N, N m]
+  /// Travel inertia per unit forward acceleration of the path frame: f_a = -T^T M_phys e_x with
+  /// e_x = (1, 0, 0) on every node's translations [N, N m per m/s^2]. The model lives in the path
+  /// frame, which translates with the station s(t); when the speed changes (a = dv/dt) every
+  /// mass feels -m a along x, so the load on the structure is a(t) f_a.
+  Vector travel_load;
   DofMap dofs;
   /// Ground springs as road inputs: the force on the structure is K_u u + C_u u' where u holds
   /// the vertical ground displacement under each grounded spring in `ground_inputs` order.

@@ -59,6 +59,7 @@ struct CraigBamptonResult {
   Matrix input_stiffness;  ///< T^T K_u [(m + r) x n_inputs] (empty columns without a System)
   Matrix input_damping;    ///< T^T C_u [(m + r) x n_inputs]
   Vector gravity_load;     ///< T^T f_g [m + r] (zeros without a System)
+  Vector travel_load;      ///< T^T f_a [m + r] per unit forward acceleration (zeros without one)
   std::vector<DofIndex> masters;          ///< active DOF of each master coordinate
   Vector fixed_interface_eigenvalues;     ///< omega_i^2 of Phi_S [rad^2/s^2], ascending
   Vector fixed_interface_frequencies_hz;  ///< [Hz]
@@ -71,7 +72,7 @@ struct CraigBamptonResult {
   DofIndex modeCount() const { return fixed_interface_eigenvalues.size(); }
 };
 
-/// Reduces an assembled system (M, K, C, K_u, C_u, gravity load) on the given master DOFs
+/// Reduces an assembled system (M, K, C, K_u, C_u, gravity and travel inertia loads) on the given master DOFs
 /// (active indices, any order). Throws InputError for a repeated or out-of-range master,
 /// more fixed-interface modes than slave DOFs, an out-of-range recovery DOF, or an empty basis
 /// (m + r = 0); SolverError when K_ss is not positive definite (the masters leave a rigid-body

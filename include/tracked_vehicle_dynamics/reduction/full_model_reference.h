@@ -48,6 +48,9 @@ struct FullModelReference {
   Vector modal_gravity;     ///< Phi_k^T f_g [k]
   Matrix residual_input;    ///< H R [K_u, C_u] [n_outputs x 2 n_inputs]
   Vector residual_gravity;  ///< H R f_g [n_outputs]
+  /// The travel inertia per unit forward acceleration (fem::System::travel_load), like gravity.
+  Vector modal_travel;      ///< Phi_k^T f_a [k]
+  Vector residual_travel;   ///< H R f_a [n_outputs]
   Vector frequencies_hz;    ///< the k dynamic modes [Hz]
   DofIndex full_dofs = 0;
   double seconds = 0.0;     ///< wall time to build it [s]
@@ -63,6 +66,11 @@ struct FullModelReference {
   /// H R (K_u + j omega C_u) tau times 1, j omega or -omega^2. [n_frequencies x n_outputs].
   dynamics::ComplexMatrix frf(const Vector& frequencies_hz, const dynamics::InputDelay& delay,
                               dynamics::OutputQuantity quantity) const;
+  /// The reference with the travel acceleration a(t) as one more input after the road inputs
+  /// (dynamics::withTravelInertia on `modal`, travel_inertia.h): residual_input gains the column
+  /// H R f_a among the displacement inputs and a zero one among their rates, so addResidual()
+  /// takes the widened input rows [u; a; u'; 0] and adds H R f_a a to the displacements.
+  FullModelReference withTravelInertia() const;
 };
 
 /// Builds the reference of an assembled system with outputs as buildReducedModel() makes them.

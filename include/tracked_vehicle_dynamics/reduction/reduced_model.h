@@ -37,6 +37,9 @@ struct ReducedModel {
   /// a node has no active DOF).
   dynamics::SecondOrderSystem system;
   Vector gravity_load;                    ///< T^T f_g [k] [N, N m]
+  /// T^T f_a [k]: travel inertia per unit forward acceleration of the path frame
+  /// [N, N m per m/s^2] (fem::System::travel_load); the load is a(t) travel_load.
+  Vector travel_load;
   std::vector<std::string> dof_labels;    ///< k labels: "node 12 uz", then "mode 3 (12.4 Hz)"
   std::vector<fem::DofRef> masters;       ///< physical DOF of each of the m master coordinates
   Matrix master_positions;                ///< [m x 3] undeformed position of each master's node [m]

@@ -11,6 +11,8 @@
 //   M_R, K_R, C_R                  k x k    reduced mass, stiffness, damping (paper eq. 9)
 //   K_u, C_u                       k x n_in reduced road-input stiffness and damping
 //   gravity_load                   k x 1    reduced gravity load [N, N m]
+//   travel_load                    k x 1    reduced travel inertia load per unit forward
+//                                           acceleration of the path frame [N, N m per m/s^2]
 //   H                              n_out x k  output recovery rows, y = H x_R
 //   output_names                   cell n_out x 1
 //   dof_labels                     cell k x 1  "node 12 uz" ..., "mode 3 (12.4 Hz)" ...
@@ -38,7 +40,7 @@ namespace tracked_vehicle_dynamics {
 namespace reduction {
 
 /// Layout version of the file above; a file with another one is stale.
-constexpr int kReducedModelFormatVersion = 3;  // 3: master_positions, master_groups
+constexpr int kReducedModelFormatVersion = 4;  // 3: master_positions, master_groups; 4: travel_load
 
 /// A reduced model file that cannot be used: missing, unreadable, truncated, corrupted,
 /// inconsistent, or built from another description, software version or reduction. A cache

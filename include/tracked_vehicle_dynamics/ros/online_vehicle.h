@@ -6,6 +6,14 @@
 //   s_{k+1} = s_k + v h                                    station of the reference point [m]
 //   w_{k+1} = RoadInputSampler(terrain, s_{k+1}, v)         road inputs [u; u']
 //   Simulator::step(w_{k+1})                               exact discretisation (simulator.h)
+//
+// With a speed slew (options max_acceleration / max_deceleration > 0) the speed follows the
+// commanded speed v_c at a bounded rate, and the model feels the travel inertia of the path frame
+// (dynamics/travel_inertia.h: the travel acceleration rides as one more input, w = [u; a; u'; 0]):
+//   v_{k+1} = v_k + clamp(v_c - v_k, -d_max h, a_max h),   a_k = (v_{k+1} - v_k) / h
+//   s_{k+1} = s_k + (v_k + v_{k+1}) h / 2                  (exact for constant acceleration)
+// Without it (both 0, the default) a new speed applies at once and no travel inertia is applied:
+// a step in speed would be an infinite acceleration.
 // and the comfort meter takes the vertical acceleration at the comfort point. The simulator
 // starts from static equilibrium under gravity on flat ground (u = 0), K q0 = f_g, so a vehicle
 // at rest on flat terrain stays exactly where it is; resetTo() restarts it at any station in
@@ -58,6 +66,12 @@ struct OnlineVehicleOptions {
   double comfort_running_rms_time = 1.0;
   /// Terrain kept behind the rearmost contact when patches are dropped [m].
   double terrain_keep_behind = 1.0;
+  /// Largest rate [m/s^2] at which the speed rises towards the commanded one, and at which it
+  /// falls. Both 0: no slew (a new speed applies at once) and no travel inertia. One of them 0
+  /// and the other > 0: the 0 one takes the other's value (a slewing vehicle with one direction
+  /// unbounded would step its speed, an infinite acceleration the model cannot take).
+  double max_acceleration = 0.0;
+  double max_deceleration = 0.0;
 };
 
 /// The Simulator configuration of an OnlineVehicle: step 1/rate, method, hold, the cut-off of
@@ -110,7 +124,8 @@ class OnlineVehicle {
   /// Stores a patch (newest wins where patches overlap) and frees terrain behind the vehicle.
   /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.
   void addTerrain(const TerrainPatch& patch);
-  /// Speed [m/s] used from the next step on. Throws InputError if negative or not finite.
+  /// Commanded speed [m/s]: used from the next step on, or, with a slew, approached at the
+  /// bounded rate from the next step on. Throws InputError if negative or not finite.
   void setSpeed(double speed);
   /// One fixed step (see the file comment). No allocation.
   StepResult step();
@@ -119,13 +134,19 @@ class OnlineVehicle {
   double time() const { return simulator_.time(); }  ///< since reset [s]
   long stepCount() const { return simulator_.stepCount(); }
   double station() const { return station_; }  ///< [m]
-  double speed() const { return speed_; }      ///< [m/s]
+  double speed() const { return speed_; }      ///< current (slewed) speed [m/s]
+  double commandedSpeed() const { return commanded_speed_; }  ///< [m/s]
+  /// Forward acceleration a_k of the last step [m/s^2] (0 without a slew, and after a reset).
+  double travelAcceleration() const { return travel_acceleration_; }
+  /// Whether the speed slews and the model carries the travel inertia (options).
+  bool slews() const { return max_acceleration_ > 0.0; }
 
   /// Hull CoG displacement {u_G [m]; theta [rad]} (rows "hull ux".."hull rz").
   Vector6 hullDisplacement() const { return block(hull_rows_, disp_offset_); }
   /// Its time derivative {m/s; rad/s} (vibration only: without the travel speed).
   Vector6 hullVelocity() const { return block(hull_rows_, vel_offset_); }
-  /// Its second derivative {m/s^2; rad/s^2}.
+  /// Its second derivative {m/s^2; rad/s^2} (relative to the path frame: without the travel
+  /// acceleration, travelAcceleration(), which the hull's absolute acceleration adds along x).
   Vector6 hullAcceleration() const { return block(hull_rows_, acc_offset_); }
   /// base_link in odom (vehicle_frames.h).
   RigidPose hullPose() const;
@@ -140,8 +161,8 @@ class OnlineVehicle {
   Vector3 pointPosition(std::size_t i) const;
   /// Acceleration [m/s^2, odom axes] of named point i: the second time derivative of its
   /// published position (vehicle_frames.h rigidPointAcceleration, exact in the hull rotation,
-  /// plus the model's elastic part: rows "<point> ux|uy|uz" less their rigid part). Without
-  /// gravity and without a change of the travel speed.
+  /// plus the model's elastic part: rows "<point> ux|uy|uz" less their rigid part) plus the
+  /// travel acceleration along odom x (travelAcceleration()). Without gravity.
   Vector3 pointAcceleration(std::size_t i) const;
   /// True when named point i moves rigidly with the hull in the model (its output rows are
   /// u_G + theta x (p - p_G) of the hull rows, to rounding): its base_link position is then its
@@ -168,6 +189,9 @@ class OnlineVehicle {
   /// Named point i's three outputs of the block starting at `offset`.
   Vector3 pointBlock(std::size_t i, Eigen::Index offset) const;
   Eigen::Index outputRow(const std::string& name) const;
+  /// Samples the road at the current station and speed into road_input_ and the simulator's
+  /// input_ (widened with the travel acceleration when slewing); returns the uncovered contacts.
+  int sampleInput();
   /// Whether the last three point_rows_ (a point at `point`) are the hull's rigid motion in H.
   bool movesWithHull(const Matrix& output, const Vector3& point) const;
 
@@ -182,7 +206,9 @@ class OnlineVehicle {
 
   dynamics::StaticEquilibriumSolver equilibrium_solver_;
   Vector equilibrium_;  // z0 on flat ground [2k]
-  Vector input_;        // w [2 n_inputs], reused every step
+  Vector input_;        // the simulator's input, reused every step: w = [u; u'], or with a slew
+                        // [u; a; u'; 0] (travel_inertia.h)
+  Vector road_input_;   // w = [u; u'] [2 n_inputs] as sampled (with a slew; else input_ is it)
   std::vector<std::string> base_names_;
   Eigen::Index disp_offset_ = 0, vel_offset_ = 0, acc_offset_ = 0;
   std::vector<Eigen::Index> hull_rows_;   // 6 base rows
@@ -194,8 +220,12 @@ class OnlineVehicle {
   Vector6 static_hull_ = Vector6::Zero();
   mutable std::vector<WheelState> wheel_states_;
 
+  double max_acceleration_ = 0.0;  // a_max [m/s^2]; 0: no slew
+  double max_deceleration_ = 0.0;  // d_max [m/s^2]
   double station_ = 0.0;
   double speed_ = 0.0;
+  double commanded_speed_ = 0.0;
+  double travel_acceleration_ = 0.0;
   double peak_acceleration_ = 0.0;
 };
 
