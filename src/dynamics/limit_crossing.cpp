@@ -28,6 +28,7 @@ LimitCrossing findLimitCrossing(const std::vector<double>& speeds, const std::ve
   if (values.size() != speeds.size())
     throw InputError("limit crossing: " + std::to_string(values.size()) + " values for " +
                      std::to_string(speeds.size()) + " speeds");
+  if (!std::isfinite(limit)) throw InputError("limit crossing: the limit is not finite");
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
     throw InputError("limit crossing: the tolerance must be a positive number");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -51,6 +52,7 @@ LimitCrossing findLimitCrossing(const std::vector<double>& speeds, const std::ve
   double lo = speeds[i - 1], hi = speeds[i], m_lo = values[i - 1], m_hi = values[i];
   while (hi - lo > tolerance) {
     const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;  // adjacent doubles: a tolerance below one ulp of the speed
     const double m = checkedValue(evaluate(mid), mid);
     ++result.refinements;
     if (m >= limit) {

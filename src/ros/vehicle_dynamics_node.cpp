@@ -599,9 +599,11 @@ void VehicleDynamicsNode::step() {
   // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
   if (params_.speed_timeout > 0.0 && vehicle_->commandedSpeed() > 0.0 &&
       (t - last_speed_time_).toSec() > params_.speed_timeout) {
-    ROS_WARN("vehicle_dynamics_node: no speed message for %.3f s (~speed_timeout %.3f s): "
-             "stopping the vehicle at station %.3f m",
-             (t - last_speed_time_).toSec(), params_.speed_timeout, vehicle_->station());
+    ROS_WARN("vehicle_dynamics_node: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m",
+             (t - last_speed_time_).toSec(), params_.speed_timeout,
+             vehicle_->slews() ? "braking to a stop at ~max_deceleration from station"
+                               : "stopping the vehicle at station",
+             vehicle_->station());
     vehicle_->setSpeed(0.0);
     ++events_.speed_timeouts;
     stopped_by_timeout_ = true;

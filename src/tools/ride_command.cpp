@@ -68,6 +68,14 @@ void run(const RideOptions& opt) {
   if (!(distance > 0))
     throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
 
+  // The slowest run is the longest; the bisections only run faster ones. Checked before any work.
+  const double longest = std::ceil(distance / (sweep.front() / 3.6) / opt.dt);
+  if (longest > Drive::kMaxSteps) {
+    std::ostringstream m;
+    m << "ride: --speeds: " << distance << " m at " << sweep.front() << " km/h take " << longest
+      << " time steps of " << opt.dt << " s; at most " << Drive::kMaxSteps << " (raise the lowest speed)";
+    throw InputError(m.str());
+  }
   if (opt.lowpass_hz >= 0.5 / opt.dt) {
     std::ostringstream m;
     m << "ride: --lowpass-hz " << opt.lowpass_hz << " must be below the Nyquist frequency 1/(2 dt) = "
@@ -143,19 +151,26 @@ void run(const RideOptions& opt) {
   struct Limits {
     dynamics::LimitCrossing power, peak;
   };
-  std::vector<Limits> limits;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    std::vector<double> power, peak;
-    for (double v : sweep) {
-      power.push_back(runs.at(v).points[i].absorbed_power);
-      peak.push_back(runs.at(v).points[i].peak_up_g);
+  // Over every run: the bisections of one point and limit add runs the others see, so the
+  // searches are repeated until a round adds no run (the refinements summed over the rounds).
+  auto known = [&] {
+    std::vector<double> v;
+    for (const auto& entry : runs) v.push_back(entry.first);
+    return v;
+  };
+  std::vector<Limits> limits(points.size());
+  for (std::size_t before = 0; before != runs.size();) {
+    before = runs.size();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      Limits& l = limits[i];
+      const int power_so_far = l.power.refinements, peak_so_far = l.peak.refinements;
+      l.power = lowestCrossing(known, [&](double v) { return ride(v).points[i].absorbed_power; },
+                               opt.power_limit_w, opt.tolerance_kmh);
+      l.peak = lowestCrossing(known, [&](double v) { return ride(v).points[i].peak_up_g; }, opt.peak_limit_g,
+                              opt.tolerance_kmh);
+      l.power.refinements += power_so_far;
+      l.peak.refinements += peak_so_far;
     }
-    Limits l;
-    l.power = dynamics::findLimitCrossing(sweep, power, opt.power_limit_w, opt.tolerance_kmh,
-                                          [&](double v) { return ride(v).points[i].absorbed_power; });
-    l.peak = dynamics::findLimitCrossing(sweep, peak, opt.peak_limit_g, opt.tolerance_kmh,
-                                         [&](double v) { return ride(v).points[i].peak_up_g; });
-    limits.push_back(l);
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
 

@@ -9,6 +9,21 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
+dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()>& known_speeds,
+                                       const std::function<double(double)>& metric, double limit,
+                                       double tolerance) {
+  int refinements = 0;
+  for (;;) {
+    const std::vector<double> speeds = known_speeds();
+    std::vector<double> values;
+    for (double v : speeds) values.push_back(metric(v));
+    dynamics::LimitCrossing c = dynamics::findLimitCrossing(speeds, values, limit, tolerance, metric);
+    refinements += c.refinements;
+    c.refinements = refinements;
+    if (known_speeds().size() == speeds.size()) return c;
+  }
+}
+
 std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named) {
   std::vector<std::string> known = {"hull"};
   known.insert(known.end(), named.begin(), named.end());

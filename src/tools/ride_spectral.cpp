@@ -114,12 +114,22 @@ void runSpectralRide(const RideOptions& opt) {
   };
   for (double v : sweep) rate(v);
   for (double v : sweep) runs.at(v).in_sweep = true;
-  std::vector<dynamics::LimitCrossing> limits;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    std::vector<double> power;
-    for (double v : sweep) power.push_back(runs.at(v).points[i].absorbed_power);
-    limits.push_back(dynamics::findLimitCrossing(sweep, power, opt.power_limit_w, opt.tolerance_kmh,
-                                                 [&](double v) { return rate(v).points[i].absorbed_power; }));
+  // Over every speed evaluated: another point's bisection may have found one above the limit
+  // below this point's first sweep bracket; repeated until a round adds none (ride_command.cpp).
+  auto known = [&] {
+    std::vector<double> v;
+    for (const auto& entry : runs) v.push_back(entry.first);
+    return v;
+  };
+  std::vector<dynamics::LimitCrossing> limits(points.size());
+  for (std::size_t before = 0; before != runs.size();) {
+    before = runs.size();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const int so_far = limits[i].refinements;
+      limits[i] = lowestCrossing(known, [&](double v) { return rate(v).points[i].absorbed_power; },
+                                 opt.power_limit_w, opt.tolerance_kmh);
+      limits[i].refinements += so_far;
+    }
   }
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
 

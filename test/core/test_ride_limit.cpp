@@ -183,6 +183,12 @@ TEST(LimitCrossing, RejectsBadSweeps) {
   expectInputError([&] { findLimitCrossing({1, 2}, {1}, 1.0, 0.1, f); }, "1 values for 2 speeds");
   expectInputError([&] { findLimitCrossing({1, 1}, {1, 2}, 1.5, 0.1, f); }, "strictly increasing");
   expectInputError([&] { findLimitCrossing({1, 2}, {1, 2}, 1.5, 0.0, f); }, "tolerance");
+  expectInputError([&] { findLimitCrossing({1, 2}, {1, 2}, std::nan(""), 0.1, f); }, "limit is not finite");
+  // A tolerance below one ulp of the speed stops at adjacent doubles instead of looping forever.
+  const LimitCrossing fine = findLimitCrossing({1, 2}, {1, 2}, 1.5, 1e-300, f);
+  EXPECT_EQ(fine.status, LimitCrossing::Status::Reached);
+  EXPECT_EQ(std::nextafter(fine.lower, 2.0), fine.upper);
+  EXPECT_NEAR(fine.speed, 1.5, 1e-15);
   expectInputError([&] { findLimitCrossing({1, 2}, {1, std::nan("")}, 1.5, 0.1, f); }, "at speed 2");
   expectInputError([&] { findLimitCrossing({1, 2}, {1, 2}, 1.5, 0.01, [](double) { return std::nan(""); }); },
                    "at speed 1.5");

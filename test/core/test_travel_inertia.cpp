@@ -154,6 +154,9 @@ TEST_P(TravelInertiaOfVehicle, GroundReactionsAlongXCarryTheMassTimesTheAccelera
   const Vector ke = sys.stiffness * e;
   // The load itself: -m per unit a.
   EXPECT_NEAR(e.dot(sys.travel_load), -f.mass, kBalanceTolerance * f.mass);
+  // The ground's reaction to it: by the symmetry of K, -(K e)^T x = -e^T K x = -e^T f_a, so this
+  // checks that the solve balances the load through the ground springs (the physics is the line
+  // above).
   const fem::StaticResult r = fem::solveStatic(sys, sys.travel_load);
   const double reaction = -ke.dot(r.displacement);
   EXPECT_NEAR(reaction, f.mass, kBalanceTolerance * f.mass) << "mass " << f.mass << " kg";

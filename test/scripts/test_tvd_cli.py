@@ -712,9 +712,9 @@ class TvdCliTest(unittest.TestCase):
                 self.assertTrue(lo <= l["speed_kmh"] <= hi)
                 self.assertLess(by_speed[lo][point][key], limit)
                 self.assertGreaterEqual(by_speed[hi][point][key], limit)
-                # The lowest crossing: every sweep speed below the bracket is under the limit.
-                self.assertTrue(all(by_speed[v][point][key] < limit
-                                    for v in d["speeds_kmh"] if v <= lo))
+                # The lowest crossing: every run below the bracket (the sweep's and every
+                # bisection's, of any point and limit) is under the limit.
+                self.assertTrue(all(by_speed[v][point][key] < limit for v in by_speed if v <= lo))
                 if name == "absorbed_power":
                     at = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
                                        "--track", road, "--speed-kmh", repr(l["speed_kmh"]),
@@ -723,6 +723,25 @@ class TvdCliTest(unittest.TestCase):
                     self.assertAlmostEqual(got[point]["absorbed_power_w"] / limit, 1.0, delta=0.01,
                                            msg=point)
         self.assertEqual(outcomes, {"reached", "at_lowest_speed", "not_reached"})
+
+    def test_ride_limit_is_the_lowest_over_every_run(self):
+        """A bisection of one point adds runs the other points see: over the 15 cm half-round
+        obstacle (un-tracked) the crew seat's bisection ran 7.5 km/h, where the hull already
+        exceeds 2.5 g, below the hull's first sweep bracket (10..15 km/h); the hull's limit must
+        come from that run, not from the sweep alone."""
+        d = self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          "half_round:0.15", "--points", "crew_seat,hull", "--cache-dir",
+                          self.cache)
+        runs = {r["speed_kmh"]: {p["point"]: p for p in r["points"]} for r in d["runs"]}
+        for l in d["limits"]:
+            c = l["peak_acceleration"]
+            self.assertEqual(c["status"], "reached", l["point"])
+            lo, hi = c["bracket_kmh"]
+            self.assertLessEqual(hi - lo, d["tolerance_kmh"] + 1e-12)
+            below = [v for v in runs if v <= lo]
+            self.assertTrue(all(runs[v][l["point"]]["peak_up_g"] < 2.5 for v in below),
+                            (l["point"], c, [(v, runs[v][l["point"]]["peak_up_g"]) for v in below]))
+            self.assertGreaterEqual(runs[hi][l["point"]]["peak_up_g"], 2.5)
 
     def test_ride_bad_options_are_named_before_any_work(self):
         ride = ["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", self.ride_road(),

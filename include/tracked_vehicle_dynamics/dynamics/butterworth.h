@@ -3,8 +3,9 @@
 // before its peak is read.
 //
 // An n-th order Butterworth low-pass of corner ω_c = 2π f_c has its poles evenly spaced on the
-// circle |s| = ω_c in the left half-plane, at angles θ_k = π (2k - 1) / (2n) from the negative
-// real axis, k = 1 .. n. Pairing conjugate poles gives, for k = 1 .. ⌊n/2⌋, the sections
+// circle |s| = ω_c in the left half-plane, s_k = ω_c (-sin φ_k ± j cos φ_k), at angles
+// φ_k = π (2k - 1) / (2n) from the imaginary axis. Pairing conjugate poles gives, for
+// k = 1 .. ⌊n/2⌋, the sections
 //   H_k(s) = ω_c^2 / (s^2 + 2 sin(φ_k) ω_c s + ω_c^2),   φ_k = π (2k - 1) / (2n),
 // (quality factor Q_k = 1 / (2 sin φ_k): 0.541 and 1.307 for n = 4), and for odd n the real pole
 //   H_0(s) = ω_c / (s + ω_c).

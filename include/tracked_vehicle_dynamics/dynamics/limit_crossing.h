@@ -32,9 +32,11 @@ struct LimitCrossing {
 };
 
 /// `speeds` strictly increasing (any unit), `values` the metric at each; `limit` the threshold;
-/// `tolerance` > 0 the width (same unit as the speeds) to which the bracket is narrowed;
+/// `tolerance` > 0 the width (same unit as the speeds) to which the bracket is narrowed (or until
+/// its ends are adjacent doubles);
 /// `evaluate(v)` the metric at speed v (a simulation). Throws InputError for fewer than one
-/// speed, sizes that differ, speeds not strictly increasing, or a non-positive tolerance, and
+/// speed, sizes that differ, speeds not strictly increasing, a non-finite limit or a non-positive
+/// tolerance, and
 /// for a non-finite value (naming its speed).
 LimitCrossing findLimitCrossing(const std::vector<double>& speeds, const std::vector<double>& values,
                                 double limit, double tolerance,

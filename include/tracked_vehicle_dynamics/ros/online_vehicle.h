@@ -6,6 +6,10 @@
 //   s_{k+1} = s_k + v h                                    station of the reference point [m]
 //   w_{k+1} = RoadInputSampler(terrain, s_{k+1}, v)         road inputs [u; u']
 //   Simulator::step(w_{k+1})                               exact discretisation (simulator.h)
+// and the comfort meter takes the vertical acceleration at the comfort point. The simulator
+// starts from static equilibrium under gravity on flat ground (u = 0), K q0 = f_g, so a vehicle
+// at rest on flat terrain stays exactly where it is; resetTo() restarts it at any station in
+// static equilibrium on the terrain there, K q0 = f_g + K_u u(s). step() allocates nothing.
 //
 // With a speed slew (options max_acceleration / max_deceleration > 0) the speed follows the
 // commanded speed v_c at a bounded rate, and the model feels the travel inertia of the path frame
@@ -14,10 +18,9 @@
 //   s_{k+1} = s_k + (v_k + v_{k+1}) h / 2                  (exact for constant acceleration)
 // Without it (both 0, the default) a new speed applies at once and no travel inertia is applied:
 // a step in speed would be an infinite acceleration.
-// and the comfort meter takes the vertical acceleration at the comfort point. The simulator
-// starts from static equilibrium under gravity on flat ground (u = 0), K q0 = f_g, so a vehicle
-// at rest on flat terrain stays exactly where it is; resetTo() restarts it at any station in
-// static equilibrium on the terrain there, K q0 = f_g + K_u u(s). step() allocates nothing.
+// a_k, the rate over [t_k, t_{k+1}], rides in w_{k+1}: with the first-order hold the load ramps
+// up over the step in which the speed starts to change (about half a step late), with the
+// zero-order hold it acts one step late; at 1 kHz either is a millisecond.
 #pragma once
 
 #include <optional>
