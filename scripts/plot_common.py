@@ -4,6 +4,7 @@ arguments, checking the outputs before anything is plotted and writing the figur
 import argparse
 import csv
 import io
+import json
 import logging
 import math
 import os
@@ -74,6 +75,26 @@ def reason(error):
     """The human part of an exception, for '(...)' in an error line."""
     text = getattr(error, "strerror", None) or str(error) or type(error).__name__
     return text.strip().splitlines()[0] if text.strip() else type(error).__name__
+
+
+# --- JSON documents (`tvd ... --json`) ----------------------------------------------------------
+
+def read_json(path):
+    """The JSON document in `path`; one error line when it cannot be read or is not JSON."""
+    try:
+        with open(path, encoding="utf-8-sig") as stream:
+            return json.load(stream)
+    except OSError as error:
+        fail(f"{path}: cannot read ({reason(error)})")
+    except ValueError as error:
+        fail(f"{path}: not JSON ({reason(error)})")
+
+
+def json_number(path, what, value):
+    """`value` as a float; one error line naming `what` when it is not a finite number."""
+    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
+        fail(f"{path}: {what} is not a finite number ({value!r})")
+    return float(value)
 
 
 # --- MAT files ---------------------------------------------------------------------------------

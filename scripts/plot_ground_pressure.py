@@ -16,11 +16,10 @@ Bad input (a missing or malformed file, a JSON document that is not `tvd statics
 with status 2 and one line on stderr naming the file; no figure is written then.
 """
 import argparse
-import json
-import math
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import OUT_HELP, ArgumentParser, check_outputs, fail, labelled, reason, save
+from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, json_number, labelled,
+                         read_json, save)
 import matplotlib.pyplot as plt
 
 SIDES = ("left", "right")
@@ -28,21 +27,9 @@ KEYS = ("track_assemblies", "road_wheels", "nominal_ground_pressure_pa", "mean_p
         "rowland_mean_maximum_pressure_pa")
 
 
-def number(path, what, value):
-    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
-        fail(f"{path}: {what} is not a finite number ({value!r})")
-    return float(value)
-
-
 def load(path):
     """The statics document: (assemblies per side [(x, kPa)], wheel stations per side, figures)."""
-    try:
-        with open(path, encoding="utf-8-sig") as stream:
-            doc = json.load(stream)
-    except OSError as error:
-        fail(f"{path}: cannot read ({reason(error)})")
-    except ValueError as error:
-        fail(f"{path}: not JSON ({reason(error)})")
+    doc = read_json(path)
     if not isinstance(doc, dict) or any(k not in doc for k in KEYS):
         missing = [k for k in KEYS if not isinstance(doc, dict) or k not in doc]
         fail(f"{path}: not the output of `tvd statics --json` (no {', '.join(missing)})")
@@ -53,8 +40,8 @@ def load(path):
     for i, a in enumerate(doc["track_assemblies"]):
         if not isinstance(a, dict) or a.get("side") not in SIDES:
             fail(f"{path}: track_assemblies[{i}] has no side 'left' or 'right'")
-        assemblies[a["side"]].append((number(path, f"track_assemblies[{i}].x_m", a.get("x_m")),
-                                      number(path, f"track_assemblies[{i}].pressure_pa",
+        assemblies[a["side"]].append((json_number(path, f"track_assemblies[{i}].x_m", a.get("x_m")),
+                                      json_number(path, f"track_assemblies[{i}].pressure_pa",
                                              a.get("pressure_pa")) / 1e3))
     if not any(assemblies.values()):
         fail(f"{path}: no track assembly on the ground")
@@ -65,8 +52,8 @@ def load(path):
         side = "left" if "_left_" in name else "right" if "_right_" in name else None
         if side is None:
             fail(f"{path}: road_wheels[{i}] is not named road_wheel_<left|right>_<k>")
-        wheels[side].append(number(path, f"road_wheels[{i}].x_m", w.get("x_m")))
-    figures = {k: number(path, k, doc[k]) / 1e3 for k in KEYS[2:]}
+        wheels[side].append(json_number(path, f"road_wheels[{i}].x_m", w.get("x_m")))
+    figures = {k: json_number(path, k, doc[k]) / 1e3 for k in KEYS[2:]}
     figures["contact"] = str(doc.get("contact", ""))
     return assemblies, wheels, figures
 

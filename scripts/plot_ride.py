@@ -25,11 +25,10 @@ name no file has) exits with status 2 and one line on stderr naming the file; no
 written then.
 """
 import argparse
-import json
-import math
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import OUT_HELP, ArgumentParser, check_outputs, fail, labelled, reason, save
+from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, json_number, labelled,
+                         read_json, save)
 import matplotlib.pyplot as plt
 
 KEYS = ("points", "runs", "limits", "power_limit_w", "peak_limit_g", "peak_lowpass_hz")
@@ -39,22 +38,10 @@ METRICS = (("absorbed_power", "absorbed_power_w", "power_limit_w", "absorbed pow
            ("peak_acceleration", "peak_up_g", "peak_limit_g", "peak upward acceleration [g]", "g"))
 
 
-def number(path, what, value):
-    if not isinstance(value, (int, float)) or isinstance(value, bool) or not math.isfinite(value):
-        fail(f"{path}: {what} is not a finite number ({value!r})")
-    return float(value)
-
-
 def load(path):
     """The ride document: (points, {point: {key: [(speed, value)]}}, {point: limits}, figures);
     a spectral document's curves and limits hold the absorbed power only."""
-    try:
-        with open(path, encoding="utf-8-sig") as stream:
-            doc = json.load(stream)
-    except OSError as error:
-        fail(f"{path}: cannot read ({reason(error)})")
-    except ValueError as error:
-        fail(f"{path}: not JSON ({reason(error)})")
+    doc = read_json(path)
     spectral = isinstance(doc, dict) and doc.get("method") == "spectral"
     keys = [k for k in KEYS if not (spectral and k in PEAK_KEYS)]
     metrics = METRICS[:1] if spectral else METRICS
@@ -71,13 +58,13 @@ def load(path):
     for i, run in enumerate(doc["runs"]):
         if not isinstance(run, dict) or not isinstance(run.get("points"), list):
             fail(f"{path}: runs[{i}] has no list of points")
-        speed = number(path, f"runs[{i}].speed_kmh", run.get("speed_kmh"))
+        speed = json_number(path, f"runs[{i}].speed_kmh", run.get("speed_kmh"))
         for j, p in enumerate(run["points"]):
             name = p.get("point") if isinstance(p, dict) else None
             if name not in curves:
                 fail(f"{path}: runs[{i}].points[{j}] is not one of the points")
             for _, key, *_ in metrics:
-                curves[name][key].append((speed, number(path, f"runs[{i}].points[{j}].{key}", p.get(key))))
+                curves[name][key].append((speed, json_number(path, f"runs[{i}].points[{j}].{key}", p.get(key))))
     limits = {}
     for i, entry in enumerate(doc["limits"]):
         name = entry.get("point") if isinstance(entry, dict) else None
@@ -90,8 +77,8 @@ def load(path):
                     "reached", "at_lowest_speed", "not_reached"):
                 fail(f"{path}: limits[{i}].{kind} has no status")
             limits[name][kind] = (limit["status"],
-                                  number(path, f"limits[{i}].{kind}.speed_kmh", limit.get("speed_kmh")))
-    figures = {k: number(path, k, doc[k]) for k in keys[3:]}
+                                  json_number(path, f"limits[{i}].{kind}.speed_kmh", limit.get("speed_kmh")))
+    figures = {k: json_number(path, k, doc[k]) for k in keys[3:]}
     road = doc.get("road")
     figures["track"] = str(doc.get("track", road.get("name", "") if isinstance(road, dict) else ""))
     figures["spectral"] = spectral

@@ -62,7 +62,6 @@ struct Run {
 
 void run(const RideOptions& opt) {
   const std::vector<double> sweep = parseSpeedSweep(opt.speeds);
-  vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const terrain::Terrain track = terrain::loadTrack(opt.track);
   const double distance = track.endStation() - track.startStation();
   if (!(distance > 0))
@@ -83,12 +82,10 @@ void run(const RideOptions& opt) {
     throw InputError(m.str());
   }
   std::vector<std::string> warnings;
-  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
-  std::vector<std::string> named;
-  for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
-  const std::vector<std::string> points = choosePoints(opt.points, named);  // before any work
-  const ReducedModelSource reduced = obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced);
-  variant = reduced.variant;
+  const RideModel model = loadRideModel(opt, &warnings);
+  const std::vector<std::string>& points = model.points;
+  const ReducedModelSource& reduced = model.reduced;
+  const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;
 
   dynamics::SimulatorOptions sim_options;
@@ -112,21 +109,18 @@ void run(const RideOptions& opt) {
 
   // One run per speed, kept by speed: the sweep's, then those the bisections ask for (a speed
   // both limits of several points want is simulated once).
-  std::map<double, Run> runs;
   double simulated = 0.0;
   const auto start = Clock::now();
-  auto ride = [&](double speed_kmh) -> const Run& {
-    auto found = runs.find(speed_kmh);
-    if (found != runs.end()) return found->second;
+  RideRuns<Run> ride([&](double speed_kmh) {
     const Drive drive(track.startStation(), distance, opt.dt, speed_kmh / 3.6);
     std::vector<PointComfort> comfort;
     std::vector<dynamics::ShockMeter> peaks;
     std::vector<DofIndex> z_rows;
     for (const std::string& p : points) {
-      comfort.emplace_back(p, outputRow(names, p + " ux/acc"), outputRow(names, p + " uy/acc"),
-                           outputRow(names, p + " uz/acc"), opt.dt);
+      comfort.emplace_back(p, outputRow(names, p + " ux/acc", "ride"), outputRow(names, p + " uy/acc", "ride"),
+                           outputRow(names, p + " uz/acc", "ride"), opt.dt);
       peaks.emplace_back(1.0 / opt.dt, shock);
-      z_rows.push_back(outputRow(names, p + " uz/acc"));
+      z_rows.push_back(outputRow(names, p + " uz/acc", "ride"));
     }
     driveOver(sim, sys, reduced.model.gravity_load, drive, road, lines, nullptr,
               [&](long, const OutputRow& y) {
@@ -143,35 +137,23 @@ void run(const RideOptions& opt) {
                           comfort[i].totalValue(), peaks[i].peakUp() / dynamics::kStandardGravity,
                           peaks[i].peakAbsolute() / dynamics::kStandardGravity});
     }
-    return runs.emplace(speed_kmh, std::move(r)).first->second;
-  };
-  for (double v : sweep) ride(v);
-  for (double v : sweep) runs.at(v).in_sweep = true;
+    return r;
+  });
+  ride.sweep(sweep);
 
+  // Per point its absorbed-power limit, then its peak limit.
+  std::vector<RideCriterion<Run>> criteria;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    criteria.push_back({[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
+    criteria.push_back({[i](const Run& r) { return r.points[i].peak_up_g; }, opt.peak_limit_g});
+  }
+  const std::vector<dynamics::LimitCrossing> found = ride.limits(criteria, opt.tolerance_kmh);
   struct Limits {
     dynamics::LimitCrossing power, peak;
   };
-  // Over every run: the bisections of one point and limit add runs the others see, so the
-  // searches are repeated until a round adds no run (the refinements summed over the rounds).
-  auto known = [&] {
-    std::vector<double> v;
-    for (const auto& entry : runs) v.push_back(entry.first);
-    return v;
-  };
-  std::vector<Limits> limits(points.size());
-  for (std::size_t before = 0; before != runs.size();) {
-    before = runs.size();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      Limits& l = limits[i];
-      const int power_so_far = l.power.refinements, peak_so_far = l.peak.refinements;
-      l.power = lowestCrossing(known, [&](double v) { return ride(v).points[i].absorbed_power; },
-                               opt.power_limit_w, opt.tolerance_kmh);
-      l.peak = lowestCrossing(known, [&](double v) { return ride(v).points[i].peak_up_g; }, opt.peak_limit_g,
-                              opt.tolerance_kmh);
-      l.power.refinements += power_so_far;
-      l.peak.refinements += peak_so_far;
-    }
-  }
+  std::vector<Limits> limits;
+  for (std::size_t i = 0; i < points.size(); ++i) limits.push_back({found[2 * i], found[2 * i + 1]});
+  const std::map<double, Run>& runs = ride.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
 
   // Every run, by speed: the table's rows.

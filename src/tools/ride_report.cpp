@@ -4,10 +4,20 @@
 #include <iomanip>
 #include <sstream>
 
+#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
+
+RideModel loadRideModel(const RideOptions& opt, std::vector<std::string>* warnings) {
+  const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, warnings);
+  std::vector<std::string> named;
+  for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
+  std::vector<std::string> points = choosePoints(opt.points, named);  // before any work
+  return {std::move(points), obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced)};
+}
 
 dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()>& known_speeds,
                                        const std::function<double(double)>& metric, double limit,

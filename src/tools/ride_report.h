@@ -2,9 +2,12 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "reduction_options.h"
+#include "ride_options.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 
@@ -15,6 +18,67 @@ namespace tools {
 /// `spec` is empty. Throws InputError for a point the model lacks, one listed twice or an empty
 /// name.
 std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named);
+
+/// What both methods rate: the points (checked against the description before any work) and the
+/// reduced model, loaded or reduced as the options say. Warnings of the description are added
+/// to `warnings`.
+struct RideModel {
+  std::vector<std::string> points;
+  ReducedModelSource reduced;
+};
+RideModel loadRideModel(const RideOptions& opt, std::vector<std::string>* warnings);
+
+/// One limit to search: the metric of point-run `value(run)` and its threshold.
+template <typename Run>
+struct RideCriterion {
+  std::function<double(const Run&)> value;
+  double limit;
+};
+
+/// The runs of a sweep, one per speed [km/h], made on demand by `make` and kept (a speed that
+/// several points and limits ask for is evaluated once), and the lowest speed at which each
+/// criterion is reached over all of them (lowestCrossing), the searches repeated until a round
+/// adds no run: the bisections of one criterion add runs the others see.
+template <typename Run>
+class RideRuns {
+ public:
+  explicit RideRuns(std::function<Run(double)> make) : make_(std::move(make)) {}
+
+  const Run& at(double speed_kmh) {
+    auto found = runs_.find(speed_kmh);
+    if (found != runs_.end()) return found->second;
+    return runs_.emplace(speed_kmh, make_(speed_kmh)).first->second;
+  }
+  /// Evaluates every speed of the sweep and marks its runs (Run::in_sweep).
+  void sweep(const std::vector<double>& speeds) {
+    for (double v : speeds) at(v);
+    for (double v : speeds) runs_.at(v).in_sweep = true;
+  }
+  const std::map<double, Run>& all() const { return runs_; }
+
+  std::vector<dynamics::LimitCrossing> limits(const std::vector<RideCriterion<Run>>& criteria, double tolerance) {
+    auto known = [this] {
+      std::vector<double> v;
+      for (const auto& entry : runs_) v.push_back(entry.first);
+      return v;
+    };
+    std::vector<dynamics::LimitCrossing> found(criteria.size());
+    for (std::size_t before = 0; before != runs_.size();) {
+      before = runs_.size();
+      for (std::size_t i = 0; i < criteria.size(); ++i) {
+        const int so_far = found[i].refinements;
+        found[i] = lowestCrossing(known, [&](double v) { return criteria[i].value(at(v)); }, criteria[i].limit,
+                                  tolerance);
+        found[i].refinements += so_far;  // summed over the rounds
+      }
+    }
+    return found;
+  }
+
+ private:
+  std::function<Run(double)> make_;
+  std::map<double, Run> runs_;
+};
 
 /// The lowest speed at which `metric` reaches `limit` over EVERY speed evaluated so far, not only
 /// the sweep's: the bisections of other points and limits add runs, and one of them may already

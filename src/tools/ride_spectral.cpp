@@ -18,6 +18,7 @@
 
 #include "output_files.h"
 #include "ride_report.h"
+#include "simulation_layout.h"
 #include "speed_sweep.h"
 #include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
@@ -66,12 +67,6 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
   return road;
 }
 
-DofIndex verticalRow(const std::vector<std::string>& outputs, const std::string& point) {
-  const auto it = std::find(outputs.begin(), outputs.end(), point + " uz");
-  if (it == outputs.end()) throw InputError("ride: the model has no output '" + point + " uz'");
-  return static_cast<DofIndex>(it - outputs.begin());
-}
-
 }  // namespace
 
 void runSpectralRide(const RideOptions& opt) {
@@ -80,17 +75,14 @@ void runSpectralRide(const RideOptions& opt) {
   dynamics::SpectralRideOptions spectral;
   spectral.points_per_decade = opt.points_per_decade;
   dynamics::checkSpectralInput(road, spectral);
-  vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   std::vector<std::string> warnings;
-  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
-  std::vector<std::string> named;
-  for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
-  const std::vector<std::string> points = choosePoints(opt.points, named);  // before any work
-  const ReducedModelSource reduced = obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced);
-  variant = reduced.variant;
+  const RideModel model = loadRideModel(opt, &warnings);
+  const std::vector<std::string>& points = model.points;
+  const ReducedModelSource& reduced = model.reduced;
+  const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;
   std::vector<DofIndex> rows;
-  for (const std::string& p : points) rows.push_back(verticalRow(sys.output_names, p));
+  for (const std::string& p : points) rows.push_back(outputRow(sys.output_names, p + " uz", "ride"));
 
   // The modes and the grouped modal input matrices, once for every speed.
   const auto start = Clock::now();
@@ -99,10 +91,7 @@ void runSpectralRide(const RideOptions& opt) {
   const dynamics::SpectralRide ride(modal, lateral, rows, road, spectral);
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
 
-  std::map<double, Run> runs;
-  auto rate = [&](double speed_kmh) -> const Run& {
-    auto found = runs.find(speed_kmh);
-    if (found != runs.end()) return found->second;
+  RideRuns<Run> rate([&](double speed_kmh) {
     const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / 3.6);
     Run run;
     const Vector f = ride.grid(speed_kmh / 3.6);
@@ -110,27 +99,14 @@ void runSpectralRide(const RideOptions& opt) {
     run.low_hz = f(0);
     run.high_hz = f(f.size() - 1);
     run.points = r.outputs;
-    return runs.emplace(speed_kmh, std::move(run)).first->second;
-  };
-  for (double v : sweep) rate(v);
-  for (double v : sweep) runs.at(v).in_sweep = true;
-  // Over every speed evaluated: another point's bisection may have found one above the limit
-  // below this point's first sweep bracket; repeated until a round adds none (ride_command.cpp).
-  auto known = [&] {
-    std::vector<double> v;
-    for (const auto& entry : runs) v.push_back(entry.first);
-    return v;
-  };
-  std::vector<dynamics::LimitCrossing> limits(points.size());
-  for (std::size_t before = 0; before != runs.size();) {
-    before = runs.size();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const int so_far = limits[i].refinements;
-      limits[i] = lowestCrossing(known, [&](double v) { return rate(v).points[i].absorbed_power; },
-                                 opt.power_limit_w, opt.tolerance_kmh);
-      limits[i].refinements += so_far;
-    }
-  }
+    return run;
+  });
+  rate.sweep(sweep);
+  std::vector<RideCriterion<Run>> criteria;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    criteria.push_back({[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
+  const std::vector<dynamics::LimitCrossing> limits = rate.limits(criteria, opt.tolerance_kmh);
+  const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";

@@ -15,9 +15,10 @@ bool endsWith(const std::string& text, const std::string& suffix) {
 }
 }  // namespace
 
-DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name) {
+DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name,
+                   const std::string& command) {
   const auto it = std::find(simulator_rows.begin(), simulator_rows.end(), name);
-  if (it == simulator_rows.end()) throw InputError("simulate: the model has no output '" + name + "'");
+  if (it == simulator_rows.end()) throw InputError(command + ": the model has no output '" + name + "'");
   return static_cast<DofIndex>(it - simulator_rows.begin());
 }
 

@@ -56,8 +56,10 @@ struct RoadUnderWheel {
 std::vector<RoadUnderWheel> roadUnderWheels(const SimulationLayout& layout,
                                             const vehicle::VehicleGeometry& geometry);
 
-/// Row of `name` in `simulator_rows`; throws InputError naming it when absent.
-DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name);
+/// Row of `name` in `simulator_rows` (or any list of output names); throws InputError naming it,
+/// and the `command` that asked, when absent.
+DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name,
+                   const std::string& command = "simulate");
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -47,17 +48,6 @@ std::vector<AnalogSection> testPowerFilter() {
   const double q = 0.7;
   const double c = 0.3;
   return {AnalogSection{0.0, c * w0 / q, 0.0, w0 * w0, w0 / q, 1.0, 5.0}};
-}
-
-template <typename Call>
-void expectInputError(Call call, const std::string& part) {
-  try {
-    call();
-    ADD_FAILURE() << "no InputError thrown (expected one mentioning '" << part << "')";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
-        << "message \"" << e.what() << "\" lacks \"" << part << "\"";
-  }
 }
 
 TEST(Iso2631, WeightingsMatchTheStandardsTable) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/butterworth.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
@@ -22,16 +23,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kExact = 1e-12;
-
-template <typename Call>
-void expectInputError(Call call, const std::string& part) {
-  try {
-    call();
-    ADD_FAILURE() << "no InputError (expected one mentioning '" << part << "')";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
-}
 
 TEST(Butterworth, AnalogueMagnitudeIsMaximallyFlat) {
   for (int n = 1; n <= 6; ++n) {

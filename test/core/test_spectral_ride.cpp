@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dynamics_test_models.h"
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/dynamics/spectral_ride.h"
@@ -24,16 +25,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
-
-template <typename Call>
-void expectInputError(Call call, const std::string& part) {
-  try {
-    call();
-    ADD_FAILURE() << "no InputError (expected one mentioning '" << part << "')";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
-}
 
 SpectralRide rideOf(const SecondOrderSystem& s, const std::vector<DofIndex>& rows,
                     const RoadSpectrum& road, bool keep_psd = false) {

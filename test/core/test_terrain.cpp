@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
 #include "tracked_vehicle_dynamics/terrain/moving_average.h"
@@ -62,19 +63,6 @@ std::vector<double> crossings(const Terrain& t, double y, double level, double f
 }
 
 /// Expects `call` to throw InputError whose message contains every one of `parts`.
-template <typename Call>
-void expectInputError(Call call, const std::vector<std::string>& parts) {
-  try {
-    call();
-    ADD_FAILURE() << "no InputError thrown (expected one mentioning '" << parts.front() << "')";
-  } catch (const InputError& e) {
-    for (const std::string& part : parts) {
-      EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
-          << "message \"" << e.what() << "\" lacks \"" << part << "\"";
-    }
-  }
-}
-
 /// A scratch directory removed at the end of the test.
 class TempDir {
  public:
