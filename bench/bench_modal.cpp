@@ -17,6 +17,7 @@
 
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/heap_reuse.h"
 
 namespace tvd = tracked_vehicle_dynamics;
 
@@ -108,6 +109,7 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  const tvd::HeapReuse heap_reuse;  // as tvd does (heap_reuse.h)
   int repeat = 5, modes = 40, assemblies = 92, nodes_per_link = 15;
   const char* const usage =
       "usage: bench_modal [--repeat N] [--modes N] [--assemblies N]   (whole numbers >= 1;\n"

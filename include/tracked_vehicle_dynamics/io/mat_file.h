@@ -9,6 +9,8 @@
 
 #include "tracked_vehicle_dynamics/types.h"
 
+struct matvar_t;  // matio.h: a variable (header and data)
+
 namespace tracked_vehicle_dynamics {
 namespace io {
 
@@ -83,6 +85,10 @@ class MatReader {
   std::vector<std::string> readStrings(const std::string& name, DofIndex count = kAnySize) const;
 
  private:
+  /// The header of a variable read when the file was opened (InputError when there is none),
+  /// with its data read when `with_data` (once).
+  const matvar_t* header(const std::string& name, bool with_data) const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::string path_;
