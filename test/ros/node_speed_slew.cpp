@@ -36,7 +36,6 @@
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
-#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 using namespace tracked_vehicle_dynamics;
 using namespace tracked_vehicle_dynamics::ros_layer;
@@ -317,11 +316,8 @@ TEST_F(NodeSpeedSlew, SpeedStepsSlewAtTheSetRatesWithTheTravelInertia) {
 
   // Pitch and accelerometer, settled on each ramp's constant acceleration: the reduced model's
   // static response a (H K^-1 f_a) about the rest pose (the same cached model, loaded here).
-  const std::string vehicle_file = test::requiredParam<std::string>(private_nh_, "vehicle");
-  const auto model = reduction::loadOrReduceVehicle(
-      vehicle_file, vehicle::parseVariant(test::requiredParam<std::string>(private_nh_, "variant")),
-      test::requiredParam<std::string>(private_nh_, "cache_dir"));
-  const OnlineVehicle reference(model, vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file)));
+  const auto [model, geometry] = test::nodeModel(private_nh_);
+  const OnlineVehicle reference(model, geometry);
   const double rest_pitch = rollPitchYaw(reference.hullPose().rotation)(1);
   const auto& names = model.system.output_names;
   const auto ry = std::find(names.begin(), names.end(), "hull ry") - names.begin();
