@@ -32,6 +32,7 @@
 
 #include <geometry_msgs/AccelStamped.h>
 #include <nav_msgs/Odometry.h>
+#include <rosgraph_msgs/Log.h>
 #include <sensor_msgs/Imu.h>
 #include <std_msgs/Float64.h>
 #include <tf2_msgs/TFMessage.h>
@@ -172,6 +173,17 @@ class NodeSpeedSlew : public ::testing::Test {
         slewed_(nh_, "slewed", "", imu_point_),
         unslewed_(nh_, "unslewed", "unslewed/", imu_point_) {
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    rosout_sub_ = nh_.subscribe<rosgraph_msgs::Log>(
+        "/rosout", 1000, [this](const rosgraph_msgs::Log::ConstPtr& m) { log_.push_back(*m); });
+  }
+
+  /// The first message logged by node `name` that contains `text`; empty when none.
+  std::string logged(const std::string& name, const std::string& text) const {
+    for (const auto& m : log_) {
+      if (m.name == name && m.msg.find(text) != std::string::npos)
+        return m.msg;
+    }
+    return "";
   }
 
   /// Moves the clock to `t` and waits for both nodes' complete samples at `t`.
@@ -239,6 +251,8 @@ class NodeSpeedSlew : public ::testing::Test {
   std::string imu_point_;
   Recorder slewed_, unslewed_;
   ros::Publisher clock_pub_;
+  ros::Subscriber rosout_sub_;
+  std::vector<rosgraph_msgs::Log> log_;
   ros::Time t_{100.0};
 };
 
@@ -275,7 +289,10 @@ TEST_F(NodeSpeedSlew, SpeedStepsSlewAtTheSetRatesWithTheTravelInertia) {
   // 0 -> v, at A; then v -> 0, at D.
   const ros::Time up = t_;
   ASSERT_NO_FATAL_FAILURE(command(v));
-  ASSERT_TRUE(runFor(rise + cruise));
+  // Half-way up, a bad speed: refused, the slew goes on towards v (the closed forms span it).
+  ASSERT_TRUE(runFor(0.5 * rise));
+  ASSERT_NO_FATAL_FAILURE(command(-1.0));
+  ASSERT_TRUE(runFor(0.5 * rise + cruise));
   const ros::Time down = t_;
   ASSERT_NO_FATAL_FAILURE(command(0.0));
   ASSERT_TRUE(runFor(fall + stopped));
@@ -376,6 +393,16 @@ TEST_F(NodeSpeedSlew, SpeedStepsSlewAtTheSetRatesWithTheTravelInertia) {
         accel_error, last.specific_force->x(),
         a * std::cos(theta) - kStandardGravity * std::sin(theta));
   }
+
+  // The refusal's warning names the speed kept: the last valid one, v, which the slew was still
+  // approaching (not the current v / 2).
+  std::string refusal;
+  EXPECT_TRUE(test::spinUntil(
+      [&] { return !(refusal = logged("/slewed/vehicle_dynamics", "negative speed")).empty(); },
+      10.0));
+  char kept[64];
+  std::snprintf(kept, sizeof kept, "keeping %.3f m/s", v);
+  EXPECT_NE(refusal.find(kept), std::string::npos) << refusal;
 
   // --- The unslewed node: each speed applies whole at the next sample, without travel inertia.
   const auto& plain = unslewed_.samples();
