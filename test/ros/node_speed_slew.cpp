@@ -28,7 +28,9 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <string>
 #include <tuple>
+#include <vector>
 
 #include <geometry_msgs/AccelStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -297,7 +299,7 @@ TEST_F(NodeSpeedSlew, SpeedStepsSlewAtTheSetRatesWithTheTravelInertia) {
   ASSERT_NO_FATAL_FAILURE(command(0.0));
   ASSERT_TRUE(runFor(fall + stopped));
 
-  // Every sample of both nodes, none twice.
+  // Every sample of both nodes: one per step.
   const auto expected_count = static_cast<std::size_t>(std::lround((t_ - up).toSec() * rate)) + 1;
   for (const Recorder* r : {&slewed_, &unslewed_}) {
     const auto& samples = r->samples();
