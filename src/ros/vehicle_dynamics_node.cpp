@@ -412,8 +412,10 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   if (!why.empty()) {
     ++events_.speeds_rejected;
     last_speed_error_ = why;
+    // The last valid speed is kept: the commanded one (with a slew the current speed is still on
+    // its way there).
     ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: %s; keeping %.3f m/s", why.c_str(),
-                      vehicle_->speed());
+                      vehicle_->commandedSpeed());
     return;
   }
   vehicle_->setSpeed(v);

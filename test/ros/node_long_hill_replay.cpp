@@ -202,10 +202,6 @@ class LongHillReplay : public ::testing::Test {
 };
 
 TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
-  const std::string vehicle_file = test::requiredParam<std::string>(private_nh_, "vehicle");
-  const auto variant =
-      vehicle::parseVariant(test::requiredParam<std::string>(private_nh_, "variant"));
-  const std::string cache_dir = test::requiredParam<std::string>(private_nh_, "cache_dir");
   const std::string track_name = test::requiredParam<std::string>(private_nh_, "track");
   const double v = test::requiredParam<double>(private_nh_, "speed_kmh") / 3.6;
   const double rate = test::requiredParam<double>(private_nh_, "rate");
@@ -232,8 +228,7 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
                         << max_station_ << " m, " << samples_.size() << " samples)";
 
   // The offline reference, on the node's own cached model.
-  const auto model = reduction::loadOrReduceVehicle(vehicle_file, variant, cache_dir);
-  const VehicleGeometry geometry = vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file));
+  const auto [model, geometry] = test::nodeModel(private_nh_);
   const terrain::Terrain track = terrain::makeTrack(track_name);
   const Reference ref =
       offlineRun(model, geometry, track, v, rate, max_station_, method, hold, lateral_offset,

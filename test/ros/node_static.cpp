@@ -228,12 +228,8 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   EXPECT_EQ(last_station_, 0.0);
 
   // The pose is the model's static equilibrium (the same cached model, loaded here).
-  const std::string vehicle_file = test::requiredParam<std::string>(private_nh_, "vehicle");
-  const auto model = reduction::loadOrReduceVehicle(
-      vehicle_file, vehicle::parseVariant(test::requiredParam<std::string>(private_nh_, "variant")),
-      test::requiredParam<std::string>(private_nh_, "cache_dir"));
-  const OnlineVehicle reference(model,
-                                vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file)));
+  const test::NodeModel node = test::nodeModel(private_nh_);
+  const OnlineVehicle reference(node.model, node.geometry);
   const RigidPose expected = reference.hullPose();
   EXPECT_NEAR((poses_.back().pose.translation - expected.translation).norm(), 0.0, tolerance);
   EXPECT_NEAR(poses_.back().pose.rotation.angularDistance(expected.rotation), 0.0, tolerance);

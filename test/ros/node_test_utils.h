@@ -17,6 +17,8 @@
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -135,6 +137,20 @@ T requiredParam(const ros::NodeHandle& nh, const std::string& name) {
     ADD_FAILURE() << "missing test parameter ~" << name;
   }
   return value;
+}
+
+/// The reduced model the node runs and its geometry, from the test's private parameters `vehicle`,
+/// `variant` and `cache_dir` (the node's own): loaded from the cache file the node wrote.
+struct NodeModel {
+  reduction::ReducedModel model;
+  VehicleGeometry geometry;
+};
+inline NodeModel nodeModel(const ros::NodeHandle& nh) {
+  const auto vehicle_file = requiredParam<std::string>(nh, "vehicle");
+  const auto variant = vehicle::parseVariant(requiredParam<std::string>(nh, "variant"));
+  return {reduction::loadOrReduceVehicle(vehicle_file, variant,
+                                         requiredParam<std::string>(nh, "cache_dir")),
+          vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file))};
 }
 
 }  // namespace test
