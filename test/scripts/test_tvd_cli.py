@@ -344,9 +344,11 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
         # 7 more hull rates and accelerations and the hull's surge, 14 wheels, 4 columns for each
-        # of 2 named points, the road under each of the 14 wheels, the travel acceleration.
-        self.assertEqual(len(header), 6 + 8 + 14 + 2 * 4 + 14 + 1)
-        self.assertEqual(header[-1], "travel_accel_m_s2")
+        # of 2 named points, the road under each of the 14 wheels, the travel acceleration, the
+        # ground force per side and the contacts in tension.
+        self.assertEqual(len(header), 6 + 8 + 14 + 2 * 4 + 14 + 1 + 3)
+        self.assertEqual(header[-4:], ["travel_accel_m_s2", "ground_force_left_n",
+                                       "ground_force_right_n", "contacts_in_tension"])
         self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)
         # 30 m at 50 km/h in 1 ms steps, plus the initial sample.
         self.assertEqual(len(rows), round(30.0 / (speed_kmh / 3.6) / 1e-3) + 1)
@@ -460,7 +462,7 @@ class TvdCliTest(unittest.TestCase):
         header, rows = read_csv(out)
         c = {name: rows[:, i] for i, name in enumerate(header)}
         t = c["time_s"]
-        self.assertEqual(header[-1], "travel_accel_m_s2")
+        self.assertEqual(header[-4], "travel_accel_m_s2")
         np.testing.assert_allclose(c["travel_accel_m_s2"],
                                    np.where((t >= 1 - 1e-9) & (t < 26 - 1e-9), accel, 0.0),
                                    rtol=0, atol=1e-9)
@@ -491,8 +493,8 @@ class TvdCliTest(unittest.TestCase):
         self.assertLess(d["comfort"]["weighted_rms_x_m_s2"], 1e-6)
         self.assertGreater(braking["comfort"]["weighted_rms_x_m_s2"], 1e-3)
         header, rows = read_csv(steady)
-        self.assertEqual(header[-1], "travel_accel_m_s2")
-        self.assertEqual(np.abs(rows[:, -1]).max(), 0.0)
+        self.assertEqual(header[-4], "travel_accel_m_s2")
+        self.assertEqual(np.abs(rows[:, -4]).max(), 0.0)
         self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)
         self.assertLess(np.abs(rows[:, header.index("hull_longitudinal_accel_m_s2")]).max(), 1e-6)
 
