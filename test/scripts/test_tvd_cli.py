@@ -385,6 +385,80 @@ class TvdCliTest(unittest.TestCase):
             self.assertGreaterEqual(p["vibration_total_value_m_s2"], p["weighted_rms_m_s2"])
             self.assertGreater(p["weighted_rms_x_m_s2"], 0.0)  # the hill pitches the hull
 
+    def test_simulate_ground_contact_says_where_the_linear_model_leaves_its_range(self):
+        """Every road input's ground spring force F = k (u - q) (compression positive): at rest
+        the contacts carry the weight (statics' weight_n, 1e-6); over a 1 cm half-round at
+        5 km/h every contact stays in compression, over the out-of-phase waves at 30 km/h the
+        model pulls on contacts and on a whole side; the JSON's figures are the CSV columns'; the
+        monitor changes no other column (--ground-contact off: the same CSV less its three
+        columns); --model full says it is not monitored."""
+        weight = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked",
+                               "--contact", "bilateral")["weight_n"]
+        common = ("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache)
+        runs = {}
+        for name, track, speed in (("gentle", "half_round:0.01", "5"), ("harsh", "oop_waves", "30")):
+            out = self.path(f"contact_{name}.csv")
+            d = self.tvd_json(*common, "--track", track, "--speed-kmh", speed, "--out", out)
+            header, rows = read_csv(out)
+            self.assertEqual(header[-3:], ["ground_force_left_n", "ground_force_right_n",
+                                           "contacts_in_tension"])
+            c = {h: rows[:, i] for i, h in enumerate(header)}
+            g = d["ground_contact"]
+            runs[name] = (g, c, out)
+            self.assertEqual(g["contacts"], 84)  # 14 wheels, a pad of 6 soles each
+            self.assertEqual(g["contacts_in_tension_at_rest"], 0)
+            total = c["ground_force_left_n"] + c["ground_force_right_n"]
+            self.assertAlmostEqual(total[0] / weight, 1.0, delta=1e-6)
+            self.assertAlmostEqual(g["static_ground_force_n"] / weight, 1.0, delta=1e-6)
+            # Symmetric vehicle, left and right alike at rest.
+            self.assertAlmostEqual(c["ground_force_left_n"][0] / c["ground_force_right_n"][0], 1.0, delta=1e-9)
+            tension = c["contacts_in_tension"]
+            self.assertEqual(g["max_contacts_in_tension"], tension.max())
+            self.assertAlmostEqual(g["tension_sample_fraction"], np.mean(tension > 0), places=9)
+            self.assertEqual(g["in_range"], tension.max() == 0)
+            for side in ("left", "right"):
+                column = c[f"ground_force_{side}_n"]
+                self.assertAlmostEqual(g[f"peak_ground_force_{side}_n"] / column.max(), 1.0, delta=1e-8)
+                self.assertAlmostEqual(g[f"min_ground_force_{side}_n"] / column.min(), 1.0, delta=1e-8)
+            if tension.max() > 0:
+                first = np.argmax(tension > 0)
+                self.assertAlmostEqual(g["first_tension_time_s"], c["time_s"][first], places=9)
+                self.assertAlmostEqual(g["first_tension_station_m"], c["station_m"][first], places=6)
+                self.assertEqual(g["first_new_tension_time_s"], g["first_tension_time_s"])
+                self.assertLess(g["min_contact_force_n"], 0.0)
+                self.assertIn(g["min_contact"]["side"], ("left", "right"))
+                self.assertTrue(g["min_contact"]["input"].startswith("node "))
+            else:
+                self.assertIsNone(g["first_tension_time_s"])
+                self.assertIsNone(g["first_tension_contact"])
+                self.assertGreater(g["min_contact_force_n"], 0.0)
+        gentle, harsh = runs["gentle"][0], runs["harsh"][0]
+        self.assertTrue(gentle["in_range"])
+        self.assertFalse(harsh["in_range"])
+        self.assertGreater(harsh["max_contacts_in_tension"], 10)
+        # The 1.2 m waves at 30 km/h throw a whole side off the road (its total pulls).
+        self.assertLess(min(harsh["min_ground_force_left_n"], harsh["min_ground_force_right_n"]), 0.0)
+        # The text says so.
+        text = self.tvd(*common, "--track", "oop_waves", "--speed-kmh", "30").stdout
+        self.assertRegex(text, r"ground contact: the linear model pulls on \d+ of 84 contacts .* from t = "
+                               r"[0-9.]+ s \(x = [0-9.]+ m, .*beyond its range")
+        text = self.tvd(*common, "--track", "half_round:0.01", "--speed-kmh", "5").stdout
+        self.assertIn("ground contact: all 84 contacts stay in compression", text)
+        # Off: every other column byte for byte, and no ground_contact figures.
+        off = self.path("contact_off.csv")
+        d = self.tvd_json(*common, "--track", "oop_waves", "--speed-kmh", "30", "--out", off,
+                          "--ground-contact", "off")
+        self.assertEqual(d["ground_contact"], {"monitored": False, "reason": "--ground-contact off"})
+        with open(runs["harsh"][2]) as f:
+            on_lines = [",".join(line.rstrip("\n").split(",")[:-3]) for line in f]
+        with open(off) as f:
+            off_lines = [line.rstrip("\n") for line in f]
+        self.assertEqual(on_lines, off_lines)
+        d = self.tvd_json(*common, "--track", "long_hill", "--speed-kmh", "30", "--model", "full",
+                          "--max-mode-hz", "40")
+        self.assertFalse(d["ground_contact"]["monitored"])
+        self.assertIn("reduced model only", d["ground_contact"]["reason"])
+
     def test_simulate_rates_and_named_points_are_consistent(self):
         """The CSV's rates are the time derivatives of its displacements, and a named point moves
         with the hull as a rigid body: u_z(P) = u_z(G) + roll (y_P - y_G) - pitch (x_P - x_G) for
