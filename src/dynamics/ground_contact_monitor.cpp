@@ -30,6 +30,12 @@ GroundContactMonitor::GroundContactMonitor(const std::vector<GroundContact>& con
     if (side == ContactSide::Left) left_selector_(i) = 1.0;
     if (side == ContactSide::Right) right_selector_(i) = 1.0;
   }
+  int groups = 0;
+  for (const GroundContact& c : contacts_) groups = std::max(groups, c.group + 1);
+  group_selector_.setZero(n_c, groups);
+  for (DofIndex i = 0; i < n_c; ++i)
+    if (contacts_[static_cast<std::size_t>(i)].group >= 0) group_selector_(i, contacts_[static_cast<std::size_t>(i)].group) = 1.0;
+  summary_.groups = groups;
   summary_.contacts = n_c;
   summary_.min_force = Vector::Constant(n_c, std::numeric_limits<double>::infinity());
 }
@@ -102,6 +108,41 @@ void GroundContactMonitor::add(const Eigen::Ref<const Matrix>& forces, const Vec
     left_.push_back(left(k));
     right_.push_back(right(k));
     in_tension_.push_back(count);
+  }
+  if (s.groups > 0) {
+    // A group's force is the sum of its contacts'.
+    const Matrix group_forces = forces * group_selector_;
+    if (s.samples == 0) {
+      group_compressed_at_rest_.assign(static_cast<std::size_t>(s.groups), 1);
+      for (int g = 0; g < s.groups; ++g)
+        if (group_forces(0, g) < 0.0) {
+          group_compressed_at_rest_[static_cast<std::size_t>(g)] = 0;
+          ++s.groups_in_tension_at_rest;
+        }
+    }
+    for (DofIndex k = 0; k < b; ++k) {
+      int count = 0, fresh_count = 0, worst = -1;
+      for (int g = 0; g < s.groups; ++g) {
+        const double f = group_forces(k, g);
+        if (f < s.min_group_force) {
+          s.min_group_force = f;
+          s.min_group = g;
+        }
+        if (!(f < 0.0)) continue;
+        ++count;
+        if (!group_compressed_at_rest_[static_cast<std::size_t>(g)]) continue;
+        ++fresh_count;
+        if (worst < 0 || f < group_forces(k, worst)) worst = g;
+      }
+      s.max_groups_in_tension = std::max(s.max_groups_in_tension, count);
+      if (fresh_count == 0) continue;
+      ++s.new_group_tension_samples;
+      if (s.first_new_group_tension < 0) {
+        s.first_new_group_tension = worst;
+        s.first_new_group_tension_time = times(k);
+        s.first_new_group_tension_station = stations(k);
+      }
+    }
   }
   s.samples += b;
   s.peak_left = std::max(s.peak_left, left.maxCoeff());

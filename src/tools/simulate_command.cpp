@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -38,6 +39,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -82,7 +84,15 @@ void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSumm
   }
   out << (s.in_tension_at_rest > 0 ? ", contacts pressed at rest" : "") << " from t = " << s.first_new_tension_time
       << " s (x = " << s.first_new_tension_station << " m, " << s.newTensionFraction() * 100
-      << " % of samples): beyond its range, a real vehicle would lift there\n";
+      << " % of samples): beyond its range, a real vehicle would lift there";
+  if (s.groups > 0) {
+    if (s.first_new_group_tension >= 0)
+      out << "; whole pads (" << s.max_groups_in_tension << " of " << s.groups << " at once) from t = "
+          << s.first_new_group_tension_time << " s (x = " << s.first_new_group_tension_station << " m)";
+    else
+      out << "; no pad pressed at rest pulls as a whole (min " << s.min_group_force * 1e-3 << " kN)";
+  }
+  out << "\n";
 }
 
 // The ground contact block of the JSON (ground_contact_monitor.h).
@@ -133,7 +143,18 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
       .field("min_ground_force_left_n", s.min_left)
       .field("peak_ground_force_right_n", s.peak_right)
       .field("min_ground_force_right_n", s.min_right)
-      .field("setup_seconds", setup_seconds)
+      .field("setup_seconds", setup_seconds);
+  json.key("pads")
+      .beginObject()
+      .field("count", static_cast<long long>(s.groups))
+      .field("in_tension_at_rest", static_cast<long long>(s.groups_in_tension_at_rest))
+      .field("max_in_tension", static_cast<long long>(s.max_groups_in_tension))
+      .field("first_new_tension_time_s", s.first_new_group_tension_time)
+      .field("first_new_tension_station_m", s.first_new_group_tension_station)
+      .field("new_tension_sample_fraction",
+             s.samples > 0 ? static_cast<double>(s.new_group_tension_samples) / static_cast<double>(s.samples) : 0.0)
+      .field("min_force_n", s.min_group_force)
+      .endObject()
       .endObject();
 }
 
@@ -215,6 +236,17 @@ void run(const SimulateOptions& opt) {
   if (monitor_contact) {
     const auto contact_start = Clock::now();
     contacts = dynamics::groundContacts(model_sys);  // the road inputs (not the travel input)
+    // Each contact's pad (track assembly): the master it acts on is a sole node of that pad.
+    const vehicle::VehicleModel built = vehicle::buildVehicleModel(description, variant);
+    std::map<NodeId, int> assembly_of;
+    for (const vehicle::RoadInput& r : built.layout.road_inputs) assembly_of[r.node] = r.assembly;
+    std::map<int, int> pad_of;  // assembly -> pads numbered in contact order
+    for (dynamics::GroundContact& c : contacts) {
+      if (c.coordinate >= reduced->model.masterCount()) continue;
+      const auto it = assembly_of.find(reduced->model.masters[static_cast<std::size_t>(c.coordinate)].node);
+      if (it == assembly_of.end()) continue;
+      c.group = pad_of.emplace(it->second, static_cast<int>(pad_of.size())).first->second;
+    }
     contact_forces = std::make_unique<dynamics::GroundContactForces>(sys, contacts, sim_options);
     contact_monitor = std::make_unique<dynamics::GroundContactMonitor>(contacts);
     contact_setup_seconds = std::chrono::duration<double>(Clock::now() - contact_start).count();

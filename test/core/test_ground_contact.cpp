@@ -232,6 +232,31 @@ TEST(GroundContactMonitor, TensionAtRestIsCountedApart) {
   EXPECT_DOUBLE_EQ(s.newTensionFraction(), 0.25);
 }
 
+// A pad's soles carry its moment as opposite forces: a sole can pull while the pad presses.
+TEST(GroundContactMonitor, GroupsSumTheirContacts) {
+  std::vector<GroundContact> contacts(4);
+  contacts[0].group = contacts[1].group = 0;
+  contacts[2].group = contacts[3].group = 1;
+  GroundContactMonitor monitor(contacts);
+  Matrix f(3, 4);
+  f << 5, 5, 5, 5,     //
+      -3, 8, 5, 5,     // a sole pulls, its pad presses (5)
+      -3, 1, -4, -1;   // both pads pull
+  const Vector t = Vector::LinSpaced(3, 0.0, 2.0);
+  monitor.add(f, t, 3.0 * t);
+  const dynamics::GroundContactSummary& s = monitor.summary();
+  EXPECT_EQ(s.groups, 2);
+  EXPECT_EQ(s.groups_in_tension_at_rest, 0);
+  EXPECT_DOUBLE_EQ(s.first_new_tension_time, 1.0);
+  EXPECT_DOUBLE_EQ(s.first_new_group_tension_time, 2.0);
+  EXPECT_DOUBLE_EQ(s.first_new_group_tension_station, 6.0);
+  EXPECT_EQ(s.first_new_group_tension, 1);  // -5 against -2
+  EXPECT_EQ(s.max_groups_in_tension, 2);
+  EXPECT_EQ(s.new_group_tension_samples, 1);
+  EXPECT_EQ(s.min_group_force, -5.0);
+  EXPECT_EQ(s.min_group, 1);
+}
+
 TEST(GroundContactMonitor, SidesCountsAndFirstTension) {
   std::vector<GroundContact> contacts(3);
   contacts[0].side = dynamics::ContactSide::Left;

@@ -42,6 +42,12 @@ struct GroundContact {
   double damping = 0.0;     ///< c_i [N s/m], >= 0 (0 when C_u(:, i) is zero)
   double lateral = 0.0;     ///< y of the input [m] (SecondOrderSystem::input_lateral; 0 if absent)
   ContactSide side = ContactSide::Centre;
+  /// The rigid part the contact belongs to (a vehicle's pad, i.e. track assembly, whose soles
+  /// are its contacts), -1 for none: groundContacts() leaves it to the caller. A pad's soles
+  /// also carry its moments as opposite forces, so a sole can pull while its pad as a whole
+  /// still presses (the pad would rock onto an edge); the pad's total pulling means the whole
+  /// pad would leave the road.
+  int group = -1;
 };
 
 /// The contacts of the first `road_inputs` inputs of `system` (all when < 0; a travel-inertia

@@ -43,6 +43,17 @@ struct GroundContactSummary {
   DofIndex first_new_tension_contact = -1;
   long new_tension_samples = 0;  ///< samples with a contact in tension that was not at rest
   Vector min_force;              ///< per contact, the lowest F_i of the run [N]
+  /// The same per group (GroundContact::group, e.g. a pad: the sum of its contacts' forces);
+  /// groups = 0 when no contact has one.
+  int groups = 0;
+  int groups_in_tension_at_rest = 0;
+  int max_groups_in_tension = 0;
+  long new_group_tension_samples = 0;  ///< samples with a group pressed at rest in tension
+  double first_new_group_tension_time = std::numeric_limits<double>::quiet_NaN();
+  double first_new_group_tension_station = std::numeric_limits<double>::quiet_NaN();
+  int first_new_group_tension = -1;
+  double min_group_force = std::numeric_limits<double>::infinity();  ///< [N]
+  int min_group = -1;
   /// The lowest F_i over every contact and sample [N], its contact and time [s].
   double min_contact_force = std::numeric_limits<double>::infinity();
   DofIndex min_contact = -1;
@@ -82,6 +93,8 @@ class GroundContactMonitor {
   std::vector<GroundContact> contacts_;
   Vector left_selector_, right_selector_;  // 1 on the side's contacts, 0 elsewhere
   std::vector<char> compressed_at_rest_;   // per contact, F >= 0 at the first sample
+  Matrix group_selector_;                   // [n_contacts x groups]: 1 where a contact is in the group
+  std::vector<char> group_compressed_at_rest_;
   GroundContactSummary summary_;
   std::vector<double> left_, right_;
   std::vector<int> in_tension_;
