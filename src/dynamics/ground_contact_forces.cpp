@@ -14,24 +14,28 @@ namespace {
 
 bool anyDamped(const std::vector<GroundContact>& contacts) {
   for (const GroundContact& c : contacts)
-    if (c.damping != 0.0) return true;
+    if (c.damping != 0.0)
+      return true;
   return false;
 }
 
 // The run's system with H = the contacts' coordinates, one row per contact.
-SecondOrderSystem coordinateSystem(const SecondOrderSystem& system, const std::vector<GroundContact>& contacts) {
-  if (contacts.empty()) throw InputError("ground contact forces: no contacts");
+SecondOrderSystem coordinateSystem(const SecondOrderSystem& system,
+                                   const std::vector<GroundContact>& contacts) {
+  if (contacts.empty())
+    throw InputError("ground contact forces: no contacts");
   SecondOrderSystem s = system;
   const auto n_c = static_cast<DofIndex>(contacts.size());
   s.output = Matrix::Zero(n_c, system.size());
   s.output_names.clear();
   for (DofIndex i = 0; i < n_c; ++i) {
     const GroundContact& c = contacts[static_cast<std::size_t>(i)];
-    if (c.coordinate < 0 || c.coordinate >= system.size() || c.input < 0 || c.input >= system.inputCount())
+    if (c.coordinate < 0 || c.coordinate >= system.size() || c.input < 0 ||
+        c.input >= system.inputCount())
       throw InputError("ground contact forces: contact " + std::to_string(i) + " (input " +
                        std::to_string(c.input) + ", coordinate " + std::to_string(c.coordinate) +
-                       ") is outside the system (" + std::to_string(system.inputCount()) + " inputs, " +
-                       std::to_string(system.size()) + " coordinates)");
+                       ") is outside the system (" + std::to_string(system.inputCount()) +
+                       " inputs, " + std::to_string(system.size()) + " coordinates)");
     s.output(i, c.coordinate) = 1.0;
     s.output_names.push_back("contact " + std::to_string(i));
   }
@@ -40,24 +44,27 @@ SecondOrderSystem coordinateSystem(const SecondOrderSystem& system, const std::v
 
 SimulatorOptions coordinateOptions(SimulatorOptions options, bool damped) {
   options.quantities = {OutputQuantity::Displacement};
-  if (damped) options.quantities.push_back(OutputQuantity::Velocity);
+  if (damped)
+    options.quantities.push_back(OutputQuantity::Velocity);
   return options;
 }
 
 // out[k] = w_k(column) for k = 0 .. samples-1 from the held series (its channel's events).
-void heldColumn(const HeldInputSeries& series, const std::vector<DofIndex>& channel_of, DofIndex column,
-                double* out) {
+void heldColumn(const HeldInputSeries& series, const std::vector<DofIndex>& channel_of,
+                DofIndex column, double* out) {
   double value = series.initial(column);
   const DofIndex c = channel_of[static_cast<std::size_t>(column)];
   long k = 0;
   if (c >= 0) {
     const HeldInputSeries::Channel& ch = series.channels[static_cast<std::size_t>(c)];
     for (std::size_t e = 0; e < ch.steps.size(); ++e) {
-      for (; k < ch.steps[e]; ++k) out[k] = value;
+      for (; k < ch.steps[e]; ++k)
+        out[k] = value;
       value = ch.values[e];
     }
   }
-  for (; k < series.samples; ++k) out[k] = value;
+  for (; k < series.samples; ++k)
+    out[k] = value;
 }
 
 // Cuts a held series into consecutive slices [first, first + count) in one pass over its events
@@ -75,7 +82,8 @@ class HeldSlicer {
       const HeldInputSeries::Channel& ch = series_.channels[c];
       std::size_t& e = next_[c];
       for (; e < ch.steps.size() && ch.steps[e] <= first; ++e)
-        for (const DofIndex j : ch.columns) w_(j) = ch.values[e];
+        for (const DofIndex j : ch.columns)
+          w_(j) = ch.values[e];
     }
     HeldInputSeries out;
     out.samples = count;
@@ -83,7 +91,8 @@ class HeldSlicer {
     for (std::size_t c = 0; c < series_.channels.size(); ++c) {
       const HeldInputSeries::Channel& ch = series_.channels[c];
       std::size_t e = next_[c];
-      if (e == ch.steps.size() || ch.steps[e] >= first + count) continue;
+      if (e == ch.steps.size() || ch.steps[e] >= first + count)
+        continue;
       HeldInputSeries::Channel part;
       part.columns = ch.columns;
       for (; e < ch.steps.size() && ch.steps[e] < first + count; ++e) {
@@ -114,14 +123,18 @@ void forEachChunk(long samples, long chunk, Run&& run) {
 
 }  // namespace
 
-GroundContactForces::GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
+GroundContactForces::GroundContactForces(const SecondOrderSystem& system,
+                                         std::vector<GroundContact> contacts,
                                          SimulatorOptions options)
     : contacts_(std::move(contacts)),
-      sim_(coordinateSystem(system, contacts_), coordinateOptions(std::move(options), anyDamped(contacts_))),
+      sim_(coordinateSystem(system, contacts_),
+           coordinateOptions(std::move(options), anyDamped(contacts_))),
       n_u_(system.inputCount()),
       damped_(anyDamped(contacts_)) {}
 
-void GroundContactForces::reset(const Vector& state, const Vector& input) { sim_.reset(state, input); }
+void GroundContactForces::reset(const Vector& state, const Vector& input) {
+  sim_.reset(state, input);
+}
 
 void GroundContactForces::subtractCoordinates(const Matrix& coordinates, Matrix& forces) const {
   const DofIndex n_c = contactCount();
@@ -135,8 +148,9 @@ void GroundContactForces::subtractCoordinates(const Matrix& coordinates, Matrix&
 
 void GroundContactForces::simulate(const Matrix& inputs, const Sink& sink) {
   if (inputs.cols() != sim_.inputCount())
-    throw InputError("GroundContactForces::simulate: the input series has " + std::to_string(inputs.cols()) +
-                     " columns, the system " + std::to_string(sim_.inputCount()));
+    throw InputError("GroundContactForces::simulate: the input series has " +
+                     std::to_string(inputs.cols()) + " columns, the system " +
+                     std::to_string(sim_.inputCount()));
   const DofIndex n_c = contactCount();
   forEachChunk(inputs.rows(), kChunk, [&](long first, long count, long skip) {
     const Matrix q = sim_.simulate(Matrix(inputs.middleRows(first, count)));
@@ -144,7 +158,8 @@ void GroundContactForces::simulate(const Matrix& inputs, const Sink& sink) {
     for (DofIndex i = 0; i < n_c; ++i) {
       const DofIndex j = contacts_[static_cast<std::size_t>(i)].input;
       forces_.col(i) = inputs.col(j).segment(first, count);
-      if (damped_) forces_.col(n_c + i) = inputs.col(n_u_ + j).segment(first, count);
+      if (damped_)
+        forces_.col(n_c + i) = inputs.col(n_u_ + j).segment(first, count);
     }
     subtractCoordinates(q, forces_);
     sink(first + skip, forces_.block(skip, 0, count - skip, n_c));
@@ -165,12 +180,14 @@ void GroundContactForces::simulate(const HeldInputSeries& inputs, const Sink& si
     const Matrix q = sim_.simulate(part);
     channel_of.assign(static_cast<std::size_t>(part.inputCount()), -1);
     for (std::size_t c = 0; c < part.channels.size(); ++c)
-      for (const DofIndex j : part.channels[c].columns) channel_of[static_cast<std::size_t>(j)] = static_cast<DofIndex>(c);
+      for (const DofIndex j : part.channels[c].columns)
+        channel_of[static_cast<std::size_t>(j)] = static_cast<DofIndex>(c);
     forces_.resize(count, damped_ ? 2 * n_c : n_c);
     for (DofIndex i = 0; i < n_c; ++i) {
       const DofIndex j = contacts_[static_cast<std::size_t>(i)].input;
       heldColumn(part, channel_of, j, forces_.col(i).data());
-      if (damped_) heldColumn(part, channel_of, n_u_ + j, forces_.col(n_c + i).data());
+      if (damped_)
+        heldColumn(part, channel_of, n_u_ + j, forces_.col(n_c + i).data());
     }
     subtractCoordinates(q, forces_);
     sink(first + skip, forces_.block(skip, 0, count - skip, n_c));
@@ -179,13 +196,17 @@ void GroundContactForces::simulate(const HeldInputSeries& inputs, const Sink& si
 
 Matrix GroundContactForces::simulate(const Matrix& inputs) {
   Matrix all(inputs.rows(), contactCount());
-  simulate(inputs, [&](long first, const Eigen::Ref<const Matrix>& f) { all.middleRows(first, f.rows()) = f; });
+  simulate(inputs, [&](long first, const Eigen::Ref<const Matrix>& f) {
+    all.middleRows(first, f.rows()) = f;
+  });
   return all;
 }
 
 Matrix GroundContactForces::simulate(const HeldInputSeries& inputs) {
   Matrix all(inputs.samples, contactCount());
-  simulate(inputs, [&](long first, const Eigen::Ref<const Matrix>& f) { all.middleRows(first, f.rows()) = f; });
+  simulate(inputs, [&](long first, const Eigen::Ref<const Matrix>& f) {
+    all.middleRows(first, f.rows()) = f;
+  });
   return all;
 }
 

@@ -13,42 +13,51 @@ double GroundContactSummary::tensionFraction() const {
 }
 
 double GroundContactSummary::newTensionFraction() const {
-  return samples > 0 ? static_cast<double>(new_tension_samples) / static_cast<double>(samples) : 0.0;
+  return samples > 0 ? static_cast<double>(new_tension_samples) / static_cast<double>(samples)
+                     : 0.0;
 }
 
 DofIndex GroundContactSummary::contactsEverInTension() const {
   return (min_force.array() < 0.0).count();
 }
 
-GroundContactMonitor::GroundContactMonitor(const std::vector<GroundContact>& contacts) : contacts_(contacts) {
-  if (contacts_.empty()) throw InputError("ground contact monitor: no contacts");
+GroundContactMonitor::GroundContactMonitor(const std::vector<GroundContact>& contacts)
+    : contacts_(contacts) {
+  if (contacts_.empty())
+    throw InputError("ground contact monitor: no contacts");
   const auto n_c = static_cast<DofIndex>(contacts_.size());
   left_selector_.setZero(n_c);
   right_selector_.setZero(n_c);
   for (DofIndex i = 0; i < n_c; ++i) {
     const ContactSide side = contacts_[static_cast<std::size_t>(i)].side;
-    if (side == ContactSide::Left) left_selector_(i) = 1.0;
-    if (side == ContactSide::Right) right_selector_(i) = 1.0;
+    if (side == ContactSide::Left)
+      left_selector_(i) = 1.0;
+    if (side == ContactSide::Right)
+      right_selector_(i) = 1.0;
   }
   int groups = 0;
-  for (const GroundContact& c : contacts_) groups = std::max(groups, c.group + 1);
+  for (const GroundContact& c : contacts_)
+    groups = std::max(groups, c.group + 1);
   group_selector_.setZero(n_c, groups);
   for (DofIndex i = 0; i < n_c; ++i)
-    if (contacts_[static_cast<std::size_t>(i)].group >= 0) group_selector_(i, contacts_[static_cast<std::size_t>(i)].group) = 1.0;
+    if (contacts_[static_cast<std::size_t>(i)].group >= 0)
+      group_selector_(i, contacts_[static_cast<std::size_t>(i)].group) = 1.0;
   summary_.groups = groups;
   summary_.contacts = n_c;
   summary_.min_force = Vector::Constant(n_c, std::numeric_limits<double>::infinity());
 }
 
-void GroundContactMonitor::add(const Eigen::Ref<const Matrix>& forces, const Vector& times, const Vector& stations) {
+void GroundContactMonitor::add(const Eigen::Ref<const Matrix>& forces, const Vector& times,
+                               const Vector& stations) {
   const DofIndex n_c = summary_.contacts;
   if (forces.cols() != n_c || times.size() != forces.rows() || stations.size() != forces.rows())
     throw InputError("ground contact monitor: " + std::to_string(forces.rows()) + "x" +
-                     std::to_string(forces.cols()) + " forces for " + std::to_string(n_c) + " contacts, " +
-                     std::to_string(times.size()) + " times, " + std::to_string(stations.size()) +
-                     " stations");
+                     std::to_string(forces.cols()) + " forces for " + std::to_string(n_c) +
+                     " contacts, " + std::to_string(times.size()) + " times, " +
+                     std::to_string(stations.size()) + " stations");
   const DofIndex b = forces.rows();
-  if (b == 0) return;
+  if (b == 0)
+    return;
   // Column-wise passes over the column-major block: each contact's samples are contiguous.
   const Vector left = forces * left_selector_;
   const Vector right = forces * right_selector_;
@@ -68,10 +77,12 @@ void GroundContactMonitor::add(const Eigen::Ref<const Matrix>& forces, const Vec
     const bool watch = compressed_at_rest_[static_cast<std::size_t>(i)];
     for (DofIndex k = 0; k < b; ++k) {
       tension(k) += f[k] < 0.0;
-      if (f[k] < lowest) lowest = f[k];
+      if (f[k] < lowest)
+        lowest = f[k];
     }
     if (watch && lowest < 0.0)
-      for (DofIndex k = 0; k < b; ++k) fresh(k) += f[k] < 0.0;
+      for (DofIndex k = 0; k < b; ++k)
+        fresh(k) += f[k] < 0.0;
     s.min_force(i) = lowest;
     if (lowest < s.min_contact_force) {
       DofIndex k_min = 0;
@@ -99,7 +110,9 @@ void GroundContactMonitor::add(const Eigen::Ref<const Matrix>& forces, const Vec
       if (s.first_new_tension_contact < 0) {
         DofIndex c = -1;
         for (DofIndex i = 0; i < n_c; ++i)
-          if (compressed_at_rest_[static_cast<std::size_t>(i)] && (c < 0 || forces(k, i) < forces(k, c))) c = i;
+          if (compressed_at_rest_[static_cast<std::size_t>(i)] &&
+              (c < 0 || forces(k, i) < forces(k, c)))
+            c = i;
         s.first_new_tension_time = times(k);
         s.first_new_tension_station = stations(k);
         s.first_new_tension_contact = c;
@@ -128,14 +141,18 @@ void GroundContactMonitor::add(const Eigen::Ref<const Matrix>& forces, const Vec
           s.min_group_force = f;
           s.min_group = g;
         }
-        if (!(f < 0.0)) continue;
+        if (!(f < 0.0))
+          continue;
         ++count;
-        if (!group_compressed_at_rest_[static_cast<std::size_t>(g)]) continue;
+        if (!group_compressed_at_rest_[static_cast<std::size_t>(g)])
+          continue;
         ++fresh_count;
-        if (worst < 0 || f < group_forces(k, worst)) worst = g;
+        if (worst < 0 || f < group_forces(k, worst))
+          worst = g;
       }
       s.max_groups_in_tension = std::max(s.max_groups_in_tension, count);
-      if (fresh_count == 0) continue;
+      if (fresh_count == 0)
+        continue;
       ++s.new_group_tension_samples;
       if (s.first_new_group_tension < 0) {
         s.first_new_group_tension = worst;

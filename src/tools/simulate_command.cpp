@@ -87,7 +87,7 @@ void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSumm
       << " % of samples): beyond its range, a real vehicle would lift there";
   if (s.groups > 0) {
     if (s.first_new_group_tension >= 0)
-      out << "; whole pads (" << s.max_groups_in_tension << " of " << s.groups << " at once) from t = "
+      out << "; whole pads (up to " << s.max_groups_in_tension << " of " << s.groups << " at once) from t = "
           << s.first_new_group_tension_time << " s (x = " << s.first_new_group_tension_station << " m)";
     else
       out << "; no pad pressed at rest pulls as a whole (min " << s.min_group_force * 1e-3 << " kN)";

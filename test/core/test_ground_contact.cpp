@@ -33,9 +33,9 @@ using dynamics::SimulatorOptions;
 
 namespace {
 
-constexpr double kGravity = 9.81;           // [m/s^2]
-constexpr double kStaticTolerance = 1e-6;   // sum of the static contact forces vs the weight
-constexpr double kForceTolerance = 1e-4;    // run vs closed form, relative to the force amplitude
+constexpr double kGravity = 9.81;          // [m/s^2]
+constexpr double kStaticTolerance = 1e-6;  // sum of the static contact forces vs the weight
+constexpr double kForceTolerance = 1e-4;   // run vs closed form, relative to the force amplitude
 
 // The one-DOF mass on a ground spring and damper, under gravity f_g = -m g.
 struct Toy {
@@ -51,11 +51,13 @@ struct Harmonic {
   double amplitude, omega;
   std::complex<double> response(const Toy& toy) const {
     const std::complex<double> j(0.0, 1.0);
-    return (toy.k + j * omega * toy.c) * amplitude / (toy.k - toy.m * omega * omega + j * omega * toy.c);
+    return (toy.k + j * omega * toy.c) * amplitude /
+           (toy.k - toy.m * omega * omega + j * omega * toy.c);
   }
   double force(const Toy& toy, double t) const {
     const std::complex<double> x = response(toy);
-    return toy.m * kGravity - toy.m * omega * omega * std::abs(x) * std::sin(omega * t + std::arg(x));
+    return toy.m * kGravity -
+           toy.m * omega * omega * std::abs(x) * std::sin(omega * t + std::arg(x));
   }
   // w = [u, u'] at t = k dt, k = 0 .. samples-1.
   Matrix inputs(long samples, double dt) const {
@@ -77,7 +79,8 @@ struct Harmonic {
 };
 
 // Runs the toy over `samples` of the harmonic with `options` and monitors it.
-GroundContactMonitor runToy(const Toy& toy, const Harmonic& h, double dt, long samples, Matrix* forces) {
+GroundContactMonitor runToy(const Toy& toy, const Harmonic& h, double dt, long samples,
+                            Matrix* forces) {
   const SecondOrderSystem s = toy.system();
   SimulatorOptions options;
   options.time_step = dt;
@@ -90,7 +93,8 @@ GroundContactMonitor runToy(const Toy& toy, const Harmonic& h, double dt, long s
   *forces = contact.simulate(w);
   GroundContactMonitor monitor(contact.contacts());
   Vector times(samples);
-  for (long k = 0; k < samples; ++k) times(k) = static_cast<double>(k) * dt;
+  for (long k = 0; k < samples; ++k)
+    times(k) = static_cast<double>(k) * dt;
   monitor.add(*forces, times, 10.0 * times);  // a station: 10 m/s
   return monitor;
 }
@@ -134,7 +138,8 @@ TEST(GroundContact, RefusesInputsThatAreNotASpringOnOneCoordinate) {
   expectInputError([&] { dynamics::groundContacts(none); }, {"road input 0", "zero K_u column"});
   SecondOrderSystem damper = dynamics::test::quarterCar();
   damper.input_damping(0, 0) = 10.0;  // a damper on the hull, the spring on the wheel
-  expectInputError([&] { dynamics::groundContacts(damper); }, {"road input 0", "C_u acts on coordinate 0"});
+  expectInputError([&] { dynamics::groundContacts(damper); },
+                   {"road input 0", "C_u acts on coordinate 0"});
   SecondOrderSystem negative = dynamics::test::quarterCar();
   negative.input_stiffness(1, 0) = -1.0;
   expectInputError([&] { dynamics::groundContacts(negative); }, {"road input 0", "not positive"});
@@ -143,7 +148,8 @@ TEST(GroundContact, RefusesInputsThatAreNotASpringOnOneCoordinate) {
   const dynamics::ModalSystem modal(car);
   SecondOrderSystem modal_form = car;
   modal_form.input_stiffness = modal.modalInputStiffness();
-  expectInputError([&] { dynamics::groundContacts(modal_form); }, {"road input 0", "not of the form k e_m"});
+  expectInputError([&] { dynamics::groundContacts(modal_form); },
+                   {"road input 0", "not of the form k e_m"});
   expectInputError([&] { dynamics::groundContacts(car, 2); }, "2 road inputs asked for");
 }
 
@@ -158,10 +164,11 @@ TEST(GroundContact, HarmonicBaseExcitationBeyondLiftOffGoesIntoTension) {
   const double amplitude = toy.m * h.omega * h.omega * std::abs(h.response(toy));
   ASSERT_GT(amplitude, toy.m * kGravity);
   for (long k = 0; k < samples; ++k)
-    ASSERT_NEAR(forces(k, 0), h.force(toy, static_cast<double>(k) * dt), kForceTolerance * amplitude) << k;
+    ASSERT_NEAR(forces(k, 0), h.force(toy, static_cast<double>(k) * dt),
+                kForceTolerance * amplitude)
+        << k;
   // First tension: sin(w t + arg X) = g / (w^2 |X|), rising.
-  const double t1 =
-      (std::asin(toy.m * kGravity / amplitude) - std::arg(h.response(toy))) / h.omega;
+  const double t1 = (std::asin(toy.m * kGravity / amplitude) - std::arg(h.response(toy))) / h.omega;
   const dynamics::GroundContactSummary& s = monitor.summary();
   ASSERT_TRUE(s.anyTension());
   EXPECT_GE(s.first_tension_time, t1);
@@ -173,7 +180,8 @@ TEST(GroundContact, HarmonicBaseExcitationBeyondLiftOffGoesIntoTension) {
   // In tension while sin(...) > g / (w^2 |X|): a share (pi - 2 asin(g/(w^2|X|))) / (2 pi) of a
   // period, here over the 1.6 periods of the run (counted from the closed form).
   long expected = 0;
-  for (long k = 0; k < samples; ++k) expected += h.force(toy, static_cast<double>(k) * dt) < 0.0;
+  for (long k = 0; k < samples; ++k)
+    expected += h.force(toy, static_cast<double>(k) * dt) < 0.0;
   EXPECT_NEAR(static_cast<double>(s.tension_samples), static_cast<double>(expected), 2.0);
   EXPECT_NEAR(s.tensionFraction(), static_cast<double>(expected) / samples, 2.0 / samples);
 }
@@ -239,9 +247,9 @@ TEST(GroundContactMonitor, GroupsSumTheirContacts) {
   contacts[2].group = contacts[3].group = 1;
   GroundContactMonitor monitor(contacts);
   Matrix f(3, 4);
-  f << 5, 5, 5, 5,     //
-      -3, 8, 5, 5,     // a sole pulls, its pad presses (5)
-      -3, 1, -4, -1;   // both pads pull
+  f << 5, 5, 5, 5,    //
+      -3, 8, 5, 5,    // a sole pulls, its pad presses (5)
+      -3, 1, -4, -1;  // both pads pull
   const Vector t = Vector::LinSpaced(3, 0.0, 2.0);
   monitor.add(f, t, 3.0 * t);
   const dynamics::GroundContactSummary& s = monitor.summary();
@@ -264,9 +272,9 @@ TEST(GroundContactMonitor, SidesCountsAndFirstTension) {
   contacts[2].side = dynamics::ContactSide::Left;
   GroundContactMonitor monitor(contacts);
   Matrix f(4, 3);
-  f << 10, 20, 30,   //
-      5, -1, 30,     // contact 1 in tension
-      -2, -3, 30,    // 0 and 1
+  f << 10, 20, 30,  //
+      5, -1, 30,    // contact 1 in tension
+      -2, -3, 30,   // 0 and 1
       4, 5, 6;
   const Vector t = Vector::LinSpaced(4, 0.0, 0.3);
   monitor.add(f.topRows(2), t.head(2), 2.0 * t.head(2));
@@ -299,8 +307,8 @@ TEST(GroundContactMonitor, SidesCountsAndFirstTension) {
 // rest carry the vehicle: their sum is its weight (from the full FE model's masses), and each is
 // the full model's static pad load (Craig-Bampton statics are exact).
 TEST(GroundContact, StaticForcesOfTheBundledVehicleCarryItsWeight) {
-  const vehicle::VehicleDescription d =
-      vehicle::loadVehicleDescription(std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const vehicle::VehicleDescription d = vehicle::loadVehicleDescription(
+      std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
   for (const vehicle::Variant variant : {vehicle::Variant::Untracked, vehicle::Variant::Tracked}) {
     SCOPED_TRACE(vehicle::variantName(variant));
     const reduction::ReducedModel reduced = reduction::reduceVehicle(d, variant, {});
@@ -322,15 +330,19 @@ TEST(GroundContact, StaticForcesOfTheBundledVehicleCarryItsWeight) {
     const Vector f = forces.forces(z0, Vector::Zero(2 * reduced.system.inputCount()));
 
     const vehicle::VehicleModel built = vehicle::buildVehicleModel(d, variant);
-    const vehicle::StaticSummary statics = vehicle::computeStaticSummary(built, fem::assemble(built.model));
+    const vehicle::StaticSummary statics =
+        vehicle::computeStaticSummary(built, fem::assemble(built.model));
     EXPECT_NEAR(f.sum(), statics.weight, kStaticTolerance * statics.weight);
     ASSERT_EQ(static_cast<std::size_t>(f.size()), statics.pad_loads.size());
     for (DofIndex i = 0; i < f.size(); ++i)
-      EXPECT_NEAR(f(i), statics.pad_loads[static_cast<std::size_t>(i)], kStaticTolerance * statics.weight) << i;
+      EXPECT_NEAR(f(i), statics.pad_loads[static_cast<std::size_t>(i)],
+                  kStaticTolerance * statics.weight)
+          << i;
     // Left and right carry the weight between them.
     GroundContactMonitor monitor(contacts);
     monitor.add(f.transpose(), Vector::Zero(1), Vector::Zero(1));
-    EXPECT_NEAR(monitor.leftForce()[0] + monitor.rightForce()[0], statics.weight, kStaticTolerance * statics.weight);
+    EXPECT_NEAR(monitor.leftForce()[0] + monitor.rightForce()[0], statics.weight,
+                kStaticTolerance * statics.weight);
     const dynamics::GroundContactSummary& s = monitor.summary();
     EXPECT_EQ(s.in_tension_at_rest, (f.array() < 0.0).count());
     EXPECT_EQ(s.first_new_tension_contact, -1);  // nothing pressed at rest is in tension there

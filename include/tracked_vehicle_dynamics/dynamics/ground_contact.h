@@ -26,9 +26,9 @@ namespace dynamics {
 
 /// Which side of the vehicle a contact is on, from its lateral position (y left).
 enum class ContactSide {
-  Left,   ///< y > 0
-  Right,  ///< y < 0
-  Centre, ///< y = 0 (counted on neither side)
+  Left,    ///< y > 0
+  Right,   ///< y < 0
+  Centre,  ///< y = 0 (counted on neither side)
 };
 
 /// "left", "right" or "centre".

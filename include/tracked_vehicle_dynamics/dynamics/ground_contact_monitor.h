@@ -27,8 +27,8 @@ namespace dynamics {
 struct GroundContactSummary {
   DofIndex contacts = 0;
   long samples = 0;
-  long tension_samples = 0;      ///< samples with at least one contact in tension
-  DofIndex max_in_tension = 0;   ///< most contacts in tension at one sample
+  long tension_samples = 0;     ///< samples with at least one contact in tension
+  DofIndex max_in_tension = 0;  ///< most contacts in tension at one sample
   /// The first sample with a contact in tension: time [s], station [m] and the contact (the one
   /// pulling hardest there); NaN and -1 when none.
   double first_tension_time = std::numeric_limits<double>::quiet_NaN();
@@ -93,7 +93,7 @@ class GroundContactMonitor {
   std::vector<GroundContact> contacts_;
   Vector left_selector_, right_selector_;  // 1 on the side's contacts, 0 elsewhere
   std::vector<char> compressed_at_rest_;   // per contact, F >= 0 at the first sample
-  Matrix group_selector_;                   // [n_contacts x groups]: 1 where a contact is in the group
+  Matrix group_selector_;  // [n_contacts x groups]: 1 where a contact is in the group
   std::vector<char> group_compressed_at_rest_;
   GroundContactSummary summary_;
   std::vector<double> left_, right_;
