@@ -18,7 +18,7 @@ namespace tools {
 
 /// Called once per sample k = 0 .. drive.steps() with the outputs at that sample.
 using SampleSink = std::function<void(long k, const OutputRow& outputs)>;
-/// Called once per block with the ground contact forces [rows x contacts] of samples first ..
+/// Called once per chunk with the ground contact forces [rows x contacts] of samples first ..
 /// first + rows - 1 (ground_contact_forces.h), in order.
 using ForceSink = std::function<void(long first, const Eigen::Ref<const Matrix>& forces)>;
 

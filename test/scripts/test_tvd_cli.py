@@ -561,6 +561,11 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("crew_seat_accel_x_m_s2", points)
         for name in points:
             np.testing.assert_allclose(c[name][end], accel, rtol=2e-2, err_msg=name)
+        # The travel inertia acts along x: settled, the road carries the weight again, half on
+        # each side (the vertical accelerations have died out).
+        total = c["ground_force_left_n"] + c["ground_force_right_n"]
+        np.testing.assert_allclose(total[end], total[0], rtol=1e-3)
+        np.testing.assert_allclose(c["ground_force_left_n"], c["ground_force_right_n"], rtol=1e-6)
         # Before the braking nothing moves on the flat track (round-off of the modal engine's
         # equilibrium: 3e-9 deg, against the braking's 0.02 deg).
         self.assertLess(np.abs(c["hull_pitch_deg"][t < 1]).max(), 1e-6)
