@@ -12,7 +12,8 @@ namespace tools {
 
 void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& system, const Vector& gravity,
                const Drive& drive, const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
-               const reduction::FullModelReference* full, const SampleSink& sink) {
+               const reduction::FullModelReference* full, const SampleSink& sink,
+               dynamics::GroundContactForces* contact, const ForceSink& force_sink) {
   // The travel acceleration rides as one more input after the road's (travel_inertia.h).
   const bool travel = system.inputCount() == road.inputCount() + 1;
   if (!travel && system.inputCount() != road.inputCount())
@@ -30,7 +31,9 @@ void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& syst
   const Vector w0 = inputs(0, 1).row(0).transpose();
   Vector u0 = w0.head(system.inputCount());
   if (travel) u0(road.inputCount()) = 0.0;
-  sim.reset(dynamics::staticEquilibrium(system, u0, gravity), w0);
+  const Vector z0 = dynamics::staticEquilibrium(system, u0, gravity);
+  sim.reset(z0, w0);
+  if (contact) contact->reset(z0, w0);
   // Blocks of samples: the road inputs sampled ahead, then Simulator::simulate(), which turns
   // the per-step matrix-vector products into matrix products. Row 0 of a block is the last
   // sample of the previous one (the simulator's current input), so it is handed on only once.
@@ -41,14 +44,22 @@ void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& syst
   const long steps = drive.steps();
   for (long first = 0; first == 0 || first < steps; first += kBlock) {
     const long count = std::min(first + kBlock, steps) - first + 1;
+    // The contact forces of the block's samples, less its row 0 after the first block (as y).
+    const auto forces = [&](long j, const Eigen::Ref<const Matrix>& f) {
+      const long drop = first > 0 && j == 0 ? 1 : 0;
+      if (force_sink && f.rows() > drop) force_sink(first + j + drop, f.bottomRows(f.rows() - drop));
+    };
     Matrix y;
     if (full || drive.varyingSpeed() || travel) {
       const Matrix w = inputs(first, count);
       y = sim.simulate(w);
       // The full model adds its static residual to the displacements (rows 0..n_y-1).
       if (full) full->addResidual(w, dynamics::OutputQuantity::Displacement, y.leftCols(system.outputCount()));
+      if (contact) contact->simulate(w, forces);
     } else {
-      y = sim.simulate(drive.heldInputs(road, lines, first, count));
+      const dynamics::HeldInputSeries w = drive.heldInputs(road, lines, first, count);
+      y = sim.simulate(w);
+      if (contact) contact->simulate(w, forces);
     }
     for (long j = first == 0 ? 0 : 1; j < y.rows(); ++j) sink(first + j, y.row(j));
   }

@@ -6,6 +6,7 @@
 
 #include "drive.h"
 #include "output_row.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
@@ -17,6 +18,9 @@ namespace tools {
 
 /// Called once per sample k = 0 .. drive.steps() with the outputs at that sample.
 using SampleSink = std::function<void(long k, const OutputRow& outputs)>;
+/// Called once per chunk with the ground contact forces [rows x contacts] of samples first ..
+/// first + rows - 1 (ground_contact_forces.h), in order.
+using ForceSink = std::function<void(long first, const Eigen::Ref<const Matrix>& forces)>;
 
 /// Resets `sim` (built from `system`) to static equilibrium under `gravity` on the road inputs of
 /// sample 0, at rest relative to the track, then steps it through every sample of `drive`.
@@ -28,9 +32,12 @@ using SampleSink = std::function<void(long k, const OutputRow& outputs)>;
 /// `full`, when given, is the full model whose static residual is added to the displacements
 /// (system = full->modal). At constant speed without `full` the inputs are sampled by their
 /// changes (sampleHeldSeries), otherwise every input at every sample.
+/// `contact`, when given (built on `system` with the options of `sim`), is reset and driven
+/// alongside `sim` with the same inputs, and its forces go to `force_sink`.
 void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& system, const Vector& gravity,
                const Drive& drive, const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
-               const reduction::FullModelReference* full, const SampleSink& sink);
+               const reduction::FullModelReference* full, const SampleSink& sink,
+               dynamics::GroundContactForces* contact = nullptr, const ForceSink& force_sink = {});
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -23,6 +25,9 @@
 #include "terrain_coverage.h"
 #include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact_monitor.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
@@ -34,6 +39,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -57,7 +63,100 @@ struct SimulateOptions {
   bool variant_given = false;
   std::string out_file;
   bool json = false;
+  std::string ground_contact = "on";  // on | off
 };
+
+// The summary line: whether every contact stays in compression over the run.
+void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSummary& s) {
+  out << std::setprecision(3);
+  if (!s.anyTension()) {
+    out << "  ground contact: all " << s.contacts << " contacts stay in compression, min "
+        << s.min_contact_force * 1e-3 << " kN (within the linear model's range)\n";
+    return;
+  }
+  out << "  ground contact: the linear model pulls on " << s.contactsEverInTension() << " of " << s.contacts
+      << " contacts (up to " << s.max_in_tension << " at once, min " << s.min_contact_force * 1e-3 << " kN)";
+  if (s.in_tension_at_rest > 0)
+    out << "; " << s.in_tension_at_rest << " already at rest (its bonded statics)";
+  if (s.first_new_tension_contact < 0) {
+    out << "; none pressed at rest goes into tension\n";
+    return;
+  }
+  out << (s.in_tension_at_rest > 0 ? ", contacts pressed at rest" : "") << " from t = " << s.first_new_tension_time
+      << " s (x = " << s.first_new_tension_station << " m, " << s.newTensionFraction() * 100
+      << " % of samples): beyond its range, a real vehicle would lift there";
+  if (s.groups > 0) {
+    if (s.first_new_group_tension >= 0)
+      out << "; whole pads (up to " << s.max_groups_in_tension << " of " << s.groups << " at once) from t = "
+          << s.first_new_group_tension_time << " s (x = " << s.first_new_group_tension_station << " m)";
+    else
+      out << "; no pad pressed at rest pulls as a whole (min " << s.min_group_force * 1e-3 << " kN)";
+  }
+  out << "\n";
+}
+
+// The ground contact block of the JSON (ground_contact_monitor.h).
+void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactSummary& s,
+                            const std::vector<std::string>& labels, const Vector& stations,
+                            const std::vector<dynamics::GroundContact>& contacts, double static_total,
+                            double setup_seconds) {
+  auto contact = [&](DofIndex i) {
+    json.beginObject().field("index", static_cast<long long>(i));
+    if (i >= 0) {
+      const dynamics::GroundContact& c = contacts[static_cast<std::size_t>(i)];
+      if (static_cast<std::size_t>(c.input) < labels.size()) json.field("input", labels[static_cast<std::size_t>(c.input)]);
+      json.field("side", dynamics::contactSideName(c.side));
+      if (c.input < stations.size()) json.field("x_m", stations(c.input));
+      json.field("y_m", c.lateral);
+    }
+    json.endObject();
+  };
+  json.beginObject()
+      .field("contacts", static_cast<long long>(s.contacts))
+      .field("in_range", !s.anyTension())
+      .field("first_tension_time_s", s.first_tension_time)
+      .field("first_tension_station_m", s.first_tension_station);
+  json.key("first_tension_contact");
+  if (s.first_tension_contact >= 0)
+    contact(s.first_tension_contact);
+  else
+    json.value(std::numeric_limits<double>::quiet_NaN());  // null
+  json.field("contacts_in_tension_at_rest", static_cast<long long>(s.in_tension_at_rest))
+      .field("first_new_tension_time_s", s.first_new_tension_time)
+      .field("first_new_tension_station_m", s.first_new_tension_station);
+  json.key("first_new_tension_contact");
+  if (s.first_new_tension_contact >= 0)
+    contact(s.first_new_tension_contact);
+  else
+    json.value(std::numeric_limits<double>::quiet_NaN());  // null
+  json.field("new_tension_sample_fraction", s.newTensionFraction())
+      .field("max_contacts_in_tension", static_cast<long long>(s.max_in_tension))
+      .field("contacts_ever_in_tension", static_cast<long long>(s.contactsEverInTension()))
+      .field("tension_samples", static_cast<long long>(s.tension_samples))
+      .field("tension_sample_fraction", s.tensionFraction())
+      .field("min_contact_force_n", s.min_contact_force)
+      .field("min_contact_force_time_s", s.min_contact_time);
+  json.key("min_contact");
+  contact(s.min_contact);
+  json.field("static_ground_force_n", static_total)
+      .field("peak_ground_force_left_n", s.peak_left)
+      .field("min_ground_force_left_n", s.min_left)
+      .field("peak_ground_force_right_n", s.peak_right)
+      .field("min_ground_force_right_n", s.min_right)
+      .field("setup_seconds", setup_seconds);
+  json.key("pads")
+      .beginObject()
+      .field("count", static_cast<long long>(s.groups))
+      .field("in_tension_at_rest", static_cast<long long>(s.groups_in_tension_at_rest))
+      .field("max_in_tension", static_cast<long long>(s.max_groups_in_tension))
+      .field("first_new_tension_time_s", s.first_new_group_tension_time)
+      .field("first_new_tension_station_m", s.first_new_group_tension_station)
+      .field("new_tension_sample_fraction",
+             s.samples > 0 ? static_cast<double>(s.new_group_tension_samples) / static_cast<double>(s.samples) : 0.0)
+      .field("min_force_n", s.min_group_force)
+      .endObject()
+      .endObject();
+}
 
 
 void run(const SimulateOptions& opt) {
@@ -125,6 +224,33 @@ void run(const SimulateOptions& opt) {
   const auto setup_start = Clock::now();
   dynamics::Simulator sim(sys, sim_options);
   const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
+  // Ground contact (ground_contact.h): the force of every road input's spring, checked for
+  // tension, the limit of the bonded linear model. Reduced model only: the full model's modal
+  // coordinates carry no ground DOF (K_u = Phi^T K_u is not of the spring form), and its ground
+  // DOFs' static residual is not among its outputs.
+  const bool monitor_contact = !full && opt.ground_contact == "on";
+  std::vector<dynamics::GroundContact> contacts;
+  std::unique_ptr<dynamics::GroundContactForces> contact_forces;
+  std::unique_ptr<dynamics::GroundContactMonitor> contact_monitor;
+  double contact_setup_seconds = 0.0;
+  if (monitor_contact) {
+    const auto contact_start = Clock::now();
+    contacts = dynamics::groundContacts(model_sys);  // the road inputs (not the travel input)
+    // Each contact's pad (track assembly): the master it acts on is a sole node of that pad.
+    const vehicle::VehicleModel built = vehicle::buildVehicleModel(description, variant);
+    std::map<NodeId, int> assembly_of;
+    for (const vehicle::RoadInput& r : built.layout.road_inputs) assembly_of[r.node] = r.assembly;
+    std::map<int, int> pad_of;  // assembly -> pads numbered in contact order
+    for (dynamics::GroundContact& c : contacts) {
+      if (c.coordinate >= reduced->model.masterCount()) continue;
+      const auto it = assembly_of.find(reduced->model.masters[static_cast<std::size_t>(c.coordinate)].node);
+      if (it == assembly_of.end()) continue;
+      c.group = pad_of.emplace(it->second, static_cast<int>(pad_of.size())).first->second;
+    }
+    contact_forces = std::make_unique<dynamics::GroundContactForces>(sys, contacts, sim_options);
+    contact_monitor = std::make_unique<dynamics::GroundContactMonitor>(contacts);
+    contact_setup_seconds = std::chrono::duration<double>(Clock::now() - contact_start).count();
+  }
 
   // The road under the model's own inputs (the travel input reads none).
   const dynamics::RoadExcitation road(model_sys.input_stations, model_sys.input_lateral,
@@ -163,9 +289,11 @@ void run(const SimulateOptions& opt) {
 
   constexpr int kFirstColumn = 2;  // after time and station
   const auto first_road = static_cast<Eigen::Index>(kFirstColumn + layout.columns.size());
-  // The last column: the travel acceleration a(t) (0 at constant speed).
+  // Then the travel acceleration a(t) (0 at constant speed), then, when monitored, the ground
+  // force per side and the contacts in tension (appended: the columns before are unchanged).
   const auto travel_column = first_road + static_cast<Eigen::Index>(roads.size());
-  Matrix series(steps + 1, travel_column + 1);
+  const auto contact_column = travel_column + 1;
+  Matrix series(steps + 1, contact_column + (monitor_contact ? 3 : 0));
   // The model's accelerations are relative to the path frame; along x an accelerometer on the
   // hull also reads the frame's own acceleration: absolute x acceleration = relative + a(t), so
   // the x columns and ISO 2631's a_wx of a braking run include the braking.
@@ -193,8 +321,23 @@ void run(const SimulateOptions& opt) {
                 series(k, kFirstColumn + c) = col.scale * (y(col.row) - (col.relative ? y0(col.row) : 0.0));
               }
               for (PointComfort& c : comfort) c.add(y);
+            },
+            contact_forces.get(), [&](long first, const Eigen::Ref<const Matrix>& forces) {
+              Vector times(forces.rows()), stations(forces.rows());
+              for (Eigen::Index j = 0; j < forces.rows(); ++j) {
+                times(j) = (first + j) * opt.dt;
+                stations(j) = drive.station(first + j);
+              }
+              contact_monitor->add(forces, times, stations);
             });
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  if (monitor_contact)
+    for (long k = 0; k <= steps; ++k) {
+      const auto i = static_cast<std::size_t>(k);
+      series(k, contact_column) = contact_monitor->leftForce()[i];
+      series(k, contact_column + 1) = contact_monitor->rightForce()[i];
+      series(k, contact_column + 2) = contact_monitor->contactsInTension()[i];
+    }
   for (long k = 0; k <= steps; ++k)
     for (std::size_t r = 0; r < roads.size(); ++r) {
       const auto i = static_cast<Eigen::Index>(r);
@@ -226,6 +369,9 @@ void run(const SimulateOptions& opt) {
     for (const SimulationColumn& col : layout.columns) headers.push_back(col.header);
     for (const RoadUnderWheel& r : roads) headers.push_back(r.header);
     headers.push_back("travel_accel_m_s2");
+    if (monitor_contact)
+      for (const char* h : {"ground_force_left_n", "ground_force_right_n", "contacts_in_tension"})
+        headers.push_back(h);
     writeTable(opt.out_file, headers, series, 9,
                {{"vehicle", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
@@ -268,6 +414,19 @@ void run(const SimulateOptions& opt) {
         .field("peak_pitch_accel_deg_s2", peak("hull_pitch_accel_deg_s2"))
         .field("peak_roll_accel_deg_s2", peak("hull_roll_accel_deg_s2"))
         .field("peak_travel_accel_m_s2", series.col(travel_column).cwiseAbs().maxCoeff());
+    json.key("ground_contact");
+    if (monitor_contact)
+      writeGroundContactJson(json, contact_monitor->summary(), reduced->model.input_labels,
+                             model_sys.input_stations, contacts,
+                             contact_monitor->leftForce().front() + contact_monitor->rightForce().front(),
+                             contact_setup_seconds);
+    else
+      json.beginObject()
+          .field("monitored", false)
+          .field("reason", full ? "--model full: reduced model only (the full model's modal "
+                                  "coordinates carry no ground DOF)"
+                                : "--ground-contact off")
+          .endObject();
     json.key("peaks_at_points").beginArray();
     for (const std::string& point : layout.points)
       json.beginObject()
@@ -313,6 +472,11 @@ void run(const SimulateOptions& opt) {
   std::cout << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "
                "vertical):\n";
   for (const PointComfort& c : comfort) c.writeText(std::cout);
+  if (monitor_contact)
+    writeGroundContactText(std::cout, contact_monitor->summary());
+  else
+    std::cout << "  ground contact: not monitored ("
+              << (full ? "--model full; the reduced model reports it" : "--ground-contact off") << ")\n";
   std::cout << "  simulated " << simulated << " s in " << wall * 1e3 << " ms (real-time factor "
             << std::setprecision(0) << simulated / wall << ")\n";
 }
@@ -356,6 +520,10 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--out", opt->out_file, "time series: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
+  cmd->add_option("--ground-contact", opt->ground_contact,
+                  "on | off: report where the linear model's ground springs pull the vehicle "
+                  "down (F < 0: beyond its range); reduced model only")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->callback([opt, variant]() {
     opt->reduced.check("simulate", opt->model);
     opt->variant_given = variant->count() > 0;

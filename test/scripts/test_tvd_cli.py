@@ -344,9 +344,11 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
         # 7 more hull rates and accelerations and the hull's surge, 14 wheels, 4 columns for each
-        # of 2 named points, the road under each of the 14 wheels, the travel acceleration.
-        self.assertEqual(len(header), 6 + 8 + 14 + 2 * 4 + 14 + 1)
-        self.assertEqual(header[-1], "travel_accel_m_s2")
+        # of 2 named points, the road under each of the 14 wheels, the travel acceleration, the
+        # ground force per side and the contacts in tension.
+        self.assertEqual(len(header), 6 + 8 + 14 + 2 * 4 + 14 + 1 + 3)
+        self.assertEqual(header[-4:], ["travel_accel_m_s2", "ground_force_left_n",
+                                       "ground_force_right_n", "contacts_in_tension"])
         self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)
         # 30 m at 50 km/h in 1 ms steps, plus the initial sample.
         self.assertEqual(len(rows), round(30.0 / (speed_kmh / 3.6) / 1e-3) + 1)
@@ -382,6 +384,87 @@ class TvdCliTest(unittest.TestCase):
         for p in [hull] + list(points.values()):
             self.assertGreaterEqual(p["vibration_total_value_m_s2"], p["weighted_rms_m_s2"])
             self.assertGreater(p["weighted_rms_x_m_s2"], 0.0)  # the hill pitches the hull
+
+    def test_simulate_ground_contact_says_where_the_linear_model_leaves_its_range(self):
+        """Every road input's ground spring force F = k (u - q) (compression positive): at rest
+        the contacts carry the weight (statics' weight_n, 1e-6); over a 1 cm half-round at
+        5 km/h every contact stays in compression, over the out-of-phase waves at 30 km/h the
+        model pulls on contacts and on a whole side; the JSON's figures are the CSV columns'; the
+        monitor changes no other column (--ground-contact off: the same CSV less its three
+        columns); --model full says it is not monitored."""
+        weight = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked",
+                               "--contact", "bilateral")["weight_n"]
+        common = ("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache)
+        runs = {}
+        for name, track, speed in (("gentle", "half_round:0.01", "5"), ("harsh", "oop_waves", "30")):
+            out = self.path(f"contact_{name}.csv")
+            d = self.tvd_json(*common, "--track", track, "--speed-kmh", speed, "--out", out)
+            header, rows = read_csv(out)
+            self.assertEqual(header[-3:], ["ground_force_left_n", "ground_force_right_n",
+                                           "contacts_in_tension"])
+            c = {h: rows[:, i] for i, h in enumerate(header)}
+            g = d["ground_contact"]
+            runs[name] = (g, c, out)
+            self.assertEqual(g["contacts"], 84)  # 14 wheels, a pad of 6 soles each
+            self.assertEqual(g["contacts_in_tension_at_rest"], 0)
+            total = c["ground_force_left_n"] + c["ground_force_right_n"]
+            self.assertAlmostEqual(total[0] / weight, 1.0, delta=1e-6)
+            self.assertAlmostEqual(g["static_ground_force_n"] / weight, 1.0, delta=1e-6)
+            # Symmetric vehicle, left and right alike at rest.
+            self.assertAlmostEqual(c["ground_force_left_n"][0] / c["ground_force_right_n"][0], 1.0, delta=1e-9)
+            tension = c["contacts_in_tension"]
+            self.assertEqual(g["max_contacts_in_tension"], tension.max())
+            self.assertAlmostEqual(g["tension_sample_fraction"], np.mean(tension > 0), places=9)
+            self.assertEqual(g["in_range"], tension.max() == 0)
+            for side in ("left", "right"):
+                column = c[f"ground_force_{side}_n"]
+                self.assertAlmostEqual(g[f"peak_ground_force_{side}_n"] / column.max(), 1.0, delta=1e-8)
+                self.assertAlmostEqual(g[f"min_ground_force_{side}_n"] / column.min(), 1.0, delta=1e-8)
+            if tension.max() > 0:
+                first = np.argmax(tension > 0)
+                self.assertAlmostEqual(g["first_tension_time_s"], c["time_s"][first], places=9)
+                self.assertAlmostEqual(g["first_tension_station_m"], c["station_m"][first], places=6)
+                self.assertEqual(g["first_new_tension_time_s"], g["first_tension_time_s"])
+                self.assertLess(g["min_contact_force_n"], 0.0)
+                self.assertIn(g["min_contact"]["side"], ("left", "right"))
+                self.assertTrue(g["min_contact"]["input"].startswith("node "))
+            else:
+                self.assertIsNone(g["first_tension_time_s"])
+                self.assertIsNone(g["first_tension_contact"])
+                self.assertGreater(g["min_contact_force_n"], 0.0)
+        gentle, harsh = runs["gentle"][0], runs["harsh"][0]
+        self.assertTrue(gentle["in_range"])
+        self.assertFalse(harsh["in_range"])
+        # Pads (a wheel's track assembly, 6 soles): each pad's total, the same way.
+        for g in (gentle, harsh):
+            self.assertEqual((g["pads"]["count"], g["pads"]["in_tension_at_rest"]), (14, 0))
+        self.assertGreater(gentle["pads"]["min_force_n"], 0.0)
+        self.assertIsNone(gentle["pads"]["first_new_tension_time_s"])
+        self.assertLess(harsh["pads"]["min_force_n"], 0.0)
+        self.assertGreaterEqual(harsh["pads"]["first_new_tension_time_s"], harsh["first_tension_time_s"])
+        self.assertGreater(harsh["max_contacts_in_tension"], 10)
+        # The 1.2 m waves at 30 km/h throw a whole side off the road (its total pulls).
+        self.assertLess(min(harsh["min_ground_force_left_n"], harsh["min_ground_force_right_n"]), 0.0)
+        # The text says so.
+        text = self.tvd(*common, "--track", "oop_waves", "--speed-kmh", "30").stdout
+        self.assertRegex(text, r"ground contact: the linear model pulls on \d+ of 84 contacts .* from t = "
+                               r"[0-9.]+ s \(x = [0-9.]+ m, .*beyond its range")
+        text = self.tvd(*common, "--track", "half_round:0.01", "--speed-kmh", "5").stdout
+        self.assertIn("ground contact: all 84 contacts stay in compression", text)
+        # Off: every other column byte for byte, and no ground_contact figures.
+        off = self.path("contact_off.csv")
+        d = self.tvd_json(*common, "--track", "oop_waves", "--speed-kmh", "30", "--out", off,
+                          "--ground-contact", "off")
+        self.assertEqual(d["ground_contact"], {"monitored": False, "reason": "--ground-contact off"})
+        with open(runs["harsh"][2]) as f:
+            on_lines = [",".join(line.rstrip("\n").split(",")[:-3]) for line in f]
+        with open(off) as f:
+            off_lines = [line.rstrip("\n") for line in f]
+        self.assertEqual(on_lines, off_lines)
+        d = self.tvd_json(*common, "--track", "long_hill", "--speed-kmh", "30", "--model", "full",
+                          "--max-mode-hz", "40")
+        self.assertFalse(d["ground_contact"]["monitored"])
+        self.assertIn("reduced model only", d["ground_contact"]["reason"])
 
     def test_simulate_rates_and_named_points_are_consistent(self):
         """The CSV's rates are the time derivatives of its displacements, and a named point moves
@@ -460,7 +543,7 @@ class TvdCliTest(unittest.TestCase):
         header, rows = read_csv(out)
         c = {name: rows[:, i] for i, name in enumerate(header)}
         t = c["time_s"]
-        self.assertEqual(header[-1], "travel_accel_m_s2")
+        self.assertEqual(header[-4], "travel_accel_m_s2")
         np.testing.assert_allclose(c["travel_accel_m_s2"],
                                    np.where((t >= 1 - 1e-9) & (t < 26 - 1e-9), accel, 0.0),
                                    rtol=0, atol=1e-9)
@@ -478,6 +561,11 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("crew_seat_accel_x_m_s2", points)
         for name in points:
             np.testing.assert_allclose(c[name][end], accel, rtol=2e-2, err_msg=name)
+        # The travel inertia acts along x: settled, the road carries the weight again, half on
+        # each side (the vertical accelerations have died out).
+        total = c["ground_force_left_n"] + c["ground_force_right_n"]
+        np.testing.assert_allclose(total[end], total[0], rtol=1e-3)
+        np.testing.assert_allclose(c["ground_force_left_n"], c["ground_force_right_n"], rtol=1e-6)
         # Before the braking nothing moves on the flat track (round-off of the modal engine's
         # equilibrium: 3e-9 deg, against the braking's 0.02 deg).
         self.assertLess(np.abs(c["hull_pitch_deg"][t < 1]).max(), 1e-6)
@@ -491,8 +579,8 @@ class TvdCliTest(unittest.TestCase):
         self.assertLess(d["comfort"]["weighted_rms_x_m_s2"], 1e-6)
         self.assertGreater(braking["comfort"]["weighted_rms_x_m_s2"], 1e-3)
         header, rows = read_csv(steady)
-        self.assertEqual(header[-1], "travel_accel_m_s2")
-        self.assertEqual(np.abs(rows[:, -1]).max(), 0.0)
+        self.assertEqual(header[-4], "travel_accel_m_s2")
+        self.assertEqual(np.abs(rows[:, -4]).max(), 0.0)
         self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)
         self.assertLess(np.abs(rows[:, header.index("hull_longitudinal_accel_m_s2")]).max(), 1e-6)
 
@@ -519,11 +607,17 @@ class TvdCliTest(unittest.TestCase):
         # terrain's grid nodes, where a sample lands every 6 steps at 30 km/h and round-off
         # picks the side (1.7e-5 of the peak heave rate; on this symmetric hill the roll rate is
         # round-off, below 1e-3 deg/s, and so are its jumps).
+        # The ground forces (~2e5 N, written to 9 digits: 1e-3 N) agree to their last digit; a
+        # sole at the threshold may then count in tension on one path only.
         for i, name in enumerate(h1):
             rate = "_rate_" in name
+            if name == "contacts_in_tension":
+                self.assertLessEqual(np.abs(b[:, i] - a[:, i]).max(), 1.0)
+                continue
+            digits = 1e-8 * np.abs(a[:, i]).max() if name.startswith("ground_force_") else 0.0
             np.testing.assert_allclose(
                 b[:, i], a[:, i], rtol=0, err_msg=name,
-                atol=(1e-4 if rate else 1e-9) * np.abs(a[:, i]).max() + (1e-3 if rate else 1e-8))
+                atol=(1e-4 if rate else 1e-9) * np.abs(a[:, i]).max() + (1e-3 if rate else 1e-8) + digits)
 
         # 50 km/h for 1 s, then braking at a constant rate to 10 km/h at 3 s, then held.
         braking = self.path("braking.csv")
@@ -594,10 +688,16 @@ class TvdCliTest(unittest.TestCase):
         (c, header, c_rows), (d, _, d_rows) = runs["C"], runs["D"]
         self.assertGreater(c["comfort"]["weighted_rms_m_s2"], 0.1)
         for i, name in enumerate(header[2:], start=2):
-            if any(k in name for k in ("roll", "lateral", "accel_y")):
-                continue  # round-off on this road, uniform across the width
-            np.testing.assert_allclose(d_rows[:, i], 2 * c_rows[:, i], rtol=0,
-                                       atol=1e-7 * np.abs(d_rows[:, i]).max() + 1e-12,
+            if any(k in name for k in ("roll", "lateral", "accel_y")) or name == "contacts_in_tension":
+                continue  # round-off on this road, uniform across the width; a sign count
+            d_col, c_col = d_rows[:, i], c_rows[:, i]
+            digits = 0.0
+            if name.startswith("ground_force_"):
+                # Affine: the static load (the same on both roads) plus the road's part; written
+                # to 9 digits (1e-3 N of 2e5 N).
+                d_col, c_col, digits = d_col - d_col[0], c_col - c_col[0], 3e-3
+            np.testing.assert_allclose(d_col, 2 * c_col, rtol=0,
+                                       atol=1e-7 * np.abs(d_col).max() + 1e-12 + digits,
                                        err_msg=name)
         for key in ("weighted_rms_m_s2", "vdv_m_s1_75", "mtvv_m_s2"):
             self.assertAlmostEqual(d["comfort"][key] / c["comfort"][key], 2.0, places=7, msg=key)
