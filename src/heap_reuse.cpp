@@ -16,10 +16,13 @@ namespace {
 // Above the largest matrix of a reduction (the 50 MB T_CMS of the tracked vehicle) with a wide
 // margin: every block of the process comes from the heap and stays there when freed.
 constexpr int kKeepBytes = 1 << 30;
-// glibc's defaults (mallopt(3)): M_MMAP_THRESHOLD 128 KiB, M_TRIM_THRESHOLD 128 KiB. Setting them
-// turns off glibc's dynamic threshold; the fixed default is what a process that never tuned its
-// allocator starts with.
-constexpr int kDefaultBytes = 128 * 1024;
+// After: glibc's dynamic rule cannot come back once mallopt() has set a threshold (it raises the
+// mmap threshold to the size of each freed mapped block, up to 32 MiB on 64-bit systems, and the
+// trim threshold to twice that). The ceiling it would reach is what the process keeps: blocks up
+// to 32 MiB come from the heap and are reused, larger ones are mapped, and up to 64 MiB of free
+// heap top is kept.
+constexpr int kAfterMmapBytes = 32 << 20;
+constexpr int kAfterTrimBytes = 64 << 20;
 // The heap is grown by this much at once and the kernel asked for transparent huge pages on it
 // (madvise MADV_HUGEPAGE; honoured when /sys/kernel/mm/transparent_hugepage/enabled is "always"
 // or "madvise"): a 2 MiB page faults once where 512 small ones would, and the first reduction of
@@ -47,8 +50,8 @@ HeapReuse::HeapReuse() {
 
 HeapReuse::~HeapReuse() {
 #if defined(__GLIBC__)
-  mallopt(M_MMAP_THRESHOLD, kDefaultBytes);
-  mallopt(M_TRIM_THRESHOLD, kDefaultBytes);
+  mallopt(M_MMAP_THRESHOLD, kAfterMmapBytes);
+  mallopt(M_TRIM_THRESHOLD, kAfterTrimBytes);
   malloc_trim(0);
 #endif
 }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "tracked_vehicle_dynamics/dynamics/validation.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -26,10 +27,9 @@ std::vector<GroundContact> groundContacts(const SecondOrderSystem& system, DofIn
   if (road_inputs > n_u)
     throw InputError("ground contacts: " + std::to_string(road_inputs) +
                      " road inputs asked for, the system has " + std::to_string(n_u));
-  if (system.input_damping.rows() != system.size() || system.input_damping.cols() != n_u)
-    throw InputError("ground contacts: C_u is " + std::to_string(system.input_damping.rows()) +
-                     "x" + std::to_string(system.input_damping.cols()) + ", K_u " +
-                     std::to_string(system.size()) + "x" + std::to_string(n_u));
+  // Every matrix's size and the input positions' lengths (a short input_lateral would silently
+  // put every contact at the centre, outside both side totals).
+  validateSystem(system);
   const bool has_lateral = system.input_lateral.size() == n_u;
   std::vector<GroundContact> contacts;
   contacts.reserve(static_cast<std::size_t>(road_inputs));

@@ -112,34 +112,36 @@ Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
     throw InputError("sparse Cholesky: right-hand side has " + std::to_string(rhs.rows()) +
                      " rows, expected " + std::to_string(rows_));
   // Blocks of 64 columns: wide enough for the supernodal solve's level-3 BLAS, small enough that
-  // the block and CHOLMOD's workspaces (x, y, e, reused by cholmod_solve2) stay a few MB.
+  // the block and CHOLMOD's buffers stay a few MB. The block and the solution buffer are allocated
+  // once and reused by cholmod_solve2 for every block (reallocated only for a narrower last one).
   constexpr DofIndex kBlock = 64;
+  struct Dense {  // frees a CHOLMOD dense matrix on every path out
+    cholmod_dense* d = nullptr;
+    cholmod_common* common;
+    ~Dense() {
+      if (d) cholmod_free_dense(&d, common);
+    }
+  } block{nullptr, &impl_->common}, x{nullptr, &impl_->common}, y{nullptr, &impl_->common},
+      e{nullptr, &impl_->common};  // y, e: CHOLMOD's workspaces, apart from solveInPlace's
   Matrix out(rows_, rhs.cols());
-  cholmod_dense* block = nullptr;
   for (DofIndex first = 0; first < rhs.cols(); first += kBlock) {
     const DofIndex width = std::min<DofIndex>(kBlock, rhs.cols() - first);
-    if (!block || static_cast<DofIndex>(block->ncol) != width) {
-      if (block) cholmod_free_dense(&block, &impl_->common);
-      block = cholmod_zeros(rows_, width, CHOLMOD_REAL, &impl_->common);
-      if (!block) throw SolverError("sparse Cholesky: out of memory for a block of right-hand sides");
+    if (!block.d || static_cast<DofIndex>(block.d->ncol) != width) {
+      if (block.d) cholmod_free_dense(&block.d, &impl_->common);
+      block.d = cholmod_allocate_dense(rows_, width, rows_, CHOLMOD_REAL, &impl_->common);
+      if (!block.d) throw SolverError("sparse Cholesky: out of memory for a block of right-hand sides");
     }
-    Eigen::Map<Matrix> b(static_cast<double*>(block->x), rows_, width);
+    Eigen::Map<Matrix> b(static_cast<double*>(block.d->x), rows_, width);
     b.setZero();
     for (DofIndex j = 0; j < width; ++j)
       for (SparseMatrix::InnerIterator it(rhs, first + j); it; ++it)
         b(it.row(), j) = it.value();
-    cholmod_dense* x = nullptr;
-    const int ok = cholmod_solve2(CHOLMOD_A, impl_->factor, block, nullptr, &x, nullptr, &impl_->y,
-                                  &impl_->e, &impl_->common);
-    if (!ok || !x) {
-      if (x) cholmod_free_dense(&x, &impl_->common);
-      cholmod_free_dense(&block, &impl_->common);
+    if (!cholmod_solve2(CHOLMOD_A, impl_->factor, block.d, nullptr, &x.d, nullptr, &y.d, &e.d,
+                        &impl_->common) ||
+        !x.d)
       throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
-    }
-    out.middleCols(first, width) = Eigen::Map<const Matrix>(static_cast<double*>(x->x), rows_, width);
-    cholmod_free_dense(&x, &impl_->common);
+    out.middleCols(first, width) = Eigen::Map<const Matrix>(static_cast<double*>(x.d->x), rows_, width);
   }
-  if (block) cholmod_free_dense(&block, &impl_->common);
   return out;
 }
 

@@ -63,6 +63,8 @@ Matrix column(const Vector& v) {
   return v.size() ? Matrix(v) : Matrix(0, 1);
 }
 
+// The variables refer to the model's matrices: never of a temporary.
+std::vector<Variable> toVariables(const ReducedModel&& model) = delete;
 std::vector<Variable> toVariables(const ReducedModel& model) {
   const dynamics::SecondOrderSystem& s = model.system;
   Matrix masters(model.masterCount(), 2);

@@ -13,6 +13,7 @@
 #include <ros/names.h>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/heap_reuse.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
@@ -151,6 +152,10 @@ void VehicleDynamicsNode::loadVehicle() {
       throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
                            "' (" + known + " in " + params_.vehicle +
                            "); set ~comfort_point (launch argument comfort_point) to one of these");
+    // The reduction's large matrices reuse freed pages (heap_reuse.h) until the model is loaded,
+    // before the stepping starts; the free memory then goes back to the system (declared before
+    // the model: it outlives it).
+    const HeapReuse heap_reuse;
     const reduction::ReducedModel model =
         params_.reduced_model.empty()
             ? reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,

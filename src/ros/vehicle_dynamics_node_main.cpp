@@ -2,9 +2,6 @@
 // include/tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h.
 #include <ros/ros.h>
 
-#include <optional>
-
-#include "tracked_vehicle_dynamics/heap_reuse.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
 
 int main(int argc, char** argv) {
@@ -12,13 +9,7 @@ int main(int argc, char** argv) {
   ros::NodeHandle nh;
   ros::NodeHandle private_nh("~");
   try {
-    std::optional<tracked_vehicle_dynamics::ros_layer::VehicleDynamicsNode> node;
-    {
-      // Building or loading the model reuses freed pages (heap_reuse.h); the free memory goes
-      // back to the system before the node starts stepping.
-      const tracked_vehicle_dynamics::HeapReuse heap_reuse;
-      node.emplace(nh, private_nh);
-    }
+    tracked_vehicle_dynamics::ros_layer::VehicleDynamicsNode node(nh, private_nh);
     ros::spin();
   } catch (const std::exception& e) {
     ROS_FATAL("vehicle_dynamics_node: %s", e.what());

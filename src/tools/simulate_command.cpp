@@ -113,7 +113,11 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
   };
   json.beginObject()
       .field("contacts", static_cast<long long>(s.contacts))
-      .field("in_range", !s.anyTension())
+      // In range: no contact pressed at rest ever pulls. The bonded tracked model pulls on some
+      // soles already at rest (its statics, counted apart); judging by those would put every
+      // tracked run, even on flat ground, out of range.
+      .field("in_range", s.first_new_tension_contact < 0)
+      .field("in_range_at_rest", s.in_tension_at_rest == 0)
       .field("first_tension_time_s", s.first_tension_time)
       .field("first_tension_station_m", s.first_tension_station);
   json.key("first_tension_contact");
@@ -331,6 +335,10 @@ void run(const SimulateOptions& opt) {
               contact_monitor->add(forces, times, stations);
             });
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+  if (monitor_contact && contact_monitor->leftForce().size() != static_cast<std::size_t>(steps + 1))
+    throw std::logic_error("simulate: the ground contact monitor saw " +
+                           std::to_string(contact_monitor->leftForce().size()) + " samples, the run " +
+                           std::to_string(steps + 1));
   if (monitor_contact)
     for (long k = 0; k <= steps; ++k) {
       const auto i = static_cast<std::size_t>(k);

@@ -151,6 +151,13 @@ TEST(GroundContact, RefusesInputsThatAreNotASpringOnOneCoordinate) {
   expectInputError([&] { dynamics::groundContacts(modal_form); },
                    {"road input 0", "not of the form k e_m"});
   expectInputError([&] { dynamics::groundContacts(car, 2); }, "2 road inputs asked for");
+  // A system whose sizes disagree is refused by name before any column is read.
+  SecondOrderSystem short_lateral = dynamics::test::quarterCar();
+  short_lateral.input_lateral = Vector::Zero(2);
+  expectInputError([&] { dynamics::groundContacts(short_lateral); }, "input_lateral");
+  SecondOrderSystem short_ku = dynamics::test::quarterCar();
+  short_ku.input_stiffness = Matrix::Zero(1, 1);
+  expectInputError([&] { dynamics::groundContacts(short_ku); }, "input stiffness K_u");
 }
 
 TEST(GroundContact, HarmonicBaseExcitationBeyondLiftOffGoesIntoTension) {

@@ -415,7 +415,8 @@ class TvdCliTest(unittest.TestCase):
             tension = c["contacts_in_tension"]
             self.assertEqual(g["max_contacts_in_tension"], tension.max())
             self.assertAlmostEqual(g["tension_sample_fraction"], np.mean(tension > 0), places=9)
-            self.assertEqual(g["in_range"], tension.max() == 0)
+            self.assertEqual(g["in_range"], tension.max() == 0)  # nothing pulls at rest here
+            self.assertTrue(g["in_range_at_rest"])
             for side in ("left", "right"):
                 column = c[f"ground_force_{side}_n"]
                 self.assertAlmostEqual(g[f"peak_ground_force_{side}_n"] / column.max(), 1.0, delta=1e-8)
@@ -451,6 +452,17 @@ class TvdCliTest(unittest.TestCase):
                                r"[0-9.]+ s \(x = [0-9.]+ m, .*beyond its range")
         text = self.tvd(*common, "--track", "half_round:0.01", "--speed-kmh", "5").stdout
         self.assertIn("ground contact: all 84 contacts stay in compression", text)
+        # The bonded tracked model pulls on 84 soles already at rest: those do not put a run out of
+        # range, a sole pressed at rest that pulls does (1 mm obstacle: none; 3 mm: some).
+        tracked = ("simulate", "--vehicle", VEHICLE, "--variant", "tracked", "--cache-dir", self.cache,
+                   "--speed-kmh", "5", "--track")
+        g = self.tvd_json(*tracked, "half_round:0.001")["ground_contact"]
+        self.assertEqual((g["contacts_in_tension_at_rest"], g["max_contacts_in_tension"]), (84, 84))
+        self.assertEqual((g["in_range"], g["in_range_at_rest"]), (True, False))
+        self.assertIsNone(g["first_new_tension_time_s"])
+        g = self.tvd_json(*tracked, "half_round:0.003")["ground_contact"]
+        self.assertEqual((g["in_range"], g["in_range_at_rest"]), (False, False))
+        self.assertGreater(g["first_new_tension_time_s"], 0.0)
         # Off: every other column byte for byte, and no ground_contact figures.
         off = self.path("contact_off.csv")
         d = self.tvd_json(*common, "--track", "oop_waves", "--speed-kmh", "30", "--out", off,
