@@ -66,6 +66,22 @@ struct SimulateOptions {
   std::string ground_contact = "on";  // on | off
 };
 
+// Each contact's pad (track assembly), as its group: the master it acts on is a sole node of that
+// pad. The pads are numbered in contact order; a contact on no pad keeps group -1.
+void groupByPad(const vehicle::VehicleDescription& description, vehicle::Variant variant,
+                const reduction::ReducedModel& model, std::vector<dynamics::GroundContact>* contacts) {
+  const vehicle::VehicleModel built = vehicle::buildVehicleModel(description, variant);
+  std::map<NodeId, int> assembly_of;
+  for (const vehicle::RoadInput& r : built.layout.road_inputs) assembly_of[r.node] = r.assembly;
+  std::map<int, int> pad_of;  // assembly -> pad number
+  for (dynamics::GroundContact& c : *contacts) {
+    if (c.coordinate >= model.masterCount()) continue;
+    const auto it = assembly_of.find(model.masters[static_cast<std::size_t>(c.coordinate)].node);
+    if (it == assembly_of.end()) continue;
+    c.group = pad_of.emplace(it->second, static_cast<int>(pad_of.size())).first->second;
+  }
+}
+
 // The summary line: whether every contact stays in compression over the run.
 void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSummary& s) {
   out << std::setprecision(3);
@@ -240,17 +256,7 @@ void run(const SimulateOptions& opt) {
   if (monitor_contact) {
     const auto contact_start = Clock::now();
     contacts = dynamics::groundContacts(model_sys);  // the road inputs (not the travel input)
-    // Each contact's pad (track assembly): the master it acts on is a sole node of that pad.
-    const vehicle::VehicleModel built = vehicle::buildVehicleModel(description, variant);
-    std::map<NodeId, int> assembly_of;
-    for (const vehicle::RoadInput& r : built.layout.road_inputs) assembly_of[r.node] = r.assembly;
-    std::map<int, int> pad_of;  // assembly -> pads numbered in contact order
-    for (dynamics::GroundContact& c : contacts) {
-      if (c.coordinate >= reduced->model.masterCount()) continue;
-      const auto it = assembly_of.find(reduced->model.masters[static_cast<std::size_t>(c.coordinate)].node);
-      if (it == assembly_of.end()) continue;
-      c.group = pad_of.emplace(it->second, static_cast<int>(pad_of.size())).first->second;
-    }
+    groupByPad(description, variant, reduced->model, &contacts);
     contact_forces = std::make_unique<dynamics::GroundContactForces>(sys, contacts, sim_options);
     contact_monitor = std::make_unique<dynamics::GroundContactMonitor>(contacts);
     contact_setup_seconds = std::chrono::duration<double>(Clock::now() - contact_start).count();
