@@ -17,6 +17,11 @@ double GroundContactSummary::newTensionFraction() const {
                      : 0.0;
 }
 
+double GroundContactSummary::newGroupTensionFraction() const {
+  return samples > 0 ? static_cast<double>(new_group_tension_samples) / static_cast<double>(samples)
+                     : 0.0;
+}
+
 DofIndex GroundContactSummary::contactsEverInTension() const {
   return (min_force.array() < 0.0).count();
 }

@@ -171,8 +171,7 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
       .field("max_in_tension", static_cast<long long>(s.max_groups_in_tension))
       .field("first_new_tension_time_s", s.first_new_group_tension_time)
       .field("first_new_tension_station_m", s.first_new_group_tension_station)
-      .field("new_tension_sample_fraction",
-             s.samples > 0 ? static_cast<double>(s.new_group_tension_samples) / static_cast<double>(s.samples) : 0.0)
+      .field("new_tension_sample_fraction", s.newGroupTensionFraction())
       .field("min_force_n", s.min_group_force)
       .endObject()
       .endObject();

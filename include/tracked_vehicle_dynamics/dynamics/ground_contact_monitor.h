@@ -69,6 +69,8 @@ struct GroundContactSummary {
   double tensionFraction() const;
   /// new_tension_samples / samples (0 for no samples).
   double newTensionFraction() const;
+  /// new_group_tension_samples / samples (0 for no samples).
+  double newGroupTensionFraction() const;
   /// Contacts whose minimum is below zero (in tension at some sample, not necessarily at once).
   DofIndex contactsEverInTension() const;
 };
