@@ -309,9 +309,14 @@ void VehicleDynamicsNode::setUpFrames() {
     (vehicle_->pointIsRigid(i) ? static_points_ : moving).push_back(i);
   published_points_ = moving;
   if (!static_points_.empty()) {
+    // Stamped with the ROS time of publication, as static_transform_publisher does: tf2 holds
+    // static transforms for every time, but tools that show a transform's age (rviz, tf_monitor)
+    // read the stamp, and 0 would show the age of the epoch.
+    const ros::Time now = ros::Time::now();
     std::vector<geometry_msgs::TransformStamped> fixed(static_points_.size());
     for (std::size_t k = 0; k < static_points_.size(); ++k) {
       const VehicleGeometry::Body& point = geometry.points[static_points_[k]];
+      fixed[k].header.stamp = now;
       fixed[k].header.frame_id = params_.base_frame;
       fixed[k].child_frame_id = params_.frame_prefix + point.name;
       RigidPose pose;

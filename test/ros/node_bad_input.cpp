@@ -33,10 +33,14 @@ bool finite(const geometry_msgs::Vector3& v) {
 class NodeBadInput : public ::testing::Test {
  protected:
   NodeBadInput() : private_nh_("~"), diagnostics_(nh_) {
-    tf_sub_ = nh_.subscribe("/tf", 10000, &NodeBadInput::onTf, this);
-    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeBadInput::onWheels, this);
-    accel_sub_ = nh_.subscribe("hull/accel", 10000, &NodeBadInput::onAccel, this);
-    twist_sub_ = nh_.subscribe("hull/twist", 10000, &NodeBadInput::onTwist, this);
+    tf_sub_ =
+        nh_.subscribe("/tf", 10000, &NodeBadInput::onTf, this, ros::TransportHints().tcpNoDelay());
+    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeBadInput::onWheels, this,
+                                ros::TransportHints().tcpNoDelay());
+    accel_sub_ = nh_.subscribe("hull/accel", 10000, &NodeBadInput::onAccel, this,
+                               ros::TransportHints().tcpNoDelay());
+    twist_sub_ = nh_.subscribe("hull/twist", 10000, &NodeBadInput::onTwist, this,
+                               ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 100);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 100);
   }

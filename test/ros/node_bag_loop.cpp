@@ -53,7 +53,8 @@ class NodeBagLoop : public ::testing::Test {
  protected:
   NodeBagLoop() : private_nh_("~"), diagnostics_(nh_) {
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    wheels_sub_ = nh_.subscribe("road_wheels", 100000, &NodeBagLoop::onWheels, this);
+    wheels_sub_ = nh_.subscribe("road_wheels", 100000, &NodeBagLoop::onWheels, this,
+                                ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10);
   }

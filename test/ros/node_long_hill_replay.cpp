@@ -155,23 +155,29 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
 class LongHillReplay : public ::testing::Test {
  protected:
   LongHillReplay() : private_nh_("~") {
-    tf_sub_ = nh_.subscribe("/tf", 10000, &LongHillReplay::onTf, this);
-    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &LongHillReplay::onWheels, this);
+    tf_sub_ = nh_.subscribe("/tf", 10000, &LongHillReplay::onTf, this,
+                            ros::TransportHints().tcpNoDelay());
+    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &LongHillReplay::onWheels, this,
+                                ros::TransportHints().tcpNoDelay());
     imu_point_ = test::requiredParam<std::string>(private_nh_, "imu_point");
     imu_sub_ = nh_.subscribe<sensor_msgs::Imu>(
-        "imu/" + imu_point_, 10000, [this](const sensor_msgs::Imu::ConstPtr& msg) {
+        "imu/" + imu_point_, 10000,
+        [this](const sensor_msgs::Imu::ConstPtr& msg) {
           NodeSample& s = samples_[msg->header.stamp];
           s.specific_force = fromMsg(msg->linear_acceleration);
           s.body_rate = fromMsg(msg->angular_velocity);
           s.orientation = fromMsg(msg->orientation);
           s.has_imu = true;
-        });
+        },
+        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
     odom_sub_ = nh_.subscribe<nav_msgs::Odometry>(
-        "odom", 10000, [this](const nav_msgs::Odometry::ConstPtr& msg) {
+        "odom", 10000,
+        [this](const nav_msgs::Odometry::ConstPtr& msg) {
           NodeSample& s = samples_[msg->header.stamp];
           s.odom_twist << fromMsg(msg->twist.twist.linear), fromMsg(msg->twist.twist.angular);
           s.has_odom = true;
-        });
+        },
+        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
   }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
     for (const auto& t : msg->transforms) {

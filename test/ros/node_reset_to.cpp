@@ -50,8 +50,10 @@ class NodeResetTo : public ::testing::Test {
  protected:
   NodeResetTo() : private_nh_("~") {
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeResetTo::onWheels, this);
-    tf_sub_ = nh_.subscribe("/tf", 10000, &NodeResetTo::onTf, this);
+    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeResetTo::onWheels, this,
+                                ros::TransportHints().tcpNoDelay());
+    tf_sub_ =
+        nh_.subscribe("/tf", 10000, &NodeResetTo::onTf, this, ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
   }
 

@@ -26,8 +26,10 @@ class NodeSimTime : public ::testing::Test {
  protected:
   NodeSimTime() : private_nh_("~"), diagnostics_(nh_) {
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
-    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeSimTime::onWheels, this);
-    tf_sub_ = nh_.subscribe("/tf", 10000, &NodeSimTime::onTf, this);
+    wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeSimTime::onWheels, this,
+                                ros::TransportHints().tcpNoDelay());
+    tf_sub_ =
+        nh_.subscribe("/tf", 10000, &NodeSimTime::onTf, this, ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10, true);
   }

@@ -38,13 +38,19 @@ class NodeStatic : public ::testing::Test {
     const std::string footprint = private_nh_.param<std::string>("footprint_frame", "");
     footprint_ = footprint.empty() ? "" : prefix_ + footprint;
     publish_odom_tf_ = private_nh_.param("publish_odom_tf", true);
-    tf_sub_ = nh_.subscribe("/tf", 1000, &NodeStatic::onTf, this);
-    tf_static_sub_ = nh_.subscribe("/tf_static", 10, &NodeStatic::onTfStatic, this);
-    wheels_sub_ = nh_.subscribe("road_wheels", 1000, &NodeStatic::onWheels, this);
+    tf_sub_ =
+        nh_.subscribe("/tf", 1000, &NodeStatic::onTf, this, ros::TransportHints().tcpNoDelay());
+    tf_static_sub_ = nh_.subscribe("/tf_static", 10, &NodeStatic::onTfStatic, this,
+                                   ros::TransportHints().tcpNoDelay());
+    wheels_sub_ = nh_.subscribe("road_wheels", 1000, &NodeStatic::onWheels, this,
+                                ros::TransportHints().tcpNoDelay());
     comfort_sub_ = nh_.subscribe<Comfort>(
-        "comfort", 10, [this](const Comfort::ConstPtr& msg) { comfort_frame_ = msg->header.frame_id; });
+        "comfort", 10,
+        [this](const Comfort::ConstPtr& msg) { comfort_frame_ = msg->header.frame_id; },
+        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
-    odom_sub_ = nh_.subscribe("odom", 1000, &NodeStatic::onOdom, this);
+    odom_sub_ =
+        nh_.subscribe("odom", 1000, &NodeStatic::onOdom, this, ros::TransportHints().tcpNoDelay());
     private_nh_.getParam("imu_points", imu_points_);
     // The node's ~variance/* as the .test file sets them (0: the default, "unknown").
     imu_acceleration_variance_ = private_nh_.param("imu_linear_acceleration_variance", 0.0);
@@ -52,7 +58,8 @@ class NodeStatic : public ::testing::Test {
     for (const std::string& name : imu_points_) {
       imu_subs_.push_back(nh_.subscribe<sensor_msgs::Imu>(
           "imu/" + name, 1000,
-          [this, name](const sensor_msgs::Imu::ConstPtr& msg) { last_imu_[name] = *msg; }));
+          [this, name](const sensor_msgs::Imu::ConstPtr& msg) { last_imu_[name] = *msg; },
+          ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay()));
     }
   }
 
@@ -71,6 +78,7 @@ class NodeStatic : public ::testing::Test {
     for (const auto& t : msg->transforms) {
       parents_[t.child_frame_id] = t.header.frame_id;
       static_positions_[t.child_frame_id] = fromMsg(t.transform).translation;
+      static_stamps_[t.child_frame_id] = t.header.stamp;
     }
   }
   void onTf(const tf2_msgs::TFMessage::ConstPtr& msg) {
@@ -135,6 +143,7 @@ class NodeStatic : public ::testing::Test {
   std::map<std::string, std::string> parents_;
   std::set<std::string> on_tf_;
   std::map<std::string, Vector3> static_positions_;
+  std::map<std::string, ros::Time> static_stamps_;
   std::vector<TfSample> poses_;
   bool collecting_ = false;
   std::size_t wheel_messages_ = 0;
@@ -212,6 +221,11 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
       if (point.name == name) {
         EXPECT_EQ(static_positions_[frame], point.position) << frame;
       }
+    }
+    // Stamped when published (start-up, before the first sample), not at the epoch.
+    EXPECT_FALSE(static_stamps_[frame].isZero()) << frame << " on /tf_static stamped 0";
+    if (!poses_.empty()) {
+      EXPECT_LE(static_stamps_[frame], poses_.front().stamp) << frame;
     }
   }
 
