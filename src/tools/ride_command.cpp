@@ -300,10 +300,12 @@ void registerRideCommand(CLI::App& app) {
   // The road spectrum's options (those of tvd terrain --iso8608, and the grid), refused without
   // --iso8608.
   const std::vector<CLI::Option*> spectral_only = {
-      cmd->add_flag("--independent-sides", opt->independent_sides,
-                    "--iso8608: left and right tracks on independent profiles (default: one profile "
-                    "across the width)"),
-      cmd->add_option("--waviness", opt->waviness, "--iso8608: PSD slope w in G_d(n0) (n/n0)^-w (default 2)")
+      cmd->add_flag(
+          "--independent-sides", opt->independent_sides,
+          "--iso8608: left and right tracks on independent profiles (default: one profile "
+          "across the width)"),
+      cmd->add_option("--waviness", opt->waviness,
+                      "--iso8608: PSD slope w in G_d(n0) (n/n0)^-w (default 2)")
           ->check(positiveNumber()),
       cmd->add_option("--min-frequency", opt->min_frequency,
                       "--iso8608: lowest spatial frequency [cycles/m] (default 0.011)")
@@ -313,7 +315,13 @@ void registerRideCommand(CLI::App& app) {
           ->check(positiveNumber()),
       cmd->add_option("--points-per-decade", opt->points_per_decade,
                       "--iso8608: frequencies per decade of the integration grid (default 400)")
-          ->check(numberIn(10.0, 1e5))};
+          ->check(numberIn(10.0, 1e5)),
+      cmd->add_option(
+             "--psd-out", opt->psd_out,
+             "--iso8608: the acceleration PSDs at every speed of --speeds, one row per speed and "
+             "frequency (road, then per point raw, Wk-weighted and absorbed-power density): CSV, "
+             "or .mat")
+          ->check(outputFile({".csv", ".mat"}))};
   opt->reduced.addTo(cmd);
   cmd->add_option("--out", opt->out_file, "every run, by speed: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));

@@ -20,12 +20,13 @@
 #include "ride_report.h"
 #include "simulation_layout.h"
 #include "speed_sweep.h"
-#include "vehicle_analysis.h"
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/spectral_ride.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -67,6 +68,45 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
   return road;
 }
 
+// The PSDs behind the metrics at each speed of the sweep, as one long table: a row per speed and
+// frequency of that speed's grid (the grids differ: [v n_min, v n_max]). Per point the raw
+// acceleration PSD S_a, the ISO 2631-1 weighted |W_k|^2 S_a and the absorbed-power density K S_a,
+// so that the trapezoid over one speed's rows gives that run's a_rms^2, a_wz^2 and P (the
+// integrals SpectralRide::evaluate takes on the same grid).
+void writePsdTable(const RideOptions& opt, const dynamics::SpectralRide& ride,
+                   const std::vector<double>& speeds, const std::vector<std::string>& points,
+                   const std::string& variant, const std::string& road_name) {
+  std::vector<std::string> headers = {"speed_kmh", "frequency_hz", "road_psd_m2_hz"};
+  for (const std::string& p : points)
+    for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz"})
+      headers.push_back(p + q);
+  std::vector<dynamics::SpectralRideResult> results;
+  Eigen::Index rows = 0;
+  for (double speed_kmh : speeds) {
+    results.push_back(ride.evaluate(speed_kmh / 3.6));
+    rows += results.back().frequencies_hz.size();
+  }
+  const std::vector<dynamics::AnalogSection> power_filter =
+      dynamics::absorbedPowerVerticalSections();
+  Matrix table(rows, static_cast<Eigen::Index>(headers.size()));
+  Eigen::Index row = 0;
+  for (std::size_t k = 0; k < speeds.size(); ++k) {
+    const dynamics::SpectralRideResult& r = results[k];
+    for (Eigen::Index i = 0; i < r.frequencies_hz.size(); ++i, ++row) {
+      const double f = r.frequencies_hz(i);
+      const double wk = std::norm(dynamics::iso2631Response(dynamics::Weighting::Wk, f));
+      const double power = std::norm(dynamics::analogResponse(power_filter, f));
+      table(row, 0) = speeds[k];
+      table(row, 1) = f;
+      table(row, 2) = r.road_psd(i);
+      for (Eigen::Index o = 0; o < r.psd.cols(); ++o)
+        table.block(row, 3 + 3 * o, 1, 3) << r.psd(i, o), wk * r.psd(i, o), power * r.psd(i, o);
+    }
+  }
+  writeTable(opt.psd_out, headers, table, 12,
+             {{"vehicle", opt.vehicle_file}, {"variant", variant}, {"road", road_name}});
+}
+
 }  // namespace
 
 void runSpectralRide(const RideOptions& opt) {
@@ -74,6 +114,7 @@ void runSpectralRide(const RideOptions& opt) {
   const dynamics::RoadSpectrum road = roadOf(opt);
   dynamics::SpectralRideOptions spectral;
   spectral.points_per_decade = opt.points_per_decade;
+  spectral.keep_psd = !opt.psd_out.empty();
   dynamics::checkSpectralInput(road, spectral);
   std::vector<std::string> warnings;
   const RideModel model = loadRideModel(opt, &warnings);
@@ -130,6 +171,8 @@ void runSpectralRide(const RideOptions& opt) {
   if (!opt.out_file.empty())
     writeTable(opt.out_file, headers, table, 9,
                {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"road", road_name}});
+  if (!opt.psd_out.empty())
+    writePsdTable(opt, ride, sweep, points, vehicle::variantName(variant), road_name);
 
   if (opt.json) {
     io::JsonWriter json(std::cout);
@@ -185,6 +228,8 @@ void runSpectralRide(const RideOptions& opt) {
         .field("setup_seconds", setup)
         .field("wall_seconds", wall);
     if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.psd_out.empty())
+      json.field("psd_out", opt.psd_out);
     json.endObject();
     return;
   }
@@ -215,6 +260,9 @@ void runSpectralRide(const RideOptions& opt) {
                "obstacle: use --track)\n"
             << std::setprecision(3) << "  " << runs.size() << " speeds evaluated in " << wall
             << " s (modes and input matrices: " << setup << " s)\n";
+  if (!opt.psd_out.empty())
+    std::cout << "  PSDs at the " << sweep.size() << " speeds of --speeds written to "
+              << opt.psd_out << "\n";
 }
 
 }  // namespace tools

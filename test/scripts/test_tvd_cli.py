@@ -953,8 +953,11 @@ class TvdCliTest(unittest.TestCase):
         it absorbs 6 W; class D is 4x the power of class C and 2x its r.m.s. values, exactly; the
         CSV rows are the JSON's runs; 4000 points per decade change nothing that matters."""
         out = self.path("spectral.csv")
-        c = self.spectral_ride("--iso8608", "C", "--speeds", "5:40:5", "--out", out)
+        psd_out = self.path("spectral_psd.csv")
+        c = self.spectral_ride("--iso8608", "C", "--speeds", "5:40:5", "--out", out,
+                               "--psd-out", psd_out)
         self.assertEqual(c["method"], "spectral")
+        self.assertEqual(c["psd_out"], psd_out)
         self.assertEqual(c["road"]["iso8608_class"], "C")
         self.assertEqual(c["road"]["lateral_correlation"], "uniform")
         self.assertEqual(c["road"]["band_cycles_per_m"], [0.011, 2.83])
@@ -979,6 +982,31 @@ class TvdCliTest(unittest.TestCase):
         np.testing.assert_allclose(rows[:, header.index("hull_absorbed_power_w")],
                                    [r["points"][1]["absorbed_power_w"] for r in c["runs"]],
                                    rtol=1e-8)
+        # --psd-out: at each speed of --speeds, the grid the JSON describes, the road PSD
+        # G_d(f/v)/v (closed form), and per point S_a, |W_k|^2 S_a, K S_a whose trapezoid is the
+        # run's a_rms^2, a_wz^2, P (to the CSV's 12 digits against the JSON's 10).
+        psd_header, psd = read_csv(psd_out)
+        self.assertEqual(psd_header[:6], ["speed_kmh", "frequency_hz", "road_psd_m2_hz",
+                                          "crew_seat_psd_z_m2_s4_hz", "crew_seat_wk_psd_z_m2_s4_hz",
+                                          "crew_seat_power_density_z_w_hz"])
+        np.testing.assert_array_equal(np.unique(psd[:, 0]), np.arange(5.0, 40.5, 5.0))
+        for speed in np.unique(psd[:, 0]):
+            rows_v = psd[psd[:, 0] == speed]
+            f = rows_v[:, 1]
+            run = next(r for r in c["runs"] if r["speed_kmh"] == speed)
+            self.assertEqual(len(f), run["frequencies"])
+            np.testing.assert_allclose([f[0], f[-1]], run["frequency_band_hz"], rtol=1e-9)
+            self.assertTrue(np.all(np.diff(f) > 0))
+            v = speed / 3.6
+            np.testing.assert_allclose(rows_v[:, 2], 256e-6 * (f / (0.1 * v)) ** -2 / v, rtol=1e-9)
+            self.assertAlmostEqual(np.trapz(rows_v[:, 2], f) / band, 1.0, delta=1e-4)
+            for k, p in enumerate(run["points"]):
+                cols = rows_v[:, 3 + 3 * k:6 + 3 * k]
+                self.assertTrue(np.all(cols >= 0))
+                for col, value in ((0, p["rms_z_m_s2"] ** 2), (1, p["weighted_rms_z_m_s2"] ** 2),
+                                   (2, p["absorbed_power_w"])):
+                    self.assertAlmostEqual(np.trapz(cols[:, col], f) / value, 1.0, delta=1e-8,
+                                           msg=(speed, p["point"], col))
         limits = {l["point"]: l for l in c["limits"]}
         self.assertEqual(set(limits["crew_seat"]), {"point", "absorbed_power"})
         for point, l in limits.items():
@@ -1026,6 +1054,8 @@ class TvdCliTest(unittest.TestCase):
                  ["--waviness applies to --iso8608 (the spectral method) only"]),
                 (["--track", "long_hill", "--independent-sides"], ["--independent-sides applies to --iso8608"]),
                 (["--track", "long_hill", "--points-per-decade", "100"], ["--points-per-decade applies"]),
+                (["--track", "long_hill", "--psd-out", self.path("psd.csv")], ["--psd-out applies to --iso8608"]),
+                (["--iso8608", "C", "--psd-out", self.path("psd.txt")], ["--psd-out", ".csv", ".mat"]),
                 (["--iso8608", "C", "--min-frequency", "3"],
                  ["--min-frequency 3 must be below --max-frequency 2.83 cycles/m"]),
                 (["--iso8608", "C", "--points-per-decade", "5"], ["--points-per-decade", "[10, 100000]"]),
