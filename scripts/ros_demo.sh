@@ -65,6 +65,14 @@ for _ in $(seq 1 50); do
   [ -s "$output_bag" ] && [ ! -e "$output_bag.active" ] && break
   sleep 0.2
 done
+# roslaunch exits 0 even when a required node dies at start-up (a FATAL parameter, a bad track):
+# no output bag means the replay did not run.
+if [ ! -s "$output_bag" ] || [ -e "$output_bag.active" ]; then
+  echo "the replay wrote no output bag ($output_bag); the last lines of $OUT/roslaunch.log:"
+  grep -E "FATAL|ERROR" "$OUT/roslaunch.log" | sed 's/\x1b\[[0-9;]*m//g' | tail -n 5 || true
+  tail -n 30 "$OUT/roslaunch.log"
+  exit 1
+fi
 
 echo
 echo "== Summary"

@@ -72,5 +72,29 @@ std::vector<GroundContact> groundContacts(const SecondOrderSystem& system, DofIn
   return contacts;
 }
 
+void contactForces(const std::vector<GroundContact>& contacts,
+                   const Eigen::Ref<const Vector>& state, const Eigen::Ref<const Vector>& input,
+                   DofIndex input_count, Eigen::Ref<Vector> forces, const char* where) {
+  const DofIndex n = state.size() / 2;
+  if (state.size() % 2 != 0 || input.size() != 2 * input_count ||
+      forces.size() != static_cast<DofIndex>(contacts.size()))
+    throw InputError(
+        std::string(where) + ": state of " + std::to_string(state.size()) + ", input of " +
+        std::to_string(input.size()) + " and " + std::to_string(forces.size()) + " forces for " +
+        std::to_string(contacts.size()) + " contacts and " + std::to_string(input_count) +
+        " inputs (expected [q; q'], [u; u'] and one force per contact)");
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const GroundContact& c = contacts[i];
+    if (c.coordinate < 0 || c.coordinate >= n || c.input < 0 || c.input >= input_count)
+      throw InputError(std::string(where) + ": contact " + std::to_string(i) + " on coordinate " +
+                       std::to_string(c.coordinate) + " and input " + std::to_string(c.input) +
+                       " outside a state of " + std::to_string(n) + " coordinates and " +
+                       std::to_string(input_count) + " inputs");
+    forces(static_cast<DofIndex>(i)) =
+        c.stiffness * (input(c.input) - state(c.coordinate)) +
+        c.damping * (input(input_count + c.input) - state(n + c.coordinate));
+  }
+}
+
 }  // namespace dynamics
 }  // namespace tracked_vehicle_dynamics

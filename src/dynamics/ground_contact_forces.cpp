@@ -215,11 +215,7 @@ Vector GroundContactForces::forces(const Vector& state, const Vector& input) con
   detail::requireLength("GroundContactForces::forces", "state z", state, 2 * n);
   detail::requireLength("GroundContactForces::forces", "input w", input, 2 * n_u_);
   Vector f(contactCount());
-  for (DofIndex i = 0; i < contactCount(); ++i) {
-    const GroundContact& c = contacts_[static_cast<std::size_t>(i)];
-    f(i) = c.stiffness * (input(c.input) - state(c.coordinate)) +
-           c.damping * (input(n_u_ + c.input) - state(n + c.coordinate));
-  }
+  contactForces(contacts_, state, input, n_u_, f, "GroundContactForces::forces");
   return f;
 }
 

@@ -1,9 +1,13 @@
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <set>
 #include <sstream>
+#include <vector>
 
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -16,7 +20,10 @@ class Reader {
   explicit Reader(const ros::NodeHandle& nh) : nh_(nh) {}
 
   std::string name(const std::string& key) const { return nh_.resolveName(key); }
-  bool has(const std::string& key) const { return nh_.hasParam(key); }
+  bool has(const std::string& key) const {
+    seen_.insert(key);
+    return nh_.hasParam(key);
+  }
 
   ParameterError error(const std::string& key, const std::string& what) const {
     return ParameterError(name(key) + ": " + what);
@@ -25,7 +32,7 @@ class Reader {
   /// True and the value when set; throws when set with the wrong type.
   template <typename T>
   bool read(const std::string& key, T* value, const char* type) const {
-    if (!nh_.hasParam(key))
+    if (!has(key))
       return false;
     if (!nh_.getParam(key, *value))
       throw error(key, std::string("must be ") + type);
@@ -62,12 +69,70 @@ class Reader {
   }
 
   int integer(const std::string& key, int fallback, int minimum) const {
+    // Read as XmlRpc: roscpp's getParam(int&) rounds a double (2.5 -> 3) without a word, which
+    // would build another model than the one written.
     int value = fallback;
-    read(key, &value, "an integer");
+    XmlRpc::XmlRpcValue raw;
+    if (has(key) && nh_.getParam(key, raw)) {
+      if (raw.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+        value = static_cast<int>(raw);
+      } else if (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble &&
+                 std::floor(static_cast<double>(raw)) == static_cast<double>(raw) &&
+                 std::abs(static_cast<double>(raw)) < 1e9) {
+        value = static_cast<int>(static_cast<double>(raw));
+      } else {
+        throw error(key, "must be an integer" + (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble
+                                                     ? ", got " + text(static_cast<double>(raw))
+                                                     : std::string()));
+      }
+    }
     if (value < minimum) {
       throw error(key, "must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
     }
     return value;
+  }
+
+  /// A frame id (or prefix) tf2 accepts: no leading '/' (tf2 refuses it) and no whitespace.
+  std::string frame(const std::string& key, const std::string& fallback, bool may_be_empty) const {
+    const std::string value = string(key, fallback);
+    if (value.empty() && !may_be_empty)
+      throw error(key, "must not be empty");
+    if (!value.empty() && value.front() == '/')
+      throw error(key, "'" + value + "' must not start with '/' (tf2 refuses such frame ids)");
+    if (value.find_first_of(" \t\n") != std::string::npos)
+      throw error(key, "'" + value + "' must not contain whitespace");
+    return value;
+  }
+
+  /// The node's private parameters that no read asked for (misspelt or unknown), relative to
+  /// the private namespace, e.g. "speed_timout".
+  std::vector<std::string> unread() const {
+    std::vector<std::string> names, out;
+    nh_.getParamNames(names);
+    const std::string prefix = nh_.getNamespace() + "/";
+    for (const std::string& full : names) {
+      if (full.compare(0, prefix.size(), prefix) != 0)
+        continue;
+      const std::string key = full.substr(prefix.size());
+      if (seen_.count(key) == 0)
+        out.push_back(key);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  /// The read key nearest to `key` by edit distance, when at most 2 edits away; else "".
+  std::string nearest(const std::string& key) const {
+    std::string best;
+    std::size_t best_distance = 3;
+    for (const std::string& known : seen_) {
+      const std::size_t d = editDistance(key, known);
+      if (d < best_distance) {
+        best_distance = d;
+        best = known;
+      }
+    }
+    return best;
   }
 
   static std::string text(double value) {
@@ -77,7 +142,25 @@ class Reader {
   }
 
  private:
+  // Levenshtein distance (insertions, deletions, substitutions).
+  static std::size_t editDistance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+      row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    return row[b.size()];
+  }
+
   const ros::NodeHandle& nh_;
+  mutable std::set<std::string> seen_;  // every key asked for
 };
 
 }  // namespace
@@ -126,14 +209,30 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
 
   OnlineVehicleOptions& v = p.vehicle_options;
   v.rate = in.positive("rate", v.rate, "Hz");
+  // The comfort meter filters the vertical acceleration at ~rate (ISO 2631-1 Wk needs more than
+  // 25 Hz): refused here, naming ~rate, rather than later as an error of the vehicle.
+  try {
+    dynamics::ComfortMeter(v.rate, dynamics::ComfortOptions{});
+  } catch (const InputError& e) {
+    throw in.error("rate", e.what());
+  }
   p.publish_rate = in.positive("publish_rate", v.rate, "Hz");
   if (p.publish_rate > v.rate) {
     throw in.error("publish_rate", "must not exceed ~rate (" + Reader::text(v.rate) + " Hz), got " +
                                        Reader::text(p.publish_rate));
   }
-  p.comfort_rate = in.positive("comfort_rate", p.comfort_rate, "Hz");
-  if (p.comfort_rate > v.rate)
-    throw in.error("comfort_rate", "must not exceed ~rate");
+  // Unset, the derived rates are their defaults capped at ~rate (a 5 Hz ~rate runs; it cannot
+  // publish comfort at 10 Hz); set above ~rate, they are refused.
+  const auto derivedRate = [&](const std::string& key, double fallback, bool zero_allowed) {
+    const double value = zero_allowed ? in.nonNegative(key, std::min(fallback, v.rate), "Hz")
+                                      : in.positive(key, std::min(fallback, v.rate), "Hz");
+    if (value > v.rate)
+      throw in.error(key, "must not exceed ~rate (" + Reader::text(v.rate) + " Hz), got " +
+                              Reader::text(value));
+    return value;
+  };
+  p.comfort_rate = derivedRate("comfort_rate", p.comfort_rate, false);
+  p.ground_contact_rate = derivedRate("ground_contact_rate", p.ground_contact_rate, true);
   v.method = parseMethod(in.string("method", "modal"), in.name("method"));
   v.hold = parseHold(in.string("hold", "first_order"), in.name("hold"));
   if (in.has("max_mode_frequency"))  // unset: OnlineVehicleOptions' default (rate / 2)
@@ -153,18 +252,14 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
 
-  p.odom_frame = in.string("odom_frame", p.odom_frame);
-  p.base_frame = in.string("base_frame", p.base_frame);
-  p.frame_prefix = in.string("frame_prefix", p.frame_prefix);
-  if (p.odom_frame.empty())
-    throw in.error("odom_frame", "must not be empty");
-  if (p.base_frame.empty())
-    throw in.error("base_frame", "must not be empty");
+  p.odom_frame = in.frame("odom_frame", p.odom_frame, false);
+  p.base_frame = in.frame("base_frame", p.base_frame, false);
+  p.frame_prefix = in.frame("frame_prefix", p.frame_prefix, true);
   if (p.odom_frame == p.base_frame)
     throw in.error("base_frame", "must differ from ~odom_frame");
   // The prefix names one vehicle's whole tree (REP-105 per robot: veh1/odom -> veh1/base_link
   // -> veh1/road_wheel_left_1), so that two nodes in one tf tree never share a frame.
-  p.footprint_frame = in.string("footprint_frame", "");
+  p.footprint_frame = in.frame("footprint_frame", "", true);
   if (!p.footprint_frame.empty() &&
       (p.footprint_frame == p.odom_frame || p.footprint_frame == p.base_frame))
     throw in.error("footprint_frame", "must differ from ~odom_frame and ~base_frame");
@@ -203,6 +298,13 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   r.mogesec_masters = in.integer("reduction/mogesec_masters", r.mogesec_masters, 0);
   r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0);
   p.reduced_model = in.string("reduced_model", "");
+  // Every key above has been asked for: what else is set in the private namespace is unknown
+  // (a misspelt ~speed_timout would leave the dead-driver stop off without a word).
+  for (const std::string& key : in.unread()) {
+    const std::string near = in.nearest(key);
+    p.unknown_parameters.push_back("~" + key +
+                                   (near.empty() ? "" : " (did you mean ~" + near + "?)"));
+  }
   return p;
 }
 

@@ -129,6 +129,13 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   for (std::size_t i = 0; i < geometry_.wheels.size(); ++i) {
     wheel_states_[i].name = geometry_.wheels[i].name;
   }
+  // The road inputs as ground springs (K_u(:, i) = k_i e_m(i)); a model of another form runs
+  // unchecked, and says so. The travel input of a slewing vehicle is no contact.
+  try {
+    contact_watch_.emplace(dynamics::groundContacts(model.system), simulator_.inputCount() / 2);
+  } catch (const InputError& e) {
+    contact_watch_reason_ = e.what();
+  }
   reset();
   static_outputs_ = simulator_.outputs().segment(disp_offset_, layout.baseCount());
   static_hull_ = hullDisplacement();
@@ -186,8 +193,19 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
     uncovered = sampleInput();
     simulator_.reset(equilibrium_solver_.solve(road_input_.head(sampler_.size())), input_);
   }
+  restartContactWatch();
   comfort_.reset();
   return uncovered;
+}
+
+void OnlineVehicle::restartContactWatch() {
+  if (contact_watch_)
+    contact_watch_->restart(simulator_.time(), station_, simulator_.state(), simulator_.input());
+}
+
+void OnlineVehicle::checkGroundContact() {
+  if (contact_watch_)
+    contact_watch_->check(simulator_.time(), station_, simulator_.state(), simulator_.input());
 }
 
 void OnlineVehicle::addTerrain(const TerrainPatch& patch) {
@@ -236,6 +254,7 @@ StepResult OnlineVehicle::step() {
     // equilibrium where the vehicle is, terrain and speed kept.
     input_.setZero();
     simulator_.reset(equilibrium_, input_);
+    restartContactWatch();
     result.diverged = true;
     return result;
   }

@@ -130,6 +130,19 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   });
   printStats("terrain sampling alone", sample_stats);
 
+  // The ground-contact check the node runs every round(rate / ~ground_contact_rate) steps
+  // (OnlineVehicle::checkGroundContact: the state q = Phi eta, O(n^2), then the forces).
+  rl::DurationStatistics contact_stats;
+  run_track([&](rl::OnlineVehicle& vehicle) {
+    vehicle.step();
+    const auto a = Clock::now();
+    vehicle.checkGroundContact();
+    contact_stats.add(seconds(a, Clock::now()));
+  });
+  printStats("OnlineVehicle::checkGroundContact", contact_stats);
+  std::printf("  share of one core at the default ~ground_contact_rate 50 Hz: %.2f %%\n",
+              100.0 * 50.0 * contact_stats.mean());
+
   // The simulator alone, same sizes, constant input: what the terrain sampling adds.
   const tvd::dynamics::SimulatorOptions sim_options = rl::simulatorOptions(model, options);
   tvd::dynamics::Simulator sim(model.system, sim_options);

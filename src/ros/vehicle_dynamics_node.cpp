@@ -68,6 +68,8 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   max_catch_up_steps_ = std::max<std::int64_t>(1, std::llround(params_.catch_up_limit * rate));
   publish_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.publish_rate));
   comfort_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.comfort_rate));
+  if (params_.ground_contact_rate > 0.0)
+    contact_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.ground_contact_rate));
 
   // One tick publishes up to max_catch_up_steps_ / publish_every_ samples before roscpp writes
   // any of them (on real time the tick runs in the network thread that writes them): each
@@ -99,6 +101,7 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   updater_.add("terrain", this, &VehicleDynamicsNode::diagnoseTerrain);
   updater_.add("speed", this, &VehicleDynamicsNode::diagnoseInput);
   updater_.add("model", this, &VehicleDynamicsNode::diagnoseModel);
+  updater_.add("ground contact", this, &VehicleDynamicsNode::diagnoseGroundContact);
 
   // Subscribed last: nothing arrives before the vehicle exists. The no-delay hint keeps the
   // message -> step latency low.
@@ -114,10 +117,27 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
     loop_ = std::thread(&VehicleDynamicsNode::run, this);
   else
     tick_timer_ = std::make_unique<NetworkThreadTimer>(step_ns_, [this] { tick(); });
-  ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %.0f Hz, %s/%s",
+  // Publishing happens every round(rate / publish_rate) steps: the rate it gives is the one
+  // logged, and a requested rate that does not divide ~rate is said to be rounded.
+  const double published_rate = rate / static_cast<double>(publish_every_);
+  if (std::abs(published_rate - params_.publish_rate) > 1e-9 * rate)
+    ROS_WARN(
+        "vehicle_dynamics_node: ~publish_rate %g Hz does not divide ~rate %g Hz: publishing every "
+        "%lld "
+        "steps, at %g Hz",
+        params_.publish_rate, rate, static_cast<long long>(publish_every_), published_rate);
+  ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %g Hz, %s/%s",
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
-           params_.publish_rate, methodName(params_.vehicle_options.method),
+           published_rate, methodName(params_.vehicle_options.method),
            holdName(params_.vehicle_options.hold));
+  for (const std::string& unknown : params_.unknown_parameters)
+    ROS_WARN("vehicle_dynamics_node: parameter %s is set but not a parameter of this node: ignored",
+             unknown.c_str());
+  if (use_sim_time_)
+    ROS_INFO(
+        "vehicle_dynamics_node: on simulated time (/use_sim_time true): the vehicle starts with "
+        "the first "
+        "/clock message");
 }
 
 template <class M>
@@ -295,6 +315,21 @@ void VehicleDynamicsNode::setUpImus() {
 
 void VehicleDynamicsNode::setUpFrames() {
   const VehicleGeometry& geometry = vehicle_->geometry();
+  // The hull's frames must not be one of the frames published under them (a base_frame named
+  // crew_seat would publish crew_seat -> crew_seat).
+  for (const auto& [key, frame] :
+       {std::pair<const char*, const std::string*>{"odom_frame", &params_.odom_frame},
+        {"base_frame", &params_.base_frame},
+        {"footprint_frame", &params_.footprint_frame}}) {
+    std::vector<std::string> children;
+    for (const auto& wheel : geometry.wheels)
+      children.push_back(params_.frame_prefix + wheel.name);
+    for (const auto& point : geometry.points)
+      children.push_back(params_.frame_prefix + point.name);
+    if (std::find(children.begin(), children.end(), *frame) != children.end())
+      throw ParameterError(private_nh_.resolveName(key) + ": '" + *frame +
+                           "' is also the frame of a road wheel or named point of the description");
+  }
   if (params_.publish_points_all) {
     for (std::size_t i = 0; i < geometry.points.size(); ++i)
       published_points_.push_back(i);
@@ -606,6 +641,10 @@ void VehicleDynamicsNode::step() {
   }
   if (t.isZero())
     return;  // use_sim_time and no /clock yet
+  // A speed (or ~reset_to) received before simulated time started was stamped 0: its timeout
+  // counts from the first /clock, not from the epoch (it would stop the vehicle at once).
+  if (!clock_started_ && last_speed_time_.isZero())
+    last_speed_time_ = t;
   // A driver that stopped publishing must not leave the vehicle driving on: it stops where it is
   // and the next speed message moves it again. With a speed slew it brakes to a stop at
   // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
@@ -710,6 +749,8 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
       publishState();
     if (steps_since_start_ % comfort_every_ == 0)
       publishComfort();
+    if (contact_every_ > 0 && steps_since_start_ % contact_every_ == 0)
+      vehicle_->checkGroundContact();
   }
   const double tick_seconds = secondsSince(tick_start);
   tick_window_.add(tick_seconds);
@@ -966,6 +1007,57 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
   status.add("cache note", report_.cache_note);
   status.add("load time [s]", load_seconds_);
   status.add("comfort point", vehicle_->comfortPoint());
+}
+
+void VehicleDynamicsNode::diagnoseGroundContact(
+    diagnostic_updater::DiagnosticStatusWrapper& status) {
+  // The bonded linear model holds every contact on the road; a contact that pressed at rest and
+  // now pulls (F < 0) is where a real vehicle would lift off: the results there are the model's.
+  dynamics::GroundContactWatch* const watch = vehicle_->groundContactWatch();
+  if (!watch) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "not checked: " + vehicle_->groundContactUnavailable());
+    return;
+  }
+  if (contact_every_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "not checked (~ground_contact_rate 0)");
+    return;
+  }
+  const dynamics::GroundContactRecord interval = watch->takeInterval();
+  const dynamics::GroundContactRecord& run = watch->sinceRestart();
+  const dynamics::GroundContactNow& now = watch->now();
+  if (interval.beyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
+                    "beyond the linear model's range: up to %ld contacts pressed at rest pulled "
+                    "on the road since the last report (a real vehicle would lift off there)",
+                    static_cast<long>(interval.most_pulling));
+  } else if (run.beyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
+                    "in range since the last report (left it at t = %.3f s, station %.2f m)",
+                    run.first_beyond_time, run.first_beyond_station);
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "in range: every contact pressed at rest presses on the road");
+  }
+  status.add("contacts", static_cast<long>(watch->contactCount()));
+  status.add("pulling at rest (the bonded statics)", static_cast<long>(watch->pullingAtRest()));
+  status.add("check rate [Hz]", params_.ground_contact_rate);
+  status.add("checks (since last report)", interval.checks);
+  status.add("checks beyond the range (since last report)", interval.checks_beyond);
+  status.add("most pulling at once (since last report)", static_cast<long>(interval.most_pulling));
+  status.add("min force of a contact pressed at rest (since last report) [N]", interval.min_force);
+  status.add("pulling now", static_cast<long>(now.pulling));
+  status.add("ground force left now [N]", now.left);
+  status.add("ground force right now [N]", now.right);
+  status.add("checks beyond the range (since the last start or reset)", run.checks_beyond);
+  if (run.beyondRange()) {
+    const dynamics::GroundContact& c =
+        watch->contacts()[static_cast<std::size_t>(run.first_beyond_contact)];
+    status.add("first beyond the range: time [s]", run.first_beyond_time);
+    status.add("first beyond the range: station [m]", run.first_beyond_station);
+    status.add("first beyond the range: road input",
+               std::to_string(c.input) + " (" + dynamics::contactSideName(c.side) + ")");
+  }
 }
 
 }  // namespace ros_layer

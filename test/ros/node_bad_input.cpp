@@ -285,6 +285,80 @@ TEST(NodeBadParameters, BadSpeedSlewRatesAreNamed) {
   }
 }
 
+// ~rate must let the comfort meter filter (ISO 2631-1 Wk: above 25 Hz): named as ~rate.
+TEST(NodeBadParameters, RateTooLowForTheComfortFilterIsNamed) {
+  const NodeRun run = runNamed("slow_rate", "_rate:=5");
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(
+      run.output.find("/slow_rate/rate: comfort: sample rate 5 Hz is too low for ISO 2631-1 Wk"),
+      std::string::npos)
+      << run.output;
+}
+
+// ~ground_contact_rate: >= 0 Hz, finite, at most ~rate; each named.
+TEST(NodeBadParameters, BadGroundContactRateIsNamed) {
+  int index = 0;
+  for (const auto& [value, message] : std::vector<std::pair<std::string, std::string>>{
+           {"-1", ": must be >= 0 Hz, got -1"},
+           {"fast", ": must be a number"},
+           {"2000", ": must not exceed ~rate (1000 Hz), got 2000"}}) {
+    SCOPED_TRACE("~ground_contact_rate " + value);
+    const std::string name = "bad_contact_rate_" + std::to_string(index++);
+    const NodeRun run = runNamed(name, "_ground_contact_rate:=" + value);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("/" + name + "/ground_contact_rate" + message), std::string::npos)
+        << run.output;
+  }
+}
+
+// Integers must be integers (roscpp would round 2.5 to 3 and build another model); frame ids
+// must be ones tf2 takes and not a wheel's or point's frame.
+TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
+  struct Case {
+    std::string name, arguments, message;
+  };
+  const std::vector<Case> cases = {
+      {"mode_count_half", "_reduction/mode_count:=2.5",
+       "/mode_count_half/reduction/mode_count: must be an integer, got 2.5"},
+      {"slash_prefix", "_frame_prefix:=/veh1/",
+       "/slash_prefix/frame_prefix: '/veh1/' must not start with '/'"},
+      {"base_is_point", "_base_frame:=crew_seat",
+       "/base_is_point/base_frame: 'crew_seat' is also the frame of a road wheel or named point"},
+  };
+  for (const auto& [name, arguments, message] : cases) {
+    SCOPED_TRACE(arguments);
+    const NodeRun run = runNamed(name, arguments);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
+  }
+}
+
+// What the node accepts but would otherwise do silently: a misspelt parameter is named with the
+// one it resembles, a ~publish_rate that does not divide ~rate is said to be rounded, and a ~rate
+// (40 Hz) below the ground-contact check's default 50 Hz runs with it capped.
+TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
+  ros::NodeHandle private_nh("~");
+  const NodeRun run =
+      runNode("__name:=said _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
+                  " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
+                  " _rate:=40 _publish_rate:=15 _speed_timout:=1",
+              test::requiredParam<int>(private_nh, "bad_parameter_timeout"));
+  EXPECT_EQ(run.exit_status, 124) << "the node should run until `timeout` stops it:\n"
+                                  << run.output;
+  EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
+  EXPECT_NE(
+      run.output.find(
+          "parameter ~speed_timout (did you mean ~speed_timeout?) is set but not a parameter"),
+      std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("~publish_rate 15 Hz does not divide ~rate 40 Hz: publishing every 3 "
+                            "steps, at 13.3333 Hz"),
+            std::string::npos)
+      << run.output;
+}
+
 // ~footprint_frame must be a frame of its own; ~publish_odom_tf a boolean.
 TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
   struct Case {

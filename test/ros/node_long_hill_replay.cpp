@@ -16,6 +16,7 @@
 
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
@@ -58,6 +59,9 @@ struct Reference {
   double rate_peak = 0.0;   // max |body rate| [rad/s]
   double heave_peak = 0.0, pitch_peak = 0.0, wheel_peak = 0.0;
   double vibration_peak = 0.0;  // max |f - f at rest| [m/s^2]
+  // Ground contact (ground_contact.h): per step k, whether a contact that pressed at rest pulls.
+  std::vector<bool> beyond_range;
+  long first_beyond = -1;  // the first such step, -1: none
 };
 
 Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry& geometry,
@@ -139,7 +143,25 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     vibration(0) -= moving ? v : 0.0;
     ref.twist_peak = std::max(ref.twist_peak, vibration.norm());
   };
+  // The contact forces from the full state, F_i = k_i (u_i - q_m(i)) + c_i (u_i' - q_m(i)').
+  const std::vector<dynamics::GroundContact> contacts = dynamics::groundContacts(sys);
+  Vector forces(static_cast<Eigen::Index>(contacts.size()));
+  std::vector<bool> pressed_at_rest;
+  auto recordContacts = [&] {
+    dynamics::contactForces(contacts, sim.state(), sim.input(), n, forces, "offline run");
+    if (pressed_at_rest.empty()) {
+      for (Eigen::Index i = 0; i < forces.size(); ++i)
+        pressed_at_rest.push_back(forces(i) >= 0.0);
+    }
+    bool beyond = false;
+    for (Eigen::Index i = 0; i < forces.size(); ++i)
+      beyond = beyond || (pressed_at_rest[static_cast<std::size_t>(i)] && forces(i) < 0.0);
+    if (beyond && ref.first_beyond < 0)
+      ref.first_beyond = static_cast<long>(ref.beyond_range.size());
+    ref.beyond_range.push_back(beyond);
+  };
   record();
+  recordContacts();
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, lateral_offset);
   Vector w;
   const double h = 1.0 / rate;
@@ -148,13 +170,14 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     road.sample(track, static_cast<double>(k) * v * h, v, w);
     sim.step(w);
     record();
+    recordContacts();
   }
   return ref;
 }
 
 class LongHillReplay : public ::testing::Test {
  protected:
-  LongHillReplay() : private_nh_("~") {
+  LongHillReplay() : private_nh_("~"), diagnostics_(nh_) {
     tf_sub_ = nh_.subscribe("/tf", 10000, &LongHillReplay::onTf, this,
                             ros::TransportHints().tcpNoDelay());
     wheels_sub_ = nh_.subscribe("road_wheels", 10000, &LongHillReplay::onWheels, this,
@@ -200,6 +223,7 @@ class LongHillReplay : public ::testing::Test {
   }
 
   ros::NodeHandle nh_, private_nh_;
+  test::DiagnosticsCache diagnostics_;
   ros::Subscriber tf_sub_, wheels_sub_, imu_sub_, odom_sub_;
   std::string imu_point_;
   std::map<ros::Time, NodeSample> samples_;
@@ -314,6 +338,36 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   // At rest before the hill the accelerometer reads gravity (static attitude: about +g0 up).
   EXPECT_NEAR(ref.specific_force.front().z(), kStandardGravity, 1e-3);
   EXPECT_NEAR(node_heave_peak, heave_peak_expected, heave_peak_tolerance);
+
+  // Ground contact: the offline run pulls on a contact pressed at rest from the hill's foot on
+  // (README, Ground contact); the node, checking every few steps (~ground_contact_rate), reports
+  // its first such check: at or after the offline first step, at a step where the offline run
+  // pulls too.
+  ASSERT_GE(ref.first_beyond, 0) << "the offline run stays in range";
+  const double offline_first = static_cast<double>(ref.first_beyond) * vh;
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.value(": ground contact", "first beyond the range: station [m]") > 0.0;
+      },
+      5.0))
+      << diagnostics_.describe();
+  const double node_first =
+      diagnostics_.value(": ground contact", "first beyond the range: station [m]");
+  std::printf(
+      "ground contact: first pull (pressed at rest) offline at %.4f m, node's first check at %.4f "
+      "m\n",
+      offline_first, node_first);
+  const long node_step = std::lround(node_first / vh);
+  EXPECT_GE(node_step, ref.first_beyond);
+  ASSERT_LT(node_step, static_cast<long>(ref.beyond_range.size()));
+  EXPECT_TRUE(ref.beyond_range[static_cast<std::size_t>(node_step)])
+      << "node reports a pull at step " << node_step;
+  // Checked every 20 steps at the default 50 Hz (0.17 m at 30 km/h): the node cannot lag by many
+  // checks.
+  EXPECT_LE(node_first - offline_first, 0.5);
+  EXPECT_GT(diagnostics_.value(": ground contact",
+                               "checks beyond the range (since the last start or reset)"),
+            0.0);
 }
 
 }  // namespace

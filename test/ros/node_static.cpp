@@ -298,6 +298,20 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   EXPECT_TRUE(diagnostics_.has(": terrain"));
   EXPECT_TRUE(diagnostics_.has(": speed"));
   EXPECT_GT(diagnostics_.value(": model", "reduced DOFs"), 0.0);
+  // At rest the contacts carry the vehicle, symmetric left and right, and none pressed at rest
+  // pulls: the ground-contact check reports the model in range.
+  ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": ground contact"); }, 5.0));
+  EXPECT_EQ(diagnostics_.level(": ground contact"), 0) << diagnostics_.describe();
+  EXPECT_GT(diagnostics_.value(": ground contact", "contacts"), 0.0);
+  EXPECT_EQ(diagnostics_.value(": ground contact", "pulling now"), 0.0);
+  EXPECT_EQ(diagnostics_.value(": ground contact",
+                               "checks beyond the range (since the last start or reset)"),
+            0.0);
+  EXPECT_GT(diagnostics_.value(": ground contact", "checks (since last report)"), 0.0);
+  const double left = diagnostics_.value(": ground contact", "ground force left now [N]");
+  const double right = diagnostics_.value(": ground contact", "ground force right now [N]");
+  EXPECT_GT(left, 0.0);
+  EXPECT_NEAR(left, right, 1e-6 * left);
 }
 
 }  // namespace

@@ -542,7 +542,6 @@ TEST(OnlineVehicle, BrakingPaperVehicleSettlesToTheReducedModelsStaticPitch) {
   EXPECT_NEAR(vehicle.pointAcceleration(0).x(), -kBraking, 1e-2 * kBraking);
 }
 
-#if defined(__GLIBC__)  // the allocation counter hooks glibc's malloc
 TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
   // A crew seat that also follows the front wheel by 0.3 of its travel (a seat on a flexible
   // mount, say): its acceleration is the hull's exact rigid motion plus 0.3 of the wheel's.
@@ -571,6 +570,74 @@ TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
   EXPECT_LE(worst, 1e-9 * peak);
 }
 
+TEST(OnlineVehicle, GroundContactWatchSeesTheTyresLeaveTheRoad) {
+  // The toy's tyres are its ground contacts: F_i = k_t (u_i - z_i) + c_t (u_i' - z_i'). At rest
+  // they carry the weight; driven at 15 m/s over the 0.1 m bump (0.13 s long, near the wheels'
+  // 10.8 Hz hop) a wheel leaves the road, which the watch must see at the step where the forces,
+  // recomputed here from the simulator's state, first pull.
+  using T = test::ToyVehicle;
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  dynamics::GroundContactWatch* watch = vehicle.groundContactWatch();
+  ASSERT_NE(watch, nullptr) << vehicle.groundContactUnavailable();
+  ASSERT_EQ(watch->contactCount(), 2);
+  EXPECT_EQ(watch->pullingAtRest(), 0);
+  const double weight = (T::kHullMass + 2.0 * T::kWheelMass) * kStandardGravity;
+  EXPECT_NEAR(watch->forces().sum(), weight, 1e-9 * weight);
+  EXPECT_NEAR(watch->forces()(0), watch->forces()(1), 1e-9 * weight);  // CoG midway
+
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  vehicle.setSpeed(15.0);
+  double first_pull = NAN, first_station = NAN, min_force = INFINITY;
+  long pulls = 0;
+  for (int k = 0; k < 600; ++k) {
+    vehicle.step();
+    vehicle.checkGroundContact();
+    const Vector z = vehicle.simulator().state();
+    const Vector& w = vehicle.simulator().input();
+    for (int i = 0; i < 2; ++i) {
+      const double f = T::kTyre * (w(i) - z(2 + i)) + T::kTyreDamping * (w(2 + i) - z(4 + 2 + i));
+      ASSERT_NEAR(watch->forces()(i), f, 1e-9 * weight) << k;
+      min_force = std::min(min_force, f);
+    }
+    const int pulling = (watch->forces().array() < 0.0).count();
+    EXPECT_EQ(watch->now().pulling, pulling);
+    pulls += pulling > 0;
+    if (pulling > 0 && std::isnan(first_pull)) {
+      first_pull = vehicle.time();
+      first_station = vehicle.station();
+    }
+  }
+  ASSERT_GT(pulls, 0) << "the bump should lift a wheel (min force " << min_force << " N)";
+  const dynamics::GroundContactRecord& run = watch->sinceRestart();
+  EXPECT_EQ(run.checks, 600);
+  EXPECT_EQ(run.checks_beyond, pulls);
+  EXPECT_DOUBLE_EQ(run.first_beyond_time, first_pull);
+  EXPECT_DOUBLE_EQ(run.first_beyond_station, first_station);
+  EXPECT_DOUBLE_EQ(run.min_force, min_force);
+  EXPECT_EQ(watch->takeInterval().checks_beyond, pulls);
+
+  // A reset restarts the record from the new rest.
+  vehicle.reset();
+  EXPECT_EQ(watch->sinceRestart().checks, 0);
+  EXPECT_FALSE(watch->sinceRestart().beyondRange());
+  EXPECT_NEAR(watch->forces().sum(), weight, 1e-9 * weight);
+}
+
+TEST(OnlineVehicle, GroundContactWatchSaysWhyAModelCannotBeChecked) {
+  // A road input that acts on two coordinates is no ground spring: the vehicle runs unchecked.
+  reduction::ReducedModel model = test::toyModel();
+  model.system.input_stiffness(0, 0) = 1.0;
+  model.system.stiffness(0, 0) += 1.0;
+  OnlineVehicle vehicle(model, test::toyGeometry());
+  EXPECT_EQ(vehicle.groundContactWatch(), nullptr);
+  EXPECT_NE(vehicle.groundContactUnavailable().find("road input 0"), std::string::npos)
+      << vehicle.groundContactUnavailable();
+  vehicle.checkGroundContact();  // nothing to do
+}
+
+#if defined(__GLIBC__)  // the allocation counter hooks glibc's malloc
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
                       dynamics::DiscretizationMethod::AugmentedExponential})

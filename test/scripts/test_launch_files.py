@@ -75,6 +75,15 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertNotIn("cache_dir", p)  # the node's own default
         self.assertEqual(p["comfort_point"], "crew_seat")
         self.assertNotIn("points", p)  # the node's default: every named point
+        # Derived rates: the node's defaults, capped at ~rate (a slow ~rate must not trip on them).
+        self.assertNotIn("comfort_rate", p)
+        self.assertNotIn("ground_contact_rate", p)
+
+    def test_speed_timeout_argument(self):
+        self.assertEqual(params("vehicle_dynamics.launch")["speed_timeout"], 0.0)  # the file's
+        p = params("vehicle_dynamics.launch", "speed_timeout:=0.5")
+        self.assertEqual(p["speed_timeout"], 0.5)
+        self.assertIsInstance(p["speed_timeout"], float)
 
     def test_an_edited_parameter_file_is_not_overridden_by_argument_defaults(self):
         p = params("vehicle_dynamics.launch", f"config:={self.config}")
@@ -139,6 +148,13 @@ class LaunchFilesTest(unittest.TestCase):
                          ["/imu/sensor_mount", "/imu/crew_seat"])
         self.assertEqual(recorder[recorder.index("-O") + 1].rsplit("/", 1)[-1],
                          "long_hill_30kmh_output.bag")
+        # A terrain or speed-profile file is named by its stem (a path would name a directory).
+        for args, name in ((["track:=/tmp/road_c.csv"], "road_c_30kmh_output.bag"),
+                           (["speed_kmh:=/tmp/profiles/braking.csv"], "long_hill_braking_output.bag"),
+                           (["track:=half_round:0.2", "speed_kmh:=12.5"], "half_round:0.2_12.5kmh_output.bag")):
+            recorder = shlex.split(roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch",
+                                             "bag_dir:=/tmp/bags", *args))
+            self.assertEqual(recorder[recorder.index("-O") + 1], "/tmp/bags/" + name, args)
 
     def test_footprint_frame_and_publish_odom_tf(self):
         p = params("vehicle_dynamics.launch")

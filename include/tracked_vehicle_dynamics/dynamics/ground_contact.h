@@ -58,5 +58,13 @@ struct GroundContact {
 std::vector<GroundContact> groundContacts(const SecondOrderSystem& system,
                                           DofIndex road_inputs = -1);
 
+/// F_i = k_i (u_i - q_m(i)) + c_i (u_i' - q_m(i)') of every contact into `forces` [n_contacts]
+/// [N], for a state z = [q; q'] [2n] and input w = [u; u'] [2 input_count] (u_i at w(i), u_i'
+/// at w(input_count + i)). No allocation. Throws InputError, naming `where`, when z or w is too
+/// short for a contact or `forces` has the wrong length.
+void contactForces(const std::vector<GroundContact>& contacts,
+                   const Eigen::Ref<const Vector>& state, const Eigen::Ref<const Vector>& input,
+                   DofIndex input_count, Eigen::Ref<Vector> forces, const char* where);
+
 }  // namespace dynamics
 }  // namespace tracked_vehicle_dynamics

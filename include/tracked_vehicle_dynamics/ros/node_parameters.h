@@ -45,6 +45,9 @@ struct NodeParameters {
   std::string reduced_model;
   double publish_rate = 0.0;                             ///< ~publish_rate [Hz], default ~rate
   double comfort_rate = 10.0;                            ///< ~comfort_rate [Hz]
+  /// ~ground_contact_rate [Hz]: how often the contact forces are checked for a pull (the bonded
+  /// model beyond its range, OnlineVehicle::checkGroundContact); 0: never.
+  double ground_contact_rate = 50.0;
   double max_speed = 30.0;          ///< ~max_speed [m/s]; faster speed messages are rejected
   /// ~speed_timeout [s] of ROS time without a valid speed message after which the vehicle stops
   /// where it is (a driver that died must not leave it driving on); 0: never.
@@ -69,6 +72,9 @@ struct NodeParameters {
   MeasurementVariances variances;  ///< ~variance/*
   /// ~diagnostic_period [s]; diagnostic_updater reads the key itself, the node validates it.
   double diagnostic_period = 1.0;
+  /// Private parameters set but not read by the node (misspelt or unknown), each as "~key"
+  /// with the nearest known one when close: the node warns about them at start-up.
+  std::vector<std::string> unknown_parameters;
 };
 
 /// $ROS_HOME/tracked_vehicle_dynamics, or $HOME/.ros/tracked_vehicle_dynamics.

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact_watch.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
@@ -178,6 +179,23 @@ class OnlineVehicle {
   /// Largest |vertical acceleration| at the comfort point since reset [m/s^2].
   double peakAcceleration() const { return peak_acceleration_; }
 
+  /// The ground-contact check (dynamics/ground_contact_watch.h): whether the bonded model pulls
+  /// on a contact that pressed at rest. Restarted with the vehicle (reset, resetTo, and the reset
+  /// after non-finite outputs) from the equilibrium it restarts in. Null when the model's road
+  /// inputs are not ground springs on master coordinates (groundContactUnavailable() says why).
+  const dynamics::GroundContactWatch* groundContactWatch() const {
+    return contact_watch_ ? &*contact_watch_ : nullptr;
+  }
+  /// The same, for its reader's interval (GroundContactWatch::takeInterval).
+  dynamics::GroundContactWatch* groundContactWatch() {
+    return contact_watch_ ? &*contact_watch_ : nullptr;
+  }
+  const std::string& groundContactUnavailable() const { return contact_watch_reason_; }
+  /// One check of the contact forces at the current sample: O(n^2) for the modal simulator (it
+  /// recovers q = Phi eta) and one allocation, so a few per hundred steps, not one per step.
+  /// Does nothing without a watch.
+  void checkGroundContact();
+
   const VehicleGeometry& geometry() const { return geometry_; }
   const terrain::TerrainBuffer& terrain() const { return terrain_; }
   const RoadInputSampler& sampler() const { return sampler_; }
@@ -197,6 +215,8 @@ class OnlineVehicle {
   int sampleInput();
   /// Whether the last three point_rows_ (a point at `point`) are the hull's rigid motion in H.
   bool movesWithHull(const Matrix& output, const Vector3& point) const;
+  /// After every simulator_.reset(): the contact watch's state at rest.
+  void restartContactWatch();
 
   VehicleGeometry geometry_;
   OnlineVehicleOptions options_;
@@ -230,6 +250,8 @@ class OnlineVehicle {
   double commanded_speed_ = 0.0;
   double travel_acceleration_ = 0.0;
   double peak_acceleration_ = 0.0;
+  std::optional<dynamics::GroundContactWatch> contact_watch_;
+  std::string contact_watch_reason_;
 };
 
 }  // namespace ros_layer

@@ -154,6 +154,7 @@ class VehicleDynamicsNode {
   void diagnoseTerrain(diagnostic_updater::DiagnosticStatusWrapper& status);
   void diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status);
   void diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status);
+  void diagnoseGroundContact(diagnostic_updater::DiagnosticStatusWrapper& status);
 
   ros::NodeHandle nh_, private_nh_;
   NodeParameters params_;
@@ -213,6 +214,7 @@ class VehicleDynamicsNode {
   std::int64_t step_ns_ = 0;
   std::int64_t max_catch_up_steps_ = 1;
   std::int64_t publish_every_ = 1, comfort_every_ = 100;
+  std::int64_t contact_every_ = 0;  // steps between ground-contact checks; 0: none
   std::int64_t steps_since_start_ = 0;
 
   Events events_;
