@@ -80,12 +80,14 @@ else
 fi
 bag="$dir/$run.bag"
 mkdir -p "$dir"
+# The devel/install space's executable (rosrun may see several build trees in the source).
+make_bag=$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics tvd_make_bag \
+  2>/dev/null | head -n 1)
+# A bag older than its terrain or profile file, or than tvd_make_bag itself (a rebuilt track
+# definition or patch layout), is written again.
 stale() { [ -f "$1" ] && [ "$1" -nt "$bag" ]; }
-if [ ! -s "$bag" ] || stale "$track" || stale "$speed"; then
+if [ ! -s "$bag" ] || stale "$track" || stale "$speed" || stale "$make_bag"; then
   tmp="$dir/.$run.$$.bag"
-  # The devel/install space's executable (rosrun may see several build trees in the source).
-  make_bag=$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics tvd_make_bag \
-    2>/dev/null | head -n 1)
   if [ -z "$make_bag" ] || [ ! -x "$make_bag" ]; then
     echo "play_track_bag.sh: tvd_make_bag not found (build the package and source its setup.bash)" >&2
     exit 2

@@ -42,7 +42,7 @@ std::pair<double, double> slewRates(const OnlineVehicleOptions& options) {
   for (const auto& [name, value] : {std::pair<const char*, double>{"max_acceleration", options.max_acceleration},
                                     std::pair<const char*, double>{"max_deceleration", options.max_deceleration}})
     if (!std::isfinite(value) || value < 0.0)
-      throw InputError(std::string("online vehicle: ") + name + " " + std::to_string(value) +
+      throw InputError(std::string("online vehicle: ") + name + " " + brief(value) +
                        " m/s^2 must be finite and not negative");
   const double a = options.max_acceleration > 0.0 ? options.max_acceleration : options.max_deceleration;
   const double d = options.max_deceleration > 0.0 ? options.max_deceleration : options.max_acceleration;
@@ -64,7 +64,7 @@ dynamics::SecondOrderSystem simulatedSystem(const reduction::ReducedModel& model
 dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model,
                                             const OnlineVehicleOptions& options) {
   if (!std::isfinite(options.rate) || options.rate <= 0.0) {
-    throw InputError("online vehicle: rate " + std::to_string(options.rate) +
+    throw InputError("online vehicle: rate " + brief(options.rate) +
                      " Hz must be positive and finite");
   }
   dynamics::SimulatorOptions sim;
@@ -173,8 +173,7 @@ void OnlineVehicle::reset() {
 
 int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
   if (!std::isfinite(station)) {
-    throw InputError("online vehicle: reset station " + std::to_string(station) +
-                     " m is not finite");
+    throw InputError("online vehicle: reset station " + brief(station) + " m is not finite");
   }
   setSpeed(speed);  // validates first: a bad speed throws before anything changes
   speed_ = speed;   // at once, also with a slew: the vehicle restarts at rest relative to it
@@ -215,7 +214,7 @@ void OnlineVehicle::addTerrain(const TerrainPatch& patch) {
 
 void OnlineVehicle::setSpeed(double speed) {
   if (!std::isfinite(speed) || speed < 0.0) {
-    throw InputError("online vehicle: speed " + std::to_string(speed) +
+    throw InputError("online vehicle: speed " + brief(speed) +
                      " m/s must be finite and not negative");
   }
   commanded_speed_ = speed;

@@ -23,6 +23,20 @@ namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 namespace {
 
+// A reduction key (reduction::reductionKey: every double to the last bit, for the cache) as a
+// reader wants it: 0.7, not 0.69999999999999996.
+std::string readableReduction(const std::string& key) {
+  vehicle::Variant variant{};
+  reduction::VehicleReductionOptions o;
+  if (!reduction::parseReductionKey(key, &variant, &o))
+    return key;
+  return std::string("variant ") + vehicle::variantName(variant) + "; rule " +
+         reduction::modeRuleName(o.rule) + "; global_modes " + std::to_string(o.global_modes) +
+         "; band_hz " + brief(o.band_hz) + "; mac_threshold " + brief(o.mac_threshold) +
+         "; mogesec_masters " + std::to_string(o.mogesec_masters) + "; modes " +
+         std::to_string(o.mode_count);
+}
+
 using Clock = std::chrono::steady_clock;
 
 // Throttle period of repeated warnings [s].
@@ -181,8 +195,13 @@ void VehicleDynamicsNode::loadVehicle() {
             ? reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,
                                              params_.reduction_options, &report_)
             : loadGivenModel(description);
+    // The model's load (or build) and the discretisation's set-up are timed apart: ~method
+    // exact spends seconds in the augmented exponential, which is not the cache's doing.
+    load_seconds_ = secondsSince(start);
+    const auto setup_start = Clock::now();
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
                                                params_.vehicle_options);
+    setup_seconds_ = secondsSince(setup_start);
     model_dofs_ = model.size();
     model_inputs_ = model.system.inputCount();
     model_outputs_ = model.system.outputCount();
@@ -190,7 +209,9 @@ void VehicleDynamicsNode::loadVehicle() {
   } catch (const Error& e) {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }
-  load_seconds_ = secondsSince(start);
+  ROS_INFO("vehicle_dynamics_node: %s discretisation at %g Hz set up in %.3f s",
+           methodName(params_.vehicle_options.method), params_.vehicle_options.rate,
+           setup_seconds_);
   if (!params_.reduced_model.empty()) {
     cached_ = true;  // nothing to cache: the file is the model
     ROS_INFO(
@@ -199,7 +220,7 @@ void VehicleDynamicsNode::loadVehicle() {
         vehicle::variantName(params_.variant), params_.vehicle.c_str(),
         params_.reduced_model.c_str(), load_seconds_, static_cast<long>(model_dofs_),
         static_cast<long>(model_inputs_), static_cast<long>(model_outputs_),
-        given_reduction_.c_str());
+        readableReduction(given_reduction_).c_str());
     return;
   }
   // loadOrReduceVehicle() still builds when the cache cannot be written, and says why.
@@ -254,14 +275,17 @@ reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
   // asked for; they are reported when the file was reduced otherwise.
   const std::string asked = reduction::reductionKey(variant, params_.reduction_options);
   if (asked != model.reduction && asked != reduction::reductionKey(variant, {}))
-    ROS_WARN("vehicle_dynamics_node: %s: ~reduction/* ('%s') differ from the reduction of %s "
-             "('%s'); the file's model runs and ~reduction/* are not used",
-             param.c_str(), asked.c_str(), file.c_str(), model.reduction.c_str());
+    ROS_WARN(
+        "vehicle_dynamics_node: %s: ~reduction/* ('%s') differ from the reduction of %s "
+        "('%s'); the file's model runs and ~reduction/* are not used",
+        param.c_str(), readableReduction(asked).c_str(), file.c_str(),
+        readableReduction(model.reduction).c_str());
   given_reduction_ = model.reduction;
   report_ = {};
   report_.from_cache = true;  // loaded, not built: what the diagnostics report of a cache hit
   report_.cache_file = file;
-  report_.cache_note = "~reduced_model " + file + " (reduction " + model.reduction + ")";
+  report_.cache_note =
+      "~reduced_model " + file + " (reduction " + readableReduction(model.reduction) + ")";
   report_.full_dofs = model.full_dof_count;
   report_.reduced_dofs = model.size();
   report_.flexible_modes = static_cast<int>(model.modeCount());
@@ -359,7 +383,12 @@ void VehicleDynamicsNode::setUpFrames() {
       toMsg(pose, &fixed[k].transform);
     }
     static_broadcaster_ = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
-    static_broadcaster_->sendTransform(fixed);
+    // On simulated time before the first /clock, ROS time is 0: they go out with the first
+    // sample instead, stamped with its time (advanceTo), as everything else the node publishes.
+    if (now.isZero())
+      pending_static_ = std::move(fixed);
+    else
+      static_broadcaster_->sendTransform(fixed);
   }
   // The hull's transforms first: odom -> base_link, or odom -> footprint -> base_link, less the
   // one from odom when another source owns it (~publish_odom_tf false). publishState() fills
@@ -410,6 +439,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     const TerrainPatch patch = fromMsg(*msg);
     vehicle_->addTerrain(patch);
+    flat_since_restart_ = false;
     ++events_.patches_accepted;
     // Contacts beyond a patch's outer lines take the edge line's heights (terrain.h); a patch
     // narrower than the vehicle is more often a unit or frame mistake than a choice.
@@ -443,10 +473,9 @@ std::string VehicleDynamicsNode::speedProblem(double v) const {
   if (!std::isfinite(v))
     return "speed is not finite";
   if (v < 0.0)
-    return "negative speed " + std::to_string(v) + " m/s (reverse driving is not modelled)";
+    return "negative speed " + brief(v) + " m/s (reverse driving is not modelled)";
   if (v > params_.max_speed) {
-    return "speed " + std::to_string(v) + " m/s above ~max_speed " +
-           std::to_string(params_.max_speed) + " m/s";
+    return "speed " + brief(v) + " m/s above ~max_speed " + brief(params_.max_speed) + " m/s";
   }
   return "";
 }
@@ -485,7 +514,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   // Checked here, before anything changes: the node's ~max_speed applies as to `speed`.
   std::string why;
   if (!std::isfinite(request.station))
-    why = "station " + std::to_string(request.station) + " m is not finite";
+    why = "station " + brief(request.station) + " m is not finite";
   else
     why = speedProblem(request.speed);
   if (!why.empty()) {
@@ -528,6 +557,9 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
 
 int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terrain) {
   const int uncovered = vehicle_->resetTo(station, speed, terrain);
+  // Cleared terrain means flat ground (u = 0) until a patch arrives, wherever the restart is.
+  if (terrain == ResetTerrain::Clear)
+    flat_since_restart_ = true;
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   ++events_.resets;
   return uncovered;
@@ -580,6 +612,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
       continue;
     try {
       vehicle_->addTerrain(fromMsg(*recent.msg));
+      flat_since_restart_ = false;
       ++events_.patches_reapplied;
     } catch (const std::exception& e) {  // accepted once, so not expected
       ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: terrain patch rejected: %s",
@@ -674,6 +707,12 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   if (!clock_started_) {
     clock_started_ = true;
     sample_time_ = now;
+    if (!pending_static_.empty()) {
+      for (auto& t : pending_static_)
+        t.header.stamp = now;
+      static_broadcaster_->sendTransform(pending_static_);
+      pending_static_.clear();
+    }
     publishState();
     return;
   }
@@ -928,8 +967,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
   if (buffer.empty()) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   vehicle_->station() == 0.0 ? "no terrain yet: flat ground at the start"
-                                              : "no terrain: holding the last heights");
+                   flat_since_restart_ ? "no terrain yet: flat ground since the start or reset"
+                                       : "no terrain: holding the last heights");
   } else if (uncovered > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "terrain underrun: contacts off the terrain held at their last height");
@@ -953,6 +992,9 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("covered from [m]", buffer.coveredFrom());
   status.add("covered until [m]", buffer.coveredUntil());
   status.add("coverage ahead of the front contact [m]", ahead);
+  // What a terrain source must cover now: from the rearmost contact to the frontmost one.
+  status.add("rearmost contact [m]", vehicle_->rearContactStation());
+  status.add("frontmost contact [m]", vehicle_->frontContactStation());
 }
 
 void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status) {
@@ -1006,6 +1048,7 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
   status.add("cached", cached_);
   status.add("cache note", report_.cache_note);
   status.add("load time [s]", load_seconds_);
+  status.add("discretisation set-up time [s]", setup_seconds_);
   status.add("comfort point", vehicle_->comfortPoint());
 }
 

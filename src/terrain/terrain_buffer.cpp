@@ -38,6 +38,16 @@ void TerrainBuffer::addPatch(double start_station, double spacing, const Vector&
                      " lateral positions");
   }
   if (heights.cols() == 0) throw InputError(where + "no samples");
+  // The stations start + k spacing must stay finite and distinct in double precision: a spacing
+  // of 1e308, or of 1e-300 at 1e6 m, passes the checks above and breaks the grid.
+  const double last_station = start_station + spacing * static_cast<double>(heights.cols() - 1);
+  if (!std::isfinite(last_station) || !(start_station + spacing > start_station) ||
+      !(last_station - spacing < last_station)) {
+    throw InputError(where + "spacing " + format(spacing) + " m over " +
+                     std::to_string(heights.cols()) +
+                     " samples gives stations that are not finite and distinct (last " +
+                     format(last_station) + " m): too large or too small for the start station");
+  }
   for (Eigen::Index j = 0; j < lateral.size(); ++j) {
     if (!std::isfinite(lateral(j))) {
       throw InputError(where + "lateral position " + std::to_string(j) + " is not finite");

@@ -835,6 +835,11 @@ TEST(TerrainBuffer, RejectsBadPatches) {
                    {"lateral position 1", "not greater"});
   expectInputError([&] { buffer.addPatch(std::nan(""), 0.1, y, Matrix::Zero(2, 5)); },
                    {"start station is not finite"});
+  // Spacings that pass as positive and finite but break the grid: named as the spacing.
+  expectInputError([&] { buffer.addPatch(3.0, 1e308, y, Matrix::Zero(2, 5)); },
+                   {"spacing 1e+308 m over 5 samples", "not finite and distinct"});
+  expectInputError([&] { buffer.addPatch(1e6, 1e-300, y, Matrix::Zero(2, 5)); },
+                   {"spacing 1e-300 m", "too large or too small for the start station"});
   EXPECT_TRUE(buffer.empty());
 }
 

@@ -32,9 +32,18 @@ class NodeSimTime : public ::testing::Test {
         nh_.subscribe("/tf", 10000, &NodeSimTime::onTf, this, ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10, true);
+    tf_static_sub_ = nh_.subscribe<tf2_msgs::TFMessage>(
+        "/tf_static", 10,
+        [this](const tf2_msgs::TFMessage::ConstPtr& msg) {
+          for (const auto& t : msg->transforms)
+            static_stamps_.push_back(t.header.stamp);
+        },
+        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
   }
 
   void onWheels(const RoadWheels::ConstPtr& msg) {
+    if (messages_ == 0)
+      first_stamp_ = msg->header.stamp;
     if (messages_ > 0 && msg->header.stamp == last_.header.stamp)
       ++repeated_wheel_stamps_;
     last_ = *msg;
@@ -67,8 +76,10 @@ class NodeSimTime : public ::testing::Test {
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
   ros::Publisher clock_pub_, terrain_pub_, speed_pub_;
-  ros::Subscriber wheels_sub_, tf_sub_;
+  ros::Subscriber wheels_sub_, tf_sub_, tf_static_sub_;
   RoadWheels last_;
+  ros::Time first_stamp_;                 // of the node's first sample
+  std::vector<ros::Time> static_stamps_;  // of the /tf_static transforms received
   std::size_t messages_ = 0, non_finite_ = 0;
   ros::Time last_tf_stamp_;
   std::size_t tf_messages_ = 0, repeated_wheel_stamps_ = 0, repeated_tf_stamps_ = 0;
@@ -103,6 +114,12 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   ros::Time t(100.0);
   ASSERT_TRUE(test::tickClockUntil(clock_pub_, &t, [&] { return messages_ > 0; }, 45.0))
       << "the node published nothing";
+  // The named points' static frames come with the first sample, stamped with its time (not 0:
+  // ROS time before the first /clock).
+  ASSERT_TRUE(test::spinUntil([&] { return !static_stamps_.empty(); }, 5.0))
+      << "nothing on /tf_static";
+  for (const ros::Time& stamp : static_stamps_)
+    EXPECT_EQ(stamp, first_stamp_);
   ASSERT_TRUE(advanceTo(t + ros::Duration(0.001)));
   t = last_.header.stamp;
   const ros::Time t0 = t;

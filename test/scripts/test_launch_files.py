@@ -125,6 +125,12 @@ class LaunchFilesTest(unittest.TestCase):
         p = params("replay_track.launch")
         self.assertEqual(p["comfort_point"], "crew_seat")
         self.assertNotIn("points", p)
+        # A shipped reduced model, the frames of a multi-vehicle stack and the driver timeout.
+        p = params("replay_track.launch", "reduced_model:=/tmp/m.mat", "frame_prefix:=veh1/",
+                   "footprint_frame:=base_footprint", "publish_odom_tf:=false", "speed_timeout:=0.5")
+        self.assertEqual((p["reduced_model"], p["frame_prefix"], p["footprint_frame"],
+                          p["publish_odom_tf"], p["speed_timeout"]),
+                         ("/tmp/m.mat", "veh1/", "base_footprint", False, 0.5))
 
     def test_parameters_of_an_earlier_launch_are_cleared(self):
         # Without clear_params a parameter the launch does not set (reduced_model, cache_dir,

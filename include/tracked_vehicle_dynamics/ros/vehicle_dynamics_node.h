@@ -164,6 +164,7 @@ class VehicleDynamicsNode {
   std::unique_ptr<OnlineVehicle> vehicle_;
   reduction::VehicleReductionReport report_;
   double load_seconds_ = 0.0;
+  double setup_seconds_ = 0.0;   // OnlineVehicle's construction (the discretisation) [s]
   std::string given_reduction_;  ///< the reduction key of ~reduced_model's file, when given
   DofIndex model_dofs_ = 0, model_inputs_ = 0, model_outputs_ = 0;
   std::string model_damping_;
@@ -195,6 +196,8 @@ class VehicleDynamicsNode {
   std::vector<std::unique_ptr<CountedPublisher>> imu_pubs_;  // one per imu_points_ entry
   ros::ServiceServer reset_service_, reset_to_service_;
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
+  std::vector<geometry_msgs::TransformStamped> pending_static_;  // until the first /clock
+  bool flat_since_restart_ = true;  // no patch since the start or a reset that cleared the terrain
   diagnostic_updater::Updater updater_;
 
   // Messages reused every publication.
