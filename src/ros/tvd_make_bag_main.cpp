@@ -3,6 +3,7 @@
 // [+ /clock]); see ros/track_bag.h.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -47,6 +48,12 @@ int main(int argc, char** argv) {
   app.add_option("--start-time", options.start_time, "bag time of the start [s]")
       ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  // Checked in the unit given (writeTrackBag would say "> 0 m/s" of a km/h argument).
+  if (profile_file.empty() && !(std::isfinite(speed_kmh) && speed_kmh > 0.0)) {
+    std::fprintf(stderr, "tvd_make_bag: --speed-kmh %s must be > 0 km/h\n",
+                 tracked_vehicle_dynamics::brief(speed_kmh).c_str());
+    return 2;
+  }
   options.speed = speed_kmh / 3.6;
   if (offset->count() > 0)
     options.lateral_offset = lateral_offset;
@@ -54,8 +61,9 @@ int main(int argc, char** argv) {
     if (!profile_file.empty()) options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
     ros::Time::init();
     const rl::TrackBagSummary s = rl::writeTrackBag(out, options);
-    const std::string how = profile_file.empty() ? "at " + std::to_string(speed_kmh) + " km/h"
-                                                 : "with the speed profile " + profile_file;
+    const std::string how = profile_file.empty()
+                                ? "at " + tracked_vehicle_dynamics::brief(speed_kmh) + " km/h"
+                                : "with the speed profile " + profile_file;
     std::printf("%s: %s %s, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, %zu clock messages\n",
                 out.c_str(), options.track.c_str(), how.c_str(), s.duration, s.patches, s.covered_from,
                 s.covered_until, s.speed_messages, s.clock_messages);
