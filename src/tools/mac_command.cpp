@@ -62,6 +62,7 @@ void run(const MacOptions& opt) {
 
   if (!opt.out_dir.empty()) {
     makeOutputDirectory(opt.out_dir);
+    OutputFileSet written;  // a failed mac.csv takes mac.mat with it
     io::MatWriter mat(opt.out_dir + "/mac.mat");
     mat.writeMatrix("mac", mac);
     mat.writeMatrix("eigenspace_mac", space_mac);
@@ -74,6 +75,7 @@ void run(const MacOptions& opt) {
     mat.writeStrings("tracked_mode_types", tv_types);
     mat.writeScalar("threshold", opt.threshold);
     mat.close();
+    written.add(mat.path());
     // One row per un-tracked mode, then one column per tracked mode, named by its number.
     std::vector<std::string> headers = {"untracked_mode"};
     Matrix table(mac.rows(), mac.cols() + 1);
@@ -81,6 +83,7 @@ void run(const MacOptions& opt) {
     table.rightCols(mac.cols()) = mac;
     for (int j = 0; j < mac.cols(); ++j) headers.push_back(std::to_string(j + 1));
     writeTable(opt.out_dir + "/mac.csv", headers, table, 6);
+    written.keep();
   }
 
   if (opt.json) {

@@ -1746,6 +1746,57 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["modes", "--model", model], "no_mass.yaml", "node 1 uz",
                                 "no mass or inertia")
 
+    # --- acceptance findings (findings.md #2-#12) ---
+
+    def run_limited(self, args, max_bytes):
+        """tvd with a file-size limit of `max_bytes` (a full disk: writes past it fail with EFBIG,
+        SIGXFSZ ignored)."""
+        import resource
+        import signal
+
+        def limit():
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (max_bytes, max_bytes))
+        return subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240,
+                              preexec_fn=limit)
+
+    def test_output_files_are_written_whole_or_not_at_all(self):
+        """#2: a CSV through a symlink to /dev/full is replaced by the whole file (as a .mat);
+        a write that fails exits non-zero naming the file and leaves none of the command's
+        files, nor a temporary one."""
+        model = os.path.join(ROOT, "config", "models", "cantilever_beam.yaml")
+        d = self.path("full_disk")
+        os.makedirs(d)
+        for name in ("modes.csv", "shapes.csv"):
+            os.symlink("/dev/full", os.path.join(d, name))
+        self.tvd("modes", "--model", model, "--out", d)
+        for name in ("modes.csv", "shapes.csv"):
+            path = os.path.join(d, name)
+            self.assertFalse(os.path.islink(path))
+            with open(path) as f:
+                self.assertGreater(len(f.read().splitlines()), 1, name)
+        # modes.csv (< 2 kB) fits under the limit, shapes.csv does not.
+        d = self.path("limited")
+        os.makedirs(d)
+        r = self.run_limited(["modes", "--model", model, "--out", d], 2000)
+        self.assertEqual(r.returncode, INPUT_ERROR_STATUS, r.stderr)
+        self.assertIn("shapes.csv", r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        self.assertEqual(os.listdir(d), [])
+        # mac --out: mac.mat is written first; when mac.csv cannot be, mac.mat goes too.
+        d = self.path("mac_fails")
+        os.makedirs(os.path.join(d, "mac.csv"))  # a directory: the rename onto it fails
+        r = self.tvd("mac", "--vehicle", VEHICLE, "--out", d, status=INPUT_ERROR_STATUS)
+        self.assertIn("mac.csv", r.stderr)
+        self.assertEqual(os.listdir(d), ["mac.csv"])
+        # writeTable's CSV (simulate --out): nothing under the name when it fails.
+        out = self.path("limited_sim.csv")
+        r = self.run_limited(["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                              "long_hill", "--cache-dir", self.cache, "--out", out], 1 << 20)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("limited_sim.csv", r.stderr)
+        self.assertEqual([f for f in os.listdir(self.work) if f.startswith("limited_sim")], [])
+
 
 if __name__ == "__main__":
     sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__,
