@@ -1,5 +1,6 @@
 #include "reduction_options.h"
 
+#include <iostream>
 #include <sstream>
 
 #include "commands.h"
@@ -134,8 +135,20 @@ ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& descrip
       description, variant, flags.cacheDir().empty() ? defaultCacheDir() : flags.cacheDir(),
       s.options, &report);
   s.kind = report.from_cache ? ReducedModelSource::Kind::Cache : ReducedModelSource::Kind::Computed;
-  if (report.cache_error.empty())
+  s.warnings = report.warnings;
+  // A cache that cannot be written (a --cache-dir that is a file, a read-only directory) costs
+  // the whole reduction on every run: said once, with the reason.
+  if (!report.cache_error.empty())
+    s.warnings.push_back("the reduced-model cache is not used (every run reduces again): " +
+                         report.cache_error);
+  else
     s.file = report.cache_file;
+  if (report.cache_rebuilt)
+    s.notes.push_back(report.cache_note);
+  for (const std::string& w : s.warnings)
+    std::cerr << "tvd: warning: " << w << "\n";
+  for (const std::string& n : s.notes)
+    std::cerr << "tvd: note: " << n << "\n";
   return s;
 }
 
@@ -158,6 +171,8 @@ void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& s) {
       .field("full_dofs", static_cast<long long>(s.model.full_dof_count))
       .field("created_utc", s.model.created_utc)
       .field("creator", s.model.creator)
+      .field("warnings", s.warnings)
+      .field("notes", s.notes)
       .endObject();
 }
 

@@ -69,6 +69,10 @@ struct ReducedModelSource {
   std::string file;  ///< the cache file (when it was written or read) or the --reduced file
   vehicle::Variant variant = vehicle::Variant::Tracked;
   reduction::VehicleReductionOptions options;  ///< as the model was reduced
+  /// What the reduction warned about (computed models only: VehicleReductionReport::warnings).
+  std::vector<std::string> warnings;
+  /// E.g. that a stale or corrupt cache file was rebuilt.
+  std::vector<std::string> notes;
 };
 
 /// "computed", "cache", "file".
@@ -76,9 +80,11 @@ const char* sourceName(ReducedModelSource::Kind kind);
 
 /// The reduced model for `description`: from `flags.reducedFile()` when given, otherwise
 /// loadOrReduceVehicle() with the reduction flags in the cache directory (default
-/// defaultCacheDir()). A file is loaded with the cache's checks (format and software version,
-/// description hash, checksum) and must hold a reduction tvd writes; `variant_given` is the
-/// --variant of the command line, if any, and must then be the file's. Throws InputError
+/// defaultCacheDir()); the reduction's warnings (a cut eigenspace, a cache that cannot be written)
+/// and notes (a cache file rebuilt) are printed to stderr and kept in the result. A file is loaded
+/// with the cache's checks (format and software version, description hash, checksum) and must hold
+/// a reduction tvd writes; `variant_given` is the --variant of the command line, if any, and must
+/// then be the file's. Throws InputError
 /// "FILE: <what is wrong>; run tvd reduce again" for a file that cannot be used.
 ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& description,
                                       vehicle::Variant variant, bool variant_given,
@@ -86,7 +92,8 @@ ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& descrip
 
 /// Writes the JSON object that states the reduction: source, file, variant, rule, band_hz,
 /// global_modes, mac_threshold, mogesec_masters, mode_count (the options), then what the model
-/// holds: selected_global_modes, fixed_interface_modes, master_dofs, reduced_dofs, full_dofs.
+/// holds: selected_global_modes, fixed_interface_modes, master_dofs, reduced_dofs, full_dofs,
+/// and its warnings and notes.
 void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& source);
 
 /// One line for the text output: "rule band, 0-40 Hz, 12 global modes -> 24 fixed-interface

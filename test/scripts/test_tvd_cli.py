@@ -1797,6 +1797,51 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("limited_sim.csv", r.stderr)
         self.assertEqual([f for f in os.listdir(self.work) if f.startswith("limited_sim")], [])
 
+    def test_unusable_cache_is_reported(self):
+        """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
+        with a note."""
+        bad = self.path("cache_is_a_file")
+        with open(bad, "w") as f:
+            f.write("not a directory\n")
+        base = ["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                "--max-hz", "5", "--json"]
+        r = self.tvd(*base, "--cache-dir", bad)
+        reduction = json.loads(r.stdout)["reduction"]
+        self.assertEqual(len(reduction["warnings"]), 1, reduction)
+        self.assertIn("the reduced-model cache is not used", reduction["warnings"][0])
+        self.assertIn("cache_is_a_file", reduction["warnings"][0])
+        self.assertEqual(r.stderr.count("tvd: warning: the reduced-model cache is not used"), 1)
+        cache = self.path("corrupt_cache")
+        first = json.loads(self.tvd(*base, "--cache-dir", cache).stdout)["reduction"]
+        self.assertEqual(first["notes"], [])
+        with open(first["file"], "r+b") as f:
+            f.seek(200)
+            f.write(b"\\x00" * 64)
+        r = self.tvd(*base, "--cache-dir", cache)
+        again = json.loads(r.stdout)["reduction"]
+        self.assertEqual(again["source"], "computed")
+        self.assertEqual(len(again["notes"]), 1, again)
+        self.assertIn("rebuilt", again["notes"][0])
+        self.assertIn("tvd: note: rebuilt", r.stderr)
+
+    def test_cut_eigenspace_is_warned(self):
+        """#1: the default 40 global modes cut the un-tracked 12-fold eigenspace at 107.72 Hz
+        after 6 modes: the reduction says so, with the counts that would not cut it."""
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked")
+        warnings = d["reduction"]["warnings"]
+        self.assertEqual(len(warnings), 1, warnings)
+        self.assertIn("global_modes 40 cuts a repeated eigenvalue of the untracked variant: 6 of "
+                      "its 12 modes at 107.721 Hz", warnings[0])
+        self.assertIn("34 or 46 global modes would not cut it", warnings[0])
+        # At 46 the solver returns 11 of the 12 (and the next mode): also said.
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
+                          "--global-modes", "46")
+        self.assertIn("returns 1 mode(s) of the untracked variant below 107.735 Hz too few",
+                      d["reduction"]["warnings"][0])
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
+                          "--global-modes", "48")
+        self.assertEqual(d["reduction"]["warnings"], [])
+
 
 if __name__ == "__main__":
     sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__,
