@@ -15,11 +15,14 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
+/// The largest --global-modes: more take minutes to solve (reduction_options.cpp).
+constexpr int kMaxGlobalModes = 200;
+
 /// The flags --rule, --band, --global-modes, --masters, --modes and --mac-threshold, bound to
 /// one VehicleReductionOptions (the ROS node's ~reduction/rule, band_hz, global_modes,
 /// mogesec_masters, mode_count and mac_threshold: the same defaults and lower bounds; the
-/// command line also caps --global-modes at 500 and --masters, --modes at 1000, and refuses
-/// --mac-threshold with --rule band, which the node's parameter file always sets).
+/// command line also caps --global-modes at kMaxGlobalModes and --masters, --modes at 1000, and
+/// refuses --mac-threshold with --rule band, which the node's parameter file always sets).
 class ReductionFlags {
  public:
   /// Registers the flags on `command`; `this` must outlive the parse (commands keep it in their

@@ -1797,6 +1797,17 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("limited_sim.csv", r.stderr)
         self.assertEqual([f for f in os.listdir(self.work) if f.startswith("limited_sim")], [])
 
+    def test_global_modes_limit_is_named(self):
+        """#3: --global-modes above 200 takes minutes; refused with the limit and why."""
+        for command in ("reduce", "frf", "simulate"):
+            args = [command, "--vehicle", VEHICLE, "--global-modes", "201"]
+            if command == "simulate":
+                args += ["--track", "long_hill"]
+            r = self.tvd(*args, status=INPUT_ERROR_STATUS)
+            self.assertIn("[1, 200], got 201", r.stderr)
+            self.assertIn("minutes", r.stderr)
+            self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+
     def test_unusable_cache_is_reported(self):
         """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
         with a note."""
