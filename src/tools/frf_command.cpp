@@ -10,14 +10,15 @@
 
 #include "commands.h"
 #include "output_files.h"
+#include "point_list.h"
 #include "reduction_options.h"
-#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -292,7 +293,6 @@ void registerFrfCommand(CLI::App& app) {
                   "Wk-weighted magnitude <point>_vertical_acc_wk_mag")
       ->type_name("NAME[,NAME...]")
       ->default_str("")
-      ->delimiter(',')
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--out", opt->out_file,
@@ -304,6 +304,7 @@ void registerFrfCommand(CLI::App& app) {
     if (max_mode->count() > 0 && opt->model != "full")
       throw InputError("frf: --max-mode-hz applies to --model full only");
     opt->reduced.check("frf", opt->model);
+    opt->points = splitPointList("frf", opt->points);  // split here: CLI11 drops empty names
     opt->variant_given = variant->count() > 0;
     run(*opt);
   });

@@ -228,9 +228,10 @@ void registerModesCommand(CLI::App& app) {
   // At most 500: a Lanczos run for more modes than that takes minutes on the tracked model.
   cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")->check(CLI::Range(1, 500));
   CLI::Option* max_frequency =
-      cmd->add_option("--max-frequency", opt->max_frequency_hz,
-                      "return every mode below this frequency [Hz] (at most --count; --model only)")
-          ->check(nonNegativeNumber())
+      cmd->add_option(
+             "--max-frequency", opt->max_frequency_hz,
+             "return every mode below this frequency [Hz] (> 0; at most --count; --model only)")
+          ->check(positiveNumber())
           ->default_str("none: --count modes");
   max_frequency->needs(model);
   variant->needs(vehicle);

@@ -85,7 +85,7 @@ void ReducedModelFlags::addTo(CLI::App* command) {
                    "reduced model from `tvd reduce --out` (.mat) instead of the cache; it keeps "
                    "the reduction options it was made with")
       ->check(CLI::ExistingFile);
-  command->add_option(
+  cache_dir_option_ = command->add_option(
       "--cache-dir", cache_dir_,
       "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics; not used with --reduced)");
   reduction_.addTo(command);
@@ -101,6 +101,10 @@ void ReducedModelFlags::check(const std::string& command, const std::string& mod
                      " was reduced with its own (run tvd reduce again to change them)");
   if (model == "full" && !flag.empty())
     throw InputError(command + ": " + flag + " applies to --model reduced only");
+  // README: an option that would be ignored is refused.
+  if (cache_dir_option_->count() > 0 && !reduced_file_.empty())
+    throw InputError(command + ": --cache-dir is not used with --reduced " + reduced_file_ +
+                     " (the model comes from the file)");
   reduction_.options(command);  // --mac-threshold with --rule band
 }
 

@@ -51,7 +51,7 @@ class ReducedModelFlags {
   void addTo(CLI::App* command);
 
   /// Throws InputError (naming `command` and the flags) when --reduced is given with --model
-  /// full or with a reduction flag, or a reduction flag with --model full.
+  /// full, with a reduction flag or with --cache-dir, or a reduction flag with --model full.
   void check(const std::string& command, const std::string& model) const;
 
   const ReductionFlags& reduction() const { return reduction_; }
@@ -62,6 +62,7 @@ class ReducedModelFlags {
   ReductionFlags reduction_;
   std::string reduced_file_;
   std::string cache_dir_;
+  CLI::Option* cache_dir_option_ = nullptr;
 };
 
 /// The reduced model a command runs, and how it was obtained.

@@ -533,12 +533,17 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--out", opt->out_file, "time series: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->add_option("--ground-contact", opt->ground_contact,
-                  "on | off: report where the linear model's ground springs pull the vehicle "
-                  "down (F < 0: beyond its range); reduced model only")
-      ->check(CLI::IsMember({"on", "off"}));
-  cmd->callback([opt, variant]() {
+  CLI::Option* ground_contact =
+      cmd->add_option("--ground-contact", opt->ground_contact,
+                      "on | off: report where the linear model's ground springs pull the vehicle "
+                      "down (F < 0: beyond its range); reduced model only")
+          ->check(CLI::IsMember({"on", "off"}));
+  cmd->callback([opt, variant, ground_contact]() {
     opt->reduced.check("simulate", opt->model);
+    if (ground_contact->count() > 0 && opt->model == "full")
+      throw InputError(
+          "simulate: --ground-contact applies to --model reduced only (the full "
+          "model is the reference; the reduced model reports ground contact)");
     opt->variant_given = variant->count() > 0;
     run(*opt);
   });

@@ -1421,7 +1421,8 @@ class TvdCliTest(unittest.TestCase):
             self.assert_input_error(cmd + ["--reduced", mat, "--rule", "mac"], "--rule is a reduction")
             self.assert_input_error(cmd + ["--model", "full", "--masters", "4"],
                                     f"{name}: --masters applies to --model reduced only")
-            self.assert_input_error(cmd + ["--reduced", mat, "--variant", "tracked"],
+            # (without --cache-dir, which --reduced refuses)
+            self.assert_input_error(cmd[:3] + ["--reduced", mat, "--variant", "tracked"],
                                     f"{name}: --reduced {mat} is the untracked variant, --variant "
                                     "is tracked")
             self.assert_input_error(cmd + ["--reduced", self.path("none.mat")], "--reduced",
@@ -1807,6 +1808,29 @@ class TvdCliTest(unittest.TestCase):
             self.assertIn("[1, 200], got 201", r.stderr)
             self.assertIn("minutes", r.stderr)
             self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+
+    def test_options_without_effect_are_refused(self):
+        """#4: README: an option that would be ignored is refused."""
+        model = self.path("ignored.mat")
+        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                 "--out", model)
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "long_hill"]
+        self.assert_input_error(sim + ["--reduced", model, "--cache-dir", self.cache],
+                                "--cache-dir is not used with --reduced")
+        self.assert_input_error(sim + ["--model", "full", "--ground-contact", "on"],
+                                "--ground-contact applies to --model reduced only")
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--out", ""],
+                                "--out", "must name a directory")
+        chain = os.path.join(ROOT, "config", "models", "spring_mass_chain.yaml")
+        self.assert_input_error(["modes", "--model", chain, "--max-frequency", "0"],
+                                "--max-frequency", "must be a positive number")
+        ride = ["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "half_round:0.1",
+                "--cache-dir", self.cache]
+        frf = ["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache]
+        for command in (ride, frf):
+            for points in ("", "crew_seat,", ",crew_seat", "crew_seat,,sensor_mount"):
+                self.assert_input_error(command + ["--points", points],
+                                        "--points: an empty name in '" + points + "'")
 
     def test_unusable_cache_is_reported(self):
         """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
