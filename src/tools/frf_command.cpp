@@ -104,6 +104,22 @@ std::vector<NamedColumn> pointOutputs(const std::vector<std::string>& names,
   return out;
 }
 
+// 0, step, 2 step, ... up to max, and max itself when it is not a multiple of step (the band
+// asked for is covered to its edge). Throws InputError when step > max: one frequency (0 Hz,
+// where every FRF is 0) has no peak and no band.
+Vector frequencyGrid(double max_hz, double step_hz) {
+  const auto steps = static_cast<Eigen::Index>(std::floor(max_hz / step_hz + 1e-9));
+  if (steps < 1)
+    throw InputError("frf: --step-hz " + brief(step_hz) + " is larger than --max-hz " +
+                     brief(max_hz) + ": the grid needs at least 2 frequencies (0 and max)");
+  const bool partial = max_hz - steps * step_hz > 1e-9 * max_hz;
+  Vector hz(steps + 1 + (partial ? 1 : 0));
+  hz.head(steps + 1) = Vector::LinSpaced(steps + 1, 0.0, steps * step_hz);
+  if (partial)
+    hz(steps + 1) = max_hz;
+  return hz;
+}
+
 void run(const FrfOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
@@ -111,8 +127,7 @@ void run(const FrfOptions& opt) {
                      std::to_string(opt.speed_kmh));
   if (!(opt.max_hz > 0) || !(opt.step_hz > 0) || opt.max_hz / opt.step_hz > 1e6)
     throw InputError("frf: --max-hz and --step-hz must be positive, with at most 1e6 points");
-  const auto points = static_cast<Eigen::Index>(std::floor(opt.max_hz / opt.step_hz + 1e-9)) + 1;
-  const Vector hz = Vector::LinSpaced(points, 0.0, (points - 1) * opt.step_hz);
+  const Vector hz = frequencyGrid(opt.max_hz, opt.step_hz);
 
   // The model: its outputs, input stations and a way to evaluate the FRF.
   std::vector<std::string> names;
@@ -279,7 +294,10 @@ void registerFrfCommand(CLI::App& app) {
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
   cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)")->check(positiveNumber());
-  cmd->add_option("--step-hz", opt->step_hz, "frequency step [Hz] (default 0.05)")->check(positiveNumber());
+  cmd->add_option("--step-hz", opt->step_hz,
+                  "frequency step [Hz] (default 0.05; at most --max-hz; when --max-hz is not a "
+                  "multiple of it, the grid ends with --max-hz itself)")
+      ->check(positiveNumber());
   // Up to 100 Hz (twice the FRF band): the modes above enter statically, and above 100 Hz the
   // tracked model's chain-link modes make the Lanczos run take minutes (200 Hz: > 4 min).
   CLI::Option* max_mode =

@@ -1832,6 +1832,19 @@ class TvdCliTest(unittest.TestCase):
                 self.assert_input_error(command + ["--points", points],
                                         "--points: an empty name in '" + points + "'")
 
+    def test_frf_grid_has_two_frequencies_and_ends_at_max(self):
+        """#5: step > max is refused; a max that is not a multiple of the step is the last point."""
+        frf = ["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache]
+        self.assert_input_error(frf + ["--step-hz", "100"],
+                                "--step-hz 100 is larger than --max-hz 50", "at least 2 frequencies")
+        out = self.path("grid.csv")
+        self.tvd(*frf, "--max-hz", "1", "--step-hz", "0.07", "--out", out)
+        header, body = read_csv(out)
+        hz = body[:, header.index("frequency_hz")]
+        self.assertEqual(len(hz), 16)
+        self.assertAlmostEqual(hz[-2], 0.98, places=12)
+        self.assertEqual(hz[-1], 1.0)
+
     def test_unusable_cache_is_reported(self):
         """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
         with a note."""
