@@ -99,7 +99,8 @@ void run(const RideOptions& opt) {
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());
-  if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
+  if (const std::optional<std::string> w =
+          terrainCoverageWarning(opt.track, track, road, opt.lateral_offset)) {
     warnings.push_back(*w);
     std::cerr << "tvd: warning: " << *w << "\n";
   }

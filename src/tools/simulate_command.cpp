@@ -265,7 +265,8 @@ void run(const SimulateOptions& opt) {
   const dynamics::RoadExcitation road(model_sys.input_stations, model_sys.input_lateral,
                                       opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
-  if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
+  if (const std::optional<std::string> w =
+          terrainCoverageWarning(opt.track, track, road, opt.lateral_offset)) {
     warnings.push_back(*w);
     std::cerr << "tvd: warning: " << *w << "\n";
   }

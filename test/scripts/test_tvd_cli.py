@@ -1845,6 +1845,23 @@ class TvdCliTest(unittest.TestCase):
         self.assertAlmostEqual(hz[-2], 0.98, places=12)
         self.assertEqual(hz[-1], 1.0)
 
+    def test_lateral_offset_off_a_built_in_track(self):
+        """#6: an offset that puts contacts beyond a built-in track's edge is warned about (how
+        many, how far); one that puts every contact off it is refused."""
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache,
+               "--track"]
+        r = self.tvd(*sim, "long_hill", "--lateral-offset", "2", "--json")
+        warnings = json.loads(r.stdout)["warnings"]
+        self.assertEqual(len(warnings), 1, warnings)
+        self.assertRegex(warnings[0], r"\d+ of \d+ contacts lie outside, up to [0-9.]+ m beyond")
+        self.assertIn("--lateral-offset 2 m", warnings[0])
+        self.assertIn("tvd: warning: ", r.stderr)
+        self.assert_input_error(sim + ["oop_waves", "--lateral-offset", "10"],
+                                "oop_waves: every contact", "lies off the terrain",
+                                "--lateral-offset 10 m")
+        self.assert_input_error(sim + ["long_hill", "--lateral-offset", "1e6"],
+                                "long_hill: every contact")
+
     def test_unusable_cache_is_reported(self):
         """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
         with a note."""
