@@ -672,8 +672,18 @@ class TvdCliTest(unittest.TestCase):
         endless = self.path("endless.csv")
         with open(endless, "w") as f:
             f.write("time_s,speed_kmh\n0,10\n1e300,10\n")
-        r = self.tvd(*common, "--speed-profile", endless, status=INPUT_ERROR_STATUS)
-        self.assertIn("endless.csv: the profile lasts 1e+300 s", r.stderr)
+        # The step limit applies to the steps run: a profile far longer than the track runs to
+        # the track's end (30 m at 10 km/h: 10.8 s) ...
+        d = self.tvd_json(*common, "--speed-profile", endless)
+        self.assertAlmostEqual(d["travelled_m"], 30.0, places=2)
+        self.assertAlmostEqual(d["simulated_seconds"], 10.8, places=2)
+        # ... and one that would not reach it within the limit is refused.
+        stalled = self.path("stalled.csv")
+        with open(stalled, "w") as f:
+            f.write("time_s,speed_kmh\n0,0.001\n1e300,0.001\n")
+        r = self.tvd(*common, "--speed-profile", stalled, status=INPUT_ERROR_STATUS)
+        self.assertIn("stalled.csv: the profile lasts 1e+300 s", r.stderr)
+        self.assertIn("does not reach the track's end", r.stderr)
         self.assertIn("at most 1e+07", r.stderr)
 
     def test_terrain_iso8608_road_and_ride_on_it(self):
