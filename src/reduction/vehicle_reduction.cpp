@@ -193,8 +193,10 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     selection = selectModes(model.modes.frequencies_hz, selection_options);
   }
   if (selection.count() == 0)
-    throw InputError("reduction: no global mode selected below " + std::to_string(options.band_hz) +
-                     " Hz (MAC threshold " + std::to_string(options.mac_threshold) + ")");
+    throw InputError("reduction: no global mode selected below " + brief(options.band_hz) + " Hz" +
+                     (options.rule == VehicleModeRule::MacCorrelation
+                          ? " (MAC threshold " + brief(options.mac_threshold) + ")"
+                          : std::string(" (the lowest mode lies above the band; raise --band)")));
 
   // 3. Masters: the ground interface, hull and wheels, then MoGeSeC on the selected modes. As in
   // the paper (§3.1.2), MoGeSeC starts from the input DOFs (hull and wheels) alone: the pad soles

@@ -124,7 +124,7 @@ void run(const FrfOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
     throw InputError("frf: --speed-kmh must be in [0, 200] (0: synchronous), got " +
-                     std::to_string(opt.speed_kmh));
+                     brief(opt.speed_kmh));
   if (!(opt.max_hz > 0) || !(opt.step_hz > 0) || opt.max_hz / opt.step_hz > 1e6)
     throw InputError("frf: --max-hz and --step-hz must be positive, with at most 1e6 points");
   const Vector hz = frequencyGrid(opt.max_hz, opt.step_hz);
@@ -301,9 +301,11 @@ void registerFrfCommand(CLI::App& app) {
   // Up to 100 Hz (twice the FRF band): the modes above enter statically, and above 100 Hz the
   // tracked model's chain-link modes make the Lanczos run take minutes (200 Hz: > 4 min).
   CLI::Option* max_mode =
-      cmd->add_option("--max-mode-hz", opt->max_mode_hz,
-                      "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
-          ->check(positiveNumber() & numberIn(0.0, 100.0, "Hz"));
+      cmd->add_option(
+             "--max-mode-hz", opt->max_mode_hz,
+             "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
+          ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 100.0; },
+                                    "a number in (0, 100] Hz", "NUMBER"));
   opt->reduced.addTo(cmd);
   cmd->add_option("--points", opt->points,
                   "named points of the description (e.g. crew_seat), comma-separated or repeated: "

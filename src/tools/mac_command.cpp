@@ -162,8 +162,10 @@ void registerMacCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--count,-n", opt->count, "modes of each variant (paper: 40)")->check(CLI::Range(1, 500));
-  cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match (paper: 0.7)")
-      ->check(CLI::Range(0.0, 1.0));
+  // (0, 1] as reduce's --mac-threshold: at 0 every mode would correlate.
+  cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match, in (0, 1] (paper: 0.7)")
+      ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a number in (0, 1]",
+                                "NUMBER"));
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")
       ->check(positiveNumber());
   cmd->add_flag("--json", opt->json, "print a JSON document (MAC matrix, correlation table)");

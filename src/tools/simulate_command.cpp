@@ -181,7 +181,7 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
 void run(const SimulateOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
-    throw InputError("simulate: --speed-kmh must be in (0, 200], got " + std::to_string(opt.speed_kmh));
+    throw InputError("simulate: --speed-kmh must be in (0, 200], got " + brief(opt.speed_kmh));
   if (opt.method != "modal" && opt.max_mode_hz >= 0)
     throw InputError("simulate: --max-mode-hz applies to --method modal only (the exact method "
                      "integrates every mode)");

@@ -1513,7 +1513,7 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", self.path("r.csv")],
                                 "must end in .mat")
         self.assert_input_error(["frf", "--vehicle", VEHICLE, "--model", "full",
-                                 "--max-mode-hz", "1e5"], "--max-mode-hz", "[0, 100] Hz")
+                                 "--max-mode-hz", "1e5"], "--max-mode-hz", "(0, 100] Hz")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "100000"], "--count")
         # Output directories of modes and mac: checked before the solve, not after it.
         a_file = self.path("a_file")
@@ -1898,6 +1898,33 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(len(again["notes"]), 1, again)
         self.assertIn("rebuilt", again["notes"][0])
         self.assertIn("tvd: note: rebuilt", r.stderr)
+
+    def test_messages_name_what_is_wrong(self):
+        """#10: unknown subcommand, a .mat that is not a reduced model, ranges as accepted, one
+        line with the tvd: error: prefix for option checks."""
+        r = self.tvd("foo", status=INPUT_ERROR_STATUS)
+        self.assertIn("tvd: error: unknown subcommand 'foo'", r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        r = self.tvd("simulate", "--vehicle", VEHICLE, "--track", "long_hill", "--dt", "0",
+                     status=INPUT_ERROR_STATUS)
+        self.assertTrue(r.stderr.startswith("tvd: error: "), r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        frf_mat = self.path("not_reduced.mat")
+        self.tvd("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache,
+                 "--max-hz", "2", "--out", frf_mat)
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--track", "long_hill",
+                                 "--reduced", frf_mat], "not a reduced model file")
+        for threshold in ("0", "1.1"):
+            self.assert_input_error(["mac", "--vehicle", VEHICLE, "--threshold", threshold],
+                                    "--threshold", "must be a number in (0, 1]")
+        self.assertIn("in (0, 1]", self.tvd("mac", "--help").stdout)
+        for hz in ("0", "200"):
+            self.assert_input_error(["frf", "--vehicle", VEHICLE, "--model", "full",
+                                     "--max-mode-hz", hz], "must be a number in (0, 100] Hz")
+        r = self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                     "--band", "0.1", status=INPUT_ERROR_STATUS)
+        self.assertIn("no global mode selected below 0.1 Hz", r.stderr)
+        self.assertNotIn("MAC threshold", r.stderr)
 
     def test_cut_eigenspace_is_warned(self):
         """#1: the default 40 global modes cut the un-tracked 12-fold eigenspace at 107.72 Hz
