@@ -1944,6 +1944,17 @@ class TvdCliTest(unittest.TestCase):
                           "--global-modes", "48")
         self.assertEqual(d["reduction"]["warnings"], [])
 
+    def test_poisson_ratio_and_speed_range_are_checked(self):
+        """#12: a Poisson ratio outside (-1, 0.5] is refused naming the key; a --speeds range
+        whose step does not land on LAST is refused."""
+        nu = self.vehicle_with("nu.yaml", "steel_poisson_ratio: {value: 0.29",
+                               "steel_poisson_ratio: {value: 0.6")
+        self.assert_input_error(["modes", "--vehicle", nu], "steel_poisson_ratio",
+                                "(-1, 0.5], got 0.6")
+        self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                                 "half_round:0.1", "--speeds", "5:7:3"],
+                                "--speeds '5:7:3'", "does not land on LAST 7")
+
 
 if __name__ == "__main__":
     sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__,
