@@ -255,8 +255,9 @@ void run(const RideOptions& opt) {
   for (std::size_t i = 0; i < points.size(); ++i)
     std::cout << "  " << points[i] << ": " << describeLimit(limits[i].power, power_limit.str()) << "; "
               << describeLimit(limits[i].peak, peak_limit.str()) << "\n";
-  std::cout << std::setprecision(3) << "  " << runs.size() << " runs, " << simulated << " s simulated in "
-            << wall << " s\n";
+  std::cout << std::setprecision(3) << "  " << runs.size()
+            << (runs.size() == 1 ? " run, " : " runs, ") << simulated << " s simulated in " << wall
+            << " s\n";
 }
 
 }  // namespace

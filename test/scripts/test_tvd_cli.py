@@ -1955,6 +1955,15 @@ class TvdCliTest(unittest.TestCase):
                                  "half_round:0.1", "--speeds", "5:7:3"],
                                 "--speeds '5:7:3'", "does not land on LAST 7")
 
+    def test_text_output_fits_the_run(self):
+        """#11: the un-tracked statics do not mention chain links; one ride run is '1 run'."""
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
+        self.assertIn("contacts: unilateral (pads on the road push but cannot pull)", text)
+        self.assertNotIn("sprockets", text)
+        text = self.tvd("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                        "half_round:0.1", "--speeds", "10", "--cache-dir", self.cache).stdout
+        self.assertIn("  1 run, ", text)
+
 
 if __name__ == "__main__":
     sys.exit(junit_runner.main(TvdCliTest, "tvd_cli", __doc__,
