@@ -6,10 +6,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
 
 namespace tracked_vehicle_dynamics {
@@ -256,15 +256,9 @@ std::string formatModelYaml(const fem::Model& model) {
 
 void saveModelYaml(const fem::Model& model, const std::string& path) {
   const std::string text = formatModelYaml(model);
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) {
-    throw Error(path + ": cannot be opened for writing: " + std::strerror(errno));
-  }
-  file << text;
-  file.close();
-  if (!file) {
-    throw Error(path + ": write failed: " + std::strerror(errno));
-  }
+  AtomicTextFile file(path);
+  file.stream() << text;
+  file.commit();
 }
 
 }  // namespace io

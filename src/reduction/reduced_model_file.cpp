@@ -245,6 +245,11 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                        const ReducedModelLoadOptions& options) {
   const std::string& where = in.path();
   // The checks of where the file comes from first: they give the most useful message.
+  // A .mat of another command (tvd frf, statics, modes) lacks the model's marker altogether.
+  if (!in.has("format_version"))
+    throw InputError(where +
+                     ": not a reduced model file (no variable 'format_version'; written "
+                     "by tvd frf, statics or modes?)");
   const double format = in.readScalar("format_version");
   if (format != kReducedModelFormatVersion)
     throw InputError(where + ": file format version " + std::to_string(format) +

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/csv_reader.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
@@ -41,18 +42,6 @@ std::string stem(const std::string& path) { return std::filesystem::path(path).s
 using io::CsvReader;
 using io::CsvRow;
 using io::parseNumber;
-
-std::ofstream openForWriting(const std::string& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot be opened for writing");
-  out << std::setprecision(kFullPrecision);
-  return out;
-}
-
-void finishWriting(std::ofstream& out, const std::string& path) {
-  out.close();
-  if (!out) throw InputError(path + ": write failed");
-}
 
 void writeFlowList(std::ostream& out, const Eigen::Ref<const Eigen::RowVectorXd>& values) {
   out << '[';
@@ -226,7 +215,9 @@ Terrain loadTrack(const std::string& track, const TrackOptions& options) {
 }
 
 void saveTerrainCsv(const Terrain& terrain, const std::string& path) {
-  std::ofstream out = openForWriting(path);
+  io::AtomicTextFile file(path);
+  std::ostream& out = file.stream();
+  out << std::setprecision(kFullPrecision);
   out << "# tracked_vehicle_dynamics terrain '" << terrain.name()
       << "': station x [m], then the height [m] of each lateral line y [m]\n";
   out << 'x';
@@ -239,11 +230,13 @@ void saveTerrainCsv(const Terrain& terrain, const std::string& path) {
     }
     out << '\n';
   }
-  finishWriting(out, path);
+  file.commit();
 }
 
 void saveTerrainYaml(const Terrain& terrain, const std::string& path) {
-  std::ofstream out = openForWriting(path);
+  io::AtomicTextFile file(path);
+  std::ostream& out = file.stream();
+  out << std::setprecision(kFullPrecision);
   out << "# tracked_vehicle_dynamics terrain: stations x [m], lateral lines y [m] (y left),\n"
          "# heights [m], one list per y with one value per station.\n";
   out << "name: " << quoted(terrain.name()) << '\n';
@@ -257,7 +250,7 @@ void saveTerrainYaml(const Terrain& terrain, const std::string& path) {
     writeFlowList(out, terrain.heights().row(j));
     out << '\n';
   }
-  finishWriting(out, path);
+  file.commit();
 }
 
 }  // namespace terrain

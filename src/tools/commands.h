@@ -104,7 +104,9 @@ inline CLI::Validator outputDirectory() {
       [](std::string& text) -> std::string {
         namespace fs = std::filesystem;
         std::error_code ec;
-        fs::path dir = text.empty() ? fs::path(".") : fs::path(text);
+        if (text.empty())
+          return "must name a directory, got ''";
+        fs::path dir(text);
         if (fs::is_symlink(fs::symlink_status(dir, ec)) && !fs::exists(dir, ec))
           return "'" + text + "' is a link to nothing";
         if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))

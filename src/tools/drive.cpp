@@ -1,5 +1,6 @@
 #include "drive.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -30,20 +31,33 @@ Drive::Drive(double start, double distance, double dt, dynamics::SpeedProfile pr
             << " s, less than one time step (" << dt << " s)";
     throw InputError(message.str());
   }
-  if (samples > kMaxSteps) {
+  // The run ends at the first sample at or past the track's end, else at the profile's last; the
+  // step limit applies to that run, not to the profile (which may outlast the track). The station
+  // never decreases (speeds >= 0), so a bisection over the samples a run may take finds the end.
+  const long limit = static_cast<long>(std::min(samples, kMaxSteps + 1));
+  if (profile_->station(limit * dt) < distance) {
+    if (samples > kMaxSteps) {
+      std::ostringstream message;
+      message << profile_name << ": the profile lasts " << profile_->endTime() << " s, " << samples
+              << " time steps of " << dt << " s, and does not reach the track's end (" << distance
+              << " m) within " << kMaxSteps << " steps; at most " << kMaxSteps;
+      throw InputError(message.str());
+    }
+    steps_ = limit;  // the profile ends before the track
+    return;
+  }
+  long lo = 0, hi = limit;  // station(lo dt) < distance <= station(hi dt)
+  while (hi - lo > 1) {
+    const long mid = lo + (hi - lo) / 2;
+    (profile_->station(mid * dt) >= distance ? hi : lo) = mid;
+  }
+  steps_ = hi;
+  if (steps_ > kMaxSteps) {
     std::ostringstream message;
-    message << profile_name << ": the profile lasts " << profile_->endTime() << " s, "
-            << samples << " time steps of " << dt << " s; at most " << kMaxSteps;
+    message << profile_name << ": the run to the track's end (" << distance
+            << " m) takes more than " << kMaxSteps << " time steps of " << dt << " s";
     throw InputError(message.str());
   }
-  const auto last = static_cast<long>(samples);
-  // The first sample at or past the track's end, else the profile's last.
-  steps_ = last;
-  for (long k = 1; k <= last; ++k)
-    if (profile_->station(k * dt) >= distance) {
-      steps_ = k;
-      break;
-    }
 }
 
 double Drive::station(long k) const {

@@ -21,8 +21,9 @@ class Drive {
 
   /// Constant speed [m/s] > 0 from station `start` [m] over `distance` [m], time step dt [s].
   Drive(double start, double distance, double dt, double speed);
-  /// Along `profile` (named `profile_name` in errors). Throws InputError when the profile lasts
-  /// less than one time step.
+  /// Along `profile` (named `profile_name` in errors), until the track's end or the profile's,
+  /// whichever comes first. Throws InputError when the profile lasts less than one time step or
+  /// that run takes more than kMaxSteps steps.
   Drive(double start, double distance, double dt, dynamics::SpeedProfile profile,
         const std::string& profile_name);
 

@@ -10,14 +10,15 @@
 
 #include "commands.h"
 #include "output_files.h"
+#include "point_list.h"
 #include "reduction_options.h"
-#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -103,15 +104,30 @@ std::vector<NamedColumn> pointOutputs(const std::vector<std::string>& names,
   return out;
 }
 
+// 0, step, 2 step, ... up to max, and max itself when it is not a multiple of step (the band
+// asked for is covered to its edge). Throws InputError when step > max: one frequency (0 Hz,
+// where every FRF is 0) has no peak and no band.
+Vector frequencyGrid(double max_hz, double step_hz) {
+  const auto steps = static_cast<Eigen::Index>(std::floor(max_hz / step_hz + 1e-9));
+  if (steps < 1)
+    throw InputError("frf: --step-hz " + brief(step_hz) + " is larger than --max-hz " +
+                     brief(max_hz) + ": the grid needs at least 2 frequencies (0 and max)");
+  const bool partial = max_hz - steps * step_hz > 1e-9 * max_hz;
+  Vector hz(steps + 1 + (partial ? 1 : 0));
+  hz.head(steps + 1) = Vector::LinSpaced(steps + 1, 0.0, steps * step_hz);
+  if (partial)
+    hz(steps + 1) = max_hz;
+  return hz;
+}
+
 void run(const FrfOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
     throw InputError("frf: --speed-kmh must be in [0, 200] (0: synchronous), got " +
-                     std::to_string(opt.speed_kmh));
+                     brief(opt.speed_kmh));
   if (!(opt.max_hz > 0) || !(opt.step_hz > 0) || opt.max_hz / opt.step_hz > 1e6)
     throw InputError("frf: --max-hz and --step-hz must be positive, with at most 1e6 points");
-  const auto points = static_cast<Eigen::Index>(std::floor(opt.max_hz / opt.step_hz + 1e-9)) + 1;
-  const Vector hz = Vector::LinSpaced(points, 0.0, (points - 1) * opt.step_hz);
+  const Vector hz = frequencyGrid(opt.max_hz, opt.step_hz);
 
   // The model: its outputs, input stations and a way to evaluate the FRF.
   std::vector<std::string> names;
@@ -278,13 +294,18 @@ void registerFrfCommand(CLI::App& app) {
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
   cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)")->check(positiveNumber());
-  cmd->add_option("--step-hz", opt->step_hz, "frequency step [Hz] (default 0.05)")->check(positiveNumber());
+  cmd->add_option("--step-hz", opt->step_hz,
+                  "frequency step [Hz] (default 0.05; at most --max-hz; when --max-hz is not a "
+                  "multiple of it, the grid ends with --max-hz itself)")
+      ->check(positiveNumber());
   // Up to 100 Hz (twice the FRF band): the modes above enter statically, and above 100 Hz the
   // tracked model's chain-link modes make the Lanczos run take minutes (200 Hz: > 4 min).
   CLI::Option* max_mode =
-      cmd->add_option("--max-mode-hz", opt->max_mode_hz,
-                      "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
-          ->check(positiveNumber() & numberIn(0.0, 100.0, "Hz"));
+      cmd->add_option(
+             "--max-mode-hz", opt->max_mode_hz,
+             "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
+          ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 100.0; },
+                                    "a number in (0, 100] Hz", "NUMBER"));
   opt->reduced.addTo(cmd);
   cmd->add_option("--points", opt->points,
                   "named points of the description (e.g. crew_seat), comma-separated or repeated: "
@@ -292,7 +313,6 @@ void registerFrfCommand(CLI::App& app) {
                   "Wk-weighted magnitude <point>_vertical_acc_wk_mag")
       ->type_name("NAME[,NAME...]")
       ->default_str("")
-      ->delimiter(',')
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--out", opt->out_file,
@@ -304,6 +324,7 @@ void registerFrfCommand(CLI::App& app) {
     if (max_mode->count() > 0 && opt->model != "full")
       throw InputError("frf: --max-mode-hz applies to --model full only");
     opt->reduced.check("frf", opt->model);
+    opt->points = splitPointList("frf", opt->points);  // split here: CLI11 drops empty names
     opt->variant_given = variant->count() > 0;
     run(*opt);
   });

@@ -62,6 +62,7 @@ void run(const MacOptions& opt) {
 
   if (!opt.out_dir.empty()) {
     makeOutputDirectory(opt.out_dir);
+    OutputFileSet written;  // a failed mac.csv takes mac.mat with it
     io::MatWriter mat(opt.out_dir + "/mac.mat");
     mat.writeMatrix("mac", mac);
     mat.writeMatrix("eigenspace_mac", space_mac);
@@ -74,6 +75,7 @@ void run(const MacOptions& opt) {
     mat.writeStrings("tracked_mode_types", tv_types);
     mat.writeScalar("threshold", opt.threshold);
     mat.close();
+    written.add(mat.path());
     // One row per un-tracked mode, then one column per tracked mode, named by its number.
     std::vector<std::string> headers = {"untracked_mode"};
     Matrix table(mac.rows(), mac.cols() + 1);
@@ -81,6 +83,7 @@ void run(const MacOptions& opt) {
     table.rightCols(mac.cols()) = mac;
     for (int j = 0; j < mac.cols(); ++j) headers.push_back(std::to_string(j + 1));
     writeTable(opt.out_dir + "/mac.csv", headers, table, 6);
+    written.keep();
   }
 
   if (opt.json) {
@@ -159,8 +162,10 @@ void registerMacCommand(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--count,-n", opt->count, "modes of each variant (paper: 40)")->check(CLI::Range(1, 500));
-  cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match (paper: 0.7)")
-      ->check(CLI::Range(0.0, 1.0));
+  // (0, 1] as reduce's --mac-threshold: at 0 every mode would correlate.
+  cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match, in (0, 1] (paper: 0.7)")
+      ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a number in (0, 1]",
+                                "NUMBER"));
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")
       ->check(positiveNumber());
   cmd->add_flag("--json", opt->json, "print a JSON document (MAC matrix, correlation table)");

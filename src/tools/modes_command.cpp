@@ -121,7 +121,11 @@ void runModel(const ModesOptions& opt) {
   request.max_frequency_hz = opt.max_frequency_hz;
   const fem::ModalBasis basis = fem::solveModes(sys.stiffness, sys.mass, request);
   const GravitySag sag = gravitySag(sys);
-  if (!opt.out_dir.empty()) writeModeFiles(opt.out_dir, sys, basis, {});
+  if (!opt.out_dir.empty()) {
+    OutputFileSet written;
+    writeModeFiles(opt.out_dir, sys, basis, {}, written);
+    written.keep();
+  }
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
@@ -157,9 +161,13 @@ void runVehicle(const ModesOptions& opt) {
   std::vector<std::string> types;
   for (const auto& c : a.classes) types.push_back(c.label);
   if (!opt.out_dir.empty()) {
-    writeModeFiles(opt.out_dir, a.system, a.modes, types);
-    writeNodeShapes((std::filesystem::path(opt.out_dir) / "node_shapes.csv").string(), a.vehicle,
-                    a.system, a.modes);
+    OutputFileSet written;
+    writeModeFiles(opt.out_dir, a.system, a.modes, types, written);
+    const std::string node_shapes =
+        (std::filesystem::path(opt.out_dir) / "node_shapes.csv").string();
+    writeNodeShapes(node_shapes, a.vehicle, a.system, a.modes);
+    written.add(node_shapes);
+    written.keep();
   }
   const vehicle::MassBreakdown& m = a.vehicle.layout.mass;
   if (opt.json) {
@@ -220,9 +228,10 @@ void registerModesCommand(CLI::App& app) {
   // At most 500: a Lanczos run for more modes than that takes minutes on the tracked model.
   cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")->check(CLI::Range(1, 500));
   CLI::Option* max_frequency =
-      cmd->add_option("--max-frequency", opt->max_frequency_hz,
-                      "return every mode below this frequency [Hz] (at most --count; --model only)")
-          ->check(nonNegativeNumber())
+      cmd->add_option(
+             "--max-frequency", opt->max_frequency_hz,
+             "return every mode below this frequency [Hz] (> 0; at most --count; --model only)")
+          ->check(positiveNumber())
           ->default_str("none: --count modes");
   max_frequency->needs(model);
   variant->needs(vehicle);

@@ -1,10 +1,9 @@
 #include "node_shapes.h"
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 
-#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
 
 namespace tracked_vehicle_dynamics {
@@ -20,8 +19,8 @@ void writeNodeShapes(const std::string& path, const vehicle::VehicleModel& vehic
   // u_phys = T u_active: slaves follow their masters, fixed DOFs are zero.
   const Matrix u = vehicle::physicalShapes(system, dofs, basis.shapes);
 
-  std::ofstream out(path);
-  if (!out) throw InputError("cannot write " + path);
+  io::AtomicTextFile file(path);
+  std::ostream& out = file.stream();
   out << std::setprecision(10) << "node,part,x_m,y_m,z_m";
   for (int k = 1; k <= basis.count(); ++k)
     out << ",mode_" << k << "_ux,mode_" << k << "_uy,mode_" << k << "_uz";
@@ -34,8 +33,7 @@ void writeNodeShapes(const std::string& path, const vehicle::VehicleModel& vehic
       for (int d = 0; d < 3; ++d) out << "," << u(static_cast<DofIndex>(3 * i + d), k);
     out << "\n";
   }
-  out.close();
-  if (!out) throw InputError("cannot write " + path);
+  file.commit();
 }
 
 }  // namespace tools

@@ -14,7 +14,8 @@ namespace tools {
 
 /// Writes `path` (CSV): one row per node of the model, sorted by id: node, part
 /// (vehicle::nodePart), x_m, y_m, z_m (undeformed), then for each mode k mode_k_ux, mode_k_uy,
-/// mode_k_uz (mass-normalised shape). Throws InputError when it cannot be written.
+/// mode_k_uz (mass-normalised shape). Written through a temporary file and a rename; throws
+/// InputError naming `path` when it cannot be written (no partial file is left).
 void writeNodeShapes(const std::string& path, const vehicle::VehicleModel& vehicle,
                      const fem::System& system, const fem::ModalBasis& basis);
 

@@ -1,26 +1,18 @@
 #include "output_files.h"
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <stdexcept>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
-
-namespace {
-std::ofstream openForWriting(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw InputError("cannot write " + path.string());
-  out << std::setprecision(12);
-  return out;
-}
-}  // namespace
 
 void makeOutputDirectory(const std::string& dir) {
   std::error_code ec;
@@ -29,21 +21,27 @@ void makeOutputDirectory(const std::string& dir) {
 }
 
 void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::ModalBasis& basis,
-                    const std::vector<std::string>& mode_types) {
+                    const std::vector<std::string>& mode_types, OutputFileSet& written) {
   makeOutputDirectory(dir);
   const std::filesystem::path root(dir);
   const bool typed = static_cast<int>(mode_types.size()) == basis.count();
   {
-    auto out = openForWriting(root / "modes.csv");
+    io::AtomicTextFile file((root / "modes.csv").string());
+    std::ostream& out = file.stream();
+    out << std::setprecision(12);
     out << "mode,frequency_hz,eigenvalue_rad2_s2" << (typed ? ",type" : "") << "\n";
     for (int i = 0; i < basis.count(); ++i) {
       out << i + 1 << "," << basis.frequencies_hz(i) << "," << basis.eigenvalues(i);
       if (typed) out << "," << mode_types[i];
       out << "\n";
     }
+    file.commit();
+    written.add(file.path());
   }
   {
-    auto out = openForWriting(root / "shapes.csv");
+    io::AtomicTextFile file((root / "shapes.csv").string());
+    std::ostream& out = file.stream();
+    out << std::setprecision(12);
     out << "node,direction";
     for (int i = 0; i < basis.count(); ++i) out << ",mode_" << i + 1;
     out << "\n";
@@ -53,6 +51,8 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
       for (int i = 0; i < basis.count(); ++i) out << "," << basis.shapes(r, i);
       out << "\n";
     }
+    file.commit();
+    written.add(file.path());
   }
   io::MatWriter mat((root / "modes.mat").string());
   mat.writeMatrix("frequencies_hz", basis.frequencies_hz);
@@ -71,6 +71,7 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
   mat.writeStrings("dof_labels", labels);
   if (typed) mat.writeStrings("mode_types", mode_types);
   mat.close();
+  written.add(mat.path());
 }
 
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
@@ -78,7 +79,6 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
   if (static_cast<Eigen::Index>(names.size()) != data.cols())
     throw std::logic_error("writeTable: " + std::to_string(names.size()) + " names for " +
                            std::to_string(data.cols()) + " columns");
-  const std::filesystem::path file(path);
   if (io::lowerExtension(path) == ".mat") {
     io::MatWriter mat(path);
     for (const auto& [name, text] : metadata) mat.writeString(name, text);
@@ -86,7 +86,8 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
     mat.close();
     return;
   }
-  auto out = openForWriting(file);
+  io::AtomicTextFile csv(path);
+  std::ostream& out = csv.stream();
   out << std::setprecision(precision);
   for (std::size_t c = 0; c < names.size(); ++c) out << (c ? "," : "") << names[c];
   out << "\n";
@@ -94,8 +95,14 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
     for (Eigen::Index j = 0; j < data.cols(); ++j) out << (j ? "," : "") << data(k, j);
     out << "\n";
   }
-  out.close();
-  if (!out) throw InputError("cannot write " + path);
+  csv.commit();
+}
+
+OutputFileSet::~OutputFileSet() {
+  if (kept_)
+    return;
+  for (const std::string& path : paths_)
+    std::remove(path.c_str());
 }
 
 std::string defaultCacheDir() {

@@ -11,16 +11,34 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
+/// The files one command has written so far: unless keep() is called, the destructor removes them,
+/// so a command whose later file fails (an exception unwinding) leaves none of its files behind.
+class OutputFileSet {
+ public:
+  OutputFileSet() = default;
+  ~OutputFileSet();
+  OutputFileSet(const OutputFileSet&) = delete;
+  OutputFileSet& operator=(const OutputFileSet&) = delete;
+  void add(const std::string& path) { paths_.push_back(path); }
+  void keep() { kept_ = true; }
+
+ private:
+  std::vector<std::string> paths_;
+  bool kept_ = false;
+};
+
 /// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type]), DIR/shapes.csv (one row per
 /// active DOF: node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz,
-/// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types]). Creates DIR. Throws
-/// InputError if it cannot write.
+/// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types]). Creates DIR. Each file
+/// goes through a temporary file and a rename and is added to `written`; InputError names a file
+/// that cannot be written (`written`'s destructor then removes the others).
 void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
-                    const std::vector<std::string>& mode_types);
+                    const std::vector<std::string>& mode_types, OutputFileSet& written);
 
 /// Writes a table of named columns: MATLAB/Octave/SciPy .mat when `path` ends in ".mat" (one n x 1
 /// variable per column, named by its header, plus the `metadata` strings as char variables), CSV
-/// otherwise (a header row, then `precision` significant digits; metadata not written). Names
+/// otherwise (a header row, then `precision` significant digits; metadata not written). Either way
+/// the data go to a temporary file renamed onto `path`, so a failure leaves no partial file. Names
 /// must be valid MATLAB identifiers. Throws InputError naming the file when it cannot be written.
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
                 int precision, const std::vector<std::pair<std::string, std::string>>& metadata = {});

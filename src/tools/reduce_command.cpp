@@ -114,6 +114,7 @@ void run(const ReduceOptions& opt) {
     source.file = opt.out_file;
     source.variant = variant;
     source.options = options;
+    source.warnings = report.warnings;
     writeReductionJson(json.key("reduction"), source);
     json.endObject();
     return;
@@ -143,6 +144,8 @@ void run(const ReduceOptions& opt) {
             << report.total_seconds << " s (build " << report.build_seconds << ", modes "
             << report.modes_seconds << ", selection " << report.selection_seconds << ", reduction "
             << report.reduce_seconds << ")\n";
+  for (const std::string& w : report.warnings)
+    std::cout << "  warning: " << w << "\n";
   if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
 }
 

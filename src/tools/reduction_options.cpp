@@ -1,5 +1,6 @@
 #include "reduction_options.h"
 
+#include <iostream>
 #include <sstream>
 
 #include "commands.h"
@@ -9,6 +10,25 @@
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
+
+namespace {
+// The selection solves this many modes of both variants (the un-tracked reduction correlates
+// with the tracked modes too), and the Lanczos cost grows steeply with the count: on the
+// bundled vehicle, un-tracked, 100 modes take 0.6 s, 200 take 6.8 s, 300 took 246 s
+// (on a shared 2-core machine) and 500 more than 10 minutes.
+CLI::Validator globalModeCount() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        int v = 0;
+        if (!CLI::detail::lexical_cast(text, v) || v < 1 || v > kMaxGlobalModes)
+          return "must be an integer in [1, " + std::to_string(kMaxGlobalModes) + "], got " + text +
+                 " (more take minutes to solve: 200 take about 7 s, 300 about 4 min, 500 over 10 "
+                 "min)";
+        return std::string();
+      },
+      "INT");
+}
+}  // namespace
 
 void ReductionFlags::addTo(CLI::App* command) {
   reduction::VehicleReductionOptions& o = options_;
@@ -21,8 +41,9 @@ void ReductionFlags::addTo(CLI::App* command) {
           ->check(positiveNumber()),
       command
           ->add_option("--global-modes", o.global_modes,
-                       "modes per variant for the MAC (~reduction/global_modes)")
-          ->check(CLI::Range(1, 500)),
+                       "modes per variant for the MAC, 1 .. " + std::to_string(kMaxGlobalModes) +
+                           " (~reduction/global_modes)")
+          ->check(globalModeCount()),
       command
           ->add_option("--masters", o.mogesec_masters,
                        "MoGeSeC master DOFs (paper: 9; ~reduction/mogesec_masters)")
@@ -64,7 +85,7 @@ void ReducedModelFlags::addTo(CLI::App* command) {
                    "reduced model from `tvd reduce --out` (.mat) instead of the cache; it keeps "
                    "the reduction options it was made with")
       ->check(CLI::ExistingFile);
-  command->add_option(
+  cache_dir_option_ = command->add_option(
       "--cache-dir", cache_dir_,
       "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics; not used with --reduced)");
   reduction_.addTo(command);
@@ -80,6 +101,10 @@ void ReducedModelFlags::check(const std::string& command, const std::string& mod
                      " was reduced with its own (run tvd reduce again to change them)");
   if (model == "full" && !flag.empty())
     throw InputError(command + ": " + flag + " applies to --model reduced only");
+  // README: an option that would be ignored is refused.
+  if (cache_dir_option_->count() > 0 && !reduced_file_.empty())
+    throw InputError(command + ": --cache-dir is not used with --reduced " + reduced_file_ +
+                     " (the model comes from the file)");
   reduction_.options(command);  // --mac-threshold with --rule band
 }
 
@@ -134,8 +159,20 @@ ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& descrip
       description, variant, flags.cacheDir().empty() ? defaultCacheDir() : flags.cacheDir(),
       s.options, &report);
   s.kind = report.from_cache ? ReducedModelSource::Kind::Cache : ReducedModelSource::Kind::Computed;
-  if (report.cache_error.empty())
+  s.warnings = report.warnings;
+  // A cache that cannot be written (a --cache-dir that is a file, a read-only directory) costs
+  // the whole reduction on every run: said once, with the reason.
+  if (!report.cache_error.empty())
+    s.warnings.push_back("the reduced-model cache is not used (every run reduces again): " +
+                         report.cache_error);
+  else
     s.file = report.cache_file;
+  if (report.cache_rebuilt)
+    s.notes.push_back(report.cache_note);
+  for (const std::string& w : s.warnings)
+    std::cerr << "tvd: warning: " << w << "\n";
+  for (const std::string& n : s.notes)
+    std::cerr << "tvd: note: " << n << "\n";
   return s;
 }
 
@@ -158,6 +195,8 @@ void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& s) {
       .field("full_dofs", static_cast<long long>(s.model.full_dof_count))
       .field("created_utc", s.model.created_utc)
       .field("creator", s.model.creator)
+      .field("warnings", s.warnings)
+      .field("notes", s.notes)
       .endObject();
 }
 

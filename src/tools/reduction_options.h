@@ -15,11 +15,14 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
+/// The largest --global-modes: more take minutes to solve (reduction_options.cpp).
+constexpr int kMaxGlobalModes = 200;
+
 /// The flags --rule, --band, --global-modes, --masters, --modes and --mac-threshold, bound to
 /// one VehicleReductionOptions (the ROS node's ~reduction/rule, band_hz, global_modes,
 /// mogesec_masters, mode_count and mac_threshold: the same defaults and lower bounds; the
-/// command line also caps --global-modes at 500 and --masters, --modes at 1000, and refuses
-/// --mac-threshold with --rule band, which the node's parameter file always sets).
+/// command line also caps --global-modes at kMaxGlobalModes and --masters, --modes at 1000, and
+/// refuses --mac-threshold with --rule band, which the node's parameter file always sets).
 class ReductionFlags {
  public:
   /// Registers the flags on `command`; `this` must outlive the parse (commands keep it in their
@@ -48,7 +51,7 @@ class ReducedModelFlags {
   void addTo(CLI::App* command);
 
   /// Throws InputError (naming `command` and the flags) when --reduced is given with --model
-  /// full or with a reduction flag, or a reduction flag with --model full.
+  /// full, with a reduction flag or with --cache-dir, or a reduction flag with --model full.
   void check(const std::string& command, const std::string& model) const;
 
   const ReductionFlags& reduction() const { return reduction_; }
@@ -59,6 +62,7 @@ class ReducedModelFlags {
   ReductionFlags reduction_;
   std::string reduced_file_;
   std::string cache_dir_;
+  CLI::Option* cache_dir_option_ = nullptr;
 };
 
 /// The reduced model a command runs, and how it was obtained.
@@ -69,6 +73,10 @@ struct ReducedModelSource {
   std::string file;  ///< the cache file (when it was written or read) or the --reduced file
   vehicle::Variant variant = vehicle::Variant::Tracked;
   reduction::VehicleReductionOptions options;  ///< as the model was reduced
+  /// What the reduction warned about (computed models only: VehicleReductionReport::warnings).
+  std::vector<std::string> warnings;
+  /// E.g. that a stale or corrupt cache file was rebuilt.
+  std::vector<std::string> notes;
 };
 
 /// "computed", "cache", "file".
@@ -76,9 +84,11 @@ const char* sourceName(ReducedModelSource::Kind kind);
 
 /// The reduced model for `description`: from `flags.reducedFile()` when given, otherwise
 /// loadOrReduceVehicle() with the reduction flags in the cache directory (default
-/// defaultCacheDir()). A file is loaded with the cache's checks (format and software version,
-/// description hash, checksum) and must hold a reduction tvd writes; `variant_given` is the
-/// --variant of the command line, if any, and must then be the file's. Throws InputError
+/// defaultCacheDir()); the reduction's warnings (a cut eigenspace, a cache that cannot be written)
+/// and notes (a cache file rebuilt) are printed to stderr and kept in the result. A file is loaded
+/// with the cache's checks (format and software version, description hash, checksum) and must hold
+/// a reduction tvd writes; `variant_given` is the --variant of the command line, if any, and must
+/// then be the file's. Throws InputError
 /// "FILE: <what is wrong>; run tvd reduce again" for a file that cannot be used.
 ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& description,
                                       vehicle::Variant variant, bool variant_given,
@@ -86,7 +96,8 @@ ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& descrip
 
 /// Writes the JSON object that states the reduction: source, file, variant, rule, band_hz,
 /// global_modes, mac_threshold, mogesec_masters, mode_count (the options), then what the model
-/// holds: selected_global_modes, fixed_interface_modes, master_dofs, reduced_dofs, full_dofs.
+/// holds: selected_global_modes, fixed_interface_modes, master_dofs, reduced_dofs, full_dofs,
+/// and its warnings and notes.
 void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& source);
 
 /// One line for the text output: "rule band, 0-40 Hz, 12 global modes -> 24 fixed-interface

@@ -99,7 +99,8 @@ void run(const RideOptions& opt) {
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());
-  if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
+  if (const std::optional<std::string> w =
+          terrainCoverageWarning(opt.track, track, road, opt.lateral_offset)) {
     warnings.push_back(*w);
     std::cerr << "tvd: warning: " << *w << "\n";
   }
@@ -254,8 +255,9 @@ void run(const RideOptions& opt) {
   for (std::size_t i = 0; i < points.size(); ++i)
     std::cout << "  " << points[i] << ": " << describeLimit(limits[i].power, power_limit.str()) << "; "
               << describeLimit(limits[i].peak, peak_limit.str()) << "\n";
-  std::cout << std::setprecision(3) << "  " << runs.size() << " runs, " << simulated << " s simulated in "
-            << wall << " s\n";
+  std::cout << std::setprecision(3) << "  " << runs.size()
+            << (runs.size() == 1 ? " run, " : " runs, ") << simulated << " s simulated in " << wall
+            << " s\n";
 }
 
 }  // namespace
@@ -278,10 +280,12 @@ void registerRideCommand(CLI::App& app) {
       "--iso8608", opt->iso_class,
       "instead of --track: the PSD of ISO 8608 road class A..H, evaluated spectrally at every speed "
       "(absorbed power, a_wz, r.m.s.; no peaks)");
-  cmd->add_option("--speeds", opt->speeds, "speeds [km/h]: FIRST:LAST:STEP or a list 5,10,20");
-  cmd->add_option("--points", opt->points,
-                  "points of the hull, comma-separated: hull (the CoG) and the description's named "
-                  "points (default: all)");
+  cmd->add_option("--speeds", opt->speeds,
+                  "speeds [km/h]: FIRST:LAST:STEP (STEP must land on LAST) or a list 5,10,20");
+  CLI::Option* points = cmd->add_option(
+      "--points", opt->points,
+      "points of the hull, comma-separated: hull (the CoG) and the description's named "
+      "points (default: all)");
   cmd->add_option("--power-limit-w", opt->power_limit_w, "absorbed-power limit [W]")->check(positiveNumber());
   // The time-domain run's own options, refused with --iso8608.
   const std::vector<CLI::Option*> time_only = {
@@ -326,7 +330,7 @@ void registerRideCommand(CLI::App& app) {
   cmd->add_option("--out", opt->out_file, "every run, by speed: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt, variant, track, iso, time_only, spectral_only]() {
+  cmd->callback([opt, variant, track, iso, time_only, spectral_only, points]() {
     const bool spectral = iso->count() > 0;
     if (spectral && track->count() > 0)
       throw InputError("ride: --track and --iso8608 exclude each other: give a terrain to simulate over, "
@@ -341,6 +345,7 @@ void registerRideCommand(CLI::App& app) {
                                    : " applies to --iso8608 (the spectral method) only"));
     opt->reduced.check("ride", "reduced");
     opt->variant_given = variant->count() > 0;
+    opt->points_given = points->count() > 0;
     if (spectral)
       runSpectralRide(*opt);
     else

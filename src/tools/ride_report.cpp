@@ -4,8 +4,9 @@
 #include <iomanip>
 #include <sstream>
 
-#include "vehicle_analysis.h"
+#include "point_list.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -15,7 +16,8 @@ RideModel loadRideModel(const RideOptions& opt, std::vector<std::string>* warnin
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, warnings);
   std::vector<std::string> named;
   for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
-  std::vector<std::string> points = choosePoints(opt.points, named);  // before any work
+  std::vector<std::string> points =
+      choosePoints(opt.points, opt.points_given, named);  // before any work
   return {std::move(points), obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced)};
 }
 
@@ -34,14 +36,14 @@ dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()
   }
 }
 
-std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named) {
+std::vector<std::string> choosePoints(const std::string& spec, bool given,
+                                      const std::vector<std::string>& named) {
   std::vector<std::string> known = {"hull"};
   known.insert(known.end(), named.begin(), named.end());
-  if (spec.empty()) return known;
+  if (!given)
+    return known;
   std::vector<std::string> chosen;
-  std::istringstream in(spec);
-  std::string name;
-  while (std::getline(in, name, ',')) {
+  for (const std::string& name : splitPointList("ride", {spec})) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
       std::string list;
       for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
@@ -51,7 +53,6 @@ std::vector<std::string> choosePoints(const std::string& spec, const std::vector
       throw InputError("ride: --points: '" + name + "' is listed twice");
     chosen.push_back(name);
   }
-  if (chosen.empty() || spec.back() == ',') throw InputError("ride: --points: an empty name in '" + spec + "'");
   return chosen;
 }
 

@@ -15,9 +15,10 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 /// The points the user asked for (`spec`, comma-separated), or "hull" and every named point when
-/// `spec` is empty. Throws InputError for a point the model lacks, one listed twice or an empty
-/// name.
-std::vector<std::string> choosePoints(const std::string& spec, const std::vector<std::string>& named);
+/// --points was not `given`. Throws InputError for a point the model lacks, one listed twice or an
+/// empty name (an empty `spec` included).
+std::vector<std::string> choosePoints(const std::string& spec, bool given,
+                                      const std::vector<std::string>& named);
 
 /// What both methods rate: the points (checked against the description before any work) and the
 /// reduced model, loaded or reduced as the options say. Warnings of the description are added

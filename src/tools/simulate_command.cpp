@@ -181,7 +181,7 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
 void run(const SimulateOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
-    throw InputError("simulate: --speed-kmh must be in (0, 200], got " + std::to_string(opt.speed_kmh));
+    throw InputError("simulate: --speed-kmh must be in (0, 200], got " + brief(opt.speed_kmh));
   if (opt.method != "modal" && opt.max_mode_hz >= 0)
     throw InputError("simulate: --max-mode-hz applies to --method modal only (the exact method "
                      "integrates every mode)");
@@ -265,7 +265,8 @@ void run(const SimulateOptions& opt) {
   const dynamics::RoadExcitation road(model_sys.input_stations, model_sys.input_lateral,
                                       opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
-  if (const std::optional<std::string> w = terrainCoverageWarning(opt.track, track, road)) {
+  if (const std::optional<std::string> w =
+          terrainCoverageWarning(opt.track, track, road, opt.lateral_offset)) {
     warnings.push_back(*w);
     std::cerr << "tvd: warning: " << *w << "\n";
   }
@@ -533,12 +534,17 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--out", opt->out_file, "time series: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->add_option("--ground-contact", opt->ground_contact,
-                  "on | off: report where the linear model's ground springs pull the vehicle "
-                  "down (F < 0: beyond its range); reduced model only")
-      ->check(CLI::IsMember({"on", "off"}));
-  cmd->callback([opt, variant]() {
+  CLI::Option* ground_contact =
+      cmd->add_option("--ground-contact", opt->ground_contact,
+                      "on | off: report where the linear model's ground springs pull the vehicle "
+                      "down (F < 0: beyond its range); reduced model only")
+          ->check(CLI::IsMember({"on", "off"}));
+  cmd->callback([opt, variant, ground_contact]() {
     opt->reduced.check("simulate", opt->model);
+    if (ground_contact->count() > 0 && opt->model == "full")
+      throw InputError(
+          "simulate: --ground-contact applies to --model reduced only (the full "
+          "model is the reference; the reduced model reports ground contact)");
     opt->variant_given = variant->count() > 0;
     run(*opt);
   });

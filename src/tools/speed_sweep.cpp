@@ -1,5 +1,6 @@
 #include "speed_sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -44,6 +45,16 @@ std::vector<double> parseSpeedSweep(const std::string& text) {
     if (!(step > 0)) reject(text, "the step must be positive");
     if (!(last >= first)) reject(text, "LAST must not be below FIRST");
     const double count = std::floor((last - first) / step + 1e-9) + 1;
+    // LAST is the top of the sweep the user asked for: a step that passes it would quietly rate a
+    // lower top speed, so it is refused rather than rounded.
+    const double reached = first + (count - 1) * step;
+    if (count <= static_cast<double>(kMaxSweepSpeeds) &&
+        std::abs(reached - last) > 1e-9 * std::max(1.0, last)) {
+      std::ostringstream m;
+      m << "the step " << step << " from " << first << " does not land on LAST " << last
+        << " (it stops at " << reached << ")";
+      reject(text, m.str());
+    }
     if (count > static_cast<double>(kMaxSweepSpeeds))
       reject(text, "more than " + std::to_string(kMaxSweepSpeeds) + " speeds");
     for (long i = 0; i < static_cast<long>(count); ++i) speeds.push_back(first + static_cast<double>(i) * step);

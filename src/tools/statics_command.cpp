@@ -173,11 +173,15 @@ void run(const StaticsOptions& opt) {
             << model.model.totalMass() << " kg   weight: " << std::setprecision(2) << s.weight / 1e3
             << " kN   solve: " << std::setprecision(3) << seconds << " s\n";
   if (unilateral)
-    std::cout << "contacts: unilateral (pads on the road, wheels on the links, links on the "
-                 "sprockets, idlers and rollers push but cannot pull): "
-              << pads_lifted << " of " << contact.pad_lifted.size() << " pad soles and "
-              << wheels_lifted << " of " << contact.wheel_lifted.size() << " road wheels lifted, "
-              << contact.iterations << (contact.iterations == 1 ? " solve\n" : " solves\n");
+    std::cout << "contacts: unilateral ("
+              << (variant == vehicle::Variant::Tracked
+                      ? "pads on the road, wheels on the links, links on the sprockets, idlers and "
+                        "rollers"
+                      : "pads on the road")
+              << " push but cannot pull): " << pads_lifted << " of " << contact.pad_lifted.size()
+              << " pad soles and " << wheels_lifted << " of " << contact.wheel_lifted.size()
+              << " road wheels lifted, " << contact.iterations
+              << (contact.iterations == 1 ? " solve\n" : " solves\n");
   else
     std::cout << "contacts: bilateral (the linear model: the equilibrium the dynamics start from)\n";
   if (!chain_wheels.empty()) {

@@ -11,12 +11,17 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 /// Contacts beyond the terrain's outermost lines take the edge line's heights (terrain.h). For a
-/// terrain file (`track` not a built-in name) with more than one line, the warning to print when
-/// the contacts reach beyond those lines; a terrain narrower than the vehicle is more often a
-/// mistake than a choice. (The built-in oop_waves, 5 m wide and driven 1 m off centre as in the
-/// paper, leaves the left outer pad row 5.5 cm beyond its edge: README, time domain.)
-std::optional<std::string> terrainCoverageWarning(const std::string& track, const terrain::Terrain& terrain,
-                                                  const dynamics::RoadExcitation& road);
+/// terrain with more than one line, the warning to print when contacts reach beyond those lines
+/// (how many, and how far): for a terrain file always, a terrain narrower than the vehicle being
+/// more often a mistake than a choice; for a built-in track when `lateral_offset` [m] (the
+/// user's --lateral-offset) is not 0 (the built-in oop_waves, 5 m wide and driven 1 m off centre
+/// as in the paper, leaves the left outer pad row 5.5 cm beyond its edge: README, time domain).
+/// Throws InputError naming `track` when every contact lies beyond the same edge (beside the
+/// terrain).
+std::optional<std::string> terrainCoverageWarning(const std::string& track,
+                                                  const terrain::Terrain& terrain,
+                                                  const dynamics::RoadExcitation& road,
+                                                  double lateral_offset);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

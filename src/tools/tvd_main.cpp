@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <string>
 
 #include "commands.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -29,8 +30,20 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help/--version exit 0; every other command-line error is bad input: status 2.
-    return app.exit(e) == 0 ? 0 : 2;
+    // --help/--version exit 0; every other command-line error is bad input: status 2, reported
+    // on one line like every other error (CLI11's own report adds "Run with --help ...").
+    if (e.get_exit_code() == 0)
+      return app.exit(e);
+    std::string message = e.what();
+    if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty() && argc > 1 &&
+        argv[1][0] != '-')
+      message = "unknown subcommand '" + std::string(argv[1]) +
+                "' (one of: modes, statics, mac, reduce, frf, simulate, ride, terrain)";
+    for (char& c : message)
+      if (c == '\n')
+        c = ' ';
+    std::cerr << "tvd: error: " << message << "\n";
+    return 2;
   } catch (const tvd::InputError& e) {
     std::cerr << "tvd: error: " << e.what() << "\n";
     return 2;

@@ -27,7 +27,9 @@ constexpr double kLengthTolerance = 1e-3;
 constexpr double kImplausible = 1e15;
 
 enum class Kind { Real, Integer, RealList, IntegerList, Angle };
-enum class Range { Any, Positive, NonNegative, Fraction };
+// PoissonRatio: (-1, 0.5], outside which an isotropic material has a negative or infinite bulk
+// or shear modulus (as a model file's nu, model_yaml.cpp).
+enum class Range { Any, Positive, NonNegative, Fraction, PoissonRatio };
 
 /// One scalar or list value of the description: where it lives in the file, its unit and range.
 /// The table of fields is the single list that the loader, the validator and the canonical dump
@@ -108,7 +110,8 @@ std::vector<Field> fieldsOf(VehicleDescription& d) {
        &t.pad_sole_mass_fraction},
       {"track_assembly", "pin_diameter", "m", K::Real, R::Positive, &t.pin_diameter},
       {"track_assembly", "steel_young_modulus", "Pa", K::Real, R::Positive, &t.steel_young_modulus},
-      {"track_assembly", "steel_poisson_ratio", "1", K::Real, R::Fraction, &t.steel_poisson_ratio},
+      {"track_assembly", "steel_poisson_ratio", "1", K::Real, R::PoissonRatio,
+       &t.steel_poisson_ratio},
       {"track_assembly", "steel_density", "kg/m^3", K::Real, R::Positive, &t.steel_density},
       {"track_assembly", "link_member_area", "m^2", K::Real, R::Positive, &t.link_member_area},
       {"track_assembly", "link_member_bending_inertia", "m^4", K::Real, R::Positive,
@@ -185,6 +188,8 @@ void checkRange(const io::YamlValue& v, double x, Range range) {
     v.fail("must not be negative, got " + brief(x));
   if (range == Range::Fraction && (x < 0.0 || x > 1.0))
     v.fail("must lie in [0, 1], got " + brief(x));
+  if (range == Range::PoissonRatio && !(x > -1.0 && x <= 0.5))
+    v.fail("Poisson's ratio must lie in (-1, 0.5], got " + brief(x));
 }
 
 /// Reads {value, unit, source} and returns the value node after checking unit and source.
@@ -285,9 +290,11 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   VehicleDescription copy = d;
   for (const Field& f : fieldsOf(copy)) {
     auto bad = [&](double x) {
-      return !std::isfinite(x) || std::abs(x) > kImplausible || (f.range == Range::Positive && !(x > 0.0)) ||
+      return !std::isfinite(x) || std::abs(x) > kImplausible ||
+             (f.range == Range::Positive && !(x > 0.0)) ||
              (f.range == Range::NonNegative && x < 0.0) ||
-             (f.range == Range::Fraction && (x < 0.0 || x > 1.0));
+             (f.range == Range::Fraction && (x < 0.0 || x > 1.0)) ||
+             (f.range == Range::PoissonRatio && !(x > -1.0 && x <= 0.5));
     };
     if (f.kind == Kind::Real || f.kind == Kind::Angle) {
       const double x = *static_cast<double*>(f.target);

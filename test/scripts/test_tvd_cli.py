@@ -672,8 +672,18 @@ class TvdCliTest(unittest.TestCase):
         endless = self.path("endless.csv")
         with open(endless, "w") as f:
             f.write("time_s,speed_kmh\n0,10\n1e300,10\n")
-        r = self.tvd(*common, "--speed-profile", endless, status=INPUT_ERROR_STATUS)
-        self.assertIn("endless.csv: the profile lasts 1e+300 s", r.stderr)
+        # The step limit applies to the steps run: a profile far longer than the track runs to
+        # the track's end (30 m at 10 km/h: 10.8 s) ...
+        d = self.tvd_json(*common, "--speed-profile", endless)
+        self.assertAlmostEqual(d["travelled_m"], 30.0, places=2)
+        self.assertAlmostEqual(d["simulated_seconds"], 10.8, places=2)
+        # ... and one that would not reach it within the limit is refused.
+        stalled = self.path("stalled.csv")
+        with open(stalled, "w") as f:
+            f.write("time_s,speed_kmh\n0,0.001\n1e300,0.001\n")
+        r = self.tvd(*common, "--speed-profile", stalled, status=INPUT_ERROR_STATUS)
+        self.assertIn("stalled.csv: the profile lasts 1e+300 s", r.stderr)
+        self.assertIn("does not reach the track's end", r.stderr)
         self.assertIn("at most 1e+07", r.stderr)
 
     def test_terrain_iso8608_road_and_ride_on_it(self):
@@ -1421,7 +1431,8 @@ class TvdCliTest(unittest.TestCase):
             self.assert_input_error(cmd + ["--reduced", mat, "--rule", "mac"], "--rule is a reduction")
             self.assert_input_error(cmd + ["--model", "full", "--masters", "4"],
                                     f"{name}: --masters applies to --model reduced only")
-            self.assert_input_error(cmd + ["--reduced", mat, "--variant", "tracked"],
+            # (without --cache-dir, which --reduced refuses)
+            self.assert_input_error(cmd[:3] + ["--reduced", mat, "--variant", "tracked"],
                                     f"{name}: --reduced {mat} is the untracked variant, --variant "
                                     "is tracked")
             self.assert_input_error(cmd + ["--reduced", self.path("none.mat")], "--reduced",
@@ -1502,7 +1513,7 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", self.path("r.csv")],
                                 "must end in .mat")
         self.assert_input_error(["frf", "--vehicle", VEHICLE, "--model", "full",
-                                 "--max-mode-hz", "1e5"], "--max-mode-hz", "[0, 100] Hz")
+                                 "--max-mode-hz", "1e5"], "--max-mode-hz", "(0, 100] Hz")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "100000"], "--count")
         # Output directories of modes and mac: checked before the solve, not after it.
         a_file = self.path("a_file")
@@ -1745,6 +1756,213 @@ class TvdCliTest(unittest.TestCase):
             f.write("nodes:\n  - {id: 1, x: [0, 0, 0]}\nsprings:\n  - {nodes: [1, ground], kz: 1e4}\n")
         self.assert_input_error(["modes", "--model", model], "no_mass.yaml", "node 1 uz",
                                 "no mass or inertia")
+
+    # --- acceptance findings (findings.md #2-#12) ---
+
+    def run_limited(self, args, max_bytes):
+        """tvd with a file-size limit of `max_bytes` (a full disk: writes past it fail with EFBIG,
+        SIGXFSZ ignored)."""
+        import resource
+        import signal
+
+        def limit():
+            signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+            resource.setrlimit(resource.RLIMIT_FSIZE, (max_bytes, max_bytes))
+        return subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240,
+                              preexec_fn=limit)
+
+    def test_output_files_are_written_whole_or_not_at_all(self):
+        """#2: a CSV through a symlink to /dev/full is replaced by the whole file (as a .mat);
+        a write that fails exits non-zero naming the file and leaves none of the command's
+        files, nor a temporary one."""
+        model = os.path.join(ROOT, "config", "models", "cantilever_beam.yaml")
+        d = self.path("full_disk")
+        os.makedirs(d)
+        for name in ("modes.csv", "shapes.csv"):
+            os.symlink("/dev/full", os.path.join(d, name))
+        self.tvd("modes", "--model", model, "--out", d)
+        for name in ("modes.csv", "shapes.csv"):
+            path = os.path.join(d, name)
+            self.assertFalse(os.path.islink(path))
+            with open(path) as f:
+                self.assertGreater(len(f.read().splitlines()), 1, name)
+        # modes.csv (< 2 kB) fits under the limit, shapes.csv does not.
+        d = self.path("limited")
+        os.makedirs(d)
+        r = self.run_limited(["modes", "--model", model, "--out", d], 2000)
+        self.assertEqual(r.returncode, INPUT_ERROR_STATUS, r.stderr)
+        self.assertIn("shapes.csv", r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        self.assertEqual(os.listdir(d), [])
+        # mac --out: mac.mat is written first; when mac.csv cannot be, mac.mat goes too.
+        d = self.path("mac_fails")
+        os.makedirs(os.path.join(d, "mac.csv"))  # a directory: the rename onto it fails
+        r = self.tvd("mac", "--vehicle", VEHICLE, "--out", d, status=INPUT_ERROR_STATUS)
+        self.assertIn("mac.csv", r.stderr)
+        self.assertEqual(os.listdir(d), ["mac.csv"])
+        # writeTable's CSV (simulate --out): nothing under the name when it fails.
+        out = self.path("limited_sim.csv")
+        r = self.run_limited(["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                              "long_hill", "--cache-dir", self.cache, "--out", out], 1 << 20)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("limited_sim.csv", r.stderr)
+        self.assertEqual([f for f in os.listdir(self.work) if f.startswith("limited_sim")], [])
+
+    def test_global_modes_limit_is_named(self):
+        """#3: --global-modes above 200 takes minutes; refused with the limit and why."""
+        for command in ("reduce", "frf", "simulate"):
+            args = [command, "--vehicle", VEHICLE, "--global-modes", "201"]
+            if command == "simulate":
+                args += ["--track", "long_hill"]
+            r = self.tvd(*args, status=INPUT_ERROR_STATUS)
+            self.assertIn("[1, 200], got 201", r.stderr)
+            self.assertIn("minutes", r.stderr)
+            self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+
+    def test_options_without_effect_are_refused(self):
+        """#4: README: an option that would be ignored is refused."""
+        model = self.path("ignored.mat")
+        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                 "--out", model)
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "long_hill"]
+        self.assert_input_error(sim + ["--reduced", model, "--cache-dir", self.cache],
+                                "--cache-dir is not used with --reduced")
+        self.assert_input_error(sim + ["--model", "full", "--ground-contact", "on"],
+                                "--ground-contact applies to --model reduced only")
+        self.assert_input_error(["modes", "--vehicle", VEHICLE, "--out", ""],
+                                "--out", "must name a directory")
+        chain = os.path.join(ROOT, "config", "models", "spring_mass_chain.yaml")
+        self.assert_input_error(["modes", "--model", chain, "--max-frequency", "0"],
+                                "--max-frequency", "must be a positive number")
+        ride = ["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "half_round:0.1",
+                "--cache-dir", self.cache]
+        frf = ["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache]
+        for command in (ride, frf):
+            for points in ("", "crew_seat,", ",crew_seat", "crew_seat,,sensor_mount"):
+                self.assert_input_error(command + ["--points", points],
+                                        "--points: an empty name in '" + points + "'")
+
+    def test_frf_grid_has_two_frequencies_and_ends_at_max(self):
+        """#5: step > max is refused; a max that is not a multiple of the step is the last point."""
+        frf = ["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache]
+        self.assert_input_error(frf + ["--step-hz", "100"],
+                                "--step-hz 100 is larger than --max-hz 50", "at least 2 frequencies")
+        out = self.path("grid.csv")
+        self.tvd(*frf, "--max-hz", "1", "--step-hz", "0.07", "--out", out)
+        header, body = read_csv(out)
+        hz = body[:, header.index("frequency_hz")]
+        self.assertEqual(len(hz), 16)
+        self.assertAlmostEqual(hz[-2], 0.98, places=12)
+        self.assertEqual(hz[-1], 1.0)
+
+    def test_lateral_offset_off_a_built_in_track(self):
+        """#6: an offset that puts contacts beyond a built-in track's edge is warned about (how
+        many, how far); one that puts every contact off it is refused."""
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache,
+               "--track"]
+        r = self.tvd(*sim, "long_hill", "--lateral-offset", "2", "--json")
+        warnings = json.loads(r.stdout)["warnings"]
+        self.assertEqual(len(warnings), 1, warnings)
+        self.assertRegex(warnings[0], r"\d+ of \d+ contacts lie outside, up to [0-9.]+ m beyond")
+        self.assertIn("--lateral-offset 2 m", warnings[0])
+        self.assertIn("tvd: warning: ", r.stderr)
+        self.assert_input_error(sim + ["oop_waves", "--lateral-offset", "10"],
+                                "oop_waves: every contact", "lies off the terrain",
+                                "--lateral-offset 10 m")
+        self.assert_input_error(sim + ["long_hill", "--lateral-offset", "1e6"],
+                                "long_hill: every contact")
+
+    def test_unusable_cache_is_reported(self):
+        """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
+        with a note."""
+        bad = self.path("cache_is_a_file")
+        with open(bad, "w") as f:
+            f.write("not a directory\n")
+        base = ["frf", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                "--max-hz", "5", "--json"]
+        r = self.tvd(*base, "--cache-dir", bad)
+        reduction = json.loads(r.stdout)["reduction"]
+        self.assertEqual(len(reduction["warnings"]), 1, reduction)
+        self.assertIn("the reduced-model cache is not used", reduction["warnings"][0])
+        self.assertIn("cache_is_a_file", reduction["warnings"][0])
+        self.assertEqual(r.stderr.count("tvd: warning: the reduced-model cache is not used"), 1)
+        cache = self.path("corrupt_cache")
+        first = json.loads(self.tvd(*base, "--cache-dir", cache).stdout)["reduction"]
+        self.assertEqual(first["notes"], [])
+        with open(first["file"], "r+b") as f:
+            f.seek(200)
+            f.write(b"\\x00" * 64)
+        r = self.tvd(*base, "--cache-dir", cache)
+        again = json.loads(r.stdout)["reduction"]
+        self.assertEqual(again["source"], "computed")
+        self.assertEqual(len(again["notes"]), 1, again)
+        self.assertIn("rebuilt", again["notes"][0])
+        self.assertIn("tvd: note: rebuilt", r.stderr)
+
+    def test_messages_name_what_is_wrong(self):
+        """#10: unknown subcommand, a .mat that is not a reduced model, ranges as accepted, one
+        line with the tvd: error: prefix for option checks."""
+        r = self.tvd("foo", status=INPUT_ERROR_STATUS)
+        self.assertIn("tvd: error: unknown subcommand 'foo'", r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        r = self.tvd("simulate", "--vehicle", VEHICLE, "--track", "long_hill", "--dt", "0",
+                     status=INPUT_ERROR_STATUS)
+        self.assertTrue(r.stderr.startswith("tvd: error: "), r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        frf_mat = self.path("not_reduced.mat")
+        self.tvd("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache,
+                 "--max-hz", "2", "--out", frf_mat)
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--track", "long_hill",
+                                 "--reduced", frf_mat], "not a reduced model file")
+        for threshold in ("0", "1.1"):
+            self.assert_input_error(["mac", "--vehicle", VEHICLE, "--threshold", threshold],
+                                    "--threshold", "must be a number in (0, 1]")
+        self.assertIn("in (0, 1]", self.tvd("mac", "--help").stdout)
+        for hz in ("0", "200"):
+            self.assert_input_error(["frf", "--vehicle", VEHICLE, "--model", "full",
+                                     "--max-mode-hz", hz], "must be a number in (0, 100] Hz")
+        r = self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                     "--band", "0.1", status=INPUT_ERROR_STATUS)
+        self.assertIn("no global mode selected below 0.1 Hz", r.stderr)
+        self.assertNotIn("MAC threshold", r.stderr)
+
+    def test_cut_eigenspace_is_warned(self):
+        """#1: the default 40 global modes cut the un-tracked 12-fold eigenspace at 107.72 Hz
+        after 6 modes: the reduction says so, with the counts that would not cut it."""
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked")
+        warnings = d["reduction"]["warnings"]
+        self.assertEqual(len(warnings), 1, warnings)
+        self.assertIn("global_modes 40 cuts a repeated eigenvalue of the untracked variant: 6 of "
+                      "its 12 modes at 107.721 Hz", warnings[0])
+        self.assertIn("34 or 46 global modes would not cut it", warnings[0])
+        # At 46 the solver returns 11 of the 12 (and the next mode): also said.
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
+                          "--global-modes", "46")
+        self.assertIn("returns 1 mode(s) of the untracked variant below 107.735 Hz too few",
+                      d["reduction"]["warnings"][0])
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
+                          "--global-modes", "48")
+        self.assertEqual(d["reduction"]["warnings"], [])
+
+    def test_poisson_ratio_and_speed_range_are_checked(self):
+        """#12: a Poisson ratio outside (-1, 0.5] is refused naming the key; a --speeds range
+        whose step does not land on LAST is refused."""
+        nu = self.vehicle_with("nu.yaml", "steel_poisson_ratio: {value: 0.29",
+                               "steel_poisson_ratio: {value: 0.6")
+        self.assert_input_error(["modes", "--vehicle", nu], "steel_poisson_ratio",
+                                "(-1, 0.5], got 0.6")
+        self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                                 "half_round:0.1", "--speeds", "5:7:3"],
+                                "--speeds '5:7:3'", "does not land on LAST 7")
+
+    def test_text_output_fits_the_run(self):
+        """#11: the un-tracked statics do not mention chain links; one ride run is '1 run'."""
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
+        self.assertIn("contacts: unilateral (pads on the road push but cannot pull)", text)
+        self.assertNotIn("sprockets", text)
+        text = self.tvd("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                        "half_round:0.1", "--speeds", "10", "--cache-dir", self.cache).stdout
+        self.assertIn("  1 run, ", text)
 
 
 if __name__ == "__main__":

@@ -22,8 +22,8 @@ fem::Model parseModelYaml(const std::string& text, const std::string& where);
 
 /// Writes every item of `model` so that loadModelYaml(path) reproduces it exactly (numbers in
 /// shortest round-trip form; keys equal to their default are left out). The model is not
-/// validated, so an invalid one can still be written for inspection. Throws Error when the
-/// file cannot be written.
+/// validated, so an invalid one can still be written for inspection. Written through a temporary
+/// file and a rename; throws InputError (an Error) when the file cannot be written.
 void saveModelYaml(const fem::Model& model, const std::string& path);
 
 /// The YAML text saveModelYaml() writes.

@@ -46,7 +46,8 @@ Terrain loadTerrain(const std::string& path);
 Terrain loadTrack(const std::string& track, const TrackOptions& options = {});
 
 /// Writes `terrain` as CSV (17 significant digits: a save/load round trip is exact).
-/// Throws InputError when the file cannot be written.
+/// Written through a temporary file and a rename (io::AtomicTextFile); throws InputError when the
+/// file cannot be written, leaving no partial file.
 void saveTerrainCsv(const Terrain& terrain, const std::string& path);
 /// Writes `terrain` as YAML (17 significant digits). Throws InputError when it cannot be written.
 void saveTerrainYaml(const Terrain& terrain, const std::string& path);

@@ -1,0 +1,38 @@
+// A text output file written all or nothing: a full disk or an exception never leaves a partial
+// file under the final name (as MatWriter does for .mat files).
+#pragma once
+
+#include <fstream>
+#include <string>
+
+namespace tracked_vehicle_dynamics {
+namespace io {
+
+/// Writes text to a temporary file next to `path` (same directory, so the rename is atomic on
+/// POSIX file systems); commit() checks the stream and renames it onto `path`. Without a
+/// successful commit() the temporary file is removed and `path` is left as it was.
+class AtomicTextFile {
+ public:
+  /// Throws InputError naming `path` when the temporary file cannot be created.
+  explicit AtomicTextFile(const std::string& path);
+  ~AtomicTextFile();
+  AtomicTextFile(const AtomicTextFile&) = delete;
+  AtomicTextFile& operator=(const AtomicTextFile&) = delete;
+
+  std::ostream& stream() { return out_; }
+  /// Flushes and closes the file, checks every write succeeded, renames it onto `path`. Throws
+  /// InputError naming `path` (and the reason, e.g. "No space left on device") when a write or
+  /// the rename failed; the temporary file is removed then.
+  void commit();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::string temporary_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+}  // namespace io
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,59 @@
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace io {
+
+namespace {
+// errno after a failed stream operation is what the last system call left: the best reason there
+// is (ENOSPC, EFBIG, EIO), or none.
+std::string reason(int error) {
+  return error ? std::string(": ") + std::strerror(error) : "";
+}
+}  // namespace
+
+AtomicTextFile::AtomicTextFile(const std::string& path)
+    : path_(path), temporary_(path + ".tmp" + std::to_string(::getpid())) {
+  errno = 0;
+  out_.open(temporary_, std::ios::out | std::ios::trunc);
+  if (!out_)
+    throw InputError("cannot write " + path_ + reason(errno) +
+                     " (directory missing or not writable?)");
+}
+
+AtomicTextFile::~AtomicTextFile() {
+  if (committed_)
+    return;
+  out_.close();
+  std::remove(temporary_.c_str());
+}
+
+void AtomicTextFile::commit() {
+  errno = 0;
+  out_.flush();
+  const int flush_error = errno;
+  out_.close();
+  const int error = flush_error ? flush_error : errno;
+  if (!out_) {
+    std::remove(temporary_.c_str());
+    committed_ = true;  // nothing left to clean up
+    throw InputError("cannot write " + path_ + reason(error) + "; no file written");
+  }
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+    const int rename_error = errno;
+    std::remove(temporary_.c_str());
+    committed_ = true;
+    throw InputError("cannot move the written file onto " + path_ + reason(rename_error));
+  }
+  committed_ = true;
+}
+
+}  // namespace io
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,99 @@
+// io::AtomicTextFile: a text file appears complete under its name or not at all.
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "expect_input_error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
+
+namespace tracked_vehicle_dynamics {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string readAll(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int fileCount(const fs::path& dir) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(dir))
+    n += entry.exists() ? 1 : 0;
+  return n;
+}
+
+class AtomicTextFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("tvd_atomic_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+TEST_F(AtomicTextFileTest, CommitPutsTheWholeFileUnderItsName) {
+  const fs::path path = dir_ / "a.csv";
+  io::AtomicTextFile file(path.string());
+  file.stream() << "x,y\n1,2\n";
+  EXPECT_FALSE(fs::exists(path));  // nothing under the final name before commit()
+  file.commit();
+  EXPECT_EQ(readAll(path), "x,y\n1,2\n");
+  EXPECT_EQ(fileCount(dir_), 1);  // no temporary file left
+}
+
+TEST_F(AtomicTextFileTest, WithoutCommitTheOldFileStaysAndNothingIsLeft) {
+  const fs::path path = dir_ / "a.csv";
+  std::ofstream(path) << "old\n";
+  {
+    io::AtomicTextFile file(path.string());
+    file.stream() << "new, but abandoned (an exception before commit)\n";
+  }
+  EXPECT_EQ(readAll(path), "old\n");
+  EXPECT_EQ(fileCount(dir_), 1);
+}
+
+TEST_F(AtomicTextFileTest, MissingDirectoryIsNamed) {
+  const std::string path = (dir_ / "missing" / "a.csv").string();
+  expectInputError([&] { io::AtomicTextFile file(path); }, {"cannot write", path});
+}
+
+// A full disk, simulated by a file-size limit (writes past it fail with EFBIG once SIGXFSZ is
+// ignored): commit() throws naming the file, the old file is kept and no temporary is left.
+TEST_F(AtomicTextFileTest, FailedWriteThrowsAndLeavesNoPartialFile) {
+  const fs::path path = dir_ / "big.csv";
+  std::ofstream(path) << "old\n";
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit limited = saved;
+  limited.rlim_cur = 4096;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
+  std::string message;
+  try {
+    io::AtomicTextFile file(path.string());
+    for (int i = 0; i < 10000; ++i)
+      file.stream() << "0123456789\n";
+    file.commit();
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous_handler);
+  EXPECT_NE(message.find("cannot write " + path.string()), std::string::npos) << message;
+  EXPECT_EQ(readAll(path), "old\n");
+  EXPECT_EQ(fileCount(dir_), 1);
+}
+
+}  // namespace
+}  // namespace tracked_vehicle_dynamics
