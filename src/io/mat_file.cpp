@@ -300,14 +300,17 @@ const matvar_t* MatReader::header(const std::string& name, bool with_data) const
 
 namespace {
 
-// The text of a char variable (or cell element); empty numeric arrays count as ''.
+// The text of a char variable (or cell element); an empty double array ([]) counts as ''.
 std::string charData(const matvar_t* var, const std::string& where) {
   const std::size_t rows = var->rank >= 1 ? var->dims[0] : 0;
   const std::size_t cols = var->rank >= 2 ? var->dims[1] : 0;
+  // An empty text may come as '' (0 x 0 char) or, from MATLAB, as []; an empty cell or struct
+  // is not a text (an empty list of warnings must not read as one empty string).
+  const bool empty_double = rows * cols == 0 && var->class_type == MAT_C_DOUBLE;
+  if (var->class_type != MAT_C_CHAR && !empty_double)
+    throw InputError(where + " is not a character array");
   if (rows * cols == 0)
     return {};
-  if (var->class_type != MAT_C_CHAR)
-    throw InputError(where + " is not a character array");
   if (var->rank != 2 || rows != 1)
     throw InputError(where + " is a " + dims(rows, cols) + " character array, expected one row");
   if (!var->data)

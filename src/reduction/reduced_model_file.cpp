@@ -109,7 +109,8 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
       numeric("fixed_interface_frequencies_hz", column(model.fixed_interface_frequencies_hz)),
       numeric("selected_mode_numbers", std::move(numbers)),
       numeric("selected_mode_frequencies_hz", std::move(frequencies)),
-      texts("selected_mode_reasons", reasons)};
+      texts("selected_mode_reasons", reasons),
+      texts("reduction_warnings", model.warnings)};
 }
 
 // FNV-1a, 64 bit: not cryptographic, but any changed, missing or reordered byte changes it.
@@ -312,6 +313,7 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
     model.selected_modes.push_back(SelectedMode{static_cast<int>(number) - 1, frequencies(i),
                                                 reasons[static_cast<std::size_t>(i)]});
   }
+  model.warnings = in.readStrings("reduction_warnings");
   checkConsistency(model, where, options.symmetry_tolerance);
   const std::string stored = in.readString("checksum");
   const std::string computed = checksum(toVariables(model));

@@ -136,6 +136,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   if (options.mogesec_masters < 0) throw InputError("reduction: mogesec_masters must not be negative");
   VehicleReductionReport local;
   VehicleReductionReport& rep = report ? *report : local;
+  rep.warnings.clear();
   const auto start = Clock::now();
 
   // 1. The full model and its global modes.
@@ -177,7 +178,6 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
                                   vehicle::physicalShapes(other.system, common, other.modes.shapes),
                                   other.modes.frequencies_hz);
     reference.frequencies_hz = other.modes.frequencies_hz;
-    rep.warnings.clear();
     warnIfCut(model, variant, options.global_modes, &rep.warnings);
     warnIfCut(other, other_variant, options.global_modes, &rep.warnings);
     selection_options.rule = ModeSelectionRule::Correlation;
@@ -256,6 +256,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   // Where each input reads the road: its node's station, or its pad's centre (description).
   request.input_stations = vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
   ReducedModel reduced = buildReducedModel(model.system, request);
+  reduced.warnings = rep.warnings;  // saved with it: a cached model warns again when loaded
   rep.reduce_seconds = secondsSince(reduce_start);
   rep.flexible_modes = static_cast<int>(reduced.modeCount());
   rep.reduced_dofs = reduced.size();
@@ -371,6 +372,7 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
       rep.reduced_dofs = cached.size();
       rep.full_dofs = cached.full_dof_count;
       rep.flexible_modes = static_cast<int>(cached.modeCount());
+      rep.warnings = cached.warnings;
       rep.total_seconds = secondsSince(start);
       return cached;
     } catch (const StaleCacheError& e) {

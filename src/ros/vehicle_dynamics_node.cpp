@@ -206,6 +206,10 @@ void VehicleDynamicsNode::loadVehicle() {
     model_inputs_ = model.system.inputCount();
     model_outputs_ = model.system.outputCount();
     model_damping_ = model.damping;
+    // Saved with the model, so a cached or given model warns as the run that reduced it did
+    // (e.g. a ~reduction/global_modes that cuts a repeated eigenvalue).
+    for (const std::string& warning : model.warnings)
+      ROS_WARN("vehicle_dynamics_node: reduction: %s", warning.c_str());
   } catch (const Error& e) {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }

@@ -254,7 +254,7 @@ void run(const FrfOptions& opt) {
   }
   std::cout << vehicle::variantName(variant) << " vehicle, " << source << " model (" << dofs
             << " DOFs), "
-            << (opt.speed_kmh > 0 ? "travelled at " + std::to_string(opt.speed_kmh) + " km/h"
+            << (opt.speed_kmh > 0 ? "travelled at " + brief(opt.speed_kmh) + " km/h"
                                   : std::string("synchronous excitation"))
             << ", 0-" << hz(hz.size() - 1) << " Hz\n";
   if (reduced)

@@ -105,6 +105,10 @@ void ReducedModelFlags::check(const std::string& command, const std::string& mod
   if (cache_dir_option_->count() > 0 && !reduced_file_.empty())
     throw InputError(command + ": --cache-dir is not used with --reduced " + reduced_file_ +
                      " (the model comes from the file)");
+  if (cache_dir_option_->count() > 0 && model == "full")
+    throw InputError(command +
+                     ": --cache-dir applies to --model reduced only (the full model is "
+                     "built from the description on every run)");
   reduction_.options(command);  // --mac-threshold with --rule band
 }
 
@@ -134,6 +138,7 @@ ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& descriptio
     s.model = std::move(loaded.model);
     s.variant = loaded.variant;
     s.options = loaded.options;
+    s.warnings = s.model.warnings;  // as the run that reduced it warned
   } catch (const reduction::StaleCacheError& e) {
     throw InputError(e.what() + again);
   }
@@ -144,13 +149,25 @@ ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& descriptio
   return s;
 }
 
+// The warnings and notes on stderr (the text and JSON outputs carry them too).
+void printWarnings(const ReducedModelSource& s) {
+  for (const std::string& w : s.warnings)
+    std::cerr << "tvd: warning: " << w << "\n";
+  for (const std::string& n : s.notes)
+    std::cerr << "tvd: note: " << n << "\n";
+}
+
 }  // namespace
 
 ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& description,
                                       vehicle::Variant variant, bool variant_given,
                                       const std::string& command, const ReducedModelFlags& flags) {
-  if (!flags.reducedFile().empty())
-    return loadReducedFile(description, variant, variant_given, command, flags.reducedFile());
+  if (!flags.reducedFile().empty()) {
+    ReducedModelSource s =
+        loadReducedFile(description, variant, variant_given, command, flags.reducedFile());
+    printWarnings(s);
+    return s;
+  }
   ReducedModelSource s;
   s.variant = variant;
   s.options = flags.reduction().options(command);
@@ -169,10 +186,7 @@ ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& descrip
     s.file = report.cache_file;
   if (report.cache_rebuilt)
     s.notes.push_back(report.cache_note);
-  for (const std::string& w : s.warnings)
-    std::cerr << "tvd: warning: " << w << "\n";
-  for (const std::string& n : s.notes)
-    std::cerr << "tvd: note: " << n << "\n";
+  printWarnings(s);
   return s;
 }
 

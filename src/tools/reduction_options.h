@@ -51,7 +51,8 @@ class ReducedModelFlags {
   void addTo(CLI::App* command);
 
   /// Throws InputError (naming `command` and the flags) when --reduced is given with --model
-  /// full, with a reduction flag or with --cache-dir, or a reduction flag with --model full.
+  /// full, with a reduction flag or with --cache-dir, or a reduction flag or --cache-dir with
+  /// --model full.
   void check(const std::string& command, const std::string& model) const;
 
   const ReductionFlags& reduction() const { return reduction_; }
@@ -73,7 +74,8 @@ struct ReducedModelSource {
   std::string file;  ///< the cache file (when it was written or read) or the --reduced file
   vehicle::Variant variant = vehicle::Variant::Tracked;
   reduction::VehicleReductionOptions options;  ///< as the model was reduced
-  /// What the reduction warned about (computed models only: VehicleReductionReport::warnings).
+  /// What the reduction warned about (VehicleReductionReport::warnings; for a model from the
+  /// cache or a file, the warnings of the run that reduced it, ReducedModel::warnings).
   std::vector<std::string> warnings;
   /// E.g. that a stale or corrupt cache file was rebuilt.
   std::vector<std::string> notes;

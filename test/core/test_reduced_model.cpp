@@ -82,6 +82,8 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
   EXPECT_THROW(in.readMatrix("missing"), InputError);
   EXPECT_THROW(in.readMatrix("text"), InputError);
   EXPECT_THROW(in.readString("A"), InputError);
+  EXPECT_EQ(in.readString("empty"), "");                // MATLAB's [] as an empty text
+  EXPECT_THROW(in.readString("no_names"), InputError);  // an empty cell is not a text
   EXPECT_THROW(in.readStrings("names", 2), InputError);
   std::remove(path.c_str());
 }
@@ -267,6 +269,41 @@ TEST_F(ReducedModelFileTest, SaveLoadRoundTripIsExact) {
   EXPECT_EQ(loaded.created_utc, model_.created_utc);
   EXPECT_EQ(loaded.creator, "test_reduced_model");
   EXPECT_EQ(loaded.full_dof_count, model_.full_dof_count);
+}
+
+// A cached model warns as the run that reduced it did (reduction::modeCountCut's warnings): the
+// warnings are saved, read back in order and covered by the checksum.
+TEST_F(ReducedModelFileTest, WarningsAreSavedCheckedAndReadBack) {
+  EXPECT_TRUE(model_.warnings.empty());
+  EXPECT_TRUE(loadReducedModel(path_, kHash).warnings.empty());  // a 0 x 1 cell
+  ReducedModel warned = model_;
+  warned.warnings = {"global_modes 40 cuts a repeated eigenvalue", "second, with a comma"};
+  saveReducedModel(warned, path_);
+  EXPECT_EQ(loadReducedModel(path_, kHash).warnings, warned.warnings);
+  // The same file with one warning dropped and the old checksum: refused.
+  const io::MatReader in(path_);
+  const std::string other = tempPath("edited_warnings.mat");
+  {
+    io::MatWriter out(other);
+    for (const std::string& name : in.names()) {
+      if (name == "reduction_warnings") {
+        out.writeStrings(name, {warned.warnings[0]});
+        continue;
+      }
+      try {
+        out.writeMatrix(name, in.readMatrix(name));
+      } catch (const InputError&) {
+        try {
+          out.writeString(name, in.readString(name));
+        } catch (const InputError&) {
+          out.writeStrings(name, in.readStrings(name));
+        }
+      }
+    }
+    out.close();
+  }
+  expectStale(other, kHash, "checksum");
+  std::remove(other.c_str());
 }
 
 TEST_F(ReducedModelFileTest, DifferentHashIsStale) {

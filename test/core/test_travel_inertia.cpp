@@ -9,7 +9,14 @@
 //    surges the hull forward relative to the path frame;
 //  - in time, under constant braking on a flat road, the hull pitch settles to a times the static
 //    pitch per unit a, and the relative x acceleration to 0;
-//  - the travel load reduces like gravity (T^T f_a).
+//  - the travel load reduces like gravity (T^T f_a);
+//  - braking moves the vertical ground load forward by the inertia moment: with every contact on
+//    the ground plane z0, moments about the y axis through the origin at z0 give
+//      sum_i x_i F_i = -a sum_j m_j (z_j - z0) = -a m h_G,
+//    F_i the contact forces (compression positive) recovered from the reduced model as simulate
+//    and the node recover them (dynamics::contactForces), the right side summed independently
+//    over the FE model's masses and beams (m (z + offset_z) and rho A L at the beam's mid-height:
+//    the consistent beam mass carries a uniform beam's rigid-body inertia exactly).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +25,7 @@
 #include <memory>
 #include <string>
 
+#include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
@@ -200,6 +208,62 @@ TEST_P(TravelInertiaOfVehicle, ReducedStaticResponseMatchesTheFullModel) {
   }
   // Reduced like gravity: the total x load is still -m (the masters carry the rigid translation).
   EXPECT_GT(m.travel_load.norm(), 0.0);
+}
+
+// sum_j m_j (z_j - z0) over the FE model's masses and beams [kg m].
+double massMomentAbove(const fem::Model& model, double z0) {
+  const auto index = model.nodeIndex();
+  const auto z = [&](NodeId id) { return model.nodes[index.at(id)].position.z(); };
+  double moment = 0.0;
+  for (const fem::Mass& mass : model.masses)
+    moment += mass.mass * (z(mass.node) + mass.offset.z() - z0);
+  for (const fem::Beam& beam : model.beams) {
+    const Vector3 a = model.nodes[index.at(beam.n1)].position;
+    const Vector3 b = model.nodes[index.at(beam.n2)].position;
+    const double m = model.findMaterial(beam.material)->density *
+                     model.findSection(beam.section)->area * (b - a).norm();
+    moment += m * (0.5 * (a.z() + b.z()) - z0);
+  }
+  return moment;
+}
+
+TEST_P(TravelInertiaOfVehicle, BrakingMovesTheVerticalGroundLoadForwardByTheInertiaMoment) {
+  const Full& f = full(GetParam());
+  const reduction::ReducedModel& m = reduced(GetParam());
+  const std::vector<vehicle::RoadInput>& inputs = f.model.layout.road_inputs;
+  ASSERT_EQ(static_cast<DofIndex>(inputs.size()), m.system.inputCount());
+  // The ground plane: every contact (sole) on it, so the horizontal ground springs, at z0, add
+  // no moment about an axis at z0.
+  const auto index = f.model.model.nodeIndex();
+  const double z0 = f.model.model.nodes[index.at(inputs.front().node)].position.z();
+  for (const vehicle::RoadInput& input : inputs)
+    ASSERT_NEAR(f.model.model.nodes[index.at(input.node)].position.z(), z0, 1e-12);
+  const double h_g = massMomentAbove(f.model.model, z0) / f.mass;
+  // The hull's CoG is 1.57 m up (Table 1); wheels and chain sit lower.
+  EXPECT_GT(h_g, 0.3);
+  EXPECT_LT(h_g, 1.57);
+
+  // The reduced model at rest on a flat road under a alone (u = u' = 0): K_R q = a f_a.
+  const Vector q = kBraking * m.system.stiffness.ldlt().solve(m.travel_load);
+  const std::vector<dynamics::GroundContact> contacts = dynamics::groundContacts(m.system);
+  const DofIndex n_u = m.system.inputCount();
+  Vector state = Vector::Zero(2 * m.size());
+  state.head(m.size()) = q;
+  Vector forces(static_cast<Eigen::Index>(contacts.size()));
+  dynamics::contactForces(contacts, state, Vector::Zero(2 * n_u), n_u, forces, "test");
+  double sum = 0.0, moment = 0.0;
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const double force = forces(static_cast<Eigen::Index>(c));
+    sum += force;
+    moment += inputs[static_cast<std::size_t>(contacts[c].input)].x * force;
+  }
+  const double expected = -kBraking * f.mass * h_g;  // > 0: the load moves forward
+  EXPECT_LT(std::abs(sum), kBalanceTolerance * f.mass * std::abs(kBraking))
+      << "no vertical resultant";
+  EXPECT_NEAR(moment, expected, kBalanceTolerance * std::abs(expected));
+  std::cout << vehicle::variantName(GetParam()) << " at " << kBraking << " m/s^2: h_G " << h_g
+            << " m above the ground, sum x_i F_i " << moment << " N m (m a h_G " << expected
+            << ")\n";
 }
 
 TEST_P(TravelInertiaOfVehicle, ConstantBrakingSettlesToTheStaticPitch) {

@@ -473,8 +473,8 @@ class TvdCliTest(unittest.TestCase):
         with open(off) as f:
             off_lines = [line.rstrip("\n") for line in f]
         self.assertEqual(on_lines, off_lines)
-        d = self.tvd_json(*common, "--track", "long_hill", "--speed-kmh", "30", "--model", "full",
-                          "--max-mode-hz", "40")
+        d = self.tvd_json(*common[:-2], "--track", "long_hill", "--speed-kmh", "30", "--model",
+                          "full", "--max-mode-hz", "40")  # common[:-2]: without --cache-dir
         self.assertFalse(d["ground_contact"]["monitored"])
         self.assertIn("reduced model only", d["ground_contact"]["reason"])
 
@@ -1293,7 +1293,7 @@ class TvdCliTest(unittest.TestCase):
     def test_frf_points_bad_names_are_refused(self):
         renamed = self.vehicle_with("renamed_seat.yaml", "\n  crew_seat:", "\n  driver_seat:")
         cache = self.path("cache_points_refused")
-        frf = ["frf", "--variant", "untracked", "--cache-dir", cache]
+        frf = ["frf", "--variant", "untracked"]
         cases = [
             ([VEHICLE, "--points", "crew_seat,turret"],
              "unknown point 'turret' (the description has: crew_seat, sensor_mount)"),
@@ -1308,7 +1308,9 @@ class TvdCliTest(unittest.TestCase):
              "unknown point 'crew_seat' (the description has: driver_seat, sensor_mount)"),
         ]
         for args, message in cases:
-            result = self.tvd(*frf, "--vehicle", *args, status=INPUT_ERROR_STATUS)
+            # --cache-dir is refused with --model full.
+            cached = [] if "--model" in args else ["--cache-dir", cache]
+            result = self.tvd(*frf, *cached, "--vehicle", *args, status=INPUT_ERROR_STATUS)
             self.assertEqual(result.stdout, "")
             lines = result.stderr.strip().splitlines()
             self.assertEqual(len(lines), 1, result.stderr)
@@ -1490,6 +1492,10 @@ class TvdCliTest(unittest.TestCase):
                                 "--max-mode-hz applies to --method modal only")
         self.assert_input_error(["frf", "--vehicle", VEHICLE, "--max-mode-hz", "50",
                                  "--cache-dir", self.cache], "--max-mode-hz applies to --model full")
+        for command in (["frf"], ["simulate", "--track", "long_hill", "--speed-kmh", "10"]):
+            self.assert_input_error([*command, "--vehicle", VEHICLE, "--model", "full",
+                                     "--cache-dir", self.cache],
+                                    "--cache-dir applies to --model reduced only")
         self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--rule", "band",
                                  "--mac-threshold", "0.8"], "--mac-threshold applies to --rule mac")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--count", "0"], "--count")
@@ -1935,6 +1941,19 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("global_modes 40 cuts a repeated eigenvalue of the untracked variant: 6 of "
                       "its 12 modes at 107.721 Hz", warnings[0])
         self.assertIn("34 or 46 global modes would not cut it", warnings[0])
+        # Saved with the model: a --reduced file and a cached model warn again, as the run that
+        # reduced them did (the cache's second run loads the model the first one built).
+        mat = self.path("cut_eigenspace.mat")
+        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", mat)
+        cache = self.path("cut_eigenspace_cache")
+        for args, source in ((("--reduced", mat), "file"), (("--cache-dir", cache), "computed"),
+                             (("--cache-dir", cache), "cache")):
+            r = self.tvd("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--max-hz", "5",
+                         *args, "--json")
+            reduction = json.loads(r.stdout)["reduction"]
+            self.assertEqual(reduction["source"], source)
+            self.assertEqual(reduction["warnings"], warnings, source)
+            self.assertIn("tvd: warning: global_modes 40 cuts a repeated eigenvalue", r.stderr)
         # At 46 the solver returns 11 of the 12 (and the next mode): also said.
         d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
                           "--global-modes", "46")

@@ -58,6 +58,10 @@ struct ReducedModel {
   std::string version;           ///< softwareVersion() at creation
   std::string created_utc;       ///< "2024-05-01T12:00:00Z"
   std::string creator;           ///< free text, e.g. "tvd reduce"
+  /// What the reduction warned about when it was made (e.g. a --global-modes count that cuts a
+  /// repeated eigenvalue, reduction::modeCountCut): kept with the model, so that a cached or
+  /// saved model says it again on every load instead of only on the run that built it.
+  std::vector<std::string> warnings;
   DofIndex full_dof_count = 0;   ///< active DOFs of the full model
 
   DofIndex size() const { return system.size(); }

@@ -25,6 +25,7 @@
 //   selected_mode_numbers          n_sel x 1  1-based global mode numbers (as in the reasons)
 //   selected_mode_frequencies_hz   n_sel x 1  [Hz]
 //   selected_mode_reasons          cell n_sel x 1
+//   reduction_warnings             cell n_w x 1  what the reduction warned about (may be 0 x 1)
 //   checksum                       char     FNV-1a 64-bit hash of all the above, written last
 //
 // The checksum catches what matio does not: values changed inside the file (matio does not
@@ -40,7 +41,8 @@ namespace tracked_vehicle_dynamics {
 namespace reduction {
 
 /// Layout version of the file above; a file with another one is stale.
-constexpr int kReducedModelFormatVersion = 4;  // 3: master_positions, master_groups; 4: travel_load
+// 3: master_positions, master_groups; 4: travel_load; 5: reduction_warnings.
+constexpr int kReducedModelFormatVersion = 5;
 
 /// A reduced model file that cannot be used: missing, unreadable, truncated, corrupted,
 /// inconsistent, or built from another description, software version or reduction. A cache

@@ -89,9 +89,10 @@ struct VehicleReductionReport {
   std::string cache_note;        ///< why the cache was (not) used
   bool cache_rebuilt = false;    ///< a cached model existed but was stale or corrupt (cache_note)
   std::string cache_error;       ///< why a model built here could not be cached (empty: it was)
-  /// Built models, rule mac: global_modes ends inside a repeated eigenvalue of a variant (one
-  /// line each, naming the variant, the frequency, the modes kept of the group and the counts
-  /// that would not cut it; mode_count_cut.h).
+  /// Rule mac: global_modes ends inside a repeated eigenvalue of a variant (one line each,
+  /// naming the variant, the frequency, the modes kept of the group and the counts that would
+  /// not cut it; mode_count_cut.h). Saved with the model (ReducedModel::warnings), so a model
+  /// from the cache reports the warnings of the run that built it.
   std::vector<std::string> warnings;
 };
 
