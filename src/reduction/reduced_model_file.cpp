@@ -253,7 +253,7 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                      "by tvd frf, statics or modes?)");
   const double format = in.readScalar("format_version");
   if (format != kReducedModelFormatVersion)
-    throw InputError(where + ": file format version " + std::to_string(format) +
+    throw InputError(where + ": file format version " + brief(format) +
                      ", this software reads version " + std::to_string(kReducedModelFormatVersion));
   ReducedModel model;
   model.version = in.readString("version");

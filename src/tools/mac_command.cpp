@@ -5,6 +5,7 @@
 
 #include "commands.h"
 #include "output_files.h"
+#include "reduction_options.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
@@ -62,28 +63,32 @@ void run(const MacOptions& opt) {
 
   if (!opt.out_dir.empty()) {
     makeOutputDirectory(opt.out_dir);
-    OutputFileSet written;  // a failed mac.csv takes mac.mat with it
-    io::MatWriter mat(opt.out_dir + "/mac.mat");
-    mat.writeMatrix("mac", mac);
-    mat.writeMatrix("eigenspace_mac", space_mac);
-    mat.writeMatrix("untracked_frequencies_hz", uv.modes.frequencies_hz);
-    mat.writeMatrix("tracked_frequencies_hz", tv.modes.frequencies_hz);
-    std::vector<std::string> uv_types, tv_types;
-    for (const auto& c : uv.classes) uv_types.push_back(c.label);
-    for (const auto& c : tv.classes) tv_types.push_back(c.label);
-    mat.writeStrings("untracked_mode_types", uv_types);
-    mat.writeStrings("tracked_mode_types", tv_types);
-    mat.writeScalar("threshold", opt.threshold);
-    mat.close();
-    written.add(mat.path());
+    OutputFileSet written;  // mac.mat and mac.csv, both or neither
+    written.write(opt.out_dir + "/mac.mat", [&](const std::string& path) {
+      io::MatWriter mat(path);
+      mat.writeMatrix("mac", mac);
+      mat.writeMatrix("eigenspace_mac", space_mac);
+      mat.writeMatrix("untracked_frequencies_hz", uv.modes.frequencies_hz);
+      mat.writeMatrix("tracked_frequencies_hz", tv.modes.frequencies_hz);
+      std::vector<std::string> uv_types, tv_types;
+      for (const auto& c : uv.classes)
+        uv_types.push_back(c.label);
+      for (const auto& c : tv.classes)
+        tv_types.push_back(c.label);
+      mat.writeStrings("untracked_mode_types", uv_types);
+      mat.writeStrings("tracked_mode_types", tv_types);
+      mat.writeScalar("threshold", opt.threshold);
+      mat.close();
+    });
     // One row per un-tracked mode, then one column per tracked mode, named by its number.
     std::vector<std::string> headers = {"untracked_mode"};
     Matrix table(mac.rows(), mac.cols() + 1);
     table.col(0) = Vector::LinSpaced(mac.rows(), 1.0, static_cast<double>(mac.rows()));
     table.rightCols(mac.cols()) = mac;
     for (int j = 0; j < mac.cols(); ++j) headers.push_back(std::to_string(j + 1));
-    writeTable(opt.out_dir + "/mac.csv", headers, table, 6);
-    written.keep();
+    written.write(opt.out_dir + "/mac.csv",
+                  [&](const std::string& path) { writeTable(path, headers, table, 6); });
+    written.commit();
   }
 
   if (opt.json) {
@@ -161,7 +166,10 @@ void registerMacCommand(CLI::App& app) {
   cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
       ->required()
       ->check(CLI::ExistingFile);
-  cmd->add_option("--count,-n", opt->count, "modes of each variant (paper: 40)")->check(CLI::Range(1, 500));
+  // Both variants' modes, as the reduction's --global-modes: the same limit.
+  cmd->add_option("--count,-n", opt->count,
+                  "modes of each variant, 1 .. " + std::to_string(kMaxGlobalModes) + " (paper: 40)")
+      ->check(CLI::Range(1, kMaxGlobalModes));
   // (0, 1] as reduce's --mac-threshold: at 0 every mode would correlate.
   cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match, in (0, 1] (paper: 0.7)")
       ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a number in (0, 1]",

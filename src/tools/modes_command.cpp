@@ -124,7 +124,7 @@ void runModel(const ModesOptions& opt) {
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
     writeModeFiles(opt.out_dir, sys, basis, {}, written);
-    written.keep();
+    written.commit();
   }
   if (opt.json) {
     io::JsonWriter json(std::cout);
@@ -165,9 +165,10 @@ void runVehicle(const ModesOptions& opt) {
     writeModeFiles(opt.out_dir, a.system, a.modes, types, written);
     const std::string node_shapes =
         (std::filesystem::path(opt.out_dir) / "node_shapes.csv").string();
-    writeNodeShapes(node_shapes, a.vehicle, a.system, a.modes);
-    written.add(node_shapes);
-    written.keep();
+    written.write(node_shapes, [&](const std::string& path) {
+      writeNodeShapes(path, a.vehicle, a.system, a.modes);
+    });
+    written.commit();
   }
   const vehicle::MassBreakdown& m = a.vehicle.layout.mass;
   if (opt.json) {
@@ -225,7 +226,7 @@ void registerModesCommand(CLI::App& app) {
   model->excludes(vehicle);
   CLI::Option* variant = cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
                              ->check(CLI::IsMember({"untracked", "tracked"}));
-  // At most 500: a Lanczos run for more modes than that takes minutes on the tracked model.
+  // At most 500: one variant's modes (the MAC and the reduction solve both: at most 200).
   cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")->check(CLI::Range(1, 500));
   CLI::Option* max_frequency =
       cmd->add_option(

@@ -1,7 +1,9 @@
 #include "output_files.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <stdexcept>
@@ -25,53 +27,56 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
   makeOutputDirectory(dir);
   const std::filesystem::path root(dir);
   const bool typed = static_cast<int>(mode_types.size()) == basis.count();
-  {
-    io::AtomicTextFile file((root / "modes.csv").string());
+  written.write((root / "modes.csv").string(), [&](const std::string& path) {
+    io::AtomicTextFile file(path);
     std::ostream& out = file.stream();
     out << std::setprecision(12);
     out << "mode,frequency_hz,eigenvalue_rad2_s2" << (typed ? ",type" : "") << "\n";
     for (int i = 0; i < basis.count(); ++i) {
       out << i + 1 << "," << basis.frequencies_hz(i) << "," << basis.eigenvalues(i);
-      if (typed) out << "," << mode_types[i];
+      if (typed)
+        out << "," << mode_types[i];
       out << "\n";
     }
     file.commit();
-    written.add(file.path());
-  }
-  {
-    io::AtomicTextFile file((root / "shapes.csv").string());
+  });
+  written.write((root / "shapes.csv").string(), [&](const std::string& path) {
+    io::AtomicTextFile file(path);
     std::ostream& out = file.stream();
     out << std::setprecision(12);
     out << "node,direction";
-    for (int i = 0; i < basis.count(); ++i) out << ",mode_" << i + 1;
+    for (int i = 0; i < basis.count(); ++i)
+      out << ",mode_" << i + 1;
     out << "\n";
     for (DofIndex r = 0; r < sys.size(); ++r) {
       const fem::DofRef d = sys.dofs.dofOf(r);
       out << d.node << "," << directionName(d.direction);
-      for (int i = 0; i < basis.count(); ++i) out << "," << basis.shapes(r, i);
+      for (int i = 0; i < basis.count(); ++i)
+        out << "," << basis.shapes(r, i);
       out << "\n";
     }
     file.commit();
-    written.add(file.path());
-  }
-  io::MatWriter mat((root / "modes.mat").string());
-  mat.writeMatrix("frequencies_hz", basis.frequencies_hz);
-  mat.writeMatrix("eigenvalues", basis.eigenvalues);
-  mat.writeMatrix("shapes", basis.shapes);
-  Matrix node(sys.size(), 1), direction(sys.size(), 1);
-  std::vector<std::string> labels;
-  for (DofIndex r = 0; r < sys.size(); ++r) {
-    const fem::DofRef d = sys.dofs.dofOf(r);
-    node(r, 0) = static_cast<double>(d.node);
-    direction(r, 0) = d.direction;
-    labels.push_back(sys.dofs.label(r));
-  }
-  mat.writeMatrix("dof_node", node);
-  mat.writeMatrix("dof_direction", direction);
-  mat.writeStrings("dof_labels", labels);
-  if (typed) mat.writeStrings("mode_types", mode_types);
-  mat.close();
-  written.add(mat.path());
+  });
+  written.write((root / "modes.mat").string(), [&](const std::string& path) {
+    io::MatWriter mat(path);
+    mat.writeMatrix("frequencies_hz", basis.frequencies_hz);
+    mat.writeMatrix("eigenvalues", basis.eigenvalues);
+    mat.writeMatrix("shapes", basis.shapes);
+    Matrix node(sys.size(), 1), direction(sys.size(), 1);
+    std::vector<std::string> labels;
+    for (DofIndex r = 0; r < sys.size(); ++r) {
+      const fem::DofRef d = sys.dofs.dofOf(r);
+      node(r, 0) = static_cast<double>(d.node);
+      direction(r, 0) = d.direction;
+      labels.push_back(sys.dofs.label(r));
+    }
+    mat.writeMatrix("dof_node", node);
+    mat.writeMatrix("dof_direction", direction);
+    mat.writeStrings("dof_labels", labels);
+    if (typed)
+      mat.writeStrings("mode_types", mode_types);
+    mat.close();
+  });
 }
 
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
@@ -98,11 +103,38 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
   csv.commit();
 }
 
+void OutputFileSet::write(const std::string& path,
+                          const std::function<void(const std::string&)>& write) {
+  const std::string staged = path + kStagedSuffix;
+  staged_.emplace_back(staged, path);
+  try {
+    write(staged);
+  } catch (const InputError& e) {
+    // The user asked for `path`: name it, not the staged file (which is removed).
+    std::string message = e.what();
+    for (std::size_t at = message.find(staged); at != std::string::npos;
+         at = message.find(staged, at + path.size()))
+      message.replace(at, staged.size(), path);
+    throw InputError(message);
+  }
+}
+
+void OutputFileSet::commit() {
+  // A name taken by a directory fails every rename onto it: found before any file is replaced.
+  for (const auto& [staged, path] : staged_)
+    if (std::filesystem::is_directory(path))
+      throw InputError(path + ": is a directory; cannot write the file there");
+  for (const auto& [staged, path] : staged_)
+    if (std::rename(staged.c_str(), path.c_str()) != 0)
+      throw InputError(path + ": cannot move the written file into place: " + std::strerror(errno));
+  committed_ = true;
+}
+
 OutputFileSet::~OutputFileSet() {
-  if (kept_)
+  if (committed_)
     return;
-  for (const std::string& path : paths_)
-    std::remove(path.c_str());
+  for (const auto& staged : staged_)
+    std::remove(staged.first.c_str());
 }
 
 std::string defaultCacheDir() {

@@ -1,6 +1,7 @@
 // Result files shared by the CLI subcommands (CSV for spreadsheets, .mat for MATLAB/Octave/SciPy).
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -11,27 +12,36 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// The files one command has written so far: unless keep() is called, the destructor removes them,
-/// so a command whose later file fails (an exception unwinding) leaves none of its files behind.
+/// The files of one command, written all or none: each is written under a staged name next to
+/// it ("modes.csv.partial") and commit() renames them all onto their names once every one was
+/// written; without commit() (an exception unwinding) the destructor removes the staged files.
+/// A failed run into a directory of an earlier one thus leaves the earlier files as they were,
+/// not a mix of old and new.
 class OutputFileSet {
  public:
   OutputFileSet() = default;
   ~OutputFileSet();
   OutputFileSet(const OutputFileSet&) = delete;
   OutputFileSet& operator=(const OutputFileSet&) = delete;
-  void add(const std::string& path) { paths_.push_back(path); }
-  void keep() { kept_ = true; }
+
+  /// Calls `write(staged)` with the staged name of `path`; an InputError it throws is rethrown
+  /// naming `path` instead of the staged name.
+  void write(const std::string& path, const std::function<void(const std::string&)>& write);
+  /// Renames every staged file onto its name. Throws InputError naming a name that is a
+  /// directory (before any rename) or whose rename fails.
+  void commit();
+
+  static constexpr const char* kStagedSuffix = ".partial";
 
  private:
-  std::vector<std::string> paths_;
-  bool kept_ = false;
+  std::vector<std::pair<std::string, std::string>> staged_;  // (staged, final)
+  bool committed_ = false;
 };
 
 /// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type]), DIR/shapes.csv (one row per
 /// active DOF: node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz,
 /// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types]). Creates DIR. Each file
-/// goes through a temporary file and a rename and is added to `written`; InputError names a file
-/// that cannot be written (`written`'s destructor then removes the others).
+/// is staged in `written` (the caller commits); InputError names a file that cannot be written.
 void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
                     const std::vector<std::string>& mode_types, OutputFileSet& written);
 

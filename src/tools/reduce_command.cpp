@@ -34,6 +34,9 @@ void run(const ReduceOptions& opt) {
   reduction::ReducedModel model = reduction::reduceVehicle(description, variant, options, &report);
   model.creator = "tvd reduce";
   if (!opt.out_file.empty()) reduction::saveReducedModel(model, opt.out_file);
+  // On stderr as every command's (the text and JSON outputs carry them too).
+  for (const std::string& w : report.warnings)
+    std::cerr << "tvd: warning: " << w << "\n";
 
   // CMS error of each full-model mode in the band, pairing the i-th modes (the reduced model is a
   // Rayleigh-Ritz approximation: its i-th frequency approaches the full one from above).

@@ -61,6 +61,7 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
     io::MatWriter out(path, GetParam());
     out.writeMatrix("A", a);
     out.writeMatrix("empty", Matrix(0, 4));
+    out.writeMatrix("nil", Matrix(0, 0));  // MATLAB's []
     out.writeScalar("s", -2.5);
     out.writeString("text", "mode 3 (12.4 Hz), zeta \xce\xb6");
     out.writeString("nothing", "");
@@ -69,7 +70,7 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
     out.close();
   }
   const io::MatReader in(path);
-  EXPECT_EQ(in.names().size(), 7u);
+  EXPECT_EQ(in.names().size(), 8u);
   EXPECT_EQ(in.readMatrix("A", 7, 3), a);
   EXPECT_EQ(in.readMatrix("empty").cols(), 4);
   EXPECT_EQ(in.readMatrix("empty").rows(), 0);
@@ -82,7 +83,8 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
   EXPECT_THROW(in.readMatrix("missing"), InputError);
   EXPECT_THROW(in.readMatrix("text"), InputError);
   EXPECT_THROW(in.readString("A"), InputError);
-  EXPECT_EQ(in.readString("empty"), "");                // MATLAB's [] as an empty text
+  EXPECT_EQ(in.readString("nil"), "");  // MATLAB's [] as an empty text
+  EXPECT_EQ(in.readString("empty"), "");
   EXPECT_THROW(in.readString("no_names"), InputError);  // an empty cell is not a text
   EXPECT_THROW(in.readStrings("names", 2), InputError);
   std::remove(path.c_str());

@@ -1800,6 +1800,23 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("shapes.csv", r.stderr)
         self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
         self.assertEqual(os.listdir(d), [])
+        # Into the directory of a good earlier run: a failed write leaves its files as they were
+        # (not deleted, not a mix of old and new).
+        self.tvd("modes", "--model", model, "--out", d)
+        before = {}
+        for name in sorted(os.listdir(d)):
+            with open(os.path.join(d, name), "rb") as f:
+                before[name] = f.read()
+        self.assertEqual(sorted(before), ["modes.csv", "modes.mat", "shapes.csv"])
+        r = self.run_limited(["modes", "--model", model, "--count", "3", "--out", d], 2000)
+        self.assertEqual(r.returncode, INPUT_ERROR_STATUS, r.stderr)
+        self.assertIn(os.path.join(d, "shapes.csv") + ":", r.stderr)
+        self.assertNotIn(".partial", r.stderr)
+        after = {}
+        for name in sorted(os.listdir(d)):
+            with open(os.path.join(d, name), "rb") as f:
+                after[name] = f.read()
+        self.assertEqual(after, before)
         # mac --out: mac.mat is written first; when mac.csv cannot be, mac.mat goes too.
         d = self.path("mac_fails")
         os.makedirs(os.path.join(d, "mac.csv"))  # a directory: the rename onto it fails
@@ -1810,7 +1827,7 @@ class TvdCliTest(unittest.TestCase):
         out = self.path("limited_sim.csv")
         r = self.run_limited(["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
                               "long_hill", "--cache-dir", self.cache, "--out", out], 1 << 20)
-        self.assertNotEqual(r.returncode, 0)
+        self.assertEqual(r.returncode, INPUT_ERROR_STATUS, r.stderr)
         self.assertIn("limited_sim.csv", r.stderr)
         self.assertEqual([f for f in os.listdir(self.work) if f.startswith("limited_sim")], [])
 
@@ -1871,7 +1888,7 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(len(warnings), 1, warnings)
         self.assertRegex(warnings[0], r"\d+ of \d+ contacts lie outside, up to [0-9.]+ m beyond")
         self.assertIn("--lateral-offset 2 m", warnings[0])
-        self.assertIn("tvd: warning: ", r.stderr)
+        self.assertIn("tvd: warning: " + warnings[0], r.stderr)
         self.assert_input_error(sim + ["oop_waves", "--lateral-offset", "10"],
                                 "oop_waves: every contact", "lies off the terrain",
                                 "--lateral-offset 10 m")
@@ -1897,7 +1914,7 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(first["notes"], [])
         with open(first["file"], "r+b") as f:
             f.seek(200)
-            f.write(b"\\x00" * 64)
+            f.write(b"\x00" * 64)
         r = self.tvd(*base, "--cache-dir", cache)
         again = json.loads(r.stdout)["reduction"]
         self.assertEqual(again["source"], "computed")
@@ -1938,9 +1955,10 @@ class TvdCliTest(unittest.TestCase):
         d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked")
         warnings = d["reduction"]["warnings"]
         self.assertEqual(len(warnings), 1, warnings)
-        self.assertIn("global_modes 40 cuts a repeated eigenvalue of the untracked variant: 6 of "
+        self.assertIn("global_modes 40: cuts a repeated eigenvalue of the untracked variant: 6 of "
                       "its 12 modes at 107.721 Hz", warnings[0])
-        self.assertIn("34 or 46 global modes would not cut it", warnings[0])
+        self.assertIn("34 global modes end below it, 46 above it if the solver returns all 12",
+                      warnings[0])
         # Saved with the model: a --reduced file and a cached model warn again, as the run that
         # reduced them did (the cache's second run loads the model the first one built).
         mat = self.path("cut_eigenspace.mat")
@@ -1953,11 +1971,12 @@ class TvdCliTest(unittest.TestCase):
             reduction = json.loads(r.stdout)["reduction"]
             self.assertEqual(reduction["source"], source)
             self.assertEqual(reduction["warnings"], warnings, source)
-            self.assertIn("tvd: warning: global_modes 40 cuts a repeated eigenvalue", r.stderr)
+            self.assertIn("tvd: warning: global_modes 40: cuts a repeated eigenvalue", r.stderr)
         # At 46 the solver returns 11 of the 12 (and the next mode): also said.
         d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
                           "--global-modes", "46")
-        self.assertIn("returns 1 mode(s) of the untracked variant below 107.735 Hz too few",
+        self.assertIn("the solver returned 1 mode(s) of the untracked variant below 107.735 Hz "
+                      "too few",
                       d["reduction"]["warnings"][0])
         d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
                           "--global-modes", "48")
