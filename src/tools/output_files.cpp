@@ -105,7 +105,10 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
 
 void OutputFileSet::write(const std::string& path,
                           const std::function<void(const std::string&)>& write) {
-  const std::string staged = path + kStagedSuffix;
+  const std::string staged = stagedName(path);
+  for (const auto& entry : staged_)
+    if (entry.second == path)
+      throw std::logic_error("OutputFileSet: " + path + " written twice");
   staged_.emplace_back(staged, path);
   try {
     write(staged);
@@ -117,6 +120,13 @@ void OutputFileSet::write(const std::string& path,
       message.replace(at, staged.size(), path);
     throw InputError(message);
   }
+}
+
+std::string OutputFileSet::stagedName(const std::string& path) {
+  std::filesystem::path p(path);
+  const std::string extension = p.extension().string();
+  p.replace_filename(p.stem().string() + ".partial" + extension);
+  return p.string();
 }
 
 void OutputFileSet::commit() {

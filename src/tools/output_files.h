@@ -13,8 +13,9 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 /// The files of one command, written all or none: each is written under a staged name next to
-/// it ("modes.csv.partial") and commit() renames them all onto their names once every one was
-/// written; without commit() (an exception unwinding) the destructor removes the staged files.
+/// it ("modes.partial.csv": the extension, which chooses the format, is kept) and commit()
+/// renames them all onto their names once every one was written; without commit() (an
+/// exception unwinding) the destructor removes the staged files.
 /// A failed run into a directory of an earlier one thus leaves the earlier files as they were,
 /// not a mix of old and new.
 class OutputFileSet {
@@ -25,13 +26,14 @@ class OutputFileSet {
   OutputFileSet& operator=(const OutputFileSet&) = delete;
 
   /// Calls `write(staged)` with the staged name of `path`; an InputError it throws is rethrown
-  /// naming `path` instead of the staged name.
+  /// naming `path` instead of the staged name. Throws std::logic_error for a path given twice.
   void write(const std::string& path, const std::function<void(const std::string&)>& write);
   /// Renames every staged file onto its name. Throws InputError naming a name that is a
   /// directory (before any rename) or whose rename fails.
   void commit();
 
-  static constexpr const char* kStagedSuffix = ".partial";
+  /// "dir/modes.csv" -> "dir/modes.partial.csv".
+  static std::string stagedName(const std::string& path);
 
  private:
   std::vector<std::pair<std::string, std::string>> staged_;  // (staged, final)

@@ -7,6 +7,7 @@
 // the road is that class's PSD and every speed is evaluated spectrally (ride_spectral.cpp).
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -344,6 +345,10 @@ void registerRideCommand(CLI::App& app) {
                          (spectral ? " applies to a --track simulation, not to the spectral --iso8608"
                                    : " applies to --iso8608 (the spectral method) only"));
     opt->reduced.check("ride", "reduced");
+    if (!opt->psd_out.empty() && !opt->out_file.empty() &&
+        std::filesystem::path(opt->psd_out).lexically_normal() ==
+            std::filesystem::path(opt->out_file).lexically_normal())
+      throw InputError("ride: --psd-out and --out name the same file " + opt->out_file);
     opt->variant_given = variant->count() > 0;
     opt->points_given = points->count() > 0;
     if (spectral)

@@ -73,9 +73,10 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
 // acceleration PSD S_a, the ISO 2631-1 weighted |W_k|^2 S_a and the absorbed-power density K S_a,
 // so that the trapezoid over one speed's rows gives that run's a_rms^2, a_wz^2 and P (the
 // integrals SpectralRide::evaluate takes on the same grid).
-void writePsdTable(const RideOptions& opt, const dynamics::SpectralRide& ride,
-                   const std::vector<double>& speeds, const std::vector<std::string>& points,
-                   const std::string& variant, const std::string& road_name) {
+void writePsdTable(const std::string& path, const RideOptions& opt,
+                   const dynamics::SpectralRide& ride, const std::vector<double>& speeds,
+                   const std::vector<std::string>& points, const std::string& variant,
+                   const std::string& road_name) {
   std::vector<std::string> headers = {"speed_kmh", "frequency_hz", "road_psd_m2_hz"};
   for (const std::string& p : points)
     for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz"})
@@ -103,7 +104,7 @@ void writePsdTable(const RideOptions& opt, const dynamics::SpectralRide& ride,
         table.block(row, 3 + 3 * o, 1, 3) << r.psd(i, o), wk * r.psd(i, o), power * r.psd(i, o);
     }
   }
-  writeTable(opt.psd_out, headers, table, 12,
+  writeTable(path, headers, table, 12,
              {{"vehicle", opt.vehicle_file}, {"variant", variant}, {"road", road_name}});
 }
 
@@ -168,11 +169,20 @@ void runSpectralRide(const RideOptions& opt) {
           r.points[i].weighted_rms, r.points[i].rms;
     ++row;
   }
+  // Both files or neither (a failed --psd-out does not leave a new --out beside an old PSD).
+  OutputFileSet written;
   if (!opt.out_file.empty())
-    writeTable(opt.out_file, headers, table, 9,
-               {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"road", road_name}});
+    written.write(opt.out_file, [&](const std::string& path) {
+      writeTable(path, headers, table, 9,
+                 {{"vehicle", opt.vehicle_file},
+                  {"variant", vehicle::variantName(variant)},
+                  {"road", road_name}});
+    });
   if (!opt.psd_out.empty())
-    writePsdTable(opt, ride, sweep, points, vehicle::variantName(variant), road_name);
+    written.write(opt.psd_out, [&](const std::string& path) {
+      writePsdTable(path, opt, ride, sweep, points, vehicle::variantName(variant), road_name);
+    });
+  written.commit();
 
   if (opt.json) {
     io::JsonWriter json(std::cout);

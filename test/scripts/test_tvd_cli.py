@@ -968,6 +968,20 @@ class TvdCliTest(unittest.TestCase):
                                "--psd-out", psd_out)
         self.assertEqual(c["method"], "spectral")
         self.assertEqual(c["psd_out"], psd_out)
+        # Both files or neither: a --psd-out that cannot be written leaves --out as it was.
+        with open(out, "rb") as f:
+            before = f.read()
+        # (the run's table, 8 rows, fits under the file-size limit; its PSDs do not)
+        blocked = self.path("spectral_psd_too_large.csv")
+        r = self.run_limited(["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--points",
+                              "crew_seat,hull", "--cache-dir", self.cache, "--iso8608", "D",
+                              "--speeds", "5:40:5", "--out", out, "--psd-out", blocked], 20000)
+        self.assertEqual(r.returncode, INPUT_ERROR_STATUS, r.stderr)
+        self.assertIn(blocked + ":", r.stderr)
+        self.assertFalse(os.path.exists(blocked))
+        with open(out, "rb") as f:
+            self.assertEqual(f.read(), before)
+        self.assertEqual([n for n in os.listdir(self.work) if ".partial" in n], [])
         self.assertEqual(c["road"]["iso8608_class"], "C")
         self.assertEqual(c["road"]["lateral_correlation"], "uniform")
         self.assertEqual(c["road"]["band_cycles_per_m"], [0.011, 2.83])
@@ -1066,6 +1080,8 @@ class TvdCliTest(unittest.TestCase):
                 (["--track", "long_hill", "--points-per-decade", "100"], ["--points-per-decade applies"]),
                 (["--track", "long_hill", "--psd-out", self.path("psd.csv")], ["--psd-out applies to --iso8608"]),
                 (["--iso8608", "C", "--psd-out", self.path("psd.txt")], ["--psd-out", ".csv", ".mat"]),
+                (["--iso8608", "C", "--psd-out", self.path("same.csv"), "--out",
+                  self.path("same.csv")], ["--psd-out and --out name the same file"]),
                 (["--iso8608", "C", "--min-frequency", "3"],
                  ["--min-frequency 3 must be below --max-frequency 2.83 cycles/m"]),
                 (["--iso8608", "C", "--points-per-decade", "5"], ["--points-per-decade", "[10, 100000]"]),
