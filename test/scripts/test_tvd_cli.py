@@ -1905,6 +1905,11 @@ class TvdCliTest(unittest.TestCase):
         self.assertRegex(warnings[0], r"\d+ of \d+ contacts lie outside, up to [0-9.]+ m beyond")
         self.assertIn("--lateral-offset 2 m", warnings[0])
         self.assertIn("tvd: warning: " + warnings[0], r.stderr)
+        # oop_waves' own driving line leaves 5.5 cm of the left outer row beyond its edge (as in
+        # the paper): not warned about, nor an offset that reduces it; one that adds to it is.
+        for offset, warned in (("0", False), ("-0.01", False), ("0.01", True)):
+            d = self.tvd_json(*sim, "oop_waves", "--speed-kmh", "30", "--lateral-offset", offset)
+            self.assertEqual(len(d["warnings"]), 1 if warned else 0, (offset, d["warnings"]))
         self.assert_input_error(sim + ["oop_waves", "--lateral-offset", "10"],
                                 "oop_waves: every contact", "lies off the terrain",
                                 "--lateral-offset 10 m")
