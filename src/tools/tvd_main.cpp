@@ -36,9 +36,12 @@ int main(int argc, char** argv) {
       return app.exit(e);
     std::string message = e.what();
     if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty() && argc > 1 &&
-        argv[1][0] != '-')
-      message = "unknown subcommand '" + std::string(argv[1]) +
-                "' (one of: modes, statics, mac, reduce, frf, simulate, ride, terrain)";
+        argv[1][0] != '-') {
+      std::string known;  // the registered subcommands, in registration order
+      for (const CLI::App* sub : app.get_subcommands({}))
+        known += (known.empty() ? "" : ", ") + sub->get_name();
+      message = "unknown subcommand '" + std::string(argv[1]) + "' (one of: " + known + ")";
+    }
     for (char& c : message)
       if (c == '\n')
         c = ' ';
