@@ -105,18 +105,18 @@ std::vector<NamedColumn> pointOutputs(const std::vector<std::string>& names,
 }
 
 // 0, step, 2 step, ... up to max, and max itself when it is not a multiple of step (the band
-// asked for is covered to its edge). Throws InputError when step > max: one frequency (0 Hz,
-// where every FRF is 0) has no peak and no band.
+// asked for is covered to its edge). A last multiple within 0.1 % of a step of max is max (no
+// second point next to it: --max-hz 1 --step-hz 0.3333333 ends 0.667, 1). Throws InputError
+// when step > max: one frequency (0 Hz, where every FRF is 0) has no peak and no band.
 Vector frequencyGrid(double max_hz, double step_hz) {
   const auto steps = static_cast<Eigen::Index>(std::floor(max_hz / step_hz + 1e-9));
   if (steps < 1)
     throw InputError("frf: --step-hz " + brief(step_hz) + " is larger than --max-hz " +
                      brief(max_hz) + ": the grid needs at least 2 frequencies (0 and max)");
-  const bool partial = max_hz - steps * step_hz > 1e-9 * max_hz;
+  const bool partial = max_hz - steps * step_hz > 1e-3 * step_hz;
   Vector hz(steps + 1 + (partial ? 1 : 0));
   hz.head(steps + 1) = Vector::LinSpaced(steps + 1, 0.0, steps * step_hz);
-  if (partial)
-    hz(steps + 1) = max_hz;
+  hz(hz.size() - 1) = max_hz;
   return hz;
 }
 

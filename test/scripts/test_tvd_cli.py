@@ -1893,6 +1893,13 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(len(hz), 16)
         self.assertAlmostEqual(hz[-2], 0.98, places=12)
         self.assertEqual(hz[-1], 1.0)
+        # A last multiple a hair below max is max itself, not a second point beside it.
+        self.tvd(*frf, "--max-hz", "1", "--step-hz", "0.3333333", "--out", out)
+        header, body = read_csv(out)
+        hz = body[:, header.index("frequency_hz")]
+        self.assertEqual(len(hz), 4)
+        self.assertEqual(hz[-1], 1.0)
+        self.assertAlmostEqual(hz[-2], 0.6666666, places=12)
 
     def test_lateral_offset_off_a_built_in_track(self):
         """#6: an offset that puts contacts beyond a built-in track's edge is warned about (how
