@@ -25,9 +25,7 @@ void GroundContactWatch::evaluate(const Vector& state, const Vector& input) {
   contactForces(contacts_, state, input, input_count_, forces_, "ground contact watch");
 }
 
-void GroundContactWatch::restart(double time, double station, const Vector& state,
-                                 const Vector& input) {
-  (void)station;
+void GroundContactWatch::restart(double time, const Vector& state, const Vector& input) {
   evaluate(state, input);
   pulling_at_rest_ = 0;
   for (DofIndex i = 0; i < contactCount(); ++i) {

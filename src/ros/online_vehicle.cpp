@@ -199,7 +199,7 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
 
 void OnlineVehicle::restartContactWatch() {
   if (contact_watch_)
-    contact_watch_->restart(simulator_.time(), station_, simulator_.state(), simulator_.input());
+    contact_watch_->restart(simulator_.time(), simulator_.state(), simulator_.input());
 }
 
 void OnlineVehicle::checkGroundContact() {

@@ -136,9 +136,8 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   const double published_rate = rate / static_cast<double>(publish_every_);
   if (std::abs(published_rate - params_.publish_rate) > 1e-9 * rate)
     ROS_WARN(
-        "vehicle_dynamics_node: ~publish_rate %g Hz does not divide ~rate %g Hz: publishing every "
-        "%lld "
-        "steps, at %g Hz",
+        "vehicle_dynamics_node: ~publish_rate %g Hz does not divide ~rate %g Hz: publishing "
+        "every %lld steps, at %g Hz",
         params_.publish_rate, rate, static_cast<long long>(publish_every_), published_rate);
   ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %g Hz, %s/%s",
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
@@ -150,8 +149,7 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   if (use_sim_time_)
     ROS_INFO(
         "vehicle_dynamics_node: on simulated time (/use_sim_time true): the vehicle starts with "
-        "the first "
-        "/clock message");
+        "the first /clock message");
 }
 
 template <class M>
@@ -345,15 +343,15 @@ void VehicleDynamicsNode::setUpFrames() {
   const VehicleGeometry& geometry = vehicle_->geometry();
   // The hull's frames must not be one of the frames published under them (a base_frame named
   // crew_seat would publish crew_seat -> crew_seat).
+  std::vector<std::string> children;
+  for (const auto& wheel : geometry.wheels)
+    children.push_back(params_.frame_prefix + wheel.name);
+  for (const auto& point : geometry.points)
+    children.push_back(params_.frame_prefix + point.name);
   for (const auto& [key, frame] :
        {std::pair<const char*, const std::string*>{"odom_frame", &params_.odom_frame},
         {"base_frame", &params_.base_frame},
         {"footprint_frame", &params_.footprint_frame}}) {
-    std::vector<std::string> children;
-    for (const auto& wheel : geometry.wheels)
-      children.push_back(params_.frame_prefix + wheel.name);
-    for (const auto& point : geometry.points)
-      children.push_back(params_.frame_prefix + point.name);
     if (std::find(children.begin(), children.end(), *frame) != children.end())
       throw ParameterError(private_nh_.resolveName(key) + ": '" + *frame +
                            "' is also the frame of a road wheel or named point of the description");

@@ -81,7 +81,7 @@ TEST(GroundContactWatch, StepByStepChecksFindTheClosedFormLiftOff) {
 
   GroundContactWatch watch(dynamics::groundContacts(system), system.inputCount());
   sim.reset(toy.steadyState(), w.row(0).transpose());
-  watch.restart(0.0, 0.0, sim.state(), sim.input());
+  watch.restart(0.0, sim.state(), sim.input());
   ASSERT_GT(watch.forces()(0), 0.0);  // pressed at the start
   EXPECT_EQ(watch.pullingAtRest(), 0);
   const double amplitude = toy.dynamicAmplitude();
@@ -122,7 +122,7 @@ TEST(GroundContactWatch, CountsPullingAtRestApartAndKeepsTwoRecords) {
   // At rest: contacts 0 and 1 pressed (q below the road), contact 2 already pulling (q above).
   Vector z = Vector::Zero(6);
   z << -0.01, -0.02, 0.001, 0.0, 0.0, 0.0;
-  watch.restart(5.0, 50.0, z, w);
+  watch.restart(5.0, z, w);
   EXPECT_EQ(watch.pullingAtRest(), 1);
   EXPECT_DOUBLE_EQ(watch.forces()(0), 1e3);
   EXPECT_DOUBLE_EQ(watch.forces()(1), 4e3);
@@ -174,7 +174,7 @@ TEST(GroundContactWatch, CountsPullingAtRestApartAndKeepsTwoRecords) {
   EXPECT_EQ(watch.takeInterval().checks, 0);
 
   // A restart forgets the run: everything pressed there is the new rest.
-  watch.restart(6.0, 60.0, z, w);
+  watch.restart(6.0, z, w);
   EXPECT_EQ(watch.pullingAtRest(), 3);
   EXPECT_EQ(watch.sinceRestart().checks, 0);
   EXPECT_FALSE(watch.sinceRestart().beyondRange());
@@ -188,12 +188,10 @@ TEST(GroundContactWatch, RefusesWhatItCannotCheck) {
   GroundContactWatch watch(one, 1);
   expectInputError([&] { watch.check(0.0, 0.0, Vector::Zero(2), Vector::Zero(2)); },
                    "before restart");
-  expectInputError([&] { watch.restart(0.0, 0.0, Vector::Zero(3), Vector::Zero(2)); },
-                   "state of 3");
-  expectInputError([&] { watch.restart(0.0, 0.0, Vector::Zero(2), Vector::Zero(4)); },
-                   "input of 4");
+  expectInputError([&] { watch.restart(0.0, Vector::Zero(3), Vector::Zero(2)); }, "state of 3");
+  expectInputError([&] { watch.restart(0.0, Vector::Zero(2), Vector::Zero(4)); }, "input of 4");
   const std::vector<GroundContact> far = {contact(0, 5, 1e5, 0.0, 1.0)};
   GroundContactWatch off_state(far, 1);
-  expectInputError([&] { off_state.restart(0.0, 0.0, Vector::Zero(2), Vector::Zero(2)); },
+  expectInputError([&] { off_state.restart(0.0, Vector::Zero(2), Vector::Zero(2)); },
                    "coordinate 5");
 }

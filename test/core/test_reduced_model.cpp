@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 
@@ -46,6 +47,30 @@ void expectStale(const std::string& path, const std::string& hash, const std::st
     EXPECT_EQ(message.rfind(path, 0), 0u) << message;
     EXPECT_NE(message.find(what), std::string::npos) << message;
   }
+}
+
+// Copies the MAT file `from` to `to` variable by variable, as a hand edit would: `edit(name, in,
+// out)` may write (or drop) a variable itself and returns true then; every other variable is
+// copied as it is (a matrix, a text or a list of texts), the checksum included.
+void copyEdited(
+    const std::string& from, const std::string& to,
+    const std::function<bool(const std::string&, const io::MatReader&, io::MatWriter&)>& edit) {
+  const io::MatReader in(from);
+  io::MatWriter out(to);
+  for (const std::string& name : in.names()) {
+    if (edit(name, in, out))
+      continue;
+    try {
+      out.writeMatrix(name, in.readMatrix(name));
+    } catch (const InputError&) {
+      try {
+        out.writeString(name, in.readString(name));
+      } catch (const InputError&) {
+        out.writeStrings(name, in.readStrings(name));
+      }
+    }
+  }
+  out.close();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -283,27 +308,13 @@ TEST_F(ReducedModelFileTest, WarningsAreSavedCheckedAndReadBack) {
   saveReducedModel(warned, path_);
   EXPECT_EQ(loadReducedModel(path_, kHash).warnings, warned.warnings);
   // The same file with one warning dropped and the old checksum: refused.
-  const io::MatReader in(path_);
   const std::string other = tempPath("edited_warnings.mat");
-  {
-    io::MatWriter out(other);
-    for (const std::string& name : in.names()) {
-      if (name == "reduction_warnings") {
-        out.writeStrings(name, {warned.warnings[0]});
-        continue;
-      }
-      try {
-        out.writeMatrix(name, in.readMatrix(name));
-      } catch (const InputError&) {
-        try {
-          out.writeString(name, in.readString(name));
-        } catch (const InputError&) {
-          out.writeStrings(name, in.readStrings(name));
-        }
-      }
-    }
-    out.close();
-  }
+  copyEdited(path_, other, [&](const std::string& name, const io::MatReader&, io::MatWriter& out) {
+    if (name != "reduction_warnings")
+      return false;
+    out.writeStrings(name, {warned.warnings[0]});
+    return true;
+  });
   expectStale(other, kHash, "checksum");
   std::remove(other.c_str());
 }
@@ -362,57 +373,26 @@ TEST_F(ReducedModelFileTest, CorruptedBytesAreRefused) {
 
 TEST_F(ReducedModelFileTest, ChangedValuesFailTheChecksum) {
   // A file rewritten with one value changed and the old checksum: only the checksum tells.
-  const io::MatReader in(path_);
   const std::string other = tempPath("edited.mat");
-  {
-    io::MatWriter out(other);
-    for (const std::string& name : in.names()) {
-      if (name == "checksum") {
-        out.writeString(name, in.readString(name));
-      } else if (name == "K_R") {
-        Matrix k = in.readMatrix(name);
-        k(0, 0) *= 1.0 + 1e-12;
-        out.writeMatrix(name, k);
-      } else {
-        try {
-          out.writeMatrix(name, in.readMatrix(name));
-        } catch (const InputError&) {
-          try {
-            out.writeString(name, in.readString(name));
-          } catch (const InputError&) {
-            out.writeStrings(name, in.readStrings(name));
-          }
-        }
-      }
-    }
-    out.close();
-  }
+  copyEdited(path_, other,
+             [](const std::string& name, const io::MatReader& in, io::MatWriter& out) {
+               if (name != "K_R")
+                 return false;
+               Matrix k = in.readMatrix(name);
+               k(0, 0) *= 1.0 + 1e-12;
+               out.writeMatrix(name, k);
+               return true;
+             });
   expectStale(other, kHash, "checksum");
   std::remove(other.c_str());
 }
 
 TEST_F(ReducedModelFileTest, FileWithoutTheTravelLoadIsRefusedNamingIt) {
   // A file of this layout that lacks travel_load (every other variable copied as it is).
-  const io::MatReader in(path_);
   const std::string other = tempPath("no_travel_load.mat");
-  {
-    io::MatWriter out(other);
-    for (const std::string& name : in.names()) {
-      if (name == "travel_load") continue;
-      if (name == "checksum" || name == "version" || name == "description_hash" ||
-          name == "reduction" || name == "created_utc" || name == "creator" ||
-          name == "damping_model") {
-        out.writeString(name, in.readString(name));
-      } else {
-        try {
-          out.writeMatrix(name, in.readMatrix(name));
-        } catch (const InputError&) {
-          out.writeStrings(name, in.readStrings(name));
-        }
-      }
-    }
-    out.close();
-  }
+  copyEdited(path_, other, [](const std::string& name, const io::MatReader&, io::MatWriter&) {
+    return name == "travel_load";  // dropped
+  });
   expectStale(other, kHash, "'travel_load' is missing");
   std::remove(other.c_str());
 }

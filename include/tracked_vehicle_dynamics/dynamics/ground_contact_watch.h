@@ -67,7 +67,7 @@ class GroundContactWatch {
   /// The vehicle is at rest in `state` z = [q; q'] [2n] under input w [2 n_u]: the contacts
   /// with F_i >= 0 there are those "pressed at rest". Clears both records and the interval.
   /// Throws InputError for wrong lengths (a coordinate of a contact outside q).
-  void restart(double time, double station, const Vector& state, const Vector& input);
+  void restart(double time, const Vector& state, const Vector& input);
   /// One check at time t [s], station s [m]. Throws InputError for wrong lengths, or when
   /// restart() has not been called.
   void check(double time, double station, const Vector& state, const Vector& input);
