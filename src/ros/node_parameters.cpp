@@ -238,6 +238,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   if (in.has("max_mode_frequency"))  // unset: OnlineVehicleOptions' default (rate / 2)
     v.max_mode_frequency_hz = in.nonNegative("max_mode_frequency", 0.0, "Hz");
   v.lateral_offset = in.number("lateral_offset", v.lateral_offset);
+  p.comfort_point_given = in.has("comfort_point");
   v.comfort_point = in.string("comfort_point", v.comfort_point);
   if (v.comfort_point.empty())
     throw in.error("comfort_point", "must not be empty");

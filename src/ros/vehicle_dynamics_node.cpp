@@ -172,6 +172,20 @@ void VehicleDynamicsNode::loadVehicle() {
         vehicle::loadVehicleDescription(params_.vehicle);
     for (const std::string& w : vehicle::descriptionWarnings(description))
       ROS_WARN("vehicle_dynamics_node: %s: %s", params_.vehicle.c_str(), w.c_str());
+    // Unset, the comfort point is the crew seat where the description names one (the bundled
+    // vehicle's), else the hull's CoG: every vehicle starts without a comfort_point of its own.
+    if (!params_.comfort_point_given) {
+      bool has_seat = false;
+      for (const vehicle::NamedPoint& p : description.named_points)
+        has_seat = has_seat || p.name == params_.vehicle_options.comfort_point;
+      if (!has_seat) {
+        ROS_INFO(
+            "vehicle_dynamics_node: ~comfort_point unset and %s names no '%s' point: ride "
+            "comfort at the hull's CoG (set ~comfort_point to one of its points for a seat)",
+            params_.vehicle.c_str(), params_.vehicle_options.comfort_point.c_str());
+        params_.vehicle_options.comfort_point = "hull";
+      }
+    }
     // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
     const std::string& point = params_.vehicle_options.comfort_point;
     std::string known = "hull";
@@ -1086,7 +1100,12 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   }
   status.add("contacts", static_cast<long>(watch->contactCount()));
   status.add("pulling at rest (the bonded statics)", static_cast<long>(watch->pullingAtRest()));
-  status.add("check rate [Hz]", params_.ground_contact_rate);
+  // The rate the checks run at: every round(~rate / ~ground_contact_rate) steps, so a requested
+  // rate that does not divide ~rate is shown as run (and as asked, when they differ).
+  status.add("check rate [Hz]", params_.vehicle_options.rate / static_cast<double>(contact_every_));
+  if (std::abs(params_.vehicle_options.rate / static_cast<double>(contact_every_) -
+               params_.ground_contact_rate) > 1e-9 * params_.ground_contact_rate)
+    status.add("check rate requested [Hz]", params_.ground_contact_rate);
   status.add("checks (since last report)", interval.checks);
   status.add("checks beyond the range (since last report)", interval.checks_beyond);
   status.add("most pulling at once (since last report)", static_cast<long>(interval.most_pulling));

@@ -73,9 +73,11 @@ void run(const ReduceOptions& opt) {
         .field("variant", vehicle::variantName(variant))
         .field("full_dofs", static_cast<long long>(report.full_dofs))
         .field("interface_dofs", static_cast<long long>(report.interface_dofs))
-        .field("input_dofs", static_cast<long long>(model.masterCount() - report.interface_dofs - report.mogesec_dofs))
+        .field("input_dofs", static_cast<long long>(model.masterCount() - report.interface_dofs -
+                                                    report.mogesec_dofs))
         .field("mogesec_dofs", static_cast<long long>(report.mogesec_dofs))
         .field("flexible_modes", report.flexible_modes)
+        .field("default_flexible_modes", report.default_fixed_interface_modes)
         .field("reduced_dofs", static_cast<long long>(report.reduced_dofs))
         .field("reduced_size_percent", 100.0 * report.reduced_dofs / report.full_dofs)
         .key("selected_modes")
@@ -122,13 +124,19 @@ void run(const ReduceOptions& opt) {
     json.endObject();
     return;
   }
-  std::cout << description.name << " (" << vehicle::variantName(variant) << "): " << report.full_dofs
-            << " active DOFs -> " << report.reduced_dofs << " CMS DOFs (" << std::fixed
-            << std::setprecision(1) << 100.0 * report.reduced_dofs / report.full_dofs << " %)\n"
+  std::cout << description.name << " (" << vehicle::variantName(variant)
+            << "): " << report.full_dofs << " active DOFs -> " << report.reduced_dofs
+            << " CMS DOFs (" << std::fixed << std::setprecision(1)
+            << 100.0 * report.reduced_dofs / report.full_dofs << " %)\n"
             << "  interface DOFs " << report.interface_dofs << ", hull and wheel DOFs "
-            << model.masterCount() - report.interface_dofs - report.mogesec_dofs << ", MoGeSeC DOFs "
-            << report.mogesec_dofs << ", flexible modes " << report.flexible_modes << "\n"
-            << "  selected global modes:\n";
+            << model.masterCount() - report.interface_dofs - report.mogesec_dofs
+            << ", MoGeSeC DOFs " << report.mogesec_dofs << ", flexible modes "
+            << report.flexible_modes;
+  if (report.flexible_modes != report.default_fixed_interface_modes && options.mode_count == 0)
+    std::cout << " (raised from " << report.default_fixed_interface_modes
+              << ", twice the selected global modes, until the modes up to " << options.band_hz
+              << " Hz are within 2 %)";
+  std::cout << "\n  selected global modes:\n";
   for (const auto& m : model.selected_modes)
     std::cout << "    mode " << std::setw(2) << m.mode + 1 << std::setw(8) << std::setprecision(2)
               << m.frequency_hz << " Hz  " << m.reason << "\n";

@@ -50,8 +50,10 @@ void ReductionFlags::addTo(CLI::App* command) {
                        "MoGeSeC master DOFs (paper: 9; ~reduction/mogesec_masters)")
           ->check(CLI::Range(0, 1000)),
       command
-          ->add_option("--modes", o.mode_count,
-                       "fixed-interface modes (0: twice the selected; ~reduction/mode_count)")
+          ->add_option(
+              "--modes", o.mode_count,
+              "fixed-interface modes (0: twice the selected, more until the modes below --band "
+              "are within 2 %; ~reduction/mode_count)")
           ->check(CLI::Range(0, 1000)),
   };
   // (0, 1] as the node's ~reduction/mac_threshold: at 0 every mode would correlate.

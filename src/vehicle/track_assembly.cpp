@@ -261,12 +261,19 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
     s.shear_y *= ry;
     normal_sum *= rz;
     end_share *= rr;
+    // k_ry grows about as the end columns' share f (k_ry ~ f k_z c^2): with all of k_z in them
+    // (f = 1) these columns give about k_ry / f, and columns sqrt(f) c from the centre would
+    // give the target.
     if (end_share > 1.0)
-      throw InputError("track_assembly.pad_column_offset: the spring columns (" +
-                       std::to_string(t.pad_column_offset) +
-                       " m from the pad centre) are too close together to give "
-                       "torsional_stiffness_y = " +
-                       std::to_string(t.torsional_stiffness_y) + " N*m/rad");
+      throw InputError(
+          "track_assembly.pad_column_offset: the spring columns (" + brief(t.pad_column_offset) +
+          " m from the pad centre) are too close together to give "
+          "torsional_stiffness_y = " +
+          brief(t.torsional_stiffness_y) + " N*m/rad: they give at most about " +
+          brief(t.torsional_stiffness_y / end_share) +
+          " N*m/rad (all of compression_stiffness in the fore and aft columns); "
+          "columns about " +
+          brief(t.pad_column_offset * std::sqrt(end_share)) + " m from the centre would give it");
   }
   throw SolverError("track assembly calibration did not converge in " +
                     std::to_string(kMaxCalibrationIterations) + " iterations");

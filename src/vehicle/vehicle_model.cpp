@@ -142,9 +142,9 @@ class Builder {
   // road wheels (centre distance >= R + r) and the ground run below them.
   void checkRollerClearance(double xr, double zr) const {
     const double r = d_.return_rollers.radius;
-    const std::string roller = "return_rollers.x: the roller at x = " + brief(xr) + " m (radius " +
-                               brief(r) + " m, hanging under the top run to z = " + brief(zr) +
-                               " m)";
+    const std::string roller =
+        "return_rollers.x: the roller at x = " + brief(xr) + " m (radius " + brief(r) +
+        " m, its centre hanging under the top run at z = " + brief(zr) + " m)";
     if (zr - r <= d_.track_assembly.upper_surface_height)
       throw InputError(roller + " reaches down to the ground run (return_rollers.radius, or the "
                                 "top run is too low)");

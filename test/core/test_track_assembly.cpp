@@ -103,6 +103,35 @@ TEST(TrackAssemblyCalibration, ColumnsTooCloseForTheTorsionalStiffnessAreRejecte
   }
 }
 
+// The refusal says what the columns can give and where they would give the target (k_ry ~ f k_z
+// c^2): 2 % below the first, and at 2 % beyond the second, the calibration succeeds.
+TEST(TrackAssemblyCalibration, RefusalSaysWhatWouldFit) {
+  tvd::vehicle::TrackAssemblyDescription d;
+  d.pad_column_offset = 0.05;
+  std::string message;
+  try {
+    tvd::vehicle::calibrateTrackAssembly(d);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    message = e.what();
+  }
+  const auto number_after = [&](const std::string& words) {
+    const std::size_t at = message.find(words);
+    EXPECT_NE(at, std::string::npos) << message;
+    return at == std::string::npos ? 0.0 : std::stod(message.substr(at + words.size()));
+  };
+  const double most = number_after("they give at most about ");
+  const double offset = number_after("columns about ");
+  ASSERT_GT(most, 0.0);
+  ASSERT_GT(offset, d.pad_column_offset);
+  tvd::vehicle::TrackAssemblyDescription weaker = d;
+  weaker.torsional_stiffness_y = 0.98 * most;
+  EXPECT_NO_THROW(tvd::vehicle::calibrateTrackAssembly(weaker));
+  tvd::vehicle::TrackAssemblyDescription wider = d;
+  wider.pad_column_offset = 1.02 * offset;
+  EXPECT_NO_THROW(tvd::vehicle::calibrateTrackAssembly(wider));
+}
+
 TEST(TrackAssemblyCalibration, MassNotCoveringPadsAndPinsIsRejected) {
   tvd::vehicle::TrackAssemblyDescription d;
   d.mass = 5.0;

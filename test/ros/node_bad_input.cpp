@@ -177,8 +177,10 @@ struct NodeRun {
 NodeRun runNode(const std::string& arguments, int timeout) {
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   const std::string node = self.substr(0, self.rfind('/') + 1) + "vehicle_dynamics_node";
+  // Line-buffered stdout: rosconsole's INFO lines go to stdout, whose buffer a pipe would hold
+  // until `timeout` kills the node, losing them.
   const std::string command =
-      "timeout " + std::to_string(timeout) + " " + node + " " + arguments + " 2>&1";
+      "timeout " + std::to_string(timeout) + " stdbuf -oL " + node + " " + arguments + " 2>&1";
   NodeRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr)
@@ -315,18 +317,12 @@ TEST(NodeBadParameters, BadGroundContactRateIsNamed) {
 
 // Integers must be integers (roscpp would round 2.5 to 3 and build another model); frame ids
 // must be ones tf2 takes and not a wheel's or point's frame.
-TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
-  struct Case {
-    std::string name, arguments, message;
-  };
-  const std::vector<Case> cases = {
-      {"mode_count_half", "_reduction/mode_count:=2.5",
-       "/mode_count_half/reduction/mode_count: must be an integer, got 2.5"},
-      {"slash_prefix", "_frame_prefix:=/veh1/",
-       "/slash_prefix/frame_prefix: '/veh1/' must not start with '/'"},
-      {"base_is_point", "_base_frame:=crew_seat",
-       "/base_is_point/base_frame: 'crew_seat' is also the frame of a road wheel or named point"},
-  };
+// A node run per case (named `name`, given `arguments`) stops at once with one FATAL line that
+// holds `message`.
+struct StopCase {
+  std::string name, arguments, message;
+};
+void expectEachStopsNamed(const std::vector<StopCase>& cases) {
   for (const auto& [name, arguments, message] : cases) {
     SCOPED_TRACE(arguments);
     const NodeRun run = runNamed(name, arguments);
@@ -334,6 +330,17 @@ TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
   }
+}
+
+TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
+  expectEachStopsNamed({
+      {"mode_count_half", "_reduction/mode_count:=2.5",
+       "/mode_count_half/reduction/mode_count: must be an integer, got 2.5"},
+      {"slash_prefix", "_frame_prefix:=/veh1/",
+       "/slash_prefix/frame_prefix: '/veh1/' must not start with '/'"},
+      {"base_is_point", "_base_frame:=crew_seat",
+       "/base_is_point/base_frame: 'crew_seat' is also the frame of a road wheel or named point"},
+  });
 }
 
 // What the node accepts but would otherwise do silently: a misspelt parameter is named with the
@@ -360,23 +367,44 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
       << run.output;
 }
 
+// A vehicle of our own without a crew_seat point starts with ~comfort_point unset: the comfort
+// meter then watches the hull's CoG, and an INFO line says so (it once stopped with a FATAL line
+// on the default's crew_seat). Set to a point it does not name, it still stops, naming it.
+TEST(NodeBadParameters, UnsetComfortPointFallsBackToTheHullOnAVehicleWithoutACrewSeat) {
+  ros::NodeHandle private_nh("~");
+  const std::string own = test::requiredParam<std::string>(private_nh, "own_vehicle");
+  // A cache of its own: NodeReducedModel takes the newest tracked model of ~cache_dir as the
+  // bundled vehicle's.
+  const std::string cache_dir =
+      test::requiredParam<std::string>(private_nh, "cache_dir") + "/own_vehicle";
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const NodeRun run =
+      runNode("__name:=own_vehicle _vehicle:=" + own + " _cache_dir:=" + cache_dir, timeout);
+  EXPECT_EQ(run.exit_status, 124) << "the node should run until `timeout` stops it:\n"
+                                  << run.output;
+  EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("~comfort_point unset and " + own +
+                            " names no 'crew_seat' point: ride comfort at the hull's CoG"),
+            std::string::npos)
+      << run.output;
+  const NodeRun named = runNode("__name:=own_vehicle_seat _vehicle:=" + own +
+                                    " _cache_dir:=" + cache_dir + " _comfort_point:=crew_seat",
+                                timeout);
+  EXPECT_EQ(named.exit_status, 1) << named.output;
+  EXPECT_NE(named.output.find("/own_vehicle_seat/comfort_point: unknown point 'crew_seat' (hull, "
+                              "driver_seat, commander_hatch in "),
+            std::string::npos)
+      << named.output;
+}
+
 // ~footprint_frame must be a frame of its own; ~publish_odom_tf a boolean.
 TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
-  struct Case {
-    std::string name, arguments, message;
-  };
-  const std::vector<Case> cases = {
+  expectEachStopsNamed({
       {"footprint_is_odom", "_footprint_frame:=odom",
        "/footprint_is_odom/footprint_frame: must differ from ~odom_frame and ~base_frame"},
       {"odom_tf_maybe", "_publish_odom_tf:=maybe",
        "/odom_tf_maybe/publish_odom_tf: must be a boolean"},
-  };
-  for (const auto& [name, arguments, message] : cases) {
-    SCOPED_TRACE(arguments);
-    const NodeRun run = runNamed(name, arguments);
-    EXPECT_EQ(run.exit_status, 1) << run.output;
-    EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
-  }
+  });
 }
 
 // An unwritable ~cache_dir does not stop the node (the model is built), but it must not be

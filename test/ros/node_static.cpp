@@ -3,6 +3,7 @@
 // imu/<point> the specific force of gravity in the point's frame (node_static.test).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -308,6 +309,16 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
                                "checks beyond the range (since the last start or reset)"),
             0.0);
   EXPECT_GT(diagnostics_.value(": ground contact", "checks (since last report)"), 0.0);
+  // The rate the checks run at, every round(rate / requested) steps of the 1 kHz loop; the
+  // requested one beside it only when they differ (default 50 Hz divides 1000).
+  const double requested = private_nh_.param("node_ground_contact_rate", 50.0);
+  const double every = std::round(1000.0 / requested);
+  EXPECT_NEAR(diagnostics_.value(": ground contact", "check rate [Hz]"), 1000.0 / every, 1e-3);
+  if (1000.0 / every != requested)
+    EXPECT_NEAR(diagnostics_.value(": ground contact", "check rate requested [Hz]"), requested,
+                1e-9);
+  else
+    EXPECT_TRUE(std::isnan(diagnostics_.value(": ground contact", "check rate requested [Hz]")));
   const double left = diagnostics_.value(": ground contact", "ground force left now [N]");
   const double right = diagnostics_.value(": ground contact", "ground force right now [N]");
   EXPECT_GT(left, 0.0);

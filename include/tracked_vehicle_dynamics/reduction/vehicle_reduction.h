@@ -32,7 +32,9 @@ struct VehicleReductionOptions {
   double band_hz = 30.0;           ///< bandwidth of interest [Hz] (paper: 0-30 Hz)
   double mac_threshold = 0.7;      ///< paper Fig. 9: 70 %
   int mogesec_masters = 9;         ///< extra MoGeSeC master DOFs (paper Table 5: 9)
-  int mode_count = 0;              ///< fixed-interface modes; 0: twice the selected global modes
+  /// Fixed-interface modes; 0: twice the selected global modes, raised by the selected count
+  /// until every full-model mode below band_hz is reproduced within 2 % (at most 200).
+  int mode_count = 0;
 };
 
 /// The variant and every reduction option as text, e.g. "variant tracked; rule mac; global_modes
@@ -79,6 +81,9 @@ struct VehicleReductionReport {
   std::vector<MogesecPick> mogesec_picks;
   std::vector<std::string> mogesec_parts;
   int flexible_modes = 0;
+  /// The fixed-interface modes the count rule gave before the band check added any (equal to
+  /// flexible_modes when none was added, or with --modes N).
+  int default_fixed_interface_modes = 0;
   DofIndex reduced_dofs = 0;
   std::vector<double> full_frequencies_hz;     ///< full-model modes (band)
   std::vector<double> reduced_frequencies_hz;  ///< the reduced model's modes (band)
