@@ -2,6 +2,7 @@
 // against the paper (Dimauro et al. 2024, Tables 1 and 4).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -140,10 +141,20 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "named_points.crew_seat", "more than 1 m outside the hull (7.6 x 3.42 x 2.2 m)"},
   };
   for (const Case& c : cases) {
-    const std::string message = loadError(replaced(text, c.from, c.to));
+    const std::string edited = replaced(text, c.from, c.to);
+    const std::string message = loadError(edited);
     EXPECT_NE(message.find(c.key), std::string::npos) << c.key << ": " << message;
     EXPECT_NE(message.find(c.what), std::string::npos) << c.what << ": " << message;
     EXPECT_NE(message.find("edited.yaml"), std::string::npos) << message;
+    // Every message gives the edited line, the loader's as well as the consistency checks' run
+    // on the loaded values (withKeyLine()).
+    if (!c.to.empty()) {
+      const auto line = 1 + std::count(edited.begin(), edited.begin() + edited.find(c.to), '\n');
+      const std::string tail = " (line " + std::to_string(line) + ")";
+      EXPECT_TRUE(message.size() >= tail.size() &&
+                  message.compare(message.size() - tail.size(), tail.size(), tail) == 0)
+          << tail << ": " << message;
+    }
   }
 }
 
