@@ -32,8 +32,9 @@ struct VehicleReductionOptions {
   double band_hz = 30.0;           ///< bandwidth of interest [Hz] (paper: 0-30 Hz)
   double mac_threshold = 0.7;      ///< paper Fig. 9: 70 %
   int mogesec_masters = 9;         ///< extra MoGeSeC master DOFs (paper Table 5: 9)
-  /// Fixed-interface modes; 0: twice the selected global modes, raised by the selected count
-  /// until every full-model mode below band_hz is reproduced within 2 % (at most 200).
+  /// Fixed-interface modes; 0: twice the selected global modes, raised by the selected count (at
+  /// least 4) until every full-model mode below band_hz is reproduced within 2 % (at most 8
+  /// times, up to 200 modes).
   int mode_count = 0;
 };
 
