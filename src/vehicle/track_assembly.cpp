@@ -263,17 +263,21 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
     end_share *= rr;
     // k_ry grows about as the end columns' share f (k_ry ~ f k_z c^2): with all of k_z in them
     // (f = 1) these columns give about k_ry / f, and columns sqrt(f) c from the centre would
-    // give the target.
-    if (end_share > 1.0)
+    // give the target, if that fits in a pitch (2 c < pitch: validateDescription()).
+    if (end_share > 1.0) {
+      const double offset = t.pad_column_offset * std::sqrt(end_share);
       throw InputError(
           "track_assembly.pad_column_offset: the spring columns (" + brief(t.pad_column_offset) +
-          " m from the pad centre) are too close together to give "
-          "torsional_stiffness_y = " +
+          " m from the pad centre) are too close together to give torsional_stiffness_y = " +
           brief(t.torsional_stiffness_y) + " N*m/rad: they give at most about " +
           brief(t.torsional_stiffness_y / end_share) +
-          " N*m/rad (all of compression_stiffness in the fore and aft columns); "
-          "columns about " +
-          brief(t.pad_column_offset * std::sqrt(end_share)) + " m from the centre would give it");
+          " N*m/rad (all of compression_stiffness in the fore and aft columns); " +
+          (2.0 * offset < t.pitch
+               ? "columns about " + brief(offset) + " m from the centre would give it"
+               : "columns far enough apart for it (about " + brief(offset) +
+                     " m from the centre) would not fit in the pitch (" + brief(t.pitch) +
+                     " m): lower torsional_stiffness_y or raise compression_stiffness"));
+    }
   }
   throw SolverError("track assembly calibration did not converge in " +
                     std::to_string(kMaxCalibrationIterations) + " iterations");

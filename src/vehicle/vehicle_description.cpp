@@ -619,8 +619,11 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
         std::string(damping.model == DampingModel::Modal ? "damping.modal_ratio"
                                                          : "damping.rayleigh_beta") +
         ": the vehicle has no damping at all: FRF peaks are unbounded at the resonances and "
-        "free vibrations never decay (give a modal_ratio, e.g. the bundled vehicle's 0.05, or "
-        "arm dampers on some damped_stations)");
+        "free vibrations never decay (" +
+        (damping.model == DampingModel::Modal
+             ? std::string("give damping.modal_ratio, e.g. the bundled vehicle's 0.05")
+             : std::string("give damping.rayleigh_alpha or damping.rayleigh_beta")) +
+        ", or arm dampers: suspension.arm_damping > 0 on some damping.damped_stations)");
   const double half_wheelbase = 0.5 * d.running_gear.axle_spacing * (d.running_gear.axle_count - 1);
   if (std::abs(d.hull.cog_x) > half_wheelbase)
     warnings.push_back("hull.cog_x: the centre of gravity (x = " + brief(d.hull.cog_x) +

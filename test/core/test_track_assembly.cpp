@@ -130,6 +130,19 @@ TEST(TrackAssemblyCalibration, RefusalSaysWhatWouldFit) {
   tvd::vehicle::TrackAssemblyDescription wider = d;
   wider.pad_column_offset = 1.02 * offset;
   EXPECT_NO_THROW(tvd::vehicle::calibrateTrackAssembly(wider));
+  // A target no column spacing within the pitch reaches is not sent to a wider spacing.
+  tvd::vehicle::TrackAssemblyDescription stiff = d;
+  stiff.torsional_stiffness_y = 10.0 * d.torsional_stiffness_y;
+  try {
+    tvd::vehicle::calibrateTrackAssembly(stiff);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("would not fit in the pitch (" + tvd::brief(d.pitch) +
+                                         " m): lower torsional_stiffness_y or raise "
+                                         "compression_stiffness"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(TrackAssemblyCalibration, MassNotCoveringPadsAndPinsIsRejected) {

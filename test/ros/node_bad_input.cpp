@@ -177,10 +177,10 @@ struct NodeRun {
 NodeRun runNode(const std::string& arguments, int timeout) {
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   const std::string node = self.substr(0, self.rfind('/') + 1) + "vehicle_dynamics_node";
-  // Line-buffered stdout: rosconsole's INFO lines go to stdout, whose buffer a pipe would hold
-  // until `timeout` kills the node, losing them.
-  const std::string command =
-      "timeout " + std::to_string(timeout) + " stdbuf -oL " + node + " " + arguments + " 2>&1";
+  // Line-buffered stdout (rosconsole's own switch): its INFO lines go to stdout, whose buffer a
+  // pipe would hold until `timeout` kills the node, losing them.
+  const std::string command = "ROSCONSOLE_STDOUT_LINE_BUFFERED=1 timeout " +
+                              std::to_string(timeout) + " " + node + " " + arguments + " 2>&1";
   NodeRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr)

@@ -82,12 +82,17 @@ struct VehicleReductionReport {
   std::vector<MogesecPick> mogesec_picks;
   std::vector<std::string> mogesec_parts;
   int flexible_modes = 0;
-  /// The fixed-interface modes the count rule gave before the band check added any (equal to
-  /// flexible_modes when none was added, or with --modes N).
-  int default_fixed_interface_modes = 0;
+  /// The fixed-interface modes the reduction started from (twice the selected, or mode_count)
+  /// before the band check added any; flexible_modes when none was added.
+  int initial_fixed_interface_modes = 0;
+  /// max_r |f_red,r - f_full,r| / f_full,r over the full-model modes below the band (above
+  /// 0.1 Hz), pairing the r-th modes (reduced_frequencies_hz).
+  double max_relative_frequency_error = 0.0;
   DofIndex reduced_dofs = 0;
   std::vector<double> full_frequencies_hz;     ///< full-model modes (band)
-  std::vector<double> reduced_frequencies_hz;  ///< the reduced model's modes (band)
+  /// The reduced model's lowest modes, as many as full_frequencies_hz (paired r-th with r-th;
+  /// a pair's reduced frequency may lie above the band).
+  std::vector<double> reduced_frequencies_hz;
   double build_seconds = 0.0, modes_seconds = 0.0, selection_seconds = 0.0,
          reduce_seconds = 0.0, total_seconds = 0.0;
   bool from_cache = false;
