@@ -251,6 +251,34 @@ TEST(OnlineVehicle, UnknownOutputsAreNamed) {
   EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), o), InputError);
 }
 
+// comfort_point "hull" (the node's default for a vehicle without a crew seat): the meter reads
+// the hull's vertical acceleration, sample for sample, not a named point's.
+TEST(OnlineVehicle, HullComfortPointWeighsTheHullsVerticalAcceleration) {
+  OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  o.comfort_point = "hull";
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), o);
+  OnlineVehicle seat(test::toyModel(), test::toyGeometry(),
+                     options(dynamics::DiscretizationMethod::ModalDecoupled));
+  EXPECT_EQ(vehicle.comfortPoint(), "hull");
+  dynamics::ComfortMeter expected(kRate);  // Wk, as the vehicle's (VDV needs no more)
+  for (OnlineVehicle* v : {&vehicle, &seat}) {
+    for (const TerrainPatch& p : patches(bump(), 50))
+      v->addTerrain(p);
+    v->setSpeed(10.0);
+  }
+  for (int k = 0; k < 600; ++k) {
+    vehicle.step();
+    seat.step();
+    expected.add(vehicle.hullAcceleration()(2));
+  }
+  EXPECT_GT(expected.vibrationDoseValue(), 0.1);
+  EXPECT_NEAR(vehicle.comfort().vibrationDoseValue(), expected.vibrationDoseValue(),
+              1e-12 * expected.vibrationDoseValue());
+  // The crew seat lies ahead of the CoG: pitch makes its dose another one.
+  EXPECT_GT(std::abs(seat.comfort().vibrationDoseValue() - expected.vibrationDoseValue()),
+            1e-3 * expected.vibrationDoseValue());
+}
+
 TEST(OnlineVehicle, ResetReturnsToEquilibriumAtStationZero) {
   OnlineVehicle vehicle(test::toyModel(), test::toyGeometry());
   const Vector6 rest = vehicle.hullDisplacement();
