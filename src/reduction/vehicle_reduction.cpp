@@ -328,8 +328,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
          addition < kMaxAutoAdditions && request.craig_bampton.fixed_interface.count < most;
        ++addition) {
     request.craig_bampton.fixed_interface.count =
-        std::min({request.craig_bampton.fixed_interface.count + step, slave_count,
-                  kMaxAutoFixedInterfaceModes});
+        std::min(request.craig_bampton.fixed_interface.count + step, most);
     reduced = buildReducedModel(model.system, request);
     reduced_modes = fem::solveModesDense(reduced.system.stiffness, reduced.system.mass);
     band = checkBand(rep.full_frequencies_hz, reduced_modes.frequencies_hz);

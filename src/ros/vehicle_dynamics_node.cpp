@@ -172,27 +172,23 @@ void VehicleDynamicsNode::loadVehicle() {
         vehicle::loadVehicleDescription(params_.vehicle);
     for (const std::string& w : vehicle::descriptionWarnings(description))
       ROS_WARN("vehicle_dynamics_node: %s: %s", params_.vehicle.c_str(), w.c_str());
-    // Unset, the comfort point is the crew seat where the description names one (the bundled
-    // vehicle's), else the hull's CoG: every vehicle starts without a comfort_point of its own.
-    if (!params_.comfort_point_given) {
-      bool has_seat = false;
-      for (const vehicle::NamedPoint& p : description.named_points)
-        has_seat = has_seat || p.name == params_.vehicle_options.comfort_point;
-      if (!has_seat) {
-        ROS_INFO(
-            "vehicle_dynamics_node: ~comfort_point unset and %s names no '%s' point: ride "
-            "comfort at the hull's CoG (set ~comfort_point to one of its points for a seat)",
-            params_.vehicle.c_str(), params_.vehicle_options.comfort_point.c_str());
-        params_.vehicle_options.comfort_point = "hull";
-      }
-    }
     // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
-    const std::string& point = params_.vehicle_options.comfort_point;
+    std::string& point = params_.vehicle_options.comfort_point;
     std::string known = "hull";
     bool found = point == "hull";
     for (const vehicle::NamedPoint& p : description.named_points) {
       known += ", " + p.name;
       found = found || p.name == point;
+    }
+    // Unset, the comfort point is the crew seat where the description names one (the bundled
+    // vehicle's), else the hull's CoG: every vehicle starts without a comfort_point of its own.
+    if (!found && !params_.comfort_point_given) {
+      ROS_INFO(
+          "vehicle_dynamics_node: ~comfort_point unset and %s names no '%s' point: ride comfort "
+          "at the hull's CoG (set ~comfort_point to one of its points for a seat)",
+          params_.vehicle.c_str(), point.c_str());
+      point = "hull";
+      found = true;
     }
     if (!found)
       throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
@@ -1102,9 +1098,9 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   status.add("pulling at rest (the bonded statics)", static_cast<long>(watch->pullingAtRest()));
   // The rate the checks run at: every round(~rate / ~ground_contact_rate) steps, so a requested
   // rate that does not divide ~rate is shown as run (and as asked, when they differ).
-  status.add("check rate [Hz]", params_.vehicle_options.rate / static_cast<double>(contact_every_));
-  if (std::abs(params_.vehicle_options.rate / static_cast<double>(contact_every_) -
-               params_.ground_contact_rate) > 1e-9 * params_.ground_contact_rate)
+  const double check_rate = params_.vehicle_options.rate / static_cast<double>(contact_every_);
+  status.add("check rate [Hz]", check_rate);
+  if (std::abs(check_rate - params_.ground_contact_rate) > 1e-9 * params_.ground_contact_rate)
     status.add("check rate requested [Hz]", params_.ground_contact_rate);
   status.add("checks (since last report)", interval.checks);
   status.add("checks beyond the range (since last report)", interval.checks_beyond);

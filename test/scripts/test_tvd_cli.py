@@ -26,6 +26,8 @@ import junit_runner
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 VEHICLE = os.path.join(ROOT, "config", "vehicles", "paper_vehicle.yaml")
+# A vehicle of our own (5 axles, no crew_seat point): nothing may assume the bundled one.
+OWN_VEHICLE = os.path.join(ROOT, "test", "data", "light_5_axle.yaml")
 GRAVITY = 9.80665  # [m/s^2], the description's gravity
 INPUT_ERROR_STATUS = 2
 TVD = None  # set from --tvd
@@ -305,7 +307,7 @@ class TvdCliTest(unittest.TestCase):
         twice as many fixed-interface modes (4) left a mode below 30 Hz 12 % too stiff. The default
         adds modes until every full-model mode below the band is within 2 % and says so; a
         --modes N that misses it is warned about, naming the mode and its two frequencies."""
-        own = os.path.join(ROOT, "test", "data", "light_5_axle.yaml")
+        own = OWN_VEHICLE
         d = self.tvd_json("reduce", "--vehicle", own, "--variant", "tracked")
         selected = len(d["selected_modes"])
         self.assertEqual(d["initial_flexible_modes"], 2 * selected)
@@ -354,7 +356,7 @@ class TvdCliTest(unittest.TestCase):
     def test_a_vehicle_of_our_own_runs_every_step(self):
         """Nothing assumes the bundled vehicle's 7 axles: the light 5-axle fixture's statics carry
         its weight, and its simulation has 5 wheels a side, at rest before the hill."""
-        own = os.path.join(ROOT, "test", "data", "light_5_axle.yaml")
+        own = OWN_VEHICLE
         s = self.tvd_json("statics", "--vehicle", own, "--variant", "tracked")
         self.assertLess(abs(s["ground_reaction_sum_n"] - s["weight_n"]) / s["weight_n"], 1e-6)
         out = self.path("light_5_axle_long_hill.csv")
