@@ -460,29 +460,17 @@ E readChoice(const io::YamlValue& entry, const std::string& what,
   v.fail("unknown " + what + " '" + name + "' (" + names + ")");
 }
 
-// The consistency checks run on the loaded values, where the file's lines are gone; their
-// messages start "<file>: <key path>: " like the loader's, so the key's line is found again in
-// the document and appended as the loader does ("(line N)"). A path that is not a key of the
-// document (a check naming two keys in prose) leaves the message as it is.
-std::string withKeyLine(const io::YamlValue& root, const std::string& message) {
-  const std::string prefix = root.file() + ": ";
-  if (message.compare(0, prefix.size(), prefix) != 0 || message.find("(line ") != std::string::npos)
-    return message;
-  const std::size_t end = message.find(": ", prefix.size());
-  if (end == std::string::npos)
-    return message;
-  const std::string path = message.substr(prefix.size(), end - prefix.size());
-  if (path.empty() || path.find(' ') != std::string::npos)
-    return message;
-  std::optional<io::YamlValue> node = root;
-  for (std::size_t start = 0; node && start <= path.size();) {
-    const std::size_t dot = std::min(path.find('.', start), path.size());
-    node = node->isMap() ? node->find(path.substr(start, dot - start)) : std::nullopt;
-    start = dot + 1;
+// Every key path of the document with its line (maps only: a list's elements have no key).
+void collectKeyLines(const io::YamlValue& node, const std::string& prefix,
+                     std::map<std::string, int>* lines) {
+  if (!node.isMap())
+    return;
+  for (const auto& [key, value] : node.entries()) {
+    const std::string path = prefix.empty() ? key : prefix + "." + key;
+    if (value.line() > 0)
+      (*lines)[path] = value.line();
+    collectKeyLines(value, path, lines);
   }
-  if (!node || node->line() <= 0)
-    return message;
-  return message + " (line " + std::to_string(node->line()) + ")";
 }
 
 VehicleDescription fromYaml(const io::YamlValue& root) {
@@ -531,15 +519,34 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
     const io::YamlValue v = quantity(entry, "m", d.sources);
     d.named_points.push_back(NamedPoint{name, v.asVector3()});
   }
+  collectKeyLines(root, "", &d.key_lines);
   try {
     validateDescription(d, file);
   } catch (const InputError& e) {
-    throw InputError(withKeyLine(root, e.what()));
+    throw InputError(withKeyLine(d, e.what()));
   }
   return d;
 }
 
 }  // namespace
+
+// The consistency checks and the model builder's geometric checks run on the loaded values,
+// where the file's lines are gone; their messages start "<file>: <key path>: " like the
+// loader's, so the key's line is looked up and appended as the loader does ("(line N)"). A path
+// that is not a key of the document (a check naming two keys in prose) leaves the message as it
+// is.
+std::string withKeyLine(const VehicleDescription& d, const std::string& message) {
+  const std::string prefix = d.origin + ": ";
+  if (message.compare(0, prefix.size(), prefix) != 0 || message.find("(line ") != std::string::npos)
+    return message;
+  const std::size_t end = message.find(": ", prefix.size());
+  if (end == std::string::npos)
+    return message;
+  const auto it = d.key_lines.find(message.substr(prefix.size(), end - prefix.size()));
+  if (it == d.key_lines.end())
+    return message;
+  return message + " (line " + std::to_string(it->second) + ")";
+}
 
 VehicleDescription parseVehicleDescription(const std::string& text, const std::string& file) {
   return fromYaml(io::YamlValue::parse(text, file));

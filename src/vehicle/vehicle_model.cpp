@@ -549,14 +549,14 @@ std::string nodePart(const VehicleLayout& layout, NodeId node) {
 
 VehicleModel buildVehicleModel(const VehicleDescription& description, Variant variant) {
   // The builder's geometric checks (the chain path around sprocket and idler) name the key;
-  // the file they came from is prefixed here, once.
+  // the file they came from is prefixed here, once, and the key's line appended.
   try {
     return Builder(description, variant).build();
   } catch (const InputError& e) {
     const std::string what = e.what();
     if (what.rfind(description.origin + ":", 0) == 0)
-      throw;
-    throw InputError(description.origin + ": " + what);
+      throw InputError(withKeyLine(description, what));
+    throw InputError(withKeyLine(description, description.origin + ": " + what));
   }
 }
 

@@ -158,6 +158,34 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
   }
 }
 
+// The model builder's geometric checks (chain path, end wheels, rollers) run after loading; a
+// description read from a file still gets the key's line in their messages.
+TEST(VehicleDescription, BuilderErrorsGiveTheKeysLine) {
+  const std::string text = readFile(kDescriptionFile);
+  const std::string from = "  centre_z: {value: 0.78, unit: m,";
+  const std::string to = "  centre_z: {value: 0.30, unit: m,";
+  const std::string edited = replaced(text, from, to);
+  const veh::VehicleDescription d = veh::parseVehicleDescription(edited, "edited.yaml");
+  const auto line = 1 + std::count(edited.begin(), edited.begin() + edited.find(to), '\n');
+  EXPECT_EQ(d.key_lines.at("sprocket.centre_z"), line);
+  try {
+    veh::buildVehicleModel(d, veh::Variant::Tracked);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "edited.yaml: sprocket.centre_z: the sprocket reaches down to the ground run (line " +
+                  std::to_string(line) + ")");
+  }
+  // Only a message that starts with the description's origin and one of its keys is extended.
+  EXPECT_EQ(veh::withKeyLine(d, "edited.yaml: sprocket.centre_z and idler.centre_z: differ"),
+            "edited.yaml: sprocket.centre_z and idler.centre_z: differ");
+  EXPECT_EQ(veh::withKeyLine(d, "other.yaml: sprocket.centre_z: x"),
+            "other.yaml: sprocket.centre_z: x");
+  EXPECT_EQ(
+      veh::withKeyLine(veh::VehicleDescription{}, "vehicle description: sprocket.centre_z: x"),
+      "vehicle description: sprocket.centre_z: x");
+}
+
 TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
   veh::VehicleDescription d;
   d.track_assembly.ground_count = 100;

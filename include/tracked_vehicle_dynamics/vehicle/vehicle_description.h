@@ -183,7 +183,15 @@ struct VehicleDescription {
   std::map<std::string, std::string> sources;
   /// Where it was read from, for messages (not part of the hash).
   std::string origin = "vehicle description";
+  /// Key path (e.g. "sprocket.centre_z") -> its line in `origin`, for messages raised after
+  /// loading (the model builder's geometric checks); empty for a description made in code (not
+  /// part of the hash).
+  std::map<std::string, int> key_lines;
 };
+
+/// `message` with " (line N)" appended when it reads "<origin>: <key path>: ..." and the key's
+/// line is known (VehicleDescription::key_lines); otherwise unchanged.
+std::string withKeyLine(const VehicleDescription& description, const std::string& message);
 
 /// Reads a description file. Every key is required; each value is a map
 /// {value: <number or list>, unit: <string>, source: <string>} and the unit must be the one the
