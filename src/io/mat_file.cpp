@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 
+#include <hdf5.h>
 #include <matio.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -78,8 +79,9 @@ std::uint32_t readU32(const unsigned char* p, bool swap) {
 
 // Walks the top-level element tags of a MAT 5 file and checks that every element lies inside
 // the file. matio trusts these byte counts, so a truncated or overwritten file is refused here,
-// before matio reads past the end. 7.3 files are left to the HDF5 library's own checks.
-void checkMat5Structure(const std::string& path) {
+// before matio reads past the end. 7.3 files are left to the HDF5 library's own checks; returns
+// whether the file is one.
+bool checkMat5Structure(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in)
     throw InputError(path + ": cannot be opened for reading");
@@ -96,7 +98,7 @@ void checkMat5Structure(const std::string& path) {
     throw InputError(path + ": not a MAT 5 or 7.3 file (no endian indicator in the header)");
   const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
   if (version == 0x0200)
-    return;
+    return true;
   if (version != 0x0100)
     throw InputError(path + ": unsupported MAT file version 0x" + std::to_string(version));
   std::uint64_t offset = kMat5HeaderBytes;
@@ -122,6 +124,7 @@ void checkMat5Structure(const std::string& path) {
                        std::to_string(size));
     offset = std::min(end, size);
   }
+  return false;
 }
 
 }  // namespace
@@ -244,12 +247,37 @@ void MatWriter::close() {
 // (40 variables, three cells of 360-431 strings) that way made 19,000 seeks and 4,600 reads, most
 // of the load time. Data is read from the kept header: numeric values into our own buffer on each
 // request, text once (kept for a second request).
+// HDF5 prints its error stack to stderr on every failed call (a damaged 7.3 file gives dozens of
+// lines); the reader reports the failure itself in one message, so the printing is off while
+// it calls matio and restored afterwards (the handler is the process's, shared with any other
+// HDF5 user).
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    saved_ = H5Eget_auto2(H5E_DEFAULT, &function_, &data_) >= 0;
+    if (saved_)
+      H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() {
+    if (saved_)
+      H5Eset_auto2(H5E_DEFAULT, function_, data_);
+  }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t function_ = nullptr;
+  void* data_ = nullptr;
+  bool saved_ = false;
+};
+
 struct MatReader::Impl {
   mat_t* mat = nullptr;
   std::vector<VarPtr> headers;   // file order, as names_
   std::vector<char> data_read;   // the header's data has been read (text variables)
   ~Impl() {
-    headers.clear();  // before the file they refer to is closed
+    const QuietHdf5 quiet;  // closing a damaged 7.3 file fails in HDF5 too
+    headers.clear();        // before the file they refer to is closed
     if (mat)
       Mat_Close(mat);
   }
@@ -261,10 +289,15 @@ MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()),
     throw InputError(path + ": file does not exist");
   if (!S_ISREG(info.st_mode))
     throw InputError(path + ": not a regular file");
-  checkMat5Structure(path);
+  const bool mat73 = checkMat5Structure(path);
+  // A damaged 7.3 file may still open (its MAT header is intact) and then list no variable:
+  // said here, not later as "variable '...' is missing". A MAT 5 file is walked above.
+  const std::string damaged73 = path + ": a damaged or truncated MAT 7.3 (HDF5) file";
+  const QuietHdf5 quiet;
   impl_->mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
   if (!impl_->mat)
-    throw InputError(path + ": not a readable MAT file");
+    throw InputError(mat73 ? damaged73 + " (HDF5 cannot open it)"
+                           : path + ": not a readable MAT file");
   if (Mat_Rewind(impl_->mat) != 0)
     throw InputError(path + ": the list of variables cannot be read");
   while (matvar_t* header = Mat_VarReadNextInfo(impl_->mat)) {
@@ -275,6 +308,8 @@ MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()),
     names_.emplace_back(header->name);
     impl_->headers.push_back(std::move(owned));
   }
+  if (mat73 && names_.empty())
+    throw InputError(damaged73 + " (no variable can be listed)");
   impl_->data_read.assign(impl_->headers.size(), 0);
 }
 
@@ -291,6 +326,7 @@ const matvar_t* MatReader::header(const std::string& name, bool with_data) const
   const auto i = static_cast<std::size_t>(found - names_.begin());
   matvar_t* var = impl_->headers[i].get();
   if (with_data && !impl_->data_read[i]) {
+    const QuietHdf5 quiet;
     if (Mat_VarReadDataAll(impl_->mat, var) != 0)
       throw InputError(path_ + ": variable '" + name + "' cannot be read (corrupted file)");
     impl_->data_read[i] = 1;
@@ -361,6 +397,7 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
   int start[2] = {0, 0};
   int stride[2] = {1, 1};
   int edge[2] = {static_cast<int>(r), static_cast<int>(c)};
+  const QuietHdf5 quiet;
   if (Mat_VarReadData(impl_->mat, const_cast<matvar_t*>(var), out.data(), start, stride, edge) != 0)
     throw InputError(where + " cannot be read (corrupted file)");
   for (DofIndex j = 0; j < c; ++j)

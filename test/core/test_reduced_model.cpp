@@ -118,6 +118,48 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
 INSTANTIATE_TEST_SUITE_P(Formats, MatFileTest,
                          testing::Values(io::MatFormat::Mat5, io::MatFormat::Mat73));
 
+// A MAT 7.3 (HDF5) file damaged after its 128-byte MAT header: matio opens it, but HDF5 lists
+// no variable; the reader says the file is damaged instead of "variable 'A' is missing", and
+// HDF5's error stack does not reach stderr.
+TEST(MatFile, DamagedMat73FileIsNamedAsSuch) {
+  const std::string path = tempPath("damaged73.mat");
+  {
+    io::MatWriter out(path, io::MatFormat::Mat73);
+    out.writeMatrix("A", Matrix::Ones(40, 40));
+    out.writeString("text", "kept");
+    out.close();
+  }
+  const std::string bytes = readBytes(path);
+  ASSERT_GT(bytes.size(), 1024u);
+  struct Damage {
+    std::string what;
+    std::string bytes;
+  };
+  std::string superblock = bytes;  // HDF5's superblock follows the 512-byte user block
+  for (std::size_t i = 512; i < 512 + 48; ++i)
+    superblock[i] = static_cast<char>(~superblock[i]);
+  const Damage damages[] = {{"superblock", superblock},
+                            {"truncated to half", bytes.substr(0, bytes.size() / 2)},
+                            {"truncated after the user block", bytes.substr(0, 600)}};
+  for (const Damage& d : damages) {
+    writeBytes(path, d.bytes);
+    std::string what;
+    testing::internal::CaptureStderr();  // one message: HDF5's own error stack is not printed
+    try {
+      const io::MatReader in(path);
+      in.readMatrix("A");
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << d.what;
+    ASSERT_FALSE(what.empty()) << d.what << ": read";
+    EXPECT_EQ(what.find("is missing"), std::string::npos) << d.what << ": " << what;
+    EXPECT_NE(what.find("MAT 7.3"), std::string::npos) << d.what << ": " << what;
+    EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << d.what << ": " << what;
+  }
+  std::remove(path.c_str());
+}
+
 TEST(MatFile, RefusesNonFiniteValuesNamingTheEntry) {
   const std::string path = tempPath("nan.mat");
   Matrix a = Matrix::Ones(3, 3);
