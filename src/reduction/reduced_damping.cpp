@@ -60,18 +60,19 @@ Matrix reducedDamping(const Matrix& m_r, const Matrix& k_r, const Matrix& c_disc
   return c_discrete;
 }
 
-std::string describe(const DampingOptions& options) {
+std::string describe(const DampingOptions& options, bool discrete_dampers) {
+  const std::string plus = discrete_dampers ? " + discrete dampers" : "";
   switch (options.model) {
     case DampingModel::Discrete:
-      return "discrete dampers only";
+      return discrete_dampers ? "discrete dampers only" : "none (no discrete dampers)";
     case DampingModel::Rayleigh:
       return "Rayleigh alpha=" + number(options.alpha) + " 1/s beta=" + number(options.beta) +
-             " s + discrete dampers";
+             " s" + plus;
     case DampingModel::Modal:
       return options.modal_ratios.size()
                  ? "modal, zeta per mode (" + std::to_string(options.modal_ratios.size()) +
-                       " ratios) + discrete dampers"
-                 : "modal zeta=" + number(options.modal_ratio) + " + discrete dampers";
+                       " ratios)" + plus
+                 : "modal zeta=" + number(options.modal_ratio) + plus;
   }
   return "unknown";
 }

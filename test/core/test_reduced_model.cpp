@@ -250,6 +250,11 @@ TEST(ReducedModel, BuildsLabelsOutputsAndInputs) {
   EXPECT_EQ(model.full_dof_count, system.size());
   EXPECT_EQ(model.version, softwareVersion());
   EXPECT_EQ(model.selected_modes.size(), 2u);
+  // The damping line names the discrete dampers only when the system has some (the support's).
+  EXPECT_EQ(model.damping, "Rayleigh alpha=0 1/s beta=0.0001 s + discrete dampers");
+  fem::System undamped = system;
+  undamped.damping.setZero();
+  EXPECT_EQ(buildReducedModel(undamped, req).damping, "Rayleigh alpha=0 1/s beta=0.0001 s");
   // Where each master is and why, in the request's order.
   ASSERT_EQ(model.master_positions.rows(), 3);
   ASSERT_EQ(model.master_positions.cols(), 3);

@@ -39,8 +39,8 @@ Matrix reducedDamping(const Matrix& m_r, const Matrix& k_r, const Matrix& c_disc
                       const DampingOptions& options);
 
 /// One line for reports and the .mat file, e.g. "Rayleigh alpha=0.5 1/s beta=0.001 s + discrete
-/// dampers".
-std::string describe(const DampingOptions& options);
+/// dampers"; "+ discrete dampers" only when the model has some (`discrete_dampers`).
+std::string describe(const DampingOptions& options, bool discrete_dampers = true);
 
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics
