@@ -40,6 +40,46 @@ def read_csv(path):
     return header, body
 
 
+
+def documented_checksum(path):
+    """FNV-1a 64 over each variable before `checksum`, in file order, as
+    doc/reduced_model_file.md defines it: name, kind (0 matrix, 1 text, 2 list of texts), then
+    rows, columns and column-major doubles, or the text, or the count and each text; counts and
+    lengths 8 bytes little-endian, before the bytes they count."""
+    import struct
+    h = 14695981039346656037
+    def add(data):
+        nonlocal h
+        for b in data:
+            h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+    def count(n):
+        add(struct.pack("<Q", n))
+    def text(t):
+        data = t.encode("utf-8")
+        count(len(data))
+        add(data)
+    m = scipy.io.loadmat(path)
+    for name, _, kind in scipy.io.whosmat(path):
+        if name == "checksum":
+            break
+        value = m[name]
+        text(name)
+        if kind == "cell":
+            count(2)
+            cells = [str(np.ravel(c)[0]) if np.size(c) else "" for c in np.ravel(value, order="F")]
+            count(len(cells))
+            for c in cells:
+                text(c)
+        elif kind == "char":
+            count(1)
+            text(str(value[0]) if value.size else "")
+        else:
+            count(0)
+            count(value.shape[0])
+            count(value.shape[1])
+            add(np.asfortranarray(value, dtype="<f8").tobytes(order="F"))
+    return f"{h:016x}"
+
 class TvdCliTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -401,6 +441,9 @@ class TvdCliTest(unittest.TestCase):
         # The full FE model's static pitch under 0.3 g braking (test_travel_inertia: 0.314577
         # mrad; the reduced model's equals it to 1e-11).
         self.assertAlmostEqual(namespace["brake_pitch_mrad"] / 0.314577, 1.0, delta=1e-5)
+        # The checksum, recomputed from the loaded values as the doc defines it.
+        self.assertEqual(documented_checksum(os.path.join(work, "tracked.mat")),
+                         str(scipy.io.loadmat(os.path.join(work, "tracked.mat"))["checksum"][0]))
 
     def test_simulate_json_and_csv_agree(self):
         speed_kmh = 50.0
