@@ -79,9 +79,9 @@ std::uint32_t readU32(const unsigned char* p, bool swap) {
 
 // Walks the top-level element tags of a MAT 5 file and checks that every element lies inside
 // the file. matio trusts these byte counts, so a truncated or overwritten file is refused here,
-// before matio reads past the end. 7.3 files are left to the HDF5 library's own checks; returns
-// whether the file is one.
-bool checkMat5Structure(const std::string& path) {
+// before matio reads past the end. 7.3 files are left to the HDF5 library's own checks. Returns
+// the file's format (the header's version field).
+MatFormat checkMatStructure(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in)
     throw InputError(path + ": cannot be opened for reading");
@@ -98,7 +98,7 @@ bool checkMat5Structure(const std::string& path) {
     throw InputError(path + ": not a MAT 5 or 7.3 file (no endian indicator in the header)");
   const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
   if (version == 0x0200)
-    return true;
+    return MatFormat::Mat73;
   if (version != 0x0100)
     throw InputError(path + ": unsupported MAT file version 0x" + std::to_string(version));
   std::uint64_t offset = kMat5HeaderBytes;
@@ -124,7 +124,7 @@ bool checkMat5Structure(const std::string& path) {
                        std::to_string(size));
     offset = std::min(end, size);
   }
-  return false;
+  return MatFormat::Mat5;
 }
 
 }  // namespace
@@ -241,16 +241,12 @@ void MatWriter::close() {
 // MatReader
 // ---------------------------------------------------------------------------------------------
 
-// The variables' headers are read once, in file order, when the file is opened. matio's reads by
-// name (Mat_VarRead, Mat_VarReadInfo) rewind and walk every header before the one they look for,
-// and a compressed cell's walk inflates the header of each of its elements: loading a reduced model
-// (40 variables, three cells of 360-431 strings) that way made 19,000 seeks and 4,600 reads, most
-// of the load time. Data is read from the kept header: numeric values into our own buffer on each
-// request, text once (kept for a second request).
 // HDF5 prints its error stack to stderr on every failed call (a damaged 7.3 file gives dozens of
 // lines); the reader reports the failure itself in one message, so the printing is off while
-// it calls matio and restored afterwards (the handler is the process's, shared with any other
-// HDF5 user).
+// it calls matio and restored afterwards. The handler is the calling thread's in a thread-safe
+// HDF5 build (Debian's), the process's otherwise, where readers on two threads could leave it
+// off.
+namespace {
 class QuietHdf5 {
  public:
   QuietHdf5() {
@@ -270,7 +266,14 @@ class QuietHdf5 {
   void* data_ = nullptr;
   bool saved_ = false;
 };
+}  // namespace
 
+// The variables' headers are read once, in file order, when the file is opened. matio's reads by
+// name (Mat_VarRead, Mat_VarReadInfo) rewind and walk every header before the one they look for,
+// and a compressed cell's walk inflates the header of each of its elements: loading a reduced model
+// (40 variables, three cells of 360-431 strings) that way made 19,000 seeks and 4,600 reads, most
+// of the load time. Data is read from the kept header: numeric values into our own buffer on each
+// request, text once (kept for a second request).
 struct MatReader::Impl {
   mat_t* mat = nullptr;
   std::vector<VarPtr> headers;   // file order, as names_
@@ -289,7 +292,7 @@ MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()),
     throw InputError(path + ": file does not exist");
   if (!S_ISREG(info.st_mode))
     throw InputError(path + ": not a regular file");
-  const bool mat73 = checkMat5Structure(path);
+  const bool mat73 = checkMatStructure(path) == MatFormat::Mat73;
   // A damaged 7.3 file may still open (its MAT header is intact) and then list no variable:
   // said here, not later as "variable '...' is missing". A MAT 5 file is walked above.
   const std::string damaged73 = path + ": a damaged or truncated MAT 7.3 (HDF5) file";
@@ -309,7 +312,7 @@ MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()),
     impl_->headers.push_back(std::move(owned));
   }
   if (mat73 && names_.empty())
-    throw InputError(damaged73 + " (no variable can be listed)");
+    throw InputError(damaged73 + " (no variable can be listed; an empty file reads the same)");
   impl_->data_read.assign(impl_->headers.size(), 0);
 }
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -202,7 +203,9 @@ std::vector<std::pair<std::string, YamlValue>> YamlValue::entries() const {
   std::vector<std::pair<std::string, YamlValue>> out;
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string key = it->first.Scalar();
-    out.emplace_back(key, child(it->second, keyPath(key), keyLine(it->first)));
+    YamlValue value = child(it->second, keyPath(key), keyLine(it->first));
+    value.entry_line_ = keyLine(it->first);
+    out.emplace_back(key, std::move(value));
   }
   return out;
 }

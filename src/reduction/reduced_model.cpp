@@ -143,7 +143,8 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   for (DofIndex j = 0; j < cb.modeCount(); ++j)
     model.dof_labels.push_back(modeLabel(j, cb.fixed_interface_frequencies_hz(j)));
   model.selected_modes = request.selection.modes;
-  // Discrete dampers: the suspension arms' (C); ground damping rides on the inputs (C_u).
+  // Discrete dampers: any in C (the suspension arms', and a damped ground spring's own term,
+  // whose input side is C_u).
   model.damping = describe(options.damping, system.damping.nonZeros() > 0);
   model.description_hash = request.description_hash;
   model.reduction = request.reduction;

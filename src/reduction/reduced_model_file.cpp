@@ -114,6 +114,8 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
 }
 
 // FNV-1a, 64 bit: not cryptographic, but any changed, missing or reordered byte changes it.
+// Numbers enter as little-endian bytes whatever the host's order, so a file checks the same on
+// every machine (doc/reduced_model_file.md gives the encoding).
 class Checksum {
  public:
   void add(const void* data, std::size_t bytes) {
@@ -125,7 +127,24 @@ class Checksum {
     add(static_cast<std::uint64_t>(s.size()));
     add(s.data(), s.size());
   }
-  void add(std::uint64_t v) { add(&v, sizeof(v)); }
+  void add(std::uint64_t v) {
+    unsigned char bytes[8];
+    for (int i = 0; i < 8; ++i)
+      bytes[i] = static_cast<unsigned char>(v >> (8 * i));
+    add(bytes, sizeof(bytes));
+  }
+  // IEEE-754 doubles, each as its 8 little-endian bytes.
+  void add(const double* values, std::size_t count) {
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    add(static_cast<const void*>(values), sizeof(double) * count);
+#else
+    for (std::size_t i = 0; i < count; ++i) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &values[i], sizeof(bits));
+      add(bits);
+    }
+#endif
+  }
   std::string hex() const {
     char buffer[17];
     std::snprintf(buffer, sizeof(buffer), "%016llx", static_cast<unsigned long long>(hash_));
@@ -145,7 +164,7 @@ std::string checksum(const std::vector<Variable>& variables) {
       case Variable::Kind::Numeric:
         c.add(static_cast<std::uint64_t>(v.numeric().rows()));
         c.add(static_cast<std::uint64_t>(v.numeric().cols()));
-        c.add(v.numeric().data(), sizeof(double) * static_cast<std::size_t>(v.numeric().size()));
+        c.add(v.numeric().data(), static_cast<std::size_t>(v.numeric().size()));
         break;
       case Variable::Kind::Text:
         c.add(v.text);

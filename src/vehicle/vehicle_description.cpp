@@ -7,7 +7,6 @@
 #include <functional>
 #include <initializer_list>
 #include <map>
-#include <optional>
 #include <set>
 #include <sstream>
 
@@ -460,15 +459,16 @@ E readChoice(const io::YamlValue& entry, const std::string& what,
   v.fail("unknown " + what + " '" + name + "' (" + names + ")");
 }
 
-// Every key path of the document with its line (maps only: a list's elements have no key).
+// Every key path of the document with the line of its key (maps only: a list's elements have no
+// key).
 void collectKeyLines(const io::YamlValue& node, const std::string& prefix,
                      std::map<std::string, int>* lines) {
   if (!node.isMap())
     return;
   for (const auto& [key, value] : node.entries()) {
     const std::string path = prefix.empty() ? key : prefix + "." + key;
-    if (value.line() > 0)
-      (*lines)[path] = value.line();
+    if (value.entryLine() > 0)
+      (*lines)[path] = value.entryLine();
     collectKeyLines(value, path, lines);
   }
 }

@@ -2,6 +2,7 @@
 // rigid joint), the MAT wrapper, save -> load round trip, and the refusal of stale, truncated,
 // corrupted or foreign files.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cstdio>
 #include <fstream>
@@ -131,6 +132,10 @@ TEST(MatFile, DamagedMat73FileIsNamedAsSuch) {
   }
   const std::string bytes = readBytes(path);
   ASSERT_GT(bytes.size(), 1024u);
+  H5E_auto2_t handler_before = nullptr;
+  void* data_before = nullptr;
+  ASSERT_GE(H5Eget_auto2(H5E_DEFAULT, &handler_before, &data_before), 0);
+  ASSERT_NE(handler_before, nullptr);  // HDF5 prints by default
   struct Damage {
     std::string what;
     std::string bytes;
@@ -156,6 +161,12 @@ TEST(MatFile, DamagedMat73FileIsNamedAsSuch) {
     EXPECT_EQ(what.find("is missing"), std::string::npos) << d.what << ": " << what;
     EXPECT_NE(what.find("MAT 7.3"), std::string::npos) << d.what << ": " << what;
     EXPECT_EQ(what.rfind(path + ": ", 0), 0u) << d.what << ": " << what;
+    // The reader silenced HDF5 only while it called it.
+    H5E_auto2_t handler = nullptr;
+    void* data = nullptr;
+    H5Eget_auto2(H5E_DEFAULT, &handler, &data);
+    EXPECT_EQ(handler, handler_before) << d.what;
+    EXPECT_EQ(data, data_before) << d.what;
   }
   std::remove(path.c_str());
 }

@@ -168,6 +168,10 @@ TEST(VehicleDescription, BuilderErrorsGiveTheKeysLine) {
   const veh::VehicleDescription d = veh::parseVehicleDescription(edited, "edited.yaml");
   const auto line = 1 + std::count(edited.begin(), edited.begin() + edited.find(to), '\n');
   EXPECT_EQ(d.key_lines.at("sprocket.centre_z"), line);
+  // A section's line is its key's, not its first entry's (a block map's own mark).
+  EXPECT_EQ(d.key_lines.at("sprocket"),
+            1 + std::count(edited.begin(), edited.begin() + edited.find("\nsprocket:") + 1, '\n'));
+  EXPECT_EQ(d.key_lines.at("sprocket.radius"), d.key_lines.at("sprocket") + 1);
   try {
     veh::buildVehicleModel(d, veh::Variant::Tracked);
     FAIL() << "expected InputError";

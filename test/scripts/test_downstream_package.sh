@@ -5,18 +5,27 @@
 # find_package(catkin COMPONENTS tracked_vehicle_dynamics) alone.
 #   test/scripts/test_downstream_package.sh DEVEL_SPACE WORK_DIR [REPORT.xml]
 # Exit status 0 when it builds and runs; REPORT.xml (JUnit, one case) for scripts/test.sh's count.
+# WORK_DIR/downstream_check is replaced on every run (and nothing else in WORK_DIR is touched);
+# the output also goes to WORK_DIR/downstream_check.log as it comes.
 set -uo pipefail
+if [ $# -lt 2 ] || [ ! -f "$1/setup.bash" ]; then
+  echo "usage: $0 DEVEL_SPACE WORK_DIR [REPORT.xml] (DEVEL_SPACE holds setup.bash)" >&2
+  exit 2
+fi
 devel="$1"
-work="$2"
+work="$2/downstream_check"
+log="$2/downstream_check.log"
 report="${3:-}"
 here="$(cd "$(dirname "$0")/../.." && pwd)"
 
 check() {
   rm -rf "$work" && mkdir -p "$work" || return 1
+  # The ROS setup scripts read unset variables.
   set +u
   # shellcheck disable=SC1091
   source "$devel/setup.bash"
   set -u
+  # catkin's CMake runs the system Python (a pyenv python3 shim may lack catkin_pkg).
   export PATH="/usr/bin:$PATH"
   if ! cmake -S "$here/test/downstream" -B "$work/build" -DPYTHON_EXECUTABLE=/usr/bin/python3 \
       -DCATKIN_DEVEL_PREFIX="$work/devel" >"$work/configure.log" 2>&1; then
@@ -37,12 +46,15 @@ check() {
   echo "downstream package: configured, built and ran against $devel"
 }
 
-output="$(check 2>&1)"
-status=$?
-echo "$output"
+mkdir -p "$2"
+check 2>&1 | tee "$log"
+status=${PIPESTATUS[0]}
 if [ -n "$report" ]; then
   mkdir -p "$(dirname "$report")"
-  escaped="$(printf '%s' "$output" | sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g')"
+  # XML text: no control characters (compiler colours), the markup characters escaped.
+  escaped="$(tr -d '\000-\010\013\014\016-\037' <"$log" |
+    iconv -c -f UTF-8 -t UTF-8 |
+    sed -e 's/&/\&amp;/g' -e 's/</\&lt;/g' -e 's/>/\&gt;/g')"
   {
     echo '<?xml version="1.0" encoding="UTF-8"?>'
     echo "<testsuite name=\"downstream_package\" tests=\"1\" failures=\"$((status != 0))\">"

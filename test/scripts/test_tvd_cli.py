@@ -12,6 +12,7 @@ import json
 import os
 import re
 import shutil
+import struct
 import subprocess
 import sys
 import tempfile
@@ -40,20 +41,21 @@ def read_csv(path):
     return header, body
 
 
-
 def documented_checksum(path):
     """FNV-1a 64 over each variable before `checksum`, in file order, as
     doc/reduced_model_file.md defines it: name, kind (0 matrix, 1 text, 2 list of texts), then
     rows, columns and column-major doubles, or the text, or the count and each text; counts and
     lengths 8 bytes little-endian, before the bytes they count."""
-    import struct
     h = 14695981039346656037
+
     def add(data):
         nonlocal h
         for b in data:
             h = ((h ^ b) * 1099511628211) & 0xFFFFFFFFFFFFFFFF
+
     def count(n):
         add(struct.pack("<Q", n))
+
     def text(t):
         data = t.encode("utf-8")
         count(len(data))
@@ -79,6 +81,7 @@ def documented_checksum(path):
             count(value.shape[1])
             add(np.asfortranarray(value, dtype="<f8").tobytes(order="F"))
     return f"{h:016x}"
+
 
 class TvdCliTest(unittest.TestCase):
     @classmethod
@@ -444,6 +447,15 @@ class TvdCliTest(unittest.TestCase):
         # The checksum, recomputed from the loaded values as the doc defines it.
         self.assertEqual(documented_checksum(os.path.join(work, "tracked.mat")),
                          str(scipy.io.loadmat(os.path.join(work, "tracked.mat"))["checksum"][0]))
+        # It covers the values, not the encoding: the file loaded and saved again by SciPy loads
+        # and gives the same FRF.
+        original = scipy.io.loadmat(os.path.join(work, "tracked.mat"))
+        resaved = os.path.join(work, "resaved.mat")
+        scipy.io.savemat(resaved, {k: v for k, v in original.items() if not k.startswith("__")})
+        self.assertNotEqual(open(resaved, "rb").read(), open(os.path.join(work, "tracked.mat"), "rb").read())
+        frf = [self.tvd_json("frf", "--vehicle", VEHICLE, "--reduced", f, "--max-hz", "20")
+               for f in (os.path.join(work, "tracked.mat"), resaved)]
+        self.assertEqual(frf[0]["outputs"], frf[1]["outputs"])
 
     def test_simulate_json_and_csv_agree(self):
         speed_kmh = 50.0

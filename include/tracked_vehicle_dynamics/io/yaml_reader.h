@@ -44,6 +44,9 @@ class YamlValue {
   const std::string& path() const { return path_; }
   /// 1-based line in the file, 0 when unknown.
   int line() const;
+  /// 1-based line of the key a map entry's value stands under (from entries()); line() for
+  /// other values. A block map's own line() is its first key's, not the line that names it.
+  int entryLine() const { return entry_line_ > 0 ? entry_line_ : line(); }
 
   /// Requires a map whose keys are all in `allowed`, each given once.
   void expectMap(std::initializer_list<const char*> allowed) const;
@@ -88,6 +91,7 @@ class YamlValue {
   std::string file_;
   std::string path_;
   int fallback_line_ = 0;  // the parent's line, for values (e.g. null ones) without a mark
+  int entry_line_ = 0;     // the key's line, for a map entry's value
 };
 
 }  // namespace io

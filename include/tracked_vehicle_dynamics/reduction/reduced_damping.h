@@ -40,7 +40,7 @@ Matrix reducedDamping(const Matrix& m_r, const Matrix& k_r, const Matrix& c_disc
 
 /// One line for reports and the .mat file, e.g. "Rayleigh alpha=0.5 1/s beta=0.001 s + discrete
 /// dampers"; "+ discrete dampers" only when the model has some (`discrete_dampers`).
-std::string describe(const DampingOptions& options, bool discrete_dampers = true);
+std::string describe(const DampingOptions& options, bool discrete_dampers);
 
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics

@@ -50,7 +50,7 @@ struct ReducedModel {
   std::vector<std::string> input_labels;  ///< one per road input: "node 5 uz"
   /// The global modes the reduction was sized for, with the reason for each.
   std::vector<SelectedMode> selected_modes;
-  std::string damping;           ///< describe(DampingOptions)
+  std::string damping;           ///< describe(DampingOptions, discrete dampers present)
   std::string description_hash;  ///< hash of the description it was built from (caller's)
   /// What was reduced and how (caller's), e.g. "variant tracked; rule mac; ...": one description
   /// gives a model per variant and per reduction option, and a cache must serve only its own.
