@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <numeric>
 
 #include "commands.h"
 #include "output_files.h"
@@ -117,6 +118,9 @@ void run(const StaticsOptions& opt) {
         .field("hull_pitch_deg", s.hull_pitch * kRadToDegree)
         .field("hull_roll_deg", s.hull_roll * kRadToDegree)
         .field("ground_reaction_sum_n", s.ground_reaction)
+        .field("road_wheel_load_sum_n",
+               std::accumulate(s.wheel_loads.begin(), s.wheel_loads.end(), 0.0))
+        .field("chain_wheel_vertical_force_n", s.chain_wheel_vertical)
         .field("relative_balance_error", s.balanceError())
         .field("solve_residual", s.residual)
         .field("side_loads_n", std::vector<double>{g.side_load[0], g.side_load[1]})
@@ -222,6 +226,20 @@ void run(const StaticsOptions& opt) {
               << s.wheel_loads[i] / 1e3 << std::setw(20) << std::setprecision(1)
               << g.wheel_peak_pressure[i] / 1e3 << "\n";
   }
+  const double wheel_sum = std::accumulate(s.wheel_loads.begin(), s.wheel_loads.end(), 0.0);
+  // Why the wheel loads need not sum to the weight (StaticSummary::chain_wheel_vertical).
+  std::cout << "  together " << std::setprecision(2) << wheel_sum / 1e3 << " kN ("
+            << wheel_sum / s.weight << " x the weight)";
+  if (model.layout.variant == vehicle::Variant::Tracked)
+    std::cout << ": the chain lies between them and the ground with its own weight ("
+              << model.layout.mass.track_assemblies * model.model.gravity.norm() / 1e3
+              << " kN),\n  and the sprockets, idlers and rollers push it up with "
+              << s.chain_wheel_vertical / 1e3
+              << " kN, with which it pushes the hull down (the loop's tension at rest)";
+  else
+    std::cout << ": the track assemblies under them add their own weight ("
+              << model.layout.mass.track_assemblies * model.model.gravity.norm() / 1e3 << " kN)";
+  std::cout << "\n";
   std::cout << "\ntrack assemblies on the ground: vertical reaction [kN] (inner / outer pad row), "
                "pressure = load / (width x pitch) [kPa]\n"
             << "  side   assembly    x [m]   load [kN]   inner   outer   pressure [kPa]\n";

@@ -52,6 +52,9 @@ StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& sy
     const fem::Spring& c = springs[w.spring];
     const Vector3 d = (nodal(c.n2) - nodal(c.n1)).head<3>();
     s.chain_wheel_loads.push_back(c.stiffness(2) * c.frame.col(2).dot(d) + 0.0);
+    // Its vertical force on the link (n2), as for the road wheels above.
+    s.chain_wheel_vertical -=
+        (fem::bushingMatrix(c.stiffness, c.frame) * (nodal(c.n2) - nodal(c.n1)))(2);
   }
   return s;
 }

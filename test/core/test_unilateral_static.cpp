@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -284,6 +285,14 @@ TEST(ContactStatics, LinksPushTheirSprocketsIdlersAndRollersOrLeaveThem) {
     const veh::ContactStatics c = veh::computeContactStatics(vehicle);
     const veh::StaticSummary& s = c.summary;
     EXPECT_LT(s.balanceError(), 1e-6);
+    // The chain's vertical balance (StaticSummary::chain_wheel_vertical): what holds it up, the
+    // ground and the sprockets, idlers and rollers, equals what presses it down, the road wheels
+    // and its own weight. A wrong sign or a missed contact would be off by that force, which is
+    // not small (it is why the wheel loads do not sum to the weight).
+    const double wheels = std::accumulate(s.wheel_loads.begin(), s.wheel_loads.end(), 0.0);
+    const double chain_weight = layout.mass.track_assemblies * vehicle.model.gravity.norm();
+    EXPECT_NEAR(s.ground_reaction + s.chain_wheel_vertical, wheels + chain_weight, 1e-6 * s.weight);
+    EXPECT_GT(std::abs(s.chain_wheel_vertical), 0.01 * s.weight);
     ASSERT_FALSE(layout.chain_wheel_contacts.empty());
     ASSERT_EQ(c.chain_wheel_released.size(), layout.chain_wheel_contacts.size());
     ASSERT_EQ(s.chain_wheel_loads.size(), layout.chain_wheel_contacts.size());

@@ -402,6 +402,10 @@ class TvdCliTest(unittest.TestCase):
         own = OWN_VEHICLE
         s = self.tvd_json("statics", "--vehicle", own, "--variant", "tracked")
         self.assertLess(abs(s["ground_reaction_sum_n"] - s["weight_n"]) / s["weight_n"], 1e-6)
+        # The wheels' total, and what the chain passes to the sprocket, idler and rollers.
+        self.assertAlmostEqual(s["road_wheel_load_sum_n"] / sum(w["load_n"] for w in s["road_wheels"]),
+                               1.0, delta=1e-9)
+        self.assertGreater(abs(s["chain_wheel_vertical_force_n"]), 0.001 * s["weight_n"])
         out = self.path("light_5_axle_long_hill.csv")
         d = self.tvd_json("simulate", "--vehicle", own, "--track", "long_hill", "--speed-kmh",
                           "20", "--out", out)
