@@ -115,11 +115,9 @@ std::vector<double> frequenciesBelow(const Vector& hz, double limit) {
   return out;
 }
 
-// The reduction's aim below the band (paper §3.2: the reduced model's frequencies within 2 % of
-// the full model's at worst), and how far the default goes to reach it: at most this many
-// fixed-interface modes and this many additions (each a whole Craig-Bampton reduction, 0.5 s on
-// the bundled tracked vehicle), adding max(selected count, kMinAutoStep) modes at a time.
-constexpr double kBandFrequencyTolerance = 0.02;
+// How far the default goes to reach kBandFrequencyTolerance (vehicle_reduction.h): at most this
+// many fixed-interface modes and this many additions (each a whole Craig-Bampton reduction, 0.5 s
+// on the bundled tracked vehicle), adding max(selected count, kMinAutoStep) modes at a time.
 constexpr int kMaxAutoFixedInterfaceModes = 200;
 constexpr int kMaxAutoAdditions = 8;
 constexpr int kMinAutoStep = 4;

@@ -134,7 +134,8 @@ void run(const ReduceOptions& opt) {
   if (report.flexible_modes != report.initial_fixed_interface_modes && options.mode_count == 0)
     std::cout << " (raised from " << report.initial_fixed_interface_modes
               << ", twice the selected global modes, until the modes up to "
-              << brief(options.band_hz) << " Hz are within 2 %)";
+              << brief(options.band_hz) << " Hz are within "
+              << brief(100.0 * reduction::kBandFrequencyTolerance) << " %)";
   std::cout << "\n  selected global modes:\n";
   for (const auto& m : model.selected_modes)
     std::cout << "    mode " << std::setw(2) << m.mode + 1 << std::setw(8) << std::setprecision(2)

@@ -554,9 +554,8 @@ VehicleModel buildVehicleModel(const VehicleDescription& description, Variant va
     return Builder(description, variant).build();
   } catch (const InputError& e) {
     const std::string what = e.what();
-    if (what.rfind(description.origin + ":", 0) == 0)
-      throw InputError(withKeyLine(description, what));
-    throw InputError(withKeyLine(description, description.origin + ": " + what));
+    const bool prefixed = what.rfind(description.origin + ":", 0) == 0;
+    throw InputError(withKeyLine(description, prefixed ? what : description.origin + ": " + what));
   }
 }
 

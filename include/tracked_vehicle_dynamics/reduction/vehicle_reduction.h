@@ -26,6 +26,10 @@ enum class VehicleModeRule {
 /// "mac" or "band": the rule's name in option values, reduction keys and reports.
 const char* modeRuleName(VehicleModeRule rule);
 
+/// The reduction's aim below the band (paper §3.2: the reduced model's frequencies within 2 % of
+/// the full model's at worst): the default fixed-interface count is raised until it holds.
+constexpr double kBandFrequencyTolerance = 0.02;
+
 struct VehicleReductionOptions {
   VehicleModeRule rule = VehicleModeRule::MacCorrelation;
   int global_modes = 40;           ///< modes of each variant computed for MAC (paper: 40)
