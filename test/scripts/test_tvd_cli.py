@@ -429,8 +429,8 @@ class TvdCliTest(unittest.TestCase):
             documented.update(re.findall(r"`([A-Za-z_]+)`", row))
         work = self.path("doc_example")
         os.makedirs(work)
-        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "tracked", "--out",
-                 os.path.join(work, "tracked.mat"))
+        reduced = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "tracked", "--out",
+                                os.path.join(work, "tracked.mat"))
         stored = {k for k in scipy.io.loadmat(os.path.join(work, "tracked.mat")) if not k.startswith("__")}
         self.assertEqual(documented, stored)
         code = re.search(r"```python\n(.*?)```", doc, re.S).group(1)
@@ -444,7 +444,7 @@ class TvdCliTest(unittest.TestCase):
         full = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "tracked", "--count", "6")
         np.testing.assert_allclose(namespace["frequencies_hz"][:6], full["frequencies_hz"], rtol=1e-3)
         self.assertAlmostEqual(namespace["hull_sag_m"] / full["static"]["hull_sag_m"], 1.0, delta=1e-6)
-        self.assertEqual(namespace["A"].shape, (862, 862))
+        self.assertEqual(namespace["A"].shape, (2 * reduced["reduced_dofs"],) * 2)
         # The full FE model's static pitch under 0.3 g braking (test_travel_inertia: 0.314577
         # mrad; the reduced model's equals it to 1e-11).
         self.assertAlmostEqual(namespace["brake_pitch_mrad"] / 0.314577, 1.0, delta=1e-5)
@@ -2109,37 +2109,49 @@ class TvdCliTest(unittest.TestCase):
         self.assertNotIn("MAC threshold", r.stderr)
 
     def test_cut_eigenspace_is_warned(self):
-        """#1: the default 40 global modes cut the un-tracked 12-fold eigenspace at 107.72 Hz
-        after 6 modes: the reduction says so, with the counts that would not cut it."""
-        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked")
-        warnings = d["reduction"]["warnings"]
-        self.assertEqual(len(warnings), 1, warnings)
-        self.assertIn("global_modes 40: cuts a repeated eigenvalue of the untracked variant: 6 of "
-                      "its 12 modes at 107.721 Hz", warnings[0])
-        self.assertIn("34 global modes end below it, 46 above it if the solver returns all 12",
-                      warnings[0])
+        """#1: a --global-modes count that cuts an eigenspace the MAC selection uses is warned
+        about, with the counts that would not cut it; one of track-local modes is not."""
+        # The default 40 cut the un-tracked 12-fold eigenspace at 107.72 Hz after 6 modes: modes
+        # of the assemblies alone, with no energy in the hull and running gear, so no MAC
+        # reference: no warning, and the tracked selection is the one at 46 (whose own warning
+        # is below) and names no such mode.
+        default = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "tracked")
+        self.assertEqual(default["reduction"]["warnings"], [])
+        self.assertEqual(default["mac_reference_modes"], 20)  # the 6 hull and 14 wheel modes
+        for m in default["selected_modes"]:
+            self.assertNotIn("(108 Hz)", m["reason"])
+        wider = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "tracked",
+                              "--global-modes", "46")
+        self.assertEqual([m["mode"] for m in wider["selected_modes"]],
+                         [m["mode"] for m in default["selected_modes"]])
+        # At 46 the solver returns 11 of the 12 (and the next mode): said, whatever the modes.
+        self.assertIn("the solver returned 1 mode(s) of the untracked variant below 107.735 Hz "
+                      "too few", wider["reduction"]["warnings"][0])
+        # 10 cut the un-tracked wheels' 11-fold bounce eigenspace at 18.56 Hz after 4: the
+        # un-tracked reduction selects from it (in the band) and the tracked one compares with it.
+        for variant in ("tracked", "untracked"):  # the un-tracked warnings are kept below
+            d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", variant,
+                              "--global-modes", "10")
+            warnings = d["reduction"]["warnings"]
+            self.assertIn("global_modes 10: cuts a repeated eigenvalue of the untracked variant: "
+                          "4 of its 11 modes at 18.5568 Hz", warnings[0])
+            self.assertIn("6 global modes end below it, 17 above it if the solver returns all 11",
+                          warnings[0])
         # Saved with the model: a --reduced file and a cached model warn again, as the run that
         # reduced them did (the cache's second run loads the model the first one built).
         mat = self.path("cut_eigenspace.mat")
-        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", mat)
+        self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--global-modes", "10",
+                 "--out", mat)
         cache = self.path("cut_eigenspace_cache")
-        for args, source in ((("--reduced", mat), "file"), (("--cache-dir", cache), "computed"),
-                             (("--cache-dir", cache), "cache")):
+        cached = ("--cache-dir", cache, "--global-modes", "10")
+        for args, source in ((("--reduced", mat), "file"), (cached, "computed"),
+                             (cached, "cache")):
             r = self.tvd("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--max-hz", "5",
                          *args, "--json")
             reduction = json.loads(r.stdout)["reduction"]
             self.assertEqual(reduction["source"], source)
             self.assertEqual(reduction["warnings"], warnings, source)
-            self.assertIn("tvd: warning: global_modes 40: cuts a repeated eigenvalue", r.stderr)
-        # At 46 the solver returns 11 of the 12 (and the next mode): also said.
-        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
-                          "--global-modes", "46")
-        self.assertIn("the solver returned 1 mode(s) of the untracked variant below 107.735 Hz "
-                      "too few",
-                      d["reduction"]["warnings"][0])
-        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked",
-                          "--global-modes", "48")
-        self.assertEqual(d["reduction"]["warnings"], [])
+            self.assertIn("tvd: warning: global_modes 10: cuts a repeated eigenvalue", r.stderr)
 
     def test_poisson_ratio_and_speed_range_are_checked(self):
         """#12: a Poisson ratio outside (-1, 0.5] is refused naming the key; a --speeds range
