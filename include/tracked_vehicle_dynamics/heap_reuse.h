@@ -2,7 +2,7 @@
 //
 // glibc serves an allocation above its mmap threshold (128 KiB, raised on its own up to 32 MiB)
 // with a fresh anonymous mapping and unmaps it when it is freed. The dense matrices of the tracked
-// vehicle's Craig-Bampton reduction are larger than that (T_CMS: 14,372 x 427 doubles = 49 MB; the
+// vehicle's Craig-Bampton reduction are larger than that (T_CMS: 14,372 x 431 doubles = 50 MB; the
 // constraint modes and K_sm 43 MB each), so each is mapped anew and every one of its 4 KiB pages
 // faults on first touch: some 12,000 faults per matrix. On a virtual machine a fault costs
 // microseconds; on this project's 2-core VM `tvd reduce --variant tracked` spent 0.87 s of its

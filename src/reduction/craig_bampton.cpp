@@ -60,7 +60,7 @@ Matrix project(const SparseMatrix& a, const Matrix& t) {
   for (DofIndex i = 0; i < a.rows(); ++i)
     if (used[static_cast<std::size_t>(i)])
       rows.push_back(i);
-  constexpr std::size_t kBlock = 1024;  // 1024 x 427 doubles: 3.5 MB per block product
+  constexpr std::size_t kBlock = 1024;  // 1024 x 431 doubles: 3.5 MB per block product
   for (std::size_t first = 0; first < rows.size(); first += kBlock) {
     const std::vector<DofIndex> block(rows.begin() + static_cast<std::ptrdiff_t>(first),
                                       rows.begin() + static_cast<std::ptrdiff_t>(std::min(first + kBlock, rows.size())));

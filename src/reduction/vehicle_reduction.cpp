@@ -65,15 +65,17 @@ std::vector<DofIndex> interfaceMasters(const AssembledVariant& v, DofIndex* inte
   return masters;
 }
 
-// A reference mode takes part in the MAC selection when at least this share of its kinetic energy
-// is in the vehicle, the hull and the running gear (vehicle::ModeClass::hull_share + wheel_share):
-// the paper keeps the modes "significant for the global behaviour" (§3.1.1). The MAC is blind to
-// amplitude, so a track-local mode that barely moves the vehicle's DOFs counts as fully as a hull
-// mode: on the bundled vehicle the un-tracked assemblies' 107.72 Hz modes (0 % of their energy in
-// the vehicle) paired with tracked chain modes at 11.45 and 26.51 Hz with MACs of 0.72 and 0.85,
-// and on the light 5-axle one the 136 Hz modes (0.02-0.07 %) with tracked modes at 6.8-19.8 Hz.
-// The un-tracked hull and wheel modes hold 97 % and more; the tracked ones 39-93 %, and the
-// tracked chain modes that carry the hull along up to 19 % (they count: the MAC pairs them).
+// A mode takes part in the MAC selection, as a candidate or as a reference, when at least this
+// share of its kinetic energy is in the vehicle, the hull and the running gear
+// (vehicle::ModeClass::hull_share + wheel_share): the paper keeps the modes "significant for the
+// global behaviour" (§3.1.1). The MAC is blind to amplitude, so a mode of the track that barely
+// moves the vehicle's DOFs counts as fully as a hull mode: on the bundled vehicle the un-tracked
+// assemblies' 107.72 Hz modes (0 % of their energy in the vehicle) paired tracked chain modes at
+// 11.45 and 26.51 Hz (themselves 0 %) with MACs of 0.72 and 0.85, and the tracked chain mode at
+// 22.94 Hz (0.002 %) the un-tracked yaw with 0.89; on the light 5-axle vehicle the un-tracked
+// 136 Hz modes (0.02-0.07 %) paired tracked modes at 6.8-19.8 Hz. The hull and wheel modes hold
+// 97 % and more (un-tracked) and 39-93 % (tracked); tracked chain modes that carry the hull along
+// hold up to 19 %, and count.
 constexpr double kGlobalEnergyShare = 0.01;
 
 // Whether each mode of `v` is global. The modes of a repeated eigenvalue are one eigenspace to
@@ -95,10 +97,10 @@ std::vector<bool> globalModes(const AssembledVariant& v) {
 
 // A warning when global_modes ends inside a repeated eigenvalue of `v` (mode_count_cut.h) that
 // takes part in the selection: the MAC against the part of an eigenspace kept is round-off. A
-// reference group whose modes kept are not global (`global`, globalModes(); null: all are) has
-// no MAC: the bundled un-tracked vehicle's 12 track-local modes at 107.72 Hz, which the default
-// 40 cuts after 6. Nor does a group of the variant reduced above `candidate_limit_hz`: its modes
-// are no candidates. A solver that skipped modes below the last group is always reported.
+// group whose modes are not global (`global`, globalModes()) has no MAC: the bundled un-tracked
+// vehicle's 12 track-local modes at 107.72 Hz, which the default 40 cuts after 6. Nor does a
+// group above `candidate_limit_hz` (the band, for the variant reduced): its modes are no
+// candidates. A solver that skipped modes below the last group is always reported.
 void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_modes,
                const std::vector<bool>* global, double candidate_limit_hz,
                std::vector<std::string>* warnings) {
@@ -119,8 +121,8 @@ void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_m
     // Which group a solver's missed modes belong to is not known, so only a cut group is judged.
     if (cut->frequency_hz > candidate_limit_hz)
       return;
-    const bool takes_part = !global || std::any_of(global->begin() + cut->fewer, global->end(),
-                                                   [](bool g) { return g; });
+    const bool takes_part =
+        std::any_of(global->begin() + cut->fewer, global->end(), [](bool g) { return g; });
     if (!takes_part)
       return;
   }
@@ -230,6 +232,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   VehicleReductionReport& rep = report ? *report : local;
   rep.warnings.clear();
   rep.mac_reference_modes = 0;
+  rep.mac_candidate_modes = 0;
   const auto start = Clock::now();
 
   // 1. The full model and its global modes.
@@ -271,16 +274,24 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
                                   vehicle::physicalShapes(other.system, common, other.modes.shapes),
                                   other.modes.frequencies_hz);
     reference.frequencies_hz = other.modes.frequencies_hz;
+    // Only global modes pair: the others' rows and columns are zero.
+    const std::vector<bool> own = globalModes(model);
     const std::vector<bool> global = globalModes(other);
-    rep.mac_reference_modes = 0;
+    for (Eigen::Index j = 0; j < reference.mac.rows(); ++j) {
+      if (!own[static_cast<std::size_t>(j)])
+        reference.mac.row(j).setZero();
+      else if (model.modes.frequencies_hz(j) <= options.band_hz)
+        ++rep.mac_candidate_modes;
+    }
     for (Eigen::Index k = 0; k < reference.mac.cols(); ++k) {
       if (!global[static_cast<std::size_t>(k)])
         reference.mac.col(k).setZero();
       else
         ++rep.mac_reference_modes;
     }
-    // The candidates are the reduced variant's modes in the band, the references its global ones.
-    warnIfCut(model, variant, options.global_modes, nullptr, options.band_hz, &rep.warnings);
+    // The candidates are the reduced variant's global modes in the band, the references the other
+    // variant's global modes.
+    warnIfCut(model, variant, options.global_modes, &own, options.band_hz, &rep.warnings);
     warnIfCut(other, other_variant, options.global_modes, &global,
               std::numeric_limits<double>::infinity(), &rep.warnings);
     selection_options.rule = ModeSelectionRule::Correlation;

@@ -79,6 +79,7 @@ void run(const ReduceOptions& opt) {
         .field("initial_flexible_modes", report.initial_fixed_interface_modes)
         .field("reduced_dofs", static_cast<long long>(report.reduced_dofs))
         .field("reduced_size_percent", 100.0 * report.reduced_dofs / report.full_dofs)
+        .field("mac_candidate_modes", report.mac_candidate_modes)
         .field("mac_reference_modes", report.mac_reference_modes)
         .key("selected_modes")
         .beginArray();
@@ -138,14 +139,18 @@ void run(const ReduceOptions& opt) {
               << brief(options.band_hz) << " Hz are within "
               << brief(100.0 * reduction::kBandFrequencyTolerance) << " %)";
   std::cout << "\n  selected global modes";
-  if (options.rule == reduction::VehicleModeRule::MacCorrelation)
-    std::cout << " (MAC >= " << brief(options.mac_threshold) << " with one of the "
-              << report.mac_reference_modes << " "
-              << vehicle::variantName(variant == vehicle::Variant::Tracked
-                                          ? vehicle::Variant::Untracked
-                                          : vehicle::Variant::Tracked)
-              << " modes of " << options.global_modes
-              << " with 1 % or more of their kinetic energy in the hull and running gear)";
+  if (options.rule == reduction::VehicleModeRule::MacCorrelation) {
+    // Both sets: the modes with 1 % or more of their kinetic energy in the vehicle (global).
+    const vehicle::Variant other = variant == vehicle::Variant::Tracked
+                                       ? vehicle::Variant::Untracked
+                                       : vehicle::Variant::Tracked;
+    std::cout << " (MAC >= " << brief(options.mac_threshold) << " between the "
+              << report.mac_candidate_modes << " " << vehicle::variantName(variant)
+              << " modes up to " << brief(options.band_hz) << " Hz and the "
+              << report.mac_reference_modes << " " << vehicle::variantName(other) << " ones, of "
+              << options.global_modes
+              << " each, with 1 % or more of their kinetic energy in the hull and running gear)";
+  }
   std::cout << ":\n";
   for (const auto& m : model.selected_modes)
     std::cout << "    mode " << std::setw(2) << m.mode + 1 << std::setw(8) << std::setprecision(2)

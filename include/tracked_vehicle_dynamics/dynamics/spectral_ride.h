@@ -38,8 +38,8 @@
 // Cost per speed: the modal forces of a block of frequencies come from one real matrix product,
 // [Φ^T K_u | Φ^T C_u] (inputs grouped: those at one station and on one side share τ and are summed
 // once, at construction: the tracked model's 360 inputs lie at 30 stations) times [Re τ, Im τ;
-// -ω Im τ, ω Re τ]. On the tracked reduced model (431 DOFs in version 0.2.0; 427 now): 5 ms per
-// speed, 11 ms with independent sides, after 0.1 s for the modes.
+// -ω Im τ, ω Re τ]. On the tracked reduced model (431 DOFs): 5 ms per speed, 11 ms with
+// independent sides, after 0.1 s for the modes.
 #pragma once
 
 #include <vector>

@@ -86,8 +86,10 @@ struct VehicleReductionReport {
   std::vector<MogesecPick> mogesec_picks;
   std::vector<std::string> mogesec_parts;
   int flexible_modes = 0;
-  /// Rule mac: the other variant's modes the MAC selection compared with, those with at least
-  /// 1 % of their kinetic energy in the hull and running gear (of global_modes); 0 otherwise.
+  /// Rule mac: the modes the MAC selection paired, those with at least 1 % of their kinetic
+  /// energy in the hull and running gear: the reduced variant's up to band_hz (candidates) and the
+  /// other variant's (references), of global_modes each; 0 with rule band.
+  int mac_candidate_modes = 0;
   int mac_reference_modes = 0;
   /// The fixed-interface modes the reduction started from (twice the selected, or mode_count)
   /// before the band check added any; flexible_modes when none was added.

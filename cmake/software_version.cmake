@@ -1,0 +1,22 @@
+# Writes the software version source (cmake/software_version.cpp.in) at every build, not only at
+# configure time: the version is what keeps a cached reduced model valid, so it must follow every
+# commit and every uncommitted change the build compiles. configure_file() rewrites the output
+# only when its text changes, so an unchanged version recompiles nothing.
+#
+#   cmake -DTVD_PROJECT_VERSION=0.3.0 -DTVD_SOURCE_DIR=... -DTVD_TEMPLATE=... -DTVD_OUTPUT=...
+#         [-DGIT_EXECUTABLE=...] -P software_version.cmake
+#
+# The version is the package version plus, in a git checkout, the commit ("-dirty" when the work
+# tree differs from it); without git (a source archive) the package version alone.
+set(TVD_SOFTWARE_VERSION "${TVD_PROJECT_VERSION}")
+if(GIT_EXECUTABLE AND EXISTS "${TVD_SOURCE_DIR}/.git")
+  execute_process(
+    COMMAND "${GIT_EXECUTABLE}" describe --always --dirty --abbrev=12 --match=no-tags-wanted
+    WORKING_DIRECTORY "${TVD_SOURCE_DIR}"
+    OUTPUT_VARIABLE TVD_GIT_DESCRIPTION OUTPUT_STRIP_TRAILING_WHITESPACE
+    RESULT_VARIABLE TVD_GIT_RESULT ERROR_QUIET)
+  if(TVD_GIT_RESULT EQUAL 0 AND TVD_GIT_DESCRIPTION)
+    set(TVD_SOFTWARE_VERSION "${TVD_PROJECT_VERSION}+${TVD_GIT_DESCRIPTION}")
+  endif()
+endif()
+configure_file("${TVD_TEMPLATE}" "${TVD_OUTPUT}" @ONLY)
