@@ -14,6 +14,7 @@
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/reduction/fixed_interface_modes.h"
+#include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/mac.h"
 #include "tracked_vehicle_dynamics/reduction/mode_count_cut.h"
 #include "tracked_vehicle_dynamics/reduction/mode_selection.h"
@@ -65,34 +66,11 @@ std::vector<DofIndex> interfaceMasters(const AssembledVariant& v, DofIndex* inte
   return masters;
 }
 
-// A mode takes part in the MAC selection, as a candidate or as a reference, when at least this
-// share of its kinetic energy is in the vehicle, the hull and the running gear
-// (vehicle::ModeClass::hull_share + wheel_share): the paper keeps the modes "significant for the
-// global behaviour" (§3.1.1). The MAC is blind to amplitude, so a mode of the track that barely
-// moves the vehicle's DOFs counts as fully as a hull mode: on the bundled vehicle the un-tracked
-// assemblies' 107.72 Hz modes (0 % of their energy in the vehicle) paired tracked chain modes at
-// 11.45 and 26.51 Hz (themselves 0 %) with MACs of 0.72 and 0.85, and the tracked chain mode at
-// 22.94 Hz (0.002 %) the un-tracked yaw with 0.89; on the light 5-axle vehicle the un-tracked
-// 136 Hz modes (0.02-0.07 %) paired tracked modes at 6.8-19.8 Hz. The hull and wheel modes hold
-// 97 % and more (un-tracked) and 39-93 % (tracked); tracked chain modes that carry the hull along
-// hold up to 19 %, and count.
-constexpr double kGlobalEnergyShare = 0.01;
-
-// Whether each mode of `v` is global. The modes of a repeated eigenvalue are one eigenspace to
-// the MAC (eigenspaceMac) and any basis of it to the solver, so they are global together: when
-// one of them is.
+// Whether each mode of `v` is global (global_modes.h): only those pair in the MAC selection, as
+// candidates and as references.
 std::vector<bool> globalModes(const AssembledVariant& v) {
-  const std::vector<vehicle::ModeClass> classes =
-      vehicle::classifyModes(v.vehicle, v.system, v.modes);
-  std::vector<bool> global(classes.size(), false);
-  for (const auto& [first, end] : degenerateGroups(v.modes.frequencies_hz)) {
-    const bool any = std::any_of(classes.begin() + first, classes.begin() + end,
-                                 [](const vehicle::ModeClass& c) {
-                                   return c.hull_share + c.wheel_share >= kGlobalEnergyShare;
-                                 });
-    std::fill(global.begin() + first, global.begin() + end, any);
-  }
-  return global;
+  return reduction::globalModes(vehicle::classifyModes(v.vehicle, v.system, v.modes),
+                                v.modes.frequencies_hz);
 }
 
 // A warning when global_modes ends inside a repeated eigenvalue of `v` (mode_count_cut.h) that

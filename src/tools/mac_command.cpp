@@ -9,6 +9,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/mac.h"
 #include "vehicle_analysis.h"
 
@@ -49,8 +50,19 @@ void run(const MacOptions& opt) {
   // their single-mode MACs, is round-off (mac.h).
   const Matrix space_mac = reduction::eigenspaceMac(uv_shapes, uv.modes.frequencies_hz, tv_shapes,
                                                     tv.modes.frequencies_hz);
+  // Paired as the reduction pairs them: global modes only (global_modes.h), so a chain mode that
+  // leaves the hull and wheels at rest is no one's partner whatever its MAC.
+  Matrix pairing = space_mac;
+  const std::vector<bool> uv_global = reduction::globalModes(uv.classes, uv.modes.frequencies_hz);
+  const std::vector<bool> tv_global = reduction::globalModes(tv.classes, tv.modes.frequencies_hz);
+  for (Eigen::Index j = 0; j < pairing.rows(); ++j)
+    if (!uv_global[static_cast<std::size_t>(j)])
+      pairing.row(j).setZero();
+  for (Eigen::Index k = 0; k < pairing.cols(); ++k)
+    if (!tv_global[static_cast<std::size_t>(k)])
+      pairing.col(k).setZero();
   const std::vector<reduction::ModeCorrelation> correlations =
-      reduction::correlateModes(space_mac, opt.threshold);
+      reduction::correlateModes(pairing, opt.threshold);
 
   // Table 4 lists the un-tracked hull and wheel-bounce modes of the band, one row per eigenspace.
   std::vector<CorrelationRow> rows;
@@ -100,9 +112,16 @@ void run(const MacOptions& opt) {
         .field("untracked_frequencies_hz", uv.modes.frequencies_hz)
         .field("tracked_frequencies_hz", tv.modes.frequencies_hz)
         .field("mac", mac)
-        .field("eigenspace_mac", space_mac)
-        .key("correlation")
-        .beginArray();
+        .field("eigenspace_mac", space_mac);
+    // Which modes pair (global_modes.h): the correlation below looks among these only.
+    for (const auto& [name, global] : {std::make_pair("untracked_global", &uv_global),
+                                       std::make_pair("tracked_global", &tv_global)}) {
+      json.key(name).beginArray();
+      for (bool g : *global)
+        json.value(g);
+      json.endArray();
+    }
+    json.key("correlation").beginArray();
     for (const CorrelationRow& r : rows) {
       json.beginObject()
           .field("untracked_mode", r.untracked_mode + 1)
@@ -127,13 +146,16 @@ void run(const MacOptions& opt) {
     return;
   }
 
-  std::cout << "MAC between the un-tracked (" << uv.system.size() << " DOFs) and tracked ("
-            << tv.system.size() << " DOFs) models on " << common.size()
-            << " common translational DOFs; first " << opt.count << " modes.\n\n"
-            << "correlation (like Table 4): un-tracked hull and wheel modes up to " << opt.band_hz
-            << " Hz (modes of one repeated frequency as one row, compared as an eigenspace); best "
-               "tracked match, then (other matches with MAC >= "
-            << opt.threshold << ")\n\n";
+  std::cout
+      << "MAC between the un-tracked (" << uv.system.size() << " DOFs) and tracked ("
+      << tv.system.size() << " DOFs) models on " << common.size()
+      << " common translational DOFs; first " << opt.count << " modes.\n\n"
+      << "correlation (like Table 4): un-tracked hull and wheel modes up to " << opt.band_hz
+      << " Hz (modes of one repeated frequency as one row, compared as an eigenspace); best "
+         "tracked match, then (other matches with MAC >= "
+      << opt.threshold
+      << "), among the tracked modes with 1 % or more of their kinetic energy in the hull and "
+         "running gear, as the reduction pairs them\n\n";
   std::cout << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
   for (const CorrelationRow& r : rows) {
     const int best = r.correlation.best_match;

@@ -1275,10 +1275,24 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(wheels[0]["multiplicity"], 11)
         first = wheels[0]["untracked_mode"] - 1
         np.testing.assert_array_equal(space[first:first + 11], np.tile(space[first], (11, 1)))
+        # Partners are global modes (1 % or more of their kinetic energy in the hull and running
+        # gear), as the reduction pairs them: the un-tracked hull and wheel modes; the tracked
+        # chain mode at 1.88 Hz (0.01 %, MAC 0.61 with the un-tracked pitch) is none.
+        tv_global = np.array(d["tracked_global"])
+        self.assertEqual(list(d["untracked_global"][:20]), [True] * 20)
+        self.assertFalse(any(d["untracked_global"][20:]))
+        self.assertFalse(tv_global[2])
         for r in rows:
             i, j = r["untracked_mode"] - 1, r["tracked_mode"] - 1
-            self.assertAlmostEqual(r["mac"], space[i].max(), places=9)
-            self.assertAlmostEqual(space[i, j], space[i].max(), places=12)
+            self.assertTrue(tv_global[j], r)
+            best = space[i][tv_global].max()
+            self.assertAlmostEqual(r["mac"], best, places=9)
+            self.assertAlmostEqual(space[i, j], best, places=12)
+            for m in r["other_matches"]:
+                self.assertTrue(tv_global[m["tracked_mode"] - 1], m)
+        pitch = next(r for r in rows if r["type"] == "pitch")
+        self.assertLess(space[pitch["untracked_mode"] - 1].max(), 0.7)
+        self.assertNotEqual(pitch["tracked_mode"], 3)
         # The roll mode pairs with the tracked roll (Table 4: 6.73 -> 13.7 Hz).
         roll = next(r for r in rows if r["type"] == "roll")
         self.assertEqual(roll["tracked_type"], "roll")
