@@ -17,6 +17,12 @@ if(GIT_EXECUTABLE AND EXISTS "${TVD_SOURCE_DIR}/.git")
     RESULT_VARIABLE TVD_GIT_RESULT ERROR_QUIET)
   if(TVD_GIT_RESULT EQUAL 0 AND TVD_GIT_DESCRIPTION)
     set(TVD_SOFTWARE_VERSION "${TVD_PROJECT_VERSION}+${TVD_GIT_DESCRIPTION}")
+  else()
+    # A checkout whose commit cannot be read (git refusing a directory it does not own, say)
+    # would let caches outlive commits: say so.
+    message(WARNING "software version: git describe failed in ${TVD_SOURCE_DIR}; the version is "
+                    "${TVD_PROJECT_VERSION} without the commit, so reduced-model caches are not "
+                    "invalidated by new commits (clear them when the model code changes)")
   endif()
 endif()
 configure_file("${TVD_TEMPLATE}" "${TVD_OUTPUT}" @ONLY)

@@ -1,26 +1,27 @@
 #include "tracked_vehicle_dynamics/reduction/global_modes.h"
 
-#include <algorithm>
-#include <string>
+#include <Eigen/Eigenvalues>
 
-#include "tracked_vehicle_dynamics/error.h"
+#include <algorithm>
+
 #include "tracked_vehicle_dynamics/reduction/mac.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
 
-std::vector<bool> globalModes(const std::vector<vehicle::ModeClass>& classes,
-                              const Vector& frequencies_hz) {
-  if (static_cast<Eigen::Index>(classes.size()) != frequencies_hz.size())
-    throw InputError("globalModes: " + std::to_string(classes.size()) + " mode classes for " +
-                     std::to_string(frequencies_hz.size()) + " frequencies");
-  std::vector<bool> global(classes.size(), false);
-  for (const auto& [first, end] : degenerateGroups(frequencies_hz)) {
-    const bool any = std::any_of(classes.begin() + first, classes.begin() + end,
-                                 [](const vehicle::ModeClass& c) {
-                                   return c.hull_share + c.wheel_share >= kGlobalEnergyShare;
-                                 });
-    std::fill(global.begin() + first, global.begin() + end, any);
+std::vector<bool> globalModes(const vehicle::VehicleModel& vehicle, const fem::System& system,
+                              const fem::ModalBasis& modes) {
+  std::vector<bool> global(static_cast<std::size_t>(modes.count()), false);
+  for (const auto& [first, end] : degenerateGroups(modes.frequencies_hz)) {
+    // max over unit x of x^T G x = the largest eigenvalue of the group's G (for one mode, G_jj).
+    const Matrix g =
+        vehicle::vehicleEnergy(vehicle, system, modes.shapes.middleCols(first, end - first));
+    const double largest = g.rows() == 1
+                               ? g(0, 0)
+                               : Eigen::SelfAdjointEigenSolver<Matrix>(g, Eigen::EigenvaluesOnly)
+                                     .eigenvalues()
+                                     .maxCoeff();
+    std::fill(global.begin() + first, global.begin() + end, largest >= kGlobalEnergyShare);
   }
   return global;
 }

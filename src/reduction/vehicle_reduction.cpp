@@ -69,8 +69,7 @@ std::vector<DofIndex> interfaceMasters(const AssembledVariant& v, DofIndex* inte
 // Whether each mode of `v` is global (global_modes.h): only those pair in the MAC selection, as
 // candidates and as references.
 std::vector<bool> globalModes(const AssembledVariant& v) {
-  return reduction::globalModes(vehicle::classifyModes(v.vehicle, v.system, v.modes),
-                                v.modes.frequencies_hz);
+  return reduction::globalModes(v.vehicle, v.system, v.modes);
 }
 
 // A warning when global_modes ends inside a repeated eigenvalue of `v` (mode_count_cut.h) that
@@ -111,8 +110,8 @@ void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_m
     text << "the solver returned " << cut->missed << " mode(s) of the " << name << " variant below "
          << brief(cut->frequency_hz)
          << " Hz too few (it skipped part of a repeated eigenvalue), so the MAC against that "
-            "eigenspace depends on round-off; a count that ends below the repeated eigenvalue "
-            "does not depend on it";
+            "eigenspace, if the selection uses it, depends on round-off; a count that ends below "
+            "the repeated eigenvalue does not depend on it";
   else
     // Counts that end at a gap: below the group, every mode is returned (the Sylvester count
     // says so); above it only if the Lanczos run returns the whole group, which the check of
@@ -321,13 +320,13 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   rep.selection_seconds = secondsSince(selection_start);
 
   // 4. Craig-Bampton. The paper keeps as many fixed-interface modes as global modes were selected
-  // (Table 5); on our tracked model that leaves the chain-coupled wheel modes at 19-23 Hz up to
-  // 8 % too stiff and the two at 29 Hz 25-29 % (above the band), so the default keeps twice as
-  // many (every mode below 30 Hz then within 0.5 % at 3 % of the full size). A vehicle whose MAC
-  // keeps few modes (a light 5-axle one: 2, so 4 fixed-interface modes, 12 % off at 22 Hz) gets
-  // more: the default then adds the selected count (at least kMinAutoStep) at a time until every
-  // full-model mode below the band is within kBandFrequencyTolerance (checkBand()). --modes N
-  // overrides it; the check then only warns.
+  // (Table 5); on our tracked model (14 selected) that leaves the chain-coupled modes at 19-23 Hz
+  // 7-20 % too stiff and those from 22.9 Hz up 42-74 %, so the default keeps twice as many and,
+  // when that is not enough, adds the selected count (at least kMinAutoStep) at a time until every
+  // full-model mode below the band is within kBandFrequencyTolerance (checkBand()): the tracked
+  // vehicle's 28 leave a mode 5.4 % off and it gets 42 (0.32 %); a light 5-axle vehicle whose MAC
+  // keeps 1 mode starts from 2 (20 % off at 22 Hz) and gets 10. --modes N overrides it; the check
+  // then only warns.
   const auto reduce_start = Clock::now();
   ReductionRequest request;
   request.masters = masters.masters;

@@ -2,6 +2,7 @@
 // correlation table of Table 4.
 #include <iomanip>
 #include <iostream>
+#include <limits>
 
 #include "commands.h"
 #include "output_files.h"
@@ -35,6 +36,12 @@ struct CorrelationRow {
   reduction::ModeCorrelation correlation;
 };
 
+// A row without a global tracked mode of non-zero MAC has no partner (correlateModes() would
+// name the first column).
+bool hasPartner(const CorrelationRow& r) {
+  return r.correlation.best_match >= 0 && r.correlation.best_mac > 0.0;
+}
+
 void run(const MacOptions& opt) {
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const VehicleAnalysis uv = analyseVehicle(description, vehicle::Variant::Untracked, opt.count);
@@ -53,8 +60,8 @@ void run(const MacOptions& opt) {
   // Paired as the reduction pairs them: global modes only (global_modes.h), so a chain mode that
   // leaves the hull and wheels at rest is no one's partner whatever its MAC.
   Matrix pairing = space_mac;
-  const std::vector<bool> uv_global = reduction::globalModes(uv.classes, uv.modes.frequencies_hz);
-  const std::vector<bool> tv_global = reduction::globalModes(tv.classes, tv.modes.frequencies_hz);
+  const std::vector<bool> uv_global = reduction::globalModes(uv.vehicle, uv.system, uv.modes);
+  const std::vector<bool> tv_global = reduction::globalModes(tv.vehicle, tv.system, tv.modes);
   for (Eigen::Index j = 0; j < pairing.rows(); ++j)
     if (!uv_global[static_cast<std::size_t>(j)])
       pairing.row(j).setZero();
@@ -69,7 +76,9 @@ void run(const MacOptions& opt) {
   for (const auto& [first, end] : reduction::degenerateGroups(uv.modes.frequencies_hz)) {
     const int i = static_cast<int>(first);
     if (uv.modes.frequencies_hz(i) > opt.band_hz) break;
-    if (uv.classes[i].kind == vehicle::ModeKind::TrackLocal) continue;
+    // A hull or wheel mode (by its label) that is also global: the rows the reduction pairs.
+    if (uv.classes[i].kind == vehicle::ModeKind::TrackLocal || !uv_global[first])
+      continue;
     rows.push_back({i, static_cast<int>(end - first), correlations[i]});
   }
 
@@ -90,6 +99,14 @@ void run(const MacOptions& opt) {
       mat.writeStrings("untracked_mode_types", uv_types);
       mat.writeStrings("tracked_mode_types", tv_types);
       mat.writeScalar("threshold", opt.threshold);
+      // 1 for a global mode (global_modes.h), one per mode.
+      for (const auto& [name, global] : {std::make_pair("untracked_global", &uv_global),
+                                         std::make_pair("tracked_global", &tv_global)}) {
+        Vector flags(static_cast<Eigen::Index>(global->size()));
+        for (std::size_t i = 0; i < global->size(); ++i)
+          flags(static_cast<Eigen::Index>(i)) = (*global)[i] ? 1.0 : 0.0;
+        mat.writeMatrix(name, flags);
+      }
       mat.close();
     });
     // One row per un-tracked mode, then one column per tracked mode, named by its number.
@@ -127,13 +144,16 @@ void run(const MacOptions& opt) {
           .field("untracked_mode", r.untracked_mode + 1)
           .field("multiplicity", r.multiplicity)
           .field("untracked_hz", uv.modes.frequencies_hz(r.untracked_mode))
-          .field("type", uv.classes[r.untracked_mode].label)
-          .field("tracked_mode", r.correlation.best_match + 1)
-          .field("tracked_hz", tv.modes.frequencies_hz(r.correlation.best_match))
-          .field("tracked_type", tv.classes[r.correlation.best_match].label)
-          .field("mac", r.correlation.best_mac)
-          .key("other_matches")
-          .beginArray();
+          .field("type", uv.classes[r.untracked_mode].label);
+      if (hasPartner(r)) {
+        json.field("tracked_mode", r.correlation.best_match + 1)
+            .field("tracked_hz", tv.modes.frequencies_hz(r.correlation.best_match))
+            .field("tracked_type", tv.classes[r.correlation.best_match].label);
+      } else {  // null: no global tracked mode shares any motion with it
+        const double none = std::numeric_limits<double>::quiet_NaN();
+        json.field("tracked_mode", none).field("tracked_hz", none).field("tracked_type", none);
+      }
+      json.field("mac", r.correlation.best_mac).key("other_matches").beginArray();
       for (const auto& m : r.correlation.matches) {
         if (m.mode == r.correlation.best_match) continue;
         json.beginObject().field("tracked_mode", m.mode + 1).field("tracked_hz", tv.modes.frequencies_hz(m.mode))
@@ -146,16 +166,16 @@ void run(const MacOptions& opt) {
     return;
   }
 
-  std::cout
-      << "MAC between the un-tracked (" << uv.system.size() << " DOFs) and tracked ("
-      << tv.system.size() << " DOFs) models on " << common.size()
-      << " common translational DOFs; first " << opt.count << " modes.\n\n"
-      << "correlation (like Table 4): un-tracked hull and wheel modes up to " << opt.band_hz
-      << " Hz (modes of one repeated frequency as one row, compared as an eigenspace); best "
-         "tracked match, then (other matches with MAC >= "
-      << opt.threshold
-      << "), among the tracked modes with 1 % or more of their kinetic energy in the hull and "
-         "running gear, as the reduction pairs them\n\n";
+  std::cout << "MAC between the un-tracked (" << uv.system.size() << " DOFs) and tracked ("
+            << tv.system.size() << " DOFs) models on " << common.size()
+            << " common translational DOFs; first " << opt.count << " modes.\n\n"
+            << "correlation (like Table 4): un-tracked hull and wheel modes up to " << opt.band_hz
+            << " Hz (modes of one repeated frequency as one row, compared as an eigenspace); best "
+               "tracked match, then (other matches with MAC >= "
+            << opt.threshold << "), among the tracked modes with "
+            << brief(100.0 * reduction::kGlobalEnergyShare)
+            << " % or more of their kinetic energy in the hull and running gear, as the reduction "
+               "pairs them\n\n";
   std::cout << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
   for (const CorrelationRow& r : rows) {
     const int best = r.correlation.best_match;
@@ -163,14 +183,17 @@ void run(const MacOptions& opt) {
         r.multiplicity == 1 ? std::to_string(r.untracked_mode + 1)
                             : std::to_string(r.untracked_mode + 1) + "-" +
                                   std::to_string(r.untracked_mode + r.multiplicity);
-    std::cout << std::setw(9) << modes << std::setw(11) << std::fixed
-              << std::setprecision(2) << uv.modes.frequencies_hz(r.untracked_mode) << "  "
-              << std::left << std::setw(26)
-              << (r.multiplicity == 1 ? uv.classes[r.untracked_mode].label
-                                      : uv.classes[r.untracked_mode].label + " x" + std::to_string(r.multiplicity))
-              << std::right
-              << std::setw(7) << best + 1 << std::setw(11) << tv.modes.frequencies_hz(best)
-              << std::setw(6) << std::setprecision(2) << r.correlation.best_mac << "   ";
+    std::cout << std::setw(9) << modes << std::setw(11) << std::fixed << std::setprecision(2)
+              << uv.modes.frequencies_hz(r.untracked_mode) << "  " << std::left << std::setw(26)
+              << (r.multiplicity == 1
+                      ? uv.classes[r.untracked_mode].label
+                      : uv.classes[r.untracked_mode].label + " x" + std::to_string(r.multiplicity))
+              << std::right;
+    if (hasPartner(r))
+      std::cout << std::setw(7) << best + 1 << std::setw(11) << tv.modes.frequencies_hz(best);
+    else
+      std::cout << std::setw(7) << "-" << std::setw(11) << "-";
+    std::cout << std::setw(6) << std::setprecision(2) << r.correlation.best_mac << "   ";
     for (const auto& m : r.correlation.matches)
       if (m.mode != best)
         std::cout << "(" << m.mode + 1 << ": " << std::setprecision(2) << tv.modes.frequencies_hz(m.mode)

@@ -7,11 +7,12 @@
 
 #include "commands.h"
 #include "reduction_options.h"
-#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -78,11 +79,11 @@ void run(const ReduceOptions& opt) {
         .field("flexible_modes", report.flexible_modes)
         .field("initial_flexible_modes", report.initial_fixed_interface_modes)
         .field("reduced_dofs", static_cast<long long>(report.reduced_dofs))
-        .field("reduced_size_percent", 100.0 * report.reduced_dofs / report.full_dofs)
-        .field("mac_candidate_modes", report.mac_candidate_modes)
-        .field("mac_reference_modes", report.mac_reference_modes)
-        .key("selected_modes")
-        .beginArray();
+        .field("reduced_size_percent", 100.0 * report.reduced_dofs / report.full_dofs);
+    if (options.rule == reduction::VehicleModeRule::MacCorrelation)  // the modes it paired
+      json.field("mac_candidate_modes", report.mac_candidate_modes)
+          .field("mac_reference_modes", report.mac_reference_modes);
+    json.key("selected_modes").beginArray();
     for (const auto& m : model.selected_modes)
       json.beginObject().field("mode", m.mode + 1).field("frequency_hz", m.frequency_hz).field("reason", m.reason).endObject();
     json.endArray()
@@ -140,7 +141,7 @@ void run(const ReduceOptions& opt) {
               << brief(100.0 * reduction::kBandFrequencyTolerance) << " %)";
   std::cout << "\n  selected global modes";
   if (options.rule == reduction::VehicleModeRule::MacCorrelation) {
-    // Both sets: the modes with 1 % or more of their kinetic energy in the vehicle (global).
+    // Both sets: the global modes (global_modes.h).
     const vehicle::Variant other = variant == vehicle::Variant::Tracked
                                        ? vehicle::Variant::Untracked
                                        : vehicle::Variant::Tracked;
@@ -148,8 +149,9 @@ void run(const ReduceOptions& opt) {
               << report.mac_candidate_modes << " " << vehicle::variantName(variant)
               << " modes up to " << brief(options.band_hz) << " Hz and the "
               << report.mac_reference_modes << " " << vehicle::variantName(other) << " ones, of "
-              << options.global_modes
-              << " each, with 1 % or more of their kinetic energy in the hull and running gear)";
+              << options.global_modes << " each, with "
+              << brief(100.0 * reduction::kGlobalEnergyShare)
+              << " % or more of their kinetic energy in the hull and running gear)";
   }
   std::cout << ":\n";
   for (const auto& m : model.selected_modes)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <unordered_map>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -161,6 +162,35 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
     }
   }
   return out;
+}
+
+Matrix vehicleEnergy(const VehicleModel& vehicle, const fem::System& system,
+                     const ModeShapes& shapes) {
+  if (shapes.rows() != system.size())
+    throw InputError("vehicleEnergy: mode shapes have " + std::to_string(shapes.rows()) +
+                     " rows, the system has " + std::to_string(system.size()) + " active DOFs");
+  // The bodies classifyModes() counts as the vehicle's: the hull, what is attached to it and the
+  // road wheels (their whole motion, relative and carried).
+  std::unordered_map<NodeId, bool> vehicle_body;
+  vehicle_body[vehicle.layout.hull] = true;
+  for (NodeId id : vehicle.layout.hull_attached)
+    vehicle_body[id] = true;
+  for (const WheelStation& w : vehicle.layout.wheels)
+    vehicle_body[w.centre] = true;
+  const Eigen::Index k = shapes.cols();
+  Matrix g = Matrix::Zero(k, k);
+  for (const fem::Mass& m : vehicle.model.masses) {
+    if (!vehicle_body.count(m.node))
+      continue;
+    const Matrix v = nodeRows(system, m.node) * shapes;  // 6 x k
+    g.noalias() += v.transpose() * (fem::rigidBodyMass(m) * v);
+  }
+  // Shares of each mode's own kinetic energy: G_ij / sqrt(E_i E_j), E = diag(Phi^T M Phi).
+  const Vector total = (shapes.transpose() * (system.mass * shapes)).diagonal();
+  for (Eigen::Index i = 0; i < k; ++i)
+    for (Eigen::Index j = 0; j < k; ++j)
+      g(i, j) /= std::sqrt(total(i) * total(j));
+  return 0.5 * (g + g.transpose());
 }
 
 std::vector<fem::DofRef> commonTranslationalDofs(const VehicleModel& a, const VehicleModel& b) {

@@ -12,7 +12,6 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/reduction/common_dofs.h"
 #include "tracked_vehicle_dynamics/reduction/fixed_interface_modes.h"
-#include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/mac.h"
 #include "tracked_vehicle_dynamics/reduction/mode_selection.h"
 
@@ -320,37 +319,6 @@ TEST(FixedInterfaceModes, CarryTheSelectionOverAsACountOrAFrequency) {
   EXPECT_THROW(fixedInterfaceModes(selection, options), InputError);
   options.frequency_margin = 1.5;
   EXPECT_THROW(fixedInterfaceModes(ModeSelection{}, options), InputError);
-}
-
-}  // namespace
-}  // namespace reduction
-}  // namespace tracked_vehicle_dynamics
-
-namespace tracked_vehicle_dynamics {
-namespace reduction {
-namespace {
-
-// Global modes (global_modes.h): 1 % or more of the kinetic energy in the hull and running gear;
-// the modes of a repeated eigenvalue are global together, as the MAC compares them together.
-TEST(GlobalModes, ShareOfTheVehicleDecidesAndRepeatedEigenvaluesGoTogether) {
-  auto mode = [](double hull, double wheels) {
-    vehicle::ModeClass c;
-    c.hull_share = hull;
-    c.wheel_share = wheels;
-    c.track_share = 1.0 - hull - wheels;
-    return c;
-  };
-  // A hull mode; a chain mode just under the share, one just at it (hull and wheels add up);
-  // a repeated eigenvalue whose solver vectors happen to split the vehicle's motion unevenly;
-  // one that does not move the vehicle at all.
-  const std::vector<vehicle::ModeClass> classes = {
-      mode(0.97, 0.02), mode(0.0099, 0.0), mode(0.006, 0.004), mode(0.0, 0.0),
-      mode(0.3, 0.0),   mode(0.0, 0.0),    mode(0.0, 0.0),     mode(0.0, 0.0)};
-  Vector f(8);
-  f << 2.0, 3.0, 4.0, 18.5568, 18.5568 * (1 + 1e-9), 30.0, 107.72, 107.72;
-  const std::vector<bool> global = globalModes(classes, f);
-  EXPECT_EQ(global, (std::vector<bool>{true, false, true, true, true, false, false, false}));
-  EXPECT_THROW(globalModes(classes, Vector::Ones(7)), InputError);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Which modes of a vehicle are global (paper §3.1.1: the MAC selection keeps the modes
 // "significant for the global behaviour"): those with at least kGlobalEnergyShare of their
 // kinetic energy in the vehicle, the hull and the running gear (vehicle::ModeClass::hull_share +
-// wheel_share).
+// wheel_share; vehicle::vehicleEnergy()).
 //
 // The MAC is blind to amplitude, so a mode of the track that barely moves the vehicle's DOFs
 // correlates as fully as a hull mode. On the bundled vehicle the un-tracked assemblies' 107.72 Hz
@@ -15,8 +15,11 @@
 
 #include <vector>
 
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/types.h"
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
@@ -24,12 +27,14 @@ namespace reduction {
 /// Share of a mode's kinetic energy in the hull and running gear from which it is global [-].
 constexpr double kGlobalEnergyShare = 0.01;
 
-/// Whether each mode (`classes`, classifyModes() of modes with `frequencies_hz`, ascending) is
-/// global. The modes of a repeated eigenvalue (degenerateGroups(), mac.h) are one eigenspace to
-/// the MAC and any basis of it to the solver, so they are global together: when one of them is.
-/// Throws InputError when the sizes differ.
-std::vector<bool> globalModes(const std::vector<vehicle::ModeClass>& classes,
-                              const Vector& frequencies_hz);
+/// Whether each mode of `modes` (of `system`, the assembled `vehicle`; frequencies ascending,
+/// shapes M-orthonormal) is global. The modes of a repeated eigenvalue (degenerateGroups(),
+/// mac.h) are one eigenspace to the MAC and any basis of it to the solver, so they are judged
+/// together, by the largest share any mode of the eigenspace holds (the largest eigenvalue of
+/// vehicle::vehicleEnergy() over the group): global together or not at all, whichever vectors the
+/// solver returned. Throws InputError when the shapes do not fit the system.
+std::vector<bool> globalModes(const vehicle::VehicleModel& vehicle, const fem::System& system,
+                              const fem::ModalBasis& modes);
 
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics

@@ -109,7 +109,8 @@ struct VehicleReductionReport {
   std::string cache_note;        ///< why the cache was (not) used
   bool cache_rebuilt = false;    ///< a cached model existed but was stale or corrupt (cache_note)
   std::string cache_error;       ///< why a model built here could not be cached (empty: it was)
-  /// Rule mac: global_modes ends inside a repeated eigenvalue of a variant (one line each,
+  /// Rule mac: global_modes ends inside a repeated eigenvalue of a variant that the selection
+  /// uses (global_modes.h), or the solver skipped part of one (one line each,
   /// naming the variant, the frequency, the modes kept of the group and the counts that would
   /// not cut it; mode_count_cut.h). Saved with the model (ReducedModel::warnings), so a model
   /// from the cache reports the warnings of the run that built it.

@@ -66,6 +66,14 @@ struct ModeClass {
 std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::System& system,
                                      const fem::ModalBasis& basis);
 
+/// The vehicle's share of the kinetic energy, between modes: G = sum_b (S_b Phi)^T M_b (S_b Phi)
+/// over the hull, the bodies attached to it and the road wheels, for the columns of `shapes`,
+/// each scaled by its own kinetic energy (G_jj = hull_share + wheel_share of classifyModes();
+/// symmetric, k x k). For M-orthonormal modes of one repeated eigenvalue its largest eigenvalue is
+/// the largest share any mode of that eigenspace holds, whichever basis the solver returned.
+Matrix vehicleEnergy(const VehicleModel& vehicle, const fem::System& system,
+                     const ModeShapes& shapes);
+
 /// Translational DOFs (ux, uy, uz) of the nodes both models have, with the same id and position
 /// (to 1e-9 m): hull, named points, spider and arm nodes, wheel centres. Sorted by node id.
 std::vector<fem::DofRef> commonTranslationalDofs(const VehicleModel& a, const VehicleModel& b);
