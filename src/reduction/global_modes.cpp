@@ -12,13 +12,16 @@ namespace reduction {
 std::vector<bool> globalModes(const vehicle::VehicleModel& vehicle, const fem::System& system,
                               const fem::ModalBasis& modes) {
   std::vector<bool> global(static_cast<std::size_t>(modes.count()), false);
+  // One Gram matrix for all the modes (each body's rows of T are gathered once); a group's is its
+  // diagonal block.
+  const Matrix all = vehicle::vehicleEnergy(vehicle, system, modes.shapes);
   for (const auto& [first, end] : degenerateGroups(modes.frequencies_hz)) {
     // max over unit x of x^T G x = the largest eigenvalue of the group's G (for one mode, G_jj).
-    const Matrix g =
-        vehicle::vehicleEnergy(vehicle, system, modes.shapes.middleCols(first, end - first));
-    const double largest = g.rows() == 1
-                               ? g(0, 0)
-                               : Eigen::SelfAdjointEigenSolver<Matrix>(g, Eigen::EigenvaluesOnly)
+    const Eigen::Index n = end - first;
+    const double largest = n == 1
+                               ? all(first, first)
+                               : Eigen::SelfAdjointEigenSolver<Matrix>(
+                                     Matrix(all.block(first, first, n, n)), Eigen::EigenvaluesOnly)
                                      .eigenvalues()
                                      .maxCoeff();
     std::fill(global.begin() + first, global.begin() + end, largest >= kGlobalEnergyShare);
