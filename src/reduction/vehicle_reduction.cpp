@@ -79,7 +79,7 @@ std::vector<bool> globalModes(const AssembledVariant& v) {
 // group above `candidate_limit_hz` (the band, for the variant reduced): its modes are no
 // candidates. A solver that skipped modes below the last group is always reported.
 void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_modes,
-               const std::vector<bool>* global, double candidate_limit_hz,
+               const std::vector<bool>& global, double candidate_limit_hz,
                std::vector<std::string>* warnings) {
   const char* name = vehicle::variantName(variant);
   std::optional<ModeCountCut> cut;
@@ -99,7 +99,7 @@ void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_m
     if (cut->frequency_hz > candidate_limit_hz)
       return;
     const bool takes_part =
-        std::any_of(global->begin() + cut->fewer, global->end(), [](bool g) { return g; });
+        std::any_of(global.begin() + cut->fewer, global.end(), [](bool g) { return g; });
     if (!takes_part)
       return;
   }
@@ -268,8 +268,8 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     }
     // The candidates are the reduced variant's global modes in the band, the references the other
     // variant's global modes.
-    warnIfCut(model, variant, options.global_modes, &own, options.band_hz, &rep.warnings);
-    warnIfCut(other, other_variant, options.global_modes, &global,
+    warnIfCut(model, variant, options.global_modes, own, options.band_hz, &rep.warnings);
+    warnIfCut(other, other_variant, options.global_modes, global,
               std::numeric_limits<double>::infinity(), &rep.warnings);
     selection_options.rule = ModeSelectionRule::Correlation;
     selection_options.max_frequency_hz = options.band_hz;

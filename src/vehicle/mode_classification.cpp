@@ -27,6 +27,19 @@ Matrix nodeRows(const fem::System& system, NodeId node) {
   return rows;
 }
 
+// The vehicle's bodies, by the node of their mass item: 0 the hull, 1 what is attached to it,
+// 2 a road wheel. Everything else (the track) is not the vehicle's.
+enum BodyGroup { kHullBody = 0, kAttachedBody = 1, kWheelBody = 2 };
+std::unordered_map<NodeId, int> vehicleBodies(const VehicleModel& vehicle) {
+  std::unordered_map<NodeId, int> group;
+  group[vehicle.layout.hull] = kHullBody;
+  for (NodeId id : vehicle.layout.hull_attached)
+    group[id] = kAttachedBody;
+  for (const WheelStation& w : vehicle.layout.wheels)
+    group[w.centre] = kWheelBody;
+  return group;
+}
+
 }  // namespace
 
 const char* hullMotionName(HullMotion motion) {
@@ -76,14 +89,9 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
     Matrix motion;
     Matrix relative;
     Matrix6 mass;
-    int group;  // 0 hull, 1 hull-attached, 2 wheel
+    int group;  // BodyGroup
   };
-  std::unordered_map<NodeId, int> group;
-  group[vehicle.layout.hull] = 0;
-  for (NodeId id : vehicle.layout.hull_attached)
-    group[id] = 1;
-  for (const WheelStation& w : vehicle.layout.wheels)
-    group[w.centre] = 2;
+  const std::unordered_map<NodeId, int> group = vehicleBodies(vehicle);
   std::unordered_map<NodeId, Vector3> position;
   for (const fem::Node& n : vehicle.model.nodes)
     position[n.id] = n.position;
@@ -94,7 +102,7 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
     if (it == group.end())
       continue;
     Body b{nodeRows(system, m.node) * basis.shapes, Matrix(), fem::rigidBodyMass(m), it->second};
-    if (b.group == 2)
+    if (b.group == kWheelBody)
       b.relative = b.motion -
                    fem::rigidOffset(position[m.node] - position[vehicle.layout.hull]) * hull_motion;
     bodies.push_back(std::move(b));
@@ -108,12 +116,12 @@ std::vector<ModeClass> classifyModes(const VehicleModel& vehicle, const fem::Sys
     for (const Body& b : bodies) {
       const Vector6 v = b.motion.col(j);
       const double energy = v.dot(b.mass * v) / total;
-      if (b.group == 0) {
+      if (b.group == kHullBody) {
         // Per-component energies; the hull mass matrix is diagonal at its centre of gravity.
         const Vector6 mv = b.mass * v;
         for (int k = 0; k < 6; ++k)
           c.hull_energy[k] = v(k) * mv(k) / total;
-      } else if (b.group == 1) {
+      } else if (b.group == kAttachedBody) {
         attached += energy;
       } else {
         // Wheel bounce is the wheels' motion relative to the hull; the motion carried with the
@@ -169,14 +177,9 @@ Matrix vehicleEnergy(const VehicleModel& vehicle, const fem::System& system,
   if (shapes.rows() != system.size())
     throw InputError("vehicleEnergy: mode shapes have " + std::to_string(shapes.rows()) +
                      " rows, the system has " + std::to_string(system.size()) + " active DOFs");
-  // The bodies classifyModes() counts as the vehicle's: the hull, what is attached to it and the
-  // road wheels (their whole motion, relative and carried).
-  std::unordered_map<NodeId, bool> vehicle_body;
-  vehicle_body[vehicle.layout.hull] = true;
-  for (NodeId id : vehicle.layout.hull_attached)
-    vehicle_body[id] = true;
-  for (const WheelStation& w : vehicle.layout.wheels)
-    vehicle_body[w.centre] = true;
+  // The bodies classifyModes() counts as the vehicle's, the road wheels with their whole motion
+  // (relative and carried).
+  const std::unordered_map<NodeId, int> vehicle_body = vehicleBodies(vehicle);
   const Eigen::Index k = shapes.cols();
   Matrix g = Matrix::Zero(k, k);
   for (const fem::Mass& m : vehicle.model.masses) {
@@ -186,7 +189,7 @@ Matrix vehicleEnergy(const VehicleModel& vehicle, const fem::System& system,
     g.noalias() += v.transpose() * (fem::rigidBodyMass(m) * v);
   }
   // Shares of each mode's own kinetic energy: G_ij / sqrt(E_i E_j), E = diag(Phi^T M Phi).
-  const Vector total = (shapes.transpose() * (system.mass * shapes)).diagonal();
+  const Vector total = shapes.cwiseProduct(system.mass * shapes).colwise().sum().transpose();
   for (Eigen::Index i = 0; i < k; ++i)
     for (Eigen::Index j = 0; j < k; ++j)
       g(i, j) /= std::sqrt(total(i) * total(j));
