@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -82,8 +84,7 @@ struct Inputs {
   const Vector* travel = nullptr;  // f_a, the travel inertia per unit forward acceleration
 };
 
-void checkInputs(const Inputs& in, const std::vector<DofIndex>& masters,
-                 const CraigBamptonOptions& options) {
+void checkMatrices(const Inputs& in, const std::vector<DofIndex>& masters) {
   const DofIndex n = in.k.rows();
   if (in.k.cols() != n || in.m.rows() != n || in.m.cols() != n)
     throw InputError("craigBampton: K is " + size(in.k) + " and M is " + size(in.m) +
@@ -101,7 +102,10 @@ void checkInputs(const Inputs& in, const std::vector<DofIndex>& masters,
       throw InputError("craigBampton: master DOF " + std::to_string(masters[i]) +
                        " is listed twice");
   }
-  const DofIndex slaves = n - static_cast<DofIndex>(masters.size());
+}
+
+void checkOptions(DofIndex n, DofIndex master_count, const CraigBamptonOptions& options) {
+  const DofIndex slaves = n - master_count;
   const FixedInterfaceModes& r = options.fixed_interface;
   if (r.count < 0 || r.count > slaves)
     throw InputError("craigBampton: " + std::to_string(r.count) +
@@ -109,7 +113,7 @@ void checkInputs(const Inputs& in, const std::vector<DofIndex>& masters,
                      " slave DOFs allow 0.." + std::to_string(slaves));
   if (r.max_frequency_hz < 0.0)
     throw InputError("craigBampton: fixed-interface max_frequency_hz is negative");
-  if (masters.empty() && r.count == 0)
+  if (master_count == 0 && r.count == 0)
     throw InputError("craigBampton: no master DOF and no fixed-interface mode: empty basis");
   for (std::size_t i = 0; i < options.recovery_dofs.size(); ++i)
     if (options.recovery_dofs[i] < 0 || options.recovery_dofs[i] >= n)
@@ -148,33 +152,60 @@ fem::ModalBasis fixedInterfaceModes(const SparseMatrix& k_ss, const SparseMatrix
   return all;
 }
 
-CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters,
-                          const CraigBamptonOptions& options) {
-  checkInputs(in, masters, options);
+// Phi_S^T b(slaves, :) for a sparse n x k matrix b (the fixed-interface rows of T^T b).
+Matrix slaveRowsProduct(const Matrix& phi_s, const SparseMatrix& p_s, const SparseMatrix& b) {
+  return phi_s.transpose() * SparseMatrix(p_s.transpose() * b);
+}
+
+}  // namespace
+
+struct CraigBamptonReducer::State {
+  // Partition, constraint modes and master blocks (throws as the reducer's constructors say).
+  State(const Inputs& matrices, std::vector<DofIndex> master_dofs);
+
+  Inputs in;
+  std::vector<DofIndex> masters;
+  std::vector<DofIndex> slaves;
+  SparseMatrix p_s;  // n x s selection of the slave DOFs
+  SparseMatrix k_ss;
+  SparseMatrix m_ss;
+  SparseMatrix c_ss;            // empty without dampers
+  Matrix t_m;                   // T_m = [I; Phi_C] in the original DOF order [n x m]
+  Matrix mass_mm;               // T_m^T M T_m
+  Matrix stiffness_mm;          // K_mm + K_sm^T Phi_C (Guyan), exactly symmetric
+  Matrix damping_mm;            // T_m^T C T_m (0 x 0 without dampers)
+  Matrix input_stiffness_m;     // T_m^T K_u
+  Matrix input_damping_m;       // T_m^T C_u
+  Vector gravity_m;             // T_m^T f_g
+  Vector travel_m;              // T_m^T f_a
+  CraigBamptonTimings seconds;  // partition, factorisation, constraint modes, master projection
+};
+
+CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> master_dofs)
+    : in(matrices), masters(std::move(master_dofs)) {
+  checkMatrices(in, masters);
   const auto start = Clock::now();
-  CraigBamptonResult result;
   const DofIndex n = in.k.rows();
   const auto m = static_cast<DofIndex>(masters.size());
 
   // Partition (eq. 3) with sparse selection matrices.
   auto stage = Clock::now();
-  std::vector<DofIndex> slot(static_cast<std::size_t>(n), -1);  // master coordinate, or -1
-  for (DofIndex i = 0; i < m; ++i)
-    slot[static_cast<std::size_t>(masters[i])] = i;
-  std::vector<DofIndex> slaves;
+  std::vector<char> is_master(static_cast<std::size_t>(n), 0);
+  for (const DofIndex i : masters)
+    is_master[static_cast<std::size_t>(i)] = 1;
   slaves.reserve(static_cast<std::size_t>(n - m));
   for (DofIndex i = 0; i < n; ++i)
-    if (slot[static_cast<std::size_t>(i)] < 0)
+    if (!is_master[static_cast<std::size_t>(i)])
       slaves.push_back(i);
   const auto s = static_cast<DofIndex>(slaves.size());
   const SparseMatrix p_m = selection(n, masters);
-  const SparseMatrix p_s = selection(n, slaves);
-  SparseMatrix k_ss = p_s.transpose() * in.k * p_s;
-  SparseMatrix m_ss = p_s.transpose() * in.m * p_s;
+  p_s = selection(n, slaves);
+  k_ss = p_s.transpose() * in.k * p_s;
+  m_ss = p_s.transpose() * in.m * p_s;
   k_ss.makeCompressed();
   m_ss.makeCompressed();
   const SparseMatrix k_sm_sparse = p_s.transpose() * in.k * p_m;
-  result.seconds.partition = since(stage);
+  seconds.partition = since(stage);
 
   // Constraint modes (eq. 4): one factorisation of K_ss, one solve for all m columns.
   Matrix phi_c(s, m);
@@ -188,71 +219,77 @@ CraigBamptonResult reduce(const Inputs& in, const std::vector<DofIndex>& masters
                         std::to_string(m) +
                         " master DOFs leave a rigid-body "
                         "motion or a mechanism of the slave DOFs free");
-    result.seconds.factorisation = since(stage);
+    seconds.factorisation = since(stage);
     stage = Clock::now();
     // Solved from the sparse K_sm in blocks, negated in place: no dense K_sm and no second
     // s x m copy (43 MB each on the tracked vehicle).
     phi_c = cholesky.solve(k_sm_sparse);
     phi_c *= -1.0;
-    result.seconds.constraint_modes = since(stage);
+    seconds.constraint_modes = since(stage);
   }
 
+  // T_m (eq. 8's master columns) in the original DOF order, and the master blocks of eq. 9.
+  // K needs no projection: the master block is the Schur complement K_mm + K_sm^T Phi_C (Guyan),
+  // and with the constraint modes (eq. 4) its coupling to the fixed-interface modes vanishes,
+  // Phi_S^T (K_sm + K_ss Phi_C) = 0 (reduce()).
   stage = Clock::now();
-  const fem::ModalBasis phi_s = fixedInterfaceModes(k_ss, m_ss, options);
-  result.fixed_interface_eigenvalues = phi_s.eigenvalues;
-  result.fixed_interface_frequencies_hz = phi_s.frequencies_hz;
-  result.seconds.fixed_interface_modes = since(stage);
-  const DofIndex r = phi_s.count();
-
-  // T_CMS (eq. 8) in the original DOF order.
-  stage = Clock::now();
-  Matrix t = Matrix::Zero(n, m + r);
-  for (DofIndex i = 0; i < m; ++i)
-    t(masters[static_cast<std::size_t>(i)], i) = 1.0;
-  for (DofIndex j = 0; j < s; ++j) {
-    const DofIndex row = slaves[static_cast<std::size_t>(j)];
-    t.row(row).head(m) = phi_c.row(j);
-    if (r > 0)
-      t.row(row).tail(r) = phi_s.shapes.row(j);
-  }
-
-  // Eq. 9. K_R needs no projection: with the constraint modes (eq. 4) the coupling block
-  // vanishes, Phi_S^T (K_sm + K_ss Phi_C) = 0, the mass-normalised fixed-interface modes (eq. 6)
-  // give Phi_S^T K_ss Phi_S = diag(omega_i^2), and the master block is the Schur complement
-  // K_mm + K_sm^T Phi_C (Guyan). One sparse-dense product instead of a dense n x k projection,
-  // and the exact zeros the projection only reproduces to rounding.
-  result.mass = project(in.m, t);
-  result.stiffness = Matrix::Zero(m + r, m + r);
+  stiffness_mm = Matrix::Zero(m, m);
   if (m > 0) {
     const Matrix schur =
         Matrix(SparseMatrix(p_m.transpose() * in.k * p_m)) + k_sm_sparse.transpose() * phi_c;
-    result.stiffness.topLeftCorner(m, m) = 0.5 * (schur + schur.transpose());
+    stiffness_mm = 0.5 * (schur + schur.transpose());
   }
-  if (r > 0)
-    result.stiffness.bottomRightCorner(r, r).diagonal() = phi_s.eigenvalues;
-  const Matrix c_discrete = in.c.size() ? project(in.c, t) : Matrix::Zero(m + r, m + r);
-  result.damping = reducedDamping(result.mass, result.stiffness, c_discrete, options.damping);
+  t_m = Matrix::Zero(n, m);
+  for (DofIndex i = 0; i < m; ++i)
+    t_m(masters[static_cast<std::size_t>(i)], i) = 1.0;
+  for (DofIndex j = 0; j < s; ++j)
+    t_m.row(slaves[static_cast<std::size_t>(j)]) = phi_c.row(j);
+  phi_c.resize(0, 0);  // its rows are in t_m
+  mass_mm = project(in.m, t_m);
+  if (in.c.size()) {
+    damping_mm = project(in.c, t_m);
+    c_ss = p_s.transpose() * in.c * p_s;
+  }
   const DofIndex inputs = in.ku ? in.ku->cols() : 0;
-  result.input_stiffness = in.ku ? Matrix(t.transpose() * *in.ku) : Matrix(m + r, 0);
-  result.input_damping = in.cu ? Matrix(t.transpose() * *in.cu) : Matrix(m + r, inputs);
-  result.gravity_load = in.gravity ? Vector(t.transpose() * *in.gravity) : Vector::Zero(m + r);
+  input_stiffness_m = in.ku ? Matrix(t_m.transpose() * *in.ku) : Matrix(m, 0);
+  input_damping_m = in.cu ? Matrix(t_m.transpose() * *in.cu) : Matrix(m, inputs);
+  gravity_m = in.gravity ? Vector(t_m.transpose() * *in.gravity) : Vector::Zero(m);
   // A load reduces like gravity: its work on x = T x_R is x_R^T (T^T f).
-  result.travel_load = in.travel ? Vector(t.transpose() * *in.travel) : Vector::Zero(m + r);
-  result.masters = masters;
-  result.recovery.resize(static_cast<DofIndex>(options.recovery_dofs.size()), m + r);
-  for (std::size_t i = 0; i < options.recovery_dofs.size(); ++i)
-    result.recovery.row(static_cast<DofIndex>(i)) = t.row(options.recovery_dofs[i]);
-  if (options.keep_transformation)
-    result.transformation = std::move(t);
-  result.seconds.projection = since(stage);
-  result.seconds.total = since(start);
-  return result;
+  travel_m = in.travel ? Vector(t_m.transpose() * *in.travel) : Vector::Zero(m);
+  seconds.projection = since(stage);
+  seconds.total = since(start);
+}
+
+namespace {
+
+// The blocks of T^T A T (eq. 9) that a symmetric sparse A [n x n] gives the fixed-interface
+// modes, T_r = [0; Phi_S]: the coupling T_m^T (A T_r) [m x r], with A T_r = A(:, s) Phi_S, over
+// the rows where A T_r has entries only when those are few (a damper's C), and the modal block
+// Phi_S^T A_ss Phi_S [r x r], made exactly symmetric.
+void projectModes(const SparseMatrix& a, const SparseMatrix& a_ss, const SparseMatrix& p_s,
+                  const Matrix& t_m, const Matrix& phi_s, Matrix* coupling, Matrix* modal) {
+  const SparseMatrix a_s = a * p_s;  // n x s
+  std::vector<char> used(static_cast<std::size_t>(a.rows()), 0);
+  for (DofIndex j = 0; j < a_s.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(a_s, j); it; ++it)
+      used[static_cast<std::size_t>(it.row())] = 1;
+  std::vector<DofIndex> rows;
+  for (DofIndex i = 0; i < a.rows(); ++i)
+    if (used[static_cast<std::size_t>(i)])
+      rows.push_back(i);
+  if (2 * rows.size() > static_cast<std::size_t>(a.rows())) {
+    *coupling = t_m.transpose() * (a_s * phi_s);
+  } else {
+    const SparseMatrix a_rows = selection(a.rows(), rows).transpose() * a_s;  // rows x s
+    *coupling = t_m(rows, Eigen::all).transpose() * (a_rows * phi_s);
+  }
+  const Matrix block = phi_s.transpose() * (a_ss * phi_s);
+  *modal = 0.5 * (block + block.transpose());
 }
 
 }  // namespace
 
-CraigBamptonResult craigBampton(const fem::System& system, const std::vector<DofIndex>& masters,
-                                const CraigBamptonOptions& options) {
+CraigBamptonReducer::CraigBamptonReducer(const fem::System& system, std::vector<DofIndex> masters) {
   const DofIndex n = system.size();
   const SparseMatrix& ku = system.input_stiffness;
   const SparseMatrix& cu = system.input_damping;
@@ -267,16 +304,136 @@ CraigBamptonResult craigBampton(const fem::System& system, const std::vector<Dof
     throw InputError("craigBampton: travel inertia load has " +
                      std::to_string(system.travel_load.size()) + " entries, expected " +
                      std::to_string(n));
-  Inputs in{system.stiffness, system.mass,         system.damping,
-            &ku,              &cu,                 &system.gravity_load,
-            &system.travel_load};
-  return reduce(in, masters, options);
+  state_ = std::make_unique<State>(Inputs{system.stiffness, system.mass, system.damping, &ku, &cu,
+                                          &system.gravity_load, &system.travel_load},
+                                   std::move(masters));
+}
+
+CraigBamptonReducer::CraigBamptonReducer(const SparseMatrix& stiffness, const SparseMatrix& mass,
+                                         const SparseMatrix& damping,
+                                         std::vector<DofIndex> masters) {
+  state_ = std::make_unique<State>(Inputs{stiffness, mass, damping}, std::move(masters));
+}
+
+CraigBamptonReducer::~CraigBamptonReducer() = default;
+CraigBamptonReducer::CraigBamptonReducer(CraigBamptonReducer&&) noexcept = default;
+CraigBamptonReducer& CraigBamptonReducer::operator=(CraigBamptonReducer&&) noexcept = default;
+
+const std::vector<DofIndex>& CraigBamptonReducer::masters() const {
+  return state_->masters;
+}
+
+DofIndex CraigBamptonReducer::slaveCount() const {
+  return static_cast<DofIndex>(state_->slaves.size());
+}
+
+CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& options) const {
+  const State& st = *state_;
+  const Inputs& in = st.in;
+  const DofIndex n = in.k.rows();
+  const auto m = static_cast<DofIndex>(st.masters.size());
+  checkOptions(n, m, options);
+  const auto start = Clock::now();
+  CraigBamptonResult result;
+  result.seconds = st.seconds;
+
+  auto stage = Clock::now();
+  const fem::ModalBasis phi_s = fixedInterfaceModes(st.k_ss, st.m_ss, options);
+  result.fixed_interface_eigenvalues = phi_s.eigenvalues;
+  result.fixed_interface_frequencies_hz = phi_s.frequencies_hz;
+  result.seconds.fixed_interface_modes = since(stage);
+  const DofIndex r = phi_s.count();
+
+  // Eq. 9 by blocks (class comment): the master blocks from the reducer, the blocks of the
+  // fixed-interface modes here. K_R = diag(K_Guyan, Omega^2): the mass-normalised modes (eq. 6)
+  // give Phi_S^T K_ss Phi_S = diag(omega_i^2), and the coupling vanishes by eq. 4; exact zeros
+  // that a projection only reproduces to rounding.
+  stage = Clock::now();
+  const DofIndex k = m + r;
+  result.mass = Matrix::Zero(k, k);
+  result.mass.topLeftCorner(m, m) = st.mass_mm;
+  result.stiffness = Matrix::Zero(k, k);
+  result.stiffness.topLeftCorner(m, m) = st.stiffness_mm;
+  Matrix c_discrete = Matrix::Zero(k, k);
+  if (st.damping_mm.size())
+    c_discrete.topLeftCorner(m, m) = st.damping_mm;
+  const DofIndex inputs = in.ku ? in.ku->cols() : 0;
+  result.input_stiffness = Matrix::Zero(k, inputs);
+  result.input_stiffness.topRows(m) = st.input_stiffness_m;
+  result.input_damping = Matrix::Zero(k, inputs);
+  result.input_damping.topRows(m) = st.input_damping_m;
+  result.gravity_load = Vector::Zero(k);
+  result.gravity_load.head(m) = st.gravity_m;
+  result.travel_load = Vector::Zero(k);
+  result.travel_load.head(m) = st.travel_m;
+  if (r > 0) {
+    Matrix coupling, modal;
+    projectModes(in.m, st.m_ss, st.p_s, st.t_m, phi_s.shapes, &coupling, &modal);
+    result.mass.topRightCorner(m, r) = coupling;
+    result.mass.bottomLeftCorner(r, m) = coupling.transpose();
+    result.mass.bottomRightCorner(r, r) = modal;
+    result.stiffness.bottomRightCorner(r, r).diagonal() = phi_s.eigenvalues;
+    if (st.damping_mm.size()) {
+      projectModes(in.c, st.c_ss, st.p_s, st.t_m, phi_s.shapes, &coupling, &modal);
+      c_discrete.topRightCorner(m, r) = coupling;
+      c_discrete.bottomLeftCorner(r, m) = coupling.transpose();
+      c_discrete.bottomRightCorner(r, r) = modal;
+    }
+    if (in.ku)
+      result.input_stiffness.bottomRows(r) = slaveRowsProduct(phi_s.shapes, st.p_s, *in.ku);
+    if (in.cu)
+      result.input_damping.bottomRows(r) = slaveRowsProduct(phi_s.shapes, st.p_s, *in.cu);
+    const SparseMatrix p_s_t = st.p_s.transpose();
+    if (in.gravity)
+      result.gravity_load.tail(r) = phi_s.shapes.transpose() * (p_s_t * *in.gravity);
+    if (in.travel)
+      result.travel_load.tail(r) = phi_s.shapes.transpose() * (p_s_t * *in.travel);
+  }
+  result.damping = reducedDamping(result.mass, result.stiffness, c_discrete, options.damping);
+  result.masters = st.masters;
+
+  // Rows of T_CMS (eq. 8): [T_m row | Phi_S row of a slave, 0 for a master].
+  std::vector<DofIndex> slave_index;
+  if (r > 0 && (!options.recovery_dofs.empty() || options.keep_transformation)) {
+    slave_index.assign(static_cast<std::size_t>(n), -1);
+    for (std::size_t j = 0; j < st.slaves.size(); ++j)
+      slave_index[static_cast<std::size_t>(st.slaves[j])] = static_cast<DofIndex>(j);
+  }
+  auto transformationRow = [&](DofIndex dof, auto row) {  // row: a block view, written through
+    row.head(m) = st.t_m.row(dof);
+    if (r == 0)
+      return;
+    const DofIndex j = slave_index[static_cast<std::size_t>(dof)];
+    if (j >= 0)
+      row.tail(r) = phi_s.shapes.row(j);
+    else
+      row.tail(r).setZero();
+  };
+  result.recovery.resize(static_cast<DofIndex>(options.recovery_dofs.size()), k);
+  for (std::size_t i = 0; i < options.recovery_dofs.size(); ++i)
+    transformationRow(options.recovery_dofs[i], result.recovery.row(static_cast<DofIndex>(i)));
+  if (options.keep_transformation) {
+    result.transformation.resize(n, k);
+    for (DofIndex i = 0; i < n; ++i)
+      transformationRow(i, result.transformation.row(i));
+  }
+  result.seconds.projection = st.seconds.projection + since(stage);
+  result.seconds.total = st.seconds.total + since(start);
+  return result;
+}
+
+CraigBamptonResult craigBampton(const fem::System& system, const std::vector<DofIndex>& masters,
+                                const CraigBamptonOptions& options) {
+  // The options are checked before the factorisation, as reduce() would after it.
+  checkOptions(system.size(), static_cast<DofIndex>(masters.size()), options);
+  return CraigBamptonReducer(system, masters).reduce(options);
 }
 
 CraigBamptonResult craigBampton(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                 const SparseMatrix& damping, const std::vector<DofIndex>& masters,
                                 const CraigBamptonOptions& options) {
-  return reduce(Inputs{stiffness, mass, damping}, masters, options);
+  checkOptions(stiffness.rows(), static_cast<DofIndex>(masters.size()), options);
+  return CraigBamptonReducer(stiffness, mass, damping, masters).reduce(options);
 }
 
 }  // namespace reduction

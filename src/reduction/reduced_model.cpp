@@ -4,6 +4,8 @@
 #include <ctime>
 #include <map>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -91,6 +93,15 @@ void inputPositions(const fem::System& system, const Vector& road_stations, Vect
 }
 
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request) {
+  return buildReducedModel(system, request, CraigBamptonReducer(system, request.masters));
+}
+
+ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
+                               const CraigBamptonReducer& reducer) {
+  if (reducer.masters() != request.masters)
+    throw std::logic_error("buildReducedModel: the reducer was built on other masters (" +
+                           std::to_string(reducer.masters().size()) + ") than the request's (" +
+                           std::to_string(request.masters.size()) + ")");
   const fem::DofMap& dofs = system.dofs;
   const auto terms = outputTerms(dofs, request.outputs);
   const std::vector<std::string> output_names = outputNames(request.outputs);
@@ -103,7 +114,7 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
     for (const auto& [active, coefficient] : output)
       if (recovery_row.emplace(active, static_cast<DofIndex>(options.recovery_dofs.size())).second)
         options.recovery_dofs.push_back(active);
-  const CraigBamptonResult cb = craigBampton(system, request.masters, options);
+  const CraigBamptonResult cb = reducer.reduce(options);
 
   ReducedModel model;
   dynamics::SecondOrderSystem& s = model.system;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
 #include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -238,6 +239,50 @@ TEST(CraigBampton, BareMatricesGiveTheSameReducedSystem) {
   EXPECT_EQ(b.input_stiffness.cols(), 0);
   EXPECT_EQ(b.gravity_load, Vector::Zero(b.size()));
   EXPECT_EQ(b.travel_load, Vector::Zero(b.size()));
+}
+
+// The reducer does the partition, constraint modes and master blocks once (vehicle_reduction.cpp
+// raises the fixed-interface count on it): each count it gives is eq. 9's full projection
+// T^T (.) T, and does not depend on the counts asked for before.
+TEST(CraigBampton, OneReducerGivesEveryModeCountAsTheFullProjection) {
+  const fem::System system = cantilever(12, true);
+  const std::vector<DofIndex> m = masters(system, 12);
+  const CraigBamptonReducer reducer(system, m);
+  EXPECT_EQ(reducer.masters(), m);
+  EXPECT_EQ(reducer.slaveCount(), system.size() - 4);
+  for (const int r : {6, 2, 0, 6}) {
+    SCOPED_TRACE("r = " + std::to_string(r));
+    CraigBamptonOptions options;
+    options.fixed_interface.count = r;
+    options.keep_transformation = true;
+    options.recovery_dofs = {system.dofs.requireActive(5, 2), m[0]};
+    const CraigBamptonResult cb = reducer.reduce(options);
+    ASSERT_EQ(cb.size(), 4 + r);
+    const Matrix& t = cb.transformation;
+    EXPECT_EQ(t(m, Eigen::all), Matrix::Identity(4, 4 + r));
+    EXPECT_LT(relativeError(cb.mass, t.transpose() * Matrix(system.mass) * t), kExactTolerance);
+    EXPECT_LT(relativeError(cb.stiffness, t.transpose() * Matrix(system.stiffness) * t),
+              kExactTolerance);
+    EXPECT_LT(relativeError(cb.damping, t.transpose() * Matrix(system.damping) * t),
+              kExactTolerance);
+    EXPECT_EQ(cb.mass, cb.mass.transpose());
+    EXPECT_EQ(cb.damping, cb.damping.transpose());
+    EXPECT_LT(relativeError(cb.input_stiffness, t.transpose() * Matrix(system.input_stiffness)),
+              kExactTolerance);
+    EXPECT_LT(relativeError(cb.gravity_load, t.transpose() * system.gravity_load), kExactTolerance);
+    EXPECT_EQ(cb.recovery.row(0), t.row(options.recovery_dofs[0]));
+    EXPECT_EQ(cb.recovery.row(1), t.row(m[0]));
+    // The same numbers as a reduction from scratch with that count.
+    const CraigBamptonResult fresh = craigBampton(system, m, options);
+    EXPECT_EQ(cb.mass, fresh.mass);
+    EXPECT_EQ(cb.stiffness, fresh.stiffness);
+    EXPECT_EQ(cb.damping, fresh.damping);
+    EXPECT_EQ(cb.input_damping, fresh.input_damping);
+    EXPECT_EQ(cb.transformation, fresh.transformation);
+  }
+  CraigBamptonOptions too_many;
+  too_many.fixed_interface.count = static_cast<int>(system.size()) - 3;
+  EXPECT_THROW(reducer.reduce(too_many), InputError);
 }
 
 TEST(CraigBampton, FrequencyLimitedFixedInterfaceModes) {

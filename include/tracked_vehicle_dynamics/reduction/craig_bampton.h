@@ -19,6 +19,7 @@
 // with all s fixed-interface modes T is square and the reduced eigenvalues are the full ones.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -42,7 +43,9 @@ struct CraigBamptonOptions {
   std::vector<DofIndex> recovery_dofs;
 };
 
-/// Wall time of each stage [s].
+/// Wall time of each stage [s]. A result of CraigBamptonReducer::reduce() counts the stages the
+/// reducer did once (partition, factorisation, constraint modes and its share of the projection)
+/// in each result, so `total` is the time the result would take from scratch.
 struct CraigBamptonTimings {
   double partition = 0.0;              ///< K_ss, K_sm, M_ss extraction
   double factorisation = 0.0;          ///< sparse Cholesky of K_ss
@@ -70,6 +73,41 @@ struct CraigBamptonResult {
   DofIndex size() const { return stiffness.rows(); }
   DofIndex masterCount() const { return static_cast<DofIndex>(masters.size()); }
   DofIndex modeCount() const { return fixed_interface_eigenvalues.size(); }
+};
+
+/// The stages of a reduction on one master set that do not depend on the fixed-interface modes:
+/// the partition (eq. 3), the constraint modes Phi_C with one factorisation of K_ss (eq. 4),
+/// T_m = [I; Phi_C] and the master blocks of eq. 9 (T_m^T M T_m, the Guyan K, T_m^T C T_m,
+/// T_m^T K_u, T_m^T C_u, T_m^T f_g, T_m^T f_a). reduce() adds r fixed-interface modes: their
+/// eigen-solve, and for the blocks they bring, with T_r = [0; Phi_S],
+///   T_m^T M T_r = T_m^T (M T_r),  T_r^T M T_r = Phi_S^T M_ss Phi_S (= I, computed),
+/// and the same for C, and Phi_S^T on the slave rows of K_u, C_u, f_g, f_a: products with r
+/// columns, against the n m^2 of the master block. A caller that raises r until a check passes
+/// (vehicle_reduction.cpp) pays for the shared stages once. Keeps references to the matrices it
+/// was built from, which must outlive it; reduce() is const and may run from several threads.
+class CraigBamptonReducer {
+ public:
+  /// Throws InputError for a repeated or out-of-range master or inconsistent matrix sizes, and
+  /// SolverError when K_ss is not positive definite (see craigBampton()).
+  CraigBamptonReducer(const fem::System& system, std::vector<DofIndex> masters);
+  /// Bare matrices [n x n]; `damping` may be empty (0 x 0). No input columns, zero loads.
+  CraigBamptonReducer(const SparseMatrix& stiffness, const SparseMatrix& mass,
+                      const SparseMatrix& damping, std::vector<DofIndex> masters);
+  ~CraigBamptonReducer();
+  CraigBamptonReducer(CraigBamptonReducer&&) noexcept;
+  CraigBamptonReducer& operator=(CraigBamptonReducer&&) noexcept;
+
+  /// The reduction with options.fixed_interface modes. Throws InputError for more fixed-interface
+  /// modes than slave DOFs, an out-of-range recovery DOF or an empty basis, SolverError when the
+  /// fixed-interface eigen-solve fails.
+  CraigBamptonResult reduce(const CraigBamptonOptions& options = {}) const;
+
+  const std::vector<DofIndex>& masters() const;
+  DofIndex slaveCount() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 /// Reduces an assembled system (M, K, C, K_u, C_u, gravity and travel inertia loads) on the given master DOFs

@@ -104,5 +104,11 @@ void inputPositions(const fem::System& system, const Vector& road_stations, Vect
 /// an unknown node or bad direction, repeated output names, and whatever craigBampton() throws.
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request);
 
+/// The same from a reducer built on `system` and request.masters (craig_bampton.h), which it
+/// reuses: a caller that tries several fixed-interface counts on one master set factorises
+/// once. Throws std::logic_error when the reducer's masters are not request.masters.
+ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
+                               const CraigBamptonReducer& reducer);
+
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics
