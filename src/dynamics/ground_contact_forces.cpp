@@ -49,6 +49,18 @@ SimulatorOptions coordinateOptions(SimulatorOptions options, bool damped) {
   return options;
 }
 
+// The contacts' Simulator: on the run's modes when they are given (H Phi with H = the contacts'
+// coordinates), else from its own decomposition.
+Simulator coordinateSimulator(const SecondOrderSystem& system,
+                              const std::vector<GroundContact>& contacts, SimulatorOptions options,
+                              const ModalSystem* modal) {
+  const SecondOrderSystem s = coordinateSystem(system, contacts);
+  const SimulatorOptions o = coordinateOptions(std::move(options), anyDamped(contacts));
+  if (!modal)
+    return Simulator(s, o);
+  return Simulator(s, modal->withOutput(s.output, s.output_names), o);
+}
+
 // out[k] = w_k(column) for k = 0 .. samples-1 from the held series (its channel's events).
 void heldColumn(const HeldInputSeries& series, const std::vector<DofIndex>& channel_of,
                 DofIndex column, double* out) {
@@ -125,10 +137,9 @@ void forEachChunk(long samples, long chunk, Run&& run) {
 
 GroundContactForces::GroundContactForces(const SecondOrderSystem& system,
                                          std::vector<GroundContact> contacts,
-                                         SimulatorOptions options)
+                                         SimulatorOptions options, const ModalSystem* modal)
     : contacts_(std::move(contacts)),
-      sim_(coordinateSystem(system, contacts_),
-           coordinateOptions(std::move(options), anyDamped(contacts_))),
+      sim_(coordinateSimulator(system, contacts_, std::move(options), modal)),
       n_u_(system.inputCount()),
       damped_(anyDamped(contacts_)) {}
 

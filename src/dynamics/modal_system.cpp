@@ -100,6 +100,23 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
   input_stations_ = system.input_stations;
 }
 
+ModalSystem ModalSystem::withOutput(const Matrix& output, std::vector<std::string> names) const {
+  if (output.cols() != modeCount())
+    throw InputError("ModalSystem::withOutput: H is " +
+                     detail::sizeText(output.rows(), output.cols()) + ", expected " +
+                     std::to_string(modeCount()) + " columns");
+  if (!names.empty() && static_cast<DofIndex>(names.size()) != output.rows())
+    throw InputError("ModalSystem::withOutput: " + std::to_string(names.size()) + " names for " +
+                     std::to_string(output.rows()) + " outputs");
+  ModalSystem out = *this;
+  out.modal_output_ = output * shapes_;
+  out.output_names_ = std::move(names);
+  if (out.output_names_.empty())
+    for (DofIndex i = 0; i < output.rows(); ++i)
+      out.output_names_.push_back("output " + std::to_string(i));
+  return out;
+}
+
 Vector ModalSystem::dampingRatios() const {
   Vector zeta = Vector::Zero(modeCount());
   for (DofIndex r = 0; r < modeCount(); ++r)

@@ -152,10 +152,15 @@ class DenseEngine : public SimulatorEngine {
 // inputs per sample) take a matrix-matrix product, the others column increments.
 class ModalEngine : public SimulatorEngine {
  public:
-  ModalEngine(const SecondOrderSystem& system, const SimulatorOptions& options) {
+  ModalEngine(const SecondOrderSystem& system, const SimulatorOptions& options)
+      : ModalEngine(system, ModalSystem(system, options.modal_damping_ratios), options) {}
+
+  // `modal` is system's decomposition (its outputs may be other rows than system.output's).
+  ModalEngine(const SecondOrderSystem& system, const ModalSystem& modal,
+              const SimulatorOptions& options) {
     if (!(options.max_mode_frequency_hz >= 0) || !std::isfinite(options.max_mode_frequency_hz))
-      throw InputError("Simulator: max_mode_frequency_hz must be finite and >= 0 (0 keeps every mode)");
-    const ModalSystem modal(system, options.modal_damping_ratios);
+      throw InputError(
+          "Simulator: max_mode_frequency_hz must be finite and >= 0 (0 keeps every mode)");
     const DofIndex n_all = modal.modeCount();
     const DofIndex n_u = system.inputCount();
     // Modes are in ascending frequency: the first n are dynamic, the rest quasi-static.
@@ -652,13 +657,17 @@ class ModalEngine : public SimulatorEngine {
   Vector residual_force_, truncated_gravity_;
 };
 
-std::unique_ptr<SimulatorEngine> makeEngine(const SecondOrderSystem& system,
-                                            const SimulatorOptions& options) {
+void checkOptions(const SecondOrderSystem& system, const SimulatorOptions& options) {
   validateSystem(system);
   detail::requireTimeStep("Simulator", options.time_step);
   if (options.generalized_force.size() != 0)
     detail::requireLength("Simulator", "generalized force f_g", options.generalized_force,
                           system.size());
+}
+
+std::unique_ptr<SimulatorEngine> makeEngine(const SecondOrderSystem& system,
+                                            const SimulatorOptions& options) {
+  checkOptions(system, options);
   if (options.method == DiscretizationMethod::ModalDecoupled)
     return std::make_unique<ModalEngine>(system, options);
   if (options.modal_damping_ratios.size() != 0)
@@ -685,6 +694,27 @@ Simulator::Simulator(const StateSpace& discrete) {
 
 Simulator::Simulator(const SecondOrderSystem& system, const SimulatorOptions& options)
     : engine_(makeEngine(system, options)) {}
+
+Simulator::Simulator(const SecondOrderSystem& system, const ModalSystem& modal,
+                     const SimulatorOptions& options) {
+  checkOptions(system, options);
+  if (options.method != DiscretizationMethod::ModalDecoupled)
+    throw InputError(
+        "Simulator: a ModalSystem is stepped by DiscretizationMethod::ModalDecoupled only");
+  if (options.modal_damping_ratios.size() != 0)
+    throw InputError(
+        "Simulator: with a ModalSystem the damping ratios are its own; "
+        "modal_damping_ratios must be empty");
+  if (modal.modeCount() != system.size() || modal.inputCount() != system.inputCount() ||
+      modal.outputCount() != system.outputCount())
+    throw InputError("Simulator: the ModalSystem (" + std::to_string(modal.modeCount()) +
+                     " modes, " + std::to_string(modal.inputCount()) + " inputs, " +
+                     std::to_string(modal.outputCount()) + " outputs) is not of the system (" +
+                     std::to_string(system.size()) + " DOFs, " +
+                     std::to_string(system.inputCount()) + " inputs, " +
+                     std::to_string(system.outputCount()) + " outputs)");
+  engine_ = std::make_unique<ModalEngine>(system, modal, options);
+}
 
 Simulator::~Simulator() = default;
 Simulator::Simulator(Simulator&&) noexcept = default;

@@ -241,7 +241,12 @@ void run(const SimulateOptions& opt) {
   if (sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled && !full)
     sim_options.max_mode_frequency_hz = opt.max_mode_hz < 0 ? 0.5 / opt.dt : opt.max_mode_hz;
   const auto setup_start = Clock::now();
-  dynamics::Simulator sim(sys, sim_options);
+  // One modal decomposition for the run and, below, its ground contact forces.
+  std::optional<dynamics::ModalSystem> modal;
+  if (!full && sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled)
+    modal.emplace(sys);
+  dynamics::Simulator sim =
+      modal ? dynamics::Simulator(sys, *modal, sim_options) : dynamics::Simulator(sys, sim_options);
   const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
   // Ground contact (ground_contact.h): the force of every road input's spring, checked for
   // tension, the limit of the bonded linear model. Reduced model only: the full model's modal
@@ -256,7 +261,8 @@ void run(const SimulateOptions& opt) {
     const auto contact_start = Clock::now();
     contacts = dynamics::groundContacts(model_sys);  // the road inputs (not the travel input)
     groupByPad(description, variant, reduced->model, &contacts);
-    contact_forces = std::make_unique<dynamics::GroundContactForces>(sys, contacts, sim_options);
+    contact_forces = std::make_unique<dynamics::GroundContactForces>(sys, contacts, sim_options,
+                                                                     modal ? &*modal : nullptr);
     contact_monitor = std::make_unique<dynamics::GroundContactMonitor>(contacts);
     contact_setup_seconds = std::chrono::duration<double>(Clock::now() - contact_start).count();
   }

@@ -13,6 +13,7 @@
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_monitor.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
+#include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
@@ -224,6 +225,59 @@ TEST(GroundContact, HeldSeriesGivesTheDenseSeriesForces) {
   const Matrix a = dense.simulate(w);
   const Matrix b = sparse.simulate(held(w));
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * a.cwiseAbs().maxCoeff());
+}
+
+// tvd simulate hands the run's ModalSystem to its contact forces: the same forces as from their
+// own decomposition, to the bit (the same eigen-solve, H Phi with the contacts' rows), truncated
+// modes included; and a Simulator on a ModalSystem is the one built from the system.
+TEST(GroundContact, TheRunsModalDecompositionGivesTheSameForces) {
+  const SecondOrderSystem s = dynamics::test::randomVehicle(24, 5, 4, 11);
+  SimulatorOptions options;
+  options.time_step = 1e-3;
+  options.hold = dynamics::InputHold::FirstOrder;
+  options.method = dynamics::DiscretizationMethod::ModalDecoupled;
+  options.max_mode_frequency_hz = 150.0;  // the tyre modes (k_t = 2e10) are quasi-static
+  options.generalized_force = Vector::LinSpaced(24, -900.0, 300.0);
+  const dynamics::ModalSystem modal(s);
+  const std::vector<GroundContact> contacts = dynamics::groundContacts(s);
+  GroundContactForces own(s, contacts, options);
+  GroundContactForces shared(s, contacts, options, &modal);
+  // Bumps under each input in turn (u, u').
+  const double pi = std::acos(-1.0);
+  Matrix w = Matrix::Zero(400, 10);
+  for (long k = 0; k < w.rows(); ++k)
+    for (int q = 0; q < 5; ++q) {
+      const double t = 1e-3 * static_cast<double>(k) - 0.05 * q;
+      if (t > 0.0 && t < 0.1) {
+        w(k, q) = 0.02 * (1.0 - std::cos(20.0 * pi * t));
+        w(k, 5 + q) = 0.4 * pi * std::sin(20.0 * pi * t);
+      }
+    }
+  own.reset(Vector::Zero(48), w.row(0).transpose());
+  shared.reset(Vector::Zero(48), w.row(0).transpose());
+  const Matrix a = own.simulate(w);
+  const Matrix b = shared.simulate(w);
+  ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(a, b);
+
+  dynamics::Simulator from_system(s, options);
+  dynamics::Simulator from_modes(s, modal, options);
+  EXPECT_EQ(from_modes.quasiStaticModeCount(), from_system.quasiStaticModeCount());
+  EXPECT_GT(from_modes.quasiStaticModeCount(), 0);
+  EXPECT_EQ(from_modes.outputNames(), from_system.outputNames());
+  EXPECT_EQ(from_modes.simulate(w), from_system.simulate(w));
+
+  // Refused: another method, ratios beside the ModalSystem's, a decomposition of another size.
+  SimulatorOptions exact = options;
+  exact.method = dynamics::DiscretizationMethod::AugmentedExponential;
+  exact.max_mode_frequency_hz = 0.0;
+  expectInputError([&] { dynamics::Simulator(s, modal, exact); }, "ModalDecoupled");
+  SimulatorOptions ratios = options;
+  ratios.modal_damping_ratios = Vector::Constant(24, 0.05);
+  expectInputError([&] { dynamics::Simulator(s, modal, ratios); }, "modal_damping_ratios");
+  const dynamics::ModalSystem other(dynamics::test::randomVehicle(20, 5, 4, 11));
+  expectInputError([&] { dynamics::Simulator(s, other, options); }, "20 modes");
+  expectInputError([&] { modal.withOutput(Matrix::Zero(2, 23), {}); }, "24 columns");
 }
 
 TEST(GroundContactMonitor, TensionAtRestIsCountedApart) {

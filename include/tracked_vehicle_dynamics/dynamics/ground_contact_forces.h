@@ -11,7 +11,8 @@
 // coordinates (displacements, and velocities where some c_i != 0), gives q_m exactly as the run
 // computes them (the same modes, the same quasi-static treatment of truncated ones; with
 // truncation, q' of the quasi-static part lacks the C_u u'' term, as the run's velocities do),
-// at the cost of one more modal recursion and its own input terms.
+// at the cost of one more modal recursion and its own input terms (and, unless it is handed the
+// run's ModalSystem, one more eigen-solve).
 #pragma once
 
 #include <functional>
@@ -36,8 +37,11 @@ class GroundContactForces {
   /// `contacts` from groundContacts() (inputs and coordinates within `system`); `options` the
   /// run's Simulator options (its output quantities are replaced). Throws InputError for an
   /// empty contact list or a contact outside the system, and whatever Simulator throws.
+  /// `modal`, when given, is the run's decomposition (ModalSystem(system), options.method
+  /// ModalDecoupled): the forces' Simulator then steps the same modes without decomposing the
+  /// system again (the tracked vehicle: 431 DOFs, about a third of `tvd simulate`'s set-up).
   GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
-                      SimulatorOptions options);
+                      SimulatorOptions options, const ModalSystem* modal = nullptr);
 
   /// As Simulator::reset(state, input): z0 [2n], w0 [2 n_inputs].
   void reset(const Vector& state, const Vector& input);

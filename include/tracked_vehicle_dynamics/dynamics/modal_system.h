@@ -28,6 +28,12 @@ class ModalSystem {
   /// eigenvalue, or the eigensolver fails.
   explicit ModalSystem(const SecondOrderSystem& system, const Vector& damping_ratios = Vector());
 
+  /// The same decomposition with other outputs y = H q: H [n_outputs x n], one name per row
+  /// (empty: "output i"). What it costs is H Phi, not the eigen-solve: a second stepper on the
+  /// same system with other outputs (ground_contact_forces.h) reuses the first one's modes.
+  /// Throws InputError when H has not n columns or the names do not match its rows.
+  ModalSystem withOutput(const Matrix& output, std::vector<std::string> names) const;
+
   DofIndex modeCount() const { return frequencies_.size(); }
   DofIndex inputCount() const { return modal_input_stiffness_.cols(); }
   DofIndex outputCount() const { return modal_output_.rows(); }

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/dynamics/held_input_series.h"
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/second_order_system.h"
 #include "tracked_vehicle_dynamics/dynamics/state_space.h"
@@ -75,6 +76,13 @@ class Simulator {
   /// Discretises `system` as the options say. Throws InputError for inconsistent sizes or
   /// options, SolverError when M is not positive definite (or K indefinite, modal method).
   Simulator(const SecondOrderSystem& system, const SimulatorOptions& options);
+  /// The modal engine on a decomposition already made, ModalSystem(system) or its withOutput():
+  /// the same stepper as Simulator(system, options) without a second eigen-solve (e.g. the
+  /// ground contact forces beside a run, on the same modes). The outputs are the ModalSystem's.
+  /// Throws InputError unless options.method is ModalDecoupled and modal_damping_ratios empty
+  /// (the ModalSystem's ratios apply), or when the sizes differ from the system's.
+  Simulator(const SecondOrderSystem& system, const ModalSystem& modal,
+            const SimulatorOptions& options);
   ~Simulator();
   Simulator(Simulator&&) noexcept;
   Simulator& operator=(Simulator&&) noexcept;
