@@ -147,6 +147,12 @@ constexpr int kMinAutoStep = 4;
 // mode r and the error (f_red - f_full) / f_full. Modes at or below kNearRigidHz are left out as
 // in the report (a relative error of a near-zero frequency says nothing about the model).
 constexpr double kNearRigidHz = 0.1;
+
+// The CMS error of a pair, (f_red - f_full) / f_full.
+double relativeFrequencyError(double full_hz, double reduced_hz) {
+  return (reduced_hz - full_hz) / full_hz;
+}
+
 struct BandCheck {
   double worst = 0.0;
   int mode = 0;  // 0-based
@@ -161,7 +167,7 @@ BandCheck checkBand(const std::vector<double>& full_hz, const Vector& reduced_hz
     const double f = full_hz[static_cast<std::size_t>(r)];
     if (f <= kNearRigidHz)
       continue;
-    const double e = std::abs(reduced_hz(r) - f) / f;
+    const double e = std::abs(relativeFrequencyError(f, reduced_hz(r)));
     if (e > c.worst)
       c = {e, static_cast<int>(r), f, reduced_hz(r)};
   }
@@ -423,6 +429,10 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
       reduced_modes.frequencies_hz.data() +
           std::min<Eigen::Index>(static_cast<Eigen::Index>(rep.full_frequencies_hz.size()),
                                  reduced_modes.frequencies_hz.size()));
+  rep.relative_frequency_errors.clear();
+  for (std::size_t r = 0; r < rep.reduced_frequencies_hz.size(); ++r)
+    rep.relative_frequency_errors.push_back(
+        relativeFrequencyError(rep.full_frequencies_hz[r], rep.reduced_frequencies_hz[r]));
   rep.total_seconds = secondsSince(start);
   return reduced;
 }

@@ -40,13 +40,10 @@ void run(const ReduceOptions& opt) {
     std::cerr << "tvd: warning: " << w << "\n";
 
   // CMS error of each full-model mode in the band, pairing the i-th modes (the reduced model is a
-  // Rayleigh-Ritz approximation: its i-th frequency approaches the full one from above); the
-  // worst is the reduction's own (above 0.1 Hz), the one its band check uses.
-  const std::size_t pairs = std::min(report.full_frequencies_hz.size(), report.reduced_frequencies_hz.size());
-  std::vector<double> errors;
-  for (std::size_t i = 0; i < pairs; ++i)
-    errors.push_back((report.reduced_frequencies_hz[i] - report.full_frequencies_hz[i]) /
-                     report.full_frequencies_hz[i]);
+  // Rayleigh-Ritz approximation: its i-th frequency approaches the full one from above), and the
+  // worst (above 0.1 Hz): the reduction's own, those its band check judged.
+  const std::vector<double>& errors = report.relative_frequency_errors;
+  const std::size_t pairs = errors.size();
   const double worst = report.max_relative_frequency_error;
 
   // The MoGeSeC picks (paper Fig. 12): the masters after the imposed ones, in pick order.

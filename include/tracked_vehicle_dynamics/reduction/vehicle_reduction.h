@@ -102,6 +102,9 @@ struct VehicleReductionReport {
   /// The reduced model's lowest modes, as many as full_frequencies_hz (paired r-th with r-th;
   /// a pair's reduced frequency may lie above the band).
   std::vector<double> reduced_frequencies_hz;
+  /// (f_red,r - f_full,r) / f_full,r of each pair, signed (>= 0 by Rayleigh-Ritz, to rounding):
+  /// what the band check and max_relative_frequency_error judge (the latter above 0.1 Hz only).
+  std::vector<double> relative_frequency_errors;
   double build_seconds = 0.0, modes_seconds = 0.0, selection_seconds = 0.0,
          reduce_seconds = 0.0, total_seconds = 0.0;
   bool from_cache = false;
