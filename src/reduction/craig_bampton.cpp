@@ -169,6 +169,7 @@ struct CraigBamptonReducer::State {
   SparseMatrix p_s;  // n x s selection of the slave DOFs
   SparseMatrix k_ss;
   SparseMatrix m_ss;
+  bool has_dampers = false;     // C given (not 0 x 0): its blocks are projected, m = 0 included
   SparseMatrix c_ss;            // empty without dampers
   Matrix t_m;                   // T_m = [I; Phi_C] in the original DOF order [n x m]
   Matrix mass_mm;               // T_m^T M T_m
@@ -246,7 +247,8 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
     t_m.row(slaves[static_cast<std::size_t>(j)]) = phi_c.row(j);
   phi_c.resize(0, 0);  // its rows are in t_m
   mass_mm = project(in.m, t_m);
-  if (in.c.size()) {
+  has_dampers = in.c.size() != 0;
+  if (has_dampers) {
     damping_mm = project(in.c, t_m);
     c_ss = p_s.transpose() * in.c * p_s;
   }
@@ -289,7 +291,10 @@ void projectModes(const SparseMatrix& a, const SparseMatrix& a_ss, const SparseM
 
 }  // namespace
 
-CraigBamptonReducer::CraigBamptonReducer(const fem::System& system, std::vector<DofIndex> masters) {
+namespace {
+
+// The system's matrices after checking the sizes of its input columns and loads.
+Inputs systemInputs(const fem::System& system) {
   const DofIndex n = system.size();
   const SparseMatrix& ku = system.input_stiffness;
   const SparseMatrix& cu = system.input_damping;
@@ -304,10 +309,14 @@ CraigBamptonReducer::CraigBamptonReducer(const fem::System& system, std::vector<
     throw InputError("craigBampton: travel inertia load has " +
                      std::to_string(system.travel_load.size()) + " entries, expected " +
                      std::to_string(n));
-  state_ = std::make_unique<State>(Inputs{system.stiffness, system.mass, system.damping, &ku, &cu,
-                                          &system.gravity_load, &system.travel_load},
-                                   std::move(masters));
+  return Inputs{system.stiffness,     system.mass,        system.damping, &ku, &cu,
+                &system.gravity_load, &system.travel_load};
 }
+
+}  // namespace
+
+CraigBamptonReducer::CraigBamptonReducer(const fem::System& system, std::vector<DofIndex> masters)
+    : state_(std::make_unique<State>(systemInputs(system), std::move(masters))) {}
 
 CraigBamptonReducer::CraigBamptonReducer(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                          const SparseMatrix& damping,
@@ -318,6 +327,11 @@ CraigBamptonReducer::CraigBamptonReducer(const SparseMatrix& stiffness, const Sp
 CraigBamptonReducer::~CraigBamptonReducer() = default;
 CraigBamptonReducer::CraigBamptonReducer(CraigBamptonReducer&&) noexcept = default;
 CraigBamptonReducer& CraigBamptonReducer::operator=(CraigBamptonReducer&&) noexcept = default;
+
+bool CraigBamptonReducer::builtOn(const fem::System& system) const {
+  return &state_->in.k == &system.stiffness && &state_->in.m == &system.mass &&
+         &state_->in.c == &system.damping;
+}
 
 const std::vector<DofIndex>& CraigBamptonReducer::masters() const {
   return state_->masters;
@@ -355,7 +369,7 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
   result.stiffness = Matrix::Zero(k, k);
   result.stiffness.topLeftCorner(m, m) = st.stiffness_mm;
   Matrix c_discrete = Matrix::Zero(k, k);
-  if (st.damping_mm.size())
+  if (st.has_dampers)
     c_discrete.topLeftCorner(m, m) = st.damping_mm;
   const DofIndex inputs = in.ku ? in.ku->cols() : 0;
   result.input_stiffness = Matrix::Zero(k, inputs);
@@ -373,7 +387,7 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
     result.mass.bottomLeftCorner(r, m) = coupling.transpose();
     result.mass.bottomRightCorner(r, r) = modal;
     result.stiffness.bottomRightCorner(r, r).diagonal() = phi_s.eigenvalues;
-    if (st.damping_mm.size()) {
+    if (st.has_dampers) {
       projectModes(in.c, st.c_ss, st.p_s, st.t_m, phi_s.shapes, &coupling, &modal);
       c_discrete.topRightCorner(m, r) = coupling;
       c_discrete.bottomLeftCorner(r, m) = coupling.transpose();
@@ -422,9 +436,11 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
   return result;
 }
 
+// Every check before the factorisation: the matrices and masters, then the options (which
+// reduce() checks again after it).
 CraigBamptonResult craigBampton(const fem::System& system, const std::vector<DofIndex>& masters,
                                 const CraigBamptonOptions& options) {
-  // The options are checked before the factorisation, as reduce() would after it.
+  checkMatrices(systemInputs(system), masters);
   checkOptions(system.size(), static_cast<DofIndex>(masters.size()), options);
   return CraigBamptonReducer(system, masters).reduce(options);
 }
@@ -432,6 +448,7 @@ CraigBamptonResult craigBampton(const fem::System& system, const std::vector<Dof
 CraigBamptonResult craigBampton(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                 const SparseMatrix& damping, const std::vector<DofIndex>& masters,
                                 const CraigBamptonOptions& options) {
+  checkMatrices(Inputs{stiffness, mass, damping}, masters);
   checkOptions(stiffness.rows(), static_cast<DofIndex>(masters.size()), options);
   return CraigBamptonReducer(stiffness, mass, damping, masters).reduce(options);
 }

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <ctime>
+#include <functional>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -92,16 +93,14 @@ void inputPositions(const fem::System& system, const Vector& road_stations, Vect
   *lateral = y;
 }
 
-ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request) {
-  return buildReducedModel(system, request, CraigBamptonReducer(system, request.masters));
-}
+namespace {
 
-ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
-                               const CraigBamptonReducer& reducer) {
-  if (reducer.masters() != request.masters)
-    throw std::logic_error("buildReducedModel: the reducer was built on other masters (" +
-                           std::to_string(reducer.masters().size()) + ") than the request's (" +
-                           std::to_string(request.masters.size()) + ")");
+using Reduce = std::function<CraigBamptonResult(const CraigBamptonOptions&)>;
+
+// The outputs are checked before `reduce` runs, so a bad request is refused before the
+// factorisation.
+ReducedModel build(const fem::System& system, const ReductionRequest& request,
+                   const Reduce& reduce) {
   const fem::DofMap& dofs = system.dofs;
   const auto terms = outputTerms(dofs, request.outputs);
   const std::vector<std::string> output_names = outputNames(request.outputs);
@@ -114,7 +113,7 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
     for (const auto& [active, coefficient] : output)
       if (recovery_row.emplace(active, static_cast<DofIndex>(options.recovery_dofs.size())).second)
         options.recovery_dofs.push_back(active);
-  const CraigBamptonResult cb = reducer.reduce(options);
+  const CraigBamptonResult cb = reduce(options);
 
   ReducedModel model;
   dynamics::SecondOrderSystem& s = model.system;
@@ -164,6 +163,27 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
   model.creator = request.creator;
   model.full_dof_count = system.size();
   return model;
+}
+
+}  // namespace
+
+ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request) {
+  // craigBampton() checks the masters and options before it factorises.
+  return build(system, request, [&](const CraigBamptonOptions& options) {
+    return craigBampton(system, request.masters, options);
+  });
+}
+
+ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
+                               const CraigBamptonReducer& reducer) {
+  if (!reducer.builtOn(system) || reducer.masters() != request.masters)
+    throw std::logic_error(
+        "buildReducedModel: the reducer was built on another system or other "
+        "masters (" +
+        std::to_string(reducer.masters().size()) + ") than the request's (" +
+        std::to_string(request.masters.size()) + ")");
+  return build(system, request,
+               [&](const CraigBamptonOptions& options) { return reducer.reduce(options); });
 }
 
 }  // namespace reduction

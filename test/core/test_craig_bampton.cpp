@@ -243,46 +243,84 @@ TEST(CraigBampton, BareMatricesGiveTheSameReducedSystem) {
 
 // The reducer does the partition, constraint modes and master blocks once (vehicle_reduction.cpp
 // raises the fixed-interface count on it): each count it gives is eq. 9's full projection
-// T^T (.) T, and does not depend on the counts asked for before.
+// T^T (.) T, whatever the masters (the tip's damper and road input a master, a slave, or no
+// masters at all), on the Lanczos and the dense path, and does not depend on the counts asked
+// for before.
 TEST(CraigBampton, OneReducerGivesEveryModeCountAsTheFullProjection) {
   const fem::System system = cantilever(12, true);
-  const std::vector<DofIndex> m = masters(system, 12);
-  const CraigBamptonReducer reducer(system, m);
-  EXPECT_EQ(reducer.masters(), m);
-  EXPECT_EQ(reducer.slaveCount(), system.size() - 4);
-  for (const int r : {6, 2, 0, 6}) {
-    SCOPED_TRACE("r = " + std::to_string(r));
-    CraigBamptonOptions options;
-    options.fixed_interface.count = r;
-    options.keep_transformation = true;
-    options.recovery_dofs = {system.dofs.requireActive(5, 2), m[0]};
-    const CraigBamptonResult cb = reducer.reduce(options);
-    ASSERT_EQ(cb.size(), 4 + r);
-    const Matrix& t = cb.transformation;
-    EXPECT_EQ(t(m, Eigen::all), Matrix::Identity(4, 4 + r));
-    EXPECT_LT(relativeError(cb.mass, t.transpose() * Matrix(system.mass) * t), kExactTolerance);
-    EXPECT_LT(relativeError(cb.stiffness, t.transpose() * Matrix(system.stiffness) * t),
-              kExactTolerance);
-    EXPECT_LT(relativeError(cb.damping, t.transpose() * Matrix(system.damping) * t),
-              kExactTolerance);
-    EXPECT_EQ(cb.mass, cb.mass.transpose());
-    EXPECT_EQ(cb.damping, cb.damping.transpose());
-    EXPECT_LT(relativeError(cb.input_stiffness, t.transpose() * Matrix(system.input_stiffness)),
-              kExactTolerance);
-    EXPECT_LT(relativeError(cb.gravity_load, t.transpose() * system.gravity_load), kExactTolerance);
-    EXPECT_EQ(cb.recovery.row(0), t.row(options.recovery_dofs[0]));
-    EXPECT_EQ(cb.recovery.row(1), t.row(m[0]));
-    // The same numbers as a reduction from scratch with that count.
-    const CraigBamptonResult fresh = craigBampton(system, m, options);
-    EXPECT_EQ(cb.mass, fresh.mass);
-    EXPECT_EQ(cb.stiffness, fresh.stiffness);
-    EXPECT_EQ(cb.damping, fresh.damping);
-    EXPECT_EQ(cb.input_damping, fresh.input_damping);
-    EXPECT_EQ(cb.transformation, fresh.transformation);
+  const DofIndex n = system.size();
+  const fem::DofMap& d = system.dofs;
+  const std::vector<std::vector<DofIndex>> master_sets = {
+      masters(system, 12),  // the tip (damper, road input) among them
+      {d.requireActive(4, 2), d.requireActive(8, 2), d.requireActive(4, 1), d.requireActive(8, 1)},
+      {}};
+  for (const std::vector<DofIndex>& m : master_sets) {
+    const auto mc = static_cast<DofIndex>(m.size());
+    const CraigBamptonReducer reducer(system, m);
+    EXPECT_EQ(reducer.masters(), m);
+    EXPECT_EQ(reducer.slaveCount(), n - mc);
+    EXPECT_TRUE(reducer.builtOn(system));
+    const bool tip_is_slave = std::find(m.begin(), m.end(), d.requireActive(12, 2)) == m.end();
+    // 40 of the 68-72 slave DOFs take the dense solver (more than half).
+    for (const int r : {6, 2, 0, 40, 6}) {
+      SCOPED_TRACE("masters " + std::to_string(mc) + ", r = " + std::to_string(r));
+      CraigBamptonOptions options;
+      options.fixed_interface.count = r;
+      options.keep_transformation = true;
+      options.recovery_dofs = {d.requireActive(5, 2), d.requireActive(12, 2)};
+      if (mc == 0 && r == 0) {
+        EXPECT_THROW(reducer.reduce(options), InputError);  // empty basis
+        continue;
+      }
+      const CraigBamptonResult cb = reducer.reduce(options);
+      ASSERT_EQ(cb.size(), mc + r);
+      const Matrix& t = cb.transformation;
+      if (mc > 0)
+        EXPECT_EQ(t(m, Eigen::all), Matrix::Identity(mc, mc + r));
+      EXPECT_LT(relativeError(cb.mass, t.transpose() * Matrix(system.mass) * t), kExactTolerance);
+      EXPECT_LT(relativeError(cb.stiffness, t.transpose() * Matrix(system.stiffness) * t),
+                kExactTolerance);
+      EXPECT_LT(relativeError(cb.damping, t.transpose() * Matrix(system.damping) * t),
+                kExactTolerance);
+      EXPECT_EQ(cb.mass, cb.mass.transpose());
+      EXPECT_EQ(cb.damping, cb.damping.transpose());
+      EXPECT_LT(relativeError(cb.input_stiffness, t.transpose() * Matrix(system.input_stiffness)),
+                kExactTolerance);
+      EXPECT_LT(relativeError(cb.input_damping, t.transpose() * Matrix(system.input_damping)),
+                kExactTolerance);
+      EXPECT_LT(relativeError(cb.gravity_load, t.transpose() * system.gravity_load),
+                kExactTolerance);
+      EXPECT_LT(relativeError(cb.travel_load, t.transpose() * system.travel_load), kExactTolerance);
+      EXPECT_EQ(cb.recovery.row(0), t.row(options.recovery_dofs[0]));
+      EXPECT_EQ(cb.recovery.row(1), t.row(options.recovery_dofs[1]));
+      // With the tip a slave, its damper and road input reach the fixed-interface modes.
+      if (tip_is_slave && r > 0) {
+        EXPECT_GT(cb.damping.bottomRightCorner(r, r).norm(), 0.0);
+        EXPECT_GT(cb.input_stiffness.bottomRows(r).norm(), 0.0);
+      }
+      // The same numbers as a reduction from scratch with that count.
+      const CraigBamptonResult fresh = craigBampton(system, m, options);
+      EXPECT_EQ(cb.mass, fresh.mass);
+      EXPECT_EQ(cb.damping, fresh.damping);
+      EXPECT_EQ(cb.input_damping, fresh.input_damping);
+      EXPECT_EQ(cb.transformation, fresh.transformation);
+    }
   }
+  const CraigBamptonReducer reducer(system, masters(system, 12));
   CraigBamptonOptions too_many;
-  too_many.fixed_interface.count = static_cast<int>(system.size()) - 3;
+  too_many.fixed_interface.count = static_cast<int>(n) - 3;
   EXPECT_THROW(reducer.reduce(too_many), InputError);
+  const fem::System copy = system;
+  EXPECT_FALSE(reducer.builtOn(copy));
+  // A bad master is named before the options are judged against it.
+  std::vector<DofIndex> repeated(static_cast<std::size_t>(n) + 1, 0);
+  too_many.fixed_interface.count = static_cast<int>(n);
+  try {
+    craigBampton(system, repeated, too_many);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("listed twice"), std::string::npos) << e.what();
+  }
 }
 
 TEST(CraigBampton, FrequencyLimitedFixedInterfaceModes) {

@@ -228,20 +228,13 @@ TEST(GroundContact, HeldSeriesGivesTheDenseSeriesForces) {
 }
 
 // tvd simulate hands the run's ModalSystem to its contact forces: the same forces as from their
-// own decomposition, to the bit (the same eigen-solve, H Phi with the contacts' rows), truncated
-// modes included; and a Simulator on a ModalSystem is the one built from the system.
+// own decomposition, to the bit (the same eigen-solve, H Phi with the contacts' rows), for both
+// holds, with and without truncated modes; and a Simulator on a ModalSystem is the one built from
+// the system.
 TEST(GroundContact, TheRunsModalDecompositionGivesTheSameForces) {
   const SecondOrderSystem s = dynamics::test::randomVehicle(24, 5, 4, 11);
-  SimulatorOptions options;
-  options.time_step = 1e-3;
-  options.hold = dynamics::InputHold::FirstOrder;
-  options.method = dynamics::DiscretizationMethod::ModalDecoupled;
-  options.max_mode_frequency_hz = 150.0;  // the tyre modes (k_t = 2e10) are quasi-static
-  options.generalized_force = Vector::LinSpaced(24, -900.0, 300.0);
   const dynamics::ModalSystem modal(s);
   const std::vector<GroundContact> contacts = dynamics::groundContacts(s);
-  GroundContactForces own(s, contacts, options);
-  GroundContactForces shared(s, contacts, options, &modal);
   // Bumps under each input in turn (u, u').
   const double pi = std::acos(-1.0);
   Matrix w = Matrix::Zero(400, 10);
@@ -253,24 +246,43 @@ TEST(GroundContact, TheRunsModalDecompositionGivesTheSameForces) {
         w(k, 5 + q) = 0.4 * pi * std::sin(20.0 * pi * t);
       }
     }
-  own.reset(Vector::Zero(48), w.row(0).transpose());
-  shared.reset(Vector::Zero(48), w.row(0).transpose());
-  const Matrix a = own.simulate(w);
-  const Matrix b = shared.simulate(w);
-  ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
-  EXPECT_EQ(a, b);
+  for (const auto hold : {dynamics::InputHold::ZeroOrder, dynamics::InputHold::FirstOrder})
+    for (const double cut_hz : {0.0, 150.0}) {  // 150 Hz: the tyre modes are quasi-static
+      SCOPED_TRACE("cut " + std::to_string(cut_hz) + " Hz");
+      SimulatorOptions options;
+      options.time_step = 1e-3;
+      options.hold = hold;
+      options.method = dynamics::DiscretizationMethod::ModalDecoupled;
+      options.max_mode_frequency_hz = cut_hz;
+      options.generalized_force = Vector::LinSpaced(24, -900.0, 300.0);
+      GroundContactForces own(s, contacts, options);
+      GroundContactForces shared(s, contacts, options, &modal);
+      own.reset(Vector::Zero(48), w.row(0).transpose());
+      shared.reset(Vector::Zero(48), w.row(0).transpose());
+      const Matrix a = own.simulate(w);
+      ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
+      EXPECT_EQ(a, shared.simulate(w));
 
-  dynamics::Simulator from_system(s, options);
-  dynamics::Simulator from_modes(s, modal, options);
-  EXPECT_EQ(from_modes.quasiStaticModeCount(), from_system.quasiStaticModeCount());
-  EXPECT_GT(from_modes.quasiStaticModeCount(), 0);
-  EXPECT_EQ(from_modes.outputNames(), from_system.outputNames());
-  EXPECT_EQ(from_modes.simulate(w), from_system.simulate(w));
+      dynamics::Simulator from_system(s, options);
+      dynamics::Simulator from_modes(s, modal, options);
+      EXPECT_EQ(from_modes.quasiStaticModeCount(), from_system.quasiStaticModeCount());
+      EXPECT_EQ(from_modes.quasiStaticModeCount() > 0, cut_hz > 0.0);
+      EXPECT_EQ(from_modes.outputNames(), from_system.outputNames());
+      EXPECT_EQ(from_modes.simulate(w), from_system.simulate(w));
+    }
 
-  // Refused: another method, ratios beside the ModalSystem's, a decomposition of another size.
+  // Other outputs: H Phi of the new rows, named "output i" when no names are given.
+  const dynamics::ModalSystem two = modal.withOutput(s.output.topRows(2), {});
+  EXPECT_EQ(two.outputNames(), (std::vector<std::string>{"output 0", "output 1"}));
+  EXPECT_EQ(two.modalOutput(), modal.modalOutput().topRows(2));
+  SimulatorOptions options;
+  options.method = dynamics::DiscretizationMethod::ModalDecoupled;
+  EXPECT_EQ(dynamics::Simulator(s, two, options).outputCount(), 2);
+
+  // Refused: another method, ratios beside the ModalSystem's, a decomposition of another size,
+  // H of the wrong width, names that do not match its rows.
   SimulatorOptions exact = options;
   exact.method = dynamics::DiscretizationMethod::AugmentedExponential;
-  exact.max_mode_frequency_hz = 0.0;
   expectInputError([&] { dynamics::Simulator(s, modal, exact); }, "ModalDecoupled");
   SimulatorOptions ratios = options;
   ratios.modal_damping_ratios = Vector::Constant(24, 0.05);
@@ -278,6 +290,7 @@ TEST(GroundContact, TheRunsModalDecompositionGivesTheSameForces) {
   const dynamics::ModalSystem other(dynamics::test::randomVehicle(20, 5, 4, 11));
   expectInputError([&] { dynamics::Simulator(s, other, options); }, "20 modes");
   expectInputError([&] { modal.withOutput(Matrix::Zero(2, 23), {}); }, "24 columns");
+  expectInputError([&] { modal.withOutput(Matrix::Zero(2, 24), {"a"}); }, "1 names for 2");
 }
 
 TEST(GroundContactMonitor, TensionAtRestIsCountedApart) {

@@ -37,8 +37,9 @@ class GroundContactForces {
   /// `contacts` from groundContacts() (inputs and coordinates within `system`); `options` the
   /// run's Simulator options (its output quantities are replaced). Throws InputError for an
   /// empty contact list or a contact outside the system, and whatever Simulator throws.
-  /// `modal`, when given, is the run's decomposition (ModalSystem(system), options.method
-  /// ModalDecoupled): the forces' Simulator then steps the same modes without decomposing the
+  /// `modal`, when given, is the run's decomposition, ModalSystem(system, ratios), with
+  /// options.method ModalDecoupled and options.modal_damping_ratios empty (ratios belong to the
+  /// ModalSystem): the forces' Simulator then steps the same modes without decomposing the
   /// system again (the tracked vehicle: 431 DOFs, about a third of `tvd simulate`'s set-up).
   GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
                       SimulatorOptions options, const ModalSystem* modal = nullptr);

@@ -78,9 +78,11 @@ class Simulator {
   Simulator(const SecondOrderSystem& system, const SimulatorOptions& options);
   /// The modal engine on a decomposition already made, ModalSystem(system) or its withOutput():
   /// the same stepper as Simulator(system, options) without a second eigen-solve (e.g. the
-  /// ground contact forces beside a run, on the same modes). The outputs are the ModalSystem's.
-  /// Throws InputError unless options.method is ModalDecoupled and modal_damping_ratios empty
-  /// (the ModalSystem's ratios apply), or when the sizes differ from the system's.
+  /// ground contact forces beside a run, on the same modes). The outputs (rows and names) are
+  /// the ModalSystem's, not system.output's; that `modal` decomposes this very system is the
+  /// caller's responsibility (only the mode and input counts are checked). Throws InputError
+  /// unless options.method is ModalDecoupled and modal_damping_ratios empty (the ModalSystem's
+  /// ratios apply), or when the counts differ from the system's.
   Simulator(const SecondOrderSystem& system, const ModalSystem& modal,
             const SimulatorOptions& options);
   ~Simulator();

@@ -84,12 +84,15 @@ struct CraigBamptonResult {
 /// and the same for C, and Phi_S^T on the slave rows of K_u, C_u, f_g, f_a: products with r
 /// columns, against the n m^2 of the master block. A caller that raises r until a check passes
 /// (vehicle_reduction.cpp) pays for the shared stages once. Keeps references to the matrices it
-/// was built from, which must outlive it; reduce() is const and may run from several threads.
+/// was built from, which must outlive it (a temporary System is refused at compile time); reduce()
+/// is const and may run from several threads. A moved-from reducer may only be assigned to or
+/// destroyed.
 class CraigBamptonReducer {
  public:
   /// Throws InputError for a repeated or out-of-range master or inconsistent matrix sizes, and
   /// SolverError when K_ss is not positive definite (see craigBampton()).
   CraigBamptonReducer(const fem::System& system, std::vector<DofIndex> masters);
+  CraigBamptonReducer(fem::System&& system, std::vector<DofIndex> masters) = delete;
   /// Bare matrices [n x n]; `damping` may be empty (0 x 0). No input columns, zero loads.
   CraigBamptonReducer(const SparseMatrix& stiffness, const SparseMatrix& mass,
                       const SparseMatrix& damping, std::vector<DofIndex> masters);
@@ -103,6 +106,8 @@ class CraigBamptonReducer {
   CraigBamptonResult reduce(const CraigBamptonOptions& options = {}) const;
 
   const std::vector<DofIndex>& masters() const;
+  /// Whether it was built on this very System (its matrices, not equal copies).
+  bool builtOn(const fem::System& system) const;
   DofIndex slaveCount() const;
 
  private:

@@ -106,7 +106,8 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
 
 /// The same from a reducer built on `system` and request.masters (craig_bampton.h), which it
 /// reuses: a caller that tries several fixed-interface counts on one master set factorises
-/// once. Throws std::logic_error when the reducer's masters are not request.masters.
+/// once. Throws std::logic_error when the reducer was not built on this `system` (the same
+/// object) and request.masters.
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
                                const CraigBamptonReducer& reducer);
 
