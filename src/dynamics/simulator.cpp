@@ -134,6 +134,14 @@ class DenseEngine : public SimulatorEngine {
   bool has_offset_ = false;
 };
 
+// The modal engine's cut-off (SimulatorOptions::max_mode_frequency_hz), checked before its
+// eigen-solve.
+void checkTruncation(const SimulatorOptions& options) {
+  if (!(options.max_mode_frequency_hz >= 0) || !std::isfinite(options.max_mode_frequency_hz))
+    throw InputError(
+        "Simulator: max_mode_frequency_hz must be finite and >= 0 (0 keeps every mode)");
+}
+
 // Per mode r: [eta; eta']_{k+1} = Phi_r [eta; eta']_k + g0_r p_k + g1_r p_{k+1} + (g0_r + g1_r) p_g
 // with p = Psi w, Psi = [Phi^T K_u, Phi^T C_u], p_g = Phi^T f_g (constant: exact for both holds).
 // Outputs: H Phi eta, H Phi eta', H Phi eta'' with eta'' = p + p_g - omega^2 eta - d eta'.
@@ -150,12 +158,6 @@ class DenseEngine : public SimulatorEngine {
 // tracked vehicle: ~100 of 360 inputs change, in ~10 runs, a third of the full product's work).
 // simulate(): blocks of samples whose changes are dense (more than 1/kDenseFraction of the
 // inputs per sample) take a matrix-matrix product, the others column increments.
-void checkTruncation(const SimulatorOptions& options) {
-  if (!(options.max_mode_frequency_hz >= 0) || !std::isfinite(options.max_mode_frequency_hz))
-    throw InputError(
-        "Simulator: max_mode_frequency_hz must be finite and >= 0 (0 keeps every mode)");
-}
-
 class ModalEngine : public SimulatorEngine {
  public:
   ModalEngine(const SecondOrderSystem& system, const SimulatorOptions& options)

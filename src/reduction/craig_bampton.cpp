@@ -289,10 +289,6 @@ void projectModes(const SparseMatrix& a, const SparseMatrix& a_ss, const SparseM
   *modal = 0.5 * (block + block.transpose());
 }
 
-}  // namespace
-
-namespace {
-
 // The system's matrices after checking the sizes of its input columns and loads.
 Inputs systemInputs(const fem::System& system) {
   const DofIndex n = system.size();
@@ -319,10 +315,8 @@ CraigBamptonReducer::CraigBamptonReducer(const fem::System& system, std::vector<
     : state_(std::make_unique<State>(systemInputs(system), std::move(masters))) {}
 
 CraigBamptonReducer::CraigBamptonReducer(const SparseMatrix& stiffness, const SparseMatrix& mass,
-                                         const SparseMatrix& damping,
-                                         std::vector<DofIndex> masters) {
-  state_ = std::make_unique<State>(Inputs{stiffness, mass, damping}, std::move(masters));
-}
+                                         const SparseMatrix& damping, std::vector<DofIndex> masters)
+    : state_(std::make_unique<State>(Inputs{stiffness, mass, damping}, std::move(masters))) {}
 
 CraigBamptonReducer::~CraigBamptonReducer() = default;
 CraigBamptonReducer::CraigBamptonReducer(CraigBamptonReducer&&) noexcept = default;

@@ -178,10 +178,9 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
                                const CraigBamptonReducer& reducer) {
   if (!reducer.builtOn(system) || reducer.masters() != request.masters)
     throw std::logic_error(
-        "buildReducedModel: the reducer was built on another system or other "
-        "masters (" +
-        std::to_string(reducer.masters().size()) + ") than the request's (" +
-        std::to_string(request.masters.size()) + ")");
+        "buildReducedModel: the reducer was not built on this system and the "
+        "request's " +
+        std::to_string(request.masters.size()) + " masters");
   return build(system, request,
                [&](const CraigBamptonOptions& options) { return reducer.reduce(options); });
 }
