@@ -266,6 +266,21 @@ class QuietHdf5 {
   void* data_ = nullptr;
   bool saved_ = false;
 };
+
+// Whether a MAT 7.3 file is a sound HDF5 file whose root group holds nothing: a valid file
+// without variables, where a damaged one lists none because HDF5 cannot read it (it does not
+// open, or its root group cannot be read).
+bool emptyMat73(const std::string& path) {
+  const QuietHdf5 quiet;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file < 0)
+    return false;
+  H5G_info_t root{};
+  const bool empty = H5Gget_info(file, &root) >= 0 && root.nlinks == 0;
+  H5Fclose(file);
+  return empty;
+}
+
 }  // namespace
 
 // The variables' headers are read once, in file order, when the file is opened. matio's reads by
@@ -311,8 +326,8 @@ MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()),
     names_.emplace_back(header->name);
     impl_->headers.push_back(std::move(owned));
   }
-  if (mat73 && names_.empty())
-    throw InputError(damaged73 + " (no variable can be listed; an empty file reads the same)");
+  if (mat73 && names_.empty() && !emptyMat73(path))
+    throw InputError(damaged73 + " (no variable can be listed)");
   impl_->data_read.assign(impl_->headers.size(), 0);
 }
 

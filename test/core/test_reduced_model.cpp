@@ -171,6 +171,31 @@ TEST(MatFile, DamagedMat73FileIsNamedAsSuch) {
   std::remove(path.c_str());
 }
 
+// A valid MAT 7.3 file without variables is no damaged file: it lists none, and a variable asked
+// for is missing, for both formats alike.
+TEST(MatFile, EmptyFileHasNoVariablesInEitherFormat) {
+  for (const io::MatFormat format : {io::MatFormat::Mat5, io::MatFormat::Mat73}) {
+    const std::string path = tempPath("empty.mat");
+    {
+      io::MatWriter out(path, format);
+      out.close();
+    }
+    testing::internal::CaptureStderr();
+    const io::MatReader in(path);
+    EXPECT_TRUE(in.names().empty());
+    EXPECT_FALSE(in.has("A"));
+    std::string what;
+    try {
+      in.readMatrix("A");
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+    EXPECT_EQ(what, path + ": variable 'A' is missing");
+    std::remove(path.c_str());
+  }
+}
+
 TEST(MatFile, RefusesNonFiniteValuesNamingTheEntry) {
   const std::string path = tempPath("nan.mat");
   Matrix a = Matrix::Ones(3, 3);
