@@ -49,11 +49,8 @@ SparseMatrix selection(DofIndex n, const std::vector<DofIndex>& rows) {
 // in blocks: with R the block's rows, (A T)(R, :) = A(:, R)^T T (A symmetric) and
 // T^T A T = sum over blocks of T(R, :)^T (A T)(R, :), so no n x k product A T is formed (50 MB on
 // the tracked vehicle), only a block of it.
-Matrix project(const SparseMatrix& a, const Matrix& t) {
-  const DofIndex k = t.cols();
-  Matrix out = Matrix::Zero(k, k);
-  if (a.nonZeros() == 0)
-    return out;
+// The rows where a sparse matrix has entries, ascending.
+std::vector<DofIndex> rowsWithEntries(const SparseMatrix& a) {
   std::vector<char> used(static_cast<std::size_t>(a.rows()), 0);
   for (DofIndex j = 0; j < a.outerSize(); ++j)
     for (SparseMatrix::InnerIterator it(a, j); it; ++it)
@@ -62,6 +59,15 @@ Matrix project(const SparseMatrix& a, const Matrix& t) {
   for (DofIndex i = 0; i < a.rows(); ++i)
     if (used[static_cast<std::size_t>(i)])
       rows.push_back(i);
+  return rows;
+}
+
+Matrix project(const SparseMatrix& a, const Matrix& t) {
+  const DofIndex k = t.cols();
+  Matrix out = Matrix::Zero(k, k);
+  if (a.nonZeros() == 0)
+    return out;
+  const std::vector<DofIndex> rows = rowsWithEntries(a);
   constexpr std::size_t kBlock = 1024;  // 1024 x 431 doubles: 3.5 MB per block product
   for (std::size_t first = 0; first < rows.size(); first += kBlock) {
     const std::vector<DofIndex> block(rows.begin() + static_cast<std::ptrdiff_t>(first),
@@ -166,6 +172,7 @@ struct CraigBamptonReducer::State {
   Inputs in;
   std::vector<DofIndex> masters;
   std::vector<DofIndex> slaves;
+  std::vector<DofIndex> slave_index;  // per DOF: its row of Phi_S, -1 for a master
   SparseMatrix p_s;  // n x s selection of the slave DOFs
   SparseMatrix k_ss;
   SparseMatrix m_ss;
@@ -195,9 +202,12 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
   for (const DofIndex i : masters)
     is_master[static_cast<std::size_t>(i)] = 1;
   slaves.reserve(static_cast<std::size_t>(n - m));
+  slave_index.assign(static_cast<std::size_t>(n), -1);
   for (DofIndex i = 0; i < n; ++i)
-    if (!is_master[static_cast<std::size_t>(i)])
+    if (!is_master[static_cast<std::size_t>(i)]) {
+      slave_index[static_cast<std::size_t>(i)] = static_cast<DofIndex>(slaves.size());
       slaves.push_back(i);
+    }
   const auto s = static_cast<DofIndex>(slaves.size());
   const SparseMatrix p_m = selection(n, masters);
   p_s = selection(n, slaves);
@@ -271,14 +281,7 @@ namespace {
 void projectModes(const SparseMatrix& a, const SparseMatrix& a_ss, const SparseMatrix& p_s,
                   const Matrix& t_m, const Matrix& phi_s, Matrix* coupling, Matrix* modal) {
   const SparseMatrix a_s = a * p_s;  // n x s
-  std::vector<char> used(static_cast<std::size_t>(a.rows()), 0);
-  for (DofIndex j = 0; j < a_s.outerSize(); ++j)
-    for (SparseMatrix::InnerIterator it(a_s, j); it; ++it)
-      used[static_cast<std::size_t>(it.row())] = 1;
-  std::vector<DofIndex> rows;
-  for (DofIndex i = 0; i < a.rows(); ++i)
-    if (used[static_cast<std::size_t>(i)])
-      rows.push_back(i);
+  const std::vector<DofIndex> rows = rowsWithEntries(a_s);
   if (2 * rows.size() > static_cast<std::size_t>(a.rows())) {
     *coupling = t_m.transpose() * (a_s * phi_s);
   } else {
@@ -401,17 +404,11 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
   result.masters = st.masters;
 
   // Rows of T_CMS (eq. 8): [T_m row | Phi_S row of a slave, 0 for a master].
-  std::vector<DofIndex> slave_index;
-  if (r > 0 && (!options.recovery_dofs.empty() || options.keep_transformation)) {
-    slave_index.assign(static_cast<std::size_t>(n), -1);
-    for (std::size_t j = 0; j < st.slaves.size(); ++j)
-      slave_index[static_cast<std::size_t>(st.slaves[j])] = static_cast<DofIndex>(j);
-  }
   auto transformationRow = [&](DofIndex dof, auto row) {  // row: a block view, written through
     row.head(m) = st.t_m.row(dof);
     if (r == 0)
       return;
-    const DofIndex j = slave_index[static_cast<std::size_t>(dof)];
+    const DofIndex j = st.slave_index[static_cast<std::size_t>(dof)];
     if (j >= 0)
       row.tail(r) = phi_s.shapes.row(j);
     else
