@@ -9,7 +9,8 @@ installed vehicle description, a figure script imports its installed helper modu
 package builds and runs against the install space, and the node started by the installed launch
 file reduces its model into $ROS_HOME (the install is read-only) and publishes the hull's frame.
 Run as
-    /usr/bin/python3 test/scripts/test_install_space.py --build BUILD_DIR --work DIR [--xml OUT.xml]
+    /usr/bin/python3 test/scripts/test_install_space.py --build BUILD_DIR [--keep] [--xml OUT.xml]
+The stage is a temporary directory outside the package, removed at the end unless --keep.
 """
 import json
 import os
@@ -18,6 +19,8 @@ import shutil
 import socket
 import stat
 import subprocess
+import sys
+import tempfile
 import time
 import unittest
 
@@ -26,7 +29,8 @@ import junit_runner
 PACKAGE = "tracked_vehicle_dynamics"
 HERE = os.path.dirname(os.path.abspath(__file__))
 BUILD = None  # set from --build: the configured and built tree
-WORK = None  # set from --work: replaced on every run
+# --keep (taken off the command line below): leave the staged install and logs for a look.
+KEEP = "--keep" in sys.argv
 
 
 def cache_value(build, name):
@@ -59,10 +63,9 @@ def free_port():
 class InstallSpaceTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.work = os.path.join(WORK, "install_check")
-        if os.path.isdir(cls.work):
-            make_read_only(cls.work, writable=True)  # a previous run's read-only stage
-            shutil.rmtree(cls.work)
+        # Outside the package and removed afterwards: a copy of the launch files anywhere under
+        # the package directory (build/ included) makes `roslaunch PACKAGE FILE` ambiguous.
+        cls.work = tempfile.mkdtemp(prefix="tvd_install_space_")
         stage = os.path.join(cls.work, "stage")
         os.makedirs(stage)
         env = dict(os.environ, DESTDIR=stage)
@@ -84,6 +87,10 @@ class InstallSpaceTest(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
         make_read_only(cls.work, writable=True)
+        if KEEP:
+            print(f"install space test: kept {cls.work}")
+        else:
+            shutil.rmtree(cls.work, ignore_errors=True)
 
     def installed_command(self, *args):
         """bash running ARGS after sourcing the install space's setup.bash. The positional
@@ -182,5 +189,5 @@ class InstallSpaceTest(unittest.TestCase):
 
 if __name__ == "__main__":
     raise SystemExit(junit_runner.main(InstallSpaceTest, "install_space", __doc__,
-                                       paths={"--build": "the configured and built tree",
-                                              "--work": "scratch directory (replaced)"}))
+                                       argv=[a for a in sys.argv[1:] if a != "--keep"],
+                                       paths={"--build": "the configured and built tree"}))
