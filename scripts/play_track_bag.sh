@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # Plays the rosbag of a track at a constant speed with --clock (1 kHz), writing it first with
-# tvd_make_bag when it is not there yet (or, for a terrain file, older than the file).
+# tvd_make_bag when it is not there yet, or was written from another file or version of it.
 #   play_track_bag.sh TRACK SPEED BAG_DIR [rosbag play options...]
 # TRACK: long_hill | separated_waves | oop_waves | half_round:H | a terrain file (.csv/.yaml, e.g. from
 # `tvd terrain --iso8608 C`). SPEED: km/h, or a speed-profile CSV (time_s,speed_kmh). The bag is
 # BAG_DIR/NAME_SPEEDkmh.bag (NAME_PROFILE.bag for a profile), NAME the track or file stem.
 # Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
+# With TVD_BAG_MAKE_ONLY=1 the bag is only written (when needed) and its path printed.
 # The options are those of rosbag's play executable (`rosbag play`'s; /usr/lib/rosbag/play --help),
 # which runs as this script's child: a SIGINT, SIGTERM or SIGHUP to the script stops it (and
 # tvd_make_bag) before the script ends, so no player is left behind.
@@ -83,18 +84,40 @@ mkdir -p "$dir"
 # The devel/install space's executable (rosrun may see several build trees in the source).
 make_bag=$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics tvd_make_bag \
   2>/dev/null | head -n 1)
-# A bag older than its terrain or profile file, or than tvd_make_bag itself (a rebuilt track
-# definition or patch layout), is written again.
-stale() { [ -f "$1" ] && [ "$1" -nt "$bag" ]; }
-if [ ! -s "$bag" ] || stale "$track" || stale "$speed" || stale "$make_bag"; then
+# What the bag was written from, kept beside it (BAG.source): each terrain or profile file's
+# absolute path and content hash, else the built-in track or speed as given. The bag is named by
+# the file's stem, so another file of that name (elsewhere, or edited with its old time stamp,
+# e.g. by cp -p) must not reuse it: a bag whose record differs is written again. So is one older
+# than tvd_make_bag itself (a rebuilt track definition or patch layout).
+source_of() {
+  if [ -f "$1" ]; then
+    printf '%s sha256:%s\n' "$(realpath "$1")" "$(sha256sum <"$1" | cut -d' ' -f1)"
+  else
+    printf '%s\n' "$1"
+  fi
+}
+source_record="$(source_of "$track"; source_of "$speed")"
+fresh() {
+  [ -s "$bag" ] && [ -f "$bag.source" ] && [ "$(cat "$bag.source")" = "$source_record" ] &&
+    ! { [ -f "$make_bag" ] && [ "$make_bag" -nt "$bag" ]; }
+}
+if ! fresh; then
   tmp="$dir/.$run.$$.bag"
   if [ -z "$make_bag" ] || [ ! -x "$make_bag" ]; then
     echo "play_track_bag.sh: tvd_make_bag not found (build the package and source its setup.bash)" >&2
     exit 2
   fi
   run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp"
+  rm -f "$bag.source"
   mv -f "$tmp" "$bag"
   tmp=""
+  printf '%s\n' "$source_record" >"$bag.source"
+fi
+# TVD_BAG_MAKE_ONLY=1: the bag is written (or found current) and named, not played (bags made
+# ahead of a session; the tests).
+if [ "${TVD_BAG_MAKE_ONLY:-0}" = 1 ]; then
+  echo "$bag"
+  exit 0
 fi
 play=$(catkin_find --libexec rosbag play 2>/dev/null | head -n 1)
 if [ -z "$play" ] || [ ! -x "$play" ]; then

@@ -144,12 +144,18 @@ def pad_rows(vehicle):
     try:
         with open(vehicle) as f:
             d = yaml.safe_load(f)
-        b = float(d["running_gear"]["track_centre_distance"]["value"])
-        e = float(d["track_assembly"]["pad_lateral_offset"]["value"])
+        entries = {"running_gear.track_centre_distance":
+                   d["running_gear"]["track_centre_distance"],
+                   "track_assembly.pad_lateral_offset": d["track_assembly"]["pad_lateral_offset"]}
+        b, e = (float(entry["value"]) for entry in entries.values())
     except (OSError, UnicodeDecodeError, yaml.YAMLError, KeyError, TypeError,
             ValueError) as error:
         fail(f"{vehicle}: cannot read running_gear.track_centre_distance and "
              f"track_assembly.pad_lateral_offset ({reason(error)})")
+    # The description's loader takes each quantity in one unit only (tvd refuses another).
+    for key, entry in entries.items():
+        if entry.get("unit") != "m":
+            fail(f"{vehicle}: {key}: unit must be m, got {entry.get('unit')!r}")
     if not (math.isfinite(b) and math.isfinite(e) and b > 0 and e > 0):
         fail(f"{vehicle}: running_gear.track_centre_distance and "
              f"track_assembly.pad_lateral_offset must be finite and > 0")

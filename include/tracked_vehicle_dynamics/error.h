@@ -25,7 +25,8 @@ class SolverError : public Error {
 };
 
 /// A number for an error message: six significant digits ("3.5", "1.2e-05"), not std::to_string's
-/// fixed six decimals ("3.500000").
+/// fixed six decimals ("3.500000"); up to ten when that gives the value exactly ("200.0001", not
+/// "200": a rejected value is never shown as the bound it breaks).
 std::string brief(double value);
 
 }  // namespace tracked_vehicle_dynamics

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -189,6 +190,24 @@ dynamics::InputHold parseHold(const std::string& text, const std::string& name) 
   throw ParameterError(name + ": unknown hold '" + text + "' (first_order or zero_order)");
 }
 
+namespace {
+
+// A file parameter given as a relative path that is not there: roslaunch runs a node in
+// $ROS_HOME, not where the launch was started, so say where it was looked for and what works.
+void requireFoundFile(const Reader& in, const std::string& key, const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path file(path);
+  if (file.is_absolute() || std::filesystem::exists(file, ec))
+    return;
+  throw in.error(key, path + ": file not found relative to the node's working directory " +
+                          std::filesystem::current_path(ec).string() +
+                          " (roslaunch runs nodes in $ROS_HOME): give an absolute path, e.g. "
+                          "$(find my_package)/" +
+                          path + " in a launch file");
+}
+
+}  // namespace
+
 NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   const Reader in(private_nh);
   NodeParameters p;
@@ -197,6 +216,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("vehicle", "required: the vehicle description file (e.g. " +
                                   std::string("config/vehicles/paper_vehicle.yaml)"));
   }
+  requireFoundFile(in, "vehicle", p.vehicle);
   const std::string variant = in.string("variant", vehicle::variantName(p.variant));
   try {
     p.variant = vehicle::parseVariant(variant);
@@ -299,6 +319,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   r.mogesec_masters = in.integer("reduction/mogesec_masters", r.mogesec_masters, 0);
   r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0);
   p.reduced_model = in.string("reduced_model", "");
+  if (!p.reduced_model.empty())
+    requireFoundFile(in, "reduced_model", p.reduced_model);
   // Every key above has been asked for: what else is set in the private namespace is unknown
   // (a misspelt ~speed_timout would leave the dead-driver stop off without a word).
   for (const std::string& key : in.unread()) {

@@ -33,7 +33,11 @@ void require(bool valid, const std::string& field, double value, const std::stri
 constexpr double kMaxMessages = 1e7;
 
 void checkOptions(const TrackBagOptions& o) {
-  require(std::isfinite(o.speed) && o.speed > 0.0, "speed", o.speed, "> 0 m/s");
+  require(std::isfinite(o.speed) && o.speed > 0.0 && o.speed <= kMaxTrackBagSpeed, "speed", o.speed,
+          "in (0, " + brief(kMaxTrackBagSpeed) + "] m/s (200 km/h)");
+  if (o.speed_profile && o.speed_profile->maxSpeed() > kMaxTrackBagSpeed)
+    throw InputError("track bag: the speed profile reaches " +
+                     brief(o.speed_profile->maxSpeed() * 3.6) + " km/h; at most 200 km/h");
   require(std::isfinite(o.patch_length) && o.patch_length > 0.0, "patch_length", o.patch_length,
           "> 0 m");
   require(std::isfinite(o.lookahead) && o.lookahead >= 0.0, "lookahead", o.lookahead, ">= 0 m");
@@ -106,11 +110,17 @@ TrackRun trackRun(const TrackBagOptions& options) {
   // A bag is replayed in real time: refuse a run that would write millions of timed messages (a
   // terrain file with a stray far station, a crawl speed) instead of filling the disk.
   const double messages = run.duration * (options.speed_rate + options.clock_rate);
-  if (messages > kMaxMessages || options.start_time + run.duration >= 4e9) {
+  if (run.duration > kMaxTrackBagDuration || messages > kMaxMessages ||
+      options.start_time + run.duration >= 4e9) {
     std::ostringstream message;
-    message << "track bag: the run to station " << run.end_station << " m lasts " << run.duration
-            << " s, " << messages << " speed and clock messages; at most " << kMaxMessages
-            << " (about 55 h at 50 Hz): use a shorter terrain or a higher speed";
+    message << "track bag: the run to station " << brief(run.end_station) << " m lasts "
+            << brief(run.duration) << " s";
+    if (run.duration > kMaxTrackBagDuration)
+      message << "; at most " << brief(kMaxTrackBagDuration) << " s (2.8 h, replayed in real time)";
+    else
+      message << ", " << brief(messages) << " speed and clock messages; at most "
+              << brief(kMaxMessages);
+    message << ": use a shorter terrain or a higher speed";
     throw InputError(message.str());
   }
   // Terrain on the track's own grid, stations k * spacing, patch by patch.

@@ -47,11 +47,23 @@ int main(int argc, char** argv) {
                                 "vehicle centre line on the track y_t [m] (default: the track's)");
   app.add_option("--start-time", options.start_time, "bag time of the start [s]")
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-  // Checked in the unit given (writeTrackBag would say "> 0 m/s" of a km/h argument).
-  if (profile_file.empty() && !(std::isfinite(speed_kmh) && speed_kmh > 0.0)) {
-    std::fprintf(stderr, "tvd_make_bag: --speed-kmh %s must be > 0 km/h\n",
-                 tracked_vehicle_dynamics::brief(speed_kmh).c_str());
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help exits 0; any other command-line error is bad input, reported on one line with
+    // status 2 as tvd does.
+    if (e.get_exit_code() == 0)
+      return app.exit(e);
+    std::cerr << "tvd_make_bag: error: " << e.what() << "\n";
+    return 2;
+  }
+  // Checked in the unit given (writeTrackBag would say "m/s" of a km/h argument), and the range
+  // of tvd simulate: the model is not meant for more.
+  if (profile_file.empty() &&
+      !(std::isfinite(speed_kmh) && speed_kmh > 0.0 && speed_kmh <= rl::kMaxTrackBagSpeed * 3.6)) {
+    std::cerr << "tvd_make_bag: error: --speed-kmh must be in (0, "
+              << tracked_vehicle_dynamics::brief(rl::kMaxTrackBagSpeed * 3.6) << "], got "
+              << tracked_vehicle_dynamics::brief(speed_kmh) << "\n";
     return 2;
   }
   options.speed = speed_kmh / 3.6;

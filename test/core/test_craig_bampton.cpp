@@ -275,8 +275,9 @@ TEST(CraigBampton, OneReducerGivesEveryModeCountAsTheFullProjection) {
       const CraigBamptonResult cb = reducer.reduce(options);
       ASSERT_EQ(cb.size(), mc + r);
       const Matrix& t = cb.transformation;
-      if (mc > 0)
+      if (mc > 0) {
         EXPECT_EQ(t(m, Eigen::all), Matrix::Identity(mc, mc + r));
+      }
       EXPECT_LT(relativeError(cb.mass, t.transpose() * Matrix(system.mass) * t), kExactTolerance);
       EXPECT_LT(relativeError(cb.stiffness, t.transpose() * Matrix(system.stiffness) * t),
                 kExactTolerance);

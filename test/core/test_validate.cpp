@@ -320,6 +320,20 @@ TEST(Validate, AcceptsLegitimateEdgeCases) {
   EXPECT_NO_THROW(validate(model, kWhere));
 }
 
+// brief(), the numbers of every error message: six digits, but a value given with up to ten is
+// shown as given, so a rejected value never reads as the bound it breaks.
+TEST(Brief, ShowsAGivenValueExactlyAndAComputedOneShort) {
+  EXPECT_EQ(brief(3.5), "3.5");
+  EXPECT_EQ(brief(1.2e-5), "1.2e-05");
+  EXPECT_EQ(brief(200.0), "200");
+  EXPECT_EQ(brief(200.0001), "200.0001");  // "must be in (0, 200], got 200.0001"
+  EXPECT_EQ(brief(-0.123456789), "-0.123456789");
+  EXPECT_EQ(brief(0.1 + 0.2), "0.3");  // 0.30000000000000004: no ten-digit decimal is it
+  EXPECT_EQ(brief(1.0 / 3.0), "0.333333");
+  EXPECT_EQ(brief(kInf), "inf");
+  EXPECT_EQ(brief(kNaN).find("nan") != std::string::npos, true);
+}
+
 }  // namespace
 }  // namespace fem
 }  // namespace tracked_vehicle_dynamics

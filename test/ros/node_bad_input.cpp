@@ -2,6 +2,7 @@
 // entry for each kind; the loop holds its rate (node_bad_input.test, real time). A bad parameter
 // stops a second node at once with one FATAL line naming it.
 #include <gtest/gtest.h>
+#include <array>
 
 #include <sys/wait.h>
 
@@ -311,6 +312,31 @@ TEST(NodeBadParameters, BadGroundContactRateIsNamed) {
     EXPECT_EQ(run.exit_status, 1) << run.output;
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("/" + name + "/ground_contact_rate" + message), std::string::npos)
+        << run.output;
+  }
+}
+
+// A relative file path the node cannot find: roslaunch runs nodes in $ROS_HOME, so the message
+// says where it looked and asks for an absolute path (it said only "file not found").
+TEST(NodeBadParameters, RelativeFilesNotFoundSayWhereTheNodeLooked) {
+  ros::NodeHandle private_nh("~");
+  const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
+  const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const std::string cwd = std::filesystem::current_path().string();
+  for (const auto& [name, arguments, key, path] : std::vector<std::array<std::string, 4>>{
+           {"relative_vehicle", "_vehicle:=no_such_dir/my_vehicle.yaml", "vehicle",
+            "no_such_dir/my_vehicle.yaml"},
+           {"relative_model", "_vehicle:=" + vehicle + " _reduced_model:=my_model.mat",
+            "reduced_model", "my_model.mat"}}) {
+    SCOPED_TRACE(arguments);
+    const NodeRun run =
+        runNode("__name:=" + name + " _cache_dir:=" + cache_dir + " " + arguments, timeout);
+    EXPECT_EQ(run.exit_status, 1) << run.output;
+    EXPECT_NE(run.output.find("/" + name + "/" + key + ": " + path +
+                              ": file not found relative to the node's working directory " + cwd +
+                              " (roslaunch runs nodes in $ROS_HOME): give an absolute path"),
+              std::string::npos)
         << run.output;
   }
 }

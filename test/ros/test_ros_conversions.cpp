@@ -442,6 +442,23 @@ TEST(TrackBag, InvalidOptionsNameTheField) {
   options.speed = 0.0;
   const std::string message = inputErrorOf([&] { writeTrackBag(temporaryPath("never.bag"), options); });
   EXPECT_NE(message.find("speed"), std::string::npos) << message;
+  // Above tvd simulate's 200 km/h, at constant speed or along a profile.
+  options.speed = 200.0001 / 3.6;
+  const std::string fast = inputErrorOf([&] { trackRun(options); });
+  EXPECT_NE(fast.find("speed"), std::string::npos) << fast;
+  EXPECT_NE(fast.find("200 km/h"), std::string::npos) << fast;
+  options.speed = 200.0 / 3.6;
+  EXPECT_NO_THROW(trackRun(options));
+  options.speed_profile = dynamics::SpeedProfile({0.0, 1.0}, {10.0, 60.0});
+  const std::string profile = inputErrorOf([&] { trackRun(options); });
+  EXPECT_NE(profile.find("216 km/h"), std::string::npos) << profile;
+  options.speed_profile.reset();
+  // A run longer than 1e4 s (replayed in real time) is refused even when its messages are few:
+  // 31 m at 1 mm/s without /clock is 3.1e4 s but 1.6e6 speed messages.
+  options.speed = 1e-3;
+  options.clock_rate = 0.0;
+  const std::string slow = inputErrorOf([&] { trackRun(options); });
+  EXPECT_NE(slow.find("at most 10000 s"), std::string::npos) << slow;
   options.speed = 5.0;
   options.track = "moon_craters";
   EXPECT_THROW(writeTrackBag(temporaryPath("never.bag"), options), InputError);

@@ -162,6 +162,40 @@ class LaunchFilesTest(unittest.TestCase):
                                              "bag_dir:=/tmp/bags", *args))
             self.assertEqual(recorder[recorder.index("-O") + 1], "/tmp/bags/" + name, args)
 
+    def test_a_track_bag_is_written_again_from_another_file_of_the_same_name(self):
+        # replay_track.launch's player names a terrain file's bag by the file's stem.
+        script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+            os.path.abspath(__file__)))), "scripts", "play_track_bag.sh")
+        bag_dir = os.path.join(self.work, "bags")
+        roads = {}
+        for sub, rows in (("bump", "0,0\n10,0\n10.5,0.2\n11,0\n30,0\n"), ("flat", "0,0\n30,0\n")):
+            os.makedirs(os.path.join(self.work, sub), exist_ok=True)
+            roads[sub] = os.path.join(self.work, sub, "road.csv")
+            with open(roads[sub], "w") as f:
+                f.write("x,h\n" + rows)
+            os.utime(roads[sub], (1e9, 1e9))  # both older than any bag written below
+
+        def make(track):
+            result = subprocess.run([ENV_SH, script, track, "20", bag_dir],
+                                    env=dict(os.environ, TVD_BAG_MAKE_ONLY="1"),
+                                    capture_output=True, text=True, timeout=120)
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            bag = result.stdout.strip().splitlines()[-1]
+            self.assertEqual(bag, os.path.join(bag_dir, "road_20kmh.bag"))
+            with open(bag, "rb") as f, open(bag + ".source") as g:
+                return f.read(), g.read(), os.stat(bag).st_mtime_ns
+
+        flat, flat_source, _ = make(roads["flat"])
+        self.assertIn(os.path.realpath(roads["flat"]) + " sha256:", flat_source)
+        bump, bump_source, written = make(roads["bump"])  # same bag name, older file
+        self.assertIn(os.path.realpath(roads["bump"]) + " sha256:", bump_source)
+        self.assertNotEqual(bump, flat)
+        self.assertEqual(make(roads["bump"])[2], written)  # current: not written again
+        with open(roads["bump"], "a") as f:  # edited, its old time stamp kept (cp -p, a checkout)
+            f.write("31,0\n")
+        os.utime(roads["bump"], (1e9, 1e9))
+        self.assertNotEqual(make(roads["bump"])[1], bump_source)
+
     def test_footprint_frame_and_publish_odom_tf(self):
         p = params("vehicle_dynamics.launch")
         self.assertEqual((p["footprint_frame"], p["publish_odom_tf"]), ("", True))  # the file's

@@ -601,6 +601,13 @@ class PlotScriptsTest(unittest.TestCase):
             f.write("running_gear: {}\n")
         result = self.run_script("plot_terrain.py", "--vehicle", no_keys, "--out", out, terrain)
         self.assert_input_error(result, out, "no_keys.yaml", "track_centre_distance")
+        # Another unit is refused as tvd refuses it, not read as metres (2800 mm: rows at 1400 m).
+        in_mm = self.path("in_mm.yaml")
+        with open(vehicle) as f, open(in_mm, "w") as g:
+            g.write(f.read().replace("{value: 2.8, unit: m", "{value: 2800, unit: mm"))
+        result = self.run_script("plot_terrain.py", "--vehicle", in_mm, "--out", out, terrain)
+        self.assert_input_error(result, out, "in_mm.yaml",
+                                "running_gear.track_centre_distance: unit must be m, got 'mm'")
         result = self.run_script("plot_terrain.py", "--vehicle", vehicle, "--out", out,
                                  "--detail", "3:1", terrain)
         self.assert_input_error(result, out, "--detail", "X0 < X1")

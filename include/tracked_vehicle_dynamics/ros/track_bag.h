@@ -24,12 +24,19 @@
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 
+/// The fastest a bag drives [m/s]: 200 km/h, the range of `tvd simulate --speed-kmh` (the model
+/// is not meant for more).
+constexpr double kMaxTrackBagSpeed = 200.0 / 3.6;
+/// The longest run a bag holds [s]: it is replayed in real time, and `tvd simulate` stops at 1e7
+/// steps of its default 1 ms; a longer one is a crawl or a stray far station, not a test drive.
+constexpr double kMaxTrackBagDuration = 1e4;
+
 struct TrackBagOptions {
   /// long_hill, separated_waves, oop_waves, half_round:H (tracks.h), or a terrain file
   /// (.csv/.yaml, terrain_io.h, e.g. from `tvd terrain --iso8608 C`): its first station becomes
   /// station 0, where the vehicle starts.
   std::string track = "long_hill";
-  double speed = 30.0 / 3.6;        ///< [m/s], > 0
+  double speed = 30.0 / 3.6;  ///< [m/s], in (0, kMaxTrackBagSpeed]
   /// A speed varying in time instead of `speed` (dynamics/speed_profile.h): the reference point
   /// moves by its exact station, the speed messages carry v(t), and the run ends where the
   /// station reaches its end, or where the profile stops for good.
