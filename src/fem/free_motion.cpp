@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <numeric>
 #include <sstream>
+#include <vector>
+
+#include <Eigen/QR>
+#include <Eigen/SVD>
 
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 
@@ -37,7 +41,8 @@ std::string describeFreeMotions(const System& system) {
   identity.setIdentity();
   const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff();
   ModalRequest request;
-  request.count = static_cast<int>(std::min<DofIndex>(6, n));
+  // Up to six rigid-body motions and as many mechanisms again.
+  request.count = static_cast<int>(std::min<DofIndex>(12, n));
   request.shift = -1e-8 * scale;
   std::ostringstream out;
   ModalBasis basis;
@@ -46,6 +51,19 @@ std::string describeFreeMotions(const System& system) {
   } catch (const std::exception&) {
     return "could not isolate the free motion";
   }
+  // The zero-energy vectors span the free motions, but any basis of that space is as good to the
+  // eigen-solver: a free-free beam's six come out as mixtures. So each rigid-body motion r is
+  // tested against the space (the part of r outside it, |r - N N^T r| / |r|, N orthonormal) and
+  // named when it lies in it; what the space holds beyond the rigid motions named are mechanisms,
+  // each described by the DOFs that move most in it.
+  std::vector<int> zero;
+  for (int m = 0; m < basis.count(); ++m)
+    if (basis.eigenvalues(m) <= 1e-9 * scale)
+      zero.push_back(m);
+  if (zero.empty())
+    return "ill-conditioned stiffness (no exactly free motion found)";
+  const Eigen::HouseholderQR<Matrix> qr(basis.shapes(Eigen::all, zero));
+  const Matrix space = qr.householderQ() * Matrix::Identity(n, static_cast<DofIndex>(zero.size()));
   const Matrix rigid = rigidBodyModes(system);
   static const char* kRigidNames[6] = {"rigid-body translation along x",
                                        "rigid-body translation along y",
@@ -53,37 +71,40 @@ std::string describeFreeMotions(const System& system) {
                                        "rigid-body rotation about x",
                                        "rigid-body rotation about y",
                                        "rigid-body rotation about z"};
-  int described = 0;
-  for (int m = 0; m < basis.count(); ++m) {
-    if (basis.eigenvalues(m) > 1e-9 * scale) continue;
-    const Vector phi = basis.shapes.col(m);
-    if (described++ > 0) out << "; ";
-    // Name it a rigid-body motion when it is (almost) one of the six, by MAC.
-    int best = -1;
-    double best_mac = 0.0;
-    for (int r = 0; r < 6; ++r) {
-      const double norm = rigid.col(r).squaredNorm();
-      if (norm == 0.0) continue;
-      const double dot = rigid.col(r).dot(phi);
-      const double mac = dot * dot / (norm * phi.squaredNorm());
-      if (mac > best_mac) {
-        best_mac = mac;
-        best = r;
-      }
-    }
-    if (best >= 0 && best_mac > 0.9) {
-      out << kRigidNames[best];
-    } else {
-      std::vector<DofIndex> order(n);
-      std::iota(order.begin(), order.end(), 0);
-      const int shown = static_cast<int>(std::min<DofIndex>(4, n));
-      std::partial_sort(order.begin(), order.begin() + shown, order.end(),
-                        [&](DofIndex a, DofIndex b) { return std::abs(phi(a)) > std::abs(phi(b)); });
-      out << "mechanism involving ";
-      for (int i = 0; i < shown; ++i) out << (i ? ", " : "") << system.dofs.label(order[i]);
-    }
+  std::vector<int> free_rigid;
+  for (int r = 0; r < 6; ++r) {
+    const double norm = rigid.col(r).norm();
+    if (norm == 0.0)
+      continue;
+    const Vector outside = rigid.col(r) - space * (space.transpose() * rigid.col(r));
+    if (outside.norm() < 0.05 * norm)
+      free_rigid.push_back(r);
   }
-  if (described == 0) return "ill-conditioned stiffness (no exactly free motion found)";
+  // The free rigid motions' own span (on few DOFs some coincide, e.g. a single node's rotations).
+  Matrix named(n, 0);
+  if (!free_rigid.empty()) {
+    const Eigen::ColPivHouseholderQR<Matrix> rq(rigid(Eigen::all, free_rigid));
+    named = rq.householderQ() * Matrix::Identity(n, rq.rank());
+  }
+  int described = 0;
+  for (const int r : free_rigid)
+    out << (described++ ? "; " : "") << kRigidNames[r];
+  // Mechanisms: the free space with the named rigid motions taken out.
+  const Matrix rest = space - named * (named.transpose() * space);
+  const Eigen::JacobiSVD<Matrix> svd(rest, Eigen::ComputeThinU);
+  for (Eigen::Index k = 0; k < svd.singularValues().size(); ++k) {
+    if (svd.singularValues()(k) < 0.5)
+      continue;  // a unit vector of the space: ~1 when free
+    const Vector phi = svd.matrixU().col(k);
+    std::vector<DofIndex> order(n);
+    std::iota(order.begin(), order.end(), 0);
+    const int shown = static_cast<int>(std::min<DofIndex>(4, n));
+    std::partial_sort(order.begin(), order.begin() + shown, order.end(),
+                      [&](DofIndex a, DofIndex b) { return std::abs(phi(a)) > std::abs(phi(b)); });
+    out << (described++ ? "; " : "") << "mechanism involving ";
+    for (int i = 0; i < shown; ++i)
+      out << (i ? ", " : "") << system.dofs.label(order[i]);
+  }
   return out.str();
 }
 

@@ -207,9 +207,10 @@ void runVehicle(const ModesOptions& opt) {
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
              a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
   std::cout << "\nstatic equilibrium under gravity: hull sag " << std::setprecision(4)
-            << a.statics.hull_sag * 1000.0 << " mm, pitch " << a.statics.hull_pitch * kRadToDegree
-            << " deg; ground reactions " << std::setprecision(1) << a.statics.ground_reaction
-            << " N = weight " << a.statics.weight << " N\n";
+            << -a.statics.hull_sag * 1000.0 << " mm (z " << a.statics.hull_sag * 1000.0
+            << " mm), pitch " << a.statics.hull_pitch * kRadToDegree << " deg; ground reactions "
+            << std::setprecision(1) << a.statics.ground_reaction << " N = weight "
+            << a.statics.weight << " N\n";
 }
 
 }  // namespace

@@ -211,14 +211,17 @@ void run(const StaticsOptions& opt) {
     }
     std::cout << "\n";
   }
-  std::cout << "\n"
-            << "hull at rest: sag " << std::setprecision(3) << s.hull_sag * 1e3 << " mm, pitch "
-            << std::setprecision(4) << printed(s.hull_pitch * kRadToDegree, 4)
-            << " deg (nose down +), roll " << printed(s.hull_roll * kRadToDegree, 4)
-            << " deg (left up +)\n\n"
-            << "road wheels: normal force on the track [kN] (negative: pulling on it, would lift off);\n"
-            << "the largest assembly pressure within half an axle spacing [kPa]\n"
-            << "  wheel                   x [m]   load [kN]   peak pressure under it [kPa]\n";
+  std::cout
+      << "\n"
+      // hull_sag is the CoG's z displacement (z up, as in the JSON): a hull that settles
+      // has a negative one, printed as a positive sag beside it.
+      << "hull at rest: sag " << std::setprecision(3) << -s.hull_sag * 1e3 << " mm (z "
+      << s.hull_sag * 1e3 << " mm), pitch " << std::setprecision(4)
+      << printed(s.hull_pitch * kRadToDegree, 4) << " deg (nose down +), roll "
+      << printed(s.hull_roll * kRadToDegree, 4) << " deg (left up +)\n\n"
+      << "road wheels: normal force on the track [kN] (negative: pulling on it, would lift off);\n"
+      << "the largest assembly pressure within half an axle spacing [kPa]\n"
+      << "  wheel                   x [m]   load [kN]   peak pressure under it [kPa]\n";
   for (std::size_t i = 0; i < model.layout.wheels.size(); ++i) {
     const vehicle::WheelStation& w = model.layout.wheels[i];
     std::cout << "  " << std::left << std::setw(20) << w.name << std::right << std::setw(8)

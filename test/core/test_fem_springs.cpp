@@ -318,6 +318,32 @@ TEST(StaticSolver, SingularStiffnessNamesTheFreeMotion) {
   }
 }
 
+TEST(StaticSolver, SingularStiffnessNamesAMechanismByItsDofs) {
+  // Two masses on vertical ground springs, joined along x; the first held along x and y too. The
+  // second is free along y alone: no motion of the whole, a mechanism of node 2 uy.
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 0));
+  model.addNode(2, tvd::Vector3(1, 0, 0));
+  for (int n = 1; n <= 2; ++n) {
+    model.masses.push_back(pointMass(n, 1.0));
+    model.springs.push_back(springAlong(n, tvd::fem::kGround, 2, 1e4));
+  }
+  model.springs.push_back(springAlong(1, tvd::fem::kGround, 0, 1e4));
+  model.springs.push_back(springAlong(1, tvd::fem::kGround, 1, 1e4));
+  model.springs.push_back(springAlong(1, 2, 0, 1e4));
+  const tvd::fem::System sys = tvd::fem::assemble(model);
+  try {
+    tvd::fem::solveStatic(sys, sys.gravity_load);
+    FAIL() << "expected a SolverError";
+  } catch (const tvd::SolverError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("free motion: mechanism involving node 2 uy"), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("rigid-body"), std::string::npos) << message;
+    EXPECT_EQ(message.find("; mechanism"), std::string::npos) << message;  // one free motion
+  }
+}
+
 TEST(StaticSolver, GroundReactionsBalanceGravity) {
   Model model;
   model.addNode(1, tvd::Vector3(0, 0, 1));

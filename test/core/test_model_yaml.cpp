@@ -12,6 +12,8 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/model.h"
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
 
 #ifndef TVD_SOURCE_DIR
@@ -302,6 +304,24 @@ TEST_F(ModelYamlTest, FreeFreeBeamExample) {
   EXPECT_TRUE(model.rigid_joints.empty());
   EXPECT_NEAR(model.totalMass(), 0.54, kMassTolerance);
   EXPECT_EQ(model.dof_sets.at("ends").size(), 2u);
+}
+
+// Its statics are refused naming the six rigid-body motions: the zero-energy vectors the
+// eigen-solver returns are mixtures of them (they were named as one translation and five
+// "mechanisms").
+TEST_F(ModelYamlTest, FreeFreeBeamStaticsNameTheSixRigidBodyMotions) {
+  const fem::System system =
+      fem::assemble(loadModelYaml(sourcePath("config/models/free_free_beam.yaml")));
+  try {
+    fem::solveStatic(system, system.gravity_load);
+    FAIL() << "expected a SolverError";
+  } catch (const SolverError& e) {
+    const std::string message = e.what();
+    for (const char* motion : {"translation along x", "translation along y", "translation along z",
+                               "rotation about x", "rotation about y", "rotation about z"})
+      EXPECT_NE(message.find(std::string("rigid-body ") + motion), std::string::npos) << message;
+    EXPECT_EQ(message.find("mechanism"), std::string::npos) << message;
+  }
 }
 
 TEST_F(ModelYamlTest, DocumentedExampleLoads) {
