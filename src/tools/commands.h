@@ -5,12 +5,15 @@
 
 #include "tracked_vehicle_dynamics/io/file_type.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdint>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -71,6 +74,21 @@ inline CLI::Validator finiteNumber() {
   return finiteNumberWhere([](double) { return true; }, "a finite number", "FINITE");
 }
 
+/// Empty when a file can be created in `dir`, else why not. access(W_OK) is not enough: it says
+/// yes to root on /sys or /proc, where creating a file fails, and the run would then lose its
+/// results at the end. So a file is made and removed (O_EXCL: never one that exists).
+inline std::string cannotCreateIn(const std::filesystem::path& dir) {
+  const std::filesystem::path probe =
+      dir / (".tvd_write_probe." + std::to_string(static_cast<long>(::getpid())));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0)
+    return std::string("a file cannot be created in the directory ") + dir.string() + ": " +
+           std::strerror(errno);
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return std::string();
+}
+
 /// An output file, checked before any work: one of `extensions` (".csv", any case) and in a
 /// directory that exists and is writable.
 inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
@@ -92,6 +110,8 @@ inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
           return "'" + text + "': the directory " + dir.string() + " does not exist";
         if (::access(dir.c_str(), W_OK) != 0)
           return "'" + text + "': the directory " + dir.string() + " is not writable";
+        if (const std::string why = cannotCreateIn(dir); !why.empty())
+          return "'" + text + "': " + why;
         return std::string();
       },
       "FILE");
@@ -118,6 +138,8 @@ inline CLI::Validator outputDirectory() {
           return "'" + text + "': " + existing.string() + " is not a directory";
         if (::access(existing.c_str(), W_OK) != 0)
           return "'" + text + "': the directory " + existing.string() + " is not writable";
+        if (const std::string why = cannotCreateIn(existing); !why.empty())
+          return "'" + text + "': " + why;
         return std::string();
       },
       "DIR");

@@ -1691,6 +1691,13 @@ class TvdCliTest(unittest.TestCase):
         sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache]
         self.assert_input_error(sim + ["--out", self.path("no_dir/x.csv")], "does not exist")
         self.assert_input_error(sim + ["--out", self.path("x.json")], "must end in .csv or .mat")
+        # A directory where access(W_OK) says yes to root but no file can be made (sysfs): it
+        # once ran the whole job and lost the results at the end.
+        if os.path.isdir("/sys/kernel"):
+            why = ("a file cannot be created in the directory /sys/kernel" if os.geteuid() == 0
+                   else "the directory /sys/kernel is not writable")
+            self.assert_input_error(sim + ["--out", "/sys/kernel/x.csv"], why)
+            self.assert_input_error(["modes", "--vehicle", VEHICLE, "--out", "/sys/kernel/new"], why)
         self.assert_input_error(sim + ["--dt", "nan"], "--dt", "[1e-05, 0.01] s")
         self.assert_input_error(sim + ["--dt", "0.05"], "--dt")
         self.assert_input_error(sim + ["--lateral-offset", "nan"], "--lateral-offset", "finite")
