@@ -4,7 +4,8 @@
 #   play_track_bag.sh TRACK SPEED BAG_DIR [rosbag play options...]
 # TRACK: long_hill | separated_waves | oop_waves | half_round:H | a terrain file (.csv/.yaml, e.g. from
 # `tvd terrain --iso8608 C`). SPEED: km/h, or a speed-profile CSV (time_s,speed_kmh). The bag is
-# BAG_DIR/NAME_SPEEDkmh.bag (NAME_PROFILE.bag for a profile), NAME the track or file stem.
+# BAG_DIR/NAME_SPEEDkmh.bag (NAME_PROFILE.bag for a profile), NAME the track or file stem; from a
+# terrain or profile file NAME_SPEEDkmh.HASH.bag, HASH (8 hex) naming the files' paths and contents.
 # Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
 # With TVD_BAG_MAKE_ONLY=1 the bag is only written (when needed) and its path printed.
 # The options are those of rosbag's play executable (`rosbag play`'s; /usr/lib/rosbag/play --help),
@@ -40,7 +41,7 @@ stop() {  # stop SIGNAL STATUS: stops the child, exits with STATUS
     # play's terminal settings (it reads keys) are not restored by SIGTERM.
     if [ -n "$stty_saved" ]; then stty "$stty_saved" 2>/dev/null || true; fi
   fi
-  if [ -n "$tmp" ]; then rm -f "$tmp"; fi
+  if [ -n "$tmp" ]; then rm -f "$tmp" "$tmp.source"; fi
   exit "$2"
 }
 trap 'stop INT 130' INT
@@ -84,23 +85,29 @@ mkdir -p "$dir"
 # The devel/install space's executable (rosrun may see several build trees in the source).
 make_bag=$(catkin_find --without-underlays --libexec tracked_vehicle_dynamics tvd_make_bag \
   2>/dev/null | head -n 1)
-# What the bag was written from, kept beside it (BAG.source): each terrain or profile file's
-# absolute path and content hash, else the built-in track or speed as given. The bag is named by
-# the file's stem, so another file of that name (elsewhere, or edited with its old time stamp,
-# e.g. by cp -p) must not reuse it: a bag whose record differs is written again. So is one older
-# than tvd_make_bag itself (a rebuilt track definition or patch layout).
+# What the bag is written from: each terrain or profile file's absolute path and content hash,
+# else the built-in track or speed as given. A bag from a file carries a hash of this record in
+# its name, so another file of the same stem (elsewhere, or edited under its old time stamp, e.g.
+# by cp -p) gets a bag of its own, and runs in parallel never share a name for different
+# contents; BAG.source keeps the record for a look. A bag older than tvd_make_bag itself (a
+# rebuilt track definition or patch layout) is written again.
 source_of() {
   if [ -f "$1" ]; then
-    printf '%s sha256:%s\n' "$(realpath "$1")" "$(sha256sum <"$1" | cut -d' ' -f1)"
+    local real hash
+    real=$(realpath "$1") && hash=$(sha256sum <"$1") ||
+      { echo "play_track_bag.sh: cannot read $1" >&2; return 2; }
+    printf '%s sha256:%s\n' "$real" "${hash%% *}"
   else
     printf '%s\n' "$1"
   fi
 }
-source_record="$(source_of "$track"; source_of "$speed")"
-fresh() {
-  [ -s "$bag" ] && [ -f "$bag.source" ] && [ "$(cat "$bag.source")" = "$source_record" ] &&
-    ! { [ -f "$make_bag" ] && [ "$make_bag" -nt "$bag" ]; }
-}
+source_record=$(source_of "$track")
+source_record+=$'\n'$(source_of "$speed")
+if [ -f "$track" ] || [ -f "$speed" ]; then
+  key=$(printf '%s\n' "$source_record" | sha256sum)
+  bag="$dir/$run.${key:0:8}.bag"
+fi
+fresh() { [ -s "$bag" ] && ! { [ -f "$make_bag" ] && [ "$make_bag" -nt "$bag" ]; }; }
 if ! fresh; then
   tmp="$dir/.$run.$$.bag"
   if [ -z "$make_bag" ] || [ ! -x "$make_bag" ]; then
@@ -108,10 +115,10 @@ if ! fresh; then
     exit 2
   fi
   run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp"
-  rm -f "$bag.source"
+  printf '%s\n' "$source_record" >"$tmp.source"
+  mv -f "$tmp.source" "$bag.source"
   mv -f "$tmp" "$bag"
   tmp=""
-  printf '%s\n' "$source_record" >"$bag.source"
 fi
 # TVD_BAG_MAKE_ONLY=1: the bag is written (or found current) and named, not played (bags made
 # ahead of a session; the tests).

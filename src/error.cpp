@@ -19,4 +19,15 @@ std::string brief(double value) {
   return buffer;
 }
 
+std::string beyond(double value, double bound) {
+  const std::string shown_bound = brief(bound);
+  std::string shown = brief(value);
+  char buffer[64];
+  for (int digits = 7; shown == shown_bound && value != bound && digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+    shown = buffer;
+  }
+  return shown;
+}
+
 }  // namespace tracked_vehicle_dynamics

@@ -25,8 +25,13 @@ class SolverError : public Error {
 };
 
 /// A number for an error message: six significant digits ("3.5", "1.2e-05"), not std::to_string's
-/// fixed six decimals ("3.500000"); up to ten when that gives the value exactly ("200.0001", not
-/// "200": a rejected value is never shown as the bound it breaks).
+/// fixed six decimals ("3.500000"); up to ten when that gives the value exactly, so a value typed
+/// with up to ten digits reads as typed ("200.0001", not "200").
 std::string brief(double value);
+
+/// `value` for a message that rejects it for passing `bound`: brief(value), with digits added (up
+/// to 17) until it no longer reads as brief(bound) ("200.00000001" against 200, or a converted
+/// 200.0001 km/h that is not exactly that double).
+std::string beyond(double value, double bound);
 
 }  // namespace tracked_vehicle_dynamics

@@ -41,8 +41,8 @@ std::string describeFreeMotions(const System& system) {
   identity.setIdentity();
   const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff();
   ModalRequest request;
-  // Up to six rigid-body motions and as many mechanisms again.
-  request.count = static_cast<int>(std::min<DofIndex>(12, n));
+  // Up to six rigid-body motions and a few mechanisms (the message says when there may be more).
+  request.count = static_cast<int>(std::min<DofIndex>(24, n));
   request.shift = -1e-8 * scale;
   std::ostringstream out;
   ModalBasis basis;
@@ -89,22 +89,35 @@ std::string describeFreeMotions(const System& system) {
   int described = 0;
   for (const int r : free_rigid)
     out << (described++ ? "; " : "") << kRigidNames[r];
-  // Mechanisms: the free space with the named rigid motions taken out.
+  // Mechanisms: the free space with the named rigid motions taken out. Its own basis is as
+  // arbitrary as the eigen-solver's, so it is described as a whole: how many, and the DOFs that
+  // move in it (row norms of its orthonormal basis, the larger ones).
   const Matrix rest = space - named * (named.transpose() * space);
   const Eigen::JacobiSVD<Matrix> svd(rest, Eigen::ComputeThinU);
-  for (Eigen::Index k = 0; k < svd.singularValues().size(); ++k) {
-    if (svd.singularValues()(k) < 0.5)
-      continue;  // a unit vector of the space: ~1 when free
-    const Vector phi = svd.matrixU().col(k);
+  const Eigen::Index mechanisms = (svd.singularValues().array() > 0.5).count();  // ~1 when free
+  if (mechanisms > 0) {
+    const Vector moves = svd.matrixU().leftCols(mechanisms).rowwise().norm();
     std::vector<DofIndex> order(n);
     std::iota(order.begin(), order.end(), 0);
-    const int shown = static_cast<int>(std::min<DofIndex>(4, n));
-    std::partial_sort(order.begin(), order.begin() + shown, order.end(),
-                      [&](DofIndex a, DofIndex b) { return std::abs(phi(a)) > std::abs(phi(b)); });
-    out << (described++ ? "; " : "") << "mechanism involving ";
-    for (int i = 0; i < shown; ++i)
+    std::sort(order.begin(), order.end(),
+              [&](DofIndex a, DofIndex b) { return moves(a) > moves(b); });
+    const double largest = moves(order[0]);
+    std::size_t involved = 0;
+    while (involved < order.size() && moves(order[involved]) >= 0.3 * largest)
+      ++involved;
+    const std::size_t shown = std::min<std::size_t>(involved, 8);
+    out << (described++ ? "; " : "")
+        << (mechanisms == 1 ? std::string("a mechanism")
+                            : std::to_string(mechanisms) + " mechanisms")
+        << " involving ";
+    for (std::size_t i = 0; i < shown; ++i)
       out << (i ? ", " : "") << system.dofs.label(order[i]);
+    if (involved > shown)
+      out << " and " << involved - shown << " more DOFs";
   }
+  // Every vector the solver returned was free: there may be more than it was asked for.
+  if (static_cast<int>(zero.size()) == request.count && request.count < n)
+    out << "; and perhaps more free motions (only the first " << request.count << " were sought)";
   return out.str();
 }
 

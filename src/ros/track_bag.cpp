@@ -37,7 +37,7 @@ void checkOptions(const TrackBagOptions& o) {
           "in (0, " + brief(kMaxTrackBagSpeed) + "] m/s (200 km/h)");
   if (o.speed_profile && o.speed_profile->maxSpeed() > kMaxTrackBagSpeed)
     throw InputError("track bag: the speed profile reaches " +
-                     brief(o.speed_profile->maxSpeed() * 3.6) + " km/h; at most 200 km/h");
+                     beyond(o.speed_profile->maxSpeed() * 3.6, 200.0) + " km/h; at most 200 km/h");
   require(std::isfinite(o.patch_length) && o.patch_length > 0.0, "patch_length", o.patch_length,
           "> 0 m");
   require(std::isfinite(o.lookahead) && o.lookahead >= 0.0, "lookahead", o.lookahead, ">= 0 m");
@@ -106,7 +106,14 @@ TrackRun trackRun(const TrackBagOptions& options) {
   run.end_station = track.endStation() + options.behind;
   const Motion motion(options);
   run.duration = motion.timeAt(run.end_station);
-  if (!std::isfinite(run.duration)) run.duration = options.speed_profile->endTime();  // stopped
+  if (!std::isfinite(run.duration)) {
+    // A profile that stops short ends with it; a constant speed so small that s / v overflows
+    // (a denormal) never arrives.
+    if (!options.speed_profile)
+      throw InputError("track bag: at " + brief(options.speed) + " m/s the run to station " +
+                       brief(run.end_station) + " m never ends: use a higher speed");
+    run.duration = options.speed_profile->endTime();
+  }
   // A bag is replayed in real time: refuse a run that would write millions of timed messages (a
   // terrain file with a stray far station, a crawl speed) instead of filling the disk.
   const double messages = run.duration * (options.speed_rate + options.clock_rate);

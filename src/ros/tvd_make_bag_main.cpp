@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
       !(std::isfinite(speed_kmh) && speed_kmh > 0.0 && speed_kmh <= rl::kMaxTrackBagSpeed * 3.6)) {
     std::cerr << "tvd_make_bag: error: --speed-kmh must be in (0, "
               << tracked_vehicle_dynamics::brief(rl::kMaxTrackBagSpeed * 3.6) << "], got "
-              << tracked_vehicle_dynamics::brief(speed_kmh) << "\n";
+              << tracked_vehicle_dynamics::beyond(speed_kmh, rl::kMaxTrackBagSpeed * 3.6) << "\n";
     return 2;
   }
   options.speed = speed_kmh / 3.6;

@@ -5,7 +5,6 @@
 
 #include "tracked_vehicle_dynamics/io/file_type.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
@@ -76,16 +76,15 @@ inline CLI::Validator finiteNumber() {
 
 /// Empty when a file can be created in `dir`, else why not. access(W_OK) is not enough: it says
 /// yes to root on /sys or /proc, where creating a file fails, and the run would then lose its
-/// results at the end. So a file is made and removed (O_EXCL: never one that exists).
+/// results at the end. So a file is made and removed (mkstemp: never one that exists).
 inline std::string cannotCreateIn(const std::filesystem::path& dir) {
-  const std::filesystem::path probe =
-      dir / (".tvd_write_probe." + std::to_string(static_cast<long>(::getpid())));
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  std::string name = (dir / ".tvd_write_probe.XXXXXX").string();
+  const int fd = ::mkstemp(name.data());  // a fresh name: never a file that exists
   if (fd < 0)
     return std::string("a file cannot be created in the directory ") + dir.string() + ": " +
            std::strerror(errno);
   ::close(fd);
-  ::unlink(probe.c_str());
+  ::unlink(name.c_str());
   return std::string();
 }
 

@@ -124,7 +124,7 @@ void run(const FrfOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
     throw InputError("frf: --speed-kmh must be in [0, 200] (0: synchronous), got " +
-                     brief(opt.speed_kmh));
+                     beyond(opt.speed_kmh, 200.0));
   if (!(opt.max_hz > 0) || !(opt.step_hz > 0) || opt.max_hz / opt.step_hz > 1e6)
     throw InputError("frf: --max-hz and --step-hz must be positive, with at most 1e6 points");
   const Vector hz = frequencyGrid(opt.max_hz, opt.step_hz);

@@ -181,7 +181,8 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
 void run(const SimulateOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
-    throw InputError("simulate: --speed-kmh must be in (0, 200], got " + brief(opt.speed_kmh));
+    throw InputError("simulate: --speed-kmh must be in (0, 200], got " +
+                     beyond(opt.speed_kmh, 200.0));
   if (opt.method != "modal" && opt.max_mode_hz >= 0)
     throw InputError("simulate: --max-mode-hz applies to --method modal only (the exact method "
                      "integrates every mode)");
@@ -189,7 +190,9 @@ void run(const SimulateOptions& opt) {
   if (!opt.speed_profile.empty()) {
     profile = dynamics::loadSpeedProfile(opt.speed_profile);
     if (profile->maxSpeed() * 3.6 > 200)
-      throw InputError(opt.speed_profile + ": speeds above 200 km/h are outside the model's use");
+      throw InputError(opt.speed_profile +
+                       ": speeds above 200 km/h are outside the model's use (it reaches " +
+                       beyond(profile->maxSpeed() * 3.6, 200.0) + " km/h)");
   }
   const terrain::Terrain track = terrain::loadTrack(opt.track);
 

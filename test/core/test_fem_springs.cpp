@@ -337,10 +337,49 @@ TEST(StaticSolver, SingularStiffnessNamesAMechanismByItsDofs) {
     FAIL() << "expected a SolverError";
   } catch (const tvd::SolverError& e) {
     const std::string message = e.what();
-    EXPECT_NE(message.find("free motion: mechanism involving node 2 uy"), std::string::npos)
+    EXPECT_NE(message.find("free motion: a mechanism involving node 2 uy ("), std::string::npos)
         << message;
     EXPECT_EQ(message.find("rigid-body"), std::string::npos) << message;
-    EXPECT_EQ(message.find("; mechanism"), std::string::npos) << message;  // one free motion
+    EXPECT_EQ(message.find("more"), std::string::npos) << message;  // one free motion, one DOF
+  }
+}
+
+TEST(StaticSolver, ManyFreeMotionsAreCountedNotMixed) {
+  // N masses on vertical ground springs, free along x and y: 2N free motions, of which the
+  // whole's translations along x and y and rotation about z are rigid-body ones; the other
+  // 2N - 3 are mechanisms of all the x and y DOFs. Beyond the 24 sought the message says so.
+  for (const int count : {10, 13}) {
+    SCOPED_TRACE(count);
+    Model model;
+    for (int n = 1; n <= count; ++n) {
+      model.addNode(n, tvd::Vector3(n, 0.3 * (n % 3), 0));
+      model.masses.push_back(pointMass(n, 1.0));
+      model.springs.push_back(springAlong(n, tvd::fem::kGround, 2, 1e4));
+      tvd::fem::FixedDofs rotations;
+      rotations.node = n;
+      rotations.dofs = {false, false, false, true, true, true};
+      model.fixed.push_back(rotations);
+    }
+    const tvd::fem::System sys = tvd::fem::assemble(model);
+    try {
+      tvd::fem::solveStatic(sys, sys.gravity_load);
+      FAIL() << "expected a SolverError";
+    } catch (const tvd::SolverError& e) {
+      const std::string message = e.what();
+      if (count == 10) {
+        for (const char* motion :
+             {"rigid-body translation along x", "rigid-body translation along y",
+              "rigid-body rotation about z; 17 mechanisms involving node"})
+          EXPECT_NE(message.find(motion), std::string::npos) << message;
+        EXPECT_NE(message.find(" and 12 more DOFs"), std::string::npos) << message;  // 20 - 8
+        EXPECT_EQ(message.find("uz"), std::string::npos) << message;  // held by its spring
+        EXPECT_EQ(message.find("perhaps more"), std::string::npos) << message;
+      } else {
+        EXPECT_NE(message.find("perhaps more free motions (only the first 24 were sought)"),
+                  std::string::npos)
+            << message;
+      }
+    }
   }
 }
 

@@ -332,6 +332,11 @@ TEST(Brief, ShowsAGivenValueExactlyAndAComputedOneShort) {
   EXPECT_EQ(brief(1.0 / 3.0), "0.333333");
   EXPECT_EQ(brief(kInf), "inf");
   EXPECT_EQ(brief(kNaN).find("nan") != std::string::npos, true);
+  // beyond(): the rejected value never reads as the bound, however many digits that takes.
+  EXPECT_EQ(beyond(200.00000001, 200.0), "200.00000001");
+  EXPECT_EQ(beyond(200.0001 / 3.6 * 3.6, 200.0).substr(0, 8), "200.0001");
+  EXPECT_EQ(beyond(250.0, 200.0), "250");
+  EXPECT_EQ(beyond(200.0, 200.0), "200");
 }
 
 }  // namespace

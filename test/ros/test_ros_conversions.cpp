@@ -459,6 +459,10 @@ TEST(TrackBag, InvalidOptionsNameTheField) {
   options.clock_rate = 0.0;
   const std::string slow = inputErrorOf([&] { trackRun(options); });
   EXPECT_NE(slow.find("at most 10000 s"), std::string::npos) << slow;
+  // So slow that s / v overflows (a denormal): refused, not a run of no time.
+  options.speed = 1e-320 / 3.6;
+  const std::string never = inputErrorOf([&] { trackRun(options); });
+  EXPECT_NE(never.find("never ends"), std::string::npos) << never;
   options.speed = 5.0;
   options.track = "moon_craters";
   EXPECT_THROW(writeTrackBag(temporaryPath("never.bag"), options), InputError);

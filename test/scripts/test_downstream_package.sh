@@ -38,8 +38,9 @@ check() {
     echo "the downstream package does not build against $devel"
     return 1
   fi
+  # The package's own vehicle: the source tree's for a devel space, the installed one else.
   if ! "$work/devel/lib/tvd_downstream_check/downstream_check" \
-      "$here/config/vehicles/paper_vehicle.yaml"; then
+      "$(rospack find tracked_vehicle_dynamics)/config/vehicles/paper_vehicle.yaml"; then
     echo "the downstream package's program failed"
     return 1
   fi

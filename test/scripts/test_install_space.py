@@ -70,19 +70,31 @@ class InstallSpaceTest(unittest.TestCase):
         os.makedirs(stage)
         env = dict(os.environ, DESTDIR=stage)
         result = subprocess.run(["cmake", "--install", BUILD], env=env, capture_output=True,
-                                text=True, timeout=300)
+                                text=True, timeout=120)
         if result.returncode != 0:
             raise AssertionError(f"cmake --install {BUILD} failed:\n{result.stdout}\n"
                                  f"{result.stderr}")
         cls.prefix = stage + cache_value(BUILD, "CMAKE_INSTALL_PREFIX")
         cls.share = os.path.join(cls.prefix, "share", PACKAGE)
         make_read_only(stage, writable=False)
+        cls.stage = stage
         cls.home = os.path.join(cls.work, "home")
         cls.ros_home = os.path.join(cls.work, "ros_home")
         os.makedirs(cls.home)
         # Nothing of the calling environment (ctest's, the devel space's): the install space only.
         cls.env = {"HOME": cls.home, "PATH": "/usr/bin:/bin", "LANG": "C.UTF-8",
                    "ROS_HOME": cls.ros_home, "MPLBACKEND": "Agg"}
+
+    @staticmethod
+    def listing(root):
+        """{path: (size, mtime)} of every file under root: what a run wrote there shows."""
+        files = {}
+        for directory, _, names in os.walk(root):
+            for name in names:
+                path = os.path.join(directory, name)
+                info = os.lstat(path)
+                files[path] = (info.st_size, info.st_mtime_ns)
+        return files
 
     @classmethod
     def tearDownClass(cls):
@@ -148,14 +160,23 @@ class InstallSpaceTest(unittest.TestCase):
         # here with the install space's exported CMake configuration.
         result = subprocess.run([os.path.join(HERE, "test_downstream_package.sh"), self.prefix,
                                  self.work], env=self.env, capture_output=True, text=True,
-                                timeout=600)
+                                timeout=300)
         self.assertEqual(result.returncode, 0, f"{result.stdout}\n{result.stderr}")
         self.assertIn(f"against {self.prefix}", result.stdout)
         found = cache_value(os.path.join(self.work, "downstream_check", "build"),
                             f"{PACKAGE}_DIR")
         self.assertEqual(found, os.path.join(self.share, "cmake"))
+        # ... and runs on the installed libraries (a stale copy under the configured prefix, e.g.
+        # /usr/local/lib, must not be what it loads).
+        program = os.path.join(self.work, "downstream_check", "devel", "lib",
+                               "tvd_downstream_check", "downstream_check")
+        libraries = self.run_installed("ldd", program).stdout
+        for library in ("libtvd_core.so", "libtvd_ros.so"):
+            line = next((l for l in libraries.splitlines() if library in l), "")
+            self.assertIn(os.path.join(self.prefix, "lib", library), line, libraries)
 
     def test_the_installed_launch_file_starts_the_node_from_a_read_only_install(self):
+        before = self.listing(self.stage)
         port = free_port()
         env = dict(self.env, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1")
         launch = subprocess.Popen(
@@ -169,7 +190,7 @@ class InstallSpaceTest(unittest.TestCase):
                    and launch.poll() is None and time.monotonic() < deadline):
                 time.sleep(0.5)
             # The first start reduces the tracked model (seconds) and caches it under $ROS_HOME.
-            echo = self.run_installed("rostopic", "echo", "-n", "1", "/tf", timeout=240,
+            echo = self.run_installed("rostopic", "echo", "-n", "1", "/tf", timeout=120,
                                       check=False, env=env)
             alive = launch.poll() is None
         finally:
@@ -177,11 +198,17 @@ class InstallSpaceTest(unittest.TestCase):
             try:
                 log, _ = launch.communicate(timeout=60)
             except subprocess.TimeoutExpired:
+                # roslaunch starts the master and nodes in sessions of their own: end them by
+                # what they run.
                 os.killpg(launch.pid, 9)
+                subprocess.run(["pkill", "-9", "-f", f"-p {port}|{self.prefix}"], check=False)
                 log, _ = launch.communicate()
         self.assertTrue(alive, f"roslaunch stopped:\n{log}")
         self.assertEqual(echo.returncode, 0, f"{echo.stdout}\n{echo.stderr}\n{log}")
         self.assertIn('child_frame_id: "base_link"', echo.stdout, echo.stdout)
+        # Nothing was written into the install (as root the read-only mode does not stop a
+        # write: the listing does).
+        self.assertEqual(self.listing(self.stage), before)
         cache = os.path.join(self.ros_home, PACKAGE)
         self.assertTrue(os.path.isdir(cache) and any(f.endswith(".mat") for f in os.listdir(cache)),
                         f"no reduced model cached under {cache}:\n{log}")

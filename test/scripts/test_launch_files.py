@@ -162,7 +162,7 @@ class LaunchFilesTest(unittest.TestCase):
                                              "bag_dir:=/tmp/bags", *args))
             self.assertEqual(recorder[recorder.index("-O") + 1], "/tmp/bags/" + name, args)
 
-    def test_a_track_bag_is_written_again_from_another_file_of_the_same_name(self):
+    def test_each_terrain_file_gets_a_track_bag_of_its_own(self):
         # replay_track.launch's player names a terrain file's bag by the file's stem.
         script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
             os.path.abspath(__file__)))), "scripts", "play_track_bag.sh")
@@ -181,20 +181,32 @@ class LaunchFilesTest(unittest.TestCase):
                                     capture_output=True, text=True, timeout=120)
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             bag = result.stdout.strip().splitlines()[-1]
-            self.assertEqual(bag, os.path.join(bag_dir, "road_20kmh.bag"))
-            with open(bag, "rb") as f, open(bag + ".source") as g:
-                return f.read(), g.read(), os.stat(bag).st_mtime_ns
+            # NAME_SPEEDkmh.HASH.bag: the hash names the file's path and content.
+            self.assertRegex(bag, "^" + re.escape(os.path.join(bag_dir, "road_20kmh.")) +
+                             "[0-9a-f]{8}[.]bag$")
+            with open(bag + ".source") as f:
+                return bag, f.read(), os.stat(bag).st_mtime_ns
 
         flat, flat_source, _ = make(roads["flat"])
         self.assertIn(os.path.realpath(roads["flat"]) + " sha256:", flat_source)
-        bump, bump_source, written = make(roads["bump"])  # same bag name, older file
+        bump, bump_source, written = make(roads["bump"])  # same stem, older file
         self.assertIn(os.path.realpath(roads["bump"]) + " sha256:", bump_source)
         self.assertNotEqual(bump, flat)
-        self.assertEqual(make(roads["bump"])[2], written)  # current: not written again
+        with open(bump, "rb") as f, open(flat, "rb") as g:
+            self.assertNotEqual(f.read(), g.read())
+        self.assertEqual(make(roads["bump"])[:3], (bump, bump_source, written))  # not rewritten
         with open(roads["bump"], "a") as f:  # edited, its old time stamp kept (cp -p, a checkout)
             f.write("31,0\n")
         os.utime(roads["bump"], (1e9, 1e9))
-        self.assertNotEqual(make(roads["bump"])[1], bump_source)
+        edited, edited_source, _ = make(roads["bump"])
+        self.assertNotEqual(edited, bump)
+        self.assertNotEqual(edited_source, bump_source)
+        # A built-in track keeps its plain name.
+        result = subprocess.run([ENV_SH, script, "half_round:0.1", "20", bag_dir],
+                                env=dict(os.environ, TVD_BAG_MAKE_ONLY="1"),
+                                capture_output=True, text=True, timeout=120)
+        self.assertEqual(result.stdout.strip().splitlines()[-1],
+                         os.path.join(bag_dir, "half_round:0.1_20kmh.bag"), result.stderr)
 
     def test_footprint_frame_and_publish_odom_tf(self):
         p = params("vehicle_dynamics.launch")
