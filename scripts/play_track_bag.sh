@@ -108,6 +108,21 @@ if [ -f "$track" ] || [ -f "$speed" ]; then
   bag="$dir/$run.${key:0:8}.bag"
 fi
 fresh() { [ -s "$bag" ] && ! { [ -f "$make_bag" ] && [ "$make_bag" -nt "$bag" ]; }; }
+# The node rejects speed messages above its ~max_speed (30 m/s in the parameter file): a bag
+# faster than that would replay a vehicle standing at station 0. replay_track.launch names the
+# node (TVD_REPLAY_NODE, resolved in the player's namespace); its parameter is on the master
+# before any node starts. A constant speed is checked here (a profile's are not).
+if [ -n "${TVD_REPLAY_NODE:-}" ] && [[ "$speed" != *.csv ]]; then
+  max_speed=$(rosparam get "$TVD_REPLAY_NODE/max_speed" 2>/dev/null || true)
+  if [[ "$max_speed" =~ ^[0-9.eE+-]+$ ]] &&
+      awk -v v="$speed" -v m="$max_speed" 'BEGIN { exit !(v / 3.6 > m) }'; then
+    echo "play_track_bag.sh: the bag drives at $speed km/h, above $TVD_REPLAY_NODE's ~max_speed" \
+      "$max_speed m/s ($(awk -v m="$max_speed" 'BEGIN { printf "%.4g", m * 3.6 }') km/h), which" \
+      "would reject every speed message; raise max_speed in the node's parameter file" \
+      "(config:=FILE)" >&2
+    exit 2
+  fi
+fi
 if ! fresh; then
   tmp="$dir/.$run.$$.bag"
   if [ -z "$make_bag" ] || [ ! -x "$make_bag" ]; then

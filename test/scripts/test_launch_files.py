@@ -11,9 +11,11 @@ import os
 import re
 import shlex
 import shutil
+import socket
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 import yaml
@@ -207,6 +209,41 @@ class LaunchFilesTest(unittest.TestCase):
                                 capture_output=True, text=True, timeout=120)
         self.assertEqual(result.stdout.strip().splitlines()[-1],
                          os.path.join(bag_dir, "half_round:0.1_20kmh.bag"), result.stderr)
+
+    def test_the_player_refuses_a_bag_faster_than_the_nodes_max_speed(self):
+        # Else the node rejects every speed message and the replay records a vehicle at rest.
+        script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+            os.path.abspath(__file__)))), "scripts", "play_track_bag.sh")
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            port = s.getsockname()[1]
+        env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
+                   ROS_HOME=os.path.join(self.work, "ros_home"), TVD_BAG_MAKE_ONLY="1")
+        master = subprocess.Popen([ENV_SH, "rosmaster", "--core", "-p", str(port)], env=env,
+                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                  start_new_session=True)
+        try:
+            deadline = time.monotonic() + 30
+            while subprocess.run([ENV_SH, "rosparam", "set", "/ns/vehicle_dynamics/max_speed",
+                                  "20.0"], env=env, capture_output=True).returncode != 0:
+                self.assertLess(time.monotonic(), deadline, "no master")
+                time.sleep(0.3)
+
+            def play(speed):
+                return subprocess.run([ENV_SH, script, "half_round:0.1", speed,
+                                       os.path.join(self.work, "fast_bags")],
+                                      env=dict(env, ROS_NAMESPACE="/ns",
+                                               TVD_REPLAY_NODE="vehicle_dynamics"),
+                                      capture_output=True, text=True, timeout=120)
+
+            fast = play("80")  # 22.2 m/s
+            self.assertEqual(fast.returncode, 2, fast.stdout + fast.stderr)
+            self.assertIn("the bag drives at 80 km/h, above vehicle_dynamics's ~max_speed 20.0 "
+                          "m/s (72 km/h)", fast.stderr)
+            self.assertTrue(play("72").returncode == 0)  # at the limit
+        finally:
+            os.killpg(master.pid, 15)
+            master.wait(timeout=30)
 
     def test_footprint_frame_and_publish_odom_tf(self):
         p = params("vehicle_dynamics.launch")
