@@ -55,7 +55,7 @@ std::string describeFreeMotions(const System& system) {
   // eigen-solver: a free-free beam's six come out as mixtures. So each rigid-body motion r is
   // tested against the space (the part of r outside it, |r - N N^T r| / |r|, N orthonormal) and
   // named when it lies in it; what the space holds beyond the rigid motions named are mechanisms,
-  // each described by the DOFs that move most in it.
+  // counted and described together below.
   std::vector<int> zero;
   for (int m = 0; m < basis.count(); ++m)
     if (basis.eigenvalues(m) <= 1e-9 * scale)

@@ -8,8 +8,9 @@
 namespace tracked_vehicle_dynamics {
 namespace fem {
 
-/// Finds the zero-stiffness motions of K (up to 6) and describes each: "rigid-body translation
-/// along x", "rigid-body rotation about z", or "mechanism involving node 3 uy, node 4 uy, ...".
+/// Finds the zero-stiffness motions of K (up to 24) and describes them: each rigid-body motion of
+/// the whole that is free ("rigid-body translation along x", "rigid-body rotation about z"), then
+/// the rest as mechanisms by the DOFs they move ("2 mechanisms involving node 3 uy, node 4 uy").
 std::string describeFreeMotions(const System& system);
 
 /// The six rigid-body motions of the active DOFs about the centroid of the nodes [n x 6]
