@@ -24,6 +24,9 @@ import junit_runner
 
 PACKAGE = "tracked_vehicle_dynamics"
 NODE = "/vehicle_dynamics"
+# replay_track.launch's player (run from the source tree, as rosrun runs it from the devel space)
+PLAY_TRACK_BAG = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+    os.path.abspath(__file__)))), "scripts", "play_track_bag.sh")
 ENV_SH = None  # set from --env-sh: the devel space's env.sh, which finds the package
 
 
@@ -166,8 +169,7 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_each_terrain_file_gets_a_track_bag_of_its_own(self):
         # replay_track.launch's player names a terrain file's bag by the file's stem.
-        script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
-            os.path.abspath(__file__)))), "scripts", "play_track_bag.sh")
+        script = PLAY_TRACK_BAG
         bag_dir = os.path.join(self.work, "bags")
         roads = {}
         for sub, rows in (("bump", "0,0\n10,0\n10.5,0.2\n11,0\n30,0\n"), ("flat", "0,0\n30,0\n")):
@@ -212,8 +214,7 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_the_player_refuses_a_bag_faster_than_the_nodes_max_speed(self):
         # Else the node rejects every speed message and the replay records a vehicle at rest.
-        script = os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
-            os.path.abspath(__file__)))), "scripts", "play_track_bag.sh")
+        script = PLAY_TRACK_BAG
         with socket.socket() as s:
             s.bind(("127.0.0.1", 0))
             port = s.getsockname()[1]
