@@ -111,14 +111,19 @@ fresh() { [ -s "$bag" ] && ! { [ -f "$make_bag" ] && [ "$make_bag" -nt "$bag" ];
 # The node rejects speed messages above its ~max_speed (30 m/s in the parameter file): a bag
 # faster than that would replay a vehicle standing at station 0. replay_track.launch names the
 # node (TVD_REPLAY_NODE, resolved in the player's namespace); its parameter is on the master
-# before any node starts. A constant speed is checked here (a profile's are not).
-if [ -n "${TVD_REPLAY_NODE:-}" ] && [[ "$speed" != *.csv ]]; then
+# before any node starts. tvd_make_bag reads the speed or profile as it would for the bag and
+# gives the run's highest speed (a profile's largest sample).
+if [ -n "${TVD_REPLAY_NODE:-}" ] && [ -x "$make_bag" ]; then
   max_speed=$(rosparam get "$TVD_REPLAY_NODE/max_speed" 2>/dev/null || true)
+  peak=$("$make_bag" "${speed_args[@]}" --peak-speed) || exit 2
   if [[ "$max_speed" =~ ^[0-9.eE+-]+$ ]] &&
-      awk -v v="$speed" -v m="$max_speed" 'BEGIN { exit !(v / 3.6 > m) }'; then
-    echo "play_track_bag.sh: the bag drives at $speed km/h, above $TVD_REPLAY_NODE's ~max_speed" \
-      "$max_speed m/s ($(awk -v m="$max_speed" 'BEGIN { printf "%.4g", m * 3.6 }') km/h), which" \
-      "would reject every speed message; raise max_speed in the node's parameter file" \
+      awk -v v="$peak" -v m="$max_speed" 'BEGIN { exit !(v > m) }'; then
+    what="drives at $speed km/h"
+    [[ "$speed" == *.csv ]] &&
+      what="reaches $(awk -v v="$peak" 'BEGIN { printf "%.4g", v * 3.6 }') km/h (speed profile $speed)"
+    echo "play_track_bag.sh: the bag $what, above $TVD_REPLAY_NODE's ~max_speed" \
+      "$max_speed m/s ($(awk -v m="$max_speed" 'BEGIN { printf "%.4g", m * 3.6 }') km/h): the node" \
+      "would reject the speed messages above it; raise max_speed in the node's parameter file" \
       "(config:=FILE)" >&2
     exit 2
   fi

@@ -32,7 +32,12 @@ int main(int argc, char** argv) {
                  "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), as tvd simulate")
       ->check(CLI::ExistingFile)
       ->excludes(speed_option);
-  app.add_option("--out", out, "bag file to write")->required();
+  app.add_option("--out", out, "bag file to write (required unless --peak-speed)");
+  bool peak_only = false;
+  app.add_flag("--peak-speed", peak_only,
+               "print the run's highest speed [m/s] (the constant speed, or the profile's largest "
+               "sample) and exit without writing: play_track_bag.sh compares it with the node's "
+               "~max_speed");
   app.add_option("--patch-length", options.patch_length, "terrain per message [m]")
       ->capture_default_str();
   app.add_option("--lookahead", options.lookahead, "terrain published ahead [m]")
@@ -66,11 +71,23 @@ int main(int argc, char** argv) {
               << tracked_vehicle_dynamics::beyond(speed_kmh, rl::kMaxTrackBagSpeed * 3.6) << "\n";
     return 2;
   }
+  if (out.empty() && !peak_only) {
+    std::cerr << "tvd_make_bag: error: --out is required (the bag file to write)\n";
+    return 2;
+  }
   options.speed = speed_kmh / 3.6;
   if (offset->count() > 0)
     options.lateral_offset = lateral_offset;
   try {
-    if (!profile_file.empty()) options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
+    if (!profile_file.empty())
+      options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
+    if (peak_only) {
+      // Full precision: the caller compares it with a parameter, and a profile read in km/h
+      // converts to m/s inexactly.
+      std::printf("%.17g\n",
+                  options.speed_profile ? options.speed_profile->maxSpeed() : options.speed);
+      return 0;
+    }
     ros::Time::init();
     const rl::TrackBagSummary s = rl::writeTrackBag(out, options);
     const std::string how = profile_file.empty()

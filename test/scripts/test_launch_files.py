@@ -242,9 +242,45 @@ class LaunchFilesTest(unittest.TestCase):
             self.assertIn("the bag drives at 80 km/h, above vehicle_dynamics's ~max_speed 20.0 "
                           "m/s (72 km/h)", fast.stderr)
             self.assertTrue(play("72").returncode == 0)  # at the limit
+            # A profile is judged by its fastest sample, read as tvd_make_bag reads it.
+            profile = os.path.join(self.work, "surge.csv")
+            with open(profile, "w") as f:
+                f.write("# speed up, then brake\ntime_s,speed_kmh\n0,30\n2,75\n4,30\n")
+            fast = play(profile)
+            self.assertEqual(fast.returncode, 2, fast.stdout + fast.stderr)
+            self.assertIn(f"the bag reaches 75 km/h (speed profile {profile}), above "
+                          "vehicle_dynamics's ~max_speed 20.0 m/s (72 km/h)", fast.stderr)
+            with open(profile, "w") as f:
+                f.write("time_s,speed_kmh\n0,30\n2,72\n4,30\n")
+            slow = play(profile)
+            self.assertEqual(slow.returncode, 0, slow.stdout + slow.stderr)
         finally:
             os.killpg(master.pid, 15)
             master.wait(timeout=30)
+
+    def test_tvd_make_bag_command_line(self):
+        # Errors: status 2 and one line naming the option; --peak-speed: the run's fastest speed
+        # in m/s, nothing written.
+        def make_bag(*args):
+            return subprocess.run([ENV_SH, "rosrun", PACKAGE, "tvd_make_bag", *args],
+                                  capture_output=True, text=True, timeout=120, cwd=self.work)
+
+        for args, expected in [(["--speed-kmh", "500", "--out", "x.bag"],
+                                "tvd_make_bag: error: --speed-kmh must be in (0, 200], got 500"),
+                               (["--speed-kmh", "abc", "--out", "x.bag"], "tvd_make_bag: error: "),
+                               (["--speed-kmh", "30"], "tvd_make_bag: error: --out is required")]:
+            result = make_bag(*args)
+            self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+            self.assertIn(expected, result.stderr)
+            self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+        result = make_bag("--speed-kmh", "90", "--peak-speed")
+        self.assertEqual((result.returncode, float(result.stdout)), (0, 25.0), result.stderr)
+        profile = os.path.join(self.work, "peak.csv")
+        with open(profile, "w") as f:
+            f.write("time_s,speed_m_s\n0,5\n3,17.5\n6,2\n")
+        result = make_bag("--speed-profile", profile, "--peak-speed")
+        self.assertEqual((result.returncode, float(result.stdout)), (0, 17.5), result.stderr)
+        self.assertEqual(os.listdir(self.work).count("x.bag"), 0)
 
     def test_footprint_frame_and_publish_odom_tf(self):
         p = params("vehicle_dynamics.launch")
