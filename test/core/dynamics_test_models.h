@@ -34,8 +34,8 @@ inline SecondOrderSystem quarterCar(double m_s = 300.0, double m_u = 30.0, doubl
   s.stiffness << k_s, -k_s, -k_s, k_s + k_t;
   s.damping.resize(2, 2);
   s.damping << c_s, -c_s, -c_s, c_s + c_t;
-  s.input_stiffness = Eigen::Vector2d(0.0, k_t);
-  s.input_damping = Eigen::Vector2d(0.0, c_t);
+  s.input_stiffness = (Matrix(2, 1) << 0.0, k_t).finished();
+  s.input_damping = (Matrix(2, 1) << 0.0, c_t).finished();
   s.output = Matrix::Identity(2, 2);
   s.output_names = {"hull uz", "wheel uz"};
   s.input_stations = Vector::Zero(1);

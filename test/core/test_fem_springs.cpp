@@ -226,7 +226,7 @@ TEST(RigidJoint, LongChainIsOneRigidBodyOfBoundedTerms) {
     if (i > 1) {
       tvd::fem::RigidJoint joint;
       joint.master = i - 1;
-      joint.slaves = {i};
+      joint.slaves.push_back(i);
       chain.rigid_joints.push_back(joint);
     }
   }

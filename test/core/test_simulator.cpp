@@ -198,7 +198,7 @@ TEST(Simulator, RigidBodyFreeFallIsExact) {
 TEST(Simulator, StaticEquilibriumIsAFixedPoint) {
   const SecondOrderSystem s = test::randomVehicle(9, 3, 3, 3);
   const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(9);
-  const Vector u0 = Eigen::Vector3d(0.01, -0.02, 0.03);
+  const Vector u0 = (Vector(3) << 0.01, -0.02, 0.03).finished();
   const Vector z0 = staticEquilibrium(s, u0, f_g);
   const Vector load = s.input_stiffness * u0 + f_g;
   EXPECT_LT((s.stiffness * z0.head(9) - load).norm(), 1e-12 * (s.input_stiffness * u0).norm());

@@ -69,8 +69,8 @@ inline reduction::ReducedModel toyModel() {
   sys.output(8, 1) = 1.5 - T::kCogHeight;  // theta_y (p_z - G_z)
   sys.output(10, 0) = 1.0;
   sys.output(10, 1) = -0.5;  // -theta_y (p_x - G_x)
-  sys.input_stations = Eigen::Vector2d(T::kWheelX[0], T::kWheelX[1]);
-  sys.input_lateral = Eigen::Vector2d(0.0, 0.0);
+  sys.input_stations = (Vector(2) << T::kWheelX[0], T::kWheelX[1]).finished();
+  sys.input_lateral = Vector::Zero(2);
   model.gravity_load =
       -kStandardGravity * Vector(Eigen::Vector4d(T::kHullMass, 0.0, T::kWheelMass, T::kWheelMass));
   // Travel inertia per unit forward acceleration: the hull's -M a at its CoG, kCogHeight above
