@@ -4,10 +4,13 @@
 #   play_track_bag.sh TRACK SPEED BAG_DIR [rosbag play options...]
 # TRACK: long_hill | separated_waves | oop_waves | half_round:H | a terrain file (.csv/.yaml, e.g. from
 # `tvd terrain --iso8608 C`). SPEED: km/h, or a speed-profile CSV (time_s,speed_kmh). The bag is
-# BAG_DIR/NAME_SPEEDkmh.bag (NAME_PROFILE.bag for a profile), NAME the track or file stem; from a
-# terrain or profile file NAME_SPEEDkmh.HASH.bag, HASH (8 hex) naming the files' paths and contents.
+# BAG_DIR/NAME_SPEEDkmh.bag for a built-in track at a constant speed, NAME the track; from a
+# terrain file NAME_SPEEDkmh.HASH.bag (NAME its stem), with a speed profile NAME_PROFILE.HASH.bag
+# (PROFILE its stem): HASH (8 hex) is that of the record of both inputs, each file's absolute path
+# and content hash (BAG.source).
 # Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
-# With TVD_BAG_MAKE_ONLY=1 the bag is only written (when needed) and its path printed.
+# With TVD_BAG_MAKE_ONLY=1 the bag is only written (when needed) and its path printed, alone on
+# stdout (tvd_make_bag's summary goes to stderr then).
 # The options are those of rosbag's play executable (`rosbag play`'s; /usr/lib/rosbag/play --help),
 # which runs as this script's child: a SIGINT, SIGTERM or SIGHUP to the script stops it (and
 # tvd_make_bag) before the script ends, so no player is left behind.
@@ -41,7 +44,7 @@ stop() {  # stop SIGNAL STATUS: stops the child, exits with STATUS
     # play's terminal settings (it reads keys) are not restored by SIGTERM.
     if [ -n "$stty_saved" ]; then stty "$stty_saved" 2>/dev/null || true; fi
   fi
-  if [ -n "$tmp" ]; then rm -f "$tmp" "$tmp.source"; fi
+  if [ -n "$tmp" ]; then rm -f "$tmp" "$tmp.source" "$tmp.log"; fi
   exit "$2"
 }
 trap 'stop INT 130' INT
@@ -134,11 +137,26 @@ if ! fresh; then
     echo "play_track_bag.sh: tvd_make_bag not found (build the package and source its setup.bash)" >&2
     exit 2
   fi
-  run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp"
+  status=0
+  run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp" >"$tmp.log" || status=$?
+  # Its summary names the file it wrote, the temporary one: shown with the bag's name.
+  summary=$(<"$tmp.log")
+  summary=${summary//"$tmp"/"$bag"}
+  if [ $status -ne 0 ]; then
+    [ -z "$summary" ] || printf '%s\n' "$summary" >&2
+    rm -f "$tmp" "$tmp.log"
+    exit $status
+  fi
   printf '%s\n' "$source_record" >"$tmp.source"
   mv -f "$tmp.source" "$bag.source"
   mv -f "$tmp" "$bag"
+  rm -f "$tmp.log"
   tmp=""
+  if [ "${TVD_BAG_MAKE_ONLY:-0}" = 1 ]; then
+    printf '%s\n' "$summary" >&2
+  else
+    printf '%s\n' "$summary"
+  fi
 fi
 # TVD_BAG_MAKE_ONLY=1: the bag is written (or found current) and named, not played (bags made
 # ahead of a session; the tests).

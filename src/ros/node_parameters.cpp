@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -69,7 +70,9 @@ class Reader {
     return value;
   }
 
-  int integer(const std::string& key, int fallback, int minimum) const {
+  /// An integer in [minimum, maximum]; `why` follows the message of one above maximum.
+  int integer(const std::string& key, int fallback, int minimum,
+              int maximum = std::numeric_limits<int>::max(), const std::string& why = "") const {
     // Read as XmlRpc: roscpp's getParam(int&) rounds a double (2.5 -> 3) without a word, which
     // would build another model than the one written.
     int value = fallback;
@@ -90,6 +93,9 @@ class Reader {
     if (value < minimum) {
       throw error(key, "must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
     }
+    if (value > maximum)
+      throw error(key,
+                  "must be <= " + std::to_string(maximum) + ", got " + std::to_string(value) + why);
     return value;
   }
 
@@ -311,13 +317,17 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   } else {
     throw in.error("reduction/rule", "unknown rule '" + rule + "' (mac or band)");
   }
-  r.global_modes = in.integer("reduction/global_modes", r.global_modes, 1);
+  // The command line's ranges (vehicle_reduction.h).
+  r.global_modes =
+      in.integer("reduction/global_modes", r.global_modes, 1, reduction::kMaxGlobalModes,
+                 " (more take minutes to solve: 200 take about 7 s, 300 about 4 min)");
   r.band_hz = in.positive("reduction/band_hz", r.band_hz, "Hz");
   r.mac_threshold = in.positive("reduction/mac_threshold", r.mac_threshold, "");
   if (r.mac_threshold > 1.0)
     throw in.error("reduction/mac_threshold", "must be <= 1");
-  r.mogesec_masters = in.integer("reduction/mogesec_masters", r.mogesec_masters, 0);
-  r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0);
+  r.mogesec_masters =
+      in.integer("reduction/mogesec_masters", r.mogesec_masters, 0, reduction::kMaxReductionCount);
+  r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0, reduction::kMaxReductionCount);
   p.reduced_model = in.string("reduced_model", "");
   if (!p.reduced_model.empty())
     requireFoundFile(in, "reduced_model", p.reduced_model);

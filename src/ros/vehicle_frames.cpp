@@ -112,7 +112,8 @@ Vector6 baseLinkTwist(double speed, const Vector3& cog, const Vector6& hull_disp
   const Vector3 origin_velocity =
       Vector3(speed, 0.0, 0.0) + hull_velocity.head<3>() - omega.cross(r * cog);
   Vector6 twist;
-  twist << r.transpose() * origin_velocity, omega_body;
+  twist.head<3>().noalias() = r.transpose() * origin_velocity;
+  twist.tail<3>() = omega_body;
   return twist;
 }
 

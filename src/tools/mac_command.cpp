@@ -213,8 +213,9 @@ void registerMacCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   // Both variants' modes, as the reduction's --global-modes: the same limit.
   cmd->add_option("--count,-n", opt->count,
-                  "modes of each variant, 1 .. " + std::to_string(kMaxGlobalModes) + " (paper: 40)")
-      ->check(CLI::Range(1, kMaxGlobalModes));
+                  "modes of each variant, 1 .. " + std::to_string(reduction::kMaxGlobalModes) +
+                      " (paper: 40)")
+      ->check(CLI::Range(1, reduction::kMaxGlobalModes));
   // (0, 1] as reduce's --mac-threshold: at 0 every mode would correlate.
   cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match, in (0, 1] (paper: 0.7)")
       ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a number in (0, 1]",

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "mass_breakdown_report.h"
 #include "node_shapes.h"
 #include "output_files.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -177,17 +178,9 @@ void runVehicle(const ModesOptions& opt) {
         .field("vehicle", description.name)
         .field("variant", vehicle::variantName(variant))
         .field("active_dofs", static_cast<long long>(a.system.size()))
-        .field("mass_kg", a.vehicle.model.totalMass())
-        .key("mass_breakdown_kg")
-        .beginObject()
-        .field("hull", m.hull)
-        .field("road_wheels", m.road_wheels)
-        .field("track_assemblies", m.track_assemblies)
-        .field("sprockets", m.sprockets)
-        .field("idlers", m.idlers)
-        .field("return_rollers", m.return_rollers)
-        .endObject()
-        .field("frequencies_hz", a.modes.frequencies_hz)
+        .field("mass_kg", a.vehicle.model.totalMass());
+    writeMassBreakdown(json, m);
+    json.field("frequencies_hz", a.modes.frequencies_hz)
         .field("mode_types", types)
         .field("build_seconds", a.build_seconds)
         .field("solve_seconds", a.modes.seconds)
@@ -206,6 +199,7 @@ void runVehicle(const ModesOptions& opt) {
   }
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
              a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
+  std::cout << massBreakdownText(m, a.vehicle.model.totalMass()) << "\n";
   std::cout << "\nstatic equilibrium under gravity: hull sag " << std::setprecision(4)
             << -a.statics.hull_sag * 1000.0 << " mm (z " << a.statics.hull_sag * 1000.0
             << " mm), pitch " << a.statics.hull_pitch * kRadToDegree << " deg; ground reactions "

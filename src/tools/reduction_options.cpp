@@ -12,6 +12,9 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 namespace {
+using reduction::kMaxGlobalModes;
+using reduction::kMaxReductionCount;
+
 // The selection solves this many modes of both variants (the un-tracked reduction correlates
 // with the tracked modes too), and the Lanczos cost grows steeply with the count: on the
 // bundled vehicle, un-tracked, 100 modes take 0.6 s, 200 take 6.8 s, 300 took 246 s
@@ -48,13 +51,13 @@ void ReductionFlags::addTo(CLI::App* command) {
       command
           ->add_option("--masters", o.mogesec_masters,
                        "MoGeSeC master DOFs (paper: 9; ~reduction/mogesec_masters)")
-          ->check(CLI::Range(0, 1000)),
+          ->check(CLI::Range(0, kMaxReductionCount)),
       command
           ->add_option(
               "--modes", o.mode_count,
               "fixed-interface modes (0: twice the selected, more until the modes below --band "
               "are within 2 %; ~reduction/mode_count)")
-          ->check(CLI::Range(0, 1000)),
+          ->check(CLI::Range(0, kMaxReductionCount)),
   };
   // (0, 1] as the node's ~reduction/mac_threshold: at 0 every mode would correlate.
   mac_threshold_ =
@@ -90,7 +93,8 @@ void ReducedModelFlags::addTo(CLI::App* command) {
       ->check(CLI::ExistingFile);
   cache_dir_option_ = command->add_option(
       "--cache-dir", cache_dir_,
-      "reduced-model cache (default ~/.cache/tracked_vehicle_dynamics; not used with --reduced)");
+      "reduced-model cache (default $XDG_CACHE_HOME/tracked_vehicle_dynamics, else "
+      "~/.cache/tracked_vehicle_dynamics; not used with --reduced)");
   reduction_.addTo(command);
 }
 

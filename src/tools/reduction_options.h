@@ -15,14 +15,12 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// The largest --global-modes: more take minutes to solve (reduction_options.cpp).
-constexpr int kMaxGlobalModes = 200;
-
 /// The flags --rule, --band, --global-modes, --masters, --modes and --mac-threshold, bound to
 /// one VehicleReductionOptions (the ROS node's ~reduction/rule, band_hz, global_modes,
-/// mogesec_masters, mode_count and mac_threshold: the same defaults and lower bounds; the
-/// command line also caps --global-modes at kMaxGlobalModes and --masters, --modes at 1000, and
-/// refuses --mac-threshold with --rule band, which the node's parameter file always sets).
+/// mogesec_masters, mode_count and mac_threshold: the same defaults and ranges, --global-modes
+/// up to reduction::kMaxGlobalModes, --masters and --modes up to reduction::kMaxReductionCount;
+/// the command line also refuses --mac-threshold with --rule band, which the node's parameter
+/// file always sets).
 class ReductionFlags {
  public:
   /// Registers the flags on `command`; `this` must outlive the parse (commands keep it in their

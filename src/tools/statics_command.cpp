@@ -9,14 +9,15 @@
 #include <numeric>
 
 #include "commands.h"
+#include "mass_breakdown_report.h"
 #include "output_files.h"
-#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/vehicle/contact_statics.h"
 #include "tracked_vehicle_dynamics/vehicle/ground_pressure.h"
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -112,8 +113,9 @@ void run(const StaticsOptions& opt) {
     }
     json.endObject()
         .field("active_dofs", static_cast<long long>(system.size()))
-        .field("mass_kg", model.model.totalMass())
-        .field("weight_n", s.weight)
+        .field("mass_kg", model.model.totalMass());
+    writeMassBreakdown(json, model.layout.mass);
+    json.field("weight_n", s.weight)
         .field("hull_sag_m", s.hull_sag)
         .field("hull_pitch_deg", s.hull_pitch * kRadToDegree)
         .field("hull_roll_deg", s.hull_roll * kRadToDegree)
@@ -175,7 +177,8 @@ void run(const StaticsOptions& opt) {
   std::cout << std::fixed << "model: " << description.name << " (" << vehicle::variantName(variant)
             << ")   active DOFs: " << system.size() << "   mass: " << std::setprecision(1)
             << model.model.totalMass() << " kg   weight: " << std::setprecision(2) << s.weight / 1e3
-            << " kN   solve: " << std::setprecision(3) << seconds << " s\n";
+            << " kN   solve: " << std::setprecision(3) << seconds << " s\n"
+            << massBreakdownText(model.layout.mass, model.model.totalMass()) << "\n";
   if (unilateral)
     std::cout << "contacts: unilateral ("
               << (variant == vehicle::Variant::Tracked

@@ -174,13 +174,13 @@ class Builder {
 
     fem::RigidJoint revolute;
     revolute.master = st.pivot;
-    revolute.slaves = {st.arm};
+    revolute.slaves.assign(1, st.arm);
     revolute.dofs = {{true, true, true, true, false, true}};
     revolute.name = st.name + "/revolute";
     model().rigid_joints.push_back(revolute);
     fem::RigidJoint arm;
     arm.master = st.arm;
-    arm.slaves = {st.centre};
+    arm.slaves.assign(1, st.centre);
     arm.name = st.name + "/arm";
     model().rigid_joints.push_back(arm);
 
@@ -258,12 +258,12 @@ class Builder {
     model().addNode(link_node, point);
     fem::RigidJoint on_wheel;
     on_wheel.master = wheel_body;
-    on_wheel.slaves = {wheel_node};
+    on_wheel.slaves.assign(1, wheel_node);
     on_wheel.name = name + "/wheel_side";
     model().rigid_joints.push_back(on_wheel);
     fem::RigidJoint on_link;
     on_link.master = a.nodes.linkCentre();
-    on_link.slaves = {link_node};
+    on_link.slaves.assign(1, link_node);
     on_link.name = name + "/link_side";
     model().rigid_joints.push_back(on_link);
     fem::Spring s;
@@ -354,7 +354,7 @@ class Builder {
         for (int i = 0; i < 3; ++i) {
           fem::RigidJoint pin;
           pin.master = front[i];
-          pin.slaves = {rear[i]};
+          pin.slaves.assign(1, rear[i]);
           pin.name = std::string("chain_") + sideName(side) + "_joint_" + std::to_string(k);
           model().rigid_joints.push_back(pin);
         }

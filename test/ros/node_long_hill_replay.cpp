@@ -197,7 +197,8 @@ class LongHillReplay : public ::testing::Test {
         "odom", 10000,
         [this](const nav_msgs::Odometry::ConstPtr& msg) {
           NodeSample& s = samples_[msg->header.stamp];
-          s.odom_twist << fromMsg(msg->twist.twist.linear), fromMsg(msg->twist.twist.angular);
+          s.odom_twist.head<3>() = fromMsg(msg->twist.twist.linear);
+          s.odom_twist.tail<3>() = fromMsg(msg->twist.twist.angular);
           s.has_odom = true;
         },
         ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());

@@ -156,6 +156,16 @@ class TvdCliTest(unittest.TestCase):
                           "--out", csv_file)  # tracked by default
         self.assertEqual(d["variant"], "tracked")
         self.assertEqual(d["contact"], "bilateral")
+        # The mass breakdown: the same in both commands, its parts summing to the model's mass,
+        # 14 road wheels of 1,200 kg and 184 links of 27 kg (Table 1, the description).
+        parts = d["mass_breakdown_kg"]
+        self.assertEqual(parts, modes["mass_breakdown_kg"])
+        self.assertAlmostEqual(sum(parts.values()) / d["mass_kg"], 1.0, delta=1e-12)
+        self.assertEqual((parts["road_wheels"], parts["track_assemblies"]), (16800.0, 184 * 27.0))
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--contact", "bilateral").stdout
+        self.assertIn(f"mass breakdown: hull {parts['hull']:.1f} kg, road wheels 16800.0 kg, track "
+                      f"assemblies 4968.0 kg", text)
+        self.assertIn(f"(total {d['mass_kg']:.1f} kg)", text)
         s = modes["static"]
         self.assertAlmostEqual(d["hull_sag_m"], s["hull_sag_m"], delta=1e-12)
         self.assertAlmostEqual(d["weight_n"] / (d["mass_kg"] * GRAVITY), 1.0, delta=1e-9)

@@ -30,6 +30,14 @@ const char* modeRuleName(VehicleModeRule rule);
 /// the full model's at worst): the default fixed-interface count is raised until it holds.
 constexpr double kBandFrequencyTolerance = 0.02;
 
+/// The largest global_modes the command line and the node take: the selection solves that many
+/// modes of both variants, and the Lanczos cost grows steeply with the count (on the bundled
+/// vehicle, un-tracked: 100 modes 0.6 s, 200 about 7 s, 300 about 4 min, 500 over 10 min).
+constexpr int kMaxGlobalModes = 200;
+/// The largest mogesec_masters and mode_count they take: a reduced model of thousands of DOFs
+/// is no longer small (the tracked vehicle's default has 431).
+constexpr int kMaxReductionCount = 1000;
+
 struct VehicleReductionOptions {
   VehicleModeRule rule = VehicleModeRule::MacCorrelation;
   int global_modes = 40;           ///< modes of each variant computed for MAC (paper: 40)
