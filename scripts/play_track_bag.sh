@@ -23,6 +23,7 @@ set -euo pipefail
 child=""
 child_command=""
 tmp=""
+log=""
 stty_saved=""
 if [ -t 0 ]; then stty_saved=$(stty -g 2>/dev/null || true); fi
 stop() {  # stop SIGNAL STATUS: stops the child, exits with STATUS
@@ -44,7 +45,8 @@ stop() {  # stop SIGNAL STATUS: stops the child, exits with STATUS
     # play's terminal settings (it reads keys) are not restored by SIGTERM.
     if [ -n "$stty_saved" ]; then stty "$stty_saved" 2>/dev/null || true; fi
   fi
-  if [ -n "$tmp" ]; then rm -f "$tmp" "$tmp.source" "$tmp.log"; fi
+  if [ -n "$tmp" ]; then rm -f "$tmp" "$tmp.source"; fi
+  if [ -n "$log" ]; then rm -f "$log"; fi
   exit "$2"
 }
 trap 'stop INT 130' INT
@@ -114,13 +116,24 @@ fresh() { [ -s "$bag" ] && ! { [ -f "$make_bag" ] && [ "$make_bag" -nt "$bag" ];
 # The node rejects speed messages above its ~max_speed (30 m/s in the parameter file): a bag
 # faster than that would replay a vehicle standing at station 0. replay_track.launch names the
 # node (TVD_REPLAY_NODE, resolved in the player's namespace); its parameter is on the master
-# before any node starts. tvd_make_bag reads the speed or profile as it would for the bag and
-# gives the run's highest speed (a profile's largest sample).
-if [ -n "${TVD_REPLAY_NODE:-}" ] && [ -x "$make_bag" ]; then
+# before any node starts. tvd_make_bag checks the run as it would for the bag (refusing one it
+# could not make) and gives its highest speed (a profile's largest sample); without it a
+# constant speed is still checked here.
+max_speed=""
+if [ -n "${TVD_REPLAY_NODE:-}" ]; then
   max_speed=$(rosparam get "$TVD_REPLAY_NODE/max_speed" 2>/dev/null || true)
-  peak=$("$make_bag" "${speed_args[@]}" --peak-speed) || exit 2
-  if [[ "$max_speed" =~ ^[0-9.eE+-]+$ ]] &&
-      awk -v v="$peak" -v m="$max_speed" 'BEGIN { exit !(v > m) }'; then
+fi
+if [[ "$max_speed" =~ ^[0-9.eE+-]+$ ]]; then
+  if [ -x "$make_bag" ]; then
+    peak=$("$make_bag" --track "$track" "${speed_args[@]}" --peak-speed) || exit $?
+  elif [[ "$speed" != *.csv ]]; then
+    peak=$(awk -v v="$speed" 'BEGIN { printf "%.17g", v / 3.6 }')
+  else
+    echo "play_track_bag.sh: warning: tvd_make_bag not found: the speed profile $speed is not" \
+      "checked against $TVD_REPLAY_NODE's ~max_speed" >&2
+    peak=0
+  fi
+  if awk -v v="$peak" -v m="$max_speed" 'BEGIN { exit !(v > m) }'; then
     what="drives at $speed km/h"
     [[ "$speed" == *.csv ]] &&
       what="reaches $(awk -v v="$peak" 'BEGIN { printf "%.4g", v * 3.6 }') km/h (speed profile $speed)"
@@ -137,20 +150,24 @@ if ! fresh; then
     echo "play_track_bag.sh: tvd_make_bag not found (build the package and source its setup.bash)" >&2
     exit 2
   fi
+  # Its summary (stdout) is kept apart from the bag directory, which tvd_make_bag itself reports
+  # on when it cannot write there.
+  log=$(mktemp "${TMPDIR:-/tmp}/play_track_bag.XXXXXX")
   status=0
-  run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp" >"$tmp.log" || status=$?
-  # Its summary names the file it wrote, the temporary one: shown with the bag's name.
-  summary=$(<"$tmp.log")
+  run_child "$make_bag" --track "$track" "${speed_args[@]}" --out "$tmp" >"$log" || status=$?
+  # The summary names the file written, the temporary one: shown with the bag's name.
+  summary=$(<"$log")
   summary=${summary//"$tmp"/"$bag"}
+  rm -f "$log"
+  log=""
   if [ $status -ne 0 ]; then
     [ -z "$summary" ] || printf '%s\n' "$summary" >&2
-    rm -f "$tmp" "$tmp.log"
+    rm -f "$tmp"
     exit $status
   fi
   printf '%s\n' "$source_record" >"$tmp.source"
   mv -f "$tmp.source" "$bag.source"
   mv -f "$tmp" "$bag"
-  rm -f "$tmp.log"
   tmp=""
   if [ "${TVD_BAG_MAKE_ONLY:-0}" = 1 ]; then
     printf '%s\n' "$summary" >&2

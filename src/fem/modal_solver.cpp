@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -235,9 +237,18 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                  Spectra::GEigsMode::ShiftInvert>
         solver(op, bop, nev, ncv, sigma);
     solver.init();
-    const int converged = static_cast<int>(
-        solver.compute(Spectra::SortRule::LargestMagn, request.max_iterations, request.tolerance,
-                       Spectra::SortRule::SmallestAlge));
+    int converged = 0;
+    try {
+      converged =
+          static_cast<int>(solver.compute(Spectra::SortRule::LargestMagn, request.max_iterations,
+                                          request.tolerance, Spectra::SortRule::SmallestAlge));
+    } catch (const std::runtime_error& e) {
+      // Spectra's dense steps fail on non-finite Ritz values: eigenvalues beyond double range,
+      // from a mass or stiffness orders of magnitude away from the rest (a pad mass of 1e-300 kg).
+      throw SolverError(std::string("modal solver (shift-invert Lanczos): ") + e.what() +
+                        ": the eigenvalues overflow; is a mass or stiffness of the model many "
+                        "orders of magnitude away from the others?");
+    }
     iterations += static_cast<int>(solver.num_iterations());
     if (solver.info() != Spectra::CompInfo::Successful) {
       const bool not_converging = solver.info() == Spectra::CompInfo::NotConverging;

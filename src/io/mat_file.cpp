@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
+#include <new>
 #include <set>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -409,7 +411,18 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
     throw InputError(where + " is " + dims(r, c) + ", expected " +
                      (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
                      (cols == kAnySize ? std::string("any") : std::to_string(cols)));
-  Matrix out = Matrix::Zero(r, c);
+  // The dimensions come from the file: a damaged header may claim more than memory holds (or,
+  // read as signed, a negative count), which must read as a damaged file, not end the program.
+  if (r < 0 || c < 0 || r > std::numeric_limits<int>::max() || c > std::numeric_limits<int>::max())
+    throw InputError(where + " claims " + dims(var->dims[0], var->dims[1]) +
+                     " entries (corrupted file)");
+  Matrix out;
+  try {
+    out = Matrix::Zero(r, c);
+  } catch (const std::bad_alloc&) {
+    throw InputError(where + " claims " + dims(var->dims[0], var->dims[1]) +
+                     " entries, more than memory holds (corrupted file)");
+  }
   if (out.size() == 0)
     return out;
   int start[2] = {0, 0};
@@ -446,7 +459,8 @@ std::vector<std::string> MatReader::readStrings(const std::string& name, DofInde
     throw InputError(where + " has " + std::to_string(total) + " entries, expected " +
                      std::to_string(count));
   std::vector<std::string> out;
-  out.reserve(total);
+  // A damaged header may claim any count; the cells are read one by one and checked below.
+  out.reserve(std::min<std::size_t>(total, 1u << 16));
   for (std::size_t i = 0; i < total; ++i) {
     const matvar_t* element = Mat_VarGetCell(const_cast<matvar_t*>(var), static_cast<int>(i));
     const std::string element_where = where + "{" + std::to_string(i + 1) + "}";

@@ -65,7 +65,8 @@ std::vector<DofIndex> rowsWithEntries(const SparseMatrix& a) {
 Matrix project(const SparseMatrix& a, const Matrix& t) {
   const DofIndex k = t.cols();
   Matrix out = Matrix::Zero(k, k);
-  if (a.nonZeros() == 0)
+  // (k = 0: Eigen's triangular product would bind a reference to the empty matrix's data.)
+  if (a.nonZeros() == 0 || k == 0)
     return out;
   const std::vector<DofIndex> rows = rowsWithEntries(a);
   constexpr std::size_t kBlock = 1024;  // 1024 x 431 doubles: 3.5 MB per block product

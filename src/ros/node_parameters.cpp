@@ -90,12 +90,16 @@ class Reader {
                                                      : std::string()));
       }
     }
-    if (value < minimum) {
-      throw error(key, "must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
+    if (maximum == std::numeric_limits<int>::max()) {
+      if (value < minimum)
+        throw error(key,
+                    "must be >= " + std::to_string(minimum) + ", got " + std::to_string(value));
+    } else if (value < minimum || value > maximum) {
+      // As tvd's --global-modes says it.
+      throw error(key, "must be an integer in [" + std::to_string(minimum) + ", " +
+                           std::to_string(maximum) + "], got " + std::to_string(value) +
+                           (value > maximum ? why : ""));
     }
-    if (value > maximum)
-      throw error(key,
-                  "must be <= " + std::to_string(maximum) + ", got " + std::to_string(value) + why);
     return value;
   }
 
@@ -318,9 +322,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("reduction/rule", "unknown rule '" + rule + "' (mac or band)");
   }
   // The command line's ranges (vehicle_reduction.h).
-  r.global_modes =
-      in.integer("reduction/global_modes", r.global_modes, 1, reduction::kMaxGlobalModes,
-                 " (more take minutes to solve: 200 take about 7 s, 300 about 4 min)");
+  r.global_modes = in.integer("reduction/global_modes", r.global_modes, 1,
+                              reduction::kMaxGlobalModes, reduction::kMaxGlobalModesReason);
   r.band_hz = in.positive("reduction/band_hz", r.band_hz, "Hz");
   r.mac_threshold = in.positive("reduction/mac_threshold", r.mac_threshold, "");
   if (r.mac_threshold > 1.0)

@@ -32,12 +32,14 @@ int main(int argc, char** argv) {
                  "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), as tvd simulate")
       ->check(CLI::ExistingFile)
       ->excludes(speed_option);
-  app.add_option("--out", out, "bag file to write (required unless --peak-speed)");
+  CLI::Option* out_option =
+      app.add_option("--out", out, "bag file to write (required unless --peak-speed)");
   bool peak_only = false;
   app.add_flag("--peak-speed", peak_only,
                "print the run's highest speed [m/s] (the constant speed, or the profile's largest "
                "sample) and exit without writing: play_track_bag.sh compares it with the node's "
-               "~max_speed");
+               "~max_speed")
+      ->excludes(out_option);
   app.add_option("--patch-length", options.patch_length, "terrain per message [m]")
       ->capture_default_str();
   app.add_option("--lookahead", options.lookahead, "terrain published ahead [m]")
@@ -82,8 +84,10 @@ int main(int argc, char** argv) {
     if (!profile_file.empty())
       options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
     if (peak_only) {
-      // Full precision: the caller compares it with a parameter, and a profile read in km/h
-      // converts to m/s inexactly.
+      // The run is checked as for writing (speeds up to 200 km/h, the track, the duration), so a
+      // bag that could not be made is said so now. Full precision: the caller compares it with a
+      // parameter, and a profile read in km/h converts to m/s inexactly.
+      rl::trackRun(options);
       std::printf("%.17g\n",
                   options.speed_profile ? options.speed_profile->maxSpeed() : options.speed);
       return 0;

@@ -34,7 +34,7 @@ void writeMassBreakdown(io::JsonWriter& json, const vehicle::MassBreakdown& mass
   json.endObject();
 }
 
-std::string massBreakdownText(const vehicle::MassBreakdown& mass, double total) {
+std::string massBreakdownText(const vehicle::MassBreakdown& mass) {
   std::ostringstream text;
   text << std::fixed << std::setprecision(1) << "mass breakdown:";
   const char* separator = " ";
@@ -44,7 +44,7 @@ std::string massBreakdownText(const vehicle::MassBreakdown& mass, double total) 
     text << separator << p.label << " " << p.kg << " kg";
     separator = ", ";
   }
-  text << " (total " << total << " kg)";
+  text << " (total " << mass.total << " kg)";
   return text.str();
 }
 

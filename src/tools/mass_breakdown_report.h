@@ -14,9 +14,9 @@ namespace tools {
 /// sprockets, idlers, return_rollers} [kg] (every part, 0 for a part the variant lacks).
 void writeMassBreakdown(io::JsonWriter& json, const vehicle::MassBreakdown& mass);
 
-/// "mass breakdown: hull 30300.0 kg, road wheels 16800.0 kg, ... (total 55668.0 kg)": the parts the
-/// model has, in the order of the JSON.
-std::string massBreakdownText(const vehicle::MassBreakdown& mass, double total);
+/// "mass breakdown: hull 30300.0 kg, road wheels 16800.0 kg, ... (total 55668.0 kg)": the parts
+/// of non-zero mass, in the order of the JSON, and MassBreakdown::total.
+std::string massBreakdownText(const vehicle::MassBreakdown& mass);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

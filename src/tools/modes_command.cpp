@@ -199,7 +199,7 @@ void runVehicle(const ModesOptions& opt) {
   }
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
              a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
-  std::cout << massBreakdownText(m, a.vehicle.model.totalMass()) << "\n";
+  std::cout << massBreakdownText(m) << "\n";
   std::cout << "\nstatic equilibrium under gravity: hull sag " << std::setprecision(4)
             << -a.statics.hull_sag * 1000.0 << " mm (z " << a.statics.hull_sag * 1000.0
             << " mm), pitch " << a.statics.hull_pitch * kRadToDegree << " deg; ground reactions "

@@ -15,19 +15,14 @@ namespace {
 using reduction::kMaxGlobalModes;
 using reduction::kMaxReductionCount;
 
-// The selection solves this many modes of both variants (the un-tracked reduction correlates
-// with the tracked modes too), and the Lanczos cost grows steeply with the count: on the
-// bundled vehicle, un-tracked, 100 modes take 0.6 s, 200 take 6.8 s, 300 took 246 s
-// (on a shared 2-core machine) and 500 more than 10 minutes.
+// --global-modes in [1, kMaxGlobalModes], with the limit's reason (vehicle_reduction.h).
 CLI::Validator globalModeCount() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         int v = 0;
         if (!CLI::detail::lexical_cast(text, v) || v < 1 || v > kMaxGlobalModes)
           return "must be an integer in [1, " + std::to_string(kMaxGlobalModes) + "], got " + text +
-                 (v > kMaxGlobalModes ? " (more take minutes to solve: 200 take about 7 s, 300 "
-                                        "about 4 min, 500 over 10 min)"
-                                      : "");
+                 (v > kMaxGlobalModes ? reduction::kMaxGlobalModesReason : "");
         return std::string();
       },
       "INT");

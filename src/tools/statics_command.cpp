@@ -178,7 +178,7 @@ void run(const StaticsOptions& opt) {
             << ")   active DOFs: " << system.size() << "   mass: " << std::setprecision(1)
             << model.model.totalMass() << " kg   weight: " << std::setprecision(2) << s.weight / 1e3
             << " kN   solve: " << std::setprecision(3) << seconds << " s\n"
-            << massBreakdownText(model.layout.mass, model.model.totalMass()) << "\n";
+            << massBreakdownText(model.layout.mass) << "\n";
   if (unilateral)
     std::cout << "contacts: unilateral ("
               << (variant == vehicle::Variant::Tracked

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <hdf5.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <iterator>
@@ -194,6 +196,42 @@ TEST(MatFile, EmptyFileHasNoVariablesInEitherFormat) {
     EXPECT_EQ(what, path + ": variable 'A' is missing");
     std::remove(path.c_str());
   }
+}
+
+// A damaged header's dimensions (MAT 5, uncompressed: the 128-byte file header, the matrix tag
+// (8), its array flags (16) and its dimensions' tag (8), then the int32 row and column counts)
+// read as a damaged file, not as an allocation that ends the program: negative counts, and
+// counts whose product no memory holds.
+TEST(MatFile, ImpossibleDimensionsReadAsACorruptedFile) {
+  const std::string path = tempPath("dims.mat");
+  {
+    io::MatWriter out(path, io::MatFormat::Mat5, /*compress=*/false);
+    out.writeMatrix("A", Matrix::Ones(2, 3));
+    out.close();
+  }
+  const std::string bytes = readBytes(path);
+  constexpr std::size_t kDims = 128 + 8 + 16 + 8;
+  std::int32_t stored[2];
+  std::memcpy(stored, bytes.data() + kDims, sizeof(stored));
+  ASSERT_EQ(stored[0], 2);  // the layout above
+  ASSERT_EQ(stored[1], 3);
+  for (const std::int32_t huge : {std::int32_t{-1}, std::numeric_limits<std::int32_t>::max()}) {
+    SCOPED_TRACE(huge);
+    std::string damaged = bytes;
+    const std::int32_t claimed[2] = {huge, huge};
+    std::memcpy(damaged.data() + kDims, claimed, sizeof(claimed));
+    writeBytes(path, damaged);
+    std::string what;
+    try {
+      const io::MatReader in(path);
+      in.readMatrix("A");
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    EXPECT_EQ(what.rfind(path + ": variable 'A' ", 0), 0u) << what;
+    EXPECT_NE(what.find("(corrupted file)"), std::string::npos) << what;
+  }
+  std::remove(path.c_str());
 }
 
 TEST(MatFile, RefusesNonFiniteValuesNamingTheEntry) {

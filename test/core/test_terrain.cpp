@@ -351,7 +351,9 @@ TEST(Tracks, OopWavesDefaultOffsetShiftsThePathFrame) {
 /// πH²/2 / W, when W/2 >= H).
 double smoothedCrest(double height, double window) {
   const double a = std::min(0.5 * window, height);
-  return (a * std::sqrt(height * height - a * a) + height * height * std::asin(a / height)) /
+  // sqrt((H - a)(H + a)), not sqrt(H² - a²): exactly 0 at a = H even when the compiler fuses
+  // H² - a² into a multiply-add (x86-64-v3), which leaves a rounding residue under the root.
+  return (a * std::sqrt((height - a) * (height + a)) + height * height * std::asin(a / height)) /
          window;
 }
 

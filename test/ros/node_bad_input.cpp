@@ -364,11 +364,12 @@ TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
        "/mode_count_half/reduction/mode_count: must be an integer, got 2.5"},
       // The command line's ranges (tvd --global-modes, --masters, --modes).
       {"global_modes_300", "_reduction/global_modes:=300",
-       "/global_modes_300/reduction/global_modes: must be <= 200, got 300 (more take minutes"},
+       "/global_modes_300/reduction/global_modes: must be an integer in [1, 200], got 300 (more "
+       "take minutes"},
       {"masters_1001", "_reduction/mogesec_masters:=1001",
-       "/masters_1001/reduction/mogesec_masters: must be <= 1000, got 1001"},
+       "/masters_1001/reduction/mogesec_masters: must be an integer in [0, 1000], got 1001"},
       {"modes_1001", "_reduction/mode_count:=1001",
-       "/modes_1001/reduction/mode_count: must be <= 1000, got 1001"},
+       "/modes_1001/reduction/mode_count: must be an integer in [0, 1000], got 1001"},
       {"slash_prefix", "_frame_prefix:=/veh1/",
        "/slash_prefix/frame_prefix: '/veh1/' must not start with '/'"},
       {"base_is_point", "_base_frame:=crew_seat",

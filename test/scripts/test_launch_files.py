@@ -179,7 +179,7 @@ class LaunchFilesTest(unittest.TestCase):
                 f.write("x,h\n" + rows)
             os.utime(roads[sub], (1e9, 1e9))  # both older than any bag written below
 
-        def make(track):
+        def make(track, writes=True):
             result = subprocess.run([ENV_SH, script, track, "20", bag_dir],
                                     env=dict(os.environ, TVD_BAG_MAKE_ONLY="1"),
                                     capture_output=True, text=True, timeout=120)
@@ -188,9 +188,12 @@ class LaunchFilesTest(unittest.TestCase):
             # bag, on stderr, naming the bag rather than the temporary file it wrote first.
             self.assertEqual(len(result.stdout.splitlines()), 1, result.stdout)
             bag = result.stdout.strip()
-            if "terrain patches" in result.stderr:
+            if writes:
                 self.assertIn(bag + ": ", result.stderr)
-                self.assertNotIn("/.", result.stderr)
+                self.assertIn("terrain patches", result.stderr)
+                self.assertNotIn(os.path.join(bag_dir, "."), result.stderr)  # the temporary file
+            else:
+                self.assertNotIn("terrain patches", result.stderr)
             # NAME_SPEEDkmh.HASH.bag: the hash names the file's path and content.
             self.assertRegex(bag, "^" + re.escape(os.path.join(bag_dir, "road_20kmh.")) +
                              "[0-9a-f]{8}[.]bag$")
@@ -204,7 +207,8 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertNotEqual(bump, flat)
         with open(bump, "rb") as f, open(flat, "rb") as g:
             self.assertNotEqual(f.read(), g.read())
-        self.assertEqual(make(roads["bump"])[:3], (bump, bump_source, written))  # not rewritten
+        self.assertEqual(make(roads["bump"], writes=False),
+                         (bump, bump_source, written))  # not rewritten
         with open(roads["bump"], "a") as f:  # edited, its old time stamp kept (cp -p, a checkout)
             f.write("31,0\n")
         os.utime(roads["bump"], (1e9, 1e9))
@@ -217,6 +221,23 @@ class LaunchFilesTest(unittest.TestCase):
                                 capture_output=True, text=True, timeout=120)
         self.assertEqual(result.stdout, os.path.join(bag_dir, "half_round:0.1_20kmh.bag") + "\n",
                          result.stderr)
+
+    def test_a_bag_that_cannot_be_made_leaves_nothing_behind(self):
+        # tvd_make_bag's own message and status; no temporary bag, record or summary left.
+        bag_dir = os.path.join(self.work, "failed_bags")
+        road = os.path.join(self.work, "broken.csv")
+        with open(road, "w") as f:
+            f.write("x,h\n0,0\n10,nan\n30,0\n")
+        tmp = os.path.join(self.work, "failed_tmp")
+        os.makedirs(tmp)
+        result = subprocess.run([ENV_SH, PLAY_TRACK_BAG, road, "20", bag_dir],
+                                env=dict(os.environ, TVD_BAG_MAKE_ONLY="1", TMPDIR=tmp),
+                                capture_output=True, text=True, timeout=120)
+        self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+        self.assertEqual(result.stdout, "")
+        self.assertIn("tvd_make_bag: error: ", result.stderr)
+        self.assertIn("broken.csv", result.stderr)
+        self.assertEqual((os.listdir(bag_dir), os.listdir(tmp)), ([], []))
 
     def test_the_player_refuses_a_bag_faster_than_the_nodes_max_speed(self):
         # Else the node rejects every speed message and the replay records a vehicle at rest.
@@ -286,7 +307,18 @@ class LaunchFilesTest(unittest.TestCase):
             f.write("time_s,speed_m_s\n0,5\n3,17.5\n6,2\n")
         result = make_bag("--speed-profile", profile, "--peak-speed")
         self.assertEqual((result.returncode, float(result.stdout)), (0, 17.5), result.stderr)
-        self.assertEqual(os.listdir(self.work).count("x.bag"), 0)
+        # The run is checked as for writing: a profile above 200 km/h could not be made.
+        with open(profile, "w") as f:
+            f.write("time_s,speed_kmh\n0,30\n3,250\n")
+        result = make_bag("--speed-profile", profile, "--peak-speed")
+        self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+        self.assertIn("tvd_make_bag: error: track bag: the speed profile reaches 250 km/h; at most "
+                      "200 km/h", result.stderr)
+        # It writes nothing, so it takes no file to write.
+        result = make_bag("--speed-kmh", "30", "--peak-speed", "--out", "x.bag")
+        self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+        self.assertIn("tvd_make_bag: error: ", result.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.work, "x.bag")))
 
     def test_footprint_frame_and_publish_odom_tf(self):
         p = params("vehicle_dynamics.launch")

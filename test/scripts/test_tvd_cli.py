@@ -1958,6 +1958,17 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["modes", "--model", model], "no_mass.yaml", "node 1 uz",
                                 "no mass or inertia")
 
+    def test_eigenvalues_beyond_double_range_are_a_solver_error_with_a_hint(self):
+        # A pad of 1e-300 kg passes the description's checks (positive) but puts eigenvalues
+        # beyond double range: Spectra's "TridiagEigen" failure, once status 1 with no context.
+        vehicle = self.vehicle_with("tiny_pad.yaml", "pad_mass: {value: 1.5,",
+                                    "pad_mass: {value: 1e-300,")
+        result = self.tvd("modes", "--vehicle", vehicle, "--count", "5", status=3)
+        self.assertEqual(result.stdout, "")
+        self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+        self.assertIn("tvd: solver error: modal solver (shift-invert Lanczos): ", result.stderr)
+        self.assertIn("orders of magnitude", result.stderr)
+
     # --- acceptance findings (findings.md #2-#12) ---
 
     def run_limited(self, args, max_bytes):

@@ -34,6 +34,9 @@ constexpr double kBandFrequencyTolerance = 0.02;
 /// modes of both variants, and the Lanczos cost grows steeply with the count (on the bundled
 /// vehicle, un-tracked: 100 modes 0.6 s, 200 about 7 s, 300 about 4 min, 500 over 10 min).
 constexpr int kMaxGlobalModes = 200;
+/// Why, as the command line and the node append it to a refusal.
+constexpr const char* kMaxGlobalModesReason =
+    " (more take minutes to solve: 200 take about 7 s, 300 about 4 min, 500 over 10 min)";
 /// The largest mogesec_masters and mode_count they take: a reduced model of thousands of DOFs
 /// is no longer small (the tracked vehicle's default has 431).
 constexpr int kMaxReductionCount = 1000;
