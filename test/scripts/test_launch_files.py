@@ -44,6 +44,14 @@ def params(launch_file, *args):
     return {key[len(NODE) + 1:]: value for key, value in dumped.items() if key.startswith(NODE + "/")}
 
 
+def make_track_bag(track, speed, bag_dir, env=None):
+    """play_track_bag.sh TRACK SPEED BAG_DIR with TVD_BAG_MAKE_ONLY=1 (the bag written when needed,
+    its path printed, nothing played), in `env` (default: this process's) plus that variable."""
+    return subprocess.run([ENV_SH, PLAY_TRACK_BAG, track, speed, bag_dir],
+                          env=dict(env if env is not None else os.environ, TVD_BAG_MAKE_ONLY="1"),
+                          capture_output=True, text=True, timeout=120)
+
+
 def cleared_namespaces(launch_file):
     """The namespaces roslaunch deletes from the master before setting the launch's parameters."""
     code = ("import sys, rospkg, roslaunch.config\n"
@@ -169,7 +177,6 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_each_terrain_file_gets_a_track_bag_of_its_own(self):
         # replay_track.launch's player names a terrain file's bag by the file's stem.
-        script = PLAY_TRACK_BAG
         bag_dir = os.path.join(self.work, "bags")
         roads = {}
         for sub, rows in (("bump", "0,0\n10,0\n10.5,0.2\n11,0\n30,0\n"), ("flat", "0,0\n30,0\n")):
@@ -180,9 +187,7 @@ class LaunchFilesTest(unittest.TestCase):
             os.utime(roads[sub], (1e9, 1e9))  # both older than any bag written below
 
         def make(track, writes=True):
-            result = subprocess.run([ENV_SH, script, track, "20", bag_dir],
-                                    env=dict(os.environ, TVD_BAG_MAKE_ONLY="1"),
-                                    capture_output=True, text=True, timeout=120)
+            result = make_track_bag(track, "20", bag_dir)
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             # The path alone on stdout (bag=$(...)); tvd_make_bag's summary, when it wrote the
             # bag, on stderr, naming the bag rather than the temporary file it wrote first.
@@ -216,9 +221,7 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertNotEqual(edited, bump)
         self.assertNotEqual(edited_source, bump_source)
         # A built-in track keeps its plain name.
-        result = subprocess.run([ENV_SH, script, "half_round:0.1", "20", bag_dir],
-                                env=dict(os.environ, TVD_BAG_MAKE_ONLY="1"),
-                                capture_output=True, text=True, timeout=120)
+        result = make_track_bag("half_round:0.1", "20", bag_dir)
         self.assertEqual(result.stdout, os.path.join(bag_dir, "half_round:0.1_20kmh.bag") + "\n",
                          result.stderr)
 
@@ -230,9 +233,7 @@ class LaunchFilesTest(unittest.TestCase):
             f.write("x,h\n0,0\n10,nan\n30,0\n")
         tmp = os.path.join(self.work, "failed_tmp")
         os.makedirs(tmp)
-        result = subprocess.run([ENV_SH, PLAY_TRACK_BAG, road, "20", bag_dir],
-                                env=dict(os.environ, TVD_BAG_MAKE_ONLY="1", TMPDIR=tmp),
-                                capture_output=True, text=True, timeout=120)
+        result = make_track_bag(road, "20", bag_dir, dict(os.environ, TMPDIR=tmp))
         self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
         self.assertEqual(result.stdout, "")
         self.assertIn("tvd_make_bag: error: ", result.stderr)
@@ -241,12 +242,11 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_the_player_refuses_a_bag_faster_than_the_nodes_max_speed(self):
         # Else the node rejects every speed message and the replay records a vehicle at rest.
-        script = PLAY_TRACK_BAG
         with socket.socket() as s:
             s.bind(("127.0.0.1", 0))
             port = s.getsockname()[1]
         env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
-                   ROS_HOME=os.path.join(self.work, "ros_home"), TVD_BAG_MAKE_ONLY="1")
+                   ROS_HOME=os.path.join(self.work, "ros_home"))
         master = subprocess.Popen([ENV_SH, "rosmaster", "--core", "-p", str(port)], env=env,
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                   start_new_session=True)
@@ -258,11 +258,9 @@ class LaunchFilesTest(unittest.TestCase):
                 time.sleep(0.3)
 
             def play(speed):
-                return subprocess.run([ENV_SH, script, "half_round:0.1", speed,
-                                       os.path.join(self.work, "fast_bags")],
-                                      env=dict(env, ROS_NAMESPACE="/ns",
-                                               TVD_REPLAY_NODE="vehicle_dynamics"),
-                                      capture_output=True, text=True, timeout=120)
+                return make_track_bag("half_round:0.1", speed, os.path.join(self.work, "fast_bags"),
+                                      dict(env, ROS_NAMESPACE="/ns",
+                                           TVD_REPLAY_NODE="vehicle_dynamics"))
 
             fast = play("80")  # 22.2 m/s
             self.assertEqual(fast.returncode, 2, fast.stdout + fast.stderr)
