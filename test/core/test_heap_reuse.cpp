@@ -4,10 +4,12 @@
 
 #include <cstdlib>  // __GLIBC__
 
+#include "sanitizer_build.h"
 #include "tracked_vehicle_dynamics/heap_reuse.h"
 #include "tracked_vehicle_dynamics/types.h"
 
-#if defined(__GLIBC__)
+// glibc's heap only: a sanitizer's allocator neither maps nor reuses blocks as glibc does.
+#if defined(__GLIBC__) && !defined(TVD_SANITIZER_BUILD)
 #include <malloc.h>
 #include <sys/resource.h>
 

@@ -16,34 +16,7 @@
 using namespace tracked_vehicle_dynamics;
 using namespace tracked_vehicle_dynamics::dynamics;
 
-// Counts every heap allocation of the process while g_count_allocations is set: Eigen allocates
-// with malloc (not operator new), so malloc itself is interposed and forwarded to glibc.
-#if defined(__GLIBC__)
-namespace {
-bool g_count_allocations = false;
-long g_allocations = 0;
-}  // namespace
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-void* malloc(std::size_t size) noexcept {
-  if (g_count_allocations)
-    ++g_allocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) noexcept {
-  if (g_count_allocations)
-    ++g_allocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) noexcept {
-  if (g_count_allocations)
-    ++g_allocations;
-  return __libc_realloc(pointer, size);
-}
-}
-#endif
+#include "count_allocations.h"
 
 namespace {
 
@@ -336,7 +309,7 @@ TEST(Simulator, GivenModalDampingRatios) {
   EXPECT_LT(relativeBlockError(modal.simulate(w), dense.simulate(w), 3), kMethodAgreement);
 }
 
-#if defined(__GLIBC__)
+#if TVD_COUNTS_ALLOCATIONS  // glibc, no sanitizer: see count_allocations.h
 TEST(Simulator, StepDoesNotAllocate) {
   // With and without input damping C_u (the modal engine drops zero input columns).
   for (const SecondOrderSystem& s :

@@ -7,11 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <optional>
-#include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
@@ -152,12 +153,45 @@ TEST(Terrain, FlatRunsAreExactAndKnowTheirEnd) {
   for (int k = 0; k < 1000; ++k) {
     const double s = along(rng);
     for (const double lateral : {-1.0, -0.37, 0.0, 0.81, 1.0}) {
-      const Terrain::LateralCell cell = t.lateralCellOf(lateral);
-      const double w = cell.weight;
-      const double sample = w == 0.0 ? h(cell.line, 1) : (1.0 - w) * h(cell.line, 1) + w * h(cell.line + 1, 1);
-      ASSERT_EQ(t.height(s, lateral), sample) << s;
+      // Both lines are 0.4 over samples 1..4: the height is 0.4 exactly at every y.
+      ASSERT_EQ(t.height(s, lateral), 0.4) << s << " at y = " << lateral;
     }
   }
+}
+
+TEST(Terrain, EqualLinesBlendToTheirValueExactly) {
+  // (1 - w) h + w h rounds off h for some (h, w): the blend between equal lateral lines must
+  // not, or a laterally uniform track gives each pad row its own profile bit pattern and
+  // TerrainLines stops sharing channels between them.
+  const Vector x = Vector::LinSpaced(200, 0.0, 1.99);
+  Vector y(3);
+  y << -2.0, 0.5, 2.0;
+  Matrix h(3, 200);
+  for (Eigen::Index i = 0; i < 200; ++i) {
+    h(0, i) = h(1, i) = 0.1 + 0.37 * std::sin(0.7 * static_cast<double>(i));
+    h(2, i) = i % 2 == 0 ? h(1, i) : -h(1, i);  // line 2 agrees with line 1 on every other sample
+  }
+  const Terrain t(x, y, h, "equal lines");
+  int rounded = 0;  // how often the naive blend would have missed: the test must be able to fail
+  for (int k = 1; k < 400; ++k) {
+    const double lateral = -2.0 + 2.5 * k / 400.0;  // strictly between lines 0 and 1
+    const double w = (lateral + 2.0) / 2.5;
+    const Vector p = t.profile(lateral);
+    ASSERT_EQ(std::memcmp(p.data(), h.row(0).eval().data(), sizeof(double) * 200), 0) << lateral;
+    for (Eigen::Index i = 0; i < 199; ++i) {
+      if ((1.0 - w) * h(0, i) + w * h(1, i) != h(0, i))
+        ++rounded;
+      ASSERT_EQ(t.height(x(i), lateral), h(0, i)) << lateral << " " << i;
+      ASSERT_EQ(t.slope(x(i) + 0.001, lateral), (h(0, i + 1) - h(0, i)) / (x(i + 1) - x(i)))
+          << lateral << " " << i;
+    }
+  }
+  EXPECT_GT(rounded, 0);
+  // Between lines 1 and 2, the even samples agree and blend exactly; the odd ones interpolate.
+  const Vector p = t.profile(1.0);
+  for (Eigen::Index i = 0; i < 200; i += 2)
+    ASSERT_EQ(p(i), h(1, i)) << i;
+  EXPECT_NEAR(p(1), (2.0 / 3.0) * h(1, 1) + (1.0 / 3.0) * h(2, 1), 1e-15);
 }
 
 TEST(Terrain, SingleLateralLineIsUniformAcrossWidth) {

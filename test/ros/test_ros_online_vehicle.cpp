@@ -17,33 +17,7 @@
 #include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
 
-// Counts heap allocations while g_count_allocations is set (Eigen allocates with malloc).
-#if defined(__GLIBC__)
-namespace {
-bool g_count_allocations = false;
-long g_allocations = 0;
-}  // namespace
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-void* malloc(std::size_t size) noexcept {
-  if (g_count_allocations)
-    ++g_allocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) noexcept {
-  if (g_count_allocations)
-    ++g_allocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) noexcept {
-  if (g_count_allocations)
-    ++g_allocations;
-  return __libc_realloc(pointer, size);
-}
-}
-#endif
+#include "../core/count_allocations.h"
 
 using namespace tracked_vehicle_dynamics;
 using namespace tracked_vehicle_dynamics::ros_layer;
@@ -665,7 +639,7 @@ TEST(OnlineVehicle, GroundContactWatchSaysWhyAModelCannotBeChecked) {
   vehicle.checkGroundContact();  // nothing to do
 }
 
-#if defined(__GLIBC__)  // the allocation counter hooks glibc's malloc
+#if TVD_COUNTS_ALLOCATIONS  // glibc, no sanitizer: see count_allocations.h
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
                       dynamics::DiscretizationMethod::AugmentedExponential})

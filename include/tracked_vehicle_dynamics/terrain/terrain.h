@@ -103,7 +103,10 @@ class Terrain {
   double sampleHeight(Eigen::Index i, const LateralCell& cell) const {
     const Eigen::Index j = cell.line;
     const double wy = cell.weight;
-    return wy == 0.0 ? heights_(j, i) : (1.0 - wy) * heights_(j, i) + wy * heights_(j + 1, i);
+    if (wy == 0.0)
+      return heights_(j, i);
+    const double a = heights_(j, i), b = heights_(j + 1, i);
+    return a == b ? a : (1.0 - wy) * a + wy * b;  // exact where the lines agree, as profile()
   }
 
   Vector stations_;
