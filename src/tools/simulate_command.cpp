@@ -195,6 +195,15 @@ void run(const SimulateOptions& opt) {
                        beyond(profile->maxSpeed() * 3.6, 200.0) + " km/h)");
   }
   const terrain::Terrain track = terrain::loadTrack(opt.track);
+  // From the start of the track until the station has covered its length (paper: 30 m), or until
+  // the speed profile ends. Checked before the model is obtained, which may take seconds.
+  const double distance = track.endStation() - track.startStation();
+  if (!(distance > 0))
+    throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
+  const Drive drive =
+      profile ? Drive(track.startStation(), distance, opt.dt, *profile, opt.speed_profile)
+              : Drive(track.startStation(), distance, opt.dt, opt.speed_kmh / 3.6);
+  const long steps = drive.steps();
 
   // The reduced model (cached or from a file), or the full FE model in modal form with its
   // static residual.
@@ -279,14 +288,6 @@ void run(const SimulateOptions& opt) {
     warnings.push_back(*w);
     std::cerr << "tvd: warning: " << *w << "\n";
   }
-  // From the start of the track until the station has covered its length (paper: 30 m), or until
-  // the speed profile ends.
-  const double distance = track.endStation() - track.startStation();
-  if (!(distance > 0))
-    throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
-  const Drive drive = profile ? Drive(track.startStation(), distance, opt.dt, *profile, opt.speed_profile)
-                              : Drive(track.startStation(), distance, opt.dt, opt.speed_kmh / 3.6);
-  const long steps = drive.steps();
 
   const std::vector<std::string>& names = sim.outputNames();
   const SimulationLayout layout = simulationLayout(names, sys.output_names);

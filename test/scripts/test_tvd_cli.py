@@ -16,6 +16,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 import numpy as np
@@ -1670,6 +1671,26 @@ class TvdCliTest(unittest.TestCase):
             self.assertIn(word, message)
         self.assertNotIn("Traceback", message)
         self.assertNotIn("terminate called", message)
+
+    def test_a_run_that_cannot_be_driven_is_refused_before_the_model_is_built(self):
+        """A track of one station, or a speed too slow to finish within the step limit, is
+        refused at once: no reduction is run (the cache directory stays empty) and the refusal
+        comes in well under the tracked reduction's seconds."""
+        cache = self.path("untouched_cache")
+        one = self.path("one_station.csv")
+        with open(one, "w") as f:
+            f.write("x,h\n0,0.1\n")
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "tracked", "--cache-dir", cache,
+               "--out", self.path("never.csv")]
+        for args, words in (((*sim, "--track", one), ("one_station.csv", "single station")),
+                            ((*sim, "--track", "long_hill", "--speed-kmh", "0.001"),
+                             ("take 1.08e+08 time steps", "at most 1e+07"))):
+            start = time.monotonic()
+            self.assert_input_error(list(args), *words)
+            self.assertLess(time.monotonic() - start, 1.0)
+            written = os.listdir(cache) if os.path.exists(cache) else []
+            self.assertEqual(written, [])
+        self.assertFalse(os.path.exists(self.path("never.csv")))
 
     def test_bad_input_is_named(self):
         self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
