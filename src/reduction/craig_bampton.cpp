@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -130,8 +131,8 @@ void checkOptions(DofIndex n, DofIndex master_count, const CraigBamptonOptions& 
 }
 
 // The lowest fixed-interface modes of (K_ss, M_ss) (eq. 6).
-fem::ModalBasis fixedInterfaceModes(const SparseMatrix& k_ss, const SparseMatrix& m_ss,
-                                    const CraigBamptonOptions& options) {
+fem::ModalBasis solveFixedInterfaceModes(const SparseMatrix& k_ss, const SparseMatrix& m_ss,
+                                         const CraigBamptonOptions& options) {
   const FixedInterfaceModes& r = options.fixed_interface;
   const DofIndex s = k_ss.rows();
   if (r.count == 0 || s == 0)
@@ -339,21 +340,62 @@ DofIndex CraigBamptonReducer::slaveCount() const {
   return static_cast<DofIndex>(state_->slaves.size());
 }
 
+fem::ModalBasis CraigBamptonReducer::fixedInterfaceModes(const CraigBamptonOptions& options) const {
+  const State& st = *state_;
+  checkOptions(st.in.k.rows(), static_cast<DofIndex>(st.masters.size()), options);
+  return solveFixedInterfaceModes(st.k_ss, st.m_ss, options);
+}
+
 CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& options) const {
+  const auto start = Clock::now();
+  const State& st = *state_;
+  checkOptions(st.in.k.rows(), static_cast<DofIndex>(st.masters.size()), options);
+  fem::ModalBasis phi_s = solveFixedInterfaceModes(st.k_ss, st.m_ss, options);
+  const double solve_seconds = since(start);
+  CraigBamptonResult result = reduceOn(options, std::move(phi_s), start);
+  result.seconds.fixed_interface_modes = solve_seconds;
+  return result;
+}
+
+CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& options,
+                                               const fem::ModalBasis& modes) const {
+  const auto start = Clock::now();
+  const State& st = *state_;
+  checkOptions(st.in.k.rows(), static_cast<DofIndex>(st.masters.size()), options);
+  const FixedInterfaceModes& r = options.fixed_interface;
+  if (modes.count() < r.count || (modes.count() > 0 && modes.shapes.rows() != st.k_ss.rows()))
+    throw std::logic_error(
+        "CraigBamptonReducer::reduce: " + std::to_string(modes.count()) +
+        " solved fixed-interface modes of " + std::to_string(modes.shapes.rows()) + " DOFs for " +
+        std::to_string(r.count) + " of " + std::to_string(st.k_ss.rows()) + " slave DOFs");
+  // The leading count, as the solve for count would give them (ascending), cut at the frequency
+  // limit as fem::solveModes() cuts.
+  DofIndex keep = r.count;
+  if (r.max_frequency_hz > 0.0) {
+    keep = 0;
+    while (keep < r.count && modes.frequencies_hz(keep) <= r.max_frequency_hz)
+      ++keep;
+  }
+  fem::ModalBasis phi_s;
+  phi_s.eigenvalues = modes.eigenvalues.head(keep);
+  phi_s.frequencies_hz = modes.frequencies_hz.head(keep);
+  phi_s.shapes = modes.shapes.leftCols(keep);
+  return reduceOn(options, std::move(phi_s), start);
+}
+
+CraigBamptonResult CraigBamptonReducer::reduceOn(
+    const CraigBamptonOptions& options, fem::ModalBasis phi_s,
+    std::chrono::steady_clock::time_point start) const {
   const State& st = *state_;
   const Inputs& in = st.in;
   const DofIndex n = in.k.rows();
   const auto m = static_cast<DofIndex>(st.masters.size());
-  checkOptions(n, m, options);
-  const auto start = Clock::now();
   CraigBamptonResult result;
   result.seconds = st.seconds;
-
+  result.seconds.fixed_interface_modes = 0.0;
   auto stage = Clock::now();
-  const fem::ModalBasis phi_s = fixedInterfaceModes(st.k_ss, st.m_ss, options);
   result.fixed_interface_eigenvalues = phi_s.eigenvalues;
   result.fixed_interface_frequencies_hz = phi_s.frequencies_hz;
-  result.seconds.fixed_interface_modes = since(stage);
   const DofIndex r = phi_s.count();
 
   // Eq. 9 by blocks (class comment): the master blocks from the reducer, the blocks of the

@@ -175,14 +175,16 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
 }
 
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
-                               const CraigBamptonReducer& reducer) {
+                               const CraigBamptonReducer& reducer,
+                               const fem::ModalBasis* fixed_interface) {
   if (!reducer.builtOn(system) || reducer.masters() != request.masters)
     throw std::logic_error(
         "buildReducedModel: the reducer was not built on this system and the "
         "request's " +
         std::to_string(request.masters.size()) + " masters");
-  return build(system, request,
-               [&](const CraigBamptonOptions& options) { return reducer.reduce(options); });
+  return build(system, request, [&](const CraigBamptonOptions& options) {
+    return fixed_interface ? reducer.reduce(options, *fixed_interface) : reducer.reduce(options);
+  });
 }
 
 }  // namespace reduction

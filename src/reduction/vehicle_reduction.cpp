@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -359,22 +360,40 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   // Where each input reads the road: its node's station, or its pad's centre (description).
   request.input_stations = vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
   const CraigBamptonReducer reducer(model.system, request.masters);
-  ReducedModel reduced = buildReducedModel(model.system, request, reducer);
-  fem::ModalBasis reduced_modes =
-      fem::solveModesDense(reduced.system.stiffness, reduced.system.mass);
-  BandCheck band = checkBand(rep.full_frequencies_hz, reduced_modes.frequencies_hz);
   // The fixed-interface modes a slave set can give: a count above it cannot help.
   const int slave_count =
       static_cast<int>(model.system.size()) - static_cast<int>(request.masters.size());
   const int step = std::max(kMinAutoStep, selection.count());
   const int most = std::min(slave_count, kMaxAutoFixedInterfaceModes);
+  // With the default count the modes are solved for the first addition's count at once: the
+  // first model takes the leading ones, and the first addition (the tracked vehicle's 28 -> 42)
+  // solves nothing (one Lanczos run for 42 modes, 0.30 s, instead of 0.25 s for 28 and 0.30 s
+  // for 42). A further addition solves for its own count.
+  std::optional<fem::ModalBasis> phi_s;
+  auto solveFor = [&](int count) {
+    CraigBamptonOptions o = request.craig_bampton;
+    o.fixed_interface.count = count;
+    phi_s = reducer.fixedInterfaceModes(o);
+  };
+  auto build = [&]() {
+    const int count = request.craig_bampton.fixed_interface.count;
+    if (phi_s && phi_s->count() < count)
+      solveFor(count);
+    return buildReducedModel(model.system, request, reducer, phi_s ? &*phi_s : nullptr);
+  };
+  if (options.mode_count == 0 && first_count.max_frequency_hz == 0.0 && first_count.count < most)
+    solveFor(std::min(first_count.count + step, most));
+  ReducedModel reduced = build();
+  fem::ModalBasis reduced_modes =
+      fem::solveModesDense(reduced.system.stiffness, reduced.system.mass);
+  BandCheck band = checkBand(rep.full_frequencies_hz, reduced_modes.frequencies_hz);
   int addition = 0;
   for (; options.mode_count == 0 && band.worst > kBandFrequencyTolerance &&
          addition < kMaxAutoAdditions && request.craig_bampton.fixed_interface.count < most;
        ++addition) {
     request.craig_bampton.fixed_interface.count =
         std::min(request.craig_bampton.fixed_interface.count + step, most);
-    reduced = buildReducedModel(model.system, request, reducer);
+    reduced = build();
     reduced_modes = fem::solveModesDense(reduced.system.stiffness, reduced.system.mass);
     band = checkBand(rep.full_frequencies_hz, reduced_modes.frequencies_hz);
   }

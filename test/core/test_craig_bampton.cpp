@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 #include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -322,6 +323,55 @@ TEST(CraigBampton, OneReducerGivesEveryModeCountAsTheFullProjection) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("listed twice"), std::string::npos) << e.what();
   }
+}
+
+TEST(CraigBampton, PresolvedModesGiveTheReductionOfTheirLeadingCount) {
+  // reduce(options, modes) on a solve for more modes: the leading count, as reduce(options)
+  // solves them. Bit for bit when the modes were solved for that very count; to the eigen-solve's
+  // convergence from a larger solve (Lanczos for 6 of 12 modes, and the dense path for 40).
+  const fem::System system = cantilever(30, true);
+  const fem::DofMap& d = system.dofs;
+  const CraigBamptonReducer reducer(system, masters(system, 30));
+  CraigBamptonOptions options;
+  options.recovery_dofs = {d.requireActive(12, 2), d.requireActive(30, 2)};
+  for (const auto& [r, solved] : {std::pair<int, int>{6, 6}, {6, 12}, {12, 40}, {40, 120}}) {
+    SCOPED_TRACE(std::to_string(r) + " of " + std::to_string(solved));
+    options.fixed_interface.count = solved;
+    const fem::ModalBasis modes = reducer.fixedInterfaceModes(options);
+    ASSERT_EQ(modes.count(), solved);
+    options.fixed_interface.count = r;
+    const CraigBamptonResult fresh = reducer.reduce(options);
+    const CraigBamptonResult reused = reducer.reduce(options, modes);
+    ASSERT_EQ(reused.modeCount(), r);
+    ASSERT_EQ(reused.size(), fresh.size());
+    if (r == solved) {
+      EXPECT_EQ(reused.mass, fresh.mass);
+      EXPECT_EQ(reused.stiffness, fresh.stiffness);
+      EXPECT_EQ(reused.damping, fresh.damping);
+      EXPECT_EQ(reused.recovery, fresh.recovery);
+    }
+    // The reduced eigenvalues do not depend on the sign or rotation of degenerate mode shapes.
+    const fem::ModalBasis a = fem::solveModesDense(reused.stiffness, reused.mass);
+    const fem::ModalBasis b = fem::solveModesDense(fresh.stiffness, fresh.mass);
+    EXPECT_LT(relativeError(a.eigenvalues, b.eigenvalues), kExactTolerance);
+    EXPECT_LT(relativeError(reused.fixed_interface_eigenvalues, fresh.fixed_interface_eigenvalues),
+              kExactTolerance);
+    EXPECT_EQ(reused.fixed_interface_eigenvalues, modes.eigenvalues.head(r));
+    EXPECT_EQ(reused.seconds.fixed_interface_modes, 0.0);  // nothing solved
+  }
+  // A frequency limit cuts the leading modes as the solver cuts them.
+  options.fixed_interface = {20, 0.0};
+  const fem::ModalBasis modes = reducer.fixedInterfaceModes(options);
+  const double limit = 0.5 * (modes.frequencies_hz(4) + modes.frequencies_hz(5));
+  options.fixed_interface = {12, limit};
+  EXPECT_EQ(reducer.reduce(options, modes).modeCount(), 5);
+  EXPECT_EQ(reducer.reduce(options).modeCount(), 5);
+  // Fewer modes than asked, or modes of another slave set, are a caller's mistake.
+  options.fixed_interface = {21, 0.0};
+  EXPECT_THROW(reducer.reduce(options, modes), std::logic_error);
+  const CraigBamptonReducer other(system, {d.requireActive(30, 2)});
+  options.fixed_interface = {6, 0.0};
+  EXPECT_THROW(other.reduce(options, modes), std::logic_error);
 }
 
 TEST(CraigBampton, FrequencyLimitedFixedInterfaceModes) {

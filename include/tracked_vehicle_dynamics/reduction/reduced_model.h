@@ -106,10 +106,13 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
 
 /// The same from a reducer built on `system` and request.masters (craig_bampton.h), which it
 /// reuses: a caller that tries several fixed-interface counts on one master set factorises
-/// once. Throws std::logic_error when the reducer was not built on this `system` (the same
-/// object) and request.masters.
+/// once. With `fixed_interface` (the reducer's fixedInterfaceModes() for at least the request's
+/// count) the eigen-solve is not repeated either: the model takes their leading modes. Throws
+/// std::logic_error when the reducer was not built on this `system` (the same object) and
+/// request.masters, or `fixed_interface` holds fewer modes than asked.
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
-                               const CraigBamptonReducer& reducer);
+                               const CraigBamptonReducer& reducer,
+                               const fem::ModalBasis* fixed_interface = nullptr);
 
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics
