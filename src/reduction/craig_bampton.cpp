@@ -130,6 +130,22 @@ void checkOptions(DofIndex n, DofIndex master_count, const CraigBamptonOptions& 
                        " is not an active DOF (0.." + std::to_string(n - 1) + ")");
 }
 
+// The leading r.count of ascending modes, cut at r.max_frequency_hz when it is set (as
+// fem::solveModes() cuts): what a solve for r gives, from a solve for at least as many.
+fem::ModalBasis leadingModes(const fem::ModalBasis& modes, const FixedInterfaceModes& r) {
+  DofIndex keep = r.count;
+  if (r.max_frequency_hz > 0.0) {
+    keep = 0;
+    while (keep < r.count && modes.frequencies_hz(keep) <= r.max_frequency_hz)
+      ++keep;
+  }
+  fem::ModalBasis out;
+  out.eigenvalues = modes.eigenvalues.head(keep);
+  out.frequencies_hz = modes.frequencies_hz.head(keep);
+  out.shapes = modes.shapes.leftCols(keep);
+  return out;
+}
+
 // The lowest fixed-interface modes of (K_ss, M_ss) (eq. 6).
 fem::ModalBasis solveFixedInterfaceModes(const SparseMatrix& k_ss, const SparseMatrix& m_ss,
                                          const CraigBamptonOptions& options) {
@@ -147,17 +163,7 @@ fem::ModalBasis solveFixedInterfaceModes(const SparseMatrix& k_ss, const SparseM
     throw InputError("craigBampton: " + std::to_string(r.count) + " fixed-interface modes of " +
                      std::to_string(s) + " slave DOFs is too many for the dense solver (limit " +
                      std::to_string(kMaxDenseSlaves) + " DOFs); ask for fewer than half");
-  fem::ModalBasis all = fem::solveModesDense(Matrix(k_ss), Matrix(m_ss));
-  int keep = r.count;
-  if (r.max_frequency_hz > 0.0) {
-    keep = 0;
-    while (keep < r.count && all.frequencies_hz(keep) <= r.max_frequency_hz)
-      ++keep;
-  }
-  all.eigenvalues.conservativeResize(keep);
-  all.frequencies_hz.conservativeResize(keep);
-  all.shapes.conservativeResize(Eigen::NoChange, keep);
-  return all;
+  return leadingModes(fem::solveModesDense(Matrix(k_ss), Matrix(m_ss)), r);
 }
 
 // Phi_S^T b(slaves, :) for a sparse n x k matrix b (the fixed-interface rows of T^T b).
@@ -368,19 +374,7 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
         "CraigBamptonReducer::reduce: " + std::to_string(modes.count()) +
         " solved fixed-interface modes of " + std::to_string(modes.shapes.rows()) + " DOFs for " +
         std::to_string(r.count) + " of " + std::to_string(st.k_ss.rows()) + " slave DOFs");
-  // The leading count, as the solve for count would give them (ascending), cut at the frequency
-  // limit as fem::solveModes() cuts.
-  DofIndex keep = r.count;
-  if (r.max_frequency_hz > 0.0) {
-    keep = 0;
-    while (keep < r.count && modes.frequencies_hz(keep) <= r.max_frequency_hz)
-      ++keep;
-  }
-  fem::ModalBasis phi_s;
-  phi_s.eigenvalues = modes.eigenvalues.head(keep);
-  phi_s.frequencies_hz = modes.frequencies_hz.head(keep);
-  phi_s.shapes = modes.shapes.leftCols(keep);
-  return reduceOn(options, std::move(phi_s), start);
+  return reduceOn(options, leadingModes(modes, r), start);
 }
 
 CraigBamptonResult CraigBamptonReducer::reduceOn(
