@@ -161,10 +161,7 @@ double Terrain::slope(double x, double y) const {
   const auto cell_slope = [&](Eigen::Index line) {
     return (heights_(line, i + 1) - heights_(line, i)) / (stations_(i + 1) - stations_(i));
   };
-  if (wy == 0.0)
-    return cell_slope(j);
-  const double s0 = cell_slope(j), s1 = cell_slope(j + 1);
-  return s0 == s1 ? s0 : (1.0 - wy) * s0 + wy * s1;  // exact where the lines agree
+  return wy == 0.0 ? cell_slope(j) : blend(cell_slope(j), cell_slope(j + 1), wy);
 }
 
 Vector Terrain::profile(double y) const {
@@ -172,9 +169,7 @@ Vector Terrain::profile(double y) const {
   double wy = 0.0;
   lateralCell(y, &j, &wy);
   if (wy == 0.0) return heights_.row(j).transpose();
-  // Where the two lines agree the blend is that value exactly, as in sampleHeight(): on a
-  // laterally uniform track every y then gives the same profile bit for bit, and TerrainLines
-  // shares one channel between the pad rows ((1 - w) h + w h may round off h).
+  // blend() over the row: exact where the two lines agree.
   const auto a = heights_.row(j).array(), b = heights_.row(j + 1).array();
   return (a == b).select(a, (1.0 - wy) * a + wy * b).matrix().transpose();
 }

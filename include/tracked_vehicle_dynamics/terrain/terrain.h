@@ -53,10 +53,8 @@ class Terrain {
   double height(const StationWeight& station, const LateralCell& cell) const {
     if (station.edge < 0) return sampleHeight(0, cell);
     if (station.edge > 0) return sampleHeight(stations_.size() - 1, cell);
-    const double h0 = sampleHeight(station.cell, cell), h1 = sampleHeight(station.cell + 1, cell);
-    if (h0 == h1) return h0;  // exactly, where (1 - w) h0 + w h0 may round
-    const double wx = station.weight;
-    return (1.0 - wx) * h0 + wx * h1;
+    return blend(sampleHeight(station.cell, cell), sampleHeight(station.cell + 1, cell),
+                 station.weight);
   }
   /// The end of the flat run from station sample i: the last station x_k such that samples
   /// i..k are equal on every lateral line (x_i when sample i + 1 differs). Over [x_i, x_k]
@@ -100,13 +98,14 @@ class Terrain {
   /// Lateral cell index j and weight w of line j+1 (0 <= w <= 1), y clamped to the lines.
   void lateralCell(double y, Eigen::Index* j, double* w) const;
   /// The height of station sample i on a lateral cell (its two lines blended).
+  // (1 - w) a + w b, and a itself where b == a: (1 - w) a + w a may round off a, and equal
+  // samples must give their value bit for bit (flat runs, laterally uniform tracks whose pad
+  // rows share one input channel in TerrainLines).
+  static double blend(double a, double b, double w) { return a == b ? a : (1.0 - w) * a + w * b; }
   double sampleHeight(Eigen::Index i, const LateralCell& cell) const {
     const Eigen::Index j = cell.line;
     const double wy = cell.weight;
-    if (wy == 0.0)
-      return heights_(j, i);
-    const double a = heights_(j, i), b = heights_(j + 1, i);
-    return a == b ? a : (1.0 - wy) * a + wy * b;  // exact where the lines agree, as profile()
+    return wy == 0.0 ? heights_(j, i) : blend(heights_(j, i), heights_(j + 1, i), wy);
   }
 
   Vector stations_;
