@@ -200,6 +200,14 @@ dynamics::InputHold parseHold(const std::string& text, const std::string& name) 
   throw ParameterError(name + ": unknown hold '" + text + "' (first_order or zero_order)");
 }
 
+const char* methodName(dynamics::DiscretizationMethod method) {
+  return method == dynamics::DiscretizationMethod::ModalDecoupled ? "modal" : "exact";
+}
+
+const char* holdName(dynamics::InputHold hold) {
+  return hold == dynamics::InputHold::FirstOrder ? "first_order" : "zero_order";
+}
+
 namespace {
 
 // A file parameter given as a relative path that is not there: roslaunch runs a node in

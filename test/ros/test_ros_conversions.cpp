@@ -1,5 +1,6 @@
 // ROS-layer conversions without a master: message round trips (core -> msg -> core), the frame
-// kinematics and its inverse, its rates and the accelerometer reading, bag save -> load of a track bag, and the duration statistics.
+// kinematics and its inverse, its rates and the accelerometer reading, bag save -> load of a track
+// bag, the duration statistics, and the parameter names of a method and a hold.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/duration_statistics.h"
+#include "tracked_vehicle_dynamics/ros/node_parameters.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
@@ -466,6 +468,18 @@ TEST(TrackBag, InvalidOptionsNameTheField) {
   options.speed = 5.0;
   options.track = "moon_craters";
   EXPECT_THROW(writeTrackBag(temporaryPath("never.bag"), options), InputError);
+}
+
+TEST(NodeParameterNames, MethodAndHoldNamesParseBackToTheirValue) {
+  for (const auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
+                            dynamics::DiscretizationMethod::AugmentedExponential})
+    EXPECT_EQ(parseMethod(methodName(method), "method"), method);
+  for (const auto hold : {dynamics::InputHold::FirstOrder, dynamics::InputHold::ZeroOrder})
+    EXPECT_EQ(parseHold(holdName(hold), "hold"), hold);
+  EXPECT_STREQ(methodName(dynamics::DiscretizationMethod::ModalDecoupled), "modal");
+  EXPECT_STREQ(holdName(dynamics::InputHold::ZeroOrder), "zero_order");
+  EXPECT_THROW(parseMethod("Modal", "method"), ParameterError);
+  EXPECT_THROW(parseHold("first order", "hold"), ParameterError);
 }
 
 TEST(DurationStatistics, PercentilesOfAKnownDistribution) {

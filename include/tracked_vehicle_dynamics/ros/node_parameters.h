@@ -91,5 +91,10 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh);
 dynamics::DiscretizationMethod parseMethod(const std::string& text, const std::string& name);
 dynamics::InputHold parseHold(const std::string& text, const std::string& name);
 
+/// The parameter values naming a method and a hold, the inverse of the two parsers
+/// (parseMethod(methodName(m), name) == m): for the start-up log and the diagnostics.
+const char* methodName(dynamics::DiscretizationMethod method);
+const char* holdName(dynamics::InputHold hold);
+
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics

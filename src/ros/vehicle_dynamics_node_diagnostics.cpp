@@ -1,0 +1,212 @@
+// The node's /diagnostics: one status per concern (loop, terrain, speed input, model, ground
+// contact), filled by diagnostic_updater every ~diagnostic_period from what the node has counted.
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+
+void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const double period = 1.0 / params_.vehicle_options.rate;
+  const std::uint64_t resyncs = loop_resyncs_.delta(events_.resyncs);
+  const std::uint64_t late = loop_late_.delta(events_.late_ticks);
+  const std::uint64_t jumps = loop_jumps_.delta(events_.time_jumps_back);
+  const std::uint64_t diverged = loop_diverged_.delta(events_.diverged);
+  const double step_p99 = step_window_.percentile(0.99);
+  if (!clock_started_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for ROS time (/clock)");
+  } else if (diverged > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite outputs: reset");
+  } else if (resyncs > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "fell behind ROS time beyond ~catch_up_limit: resynchronised");
+  } else if (jumps > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "ROS time jumped backwards: vehicle reset");
+  } else if (step_p99 > period) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "step time p99 exceeds the period");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "running");
+  }
+  status.add("rate [Hz]", params_.vehicle_options.rate);
+  status.add("steps", vehicle_->stepCount());
+  status.add("simulated time [s]", vehicle_->time());
+  status.add("station [m]", vehicle_->station());
+  status.add("speed [m/s]", vehicle_->speed());
+  status.add("ticks", events_.ticks);
+  status.add("late ticks (total)", events_.late_ticks);
+  status.add("late ticks (since last report)", late);
+  status.add("max steps in one tick", max_steps_in_tick_);
+  status.add("resynchronisations (total)", events_.resyncs);
+  status.add("skipped time [s]", events_.skipped_steps * period);
+  status.add("time jumps back (total)", events_.time_jumps_back);
+  status.add("resets (total)", events_.resets);
+  status.add("patches re-applied after a jump back (total)", events_.patches_reapplied);
+  status.add("speeds re-applied after a jump back (total)", events_.speeds_reapplied);
+  status.add("non-finite resets (total)", events_.diverged);
+  status.add("step time mean [us]", step_window_.mean() * 1e6);
+  status.add("step time p99 [us]", step_p99 * 1e6);
+  status.add("step time max [us]", step_window_.max() * 1e6);
+  status.add("tick time p99 [us]", tick_window_.percentile(0.99) * 1e6);
+  status.add("tick time max [us]", tick_window_.max() * 1e6);
+  status.add("step time mean since start [us]", step_total_.mean() * 1e6);
+  status.add("step time p99 since start [us]", step_total_.percentile(0.99) * 1e6);
+  status.add("tick time p99 since start [us]", tick_total_.percentile(0.99) * 1e6);
+  step_window_.clear();
+  tick_window_.clear();
+}
+
+void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const std::uint64_t rejected = terrain_rejected_.delta(events_.patches_rejected);
+  const std::uint64_t uncovered = terrain_uncovered_.delta(events_.uncovered_steps);
+  const std::uint64_t narrow = terrain_narrow_.delta(events_.patches_narrow);
+  const terrain::TerrainBuffer& buffer = vehicle_->terrain();
+  const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
+  if (buffer.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   flat_since_restart_ ? "no terrain yet: flat ground since the start or reset"
+                                       : "no terrain: holding the last heights");
+  } else if (uncovered > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "terrain underrun: contacts off the terrain held at their last height");
+  } else if (rejected > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "terrain patches rejected");
+  } else if (narrow > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "patches narrower than the contacts: the outer ones read the edge lines");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "covered");
+  }
+  status.add("patches accepted (total)", events_.patches_accepted);
+  status.add("patches rejected (total)", events_.patches_rejected);
+  status.add("patches rejected (since last report)", rejected);
+  status.add("last rejection", last_patch_error_);
+  status.add("patches narrower than the contacts (total)", events_.patches_narrow);
+  status.add("last narrow patch", last_narrow_patch_);
+  status.add("steps with uncovered contacts (total)", events_.uncovered_steps);
+  status.add("steps with uncovered contacts (since last report)", uncovered);
+  status.add("patches stored", buffer.patchCount());
+  status.add("covered from [m]", buffer.coveredFrom());
+  status.add("covered until [m]", buffer.coveredUntil());
+  status.add("coverage ahead of the front contact [m]", ahead);
+  // What a terrain source must cover now: from the rearmost contact to the frontmost one.
+  status.add("rearmost contact [m]", vehicle_->rearContactStation());
+  status.add("frontmost contact [m]", vehicle_->frontContactStation());
+}
+
+void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  const std::uint64_t rejected = speed_rejected_.delta(events_.speeds_rejected);
+  const std::uint64_t timeouts = speed_timed_out_.delta(events_.speed_timeouts);
+  if (timeouts > 0 || stopped_by_timeout_) {  // until the next speed message moves it again
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "no speed message within ~speed_timeout: vehicle stopped");
+  } else if (rejected > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "speed messages rejected");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
+  }
+  status.add("speed [m/s]", vehicle_->speed());
+  if (vehicle_->slews()) {  // ~max_acceleration / ~max_deceleration
+    status.add("commanded speed [m/s]", vehicle_->commandedSpeed());
+    status.add("travel acceleration [m/s^2]", vehicle_->travelAcceleration());
+  }
+  status.add("max speed [m/s]", params_.max_speed);
+  status.add("speeds accepted (total)", events_.speeds_accepted);
+  status.add("speeds rejected (total)", events_.speeds_rejected);
+  status.add("speeds rejected (since last report)", rejected);
+  status.add("last rejection", last_speed_error_);
+  status.add("speed timeout [s]", params_.speed_timeout);
+  status.add("stops after the speed timeout (total)", events_.speed_timeouts);
+}
+
+void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrapper& status) {
+  if (!params_.reduced_model.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "loaded from ~reduced_model");
+  } else if (report_.from_cache) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "loaded from cache");
+  } else if (cached_) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "built and cached");
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "built; not cached: " + not_cached_reason_);
+  }
+  status.add("vehicle file", params_.vehicle);
+  status.add("vehicle", vehicle_->geometry().vehicle_name);
+  status.add("variant", vehicle::variantName(params_.variant));
+  status.add("reduced DOFs", static_cast<long>(model_dofs_));
+  status.add("road inputs", static_cast<long>(model_inputs_));
+  status.add("outputs", static_cast<long>(model_outputs_));
+  status.add("full-model DOFs", static_cast<long>(report_.full_dofs));
+  status.add("fixed-interface modes", report_.flexible_modes);
+  status.add("damping", model_damping_);
+  status.add("method", methodName(params_.vehicle_options.method));
+  status.add("hold", holdName(params_.vehicle_options.hold));
+  status.add("cache file", report_.cache_file);
+  status.add("cached", cached_);
+  status.add("cache note", report_.cache_note);
+  status.add("load time [s]", load_seconds_);
+  status.add("discretisation set-up time [s]", setup_seconds_);
+  status.add("comfort point", vehicle_->comfortPoint());
+}
+
+void VehicleDynamicsNode::diagnoseGroundContact(
+    diagnostic_updater::DiagnosticStatusWrapper& status) {
+  // The bonded linear model holds every contact on the road; a contact that pressed at rest and
+  // now pulls (F < 0) is where a real vehicle would lift off: the results there are the model's.
+  dynamics::GroundContactWatch* const watch = vehicle_->groundContactWatch();
+  if (!watch) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "not checked: " + vehicle_->groundContactUnavailable());
+    return;
+  }
+  if (contact_every_ == 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK, "not checked (~ground_contact_rate 0)");
+    return;
+  }
+  const dynamics::GroundContactRecord interval = watch->takeInterval();
+  const dynamics::GroundContactRecord& run = watch->sinceRestart();
+  const dynamics::GroundContactNow& now = watch->now();
+  if (interval.beyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
+                    "beyond the linear model's range: up to %ld contacts pressed at rest pulled "
+                    "on the road since the last report (a real vehicle would lift off there)",
+                    static_cast<long>(interval.most_pulling));
+  } else if (run.beyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
+                    "in range since the last report (left it at t = %.3f s, station %.2f m)",
+                    run.first_beyond_time, run.first_beyond_station);
+  } else {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "in range: every contact pressed at rest presses on the road");
+  }
+  status.add("contacts", static_cast<long>(watch->contactCount()));
+  status.add("pulling at rest (the bonded statics)", static_cast<long>(watch->pullingAtRest()));
+  // The rate the checks run at: every round(~rate / ~ground_contact_rate) steps, so a requested
+  // rate that does not divide ~rate is shown as run (and as asked, when they differ).
+  const double check_rate = params_.vehicle_options.rate / static_cast<double>(contact_every_);
+  status.add("check rate [Hz]", check_rate);
+  if (std::abs(check_rate - params_.ground_contact_rate) > 1e-9 * params_.ground_contact_rate)
+    status.add("check rate requested [Hz]", params_.ground_contact_rate);
+  status.add("checks (since last report)", interval.checks);
+  status.add("checks beyond the range (since last report)", interval.checks_beyond);
+  status.add("most pulling at once (since last report)", static_cast<long>(interval.most_pulling));
+  status.add("min force of a contact pressed at rest (since last report) [N]", interval.min_force);
+  status.add("pulling now", static_cast<long>(now.pulling));
+  status.add("ground force left now [N]", now.left);
+  status.add("ground force right now [N]", now.right);
+  status.add("checks beyond the range (since the last start or reset)", run.checks_beyond);
+  if (run.beyondRange()) {
+    const dynamics::GroundContact& c =
+        watch->contacts()[static_cast<std::size_t>(run.first_beyond_contact)];
+    status.add("first beyond the range: time [s]", run.first_beyond_time);
+    status.add("first beyond the range: station [m]", run.first_beyond_station);
+    status.add("first beyond the range: road input",
+               std::to_string(c.input) + " (" + dynamics::contactSideName(c.side) + ")");
+  }
+}
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics
