@@ -142,11 +142,22 @@ int main(int argc, char** argv) {
   o.method = tvd::dynamics::DiscretizationMethod::ModalDecoupled;
   o.generalized_force = model.gravity_load;
   o.max_mode_frequency_hz = 0.5 / dt;
-  std::vector<double> stepped, batch, setup, held_sample, held_batch;
+  std::vector<double> stepped, batch, setup, held_sample, held_batch, dense_sample;
   double peak = 0.0;
   const tvd::Vector z0 = tvd::dynamics::staticEquilibrium(s, inputs.row(0).head(road.inputCount()).transpose(),
                                                           model.gravity_load);
   for (int r = 0; r < repeat; ++r) {
+    {
+      // The dense series again: the first call above also paid for its 124 MB's first touch.
+      const auto ts = Clock::now();
+      const tvd::Matrix again =
+          road.sampleSeries(lines, track.startStation(), speed, dt, 0, steps + 1);
+      dense_sample.push_back(seconds(ts));
+      if (again != inputs) {
+        std::printf("the dense series differs between two samplings\n");
+        return 1;
+      }
+    }
     const auto t0 = Clock::now();
     tvd::dynamics::Simulator sim(s, o);
     setup.push_back(seconds(t0));
@@ -181,11 +192,13 @@ int main(int argc, char** argv) {
   std::printf("\n== 2. simulation, tracked reduced model (%ld DOFs, %ld inputs), long hill at 5 km/h, "
               "%.1f s simulated at 1 ms (%ld steps)\n",
               static_cast<long>(s.size()), static_cast<long>(road.inputCount()), steps * dt, steps);
-  std::printf("ours: setup %.1f ms; stepping with terrain sampling %.1f ms (real-time factor %.0f); "
-              "batch simulate() on the input series %.1f ms (real-time factor %.0f), the series "
-              "sampled in %.1f ms; peak heave %.4f m\n",
-              1e3 * median(setup), 1e3 * median(stepped), steps * dt / median(stepped),
-              1e3 * median(batch), steps * dt / median(batch), 1e3 * sample_seconds, peak);
+  std::printf(
+      "ours: setup %.1f ms; stepping with terrain sampling %.1f ms (real-time factor %.0f); "
+      "batch simulate() on the input series %.1f ms (real-time factor %.0f), the series "
+      "sampled in %.1f ms (the first time, with its memory's first touch: %.1f ms); peak "
+      "heave %.4f m\n",
+      1e3 * median(setup), 1e3 * median(stepped), steps * dt / median(stepped), 1e3 * median(batch),
+      steps * dt / median(batch), 1e3 * median(dense_sample), 1e3 * sample_seconds, peak);
   {
     std::vector<double> total_held(held_sample.size());
     for (std::size_t i = 0; i < total_held.size(); ++i) total_held[i] = held_sample[i] + held_batch[i];

@@ -36,7 +36,7 @@ constexpr double kBandFrequencyTolerance = 0.02;
 constexpr int kMaxGlobalModes = 200;
 /// Why, as the command line and the node append it to a refusal.
 constexpr const char* kMaxGlobalModesReason =
-    " (more take minutes to solve: 200 take about 7 s, 300 about 4 min, 500 over 10 min)";
+    " (more take minutes to solve: 200 take 7-13 s, 300 about 4 min, 500 over 10 min)";
 /// The largest mogesec_masters and mode_count they take: a reduced model of thousands of DOFs
 /// is no longer small (the tracked vehicle's default has 431).
 constexpr int kMaxReductionCount = 1000;
