@@ -63,7 +63,7 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
             continue
         name = f"fig11{letter}_modes_{pair['type'].replace(' ', '_').replace('+', '_')}.png"
         jobs.append((name, "plot_modes.py",
-                     ["--out", fig(name),
+                     ["--out", fig(name), "--normalise", "vehicle",
                       f"un-tracked ({pair['type']})={runs.path('modes_untracked')}:"
                       f"{pair['untracked_mode']}",
                       f"tracked, its MAC partner (MAC {pair['mac']:.2f})="
@@ -96,7 +96,9 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
         name = f"fig17{letter}_terrain_{track}.png"
         jobs.append((name, "plot_terrain.py",
                      ["--vehicle", vehicle, "--out", fig(name), "--title",
-                      f"{TRACK_NAMES[track]} under the pad rows", runs.terrain_csv(track)]))
+                      f"{TRACK_NAMES[track]} under the pad rows"
+                      + (" (driven 1 m left of the track's centre line, as in the paper)"
+                         if track == "oop_waves" else ""), runs.terrain_csv(track)]))
     for speed, number in zip(MOR_SPEEDS_KMH, (18, 19)):
         name = f"fig{number}_untracked_long_hill_{speed}kmh_full_vs_reduced.png"
         jobs.append((name, "plot_simulation.py",
@@ -107,13 +109,13 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
         v = COUPLING_SPEED_KMH
         name = f"fig{number}_{track}_{v}kmh_untracked_vs_tracked.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title", f"{TRACK_NAMES[track]}, {v} km/h",
+                     ["--out", fig(name), "--title", f"{TRACK_NAMES[track]}, {v} km/h (reduced models)",
                       f"un-tracked={runs.sim_csv('untracked', 'reduced', track, v)}",
                       f"tracked={runs.sim_csv('tracked', 'reduced', track, v)}"]))
     for track, number in (("long_hill", 23), ("separated_waves", 24)):
         name = f"fig{number}_tracked_{track}_speeds.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title", f"tracked, {TRACK_NAMES[track]}"]
+                     ["--out", fig(name), "--title", f"tracked, {TRACK_NAMES[track]} (reduced model)"]
                      + [f"{s} km/h={runs.sim_csv('tracked', 'reduced', track, s)}"
                         for s in TRACKED_SPEEDS_KMH]))
     return jobs

@@ -611,8 +611,8 @@ def time_domain_section(runs, reference):
              f"({damping_name(runs.description_damping())}). In {len(above_g)} of {len(reduced)} "
              "runs the hull's peak acceleration exceeds g, and in "
              f"{len(out_of_range)} of {len(reduced)} the bonded model pulls on the road (a sole "
-             "pressed at rest goes into tension: `ground_contact.in_range` false, see \"Ground "
-             "contact\" below): a real vehicle would lift pads and wheels there, while the linear "
+             "pressed at rest goes into tension: `ground_contact.in_range` false; the README's "
+             "section \"Ground contact\" has the details): a real vehicle would lift pads and wheels there, while the linear "
              "model keeps every pad on the road, so those results are the model's, not a "
              "vehicle's.")
     data = [{"case": r[0], "paper": r[1], "ours": r[2], "ok": ok} for r, ok in rows]

@@ -11,7 +11,7 @@ Input: files written by `tvd frf --out FILE.csv` (header by name, any column ord
     `tvd frf --points P`, also P_vertical_acc_mag, _phase_deg and _wk_mag (ISO 2631-1
     Wk-weighted), drawn in a panel of their own after the others, the weighted one thinner.
 Outputs absent from every file get no panel; an output that is zero in every file is drawn on a
-linear scale (log scale otherwise) and its panel says so. For example
+linear scale (log scale otherwise, down to 3 decades below its peak) and its panel says so. For example
 
     TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
     $TVD frf --vehicle $V --variant tracked --model full --out /tmp/full.csv
@@ -44,6 +44,8 @@ OUTPUTS = {
     "front_wheel_acc": ("front road wheel acceleration", r"$|\ddot z_{u,F} / h|$ [(m/s$^2$)/m]"),
     "rear_wheel_acc": ("rear road wheel acceleration", r"$|\ddot z_{u,R} / h|$ [(m/s$^2$)/m]"),
 }
+# Decades of magnitude drawn below the largest value of a panel (log scale).
+DECADES_SHOWN = 3
 LINE_STYLES = ["-", "--", ":", (0, (5, 1, 1, 1))]  # "-." is the band line
 POINT_SUFFIX = "_vertical_acc"  # `tvd frf --points`: <point>_vertical_acc_mag, ..._wk_mag
 
@@ -142,8 +144,9 @@ def main():
         peak = max(outputs[name].max() for _, _, outputs, _ in curves if name in outputs)
         if peak > 0:
             ax.set_yscale("log")
-            # Wheelbase-filter notches reach ~0: show 6 decades below the peak, not down to 1e-13.
-            ax.set_ylim(bottom=max(ax.get_ylim()[0], 1e-6 * peak))
+            # An acceleration FRF falls as f^2 towards 0 Hz and the wheelbase filter's notches
+            # reach ~0: DECADES_SHOWN below the peak keep the resonances readable.
+            ax.set_ylim(bottom=max(ax.get_ylim()[0], 10.0 ** -DECADES_SHOWN * peak))
         else:  # nothing to draw on a log scale
             ax.set_ylim(-0.05, 1)
         ax.set_xlim(0, args.f_max)

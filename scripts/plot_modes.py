@@ -13,7 +13,11 @@ of `tvd mac` (the un-tracked mode and its tracked partner):
     $TVD modes --vehicle $V --variant tracked --count 40 --out /tmp/mt
     scripts/plot_modes.py --out fig11.png "un-tracked=/tmp/mu:5" "tracked=/tmp/mt:15"
 
---scale sets the drawn largest displacement [m] (default 0.4). Bad input (a missing directory or
+--scale sets the drawn largest displacement [m] (default 0.4). With --normalise vehicle the colour
+and the drawn scale refer to the largest displacement off the track chain (hull, spider, arms,
+wheels, sprockets, idlers, named points), so that a tracked mode whose chain moves most still shows
+its hull; chain nodes beyond it are drawn red at the scale. The hull's CoG is a large marker, its
+rest position a hollow one. Bad input (a missing directory or
 file, a mode the files do not hold, a malformed row) exits with status 2 and one line on stderr
 naming it; no figure is written then.
 """
@@ -41,8 +45,37 @@ def spec(text):
             number)
 
 
+# --normalise: what the colour scale's red and the drawn --scale refer to.
+NORMALISE = {"mode": "max |u| of the mode",
+             "vehicle": "max |u| off the track chain (chain nodes beyond it: red, at the scale)"}
+CHAIN_PART = "track assembly"  # node_shapes.csv `part` of the chain's nodes
+HULL_PART = "hull"             # the hull's reference node, its CoG
+
+
+def reference_magnitude(parts, magnitude, normalise):
+    """The displacement drawn at --scale and coloured red: the mode's largest, or with 'vehicle'
+    the largest off the track chain (the mode's largest when nothing off the chain moves)."""
+    if normalise == "vehicle":
+        off_chain = np.array([not part.startswith(CHAIN_PART) for part in parts], dtype=bool)
+        if off_chain.any() and magnitude[off_chain].max() > 0:
+            return magnitude[off_chain].max()
+    return magnitude.max()
+
+
+def drawn_positions(positions, shape, scale, reference):
+    """positions + shape scale / reference, each node's drawn displacement at most `scale`."""
+    if reference <= 0:
+        return positions.copy()
+    drawn = shape * (scale / reference)
+    length = np.linalg.norm(drawn, axis=1)
+    over = length > scale
+    drawn[over] *= (scale / length[over])[:, None]
+    return positions + drawn
+
+
 def load(directory, mode):
-    """(positions [n x 3], displacements [n x 3], title) of one mode of a modes directory."""
+    """(positions [n x 3], displacements [n x 3], parts [n], title) of one mode of a modes
+    directory."""
     if not os.path.isdir(directory):
         fail(f"{directory}: not a directory (the --out of `tvd modes --vehicle`)")
     modes = Table(os.path.join(directory, "modes.csv"))
@@ -57,20 +90,26 @@ def load(directory, mode):
     if not (np.all(np.isfinite(positions)) and np.all(np.isfinite(shape))):
         fail(f"{directory}/node_shapes.csv: a non-finite value")
     kind = modes.text("type")[row] if "type" in modes.header else ""
+    parts = list(nodes.text("part")) if "part" in nodes.header else [""] * len(positions)
     title = f"mode {mode}, {frequency:.2f} Hz" + (f" ({kind})" if kind else "")
-    return positions, shape, title
+    return positions, shape, parts, title
 
 
-def draw(ax, positions, shape, scale, axis):
+def draw(ax, positions, shape, parts, scale, normalise, axis):
     """One view: x against `axis` (1: y, top view; 2: z, side view)."""
     magnitude = np.linalg.norm(shape, axis=1)
-    largest = magnitude.max()
-    factor = scale / largest if largest > 0 else 0.0
-    moved = positions + factor * shape
+    reference = reference_magnitude(parts, magnitude, normalise)
+    moved = drawn_positions(positions, shape, scale, reference)
+    colour = np.minimum(magnitude / reference, 1.0) if reference > 0 else magnitude
     ax.scatter(positions[:, 0], positions[:, axis], s=3, color="0.8", zorder=1)
     order = np.argsort(magnitude)  # the largest on top
-    ax.scatter(moved[order, 0], moved[order, axis], s=6, zorder=2, cmap="jet",
-               c=magnitude[order] / largest if largest > 0 else magnitude[order], vmin=0.0, vmax=1.0)
+    ax.scatter(moved[order, 0], moved[order, axis], s=6, zorder=2, cmap="jet", c=colour[order],
+               vmin=0.0, vmax=1.0)
+    for i in (i for i, part in enumerate(parts) if part == HULL_PART):
+        ax.scatter(positions[i, 0], positions[i, axis], s=140, facecolor="none", edgecolor="k",
+                   zorder=3)
+        ax.scatter(moved[i, 0], moved[i, axis], s=140, c=[colour[i]], cmap="jet", vmin=0.0,
+                   vmax=1.0, edgecolor="k", zorder=4)
     vehicle_view(ax, axis)
 
 
@@ -80,6 +119,9 @@ def main():
     parser.add_argument("--out", required=True, help=f"figure file to write; {OUT_HELP}")
     parser.add_argument("--scale", type=positive_float, default=0.4,
                         help="largest displacement as drawn [m] (default 0.4)")
+    parser.add_argument("--normalise", choices=NORMALISE, default="mode",
+                        help="what the colour and --scale refer to: the mode's largest displacement "
+                             "(mode, the default) or the largest off the track chain (vehicle)")
     parser.add_argument("modes", nargs="+", type=spec, metavar="[LABEL=]DIR:MODE",
                         help="a `tvd modes --vehicle --out` directory and a mode number, one row each")
     args = parser.parse_args()
@@ -88,13 +130,14 @@ def main():
     rows = [(label, *load(directory, mode)) for label, directory, mode in args.modes]
     fig, axes = plt.subplots(len(rows), 2, figsize=(14, 3.8 * len(rows)), squeeze=False,
                              gridspec_kw={"width_ratios": [1, 1]})
-    for (label, positions, shape, title), (side, top) in zip(rows, axes):
-        draw(side, positions, shape, args.scale, 2)
-        draw(top, positions, shape, args.scale, 1)
-        side.set_title(f"{label}: {title}, side view")
-        top.set_title("top view")
-    fig.suptitle(f"grey: undeformed; colour: displacement |u| / max |u| of the mode, blue 0 to red 1 "
-                 f"(drawn {args.scale:g} m at the largest)")
+    for (label, positions, shape, parts, title), (side, top) in zip(rows, axes):
+        draw(side, positions, shape, parts, args.scale, args.normalise, 2)
+        draw(top, positions, shape, parts, args.scale, args.normalise, 1)
+        side.set_title(f"{label}:\n{title}, side view")
+        top.set_title("\ntop view")
+    fig.suptitle(f"grey: undeformed; colour: displacement |u| / {NORMALISE[args.normalise]},\n"
+                 f"blue 0 to red 1, drawn {args.scale:g} m at red; large marker: the hull's CoG "
+                 f"(hollow: at rest)")
     save((fig, args.out))
 
 

@@ -16,7 +16,8 @@ Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
 rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Where a file has
 road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey in its panel (the paper's
-dashed h_F and h_R). The figure type
+dashed h_F and h_R; once where the runs' roads are the same). One legend, in the first panel, names
+the runs; a roll panel that stays below 0.001 deg in every run says so. The figure type
 follows the extension of --out (.png, .pdf, .svg, ...). Bad input (missing or corrupt file, missing
 or repeated column, ragged row, non-numeric value, an output that cannot be written) exits with
 status 2 and one line on stderr naming the file; no figure is written then.
@@ -29,6 +30,8 @@ import re
 from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs, labelled,
                          save)
 import matplotlib.pyplot as plt
+from matplotlib.lines import Line2D
+import numpy as np
 
 
 # The station is that of the vehicle's reference point, the wheelbase centre (the front wheel
@@ -48,6 +51,8 @@ PANELS = {
     "rear_left_wheel": "rear-left road wheel [m]",
 }
 LINE_STYLES = ["-", "--", "-.", ":"]
+# Roll below this in every run is no signal: a track uniform across its width does not excite it.
+NEGLIGIBLE_ROLL_DEG = 1e-3
 
 
 def load(path, x_column, points=()):
@@ -106,23 +111,42 @@ def main():
     fig, axes = plt.subplots(nrows, 2, figsize=(12, 3.2 * nrows), sharex=True, squeeze=False)
     for ax in axes.flat[len(present):]:
         ax.set_visible(False)
+    road_drawn = False
     for ax, key in zip(axes.flat, present):
+        roads = []  # the road lines drawn in this panel: the same road of several runs once
         for k, (label, x, series) in enumerate(runs):
             if key in series:
                 ax.plot(x, series[key], linestyle=LINE_STYLES[k % len(LINE_STYLES)], label=label)
-            if road_panel(key) in series:
-                ax.plot(x, series[road_panel(key)], color="grey", linewidth=0.8,
-                        linestyle=LINE_STYLES[(k + 1) % len(LINE_STYLES)],
-                        label=f"road under it ({label})" if len(runs) > 1 else "road under it")
+            road = series.get(road_panel(key))
+            if road is not None and not any(np.array_equal(x, rx) and np.array_equal(road, r)
+                                            for rx, r in roads):
+                roads.append((x, road))
+                ax.plot(x, road, color="grey", linewidth=0.8,
+                        linestyle=LINE_STYLES[(len(roads) - 1) % len(LINE_STYLES)])
+                road_drawn = True
         ax.set_ylabel(labels[key])
         low, high = ax.get_ylim()
         if key in MIN_SPAN and high - low < MIN_SPAN[key]:
             centre = 0.5 * (low + high)
             ax.set_ylim(centre - 0.5 * MIN_SPAN[key], centre + 0.5 * MIN_SPAN[key])
+        if key == "hull_roll_deg" and all(
+                np.max(np.abs(series[key])) < NEGLIGIBLE_ROLL_DEG for _, _, series in runs
+                if key in series):
+            ax.text(0.5, 0.5, f"|roll| < {NEGLIGIBLE_ROLL_DEG:g}° in every run:\n"
+                    "no lateral excitation", transform=ax.transAxes, ha="center", va="center",
+                    color="0.3", bbox={"facecolor": "white", "edgecolor": "none"})
+            ax.set_ylim(-1.5 * MIN_SPAN[key], 0.5 * MIN_SPAN[key])  # the line high, the note clear of it
         ax.set_xlabel(x_label)
         ax.xaxis.set_tick_params(labelbottom=True)
         ax.grid(True, alpha=0.3)
-        ax.legend(fontsize="small")
+    # One legend, in the first panel (the runs' line styles are the same in every panel), so
+    # that none covers the wheel panels' peaks; the road under the wheels is grey.
+    handles, names = axes.flat[0].get_legend_handles_labels()
+    if road_drawn:
+        handles.append(Line2D([], [], color="grey", linewidth=0.8))
+        names.append("road under the wheel")
+    if len(handles) > 1 or (handles and names[0]):
+        axes.flat[0].legend(handles, names, fontsize="small")
     if args.title:
         fig.suptitle(args.title)
     save((fig, args.out))

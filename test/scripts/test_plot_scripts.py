@@ -475,6 +475,55 @@ class PlotScriptsTest(unittest.TestCase):
                                      "long hill", f"5 km/h={slow}", f"50 km/h={fast}")
             self.assert_png(result, out)
 
+    def test_simulation_shares_one_legend_and_draws_a_common_road_once(self):
+        # Two runs over the same road: one grey road line per wheel panel (not one per run), one
+        # legend, in the first panel, naming both runs and the road; a roll below 0.001 deg in
+        # both runs is said to be no signal. A third run on another road adds its own road line.
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_simulation
+        finally:
+            sys.path.remove(SCRIPTS)
+        columns = simulation_columns()
+        columns["hull_roll_deg"] = 1e-5 * np.sin(columns["station_m"])
+        for wheel in (1, 7):
+            columns[f"road_under_road_wheel_left_{wheel}_m"] = hill(columns["station_m"] + wheel)
+        a = write_csv(self.path("a.csv"), columns)
+        b = write_csv(self.path("b.csv"), dict(columns, hull_heave_m=1.1 * columns["hull_heave_m"]))
+        other = dict(columns, road_under_road_wheel_left_1_m=np.zeros_like(columns["station_m"]))
+        c = write_csv(self.path("c.csv"), other)
+
+        def draw(*args):
+            captured = []
+            original, argv = plot_simulation.save, sys.argv
+            plot_simulation.save = lambda *pairs: captured.extend(pairs)
+            sys.argv = ["plot_simulation.py", "--out", self.path("f.png")] + list(args)
+            try:
+                plot_simulation.main()
+            finally:
+                plot_simulation.save, sys.argv = original, argv
+            return captured[0][0]
+
+        fig = draw(f"a={a}", f"b={b}")
+        panels = {ax.get_ylabel(): ax for ax in fig.axes if ax.get_visible()}
+        front = panels["front-left road wheel [m]"]
+        grey = [line for line in front.get_lines() if line.get_color() == "grey"]
+        self.assertEqual(len(grey), 1)
+        legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
+        self.assertEqual(len(legends), 1)
+        self.assertIs(fig.axes[0].get_legend(), legends[0])
+        self.assertEqual([t.get_text() for t in legends[0].get_texts()],
+                         ["a", "b", "road under the wheel"])
+        roll = panels["hull roll [deg]"]
+        self.assertTrue(any("no lateral excitation" in t.get_text() for t in roll.texts))
+        fig = draw(f"a={a}", f"c={c}")
+        front = {ax.get_ylabel(): ax for ax in fig.axes}["front-left road wheel [m]"]
+        self.assertEqual(len([l for l in front.get_lines() if l.get_color() == "grey"]), 2)
+        # A roll that is a signal (0.5 deg) gets no such note.
+        fig = draw(f"slow={write_csv(self.path('r.csv'), simulation_columns())}")
+        roll = {ax.get_ylabel(): ax for ax in fig.axes}["hull roll [deg]"]
+        self.assertEqual(len(roll.texts), 0)
+
     def test_simulation_named_point_panel(self):
         columns = simulation_columns()
         columns["crew_seat_accel_z_m_s2"] = 1.3 * columns["hull_vertical_accel_m_s2"]
@@ -890,6 +939,39 @@ class PlotScriptsTest(unittest.TestCase):
         rewrite_lines(os.path.join(u, "node_shapes.csv"), not_a_number)
         result = self.run_script("plot_modes.py", "--out", out, f"{u}:1")
         self.assert_input_error(result, out, "node_shapes.csv", "z_m")
+
+    def test_modes_vehicle_normalisation_scales_on_the_hull_and_clips_the_chain(self):
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_modes
+        finally:
+            sys.path.remove(SCRIPTS)
+        parts = ["hull", "road_wheel_left_1 centre", "track assembly left 3 link",
+                 "track assembly left 4 sole"]
+        positions = np.zeros((4, 3))
+        shape = np.array([[0.0, 0.0, 0.02], [0.0, 0.0, 0.05], [1.0, 0.0, 0.0], [0.0, 0.0, 0.5]])
+        magnitude = np.linalg.norm(shape, axis=1)
+        self.assertEqual(plot_modes.reference_magnitude(parts, magnitude, "mode"), 1.0)
+        self.assertEqual(plot_modes.reference_magnitude(parts, magnitude, "vehicle"), 0.05)
+        # Nothing off the chain moves: the mode's own largest.
+        still = shape.copy()
+        still[:2] = 0.0
+        self.assertEqual(plot_modes.reference_magnitude(parts, np.linalg.norm(still, axis=1),
+                                                        "vehicle"), 1.0)
+        drawn = plot_modes.drawn_positions(positions, shape, 0.4, 0.05)
+        np.testing.assert_allclose(drawn[0], [0.0, 0.0, 0.16])  # 0.02 of 0.05 -> 0.4 * 0.4
+        np.testing.assert_allclose(drawn[1], [0.0, 0.0, 0.4])   # the reference, at the scale
+        np.testing.assert_allclose(drawn[2], [0.4, 0.0, 0.0])   # 20x the reference, clipped
+        np.testing.assert_allclose(drawn[3], [0.0, 0.0, 0.4])
+        np.testing.assert_allclose(plot_modes.drawn_positions(positions, shape, 0.4, 0.0), 0.0)
+        # The option end to end, and a bad value refused.
+        out = self.path("fig11.png")
+        u = self.write_modes_dir("mu")
+        self.assert_png(self.run_script("plot_modes.py", "--out", out, "--normalise", "vehicle",
+                                        f"{u}:1"), out)
+        result = self.run_script("plot_modes.py", "--out", out, "--normalise", "hull", f"{u}:1")
+        self.assertEqual(result.returncode, INPUT_ERROR_STATUS, result.stderr)
+        self.assertIn("--normalise", result.stderr)
 
     # ros_demo_summary.py (its bag reading needs the node's messages; the wheel choice does not)
 
