@@ -149,8 +149,10 @@ def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold,
         else:
             labels.append([x, y, [name], radius])
     for x, y, names, radius in labels:
+        # On a white ground: the iso-frequency line runs through the pairs' labels.
         ax.annotate(", ".join(names), (x, y), xytext=(radius + 3, -2), textcoords="offset points",
-                    fontsize=6)
+                    fontsize=6, zorder=4,
+                    bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 0.5})
     fig.colorbar(markers, ax=ax, label="MAC")
     ax.set_xlim(0, limit)
     ax.set_ylim(0, limit)
