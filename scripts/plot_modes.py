@@ -105,11 +105,11 @@ def draw(ax, positions, shape, parts, scale, normalise, axis):
     order = np.argsort(magnitude)  # the largest on top
     ax.scatter(moved[order, 0], moved[order, axis], s=6, zorder=2, cmap="jet", c=colour[order],
                vmin=0.0, vmax=1.0)
-    for i in (i for i, part in enumerate(parts) if part == HULL_PART):
-        ax.scatter(positions[i, 0], positions[i, axis], s=140, facecolor="none", edgecolor="k",
-                   zorder=3)
-        ax.scatter(moved[i, 0], moved[i, axis], s=140, c=[colour[i]], cmap="jet", vmin=0.0,
-                   vmax=1.0, edgecolor="k", zorder=4)
+    hull = [i for i, part in enumerate(parts) if part == HULL_PART]
+    ax.scatter(positions[hull, 0], positions[hull, axis], s=140, facecolor="none", edgecolor="k",
+               zorder=3)
+    ax.scatter(moved[hull, 0], moved[hull, axis], s=140, c=colour[hull], cmap="jet", vmin=0.0,
+               vmax=1.0, edgecolor="k", zorder=4)
     vehicle_view(ax, axis)
 
 

@@ -135,7 +135,8 @@ def main():
             ax.text(0.5, 0.5, f"|roll| < {NEGLIGIBLE_ROLL_DEG:g}° in every run:\n"
                     "no lateral excitation", transform=ax.transAxes, ha="center", va="center",
                     color="0.3", bbox={"facecolor": "white", "edgecolor": "none"})
-            ax.set_ylim(-1.5 * MIN_SPAN[key], 0.5 * MIN_SPAN[key])  # the line high, the note clear of it
+            # The line high in the panel, the note clear of it.
+            ax.set_ylim(-1.5 * MIN_SPAN[key], 0.5 * MIN_SPAN[key])
         ax.set_xlabel(x_label)
         ax.xaxis.set_tick_params(labelbottom=True)
         ax.grid(True, alpha=0.3)
@@ -145,7 +146,7 @@ def main():
     if road_drawn:
         handles.append(Line2D([], [], color="grey", linewidth=0.8))
         names.append("road under the wheel")
-    if len(handles) > 1 or (handles and names[0]):
+    if handles:
         axes.flat[0].legend(handles, names, fontsize="small")
     if args.title:
         fig.suptitle(args.title)
