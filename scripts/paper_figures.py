@@ -62,12 +62,17 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
         if not (pair["untracked_mode"] and pair["tracked_mode"]):
             continue
         name = f"fig11{letter}_modes_{pair['type'].replace(' ', '_').replace('+', '_')}.png"
-        jobs.append((name, "plot_modes.py",
-                     ["--out", fig(name), "--normalise", "vehicle",
-                      f"un-tracked ({pair['type']})={runs.path('modes_untracked')}:"
-                      f"{pair['untracked_mode']}",
-                      f"tracked, its MAC partner (MAC {pair['mac']:.2f})="
-                      f"{runs.path('modes_tracked')}:{pair['tracked_mode']}"]))
+        modes_tracked = runs.path("modes_tracked")
+        rows = [f"un-tracked ({pair['type']})={runs.path('modes_untracked')}:"
+                f"{pair['untracked_mode']}",
+                f"tracked, its MAC partner (MAC {pair['mac']:.2f})={modes_tracked}:"
+                f"{pair['tracked_mode']}"]
+        # A partner without the paper's motion: the tracked mode of that type as a third row.
+        of_type = pair.get("tracked_mode_of_type")
+        if not pair["same_motion_as_paper"] and of_type and of_type != pair["tracked_mode"]:
+            rows.append(f"tracked, the nearest mode of the type (not the MAC partner)="
+                        f"{modes_tracked}:{of_type}")
+        jobs.append((name, "plot_modes.py", ["--out", fig(name), "--normalise", "vehicle"] + rows))
     jobs += [
         ("fig12_masters.png", "plot_masters.py",
          ["--out", fig("fig12_masters.png"), f"un-tracked={runs.path('reduced_untracked.mat')}",

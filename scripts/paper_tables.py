@@ -165,6 +165,9 @@ def pairing_section(runs, reference):
                             uv["mode_types"], primary_only=True)
     correlation = {c["untracked_mode"]: c for c in runs.mac["correlation"]}
     tolerance = t4["tracked_tolerance"]
+    # The tracked mode of each type (Table 4's tracked rows), for the figures of the pairs whose
+    # MAC partner lacks the paper's motion.
+    of_type = {row["type"]: row["mode"] for row in table4_rows(runs, reference, "tracked")}
     body, data = [], []
     for r, i in zip(t4["rows"], ours_uv):
         c = correlation.get(i + 1) if i is not None else None
@@ -186,7 +189,8 @@ def pairing_section(runs, reference):
                      "tracked_mode": c["tracked_mode"] if partner else None,
                      "tracked_hz": c["tracked_hz"] if partner else None,
                      "tracked_type": tv_type, "mac": c["mac"] if partner else None,
-                     "same_motion_as_paper": same, "frequency_within_tolerance": bool(close)})
+                     "same_motion_as_paper": same, "frequency_within_tolerance": bool(close),
+                     "tracked_mode_of_type": of_type.get(r["type"])})
     same = sum(d["same_motion_as_paper"] for d in data)
     close = sum(d["frequency_within_tolerance"] for d in data)
     text = (markdown_table(["Table 4 type", "paper: UV mode (Hz) \u2192 TV mode (Hz)",

@@ -93,6 +93,17 @@ class PaperReportTest(unittest.TestCase):
             off = abs(r["hz"] - r["paper_hz"]) > 0.10 * r["paper_hz"]
             self.assertEqual(off, r["status"] == "**not met**", r)
 
+    def test_pairs_without_the_papers_motion_carry_the_tracked_mode_of_their_type(self):
+        # Fig. 11 draws that mode as a third row: it is Table 4's tracked row of the same type.
+        sections = self.sections()
+        of_type = {r["type"]: r["mode"] for r in sections["table4_tracked"]}
+        pairs = sections["mac_pairing"]
+        self.assertEqual(len(pairs), 8)
+        for pair in pairs:
+            self.assertEqual(pair["tracked_mode_of_type"], of_type[pair["type"]], pair)
+        self.assertTrue(any(not p["same_motion_as_paper"] and p["tracked_mode_of_type"]
+                            != p["tracked_mode"] for p in pairs))
+
     def test_reduction_and_frf_targets_hold(self):
         s = self.sections()
         self.assertLessEqual(s["table5"]["tracked"]["reduced_dofs"],
