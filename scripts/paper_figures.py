@@ -114,13 +114,15 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
         v = COUPLING_SPEED_KMH
         name = f"fig{number}_{track}_{v}kmh_untracked_vs_tracked.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title", f"{TRACK_NAMES[track]}, {v} km/h (reduced models)",
+                     ["--out", fig(name), "--title",
+                      f"{TRACK_NAMES[track]}, {v} km/h (reduced models)",
                       f"un-tracked={runs.sim_csv('untracked', 'reduced', track, v)}",
                       f"tracked={runs.sim_csv('tracked', 'reduced', track, v)}"]))
     for track, number in (("long_hill", 23), ("separated_waves", 24)):
         name = f"fig{number}_tracked_{track}_speeds.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title", f"tracked, {TRACK_NAMES[track]} (reduced model)"]
+                     ["--out", fig(name), "--title",
+                      f"tracked, {TRACK_NAMES[track]} (reduced model)"]
                      + [f"{s} km/h={runs.sim_csv('tracked', 'reduced', track, s)}"
                         for s in TRACKED_SPEEDS_KMH]))
     return jobs

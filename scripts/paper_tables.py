@@ -616,8 +616,8 @@ def time_domain_section(runs, reference):
              "runs the hull's peak acceleration exceeds g, and in "
              f"{len(out_of_range)} of {len(reduced)} the bonded model pulls on the road (a sole "
              "pressed at rest goes into tension: `ground_contact.in_range` false; the README's "
-             "section \"Ground contact\" has the details): a real vehicle would lift pads and wheels there, while the linear "
-             "model keeps every pad on the road, so those results are the model's, not a "
+             "section \"Ground contact\" has the details): a real vehicle would lift pads and "
+             "wheels there, while the linear model keeps every pad on the road, so those results are the model's, not a "
              "vehicle's.")
     data = [{"case": r[0], "paper": r[1], "ours": r[2], "ok": ok} for r, ok in rows]
     return Section("time_domain", "Time domain (\u00a74.2, Figs. 18-24)", text, data)

@@ -11,7 +11,8 @@ Input: files written by `tvd frf --out FILE.csv` (header by name, any column ord
     `tvd frf --points P`, also P_vertical_acc_mag, _phase_deg and _wk_mag (ISO 2631-1
     Wk-weighted), drawn in a panel of their own after the others, the weighted one thinner.
 Outputs absent from every file get no panel; an output that is zero in every file is drawn on a
-linear scale (log scale otherwise, down to 3 decades below its peak) and its panel says so. For example
+linear scale (log scale otherwise, down to 3 decades below its peak) and its panel says so. For
+example
 
     TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
     $TVD frf --vehicle $V --variant tracked --model full --out /tmp/full.csv

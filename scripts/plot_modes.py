@@ -120,8 +120,9 @@ def main():
     parser.add_argument("--scale", type=positive_float, default=0.4,
                         help="largest displacement as drawn [m] (default 0.4)")
     parser.add_argument("--normalise", choices=NORMALISE, default="mode",
-                        help="what the colour and --scale refer to: the mode's largest displacement "
-                             "(mode, the default) or the largest off the track chain (vehicle)")
+                        help="what the colour and --scale refer to: the mode's largest "
+                             "displacement (mode, the default) or the largest off the track chain "
+                             "(vehicle)")
     parser.add_argument("modes", nargs="+", type=spec, metavar="[LABEL=]DIR:MODE",
                         help="a `tvd modes --vehicle --out` directory and a mode number, one row each")
     args = parser.parse_args()
