@@ -83,7 +83,7 @@ void run(const RideOptions& opt) {
     throw InputError(m.str());
   }
   std::vector<std::string> warnings;
-  const RideModel model = loadRideModel(opt, &warnings);
+  const RideModel model = loadRideModel(opt, &track, &warnings);
   const std::vector<std::string>& points = model.points;
   const ReducedModelSource& reduced = model.reduced;
   const vehicle::Variant variant = reduced.variant;

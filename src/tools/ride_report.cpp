@@ -5,19 +5,23 @@
 #include <sstream>
 
 #include "point_list.h"
+#include "terrain_coverage.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-RideModel loadRideModel(const RideOptions& opt, std::vector<std::string>* warnings) {
+RideModel loadRideModel(const RideOptions& opt, const terrain::Terrain* track,
+                        std::vector<std::string>* warnings) {
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, warnings);
   std::vector<std::string> named;
   for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
   std::vector<std::string> points =
       choosePoints(opt.points, opt.points_given, named);  // before any work
+  if (track)
+    refuseDrivingBesideTerrain(opt.track, *track, description, opt.lateral_offset);
   return {std::move(points), obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced)};
 }
 

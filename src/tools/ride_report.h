@@ -10,6 +10,7 @@
 #include "ride_options.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -21,13 +22,15 @@ std::vector<std::string> choosePoints(const std::string& spec, bool given,
                                       const std::vector<std::string>& named);
 
 /// What both methods rate: the points (checked against the description before any work) and the
-/// reduced model, loaded or reduced as the options say. Warnings of the description are added
-/// to `warnings`.
+/// reduced model, loaded or reduced as the options say. A `track` (the time-domain method's) is
+/// checked first for a --lateral-offset that drives beside it (refuseDrivingBesideTerrain).
+/// Warnings of the description are added to `warnings`.
 struct RideModel {
   std::vector<std::string> points;
   ReducedModelSource reduced;
 };
-RideModel loadRideModel(const RideOptions& opt, std::vector<std::string>* warnings);
+RideModel loadRideModel(const RideOptions& opt, const terrain::Terrain* track,
+                        std::vector<std::string>* warnings);
 
 /// One limit to search: the metric of point-run `value(run)` and its threshold.
 template <typename Run>

@@ -118,7 +118,7 @@ void runSpectralRide(const RideOptions& opt) {
   spectral.keep_psd = !opt.psd_out.empty();
   dynamics::checkSpectralInput(road, spectral);
   std::vector<std::string> warnings;
-  const RideModel model = loadRideModel(opt, &warnings);
+  const RideModel model = loadRideModel(opt, nullptr, &warnings);
   const std::vector<std::string>& points = model.points;
   const ReducedModelSource& reduced = model.reduced;
   const vehicle::Variant variant = reduced.variant;

@@ -211,6 +211,7 @@ void run(const SimulateOptions& opt) {
   std::unique_ptr<reduction::FullModelReference> full;
   std::vector<std::string> warnings;  // printed on stderr as they arise, and in the JSON
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
+  refuseDrivingBesideTerrain(opt.track, track, description, opt.lateral_offset);
   if (opt.model == "full") {
     if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
     if (opt.max_mode_hz == 0 || opt.max_mode_hz > 100)

@@ -73,5 +73,28 @@ std::optional<std::string> terrainCoverageWarning(const std::string& track,
   return w.str();
 }
 
+void refuseDrivingBesideTerrain(const std::string& track, const terrain::Terrain& terrain,
+                                const vehicle::VehicleDescription& description,
+                                double lateral_offset) {
+  if (terrain.lateral().size() < 2)
+    return;
+  const double half = 0.5 * description.running_gear.track_centre_distance;
+  const double e = description.track_assembly.pad_lateral_offset;
+  Vector rows(4);
+  rows << half + e, half - e, -half + e, -half - e;
+  rows.array() += lateral_offset;
+  const double t_min = terrain.lateral()(0),
+               t_max = terrain.lateral()(terrain.lateral().size() - 1);
+  const Overhang o = overhang(rows, t_min, t_max);
+  if (o.left < rows.size() && o.right < rows.size())
+    return;
+  std::ostringstream m;
+  m << track << ": every contact (the 4 pad rows) lies off the terrain"
+    << (lateral_offset != 0.0 ? " at --lateral-offset " + brief(lateral_offset) + " m" : "")
+    << ": the pad rows lie at y = " << rows.minCoeff() << " .. " << rows.maxCoeff()
+    << " m but the terrain's lines only " << t_min << " .. " << t_max << " m";
+  throw InputError(m.str());
+}
+
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

@@ -6,6 +6,7 @@
 
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -22,6 +23,15 @@ std::optional<std::string> terrainCoverageWarning(const std::string& track,
                                                   const terrain::Terrain& terrain,
                                                   const dynamics::RoadExcitation& road,
                                                   double lateral_offset);
+
+/// The refusal of terrainCoverageWarning, made from the description before the model is obtained
+/// (a reduction may take seconds): the ground contacts of both variants lie on the pad rows
+/// y = ±(b/2 ± e) (b = running_gear.track_centre_distance, e = track_assembly.pad_lateral_offset),
+/// so when every row, moved by `lateral_offset` [m], lies beyond the same edge line, so does every
+/// contact. Throws InputError naming `track`; returns otherwise.
+void refuseDrivingBesideTerrain(const std::string& track, const terrain::Terrain& terrain,
+                                const vehicle::VehicleDescription& description,
+                                double lateral_offset);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

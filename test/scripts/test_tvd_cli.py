@@ -2133,6 +2133,16 @@ class TvdCliTest(unittest.TestCase):
                                 "--lateral-offset 10 m")
         self.assert_input_error(sim + ["long_hill", "--lateral-offset", "1e6"],
                                 "long_hill: every contact")
+        # Refused from the description's pad rows before the model is obtained: nothing is
+        # reduced into an empty cache, by simulate or by ride, for either variant.
+        empty = self.path("cache_never_filled")
+        for command, variant in (("simulate", "tracked"), ("ride", "untracked")):
+            self.assert_input_error(
+                [command, "--vehicle", VEHICLE, "--variant", variant, "--cache-dir", empty,
+                 "--track", "long_hill", "--lateral-offset", "-4.1"],
+                "long_hill: every contact (the 4 pad rows) lies off the terrain",
+                "y = -5.655 .. -2.545 m", "only -2.5 .. 2.5 m")
+        self.assertFalse(os.path.exists(empty) and os.listdir(empty), "a model was reduced")
 
     def test_unusable_cache_is_reported(self):
         """#9: a --cache-dir that is a file gives one warning; a corrupt cache file is rebuilt
