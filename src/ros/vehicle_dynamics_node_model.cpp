@@ -1,0 +1,178 @@
+// The node's start-up model: the vehicle description, and the reduced model loaded from the
+// cache (or reduced into it) or from ~reduced_model, with what the log and diagnostics say of it.
+#include <chrono>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/heap_reuse.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A reduction key (reduction::reductionKey: every double to the last bit, for the cache) as a
+// reader wants it: 0.7, not 0.69999999999999996.
+std::string readableReduction(const std::string& key) {
+  vehicle::Variant variant{};
+  reduction::VehicleReductionOptions o;
+  if (!reduction::parseReductionKey(key, &variant, &o))
+    return key;
+  return std::string("variant ") + vehicle::variantName(variant) + "; rule " +
+         reduction::modeRuleName(o.rule) + "; global_modes " + std::to_string(o.global_modes) +
+         "; band_hz " + brief(o.band_hz) + "; mac_threshold " + brief(o.mac_threshold) +
+         "; mogesec_masters " + std::to_string(o.mogesec_masters) + "; modes " +
+         std::to_string(o.mode_count);
+}
+
+}  // namespace
+
+void VehicleDynamicsNode::loadVehicle() {
+  const auto start = Clock::now();
+  const std::string vehicle_param = private_nh_.resolveName("vehicle");
+  try {
+    // Parsed once: the reduction and the frames come from the same description.
+    const vehicle::VehicleDescription description =
+        vehicle::loadVehicleDescription(params_.vehicle);
+    for (const std::string& w : vehicle::descriptionWarnings(description))
+      ROS_WARN("vehicle_dynamics_node: %s: %s", params_.vehicle.c_str(), w.c_str());
+    // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
+    std::string& point = params_.vehicle_options.comfort_point;
+    std::string known = "hull";
+    bool found = point == "hull";
+    for (const vehicle::NamedPoint& p : description.named_points) {
+      known += ", " + p.name;
+      found = found || p.name == point;
+    }
+    // Unset, the comfort point is the crew seat where the description names one (the bundled
+    // vehicle's), else the hull's CoG: every vehicle starts without a comfort_point of its own.
+    if (!found && !params_.comfort_point_given) {
+      ROS_INFO(
+          "vehicle_dynamics_node: ~comfort_point unset and %s names no '%s' point: ride comfort "
+          "at the hull's CoG (set ~comfort_point to one of its points for a seat)",
+          params_.vehicle.c_str(), point.c_str());
+      point = "hull";
+      found = true;
+    }
+    if (!found)
+      throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
+                           "' (" + known + " in " + params_.vehicle +
+                           "); set ~comfort_point (launch argument comfort_point) to one of these");
+    // The reduction's large matrices reuse freed pages (heap_reuse.h) until the model is loaded,
+    // before the stepping starts; the free memory then goes back to the system (declared before
+    // the model: it outlives it).
+    const HeapReuse heap_reuse;
+    const reduction::ReducedModel model =
+        params_.reduced_model.empty()
+            ? reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,
+                                             params_.reduction_options, &report_)
+            : loadGivenModel(description);
+    // The model's load (or build) and the discretisation's set-up are timed apart: ~method
+    // exact spends seconds in the augmented exponential, which is not the cache's doing.
+    load_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
+    const auto setup_start = Clock::now();
+    vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
+                                               params_.vehicle_options);
+    setup_seconds_ = std::chrono::duration<double>(Clock::now() - setup_start).count();
+    model_dofs_ = model.size();
+    model_inputs_ = model.system.inputCount();
+    model_outputs_ = model.system.outputCount();
+    model_damping_ = model.damping;
+    // Saved with the model, so a cached or given model warns as the run that reduced it did
+    // (e.g. a ~reduction/global_modes that cuts a repeated eigenvalue).
+    for (const std::string& warning : model.warnings)
+      ROS_WARN("vehicle_dynamics_node: reduction: %s", warning.c_str());
+  } catch (const Error& e) {
+    throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
+  }
+  ROS_INFO("vehicle_dynamics_node: %s discretisation at %g Hz set up in %.3f s",
+           methodName(params_.vehicle_options.method), params_.vehicle_options.rate,
+           setup_seconds_);
+  if (!params_.reduced_model.empty()) {
+    cached_ = true;  // nothing to cache: the file is the model
+    ROS_INFO(
+        "vehicle_dynamics_node: loaded the reduced %s model of '%s' from ~reduced_model %s in "
+        "%.3f s: %ld DOFs, %ld road inputs, %ld outputs (reduction %s; ~reduction/* not used)",
+        vehicle::variantName(params_.variant), params_.vehicle.c_str(),
+        params_.reduced_model.c_str(), load_seconds_, static_cast<long>(model_dofs_),
+        static_cast<long>(model_inputs_), static_cast<long>(model_outputs_),
+        readableReduction(given_reduction_).c_str());
+    return;
+  }
+  // loadOrReduceVehicle() still builds when the cache cannot be written, and says why.
+  cached_ = report_.from_cache || report_.cache_error.empty();
+  not_cached_reason_ = report_.cache_error;
+  const char* what = report_.from_cache ? "loaded" : cached_ ? "built and cached" : "built";
+  if (cached_) {
+    ROS_INFO(
+        "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+        "inputs, %ld outputs (%s)",
+        what, vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
+        static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+        static_cast<long>(model_outputs_), report_.cache_file.c_str());
+  } else {
+    ROS_WARN(
+        "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+        "inputs, %ld outputs; not cached: %s (%s): the next start builds it again",
+        what, vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
+        static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+        static_cast<long>(model_outputs_), not_cached_reason_.c_str(), report_.cache_file.c_str());
+  }
+  if (!report_.cache_note.empty())
+    ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
+}
+
+// ~reduced_model: a file of `tvd reduce --out`, checked as the cache is (complete MAT file,
+// checksum, format and software version, the description's hash) and holding the ~variant. It is
+// the user's explicit choice, so a file that fails a check stops the node instead of being
+// rebuilt behind their back; the message says how to make a good one.
+reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
+    const vehicle::VehicleDescription& description) {
+  const std::string param = private_nh_.resolveName("reduced_model");
+  const std::string& file = params_.reduced_model;
+  const std::string again = "; write it again with `tvd reduce --vehicle " + params_.vehicle +
+                            " --variant " + vehicle::variantName(params_.variant) +
+                            " --out FILE.mat`, or leave " + param + " unset to use the cache";
+  reduction::VehicleModelFile loaded;
+  try {
+    loaded = reduction::loadVehicleModelFile(file, description);
+  } catch (const reduction::StaleCacheError& e) {
+    throw ParameterError(param + ": " + e.what() + again);
+  }
+  const reduction::ReducedModel& model = loaded.model;
+  const vehicle::Variant variant = loaded.variant;
+  if (variant != params_.variant)
+    throw ParameterError(param + ": " + file + " holds the " + vehicle::variantName(variant) +
+                         " variant, " + private_nh_.resolveName("variant") + " is " +
+                         vehicle::variantName(params_.variant) + " (launch argument variant)");
+  // tvd frf|simulate refuse reduction options with --reduced. The stock parameter file sets
+  // every ~reduction/* to its default, so only values changed from the defaults are taken as
+  // asked for; they are reported when the file was reduced otherwise.
+  const std::string asked = reduction::reductionKey(variant, params_.reduction_options);
+  if (asked != model.reduction && asked != reduction::reductionKey(variant, {}))
+    ROS_WARN(
+        "vehicle_dynamics_node: %s: ~reduction/* ('%s') differ from the reduction of %s "
+        "('%s'); the file's model runs and ~reduction/* are not used",
+        param.c_str(), readableReduction(asked).c_str(), file.c_str(),
+        readableReduction(model.reduction).c_str());
+  given_reduction_ = model.reduction;
+  report_ = {};
+  report_.from_cache = true;  // loaded, not built: what the diagnostics report of a cache hit
+  report_.cache_file = file;
+  report_.cache_note =
+      "~reduced_model " + file + " (reduction " + readableReduction(model.reduction) + ")";
+  report_.full_dofs = model.full_dof_count;
+  report_.reduced_dofs = model.size();
+  report_.flexible_modes = static_cast<int>(model.modeCount());
+  return std::move(loaded.model);
+}
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics
