@@ -96,15 +96,21 @@ class Motion {
   const TrackBagOptions& o_;
 };
 
-}  // namespace
-
-TrackRun trackRun(const TrackBagOptions& options) {
-  checkOptions(options);
-  const terrain::Terrain track = runTerrain(options);
-  const double spacing = patchSpacing(track);
+/// The run's end, duration and covered stations (no patches), checked: what trackRun() and
+/// trackRunExtent() share. `first` and `last` are the indices of the first and last stations
+/// k * spacing the patches cover.
+struct Extent {
   TrackRun run;
+  double spacing = 0.0;  ///< [m]
+  long first = 0, last = 0;
+};
+
+Extent extentOf(const TrackBagOptions& options, const terrain::Terrain& track,
+                const Motion& motion) {
+  Extent extent;
+  TrackRun& run = extent.run;
+  const double spacing = patchSpacing(track);
   run.end_station = track.endStation() + options.behind;
-  const Motion motion(options);
   run.duration = motion.timeAt(run.end_station);
   if (!std::isfinite(run.duration)) {
     // A profile that stops short ends with it; a constant speed so small that s / v overflows
@@ -130,10 +136,32 @@ TrackRun trackRun(const TrackBagOptions& options) {
     message << ": use a shorter terrain or a higher speed";
     throw InputError(message.str());
   }
-  // Terrain on the track's own grid, stations k * spacing, patch by patch.
-  const auto first = static_cast<long>(std::floor(-options.behind / spacing + 1e-9));
-  const auto last =
+  // Terrain on the track's own grid, stations k * spacing.
+  extent.spacing = spacing;
+  extent.first = static_cast<long>(std::floor(-options.behind / spacing + 1e-9));
+  extent.last =
       static_cast<long>(std::ceil((run.end_station + options.lookahead) / spacing - 1e-9));
+  run.covered_from = static_cast<double>(extent.first) * spacing;
+  run.covered_until = static_cast<double>(extent.last) * spacing;
+  return extent;
+}
+
+}  // namespace
+
+TrackRun trackRunExtent(const TrackBagOptions& options) {
+  checkOptions(options);
+  return extentOf(options, runTerrain(options), Motion(options)).run;
+}
+
+TrackRun trackRun(const TrackBagOptions& options) {
+  checkOptions(options);
+  const terrain::Terrain track = runTerrain(options);
+  const Motion motion(options);
+  Extent extent = extentOf(options, track, motion);
+  TrackRun& run = extent.run;
+  const double spacing = extent.spacing;
+  const long first = extent.first, last = extent.last;
+  // Patch by patch.
   const auto per_patch = std::max(1L, std::lround(options.patch_length / spacing));
   for (long k0 = first; k0 <= last; k0 += per_patch) {
     const long n = std::min(per_patch, last - k0 + 1);
@@ -152,9 +180,7 @@ TrackRun trackRun(const TrackBagOptions& options) {
     timed.time = std::min(motion.timeAt(patch.start_station - options.lookahead), run.duration);
     run.patches.push_back(std::move(timed));
   }
-  run.covered_from = static_cast<double>(first) * spacing;
-  run.covered_until = static_cast<double>(last) * spacing;
-  return run;
+  return std::move(extent.run);
 }
 
 TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options) {

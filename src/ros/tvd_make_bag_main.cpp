@@ -87,7 +87,7 @@ int main(int argc, char** argv) {
       // The run is checked as for writing (speeds up to 200 km/h, the track, the duration), so a
       // bag that could not be made is said so now. Full precision: the caller compares it with a
       // parameter, and a profile read in km/h converts to m/s inexactly.
-      rl::trackRun(options);
+      rl::trackRunExtent(options);
       std::printf("%.17g\n",
                   options.speed_profile ? options.speed_profile->maxSpeed() : options.speed);
       return 0;

@@ -385,8 +385,16 @@ TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
   options.speed = 8.0;
   options.lateral_offset = 0.4;
   const TrackRun run = trackRun(options);
+  // The extent alone (tvd_make_bag --peak-speed): the same run, without its patches.
+  const TrackRun extent = trackRunExtent(options);
   std::remove(file.c_str());
   EXPECT_NEAR(run.end_station, 40.0 + options.behind, 1e-9);
+  EXPECT_TRUE(extent.patches.empty());
+  EXPECT_FALSE(run.patches.empty());
+  EXPECT_EQ(extent.end_station, run.end_station);
+  EXPECT_EQ(extent.duration, run.duration);
+  EXPECT_EQ(extent.covered_from, run.covered_from);
+  EXPECT_EQ(extent.covered_until, run.covered_until);
   terrain::TerrainBuffer buffer;
   for (const TimedPatch& timed : run.patches) {
     EXPECT_DOUBLE_EQ(timed.patch.spacing, 0.05);
@@ -461,6 +469,7 @@ TEST(TrackBag, InvalidOptionsNameTheField) {
   options.clock_rate = 0.0;
   const std::string slow = inputErrorOf([&] { trackRun(options); });
   EXPECT_NE(slow.find("at most 10000 s"), std::string::npos) << slow;
+  EXPECT_EQ(inputErrorOf([&] { trackRunExtent(options); }), slow);  // checked the same way
   // So slow that s / v overflows (a denormal): refused, not a run of no time.
   options.speed = 1e-320 / 3.6;
   const std::string never = inputErrorOf([&] { trackRun(options); });

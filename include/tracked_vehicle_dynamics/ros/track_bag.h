@@ -80,6 +80,10 @@ struct TrackRun {
 };
 TrackRun trackRun(const TrackBagOptions& options);
 
+/// trackRun() without its patches: the end station, duration and covered stations, checked the
+/// same way (what `tvd_make_bag --peak-speed` needs to say whether a bag could be made).
+TrackRun trackRunExtent(const TrackBagOptions& options);
+
 /// Writes the bag. Throws InputError naming the option for invalid options or an unknown track,
 /// rosbag::BagException when the file cannot be written.
 TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options);
