@@ -10,7 +10,8 @@ Input: files written by `tvd frf --out FILE.csv` (header by name, any column ord
     the columns N_mag [(m/s^2)/m; pitch (rad/s^2)/m] and N_phase_deg (not plotted); with
     `tvd frf --points P`, also P_vertical_acc_mag, _phase_deg and _wk_mag (ISO 2631-1
     Wk-weighted), drawn in a panel of their own after the others, the weighted one thinner.
-Outputs absent from every file get no panel; an output that is zero in every file is drawn on a
+One legend, in a row under the panels, names the files (and the band line). Outputs absent from
+every file get no panel; an output that is zero in every file is drawn on a
 linear scale (log scale otherwise, down to 3 decades below its peak) and its panel says so. For
 example
 
@@ -47,6 +48,9 @@ OUTPUTS = {
 }
 # Decades of magnitude drawn below the largest value of a panel (log scale).
 DECADES_SHOWN = 3
+# The legend row under the panels: its height [in] and at most this many entries side by side.
+LEGEND_ROW_INCHES = 0.6
+LEGEND_COLUMNS = 5
 LINE_STYLES = ["-", "--", ":", (0, (5, 1, 1, 1))]  # "-." is the band line
 POINT_SUFFIX = "_vertical_acc"  # `tvd frf --points`: <point>_vertical_acc_mag, ..._wk_mag
 
@@ -129,7 +133,12 @@ def main():
         fail(f"--outputs {','.join(args.outputs)}: none of these is in any file")
     ncols = 1 if len(present) == 1 else 2
     nrows = math.ceil(len(present) / ncols)
-    fig, axes = plt.subplots(nrows, ncols, figsize=(6 * ncols, 4 * nrows), squeeze=False)
+    # One legend for every panel, in a row of its own under them: the lines are the same files
+    # in every panel, and a legend inside a panel covers part of its curves (the notches of the
+    # wheelbase filter reach every corner).
+    fig = plt.figure(figsize=(6 * ncols, 4 * nrows + LEGEND_ROW_INCHES))
+    grid = fig.add_gridspec(nrows + 1, ncols, height_ratios=[4.0] * nrows + [LEGEND_ROW_INCHES])
+    axes = np.array([[fig.add_subplot(grid[r, c]) for c in range(ncols)] for r in range(nrows)])
     for ax in axes.flat[len(present):]:
         ax.set_visible(False)
     for ax, name in zip(axes.flat, present):
@@ -155,7 +164,14 @@ def main():
         ax.set_xlabel("frequency [Hz]")
         ax.set_ylabel(panel(name)[1])
         ax.grid(True, which="both", alpha=0.3)
-        ax.legend(fontsize="small")
+    entries = {}  # label -> handle, in the order the panels first draw them
+    for ax in axes.flat[:len(present)]:
+        for handle, label in zip(*ax.get_legend_handles_labels()):
+            entries.setdefault(label, handle)
+    legend_row = fig.add_subplot(grid[nrows, :])
+    legend_row.axis("off")
+    legend_row.legend(entries.values(), entries.keys(), loc="center", fontsize="small",
+                      ncol=min(len(entries), LEGEND_COLUMNS), frameon=False)
     if args.title:
         fig.suptitle(args.title)
     save((fig, args.out))

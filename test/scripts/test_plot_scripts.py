@@ -354,6 +354,40 @@ class PlotScriptsTest(unittest.TestCase):
                                  "--band-hz", "30", f"sync={full}", f"30 km/h={delayed}")
         self.assert_png(result, out)
 
+    def test_frf_shares_one_legend_under_the_panels(self):
+        # The files are the same lines in every panel: one legend, in a row of its own under the
+        # panels (no panel's curves covered), naming each file once and the band line.
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_frf
+        finally:
+            sys.path.remove(SCRIPTS)
+        full = write_csv(self.path("full.csv"), frf_columns())
+        delayed = write_csv(self.path("delayed.csv"), frf_columns(wheelbase_delay_s=0.2))
+        captured = []
+        original, argv = plot_frf.save, sys.argv
+        plot_frf.save = lambda *pairs: captured.extend(pairs)
+        sys.argv = ["plot_frf.py", "--out", self.path("f.png"), f"sync={full}",
+                    f"30 km/h={delayed}"]
+        try:
+            plot_frf.main()
+        finally:
+            plot_frf.save, sys.argv = original, argv
+        fig = captured[0][0]
+        panels = [ax for ax in fig.axes if ax.get_visible() and ax.axison]
+        self.assertEqual(len(panels), 4)
+        self.assertTrue(all(ax.get_legend() is None for ax in panels))
+        legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
+        self.assertEqual(len(legends), 1)
+        self.assertEqual([t.get_text() for t in legends[0].get_texts()],
+                         ["sync", "30 km/h", "30 Hz band"])
+        # Laid out as save() does: the legend lies below every panel.
+        fig.tight_layout()
+        fig.canvas.draw()
+        renderer = fig.canvas.get_renderer()
+        legend_top = legends[0].get_window_extent(renderer).y1
+        self.assertLess(legend_top, min(ax.get_window_extent(renderer).y0 for ax in panels))
+
     def test_frf_only_hull_outputs(self):
         path = write_csv(self.path("hull.csv"),
                          frf_columns(outputs=["hull_vertical_acc", "hull_pitch_acc"]))
