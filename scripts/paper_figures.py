@@ -49,6 +49,20 @@ def _speed_label(speed):
     return "synchronous" if not speed else f"{speed} km/h"
 
 
+def _driving_line(terrain_csv, track):
+    """' (driven D m left of the track's centre line, ...)' when the lateral lines of a terrain
+    file of `tvd terrain` (path frame, y left) are not centred on the path: the built-in
+    oop_waves is written 1 m off (terrain/tracks.h, kOopWavesLateralOffset); '' otherwise."""
+    with open(terrain_csv, encoding="utf-8") as stream:
+        header = next(line for line in stream if not line.startswith("#"))
+    lateral = [float(cell) for cell in header.strip().split(",")[1:]]
+    offset = -0.5 * (min(lateral) + max(lateral)) if len(lateral) > 1 else 0.0
+    if abs(offset) < 1e-9:
+        return ""
+    return (f" (driven {abs(offset):g} m {'left' if offset > 0 else 'right'} of the track's "
+            f"centre line{', as in the paper' if track == 'oop_waves' else ''})")
+
+
 def figure_jobs(runs, vehicle, figures_dir, pairs):
     """[(file name, script, arguments)] for every figure. pairs: the MAC pairs of Table 4's rows
     (paper_tables.pairing_section's data), one Fig. 11 panel each, as the paper's (a)-(h)."""
@@ -102,8 +116,7 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
         jobs.append((name, "plot_terrain.py",
                      ["--vehicle", vehicle, "--out", fig(name), "--title",
                       f"{TRACK_NAMES[track]} under the pad rows"
-                      + (" (driven 1 m left of the track's centre line, as in the paper)"
-                         if track == "oop_waves" else ""), runs.terrain_csv(track)]))
+                      + _driving_line(runs.terrain_csv(track), track), runs.terrain_csv(track)]))
     for speed, number in zip(MOR_SPEEDS_KMH, (18, 19)):
         name = f"fig{number}_untracked_long_hill_{speed}kmh_full_vs_reduced.png"
         jobs.append((name, "plot_simulation.py",

@@ -20,6 +20,7 @@ import junit_runner
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 SCRIPTS = os.path.join(ROOT, "scripts")
 sys.path.insert(0, SCRIPTS)
+import paper_figures  # noqa: E402
 import paper_report  # noqa: E402
 import paper_tables  # noqa: E402
 
@@ -157,6 +158,20 @@ class PaperReportTest(unittest.TestCase):
         db, fraction = paper_tables.worst_db(hz, full, reduced, 30.0, 0.25, 1.0)
         self.assertAlmostEqual(db, 0.5, places=9)
         self.assertAlmostEqual(fraction, 599 / 600)
+
+    def test_the_terrain_figures_name_the_driving_line_of_the_terrain_file(self):
+        # Fig. 17's titles read the offset from the file's lateral lines (path frame, y left),
+        # not from a constant of their own: the built-in OOP track as `tvd terrain` writes it,
+        # a centred track, and one written 0.5 m the other way.
+        oop = os.path.join(self.out, "terrain", "oop_waves.csv")
+        self.assertEqual(paper_figures._driving_line(oop, "oop_waves"),
+                         " (driven 1 m left of the track's centre line, as in the paper)")
+        path = os.path.join(self.work, "lines.csv")
+        for lines, expected in (("-2.5,0,2.5", ""),
+                                ("-2,0.5,3", " (driven 0.5 m right of the track's centre line)")):
+            with open(path, "w") as stream:
+                stream.write(f"# a comment\nx,{lines}\n0,0,0,0\n1,0,0,0\n")
+            self.assertEqual(paper_figures._driving_line(path, "my_track"), expected)
 
     def test_readme_blocks_are_checked_and_rewritten(self):
         sections = [paper_tables.Section("a", "A", "| x |\n|---|\n| 1 |", None)]
