@@ -6,6 +6,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/spring_element.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 
@@ -396,4 +397,28 @@ TEST(ModalSolver, BadRequestsAreRejected) {
   tvd::SparseMatrix m3(3, 3);
   req.count = 0;
   EXPECT_THROW(tvd::fem::solveModes(k, m3, req), tvd::InputError);
+}
+
+TEST(SpringElement, OffsetBushingActsAtTheMidpointOfItsNodes) {
+  // A lateral spring k_y between nodes a distance L apart along x acts at p = (x1 + x2) / 2:
+  // the y motion of p carried from node i is u_iy + rz_i (p - x_i)_x, so the stretch is
+  // d = u2y - u1y - L/2 (rz1 + rz2) and 1/2 k_y d^2 gives K(rz_i, rz_j) = k_y L^2 / 4 for both
+  // nodes and K(uy1, rz1) = k_y L / 2. Naming the nodes the other way round is the same spring.
+  const double k = 2.0e5, length = 0.8;
+  tvd::fem::Spring s = springAlong(1, 2, 1, k);
+  const tvd::Vector3 x1(0.1, 0.2, 0.3), x2 = x1 + tvd::Vector3(length, 0.0, 0.0);
+  const tvd::Matrix12 stiffness = tvd::fem::springMatrices(s, x1, x2).stiffness;
+  const double quarter = k * length * length / 4.0;
+  EXPECT_NEAR(stiffness(5, 5), quarter, kRelTolerance * quarter);
+  EXPECT_NEAR(stiffness(11, 11), quarter, kRelTolerance * quarter);
+  EXPECT_NEAR(stiffness(5, 11), quarter, kRelTolerance * quarter);
+  EXPECT_NEAR(stiffness(1, 5), k * length / 2.0, kRelTolerance * k * length);
+  // Swapping the nodes permutes the 6-DOF blocks and leaves the matrix otherwise unchanged.
+  s.n1 = 2;
+  s.n2 = 1;
+  const tvd::Matrix12 swapped = tvd::fem::springMatrices(s, x2, x1).stiffness;
+  tvd::Matrix12 permutation = tvd::Matrix12::Zero();
+  permutation.topRightCorner<6, 6>().setIdentity();
+  permutation.bottomLeftCorner<6, 6>().setIdentity();
+  EXPECT_LT((permutation * swapped * permutation - stiffness).norm(), kRelTolerance * k);
 }

@@ -321,6 +321,29 @@ TEST(FixedInterfaceModes, CarryTheSelectionOverAsACountOrAFrequency) {
   EXPECT_THROW(fixedInterfaceModes(ModeSelection{}, options), InputError);
 }
 
+TEST(EigenspaceMac, PairOfGroupsIsTheCosineSquaredOfTheirSmallestPrincipalAngle) {
+  // A's repeated pair spans {e1, e2}; B's spans {cos t e1 + sin t e3, e4}, given as two mixed
+  // vectors. The smallest principal angle between the planes is t (the directions e1 and
+  // cos t e1 + sin t e3), the largest is 90 deg (e2 is orthogonal to all of span B): every
+  // entry of the group pair is cos^2 t = sigma_max^2, not sigma_min^2 = 0.
+  const double t = 0.4;
+  Matrix phi_a = Matrix::Zero(5, 2), phi_b = Matrix::Zero(5, 2);
+  phi_a.col(0) << 1.0, 1.0, 0.0, 0.0, 0.0;
+  phi_a.col(1) << 1.0, -2.0, 0.0, 0.0, 0.0;
+  Vector u(5), w(5);
+  u << std::cos(t), 0.0, std::sin(t), 0.0, 0.0;
+  w << 0.0, 0.0, 0.0, 1.0, 0.0;
+  phi_b.col(0) = 0.6 * u + 0.8 * w;
+  phi_b.col(1) = -0.8 * u + 0.6 * w;
+  Vector f_a(2), f_b(2);
+  f_a << 3.0, 3.0;
+  f_b << 7.0, 7.0;
+  const Matrix m = eigenspaceMac(phi_a, f_a, phi_b, f_b);
+  for (int j = 0; j < 2; ++j)
+    for (int k = 0; k < 2; ++k)
+      EXPECT_NEAR(m(j, k), std::cos(t) * std::cos(t), kRoundOff);
+}
+
 }  // namespace
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics

@@ -916,6 +916,23 @@ TEST(TerrainLines, EqualTerrainSampling) {
   }
 }
 
+TEST(Terrain, SlopeAtAStationIsThatOfTheCellAhead) {
+  // On the stations the profile has a kink; slope() returns the slope of the cell that starts
+  // there (x_i <= x < x_i+1, the cell whose height interpolation applies ahead of the station),
+  // as the non-uniform lookup and TerrainLines do. On a uniform grid the cell index comes from
+  // (x - x_0) / dx, which rounds just below i at some stations; the grid decides, not rounding.
+  const int n = 400;
+  Vector x(n);
+  Matrix h(1, n);
+  for (int i = 0; i < n; ++i) {
+    x(i) = 0.1 * i;
+    h(0, i) = 1e-3 * i * i;  // every cell has its own slope, (2 i + 1) 1e-3 / dx
+  }
+  const Terrain t(x, Vector::Zero(1), h);
+  for (int i = 0; i + 1 < n; ++i)
+    ASSERT_EQ(t.slope(x(i), 0.0), (h(0, i + 1) - h(0, i)) / (x(i + 1) - x(i))) << "x " << x(i);
+}
+
 }  // namespace
 }  // namespace terrain
 }  // namespace tracked_vehicle_dynamics
