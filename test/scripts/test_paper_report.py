@@ -159,6 +159,16 @@ class PaperReportTest(unittest.TestCase):
         self.assertAlmostEqual(db, 0.5, places=9)
         self.assertAlmostEqual(fraction, 599 / 600)
 
+    def test_full_vs_reduced_shares_below_the_floor_print_no_digits(self):
+        # Digits below 0.001 % of the peak differ from one CPU to another (the README table
+        # must be what any build computes); above it, two significant digits.
+        self.assertEqual(paper_tables.share_of_peak(5.2e-8), "< 0.001 %")
+        self.assertEqual(paper_tables.share_of_peak(4.9e-8), "< 0.001 %")
+        self.assertEqual(paper_tables.share_of_peak(0.999e-5), "< 0.001 %")
+        self.assertEqual(paper_tables.share_of_peak(1e-5), "0.001 %")
+        self.assertEqual(paper_tables.share_of_peak(3.5e-5), "0.0035 %")
+        self.assertEqual(paper_tables.share_of_peak(0.0123), "1.2 %")
+
     def test_the_terrain_figures_name_the_driving_line_of_the_terrain_file(self):
         # Fig. 17's titles read the offset from the file's lateral lines (path frame, y left),
         # not from a constant of their own: the built-in OOP track as `tvd terrain` writes it,
