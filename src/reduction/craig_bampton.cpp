@@ -63,7 +63,7 @@ std::vector<DofIndex> rowsWithEntries(const SparseMatrix& a) {
   return rows;
 }
 
-Matrix project(const SparseMatrix& a, const Matrix& t) {
+Matrix congruence(const SparseMatrix& a, const Matrix& t) {
   const DofIndex k = t.cols();
   Matrix out = Matrix::Zero(k, k);
   // (k = 0: Eigen's triangular product would bind a reference to the empty matrix's data.)
@@ -132,13 +132,19 @@ void checkOptions(DofIndex n, DofIndex master_count, const CraigBamptonOptions& 
 
 // The leading r.count of ascending modes, cut at r.max_frequency_hz when it is set (as
 // fem::solveModes() cuts): what a solve for r gives, from a solve for at least as many.
-fem::ModalBasis leadingModes(const fem::ModalBasis& modes, const FixedInterfaceModes& r) {
+// How many of the ascending `frequencies_hz` (at least r.count of them) the request keeps.
+DofIndex leadingCount(const Vector& frequencies_hz, const FixedInterfaceModes& r) {
   DofIndex keep = r.count;
   if (r.max_frequency_hz > 0.0) {
     keep = 0;
-    while (keep < r.count && modes.frequencies_hz(keep) <= r.max_frequency_hz)
+    while (keep < r.count && frequencies_hz(keep) <= r.max_frequency_hz)
       ++keep;
   }
+  return keep;
+}
+
+fem::ModalBasis leadingModes(const fem::ModalBasis& modes, const FixedInterfaceModes& r) {
+  const DofIndex keep = leadingCount(modes.frequencies_hz, r);
   fem::ModalBasis out;
   out.eigenvalues = modes.eigenvalues.head(keep);
   out.frequencies_hz = modes.frequencies_hz.head(keep);
@@ -264,10 +270,10 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
   for (DofIndex j = 0; j < s; ++j)
     t_m.row(slaves[static_cast<std::size_t>(j)]) = phi_c.row(j);
   phi_c.resize(0, 0);  // its rows are in t_m
-  mass_mm = project(in.m, t_m);
+  mass_mm = congruence(in.m, t_m);
   has_dampers = in.c.size() != 0;
   if (has_dampers) {
-    damping_mm = project(in.c, t_m);
+    damping_mm = congruence(in.c, t_m);
     c_ss = p_s.transpose() * in.c * p_s;
   }
   const DofIndex inputs = in.ku ? in.ku->cols() : 0;
@@ -358,7 +364,8 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
   checkOptions(st.in.k.rows(), static_cast<DofIndex>(st.masters.size()), options);
   fem::ModalBasis phi_s = solveFixedInterfaceModes(st.k_ss, st.m_ss, options);
   const double solve_seconds = since(start);
-  CraigBamptonResult result = reduceOn(options, std::move(phi_s), start);
+  const FixedInterfaceProjection projection = project(std::move(phi_s));
+  CraigBamptonResult result = reduceOn(options, projection, projection.count(), start);
   result.seconds.fixed_interface_modes = solve_seconds;
   return result;
 }
@@ -374,29 +381,84 @@ CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& option
         "CraigBamptonReducer::reduce: " + std::to_string(modes.count()) +
         " solved fixed-interface modes of " + std::to_string(modes.shapes.rows()) + " DOFs for " +
         std::to_string(r.count) + " of " + std::to_string(st.k_ss.rows()) + " slave DOFs");
-  return reduceOn(options, leadingModes(modes, r), start);
+  const FixedInterfaceProjection projection = project(leadingModes(modes, r));
+  return reduceOn(options, projection, projection.count(), start);
+}
+
+CraigBamptonResult CraigBamptonReducer::reduce(const CraigBamptonOptions& options,
+                                               const FixedInterfaceProjection& projection) const {
+  const auto start = Clock::now();
+  const State& st = *state_;
+  checkOptions(st.in.k.rows(), static_cast<DofIndex>(st.masters.size()), options);
+  const FixedInterfaceModes& r = options.fixed_interface;
+  if (projection.reducer != state_.get() || projection.count() < r.count)
+    throw std::logic_error("CraigBamptonReducer::reduce: a projection of " +
+                           std::to_string(projection.count()) + " fixed-interface modes " +
+                           (projection.reducer != state_.get() ? "made by another reducer"
+                                                               : "for " + std::to_string(r.count)));
+  CraigBamptonResult result =
+      reduceOn(options, projection, leadingCount(projection.modes.frequencies_hz, r), start);
+  result.seconds.total += projection.seconds;  // done before the call, as from scratch
+  return result;
+}
+
+FixedInterfaceProjection CraigBamptonReducer::project(fem::ModalBasis modes) const {
+  const auto start = Clock::now();
+  const State& st = *state_;
+  const Inputs& in = st.in;
+  if (modes.count() > 0 && modes.shapes.rows() != st.k_ss.rows())
+    throw std::logic_error("CraigBamptonReducer::project: " + std::to_string(modes.count()) +
+                           " fixed-interface modes of " + std::to_string(modes.shapes.rows()) +
+                           " DOFs for " + std::to_string(st.k_ss.rows()) + " slave DOFs");
+  FixedInterfaceProjection p;
+  p.reducer = state_.get();
+  const DofIndex r = modes.count();
+  const DofIndex inputs = in.ku ? in.ku->cols() : 0;
+  p.mass_coupling = Matrix::Zero(static_cast<DofIndex>(st.masters.size()), r);
+  p.mass_modal = Matrix::Zero(r, r);
+  p.input_stiffness = Matrix::Zero(r, inputs);
+  p.input_damping = Matrix::Zero(r, inputs);
+  p.gravity_load = Vector::Zero(r);
+  p.travel_load = Vector::Zero(r);
+  if (r > 0) {
+    const Matrix& phi_s = modes.shapes;
+    projectModes(in.m, st.m_ss, st.p_s, st.t_m, phi_s, &p.mass_coupling, &p.mass_modal);
+    if (st.has_dampers)
+      projectModes(in.c, st.c_ss, st.p_s, st.t_m, phi_s, &p.damping_coupling, &p.damping_modal);
+    if (in.ku)
+      p.input_stiffness = slaveRowsProduct(phi_s, st.p_s, *in.ku);
+    if (in.cu)
+      p.input_damping = slaveRowsProduct(phi_s, st.p_s, *in.cu);
+    const SparseMatrix p_s_t = st.p_s.transpose();
+    if (in.gravity)
+      p.gravity_load = phi_s.transpose() * (p_s_t * *in.gravity);
+    if (in.travel)
+      p.travel_load = phi_s.transpose() * (p_s_t * *in.travel);
+  }
+  p.modes = std::move(modes);
+  p.seconds = since(start);
+  return p;
 }
 
 CraigBamptonResult CraigBamptonReducer::reduceOn(
-    const CraigBamptonOptions& options, fem::ModalBasis phi_s,
+    const CraigBamptonOptions& options, const FixedInterfaceProjection& projection, DofIndex r,
     std::chrono::steady_clock::time_point start) const {
   const State& st = *state_;
   const Inputs& in = st.in;
   const DofIndex n = in.k.rows();
   const auto m = static_cast<DofIndex>(st.masters.size());
+  const fem::ModalBasis& modes = projection.modes;
   CraigBamptonResult result;
   result.seconds = st.seconds;
   result.seconds.fixed_interface_modes = 0.0;
-  auto stage = Clock::now();
-  result.fixed_interface_eigenvalues = phi_s.eigenvalues;
-  result.fixed_interface_frequencies_hz = phi_s.frequencies_hz;
-  const DofIndex r = phi_s.count();
+  result.fixed_interface_eigenvalues = modes.eigenvalues.head(r);
+  result.fixed_interface_frequencies_hz = modes.frequencies_hz.head(r);
 
-  // Eq. 9 by blocks (class comment): the master blocks from the reducer, the blocks of the
-  // fixed-interface modes here. K_R = diag(K_Guyan, Omega^2): the mass-normalised modes (eq. 6)
-  // give Phi_S^T K_ss Phi_S = diag(omega_i^2), and the coupling vanishes by eq. 4; exact zeros
-  // that a projection only reproduces to rounding.
-  stage = Clock::now();
+  // Eq. 9 by blocks (class comment): the master blocks from the reducer, those of the leading r
+  // fixed-interface modes from the projection. K_R = diag(K_Guyan, Omega^2): the mass-normalised
+  // modes (eq. 6) give Phi_S^T K_ss Phi_S = diag(omega_i^2), and the coupling vanishes by eq. 4;
+  // exact zeros that a projection only reproduces to rounding.
+  const auto stage = Clock::now();
   const DofIndex k = m + r;
   result.mass = Matrix::Zero(k, k);
   result.mass.topLeftCorner(m, m) = st.mass_mm;
@@ -415,27 +477,20 @@ CraigBamptonResult CraigBamptonReducer::reduceOn(
   result.travel_load = Vector::Zero(k);
   result.travel_load.head(m) = st.travel_m;
   if (r > 0) {
-    Matrix coupling, modal;
-    projectModes(in.m, st.m_ss, st.p_s, st.t_m, phi_s.shapes, &coupling, &modal);
-    result.mass.topRightCorner(m, r) = coupling;
-    result.mass.bottomLeftCorner(r, m) = coupling.transpose();
-    result.mass.bottomRightCorner(r, r) = modal;
-    result.stiffness.bottomRightCorner(r, r).diagonal() = phi_s.eigenvalues;
+    const FixedInterfaceProjection& p = projection;
+    result.mass.topRightCorner(m, r) = p.mass_coupling.leftCols(r);
+    result.mass.bottomLeftCorner(r, m) = p.mass_coupling.leftCols(r).transpose();
+    result.mass.bottomRightCorner(r, r) = p.mass_modal.topLeftCorner(r, r);
+    result.stiffness.bottomRightCorner(r, r).diagonal() = modes.eigenvalues.head(r);
     if (st.has_dampers) {
-      projectModes(in.c, st.c_ss, st.p_s, st.t_m, phi_s.shapes, &coupling, &modal);
-      c_discrete.topRightCorner(m, r) = coupling;
-      c_discrete.bottomLeftCorner(r, m) = coupling.transpose();
-      c_discrete.bottomRightCorner(r, r) = modal;
+      c_discrete.topRightCorner(m, r) = p.damping_coupling.leftCols(r);
+      c_discrete.bottomLeftCorner(r, m) = p.damping_coupling.leftCols(r).transpose();
+      c_discrete.bottomRightCorner(r, r) = p.damping_modal.topLeftCorner(r, r);
     }
-    if (in.ku)
-      result.input_stiffness.bottomRows(r) = slaveRowsProduct(phi_s.shapes, st.p_s, *in.ku);
-    if (in.cu)
-      result.input_damping.bottomRows(r) = slaveRowsProduct(phi_s.shapes, st.p_s, *in.cu);
-    const SparseMatrix p_s_t = st.p_s.transpose();
-    if (in.gravity)
-      result.gravity_load.tail(r) = phi_s.shapes.transpose() * (p_s_t * *in.gravity);
-    if (in.travel)
-      result.travel_load.tail(r) = phi_s.shapes.transpose() * (p_s_t * *in.travel);
+    result.input_stiffness.bottomRows(r) = p.input_stiffness.topRows(r);
+    result.input_damping.bottomRows(r) = p.input_damping.topRows(r);
+    result.gravity_load.tail(r) = p.gravity_load.head(r);
+    result.travel_load.tail(r) = p.travel_load.head(r);
   }
   result.damping = reducedDamping(result.mass, result.stiffness, c_discrete, options.damping);
   result.masters = st.masters;
@@ -447,7 +502,7 @@ CraigBamptonResult CraigBamptonReducer::reduceOn(
       return;
     const DofIndex j = st.slave_index[static_cast<std::size_t>(dof)];
     if (j >= 0)
-      row.tail(r) = phi_s.shapes.row(j);
+      row.tail(r) = modes.shapes.row(j).head(r);
     else
       row.tail(r).setZero();
   };
@@ -459,7 +514,8 @@ CraigBamptonResult CraigBamptonReducer::reduceOn(
     for (DofIndex i = 0; i < n; ++i)
       transformationRow(i, result.transformation.row(i));
   }
-  result.seconds.projection = st.seconds.projection + since(stage);
+  // The projection counts in each result that uses it, as the reducer's shared stages do.
+  result.seconds.projection = st.seconds.projection + projection.seconds + since(stage);
   result.seconds.total = st.seconds.total + since(start);
   return result;
 }

@@ -176,7 +176,7 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
 
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
                                const CraigBamptonReducer& reducer,
-                               const fem::ModalBasis* fixed_interface) {
+                               const FixedInterfaceProjection* fixed_interface) {
   if (!reducer.builtOn(system) || reducer.masters() != request.masters)
     throw std::logic_error(
         "buildReducedModel: the reducer was not built on this system and the "

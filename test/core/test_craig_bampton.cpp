@@ -374,6 +374,59 @@ TEST(CraigBampton, PresolvedModesGiveTheReductionOfTheirLeadingCount) {
   EXPECT_THROW(other.reduce(options, modes), std::logic_error);
 }
 
+TEST(CraigBampton, OneProjectionGivesTheReductionOfEachLeadingCount) {
+  // vehicle_reduction.cpp projects the modes of its largest count once and takes each smaller
+  // count's blocks as leading columns, rows and corners: the same model as projecting the
+  // leading modes alone (to rounding; bit for bit with all of them), dampers and road input
+  // on a slave included.
+  const fem::System system = cantilever(30, true);
+  const fem::DofMap& d = system.dofs;
+  const CraigBamptonReducer reducer(system, masters(system, 10));  // the tip is a slave
+  CraigBamptonOptions options;
+  options.recovery_dofs = {d.requireActive(12, 2), d.requireActive(30, 2)};
+  options.fixed_interface.count = 12;
+  const FixedInterfaceProjection projection = reducer.project(reducer.fixedInterfaceModes(options));
+  ASSERT_EQ(projection.count(), 12);
+  EXPECT_GT(projection.damping_coupling.norm(), 0.0);
+  EXPECT_GT(projection.input_stiffness.norm(), 0.0);
+  for (const int r : {12, 5, 0, 1}) {
+    SCOPED_TRACE("r = " + std::to_string(r));
+    options.fixed_interface.count = r;
+    const CraigBamptonResult reused = reducer.reduce(options, projection);
+    const CraigBamptonResult alone = reducer.reduce(options, projection.modes);
+    ASSERT_EQ(reused.modeCount(), r);
+    ASSERT_EQ(reused.size(), alone.size());
+    if (r == 12) {
+      EXPECT_EQ(reused.mass, alone.mass);
+      EXPECT_EQ(reused.damping, alone.damping);
+      EXPECT_EQ(reused.input_damping, alone.input_damping);
+    }
+    EXPECT_LT(relativeError(reused.mass, alone.mass), kExactTolerance);
+    EXPECT_EQ(reused.stiffness, alone.stiffness);
+    EXPECT_LT(relativeError(reused.damping, alone.damping), kExactTolerance);
+    EXPECT_LT(relativeError(reused.input_stiffness, alone.input_stiffness), kExactTolerance);
+    EXPECT_LT(relativeError(reused.input_damping, alone.input_damping), kExactTolerance);
+    EXPECT_LT(relativeError(reused.gravity_load, alone.gravity_load), kExactTolerance);
+    EXPECT_LT(relativeError(reused.travel_load, alone.travel_load), kExactTolerance);
+    EXPECT_EQ(reused.recovery, alone.recovery);
+    EXPECT_EQ(reused.fixed_interface_eigenvalues, projection.modes.eigenvalues.head(r));
+    EXPECT_EQ(reused.mass, reused.mass.transpose());
+  }
+  // A frequency limit keeps the leading modes under it, as the solver would.
+  const double limit =
+      0.5 * (projection.modes.frequencies_hz(3) + projection.modes.frequencies_hz(4));
+  options.fixed_interface = {10, limit};
+  EXPECT_EQ(reducer.reduce(options, projection).modeCount(), 4);
+  // More modes than projected, or another reducer's projection, are a caller's mistake.
+  options.fixed_interface = {13, 0.0};
+  EXPECT_THROW(reducer.reduce(options, projection), std::logic_error);
+  const CraigBamptonReducer other(system, masters(system, 10));
+  options.fixed_interface = {6, 0.0};
+  EXPECT_THROW(other.reduce(options, projection), std::logic_error);
+  const CraigBamptonReducer more_slaves(system, {d.requireActive(10, 2)});
+  EXPECT_THROW(more_slaves.project(projection.modes), std::logic_error);
+}
+
 TEST(CraigBampton, FrequencyLimitedFixedInterfaceModes) {
   const fem::System system = cantilever(40);
   const std::vector<DofIndex> m = masters(system, 40);

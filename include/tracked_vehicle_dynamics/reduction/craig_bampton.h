@@ -76,6 +76,26 @@ struct CraigBamptonResult {
   DofIndex modeCount() const { return fixed_interface_eigenvalues.size(); }
 };
 
+/// The blocks of eq. 9 that fixed-interface modes bring, T_r = [0; Phi_S]
+/// (CraigBamptonReducer::project()). Each column, row or entry belongs to one mode (or a pair),
+/// so the blocks of the leading r' modes are the leading columns, rows and corner of these: a
+/// caller that tries r' and then r modes projects the r once.
+struct FixedInterfaceProjection {
+  fem::ModalBasis modes;    ///< Phi_S [s x r], mass-normalised, ascending
+  Matrix mass_coupling;     ///< T_m^T M T_r [m x r]
+  Matrix mass_modal;        ///< Phi_S^T M_ss Phi_S [r x r] (= I to rounding), exactly symmetric
+  Matrix damping_coupling;  ///< T_m^T C T_r [m x r]; 0 x 0 without dampers
+  Matrix damping_modal;     ///< Phi_S^T C_ss Phi_S [r x r]; 0 x 0 without dampers
+  Matrix input_stiffness;   ///< Phi_S^T K_u(slaves, :) [r x n_inputs]
+  Matrix input_damping;     ///< Phi_S^T C_u(slaves, :) [r x n_inputs]
+  Vector gravity_load;      ///< Phi_S^T f_g(slaves) [r]
+  Vector travel_load;       ///< Phi_S^T f_a(slaves) [r]
+  double seconds = 0.0;     ///< wall time of the projection [s]
+  const void* reducer = nullptr;  ///< the reducer's state that projected them (identity only)
+
+  DofIndex count() const { return modes.count(); }
+};
+
 /// The stages of a reduction on one master set that do not depend on the fixed-interface modes:
 /// the partition (eq. 3), the constraint modes Phi_C with one factorisation of K_ss (eq. 4),
 /// T_m = [I; Phi_C] and the master blocks of eq. 9 (T_m^T M T_m, the Guyan K, T_m^T C T_m,
@@ -116,6 +136,15 @@ class CraigBamptonReducer {
   /// run for 28 modes costs 0.25 s, one for 42 0.30 s). Throws std::logic_error when `modes`
   /// hold fewer than the count, or are not of this reducer's slave DOFs.
   CraigBamptonResult reduce(const CraigBamptonOptions& options, const fem::ModalBasis& modes) const;
+  /// The blocks `modes` (fixedInterfaceModes() of this reducer) bring, for reduce(options,
+  /// projection). Throws std::logic_error when they are not of this reducer's slave DOFs.
+  FixedInterfaceProjection project(fem::ModalBasis modes) const;
+  /// reduce() on the leading options.fixed_interface.count modes of a projection (those up to
+  /// options.fixed_interface.max_frequency_hz when it is set): neither solved nor projected again.
+  /// With all its modes, bit for bit reduce(options, projection.modes). Throws std::logic_error
+  /// when it holds fewer modes than the count or another reducer made it.
+  CraigBamptonResult reduce(const CraigBamptonOptions& options,
+                            const FixedInterfaceProjection& projection) const;
 
   const std::vector<DofIndex>& masters() const;
   /// Whether it was built on this very System (its matrices, not equal copies).
@@ -124,8 +153,9 @@ class CraigBamptonReducer {
 
  private:
   struct State;
-  // Both reduce()s after their modes are at hand; `start` times the whole call.
-  CraigBamptonResult reduceOn(const CraigBamptonOptions& options, fem::ModalBasis phi_s,
+  // Every reduce() once its leading `r` modes are projected; `start` times the whole call.
+  CraigBamptonResult reduceOn(const CraigBamptonOptions& options,
+                              const FixedInterfaceProjection& projection, DofIndex r,
                               std::chrono::steady_clock::time_point start) const;
   std::unique_ptr<State> state_;
 };

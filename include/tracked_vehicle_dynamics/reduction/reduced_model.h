@@ -106,13 +106,14 @@ ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest
 
 /// The same from a reducer built on `system` and request.masters (craig_bampton.h), which it
 /// reuses: a caller that tries several fixed-interface counts on one master set factorises
-/// once. With `fixed_interface` (the reducer's fixedInterfaceModes() for at least the request's
-/// count) the eigen-solve is not repeated either: the model takes their leading modes. Throws
-/// std::logic_error when the reducer was not built on this `system` (the same object) and
-/// request.masters, or `fixed_interface` holds fewer modes than asked.
+/// once. With `fixed_interface` (the reducer's project() of its fixedInterfaceModes() for at
+/// least the request's count) neither the eigen-solve nor the modes' projection is repeated: the
+/// model takes their leading modes and blocks. Throws std::logic_error when the reducer was not
+/// built on this `system` (the same object) and request.masters, or `fixed_interface` holds
+/// fewer modes than asked or is another reducer's.
 ReducedModel buildReducedModel(const fem::System& system, const ReductionRequest& request,
                                const CraigBamptonReducer& reducer,
-                               const fem::ModalBasis* fixed_interface = nullptr);
+                               const FixedInterfaceProjection* fixed_interface = nullptr);
 
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics
