@@ -13,9 +13,14 @@ namespace {
 
 // Relative asymmetry tolerated in M and K (rounding of a reduction), ||X - X^T|| / ||X||.
 constexpr double kSymmetryTolerance = 1e-8;
-// Eigenvalues with |omega^2| below this fraction of the largest are rigid-body modes (set to 0);
-// clearly negative ones mean K is indefinite.
-constexpr double kRigidBodyTolerance = 1e-10;
+// Eigenvalues with |omega^2| below this fraction of the largest are rigid-body modes (set to 0):
+// the dense solver's rounding, a few n eps lambda_max. Not more: a reduced vehicle's lambda_max
+// is ~1.7e11 rad^2/s^2 (the 2e10 N/m wheel ties on light soles), so 1e-10 of it took real chain
+// modes below 0.58 Hz for rigid ones, and the model drifted on a flat road.
+constexpr double kRigidBodyTolerance = 1e-12;
+// Negative ones down to this fraction are a rigid-body mode's rounding too (set to 0); below it,
+// K is indefinite.
+constexpr double kIndefiniteTolerance = 1e-10;
 
 void requireSymmetric(const Matrix& x, const std::string& what) {
   const double norm = x.norm();
@@ -50,7 +55,8 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
   Vector lambda = solver.eigenvalues();
   const double lambda_max = std::max(lambda.cwiseAbs().maxCoeff(), 0.0);
   for (DofIndex r = 0; r < n; ++r) {
-    if (std::abs(lambda(r)) <= kRigidBodyTolerance * lambda_max) {
+    if (std::abs(lambda(r)) <= kRigidBodyTolerance * lambda_max ||
+        (lambda(r) < 0.0 && -lambda(r) <= kIndefiniteTolerance * lambda_max)) {
       lambda(r) = 0.0;
     } else if (lambda(r) < 0.0) {
       throw SolverError("ModalSystem: stiffness K is indefinite: mode " + std::to_string(r) +
@@ -81,7 +87,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
     const double d_max = damping_coefficients_.cwiseAbs().maxCoeff();
     for (DofIndex r = 0; r < n; ++r) {
       double& d = damping_coefficients_(r);
-      if (std::abs(d) <= kRigidBodyTolerance * d_max)
+      if (std::abs(d) <= kIndefiniteTolerance * d_max)
         d = std::max(d, 0.0);
       if (d < 0.0)
         throw InputError("ModalSystem: damping C is not positive semi-definite: mode " +

@@ -59,6 +59,30 @@ TEST(Frf, OneDofEqualsClosedForm) {
               1.0, kClosedFormTolerance);
 }
 
+// A slow mode beside a very stiff tie (a reduced vehicle: 2e10 N/m wheel ties on light soles,
+// largest omega^2 ~1e11) is a mode, not a rigid-body one: the sprung mass at 0.3 Hz has
+// omega^2 / max 9e-12, which a rigid-body cut at 1e-10 of the largest zeroed (the model then
+// drifted and its 0 Hz FRF was NaN). The modal FRF keeps the static limit x/h = 1.
+TEST(Frf, SlowModeBesideAStiffTieIsNotRigid) {
+  const double m_s = 1000.0, f_s = 0.3;
+  const double k_s = m_s * std::pow(kTwoPi * f_s, 2);
+  const double beta = 0.05;  // C = beta K: modal damping is then exact, as the comparison needs
+  const SecondOrderSystem s = test::quarterCar(m_s, 0.05, k_s, beta * k_s, 2e10, beta * 2e10);
+  const ModalSystem modal(s);
+  const double ratio = std::pow(modal.naturalFrequencies()(0) / modal.naturalFrequencies()(1), 2);
+  EXPECT_LT(ratio, 1e-11);
+  EXPECT_NEAR(modal.naturalFrequencies()(0) / kTwoPi, f_s, 1e-6 * f_s);
+  const Vector f = (Vector(3) << 0.0, 0.1, 0.3).finished();
+  const ComplexMatrix direct =
+      frfDirect(s, f, InputDelay::synchronous(), OutputQuantity::Displacement);
+  const ComplexMatrix by_modes =
+      frfModal(s, f, InputDelay::synchronous(), OutputQuantity::Displacement);
+  EXPECT_TRUE(by_modes.allFinite());
+  EXPECT_NEAR(std::abs(by_modes(0, 0)), 1.0, 1e-9);
+  for (int i = 0; i < f.size(); ++i)
+    EXPECT_LT(std::abs(by_modes(i, 0) - direct(i, 0)), 1e-6 * std::abs(direct(i, 0))) << f(i);
+}
+
 // Rayleigh damping: the modal superposition of eq. 20 equals the direct solution of eq. 18.
 TEST(Frf, DirectEqualsModalForRayleighDamping) {
   const SecondOrderSystem s = test::randomVehicle(24, 6, 8, 17);
