@@ -16,6 +16,9 @@ namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 namespace {
 
+// The highest ~rate the node accepts [Hz] (a 10 us step).
+constexpr double kMaxRateHz = 1e5;
+
 // Reads the parameters of one node handle; every error names the resolved parameter.
 class Reader {
  public:
@@ -247,6 +250,14 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
 
   OnlineVehicleOptions& v = p.vehicle_options;
   v.rate = in.positive("rate", v.rate, "Hz");
+  // A step of the reduced vehicle takes tens of microseconds (OnlineVehicle::step, 31-44 us on
+  // the bundled one): a rate far above 1/step cannot be kept and only stalls the node in its
+  // catch-up (1e9 Hz pegged a core and ignored SIGINT).
+  if (v.rate > kMaxRateHz)
+    throw in.error("rate", "must not exceed " + Reader::text(kMaxRateHz) +
+                               " Hz (a step of the model takes tens of microseconds: the node "
+                               "could not keep up), got " +
+                               Reader::text(v.rate));
   // The comfort meter filters the vertical acceleration at ~rate (ISO 2631-1 Wk needs more than
   // 25 Hz): refused here, naming ~rate, rather than later as an error of the vehicle.
   try {

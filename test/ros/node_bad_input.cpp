@@ -297,6 +297,11 @@ TEST(NodeBadParameters, RateTooLowForTheComfortFilterIsNamed) {
       run.output.find("/slow_rate/rate: comfort: sample rate 5 Hz is too low for ISO 2631-1 Wk"),
       std::string::npos)
       << run.output;
+  // Nor so high that no step could keep it (1e9 Hz pegged a core and ignored SIGINT).
+  const NodeRun fast = runNamed("fast_rate", "_rate:=1e9");
+  EXPECT_EQ(fast.exit_status, 1) << fast.output;
+  EXPECT_NE(fast.output.find("/fast_rate/rate: must not exceed 100000 Hz"), std::string::npos)
+      << fast.output;
 }
 
 // ~ground_contact_rate: >= 0 Hz, finite, at most ~rate; each named.
