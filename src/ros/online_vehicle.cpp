@@ -207,9 +207,17 @@ void OnlineVehicle::checkGroundContact() {
     contact_watch_->check(simulator_.time(), station_, simulator_.state(), simulator_.input());
 }
 
-void OnlineVehicle::addTerrain(const TerrainPatch& patch) {
+bool OnlineVehicle::addTerrain(const TerrainPatch& patch) {
+  const double keep_from = rearContactStation() - options_.terrain_keep_behind;
   terrain_.addPatch(patch.start_station, patch.spacing, patch.lateral, patch.heights);
-  terrain_.dropBehind(rearContactStation() - options_.terrain_keep_behind);
+  // A patch ending before keep_from less the bridge margin (dropBehind's own rule) is freed by
+  // the call below: the caller hears of it instead of counting it as terrain.
+  const double end =
+      patch.start_station + patch.spacing * static_cast<double>(patch.heights.cols() - 1);
+  const bool behind =
+      end < keep_from - terrain::TerrainBuffer::kBridgeFactor * patch.spacing * (1.0 + 1e-9);
+  terrain_.dropBehind(keep_from);
+  return !behind;
 }
 
 void OnlineVehicle::setSpeed(double speed) {

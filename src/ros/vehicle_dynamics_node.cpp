@@ -138,7 +138,21 @@ void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queu
 void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     const TerrainPatch patch = fromMsg(*msg);
-    vehicle_->addTerrain(patch);
+    if (!vehicle_->addTerrain(patch)) {
+      // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station
+      // frame mistake. Said once per kWarnPeriod and counted, not taken for terrain.
+      ++events_.patches_behind;
+      std::ostringstream text;
+      text << "patch at x = " << patch.start_station << " .. "
+           << patch.start_station + patch.spacing * static_cast<double>(patch.heights.cols() - 1)
+           << " m, rearmost contact at " << vehicle_->rearContactStation() << " m";
+      last_behind_patch_ = text.str();
+      ROS_WARN_THROTTLE(kWarnPeriod,
+                        "vehicle_dynamics_node: terrain %s: wholly behind the vehicle by more "
+                        "than ~terrain_keep_behind (%g m), dropped",
+                        last_behind_patch_.c_str(), params_.vehicle_options.terrain_keep_behind);
+      return;
+    }
     flat_since_restart_ = false;
     ++events_.patches_accepted;
     // Contacts beyond a patch's outer lines take the edge line's heights (terrain.h); a patch
@@ -469,8 +483,10 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
       ++events_.uncovered_steps;
       if (vehicle_->terrain().empty())
         ROS_WARN_THROTTLE(kWarnPeriod,
-                          "vehicle_dynamics_node: no terrain received yet, moving at %.3f m/s at "
-                          "station %.2f m: the contacts hold their last height",
+                          "vehicle_dynamics_node: no terrain stored (%llu patches received behind "
+                          "the vehicle and dropped), moving at %.3f m/s at station %.2f m: the "
+                          "contacts hold their last height",
+                          static_cast<unsigned long long>(events_.patches_behind),
                           vehicle_->speed(), vehicle_->station());
       else
         ROS_WARN_THROTTLE(kWarnPeriod,

@@ -63,17 +63,30 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t rejected = terrain_rejected_.delta(events_.patches_rejected);
   const std::uint64_t uncovered = terrain_uncovered_.delta(events_.uncovered_steps);
   const std::uint64_t narrow = terrain_narrow_.delta(events_.patches_narrow);
+  const std::uint64_t behind = terrain_behind_.delta(events_.patches_behind);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
-  if (buffer.empty()) {
+  if (buffer.empty() && behind > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   flat_since_restart_ ? "no terrain yet: flat ground since the start or reset"
+                   "no terrain: the patches received lay wholly behind the vehicle (dropped)");
+  } else if (buffer.empty() && flat_since_restart_ && vehicle_->speed() == 0.0) {
+    // Standing on the flat ground of a start or reset until the terrain source begins is the
+    // normal way to start, not a fault for an aggregator to flag.
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "waiting for terrain: standing on flat ground since the start or reset");
+  } else if (buffer.empty()) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   flat_since_restart_ ? "no terrain yet: moving on flat ground since the start "
+                                         "or reset"
                                        : "no terrain: holding the last heights");
   } else if (uncovered > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "terrain underrun: contacts off the terrain held at their last height");
   } else if (rejected > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "terrain patches rejected");
+  } else if (behind > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "patches wholly behind the vehicle dropped");
   } else if (narrow > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches narrower than the contacts: the outer ones read the edge lines");
@@ -86,6 +99,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("last rejection", last_patch_error_);
   status.add("patches narrower than the contacts (total)", events_.patches_narrow);
   status.add("last narrow patch", last_narrow_patch_);
+  status.add("patches behind the vehicle, dropped (total)", events_.patches_behind);
+  status.add("last patch behind the vehicle", last_behind_patch_);
   status.add("steps with uncovered contacts (total)", events_.uncovered_steps);
   status.add("steps with uncovered contacts (since last report)", uncovered);
   status.add("patches stored", buffer.patchCount());

@@ -102,6 +102,11 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   ASSERT_TRUE(test::spinUntil(
       [&] { return terrain_pub_.getNumSubscribers() > 0 && speed_pub_.getNumSubscribers() > 0; },
       5.0));
+  // Standing still before any terrain is the normal start: OK, not a warning to aggregate.
+  ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": terrain"); }, 10.0));
+  EXPECT_EQ(diagnostics_.level(": terrain"),
+            static_cast<int>(diagnostic_msgs::DiagnosticStatus::OK))
+      << diagnostics_.describe();
 
   // Good terrain up to terrain_end, then bad patches of every kind.
   terrain_pub_.publish(test::flatProfile(-10.0, terrain_end));
@@ -148,19 +153,23 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   EXPECT_EQ(non_finite_, 0u);
   EXPECT_EQ(last_speed_, speed);
   EXPECT_GT(station_, terrain_end);
+  // Valid, but wholly behind the vehicle now: dropped, and said so (it was counted accepted).
+  terrain_pub_.publish(test::flatProfile(-10.0, -5.0));
 
   ASSERT_TRUE(test::spinUntil(
       [&] {
         return diagnostics_.value(": terrain", "patches rejected (total)") >= bad_patches &&
                diagnostics_.value(": speed", "speeds rejected (total)") >= bad_speeds &&
                diagnostics_.value(": terrain", "steps with uncovered contacts (total)") > 0 &&
-               diagnostics_.value(": terrain", "patches narrower than the contacts (total)") > 0;
+               diagnostics_.value(": terrain", "patches narrower than the contacts (total)") > 0 &&
+               diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)") > 0;
       },
       5.0))
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": terrain", "patches rejected (total)"), bad_patches);
   EXPECT_EQ(diagnostics_.value(": speed", "speeds rejected (total)"), bad_speeds);
   EXPECT_EQ(diagnostics_.value(": terrain", "patches narrower than the contacts (total)"), 1.0);
+  EXPECT_EQ(diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)"), 1.0);
   EXPECT_EQ(diagnostics_.level(": terrain"),
             static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);

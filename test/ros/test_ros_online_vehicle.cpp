@@ -211,6 +211,29 @@ TEST(OnlineVehicle, InvalidTerrainAndSpeedAreRejectedWithoutChange) {
   EXPECT_EQ(vehicle.speed(), 3.0);
 }
 
+TEST(OnlineVehicle, PatchWhollyBehindTheKeptTerrainIsReportedDropped) {
+  OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  o.terrain_keep_behind = 2.0;
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), o);
+  const double keep_from = vehicle.rearContactStation() - 2.0;
+  TerrainPatch p;
+  p.spacing = 0.1;
+  p.lateral = Eigen::Vector2d(-1.0, 1.0);
+  p.heights = Matrix::Constant(2, 11, 0.02);  // 1 m long
+  // Ends two spacings before the kept terrain, beyond the bridged gap (1.5 spacings): dropped.
+  p.start_station = keep_from - 0.2 - 1.0;
+  EXPECT_FALSE(vehicle.addTerrain(p));
+  EXPECT_TRUE(vehicle.terrain().empty());
+  // Ending one spacing before it, it still anchors the bridge to the kept terrain: stored.
+  p.start_station = keep_from - 0.1 - 1.0;
+  EXPECT_TRUE(vehicle.addTerrain(p));
+  EXPECT_DOUBLE_EQ(vehicle.terrain().coveredUntil(), keep_from - 0.1);
+  // Straddling keep_from: stored, cut to what lies ahead.
+  p.start_station = keep_from - 0.5;
+  EXPECT_TRUE(vehicle.addTerrain(p));
+  EXPECT_DOUBLE_EQ(vehicle.terrain().coveredUntil(), keep_from + 0.5);
+}
+
 TEST(OnlineVehicle, UnknownOutputsAreNamed) {
   reduction::ReducedModel model = test::toyModel();
   model.system.output_names[7] = "road_wheel_left_9 uz";

@@ -127,7 +127,9 @@ class OnlineVehicle {
   int resetTo(double station, double speed, ResetTerrain terrain);
   /// Stores a patch (newest wins where patches overlap) and frees terrain behind the vehicle.
   /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.
-  void addTerrain(const TerrainPatch& patch);
+  /// Returns false for a valid patch ending wholly behind the terrain kept (more than
+  /// terrain_keep_behind behind the rear contact, beyond the bridged gap): it was dropped.
+  bool addTerrain(const TerrainPatch& patch);
   /// Commanded speed [m/s]: used from the next step on, or, with a slew, approached at the
   /// bounded rate from the next step on. Throws InputError if negative or not finite.
   void setSpeed(double speed);

@@ -79,6 +79,7 @@ class VehicleDynamicsNode {
   struct Events {
     std::uint64_t patches_accepted = 0, patches_rejected = 0;
     std::uint64_t patches_narrow = 0;  // accepted, but narrower than the contacts' lateral span
+    std::uint64_t patches_behind = 0;  // valid, but wholly behind the terrain kept: dropped
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
     std::uint64_t speed_timeouts = 0;  // stops after ~speed_timeout without a speed message
     std::uint64_t uncovered_steps = 0;  // steps with at least one contact off the terrain
@@ -222,8 +223,8 @@ class VehicleDynamicsNode {
 
   Events events_;
   Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
-      terrain_uncovered_, terrain_narrow_, speed_rejected_, speed_timed_out_;
-  std::string last_patch_error_, last_speed_error_, last_narrow_patch_;
+      terrain_uncovered_, terrain_narrow_, terrain_behind_, speed_rejected_, speed_timed_out_;
+  std::string last_patch_error_, last_speed_error_, last_narrow_patch_, last_behind_patch_;
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
   ros::WallTime recent_speed_arrival_;  // zero: none kept
