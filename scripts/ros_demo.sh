@@ -59,7 +59,7 @@ roslaunch tracked_vehicle_dynamics replay_track.launch track:="$TRACK" speed_kmh
   exit 1
 }
 end=$(date +%s.%N)
-grep -h "vehicle_dynamics_node:" "$OUT/roslaunch.log" | sed 's/\x1b\[[0-9;]*m//g' | head -n 3 || true
+grep -h "/vehicle_dynamics:" "$OUT/roslaunch.log" | sed 's/\x1b\[[0-9;]*m//g' | head -n 3 || true
 # rosbag record finishes writing after SIGINT; wait for the final file.
 for _ in $(seq 1 50); do
   [ -s "$output_bag" ] && [ ! -e "$output_bag.active" ] && break

@@ -175,6 +175,11 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
   if (!std::isfinite(station)) {
     throw InputError("online vehicle: reset station " + brief(station) + " m is not finite");
   }
+  if (std::abs(station) > kMaxResetStation) {
+    throw InputError("online vehicle: reset station " + brief(station) +
+                     " m: |station| must not exceed " + brief(kMaxResetStation) +
+                     " m (beyond it a step's advance is lost in the station's rounding)");
+  }
   setSpeed(speed);  // validates first: a bad speed throws before anything changes
   speed_ = speed;   // at once, also with a slew: the vehicle restarts at rest relative to it
   travel_acceleration_ = 0.0;

@@ -108,20 +108,22 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   const double published_rate = rate / static_cast<double>(publish_every_);
   if (std::abs(published_rate - params_.publish_rate) > 1e-9 * rate)
     ROS_WARN(
-        "vehicle_dynamics_node: ~publish_rate %g Hz does not divide ~rate %g Hz: publishing "
+        "%s: ~publish_rate %g Hz does not divide ~rate %g Hz: publishing "
         "every %lld steps, at %g Hz",
-        params_.publish_rate, rate, static_cast<long long>(publish_every_), published_rate);
-  ROS_INFO("vehicle_dynamics_node: %s (%s) at %.0f Hz, publishing at %g Hz, %s/%s",
+        nodeName(), params_.publish_rate, rate, static_cast<long long>(publish_every_),
+        published_rate);
+  ROS_INFO("%s: %s (%s) at %.0f Hz, publishing at %g Hz, %s/%s", nodeName(),
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            published_rate, methodName(params_.vehicle_options.method),
            holdName(params_.vehicle_options.hold));
   for (const std::string& unknown : params_.unknown_parameters)
-    ROS_WARN("vehicle_dynamics_node: parameter %s is set but not a parameter of this node: ignored",
+    ROS_WARN("%s: parameter %s is set but not a parameter of this node: ignored", nodeName(),
              unknown.c_str());
   if (use_sim_time_)
     ROS_INFO(
-        "vehicle_dynamics_node: on simulated time (/use_sim_time true): the vehicle starts with "
-        "the first /clock message");
+        "%s: on simulated time (/use_sim_time true): the vehicle starts with "
+        "the first /clock message",
+        nodeName());
 }
 
 template <class M>
@@ -148,9 +150,10 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
            << " m, rearmost contact at " << vehicle_->rearContactStation() << " m";
       last_behind_patch_ = text.str();
       ROS_WARN_THROTTLE(kWarnPeriod,
-                        "vehicle_dynamics_node: terrain %s: wholly behind the vehicle by more "
+                        "%s: terrain %s: wholly behind the vehicle by more "
                         "than ~terrain_keep_behind (%g m), dropped",
-                        last_behind_patch_.c_str(), params_.vehicle_options.terrain_keep_behind);
+                        nodeName(), last_behind_patch_.c_str(),
+                        params_.vehicle_options.terrain_keep_behind);
       return;
     }
     flat_since_restart_ = false;
@@ -179,7 +182,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   } catch (const std::exception& e) {  // InputError, or bad_alloc for an absurd patch
     ++events_.patches_rejected;
     last_patch_error_ = e.what();
-    ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: terrain patch rejected: %s", e.what());
+    ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
   }
 }
 
@@ -202,7 +205,7 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
     last_speed_error_ = why;
     // The last valid speed is kept: the commanded one (with a slew the current speed is still on
     // its way there).
-    ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: %s; keeping %.3f m/s", why.c_str(),
+    ROS_WARN_THROTTLE(kWarnPeriod, "%s: %s; keeping %.3f m/s", nodeName(), why.c_str(),
                       vehicle_->commandedSpeed());
     return;
   }
@@ -215,7 +218,7 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
 }
 
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
-  ROS_INFO("vehicle_dynamics_node: reset requested: back to static equilibrium at station 0");
+  ROS_INFO("%s: reset requested: back to static equilibrium at station 0", nodeName());
   // Not published here: the current sample's stamp is already out, and tf2 discards a second
   // transform at the same stamp (TF_REPEATED_DATA). The next published sample shows the reset.
   restart();
@@ -229,12 +232,15 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   std::string why;
   if (!std::isfinite(request.station))
     why = "station " + brief(request.station) + " m is not finite";
+  else if (std::abs(request.station) > kMaxResetStation)
+    why = "station " + brief(request.station) + " m: |station| must not exceed " +
+          brief(kMaxResetStation) + " m (beyond it a step's advance is lost in its rounding)";
   else
     why = speedProblem(request.speed);
   if (!why.empty()) {
     response.success = false;
     response.message = "~reset_to rejected: " + why + "; nothing changed";
-    ROS_WARN("vehicle_dynamics_node: %s", response.message.c_str());
+    ROS_WARN("%s: %s", nodeName(), response.message.c_str());
     return true;  // the call itself succeeded: the answer is in the response
   }
   const ResetTerrain terrain = request.keep_terrain ? ResetTerrain::Keep : ResetTerrain::Clear;
@@ -244,7 +250,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   } catch (const std::exception& e) {  // checked above, so not expected
     response.success = false;
     response.message = std::string("~reset_to failed: ") + e.what();
-    ROS_ERROR("vehicle_dynamics_node: %s", response.message.c_str());
+    ROS_ERROR("%s: %s", nodeName(), response.message.c_str());
     return true;
   }
   // As ~reset: not published here (the current sample's stamp is already out, and tf2 discards
@@ -265,7 +271,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
          << " contacts off the terrain hold their last height";
   response.success = true;
   response.message = text.str();
-  ROS_INFO("vehicle_dynamics_node: ~reset_to: %s", response.message.c_str());
+  ROS_INFO("%s: ~reset_to: %s", nodeName(), response.message.c_str());
   return true;
 }
 
@@ -303,9 +309,9 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
 void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   ++events_.time_jumps_back;
   ROS_WARN_THROTTLE(kWarnPeriod,
-                    "vehicle_dynamics_node: ROS time jumped back by %.3f s: resetting the vehicle "
+                    "%s: ROS time jumped back by %.3f s: resetting the vehicle "
                     "to equilibrium at station 0",
-                    (sample_time_ - now).toSec());
+                    nodeName(), (sample_time_ - now).toSec());
   restart();
   sample_time_ = now;
   reapplyRecentInputs(now);
@@ -329,8 +335,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
       flat_since_restart_ = false;
       ++events_.patches_reapplied;
     } catch (const std::exception& e) {  // accepted once, so not expected
-      ROS_WARN_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: terrain patch rejected: %s",
-                        e.what());
+      ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
     }
   }
   recent_patches_.clear();
@@ -397,7 +402,7 @@ void VehicleDynamicsNode::step() {
   // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
   if (params_.speed_timeout > 0.0 && vehicle_->commandedSpeed() > 0.0 &&
       (t - last_speed_time_).toSec() > params_.speed_timeout) {
-    ROS_WARN("vehicle_dynamics_node: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m",
+    ROS_WARN("%s: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m", nodeName(),
              (t - last_speed_time_).toSec(), params_.speed_timeout,
              vehicle_->slews() ? "braking to a stop at ~max_deceleration from station"
                                : "stopping the vehicle at station",
@@ -411,7 +416,7 @@ void VehicleDynamicsNode::step() {
     updater_.update();
   } catch (const std::exception& e) {
     // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
-    ROS_ERROR_THROTTLE(kWarnPeriod, "vehicle_dynamics_node: step failed: %s", e.what());
+    ROS_ERROR_THROTTLE(kWarnPeriod, "%s: step failed: %s", nodeName(), e.what());
   }
 }
 
@@ -442,9 +447,9 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     ++events_.time_jumps_back;
     ++events_.resyncs;
     ROS_WARN_THROTTLE(kWarnPeriod,
-                      "vehicle_dynamics_node: the wall clock stepped back by %.3f s: "
+                      "%s: the wall clock stepped back by %.3f s: "
                       "resynchronising (the vehicle state is kept)",
-                      -ahead_ns * 1e-9);
+                      nodeName(), -ahead_ns * 1e-9);
     sample_time_ = now;
     return;
   }
@@ -462,9 +467,10 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     ++events_.resyncs;
     events_.skipped_steps += static_cast<std::uint64_t>(skipped);
     ROS_WARN_THROTTLE(kWarnPeriod,
-                      "vehicle_dynamics_node: %.3f s behind ROS time, more than ~catch_up_limit "
+                      "%s: %.3f s behind ROS time, more than ~catch_up_limit "
                       "(%.3f s): skipping %.3f s and resynchronising",
-                      ahead_ns * 1e-9, params_.catch_up_limit, skipped * step_ns_ * 1e-9);
+                      nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
+                      skipped * step_ns_ * 1e-9);
     sample_time_ += ros::Duration().fromNSec(skipped * step_ns_);
     due = max_catch_up_steps_;
   }
@@ -483,22 +489,22 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
       ++events_.uncovered_steps;
       if (vehicle_->terrain().empty())
         ROS_WARN_THROTTLE(kWarnPeriod,
-                          "vehicle_dynamics_node: no terrain stored (%llu patches received behind "
+                          "%s: no terrain stored (%llu patches received behind "
                           "the vehicle and dropped), moving at %.3f m/s at station %.2f m: the "
                           "contacts hold their last height",
-                          static_cast<unsigned long long>(events_.patches_behind),
+                          nodeName(), static_cast<unsigned long long>(events_.patches_behind),
                           vehicle_->speed(), vehicle_->station());
       else
         ROS_WARN_THROTTLE(kWarnPeriod,
-                          "vehicle_dynamics_node: no terrain under %d of %d contacts at station "
+                          "%s: no terrain under %d of %d contacts at station "
                           "%.2f m (terrain covers %.2f .. %.2f m): holding their last height",
-                          result.uncovered, vehicle_->sampler().size(), vehicle_->station(),
-                          vehicle_->terrain().coveredFrom(), vehicle_->terrain().coveredUntil());
+                          nodeName(), result.uncovered, vehicle_->sampler().size(),
+                          vehicle_->station(), vehicle_->terrain().coveredFrom(),
+                          vehicle_->terrain().coveredUntil());
     }
     if (result.diverged) {
       ++events_.diverged;
-      ROS_ERROR_THROTTLE(kWarnPeriod,
-                         "vehicle_dynamics_node: non-finite outputs: back to equilibrium");
+      ROS_ERROR_THROTTLE(kWarnPeriod, "%s: non-finite outputs: back to equilibrium", nodeName());
     }
     if (steps_since_start_ % publish_every_ == 0)
       publishState();

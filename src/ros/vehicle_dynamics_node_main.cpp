@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
     tracked_vehicle_dynamics::ros_layer::VehicleDynamicsNode node(nh, private_nh);
     ros::spin();
   } catch (const std::exception& e) {
-    ROS_FATAL("vehicle_dynamics_node: %s", e.what());
+    ROS_FATAL("%s: %s", tracked_vehicle_dynamics::ros_layer::nodeName(), e.what());
     return 1;
   }
   return 0;

@@ -42,7 +42,7 @@ void VehicleDynamicsNode::loadVehicle() {
     const vehicle::VehicleDescription description =
         vehicle::loadVehicleDescription(params_.vehicle);
     for (const std::string& w : vehicle::descriptionWarnings(description))
-      ROS_WARN("vehicle_dynamics_node: %s: %s", params_.vehicle.c_str(), w.c_str());
+      ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), w.c_str());
     // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
     std::string& point = params_.vehicle_options.comfort_point;
     std::string known = "hull";
@@ -55,9 +55,9 @@ void VehicleDynamicsNode::loadVehicle() {
     // vehicle's), else the hull's CoG: every vehicle starts without a comfort_point of its own.
     if (!found && !params_.comfort_point_given) {
       ROS_INFO(
-          "vehicle_dynamics_node: ~comfort_point unset and %s names no '%s' point: ride comfort "
+          "%s: ~comfort_point unset and %s names no '%s' point: ride comfort "
           "at the hull's CoG (set ~comfort_point to one of its points for a seat)",
-          params_.vehicle.c_str(), point.c_str());
+          nodeName(), params_.vehicle.c_str(), point.c_str());
       point = "hull";
       found = true;
     }
@@ -88,19 +88,19 @@ void VehicleDynamicsNode::loadVehicle() {
     // Saved with the model, so a cached or given model warns as the run that reduced it did
     // (e.g. a ~reduction/global_modes that cuts a repeated eigenvalue).
     for (const std::string& warning : model.warnings)
-      ROS_WARN("vehicle_dynamics_node: reduction: %s", warning.c_str());
+      ROS_WARN("%s: reduction: %s", nodeName(), warning.c_str());
   } catch (const Error& e) {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }
-  ROS_INFO("vehicle_dynamics_node: %s discretisation at %g Hz set up in %.3f s",
+  ROS_INFO("%s: %s discretisation at %g Hz set up in %.3f s", nodeName(),
            methodName(params_.vehicle_options.method), params_.vehicle_options.rate,
            setup_seconds_);
   if (!params_.reduced_model.empty()) {
     cached_ = true;  // nothing to cache: the file is the model
     ROS_INFO(
-        "vehicle_dynamics_node: loaded the reduced %s model of '%s' from ~reduced_model %s in "
+        "%s: loaded the reduced %s model of '%s' from ~reduced_model %s in "
         "%.3f s: %ld DOFs, %ld road inputs, %ld outputs (reduction %s; ~reduction/* not used)",
-        vehicle::variantName(params_.variant), params_.vehicle.c_str(),
+        nodeName(), vehicle::variantName(params_.variant), params_.vehicle.c_str(),
         params_.reduced_model.c_str(), load_seconds_, static_cast<long>(model_dofs_),
         static_cast<long>(model_inputs_), static_cast<long>(model_outputs_),
         readableReduction(given_reduction_).c_str());
@@ -112,21 +112,21 @@ void VehicleDynamicsNode::loadVehicle() {
   const char* what = report_.from_cache ? "loaded" : cached_ ? "built and cached" : "built";
   if (cached_) {
     ROS_INFO(
-        "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+        "%s: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
         "inputs, %ld outputs (%s)",
-        what, vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
-        static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+        nodeName(), what, vehicle::variantName(params_.variant), params_.vehicle.c_str(),
+        load_seconds_, static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
         static_cast<long>(model_outputs_), report_.cache_file.c_str());
   } else {
     ROS_WARN(
-        "vehicle_dynamics_node: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
+        "%s: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
         "inputs, %ld outputs; not cached: %s (%s): the next start builds it again",
-        what, vehicle::variantName(params_.variant), params_.vehicle.c_str(), load_seconds_,
-        static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
+        nodeName(), what, vehicle::variantName(params_.variant), params_.vehicle.c_str(),
+        load_seconds_, static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
         static_cast<long>(model_outputs_), not_cached_reason_.c_str(), report_.cache_file.c_str());
   }
   if (!report_.cache_note.empty())
-    ROS_INFO("vehicle_dynamics_node: cache: %s", report_.cache_note.c_str());
+    ROS_INFO("%s: cache: %s", nodeName(), report_.cache_note.c_str());
 }
 
 // ~reduced_model: a file of `tvd reduce --out`, checked as the cache is (complete MAT file,
@@ -158,9 +158,9 @@ reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(
   const std::string asked = reduction::reductionKey(variant, params_.reduction_options);
   if (asked != model.reduction && asked != reduction::reductionKey(variant, {}))
     ROS_WARN(
-        "vehicle_dynamics_node: %s: ~reduction/* ('%s') differ from the reduction of %s "
+        "%s: %s: ~reduction/* ('%s') differ from the reduction of %s "
         "('%s'); the file's model runs and ~reduction/* are not used",
-        param.c_str(), readableReduction(asked).c_str(), file.c_str(),
+        nodeName(), param.c_str(), readableReduction(asked).c_str(), file.c_str(),
         readableReduction(model.reduction).c_str());
   given_reduction_ = model.reduction;
   report_ = {};

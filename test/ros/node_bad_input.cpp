@@ -225,7 +225,9 @@ TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
     const NodeRun run = runNamed(name, "_diagnostic_period:=" + value);
     EXPECT_EQ(run.exit_status, 1) << run.output;
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
-    EXPECT_NE(run.output.find("/" + name + "/diagnostic_period: must be"), std::string::npos)
+    // The line starts with the node's own name, not the executable's.
+    EXPECT_NE(run.output.find("/" + name + ": /" + name + "/diagnostic_period: must be"),
+              std::string::npos)
         << run.output;
   }
 }

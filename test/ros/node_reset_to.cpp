@@ -3,7 +3,7 @@
 // vehicle there in static equilibrium on the plateau: odom -> base_link is the flat static pose
 // moved by (station, 0, H) (a uniform road height lifts the linear model rigidly), every wheel is
 // H above its flat static position. Nothing is published by the call itself, and no stamp twice.
-// A bad request (negative speed, speed above ~max_speed, a station that is not finite) gets
+// A bad request (negative speed, speed above ~max_speed, a station not finite or beyond 1e7 m) gets
 // success = false with a message naming the field and leaves the vehicle where it was;
 // keep_terrain false restarts on flat ground.
 #include <gtest/gtest.h>
@@ -162,8 +162,9 @@ TEST_F(NodeResetTo, RestartsInEquilibriumOnTheTerrainAtTheStation) {
     double station, speed;
     const char* field;
   };
-  for (const Bad& bad : {Bad{50.0, -1.0, "speed"}, Bad{50.0, 1000.0, "speed"},
-                         Bad{50.0, nan, "speed"}, Bad{nan, 0.0, "station"}}) {
+  for (const Bad& bad :
+       {Bad{50.0, -1.0, "speed"}, Bad{50.0, 1000.0, "speed"}, Bad{50.0, nan, "speed"},
+        Bad{nan, 0.0, "station"}, Bad{1e300, 0.0, "must not exceed"}}) {
     ResetVehicle refused = request(bad.station, bad.speed, false);
     ASSERT_TRUE(ros::service::call(service, refused));
     EXPECT_FALSE(refused.response.success) << bad.station << " m, " << bad.speed << " m/s";

@@ -325,6 +325,8 @@ TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
 
   // Invalid: nothing changes.
   EXPECT_THROW(vehicle.resetTo(std::nan(""), 0.0, ResetTerrain::Clear), InputError);
+  EXPECT_THROW(vehicle.resetTo(1e300, 0.0, ResetTerrain::Clear), InputError);
+  EXPECT_THROW(vehicle.resetTo(-2.0 * kMaxResetStation, 0.0, ResetTerrain::Clear), InputError);
   EXPECT_THROW(vehicle.resetTo(5.0, -1.0, ResetTerrain::Clear), InputError);
   EXPECT_THROW(vehicle.resetTo(5.0, std::numeric_limits<double>::infinity(), ResetTerrain::Clear),
                InputError);

@@ -92,6 +92,11 @@ struct WheelState {
   double acceleration = 0.0;  ///< vertical [m/s^2]
 };
 
+/// Largest |station| resetTo() takes [m] (10,000 km). At 1e7 m a double resolves 2e-9 m, a
+/// thousandth of a step of 0.1 m/s at 50 kHz; far beyond it a step's advance s + v h rounds
+/// back to s and the vehicle stands still while "driving".
+constexpr double kMaxResetStation = 1e7;
+
 /// What resetTo() does with the terrain buffer.
 enum class ResetTerrain {
   /// Buffer cleared, held heights 0: flat ground (u = 0) until new patches arrive, as reset().
@@ -123,7 +128,8 @@ class OnlineVehicle {
   /// ResetTerrain::Clear), then K q0 = f_g + K_u u, q0' = 0 (StaticEquilibriumSolver). Time,
   /// step count and comfort metrics restart from zero. Returns the number of contacts the kept
   /// terrain did not cover (they hold their last height; 0 with Clear). Throws InputError,
-  /// changing nothing, when s is not finite or v is negative or not finite.
+  /// changing nothing, when s is not finite or |s| > kMaxResetStation, or v is negative or not
+  /// finite.
   int resetTo(double station, double speed, ResetTerrain terrain);
   /// Stores a patch (newest wins where patches overlap) and frees terrain behind the vehicle.
   /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.

@@ -64,6 +64,12 @@
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 
+/// The node's resolved name ("/sim/vehicle_dynamics"), the prefix of its log lines: with several
+/// vehicles in one launch, each line says which node it comes from.
+inline const char* nodeName() {
+  return ros::this_node::getName().c_str();
+}
+
 class VehicleDynamicsNode {
  public:
   /// Reads the parameters, loads or builds the reduced model, advertises, subscribes and starts
