@@ -40,8 +40,32 @@ class Reader {
     if (!has(key))
       return false;
     if (!nh_.getParam(key, *value))
-      throw error(key, std::string("must be ") + type);
+      throw error(key, std::string("must be ") + type + got(key));
     return true;
+  }
+
+  /// ", got <what the parameter server holds>" for a value of the wrong type: the user sees
+  /// what was read (a quoted "30" from a launch file reads as a string).
+  std::string got(const std::string& key) const {
+    XmlRpc::XmlRpcValue raw;
+    if (!nh_.getParam(key, raw))
+      return std::string();
+    switch (raw.getType()) {
+      case XmlRpc::XmlRpcValue::TypeString:
+        return ", got the string '" + static_cast<std::string>(raw) + "'";
+      case XmlRpc::XmlRpcValue::TypeBoolean:
+        return std::string(", got the boolean ") + (static_cast<bool>(raw) ? "true" : "false");
+      case XmlRpc::XmlRpcValue::TypeInt:
+        return ", got the integer " + std::to_string(static_cast<int>(raw));
+      case XmlRpc::XmlRpcValue::TypeDouble:
+        return ", got the number " + text(static_cast<double>(raw));
+      case XmlRpc::XmlRpcValue::TypeArray:
+        return ", got a list of " + std::to_string(raw.size()) + " items";
+      case XmlRpc::XmlRpcValue::TypeStruct:
+        return ", got a dictionary";
+      default:
+        return std::string();
+    }
   }
 
   std::string string(const std::string& key, const std::string& fallback) const {

@@ -286,10 +286,10 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
 TEST(NodeBadParameters, BadSpeedSlewRatesAreNamed) {
   int index = 0;
   for (const std::string key : {"max_acceleration", "max_deceleration"}) {
-    for (const auto& [value, message] :
-         std::vector<std::pair<std::string, std::string>>{{"-1", ": must be >= 0 m/s^2, got -1"},
-                                                          {"nan", ": must be"},  // a string or NaN on the command line
-                                                          {"fast", ": must be a number"}}) {
+    for (const auto& [value, message] : std::vector<std::pair<std::string, std::string>>{
+             {"-1", ": must be >= 0 m/s^2, got -1"},
+             {"nan", ": must be"},  // a string or NaN on the command line
+             {"fast", ": must be a number, got the string 'fast'"}}) {
       SCOPED_TRACE("~" + key + " " + value);
       const std::string name = "bad_slew_" + std::to_string(index++);
       const NodeRun run = runNamed(name, "_" + key + ":=" + value);
@@ -453,7 +453,7 @@ TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
       {"footprint_is_odom", "_footprint_frame:=odom",
        "/footprint_is_odom/footprint_frame: must differ from ~odom_frame and ~base_frame"},
       {"odom_tf_maybe", "_publish_odom_tf:=maybe",
-       "/odom_tf_maybe/publish_odom_tf: must be a boolean"},
+       "/odom_tf_maybe/publish_odom_tf: must be a boolean, got the string 'maybe'"},
   });
 }
 

@@ -113,6 +113,21 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertIsInstance(p["rate"], float)  # the node reads a double
         self.assertEqual(p["max_speed"], 12.0)   # the rest of the file still applies
 
+    def test_publish_rate_and_use_sim_time_arguments(self):
+        dumped = yaml.safe_load(roslaunch("--dump-params", PACKAGE, "vehicle_dynamics.launch"))
+        self.assertNotIn("/use_sim_time", dumped)  # left as it is on the master
+        self.assertNotIn(NODE + "/publish_rate", dumped)  # the file's (commented out: ~rate)
+        dumped = yaml.safe_load(roslaunch("--dump-params", PACKAGE, "vehicle_dynamics.launch",
+                                          "publish_rate:=100", "use_sim_time:=true"))
+        self.assertIs(dumped["/use_sim_time"], True)
+        self.assertEqual(dumped[NODE + "/publish_rate"], 100.0)
+        self.assertIsInstance(dumped[NODE + "/publish_rate"], float)  # the node reads a double
+        self.assertIs(yaml.safe_load(roslaunch("--dump-params", PACKAGE, "vehicle_dynamics.launch",
+                                               "use_sim_time:=false"))["/use_sim_time"], False)
+        # replay_track passes it through.
+        p = params("replay_track.launch", "publish_rate:=250")
+        self.assertEqual(p["publish_rate"], 250.0)
+
     def test_comfort_point_and_points_given_win_over_the_parameter_file(self):
         p = params("vehicle_dynamics.launch", "comfort_point:=hull")
         self.assertEqual(p["comfort_point"], "hull")
