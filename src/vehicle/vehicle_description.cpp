@@ -337,6 +337,22 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
             "the pins must lie above the pads (" + brief(pad_height) + " m)");
   c.require(t.upper_surface_height > t.pitch_line_height, "track_assembly.upper_surface_height",
             "the wheel path must lie above the pitch line");
+  // Around the sprocket and the idler the pitch line wraps their radius and the wheel path lies
+  // inside it by (upper_surface_height - pitch_line_height): that must be less than either
+  // radius, or the links' upper surfaces would cross the wheel's centre (a height in mm read as m).
+  const double inside = t.upper_surface_height - t.pitch_line_height;
+  const double wrap_radius = std::min(d.sprocket.radius, d.idler.radius);
+  c.require(inside < wrap_radius, "track_assembly.upper_surface_height",
+            brief(t.upper_surface_height) + " m puts the wheel path " + brief(inside) +
+                " m inside the pitch line, more than the " +
+                (d.sprocket.radius <= d.idler.radius ? "sprocket" : "idler") + " radius " +
+                brief(wrap_radius) + " m that the chain wraps");
+  // The guide horns touch the wheel's rim between the wheel path and the hub.
+  c.require(d.suspension.guide_contact_height < d.road_wheel.radius,
+            "suspension.guide_contact_height",
+            brief(d.suspension.guide_contact_height) +
+                " m above the wheel path reaches past the road wheel's hub (radius " +
+                brief(d.road_wheel.radius) + " m): the guide horns touch the rim below it");
   c.require(g.axle_count >= 2 && g.axle_count <= 9, "running_gear.axle_count",
             "2 to 9 axles per side are supported (node numbering)");
   c.require(t.count <= 999, "track_assembly.count",

@@ -212,6 +212,32 @@ TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
   } catch (const tvd::InputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("mine.yaml: sprocket.centre_x: ", 0), 0u) << e.what();
   }
+  // Lengths in millimetres read as metres: named, not blamed on what they run into later.
+  d = veh::VehicleDescription{};
+  d.track_assembly.upper_surface_height = 85.0;
+  try {
+    veh::validateDescription(d);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("track_assembly.upper_surface_height: 85 m puts the wheel "
+                                         "path 84.937 m inside the pitch line, more than the idler "
+                                         "radius 0.33 m"),
+              std::string::npos)
+        << e.what();
+  }
+  d = veh::VehicleDescription{};
+  d.suspension.guide_contact_height = 80.0;
+  try {
+    veh::validateDescription(d);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("suspension.guide_contact_height: 80 m above the wheel "
+                                         "path reaches past the road wheel's hub (radius 0.34 m)"),
+              std::string::npos)
+        << e.what();
+  }
+  d.suspension.guide_contact_height = 0.33;  // just below the hub: a model
+  EXPECT_NO_THROW(veh::validateDescription(d));
   EXPECT_EQ(veh::parseVariant("tracked"), veh::Variant::Tracked);
   EXPECT_THROW(veh::parseVariant("wheeled"), tvd::InputError);
 }
