@@ -14,6 +14,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/reduction/fixed_interface_modes.h"
 #include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/mac.h"
@@ -463,14 +464,24 @@ const char* modeRuleName(VehicleModeRule rule) {
 
 namespace {
 
-/// Every reduction option, the doubles to the last bit (%.17g round-trips).
-std::string optionsText(const VehicleReductionOptions& o) {
+std::string number(double value, bool legacy) {
+  if (!legacy)
+    return io::roundTripText(value);
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.17g", value);
+  return text;
+}
+
+/// Every reduction option, the doubles to the last bit in their shortest text (0.7, which reads
+/// back as the same double). `legacy`: as versions up to 0.3.2 wrote them, %.17g
+/// (0.69999999999999996), still read from their files.
+std::string optionsText(const VehicleReductionOptions& o, bool legacy = false) {
   char text[200];
   std::snprintf(text, sizeof(text),
-                "rule %s; global_modes %d; band_hz %.17g; mac_threshold %.17g; "
+                "rule %s; global_modes %d; band_hz %s; mac_threshold %s; "
                 "mogesec_masters %d; modes %d",
-                modeRuleName(o.rule), o.global_modes, o.band_hz,
-                o.mac_threshold, o.mogesec_masters, o.mode_count);
+                modeRuleName(o.rule), o.global_modes, number(o.band_hz, legacy).c_str(),
+                number(o.mac_threshold, legacy).c_str(), o.mogesec_masters, o.mode_count);
   return text;
 }
 
@@ -498,8 +509,11 @@ bool parseReductionKey(const std::string& key, vehicle::Variant* variant,
     return false;
   const vehicle::Variant v = vehicle::parseVariant(name);
   o.rule = std::string(rule) == "band" ? VehicleModeRule::Band : VehicleModeRule::MacCorrelation;
-  // Exactly reductionKey()'s text: no other spelling, every double to the last bit.
-  if (reductionKey(v, o) != key)
+  // Exactly reductionKey()'s text (or the %.17g one of earlier versions): no other spelling,
+  // every double to the last bit.
+  const std::string legacy =
+      std::string("variant ") + vehicle::variantName(v) + "; " + optionsText(o, true);
+  if (reductionKey(v, o) != key && legacy != key)
     return false;
   *variant = v;
   *options = o;

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -13,13 +12,12 @@
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/csv_reader.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
 namespace terrain {
 namespace {
-
-constexpr int kFullPrecision = std::numeric_limits<double>::max_digits10;
 
 std::string format(double value) {
   std::ostringstream out;
@@ -45,7 +43,8 @@ using io::parseNumber;
 
 void writeFlowList(std::ostream& out, const Eigen::Ref<const Eigen::RowVectorXd>& values) {
   out << '[';
-  for (Eigen::Index i = 0; i < values.size(); ++i) out << (i ? ", " : "") << values(i);
+  for (Eigen::Index i = 0; i < values.size(); ++i)
+    out << (i ? ", " : "") << io::roundTripText(values(i));
   out << ']';
 }
 
@@ -217,16 +216,17 @@ Terrain loadTrack(const std::string& track, const TrackOptions& options) {
 void saveTerrainCsv(const Terrain& terrain, const std::string& path) {
   io::AtomicTextFile file(path);
   std::ostream& out = file.stream();
-  out << std::setprecision(kFullPrecision);
+  // Every value in its shortest exact text: 0.05, not 0.050000000000000003, and 0, not -0.
   out << "# tracked_vehicle_dynamics terrain '" << terrain.name()
       << "': station x [m], then the height [m] of each lateral line y [m]\n";
   out << 'x';
-  for (Eigen::Index j = 0; j < terrain.lateral().size(); ++j) out << ',' << terrain.lateral()(j);
+  for (Eigen::Index j = 0; j < terrain.lateral().size(); ++j)
+    out << ',' << io::roundTripText(terrain.lateral()(j));
   out << '\n';
   for (Eigen::Index i = 0; i < terrain.stations().size(); ++i) {
-    out << terrain.stations()(i);
+    out << io::roundTripText(terrain.stations()(i));
     for (Eigen::Index j = 0; j < terrain.lateral().size(); ++j) {
-      out << ',' << terrain.heights()(j, i);
+      out << ',' << io::roundTripText(terrain.heights()(j, i));
     }
     out << '\n';
   }
@@ -236,7 +236,6 @@ void saveTerrainCsv(const Terrain& terrain, const std::string& path) {
 void saveTerrainYaml(const Terrain& terrain, const std::string& path) {
   io::AtomicTextFile file(path);
   std::ostream& out = file.stream();
-  out << std::setprecision(kFullPrecision);
   out << "# tracked_vehicle_dynamics terrain: stations x [m], lateral lines y [m] (y left),\n"
          "# heights [m], one list per y with one value per station.\n";
   out << "name: " << quoted(terrain.name()) << '\n';

@@ -166,6 +166,15 @@ void run(const FrfOptions& opt) {
     source = "full (" + std::to_string(ref.frequencies_hz.size()) + " modes up to " +
              std::to_string(static_cast<int>(opt.max_mode_hz)) + " Hz + static residual)";
   }
+  // An undamped mode exactly on the grid divides by zero (eq. 20): said, not written as NaN
+  // into the table and the peaks.
+  for (Eigen::Index c = 0; c < h.cols(); ++c)
+    for (Eigen::Index i = 0; i < h.rows(); ++i)
+      if (!std::isfinite(h(i, c).real()) || !std::isfinite(h(i, c).imag()))
+        throw SolverError("the FRF of " + names[static_cast<std::size_t>(c)] +
+                          " is not finite at " + brief(hz(i)) +
+                          " Hz: an undamped mode lies on the frequency grid (give the vehicle "
+                          "damping, or shift the grid with --step-hz)");
   std::vector<NamedColumn> columns = comfortOutputs(names);
   const std::vector<NamedColumn> point_columns = pointOutputs(names, opt.points);
   columns.insert(columns.end(), point_columns.begin(), point_columns.end());
@@ -211,7 +220,8 @@ void run(const FrfOptions& opt) {
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
-        .field("vehicle", opt.vehicle_file)
+        .field("vehicle", description.name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("model", source)
         .field("dofs", static_cast<long long>(dofs))

@@ -124,6 +124,7 @@ void run(const MacOptions& opt) {
     io::JsonWriter json(std::cout);
     json.beginObject()
         .field("vehicle", description.name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("common_dofs", static_cast<long long>(common.size()))
         .field("threshold", opt.threshold)
         .field("untracked_frequencies_hz", uv.modes.frequencies_hz)

@@ -176,6 +176,7 @@ void runVehicle(const ModesOptions& opt) {
     io::JsonWriter json(std::cout);
     json.beginObject()
         .field("vehicle", description.name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("active_dofs", static_cast<long long>(a.system.size()))
         .field("mass_kg", a.vehicle.model.totalMass());

@@ -67,6 +67,7 @@ void run(const ReduceOptions& opt) {
     io::JsonWriter json(std::cout);
     json.beginObject()
         .field("vehicle", description.name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("full_dofs", static_cast<long long>(report.full_dofs))
         .field("interface_dofs", static_cast<long long>(report.interface_dofs))

@@ -184,7 +184,8 @@ void run(const RideOptions& opt) {
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
-        .field("vehicle", opt.vehicle_file)
+        .field("vehicle", model.vehicle_name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("track", track.name())
         .field("travelled_m", distance)

@@ -22,7 +22,9 @@ RideModel loadRideModel(const RideOptions& opt, const terrain::Terrain* track,
       choosePoints(opt.points, opt.points_given, named);  // before any work
   if (track)
     refuseDrivingBesideTerrain(opt.track, *track, description, opt.lateral_offset);
-  return {std::move(points), obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced)};
+  return {std::move(points),
+          obtainReducedModel(description, variant, opt.variant_given, "ride", opt.reduced),
+          description.name};
 }
 
 dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()>& known_speeds,

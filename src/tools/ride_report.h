@@ -28,6 +28,7 @@ std::vector<std::string> choosePoints(const std::string& spec, bool given,
 struct RideModel {
   std::vector<std::string> points;
   ReducedModelSource reduced;
+  std::string vehicle_name;  ///< the description's name (JSON "vehicle", as every command)
 };
 RideModel loadRideModel(const RideOptions& opt, const terrain::Terrain* track,
                         std::vector<std::string>* warnings);

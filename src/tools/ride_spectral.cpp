@@ -187,7 +187,8 @@ void runSpectralRide(const RideOptions& opt) {
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
-        .field("vehicle", opt.vehicle_file)
+        .field("vehicle", model.vehicle_name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("method", std::string("spectral"));
     json.key("road")

@@ -406,7 +406,8 @@ void run(const SimulateOptions& opt) {
   if (opt.json) {
     io::JsonWriter json(std::cout);
     json.beginObject()
-        .field("vehicle", opt.vehicle_file)
+        .field("vehicle", description.name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("track", track.name());
     if (profile) {

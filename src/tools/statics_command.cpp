@@ -94,6 +94,7 @@ void run(const StaticsOptions& opt) {
     io::JsonWriter json(std::cout);
     json.beginObject()
         .field("vehicle", description.name)
+        .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("contact", opt.contact)
         .field("iterations", contact.iterations)

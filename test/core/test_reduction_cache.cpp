@@ -71,6 +71,22 @@ TEST(ReductionCache, ReductionKeyRoundTrips) {
       EXPECT_FALSE(tvd::reduction::parseReductionKey(key + ";", &parsed_variant, &parsed));
     }
   const std::string good = tvd::reduction::reductionKey(tvd::vehicle::Variant::Tracked, {});
+  // Shortest exact text, and the %.17g text of files written up to 0.3.2 still reads.
+  EXPECT_NE(good.find("; band_hz 30; mac_threshold 0.7; "), std::string::npos) << good;
+  {
+    auto variant = tvd::vehicle::Variant::Untracked;
+    VehicleReductionOptions legacy;
+    ASSERT_TRUE(tvd::reduction::parseReductionKey(
+        "variant tracked; rule mac; global_modes 40; band_hz 30; mac_threshold "
+        "0.69999999999999996; mogesec_masters 9; modes 0",
+        &variant, &legacy));
+    EXPECT_EQ(legacy.mac_threshold, 0.7);
+    // A third spelling of the same double is not a key either program wrote: refused.
+    EXPECT_FALSE(tvd::reduction::parseReductionKey(
+        "variant tracked; rule mac; global_modes 40; band_hz 30.0; mac_threshold 0.7; "
+        "mogesec_masters 9; modes 0",
+        &variant, &legacy));
+  }
   for (const std::string& bad :
        {std::string(), std::string("variant tracked; modes 4"),
         std::string("variant flying") + good.substr(15),
@@ -105,12 +121,11 @@ TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
   const auto cached = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
   EXPECT_FALSE(first.from_cache);
   EXPECT_FALSE(second.from_cache) << second.cache_note;
-  EXPECT_NE(
-      second.cache_note.find("is stale: " + second.cache_file +
-                             ": reduced as 'variant untracked; rule mac; "
-                             "global_modes 40; band_hz 30; mac_threshold 0.69999999999999996; "
-                             "mogesec_masters 9; modes 0', expected"),
-      std::string::npos)
+  EXPECT_NE(second.cache_note.find("is stale: " + second.cache_file +
+                                   ": reduced as 'variant untracked; rule mac; "
+                                   "global_modes 40; band_hz 30; mac_threshold 0.7; "
+                                   "mogesec_masters 9; modes 0', expected"),
+            std::string::npos)
       << second.cache_note;
   EXPECT_TRUE(third.from_cache) << third.cache_note;
   EXPECT_NE(first.cache_file, second.cache_file);

@@ -87,6 +87,36 @@ class TempDir {
 // ---------------------------------------------------------------------------------------------
 // Terrain grid
 
+// Written values read back bit for bit, in their shortest text: a user opening the file sees
+// 0.05 and 0, not 0.050000000000000003 and -0.
+TEST(TerrainFiles, WrittenNumbersAreShortAndExact) {
+  TempDir dir;
+  Vector x(4);
+  x << 0.0, 0.05, 0.1, 0.1 + 0.05;  // the last is 0.15000000000000002
+  Vector y(2);
+  y << -0.5, 0.5;
+  Matrix h(2, 4);
+  h << -0.0, 0.05, 1e-3, 0.1 + 0.2, 0.0, -0.25, 2.0 / 3.0, 7.0;
+  const Terrain t(x, y, h, "numbers");
+  for (const std::string name : {"t.csv", "t.yaml"}) {
+    const std::string path = dir.file(name);
+    if (name == "t.csv")
+      saveTerrainCsv(t, path);
+    else
+      saveTerrainYaml(t, path);
+    std::ifstream in(path);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(text.find("-0,"), std::string::npos) << text;
+    EXPECT_EQ(text.find("0.050000000000000003"), std::string::npos) << text;
+    EXPECT_NE(text.find("0.05"), std::string::npos) << text;
+    EXPECT_NE(text.find("0.15000000000000002"), std::string::npos) << text;
+    const Terrain back = loadTerrain(path);
+    EXPECT_EQ(back.stations(), t.stations()) << name;
+    EXPECT_EQ(back.lateral(), t.lateral()) << name;
+    EXPECT_EQ(back.heights(), t.heights()) << name;
+  }
+}
+
 TEST(Terrain, BilinearIsExactForBilinearSurfaces) {
   // h = a + b x + c y + d x y is reproduced exactly by bilinear interpolation.
   const auto surface = [](double x, double y) { return 0.1 + 0.2 * x - 0.3 * y + 0.05 * x * y; };

@@ -89,6 +89,7 @@ class TvdCliTest(unittest.TestCase):
     def setUpClass(cls):
         cls.work = tempfile.mkdtemp(prefix="tvd_cli_")
         cls.cache = os.path.join(cls.work, "cache")
+        cls.vehicle_name = "paper_vehicle"  # the bundled description's `name`
 
     @classmethod
     def tearDownClass(cls):
@@ -122,6 +123,7 @@ class TvdCliTest(unittest.TestCase):
         count = 12
         d = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "untracked",
                           "--count", str(count), "--out", self.path("modes"))
+        self.assertEqual((d["vehicle"], d["vehicle_file"]), (self.vehicle_name, VEHICLE))
         for key in ("frequencies_hz", "mode_types", "active_dofs", "mass_kg", "solve_seconds",
                     "static"):
             self.assertIn(key, d)
@@ -499,6 +501,8 @@ class TvdCliTest(unittest.TestCase):
                     "peak_roll_deg", "peak_wheel_displacement_m", "comfort", "simulated_seconds",
                     "wall_seconds"):
             self.assertIn(key, d)
+        # As every command: the description's name and the file given.
+        self.assertEqual((d["vehicle"], d["vehicle_file"]), (self.vehicle_name, VEHICLE))
         header, rows = read_csv(out)
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
