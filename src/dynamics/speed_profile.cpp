@@ -70,5 +70,19 @@ double SpeedProfile::acceleration(double t) const {
 
 double SpeedProfile::maxSpeed() const { return *std::max_element(speed_.begin(), speed_.end()); }
 
+double SpeedProfile::maxAbsAcceleration(double* at) const {
+  double largest = 0.0, when = 0.0;
+  for (std::size_t k = 0; k + 1 < time_.size(); ++k) {
+    const double a = std::abs(speed_[k + 1] - speed_[k]) / (time_[k + 1] - time_[k]);
+    if (a > largest) {
+      largest = a;
+      when = time_[k];
+    }
+  }
+  if (at)
+    *at = when;
+  return largest;
+}
+
 }  // namespace dynamics
 }  // namespace tracked_vehicle_dynamics

@@ -29,7 +29,6 @@
 #include "simulation_layout.h"
 #include "speed_sweep.h"
 #include "terrain_coverage.h"
-#include "vehicle_analysis.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/shock_meter.h"
@@ -38,6 +37,8 @@
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
+#include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -83,6 +84,10 @@ void run(const RideOptions& opt) {
     throw InputError(m.str());
   }
   std::vector<std::string> warnings;
+  if (const std::optional<std::string> w = terrain::slopeWarning(opt.track, track)) {
+    warnings.push_back(*w);
+    std::cerr << "tvd: warning: " << *w << "\n";
+  }
   const RideModel model = loadRideModel(opt, &track, &warnings);
   const std::vector<std::string>& points = model.points;
   const ReducedModelSource& reduced = model.reduced;

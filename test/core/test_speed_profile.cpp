@@ -88,6 +88,17 @@ TEST(SpeedProfile, AccelerationIsTheExactDerivativeOfTheSpeed) {
   }
 }
 
+TEST(SpeedProfile, LargestAccelerationAndWhere) {
+  double at = -1.0;
+  EXPECT_EQ(cruiseAndBrake().maxAbsAcceleration(&at), 2.0);  // the -2 m/s^2 braking from 2 s
+  EXPECT_EQ(at, 2.0);
+  EXPECT_EQ(SpeedProfile({0.0, 5.0}, {3.0, 3.0}).maxAbsAcceleration(), 0.0);
+  // 30 km/h within a millisecond: 8333 m/s^2, a profile in ms read as s.
+  EXPECT_NEAR(SpeedProfile({0.0, 1.0, 1.001}, {0.0, 0.0, 30.0 / 3.6}).maxAbsAcceleration(&at),
+              30.0 / 3.6 / 0.001, 1e-6);
+  EXPECT_EQ(at, 1.0);
+}
+
 TEST(SpeedProfile, RejectsBadSamplesByIndex) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(messageOf([] { SpeedProfile({0.0, 1.0}, {1.0}, "p"); }).find("2 times but 1 speeds"),

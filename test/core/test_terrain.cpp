@@ -25,6 +25,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 
 #ifndef TVD_SOURCE_DIR
@@ -115,6 +116,31 @@ TEST(TerrainFiles, WrittenNumbersAreShortAndExact) {
     EXPECT_EQ(back.lateral(), t.lateral()) << name;
     EXPECT_EQ(back.heights(), t.heights()) << name;
   }
+}
+
+// The paper's tracks are ground; a 10 m bump over 5 m, or heights in mm, are not.
+TEST(TerrainPlausibility, PaperTracksPassAndAScaleMistakeIsNamed) {
+  for (const std::string track : {"long_hill", "separated_waves", "oop_waves"}) {
+    const Terrain t = loadTrack(track);
+    EXPECT_LT(steepestSlope(t).slope, kSteepestPlausibleSlope) << track;
+    EXPECT_FALSE(slopeWarning(track, t).has_value()) << track;
+  }
+  // oop_waves: 2 pi A / lambda = pi 0.6 / 1.2, less the 0.2 m average's sinc (0.955): 1.5.
+  EXPECT_NEAR(steepestSlope(loadTrack("oop_waves")).slope, 1.5, 0.05);
+  Vector x = Vector::LinSpaced(101, 0.0, 10.0);
+  Vector y(2);
+  y << -2.0, 2.0;
+  Matrix h = Matrix::Zero(2, 101);
+  for (int i = 0; i < 101; ++i)
+    h(1, i) = 10.0 * std::sin(M_PI * std::clamp(x(i) - 2.5, 0.0, 5.0) / 5.0);  // 10 m over 5 m
+  const Terrain bump(x, y, h, "bump");
+  const SteepestSlope s = steepestSlope(bump);
+  EXPECT_NEAR(s.slope, 10.0 * M_PI / 5.0, 0.05);  // peak dh/dx at the flanks
+  EXPECT_EQ(s.lateral, 2.0);
+  const std::optional<std::string> w = slopeWarning("bump.csv", bump);
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(w->rfind("bump.csv: slopes up to 6.2", 0), 0u) << *w;
+  EXPECT_NE(w->find("heights in mm read as m?"), std::string::npos) << *w;
 }
 
 TEST(Terrain, BilinearIsExactForBilinearSurfaces) {

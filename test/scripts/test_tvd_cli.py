@@ -848,6 +848,30 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("stalled.csv: the profile lasts 1e+300 s", r.stderr)
         self.assertIn("does not reach the track's end", r.stderr)
         self.assertIn("at most 1e+07", r.stderr)
+        # Plausible inputs warn of nothing (the braking above is 0.56 g) ...
+        d = self.tvd_json(*common, "--speed-profile", braking)
+        self.assertFalse([w for w in d["warnings"] if "m/s^2" in w or "slopes" in w], d["warnings"])
+        # ... a profile in ms read as s (30 km/h within 1 ms), and a 10 m bump over 5 m (metres
+        # where millimetres were meant), run but are said, on stderr and in the JSON.
+        jolt = self.path("jolt.csv")
+        with open(jolt, "w") as f:
+            f.write("time_s,speed_kmh\n0,0\n0.001,30\n20,30\n")
+        bump = self.path("tall_bump.csv")
+        x = np.arange(0.0, 30.0001, 0.05)
+        h = 10.0 * np.sin(np.pi * np.clip(x - 10.0, 0.0, 5.0) / 5.0)
+        with open(bump, "w") as f:
+            f.write("x,-3,3\n")
+            for xi, hi in zip(x, h):
+                f.write(f"{xi:.2f},{hi:.6f},{hi:.6f}\n")
+        r = self.tvd("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", bump,
+                     "--speed-profile", jolt, "--cache-dir", self.cache, "--json")
+        d = json.loads(r.stdout)
+        jolts = [w for w in d["warnings"] if w.startswith(jolt + ": the speed changes at up to 8333")]
+        slopes = [w for w in d["warnings"] if w.startswith(bump + ": slopes up to 6.2")]
+        self.assertEqual((len(jolts), len(slopes)), (1, 1), d["warnings"])
+        self.assertIn("times in ms read as s?", jolts[0])
+        self.assertIn("heights in mm read as m?", slopes[0])
+        self.assertIn("tvd: warning: " + slopes[0], r.stderr)
 
     def test_terrain_iso8608_road_and_ride_on_it(self):
         """tvd terrain --iso8608: the road's r.m.s. height is the PSD's over the generated band

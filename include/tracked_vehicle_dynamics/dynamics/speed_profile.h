@@ -31,6 +31,9 @@ class SpeedProfile {
   double endTime() const { return time_.back(); }
   /// Largest sampled speed [m/s].
   double maxSpeed() const;
+  /// Largest |a| over the segments [m/s^2], and (when `at` is given) the start t_k [s] of the
+  /// first segment that reaches it. 0 for a constant speed.
+  double maxAbsAcceleration(double* at = nullptr) const;
 
   const std::vector<double>& times() const { return time_; }
   const std::vector<double>& speeds() const { return speed_; }
