@@ -329,6 +329,12 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.odom_frame = in.frame("odom_frame", p.odom_frame, false);
   p.base_frame = in.frame("base_frame", p.base_frame, false);
   p.frame_prefix = in.frame("frame_prefix", p.frame_prefix, true);
+  // tf2 ids join with '/': "veh1" gives "veh1odom", which nothing else in a tree will match.
+  if (!p.frame_prefix.empty() && p.frame_prefix.back() != '/')
+    p.warnings.push_back(in.name("frame_prefix") + ": '" + p.frame_prefix +
+                         "' has no trailing '/': the frames read '" + p.frame_prefix + "odom', '" +
+                         p.frame_prefix + "base_link' (give '" + p.frame_prefix + "/' for '" +
+                         p.frame_prefix + "/odom')");
   if (p.odom_frame == p.base_frame)
     throw in.error("base_frame", "must differ from ~odom_frame");
   // The prefix names one vehicle's whole tree (REP-105 per robot: veh1/odom -> veh1/base_link

@@ -21,6 +21,9 @@ using Clock = std::chrono::steady_clock;
 
 // Throttle period of repeated warnings [s].
 constexpr double kWarnPeriod = 5.0;
+// Terrain messages queued: a source sending a whole track at start-up (hundreds of patches) must
+// not lose the oldest (roscpp drops them from a full queue without a count).
+constexpr std::uint32_t kTerrainQueue = 10000;
 
 // Wall time [s] for which inputs are kept in case simulated time jumps back to them. rosbag
 // play -l publishes a loop's first messages and its first /clock within milliseconds, on
@@ -91,8 +94,11 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
 
   // Subscribed last: nothing arrives before the vehicle exists. The no-delay hint keeps the
   // message -> step latency low.
-  terrain_sub_ = loop_nh_.subscribe("terrain_profile", 100, &VehicleDynamicsNode::onTerrain, this,
-                                    ros::TransportHints().tcpNoDelay());
+  // A terrain source may send a whole track at once: roscpp drops the oldest messages of a full
+  // queue without a count, so it holds a burst of kTerrainQueue patches (ros_node.md).
+  terrain_sub_ =
+      loop_nh_.subscribe("terrain_profile", kTerrainQueue, &VehicleDynamicsNode::onTerrain, this,
+                         ros::TransportHints().tcpNoDelay());
   speed_sub_ = loop_nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
                                   ros::TransportHints().tcpNoDelay());
   if (use_sim_time_) {
@@ -116,6 +122,8 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
            vehicle_->geometry().vehicle_name.c_str(), vehicle::variantName(params_.variant), rate,
            published_rate, methodName(params_.vehicle_options.method),
            holdName(params_.vehicle_options.hold));
+  for (const std::string& warning : params_.warnings)
+    ROS_WARN("%s: %s", nodeName(), warning.c_str());
   for (const std::string& unknown : params_.unknown_parameters)
     ROS_WARN("%s: parameter %s is set but not a parameter of this node: ignored", nodeName(),
              unknown.c_str());
@@ -171,6 +179,10 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
            << " .. " << patch.lateral(patch.lateral.size() - 1) << " m, the contacts "
            << y.minCoeff() + offset << " .. " << y.maxCoeff() + offset << " m";
       last_narrow_patch_ = text.str();
+      ROS_WARN_THROTTLE(kWarnPeriod,
+                        "%s: terrain %s: narrower than the contacts, the outer ones read the "
+                        "patch's edge lines",
+                        nodeName(), last_narrow_patch_.c_str());
     }
     if (use_sim_time_) {
       const ros::WallTime arrival = ros::WallTime::now();
@@ -308,10 +320,9 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
 
 void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   ++events_.time_jumps_back;
-  ROS_WARN_THROTTLE(kWarnPeriod,
-                    "%s: ROS time jumped back by %.3f s: resetting the vehicle "
-                    "to equilibrium at station 0",
-                    nodeName(), (sample_time_ - now).toSec());
+  // Every reset is said (not throttled): each one loses the vehicle's state and speed.
+  ROS_WARN("%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0",
+           nodeName(), (sample_time_ - now).toSec());
   restart();
   sample_time_ = now;
   reapplyRecentInputs(now);
@@ -487,20 +498,24 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const bool waiting = vehicle_->terrain().empty() && vehicle_->speed() == 0.0;
     if (result.uncovered > 0 && !waiting) {
       ++events_.uncovered_steps;
-      if (vehicle_->terrain().empty())
+      if (vehicle_->terrain().empty()) {
+        const std::string behind =
+            events_.patches_behind == 0
+                ? std::string()
+                : " (" + std::to_string(events_.patches_behind) +
+                      " patches arrived wholly behind the vehicle and were dropped)";
         ROS_WARN_THROTTLE(kWarnPeriod,
-                          "%s: no terrain stored (%llu patches received behind "
-                          "the vehicle and dropped), moving at %.3f m/s at station %.2f m: the "
+                          "%s: no terrain stored%s, moving at %.3f m/s at station %.2f m: the "
                           "contacts hold their last height",
-                          nodeName(), static_cast<unsigned long long>(events_.patches_behind),
-                          vehicle_->speed(), vehicle_->station());
-      else
+                          nodeName(), behind.c_str(), vehicle_->speed(), vehicle_->station());
+      } else {
         ROS_WARN_THROTTLE(kWarnPeriod,
                           "%s: no terrain under %d of %d contacts at station "
                           "%.2f m (terrain covers %.2f .. %.2f m): holding their last height",
                           nodeName(), result.uncovered, vehicle_->sampler().size(),
                           vehicle_->station(), vehicle_->terrain().coveredFrom(),
                           vehicle_->terrain().coveredUntil());
+      }
     }
     if (result.diverged) {
       ++events_.diverged;

@@ -66,7 +66,11 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t behind = terrain_behind_.delta(events_.patches_behind);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
-  if (buffer.empty() && behind > 0) {
+  if (buffer.empty() && rejected > 0) {
+    // A source wrong from its first message must not look like one that has not started.
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "no terrain: the patches received were rejected");
+  } else if (buffer.empty() && behind > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no terrain: the patches received lay wholly behind the vehicle (dropped)");
   } else if (buffer.empty() && flat_since_restart_ && vehicle_->speed() == 0.0) {
@@ -116,8 +120,11 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
   const std::uint64_t rejected = speed_rejected_.delta(events_.speeds_rejected);
   const std::uint64_t timeouts = speed_timed_out_.delta(events_.speed_timeouts);
   if (timeouts > 0 || stopped_by_timeout_) {  // until the next speed message moves it again
+    // With a speed slew the vehicle brakes at ~max_deceleration: "stopping" until it stands.
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "no speed message within ~speed_timeout: vehicle stopped");
+                   vehicle_->speed() > 0.0
+                       ? "no speed message within ~speed_timeout: vehicle stopping"
+                       : "no speed message within ~speed_timeout: vehicle stopped");
   } else if (rejected > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "speed messages rejected");
   } else {

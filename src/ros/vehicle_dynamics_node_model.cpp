@@ -110,6 +110,9 @@ void VehicleDynamicsNode::loadVehicle() {
   cached_ = report_.from_cache || report_.cache_error.empty();
   not_cached_reason_ = report_.cache_error;
   const char* what = report_.from_cache ? "loaded" : cached_ ? "built and cached" : "built";
+  // Why it was built (a stale or corrupt cache file) before what was built.
+  if (!report_.cache_note.empty())
+    ROS_INFO("%s: cache: %s", nodeName(), report_.cache_note.c_str());
   if (cached_) {
     ROS_INFO(
         "%s: %s the reduced %s model of '%s' in %.2f s: %ld DOFs, %ld road "
@@ -125,8 +128,6 @@ void VehicleDynamicsNode::loadVehicle() {
         load_seconds_, static_cast<long>(model_dofs_), static_cast<long>(model_inputs_),
         static_cast<long>(model_outputs_), not_cached_reason_.c_str(), report_.cache_file.c_str());
   }
-  if (!report_.cache_note.empty())
-    ROS_INFO("%s: cache: %s", nodeName(), report_.cache_note.c_str());
 }
 
 // ~reduced_model: a file of `tvd reduce --out`, checked as the cache is (complete MAT file,

@@ -71,7 +71,10 @@ void TerrainBuffer::addPatch(double start_station, double spacing, const Vector&
   for (Eigen::Index k = 0; k < stations.size(); ++k) {
     stations(k) = start_station + static_cast<double>(k) * spacing;
   }
-  Patch patch{Terrain(stations, lateral, heights, "terrain_patch"), spacing, next_sequence_++};
+  // Named by its place: the grid's own checks (heights within +-10 km) then read "terrain
+  // 'patch at x = 12 m': ...".
+  Patch patch{Terrain(stations, lateral, heights, "patch at x = " + format(start_station) + " m"),
+              spacing, next_sequence_++};
   const double end = patch.end();
   // Older patches lying entirely under the new one can never win a query again.
   for (auto it = patches_.lower_bound(start_station); it != patches_.end() && it->first <= end;) {

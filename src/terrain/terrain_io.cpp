@@ -76,7 +76,14 @@ Terrain loadTerrainCsv(const std::string& path) {
   Vector lateral = Vector::Zero(1);
   if (has_header) {
     if (columns < 2) {
-      reader.fail(first, "the header needs a station label and at least one height column");
+      // A whole line in one cell: most often another separator (a locale's ';' or a tab).
+      const std::string& cell = first.cells.front();
+      const bool other_separator = cell.find_first_of(";\t") != std::string::npos;
+      reader.fail(first, std::string("the header needs a station label and at least one height "
+                                     "column") +
+                             (other_separator ? " (columns are separated by commas; this line "
+                                                "has ';' or tabs)"
+                                              : ""));
     }
     const bool labelled_single_line = columns == 2 && !parseNumber(first.cells[1]).has_value();
     if (!labelled_single_line) {

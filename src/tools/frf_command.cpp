@@ -82,6 +82,12 @@ void checkPoints(const std::vector<std::string>& points,
   for (auto it = points.begin(); it != points.end(); ++it) {
     const bool named = std::any_of(description.named_points.begin(), description.named_points.end(),
                                    [&](const vehicle::NamedPoint& p) { return p.name == *it; });
+    if (*it == "hull")  // ride's --points takes it; here its column is always there
+      throw InputError(
+          "frf: --points: the hull (its CoG) is always in the table, as "
+          "hull_vertical_acc; --points adds the description's "
+          "named points: " +
+          (known.empty() ? std::string("it has none") : known));
     if (!named)
       throw InputError("frf: --points: unknown point '" + *it + "' (the description has: " +
                        (known.empty() ? std::string("no named points") : known) + ")");
@@ -204,7 +210,10 @@ void run(const FrfOptions& opt) {
     Matrix table(hz.size(), static_cast<Eigen::Index>(data.size()));
     for (std::size_t k = 0; k < data.size(); ++k) table.col(static_cast<Eigen::Index>(k)) = data[k];
     writeTable(opt.out_file, headers, table, 10,
-               {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"model", opt.model}});
+               {{"vehicle", description.name},
+                {"vehicle_file", opt.vehicle_file},
+                {"variant", vehicle::variantName(variant)},
+                {"model", opt.model}});
   }
 
   // Per output: the largest peak and every local maximum above 10 % of it (the resonances).

@@ -184,7 +184,10 @@ void run(const RideOptions& opt) {
   }
   if (!opt.out_file.empty())
     writeTable(opt.out_file, headers, table, 9,
-               {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)}, {"track", track.name()}});
+               {{"vehicle", model.vehicle_name},
+                {"vehicle_file", opt.vehicle_file},
+                {"variant", vehicle::variantName(variant)},
+                {"track", track.name()}});
 
   if (opt.json) {
     io::JsonWriter json(std::cout);

@@ -75,8 +75,8 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
 // integrals SpectralRide::evaluate takes on the same grid).
 void writePsdTable(const std::string& path, const RideOptions& opt,
                    const dynamics::SpectralRide& ride, const std::vector<double>& speeds,
-                   const std::vector<std::string>& points, const std::string& variant,
-                   const std::string& road_name) {
+                   const std::vector<std::string>& points, const std::string& vehicle_name,
+                   const std::string& variant, const std::string& road_name) {
   std::vector<std::string> headers = {"speed_kmh", "frequency_hz", "road_psd_m2_hz"};
   for (const std::string& p : points)
     for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz"})
@@ -105,7 +105,10 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
     }
   }
   writeTable(path, headers, table, 12,
-             {{"vehicle", opt.vehicle_file}, {"variant", variant}, {"road", road_name}});
+             {{"vehicle", vehicle_name},
+              {"vehicle_file", opt.vehicle_file},
+              {"variant", variant},
+              {"road", road_name}});
 }
 
 }  // namespace
@@ -174,13 +177,15 @@ void runSpectralRide(const RideOptions& opt) {
   if (!opt.out_file.empty())
     written.write(opt.out_file, [&](const std::string& path) {
       writeTable(path, headers, table, 9,
-                 {{"vehicle", opt.vehicle_file},
+                 {{"vehicle", model.vehicle_name},
+                  {"vehicle_file", opt.vehicle_file},
                   {"variant", vehicle::variantName(variant)},
                   {"road", road_name}});
     });
   if (!opt.psd_out.empty())
     written.write(opt.psd_out, [&](const std::string& path) {
-      writePsdTable(path, opt, ride, sweep, points, vehicle::variantName(variant), road_name);
+      writePsdTable(path, opt, ride, sweep, points, model.vehicle_name,
+                    vehicle::variantName(variant), road_name);
     });
   written.commit();
 

@@ -418,7 +418,8 @@ void run(const SimulateOptions& opt) {
       for (const char* h : {"ground_force_left_n", "ground_force_right_n", "contacts_in_tension"})
         headers.push_back(h);
     writeTable(opt.out_file, headers, series, 9,
-               {{"vehicle", opt.vehicle_file},
+               {{"vehicle", description.name},
+                {"vehicle_file", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
                 {"track", track.name()},
                 {"model", full ? "full" : "reduced"}});

@@ -83,9 +83,13 @@ void run(const StaticsOptions& opt) {
       table.row(static_cast<Eigen::Index>(k)) << a.side, a.assembly, a.x, a.load, a.inner, a.outer,
           a.pressure;
     }
-    writeTable(opt.out_file, {"side", "assembly", "x_m", "load_n", "inner_pad_n", "outer_pad_n", "pressure_pa"},
-               table, 10, {{"vehicle", opt.vehicle_file}, {"variant", vehicle::variantName(variant)},
-                           {"contact", opt.contact}});
+    writeTable(opt.out_file,
+               {"side", "assembly", "x_m", "load_n", "inner_pad_n", "outer_pad_n", "pressure_pa"},
+               table, 10,
+               {{"vehicle", description.name},
+                {"vehicle_file", opt.vehicle_file},
+                {"variant", vehicle::variantName(variant)},
+                {"contact", opt.contact}});
   }
   const vehicle::AssemblyGroundLoad* peak =
       g.peak >= 0 ? &g.assemblies[static_cast<std::size_t>(g.peak)] : nullptr;

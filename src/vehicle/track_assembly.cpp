@@ -57,9 +57,11 @@ void addTrackAssemblyProperties(fem::Model& model, const TrackAssemblyDescriptio
   if (model.findMaterial(kSteel))
     return;
   if (!(linkMass(t) > 0.0))
-    throw InputError("track_assembly.mass: " + std::to_string(t.mass) +
-                     " kg does not cover the pads and pins (" +
-                     std::to_string(2.0 * t.pad_mass + pinMass(t)) + " kg)");
+    throw InputError("track_assembly.mass: " + brief(t.mass) +
+                     " kg does not cover the two pads (2 x track_assembly.pad_mass " +
+                     brief(t.pad_mass) + " kg) and the pins (" + brief(pinMass(t)) +
+                     " kg, from track_assembly.pin_diameter and steel_density): " +
+                     brief(2.0 * t.pad_mass + pinMass(t)) + " kg");
   const double g = t.steel_young_modulus / (2.0 * (1.0 + t.steel_poisson_ratio));
   model.materials.push_back({kSteel, t.steel_young_modulus, g, t.steel_density});
   // The link's beams carry the link's mass (cast body, guide horn, bushings): an equivalent

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
@@ -378,9 +379,14 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     c.require(2.0 * i <= inertia_sum, key,
               brief(i) + " kg*m^2 exceeds the sum of the other two principal inertias (" +
                   brief(inertia_sum - i) + "), which no rigid body has");
-  for (int s : d.damping.damped_stations)
+  std::set<int> damped;
+  for (int s : d.damping.damped_stations) {
     c.require(s >= 1 && s <= g.axle_count, "damping.damped_stations",
               "station " + std::to_string(s) + " is not in 1.." + std::to_string(g.axle_count));
+    // Listed twice is one damper (a set), so most likely a typo for another station.
+    c.require(damped.insert(s).second, "damping.damped_stations",
+              "station " + std::to_string(s) + " is listed twice");
+  }
   // Geometry a builder would accept but no vehicle has: each of these once gave a model.
   c.require(2.0 * d.road_wheel.radius < g.axle_spacing, "road_wheel.radius",
             "wheels of radius " + brief(d.road_wheel.radius) + " m overlap at the axle spacing " +
@@ -407,6 +413,16 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
                 (front_drive ? "front end (x = " + brief(0.5 * d.hull.length)
                              : "rear end (x = " + brief(-0.5 * d.hull.length)) +
                 " m)");
+  // Sprocket and idler within the vehicle's height (else the chain cannot wrap them, and the
+  // builder would blame the chain's length).
+  for (const auto& [centre_z, radius, key] :
+       {std::tuple<double, double, const char*>{d.sprocket.centre_z, d.sprocket.radius,
+                                                "sprocket.centre_z"},
+        std::tuple<double, double, const char*>{d.idler.centre_z, d.idler.radius,
+                                                "idler.centre_z"}})
+    c.require(centre_z + radius <= d.hull.height, key,
+              brief(centre_z) + " m puts the wheel's top at " + brief(centre_z + radius) +
+                  " m, above the hull's height " + brief(d.hull.height) + " m");
   for (double x : d.return_rollers.x)
     c.require(front_drive ? x < d.sprocket.centre_x : x > d.sprocket.centre_x, "return_rollers.x",
               "roller at x = " + brief(x) + " m lies " + (front_drive ? "ahead of" : "behind") +
@@ -655,6 +671,31 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
                        " m): the suspensions at the other end then carry negative static loads, and the "
                        "linear model's ground holds those wheels down where a real vehicle would "
                        "tip");
+  // A mass or inertia in the wrong unit (tonnes for kg, t*m^2 for kg*m^2) still builds a model:
+  // said by what no hull has. No point of a body lies farther from its CoG than the hull box's
+  // diagonal, so neither can a radius of gyration; one below 5 % of the smallest hull dimension
+  // is a thin plate, not a hull.
+  const auto& h = d.hull;
+  const double unsprung = 2.0 * d.running_gear.axle_count * d.road_wheel.mass;
+  if (h.mass < unsprung)
+    warnings.push_back("hull.mass: " + brief(h.mass) + " kg is less than the road wheels' " +
+                       brief(unsprung) + " kg (" + std::to_string(2 * d.running_gear.axle_count) +
+                       " x road_wheel.mass): a mass in tonnes?");
+  const double diagonal = std::sqrt(h.length * h.length + h.width * h.width + h.height * h.height);
+  const double smallest = std::min({h.length, h.width, h.height});
+  const std::pair<double, const char*> inertias[] = {{h.roll_inertia, "hull.roll_inertia"},
+                                                     {h.pitch_inertia, "hull.pitch_inertia"},
+                                                     {h.yaw_inertia, "hull.yaw_inertia"}};
+  for (const auto& [inertia, key] : inertias) {
+    const double k = std::sqrt(inertia / h.mass);
+    if (k > diagonal || k < 0.05 * smallest)
+      warnings.push_back(std::string(key) + ": " + brief(inertia) + " kg*m^2 on the hull's " +
+                         brief(h.mass) + " kg is a radius of gyration of " + brief(k) + " m, " +
+                         (k > diagonal
+                              ? "more than the hull's diagonal " + brief(diagonal)
+                              : "less than 5 % of its smallest dimension " + brief(smallest)) +
+                         " m: the mass or the inertia in another unit (t, t*m^2)?");
+  }
   return warnings;
 }
 

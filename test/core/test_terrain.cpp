@@ -118,6 +118,13 @@ TEST(TerrainFiles, WrittenNumbersAreShortAndExact) {
   }
 }
 
+TEST(TerrainFiles, ASemicolonSeparatedFileIsToldSo) {
+  TempDir dir;
+  const std::string path = dir.file("semi.csv", "x;-1;1\n0;0;0\n1;0.1;0.1\n");
+  expectInputError([&] { loadTerrain(path); },
+                   {"semi.csv", "row 1", "separated by commas; this line has ';' or tabs"});
+}
+
 // The paper's tracks are ground; a 10 m bump over 5 m, or heights in mm, are not.
 TEST(TerrainPlausibility, PaperTracksPassAndAScaleMistakeIsNamed) {
   for (const std::string track : {"long_hill", "separated_waves", "oop_waves"}) {

@@ -238,6 +238,39 @@ TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
   }
   d.suspension.guide_contact_height = 0.33;  // just below the hub: a model
   EXPECT_NO_THROW(veh::validateDescription(d));
+  d = veh::VehicleDescription{};
+  d.damping.damped_stations = {1, 1};  // a typo for {1, 2}: refused, not merged
+  try {
+    veh::validateDescription(d);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("damping.damped_stations: station 1 is listed twice"),
+              std::string::npos)
+        << e.what();
+  }
+  d = veh::VehicleDescription{};
+  d.track_assembly.pad_mass = 50.0;  // the pads alone outweigh the 27 kg assembly
+  try {
+    veh::buildVehicleModel(d, veh::Variant::Untracked);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("track_assembly.mass: 27 kg does not cover the two pads "
+                                         "(2 x track_assembly.pad_mass 50 kg)"),
+              std::string::npos)
+        << e.what();
+  }
+  // A sprocket above the hull was blamed on track_assembly.count (the chain too short).
+  d = veh::VehicleDescription{};
+  d.sprocket.centre_z = 3.0;
+  try {
+    veh::validateDescription(d);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sprocket.centre_z: 3 m puts the wheel's top at 3.334 m, "
+                                         "above the hull's height 2.2 m"),
+              std::string::npos)
+        << e.what();
+  }
   EXPECT_EQ(veh::parseVariant("tracked"), veh::Variant::Tracked);
   EXPECT_THROW(veh::parseVariant("wheeled"), tvd::InputError);
 }
@@ -359,6 +392,29 @@ TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("hull.cog_x: the centre of gravity (x = -2.5 m) lies behind the rear axle "
                       "(x = -2.34 m)"), std::string::npos) << w[0];
+  // Mass in tonnes: below the 14 road wheels' 16,800 kg, and radii of gyration of tens of metres.
+  d = veh::VehicleDescription{};
+  d.hull.mass = 30.3;
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 4u);
+  EXPECT_EQ(w[0],
+            "hull.mass: 30.3 kg is less than the road wheels' 16800 kg (14 x "
+            "road_wheel.mass): a mass in tonnes?");
+  EXPECT_EQ(w[1].rfind("hull.roll_inertia: 39000 kg*m^2 on the hull's 30.3 kg is a radius of "
+                       "gyration of 35.8",
+                       0),
+            0u)
+      << w[1];
+  EXPECT_NE(w[1].find("more than the hull's diagonal 8.61954 m"), std::string::npos) << w[1];
+  // Inertias in t*m^2: radii of gyration of 3 to 7 cm on a 2.2 m high hull.
+  d = veh::VehicleDescription{};
+  d.hull.roll_inertia /= 1000.0;
+  d.hull.pitch_inertia /= 1000.0;
+  d.hull.yaw_inertia /= 1000.0;
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_NE(w[0].find("less than 5 % of its smallest dimension 2.2 m"), std::string::npos) << w[0];
+  d = veh::VehicleDescription{};
   d.hull.cog_x = 2.34;  // on the front axle: still inside
   EXPECT_TRUE(veh::descriptionWarnings(d).empty());
 }

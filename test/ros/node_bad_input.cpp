@@ -107,6 +107,18 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   EXPECT_EQ(diagnostics_.level(": terrain"),
             static_cast<int>(diagnostic_msgs::DiagnosticStatus::OK))
       << diagnostics_.describe();
+  // ... but a source wrong from its first patch is a warning, not "waiting for terrain".
+  TerrainProfile first = test::flatProfile(-10.0, terrain_end);
+  first.heights[3] = std::numeric_limits<double>::quiet_NaN();
+  terrain_pub_.publish(first);
+  EXPECT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.value(": terrain", "patches rejected (total)") == 1.0 &&
+               diagnostics_.level(": terrain") ==
+                   static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN);
+      },
+      10.0))
+      << diagnostics_.describe();
 
   // Good terrain up to terrain_end, then bad patches of every kind.
   terrain_pub_.publish(test::flatProfile(-10.0, terrain_end));
@@ -124,7 +136,7 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   bad = test::flatProfile(terrain_end, terrain_end + 20.0);
   bad.spacing = 0.0;
   terrain_pub_.publish(bad);
-  const int bad_patches = 5;
+  const int bad_patches = 6;  // with the first one
   // Valid, but 1 m wide: the road wheels at +-1.4 m would read its edge lines (a unit mistake).
   TerrainProfile narrow = test::flatProfile(terrain_end + 40.0, terrain_end + 50.0);
   narrow.lateral = {-0.5, 0.5};
@@ -401,7 +413,7 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
   const NodeRun run =
       runNode("__name:=said _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
                   " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
-                  " _rate:=40 _publish_rate:=15 _speed_timout:=1",
+                  " _rate:=40 _publish_rate:=15 _speed_timout:=1 _frame_prefix:=veh1",
               test::requiredParam<int>(private_nh, "bad_parameter_timeout"));
   EXPECT_EQ(run.exit_status, 124) << "the node should run until `timeout` stops it:\n"
                                   << run.output;
@@ -413,6 +425,10 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
       << run.output;
   EXPECT_NE(run.output.find("~publish_rate 15 Hz does not divide ~rate 40 Hz: publishing every 3 "
                             "steps, at 13.3333 Hz"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("/said: /said/frame_prefix: 'veh1' has no trailing '/': the frames "
+                            "read 'veh1odom'"),
             std::string::npos)
       << run.output;
 }

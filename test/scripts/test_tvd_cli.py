@@ -1294,7 +1294,8 @@ class TvdCliTest(unittest.TestCase):
             header, rows = read_csv(csv_file)
             m = scipy.io.loadmat(mat_file)
             self.assertEqual(str(m["variant"][0]), "untracked")
-            self.assertEqual(str(m["vehicle"][0]), VEHICLE)
+            self.assertEqual(str(m["vehicle"][0]), self.vehicle_name)  # as the JSON's
+            self.assertEqual(str(m["vehicle_file"][0]), VEHICLE)
             for i, name in enumerate(header):
                 self.assertEqual(m[name].shape, (len(rows), 1), name)
                 np.testing.assert_allclose(m[name][:, 0], rows[:, i], rtol=10.0 ** (1 - digits),

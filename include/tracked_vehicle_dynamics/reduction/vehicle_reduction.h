@@ -109,7 +109,10 @@ struct VehicleReductionReport {
   /// 0.1 Hz), pairing the r-th modes (reduced_frequencies_hz).
   double max_relative_frequency_error = 0.0;
   DofIndex reduced_dofs = 0;
-  std::vector<double> full_frequencies_hz;     ///< full-model modes (band)
+  /// Full-model modes in the band, the reference of the 2 % check: the global modes below the
+  /// band or, when those end below it, the band's modes solved for the check (up to
+  /// kMaxGlobalModes of them).
+  std::vector<double> full_frequencies_hz;
   /// The reduced model's lowest modes, as many as full_frequencies_hz (paired r-th with r-th;
   /// a pair's reduced frequency may lie above the band).
   std::vector<double> reduced_frequencies_hz;

@@ -78,6 +78,9 @@ struct NodeParameters {
   /// Private parameters set but not read by the node (misspelt or unknown), each as "~key"
   /// with the nearest known one when close: the node warns about them at start-up.
   std::vector<std::string> unknown_parameters;
+  /// Values accepted but likely not meant (e.g. a ~frame_prefix without its trailing '/'), each
+  /// naming the parameter: the node warns about them at start-up.
+  std::vector<std::string> warnings;
 };
 
 /// $ROS_HOME/tracked_vehicle_dynamics, or $HOME/.ros/tracked_vehicle_dynamics.
