@@ -171,7 +171,11 @@ void YamlValue::expectMap(std::initializer_list<const char*> allowed) const {
     bool known = false;
     for (const char* name : allowed) known = known || key == name;
     if (!known) {
-      child(it->first, keyPath(key)).fail("unknown key (allowed keys: " + joined(allowed) + ")");
+      // In a flow map {value: 14,000, ...} the comma ends the value: "000" becomes a key.
+      const bool digits = !key.empty() && key.find_first_not_of("0123456789") == std::string::npos;
+      child(it->first, keyPath(key))
+          .fail("unknown key (allowed keys: " + joined(allowed) + ")" +
+                (digits ? "; a number with a thousands separator? Write 14000, not 14,000" : ""));
     }
   }
 }

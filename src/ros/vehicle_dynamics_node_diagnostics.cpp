@@ -108,9 +108,15 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("steps with uncovered contacts (total)", events_.uncovered_steps);
   status.add("steps with uncovered contacts (since last report)", uncovered);
   status.add("patches stored", buffer.patchCount());
-  status.add("covered from [m]", buffer.coveredFrom());
-  status.add("covered until [m]", buffer.coveredUntil());
-  status.add("coverage ahead of the front contact [m]", ahead);
+  if (buffer.empty()) {  // not the buffer's +-inf sentinels
+    status.add("covered from [m]", "none");
+    status.add("covered until [m]", "none");
+    status.add("coverage ahead of the front contact [m]", "none");
+  } else {
+    status.add("covered from [m]", buffer.coveredFrom());
+    status.add("covered until [m]", buffer.coveredUntil());
+    status.add("coverage ahead of the front contact [m]", ahead);
+  }
   // What a terrain source must cover now: from the rearmost contact to the frontmost one.
   status.add("rearmost contact [m]", vehicle_->rearContactStation());
   status.add("frontmost contact [m]", vehicle_->frontContactStation());
