@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
 
 namespace tracked_vehicle_dynamics {
@@ -16,8 +17,15 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   const std::uint64_t jumps = loop_jumps_.delta(events_.time_jumps_back);
   const std::uint64_t diverged = loop_diverged_.delta(events_.diverged);
   const double step_p99 = step_window_.percentile(0.99);
+  // ROS time that stopped moving (a paused or dead simulator, a bag at its end) is said: the
+  // frozen step count alone reads like a healthy loop.
+  const double stalled = (ros::WallTime::now() - last_time_change_).toSec();
   if (!clock_started_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for ROS time (/clock)");
+  } else if (use_sim_time_ && stalled > params_.diagnostic_period) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "/clock has not advanced for " + brief(std::round(stalled * 10.0) / 10.0) +
+                       " s of wall time: the simulation is paused or stopped");
   } else if (diverged > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite outputs: reset");
   } else if (resyncs > 0) {

@@ -227,6 +227,15 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": loop", "time jumps back (total)"), 1.0);
   EXPECT_EQ(diagnostics_.value(": speed", "stops after the speed timeout (total)"), 1.0);
+  // The test publishes no more /clock: a stopped simulator is said on wall time, not left at
+  // "running" with a frozen step count.
+  EXPECT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.describe().find("loop [1] /clock has not advanced for") !=
+               std::string::npos;
+      },
+      10.0))
+      << diagnostics_.describe();
 }
 
 }  // namespace
