@@ -215,12 +215,11 @@ void OnlineVehicle::checkGroundContact() {
 bool OnlineVehicle::addTerrain(const TerrainPatch& patch) {
   const double keep_from = rearContactStation() - options_.terrain_keep_behind;
   terrain_.addPatch(patch.start_station, patch.spacing, patch.lateral, patch.heights);
-  // A patch ending before keep_from less the bridge margin (dropBehind's own rule) is freed by
-  // the call below: the caller hears of it instead of counting it as terrain.
+  // A patch the call below frees at once: the caller hears of it instead of counting it as
+  // terrain.
   const double end =
       patch.start_station + patch.spacing * static_cast<double>(patch.heights.cols() - 1);
-  const bool behind =
-      end < keep_from - terrain::TerrainBuffer::kBridgeFactor * patch.spacing * (1.0 + 1e-9);
+  const bool behind = terrain::TerrainBuffer::dropsPatchEnding(end, patch.spacing, keep_from);
   terrain_.dropBehind(keep_from);
   return !behind;
 }

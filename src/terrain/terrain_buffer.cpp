@@ -167,13 +167,16 @@ double TerrainBuffer::height(double x, double y) const {
                    ")");
 }
 
+bool TerrainBuffer::dropsPatchEnding(double end, double spacing, double station) {
+  return end < station - kBridgeFactor * spacing * (1.0 + kSlack);
+}
+
 void TerrainBuffer::dropBehind(double station) {
   if (std::isnan(station)) return;
   std::vector<Patch> trimmed;
   for (auto it = patches_.begin(); it != patches_.end() && it->first < station;) {
     Patch& patch = it->second;
-    // A patch ending within a bridgeable gap of `station` still anchors the bridge.
-    if (patch.end() < station - kBridgeFactor * patch.spacing * (1.0 + kSlack)) {
+    if (dropsPatchEnding(patch.end(), patch.spacing, station)) {
       it = patches_.erase(it);
       continue;
     }

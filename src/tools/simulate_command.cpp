@@ -48,8 +48,7 @@ namespace tools {
 namespace {
 
 // A travel acceleration beyond 1 g is no tracked vehicle's (brakes give about 0.6-0.8 g).
-constexpr double kStandardGravity = 9.80665;  // [m/s^2]
-constexpr double kPlausibleTravelAcceleration = kStandardGravity;
+constexpr double kPlausibleTravelAcceleration = kStandardGravity;  // types.h
 
 using Clock = std::chrono::steady_clock;
 
@@ -200,20 +199,20 @@ void run(const SimulateOptions& opt) {
                        beyond(profile->maxSpeed() * 3.6, 200.0) + " km/h)");
   }
   // Plausibility (terrain_plausibility.h): said before any work, run all the same.
-  std::vector<std::string> input_warnings;
+  std::vector<std::string> warnings;  // printed on stderr as they arise, and in the JSON
   double jolt_at = 0.0;
-  if (profile && profile->maxAbsAcceleration(&jolt_at) > kPlausibleTravelAcceleration) {
-    const double a = profile->maxAbsAcceleration();
-    input_warnings.push_back(
-        opt.speed_profile + ": the speed changes at up to " + brief(a) + " m/s^2 (" +
-        brief(a / kStandardGravity) + " g) from t = " + brief(jolt_at) +
+  const double jolt = profile ? profile->maxAbsAcceleration(&jolt_at) : 0.0;
+  if (jolt > kPlausibleTravelAcceleration) {
+    warnings.push_back(
+        opt.speed_profile + ": the speed changes at up to " + brief(jolt) + " m/s^2 (" +
+        brief(jolt / kStandardGravity) + " g) from t = " + brief(jolt_at) +
         " s, more than a tracked vehicle's brakes or traction give (under 1 g): times in ms "
         "read as s? The model applies it as a travel acceleration on the hull");
   }
   const terrain::Terrain track = terrain::loadTrack(opt.track);
   if (const std::optional<std::string> w = terrain::slopeWarning(opt.track, track))
-    input_warnings.push_back(*w);
-  for (const std::string& w : input_warnings)
+    warnings.push_back(*w);
+  for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";
   // From the start of the track until the station has covered its length (paper: 30 m), or until
   // the speed profile ends. Checked before the model is obtained, which may take seconds.
@@ -229,7 +228,6 @@ void run(const SimulateOptions& opt) {
   // static residual.
   std::optional<ReducedModelSource> reduced;
   std::unique_ptr<reduction::FullModelReference> full;
-  std::vector<std::string> warnings = input_warnings;  // on stderr as they arise, and in JSON
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
   refuseDrivingBesideTerrain(opt.track, track, description, opt.lateral_offset);
   if (opt.model == "full") {

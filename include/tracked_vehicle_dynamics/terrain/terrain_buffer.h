@@ -50,6 +50,9 @@ class TerrainBuffer {
   /// it is cut to its samples from the last one at or before `station`; queries at stations
   /// >= station keep their values.
   void dropBehind(double station);
+  /// Whether dropBehind(station) frees a patch ending at `end` [m] with `spacing` [m]: it ends
+  /// before `station` by more than a bridgeable gap (a nearer one still anchors the bridge).
+  static bool dropsPatchEnding(double end, double spacing, double station);
   /// End of the contiguous coverage (bridged gaps included) that starts at coveredFrom() [m];
   /// -infinity when empty.
   double coveredUntil() const { return covered_until_; }
