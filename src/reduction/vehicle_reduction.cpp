@@ -109,11 +109,12 @@ void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_m
   text << "global_modes " << global_modes << ": ";
   if (cut->missed > 0)
     // Which group lost the modes is not known without solving more, so no count is promised.
-    text << "the solver returned " << cut->missed << " mode(s) of the " << name << " variant below "
+    text << "the " << name << " variant has " << cut->missed << " more mode(s) below "
          << brief(cut->frequency_hz)
-         << " Hz too few (it skipped part of a repeated eigenvalue), so the MAC against that "
-            "eigenspace, if the selection uses it, depends on round-off; a count that ends below "
-            "the repeated eigenvalue does not depend on it";
+         << " Hz than the solver returned: it returned part of a repeated eigenvalue there, so "
+            "a MAC selection against that eigenspace depends on round-off. A global_modes count "
+            "that ends below "
+         << brief(cut->frequency_hz) << " Hz does not";
   else
     // Counts that end at a gap: below the group, every mode is returned (the Sylvester count
     // says so); above it only if the Lanczos run returns the whole group, which the check of

@@ -11,6 +11,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 namespace tracked_vehicle_dynamics {
@@ -148,6 +149,10 @@ void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queu
 void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     const TerrainPatch patch = fromMsg(*msg);
+    // Judged against the terrain before it is added (the step at its start), said once taken.
+    const std::vector<std::string> doubts = terrain::patchWarnings(
+        patch.start_station, patch.spacing, patch.lateral, patch.heights, vehicle_->terrain(),
+        flat_since_restart_ && vehicle_->terrain().empty());
     if (!vehicle_->addTerrain(patch)) {
       // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station
       // frame mistake. Said once per kWarnPeriod and counted, not taken for terrain.
@@ -183,6 +188,15 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
                         "%s: terrain %s: narrower than the contacts, the outer ones read the "
                         "patch's edge lines",
                         nodeName(), last_narrow_patch_.c_str());
+    }
+    if (!doubts.empty()) {
+      ++events_.patches_implausible;
+      std::ostringstream text;
+      text << "patch at x = " << patch.start_station << " m";
+      for (const std::string& doubt : doubts)
+        text << ": " << doubt;
+      last_implausible_patch_ = text.str();
+      ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain %s", nodeName(), last_implausible_patch_.c_str());
     }
     if (use_sim_time_) {
       const ros::WallTime arrival = ros::WallTime::now();

@@ -72,6 +72,7 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t uncovered = terrain_uncovered_.delta(events_.uncovered_steps);
   const std::uint64_t narrow = terrain_narrow_.delta(events_.patches_narrow);
   const std::uint64_t behind = terrain_behind_.delta(events_.patches_behind);
+  const std::uint64_t implausible = terrain_implausible_.delta(events_.patches_implausible);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
   if (buffer.empty() && rejected > 0) {
@@ -99,6 +100,9 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   } else if (behind > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches wholly behind the vehicle dropped");
+  } else if (implausible > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "patches unlike ground (a step, slope or spacing): units or altitudes?");
   } else if (narrow > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches narrower than the contacts: the outer ones read the edge lines");
@@ -111,6 +115,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("last rejection", last_patch_error_);
   status.add("patches narrower than the contacts (total)", events_.patches_narrow);
   status.add("last narrow patch", last_narrow_patch_);
+  status.add("patches unlike ground (total)", events_.patches_implausible);
+  status.add("last patch unlike ground", last_implausible_patch_);
   status.add("patches behind the vehicle, dropped (total)", events_.patches_behind);
   status.add("last patch behind the vehicle", last_behind_patch_);
   status.add("steps with uncovered contacts (total)", events_.uncovered_steps);

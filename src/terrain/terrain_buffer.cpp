@@ -167,6 +167,22 @@ double TerrainBuffer::height(double x, double y) const {
                    ")");
 }
 
+double TerrainBuffer::heightBefore(double x, double y) const {
+  if (std::isnan(x))
+    return std::numeric_limits<double>::quiet_NaN();
+  if (covers(x))
+    return height(x, y);
+  const Patch* last = nullptr;
+  for (auto it = patches_.begin(); it != patches_.end() && it->first <= x; ++it) {
+    const Patch& patch = it->second;
+    if (last == nullptr || patch.end() > last->end() ||
+        (patch.end() == last->end() && patch.sequence > last->sequence))
+      last = &patch;
+  }
+  return last == nullptr ? std::numeric_limits<double>::quiet_NaN()
+                         : last->grid.height(last->end(), y);
+}
+
 bool TerrainBuffer::dropsPatchEnding(double end, double spacing, double station) {
   return end < station - kBridgeFactor * spacing * (1.0 + kSlack);
 }

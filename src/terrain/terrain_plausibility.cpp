@@ -1,36 +1,107 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
 namespace terrain {
+namespace {
 
-SteepestSlope steepestSlope(const Terrain& terrain) {
+std::string slopeText(const SteepestSlope& s) {
+  const double degrees = std::atan(s.slope) * 180.0 / M_PI;
+  return "slopes up to " + brief(s.slope) + " m/m (" + brief(std::round(degrees * 10) / 10) +
+         " deg) at x = " + brief(s.station) + " m, y = " + brief(s.lateral) +
+         " m, steeper than ground a tracked vehicle drives on (the paper's steepest test track, "
+         "oop_waves, reaches 1.5 m/m): heights in mm read as m? The linear model runs it, but its "
+         "small-angle kinematics and bonded ground do not hold there";
+}
+
+std::string spacingText(double spacing) {
+  return "sampled every " + brief(spacing) + " m (median spacing), coarser than " +
+         brief(kCoarsestPlausibleSpacing) +
+         " m: the road wheels (0.5-1 m apart) and the track pads see no feature shorter than " +
+         brief(2 * spacing) + " m; stations in mm read as m?";
+}
+
+}  // namespace
+
+SteepestSlope steepestSlope(const Vector& x, const Vector& lateral, const Matrix& h) {
   SteepestSlope steepest;
-  const Vector& x = terrain.stations();
-  const Matrix& h = terrain.heights();
   for (Eigen::Index j = 0; j < h.rows(); ++j)
     for (Eigen::Index i = 0; i + 1 < x.size(); ++i) {
       const double slope = std::abs(h(j, i + 1) - h(j, i)) / (x(i + 1) - x(i));
       if (slope > steepest.slope)
-        steepest = {slope, x(i), terrain.lateral()(j)};
+        steepest = {slope, x(i), lateral(j)};
     }
   return steepest;
 }
 
-std::optional<std::string> slopeWarning(const std::string& name, const Terrain& terrain) {
+SteepestSlope steepestSlope(const Terrain& terrain) {
+  return steepestSlope(terrain.stations(), terrain.lateral(), terrain.heights());
+}
+
+double medianSpacing(const Vector& x) {
+  if (x.size() < 2)
+    return 0.0;
+  std::vector<double> d(static_cast<std::size_t>(x.size() - 1));
+  for (Eigen::Index i = 0; i + 1 < x.size(); ++i)
+    d[static_cast<std::size_t>(i)] = x(i + 1) - x(i);
+  const auto middle = d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2);
+  std::nth_element(d.begin(), middle, d.end());
+  return *middle;  // the upper median for an even count: a warning, not a statistic
+}
+
+std::vector<std::string> terrainWarnings(const std::string& name, const Terrain& terrain) {
+  std::vector<std::string> warnings;
   const SteepestSlope s = steepestSlope(terrain);
-  if (!(s.slope > kSteepestPlausibleSlope))
-    return std::nullopt;
-  const double degrees = std::atan(s.slope) * 180.0 / M_PI;
-  return name + ": slopes up to " + brief(s.slope) + " m/m (" +
-         brief(std::round(degrees * 10) / 10) + " deg) at x = " + brief(s.station) +
-         " m, y = " + brief(s.lateral) +
-         " m, steeper than ground a tracked vehicle drives on (the paper's steepest test track, "
-         "oop_waves, reaches 1.5 m/m): heights in mm read as m? The linear model runs it, but its "
-         "small-angle kinematics and bonded ground do not hold there";
+  if (s.slope > kSteepestPlausibleSlope)
+    warnings.push_back(name + ": " + slopeText(s));
+  const double spacing = medianSpacing(terrain.stations());
+  if (spacing > kCoarsestPlausibleSpacing)
+    warnings.push_back(name + ": " + spacingText(spacing));
+  return warnings;
+}
+
+std::vector<std::string> patchWarnings(double start, double spacing, const Vector& lateral,
+                                       const Matrix& heights, const TerrainBuffer& buffer,
+                                       bool flat_ground) {
+  std::vector<std::string> warnings;
+  if (lateral.size() == 0 || heights.rows() != lateral.size() || heights.cols() == 0 ||
+      !(spacing > 0.0) || !std::isfinite(start))
+    return warnings;  // addPatch refuses it and says why
+  const Vector x = Vector::LinSpaced(heights.cols(), start,
+                                     start + spacing * static_cast<double>(heights.cols() - 1));
+  const SteepestSlope s = steepestSlope(x, lateral, heights);
+  if (s.slope > kSteepestPlausibleSlope)
+    warnings.push_back(slopeText(s));
+  if (heights.cols() > 1 && spacing > kCoarsestPlausibleSpacing)
+    warnings.push_back(spacingText(spacing));
+  // The step a contact meets entering the patch: from what it reads (or holds) just before.
+  const bool has_terrain = !std::isnan(buffer.heightBefore(start, lateral(0)));
+  if (!has_terrain && !flat_ground)
+    return warnings;
+  double step = 0.0, reference = 0.0, at = 0.0;
+  for (Eigen::Index j = 0; j < lateral.size(); ++j) {
+    const double before = has_terrain ? buffer.heightBefore(start, lateral(j)) : 0.0;
+    if (std::abs(heights(j, 0) - before) > std::abs(step)) {
+      step = heights(j, 0) - before;
+      reference = before;
+      at = lateral(j);
+    }
+  }
+  if (std::abs(step) > kLargestPlausibleStep) {
+    warnings.push_back(
+        "starts " + brief(std::abs(step)) + " m " + (step > 0 ? "above" : "below") + " " +
+        (has_terrain ? "the terrain before it (" + brief(reference) + " m"
+                     : std::string("the flat ground the vehicle stands on since the start or "
+                                   "reset (0 m")) +
+        " at y = " + brief(at) +
+        " m), a step no tracked vehicle drives: heights are relative to "
+        "the ground plane of the start (z = 0), not altitudes?");
+  }
+  return warnings;
 }
 
 }  // namespace terrain

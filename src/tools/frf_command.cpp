@@ -335,8 +335,9 @@ void registerFrfCommand(CLI::App& app) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--out", opt->out_file,
-                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag and "
-                  "<output>_phase_deg (a point's also <point>_vertical_acc_wk_mag)")
+                  "CSV (or .mat: one variable per column): frequency_hz, then <output>_mag "
+                  "(linear, not dB: (m/s^2)/m, pitch (rad/s^2)/m) and <output>_phase_deg (a "
+                  "point's also <point>_vertical_acc_wk_mag)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt, max_mode, variant]() {

@@ -84,9 +84,9 @@ void run(const RideOptions& opt) {
     throw InputError(m.str());
   }
   std::vector<std::string> warnings;
-  if (const std::optional<std::string> w = terrain::slopeWarning(opt.track, track)) {
-    warnings.push_back(*w);
-    std::cerr << "tvd: warning: " << *w << "\n";
+  for (const std::string& w : terrain::terrainWarnings(opt.track, track)) {
+    warnings.push_back(w);
+    std::cerr << "tvd: warning: " << w << "\n";
   }
   const RideModel model = loadRideModel(opt, &track, &warnings);
   const std::vector<std::string>& points = model.points;

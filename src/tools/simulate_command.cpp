@@ -210,8 +210,8 @@ void run(const SimulateOptions& opt) {
         "read as s? The model applies it as a travel acceleration on the hull");
   }
   const terrain::Terrain track = terrain::loadTrack(opt.track);
-  if (const std::optional<std::string> w = terrain::slopeWarning(opt.track, track))
-    warnings.push_back(*w);
+  for (std::string& w : terrain::terrainWarnings(opt.track, track))
+    warnings.push_back(std::move(w));
   for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";
   // From the start of the track until the station has covered its length (paper: 30 m), or until

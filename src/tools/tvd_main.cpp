@@ -3,7 +3,9 @@
 
 #include <iostream>
 #include <string>
+#include <vector>
 
+#include "command_line_errors.h"
 #include "commands.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/heap_reuse.h"
@@ -34,14 +36,8 @@ int main(int argc, char** argv) {
     // on one line like every other error (CLI11's own report adds "Run with --help ...").
     if (e.get_exit_code() == 0)
       return app.exit(e);
-    std::string message = e.what();
-    if (dynamic_cast<const CLI::RequiredError*>(&e) && app.get_subcommands().empty() && argc > 1 &&
-        argv[1][0] != '-') {
-      std::string known;  // the registered subcommands, in registration order
-      for (const CLI::App* sub : app.get_subcommands({}))
-        known += (known.empty() ? "" : ", ") + sub->get_name();
-      message = "unknown subcommand '" + std::string(argv[1]) + "' (one of: " + known + ")";
-    }
+    std::string message =
+        tvd::tools::describeParseError(app, e, std::vector<std::string>(argv + 1, argv + argc));
     for (char& c : message)
       if (c == '\n')
         c = ' ';

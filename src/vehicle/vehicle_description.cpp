@@ -671,11 +671,22 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
                        " m): the suspensions at the other end then carry negative static loads, and the "
                        "linear model's ground holds those wheels down where a real vehicle would "
                        "tip");
+  const auto& h = d.hull;
+  // The hull hangs on its suspension: its CoG lies above the arm pivots (0.53 m against 1.57 m on
+  // the paper vehicle). One below them is almost always measured from another datum (the hull's
+  // floor, the wheel axles) instead of the ground.
+  const double pivot_z =
+      wheelCentreZ(d) + d.suspension.arm_length * std::sin(d.suspension.arm_angle);
+  if (h.cog_height < pivot_z)
+    warnings.push_back("hull.cog_height: " + brief(h.cog_height) +
+                       " m lies below the suspension arm pivots (z = " + brief(pivot_z) +
+                       " m above the ground): the hull's mass centre under the points it hangs "
+                       "from; a height measured from the hull floor or the axles instead of the "
+                       "ground?");
   // A mass or inertia in the wrong unit (tonnes for kg, t*m^2 for kg*m^2) still builds a model:
   // said by what no hull has. No point of a body lies farther from its CoG than the hull box's
   // diagonal, so neither can a radius of gyration; one below 5 % of the smallest hull dimension
   // is a thin plate, not a hull.
-  const auto& h = d.hull;
   const double unsprung = 2.0 * d.running_gear.axle_count * d.road_wheel.mass;
   if (h.mass < unsprung)
     warnings.push_back("hull.mass: " + brief(h.mass) + " kg is less than the road wheels' " +

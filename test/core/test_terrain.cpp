@@ -130,7 +130,7 @@ TEST(TerrainPlausibility, PaperTracksPassAndAScaleMistakeIsNamed) {
   for (const std::string track : {"long_hill", "separated_waves", "oop_waves"}) {
     const Terrain t = loadTrack(track);
     EXPECT_LT(steepestSlope(t).slope, kSteepestPlausibleSlope) << track;
-    EXPECT_FALSE(slopeWarning(track, t).has_value()) << track;
+    EXPECT_TRUE(terrainWarnings(track, t).empty()) << track;
   }
   // oop_waves: 2 pi A / lambda = pi 0.6 / 1.2, less the 0.2 m average's sinc (0.955): 1.5.
   EXPECT_NEAR(steepestSlope(loadTrack("oop_waves")).slope, 1.5, 0.05);
@@ -144,10 +144,70 @@ TEST(TerrainPlausibility, PaperTracksPassAndAScaleMistakeIsNamed) {
   const SteepestSlope s = steepestSlope(bump);
   EXPECT_NEAR(s.slope, 10.0 * M_PI / 5.0, 0.05);  // peak dh/dx at the flanks
   EXPECT_EQ(s.lateral, 2.0);
-  const std::optional<std::string> w = slopeWarning("bump.csv", bump);
-  ASSERT_TRUE(w.has_value());
-  EXPECT_EQ(w->rfind("bump.csv: slopes up to 6.2", 0), 0u) << *w;
-  EXPECT_NE(w->find("heights in mm read as m?"), std::string::npos) << *w;
+  const std::vector<std::string> w = terrainWarnings("bump.csv", bump);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("bump.csv: slopes up to 6.2", 0), 0u) << w[0];
+  EXPECT_NE(w[0].find("heights in mm read as m?"), std::string::npos) << w[0];
+}
+
+TEST(TerrainPlausibility, StationsInMillimetresAreNamedByTheirSpacing) {
+  // The long hill written in mm and read as m: 1000 times as long, sampled every 10 m, and
+  // (heights in mm too) no steeper. The median spacing names it; a flat run-in of two samples
+  // 50 m apart before a 0.01 m grid does not.
+  Terrain hill = loadTrack("long_hill");
+  const Terrain in_mm(hill.stations() * 1000.0, hill.lateral(), hill.heights() * 1000.0, "hill_mm");
+  EXPECT_NEAR(medianSpacing(in_mm.stations()), 10.0, 1e-6);
+  const std::vector<std::string> w = terrainWarnings("hill_mm.csv", in_mm);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("hill_mm.csv: sampled every 10 m (median spacing)", 0), 0u) << w[0];
+  EXPECT_NE(w[0].find("stations in mm read as m?"), std::string::npos) << w[0];
+
+  Vector x(hill.stations().size() + 1);
+  x << hill.startStation() - 50.0, hill.stations();
+  Matrix h(hill.heights().rows(), x.size());
+  h << hill.heights().col(0), hill.heights();
+  EXPECT_TRUE(terrainWarnings("run_in.csv", Terrain(x, hill.lateral(), h)).empty());
+  EXPECT_EQ(medianSpacing(Vector::Constant(1, 3.0)), 0.0);
+}
+
+TEST(TerrainPlausibility, AnOnlinePatchIsCheckedAgainstTheGroundBeforeIt) {
+  Vector y(2);
+  y << -2.0, 2.0;
+  const auto patch = [&](double height, int n = 11) { return Matrix::Constant(2, n, height); };
+  TerrainBuffer buffer;
+  // No terrain since the start: the contacts stand on z = 0.
+  EXPECT_TRUE(patchWarnings(0.0, 0.1, y, patch(0.5), buffer, true).empty());
+  std::vector<std::string> w = patchWarnings(0.0, 0.1, y, patch(102.5), buffer, true);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("starts 102.5 m above the flat ground the vehicle stands on", 0), 0u)
+      << w[0];
+  EXPECT_NE(w[0].find("not altitudes?"), std::string::npos) << w[0];
+  // Holding unknown heights (terrain dropped, not a restart): no reference, nothing said.
+  EXPECT_TRUE(patchWarnings(0.0, 0.1, y, patch(102.5), buffer, false).empty());
+
+  // Altitudes throughout: the first patch steps, the next ones continue it.
+  buffer.addPatch(0.0, 0.1, y, patch(102.5));
+  EXPECT_TRUE(patchWarnings(1.1, 0.1, y, patch(102.7), buffer, false).empty());  // bridged gap
+  EXPECT_TRUE(patchWarnings(0.5, 0.1, y, patch(103.0), buffer, false).empty());  // overlap
+  // After a gap the contacts hold the last heights: the step is from there.
+  Matrix down = patch(100.0);
+  down.row(1).setConstant(99.0);
+  w = patchWarnings(20.0, 0.1, y, down, buffer, false);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("starts 3.5 m below the terrain before it (102.5 m at y = 2 m)", 0), 0u)
+      << w[0];
+  // A patch starting before all the terrain has nothing before it.
+  EXPECT_TRUE(patchWarnings(-5.0, 0.1, y, patch(0.0), buffer, false).empty());
+
+  // Slope and spacing, as for a file.
+  Matrix wave = patch(0.0, 5);
+  wave(0, 2) = 1.0;  // 1 m over 0.1 m
+  w = patchWarnings(-5.0, 0.1, y, wave, TerrainBuffer(), true);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("slopes up to 10 m/m", 0), 0u) << w[0];
+  w = patchWarnings(-5.0, 10.0, y, patch(0.0), TerrainBuffer(), true);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("sampled every 10 m", 0), 0u) << w[0];
 }
 
 TEST(Terrain, BilinearIsExactForBilinearSurfaces) {

@@ -391,6 +391,17 @@ TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {
   d = veh::VehicleDescription{};
   d.hull.cog_x = 2.34;  // on the front axle: still inside
   EXPECT_TRUE(veh::descriptionWarnings(d).empty());
+  // CoG from the hull floor (0.45 m clearance): 1.12 m above the ground is still above the arm
+  // pivots, z_w + a sin(beta) = 0.093 + 0.34 + 0.58 sin 9 deg = 0.524 m; 0.5 m is not.
+  d = veh::VehicleDescription{};
+  d.hull.cog_height = 1.12;
+  EXPECT_TRUE(veh::descriptionWarnings(d).empty());
+  d.hull.cog_height = 0.5;
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(
+      w[0].rfind("hull.cog_height: 0.5 m lies below the suspension arm pivots (z = 0.5237", 0), 0u)
+      << w[0];
 }
 
 TEST(VehicleOptions, ReturnRollersAndArmDampers) {

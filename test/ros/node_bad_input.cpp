@@ -142,6 +142,11 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   narrow.lateral = {-0.5, 0.5};
   narrow.heights.resize(2 * (narrow.heights.size() / 11));
   terrain_pub_.publish(narrow);
+  // Valid, far ahead, but altitudes: 250 m above the patch before it (a datum or unit mistake).
+  TerrainProfile altitude = test::flatProfile(terrain_end + 1000.0, terrain_end + 1010.0);
+  for (double& h : altitude.heights)
+    h = 250.0;
+  terrain_pub_.publish(altitude);
 
   publishSpeed(speed);
   test::spinFor(0.2);
@@ -174,6 +179,7 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
                diagnostics_.value(": speed", "speeds rejected (total)") >= bad_speeds &&
                diagnostics_.value(": terrain", "steps with uncovered contacts (total)") > 0 &&
                diagnostics_.value(": terrain", "patches narrower than the contacts (total)") > 0 &&
+               diagnostics_.value(": terrain", "patches unlike ground (total)") > 0 &&
                diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)") > 0;
       },
       5.0))
@@ -182,6 +188,10 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   EXPECT_EQ(diagnostics_.value(": speed", "speeds rejected (total)"), bad_speeds);
   EXPECT_EQ(diagnostics_.value(": terrain", "patches narrower than the contacts (total)"), 1.0);
   EXPECT_EQ(diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)"), 1.0);
+  EXPECT_EQ(diagnostics_.value(": terrain", "patches unlike ground (total)"), 1.0);
+  EXPECT_NE(diagnostics_.text(": terrain", "last patch unlike ground").find("starts 250 m above"),
+            std::string::npos)
+      << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.level(": terrain"),
             static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);

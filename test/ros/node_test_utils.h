@@ -83,6 +83,14 @@ class DiagnosticsCache {
     }
     return std::nan("");
   }
+  /// Text of key `key` in the status whose name ends with `suffix`; empty when missing.
+  std::string text(const std::string& suffix, const std::string& key) const {
+    if (const auto* s = find(suffix))
+      for (const auto& kv : s->values)
+        if (kv.key == key)
+          return kv.value;
+    return "";
+  }
   std::size_t arrays() const { return arrays_; }
   std::string describe() const {
     std::string out;

@@ -85,6 +85,8 @@ class VehicleDynamicsNode {
   struct Events {
     std::uint64_t patches_accepted = 0, patches_rejected = 0;
     std::uint64_t patches_narrow = 0;  // accepted, but narrower than the contacts' lateral span
+    // accepted, but a slope, spacing or step at its start unlike ground (terrain_plausibility.h)
+    std::uint64_t patches_implausible = 0;
     std::uint64_t patches_behind = 0;  // valid, but wholly behind the terrain kept: dropped
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
     std::uint64_t speed_timeouts = 0;  // stops after ~speed_timeout without a speed message
@@ -229,8 +231,10 @@ class VehicleDynamicsNode {
 
   Events events_;
   Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
-      terrain_uncovered_, terrain_narrow_, terrain_behind_, speed_rejected_, speed_timed_out_;
-  std::string last_patch_error_, last_speed_error_, last_narrow_patch_, last_behind_patch_;
+      terrain_uncovered_, terrain_narrow_, terrain_implausible_, terrain_behind_, speed_rejected_,
+      speed_timed_out_;
+  std::string last_patch_error_, last_speed_error_, last_narrow_patch_, last_behind_patch_,
+      last_implausible_patch_;
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
   ros::WallTime recent_speed_arrival_;  // zero: none kept

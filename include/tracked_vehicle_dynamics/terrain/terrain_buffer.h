@@ -36,6 +36,11 @@ class TerrainBuffer {
   bool covers(double x) const;
   /// Height [m] at station x [m], lateral y [m]. Throws InputError when x is not covered.
   double height(double x, double y) const;
+  /// The height [m] at lateral y of the terrain a contact reaching station x [m] comes from:
+  /// height(x, y) where covered, else the height at the last sample of the patch ending last
+  /// before x (the newest of equals), which an uncovered contact holds. NaN when no patch starts
+  /// at or before x.
+  double heightBefore(double x, double y) const;
 
   /// The patch grid answering height(x, ·) — its height(x, y) is this buffer's — and the
   /// station interval [*from, *until] around x over which that grid keeps answering, as long as

@@ -1,13 +1,15 @@
 // Whether a terrain looks like ground a tracked vehicle drives on, or like a unit mistake
-// (heights in millimetres read as metres). Such terrain still runs: the linear model takes any
-// heights, but its small-angle kinematics and bonded ground say nothing true there, so the user
-// is told.
+// (heights in millimetres read as metres, stations in millimetres read as metres, altitudes where
+// heights relative to the start ground are expected). Such terrain still runs: the linear model
+// takes any heights, but its small-angle kinematics and bonded ground say nothing true there, so
+// the user is told.
 #pragma once
 
-#include <optional>
 #include <string>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 
 namespace tracked_vehicle_dynamics {
 namespace terrain {
@@ -16,6 +18,15 @@ namespace terrain {
 /// oop_waves (0.6 m deep at 1.2 m wavelength, smoothed over 0.2 m), reaches 1.5; a 10 m bump
 /// over a few metres, or a 0.15 m wave written in mm, reaches far beyond.
 constexpr double kSteepestPlausibleSlope = 2.0;
+/// Coarsest median station spacing taken as a road profile [m]. Road wheels stand 0.5-1 m apart
+/// (0.78 m on the paper vehicle) and a track pad is 0.16 m long: a profile sampled every few
+/// metres carries no wavelength the running gear responds to. The paper samples every 0.01 m;
+/// the same file with stations in mm read as m is sampled every 10 m and 1000 times as long.
+constexpr double kCoarsestPlausibleSpacing = 1.0;
+/// Largest height step between a patch arriving online and the terrain before it [m]: a vertical
+/// obstacle a tracked vehicle climbs is under 1 m. A larger one is almost always altitudes (or a
+/// datum change) where heights relative to the start ground are expected.
+constexpr double kLargestPlausibleStep = 1.0;
 
 /// The steepest slope of the grid: |h(x_{i+1}) - h(x_i)| / (x_{i+1} - x_i) over every line.
 struct SteepestSlope {
@@ -23,11 +34,30 @@ struct SteepestSlope {
   double station = 0.0;  ///< x_i of the interval [m]
   double lateral = 0.0;  ///< the line's y [m]
 };
+/// stations [n_x] increasing, lateral [n_y], heights [n_y x n_x] (as Terrain's).
+SteepestSlope steepestSlope(const Vector& stations, const Vector& lateral, const Matrix& heights);
 SteepestSlope steepestSlope(const Terrain& terrain);
 
-/// The warning to print when the steepest slope exceeds kSteepestPlausibleSlope, naming `name`
-/// (the track or file), the slope, its angle and where; nothing otherwise.
-std::optional<std::string> slopeWarning(const std::string& name, const Terrain& terrain);
+/// The median of the station spacings x_{i+1} - x_i [m] (0 for a single station): a flat run-in
+/// given by two samples 50 m apart does not make a finely sampled profile coarse.
+double medianSpacing(const Vector& stations);
+
+/// The warnings to print for a terrain named `name` (the track or file), each starting with the
+/// name: a slope beyond kSteepestPlausibleSlope (how steep, where) and a median spacing beyond
+/// kCoarsestPlausibleSpacing. Empty for ground that looks like ground.
+std::vector<std::string> terrainWarnings(const std::string& name, const Terrain& terrain);
+
+/// The same for a patch arriving online (stations start + k spacing, as TerrainBuffer::addPatch
+/// takes, already checked by it), plus the step at its first station from the terrain the
+/// vehicle reads before it: `buffer` (before the patch is added) where it holds terrain at or
+/// before `start`, else, with `flat_ground` (no terrain since a start or reset: the contacts
+/// stand on z = 0), the flat ground. A step beyond kLargestPlausibleStep is named with its sign
+/// and reference. The texts do not name the patch; the caller does. Safe on any input (a patch
+/// addPatch refuses gets no warnings, or ones the caller drops with the patch): call it before
+/// the patch is added, since the step is from the terrain without it.
+std::vector<std::string> patchWarnings(double start, double spacing, const Vector& lateral,
+                                       const Matrix& heights, const TerrainBuffer& buffer,
+                                       bool flat_ground);
 
 }  // namespace terrain
 }  // namespace tracked_vehicle_dynamics

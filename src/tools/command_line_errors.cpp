@@ -1,0 +1,154 @@
+#include "command_line_errors.h"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+namespace {
+
+/// Whether `token` reads as a number ("-5", "-1e3"): a value, not an option.
+bool isNumber(const std::string& token) {
+  char* end = nullptr;
+  std::strtod(token.c_str(), &end);
+  return !token.empty() && end == token.c_str() + token.size();
+}
+
+/// What an option's type asks for, in words.
+std::string wanted(const CLI::Option* option) {
+  if (option == nullptr)
+    return "a value";
+  const std::string type = option->get_type_name();
+  if (type.rfind("FLOAT", 0) == 0)
+    return "a number";
+  if (type.rfind("INT", 0) == 0)
+    return "an integer";
+  if (type.rfind("UINT", 0) == 0)
+    return "a non-negative integer";
+  return "a value";
+}
+
+/// The text of `message` before the first ':' (CLI11 puts the option's name there).
+std::string leadingName(const std::string& message) {
+  const std::size_t colon = message.find(':');
+  return colon == std::string::npos ? std::string() : message.substr(0, colon);
+}
+
+/// The nearest long option of `command` to `name` ("--trak" -> "--track"), or empty.
+std::string nearestOption(const CLI::App& command, const std::string& name) {
+  std::string best;
+  std::size_t best_distance = 3;  // within two edits
+  const std::string typed = name.substr(name.find_first_not_of('-'));
+  for (const CLI::Option* option : command.get_options()) {
+    for (const std::string& lname : option->get_lnames()) {
+      const std::size_t d = lname.rfind(typed, 0) == 0 ? 1 : editDistance(typed, lname);
+      if (d < best_distance) {
+        best_distance = d;
+        best = "--" + lname;
+      }
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  // The classic two-row dynamic programme: d[i][j] = edits turning a[0..i) into b[0..j).
+  std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      current[j] = std::min(
+          {previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
+                               const std::vector<std::string>& args) {
+  std::string message = error.what();
+  const std::vector<CLI::App*> parsed = app.get_subcommands();
+  if (parsed.empty()) {
+    if (!dynamic_cast<const CLI::RequiredError*>(&error))
+      return message;
+    std::string known;  // the registered subcommands, in registration order
+    for (const CLI::App* sub : app.get_subcommands({}))
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+    if (!args.empty() && args[0][0] != '-')
+      return "unknown subcommand '" + args[0] + "' (one of: " + known + ")";
+    return (args.empty() ? std::string() : "unknown option " + args[0] + ": ") +
+           "a subcommand is required (one of: " + known + "; tvd --help lists them)";
+  }
+  const CLI::App& command = *parsed.front();
+  const std::string prefix = command.get_name() + ": ";
+  const std::string see = " (tvd " + command.get_name() + " --help lists the options)";
+  // An unknown option first: whatever else CLI11 found follows from it.
+  bool after_command = false;
+  for (const std::string& token : args) {
+    if (!after_command) {
+      after_command = token == command.get_name();
+      continue;
+    }
+    if (token == "--")
+      break;
+    if (token.size() < 2 || token[0] != '-' || isNumber(token))
+      continue;
+    const std::string name = token.substr(0, token.find('='));
+    if (command.get_option_no_throw(name) != nullptr || app.get_option_no_throw(name) != nullptr)
+      continue;
+    const std::string nearest = nearestOption(command, name);
+    return prefix + "unknown option " + name +
+           (nearest.empty() ? see : " (did you mean " + nearest + "?)");
+  }
+  const std::string name = leadingName(message);
+  const CLI::Option* option = name.empty() ? nullptr : command.get_option_no_throw(name);
+  if (dynamic_cast<const CLI::ConversionError*>(&error)) {
+    // "Could not convert: --speed-kmh = abc"
+    const std::string marker = "Could not convert: ";
+    const std::size_t equals = message.find(" = ");
+    if (message.rfind(marker, 0) == 0 && equals != std::string::npos) {
+      const std::string option_name = message.substr(marker.size(), equals - marker.size());
+      return prefix + option_name + ": '" + message.substr(equals + 3) + "' is not " +
+             wanted(command.get_option_no_throw(option_name));
+    }
+  } else if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) && option != nullptr) {
+    if (message.find("At Most") != std::string::npos) {
+      const std::size_t received = message.rfind(' ');
+      return prefix + name + " is given " + message.substr(received + 1) + " times: give it once";
+    }
+    if (message.find("missing") != std::string::npos)
+      return prefix + name + " needs " + wanted(option) + " after it";
+  } else if (dynamic_cast<const CLI::ValidationError*>(&error) && option != nullptr &&
+             wanted(option) != "a number" && wanted(option) != "a value") {
+    // A range check on an integer option runs on the text: "1.5" reads "not in range 1 to 500".
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      std::string value;
+      if (args[i] == name && i + 1 < args.size())
+        value = args[i + 1];
+      else if (args[i].rfind(name + "=", 0) == 0)
+        value = args[i].substr(name.size() + 1);
+      else
+        continue;
+      char* end = nullptr;
+      std::strtoll(value.c_str(), &end, 10);
+      if (value.empty() || end != value.c_str() + value.size())
+        return prefix + name + ": '" + value + "' is not " + wanted(option);
+    }
+  } else if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
+    // Only stray values are left (unknown options were named above).
+    const std::string marker = "not expected: ";
+    const std::size_t at = message.find(marker);
+    return prefix + "unexpected argument" +
+           (at == std::string::npos ? std::string()
+                                    : " '" + message.substr(at + marker.size()) + "'") +
+           ": every value follows its option (a value with spaces is quoted)";
+  }
+  return prefix + message;
+}
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics

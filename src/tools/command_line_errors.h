@@ -1,0 +1,26 @@
+// CLI11's parse errors as the tool's one-line messages. CLI11 checks required options before
+// unknown ones, so a misspelt option reads "--track is required"; its conversion and count
+// errors name the C++ side ("Could not convert", "1 required INT:INT ... missing"). The user
+// typed an option: they are told which one, what it wanted, and the nearest known spelling.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace tracked_vehicle_dynamics {
+namespace tools {
+
+/// The message for `error`, thrown by app.parse(args) (args: argv without the program name).
+/// Checked in order: an unknown subcommand; an unknown option of the parsed subcommand (with
+/// the nearest option name when one is within two edits or starts with it); then CLI11's error
+/// in plain words. One line.
+std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
+                               const std::vector<std::string>& args);
+
+/// The Levenshtein distance between a and b (insertions, deletions, substitutions).
+std::size_t editDistance(const std::string& a, const std::string& b);
+
+}  // namespace tools
+}  // namespace tracked_vehicle_dynamics
