@@ -128,6 +128,18 @@ const Vector& Simulator::outputs() const {
 Vector Simulator::state() const {
   return engine_->state();
 }
+void Simulator::watchCoordinates(const std::vector<DofIndex>& rows) {
+  const DofIndex n = engine_->state_count_ / 2;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (rows[i] < 0 || rows[i] >= n)
+      throw InputError("Simulator::watchCoordinates: coordinate " + std::to_string(rows[i]) +
+                       " (entry " + std::to_string(i) + ") is outside the " + std::to_string(n) +
+                       " coordinates of q");
+  engine_->watchCoordinates(rows);
+}
+void Simulator::coordinates(Vector* z) const {
+  engine_->coordinates(z);
+}
 const Vector& Simulator::input() const {
   return engine_->w_;
 }

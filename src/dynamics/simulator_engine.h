@@ -27,6 +27,19 @@ class SimulatorEngine {
   /// One step to the sample whose input is w_next; refreshes the outputs. No allocation.
   virtual void advance(const Vector& input_next) = 0;
   virtual Vector state() const = 0;
+  /// Simulator::watchCoordinates (rows checked) and coordinates(). Default: rows of state().
+  virtual void watchCoordinates(const std::vector<DofIndex>& rows) { watch_rows_ = rows; }
+  virtual void coordinates(Vector* z) const {
+    const Vector full = state();
+    const auto r = static_cast<DofIndex>(watch_rows_.size());
+    const DofIndex n = full.size() / 2;
+    if (z->size() != 2 * r)
+      z->resize(2 * r);
+    for (DofIndex i = 0; i < r; ++i) {
+      (*z)(i) = full(watch_rows_[static_cast<std::size_t>(i)]);
+      (*z)(r + i) = full(n + watch_rows_[static_cast<std::size_t>(i)]);
+    }
+  }
 
   /// Default: one advance() per row.
   virtual Matrix simulate(const Matrix& inputs) {
@@ -57,6 +70,7 @@ class SimulatorEngine {
   std::vector<std::string> names_;
   double off_diagonal_ratio_ = 0.0;
   DofIndex dynamic_modes_ = -1, quasi_static_modes_ = 0;  // -1: state_count_ / 2
+  std::vector<DofIndex> watch_rows_;                      // watchCoordinates()
 };
 
 /// Steps `discrete` (checked by the caller: valid, discrete, B1 present for a first-order hold).

@@ -131,8 +131,22 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   }
   // The road inputs as ground springs (K_u(:, i) = k_i e_m(i)); a model of another form runs
   // unchecked, and says so. The travel input of a slewing vehicle is no contact.
+  // The watch reads only the contacts' coordinates: the simulator recovers those rows of the
+  // state alone (Simulator::coordinates), and the watch's contacts index them in that order.
   try {
-    contact_watch_.emplace(dynamics::groundContacts(model.system), simulator_.inputCount() / 2);
+    std::vector<dynamics::GroundContact> contacts = dynamics::groundContacts(model.system);
+    std::vector<DofIndex> rows;
+    std::vector<DofIndex> index_of(static_cast<std::size_t>(simulator_.stateCount() / 2), -1);
+    for (dynamics::GroundContact& c : contacts) {
+      DofIndex& index = index_of[static_cast<std::size_t>(c.coordinate)];
+      if (index < 0) {
+        index = static_cast<DofIndex>(rows.size());
+        rows.push_back(c.coordinate);
+      }
+      c.coordinate = index;
+    }
+    simulator_.watchCoordinates(rows);
+    contact_watch_.emplace(std::move(contacts), simulator_.inputCount() / 2);
   } catch (const InputError& e) {
     contact_watch_reason_ = e.what();
   }
@@ -203,13 +217,17 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
 }
 
 void OnlineVehicle::restartContactWatch() {
-  if (contact_watch_)
-    contact_watch_->restart(simulator_.time(), simulator_.state(), simulator_.input());
+  if (!contact_watch_)
+    return;
+  simulator_.coordinates(&watched_state_);
+  contact_watch_->restart(simulator_.time(), watched_state_, simulator_.input());
 }
 
 void OnlineVehicle::checkGroundContact() {
-  if (contact_watch_)
-    contact_watch_->check(simulator_.time(), station_, simulator_.state(), simulator_.input());
+  if (!contact_watch_)
+    return;
+  simulator_.coordinates(&watched_state_);
+  contact_watch_->check(simulator_.time(), station_, watched_state_, simulator_.input());
 }
 
 bool OnlineVehicle::addTerrain(const TerrainPatch& patch) {

@@ -400,6 +400,70 @@ TEST(Simulator, QuasiStaticTruncationKeepsStaticsAndDisplacements) {
   EXPECT_THROW(Simulator(s, bad), InputError);
 }
 
+// coordinates(): the watched rows of q and q', as state() gives them, from both engines, with and
+// without quasi-static modes and input damping C_u, at rest and while a bump passes, without
+// allocating (modal engine); a row outside q is refused by name.
+TEST(Simulator, WatchedCoordinatesAreTheStatesRows) {
+  const int n = 12, inputs = 4;
+  for (const SecondOrderSystem& s : {test::randomVehicle(n, inputs, 6, 11),
+                                     test::randomVehicle(n, inputs, 6, 11, 2e10, 0.5, 0.0)}) {
+    const ModalSystem modal(s);
+    const double cut = std::sqrt(modal.naturalFrequencies()(n - inputs - 1) *
+                                 modal.naturalFrequencies()(n - inputs)) /
+                       kTwoPi;
+    const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(n);
+    const Matrix w = bumpInputs(s.input_stations, 300, 1e-3, 8.0, 0.05, 1.0, 0.5);
+    const std::vector<DofIndex> rows = {7, 0, 11, 3, 3};  // any order, repeats allowed
+    for (double max_hz : {0.0, cut}) {
+      for (DiscretizationMethod method :
+           {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled}) {
+        if (max_hz > 0 && method == DiscretizationMethod::AugmentedExponential)
+          continue;
+        SimulatorOptions o = options(method, InputHold::FirstOrder);
+        o.generalized_force = f_g;
+        o.max_mode_frequency_hz = max_hz;
+        Simulator sim(s, o);
+        Vector z;
+        sim.coordinates(&z);
+        EXPECT_EQ(z.size(), 0);  // none chosen
+        sim.watchCoordinates(rows);
+        sim.reset(staticEquilibrium(s, Vector::Zero(inputs), f_g), w.row(0).transpose());
+        for (DofIndex k = 1; k < w.rows(); ++k) {
+          sim.step(w.row(k).transpose());
+          if (k % 50 != 1)
+            continue;
+          sim.coordinates(&z);
+          const Vector full = sim.state();
+          ASSERT_EQ(z.size(), 10);
+          for (std::size_t i = 0; i < rows.size(); ++i) {
+            EXPECT_NEAR(z(static_cast<DofIndex>(i)), full(rows[i]), 1e-12 * full.head(n).norm());
+            EXPECT_NEAR(z(5 + static_cast<DofIndex>(i)), full(n + rows[i]),
+                        1e-12 * full.tail(n).norm() + 1e-15);
+          }
+        }
+#if TVD_COUNTS_ALLOCATIONS  // the modal engine's check runs in the node's loop: no allocation
+        g_allocations = 0;
+        g_count_allocations = true;
+        sim.coordinates(&z);
+        g_count_allocations = false;
+        if (method == DiscretizationMethod::ModalDecoupled) {
+          EXPECT_EQ(g_allocations, 0);
+        }
+#endif
+      }
+    }
+    Simulator sim(s, options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder));
+    try {
+      sim.watchCoordinates({2, 12});
+      FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("coordinate 12 (entry 1) is outside the 12"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 // The outputs of the same input series through the dense augmented-exponential engine, and the
 // modal engine batched (simulate) and stepped, all from static equilibrium (first-order hold).
 struct EngineRuns {

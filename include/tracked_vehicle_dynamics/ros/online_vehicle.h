@@ -191,6 +191,8 @@ class OnlineVehicle {
   /// on a contact that pressed at rest. Restarted with the vehicle (reset, resetTo, and the reset
   /// after non-finite outputs) from the equilibrium it restarts in. Null when the model's road
   /// inputs are not ground springs on master coordinates (groundContactUnavailable() says why).
+  /// Its contacts' `coordinate` numbers the watched coordinates (the distinct contact
+  /// coordinates of the model, in contact order), not the model's q.
   const dynamics::GroundContactWatch* groundContactWatch() const {
     return contact_watch_ ? &*contact_watch_ : nullptr;
   }
@@ -258,8 +260,10 @@ class OnlineVehicle {
   double commanded_speed_ = 0.0;
   double travel_acceleration_ = 0.0;
   double peak_acceleration_ = 0.0;
+  // Its contacts' coordinates index watched_state_ = [q; q'] of the watched rows.
   std::optional<dynamics::GroundContactWatch> contact_watch_;
   std::string contact_watch_reason_;
+  Vector watched_state_;
 };
 
 }  // namespace ros_layer
