@@ -23,7 +23,7 @@ namespace tvd = tracked_vehicle_dynamics;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using tvd::kPi;
 
 // Two closed chains of `assemblies` links (each link: `nodes_per_link` nodes joined by beams),
 // the lower run of each chain on ground springs, and a rigid hull on torsion-like springs.

@@ -1,7 +1,9 @@
 #include "tracked_vehicle_dynamics/error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <vector>
 
 namespace tracked_vehicle_dynamics {
 
@@ -28,6 +30,21 @@ std::string beyond(double value, double bound) {
     shown = buffer;
   }
   return shown;
+}
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  // The classic two-row dynamic programme: d[i][j] = edits turning a[0..i) into b[0..j).
+  std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      current[j] = std::min(
+          {previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
 }
 
 }  // namespace tracked_vehicle_dynamics

@@ -1,6 +1,7 @@
 // Exceptions thrown by the core (STYLE.md #8): every message names the file, key or index at fault.
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -33,5 +34,9 @@ std::string brief(double value);
 /// to 17) until it no longer reads as brief(bound) ("200.00000001" against 200, or a converted
 /// 200.0001 km/h that is not exactly that double).
 std::string beyond(double value, double bound);
+
+/// The Levenshtein distance between a and b (insertions, deletions, substitutions): how far a
+/// misspelt name is from a known one, for the "did you mean" of a message.
+std::size_t editDistance(const std::string& a, const std::string& b);
 
 }  // namespace tracked_vehicle_dynamics

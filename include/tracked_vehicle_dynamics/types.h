@@ -40,7 +40,10 @@ int parseDirection(const std::string& name);
 
 /// Standard gravity [m/s^2].
 constexpr double kStandardGravity = 9.80665;
+/// pi and 2 pi (rad/s per Hz), to double precision: one definition for the whole project.
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2.0 * kPi;
 /// Degrees per radian (180 / pi), for angles in reports.
-constexpr double kRadToDegree = 57.29577951308232;
+constexpr double kRadToDegree = 180.0 / kPi;
 
 }  // namespace tracked_vehicle_dynamics

@@ -12,12 +12,13 @@ std::vector<AnalogSection> butterworthLowPass(int order, double corner_hz) {
   if (order < 1 || order > 12)
     throw InputError("Butterworth low-pass: the order must be 1..12, got " + std::to_string(order));
   if (!std::isfinite(corner_hz) || !(corner_hz > 0.0))
-    throw InputError("Butterworth low-pass: the corner frequency must be a positive number [Hz], got " +
-                     std::to_string(corner_hz));
-  const double wc = 2.0 * M_PI * corner_hz;
+    throw InputError(
+        "Butterworth low-pass: the corner frequency must be a positive number [Hz], got " +
+        brief(corner_hz));
+  const double wc = kTwoPi * corner_hz;
   std::vector<AnalogSection> sections;
   for (int k = 1; k <= order / 2; ++k) {
-    const double phi = M_PI * (2.0 * k - 1.0) / (2.0 * order);
+    const double phi = kPi * (2.0 * k - 1.0) / (2.0 * order);
     AnalogSection s;
     s.b0 = wc * wc;
     s.a0 = wc * wc;

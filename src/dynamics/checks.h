@@ -36,8 +36,7 @@ void requireLength(const std::string& where, const std::string& what, const Vect
 /// Throws InputError unless 0 < dt < inf.
 inline void requireTimeStep(const std::string& where, double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt))
-    throw InputError(where + ": time step must be positive and finite, got " + std::to_string(dt) +
-                     " s");
+    throw InputError(where + ": time step must be positive and finite, got " + brief(dt) + " s");
 }
 
 }  // namespace detail

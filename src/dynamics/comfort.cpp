@@ -13,7 +13,6 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // Butterworth quality factor of the band-limiting filters.
 const double kButterworthQ = 1.0 / std::sqrt(2.0);

@@ -12,8 +12,6 @@ namespace dynamics {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
-
 using ComplexSparseMatrix = Eigen::SparseMatrix<Complex>;
 
 void requireFrequencies(const std::string& where, const Vector& frequencies_hz) {

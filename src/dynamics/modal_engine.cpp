@@ -22,8 +22,6 @@ void checkTruncation(const SimulatorOptions& options) {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Per mode r: [eta; eta']_{k+1} = Phi_r [eta; eta']_k + g0_r p_k + g1_r p_{k+1} + (g0_r + g1_r) p_g
 // with p = Psi w, Psi = [Phi^T K_u, Phi^T C_u], p_g = Phi^T f_g (constant: exact for both holds).
 // Outputs: H Phi eta, H Phi eta', H Phi eta'' with eta'' = p + p_g - omega^2 eta - d eta'.

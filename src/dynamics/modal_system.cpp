@@ -27,7 +27,7 @@ void requireSymmetric(const Matrix& x, const std::string& what) {
   const double norm = x.norm();
   if (norm > 0.0 && (x - x.transpose()).norm() > kSymmetryTolerance * norm)
     throw InputError("ModalSystem: " + what + " is not symmetric (relative asymmetry " +
-                     std::to_string((x - x.transpose()).norm() / norm) + ")");
+                     brief((x - x.transpose()).norm() / norm) + ")");
 }
 
 }  // namespace
@@ -61,7 +61,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
       lambda(r) = 0.0;
     } else if (lambda(r) < 0.0) {
       throw SolverError("ModalSystem: stiffness K is indefinite: mode " + std::to_string(r) +
-                        " has omega^2 = " + std::to_string(lambda(r)) + " rad^2/s^2");
+                        " has omega^2 = " + brief(lambda(r)) + " rad^2/s^2");
     }
   }
   frequencies_ = lambda.cwiseSqrt();
@@ -92,7 +92,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
         d = std::max(d, 0.0);
       if (d < 0.0)
         throw InputError("ModalSystem: damping C is not positive semi-definite: mode " +
-                         std::to_string(r) + " has phi^T C phi = " + std::to_string(d) + " 1/s");
+                         std::to_string(r) + " has phi^T C phi = " + brief(d) + " 1/s");
     }
   }
 

@@ -16,7 +16,6 @@ namespace dynamics {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 // Frequencies evaluated together: one matrix product forms their modal forces. 256 keeps the
 // block's products (modes x 512 doubles, about 1.8 MB for 430 modes) in cache-friendly sizes.
 constexpr Eigen::Index kBlock = 256;
@@ -30,8 +29,8 @@ constexpr double kMaxGridPoints = 1e6;
 
 // Class (iso8608ReferencePsd throws naming it), band and waviness, as terrain::makeIso8608
 // checks them (the band without the Nyquist bound: a PSD has no sampling).
-double checkRoad(const RoadSpectrum& road) {
-  const double reference = terrain::iso8608ReferencePsd(road.road_class);
+void checkRoad(const RoadSpectrum& road) {
+  terrain::iso8608ReferencePsd(road.road_class);  // throws naming an unknown class
   if (!(std::isfinite(road.min_frequency) && std::isfinite(road.max_frequency) &&
         road.min_frequency > 0.0 && road.min_frequency < road.max_frequency))
     fail("band [" + brief(road.min_frequency) + ", " + brief(road.max_frequency) +
@@ -41,7 +40,6 @@ double checkRoad(const RoadSpectrum& road) {
   if (road.correlation == terrain::LateralCorrelation::IndependentSides &&
       !(std::isfinite(road.side_gap) && road.side_gap > 0.0))
     fail("side gap " + brief(road.side_gap) + " m must be > 0 for independent sides");
-  return reference;
 }
 
 void checkSpeed(double speed) {
@@ -75,14 +73,14 @@ void checkSpectralInput(const RoadSpectrum& road, const SpectralRideOptions& opt
 }
 
 double temporalRoadPsd(const RoadSpectrum& road, double frequency, double speed) {
-  const double reference = checkRoad(road);
+  checkRoad(road);
   checkSpeed(speed);
   // The band's ends inclusive, to rounding: v n_min / v may come out an ulp below n_min.
   constexpr double kEnd = 1e-12;
   const double n = frequency / speed;
   if (!(n >= road.min_frequency * (1.0 - kEnd) && n <= road.max_frequency * (1.0 + kEnd)))
     return 0.0;
-  return reference * std::pow(n / terrain::kIso8608ReferenceFrequency, -road.waviness) / speed;
+  return terrain::iso8608Psd(road.road_class, n, road.waviness) / speed;
 }
 
 SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral,
@@ -90,7 +88,6 @@ SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral
                            const SpectralRideOptions& options)
     : road_(road), options_(options) {
   checkSpectralInput(road, options);
-  reference_psd_ = terrain::iso8608ReferencePsd(road.road_class);
   const DofIndex inputs = modal.inputCount();
   const Vector& stations = modal.inputStations();
   if (inputs == 0)
@@ -236,9 +233,7 @@ SpectralRideResult SpectralRide::evaluate(double speed) const {
          sum_power = Vector::Zero(outputs);
   for (Eigen::Index i = 0; i < count; ++i) {
     // S_h = G_d(f / v) / v; every grid point lies in [v n_min, v n_max].
-    road_psd(i) = reference_psd_ *
-                  std::pow(f(i) / (speed * terrain::kIso8608ReferenceFrequency), -road_.waviness) /
-                  speed;
+    road_psd(i) = terrain::iso8608Psd(road_.road_class, f(i) / speed, road_.waviness) / speed;
     result.road_variance += weight(i) * road_psd(i);
     const double wk = std::norm(iso2631Response(Weighting::Wk, f(i)));
     const double k = std::norm(analogResponse(power_filter, f(i)));

@@ -19,7 +19,6 @@ namespace fem {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 // Deflated verification runs for repeated eigenvalues: how many, how many modes each, and the
 // relative gap (to the distance from the shift) under which an eigenvalue counts as new.
 constexpr int kMaxDeflationPasses = 6;
@@ -43,9 +42,9 @@ class ShiftInvertOp {
     SparseMatrix a = k_ - sigma * m_;
     a.makeCompressed();
     if (!chol_.factorize(a))
-      throw SolverError("modal solver: K - sigma M is not positive definite for sigma = " +
-                        std::to_string(sigma) +
-                        " (a DOF without stiffness and mass, or a negative stiffness)");
+      throw SolverError(
+          "modal solver: K - sigma M is not positive definite for sigma = " + brief(sigma) +
+          " (a DOF without stiffness and mass, or a negative stiffness)");
     sigma_ = sigma;
     factorised_ = true;
   }
@@ -256,7 +255,7 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
                         (not_converging ? "did not converge" : "numerical issue") + ": " +
                         std::to_string(converged) + " of " + std::to_string(nev) +
                         " modes converged after " + std::to_string(solver.num_iterations()) +
-                        " iterations (tolerance " + std::to_string(request.tolerance) + ")");
+                        " iterations (tolerance " + brief(request.tolerance) + ")");
     }
     return std::make_pair(Vector(solver.eigenvalues()), Matrix(solver.eigenvectors()));
   };

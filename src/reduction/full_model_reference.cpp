@@ -17,7 +17,6 @@ namespace reduction {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 // Below this size every mode is found by the dense solver.
 constexpr DofIndex kDenseLimit = 400;
 

@@ -11,10 +11,6 @@
 namespace tracked_vehicle_dynamics {
 namespace reduction {
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586;
-}  // namespace
-
 int eigenvaluesBelow(const SparseMatrix& stiffness, const SparseMatrix& mass, double lambda) {
   if (stiffness.rows() != stiffness.cols() || mass.rows() != stiffness.rows() ||
       mass.cols() != stiffness.cols())

@@ -13,7 +13,7 @@ namespace {
 
 void checkCoefficient(double value, const char* name) {
   if (!std::isfinite(value) || value < 0.0)
-    throw InputError(std::string("reducedDamping: ") + name + " = " + std::to_string(value) +
+    throw InputError(std::string("reducedDamping: ") + name + " = " + brief(value) +
                      " must be finite and non-negative");
 }
 

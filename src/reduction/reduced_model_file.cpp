@@ -4,10 +4,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/fnv1a.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 
 namespace tracked_vehicle_dynamics {
@@ -113,16 +116,11 @@ std::vector<Variable> toVariables(const ReducedModel& model) {
       texts("reduction_warnings", model.warnings)};
 }
 
-// FNV-1a, 64 bit: not cryptographic, but any changed, missing or reordered byte changes it.
-// Numbers enter as little-endian bytes whatever the host's order, so a file checks the same on
-// every machine (doc/reduced_model_file.md gives the encoding).
+// FNV-1a, 64 bit (io/fnv1a.h). Numbers enter as little-endian bytes whatever the host's order, so a
+// file checks the same on every machine (doc/reduced_model_file.md gives the encoding).
 class Checksum {
  public:
-  void add(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i)
-      hash_ = (hash_ ^ p[i]) * 1099511628211ull;
-  }
+  void add(const void* data, std::size_t bytes) { hash_ = io::fnv1a(data, bytes, hash_); }
   void add(const std::string& s) {
     add(static_cast<std::uint64_t>(s.size()));
     add(s.data(), s.size());
@@ -152,7 +150,7 @@ class Checksum {
   }
 
  private:
-  std::uint64_t hash_ = 14695981039346656037ull;
+  std::uint64_t hash_ = io::kFnv1aOffset;
 };
 
 std::string checksum(const std::vector<Variable>& variables) {
@@ -201,7 +199,7 @@ void checkSymmetric(const std::string& where, const char* name, const Matrix& a,
   const double asymmetry = (a - a.transpose()).cwiseAbs().maxCoeff();
   if (asymmetry > tolerance * scale)
     throw InputError(where + ": " + name + " is not symmetric (max |A - A^T| = " +
-                     std::to_string(asymmetry) + " for max |A| = " + std::to_string(scale) + ")");
+                     brief(asymmetry) + " for max |A| = " + brief(scale) + ")");
 }
 
 // Everything a usable model must satisfy; `where` starts each message (the file name).
@@ -252,8 +250,17 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
 
 double integer(const std::string& where, const char* name, double value) {
   if (value != std::floor(value) || std::abs(value) > kMaxExactInteger)
-    throw InputError(where + ": " + name + " holds " + std::to_string(value) + ", not an integer");
+    throw InputError(where + ": " + name + " holds " + brief(value) + ", not an integer");
   return value;
+}
+
+// The same, read into an int: a damaged file's 1e15 is refused here (a cast would be undefined
+// behaviour before the checksum is even compared).
+int intValue(const std::string& where, const char* name, double value) {
+  const double v = integer(where, name, value);
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    throw InputError(where + ": " + name + " holds " + brief(value) + ", beyond an int's range");
+  return static_cast<int>(v);
 }
 
 Vector vectorOf(const io::MatReader& in, const std::string& name) {
@@ -315,7 +322,7 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
   for (DofIndex i = 0; i < masters.rows(); ++i)
     model.masters.push_back(
         fem::DofRef{static_cast<NodeId>(integer(where, "masters", masters(i, 0))),
-                    static_cast<int>(integer(where, "masters", masters(i, 1)))});
+                    intValue(where, "masters", masters(i, 1))});
   model.master_positions = in.readMatrix("master_positions", masters.rows(), 3);
   model.master_groups = in.readStrings("master_groups", masters.rows());
   model.fixed_interface_frequencies_hz = vectorOf(in, "fixed_interface_frequencies_hz");
@@ -326,11 +333,11 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
     throw InputError(where + ": " + std::to_string(numbers.size()) + " selected modes but " +
                      std::to_string(frequencies.size()) + " frequencies");
   for (DofIndex i = 0; i < numbers.size(); ++i) {
-    const double number = integer(where, "selected_mode_numbers", numbers(i));
+    const int number = intValue(where, "selected_mode_numbers", numbers(i));
     if (number < 1)
       throw InputError(where + ": selected_mode_numbers has mode " + std::to_string(number));
-    model.selected_modes.push_back(SelectedMode{static_cast<int>(number) - 1, frequencies(i),
-                                                reasons[static_cast<std::size_t>(i)]});
+    model.selected_modes.push_back(
+        SelectedMode{number - 1, frequencies(i), reasons[static_cast<std::size_t>(i)]});
   }
   model.warnings = in.readStrings("reduction_warnings");
   checkConsistency(model, where, options.symmetry_tolerance);

@@ -14,6 +14,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/io/fnv1a.h"
 #include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/reduction/fixed_interface_modes.h"
 #include "tracked_vehicle_dynamics/reduction/global_modes.h"
@@ -547,9 +548,7 @@ std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant
   std::string name = std::string(vehicle::variantName(variant)) + "_" + description_hash;
   const std::string text = optionsText(options);
   if (text != optionsText(VehicleReductionOptions{})) {
-    std::uint64_t key = 14695981039346656037ull;  // FNV-1a
-    for (const char c : text)
-      key = (key ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    const std::uint64_t key = io::fnv1a(text);
     char hex[17];
     std::snprintf(hex, sizeof(hex), "%08llx", static_cast<unsigned long long>(key >> 32));
     name += std::string("_") + hex;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -180,23 +181,6 @@ class Reader {
   }
 
  private:
-  // Levenshtein distance (insertions, deletions, substitutions).
-  static std::size_t editDistance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-      row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= b.size(); ++j) {
-        const std::size_t above = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-        diagonal = above;
-      }
-    }
-    return row[b.size()];
-  }
-
   const ros::NodeHandle& nh_;
   mutable std::set<std::string> seen_;  // every key asked for
 };
@@ -323,6 +307,13 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   v.max_deceleration = in.nonNegative("max_deceleration", v.max_deceleration, "m/s^2");
 
   p.max_speed = in.positive("max_speed", p.max_speed, "m/s");
+  // The tools' limit (speed_profile.h): beyond it the model describes nothing a vehicle does.
+  if (p.max_speed > dynamics::kMaxSpeedKmh / 3.6)
+    throw in.error("max_speed", "must be at most " + brief(dynamics::kMaxSpeedKmh / 3.6) +
+                                    " m/s (" + brief(dynamics::kMaxSpeedKmh) +
+                                    " km/h, as tvd's "
+                                    "--speed-kmh), got " +
+                                    brief(p.max_speed));
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
 

@@ -75,8 +75,9 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
                     dynamics::OutputQuantity::Acceleration};
   sim.generalized_force = model.gravity_load;
   if (sim.method == dynamics::DiscretizationMethod::ModalDecoupled)
-    sim.max_mode_frequency_hz =
-        options.max_mode_frequency_hz < 0 ? 0.5 * options.rate : options.max_mode_frequency_hz;
+    sim.max_mode_frequency_hz = options.max_mode_frequency_hz < 0
+                                    ? dynamics::nyquistCutoff(sim.time_step)
+                                    : options.max_mode_frequency_hz;
   return sim;
 }
 

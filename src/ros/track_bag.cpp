@@ -33,11 +33,13 @@ void require(bool valid, const std::string& field, double value, const std::stri
 constexpr double kMaxMessages = 1e7;
 
 void checkOptions(const TrackBagOptions& o) {
-  require(std::isfinite(o.speed) && o.speed > 0.0 && o.speed <= kMaxTrackBagSpeed, "speed", o.speed,
-          "in (0, " + brief(kMaxTrackBagSpeed) + "] m/s (200 km/h)");
+  require(
+      std::isfinite(o.speed) && o.speed > 0.0 && o.speed <= kMaxTrackBagSpeed, "speed", o.speed,
+      "in (0, " + brief(kMaxTrackBagSpeed) + "] m/s (" + brief(dynamics::kMaxSpeedKmh) + " km/h)");
   if (o.speed_profile && o.speed_profile->maxSpeed() > kMaxTrackBagSpeed)
     throw InputError("track bag: the speed profile reaches " +
-                     beyond(o.speed_profile->maxSpeed() * 3.6, 200.0) + " km/h; at most 200 km/h");
+                     beyond(o.speed_profile->maxSpeed() * 3.6, dynamics::kMaxSpeedKmh) +
+                     " km/h; at most " + brief(dynamics::kMaxSpeedKmh) + " km/h");
   require(std::isfinite(o.patch_length) && o.patch_length > 0.0, "patch_length", o.patch_length,
           "> 0 m");
   require(std::isfinite(o.lookahead) && o.lookahead >= 0.0, "lookahead", o.lookahead, ">= 0 m");

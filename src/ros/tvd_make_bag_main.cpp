@@ -7,9 +7,11 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <ros/time.h>
 
+#include "command_line_errors.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
@@ -61,7 +63,10 @@ int main(int argc, char** argv) {
     // status 2 as tvd does.
     if (e.get_exit_code() == 0)
       return app.exit(e);
-    std::cerr << "tvd_make_bag: error: " << e.what() << "\n";
+    std::cerr << "tvd_make_bag: error: "
+              << tracked_vehicle_dynamics::tools::describeParseError(
+                     app, e, std::vector<std::string>(argv + 1, argv + argc), "tvd_make_bag")
+              << "\n";
     return 2;
   }
   // Checked in the unit given (writeTrackBag would say "m/s" of a km/h argument), and the range

@@ -14,7 +14,6 @@ namespace tracked_vehicle_dynamics {
 namespace terrain {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // G_d(n0) of class A [m^3]; each further class is x4 (ISO 8608, the classes' geometric means).
 constexpr double kClassAReferencePsd = 16e-6;
 constexpr double kClassRatio = 4.0;

@@ -16,6 +16,12 @@ namespace {
 // Relative slack on lengths compared in the searches (stations are sums of rounded products).
 constexpr double kSlack = 1e-9;
 
+// The longest gap bridged between patches of these spacings [m]: kBridgeFactor times the larger,
+// with the slack. The one rule behind bridge(), the searches and dropsPatchEnding().
+double bridgeableGap(double spacing) {
+  return TerrainBuffer::kBridgeFactor * spacing * (1.0 + kSlack);
+}
+
 std::string format(double value) {
   std::ostringstream out;
   out << value;
@@ -99,7 +105,7 @@ const TerrainBuffer::Patch* TerrainBuffer::containing(double x) const {
 bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) const {
   *left = nullptr;
   *right = nullptr;
-  const double gap_limit = kBridgeFactor * max_spacing_ * (1.0 + kSlack);
+  const double gap_limit = bridgeableGap(max_spacing_);
   for (auto it = patches_.upper_bound(x); it != patches_.begin();) {
     --it;
     if (it->first < x - max_length_ - gap_limit) break;
@@ -116,7 +122,7 @@ bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) co
     if (*right == nullptr || it->second.sequence > (*right)->sequence) *right = &it->second;
   }
   const double gap = (*right)->grid.startStation() - (*left)->end();
-  return gap <= kBridgeFactor * std::max((*left)->spacing, (*right)->spacing) * (1.0 + kSlack);
+  return gap <= bridgeableGap(std::max((*left)->spacing, (*right)->spacing));
 }
 
 const Terrain* TerrainBuffer::gridFor(double x, double* from, double* until) const {
@@ -184,7 +190,7 @@ double TerrainBuffer::heightBefore(double x, double y) const {
 }
 
 bool TerrainBuffer::dropsPatchEnding(double end, double spacing, double station) {
-  return end < station - kBridgeFactor * spacing * (1.0 + kSlack);
+  return end < station - bridgeableGap(spacing);
 }
 
 void TerrainBuffer::dropBehind(double station) {
@@ -242,8 +248,7 @@ void TerrainBuffer::updateExtents() {
   double reach = patches_.begin()->first;
   double reach_spacing = patches_.begin()->second.spacing;
   for (const auto& [start, patch] : patches_) {
-    const double gap_limit =
-        kBridgeFactor * std::max(reach_spacing, patch.spacing) * (1.0 + kSlack);
+    const double gap_limit = bridgeableGap(std::max(reach_spacing, patch.spacing));
     if (start > reach + gap_limit) break;
     if (patch.end() > reach) {
       reach = patch.end();

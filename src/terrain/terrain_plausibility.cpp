@@ -10,7 +10,7 @@ namespace terrain {
 namespace {
 
 std::string slopeText(const SteepestSlope& s) {
-  const double degrees = std::atan(s.slope) * 180.0 / M_PI;
+  const double degrees = std::atan(s.slope) * kRadToDegree;
   return "slopes up to " + brief(s.slope) + " m/m (" + brief(std::round(degrees * 10) / 10) +
          " deg) at x = " + brief(s.station) + " m, y = " + brief(s.lateral) +
          " m, steeper than ground a tracked vehicle drives on (the paper's steepest test track, "

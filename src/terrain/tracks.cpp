@@ -14,7 +14,6 @@ namespace tracked_vehicle_dynamics {
 namespace terrain {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 const char* const kLongHill = "long_hill";
 const char* const kSeparatedWaves = "separated_waves";
 const char* const kOopWaves = "oop_waves";

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "tracked_vehicle_dynamics/error.h"
+
 namespace tracked_vehicle_dynamics {
 namespace tools {
 namespace {
@@ -53,26 +55,12 @@ std::string nearestOption(const CLI::App& command, const std::string& name) {
 
 }  // namespace
 
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  // The classic two-row dynamic programme: d[i][j] = edits turning a[0..i) into b[0..j).
-  std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j)
-    previous[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    current[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j)
-      current[j] = std::min(
-          {previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    std::swap(previous, current);
-  }
-  return previous[b.size()];
-}
-
 std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
-                               const std::vector<std::string>& args) {
+                               const std::vector<std::string>& args, const std::string& program) {
   std::string message = error.what();
   const std::vector<CLI::App*> parsed = app.get_subcommands();
-  if (parsed.empty()) {
+  const bool has_subcommands = !app.get_subcommands({}).empty();
+  if (has_subcommands && parsed.empty()) {
     if (!dynamic_cast<const CLI::RequiredError*>(&error))
       return message;
     std::string known;  // the registered subcommands, in registration order
@@ -81,13 +69,15 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
     if (!args.empty() && args[0][0] != '-')
       return "unknown subcommand '" + args[0] + "' (one of: " + known + ")";
     return (args.empty() ? std::string() : "unknown option " + args[0] + ": ") +
-           "a subcommand is required (one of: " + known + "; tvd --help lists them)";
+           "a subcommand is required (one of: " + known + "; " + program + " --help lists them)";
   }
-  const CLI::App& command = *parsed.front();
-  const std::string prefix = command.get_name() + ": ";
-  const std::string see = " (tvd " + command.get_name() + " --help lists the options)";
+  // The command whose options were given: the subcommand, or the program itself.
+  const CLI::App& command = has_subcommands ? *parsed.front() : app;
+  const std::string prefix = has_subcommands ? command.get_name() + ": " : std::string();
+  const std::string see = " (" + program + (has_subcommands ? " " + command.get_name() : "") +
+                          " --help lists the options)";
   // An unknown option first: whatever else CLI11 found follows from it.
-  bool after_command = false;
+  bool after_command = !has_subcommands;
   for (const std::string& token : args) {
     if (!after_command) {
       after_command = token == command.get_name();

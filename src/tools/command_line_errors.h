@@ -1,6 +1,6 @@
-// CLI11's parse errors as the tool's one-line messages. CLI11 checks required options before
-// unknown ones, so a misspelt option reads "--track is required"; its conversion and count
-// errors name the C++ side ("Could not convert", "1 required INT:INT ... missing"). The user
+// CLI11's parse errors as the tools' one-line messages (tvd, tvd_make_bag). CLI11 checks required
+// options before unknown ones, so a misspelt option reads "--track is required"; its conversion and
+// count errors name the C++ side ("Could not convert", "1 required INT:INT ... missing"). The user
 // typed an option: they are told which one, what it wanted, and the nearest known spelling.
 #pragma once
 
@@ -12,15 +12,14 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// The message for `error`, thrown by app.parse(args) (args: argv without the program name).
-/// Checked in order: an unknown subcommand; an unknown option of the parsed subcommand (with
-/// the nearest option name when one is within two edits or starts with it); then CLI11's error
-/// in plain words. One line.
+/// The message for `error`, thrown by app.parse(args) (args: argv without the program name;
+/// `program` names it in the hints: "tvd", "tvd_make_bag"). Checked in order: an unknown
+/// subcommand (for an app with subcommands); an unknown option of the parsed subcommand, or of
+/// the app without subcommands (with the nearest option name when one is within two edits or
+/// starts with it); then CLI11's error in plain words. One line, prefixed with the subcommand's
+/// name ("simulate: ") when there is one.
 std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
-                               const std::vector<std::string>& args);
-
-/// The Levenshtein distance between a and b (insertions, deletions, substitutions).
-std::size_t editDistance(const std::string& a, const std::string& b);
+                               const std::vector<std::string>& args, const std::string& program);
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

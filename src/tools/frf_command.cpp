@@ -14,6 +14,7 @@
 #include "reduction_options.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
+#include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
@@ -128,11 +129,17 @@ Vector frequencyGrid(double max_hz, double step_hz) {
 
 void run(const FrfOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
-  if (!(opt.speed_kmh >= 0) || opt.speed_kmh > 200)
-    throw InputError("frf: --speed-kmh must be in [0, 200] (0: synchronous), got " +
-                     beyond(opt.speed_kmh, 200.0));
-  if (!(opt.max_hz > 0) || !(opt.step_hz > 0) || opt.max_hz / opt.step_hz > 1e6)
-    throw InputError("frf: --max-hz and --step-hz must be positive, with at most 1e6 points");
+  if (!(opt.speed_kmh >= 0) || opt.speed_kmh > dynamics::kMaxSpeedKmh)
+    throw InputError("frf: --speed-kmh must be in [0, " + brief(dynamics::kMaxSpeedKmh) +
+                     "] (0: synchronous), got " + beyond(opt.speed_kmh, dynamics::kMaxSpeedKmh));
+  if (!(opt.max_hz > 0) || !std::isfinite(opt.max_hz))
+    throw InputError("frf: --max-hz must be positive and finite, got " + brief(opt.max_hz));
+  if (!(opt.step_hz > 0))
+    throw InputError("frf: --step-hz must be positive, got " + brief(opt.step_hz));
+  if (opt.max_hz / opt.step_hz > 1e6)
+    throw InputError("frf: --max-hz " + brief(opt.max_hz) + " at --step-hz " + brief(opt.step_hz) +
+                     " gives " + brief(std::floor(opt.max_hz / opt.step_hz) + 1) +
+                     " frequencies; at most 1e6");
   const Vector hz = frequencyGrid(opt.max_hz, opt.step_hz);
 
   // The model: its outputs, input stations and a way to evaluate the FRF.
@@ -312,17 +319,16 @@ void registerFrfCommand(CLI::App& app) {
                   "full (FE modes + static residual)")
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
-  cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz] (default 50)")->check(positiveNumber());
+  cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz]")->check(positiveNumber());
   cmd->add_option("--step-hz", opt->step_hz,
-                  "frequency step [Hz] (default 0.05; at most --max-hz; when --max-hz is not a "
+                  "frequency step [Hz] (at most --max-hz; when --max-hz is not a "
                   "multiple of it, the grid ends with --max-hz itself)")
       ->check(positiveNumber());
   // Up to 100 Hz (twice the FRF band): the modes above enter statically, and above 100 Hz the
   // tracked model's chain-link modes make the Lanczos run take minutes (200 Hz: > 4 min).
   CLI::Option* max_mode =
-      cmd->add_option(
-             "--max-mode-hz", opt->max_mode_hz,
-             "full model: dynamic modes up to this frequency [Hz] (default 100, at most 100)")
+      cmd->add_option("--max-mode-hz", opt->max_mode_hz,
+                      "full model: dynamic modes up to this frequency [Hz] (at most 100)")
           ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 100.0; },
                                     "a number in (0, 100] Hz", "NUMBER"));
   opt->reduced.addTo(cmd);

@@ -98,7 +98,7 @@ void run(const RideOptions& opt) {
   sim_options.time_step = opt.dt;
   sim_options.hold = dynamics::InputHold::FirstOrder;
   sim_options.method = dynamics::DiscretizationMethod::ModalDecoupled;
-  sim_options.max_mode_frequency_hz = 0.5 / opt.dt;  // as tvd simulate: modes above Nyquist quasi-static
+  sim_options.max_mode_frequency_hz = dynamics::nyquistCutoff(opt.dt);  // as tvd simulate
   sim_options.quantities = {dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = reduced.model.gravity_load;
   dynamics::Simulator sim(sys, sim_options);
@@ -141,8 +141,8 @@ void run(const RideOptions& opt) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const dynamics::ComfortMeter& z = comfort[i].vertical();
       r.points.push_back({z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
-                          comfort[i].totalValue(), peaks[i].peakUp() / dynamics::kStandardGravity,
-                          peaks[i].peakAbsolute() / dynamics::kStandardGravity});
+                          comfort[i].totalValue(), peaks[i].peakUp() / kStandardGravity,
+                          peaks[i].peakAbsolute() / kStandardGravity});
     }
     return r;
   });
@@ -318,17 +318,16 @@ void registerRideCommand(CLI::App& app) {
           "--independent-sides", opt->independent_sides,
           "--iso8608: left and right tracks on independent profiles (default: one profile "
           "across the width)"),
-      cmd->add_option("--waviness", opt->waviness,
-                      "--iso8608: PSD slope w in G_d(n0) (n/n0)^-w (default 2)")
+      cmd->add_option("--waviness", opt->waviness, "--iso8608: PSD slope w in G_d(n0) (n/n0)^-w")
           ->check(positiveNumber()),
       cmd->add_option("--min-frequency", opt->min_frequency,
-                      "--iso8608: lowest spatial frequency [cycles/m] (default 0.011)")
+                      "--iso8608: lowest spatial frequency [cycles/m]")
           ->check(positiveNumber()),
       cmd->add_option("--max-frequency", opt->max_frequency,
-                      "--iso8608: highest spatial frequency [cycles/m] (default 2.83)")
+                      "--iso8608: highest spatial frequency [cycles/m]")
           ->check(positiveNumber()),
       cmd->add_option("--points-per-decade", opt->points_per_decade,
-                      "--iso8608: frequencies per decade of the integration grid (default 400)")
+                      "--iso8608: frequencies per decade of the integration grid")
           ->check(numberIn(10.0, 1e5)),
       cmd->add_option(
              "--psd-out", opt->psd_out,

@@ -29,6 +29,7 @@
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_monitor.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -184,19 +185,19 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
 
 void run(const SimulateOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
-  if (!(opt.speed_kmh > 0) || opt.speed_kmh > 200)
-    throw InputError("simulate: --speed-kmh must be in (0, 200], got " +
-                     beyond(opt.speed_kmh, 200.0));
+  if (!(opt.speed_kmh > 0) || opt.speed_kmh > dynamics::kMaxSpeedKmh)
+    throw InputError("simulate: --speed-kmh must be in (0, " + brief(dynamics::kMaxSpeedKmh) +
+                     "], got " + beyond(opt.speed_kmh, dynamics::kMaxSpeedKmh));
   if (opt.method != "modal" && opt.max_mode_hz >= 0)
     throw InputError("simulate: --max-mode-hz applies to --method modal only (the exact method "
                      "integrates every mode)");
   std::optional<dynamics::SpeedProfile> profile;
   if (!opt.speed_profile.empty()) {
     profile = dynamics::loadSpeedProfile(opt.speed_profile);
-    if (profile->maxSpeed() * 3.6 > 200)
-      throw InputError(opt.speed_profile +
-                       ": speeds above 200 km/h are outside the model's use (it reaches " +
-                       beyond(profile->maxSpeed() * 3.6, 200.0) + " km/h)");
+    if (profile->maxSpeed() * 3.6 > dynamics::kMaxSpeedKmh)
+      throw InputError(opt.speed_profile + ": speeds above " + brief(dynamics::kMaxSpeedKmh) +
+                       " km/h are outside the model's use (it reaches " +
+                       beyond(profile->maxSpeed() * 3.6, dynamics::kMaxSpeedKmh) + " km/h)");
   }
   // Plausibility (terrain_plausibility.h): said before any work, run all the same.
   std::vector<std::string> warnings;  // printed on stderr as they arise, and in the JSON
@@ -270,7 +271,8 @@ void run(const SimulateOptions& opt) {
                             dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = gravity;
   if (sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled && !full)
-    sim_options.max_mode_frequency_hz = opt.max_mode_hz < 0 ? 0.5 / opt.dt : opt.max_mode_hz;
+    sim_options.max_mode_frequency_hz =
+        opt.max_mode_hz < 0 ? dynamics::nyquistCutoff(opt.dt) : opt.max_mode_hz;
   const auto setup_start = Clock::now();
   // One modal decomposition for the run and, below, its ground contact forces.
   std::optional<dynamics::ModalSystem> modal;

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -64,9 +65,9 @@ std::vector<double> parseSpeedSweep(const std::string& text) {
   }
   if (speeds.empty()) reject(text, "no speeds");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
-    if (!(speeds[i] > 0.0 && speeds[i] <= 200.0)) {
+    if (!(speeds[i] > 0.0 && speeds[i] <= dynamics::kMaxSpeedKmh)) {
       std::ostringstream m;
-      m << "speed " << speeds[i] << " km/h is outside (0, 200]";
+      m << "speed " << speeds[i] << " km/h is outside (0, " << dynamics::kMaxSpeedKmh << "]";
       reject(text, m.str());
     }
     if (i > 0 && !(speeds[i] > speeds[i - 1])) reject(text, "the speeds must be strictly increasing");

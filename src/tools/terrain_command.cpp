@@ -135,22 +135,24 @@ void registerTerrainCommand(CLI::App& app) {
   track->excludes(iso);
   // The random road's options need --iso8608 (CLI11 names both when one comes without the other).
   for (CLI::Option* o :
-       {cmd->add_option("--length", opt->length, "random road: length [m] (default 200)")->check(positiveNumber()),
-        cmd->add_option("--width", opt->width, "random road: width [m] (default 5)")->check(positiveNumber()),
-        cmd->add_option("--spacing", opt->spacing, "random road: station step [m] (default 0.05)")
+       {cmd->add_option("--length", opt->length, "random road: length [m]")
+            ->check(positiveNumber()),
+        cmd->add_option("--width", opt->width, "random road: width [m]")->check(positiveNumber()),
+        cmd->add_option("--spacing", opt->spacing, "random road: station step [m]")
             ->check(positiveNumber()),
         // Up to 2^53: every seed is then exact in the JSON summary (a double in most readers).
-        cmd->add_option("--seed", opt->seed, "random road: seed of the phases, 0 .. 2^53 (default 1)")
+        cmd->add_option("--seed", opt->seed, "random road: seed of the phases, 0 .. 2^53")
             ->check(unsignedIn(std::uint64_t{1} << 53)),
         cmd->add_flag("--independent-sides", opt->independent_sides,
-                      "random road: left and right halves independent (default: one profile across the width)"),
-        cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m] (default 5)")
+                      "random road: left and right halves independent (default: one profile across "
+                      "the width)"),
+        cmd->add_option("--taper", opt->taper, "random road: raised-cosine taper at each end [m]")
             ->check(nonNegativeNumber()),
         cmd->add_option("--min-frequency", opt->min_frequency,
-                        "random road: lowest spatial frequency [cycles/m] (default 0.011)")
+                        "random road: lowest spatial frequency [cycles/m]")
             ->check(positiveNumber()),
         cmd->add_option("--max-frequency", opt->max_frequency,
-                        "random road: highest spatial frequency [cycles/m] (default 2.83)")
+                        "random road: highest spatial frequency [cycles/m]")
             ->check(positiveNumber())})
     o->needs(iso);
   cmd->add_option("--out", opt->out_file, "terrain file to write (.csv, .yaml or .yml)")

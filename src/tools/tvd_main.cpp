@@ -36,8 +36,8 @@ int main(int argc, char** argv) {
     // on one line like every other error (CLI11's own report adds "Run with --help ...").
     if (e.get_exit_code() == 0)
       return app.exit(e);
-    std::string message =
-        tvd::tools::describeParseError(app, e, std::vector<std::string>(argv + 1, argv + argc));
+    std::string message = tvd::tools::describeParseError(
+        app, e, std::vector<std::string>(argv + 1, argv + argc), "tvd");
     for (char& c : message)
       if (c == '\n')
         c = ' ';

@@ -10,7 +10,6 @@ namespace vehicle {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
 /// Bisection stops when the loop length matches the chain to this length [m].
 constexpr double kClosureTolerance = 1e-10;
 

@@ -11,7 +11,6 @@ namespace vehicle {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Calibration stops when every stiffness matches its target to this relative error.
 constexpr double kCalibrationTolerance = 1e-9;
 constexpr int kMaxCalibrationIterations = 100;

@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/fnv1a.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
@@ -19,7 +20,6 @@ namespace vehicle {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegree = kPi / 180.0;
 /// Relative tolerance of the chain-length checks (pitch x count against the stated lengths).
 constexpr double kLengthTolerance = 1e-3;
@@ -622,13 +622,7 @@ std::string canonicalDescription(const VehicleDescription& d) {
 }
 
 std::uint64_t descriptionHash(const VehicleDescription& d) {
-  // FNV-1a, 64 bit.
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char ch : canonicalDescription(d)) {
-    hash ^= ch;
-    hash *= 1099511628211ull;
-  }
-  return hash;
+  return io::fnv1a(canonicalDescription(d));
 }
 
 std::string descriptionHashHex(const VehicleDescription& d) {

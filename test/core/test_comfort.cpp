@@ -18,7 +18,6 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // ISO 2631-1 tabulates |W| x 1000 rounded to integers.
 constexpr double kTableTolerance = 0.002;
 // Discretised vs analogue magnitude: matched up to fs/10, bilinear (pre-warped) up to fs/30.

@@ -12,11 +12,11 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 
 namespace tvd = tracked_vehicle_dynamics;
+using tvd::kPi;
 using tvd::fem::Model;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kE = 210e9, kG = 81e9, kRho = 7850.0;
 constexpr double kWidth = 0.05, kHeight = 0.02;  // rectangular section [m]
 constexpr double kLength = 2.0;

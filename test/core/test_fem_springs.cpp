@@ -11,11 +11,11 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 
 namespace tvd = tracked_vehicle_dynamics;
+using tvd::kPi;
 using tvd::fem::Model;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRelTolerance = 1e-9;
 
 tvd::fem::Spring springAlong(tvd::NodeId a, tvd::NodeId b, int direction, double k) {

@@ -15,7 +15,6 @@ namespace {
 
 constexpr double kClosedFormTolerance = 1e-10;
 constexpr double kModalTolerance = 1e-8;  // direct vs modal, entry by entry, relative
-constexpr double kTwoPi = 6.283185307179586;
 
 // max over entries of |a - b| / |b|, ignoring entries of b below `floor` times its peak (zeros
 // such as the acceleration at 0 Hz).

@@ -15,8 +15,6 @@ namespace tracked_vehicle_dynamics {
 namespace reduction {
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586;
-
 // K phi = lambda M phi with the eigenvalues (2 pi f)^2 of `hz`: M = diag(m) with unequal masses,
 // K = M^1/2 Q diag(lambda) Q^T M^1/2 with Q a random orthogonal matrix, so every DOF is coupled
 // and a repeated eigenvalue's vectors are not coordinate axes.

@@ -21,7 +21,6 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kExact = 1e-12;
 
 TEST(Butterworth, AnalogueMagnitudeIsMaximallyFlat) {

@@ -25,7 +25,6 @@ constexpr double kNewmarkAgreement = 5e-3;  // Newmark (h/50) vs exact simulator
 // Rounding of Phi z + Gamma w + f_d, amplified by 1 / (1 - |lambda|) of the slowest mode over
 // 200 steps: ~1e-10 of the state (a wrong offset or gain gives 1e-3 and more).
 constexpr double kEquilibriumTolerance = 3e-10;
-constexpr double kTwoPi = 6.283185307179586;
 
 const std::vector<OutputQuantity> kAllQuantities = {
     OutputQuantity::Displacement, OutputQuantity::Velocity, OutputQuantity::Acceleration};

@@ -23,9 +23,6 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2.0 * kPi;
-
 SpectralRide rideOf(const SecondOrderSystem& s, const std::vector<DofIndex>& rows,
                     const RoadSpectrum& road, bool keep_psd = false) {
   SpectralRideOptions options;

@@ -16,7 +16,6 @@ namespace {
 
 constexpr double kExactTolerance = 1e-9;  // exact discretisation vs closed form
 constexpr double kIdentityTolerance = 1e-12;
-constexpr double kTwoPi = 6.283185307179586;
 
 // One step of a discrete StateSpace (either hold) from z with inputs w (start), w_next (end).
 Vector advance(const StateSpace& d, const Vector& z, const Vector& w, const Vector& w_next) {

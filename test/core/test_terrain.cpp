@@ -36,7 +36,6 @@ namespace tracked_vehicle_dynamics {
 namespace terrain {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Exact arithmetic up to rounding of sums of a few thousand terms.
 constexpr double kRoundoff = 1e-12;
 // Smoothing the piecewise-linear interpolant of a sinusoid sampled every dx instead of the

@@ -339,6 +339,19 @@ TEST(Brief, ShowsAGivenValueExactlyAndAComputedOneShort) {
   EXPECT_EQ(beyond(200.0, 200.0), "200");
 }
 
+// editDistance(), the "did you mean" of the node's parameters and of the command lines.
+TEST(EditDistance, CountsInsertionsDeletionsAndSubstitutions) {
+  EXPECT_EQ(editDistance("", ""), 0u);
+  EXPECT_EQ(editDistance("", "abc"), 3u);
+  EXPECT_EQ(editDistance("abc", ""), 3u);
+  EXPECT_EQ(editDistance("track", "track"), 0u);
+  EXPECT_EQ(editDistance("trak", "track"), 1u);  // one insertion
+  EXPECT_EQ(editDistance("speed_timout", "speed_timeout"), 1u);
+  EXPECT_EQ(editDistance("kitten", "sitting"), 3u);  // the textbook case
+  EXPECT_EQ(editDistance("sitting", "kitten"), 3u);  // symmetric
+  EXPECT_EQ(editDistance("flaw", "lawn"), 2u);
+}
+
 }  // namespace
 }  // namespace fem
 }  // namespace tracked_vehicle_dynamics

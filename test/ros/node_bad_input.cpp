@@ -269,6 +269,16 @@ TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
       << run.output;
 }
 
+// ~max_speed beyond the tools' 200 km/h: refused, with both units.
+TEST(NodeBadParameters, MaxSpeedBeyondTheModelsRangeIsRefused) {
+  const NodeRun run = runNamed("bad_max_speed", "_max_speed:=100.0");
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find("/bad_max_speed/max_speed: must be at most 55.5556 m/s (200 km/h, as "
+                            "tvd's --speed-kmh), got 100"),
+            std::string::npos)
+      << run.output;
+}
+
 // ~imu_points: each entry a published point frame, once; every bad entry is named.
 TEST(NodeBadParameters, BadImuPointsAreNamed) {
   // Lists cannot be given on a node's command line (roscpp reads scalars there): they go on the

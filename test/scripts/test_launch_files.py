@@ -307,7 +307,11 @@ class LaunchFilesTest(unittest.TestCase):
 
         for args, expected in [(["--speed-kmh", "500", "--out", "x.bag"],
                                 "tvd_make_bag: error: --speed-kmh must be in (0, 200], got 500"),
-                               (["--speed-kmh", "abc", "--out", "x.bag"], "tvd_make_bag: error: "),
+                               (["--speed-kmh", "abc", "--out", "x.bag"],
+                                "tvd_make_bag: error: --speed-kmh: 'abc' is not a number"),
+                               (["--trak", "long_hill", "--out", "x.bag"],
+                                "tvd_make_bag: error: unknown option --trak (did you mean --track?)"),
+                               (["--out"], "tvd_make_bag: error: --out needs a value after it"),
                                (["--speed-kmh", "30"], "tvd_make_bag: error: --out is required")]:
             result = make_bag(*args)
             self.assertEqual(result.returncode, 2, result.stdout + result.stderr)

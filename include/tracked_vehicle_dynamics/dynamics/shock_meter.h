@@ -14,12 +14,10 @@
 #include <optional>
 
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/types.h"  // kStandardGravity, the "g" of the limits
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
-
-/// Standard gravity [m/s^2], the "g" of acceleration limits.
-constexpr double kStandardGravity = 9.80665;
 
 struct ShockOptions {
   int lowpass_order = 4;           ///< Butterworth order, 1..12

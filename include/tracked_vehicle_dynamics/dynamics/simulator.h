@@ -66,6 +66,13 @@ struct SimulatorOptions {
   double max_mode_frequency_hz = 0.0;
 };
 
+/// The cut-off tvd simulate, tvd ride and the node use unless told otherwise [Hz]: the Nyquist
+/// frequency 1/(2 h) of the step h. A mode above it is not resolved at that step anyway; made
+/// quasi-static, it keeps its exact static response and drops only its inertia.
+inline double nyquistCutoff(double time_step) {
+  return 0.5 / time_step;
+}
+
 class SimulatorEngine;
 
 class Simulator {

@@ -131,7 +131,6 @@ class SpectralRide {
   Matrix output_;         ///< rows of H Φ [n_outputs x modes]
   RoadSpectrum road_;
   SpectralRideOptions options_;
-  double reference_psd_ = 0.0;  ///< G_d(n0) [m^3]
 };
 
 }  // namespace dynamics

@@ -12,6 +12,11 @@
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
+/// The fastest travel the tools accept [km/h]: a high-speed tracked vehicle tops out near 70 km/h,
+/// and beyond 200 km/h the linear, bonded-ground model describes nothing a vehicle does. One limit
+/// for tvd simulate, frf and ride and tvd_make_bag.
+constexpr double kMaxSpeedKmh = 200.0;
+
 class SpeedProfile {
  public:
   /// time [s]: at least two samples, the first 0, strictly increasing, finite; speed [m/s]: one

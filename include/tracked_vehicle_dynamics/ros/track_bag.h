@@ -26,7 +26,7 @@ namespace ros_layer {
 
 /// The fastest a bag drives [m/s]: 200 km/h, the range of `tvd simulate --speed-kmh` (the model
 /// is not meant for more).
-constexpr double kMaxTrackBagSpeed = 200.0 / 3.6;
+constexpr double kMaxTrackBagSpeed = dynamics::kMaxSpeedKmh / 3.6;
 /// The longest run a bag holds [s]: it is replayed in real time, and `tvd simulate` stops at 1e7
 /// steps of its default 1 ms; a longer one is a crawl or a stray far station, not a test drive.
 constexpr double kMaxTrackBagDuration = 1e4;

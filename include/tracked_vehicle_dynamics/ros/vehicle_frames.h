@@ -31,7 +31,7 @@
 // and a point rigid with the hull at p (at t + R p in odom) accelerates at
 //   a_p = u_G'' + R (alpha_b x r + omega_b x (omega_b x r)),  r = p - p_G,
 // the exact second derivative of its published position (the travel acceleration aside: the
-// station advances at the speed last given, so it has none between speed messages). The linear
+// caller adds a = dv/dt along the path's x while the speed slews, online_vehicle.h). The linear
 // model's own point acceleration u_G'' + theta'' x r drops the centripetal and Euler-rate terms
 // (about 2 m/s^2 at the sensor mount on the long hill at 30 km/h).
 //

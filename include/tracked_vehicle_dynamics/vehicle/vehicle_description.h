@@ -53,7 +53,7 @@ struct SuspensionDescription {
   double torsion_bar_stiffness = 5.2e5;  ///< k_t [N m/rad]
   double arm_length = 0.58;              ///< a, pivot to wheel centre [m]
   /// beta, static arm angle, pivot above the wheel centre [rad]
-  double arm_angle = 9.0 * (3.14159265358979323846 / 180.0);
+  double arm_angle = 9.0 * (kPi / 180.0);
   double pivot_y = 0.98;                  ///< |y| of the pivots (hull side walls) [m]
   double contact_stiffness = 2e10;        ///< k_w, normal to the track [N/m]
   double contact_shear_stiffness = 2e10;  ///< along (patch) and across (guide horn) [N/m]
