@@ -311,9 +311,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   if (p.max_speed > dynamics::kMaxSpeedKmh / 3.6)
     throw in.error("max_speed", "must be at most " + brief(dynamics::kMaxSpeedKmh / 3.6) +
                                     " m/s (" + brief(dynamics::kMaxSpeedKmh) +
-                                    " km/h, as tvd's "
-                                    "--speed-kmh), got " +
-                                    brief(p.max_speed));
+                                    " km/h, as tvd's --speed-kmh), got " + brief(p.max_speed));
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
 

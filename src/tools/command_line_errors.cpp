@@ -30,6 +30,12 @@ std::string wanted(const CLI::Option* option) {
   return "a value";
 }
 
+/// Whether an option takes an integer (CLI11's INT or UINT type).
+bool takesInteger(const CLI::Option* option) {
+  const std::string type = option->get_type_name();
+  return type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0;
+}
+
 /// The text of `message` before the first ':' (CLI11 puts the option's name there).
 std::string leadingName(const std::string& message) {
   const std::size_t colon = message.find(':');
@@ -113,7 +119,7 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
     if (message.find("missing") != std::string::npos)
       return prefix + name + " needs " + wanted(option) + " after it";
   } else if (dynamic_cast<const CLI::ValidationError*>(&error) && option != nullptr &&
-             wanted(option) != "a number" && wanted(option) != "a value") {
+             takesInteger(option)) {
     // A range check on an integer option runs on the text: "1.5" reads "not in range 1 to 500".
     for (std::size_t i = 0; i < args.size(); ++i) {
       std::string value;

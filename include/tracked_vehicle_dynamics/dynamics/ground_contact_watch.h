@@ -14,7 +14,7 @@
 //
 // Cost per check: O(n_contacts) on a state the caller provides: the full [q; q'], or only the
 // contacts' coordinates with the contacts numbering them (the node: Simulator::coordinates(),
-// O(n_contacts x (modes + inputs)), 40-60 us on the tracked model; Simulator::state() is O(n^2)).
+// O(n_contacts x (modes + inputs)), 30-60 us on the tracked model; Simulator::state() is O(n^2)).
 // A check every few steps, not every step. No allocation after construction.
 #pragma once
 
