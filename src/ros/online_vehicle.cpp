@@ -82,7 +82,8 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
 }
 
 OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,
-                             const OnlineVehicleOptions& options)
+                             const OnlineVehicleOptions& options,
+                             const std::vector<int>& contact_groups)
     : geometry_(std::move(geometry)),
       options_(options),
       time_step_(1.0 / options.rate),
@@ -134,8 +135,14 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   // unchecked, and says so. The travel input of a slewing vehicle is no contact.
   // The watch reads only the contacts' coordinates: the simulator recovers those rows of the
   // state alone (Simulator::coordinates), and the watch's contacts index them in that order.
+  if (!contact_groups.empty() && static_cast<int>(contact_groups.size()) != sampler_.size())
+    throw InputError("online vehicle: " + std::to_string(contact_groups.size()) +
+                     " contact groups for " + std::to_string(sampler_.size()) + " road inputs");
   try {
     std::vector<dynamics::GroundContact> contacts = dynamics::groundContacts(model.system);
+    if (!contact_groups.empty())
+      for (dynamics::GroundContact& c : contacts)
+        c.group = contact_groups[static_cast<std::size_t>(c.input)];
     std::vector<DofIndex> rows;
     std::vector<DofIndex> index_of(static_cast<std::size_t>(simulator_.stateCount() / 2), -1);
     for (dynamics::GroundContact& c : contacts) {

@@ -51,6 +51,7 @@
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/duration_statistics.h"
@@ -58,6 +59,7 @@
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tvd = tracked_vehicle_dynamics;
 namespace rl = tracked_vehicle_dynamics::ros_layer;
@@ -81,6 +83,9 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   const tvd::vehicle::VehicleDescription description = tvd::vehicle::loadVehicleDescription(vehicle_file);
   const auto model = tvd::reduction::loadOrReduceVehicle(
       description, tvd::vehicle::parseVariant(variant), cache, {}, &report);
+  // The node's pads (whole-pad records of the ground-contact check), as the node forms them.
+  const std::vector<int> pads = tvd::reduction::roadInputGroups(
+      tvd::vehicle::buildVehicleModel(description, tvd::vehicle::parseVariant(variant)), model);
   rl::OnlineVehicleOptions options;
   options.rate = rate;
   options.method = rl::parseMethod(method, "--method");
@@ -93,7 +98,7 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   // One run of the track on a fresh vehicle, the patches added at their times; step(vehicle)
   // does (and times) each step.
   const auto run_track = [&](const std::function<void(rl::OnlineVehicle&)>& step) {
-    rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options);
+    rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options, pads);
     vehicle.setSpeed(track.speed);
     std::size_t next_patch = 0;
     for (long k = 0; k < steps; ++k) {
@@ -131,7 +136,7 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   printStats("terrain sampling alone", sample_stats);
 
   // The ground-contact check the node runs every round(rate / ~ground_contact_rate) steps
-  // (OnlineVehicle::checkGroundContact: the state q = Phi eta, O(n^2), then the forces).
+  // (OnlineVehicle::checkGroundContact: the contacts' coordinates, then the sole and pad forces).
   rl::DurationStatistics contact_stats;
   run_track([&](rl::OnlineVehicle& vehicle) {
     vehicle.step();

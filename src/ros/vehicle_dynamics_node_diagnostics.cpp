@@ -194,6 +194,24 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
   status.add("comfort point", vehicle_->comfortPoint());
 }
 
+namespace {
+
+// A pad by its soles' road inputs and side: "12, 13, 14, 15 (left)".
+std::string padInputs(const dynamics::GroundContactWatch& watch, int group) {
+  std::string inputs;
+  for (const dynamics::GroundContact& c : watch.contacts())
+    if (c.group == group)
+      inputs += (inputs.empty() ? "" : ", ") + std::to_string(c.input);
+  const DofIndex first = watch.groupContact(group);
+  if (first >= 0)
+    inputs += std::string(" (") +
+              dynamics::contactSideName(watch.contacts()[static_cast<std::size_t>(first)].side) +
+              ")";
+  return inputs;
+}
+
+}  // namespace
+
 void VehicleDynamicsNode::diagnoseGroundContact(
     diagnostic_updater::DiagnosticStatusWrapper& status) {
   // The bonded linear model holds every contact on the road; a contact that pressed at rest and
@@ -211,7 +229,31 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   const dynamics::GroundContactRecord interval = watch->takeInterval();
   const dynamics::GroundContactRecord& run = watch->sinceRestart();
   const dynamics::GroundContactNow& now = watch->now();
-  if (interval.beyondRange()) {
+  // With pads known, a whole pad pulling is what leaves the range: a single sole pulls while its
+  // pad rocks onto an edge, which on the tracked model (78 N on the least-loaded sole at rest)
+  // a road a few millimetres rough does (ground_contact_watch.h).
+  const bool pads = watch->groupCount() > 0;
+  if (pads && interval.groupsBeyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
+                    "beyond the linear model's range: up to %d pads pressed at rest pulled on the "
+                    "road as a whole since the last report (a real vehicle would lift them off)",
+                    interval.most_groups_pulling);
+  } else if (pads && interval.beyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
+                    "pads on the road: up to %ld soles pressed at rest pulled since the last "
+                    "report, no whole pad (a pad rocking on its soles)",
+                    static_cast<long>(interval.most_pulling));
+  } else if (pads && run.groupsBeyondRange()) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
+                    "pads on the road since the last report (a pad lifted at t = %.3f s, station "
+                    "%.2f m)",
+                    run.first_group_beyond_time, run.first_group_beyond_station);
+  } else if (pads) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   run.beyondRange()
+                       ? "pads on the road: every pad pressed at rest presses on it"
+                       : "in range: every contact pressed at rest presses on the road");
+  } else if (interval.beyondRange()) {
     status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
                     "beyond the linear model's range: up to %ld contacts pressed at rest pulled "
                     "on the road since the last report (a real vehicle would lift off there)",
@@ -247,6 +289,24 @@ void VehicleDynamicsNode::diagnoseGroundContact(
     status.add("first beyond the range: station [m]", run.first_beyond_station);
     status.add("first beyond the range: road input",
                std::to_string(c.input) + " (" + dynamics::contactSideName(c.side) + ")");
+  }
+  if (!pads)
+    return;
+  // The same for the pads, each force the sum of its soles'.
+  status.add("pads", static_cast<long>(watch->groupCount()));
+  status.add("pads pulling at rest (the bonded statics)",
+             static_cast<long>(watch->groupsPullingAtRest()));
+  status.add("checks with a pad pulling (since last report)", interval.checks_groups_beyond);
+  status.add("most pads pulling at once (since last report)",
+             static_cast<long>(interval.most_groups_pulling));
+  status.add("min force of a pad pressed at rest (since last report) [N]",
+             interval.min_group_force);
+  status.add("pads pulling now", static_cast<long>(now.groups_pulling));
+  status.add("checks with a pad pulling (since the last start or reset)", run.checks_groups_beyond);
+  if (run.groupsBeyondRange()) {
+    status.add("first pad pulling: time [s]", run.first_group_beyond_time);
+    status.add("first pad pulling: station [m]", run.first_group_beyond_station);
+    status.add("first pad pulling: road inputs", padInputs(*watch, run.first_group_beyond));
   }
 }
 

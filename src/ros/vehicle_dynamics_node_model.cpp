@@ -4,13 +4,16 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/heap_reuse.h"
+#include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -78,8 +81,13 @@ void VehicleDynamicsNode::loadVehicle() {
     // exact spends seconds in the augmented exponential, which is not the cache's doing.
     load_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
     const auto setup_start = Clock::now();
+    // The pads the contacts belong to, for the ground-contact check's whole-pad records: from
+    // the vehicle's FE layout, which the cache does not keep (built here in 4-16 ms on the tracked
+    // model).
+    const std::vector<int> pads =
+        reduction::roadInputGroups(vehicle::buildVehicleModel(description, params_.variant), model);
     vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
-                                               params_.vehicle_options);
+                                               params_.vehicle_options, pads);
     setup_seconds_ = std::chrono::duration<double>(Clock::now() - setup_start).count();
     model_dofs_ = model.size();
     model_inputs_ = model.system.inputCount();

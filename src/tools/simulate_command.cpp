@@ -7,7 +7,6 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
-#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -34,6 +33,7 @@
 #include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
@@ -70,22 +70,6 @@ struct SimulateOptions {
   bool json = false;
   std::string ground_contact = "on";  // on | off
 };
-
-// Each contact's pad (track assembly), as its group: the master it acts on is a sole node of that
-// pad. The pads are numbered in contact order; a contact on no pad keeps group -1.
-void groupByPad(const vehicle::VehicleDescription& description, vehicle::Variant variant,
-                const reduction::ReducedModel& model, std::vector<dynamics::GroundContact>* contacts) {
-  const vehicle::VehicleModel built = vehicle::buildVehicleModel(description, variant);
-  std::map<NodeId, int> assembly_of;
-  for (const vehicle::RoadInput& r : built.layout.road_inputs) assembly_of[r.node] = r.assembly;
-  std::map<int, int> pad_of;  // assembly -> pad number
-  for (dynamics::GroundContact& c : *contacts) {
-    if (c.coordinate >= model.masterCount()) continue;
-    const auto it = assembly_of.find(model.masters[static_cast<std::size_t>(c.coordinate)].node);
-    if (it == assembly_of.end()) continue;
-    c.group = pad_of.emplace(it->second, static_cast<int>(pad_of.size())).first->second;
-  }
-}
 
 // The summary line: whether every contact stays in compression over the run.
 void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSummary& s) {
@@ -293,7 +277,8 @@ void run(const SimulateOptions& opt) {
   if (monitor_contact) {
     const auto contact_start = Clock::now();
     contacts = dynamics::groundContacts(model_sys);  // the road inputs (not the travel input)
-    groupByPad(description, variant, reduced->model, &contacts);
+    reduction::groupContactsByAssembly(vehicle::buildVehicleModel(description, variant),
+                                       reduced->model, &contacts);
     contact_forces = std::make_unique<dynamics::GroundContactForces>(sys, contacts, sim_options,
                                                                      modal ? &*modal : nullptr);
     contact_monitor = std::make_unique<dynamics::GroundContactMonitor>(contacts);

@@ -3,9 +3,11 @@
 // bundled vehicle's static ground forces against its weight.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <set>
 
 #include "dynamics_test_models.h"
 #include "expect_input_error.h"
@@ -16,6 +18,7 @@
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
@@ -420,6 +423,40 @@ TEST(GroundContact, StaticForcesOfTheBundledVehicleCarryItsWeight) {
     const dynamics::GroundContactSummary& s = monitor.summary();
     EXPECT_EQ(s.in_tension_at_rest, (f.array() < 0.0).count());
     EXPECT_EQ(s.first_new_tension_contact, -1);  // nothing pressed at rest is in tension there
+    // Pads: one group per track assembly with soles on the road, every sole in one, on one side;
+    // per road input the same group (the node's form).
+    std::vector<GroundContact> grouped = contacts;
+    const int pads = reduction::groupContactsByAssembly(built, reduced, &grouped);
+    std::set<int> assemblies;
+    for (const vehicle::RoadInput& r : built.layout.road_inputs)
+      assemblies.insert(r.assembly);
+    EXPECT_EQ(pads, static_cast<int>(assemblies.size()));
+    EXPECT_EQ(pads, variant == vehicle::Variant::Untracked ? 14 : 60);  // 2 x 7 wheels; 2 x 30
+    const std::vector<int> per_input = reduction::roadInputGroups(built, reduced);
+    std::vector<dynamics::ContactSide> side_of(static_cast<std::size_t>(pads),
+                                               dynamics::ContactSide::Centre);
+    for (const GroundContact& c : grouped) {
+      ASSERT_GE(c.group, 0);
+      ASSERT_LT(c.group, pads);
+      EXPECT_EQ(per_input[static_cast<std::size_t>(c.input)], c.group);
+      dynamics::ContactSide& side = side_of[static_cast<std::size_t>(c.group)];
+      if (side == dynamics::ContactSide::Centre)
+        side = c.side;
+      EXPECT_EQ(c.side, side) << "pad " << c.group;
+      const NodeId node = reduced.masters[static_cast<std::size_t>(c.coordinate)].node;
+      const auto r = std::find_if(built.layout.road_inputs.begin(), built.layout.road_inputs.end(),
+                                  [&](const vehicle::RoadInput& x) { return x.node == node; });
+      ASSERT_NE(r, built.layout.road_inputs.end());
+      // Contacts of one pad share its assembly, and only they do.
+      for (const GroundContact& other : grouped) {
+        const NodeId other_node = reduced.masters[static_cast<std::size_t>(other.coordinate)].node;
+        const auto o =
+            std::find_if(built.layout.road_inputs.begin(), built.layout.road_inputs.end(),
+                         [&](const vehicle::RoadInput& x) { return x.node == other_node; });
+        ASSERT_NE(o, built.layout.road_inputs.end());
+        EXPECT_EQ(o->assembly == r->assembly, other.group == c.group);
+      }
+    }
     if (variant == vehicle::Variant::Untracked) {
       EXPECT_GT(f.minCoeff(), 0.0);  // every sole pressed at rest
       EXPECT_FALSE(s.anyTension());

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <random>
 
 #include "dynamics_test_models.h"
 #include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
+#include "tracked_vehicle_dynamics/dynamics/ground_contact_monitor.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_watch.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 
@@ -179,6 +181,110 @@ TEST(GroundContactWatch, CountsPullingAtRestApartAndKeepsTwoRecords) {
   EXPECT_EQ(watch.sinceRestart().checks, 0);
   EXPECT_FALSE(watch.sinceRestart().beyondRange());
   EXPECT_TRUE(std::isnan(watch.sinceRestart().first_beyond_time));
+}
+
+TEST(GroundContactWatch, APadPullsOnlyWhenTheSumOfItsSolesDoes) {
+  // One pad of two soles (contacts 0, 1 on coordinates 0, 1, group 0), one pad of one sole
+  // (contact 2, group 1) and a contact on no pad (3). With k = 1e5 N/m, no damper and u = 0:
+  // F_i = -1e5 q_i.
+  std::vector<GroundContact> contacts = {contact(0, 0, 1e5, 0.0, 1.0), contact(1, 1, 1e5, 0.0, 1.0),
+                                         contact(2, 2, 1e5, 0.0, -1.0),
+                                         contact(3, 3, 1e5, 0.0, -1.0)};
+  contacts[0].group = 0;
+  contacts[1].group = 0;
+  contacts[2].group = 1;
+  GroundContactWatch watch(contacts, 4);
+  EXPECT_EQ(watch.groupCount(), 2);
+  EXPECT_EQ(watch.groupContact(0), 0);
+  EXPECT_EQ(watch.groupContact(1), 2);
+  const Vector w = Vector::Zero(8);
+  Vector z = Vector::Zero(8);
+  z.head(4) << -0.01, -0.01, -0.02, -0.01;  // every sole pressed: 1, 1, 2, 1 kN
+  watch.restart(0.0, z, w);
+  EXPECT_EQ(watch.groupsPullingAtRest(), 0);
+  EXPECT_DOUBLE_EQ(watch.groupForces()(0), 2e3);
+  EXPECT_DOUBLE_EQ(watch.groupForces()(1), 2e3);
+
+  // The pad rocks: sole 0 pulls 0.5 kN, sole 1 presses 2.5 kN; the pad still presses 2 kN.
+  z(0) = 0.005;
+  z(1) = -0.025;
+  watch.check(0.1, 1.0, z, w);
+  EXPECT_EQ(watch.now().pulling, 1);
+  EXPECT_EQ(watch.now().groups_pulling, 0);
+  EXPECT_TRUE(watch.sinceRestart().beyondRange());
+  EXPECT_FALSE(watch.sinceRestart().groupsBeyondRange());
+  EXPECT_DOUBLE_EQ(watch.sinceRestart().min_group_force, 2e3);
+  EXPECT_EQ(watch.sinceRestart().min_group, 0);  // the lower of two equal totals: the first
+
+  // The pad lifts as a whole (-0.5 + -0.1 kN); the contact on no pad pulling adds no group.
+  z(1) = 0.001;
+  z(3) = 0.01;
+  watch.check(0.2, 2.0, z, w);
+  EXPECT_EQ(watch.now().pulling, 3);
+  EXPECT_EQ(watch.now().groups_pulling, 1);
+  const GroundContactRecord& run = watch.sinceRestart();
+  EXPECT_EQ(run.checks_groups_beyond, 1);
+  EXPECT_EQ(run.most_groups_pulling, 1);
+  EXPECT_EQ(run.first_group_beyond, 0);
+  EXPECT_DOUBLE_EQ(run.first_group_beyond_time, 0.2);
+  EXPECT_DOUBLE_EQ(run.first_group_beyond_station, 2.0);
+  EXPECT_DOUBLE_EQ(run.min_group_force, -600.0);
+  EXPECT_DOUBLE_EQ(run.min_group_force_time, 0.2);
+
+  // Restarted there, the lifted pad is one pulling at rest: counted apart, as the soles are.
+  watch.restart(1.0, z, w);
+  EXPECT_EQ(watch.groupsPullingAtRest(), 1);
+  z(1) = 0.002;
+  watch.check(1.1, 3.0, z, w);
+  EXPECT_EQ(watch.now().groups_pulling, 0);
+  EXPECT_EQ(watch.now().groups_pulling_at_rest, 1);
+  EXPECT_FALSE(watch.sinceRestart().groupsBeyondRange());
+  EXPECT_DOUBLE_EQ(watch.sinceRestart().min_group_force, 2e3);  // only the pad pressed at rest
+}
+
+TEST(GroundContactWatch, PadRecordsAgreeWithTheOfflineMonitor) {
+  // Random sole forces, checked one sample at a time by the watch (F_i = -k q_i with u = 0) and
+  // handed whole to GroundContactMonitor: the same first whole-pad departure, the same count of
+  // samples with one. Seven contacts: pads {0, 1, 2}, {3, 4}, {6}; contact 5 on none.
+  std::vector<GroundContact> contacts;
+  const int group_of[] = {0, 0, 0, 1, 1, -1, 2};
+  for (DofIndex i = 0; i < 7; ++i) {
+    contacts.push_back(contact(i, i, 1e5, 0.0, i < 3 ? 1.0 : -1.0));
+    contacts.back().group = group_of[i];
+  }
+  const long samples = 400;
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  Matrix forces(samples, 7);
+  for (long k = 0; k < samples; ++k)
+    for (int i = 0; i < 7; ++i)  // pressed at rest by 1 kN; later samples wander by ~0.6 kN
+      forces(k, i) = k == 0 ? 1e3 : 1e3 + 600.0 * noise(rng) - 3.0 * static_cast<double>(k);
+  const Vector times = Vector::LinSpaced(samples, 0.0, 0.02 * static_cast<double>(samples - 1));
+  const Vector stations = 3.0 * times;
+  dynamics::GroundContactMonitor monitor(contacts);
+  monitor.add(forces, times, stations);
+  GroundContactWatch watch(contacts, 7);
+  const Vector w = Vector::Zero(14);
+  Vector z = Vector::Zero(14);
+  for (long k = 0; k < samples; ++k) {
+    z.head(7) = -forces.row(k).transpose() / 1e5;
+    if (k == 0)
+      watch.restart(times(k), z, w);
+    else
+      watch.check(times(k), stations(k), z, w);
+  }
+  const dynamics::GroundContactSummary& s = monitor.summary();
+  const GroundContactRecord& run = watch.sinceRestart();
+  ASSERT_EQ(s.groups, watch.groupCount());
+  ASSERT_GT(s.new_group_tension_samples, 10);  // the comparison compares something
+  EXPECT_EQ(run.checks_groups_beyond, s.new_group_tension_samples);
+  EXPECT_EQ(run.first_group_beyond, s.first_new_group_tension);
+  EXPECT_DOUBLE_EQ(run.first_group_beyond_time, s.first_new_group_tension_time);
+  EXPECT_DOUBLE_EQ(run.first_group_beyond_station, s.first_new_group_tension_station);
+  EXPECT_EQ(run.most_groups_pulling, s.max_groups_in_tension);  // none pulled at rest
+  EXPECT_DOUBLE_EQ(run.min_group_force, s.min_group_force);
+  EXPECT_EQ(run.min_group, s.min_group);
+  EXPECT_EQ(run.checks_beyond, s.new_tension_samples);
 }
 
 TEST(GroundContactWatch, RefusesWhatItCannotCheck) {

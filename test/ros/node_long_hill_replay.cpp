@@ -8,6 +8,7 @@
 // s = k v h whenever it started moving, exactly as the offline run's k-th step.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include <nav_msgs/Odometry.h>
@@ -62,12 +63,16 @@ struct Reference {
   // Ground contact (ground_contact.h): per step k, whether a contact that pressed at rest pulls.
   std::vector<bool> beyond_range;
   long first_beyond = -1;  // the first such step, -1: none
+  // The same for a whole pad (the sum of its soles' forces) pressed at rest.
+  std::vector<bool> pad_beyond_range;
+  long first_pad_beyond = -1;
 };
 
 Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry& geometry,
                      const terrain::Terrain& track, double v, double rate, double end_station,
                      dynamics::DiscretizationMethod method, dynamics::InputHold hold,
-                     double lateral_offset, const std::string& imu_point) {
+                     double lateral_offset, const std::string& imu_point,
+                     const std::vector<int>& pads) {
   const dynamics::SecondOrderSystem& sys = model.system;
   dynamics::SimulatorOptions options;
   options.time_step = 1.0 / rate;
@@ -147,6 +152,9 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
   const std::vector<dynamics::GroundContact> contacts = dynamics::groundContacts(sys);
   Vector forces(static_cast<Eigen::Index>(contacts.size()));
   std::vector<bool> pressed_at_rest;
+  const int pad_count = pads.empty() ? 0 : *std::max_element(pads.begin(), pads.end()) + 1;
+  Vector pad_forces(pad_count);
+  std::vector<bool> pad_pressed_at_rest;
   auto recordContacts = [&] {
     dynamics::contactForces(contacts, sim.state(), sim.input(), n, forces, "offline run");
     if (pressed_at_rest.empty()) {
@@ -159,6 +167,21 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     if (beyond && ref.first_beyond < 0)
       ref.first_beyond = static_cast<long>(ref.beyond_range.size());
     ref.beyond_range.push_back(beyond);
+    pad_forces.setZero();
+    for (std::size_t i = 0; i < contacts.size(); ++i)
+      if (pads[static_cast<std::size_t>(contacts[i].input)] >= 0)
+        pad_forces(pads[static_cast<std::size_t>(contacts[i].input)]) +=
+            forces(static_cast<Eigen::Index>(i));
+    if (pad_pressed_at_rest.empty())
+      for (Eigen::Index g = 0; g < pad_count; ++g)
+        pad_pressed_at_rest.push_back(pad_forces(g) >= 0.0);
+    bool pad_beyond = false;
+    for (Eigen::Index g = 0; g < pad_count; ++g)
+      pad_beyond =
+          pad_beyond || (pad_pressed_at_rest[static_cast<std::size_t>(g)] && pad_forces(g) < 0.0);
+    if (pad_beyond && ref.first_pad_beyond < 0)
+      ref.first_pad_beyond = static_cast<long>(ref.pad_beyond_range.size());
+    ref.pad_beyond_range.push_back(pad_beyond);
   };
   record();
   recordContacts();
@@ -259,11 +282,10 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
                         << max_station_ << " m, " << samples_.size() << " samples)";
 
   // The offline reference, on the node's own cached model.
-  const auto [model, geometry] = test::nodeModel(private_nh_);
+  const auto [model, geometry, pads] = test::nodeModel(private_nh_);
   const terrain::Terrain track = terrain::makeTrack(track_name);
-  const Reference ref =
-      offlineRun(model, geometry, track, v, rate, max_station_, method, hold, lateral_offset,
-                 imu_point_);
+  const Reference ref = offlineRun(model, geometry, track, v, rate, max_station_, method, hold,
+                                   lateral_offset, imu_point_, pads);
   ASSERT_GT(ref.heave_peak, 0.0);
 
   double heave_error = 0.0, pitch_error = 0.0, wheel_error = 0.0, imu_error = 0.0;
@@ -369,6 +391,31 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   EXPECT_GT(diagnostics_.value(": ground contact",
                                "checks beyond the range (since the last start or reset)"),
             0.0);
+
+  // Whole pads (the node groups the soles by track assembly): the same, a pad's force the sum of
+  // its soles'; the hill lifts a whole pad too (README, Ground contact).
+  ASSERT_FALSE(pads.empty());
+  EXPECT_EQ(diagnostics_.value(": ground contact", "pads"),
+            static_cast<double>(*std::max_element(pads.begin(), pads.end()) + 1));
+  ASSERT_GE(ref.first_pad_beyond, 0) << "no whole pad pulls offline";
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.value(": ground contact", "first pad pulling: station [m]") > 0.0;
+      },
+      5.0))
+      << diagnostics_.describe();
+  const double node_pad_first =
+      diagnostics_.value(": ground contact", "first pad pulling: station [m]");
+  const double offline_pad_first = static_cast<double>(ref.first_pad_beyond) * vh;
+  std::printf(
+      "ground contact: first whole pad pulling offline at %.4f m, node's first check at %.4f m\n",
+      offline_pad_first, node_pad_first);
+  const long node_pad_step = std::lround(node_pad_first / vh);
+  EXPECT_GE(node_pad_step, ref.first_pad_beyond);
+  ASSERT_LT(node_pad_step, static_cast<long>(ref.pad_beyond_range.size()));
+  EXPECT_TRUE(ref.pad_beyond_range[static_cast<std::size_t>(node_pad_step)])
+      << "node reports a whole pad pulling at step " << node_pad_step;
+  EXPECT_LE(node_pad_first - offline_pad_first, 0.5);
 }
 
 }  // namespace

@@ -341,8 +341,9 @@ TEST_F(NodeSpeedSlew, SpeedStepsSlewAtTheSetRatesWithTheTravelInertia) {
 
   // Pitch and accelerometer, settled on each ramp's constant acceleration: the reduced model's
   // static response a (H K^-1 f_a) about the rest pose (the same cached model, loaded here).
-  const auto [model, geometry] = test::nodeModel(private_nh_);
-  const OnlineVehicle reference(model, geometry);
+  const test::NodeModel node = test::nodeModel(private_nh_);
+  const reduction::ReducedModel& model = node.model;
+  const OnlineVehicle reference(model, node.geometry);
   const double rest_pitch = rollPitchYaw(reference.hullPose().rotation)(1);
   const auto& names = model.system.output_names;
   const auto ry = std::find(names.begin(), names.end(), "hull ry") - names.begin();

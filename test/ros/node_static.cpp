@@ -319,6 +319,15 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
                 1e-9);
   else
     EXPECT_TRUE(std::isnan(diagnostics_.value(": ground contact", "check rate requested [Hz]")));
+  // The pads (soles grouped by track assembly): none pressed at rest pulls as a whole.
+  EXPECT_GT(diagnostics_.value(": ground contact", "pads"), 0.0);
+  EXPECT_EQ(diagnostics_.value(": ground contact", "pads pulling now"), 0.0);
+  EXPECT_GT(diagnostics_.value(": ground contact",
+                               "min force of a pad pressed at rest (since last report) [N]"),
+            0.0);
+  EXPECT_EQ(diagnostics_.value(": ground contact",
+                               "checks with a pad pulling (since the last start or reset)"),
+            0.0);
   const double left = diagnostics_.value(": ground contact", "ground force left now [N]");
   const double right = diagnostics_.value(": ground contact", "ground force right now [N]");
   EXPECT_GT(left, 0.0);

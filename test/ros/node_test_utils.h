@@ -13,6 +13,7 @@
 #include <rosgraph_msgs/Clock.h>
 
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
+#include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
@@ -152,13 +153,19 @@ T requiredParam(const ros::NodeHandle& nh, const std::string& name) {
 struct NodeModel {
   reduction::ReducedModel model;
   VehicleGeometry geometry;
+  std::vector<int> pads;  ///< per road input, its pad (reduction::roadInputGroups), as the node's
 };
 inline NodeModel nodeModel(const ros::NodeHandle& nh) {
   const auto vehicle_file = requiredParam<std::string>(nh, "vehicle");
   const auto variant = vehicle::parseVariant(requiredParam<std::string>(nh, "variant"));
-  return {reduction::loadOrReduceVehicle(vehicle_file, variant,
-                                         requiredParam<std::string>(nh, "cache_dir")),
-          vehicleGeometry(vehicle::loadVehicleDescription(vehicle_file))};
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(vehicle_file);
+  NodeModel out{reduction::loadOrReduceVehicle(vehicle_file, variant,
+                                               requiredParam<std::string>(nh, "cache_dir")),
+                vehicleGeometry(description),
+                {}};
+  out.pads =
+      reduction::roadInputGroups(vehicle::buildVehicleModel(description, variant), out.model);
+  return out;
 }
 
 }  // namespace test

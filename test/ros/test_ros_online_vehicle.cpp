@@ -18,6 +18,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
 
 #include "../core/count_allocations.h"
+#include "../core/expect_input_error.h"
 
 using namespace tracked_vehicle_dynamics;
 using namespace tracked_vehicle_dynamics::ros_layer;
@@ -650,6 +651,37 @@ TEST(OnlineVehicle, GroundContactWatchSeesTheTyresLeaveTheRoad) {
   EXPECT_EQ(watch->sinceRestart().checks, 0);
   EXPECT_FALSE(watch->sinceRestart().beyondRange());
   EXPECT_NEAR(watch->forces().sum(), weight, 1e-9 * weight);
+}
+
+TEST(OnlineVehicle, ContactGroupsMakeTheWatchsPads) {
+  // Both tyres as one pad: its force is their sum (the weight at rest), and it pulls only when
+  // the sum does, at the same checks the recomputed forces say.
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled), {0, 0});
+  dynamics::GroundContactWatch* watch = vehicle.groundContactWatch();
+  ASSERT_NE(watch, nullptr) << vehicle.groundContactUnavailable();
+  ASSERT_EQ(watch->groupCount(), 1);
+  EXPECT_NEAR(watch->groupForces()(0), watch->forces().sum(), 1e-12 * watch->forces().sum());
+  for (const TerrainPatch& p : patches(bump(), 50))
+    vehicle.addTerrain(p);
+  vehicle.setSpeed(15.0);
+  long sole_pulls = 0, pad_pulls = 0;
+  for (int k = 0; k < 600; ++k) {
+    vehicle.step();
+    vehicle.checkGroundContact();
+    const double total = watch->forces().sum();
+    EXPECT_NEAR(watch->groupForces()(0), total, 1e-9 * std::abs(total) + 1e-6) << k;
+    EXPECT_EQ(watch->now().groups_pulling, total < 0.0 ? 1 : 0) << k;
+    sole_pulls += watch->now().pulling > 0;
+    pad_pulls += total < 0.0;
+  }
+  EXPECT_GT(sole_pulls, 0);
+  EXPECT_EQ(watch->sinceRestart().checks_groups_beyond, pad_pulls);
+  EXPECT_LE(pad_pulls, sole_pulls);  // a pad pulls only when a sole does
+
+  expectInputError(
+      [] { OnlineVehicle(test::toyModel(), test::toyGeometry(), {}, std::vector<int>{0}); },
+      "1 contact groups for 2 road inputs");
 }
 
 TEST(OnlineVehicle, GroundContactWatchSaysWhyAModelCannotBeChecked) {

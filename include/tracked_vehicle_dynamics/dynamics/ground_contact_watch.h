@@ -12,6 +12,13 @@
 // one since the restart (the run's first departure from the range) and one since the last
 // takeInterval() (what a periodic diagnostics report shows).
 //
+// Pads. Where the contacts carry groups (GroundContact::group: a pad's soles,
+// reduction::groupContactsByAssembly), each group's force is the sum of its contacts' and is
+// watched the same way: a sole can pull while its pad as a whole presses (the pad carries its
+// moments as opposite forces on its soles and would rock onto an edge), but a pad pressed at rest
+// whose total pulls would leave the road. On the tracked model the least-loaded sole carries 78 N
+// at rest, so single soles pull on a road a few millimetres rough; whole pads do not.
+//
 // Cost per check: O(n_contacts) on a state the caller provides: the full [q; q'], or only the
 // contacts' coordinates with the contacts numbering them (the node: Simulator::coordinates(),
 // O(n_contacts x (modes + inputs)), 30-60 us on the tracked model; Simulator::state() is O(n^2)).
@@ -45,7 +52,20 @@ struct GroundContactRecord {
   DofIndex min_contact = -1;
   double min_force_time = std::numeric_limits<double>::quiet_NaN();
 
+  /// The same for the groups (pads) pressed at rest, each force the sum of its contacts'; all 0,
+  /// -1, NaN or +inf when the contacts have no groups.
+  long checks_groups_beyond = 0;
+  int most_groups_pulling = 0;
+  double first_group_beyond_time = std::numeric_limits<double>::quiet_NaN();
+  double first_group_beyond_station = std::numeric_limits<double>::quiet_NaN();
+  int first_group_beyond = -1;
+  double min_group_force = std::numeric_limits<double>::infinity();
+  int min_group = -1;
+  double min_group_force_time = std::numeric_limits<double>::quiet_NaN();
+
   bool beyondRange() const { return checks_beyond > 0; }
+  /// A whole group (pad) pressed at rest pulled.
+  bool groupsBeyondRange() const { return checks_groups_beyond > 0; }
 };
 
 /// The forces at the last check.
@@ -55,14 +75,16 @@ struct GroundContactNow {
   DofIndex pulling_at_rest = 0;  ///< contacts that pull now and already pulled at rest
   double left = 0.0;             ///< total ground force on the left side (y > 0) [N]
   double right = 0.0;            ///< and on the right (y < 0) [N]
+  int groups_pulling = 0;        ///< groups pressed at rest whose total pulls now
+  int groups_pulling_at_rest = 0;  ///< groups whose total pulls now and already pulled at rest
 };
 
 class GroundContactWatch {
  public:
-  /// contacts: groundContacts() of the simulated system; input_count: its inputs n_u, so that
-  /// w = [u; u'] has u_i at w(i) and u_i' at w(n_u + i) (a travel-inertia system's extra input
-  /// counts: contacts index only the road inputs). Throws InputError for an empty contact list or
-  /// a contact input outside [0, n_u).
+  /// contacts: groundContacts() of the simulated system, with groups where set (-1: none);
+  /// input_count: its inputs n_u, so that w = [u; u'] has u_i at w(i) and u_i' at w(n_u + i) (a
+  /// travel-inertia system's extra input counts: contacts index only the road inputs). Throws
+  /// InputError for an empty contact list or a contact input outside [0, n_u).
   GroundContactWatch(std::vector<GroundContact> contacts, DofIndex input_count);
 
   /// The vehicle is at rest in `state` z = [q; q'] [2n] under input w [2 n_u]: the contacts
@@ -80,10 +102,18 @@ class GroundContactWatch {
   const GroundContactNow& now() const { return now_; }
   /// Forces at the last check (or restart) [n_contacts] [N].
   const Vector& forces() const { return forces_; }
+  /// Group forces at the last check (or restart), each the sum of its contacts' [groups] [N].
+  const Vector& groupForces() const { return group_forces_; }
 
   DofIndex contactCount() const { return static_cast<DofIndex>(contacts_.size()); }
   /// Contacts pulling (F < 0) at the last restart.
   DofIndex pullingAtRest() const { return pulling_at_rest_; }
+  /// Groups: 1 + the largest GroundContact::group (0 when none has one).
+  int groupCount() const { return static_cast<int>(group_forces_.size()); }
+  /// Groups whose total pulled at the last restart.
+  int groupsPullingAtRest() const { return groups_pulling_at_rest_; }
+  /// The first contact of group g (for its side and name); -1 for a group without contacts.
+  DofIndex groupContact(int g) const { return group_contact_.at(static_cast<std::size_t>(g)); }
   const std::vector<GroundContact>& contacts() const { return contacts_; }
 
  private:
@@ -91,11 +121,18 @@ class GroundContactWatch {
   /// now_ from forces_ (side totals; among the contacts pressed at rest, those pulling).
   /// Returns the contact pressed at rest with the lowest force (-1: none).
   DofIndex tally(double time);
+  /// The same for the groups: group_forces_, now_'s group counts; returns the group pressed at
+  /// rest with the lowest force (-1: none).
+  int tallyGroups();
 
   std::vector<GroundContact> contacts_;
   DofIndex input_count_ = 0;
   std::vector<char> pressed_at_rest_;  // per contact: F_i >= 0 at the restart
   DofIndex pulling_at_rest_ = 0;
+  std::vector<DofIndex> group_contact_;      // per group: its first contact
+  std::vector<char> group_pressed_at_rest_;  // per group: its total >= 0 at the restart
+  int groups_pulling_at_rest_ = 0;
+  Vector group_forces_;
   bool started_ = false;
   Vector forces_;
   GroundContactNow now_;

@@ -117,8 +117,13 @@ class OnlineVehicle {
   /// Throws InputError when the model lacks an output the geometry names ("hull ux".."hull rz",
   /// "<wheel> uz", "<point> ux|uy|uz"), the comfort point is unknown, or the options are invalid
   /// (rate <= 0, ...); SolverError from the simulator or the static equilibrium.
+  /// contact_groups: per road input of the model, the pad (track assembly) its contact belongs
+  /// to, numbered from 0 (-1: none), for the ground-contact check's whole-pad records
+  /// (reduction::groupContactsByAssembly gives them); empty: no pads. Throws InputError when it
+  /// is neither empty nor one per road input.
   OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,
-                const OnlineVehicleOptions& options = {});
+                const OnlineVehicleOptions& options = {},
+                const std::vector<int>& contact_groups = {});
 
   /// Back to static equilibrium on flat ground at station 0, speed 0; terrain and comfort
   /// metrics cleared: resetTo(0, 0, ResetTerrain::Clear).
@@ -201,9 +206,10 @@ class OnlineVehicle {
     return contact_watch_ ? &*contact_watch_ : nullptr;
   }
   const std::string& groundContactUnavailable() const { return contact_watch_reason_; }
-  /// One check of the contact forces at the current sample: O(n^2) for the modal simulator (it
-  /// recovers q = Phi eta) and one allocation, so a few per hundred steps, not one per step.
-  /// Does nothing without a watch.
+  /// One check of the sole and pad forces at the current sample: the contacts' coordinates alone
+  /// (Simulator::coordinates, O(n_contacts x (modes + inputs)), 30-60 us on the tracked model),
+  /// no allocation with the modal method; a few per hundred steps, not one per step. Does nothing
+  /// without a watch.
   void checkGroundContact();
 
   const VehicleGeometry& geometry() const { return geometry_; }
