@@ -74,8 +74,8 @@ tvd::fem::Model makeChainModel(int assemblies, int nodes_per_link) {
       if (x.z() == 0.0) {
         tvd::fem::Spring ground;
         ground.n1 = id;
-        ground.stiffness << 1.4e6 / nodes_per_link, 3.4e6 / nodes_per_link,
-            1.9e7 / nodes_per_link, 0, 0, 0;
+        ground.stiffness << 1.4e6 / nodes_per_link, 3.4e6 / nodes_per_link, 1.9e7 / nodes_per_link,
+            0, 0, 0;
         m.springs.push_back(ground);
       }
       if (i % (nodes_per_link * 6) == 0) {
@@ -122,8 +122,10 @@ int main(int argc, char** argv) {
       std::fputs(usage, stdout);
       return 0;
     }
-    int* value = a == "--repeat" ? &repeat : a == "--modes" ? &modes
-               : a == "--assemblies" ? &assemblies : nullptr;
+    int* value = a == "--repeat"       ? &repeat
+                 : a == "--modes"      ? &modes
+                 : a == "--assemblies" ? &assemblies
+                                       : nullptr;
     if (value == nullptr) {
       std::fprintf(stderr, "bench_modal: unexpected argument '%s'\n%s", a.c_str(), usage);
       return 2;
@@ -137,7 +139,8 @@ int main(int argc, char** argv) {
   const tvd::fem::Model model = makeChainModel(assemblies, nodes_per_link);
   const auto t0 = std::chrono::steady_clock::now();
   const tvd::fem::System sys = tvd::fem::assemble(model);
-  const double assemble_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double assemble_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   tvd::fem::ModalRequest request;
   request.count = modes;
@@ -155,11 +158,13 @@ int main(int argc, char** argv) {
   Eigen::saveMarket(sys.mass, (dir / "M.mtx").string());
 
   std::printf("model: %s, %ld active DOFs, K nnz %ld, assembly %.3f s\n", model.name.c_str(),
-              static_cast<long>(sys.size()), static_cast<long>(sys.stiffness.nonZeros()), assemble_s);
-  std::printf("ours  (CHOLMOD + Spectra shift-invert Lanczos): median %.3f s over %d runs "
-              "(min %.3f), %d modes, f1 = %.4f Hz, f%d = %.4f Hz\n",
-              median(ours), repeat, *std::min_element(ours.begin(), ours.end()), basis.count(),
-              basis.frequencies_hz(0), basis.count(), basis.frequencies_hz(basis.count() - 1));
+              static_cast<long>(sys.size()), static_cast<long>(sys.stiffness.nonZeros()),
+              assemble_s);
+  std::printf(
+      "ours  (CHOLMOD + Spectra shift-invert Lanczos): median %.3f s over %d runs "
+      "(min %.3f), %d modes, f1 = %.4f Hz, f%d = %.4f Hz\n",
+      median(ours), repeat, *std::min_element(ours.begin(), ours.end()), basis.count(),
+      basis.frequencies_hz(0), basis.count(), basis.frequencies_hz(basis.count() - 1));
   std::fflush(stdout);
 
   const std::string script = std::string(TVD_SOURCE_DIR) + "/bench/scipy_modal.py";
@@ -185,6 +190,7 @@ int main(int argc, char** argv) {
   std::printf("SciPy eigsh (shift-invert, SuperLU):              median %.3f s\n", scipy_s);
   std::printf("ratio SciPy / ours = %.2f   (frequency agreement: f1 %.2e, f%d %.2e relative)\n",
               scipy_s / median(ours), std::abs(scipy_f1 - basis.frequencies_hz(0)) / scipy_f1,
-              basis.count(), std::abs(scipy_fn - basis.frequencies_hz(basis.count() - 1)) / scipy_fn);
+              basis.count(),
+              std::abs(scipy_fn - basis.frequencies_hz(basis.count() - 1)) / scipy_fn);
   return 0;
 }

@@ -39,7 +39,9 @@ using Clock = std::chrono::steady_clock;
 
 namespace {
 
-double seconds(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+double seconds(Clock::time_point a) {
+  return std::chrono::duration<double>(Clock::now() - a).count();
+}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -63,17 +65,20 @@ int main(int argc, char** argv) {
     }
     if (std::strcmp(argv[i], "--repeat") == 0) {
       repeat = i + 1 < argc ? std::atoi(argv[++i]) : 0;
-      if (repeat >= 1) continue;
+      if (repeat >= 1)
+        continue;
       std::fprintf(stderr, "bench_pipeline: --repeat needs a whole number >= 1\n%s", usage);
       return 2;
     }
     std::fprintf(stderr, "bench_pipeline: unexpected argument '%s'\n%s", argv[i], usage);
     return 2;
   }
-  const std::string vehicle_file = std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
+  const std::string vehicle_file =
+      std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tvd_bench_pipeline";
   std::filesystem::create_directories(dir);
-  const tvd::vehicle::VehicleDescription description = tvd::vehicle::loadVehicleDescription(vehicle_file);
+  const tvd::vehicle::VehicleDescription description =
+      tvd::vehicle::loadVehicleDescription(vehicle_file);
   const auto variant = tvd::vehicle::Variant::Tracked;
 
   // 1. The pipeline, end to end (description already parsed; the file read is ~1 ms).
@@ -99,13 +104,15 @@ int main(int argc, char** argv) {
   }
   std::printf("== 1. reduction pipeline, tracked vehicle (%ld -> %ld DOFs), median of %d\n",
               static_cast<long>(rep.full_dofs), static_cast<long>(model.size()), repeat);
-  std::printf("ours: total %.3f s (build+modes+MAC+MoGeSeC+Craig-Bampton+save), of which tracked "
-              "modes %.3f s, selection (other variant + MAC + MoGeSeC) %.3f s, Craig-Bampton %.3f s, "
-              "save %.3f s\n",
-              median(total), median(modes), median(selection), median(reduce), median(save));
-  std::printf("ours: first run of %d (a fresh heap, as one `tvd reduce` process): total %.3f s, "
-              "Craig-Bampton %.3f s\n",
-              repeat, total.front(), reduce.front());
+  std::printf(
+      "ours: total %.3f s (build+modes+MAC+MoGeSeC+Craig-Bampton+save), of which tracked "
+      "modes %.3f s, selection (other variant + MAC + MoGeSeC) %.3f s, Craig-Bampton %.3f s, "
+      "save %.3f s\n",
+      median(total), median(modes), median(selection), median(reduce), median(save));
+  std::printf(
+      "ours: first run of %d (a fresh heap, as one `tvd reduce` process): total %.3f s, "
+      "Craig-Bampton %.3f s\n",
+      repeat, total.front(), reduce.front());
   std::printf("ours: load cached model %.1f ms (median of 10), first load %.1f ms\n",
               1e3 * median(load), 1e3 * load.front());
 
@@ -117,8 +124,8 @@ int main(int argc, char** argv) {
   {
     tvd::Matrix masters(model.masterCount(), 1);
     for (tvd::DofIndex i = 0; i < model.masterCount(); ++i)
-      masters(i, 0) = static_cast<double>(
-          sys.dofs.active(model.masters[i].node, model.masters[i].direction));
+      masters(i, 0) =
+          static_cast<double>(sys.dofs.active(model.masters[i].node, model.masters[i].direction));
     tvd::io::MatWriter w((dir / "masters.mat").string());
     w.writeMatrix("masters", masters);
     w.writeScalar("fixed_interface_modes", static_cast<double>(model.modeCount()));
@@ -133,7 +140,8 @@ int main(int argc, char** argv) {
   const tvd::dynamics::RoadExcitation road(s.input_stations, s.input_lateral);
   const tvd::terrain::TerrainLines lines(track, road.inputY());
   const auto t_sample = Clock::now();
-  const tvd::Matrix inputs = road.sampleSeries(lines, track.startStation(), speed, dt, 0, steps + 1);
+  const tvd::Matrix inputs =
+      road.sampleSeries(lines, track.startStation(), speed, dt, 0, steps + 1);
   const double sample_seconds = seconds(t_sample);
   tvd::Vector w;
   tvd::dynamics::SimulatorOptions o;
@@ -144,8 +152,8 @@ int main(int argc, char** argv) {
   o.max_mode_frequency_hz = 0.5 / dt;
   std::vector<double> stepped, batch, setup, held_sample, held_batch, dense_sample;
   double peak = 0.0;
-  const tvd::Vector z0 = tvd::dynamics::staticEquilibrium(s, inputs.row(0).head(road.inputCount()).transpose(),
-                                                          model.gravity_load);
+  const tvd::Vector z0 = tvd::dynamics::staticEquilibrium(
+      s, inputs.row(0).head(road.inputCount()).transpose(), model.gravity_load);
   for (int r = 0; r < repeat; ++r) {
     {
       // The dense series again: the first call above also paid for its 124 MB's first touch.
@@ -189,9 +197,10 @@ int main(int argc, char** argv) {
       return 1;
     }
   }
-  std::printf("\n== 2. simulation, tracked reduced model (%ld DOFs, %ld inputs), long hill at 5 km/h, "
-              "%.1f s simulated at 1 ms (%ld steps)\n",
-              static_cast<long>(s.size()), static_cast<long>(road.inputCount()), steps * dt, steps);
+  std::printf(
+      "\n== 2. simulation, tracked reduced model (%ld DOFs, %ld inputs), long hill at 5 km/h, "
+      "%.1f s simulated at 1 ms (%ld steps)\n",
+      static_cast<long>(s.size()), static_cast<long>(road.inputCount()), steps * dt, steps);
   std::printf(
       "ours: setup %.1f ms; stepping with terrain sampling %.1f ms (real-time factor %.0f); "
       "batch simulate() on the input series %.1f ms (real-time factor %.0f), the series "
@@ -201,11 +210,13 @@ int main(int argc, char** argv) {
       steps * dt / median(batch), 1e3 * median(dense_sample), 1e3 * sample_seconds, peak);
   {
     std::vector<double> total_held(held_sample.size());
-    for (std::size_t i = 0; i < total_held.size(); ++i) total_held[i] = held_sample[i] + held_batch[i];
-    std::printf("ours, end to end from the terrain (issue 5 target 20 ms): the held input series "
-                "sampled in %.1f ms + simulate() %.1f ms = %.1f ms (real-time factor %.0f)\n",
-                1e3 * median(held_sample), 1e3 * median(held_batch), 1e3 * median(total_held),
-                steps * dt / median(total_held));
+    for (std::size_t i = 0; i < total_held.size(); ++i)
+      total_held[i] = held_sample[i] + held_batch[i];
+    std::printf(
+        "ours, end to end from the terrain (issue 5 target 20 ms): the held input series "
+        "sampled in %.1f ms + simulate() %.1f ms = %.1f ms (real-time factor %.0f)\n",
+        1e3 * median(held_sample), 1e3 * median(held_batch), 1e3 * median(total_held),
+        steps * dt / median(total_held));
   }
   {
     tvd::io::MatWriter wr((dir / "inputs.mat").string(), tvd::io::MatFormat::Mat5, false);
@@ -219,7 +230,8 @@ int main(int argc, char** argv) {
                           "/bench/scipy_pipeline.py " + dir.string() + " " + mat + " " +
                           std::to_string(repeat);
   FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return 1;
+  if (!pipe)
+    return 1;
   double sp_modes = 0, sp_constraint = 0, sp_fixed = 0, sp_projection = 0, sp_sim = 0, sp_peak = 0;
   char line[1024];
   while (std::fgets(line, sizeof(line), pipe)) {
@@ -235,14 +247,17 @@ int main(int argc, char** argv) {
   const double ours_core = median(modes) + median(reduce);
   // Like for like: the modes, then Craig-Bampton from the partition to the reduced matrices.
   const double sp_core = sp_modes + sp_constraint + sp_fixed + sp_projection;
-  std::printf("\nratio SciPy / ours: modes + Craig-Bampton %.2f (SciPy %.3f s = %.3f modes + %.3f "
-              "constraint modes + %.3f fixed-interface modes + %.3f T_CMS and projections; ours "
-              "%.3f s = %.3f tracked modes + %.3f Craig-Bampton)\n",
-              sp_core / ours_core, sp_core, sp_modes, sp_constraint, sp_fixed, sp_projection,
-              ours_core, median(modes), median(reduce));
-  std::printf("ratio SciPy / ours: simulation %.1f (SciPy dlsim %.3f s, ours batch %.3f s, stepped %.3f s); "
-              "peak heave SciPy %.4f m vs ours %.4f m\n",
-              sp_sim / median(batch), sp_sim, median(batch), median(stepped), sp_peak, peak);
+  std::printf(
+      "\nratio SciPy / ours: modes + Craig-Bampton %.2f (SciPy %.3f s = %.3f modes + %.3f "
+      "constraint modes + %.3f fixed-interface modes + %.3f T_CMS and projections; ours "
+      "%.3f s = %.3f tracked modes + %.3f Craig-Bampton)\n",
+      sp_core / ours_core, sp_core, sp_modes, sp_constraint, sp_fixed, sp_projection, ours_core,
+      median(modes), median(reduce));
+  std::printf(
+      "ratio SciPy / ours: simulation %.1f (SciPy dlsim %.3f s, ours batch %.3f s, stepped %.3f "
+      "s); "
+      "peak heave SciPy %.4f m vs ours %.4f m\n",
+      sp_sim / median(batch), sp_sim, median(batch), median(stepped), sp_peak, peak);
   std::printf("ratio SciPy dlsim / ours end to end from the terrain (held series): %.0f\n",
               sp_sim / (median(held_sample) + median(held_batch)));
   return 0;

@@ -42,7 +42,8 @@ HeapReuse::HeapReuse() {
     const std::uintptr_t begin = (start + kHugePage - 1) & ~(kHugePage - 1);
     const std::uintptr_t end = (start + kReserveBytes) & ~(kHugePage - 1);
     if (end > begin)
-      madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);  // a hint: errors ignored
+      madvise(reinterpret_cast<void*>(begin), end - begin,
+              MADV_HUGEPAGE);  // a hint: errors ignored
     std::free(block);
   }
 #endif

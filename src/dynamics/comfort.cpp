@@ -31,7 +31,9 @@ std::string format(double value) {
   return out.str();
 }
 
-const char* weightingName(Weighting weighting) { return weighting == Weighting::Wk ? "Wk" : "Wd"; }
+const char* weightingName(Weighting weighting) {
+  return weighting == Weighting::Wk ? "Wk" : "Wd";
+}
 
 void checkSampleRate(double sample_rate) {
   if (!std::isfinite(sample_rate) || sample_rate <= 0.0) {
@@ -94,7 +96,8 @@ std::vector<AnalogSection> iso2631Sections(Weighting weighting) {
 
 std::complex<double> analogResponse(const std::vector<AnalogSection>& sections, double frequency) {
   std::complex<double> h(1.0, 0.0);
-  for (const AnalogSection& section : sections) h *= sectionResponse(section, frequency);
+  for (const AnalogSection& section : sections)
+    h *= sectionResponse(section, frequency);
   return h;
 }
 
@@ -140,7 +143,8 @@ std::vector<std::complex<double>> poles(const AnalogSection& a) {
         std::sqrt(std::complex<double>(a.a1 * a.a1 - 4.0 * a.a2 * a.a0));
     return {(-a.a1 + root) / (2.0 * a.a2), (-a.a1 - root) / (2.0 * a.a2)};
   }
-  if (a.a1 != 0.0) return {std::complex<double>(-a.a0 / a.a1, 0.0)};
+  if (a.a1 != 0.0)
+    return {std::complex<double>(-a.a0 / a.a1, 0.0)};
   return {};
 }
 
@@ -189,11 +193,13 @@ WeightingFilter::Biquad WeightingFilter::matchedMagnitude(const AnalogSection& a
   for (const std::complex<double>& pole : p) {
     slowest = std::min(slowest, std::abs(pole) / (2.0 * kPi));
   }
-  if (m == 0 && a.b1 != 0.0) slowest = std::min(slowest, std::abs(a.b0 / a.b1) / (2.0 * kPi));
+  if (m == 0 && a.b1 != 0.0)
+    slowest = std::min(slowest, std::abs(a.b0 / a.b1) / (2.0 * kPi));
   const double low = 1e-2 * slowest;
   const double high = 0.5 * sample_rate;
   std::vector<double> frequencies;
-  if (m == 0) frequencies.push_back(0.0);
+  if (m == 0)
+    frequencies.push_back(0.0);
   for (int i = 0; i < kFitGridPoints; ++i) {
     frequencies.push_back(low *
                           std::pow(high / low, static_cast<double>(i) / (kFitGridPoints - 1)));
@@ -214,9 +220,12 @@ WeightingFilter::Biquad WeightingFilter::matchedMagnitude(const AnalogSection& a
     target(row) =
         std::norm(sectionResponse(a, frequencies[i])) * denominator / std::pow(4.0 * phi1, m);
     weights(row) = frequencies[i] > kFitKnee * sample_rate ? kFitTopWeight : 1.0;
-    if (m == 0) features.row(row) << phi0, phi1, 4.0 * phi0 * phi1;
-    if (m == 1) features.row(row) << phi0, phi1;
-    if (m == 2) features.row(row) << 1.0;
+    if (m == 0)
+      features.row(row) << phi0, phi1, 4.0 * phi0 * phi1;
+    if (m == 1)
+      features.row(row) << phi0, phi1;
+    if (m == 2)
+      features.row(row) << 1.0;
   }
   const Vector x = fitRelative(features, target, weights);
   if (m == 0) {
@@ -266,10 +275,13 @@ WeightingFilter::WeightingFilter(std::vector<AnalogSection> sections, double sam
     const AnalogSection& a = sections_[i];
     const std::string where = "weighting filter section " + std::to_string(i) + ": ";
     for (double c : {a.b0, a.b1, a.b2, a.a0, a.a1, a.a2, a.prewarp_frequency}) {
-      if (!std::isfinite(c)) throw InputError(where + "coefficient is not finite");
+      if (!std::isfinite(c))
+        throw InputError(where + "coefficient is not finite");
     }
-    if (a.b0 == 0.0 && a.b1 == 0.0 && a.b2 == 0.0) throw InputError(where + "numerator is zero");
-    if (a.a0 == 0.0 && a.a1 == 0.0 && a.a2 == 0.0) throw InputError(where + "denominator is zero");
+    if (a.b0 == 0.0 && a.b1 == 0.0 && a.b2 == 0.0)
+      throw InputError(where + "numerator is zero");
+    if (a.a0 == 0.0 && a.a1 == 0.0 && a.a2 == 0.0)
+      throw InputError(where + "denominator is zero");
     for (const std::complex<double>& pole : poles(a)) {
       if (!(pole.real() < 0.0)) {
         throw InputError(where + "pole " + format(pole.real()) + (pole.imag() < 0 ? " - " : " + ") +
@@ -306,13 +318,15 @@ WeightingFilter WeightingFilter::iso2631(Weighting weighting, double sample_rate
                      format(needed) + " Hz)");
   }
   std::vector<AnalogSection> sections = iso2631Sections(weighting);
-  if (p.f2 > kLowPassLimit * sample_rate) sections.erase(sections.begin() + 1);
+  if (p.f2 > kLowPassLimit * sample_rate)
+    sections.erase(sections.begin() + 1);
   return WeightingFilter(std::move(sections), sample_rate, discretisation);
 }
 
 double WeightingFilter::step(double input) {
   double x = input;
-  for (Biquad& biquad : biquads_) x = biquad.step(x);
+  for (Biquad& biquad : biquads_)
+    x = biquad.step(x);
   return x;
 }
 
@@ -320,12 +334,14 @@ Vector WeightingFilter::filter(const Vector& input) const {
   WeightingFilter fresh = *this;
   fresh.reset();
   Vector output(input.size());
-  for (Eigen::Index i = 0; i < input.size(); ++i) output(i) = fresh.step(input(i));
+  for (Eigen::Index i = 0; i < input.size(); ++i)
+    output(i) = fresh.step(input(i));
   return output;
 }
 
 void WeightingFilter::reset() {
-  for (Biquad& biquad : biquads_) biquad.s1 = biquad.s2 = 0.0;
+  for (Biquad& biquad : biquads_)
+    biquad.s1 = biquad.s2 = 0.0;
 }
 
 std::complex<double> WeightingFilter::response(double frequency) const {
@@ -363,7 +379,8 @@ ComfortMetrics evaluateComfort(const Vector& acceleration, double sample_rate,
   metrics.samples = static_cast<std::size_t>(acceleration.size());
   metrics.duration = static_cast<double>(acceleration.size()) / sample_rate;
   if (acceleration.size() == 0) {
-    if (absorbed) metrics.absorbed_power = 0.0;
+    if (absorbed)
+      metrics.absorbed_power = 0.0;
     return metrics;
   }
   const Vector weighted = weighting.filter(acceleration);
@@ -378,7 +395,8 @@ ComfortMetrics evaluateComfort(const Vector& acceleration, double sample_rate,
     peak = std::max(peak, mean_square);
   }
   metrics.mtvv = std::sqrt(peak);
-  if (absorbed) metrics.absorbed_power = absorbed->filter(acceleration).squaredNorm() / n;
+  if (absorbed)
+    metrics.absorbed_power = absorbed->filter(acceleration).squaredNorm() / n;
   return metrics;
 }
 
@@ -412,7 +430,8 @@ void ComfortMeter::add(double acceleration) {
 
 void ComfortMeter::reset() {
   weighting_.reset();
-  if (absorbed_power_) absorbed_power_->reset();
+  if (absorbed_power_)
+    absorbed_power_->reset();
   count_ = 0;
   sum_squares_ = sum_fourth_ = sum_power_ = 0.0;
   running_mean_square_ = max_running_mean_square_ = last_weighted_ = 0.0;
@@ -430,14 +449,19 @@ double ComfortMeter::maximumTransientVibrationValue() const {
   return std::sqrt(max_running_mean_square_);
 }
 
-double ComfortMeter::runningRms() const { return std::sqrt(running_mean_square_); }
+double ComfortMeter::runningRms() const {
+  return std::sqrt(running_mean_square_);
+}
 
 std::optional<double> ComfortMeter::absorbedPower() const {
-  if (!absorbed_power_) return std::nullopt;
+  if (!absorbed_power_)
+    return std::nullopt;
   return count_ == 0 ? 0.0 : sum_power_ / static_cast<double>(count_);
 }
 
-double ComfortMeter::duration() const { return static_cast<double>(count_) / sample_rate_; }
+double ComfortMeter::duration() const {
+  return static_cast<double>(count_) / sample_rate_;
+}
 
 ComfortMetrics ComfortMeter::metrics() const {
   ComfortMetrics metrics;

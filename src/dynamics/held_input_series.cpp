@@ -11,11 +11,13 @@ namespace dynamics {
 
 void HeldInputSeries::validate() const {
   if (samples < 1)
-    throw InputError("held input series: needs at least one sample, has " + std::to_string(samples));
+    throw InputError("held input series: needs at least one sample, has " +
+                     std::to_string(samples));
   const DofIndex n_w = initial.size();
   for (DofIndex j = 0; j < n_w; ++j)
     if (!std::isfinite(initial(j)))
-      throw InputError("held input series: initial value of column " + std::to_string(j) + " is not finite");
+      throw InputError("held input series: initial value of column " + std::to_string(j) +
+                       " is not finite");
   std::vector<int> owner(static_cast<std::size_t>(n_w), -1);
   for (std::size_t c = 0; c < channels.size(); ++c) {
     const Channel& ch = channels[c];
@@ -25,16 +27,17 @@ void HeldInputSeries::validate() const {
                        std::to_string(ch.values.size()) + " values");
     for (const DofIndex j : ch.columns) {
       if (j < 0 || j >= n_w)
-        throw InputError(name + ": column " + std::to_string(j) + " outside 0.." + std::to_string(n_w - 1));
+        throw InputError(name + ": column " + std::to_string(j) + " outside 0.." +
+                         std::to_string(n_w - 1));
       if (owner[static_cast<std::size_t>(j)] >= 0)
         throw InputError(name + ": column " + std::to_string(j) + " is already in channel " +
                          std::to_string(owner[static_cast<std::size_t>(j)]));
       owner[static_cast<std::size_t>(j)] = static_cast<int>(c);
       if (initial(j) != initial(ch.columns.front()))
-        throw InputError(name + ": column " + std::to_string(j) + " starts at " +
-                         std::to_string(initial(j)) + ", column " + std::to_string(ch.columns.front()) +
-                         " at " + std::to_string(initial(ch.columns.front())) +
-                         " (one channel is one signal)");
+        throw InputError(
+            name + ": column " + std::to_string(j) + " starts at " + std::to_string(initial(j)) +
+            ", column " + std::to_string(ch.columns.front()) + " at " +
+            std::to_string(initial(ch.columns.front())) + " (one channel is one signal)");
     }
     for (std::size_t e = 0; e < ch.steps.size(); ++e) {
       const long k = ch.steps[e];
@@ -65,9 +68,11 @@ Vector HeldInputSeries::row(long k) const {
   for (const Channel& ch : channels) {
     // The last event at a step <= k.
     const auto it = std::upper_bound(ch.steps.begin(), ch.steps.end(), k);
-    if (it == ch.steps.begin()) continue;
+    if (it == ch.steps.begin())
+      continue;
     const double value = ch.values[static_cast<std::size_t>(it - ch.steps.begin() - 1)];
-    for (const DofIndex j : ch.columns) w(j) = value;
+    for (const DofIndex j : ch.columns)
+      w(j) = value;
   }
   return w;
 }

@@ -21,14 +21,16 @@ double checkedValue(double value, double speed) {
 
 }  // namespace
 
-LimitCrossing findLimitCrossing(const std::vector<double>& speeds, const std::vector<double>& values,
-                                double limit, double tolerance,
+LimitCrossing findLimitCrossing(const std::vector<double>& speeds,
+                                const std::vector<double>& values, double limit, double tolerance,
                                 const std::function<double(double)>& evaluate) {
-  if (speeds.empty()) throw InputError("limit crossing: no speeds");
+  if (speeds.empty())
+    throw InputError("limit crossing: no speeds");
   if (values.size() != speeds.size())
     throw InputError("limit crossing: " + std::to_string(values.size()) + " values for " +
                      std::to_string(speeds.size()) + " speeds");
-  if (!std::isfinite(limit)) throw InputError("limit crossing: the limit is not finite");
+  if (!std::isfinite(limit))
+    throw InputError("limit crossing: the limit is not finite");
   if (!(tolerance > 0.0) || !std::isfinite(tolerance))
     throw InputError("limit crossing: the tolerance must be a positive number");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
@@ -43,16 +45,20 @@ LimitCrossing findLimitCrossing(const std::vector<double>& speeds, const std::ve
     result.lower_value = result.upper_value = values[i];
     return result;
   };
-  if (values.front() >= limit) return at(LimitCrossing::Status::AtLowest, 0);
+  if (values.front() >= limit)
+    return at(LimitCrossing::Status::AtLowest, 0);
   std::size_t i = 1;
-  while (i < speeds.size() && values[i] < limit) ++i;
-  if (i == speeds.size()) return at(LimitCrossing::Status::NotReached, speeds.size() - 1);
+  while (i < speeds.size() && values[i] < limit)
+    ++i;
+  if (i == speeds.size())
+    return at(LimitCrossing::Status::NotReached, speeds.size() - 1);
 
   // Invariant: m(lower) < limit <= m(upper).
   double lo = speeds[i - 1], hi = speeds[i], m_lo = values[i - 1], m_hi = values[i];
   while (hi - lo > tolerance) {
     const double mid = 0.5 * (lo + hi);
-    if (!(mid > lo && mid < hi)) break;  // adjacent doubles: a tolerance below one ulp of the speed
+    if (!(mid > lo && mid < hi))
+      break;  // adjacent doubles: a tolerance below one ulp of the speed
     const double m = checkedValue(evaluate(mid), mid);
     ++result.refinements;
     if (m >= limit) {

@@ -12,8 +12,9 @@
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
-HeldInputSeries RoadExcitation::sampleHeldSeries(const terrain::TerrainLines& lines, double station0,
-                                                 double speed, double dt, long first, long count) const {
+HeldInputSeries RoadExcitation::sampleHeldSeries(const terrain::TerrainLines& lines,
+                                                 double station0, double speed, double dt,
+                                                 long first, long count) const {
   const DofIndex n = x_.size();
   HeldInputSeries series;
   series.samples = count;
@@ -80,9 +81,12 @@ HeldInputSeries RoadExcitation::sampleHeldSeries(const terrain::TerrainLines& li
         if (!std::isfinite(end))
           break;
         const double estimate = (end - xq - station0) / (speed * dt) - static_cast<double>(first);
-        next = std::max(next, static_cast<long>(std::min(estimate, static_cast<double>(count))) - 1);
-        while (next > j + 1 && station(next - 1) + xq >= end) --next;
-        while (next < count && station(next) + xq < end) ++next;
+        next =
+            std::max(next, static_cast<long>(std::min(estimate, static_cast<double>(count))) - 1);
+        while (next > j + 1 && station(next - 1) + xq >= end)
+          --next;
+        while (next < count && station(next) + xq < end)
+          ++next;
       }
       if (next >= count)
         break;

@@ -26,14 +26,16 @@ ShockMeter::ShockMeter(double sample_rate, const ShockOptions& options) {
 }
 
 void ShockMeter::add(double acceleration) {
-  if (!std::isfinite(acceleration)) throw InputError("shock meter: an acceleration sample is not finite");
+  if (!std::isfinite(acceleration))
+    throw InputError("shock meter: an acceleration sample is not finite");
   const double a = lowpass_ ? lowpass_->step(acceleration) : acceleration;
   peak_up_ = std::max(peak_up_, a);
   peak_abs_ = std::max(peak_abs_, std::abs(a));
 }
 
 void ShockMeter::reset() {
-  if (lowpass_) lowpass_->reset();
+  if (lowpass_)
+    lowpass_->reset();
   peak_up_ = 0.0;
   peak_abs_ = 0.0;
 }

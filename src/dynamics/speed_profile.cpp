@@ -18,20 +18,25 @@ std::string format(double value) {
 
 }  // namespace
 
-SpeedProfile::SpeedProfile(std::vector<double> time, std::vector<double> speed, const std::string& name)
+SpeedProfile::SpeedProfile(std::vector<double> time, std::vector<double> speed,
+                           const std::string& name)
     : time_(std::move(time)), speed_(std::move(speed)) {
   if (time_.size() != speed_.size())
     throw InputError(name + ": " + std::to_string(time_.size()) + " times but " +
                      std::to_string(speed_.size()) + " speeds");
-  if (time_.size() < 2) throw InputError(name + ": needs at least two samples (time, speed)");
+  if (time_.size() < 2)
+    throw InputError(name + ": needs at least two samples (time, speed)");
   for (std::size_t k = 0; k < time_.size(); ++k) {
     const std::string sample = name + ": sample " + std::to_string(k) + ": ";
-    if (!std::isfinite(time_[k])) throw InputError(sample + "time is not a finite number");
-    if (!std::isfinite(speed_[k])) throw InputError(sample + "speed is not a finite number");
+    if (!std::isfinite(time_[k]))
+      throw InputError(sample + "time is not a finite number");
+    if (!std::isfinite(speed_[k]))
+      throw InputError(sample + "speed is not a finite number");
     if (speed_[k] < 0)
       throw InputError(sample + "speed " + format(speed_[k]) +
                        " m/s is negative (the road inputs assume forward travel)");
-    if (k == 0 && time_[k] != 0) throw InputError(sample + "the first time must be 0, got " + format(time_[k]) + " s");
+    if (k == 0 && time_[k] != 0)
+      throw InputError(sample + "the first time must be 0, got " + format(time_[k]) + " s");
     if (k > 0 && !(time_[k] > time_[k - 1]))
       throw InputError(sample + "time " + format(time_[k]) + " s is not after the previous one (" +
                        format(time_[k - 1]) + " s); times must be strictly increasing");
@@ -49,7 +54,8 @@ std::size_t SpeedProfile::segment(double t) const {
 
 double SpeedProfile::speed(double t) const {
   const std::size_t k = segment(t);
-  if (k + 1 == time_.size()) return speed_.back();
+  if (k + 1 == time_.size())
+    return speed_.back();
   const double tau = std::max(t, 0.0) - time_[k];
   return speed_[k] + (speed_[k + 1] - speed_[k]) * tau / (time_[k + 1] - time_[k]);
 }
@@ -57,18 +63,22 @@ double SpeedProfile::speed(double t) const {
 double SpeedProfile::station(double t) const {
   const std::size_t k = segment(t);
   const double tau = std::max(t, 0.0) - time_[k];
-  if (k + 1 == time_.size()) return station_.back() + speed_.back() * tau;
+  if (k + 1 == time_.size())
+    return station_.back() + speed_.back() * tau;
   const double h = time_[k + 1] - time_[k];
   return station_[k] + speed_[k] * tau + (speed_[k + 1] - speed_[k]) * tau * tau / (2.0 * h);
 }
 
 double SpeedProfile::acceleration(double t) const {
   const std::size_t k = segment(t);
-  if (k + 1 == time_.size()) return 0.0;  // the speed is held after the last sample
+  if (k + 1 == time_.size())
+    return 0.0;  // the speed is held after the last sample
   return (speed_[k + 1] - speed_[k]) / (time_[k + 1] - time_[k]);
 }
 
-double SpeedProfile::maxSpeed() const { return *std::max_element(speed_.begin(), speed_.end()); }
+double SpeedProfile::maxSpeed() const {
+  return *std::max_element(speed_.begin(), speed_.end());
+}
 
 double SpeedProfile::maxAbsAcceleration(double* at) const {
   double largest = 0.0, when = 0.0;

@@ -11,7 +11,8 @@ namespace {
 
 // Appends one entry to a per-input vector (station or lateral position), left empty when empty.
 Vector appended(const Vector& v, double value) {
-  if (v.size() == 0) return v;
+  if (v.size() == 0)
+    return v;
   Vector out(v.size() + 1);
   out << v, value;
   return out;
@@ -45,8 +46,7 @@ Matrix withTravelInput(const Matrix& inputs, const Vector& acceleration) {
                      std::to_string(acceleration.size()) + " accelerations each");
   const DofIndex n_u = inputs.cols() / 2;
   Matrix out(inputs.rows(), 2 * (n_u + 1));
-  out << inputs.leftCols(n_u), acceleration, inputs.rightCols(n_u),
-      Vector::Zero(inputs.rows());
+  out << inputs.leftCols(n_u), acceleration, inputs.rightCols(n_u), Vector::Zero(inputs.rows());
   return out;
 }
 

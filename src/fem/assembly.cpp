@@ -24,7 +24,8 @@ void scatter(std::vector<Triplet>& out, const Eigen::Matrix<double, N, N>& e,
       for (int i = 0; i < kDofsPerNode; ++i)
         for (int j = 0; j < kDofsPerNode; ++j) {
           const double v = e(a * kDofsPerNode + i, b * kDofsPerNode + j);
-          if (v != 0.0) out.emplace_back(dofs[a] + i, dofs[b] + j, v);
+          if (v != 0.0)
+            out.emplace_back(dofs[a] + i, dofs[b] + j, v);
         }
 }
 
@@ -37,9 +38,9 @@ PhysicalMatrices elementMatrices(const Model& model,
   for (std::size_t i = 0; i < model.beams.size(); ++i) {
     const Beam& beam = model.beams[i];
     try {
-      const BeamMatrices e = beamMatrices(pos(beam.n1), pos(beam.n2), beam.orientation,
-                                          *model.findMaterial(beam.material),
-                                          *model.findSection(beam.section));
+      const BeamMatrices e =
+          beamMatrices(pos(beam.n1), pos(beam.n2), beam.orientation,
+                       *model.findMaterial(beam.material), *model.findSection(beam.section));
       const DofIndex dofs[2] = {base(beam.n1), base(beam.n2)};
       scatter<12>(pm.k, e.stiffness, dofs);
       scatter<12>(pm.m, e.mass, dofs);
@@ -55,8 +56,10 @@ PhysicalMatrices elementMatrices(const Model& model,
       scatter<6>(pm.c, e.damping, dofs);
       const auto column = static_cast<DofIndex>(pm.ground_inputs.size());
       for (int i = 0; i < kDofsPerNode; ++i) {
-        if (e.input_stiffness(i) != 0.0) pm.ku.emplace_back(dofs[0] + i, column, e.input_stiffness(i));
-        if (e.input_damping(i) != 0.0) pm.cu.emplace_back(dofs[0] + i, column, e.input_damping(i));
+        if (e.input_stiffness(i) != 0.0)
+          pm.ku.emplace_back(dofs[0] + i, column, e.input_stiffness(i));
+        if (e.input_damping(i) != 0.0)
+          pm.cu.emplace_back(dofs[0] + i, column, e.input_damping(i));
       }
       pm.ground_inputs.push_back(DofRef{spring.n1, static_cast<int>(Direction::Uz)});
     } else {
@@ -116,15 +119,18 @@ System assemble(const Model& model, const AssemblyOptions& options) {
     bool any = false;
     for (DofIndex j = 0; j < k.cols(); ++j) {
       double sum = 0.0;
-      for (SparseMatrix::InnerIterator it(k, j); it; ++it) sum += std::abs(it.value());
-      for (SparseMatrix::InnerIterator it(m, j); it; ++it) sum += std::abs(it.value());
+      for (SparseMatrix::InnerIterator it(k, j); it; ++it)
+        sum += std::abs(it.value());
+      for (SparseMatrix::InnerIterator it(m, j); it; ++it)
+        sum += std::abs(it.value());
       if (sum == 0.0) {
         const DofRef d = sys.dofs.dofOf(j);
         inactive[sys.dofs.physical(d.node, d.direction)] = true;
         any = true;
       }
     }
-    if (any) sys.dofs = DofMap::build(model, inactive);
+    if (any)
+      sys.dofs = DofMap::build(model, inactive);
   }
 
   const SparseMatrix& t = sys.dofs.transformation();

@@ -14,12 +14,14 @@ constexpr int kUx = 0, kUy = 1, kUz = 2, kRx = 3, kRy = 4, kRz = 5;
 // Writes a 4x4 bending block onto DOFs (v1, t1, v2, t2).
 void addBlock(Matrix12& m, const int (&dofs)[4], const Eigen::Matrix4d& block) {
   for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) m(dofs[i], dofs[j]) += block(i, j);
+    for (int j = 0; j < 4; ++j)
+      m(dofs[i], dofs[j]) += block(i, j);
 }
 
 double shearParameter(double ei, double kappa, const Material& mat, const Section& sec,
                       double length) {
-  if (kappa <= 0.0) return 0.0;  // Euler-Bernoulli
+  if (kappa <= 0.0)
+    return 0.0;  // Euler-Bernoulli
   return 12.0 * ei / (kappa * mat.shear_modulus * sec.area * length * length);
 }
 }  // namespace
@@ -27,7 +29,8 @@ double shearParameter(double ei, double kappa, const Material& mat, const Sectio
 Matrix3 beamLocalAxes(const Vector3& x1, const Vector3& x2, const Vector3& orientation) {
   const Vector3 axis = x2 - x1;
   const double length = axis.norm();
-  if (!(length > 0.0)) throw InputError("beam has zero length");
+  if (!(length > 0.0))
+    throw InputError("beam has zero length");
   const Vector3 ex = axis / length;
   const Vector3 z_raw = orientation - orientation.dot(ex) * ex;
   if (z_raw.norm() <= 1e-9 * orientation.norm() || orientation.norm() == 0.0)
@@ -58,10 +61,8 @@ Matrix12 beamLocalStiffness(const Material& mat, const Section& sec, double leng
     const double phi = shearParameter(e * sec.iz, sec.shear_factor_y, mat, sec, l);
     const double c = e * sec.iz / (l3 * (1.0 + phi));
     Eigen::Matrix4d b;
-    b << 12, 6 * l, -12, 6 * l,
-         6 * l, (4 + phi) * l2, -6 * l, (2 - phi) * l2,
-         -12, -6 * l, 12, -6 * l,
-         6 * l, (2 - phi) * l2, -6 * l, (4 + phi) * l2;
+    b << 12, 6 * l, -12, 6 * l, 6 * l, (4 + phi) * l2, -6 * l, (2 - phi) * l2, -12, -6 * l, 12,
+        -6 * l, 6 * l, (2 - phi) * l2, -6 * l, (4 + phi) * l2;
     const int dofs[4] = {kUy, kRz, 6 + kUy, 6 + kRz};
     addBlock(k, dofs, c * b);
   }
@@ -70,10 +71,8 @@ Matrix12 beamLocalStiffness(const Material& mat, const Section& sec, double leng
     const double phi = shearParameter(e * sec.iy, sec.shear_factor_z, mat, sec, l);
     const double c = e * sec.iy / (l3 * (1.0 + phi));
     Eigen::Matrix4d b;
-    b << 12, -6 * l, -12, -6 * l,
-         -6 * l, (4 + phi) * l2, 6 * l, (2 - phi) * l2,
-         -12, 6 * l, 12, 6 * l,
-         -6 * l, (2 - phi) * l2, 6 * l, (4 + phi) * l2;
+    b << 12, -6 * l, -12, -6 * l, -6 * l, (4 + phi) * l2, 6 * l, (2 - phi) * l2, -12, 6 * l, 12,
+        6 * l, -6 * l, (2 - phi) * l2, 6 * l, (4 + phi) * l2;
     const int dofs[4] = {kUz, kRy, 6 + kUz, 6 + kRy};
     addBlock(k, dofs, c * b);
   }
@@ -94,19 +93,15 @@ Matrix12 beamLocalMass(const Material& mat, const Section& sec, double length) {
   const double c = m / 420.0;
   {
     Eigen::Matrix4d b;
-    b << 156, 22 * l, 54, -13 * l,
-         22 * l, 4 * l2, 13 * l, -3 * l2,
-         54, 13 * l, 156, -22 * l,
-         -13 * l, -3 * l2, -22 * l, 4 * l2;
+    b << 156, 22 * l, 54, -13 * l, 22 * l, 4 * l2, 13 * l, -3 * l2, 54, 13 * l, 156, -22 * l,
+        -13 * l, -3 * l2, -22 * l, 4 * l2;
     const int dofs[4] = {kUy, kRz, 6 + kUy, 6 + kRz};
     addBlock(mm, dofs, c * b);
   }
   {
     Eigen::Matrix4d b;
-    b << 156, -22 * l, 54, 13 * l,
-         -22 * l, 4 * l2, -13 * l, -3 * l2,
-         54, -13 * l, 156, 22 * l,
-         13 * l, -3 * l2, 22 * l, 4 * l2;
+    b << 156, -22 * l, 54, 13 * l, -22 * l, 4 * l2, -13 * l, -3 * l2, 54, -13 * l, 156, 22 * l,
+        13 * l, -3 * l2, 22 * l, 4 * l2;
     const int dofs[4] = {kUz, kRy, 6 + kUz, 6 + kRy};
     addBlock(mm, dofs, c * b);
   }
@@ -118,7 +113,8 @@ BeamMatrices beamMatrices(const Vector3& x1, const Vector3& x2, const Vector3& o
   const Matrix3 r = beamLocalAxes(x1, x2, orientation);
   const double length = (x2 - x1).norm();
   Matrix12 t = Matrix12::Zero();
-  for (int b = 0; b < 4; ++b) t.block<3, 3>(3 * b, 3 * b) = r;
+  for (int b = 0; b < 4; ++b)
+    t.block<3, 3>(3 * b, 3 * b) = r;
   BeamMatrices out;
   out.stiffness = t.transpose() * beamLocalStiffness(material, section, length) * t;
   out.mass = t.transpose() * beamLocalMass(material, section, length) * t;

@@ -15,7 +15,7 @@ using Expression = std::vector<std::pair<DofIndex, double>>;
 
 struct SlaveLink {
   std::size_t joint = 0;
-  DofIndex master_node = 0;  // node position of the master
+  DofIndex master_node = 0;       // node position of the master
   Vector3 arm = Vector3::Zero();  // x_slave - x_master
 };
 
@@ -23,7 +23,10 @@ class Resolver {
  public:
   Resolver(const std::vector<char>& status, const std::vector<int>& link_of,
            const std::vector<SlaveLink>& links)
-      : status_(status), link_of_(link_of), links_(links), memo_(status.size()),
+      : status_(status),
+        link_of_(link_of),
+        links_(links),
+        memo_(status.size()),
         state_(status.size(), 0) {}
 
   // Iterative (a chain of 200,000 rigid joints overflowed the stack when this recursed), and each
@@ -38,7 +41,8 @@ class Resolver {
         continue;
       }
       if (status_[p] != 's') {
-        if (status_[p] == 'a') memo_[p].emplace_back(p, 1.0);
+        if (status_[p] == 'a')
+          memo_[p].emplace_back(p, 1.0);
         state_[p] = 2;
         stack.pop_back();
         continue;
@@ -54,19 +58,22 @@ class Resolver {
       terms[count++] = {base + d, 1.0};
       if (d < 3)
         for (int j = 0; j < 3; ++j)
-          if (c[d][j] != 0.0) terms[count++] = {base + 3 + j, c[d][j]};
+          if (c[d][j] != 0.0)
+            terms[count++] = {base + 3 + j, c[d][j]};
       if (state_[p] == 0) {  // first visit: resolve the master's DOFs first
         state_[p] = 1;
         for (int k = 0; k < count; ++k) {
           const DofIndex q = terms[k].first;
           if (state_[q] == 1)
             throw InputError("rigid joints form a cycle through physical DOF " + std::to_string(q));
-          if (state_[q] == 0) stack.push_back(q);
+          if (state_[q] == 0)
+            stack.push_back(q);
         }
         continue;
       }
       Expression e;
-      for (int k = 0; k < count; ++k) append(e, memo_[terms[k].first], terms[k].second);
+      for (int k = 0; k < count; ++k)
+        append(e, memo_[terms[k].first], terms[k].second);
       memo_[p] = merged(std::move(e));
       state_[p] = 2;
       stack.pop_back();
@@ -76,12 +83,12 @@ class Resolver {
 
  private:
   static void append(Expression& e, const Expression& src, double scale) {
-    for (const auto& [dof, coef] : src) e.emplace_back(dof, coef * scale);
+    for (const auto& [dof, coef] : src)
+      e.emplace_back(dof, coef * scale);
   }
   /// One term per DOF, coefficients summed.
   static Expression merged(Expression e) {
-    std::sort(e.begin(), e.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::sort(e.begin(), e.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     Expression out;
     for (const auto& term : e) {
       if (!out.empty() && out.back().first == term.first)
@@ -122,7 +129,8 @@ DofMap DofMap::build(const Model& model, const std::vector<bool>& inactive) {
   for (std::size_t i = 0; i < model.fixed.size(); ++i) {
     const auto pos = nodePos(model.fixed[i].node, "fixed[" + std::to_string(i) + "]");
     for (int d = 0; d < kDofsPerNode; ++d)
-      if (model.fixed[i].dofs[d]) map.status_[pos * kDofsPerNode + d] = 'f';
+      if (model.fixed[i].dofs[d])
+        map.status_[pos * kDofsPerNode + d] = 'f';
   }
 
   std::vector<int> link_of(n_phys, -1);
@@ -133,22 +141,23 @@ DofMap DofMap::build(const Model& model, const std::vector<bool>& inactive) {
     const auto master = nodePos(joint.master, where);
     for (NodeId slave_id : joint.slaves) {
       const auto slave = nodePos(slave_id, where);
-      if (slave == master) throw InputError(where + ": node " + std::to_string(slave_id) +
-                                            " is its own master");
+      if (slave == master)
+        throw InputError(where + ": node " + std::to_string(slave_id) + " is its own master");
       SlaveLink link;
       link.joint = j;
       link.master_node = static_cast<DofIndex>(master);
       link.arm = map.positions_[slave] - map.positions_[master];
       links.push_back(link);
       for (int d = 0; d < kDofsPerNode; ++d) {
-        if (!joint.dofs[d]) continue;
+        if (!joint.dofs[d])
+          continue;
         const DofIndex p = static_cast<DofIndex>(slave) * kDofsPerNode + d;
         if (map.status_[p] == 'f')
-          throw InputError(where + ": node " + std::to_string(slave_id) + " " +
-                           directionName(d) + " is both fixed and a rigid-joint slave");
+          throw InputError(where + ": node " + std::to_string(slave_id) + " " + directionName(d) +
+                           " is both fixed and a rigid-joint slave");
         if (link_of[p] >= 0)
-          throw InputError(where + ": node " + std::to_string(slave_id) + " " +
-                           directionName(d) + " is already a slave of rigid_joints[" +
+          throw InputError(where + ": node " + std::to_string(slave_id) + " " + directionName(d) +
+                           " is already a slave of rigid_joints[" +
                            std::to_string(links[link_of[p]].joint) + "]");
         link_of[p] = static_cast<int>(links.size() - 1);
         map.status_[p] = 's';
@@ -156,11 +165,13 @@ DofMap DofMap::build(const Model& model, const std::vector<bool>& inactive) {
     }
   }
   for (DofIndex p = 0; p < static_cast<DofIndex>(inactive.size()) && p < n_phys; ++p)
-    if (inactive[p] && map.status_[p] == 'a') map.status_[p] = 'n';
+    if (inactive[p] && map.status_[p] == 'a')
+      map.status_[p] = 'n';
 
   map.physical_to_active_.assign(n_phys, -1);
   for (DofIndex p = 0; p < n_phys; ++p) {
-    if (map.status_[p] != 'a') continue;
+    if (map.status_[p] != 'a')
+      continue;
     map.physical_to_active_[p] = static_cast<DofIndex>(map.active_to_physical_.size());
     map.active_to_physical_.push_back(p);
   }
@@ -192,7 +203,8 @@ DofIndex DofMap::active(NodeId node, int direction) const {
 
 DofIndex DofMap::requireActive(NodeId node, int direction) const {
   const DofIndex p = physical(node, direction);
-  if (physical_to_active_[p] >= 0) return physical_to_active_[p];
+  if (physical_to_active_[p] >= 0)
+    return physical_to_active_[p];
   const char* why = status_[p] == 'f'   ? "fixed"
                     : status_[p] == 's' ? "a rigid-joint slave"
                                         : "not connected (no stiffness and no mass)";

@@ -17,8 +17,10 @@ Matrix rigidBodyModes(const System& system) {
   const DofMap& dofs = system.dofs;
   const DofIndex n = dofs.activeCount();
   Vector3 centroid = Vector3::Zero();
-  for (DofIndex i = 0; i < n; ++i) centroid += dofs.positionOf(i);
-  if (n > 0) centroid /= static_cast<double>(n);
+  for (DofIndex i = 0; i < n; ++i)
+    centroid += dofs.positionOf(i);
+  if (n > 0)
+    centroid /= static_cast<double>(n);
   Matrix modes = Matrix::Zero(n, 6);
   for (DofIndex i = 0; i < n; ++i) {
     const DofRef d = dofs.dofOf(i);
@@ -26,7 +28,8 @@ Matrix rigidBodyModes(const System& system) {
     if (d.direction < 3) {
       modes(i, d.direction) = 1.0;
       // translation of the node under a unit rotation theta about axis a: (e_a x r)_d
-      for (int a = 0; a < 3; ++a) modes(i, 3 + a) = Vector3::Unit(a).cross(r)(d.direction);
+      for (int a = 0; a < 3; ++a)
+        modes(i, 3 + a) = Vector3::Unit(a).cross(r)(d.direction);
     } else {
       modes(i, d.direction) = 1.0;
     }
@@ -65,12 +68,10 @@ std::string describeFreeMotions(const System& system) {
   const Eigen::HouseholderQR<Matrix> qr(basis.shapes(Eigen::all, zero));
   const Matrix space = qr.householderQ() * Matrix::Identity(n, static_cast<DofIndex>(zero.size()));
   const Matrix rigid = rigidBodyModes(system);
-  static const char* kRigidNames[6] = {"rigid-body translation along x",
-                                       "rigid-body translation along y",
-                                       "rigid-body translation along z",
-                                       "rigid-body rotation about x",
-                                       "rigid-body rotation about y",
-                                       "rigid-body rotation about z"};
+  static const char* kRigidNames[6] = {
+      "rigid-body translation along x", "rigid-body translation along y",
+      "rigid-body translation along z", "rigid-body rotation about x",
+      "rigid-body rotation about y",    "rigid-body rotation about z"};
   std::vector<int> free_rigid;
   for (int r = 0; r < 6; ++r) {
     const double norm = rigid.col(r).norm();

@@ -38,7 +38,8 @@ class ShiftInvertOp {
   Eigen::Index cols() const { return k_.cols(); }
   void set_shift(double sigma) {
     // Spectra sets the shift on every solver construction; factorise once per distinct shift.
-    if (factorised_ && sigma == sigma_) return;
+    if (factorised_ && sigma == sigma_)
+      return;
     SparseMatrix a = k_ - sigma * m_;
     a.makeCompressed();
     if (!chol_.factorize(a))
@@ -50,7 +51,8 @@ class ShiftInvertOp {
   }
   void perform_op(const double* x, double* y) const {
     chol_.solveInPlace(x, y);
-    if (deflation_.cols() == 0) return;
+    if (deflation_.cols() == 0)
+      return;
     // y <- P y with the M-orthogonal projector P = I - Phi Phi^T M onto the complement of the
     // modes already found: they get nu = 0 and the Lanczos run finds the next ones, including
     // further copies of a repeated eigenvalue (rigid-body modes) that one Krylov space misses.
@@ -112,7 +114,8 @@ RitzBlock blockVerification(const ShiftInvertOp& op, const SparseMatrix& k, cons
   std::normal_distribution<double> normal;
   Matrix x(n, block_size);
   for (Eigen::Index j = 0; j < x.cols(); ++j)
-    for (Eigen::Index i = 0; i < n; ++i) x(i, j) = normal(rng);
+    for (Eigen::Index i = 0; i < n; ++i)
+      x(i, j) = normal(rng);
   Vector mx(n);
   RitzBlock out;
   for (int step = 0; step < kPowerSteps; ++step) {
@@ -129,7 +132,8 @@ RitzBlock blockVerification(const ShiftInvertOp& op, const SparseMatrix& k, cons
     kr = 0.5 * (kr + kr.transpose()).eval();
     mr = 0.5 * (mr + mr.transpose()).eval();
     Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> es(kr, mr);
-    if (es.info() != Eigen::Success) break;  // block lost rank: nothing left to find
+    if (es.info() != Eigen::Success)
+      break;  // block lost rank: nothing left to find
     x = y * es.eigenvectors();
     out.values = es.eigenvalues();
     out.vectors = x;
@@ -150,8 +154,10 @@ void checkInputs(const SparseMatrix& k, const SparseMatrix& m, int count) {
     throw InputError("modal solver: K is " + std::to_string(k.rows()) + "x" +
                      std::to_string(k.cols()) + " and M is " + std::to_string(m.rows()) + "x" +
                      std::to_string(m.cols()) + "; both must be square and of the same size");
-  if (count <= 0) throw InputError("modal solver: the number of modes must be positive");
-  if (k.rows() == 0) throw InputError("modal solver: the model has no active DOF");
+  if (count <= 0)
+    throw InputError("modal solver: the number of modes must be positive");
+  if (k.rows() == 0)
+    throw InputError("modal solver: the model has no active DOF");
 }
 
 // Automatic shift: a small negative fraction of the mean K/M diagonal ratio keeps K - sigma M
@@ -174,7 +180,8 @@ ModalBasis sortAndNormalise(const Vector& values, const Matrix& vectors, const S
                             const Matrix* m_dense) {
   const int n = static_cast<int>(values.size());
   std::vector<int> order(n);
-  for (int i = 0; i < n; ++i) order[i] = i;
+  for (int i = 0; i < n; ++i)
+    order[i] = i;
   std::sort(order.begin(), order.end(), [&](int a, int b) { return values(a) < values(b); });
   ModalBasis basis;
   basis.eigenvalues.resize(n);
@@ -187,7 +194,8 @@ ModalBasis sortAndNormalise(const Vector& values, const Matrix& vectors, const S
     // Sign convention: the largest component is positive, so results are reproducible.
     Eigen::Index imax;
     phi.cwiseAbs().maxCoeff(&imax);
-    if (phi(imax) < 0) phi = -phi;
+    if (phi(imax) < 0)
+      phi = -phi;
     basis.shapes.col(i) = phi;
     basis.eigenvalues(i) = values(order[i]);
     basis.frequencies_hz(i) = std::sqrt(std::max(0.0, values(order[i]))) / kTwoPi;
@@ -230,10 +238,9 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     nev = static_cast<int>(std::min<Eigen::Index>(nev, n - 1));
     // Krylov dimension: ARPACK's 2 nev + 1 is capped at nev + 30, which trades a few more
     // restarts for much cheaper re-orthogonalisation (about 20 % faster for 40 modes of 17k DOFs).
-    const int ncv = static_cast<int>(
-        std::min<Eigen::Index>(std::max(std::min(2 * nev + 1, nev + 30), 20), n));
-    Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassProduct,
-                                 Spectra::GEigsMode::ShiftInvert>
+    const int ncv =
+        static_cast<int>(std::min<Eigen::Index>(std::max(std::min(2 * nev + 1, nev + 30), 20), n));
+    Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassProduct, Spectra::GEigsMode::ShiftInvert>
         solver(op, bop, nev, ncv, sigma);
     solver.init();
     int converged = 0;
@@ -263,9 +270,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
   // With a frequency limit, grow the number of requested modes until the highest one found lies
   // above the limit (or the count bound is reached).
   int nev = request.max_frequency_hz > 0 ? std::min(request.count, 20) : request.count;
-  const double limit = request.max_frequency_hz > 0
-                           ? std::pow(kTwoPi * request.max_frequency_hz, 2)
-                           : std::numeric_limits<double>::infinity();
+  const double limit = request.max_frequency_hz > 0 ? std::pow(kTwoPi * request.max_frequency_hz, 2)
+                                                    : std::numeric_limits<double>::infinity();
   Vector values;
   Matrix vectors;
   while (true) {
@@ -283,7 +289,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
   // Lanczos run instead.
   for (int pass = 0; pass < kMaxDeflationPasses; ++pass) {
     const Eigen::Index found = values.size();
-    if (found == 0 || found + kVerificationModes >= n) break;
+    if (found == 0 || found + kVerificationModes >= n)
+      break;
     ModalBasis current = sortAndNormalise(values, vectors, &mass, nullptr);
     op.deflate(current.shapes);
     const double highest = current.eigenvalues(found - 1);
@@ -294,7 +301,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     std::vector<Eigen::Index> added;
     bool unconverged_candidate = false;
     for (Eigen::Index i = 0; i < extra_values.size(); ++i) {
-      if (extra_values(i) >= accept_below) continue;
+      if (extra_values(i) >= accept_below)
+        continue;
       if (block.residuals(i) < kRitzResidual)
         added.push_back(i);
       else
@@ -304,10 +312,12 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
       std::tie(extra_values, extra_vectors) =
           lanczos(static_cast<int>(std::min<Eigen::Index>(kVerificationModes, n - found - 1)));
       for (Eigen::Index i = 0; i < extra_values.size(); ++i)
-        if (extra_values(i) < accept_below) added.push_back(i);
+        if (extra_values(i) < accept_below)
+          added.push_back(i);
     }
     op.deflate(Matrix());
-    if (added.empty()) break;
+    if (added.empty())
+      break;
     Vector merged_values(found + static_cast<Eigen::Index>(added.size()));
     Matrix merged_vectors(n, merged_values.size());
     merged_values.head(found) = current.eigenvalues;

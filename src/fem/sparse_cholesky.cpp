@@ -22,17 +22,19 @@ struct SparseCholesky::Impl {
 
   Impl() {
     cholmod_start(&common);
-    // Simplicial or supernodal by CHOLMOD's flop heuristic: the track-chain matrices are banded with
-    // small supernodes, where the simplicial solve (no BLAS calls) is about twice as fast.
+    // Simplicial or supernodal by CHOLMOD's flop heuristic: the track-chain matrices are banded
+    // with small supernodes, where the simplicial solve (no BLAS calls) is about twice as fast.
     common.supernodal = CHOLMOD_AUTO;
     common.final_ll = 1;
     common.print = 0;
     common.error_handler = nullptr;
   }
   ~Impl() {
-    if (factor) cholmod_free_factor(&factor, &common);
+    if (factor)
+      cholmod_free_factor(&factor, &common);
     for (cholmod_dense** d : {&x, &y, &e, &b})
-      if (*d) cholmod_free_dense(d, &common);
+      if (*d)
+        cholmod_free_dense(d, &common);
     cholmod_finish(&common);
   }
 
@@ -63,30 +65,37 @@ void SparseCholesky::analyze(const SparseMatrix& a) {
   if (a.rows() != a.cols())
     throw InputError("sparse Cholesky: matrix is " + std::to_string(a.rows()) + "x" +
                      std::to_string(a.cols()) + ", not square");
-  if (!a.isCompressed()) throw InputError("sparse Cholesky: matrix must be compressed");
-  if (impl_->factor) cholmod_free_factor(&impl_->factor, &impl_->common);
+  if (!a.isCompressed())
+    throw InputError("sparse Cholesky: matrix must be compressed");
+  if (impl_->factor)
+    cholmod_free_factor(&impl_->factor, &impl_->common);
   cholmod_sparse s = Impl::view(a);
   impl_->factor = cholmod_analyze(&s, &impl_->common);
-  if (!impl_->factor) throw SolverError("sparse Cholesky: symbolic analysis failed (CHOLMOD)");
+  if (!impl_->factor)
+    throw SolverError("sparse Cholesky: symbolic analysis failed (CHOLMOD)");
   impl_->factorised = false;
   rows_ = a.rows();
 }
 
 bool SparseCholesky::factorize(const SparseMatrix& a) {
-  if (!impl_->factor || a.rows() != rows_) analyze(a);
+  if (!impl_->factor || a.rows() != rows_)
+    analyze(a);
   cholmod_sparse s = Impl::view(a);
   cholmod_factorize(&s, impl_->factor, &impl_->common);
-  impl_->factorised = impl_->common.status == CHOLMOD_OK && impl_->factor->minor == static_cast<std::size_t>(a.rows());
+  impl_->factorised = impl_->common.status == CHOLMOD_OK &&
+                      impl_->factor->minor == static_cast<std::size_t>(a.rows());
   return impl_->factorised;
 }
 
 double SparseCholesky::rcond() const {
-  if (!impl_->factorised) return 0.0;
+  if (!impl_->factorised)
+    return 0.0;
   return cholmod_rcond(impl_->factor, &impl_->common);
 }
 
 Matrix SparseCholesky::solve(const Matrix& rhs) const {
-  if (!impl_->factorised) throw SolverError("sparse Cholesky: solve before a successful factorisation");
+  if (!impl_->factorised)
+    throw SolverError("sparse Cholesky: solve before a successful factorisation");
   if (rhs.rows() != rows_)
     throw InputError("sparse Cholesky: right-hand side has " + std::to_string(rhs.rows()) +
                      " rows, expected " + std::to_string(rows_));
@@ -100,14 +109,16 @@ Matrix SparseCholesky::solve(const Matrix& rhs) const {
   b.xtype = CHOLMOD_REAL;
   b.dtype = CHOLMOD_DOUBLE;
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, impl_->factor, &b, &impl_->common);
-  if (!x) throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
+  if (!x)
+    throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
   Matrix out = Eigen::Map<Matrix>(static_cast<double*>(x->x), rhs.rows(), rhs.cols());
   cholmod_free_dense(&x, &impl_->common);
   return out;
 }
 
 Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
-  if (!impl_->factorised) throw SolverError("sparse Cholesky: solve before a successful factorisation");
+  if (!impl_->factorised)
+    throw SolverError("sparse Cholesky: solve before a successful factorisation");
   if (rhs.rows() != rows_)
     throw InputError("sparse Cholesky: right-hand side has " + std::to_string(rhs.rows()) +
                      " rows, expected " + std::to_string(rows_));
@@ -119,7 +130,8 @@ Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
     cholmod_dense* d = nullptr;
     cholmod_common* common;
     ~Dense() {
-      if (d) cholmod_free_dense(&d, common);
+      if (d)
+        cholmod_free_dense(&d, common);
     }
   } block{nullptr, &impl_->common}, x{nullptr, &impl_->common}, y{nullptr, &impl_->common},
       e{nullptr, &impl_->common};  // y, e: CHOLMOD's workspaces, apart from solveInPlace's
@@ -127,9 +139,11 @@ Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
   for (DofIndex first = 0; first < rhs.cols(); first += kBlock) {
     const DofIndex width = std::min<DofIndex>(kBlock, rhs.cols() - first);
     if (!block.d || static_cast<DofIndex>(block.d->ncol) != width) {
-      if (block.d) cholmod_free_dense(&block.d, &impl_->common);
+      if (block.d)
+        cholmod_free_dense(&block.d, &impl_->common);
       block.d = cholmod_allocate_dense(rows_, width, rows_, CHOLMOD_REAL, &impl_->common);
-      if (!block.d) throw SolverError("sparse Cholesky: out of memory for a block of right-hand sides");
+      if (!block.d)
+        throw SolverError("sparse Cholesky: out of memory for a block of right-hand sides");
     }
     Eigen::Map<Matrix> b(static_cast<double*>(block.d->x), rows_, width);
     b.setZero();
@@ -140,7 +154,8 @@ Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
                         &impl_->common) ||
         !x.d)
       throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
-    out.middleCols(first, width) = Eigen::Map<const Matrix>(static_cast<double*>(x.d->x), rows_, width);
+    out.middleCols(first, width) =
+        Eigen::Map<const Matrix>(static_cast<double*>(x.d->x), rows_, width);
   }
   return out;
 }
@@ -150,7 +165,8 @@ Vector SparseCholesky::solve(const Vector& rhs) const {
 }
 
 void SparseCholesky::solveInPlace(const double* in, double* out) const {
-  if (!impl_->b) impl_->b = cholmod_allocate_dense(rows_, 1, rows_, CHOLMOD_REAL, &impl_->common);
+  if (!impl_->b)
+    impl_->b = cholmod_allocate_dense(rows_, 1, rows_, CHOLMOD_REAL, &impl_->common);
   std::memcpy(impl_->b->x, in, sizeof(double) * rows_);
   cholmod_solve2(CHOLMOD_A, impl_->factor, impl_->b, nullptr, &impl_->x, nullptr, &impl_->y,
                  &impl_->e, &impl_->common);

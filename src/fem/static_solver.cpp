@@ -18,17 +18,19 @@ StaticResult solveStatic(const System& system, const Vector& load) {
   if (load.size() != n)
     throw InputError("static load has " + std::to_string(load.size()) + " entries, expected " +
                      std::to_string(n) + " (active DOFs)");
-  if (n == 0) throw InputError("static solve: the model has no active DOF");
-  if (!load.allFinite()) throw InputError("static load contains NaN or infinite entries");
+  if (n == 0)
+    throw InputError("static solve: the model has no active DOF");
+  if (!load.allFinite())
+    throw InputError("static load contains NaN or infinite entries");
   SparseCholesky chol;
   if (!chol.factorize(system.stiffness) || chol.rcond() < kSingularRcond)
-    throw SolverError("stiffness matrix is singular: free motion: " +
-                      describeFreeMotions(system) +
+    throw SolverError("stiffness matrix is singular: free motion: " + describeFreeMotions(system) +
                       " (add supports or springs that restrain it)");
   StaticResult result;
   result.displacement = chol.solve(load);
   const double fnorm = load.norm();
-  result.residual = fnorm > 0 ? (system.stiffness * result.displacement - load).norm() / fnorm : 0.0;
+  result.residual =
+      fnorm > 0 ? (system.stiffness * result.displacement - load).norm() / fnorm : 0.0;
   return result;
 }
 

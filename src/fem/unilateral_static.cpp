@@ -18,10 +18,11 @@ constexpr double kForceTolerance = 1e-9;
 
 /// The normal force N = k_a n . (u_2 - u_1) a spring with normal stiffness `k` carries (or would
 /// carry, when released) in the solution `u` (physical displacements).
-double normalForce(const System& system, const Vector& u, const Spring& s, const UnilateralSpring& c,
-                   double k) {
+double normalForce(const System& system, const Vector& u, const Spring& s,
+                   const UnilateralSpring& c, double k) {
   auto nodal = [&](NodeId id) -> Vector3 {
-    if (id == kGround) return Vector3::Zero();
+    if (id == kGround)
+      return Vector3::Zero();
     return u.segment<3>(system.dofs.physical(id, 0));
   };
   return k * c.sign * s.frame.col(c.axis).dot(nodal(s.n2) - nodal(s.n1));
@@ -80,7 +81,8 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
       r.statics = solveStatic(r.system, r.system.gravity_load);
     } catch (const SolverError& e) {
       const auto lifted = std::count(r.released.begin(), r.released.end(), true);
-      if (lifted == 0) throw;
+      if (lifted == 0)
+        throw;
       throw SolverError("with the " + std::to_string(lifted) + " unilateral springs in tension " +
                         "released (" + releasedNames(r.model, springs, r.released) +
                         "): " + e.what());
@@ -93,14 +95,16 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
     for (std::size_t i = 0; i < springs.size(); ++i) {
       force[i] = normalForce(r.system, u, r.model.springs[springs[i].spring], springs[i],
                              normal_stiffness[i]);
-      if (!r.released[i]) scale = std::max(scale, std::abs(force[i]));
+      if (!r.released[i])
+        scale = std::max(scale, std::abs(force[i]));
     }
     const double tolerance = kForceTolerance * scale;
     // The violation of each contact: tension on an active one, penetration of a released one.
     std::vector<double> violation(springs.size(), 0.0);
     for (std::size_t i = 0; i < springs.size(); ++i) {
       const double v = r.released[i] ? force[i] : -force[i];
-      if (v > tolerance) violation[i] = v;
+      if (v > tolerance)
+        violation[i] = v;
     }
     bool changed = false;
     if (!single_change) {

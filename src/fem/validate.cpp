@@ -52,13 +52,19 @@ class Validator {
     checkNodes();
     checkMaterials();
     checkSections();
-    for (std::size_t i = 0; i < model_.beams.size(); ++i) checkBeam(i);
-    for (std::size_t i = 0; i < model_.springs.size(); ++i) checkSpring(i);
-    for (std::size_t i = 0; i < model_.masses.size(); ++i) checkMass(i);
-    for (std::size_t i = 0; i < model_.rigid_joints.size(); ++i) checkRigidJoint(i);
+    for (std::size_t i = 0; i < model_.beams.size(); ++i)
+      checkBeam(i);
+    for (std::size_t i = 0; i < model_.springs.size(); ++i)
+      checkSpring(i);
+    for (std::size_t i = 0; i < model_.masses.size(); ++i)
+      checkMass(i);
+    for (std::size_t i = 0; i < model_.rigid_joints.size(); ++i)
+      checkRigidJoint(i);
     checkRigidJointCycles();
-    for (std::size_t i = 0; i < model_.fixed.size(); ++i) checkFixed(i);
-    for (const auto& [name, dofs] : model_.dof_sets) checkSet(name, dofs);
+    for (std::size_t i = 0; i < model_.fixed.size(); ++i)
+      checkFixed(i);
+    for (const auto& [name, dofs] : model_.dof_sets)
+      checkSet(name, dofs);
   }
 
  private:
@@ -119,8 +125,8 @@ class Validator {
       // Beyond 1e9 m a coordinate is a unit mistake, and lengths squared lose all precision
       // (1e300 overflowed into a misleading "orientation parallel to the axis").
       if (node.position.cwiseAbs().maxCoeff() > 1e9) {
-        fail(item("nodes", i), "coordinates of node " + std::to_string(node.id) +
-                                   " lie beyond 1e9 m");
+        fail(item("nodes", i),
+             "coordinates of node " + std::to_string(node.id) + " lie beyond 1e9 m");
       }
       scale_ = std::max(scale_, node.position.cwiseAbs().maxCoeff());
     }
@@ -278,7 +284,8 @@ class Validator {
         fail(label, "slave node " + std::to_string(slave) + " is listed twice");
       }
       for (int d = 0; d < kDofsPerNode; ++d) {
-        if (!joint.dofs[static_cast<std::size_t>(d)]) continue;
+        if (!joint.dofs[static_cast<std::size_t>(d)])
+          continue;
         const auto [it, inserted] = slave_joint_.emplace(DofRef{slave, d}, i);
         if (!inserted) {
           fail(label, "slave " + dofLabel(slave, d) + " is already driven by rigid_joints[" +
@@ -328,8 +335,8 @@ class Validator {
         for (auto p = start; p != path.end(); ++p) {
           cycle += "node " + std::to_string(*p) + " -> ";
         }
-        fail(item("rigid_joints", joint), "rigid joints form a cycle (master -> slave): " +
-                                              cycle + "node " + std::to_string(slave));
+        fail(item("rigid_joints", joint), "rigid joints form a cycle (master -> slave): " + cycle +
+                                              "node " + std::to_string(slave));
       }
     }
   }
@@ -342,7 +349,8 @@ class Validator {
       fail(label, "no DOFs selected");
     }
     for (int d = 0; d < kDofsPerNode; ++d) {
-      if (!fixed.dofs[static_cast<std::size_t>(d)]) continue;
+      if (!fixed.dofs[static_cast<std::size_t>(d)])
+        continue;
       const auto it = slave_joint_.find(DofRef{fixed.node, d});
       if (it != slave_joint_.end()) {
         // A fixed slave would silently constrain its master; fix the master instead.
@@ -382,7 +390,9 @@ class Validator {
 
 }  // namespace
 
-void validate(const Model& model, const std::string& where) { Validator(model, where).run(); }
+void validate(const Model& model, const std::string& where) {
+  Validator(model, where).run();
+}
 
 }  // namespace fem
 }  // namespace tracked_vehicle_dynamics

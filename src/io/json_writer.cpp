@@ -12,7 +12,8 @@ void JsonWriter::separator() {
     return;
   }
   if (!first_.empty()) {
-    if (!first_.back()) out_ << ",";
+    if (!first_.back())
+      out_ << ",";
     first_.back() = false;
   }
 }
@@ -27,7 +28,8 @@ JsonWriter& JsonWriter::beginObject() {
 JsonWriter& JsonWriter::endObject() {
   first_.pop_back();
   out_ << "}";
-  if (first_.empty()) out_ << "\n";
+  if (first_.empty())
+    out_ << "\n";
   return *this;
 }
 
@@ -83,25 +85,29 @@ JsonWriter& JsonWriter::value(const std::string& v) {
 
 JsonWriter& JsonWriter::value(const Vector& v) {
   beginArray();
-  for (Eigen::Index i = 0; i < v.size(); ++i) value(v(i));
+  for (Eigen::Index i = 0; i < v.size(); ++i)
+    value(v(i));
   return endArray();
 }
 
 JsonWriter& JsonWriter::value(const std::vector<double>& v) {
   beginArray();
-  for (const double x : v) value(x);
+  for (const double x : v)
+    value(x);
   return endArray();
 }
 
 JsonWriter& JsonWriter::value(const Matrix& m) {
   beginArray();
-  for (Eigen::Index i = 0; i < m.rows(); ++i) value(Vector(m.row(i).transpose()));
+  for (Eigen::Index i = 0; i < m.rows(); ++i)
+    value(Vector(m.row(i).transpose()));
   return endArray();
 }
 
 JsonWriter& JsonWriter::value(const std::vector<std::string>& v) {
   beginArray();
-  for (const auto& s : v) value(s);
+  for (const auto& s : v)
+    value(s);
   return endArray();
 }
 
@@ -110,10 +116,18 @@ std::string JsonWriter::escape(const std::string& s) {
   out.reserve(s.size());
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];

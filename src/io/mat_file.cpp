@@ -293,8 +293,8 @@ bool emptyMat73(const std::string& path) {
 // request, text once (kept for a second request).
 struct MatReader::Impl {
   mat_t* mat = nullptr;
-  std::vector<VarPtr> headers;   // file order, as names_
-  std::vector<char> data_read;   // the header's data has been read (text variables)
+  std::vector<VarPtr> headers;  // file order, as names_
+  std::vector<char> data_read;  // the header's data has been read (text variables)
   ~Impl() {
     const QuietHdf5 quiet;  // closing a damaged 7.3 file fails in HDF5 too
     headers.clear();        // before the file they refer to is closed

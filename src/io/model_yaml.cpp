@@ -29,7 +29,8 @@ const char* const kDofHelp =
 std::vector<YamlValue> optionalList(const YamlValue& root, const char* key,
                                     const std::string& what) {
   const std::optional<YamlValue> list = root.find(key);
-  if (!list || list->isNull()) return {};
+  if (!list || list->isNull())
+    return {};
   return list->elements(what);
 }
 
@@ -69,7 +70,8 @@ DofFlags readDofs(const YamlValue& value) {
       add(value, named);
     } else {
       for (const char c : text) {
-        if (c < '1' || c > '6') value.fail("invalid DOFs '" + text + "'; " + kDofHelp);
+        if (c < '1' || c > '6')
+          value.fail("invalid DOFs '" + text + "'; " + kDofHelp);
         add(value, c - '1');
       }
     }
@@ -90,7 +92,8 @@ Matrix3 readRows(const YamlValue& value, const std::string& what) {
   Matrix3 matrix;
   for (int r = 0; r < 3; ++r) {
     const std::vector<YamlValue> row = rows[static_cast<std::size_t>(r)].elements(3, what);
-    for (int c = 0; c < 3; ++c) matrix(r, c) = row[static_cast<std::size_t>(c)].asNumber();
+    for (int c = 0; c < 3; ++c)
+      matrix(r, c) = row[static_cast<std::size_t>(c)].asNumber();
   }
   return matrix;
 }
@@ -136,8 +139,10 @@ fem::Section readSection(const YamlValue& value) {
   section.iy = value["Iy"].asNumber();
   section.iz = value["Iz"].asNumber();
   section.torsion = value["J"].asNumber();
-  if (const auto factor = value.find("shear_factor_y")) section.shear_factor_y = factor->asNumber();
-  if (const auto factor = value.find("shear_factor_z")) section.shear_factor_z = factor->asNumber();
+  if (const auto factor = value.find("shear_factor_y"))
+    section.shear_factor_y = factor->asNumber();
+  if (const auto factor = value.find("shear_factor_z"))
+    section.shear_factor_z = factor->asNumber();
   return section;
 }
 
@@ -160,7 +165,8 @@ bool readSixValues(const YamlValue& value, const char* list_key, const char* con
                    Vector6& out) {
   const std::optional<YamlValue> list = value.find(list_key);
   bool individual = false;
-  for (int d = 0; d < kDofsPerNode; ++d) individual = individual || value.has(keys[d]);
+  for (int d = 0; d < kDofsPerNode; ++d)
+    individual = individual || value.has(keys[d]);
   if (list && individual) {
     value.fail(std::string("give either ") + list_key + ": [6 values] or the keys " + keys[0] +
                ".." + keys[5] + ", not both");
@@ -168,10 +174,12 @@ bool readSixValues(const YamlValue& value, const char* list_key, const char* con
   if (list) {
     const std::vector<YamlValue> items =
         list->elements(kDofsPerNode, "a list of 6 values [x, y, z, rx, ry, rz]");
-    for (int d = 0; d < kDofsPerNode; ++d) out[d] = items[static_cast<std::size_t>(d)].asNumber();
+    for (int d = 0; d < kDofsPerNode; ++d)
+      out[d] = items[static_cast<std::size_t>(d)].asNumber();
   }
   for (int d = 0; d < kDofsPerNode; ++d) {
-    if (const auto item = value.find(keys[d])) out[d] = item->asNumber();
+    if (const auto item = value.find(keys[d]))
+      out[d] = item->asNumber();
   }
   return list || individual;
 }
@@ -180,7 +188,8 @@ fem::Spring readSpring(const YamlValue& value) {
   value.expectMap({"name", "nodes", "k", "kx", "ky", "kz", "krx", "kry", "krz", "c", "cx", "cy",
                    "cz", "crx", "cry", "crz", "frame"});
   fem::Spring spring;
-  if (const auto name = value.find("name")) spring.name = name->asString();
+  if (const auto name = value.find("name"))
+    spring.name = name->asString();
   const YamlValue nodes = value["nodes"];
   const std::vector<YamlValue> ends = nodes.elements("[n1, n2], [n1, ground] or [n1] (to ground)");
   if (ends.empty() || ends.size() > 2) {
@@ -215,7 +224,8 @@ Matrix3 readInertia(const YamlValue& value) {
     value.fail("expected " + what + ", got " + std::to_string(items.size()) + " entries");
   }
   std::vector<double> v;
-  for (const YamlValue& item : items) v.push_back(item.asNumber());
+  for (const YamlValue& item : items)
+    v.push_back(item.asNumber());
   Matrix3 inertia = Vector3(v[0], v[1], v[2]).asDiagonal();
   if (v.size() == 6) {
     inertia(0, 1) = inertia(1, 0) = v[3];
@@ -228,23 +238,28 @@ Matrix3 readInertia(const YamlValue& value) {
 fem::Mass readMass(const YamlValue& value) {
   value.expectMap({"name", "node", "mass", "inertia", "offset"});
   fem::Mass mass;
-  if (const auto name = value.find("name")) mass.name = name->asString();
+  if (const auto name = value.find("name"))
+    mass.name = name->asString();
   mass.node = readNodeId(value["node"]);
   mass.mass = value["mass"].asNumber();
-  if (const auto inertia = value.find("inertia")) mass.inertia = readInertia(*inertia);
-  if (const auto offset = value.find("offset")) mass.offset = offset->asVector3();
+  if (const auto inertia = value.find("inertia"))
+    mass.inertia = readInertia(*inertia);
+  if (const auto offset = value.find("offset"))
+    mass.offset = offset->asVector3();
   return mass;
 }
 
 fem::RigidJoint readRigidJoint(const YamlValue& value) {
   value.expectMap({"name", "master", "slaves", "dofs"});
   fem::RigidJoint joint;
-  if (const auto name = value.find("name")) joint.name = name->asString();
+  if (const auto name = value.find("name"))
+    joint.name = name->asString();
   joint.master = readNodeId(value["master"]);
   for (const YamlValue& slave : value["slaves"].elements("a list of slave node ids")) {
     joint.slaves.push_back(readNodeId(slave));
   }
-  if (const auto dofs = value.find("dofs")) joint.dofs = readDofs(*dofs);
+  if (const auto dofs = value.find("dofs"))
+    joint.dofs = readDofs(*dofs);
   return joint;
 }
 
@@ -252,7 +267,8 @@ fem::FixedDofs readFixed(const YamlValue& value) {
   value.expectMap({"node", "dofs"});
   fem::FixedDofs fixed;
   fixed.node = readNodeId(value["node"]);
-  if (const auto dofs = value.find("dofs")) fixed.dofs = readDofs(*dofs);
+  if (const auto dofs = value.find("dofs"))
+    fixed.dofs = readDofs(*dofs);
   return fixed;
 }
 
@@ -269,8 +285,10 @@ fem::Model readModel(const YamlValue& root) {
   root.expectMap({"name", "gravity", "nodes", "materials", "sections", "beams", "springs", "masses",
                   "rigid_joints", "fixed", "sets"});
   fem::Model model;
-  if (const auto name = root.find("name")) model.name = name->asString();
-  if (const auto gravity = root.find("gravity")) model.gravity = gravity->asVector3();
+  if (const auto name = root.find("name"))
+    model.name = name->asString();
+  if (const auto gravity = root.find("gravity"))
+    model.gravity = gravity->asVector3();
   for (const YamlValue& node : root["nodes"].elements("a list of nodes {id, x: [x, y, z]}")) {
     model.nodes.push_back(readNode(node));
   }
@@ -296,7 +314,8 @@ fem::Model readModel(const YamlValue& root) {
     model.fixed.push_back(readFixed(item));
   }
   if (const auto sets = root.find("sets"); sets && !sets->isNull()) {
-    for (const auto& [name, set] : sets->entries()) model.dof_sets[name] = readSet(set);
+    for (const auto& [name, set] : sets->entries())
+      model.dof_sets[name] = readSet(set);
   }
   return model;
 }

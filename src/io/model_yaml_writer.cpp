@@ -19,8 +19,10 @@ namespace {
 /// Shortest text that parses back to exactly `value`. A mantissa without a '.' gets ".0" so
 /// that YAML 1.1 readers (PyYAML) also see a float: "1e-05" -> "1.0e-05".
 std::string formatNumber(double value) {
-  if (std::isnan(value)) return ".nan";
-  if (std::isinf(value)) return value > 0 ? ".inf" : "-.inf";
+  if (std::isnan(value))
+    return ".nan";
+  if (std::isinf(value))
+    return value > 0 ? ".inf" : "-.inf";
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
   std::string text(buffer, result.ptr);
@@ -31,7 +33,9 @@ std::string formatNumber(double value) {
   return text;
 }
 
-YAML::Emitter& number(YAML::Emitter& out, double value) { return out << formatNumber(value); }
+YAML::Emitter& number(YAML::Emitter& out, double value) {
+  return out << formatNumber(value);
+}
 
 /// Names that YAML would read as null are quoted; everything else yaml-cpp quotes as needed.
 void name(YAML::Emitter& out, const std::string& text) {
@@ -43,20 +47,23 @@ void name(YAML::Emitter& out, const std::string& text) {
 
 void vector(YAML::Emitter& out, const Eigen::Ref<const Eigen::VectorXd>& values) {
   out << YAML::Flow << YAML::BeginSeq;
-  for (Eigen::Index i = 0; i < values.size(); ++i) number(out, values[i]);
+  for (Eigen::Index i = 0; i < values.size(); ++i)
+    number(out, values[i]);
   out << YAML::EndSeq;
 }
 
 void rows(YAML::Emitter& out, const Matrix3& matrix) {
   out << YAML::Flow << YAML::BeginSeq;
-  for (int r = 0; r < 3; ++r) vector(out, matrix.row(r).transpose());
+  for (int r = 0; r < 3; ++r)
+    vector(out, matrix.row(r).transpose());
   out << YAML::EndSeq;
 }
 
 std::string dofDigits(const std::array<bool, kDofsPerNode>& dofs) {
   std::string digits;
   for (int d = 0; d < kDofsPerNode; ++d) {
-    if (dofs[static_cast<std::size_t>(d)]) digits.push_back(static_cast<char>('1' + d));
+    if (dofs[static_cast<std::size_t>(d)])
+      digits.push_back(static_cast<char>('1' + d));
   }
   return digits;
 }
@@ -76,7 +83,8 @@ void writeInertia(YAML::Emitter& out, const Matrix3& inertia) {
 
 void writeItems(YAML::Emitter& out, const fem::Model& model) {
   out << YAML::Key << "nodes" << YAML::Value;
-  if (model.nodes.empty()) out << YAML::Flow;  // "nodes: []" rather than a dangling "[]" line
+  if (model.nodes.empty())
+    out << YAML::Flow;  // "nodes: []" rather than a dangling "[]" line
   out << YAML::BeginSeq;
   for (const fem::Node& node : model.nodes) {
     out << YAML::Flow << YAML::BeginMap << YAML::Key << "id" << YAML::Value << node.id;
@@ -200,7 +208,8 @@ void writeItems(YAML::Emitter& out, const fem::Model& model) {
       }
       out << YAML::Key << "master" << YAML::Value << joint.master;
       out << YAML::Key << "slaves" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-      for (const NodeId slave : joint.slaves) out << slave;
+      for (const NodeId slave : joint.slaves)
+        out << slave;
       out << YAML::EndSeq << YAML::Key << "dofs" << YAML::Value << YAML::DoubleQuoted
           << dofDigits(joint.dofs) << YAML::EndMap;
     }
@@ -223,7 +232,8 @@ void writeItems(YAML::Emitter& out, const fem::Model& model) {
       out << YAML::Key;
       name(out, set_name);
       out << YAML::Value;
-      if (dofs.empty()) out << YAML::Flow;
+      if (dofs.empty())
+        out << YAML::Flow;
       out << YAML::BeginSeq;
       for (const fem::DofRef& dof : dofs) {
         out << YAML::Flow << YAML::BeginMap << YAML::Key << "node" << YAML::Value << dof.node

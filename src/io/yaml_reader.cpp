@@ -23,7 +23,8 @@ const char* const kIntTag = "tag:yaml.org,2002:int";
 const char* const kFloatTag = "tag:yaml.org,2002:float";
 
 std::string lowercase(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : text)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
 }
 
@@ -43,7 +44,8 @@ std::string_view withoutPlus(const std::string& text) {
 /// YAML (.nan, .inf) and C (nan, inf, infinity) spellings of non-finite values, any case/sign.
 bool isNonFiniteSpelling(const std::string& text) {
   std::string_view word(text);
-  if (!word.empty() && (word.front() == '+' || word.front() == '-')) word.remove_prefix(1);
+  if (!word.empty() && (word.front() == '+' || word.front() == '-'))
+    word.remove_prefix(1);
   const std::string lower = lowercase(std::string(word));
   return lower == ".nan" || lower == "nan" || lower == ".inf" || lower == "inf" ||
          lower == "infinity";
@@ -52,7 +54,8 @@ bool isNonFiniteSpelling(const std::string& text) {
 std::string joined(std::initializer_list<const char*> words) {
   std::string out;
   for (const char* word : words) {
-    if (!out.empty()) out += ", ";
+    if (!out.empty())
+      out += ", ";
     out += word;
   }
   return out;
@@ -115,9 +118,11 @@ int YamlValue::line() const {
 
 void YamlValue::fail(const std::string& what) const {
   std::string message = file_ + ": ";
-  if (!path_.empty()) message += path_ + ": ";
+  if (!path_.empty())
+    message += path_ + ": ";
   message += what;
-  if (line() > 0) message += " (line " + std::to_string(line()) + ")";
+  if (line() > 0)
+    message += " (line " + std::to_string(line()) + ")";
   throw InputError(message);
 }
 
@@ -136,10 +141,14 @@ int YamlValue::keyLine(const YAML::Node& key) {
 }
 
 std::string YamlValue::describe() const {
-  if (isNull()) return "nothing (an empty value)";
-  if (node_.IsSequence()) return "a list";
-  if (node_.IsMap()) return "a map";
-  if (node_.Tag() == "!") return "the string \"" + node_.Scalar() + "\"";
+  if (isNull())
+    return "nothing (an empty value)";
+  if (node_.IsSequence())
+    return "a list";
+  if (node_.IsMap())
+    return "a map";
+  if (node_.Tag() == "!")
+    return "the string \"" + node_.Scalar() + "\"";
   return "'" + node_.Scalar() + "'";
 }
 
@@ -169,7 +178,8 @@ void YamlValue::expectMap(std::initializer_list<const char*> allowed) const {
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const std::string key = it->first.Scalar();
     bool known = false;
-    for (const char* name : allowed) known = known || key == name;
+    for (const char* name : allowed)
+      known = known || key == name;
     if (!known) {
       // In a flow map {value: 14,000, ...} the comma ends the value: "000" becomes a key.
       const bool digits = !key.empty() && key.find_first_not_of("0123456789") == std::string::npos;
@@ -180,7 +190,9 @@ void YamlValue::expectMap(std::initializer_list<const char*> allowed) const {
   }
 }
 
-bool YamlValue::has(const std::string& key) const { return find(key).has_value(); }
+bool YamlValue::has(const std::string& key) const {
+  return find(key).has_value();
+}
 
 std::optional<YamlValue> YamlValue::find(const std::string& key) const {
   if (!node_.IsMap()) {
@@ -300,7 +312,8 @@ Vector3 YamlValue::asVector3() const {
 
 std::vector<double> YamlValue::asNumbers() const {
   std::vector<double> out;
-  for (const YamlValue& item : elements("a list of numbers")) out.push_back(item.asNumber());
+  for (const YamlValue& item : elements("a list of numbers"))
+    out.push_back(item.asNumber());
   return out;
 }
 

@@ -72,8 +72,9 @@ Matrix congruence(const SparseMatrix& a, const Matrix& t) {
   const std::vector<DofIndex> rows = rowsWithEntries(a);
   constexpr std::size_t kBlock = 1024;  // 1024 x 431 doubles: 3.5 MB per block product
   for (std::size_t first = 0; first < rows.size(); first += kBlock) {
-    const std::vector<DofIndex> block(rows.begin() + static_cast<std::ptrdiff_t>(first),
-                                      rows.begin() + static_cast<std::ptrdiff_t>(std::min(first + kBlock, rows.size())));
+    const std::vector<DofIndex> block(
+        rows.begin() + static_cast<std::ptrdiff_t>(first),
+        rows.begin() + static_cast<std::ptrdiff_t>(std::min(first + kBlock, rows.size())));
     const SparseMatrix a_cols = a * selection(a.rows(), block);
     const Matrix at_block = a_cols.transpose() * t;
     const Matrix t_block = t(block, Eigen::all);
@@ -187,7 +188,7 @@ struct CraigBamptonReducer::State {
   std::vector<DofIndex> masters;
   std::vector<DofIndex> slaves;
   std::vector<DofIndex> slave_index;  // per DOF: its row of Phi_S, -1 for a master
-  SparseMatrix p_s;  // n x s selection of the slave DOFs
+  SparseMatrix p_s;                   // n x s selection of the slave DOFs
   SparseMatrix k_ss;
   SparseMatrix m_ss;
   bool has_dampers = false;     // C given (not 0 x 0): its blocks are projected, m = 0 included

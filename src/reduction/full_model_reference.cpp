@@ -31,7 +31,8 @@ fem::ModalBasis modesUpTo(const fem::System& system, double limit_hz, int max_mo
     fem::ModalRequest request;
     request.count = count;
     fem::ModalBasis modes = fem::solveModes(system.stiffness, system.mass, request);
-    if (modes.frequencies_hz(modes.count() - 1) > limit_hz) return modes;
+    if (modes.frequencies_hz(modes.count() - 1) > limit_hz)
+      return modes;
     if (count >= max_modes || count >= n - 1)
       throw InputError("full-model reference: more than " + std::to_string(count) +
                        " modes below " + std::to_string(limit_hz) +
@@ -102,8 +103,10 @@ dynamics::ComplexMatrix FullModelReference::frf(const Vector& frequencies_hz,
     dynamics::ComplexVector x = residual_input.leftCols(n_u) * tau;
     x += dynamics::Complex(0.0, omega) * (residual_input.rightCols(n_u) * tau);
     dynamics::Complex factor(1.0, 0.0);
-    if (quantity == dynamics::OutputQuantity::Velocity) factor = {0.0, omega};
-    if (quantity == dynamics::OutputQuantity::Acceleration) factor = {-omega * omega, 0.0};
+    if (quantity == dynamics::OutputQuantity::Velocity)
+      factor = {0.0, omega};
+    if (quantity == dynamics::OutputQuantity::Acceleration)
+      factor = {-omega * omega, 0.0};
     out.row(i) += (factor * x).transpose();
   }
   return out;
@@ -114,7 +117,8 @@ FullModelReference buildFullReference(const fem::System& system,
                                       const FullReferenceOptions& options) {
   if (!(options.max_frequency_hz > 0) || !std::isfinite(options.max_frequency_hz))
     throw InputError("full-model reference: max_frequency_hz must be positive and finite");
-  if (options.max_modes <= 0) throw InputError("full-model reference: max_modes must be positive");
+  if (options.max_modes <= 0)
+    throw InputError("full-model reference: max_modes must be positive");
   if (options.damping.modal_ratios.size() != 0)
     throw InputError("full-model reference: per-mode damping ratios apply to a reduced model only");
   const auto start = std::chrono::steady_clock::now();
@@ -123,13 +127,15 @@ FullModelReference buildFullReference(const fem::System& system,
   ref.full_dofs = system.size();
   const fem::ModalBasis modes = modesUpTo(system, options.max_frequency_hz, options.max_modes);
   DofIndex k = 0;
-  while (k < modes.count() && modes.frequencies_hz(k) <= options.max_frequency_hz) ++k;
+  while (k < modes.count() && modes.frequencies_hz(k) <= options.max_frequency_hz)
+    ++k;
   if (k == 0) {
     char text[200];
-    std::snprintf(text, sizeof(text),
-                  "full-model reference: no mode lies below %g Hz (the lowest is at %.4g Hz); raise "
-                  "the frequency limit (tvd: --max-mode-hz)",
-                  options.max_frequency_hz, modes.count() > 0 ? modes.frequencies_hz(0) : 0.0);
+    std::snprintf(
+        text, sizeof(text),
+        "full-model reference: no mode lies below %g Hz (the lowest is at %.4g Hz); raise "
+        "the frequency limit (tvd: --max-mode-hz)",
+        options.max_frequency_hz, modes.count() > 0 ? modes.frequencies_hz(0) : 0.0);
     throw InputError(text);
   }
   const Matrix phi = modes.shapes.leftCols(k);
@@ -140,8 +146,9 @@ FullModelReference buildFullReference(const fem::System& system,
   const SparseMatrix h = outputMatrix(system, outputs);
   fem::SparseCholesky k_factor;
   if (!k_factor.factorize(system.stiffness))
-    throw SolverError("full-model reference: K is singular (a free rigid-body motion), so the "
-                      "static residual K^-1 f does not exist; support the model");
+    throw SolverError(
+        "full-model reference: K is singular (a free rigid-body motion), so the "
+        "static residual K^-1 f does not exist; support the model");
   if (omega2.size() > 0 && omega2.minCoeff() <= 0.0)
     throw SolverError("full-model reference: a rigid-body mode (0 Hz) with a factorisable K");
   const Matrix g = k_factor.solve(Matrix(h.transpose()));

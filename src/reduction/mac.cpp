@@ -33,17 +33,20 @@ Vector significantSquaredNorms(const Matrix& phi) {
 Matrix orthonormalBasis(const Matrix& columns, double set_norm) {
   const Eigen::JacobiSVD<Matrix> svd(columns, Eigen::ComputeThinU);
   Eigen::Index rank = 0;
-  while (rank < svd.singularValues().size() && svd.singularValues()(rank) > kNegligibleShape * set_norm)
+  while (rank < svd.singularValues().size() &&
+         svd.singularValues()(rank) > kNegligibleShape * set_norm)
     ++rank;
   return svd.matrixU().leftCols(rank);
 }
 
 }  // namespace
 
-std::vector<std::pair<Eigen::Index, Eigen::Index>> degenerateGroups(const Vector& f, double relative_gap) {
+std::vector<std::pair<Eigen::Index, Eigen::Index>> degenerateGroups(const Vector& f,
+                                                                    double relative_gap) {
   std::vector<std::pair<Eigen::Index, Eigen::Index>> groups;
   for (Eigen::Index i = 0; i < f.size(); ++i) {
-    if (i > 0 && std::abs(f(i) - f(i - 1)) <= relative_gap * std::max(std::abs(f(i)), std::abs(f(i - 1))))
+    if (i > 0 &&
+        std::abs(f(i) - f(i - 1)) <= relative_gap * std::max(std::abs(f(i)), std::abs(f(i - 1))))
       groups.back().second = i + 1;
     else
       groups.emplace_back(i, i + 1);
@@ -56,8 +59,9 @@ Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b
   const Matrix plain = mac(phi_a, phi_b);  // checks the shapes
   if (f_a.size() != phi_a.cols() || f_b.size() != phi_b.cols())
     throw InputError("eigenspaceMac: " + std::to_string(f_a.size()) + " and " +
-                     std::to_string(f_b.size()) + " frequencies for " + std::to_string(phi_a.cols()) +
-                     " and " + std::to_string(phi_b.cols()) + " shapes");
+                     std::to_string(f_b.size()) + " frequencies for " +
+                     std::to_string(phi_a.cols()) + " and " + std::to_string(phi_b.cols()) +
+                     " shapes");
   if (!(relative_gap >= 0.0))
     throw InputError("eigenspaceMac: relative gap must be >= 0");
   const auto groups_a = degenerateGroups(f_a, relative_gap);
@@ -66,10 +70,12 @@ Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b
   const double norm_b = phi_b.cols() ? phi_b.colwise().norm().maxCoeff() : 0.0;
   std::vector<Matrix> basis_b;
   for (const auto& [b0, b1] : groups_b)
-    basis_b.push_back(b1 - b0 > 1 ? orthonormalBasis(phi_b.middleCols(b0, b1 - b0), norm_b) : Matrix());
+    basis_b.push_back(b1 - b0 > 1 ? orthonormalBasis(phi_b.middleCols(b0, b1 - b0), norm_b)
+                                  : Matrix());
   Matrix out = plain;
   for (const auto& [a0, a1] : groups_a) {
-    const Matrix qa = a1 - a0 > 1 ? orthonormalBasis(phi_a.middleCols(a0, a1 - a0), norm_a) : Matrix();
+    const Matrix qa =
+        a1 - a0 > 1 ? orthonormalBasis(phi_a.middleCols(a0, a1 - a0), norm_a) : Matrix();
     for (std::size_t g = 0; g < groups_b.size(); ++g) {
       const auto [b0, b1] = groups_b[g];
       if (a1 - a0 == 1 && b1 - b0 == 1)

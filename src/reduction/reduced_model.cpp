@@ -138,7 +138,8 @@ ReducedModel build(const fem::System& system, const ReductionRequest& request,
   model.travel_load = cb.travel_load;
   if (!request.master_groups.empty() && request.master_groups.size() != request.masters.size())
     throw std::logic_error("buildReducedModel: " + std::to_string(request.master_groups.size()) +
-                           " master groups for " + std::to_string(request.masters.size()) + " masters");
+                           " master groups for " + std::to_string(request.masters.size()) +
+                           " masters");
   model.master_positions.resize(cb.masterCount(), 3);
   for (DofIndex i = 0; i < cb.masterCount(); ++i) {
     const DofIndex master = cb.masters[static_cast<std::size_t>(i)];  // request.masters, in order

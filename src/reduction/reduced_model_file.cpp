@@ -230,7 +230,8 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
                      std::to_string(model.modeCount()) + " fixed-interface modes for " +
                      std::to_string(k) + " reduced coordinates");
   checkSize(where, "master_positions", model.master_positions, model.masterCount(), 3);
-  checkCount(where, "master_groups", model.master_groups.size(), static_cast<std::size_t>(model.masterCount()));
+  checkCount(where, "master_groups", model.master_groups.size(),
+             static_cast<std::size_t>(model.masterCount()));
   for (const fem::DofRef& d : model.masters)
     if (d.direction < 0 || d.direction >= kDofsPerNode)
       throw InputError(where + ": master of node " + std::to_string(d.node) + " has direction " +

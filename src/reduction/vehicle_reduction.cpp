@@ -60,10 +60,12 @@ std::vector<DofIndex> interfaceMasters(const AssembledVariant& v, DofIndex* inte
   std::vector<DofIndex> masters;
   for (const vehicle::RoadInput& input : v.vehicle.layout.road_inputs) {
     const DofIndex a = dofs.active(input.node, static_cast<int>(Direction::Uz));
-    if (a >= 0) masters.push_back(a);
+    if (a >= 0)
+      masters.push_back(a);
   }
   *interface_count = static_cast<DofIndex>(masters.size());
-  for (int d = 0; d < kDofsPerNode; ++d) masters.push_back(dofs.requireActive(v.vehicle.layout.hull, d));
+  for (int d = 0; d < kDofsPerNode; ++d)
+    masters.push_back(dofs.requireActive(v.vehicle.layout.hull, d));
   for (const vehicle::WheelStation& wheel : v.vehicle.layout.wheels)
     masters.push_back(dofs.requireActive(wheel.arm, static_cast<int>(Direction::Ry)));
   return masters;
@@ -134,7 +136,8 @@ void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_m
 std::vector<double> frequenciesBelow(const Vector& hz, double limit) {
   std::vector<double> out;
   for (Eigen::Index i = 0; i < hz.size(); ++i)
-    if (hz(i) <= limit) out.push_back(hz(i));
+    if (hz(i) <= limit)
+      out.push_back(hz(i));
   return out;
 }
 
@@ -212,9 +215,12 @@ std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& v,
 
 ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehicle::Variant variant,
                            const VehicleReductionOptions& options, VehicleReductionReport* report) {
-  if (options.global_modes <= 0) throw InputError("reduction: global_modes must be positive");
-  if (!(options.band_hz > 0)) throw InputError("reduction: band_hz must be positive");
-  if (options.mogesec_masters < 0) throw InputError("reduction: mogesec_masters must not be negative");
+  if (options.global_modes <= 0)
+    throw InputError("reduction: global_modes must be positive");
+  if (!(options.band_hz > 0))
+    throw InputError("reduction: band_hz must be positive");
+  if (options.mogesec_masters < 0)
+    throw InputError("reduction: mogesec_masters must not be negative");
   VehicleReductionReport local;
   VehicleReductionReport& rep = report ? *report : local;
   rep.warnings.clear();
@@ -260,7 +266,8 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
       try {
         return buildAndSolve(description, other_variant, options.global_modes);
       } catch (const InputError& e) {
-        if (variant == vehicle::Variant::Tracked) throw;
+        if (variant == vehicle::Variant::Tracked)
+          throw;
         throw InputError(std::string(e.what()) +
                          " (the un-tracked reduction builds the tracked variant for its MAC mode "
                          "selection; the band rule does not: `tvd reduce --rule band`, the "
@@ -305,8 +312,8 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     selection_options.reference_name = std::string(vehicle::variantName(other_variant));
     selection = selectModes(model.modes.frequencies_hz, selection_options, &reference);
   } else {
-    selection_options.rule = options.mode_count > 0 ? ModeSelectionRule::Count
-                                                    : ModeSelectionRule::FrequencyBand;
+    selection_options.rule =
+        options.mode_count > 0 ? ModeSelectionRule::Count : ModeSelectionRule::FrequencyBand;
     selection_options.count = options.mode_count;
     selection_options.max_frequency_hz = options.band_hz;
     selection = selectModes(model.modes.frequencies_hz, selection_options);
@@ -337,7 +344,8 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   MasterSelection masters =
       selectMasters(model.system.dofs, selected_shapes, inputs, filter, mogesec_options);
   // The basis' masters in interfaceMasters()' order: interface, hull, wheels, then the picks.
-  masters.masters.insert(masters.masters.begin(), imposed.begin(), imposed.begin() + interface_count);
+  masters.masters.insert(masters.masters.begin(), imposed.begin(),
+                         imposed.begin() + interface_count);
   rep.interface_dofs = interface_count;
   rep.mogesec_dofs = static_cast<DofIndex>(masters.picks.size());
   rep.mogesec_picks = masters.picks;
@@ -379,7 +387,8 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   request.reduction = reductionKey(variant, options);
   request.creator = std::string("reduceVehicle ") + vehicle::variantName(variant);
   // Where each input reads the road: its node's station, or its pad's centre (description).
-  request.input_stations = vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
+  request.input_stations =
+      vehicle::roadInputStations(model.vehicle.layout, model.system.ground_inputs);
   const CraigBamptonReducer reducer(model.system, request.masters);
   // The fixed-interface modes a slave set can give: a count above it cannot help.
   const int slave_count =

@@ -39,23 +39,28 @@ dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
 // a_max and d_max of the options, checked; one 0 and the other > 0: the 0 one takes the other's
 // value (online_vehicle.h).
 std::pair<double, double> slewRates(const OnlineVehicleOptions& options) {
-  for (const auto& [name, value] : {std::pair<const char*, double>{"max_acceleration", options.max_acceleration},
-                                    std::pair<const char*, double>{"max_deceleration", options.max_deceleration}})
+  for (const auto& [name, value] :
+       {std::pair<const char*, double>{"max_acceleration", options.max_acceleration},
+        std::pair<const char*, double>{"max_deceleration", options.max_deceleration}})
     if (!std::isfinite(value) || value < 0.0)
       throw InputError(std::string("online vehicle: ") + name + " " + brief(value) +
                        " m/s^2 must be finite and not negative");
-  const double a = options.max_acceleration > 0.0 ? options.max_acceleration : options.max_deceleration;
-  const double d = options.max_deceleration > 0.0 ? options.max_deceleration : options.max_acceleration;
+  const double a =
+      options.max_acceleration > 0.0 ? options.max_acceleration : options.max_deceleration;
+  const double d =
+      options.max_deceleration > 0.0 ? options.max_deceleration : options.max_acceleration;
   return {a, d};
 }
 
 // The system the simulator runs: the model, with the travel inertia input when the speed slews.
 dynamics::SecondOrderSystem simulatedSystem(const reduction::ReducedModel& model,
                                             const OnlineVehicleOptions& options) {
-  if (slewRates(options).first == 0.0) return model.system;
+  if (slewRates(options).first == 0.0)
+    return model.system;
   if (model.travel_load.size() != model.size())
-    throw InputError("online vehicle: the reduced model has no travel inertia load (travel_load), "
-                     "which a speed slew (max_acceleration, max_deceleration) needs");
+    throw InputError(
+        "online vehicle: the reduced model has no travel inertia load (travel_load), "
+        "which a speed slew (max_acceleration, max_deceleration) needs");
   return dynamics::withTravelInertia(model.system, model.travel_load);
 }
 
@@ -256,7 +261,8 @@ void OnlineVehicle::setSpeed(double speed) {
                      " m/s must be finite and not negative");
   }
   commanded_speed_ = speed;
-  if (!slews()) speed_ = speed;
+  if (!slews())
+    speed_ = speed;
 }
 
 int OnlineVehicle::sampleInput() {
@@ -276,7 +282,9 @@ StepResult OnlineVehicle::step() {
     // within reach (exactly, not to rounding). s advances by the trapezoid, exact for constant a.
     const double rise = max_acceleration_ * time_step_, fall = max_deceleration_ * time_step_;
     const double change = commanded_speed_ - speed_;
-    const double next = change > rise ? speed_ + rise : change < -fall ? speed_ - fall : commanded_speed_;
+    const double next = change > rise    ? speed_ + rise
+                        : change < -fall ? speed_ - fall
+                                         : commanded_speed_;
     travel_acceleration_ = (next - speed_) / time_step_;
     station_ += 0.5 * (speed_ + next) * time_step_;
     speed_ = next;

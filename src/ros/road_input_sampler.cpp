@@ -34,11 +34,11 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
   // Groups of contacts at exactly the same station, in station order.
   members_.resize(static_cast<std::size_t>(stations_.size()));
   std::iota(members_.begin(), members_.end(), Eigen::Index{0});
-  std::stable_sort(members_.begin(), members_.end(), [&](Eigen::Index a, Eigen::Index b) {
-    return stations_(a) < stations_(b);
-  });
+  std::stable_sort(members_.begin(), members_.end(),
+                   [&](Eigen::Index a, Eigen::Index b) { return stations_(a) < stations_(b); });
   for (std::size_t k = 0; k < members_.size(); ++k) {
-    if (k == 0 || stations_(members_[k]) != stations_(members_[k - 1])) group_begin_.push_back(k);
+    if (k == 0 || stations_(members_[k]) != stations_(members_[k - 1]))
+      group_begin_.push_back(k);
   }
   group_begin_.push_back(members_.size());
   lookups_.resize(group_begin_.size() - 1);
@@ -46,7 +46,8 @@ RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral
   group_rate_.assign(lookups_.size(), 0);
   for (std::size_t g = 0; g < lookups_.size(); ++g) {
     for (std::size_t k = group_begin_[g]; k < group_begin_[g + 1]; ++k)
-      if (needs_rate_[static_cast<std::size_t>(members_[k])]) group_rate_[g] = 1;
+      if (needs_rate_[static_cast<std::size_t>(members_[k])])
+        group_rate_[g] = 1;
   }
   if (stations_.size() > 0) {
     rearmost_ = stations_.minCoeff();
@@ -59,8 +60,10 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
   const Eigen::Index n = stations_.size();
   if (&buffer != lookup_buffer_ || buffer.revision() != lookup_revision_) {
     // Grids may have been freed (and their addresses reused): forget every one.
-    for (Lookup& lookup : lookups_) lookup.grid = nullptr;
-    for (ContactCell& cell : cells_) cell.grid = nullptr;
+    for (Lookup& lookup : lookups_)
+      lookup.grid = nullptr;
+    for (ContactCell& cell : cells_)
+      cell.grid = nullptr;
     lookup_buffer_ = &buffer;
     lookup_revision_ = buffer.revision();
   }
@@ -81,8 +84,8 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       continue;
     }
     Lookup& lookup = lookups_[g];
-    if (lookup.grid != nullptr && x >= lookup.from && x <= lookup.until &&
-        x >= lookup.flat_from && x <= lookup.flat_until && lateral_offset == lookup.offset) {
+    if (lookup.grid != nullptr && x >= lookup.from && x <= lookup.until && x >= lookup.flat_from &&
+        x <= lookup.flat_until && lateral_offset == lookup.offset) {
       // Still on the same flat run of the same grid: the heights held are the terrain's.
       for (std::size_t k = first; k < last; ++k) {
         const Eigen::Index q = members_[k];
@@ -132,9 +135,12 @@ double RoadInputSampler::rate(const terrain::TerrainBuffer& buffer, double x, do
   auto covered = [&](double s) { return (s >= from && s <= until) || buffer.covers(s); };
   const double xa = x - kSlopeStep, xb = x + kSlopeStep;
   const bool a = covered(xa), b = covered(xb);
-  if (a && b) return speed * (buffer.height(xb, y) - buffer.height(xa, y)) / (2.0 * kSlopeStep);
-  if (b) return speed * (buffer.height(xb, y) - height) / kSlopeStep;
-  if (a) return speed * (height - buffer.height(xa, y)) / kSlopeStep;
+  if (a && b)
+    return speed * (buffer.height(xb, y) - buffer.height(xa, y)) / (2.0 * kSlopeStep);
+  if (b)
+    return speed * (buffer.height(xb, y) - height) / kSlopeStep;
+  if (a)
+    return speed * (height - buffer.height(xa, y)) / kSlopeStep;
   return 0.0;
 }
 

@@ -39,12 +39,12 @@
 #include <vector>
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <dirent.h>
+#include <pthread.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <std_msgs/Float64.h>
 #include <std_srvs/Empty.h>
-#include <dirent.h>
-#include <pthread.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -80,7 +80,8 @@ void printStats(const char* what, const rl::DurationStatistics& s) {
 int offline(const std::string& vehicle_file, const std::string& variant, const std::string& cache,
             const rl::TrackBagOptions& track, double rate, const std::string& method) {
   tvd::reduction::VehicleReductionReport report;
-  const tvd::vehicle::VehicleDescription description = tvd::vehicle::loadVehicleDescription(vehicle_file);
+  const tvd::vehicle::VehicleDescription description =
+      tvd::vehicle::loadVehicleDescription(vehicle_file);
   const auto model = tvd::reduction::loadOrReduceVehicle(
       description, tvd::vehicle::parseVariant(variant), cache, {}, &report);
   // The node's pads (whole-pad records of the ground-contact check), as the node forms them.

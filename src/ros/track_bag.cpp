@@ -57,14 +57,17 @@ terrain::Terrain runTerrain(const TrackBagOptions& options) {
   terrain::TrackOptions track_options;
   track_options.lateral_offset = options.lateral_offset;
   const terrain::Terrain t = terrain::loadTrack(options.track, track_options);
-  if (t.startStation() == 0.0) return t;
-  return terrain::Terrain(t.stations().array() - t.startStation(), t.lateral(), t.heights(), t.name());
+  if (t.startStation() == 0.0)
+    return t;
+  return terrain::Terrain(t.stations().array() - t.startStation(), t.lateral(), t.heights(),
+                          t.name());
 }
 
 /// Station step of the patches: the terrain's own on a uniform grid, else its smallest one, so
 /// that no sample of the file falls between two of the bag's by more than that step.
 double patchSpacing(const terrain::Terrain& t) {
-  if (t.isUniform()) return t.spacing();
+  if (t.isUniform())
+    return t.spacing();
   const Vector& x = t.stations();
   return (x.tail(x.size() - 1) - x.head(x.size() - 1)).minCoeff();
 }
@@ -78,8 +81,10 @@ class Motion {
   /// The first time [s] at which the station reaches s [m]; +inf when it never does (a profile
   /// that ends standing still short of s). s(t) is non-decreasing, so bisection finds it.
   double timeAt(double s) const {
-    if (s <= 0.0) return 0.0;
-    if (!o_.speed_profile) return s / o_.speed;
+    if (s <= 0.0)
+      return 0.0;
+    if (!o_.speed_profile)
+      return s / o_.speed;
     const dynamics::SpeedProfile& p = *o_.speed_profile;
     const double end = p.endTime(), s_end = p.station(end);
     if (s_end < s) {

@@ -24,14 +24,16 @@ int main(int argc, char** argv) {
   double lateral_offset = 0.0;
   CLI::App app{"tvd_make_bag: rosbag of a paper test track or a terrain file at a constant speed"};
   app.add_option("--track", options.track,
-                 "long_hill, separated_waves, oop_waves, half_round:H (the NRMM obstacle, H its height in m) or a "
+                 "long_hill, separated_waves, oop_waves, half_round:H (the NRMM obstacle, H its "
+                 "height in m) or a "
                  "terrain file (.csv/.yaml, e.g. from tvd terrain)")
       ->capture_default_str();
   CLI::Option* speed_option =
       app.add_option("--speed-kmh", speed_kmh, "vehicle speed [km/h]")->capture_default_str();
   std::string profile_file;
-  app.add_option("--speed-profile", profile_file,
-                 "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), as tvd simulate")
+  app.add_option(
+         "--speed-profile", profile_file,
+         "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), as tvd simulate")
       ->check(CLI::ExistingFile)
       ->excludes(speed_option);
   CLI::Option* out_option =
@@ -102,9 +104,10 @@ int main(int argc, char** argv) {
     const std::string how = profile_file.empty()
                                 ? "at " + tracked_vehicle_dynamics::brief(speed_kmh) + " km/h"
                                 : "with the speed profile " + profile_file;
-    std::printf("%s: %s %s, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, %zu clock messages\n",
-                out.c_str(), options.track.c_str(), how.c_str(), s.duration, s.patches, s.covered_from,
-                s.covered_until, s.speed_messages, s.clock_messages);
+    std::printf(
+        "%s: %s %s, %.2f s, %zu terrain patches (%.2f .. %.2f m), %zu speed, %zu clock messages\n",
+        out.c_str(), options.track.c_str(), how.c_str(), s.duration, s.patches, s.covered_from,
+        s.covered_until, s.speed_messages, s.clock_messages);
   } catch (const tracked_vehicle_dynamics::InputError& e) {
     std::cerr << "tvd_make_bag: error: " << e.what() << "\n";
     return 2;

@@ -77,8 +77,8 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   advertise<nav_msgs::Odometry>("odom", queue(publish_every_), &odom_pub_);
   for (std::size_t i : imu_points_) {
     imu_pubs_.push_back(std::make_unique<CountedPublisher>());
-    advertise<sensor_msgs::Imu>("imu/" + vehicle_->geometry().points[i].name,
-                                queue(publish_every_), imu_pubs_.back().get());
+    advertise<sensor_msgs::Imu>("imu/" + vehicle_->geometry().points[i].name, queue(publish_every_),
+                                imu_pubs_.back().get());
   }
   reset_service_ = loop_private_nh_.advertiseService("reset", &VehicleDynamicsNode::onReset, this);
   reset_to_service_ =
@@ -480,7 +480,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   }
   // On the wall clock the ticks come from the monotonic timer; rounding absorbs its wake-up
   // jitter, which would otherwise alternate 0 and 2 steps per tick. Simulated time is exact.
-  std::int64_t due = ahead_ns <= 0 ? 0
+  std::int64_t due = ahead_ns <= 0   ? 0
                      : use_sim_time_ ? ahead_ns / step_ns_
                                      : (ahead_ns + step_ns_ / 2) / step_ns_;
   if (due == 0)
@@ -589,11 +589,10 @@ void VehicleDynamicsNode::publishState() {
   // angular velocity is the body rate of the published orientation (vehicle_frames.h).
   const Matrix3 to_base = pose.rotation.toRotationMatrix().transpose();
   const bool odom = odom_pub_.listened();
-  const bool imu = std::any_of(imu_pubs_.begin(), imu_pubs_.end(),
-                               [](const auto& p) { return p->listened(); });
+  const bool imu =
+      std::any_of(imu_pubs_.begin(), imu_pubs_.end(), [](const auto& p) { return p->listened(); });
   if (twist || odom || imu) {
-    const Vector6 base_twist =
-        baseLinkTwist(v.speed(), v.geometry().cog, displacement, velocity);
+    const Vector6 base_twist = baseLinkTwist(v.speed(), v.geometry().cog, displacement, velocity);
     const geometry_msgs::Vector3 angular = toMsg(Vector3(base_twist.tail<3>()));
     if (twist) {
       twist_msg_.header.stamp = sample_time_;
@@ -631,11 +630,11 @@ void VehicleDynamicsNode::publishState() {
     accel_msg_.header.stamp = sample_time_;
     // Absolute: the model's acceleration relative to the path frame plus the frame's own travel
     // acceleration along odom x (0 without a speed slew), in base_link axes.
-    accel_msg_.accel.linear = toMsg(
-        to_base * (acceleration.head<3>() + Vector3(v.travelAcceleration(), 0.0, 0.0)));
+    accel_msg_.accel.linear =
+        toMsg(to_base * (acceleration.head<3>() + Vector3(v.travelAcceleration(), 0.0, 0.0)));
     // The derivative of the body rate on hull/twist.
-    accel_msg_.accel.angular = toMsg(
-        bodyAcceleration(displacement.tail<3>(), velocity.tail<3>(), acceleration.tail<3>()));
+    accel_msg_.accel.angular =
+        toMsg(bodyAcceleration(displacement.tail<3>(), velocity.tail<3>(), acceleration.tail<3>()));
     accel_pub_.publisher.publish(accel_msg_);
   }
   if (wheels) {

@@ -60,7 +60,7 @@ Matrix3 eulerRateMatrix(const Vector3& roll_pitch_yaw) {
   const double sr = std::sin(roll_pitch_yaw(0)), cr = std::cos(roll_pitch_yaw(0));
   const double sp = std::sin(roll_pitch_yaw(1)), cp = std::cos(roll_pitch_yaw(1));
   Matrix3 e;
-  e << 1.0, 0.0, -sp,  //
+  e << 1.0, 0.0, -sp,    //
       0.0, cr, sr * cp,  //
       0.0, -sr, cr * cp;
   return e;
@@ -72,7 +72,7 @@ Matrix3 eulerRateMatrixDerivative(const Vector3& roll_pitch_yaw, const Vector3& 
   const double sp = std::sin(roll_pitch_yaw(1)), cp = std::cos(roll_pitch_yaw(1));
   const double droll = rate(0), dpitch = rate(1);
   Matrix3 de;
-  de << 0.0, 0.0, -cp * dpitch,  //
+  de << 0.0, 0.0, -cp * dpitch,                              //
       0.0, -sr * droll, cr * cp * droll - sr * sp * dpitch,  //
       0.0, -cr * droll, -sr * cp * droll - cr * sp * dpitch;
   return de;
@@ -95,7 +95,8 @@ Vector3 rigidPointAcceleration(const Vector3& cog, const Vector6& hull_displacem
                                const Vector3& point) {
   const Vector3 theta = hull_displacement.tail<3>();
   const Vector3 omega = bodyRate(theta, hull_velocity.tail<3>());
-  const Vector3 alpha = bodyAcceleration(theta, hull_velocity.tail<3>(), hull_acceleration.tail<3>());
+  const Vector3 alpha =
+      bodyAcceleration(theta, hull_velocity.tail<3>(), hull_acceleration.tail<3>());
   const Vector3 r = point - cog;
   const Eigen::Quaterniond rotation = rotationFromRollPitchYaw(theta(0), theta(1), theta(2));
   return hull_acceleration.head<3>() + rotation * (alpha.cross(r) + omega.cross(omega.cross(r)));
@@ -103,9 +104,9 @@ Vector3 rigidPointAcceleration(const Vector3& cog, const Vector6& hull_displacem
 
 Vector6 baseLinkTwist(double speed, const Vector3& cog, const Vector6& hull_displacement,
                       const Vector6& hull_velocity) {
-  const Matrix3 r = rotationFromRollPitchYaw(hull_displacement(3), hull_displacement(4),
-                                             hull_displacement(5))
-                        .toRotationMatrix();
+  const Matrix3 r =
+      rotationFromRollPitchYaw(hull_displacement(3), hull_displacement(4), hull_displacement(5))
+          .toRotationMatrix();
   const Vector3 omega_body = bodyRate(hull_displacement.tail<3>(), hull_velocity.tail<3>());
   const Vector3 omega = r * omega_body;
   // t' = (v, 0, 0) + u_G' - omega x (R p_G), in odom axes; R^T t' in base_link axes.

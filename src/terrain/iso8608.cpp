@@ -29,7 +29,9 @@ std::string format(double value) {
   return out.str();
 }
 
-[[noreturn]] void fail(const std::string& what) { throw InputError("ISO 8608 road: " + what); }
+[[noreturn]] void fail(const std::string& what) {
+  throw InputError("ISO 8608 road: " + what);
+}
 
 int classIndex(char road_class) {
   const char upper = static_cast<char>(std::toupper(static_cast<unsigned char>(road_class)));
@@ -40,7 +42,9 @@ int classIndex(char road_class) {
 }
 
 /// Uniform on [0, 1) from the top 53 bits: the same on every standard library.
-double uniform(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+double uniform(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 
 /// One profile of the band's harmonics with fresh phases from rng.
 Vector synthesise(const Vector& x, const std::vector<double>& frequencies,
@@ -62,7 +66,8 @@ double iso8608ReferencePsd(char road_class) {
 
 double iso8608Psd(char road_class, double n, double waviness) {
   const double reference = iso8608ReferencePsd(road_class);
-  if (!(n > 0.0) || !std::isfinite(n)) fail("spatial frequency " + format(n) + " must be > 0");
+  if (!(n > 0.0) || !std::isfinite(n))
+    fail("spatial frequency " + format(n) + " must be > 0");
   return reference * std::pow(n / kIso8608ReferenceFrequency, -waviness);
 }
 
@@ -74,7 +79,8 @@ double iso8608Variance(char road_class, double n_low, double n_high, double wavi
   }
   const double n0 = kIso8608ReferenceFrequency;
   // ∫ G0 (n/n0)^-w dn = G0 n0^w [n^(1-w) / (1-w)], or G0 n0 ln(n) for w = 1.
-  if (std::abs(waviness - 1.0) < 1e-12) return reference * n0 * std::log(n_high / n_low);
+  if (std::abs(waviness - 1.0) < 1e-12)
+    return reference * n0 * std::log(n_high / n_low);
   const double e = 1.0 - waviness;
   return reference * std::pow(n0, waviness) * (std::pow(n_high, e) - std::pow(n_low, e)) / e;
 }
@@ -82,8 +88,10 @@ double iso8608Variance(char road_class, double n_low, double n_high, double wavi
 Terrain makeIso8608(char road_class, double length, double width, double spacing,
                     std::uint64_t seed, const Iso8608Options& options) {
   const char upper = static_cast<char>('A' + classIndex(road_class));
-  if (!(std::isfinite(length) && length > 0.0)) fail("length " + format(length) + " m must be > 0");
-  if (!(std::isfinite(width) && width >= 0.0)) fail("width " + format(width) + " m must be >= 0");
+  if (!(std::isfinite(length) && length > 0.0))
+    fail("length " + format(length) + " m must be > 0");
+  if (!(std::isfinite(width) && width >= 0.0))
+    fail("width " + format(width) + " m must be >= 0");
   if (!(std::isfinite(spacing) && spacing > 0.0 && spacing <= length)) {
     fail("spacing " + format(spacing) + " m must be in (0, length]");
   }
@@ -107,12 +115,14 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
   }
 
   const double stations = std::floor(length / spacing + 1e-9) + 1.0;
-  const double harmonics = (std::min(options.max_frequency, nyquist) - options.min_frequency) * length;
+  const double harmonics =
+      (std::min(options.max_frequency, nyquist) - options.min_frequency) * length;
   if (stations > kMaxStations || stations * harmonics > kMaxTerms) {
     fail("length " + format(length) + " m at spacing " + format(spacing) + " m needs " +
          format(stations) + " stations x " + format(harmonics) + " harmonics; at most " +
          format(kMaxStations) + " stations and " + format(kMaxTerms) +
-         " station-harmonic terms (13 km at 0.05 m spacing, about two minutes): generate a shorter road");
+         " station-harmonic terms (13 km at 0.05 m spacing, about two minutes): generate a shorter "
+         "road");
   }
 
   // Harmonics k Δn whose bins [(k - 1/2) Δn, (k + 1/2) Δn] meet the band, below Nyquist.
@@ -124,10 +134,12 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
   const auto k_last = static_cast<long long>(std::ceil(options.max_frequency / dn - 0.5));
   for (long long k = k_first; k <= k_last; ++k) {
     const double n = static_cast<double>(k) * dn;
-    if (n >= nyquist) break;
+    if (n >= nyquist)
+      break;
     const double low = std::max(options.min_frequency, n - 0.5 * dn);
     const double high = std::min(options.max_frequency, n + 0.5 * dn);
-    if (high <= low) continue;
+    if (high <= low)
+      continue;
     frequencies.push_back(n);
     amplitudes.push_back(std::sqrt(2.0 * iso8608Variance(upper, low, high, options.waviness)));
   }
@@ -138,7 +150,8 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
 
   const auto count = static_cast<Eigen::Index>(std::floor(length / spacing + 1e-9)) + 1;
   Vector x(count);
-  for (Eigen::Index i = 0; i < count; ++i) x(i) = static_cast<double>(i) * spacing;
+  for (Eigen::Index i = 0; i < count; ++i)
+    x(i) = static_cast<double>(i) * spacing;
 
   std::mt19937_64 rng(seed);
   const Vector right = synthesise(x, frequencies, amplitudes, rng);

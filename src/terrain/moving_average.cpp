@@ -13,8 +13,10 @@ namespace {
 /// Value of the piecewise-linear interpolant at t (in sample units), edges held.
 double interpolant(const Vector& h, double t) {
   const Eigen::Index n = h.size();
-  if (t <= 0.0) return h(0);
-  if (t >= static_cast<double>(n - 1)) return h(n - 1);
+  if (t <= 0.0)
+    return h(0);
+  if (t >= static_cast<double>(n - 1))
+    return h(n - 1);
   const auto k = static_cast<Eigen::Index>(std::floor(t));
   const double w = t - static_cast<double>(k);
   return w == 0.0 ? h(k) : (1.0 - w) * h(k) + w * h(k + 1);
@@ -59,7 +61,8 @@ Vector movingAverage(const Vector& samples, double spacing, double window) {
     }
   }
   const double half = 0.5 * window / spacing;  // half window in sample units
-  if (samples.size() == 0 || half == 0.0) return samples;
+  if (samples.size() == 0 || half == 0.0)
+    return samples;
   Vector smoothed(samples.size());
   for (Eigen::Index i = 0; i < samples.size(); ++i) {
     const double centre = static_cast<double>(i);

@@ -46,8 +46,10 @@ Terrain::Terrain(Vector stations, Vector lateral, Matrix heights, std::string na
       lateral_(std::move(lateral)),
       heights_(std::move(heights)),
       name_(std::move(name)) {
-  if (stations_.size() == 0) throw InputError("terrain '" + name_ + "': no stations");
-  if (lateral_.size() == 0) throw InputError("terrain '" + name_ + "': no lateral lines");
+  if (stations_.size() == 0)
+    throw InputError("terrain '" + name_ + "': no stations");
+  if (lateral_.size() == 0)
+    throw InputError("terrain '" + name_ + "': no lateral lines");
   if (heights_.rows() != lateral_.size() || heights_.cols() != stations_.size()) {
     throw InputError("terrain '" + name_ + "': heights are " + std::to_string(heights_.rows()) +
                      " x " + std::to_string(heights_.cols()) + ", expected " +
@@ -91,8 +93,10 @@ Eigen::Index Terrain::stationCell(double x) const {
     i = static_cast<Eigen::Index>((x - stations_(0)) / spacing_);
     i = std::clamp<Eigen::Index>(i, 0, last_cell);
     // Rounding of (x - x0) / dx may land one cell off; the grid values decide.
-    if (i < last_cell && x >= stations_(i + 1)) ++i;
-    if (i > 0 && x < stations_(i)) --i;
+    if (i < last_cell && x >= stations_(i + 1))
+      ++i;
+    if (i > 0 && x < stations_(i))
+      --i;
   } else {
     const double* begin = stations_.data();
     const double* end = begin + stations_.size();
@@ -126,12 +130,14 @@ Terrain::LateralCell Terrain::lateralCellOf(double y) const {
 }
 
 double Terrain::height(double x, double y) const {
-  if (std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(y))
+    return std::numeric_limits<double>::quiet_NaN();
   return height(x, lateralCellOf(y));
 }
 
 double Terrain::height(double x, const LateralCell& cell) const {
-  if (std::isnan(x)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(x))
+    return std::numeric_limits<double>::quiet_NaN();
   return height(stationWeightOf(x), cell);
 }
 
@@ -151,9 +157,11 @@ Terrain::StationWeight Terrain::stationWeightOf(double x) const {
 }
 
 double Terrain::slope(double x, double y) const {
-  if (std::isnan(x) || std::isnan(y)) return std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(x) || std::isnan(y))
+    return std::numeric_limits<double>::quiet_NaN();
   const Eigen::Index n = stations_.size();
-  if (n == 1 || x < stations_(0) || x >= stations_(n - 1)) return 0.0;
+  if (n == 1 || x < stations_(0) || x >= stations_(n - 1))
+    return 0.0;
   Eigen::Index j = 0;
   double wy = 0.0;
   lateralCell(y, &j, &wy);
@@ -168,15 +176,20 @@ Vector Terrain::profile(double y) const {
   Eigen::Index j = 0;
   double wy = 0.0;
   lateralCell(y, &j, &wy);
-  if (wy == 0.0) return heights_.row(j).transpose();
+  if (wy == 0.0)
+    return heights_.row(j).transpose();
   // blend() over the row: exact where the two lines agree.
   const auto a = heights_.row(j).array(), b = heights_.row(j + 1).array();
   return (a == b).select(a, (1.0 - wy) * a + wy * b).matrix().transpose();
 }
 
-void Terrain::saveCsv(const std::string& path) const { saveTerrainCsv(*this, path); }
+void Terrain::saveCsv(const std::string& path) const {
+  saveTerrainCsv(*this, path);
+}
 
-void Terrain::saveYaml(const std::string& path) const { saveTerrainYaml(*this, path); }
+void Terrain::saveYaml(const std::string& path) const {
+  saveTerrainYaml(*this, path);
+}
 
 }  // namespace terrain
 }  // namespace tracked_vehicle_dynamics

@@ -33,17 +33,20 @@ std::string format(double value) {
 void TerrainBuffer::addPatch(double start_station, double spacing, const Vector& lateral,
                              const Matrix& heights) {
   const std::string where = "terrain patch at station " + format(start_station) + " m: ";
-  if (!std::isfinite(start_station)) throw InputError(where + "start station is not finite");
+  if (!std::isfinite(start_station))
+    throw InputError(where + "start station is not finite");
   if (!std::isfinite(spacing) || spacing <= 0.0) {
     throw InputError(where + "spacing " + format(spacing) + " m must be positive and finite");
   }
-  if (lateral.size() == 0) throw InputError(where + "no lateral positions");
+  if (lateral.size() == 0)
+    throw InputError(where + "no lateral positions");
   if (heights.rows() != lateral.size()) {
     throw InputError(where + "heights have " + std::to_string(heights.rows()) +
                      " lines but there are " + std::to_string(lateral.size()) +
                      " lateral positions");
   }
-  if (heights.cols() == 0) throw InputError(where + "no samples");
+  if (heights.cols() == 0)
+    throw InputError(where + "no samples");
   // The stations start + k spacing must stay finite and distinct in double precision: a spacing
   // of 1e308, or of 1e-300 at 1e6 m, passes the checks above and breaks the grid.
   const double last_station = start_station + spacing * static_cast<double>(heights.cols() - 1);
@@ -95,9 +98,11 @@ const TerrainBuffer::Patch* TerrainBuffer::containing(double x) const {
   const double reach = max_length_ * (1.0 + kSlack);
   for (auto it = patches_.upper_bound(x); it != patches_.begin();) {
     --it;
-    if (it->first < x - reach) break;
+    if (it->first < x - reach)
+      break;
     const Patch& patch = it->second;
-    if (patch.end() >= x && (best == nullptr || patch.sequence > best->sequence)) best = &patch;
+    if (patch.end() >= x && (best == nullptr || patch.sequence > best->sequence))
+      best = &patch;
   }
   return best;
 }
@@ -108,7 +113,8 @@ bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) co
   const double gap_limit = bridgeableGap(max_spacing_);
   for (auto it = patches_.upper_bound(x); it != patches_.begin();) {
     --it;
-    if (it->first < x - max_length_ - gap_limit) break;
+    if (it->first < x - max_length_ - gap_limit)
+      break;
     const Patch& patch = it->second;
     if (patch.end() < x && patch.end() >= x - gap_limit &&
         (*left == nullptr || patch.end() > (*left)->end() ||
@@ -117,9 +123,11 @@ bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) co
     }
   }
   const auto next = patches_.upper_bound(x);
-  if (*left == nullptr || next == patches_.end()) return false;
+  if (*left == nullptr || next == patches_.end())
+    return false;
   for (auto it = next; it != patches_.end() && it->first == next->first; ++it) {
-    if (*right == nullptr || it->second.sequence > (*right)->sequence) *right = &it->second;
+    if (*right == nullptr || it->second.sequence > (*right)->sequence)
+      *right = &it->second;
   }
   const double gap = (*right)->grid.startStation() - (*left)->end();
   return gap <= bridgeableGap(std::max((*left)->spacing, (*right)->spacing));
@@ -127,7 +135,8 @@ bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) co
 
 const Terrain* TerrainBuffer::gridFor(double x, double* from, double* until) const {
   const Patch* winner = std::isnan(x) ? nullptr : containing(x);
-  if (winner == nullptr) return nullptr;
+  if (winner == nullptr)
+    return nullptr;
   double lo = winner->grid.startStation();
   double hi = winner->end();
   // Newer patches overlapping the winner's range take over where they lie; none holds x (the
@@ -136,7 +145,8 @@ const Terrain* TerrainBuffer::gridFor(double x, double* from, double* until) con
   constexpr double kInf = std::numeric_limits<double>::infinity();
   for (auto it = patches_.lower_bound(lo - reach); it != patches_.end() && it->first <= hi; ++it) {
     const Patch& patch = it->second;
-    if (patch.sequence <= winner->sequence || patch.end() < lo) continue;
+    if (patch.sequence <= winner->sequence || patch.end() < lo)
+      continue;
     if (patch.end() < x) {
       lo = std::max(lo, std::nextafter(patch.end(), kInf));
     } else if (patch.grid.startStation() > x) {
@@ -149,14 +159,16 @@ const Terrain* TerrainBuffer::gridFor(double x, double* from, double* until) con
 }
 
 bool TerrainBuffer::covers(double x) const {
-  if (std::isnan(x)) return false;
+  if (std::isnan(x))
+    return false;
   const Patch* left = nullptr;
   const Patch* right = nullptr;
   return containing(x) != nullptr || bridge(x, &left, &right);
 }
 
 double TerrainBuffer::height(double x, double y) const {
-  if (const Patch* patch = std::isnan(x) ? nullptr : containing(x)) return patch->grid.height(x, y);
+  if (const Patch* patch = std::isnan(x) ? nullptr : containing(x))
+    return patch->grid.height(x, y);
   const Patch* left = nullptr;
   const Patch* right = nullptr;
   if (!std::isnan(x) && bridge(x, &left, &right)) {
@@ -194,7 +206,8 @@ bool TerrainBuffer::dropsPatchEnding(double end, double spacing, double station)
 }
 
 void TerrainBuffer::dropBehind(double station) {
-  if (std::isnan(station)) return;
+  if (std::isnan(station))
+    return;
   std::vector<Patch> trimmed;
   for (auto it = patches_.begin(); it != patches_.end() && it->first < station;) {
     Patch& patch = it->second;
@@ -244,12 +257,14 @@ void TerrainBuffer::updateExtents() {
   }
   // The contiguous reach from the first patch, across bridgeable gaps (read at every step).
   covered_until_ = -std::numeric_limits<double>::infinity();
-  if (empty()) return;
+  if (empty())
+    return;
   double reach = patches_.begin()->first;
   double reach_spacing = patches_.begin()->second.spacing;
   for (const auto& [start, patch] : patches_) {
     const double gap_limit = bridgeableGap(std::max(reach_spacing, patch.spacing));
-    if (start > reach + gap_limit) break;
+    if (start > reach + gap_limit)
+      break;
     if (patch.end() > reach) {
       reach = patch.end();
       reach_spacing = patch.spacing;

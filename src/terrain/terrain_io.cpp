@@ -29,13 +29,16 @@ std::string format(double value) {
 std::string quoted(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
+    if (c == '"' || c == '\\')
+      out += '\\';
     out += c;
   }
   return out + '"';
 }
 
-std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
+std::string stem(const std::string& path) {
+  return std::filesystem::path(path).stem().string();
+}
 
 using io::CsvReader;
 using io::CsvRow;
@@ -68,7 +71,8 @@ void checkIncreasing(const std::vector<io::YamlValue>& items, const std::vector<
 Terrain loadTerrainCsv(const std::string& path) {
   const CsvReader reader(path);
   const std::vector<CsvRow> rows = reader.readRows();
-  if (rows.empty()) reader.fail("empty (no header or data rows)");
+  if (rows.empty())
+    reader.fail("empty (no header or data rows)");
 
   const CsvRow& first = rows.front();
   const bool has_header = !parseNumber(first.cells.front()).has_value();
@@ -105,7 +109,8 @@ Terrain loadTerrainCsv(const std::string& path) {
   }
 
   const std::size_t first_data = has_header ? 1 : 0;
-  if (rows.size() <= first_data) reader.fail("no data rows (only a header)");
+  if (rows.size() <= first_data)
+    reader.fail("no data rows (only a header)");
   const auto stations = static_cast<Eigen::Index>(rows.size() - first_data);
   Vector x(stations);
   Matrix h(lateral.size(), stations);
@@ -141,7 +146,8 @@ Terrain loadTerrainYaml(const std::string& path) {
   if (has_spacing == has_x) {
     root.fail("give exactly one of 'spacing' (uniform stations) and 'x' (explicit stations)");
   }
-  if (has_x && root.has("start")) root["start"].fail("'start' applies only with 'spacing'");
+  if (has_x && root.has("start"))
+    root["start"].fail("'start' applies only with 'spacing'");
 
   // Lateral lines, then one height row per line.
   Vector lateral = Vector::Zero(1);
@@ -149,9 +155,11 @@ Terrain loadTerrainYaml(const std::string& path) {
   const io::YamlValue heights = root["heights"];
   if (const std::optional<io::YamlValue> y = root.find("y")) {
     const std::vector<io::YamlValue> items = y->elements("a list of lateral positions [m]");
-    if (items.empty()) y->fail("expected at least one lateral position");
+    if (items.empty())
+      y->fail("expected at least one lateral position");
     std::vector<double> values;
-    for (const io::YamlValue& item : items) values.push_back(item.asNumber());
+    for (const io::YamlValue& item : items)
+      values.push_back(item.asNumber());
     checkIncreasing(items, values, "lateral position");
     lateral = Eigen::Map<const Vector>(values.data(), static_cast<Eigen::Index>(values.size()));
     for (const io::YamlValue& row :
@@ -162,7 +170,8 @@ Terrain loadTerrainYaml(const std::string& path) {
     rows.push_back(heights.asNumbers());
   }
   const std::size_t count = rows.front().size();
-  if (count == 0) heights.fail("expected at least one height");
+  if (count == 0)
+    heights.fail("expected at least one height");
   for (std::size_t j = 1; j < rows.size(); ++j) {
     if (rows[j].size() != count) {
       heights.elements()[j].fail("expected " + std::to_string(count) +
@@ -175,14 +184,17 @@ Terrain loadTerrainYaml(const std::string& path) {
   if (has_spacing) {
     const io::YamlValue spacing_value = root["spacing"];
     const double spacing = spacing_value.asNumber();
-    if (spacing <= 0.0) spacing_value.fail("spacing " + format(spacing) + " m must be > 0");
+    if (spacing <= 0.0)
+      spacing_value.fail("spacing " + format(spacing) + " m must be > 0");
     const double start = root.has("start") ? root["start"].asNumber() : 0.0;
-    for (std::size_t i = 0; i < count; ++i) x(static_cast<Eigen::Index>(i)) = start + i * spacing;
+    for (std::size_t i = 0; i < count; ++i)
+      x(static_cast<Eigen::Index>(i)) = start + i * spacing;
   } else {
     const std::vector<io::YamlValue> items =
         root["x"].elements(count, "one station [m] per height (" + std::to_string(count) + ")");
     std::vector<double> values;
-    for (const io::YamlValue& item : items) values.push_back(item.asNumber());
+    for (const io::YamlValue& item : items)
+      values.push_back(item.asNumber());
     checkIncreasing(items, values, "station");
     x = Eigen::Map<const Vector>(values.data(), static_cast<Eigen::Index>(count));
   }
@@ -197,8 +209,10 @@ Terrain loadTerrainYaml(const std::string& path) {
 
 Terrain loadTerrain(const std::string& path) {
   const std::string extension = io::lowerExtension(path);
-  if (extension == ".csv") return loadTerrainCsv(path);
-  if (extension == ".yaml" || extension == ".yml") return loadTerrainYaml(path);
+  if (extension == ".csv")
+    return loadTerrainCsv(path);
+  if (extension == ".yaml" || extension == ".yml")
+    return loadTerrainYaml(path);
   throw InputError(path + ": unknown terrain file type '" + extension +
                    "' (expected .csv, .yaml or .yml)");
 }
@@ -206,16 +220,19 @@ Terrain loadTerrain(const std::string& path) {
 Terrain loadTrack(const std::string& track, const TrackOptions& options) {
   // A half-round spec is the built-in obstacle even when malformed: halfRoundHeight() then throws
   // naming its fault, rather than calling it neither a track nor a file.
-  if (isBuiltInTrack(track) || halfRoundHeight(track)) return makeTrack(track, options);
+  if (isBuiltInTrack(track) || halfRoundHeight(track))
+    return makeTrack(track, options);
   const std::string extension = io::lowerExtension(track);
   if (extension != ".csv" && extension != ".yaml" && extension != ".yml") {
     std::string known;
-    for (const std::string& n : trackForms()) known += (known.empty() ? "" : ", ") + n;
+    for (const std::string& n : trackForms())
+      known += (known.empty() ? "" : ", ") + n;
     throw InputError("track '" + track + "' is neither a built-in track (" + known +
                      ") nor a terrain file (.csv, .yaml)");
   }
   Terrain file = loadTerrain(track);
-  if (!options.lateral_offset || *options.lateral_offset == 0.0) return file;
+  if (!options.lateral_offset || *options.lateral_offset == 0.0)
+    return file;
   return Terrain(file.stations(), file.lateral().array() - *options.lateral_offset, file.heights(),
                  file.name());
 }

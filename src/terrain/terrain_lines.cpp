@@ -13,17 +13,19 @@ TerrainLines::TerrainLines(const Terrain& terrain, const Vector& lateral) : terr
   x_end_ = x(x.size() - 1);
   inverse_dx_ = terrain.isUniform() && terrain.spacing() > 0 ? 1.0 / terrain.spacing() : 0.0;
   for (Eigen::Index q = 0; q < lateral.size(); ++q) {
-    if (!std::isfinite(lateral(q)) || find(lateral(q)) != nullptr) continue;
+    if (!std::isfinite(lateral(q)) || find(lateral(q)) != nullptr)
+      continue;
     Line line;
     line.y = lateral(q);
     line.heights = terrain.profile(line.y);
     if (x.size() > 1)
-      line.slopes = (line.heights.tail(x.size() - 1) - line.heights.head(x.size() - 1)).cwiseQuotient(
-          x.tail(x.size() - 1) - x.head(x.size() - 1));
+      line.slopes = (line.heights.tail(x.size() - 1) - line.heights.head(x.size() - 1))
+                        .cwiseQuotient(x.tail(x.size() - 1) - x.head(x.size() - 1));
     line.profile = static_cast<int>(lines_.size());
     for (const Line& other : lines_)
       if (other.heights.size() == line.heights.size() &&
-          std::equal(other.heights.data(), other.heights.data() + other.heights.size(), line.heights.data())) {
+          std::equal(other.heights.data(), other.heights.data() + other.heights.size(),
+                     line.heights.data())) {
         line.profile = other.profile;
         break;
       }
@@ -76,7 +78,8 @@ double TerrainLines::sampleRun(int profile, double x, double& h, double& dhdx) c
 
 const TerrainLines::Line* TerrainLines::find(double y) const {
   for (const Line& line : lines_)
-    if (line.y == y) return &line;
+    if (line.y == y)
+      return &line;
   return nullptr;
 }
 
@@ -87,8 +90,10 @@ Eigen::Index TerrainLines::cell(double x) const {
   if (inverse_dx_ > 0) {
     i = std::clamp<Eigen::Index>(static_cast<Eigen::Index>((x - x0_) * inverse_dx_), 0, last);
     // (x - x0) / dx may round one cell off; the grid values decide, as in Terrain.
-    if (i < last && x >= stations(i + 1)) ++i;
-    if (i > 0 && x < stations(i)) --i;
+    if (i < last && x >= stations(i + 1))
+      ++i;
+    if (i > 0 && x < stations(i))
+      --i;
   } else {
     const double* begin = stations.data();
     i = static_cast<Eigen::Index>(std::upper_bound(begin, begin + stations.size(), x) - begin) - 1;

@@ -22,7 +22,8 @@ const char* const kHalfRoundForm = "half_round:H";
 /// "a, b, c": the names and forms of trackForms(), for messages.
 std::string knownTracks() {
   std::string known;
-  for (const std::string& track : trackForms()) known += (known.empty() ? "" : ", ") + track;
+  for (const std::string& track : trackForms())
+    known += (known.empty() ? "" : ", ") + track;
   return known;
 }
 
@@ -39,7 +40,8 @@ bool isHalfRoundFamily(const std::string& name) {
 
 /// Why `height` [m] is no half-round height (tracks.h: the bounds); empty when it is one.
 std::string halfRoundFault(double height) {
-  if (std::isfinite(height) && height > 0.0 && height <= kHalfRoundMaxHeight) return "";
+  if (std::isfinite(height) && height > 0.0 && height <= kHalfRoundMaxHeight)
+    return "";
   std::string fault = "the obstacle height must be in (0, " + brief(kHalfRoundMaxHeight) +
                       "] m, got " + brief(height);
   if (height > kHalfRoundMaxHeight && std::isfinite(height)) {
@@ -98,7 +100,8 @@ Vector trackStations(double spacing) {
   // spacing divides it); the small tolerance absorbs 30 / 0.01 rounding below 3000.
   const auto n = static_cast<Eigen::Index>(std::floor(kTrackLength / spacing + 1e-9)) + 1;
   Vector x(n);
-  for (Eigen::Index i = 0; i < n; ++i) x(i) = static_cast<double>(i) * spacing;
+  for (Eigen::Index i = 0; i < n; ++i)
+    x(i) = static_cast<double>(i) * spacing;
   return x;
 }
 
@@ -122,7 +125,8 @@ Terrain buildTrack(const std::string& name, const TrackOptions& options,
   const Vector y_track = trackLines(options.lateral_spacing);
   Matrix h(y_track.size(), x.size());
   for (Eigen::Index j = 0; j < y_track.size(); ++j) {
-    for (Eigen::Index i = 0; i < x.size(); ++i) h(j, i) = surface(x(i), y_track(j));
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      h(j, i) = surface(x(i), y_track(j));
   }
   h = movingAverageRows(h, options.spacing, options.smoothing_window);
   const double offset = options.lateral_offset.value_or(defaultLateralOffset(name));
@@ -133,7 +137,9 @@ Terrain buildTrack(const std::string& name, const TrackOptions& options,
 
 }  // namespace
 
-std::vector<std::string> trackNames() { return {kLongHill, kSeparatedWaves, kOopWaves}; }
+std::vector<std::string> trackNames() {
+  return {kLongHill, kSeparatedWaves, kOopWaves};
+}
 
 std::vector<std::string> trackForms() {
   std::vector<std::string> forms = trackNames();
@@ -142,23 +148,28 @@ std::vector<std::string> trackForms() {
 }
 
 bool isBuiltInTrack(const std::string& name) {
-  if (isFixedName(name)) return true;
-  if (!isHalfRoundFamily(name)) return false;
+  if (isFixedName(name))
+    return true;
+  if (!isHalfRoundFamily(name))
+    return false;
   std::string fault;
   parseHalfRound(name, &fault);
   return fault.empty();
 }
 
 void checkTrackName(const std::string& name) {
-  if (isFixedName(name) || halfRoundHeight(name)) return;  // a bad spec throws its own fault
+  if (isFixedName(name) || halfRoundHeight(name))
+    return;  // a bad spec throws its own fault
   throw InputError("unknown track '" + name + "' (known tracks: " + knownTracks() + ")");
 }
 
 std::optional<double> halfRoundHeight(const std::string& name) {
-  if (!isHalfRoundFamily(name)) return std::nullopt;
+  if (!isHalfRoundFamily(name))
+    return std::nullopt;
   std::string fault;
   const double height = parseHalfRound(name, &fault);
-  if (!fault.empty()) throw InputError("track '" + name + "': " + fault);
+  if (!fault.empty())
+    throw InputError("track '" + name + "': " + fault);
   return height;
 }
 
@@ -176,9 +187,12 @@ double defaultLateralOffset(const std::string& name) {
 
 Terrain makeTrack(const std::string& name, const TrackOptions& options) {
   checkTrackName(name);  // rejects unknown names with the list of known ones
-  if (name == kLongHill) return makeLongHill(options);
-  if (name == kSeparatedWaves) return makeSeparatedWaves(options);
-  if (name == kOopWaves) return makeOopWaves(options);
+  if (name == kLongHill)
+    return makeLongHill(options);
+  if (name == kSeparatedWaves)
+    return makeSeparatedWaves(options);
+  if (name == kOopWaves)
+    return makeOopWaves(options);
   return makeHalfRound(*halfRoundHeight(name), options);
 }
 
@@ -188,9 +202,12 @@ Terrain makeLongHill(const TrackOptions& options) {
   const double down_end = kLongHillStart + kLongHillLength;
   const double slope = kLongHillHeight / kLongHillRamp;
   return buildTrack(kLongHill, options, [=](double x, double) {
-    if (x <= kLongHillStart || x >= down_end) return 0.0;
-    if (x < up_end) return slope * (x - kLongHillStart);
-    if (x <= down_start) return kLongHillHeight;
+    if (x <= kLongHillStart || x >= down_end)
+      return 0.0;
+    if (x < up_end)
+      return slope * (x - kLongHillStart);
+    if (x <= down_start)
+      return kLongHillHeight;
     return slope * (down_end - x);
   });
 }
@@ -198,7 +215,8 @@ Terrain makeLongHill(const TrackOptions& options) {
 Terrain makeSeparatedWaves(const TrackOptions& options) {
   const double end = kSeparatedWavesStart + kSeparatedWavesPeriods * kSeparatedWavesWavelength;
   return buildTrack(kSeparatedWaves, options, [=](double x, double) {
-    if (x <= kSeparatedWavesStart || x >= end) return 0.0;
+    if (x <= kSeparatedWavesStart || x >= end)
+      return 0.0;
     const double phase = 2.0 * kPi * (x - kSeparatedWavesStart) / kSeparatedWavesWavelength;
     return -0.5 * kSeparatedWavesDepth * (1.0 - std::cos(phase));
   });
@@ -207,7 +225,8 @@ Terrain makeSeparatedWaves(const TrackOptions& options) {
 Terrain makeOopWaves(const TrackOptions& options) {
   const double end = kOopWavesStart + kOopWavesPeriods * kOopWavesWavelength;
   return buildTrack(kOopWaves, options, [=](double x, double y_track) {
-    if (x <= kOopWavesStart || x >= end) return 0.0;
+    if (x <= kOopWavesStart || x >= end)
+      return 0.0;
     const double phase = 2.0 * kPi * (x - kOopWavesStart) / kOopWavesWavelength;
     // Amplitude linear in y_t: opposite phase left/right, larger on the outer pad rows.
     const double amplitude = 0.5 * kOopWavesDepth * y_track / (0.5 * kTrackWidth);
@@ -218,10 +237,12 @@ Terrain makeOopWaves(const TrackOptions& options) {
 Terrain makeHalfRound(double height, const TrackOptions& options) {
   const std::string name = halfRoundName(height);
   const std::string fault = halfRoundFault(height);
-  if (!fault.empty()) throw InputError("track '" + name + "': " + fault);
+  if (!fault.empty())
+    throw InputError("track '" + name + "': " + fault);
   return buildTrack(name, options, [=](double x, double) {
     const double d = std::abs(x - kHalfRoundCentre);
-    if (d >= height) return 0.0;
+    if (d >= height)
+      return 0.0;
     // sqrt(H² - d²) as sqrt((H - d)(H + d)): no cancellation near the feet, H exactly at d = 0.
     return std::sqrt((height - d) * (height + d));
   });

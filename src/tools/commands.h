@@ -96,13 +96,15 @@ inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
         const std::filesystem::path path(text);
         const std::string ext = io::lowerExtension(text);
         std::string allowed;
-        for (const std::string& e : extensions) allowed += (allowed.empty() ? "" : " or ") + e;
+        for (const std::string& e : extensions)
+          allowed += (allowed.empty() ? "" : " or ") + e;
         if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end())
           return "'" + text + "' must end in " + allowed;
         const std::filesystem::path dir =
             path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
         std::error_code ec;
-        if (std::filesystem::is_directory(path, ec)) return "'" + text + "' is a directory";
+        if (std::filesystem::is_directory(path, ec))
+          return "'" + text + "' is a directory";
         if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
           return "'" + text + "': " + dir.string() + " is not a directory";
         if (!std::filesystem::is_directory(dir, ec))
@@ -131,8 +133,10 @@ inline CLI::Validator outputDirectory() {
         if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
           return "'" + text + "' exists and is not a directory";
         fs::path existing = dir;
-        while (!existing.empty() && !fs::exists(existing, ec)) existing = existing.parent_path();
-        if (existing.empty()) existing = ".";
+        while (!existing.empty() && !fs::exists(existing, ec))
+          existing = existing.parent_path();
+        if (existing.empty())
+          existing = ".";
         if (!fs::is_directory(existing, ec))
           return "'" + text + "': " + existing.string() + " is not a directory";
         if (::access(existing.c_str(), W_OK) != 0)

@@ -10,7 +10,8 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-Drive::Drive(double start, double distance, double dt, double speed) : start_(start), dt_(dt), speed_(speed) {
+Drive::Drive(double start, double distance, double dt, double speed)
+    : start_(start), dt_(dt), speed_(speed) {
   const double samples = std::ceil(distance / speed / dt);
   if (samples > kMaxSteps) {
     std::ostringstream message;
@@ -64,13 +65,18 @@ double Drive::station(long k) const {
   return start_ + (profile_ ? profile_->station(k * dt_) : speed_ * k * dt_);
 }
 
-double Drive::speed(long k) const { return profile_ ? profile_->speed(k * dt_) : speed_; }
+double Drive::speed(long k) const {
+  return profile_ ? profile_->speed(k * dt_) : speed_;
+}
 
-double Drive::acceleration(long k) const { return profile_ ? profile_->acceleration(k * dt_) : 0.0; }
+double Drive::acceleration(long k) const {
+  return profile_ ? profile_->acceleration(k * dt_) : 0.0;
+}
 
 Matrix Drive::denseInputs(const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
                           long first, long count) const {
-  if (!profile_) return road.sampleSeries(lines, start_, speed_, dt_, first, count);
+  if (!profile_)
+    return road.sampleSeries(lines, start_, speed_, dt_, first, count);
   Vector stations(count), speeds(count);
   for (long j = 0; j < count; ++j) {
     stations(j) = station(first + j);
@@ -82,7 +88,8 @@ Matrix Drive::denseInputs(const dynamics::RoadExcitation& road, const terrain::T
 dynamics::HeldInputSeries Drive::heldInputs(const dynamics::RoadExcitation& road,
                                             const terrain::TerrainLines& lines, long first,
                                             long count) const {
-  if (profile_) throw std::logic_error("Drive::heldInputs: constant speed only");
+  if (profile_)
+    throw std::logic_error("Drive::heldInputs: constant speed only");
   return road.sampleHeldSeries(lines, start_, speed_, dt_, first, count);
 }
 

@@ -45,7 +45,8 @@ class Drive {
   /// The same series stored by its changes (RoadExcitation::sampleHeldSeries); constant speed
   /// only (at a varying speed a flat run is not a fixed number of steps).
   dynamics::HeldInputSeries heldInputs(const dynamics::RoadExcitation& road,
-                                       const terrain::TerrainLines& lines, long first, long count) const;
+                                       const terrain::TerrainLines& lines, long first,
+                                       long count) const;
 
  private:
   double start_, dt_, speed_ = 0.0;

@@ -34,10 +34,11 @@ using ForceSink = std::function<void(long first, const Eigen::Ref<const Matrix>&
 /// changes (sampleHeldSeries), otherwise every input at every sample.
 /// `contact`, when given (built on `system` with the options of `sim`), is reset and driven
 /// alongside `sim` with the same inputs, and its forces go to `force_sink`.
-void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& system, const Vector& gravity,
-               const Drive& drive, const dynamics::RoadExcitation& road, const terrain::TerrainLines& lines,
-               const reduction::FullModelReference* full, const SampleSink& sink,
-               dynamics::GroundContactForces* contact = nullptr, const ForceSink& force_sink = {});
+void driveOver(dynamics::Simulator& sim, const dynamics::SecondOrderSystem& system,
+               const Vector& gravity, const Drive& drive, const dynamics::RoadExcitation& road,
+               const terrain::TerrainLines& lines, const reduction::FullModelReference* full,
+               const SampleSink& sink, dynamics::GroundContactForces* contact = nullptr,
+               const ForceSink& force_sink = {});
 
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

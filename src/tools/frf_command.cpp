@@ -26,7 +26,6 @@ namespace tools {
 
 namespace {
 
-
 struct FrfOptions {
   std::string vehicle_file;
   std::string variant = "tracked";
@@ -56,7 +55,8 @@ struct NamedColumn {
 
 DofIndex outputIndex(const std::vector<std::string>& names, const std::string& output) {
   const auto it = std::find(names.begin(), names.end(), output);
-  if (it == names.end()) throw InputError("frf: the model has no output '" + output + "'");
+  if (it == names.end())
+    throw InputError("frf: the model has no output '" + output + "'");
   return static_cast<DofIndex>(it - names.begin());
 }
 
@@ -69,8 +69,10 @@ std::vector<NamedColumn> comfortOutputs(const std::vector<std::string>& names) {
                                   {"hull_pitch_acc", "hull ry", "(rad/s^2)/m"},
                                   {"front_wheel_acc", "road_wheel_left_1 uz", "(m/s^2)/m"}};
   if (rear > 1)
-    out.push_back({"rear_wheel_acc", "road_wheel_left_" + std::to_string(rear) + " uz", "(m/s^2)/m"});
-  for (NamedColumn& c : out) c.index = outputIndex(names, c.output);
+    out.push_back(
+        {"rear_wheel_acc", "road_wheel_left_" + std::to_string(rear) + " uz", "(m/s^2)/m"});
+  for (NamedColumn& c : out)
+    c.index = outputIndex(names, c.output);
   return out;
 }
 
@@ -170,8 +172,8 @@ void run(const FrfOptions& opt) {
   } else {
     reduction::FullReferenceOptions ref_options;
     ref_options.max_frequency_hz = opt.max_mode_hz;
-    const reduction::FullModelReference ref = reduction::buildVehicleReference(
-        description, variant, ref_options);
+    const reduction::FullModelReference ref =
+        reduction::buildVehicleReference(description, variant, ref_options);
     names = ref.modal.output_names;
     h = ref.frf(hz, delayFor(ref.modal.input_stations), dynamics::OutputQuantity::Acceleration);
     dofs = ref.full_dofs;
@@ -215,7 +217,8 @@ void run(const FrfOptions& opt) {
       }
     }
     Matrix table(hz.size(), static_cast<Eigen::Index>(data.size()));
-    for (std::size_t k = 0; k < data.size(); ++k) table.col(static_cast<Eigen::Index>(k)) = data[k];
+    for (std::size_t k = 0; k < data.size(); ++k)
+      table.col(static_cast<Eigen::Index>(k)) = data[k];
     writeTable(opt.out_file, headers, table, 10,
                {{"vehicle", description.name},
                 {"vehicle_file", opt.vehicle_file},
@@ -262,7 +265,8 @@ void run(const FrfOptions& opt) {
           .field("peak_at_band_edge", top == hz.size() - 1)
           .key("resonances_hz")
           .beginArray();
-      for (const auto& [f, m] : local) json.value(f);
+      for (const auto& [f, m] : local)
+        json.value(f);
       json.endArray();
       if (c.wk_weighted) {
         const Vector w = weighted(c);
@@ -274,7 +278,8 @@ void run(const FrfOptions& opt) {
       json.endObject();
     }
     json.endArray();
-    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.out_file.empty())
+      json.field("out", opt.out_file);
     json.endObject();
     return;
   }
@@ -288,10 +293,11 @@ void run(const FrfOptions& opt) {
   for (const NamedColumn& c : columns) {
     const auto [top, local] = peaks(magnitude(c));
     std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "
-              << std::setprecision(4) << std::abs(h(top, c.index)) << " " << c.unit
-              << " at " << hz(top) << " Hz" << (top == hz.size() - 1 ? " (band edge)" : "")
+              << std::setprecision(4) << std::abs(h(top, c.index)) << " " << c.unit << " at "
+              << hz(top) << " Hz" << (top == hz.size() - 1 ? " (band edge)" : "")
               << "; resonances [Hz]:";
-    for (const auto& [f, m] : local) std::cout << " " << f;
+    for (const auto& [f, m] : local)
+      std::cout << " " << f;
     if (c.wk_weighted) {
       const Vector w = weighted(c);
       const Eigen::Index wk_top = peaks(w).first;
@@ -300,7 +306,8 @@ void run(const FrfOptions& opt) {
     }
     std::cout << "\n";
   }
-  if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
+  if (!opt.out_file.empty())
+    std::cout << "  wrote " << opt.out_file << "\n";
 }
 
 }  // namespace
@@ -308,9 +315,12 @@ void run(const FrfOptions& opt) {
 void registerFrfCommand(CLI::App& app) {
   auto opt = std::make_shared<FrfOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "frf", "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel, "
-             "named points)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+      "frf",
+      "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel, "
+      "named points)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
+      ->required()
+      ->check(CLI::ExistingFile);
   CLI::Option* variant =
       cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
           ->check(CLI::IsMember({"untracked", "tracked"}));
@@ -318,7 +328,8 @@ void registerFrfCommand(CLI::App& app) {
                   "reduced (Craig-Bampton: cached with the reduction options, or --reduced FILE) | "
                   "full (FE modes + static residual)")
       ->check(CLI::IsMember({"reduced", "full"}));
-  cmd->add_option("--speed-kmh", opt->speed_kmh, "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
+  cmd->add_option("--speed-kmh", opt->speed_kmh,
+                  "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
   cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz]")->check(positiveNumber());
   cmd->add_option("--step-hz", opt->step_hz,
                   "frequency step [Hz] (at most --max-hz; when --max-hz is not a "

@@ -75,7 +75,8 @@ void run(const MacOptions& opt) {
   std::vector<CorrelationRow> rows;
   for (const auto& [first, end] : reduction::degenerateGroups(uv.modes.frequencies_hz)) {
     const int i = static_cast<int>(first);
-    if (uv.modes.frequencies_hz(i) > opt.band_hz) break;
+    if (uv.modes.frequencies_hz(i) > opt.band_hz)
+      break;
     // A hull or wheel mode (by its label) that is also global: the rows the reduction pairs.
     if (uv.classes[i].kind == vehicle::ModeKind::TrackLocal || !uv_global[first])
       continue;
@@ -114,7 +115,8 @@ void run(const MacOptions& opt) {
     Matrix table(mac.rows(), mac.cols() + 1);
     table.col(0) = Vector::LinSpaced(mac.rows(), 1.0, static_cast<double>(mac.rows()));
     table.rightCols(mac.cols()) = mac;
-    for (int j = 0; j < mac.cols(); ++j) headers.push_back(std::to_string(j + 1));
+    for (int j = 0; j < mac.cols(); ++j)
+      headers.push_back(std::to_string(j + 1));
     written.write(opt.out_dir + "/mac.csv",
                   [&](const std::string& path) { writeTable(path, headers, table, 6); });
     written.commit();
@@ -156,9 +158,13 @@ void run(const MacOptions& opt) {
       }
       json.field("mac", r.correlation.best_mac).key("other_matches").beginArray();
       for (const auto& m : r.correlation.matches) {
-        if (m.mode == r.correlation.best_match) continue;
-        json.beginObject().field("tracked_mode", m.mode + 1).field("tracked_hz", tv.modes.frequencies_hz(m.mode))
-            .field("mac", m.mac).endObject();
+        if (m.mode == r.correlation.best_match)
+          continue;
+        json.beginObject()
+            .field("tracked_mode", m.mode + 1)
+            .field("tracked_hz", tv.modes.frequencies_hz(m.mode))
+            .field("mac", m.mac)
+            .endObject();
       }
       json.endArray().endObject();
     }
@@ -177,13 +183,14 @@ void run(const MacOptions& opt) {
             << brief(100.0 * reduction::kGlobalEnergyShare)
             << " % or more of their kinetic energy in the hull and running gear, as the reduction "
                "pairs them\n\n";
-  std::cout << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
+  std::cout
+      << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
   for (const CorrelationRow& r : rows) {
     const int best = r.correlation.best_match;
-    const std::string modes =
-        r.multiplicity == 1 ? std::to_string(r.untracked_mode + 1)
-                            : std::to_string(r.untracked_mode + 1) + "-" +
-                                  std::to_string(r.untracked_mode + r.multiplicity);
+    const std::string modes = r.multiplicity == 1
+                                  ? std::to_string(r.untracked_mode + 1)
+                                  : std::to_string(r.untracked_mode + 1) + "-" +
+                                        std::to_string(r.untracked_mode + r.multiplicity);
     std::cout << std::setw(9) << modes << std::setw(11) << std::fixed << std::setprecision(2)
               << uv.modes.frequencies_hz(r.untracked_mode) << "  " << std::left << std::setw(26)
               << (r.multiplicity == 1
@@ -197,8 +204,8 @@ void run(const MacOptions& opt) {
     std::cout << std::setw(6) << std::setprecision(2) << r.correlation.best_mac << "   ";
     for (const auto& m : r.correlation.matches)
       if (m.mode != best)
-        std::cout << "(" << m.mode + 1 << ": " << std::setprecision(2) << tv.modes.frequencies_hz(m.mode)
-                  << " Hz, " << m.mac << ") ";
+        std::cout << "(" << m.mode + 1 << ": " << std::setprecision(2)
+                  << tv.modes.frequencies_hz(m.mode) << " Hz, " << m.mac << ") ";
     std::cout << "\n";
   }
 }
@@ -224,7 +231,8 @@ void registerMacCommand(CLI::App& app) {
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")
       ->check(positiveNumber());
   cmd->add_flag("--json", opt->json, "print a JSON document (MAC matrix, correlation table)");
-  cmd->add_option("--out", opt->out_dir, "write mac.csv and mac.mat to this directory (created if missing)")
+  cmd->add_option("--out", opt->out_dir,
+                  "write mac.csv and mac.mat to this directory (created if missing)")
       ->check(outputDirectory());
   cmd->callback([opt]() { run(*opt); });
 }

@@ -24,7 +24,6 @@ namespace tools {
 
 namespace {
 
-
 struct ModesOptions {
   std::string model_file;
   std::string vehicle_file;
@@ -45,7 +44,8 @@ void printTable(const std::string& name, DofIndex dofs, double mass, const fem::
   for (int i = 0; i < basis.count(); ++i) {
     std::cout << std::setw(6) << i + 1 << std::setw(17) << std::setprecision(4)
               << basis.frequencies_hz(i);
-    if (!types.empty()) std::cout << "   " << types[i];
+    if (!types.empty())
+      std::cout << "   " << types[i];
     std::cout << "\n";
   }
 }
@@ -65,12 +65,14 @@ void requirePositiveMass(const fem::System& sys, const std::string& file) {
   const Vector pivots = ldlt.info() == Eigen::Success ? Vector(ldlt.vectorD()) : Vector();
   const double scale = diagonal.cwiseAbs().maxCoeff();
   Eigen::Index worst = -1;
-  if (pivots.size() == sys.size() && pivots.minCoeff(&worst) > 1e-12 * scale) return;
+  if (pivots.size() == sys.size() && pivots.minCoeff(&worst) > 1e-12 * scale)
+    return;
   // Position k of the permuted matrix holds the DOF i with indices(i) == k.
   const auto& indices = ldlt.permutationP().indices();
   DofIndex dof = 0;
   for (DofIndex i = 0; i < sys.size(); ++i)
-    if (worst >= 0 && indices(i) == worst) dof = i;
+    if (worst >= 0 && indices(i) == worst)
+      dof = i;
   throw InputError(file + ": the mass matrix is singular: a free motion through " +
                    sys.dofs.label(dof) +
                    " has no mass or inertia (e.g. a point mass on an offset without rotary "
@@ -100,7 +102,8 @@ GravitySag gravitySag(const fem::System& sys) {
       sag.at = sys.dofs.label(i);
       sag.solved = true;
     }
-    if (!sag.solved) sag.note = "no translation";
+    if (!sag.solved)
+      sag.note = "no translation";
   } catch (const SolverError& e) {  // a free-floating model has modes but no statics
     sag.note = e.what();
   }
@@ -112,7 +115,8 @@ void runModel(const ModesOptions& opt) {
   const fem::Model model = io::loadModelYaml(opt.model_file);
   const fem::System sys = fem::assemble(model);
   if (sys.size() == 0)
-    throw InputError(opt.model_file + ": no free DOF (every DOF is fixed, or nothing is attached "
+    throw InputError(opt.model_file +
+                     ": no free DOF (every DOF is fixed, or nothing is attached "
                      "to the nodes)");
   requirePositiveMass(sys, opt.model_file);
   const double build_seconds =
@@ -160,7 +164,8 @@ void runVehicle(const ModesOptions& opt) {
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const VehicleAnalysis a = analyseVehicle(description, variant, opt.count);
   std::vector<std::string> types;
-  for (const auto& c : a.classes) types.push_back(c.label);
+  for (const auto& c : a.classes)
+    types.push_back(c.label);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
     writeModeFiles(opt.out_dir, a.system, a.modes, types, written);
@@ -214,16 +219,19 @@ void registerModesCommand(CLI::App& app) {
   auto opt = std::make_shared<ModesOptions>();
   CLI::App* cmd = app.add_subcommand(
       "modes", "Modal analysis: natural frequencies, mode shapes (and mode types of a vehicle)");
-  auto* model = cmd->add_option("--model", opt->model_file, "generic FE model file (YAML, doc/model_file.md)")
-                    ->check(CLI::ExistingFile);
+  auto* model =
+      cmd->add_option("--model", opt->model_file, "generic FE model file (YAML, doc/model_file.md)")
+          ->check(CLI::ExistingFile);
   auto* vehicle = cmd->add_option("--vehicle", opt->vehicle_file,
                                   "vehicle description (e.g. config/vehicles/paper_vehicle.yaml)")
                       ->check(CLI::ExistingFile);
   model->excludes(vehicle);
-  CLI::Option* variant = cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
-                             ->check(CLI::IsMember({"untracked", "tracked"}));
+  CLI::Option* variant =
+      cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
+          ->check(CLI::IsMember({"untracked", "tracked"}));
   // At most 500: one variant's modes (the MAC and the reduction solve both: at most 200).
-  cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")->check(CLI::Range(1, 500));
+  cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")
+      ->check(CLI::Range(1, 500));
   CLI::Option* max_frequency =
       cmd->add_option(
              "--max-frequency", opt->max_frequency_hz,
@@ -233,7 +241,9 @@ void registerModesCommand(CLI::App& app) {
   max_frequency->needs(model);
   variant->needs(vehicle);
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");
-  cmd->add_option("--out", opt->out_dir, "write modes.csv, shapes.csv and modes.mat to this directory (created if missing)")
+  cmd->add_option(
+         "--out", opt->out_dir,
+         "write modes.csv, shapes.csv and modes.mat to this directory (created if missing)")
       ->check(outputDirectory());
   cmd->callback([opt, model, vehicle]() {
     if (model->count() == 0 && vehicle->count() == 0)

@@ -12,10 +12,12 @@ namespace tools {
 void writeNodeShapes(const std::string& path, const vehicle::VehicleModel& vehicle,
                      const fem::System& system, const fem::ModalBasis& basis) {
   std::vector<fem::Node> nodes = vehicle.model.nodes;
-  std::sort(nodes.begin(), nodes.end(), [](const fem::Node& a, const fem::Node& b) { return a.id < b.id; });
+  std::sort(nodes.begin(), nodes.end(),
+            [](const fem::Node& a, const fem::Node& b) { return a.id < b.id; });
   std::vector<fem::DofRef> dofs;
   for (const fem::Node& n : nodes)
-    for (int d = 0; d < 3; ++d) dofs.push_back(fem::DofRef{n.id, d});
+    for (int d = 0; d < 3; ++d)
+      dofs.push_back(fem::DofRef{n.id, d});
   // u_phys = T u_active: slaves follow their masters, fixed DOFs are zero.
   const Matrix u = vehicle::physicalShapes(system, dofs, basis.shapes);
 
@@ -30,7 +32,8 @@ void writeNodeShapes(const std::string& path, const vehicle::VehicleModel& vehic
     out << n.id << "," << vehicle::nodePart(vehicle.layout, n.id) << "," << n.position.x() << ","
         << n.position.y() << "," << n.position.z();
     for (int k = 0; k < basis.count(); ++k)
-      for (int d = 0; d < 3; ++d) out << "," << u(static_cast<DofIndex>(3 * i + d), k);
+      for (int d = 0; d < 3; ++d)
+        out << "," << u(static_cast<DofIndex>(3 * i + d), k);
     out << "\n";
   }
   file.commit();

@@ -19,7 +19,8 @@ namespace tools {
 void makeOutputDirectory(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError("cannot create output directory " + dir + ": " + ec.message());
+  if (ec)
+    throw InputError("cannot create output directory " + dir + ": " + ec.message());
 }
 
 void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::ModalBasis& basis,
@@ -86,18 +87,22 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
                            std::to_string(data.cols()) + " columns");
   if (io::lowerExtension(path) == ".mat") {
     io::MatWriter mat(path);
-    for (const auto& [name, text] : metadata) mat.writeString(name, text);
-    for (std::size_t c = 0; c < names.size(); ++c) mat.writeMatrix(names[c], data.col(static_cast<Eigen::Index>(c)));
+    for (const auto& [name, text] : metadata)
+      mat.writeString(name, text);
+    for (std::size_t c = 0; c < names.size(); ++c)
+      mat.writeMatrix(names[c], data.col(static_cast<Eigen::Index>(c)));
     mat.close();
     return;
   }
   io::AtomicTextFile csv(path);
   std::ostream& out = csv.stream();
   out << std::setprecision(precision);
-  for (std::size_t c = 0; c < names.size(); ++c) out << (c ? "," : "") << names[c];
+  for (std::size_t c = 0; c < names.size(); ++c)
+    out << (c ? "," : "") << names[c];
   out << "\n";
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
-    for (Eigen::Index j = 0; j < data.cols(); ++j) out << (j ? "," : "") << data(k, j);
+    for (Eigen::Index j = 0; j < data.cols(); ++j)
+      out << (j ? "," : "") << data(k, j);
     out << "\n";
   }
   csv.commit();
@@ -150,8 +155,10 @@ OutputFileSet::~OutputFileSet() {
 std::string defaultCacheDir() {
   const char* xdg = std::getenv("XDG_CACHE_HOME");
   const char* home = std::getenv("HOME");
-  if (xdg && *xdg) return std::string(xdg) + "/tracked_vehicle_dynamics";
-  if (home && *home) return std::string(home) + "/.cache/tracked_vehicle_dynamics";
+  if (xdg && *xdg)
+    return std::string(xdg) + "/tracked_vehicle_dynamics";
+  if (home && *home)
+    return std::string(home) + "/.cache/tracked_vehicle_dynamics";
   return "/tmp/tracked_vehicle_dynamics";
 }
 

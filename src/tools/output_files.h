@@ -53,7 +53,8 @@ void writeModeFiles(const std::string& dir, const fem::System& system, const fem
 /// the data go to a temporary file renamed onto `path`, so a failure leaves no partial file. Names
 /// must be valid MATLAB identifiers. Throws InputError naming the file when it cannot be written.
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
-                int precision, const std::vector<std::pair<std::string, std::string>>& metadata = {});
+                int precision,
+                const std::vector<std::pair<std::string, std::string>>& metadata = {});
 
 /// Where reduced models are cached: $XDG_CACHE_HOME/tracked_vehicle_dynamics, else
 /// ~/.cache/tracked_vehicle_dynamics, else /tmp/tracked_vehicle_dynamics.

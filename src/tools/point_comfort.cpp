@@ -23,7 +23,8 @@ dynamics::ComfortOptions horizontalOptions() {
 
 }  // namespace
 
-PointComfort::PointComfort(std::string point, DofIndex x_row, DofIndex y_row, DofIndex z_row, double dt)
+PointComfort::PointComfort(std::string point, DofIndex x_row, DofIndex y_row, DofIndex z_row,
+                           double dt)
     : point_(std::move(point)),
       x_row_(x_row),
       y_row_(y_row),

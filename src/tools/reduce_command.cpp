@@ -34,7 +34,8 @@ void run(const ReduceOptions& opt) {
   reduction::VehicleReductionReport report;
   reduction::ReducedModel model = reduction::reduceVehicle(description, variant, options, &report);
   model.creator = "tvd reduce";
-  if (!opt.out_file.empty()) reduction::saveReducedModel(model, opt.out_file);
+  if (!opt.out_file.empty())
+    reduction::saveReducedModel(model, opt.out_file);
   // On stderr as every command's (the text and JSON outputs carry them too).
   for (const std::string& w : report.warnings)
     std::cerr << "tvd: warning: " << w << "\n";
@@ -59,8 +60,8 @@ void run(const ReduceOptions& opt) {
     const std::size_t i = first_pick + k;
     const reduction::MogesecPick& p = report.mogesec_picks[k];
     mogesec.push_back({static_cast<int>(k + 1), model.dof_labels[i], report.mogesec_parts[k],
-                       model.master_positions.row(static_cast<Eigen::Index>(i)).transpose(), p.weight,
-                       p.modal_weight, p.geometric_weight});
+                       model.master_positions.row(static_cast<Eigen::Index>(i)).transpose(),
+                       p.weight, p.modal_weight, p.geometric_weight});
   }
 
   if (opt.json) {
@@ -83,10 +84,12 @@ void run(const ReduceOptions& opt) {
           .field("mac_reference_modes", report.mac_reference_modes);
     json.key("selected_modes").beginArray();
     for (const auto& m : model.selected_modes)
-      json.beginObject().field("mode", m.mode + 1).field("frequency_hz", m.frequency_hz).field("reason", m.reason).endObject();
-    json.endArray()
-        .key("band_modes")
-        .beginArray();
+      json.beginObject()
+          .field("mode", m.mode + 1)
+          .field("frequency_hz", m.frequency_hz)
+          .field("reason", m.reason)
+          .endObject();
+    json.endArray().key("band_modes").beginArray();
     for (std::size_t i = 0; i < pairs; ++i)
       json.beginObject()
           .field("mode", static_cast<long long>(i + 1))
@@ -113,7 +116,8 @@ void run(const ReduceOptions& opt) {
         .field("reduce_seconds", report.reduce_seconds)
         .field("total_seconds", report.total_seconds)
         .field("description_hash", model.description_hash);
-    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.out_file.empty())
+      json.field("out", opt.out_file);
     ReducedModelSource source;
     source.model = std::move(model);  // not used after the JSON
     source.file = opt.out_file;
@@ -172,19 +176,25 @@ void run(const ReduceOptions& opt) {
             << report.reduce_seconds << ")\n";
   for (const std::string& w : report.warnings)
     std::cout << "  warning: " << w << "\n";
-  if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
+  if (!opt.out_file.empty())
+    std::cout << "  wrote " << opt.out_file << "\n";
 }
 
 }  // namespace
 
 void registerReduceCommand(CLI::App& app) {
   auto opt = std::make_shared<ReduceOptions>();
-  CLI::App* cmd = app.add_subcommand("reduce", "Craig-Bampton reduction of a vehicle (MAC + MoGeSeC)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
-  cmd->add_option("--variant", opt->variant, "untracked | tracked")->check(CLI::IsMember({"untracked", "tracked"}));
+  CLI::App* cmd =
+      app.add_subcommand("reduce", "Craig-Bampton reduction of a vehicle (MAC + MoGeSeC)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--variant", opt->variant, "untracked | tracked")
+      ->check(CLI::IsMember({"untracked", "tracked"}));
   opt->reduction_flags.addTo(cmd);
   cmd->add_flag("--json", opt->json, "print a JSON document");
-  cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")->check(outputFile({".mat"}));
+  cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")
+      ->check(outputFile({".mat"}));
   cmd->callback([opt]() { run(*opt); });
 }
 

@@ -219,10 +219,9 @@ void writeReductionJson(io::JsonWriter& json, const ReducedModelSource& s) {
 std::string describeReduction(const ReducedModelSource& s) {
   const reduction::VehicleReductionOptions& o = s.options;
   std::ostringstream text;
-  text << "rule " << reduction::modeRuleName(o.rule) << ", 0-"
-       << o.band_hz << " Hz, " << s.model.selected_modes.size() << " global modes -> "
-       << s.model.modeCount() << " fixed-interface modes, " << s.model.masterCount()
-       << " masters; ";
+  text << "rule " << reduction::modeRuleName(o.rule) << ", 0-" << o.band_hz << " Hz, "
+       << s.model.selected_modes.size() << " global modes -> " << s.model.modeCount()
+       << " fixed-interface modes, " << s.model.masterCount() << " masters; ";
   switch (s.kind) {
     case ReducedModelSource::Kind::File:
       text << "from " << s.file;

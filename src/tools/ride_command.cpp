@@ -74,13 +74,14 @@ void run(const RideOptions& opt) {
   if (longest > Drive::kMaxSteps) {
     std::ostringstream m;
     m << "ride: --speeds: " << distance << " m at " << sweep.front() << " km/h take " << longest
-      << " time steps of " << opt.dt << " s; at most " << Drive::kMaxSteps << " (raise the lowest speed)";
+      << " time steps of " << opt.dt << " s; at most " << Drive::kMaxSteps
+      << " (raise the lowest speed)";
     throw InputError(m.str());
   }
   if (opt.lowpass_hz >= 0.5 / opt.dt) {
     std::ostringstream m;
-    m << "ride: --lowpass-hz " << opt.lowpass_hz << " must be below the Nyquist frequency 1/(2 dt) = "
-      << 0.5 / opt.dt << " Hz";
+    m << "ride: --lowpass-hz " << opt.lowpass_hz
+      << " must be below the Nyquist frequency 1/(2 dt) = " << 0.5 / opt.dt << " Hz";
     throw InputError(m.str());
   }
   std::vector<std::string> warnings;
@@ -124,7 +125,8 @@ void run(const RideOptions& opt) {
     std::vector<dynamics::ShockMeter> peaks;
     std::vector<DofIndex> z_rows;
     for (const std::string& p : points) {
-      comfort.emplace_back(p, outputRow(names, p + " ux/acc", "ride"), outputRow(names, p + " uy/acc", "ride"),
+      comfort.emplace_back(p, outputRow(names, p + " ux/acc", "ride"),
+                           outputRow(names, p + " uy/acc", "ride"),
                            outputRow(names, p + " uz/acc", "ride"), opt.dt);
       peaks.emplace_back(1.0 / opt.dt, shock);
       z_rows.push_back(outputRow(names, p + " uz/acc", "ride"));
@@ -151,7 +153,8 @@ void run(const RideOptions& opt) {
   // Per point its absorbed-power limit, then its peak limit.
   std::vector<RideCriterion<Run>> criteria;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    criteria.push_back({[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
+    criteria.push_back(
+        {[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
     criteria.push_back({[i](const Run& r) { return r.points[i].peak_up_g; }, opt.peak_limit_g});
   }
   const std::vector<dynamics::LimitCrossing> found = ride.limits(criteria, opt.tolerance_kmh);
@@ -159,7 +162,8 @@ void run(const RideOptions& opt) {
     dynamics::LimitCrossing power, peak;
   };
   std::vector<Limits> limits;
-  for (std::size_t i = 0; i < points.size(); ++i) limits.push_back({found[2 * i], found[2 * i + 1]});
+  for (std::size_t i = 0; i < points.size(); ++i)
+    limits.push_back({found[2 * i], found[2 * i + 1]});
   const std::map<double, Run>& runs = ride.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
 
@@ -177,8 +181,8 @@ void run(const RideOptions& opt) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const PointRide& m = r.points[i];
       const auto c = static_cast<Eigen::Index>(2 + 6 * i);
-      table.block(row, c, 1, 6) << m.absorbed_power, m.weighted_rms_z, m.vdv_z, m.total_value, m.peak_up_g,
-          m.peak_abs_g;
+      table.block(row, c, 1, 6) << m.absorbed_power, m.weighted_rms_z, m.vdv_z, m.total_value,
+          m.peak_up_g, m.peak_abs_g;
     }
     ++row;
   }
@@ -209,7 +213,11 @@ void run(const RideOptions& opt) {
     json.field("points", points).field("speeds_kmh", sweep);
     json.key("runs").beginArray();
     for (const auto& [speed, r] : runs) {
-      json.beginObject().field("speed_kmh", speed).field("in_sweep", r.in_sweep).key("points").beginArray();
+      json.beginObject()
+          .field("speed_kmh", speed)
+          .field("in_sweep", r.in_sweep)
+          .key("points")
+          .beginArray();
       for (std::size_t i = 0; i < points.size(); ++i) {
         const PointRide& m = r.points[i];
         json.beginObject()
@@ -236,26 +244,30 @@ void run(const RideOptions& opt) {
         .field("simulations", static_cast<long long>(runs.size()))
         .field("simulated_seconds", simulated)
         .field("wall_seconds", wall);
-    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.out_file.empty())
+      json.field("out", opt.out_file);
     json.endObject();
     return;
   }
 
-  std::cout << std::fixed << std::setprecision(3) << "ride limits on " << track.name() << " (" << distance
-            << " m), " << vehicle::variantName(variant) << " reduced model (" << sys.size() << " DOFs), dt "
-            << opt.dt * 1e3 << " ms\n  reduction: " << describeReduction(reduced) << "\n"
+  std::cout << std::fixed << std::setprecision(3) << "ride limits on " << track.name() << " ("
+            << distance << " m), " << vehicle::variantName(variant) << " reduced model ("
+            << sys.size() << " DOFs), dt " << opt.dt * 1e3
+            << " ms\n  reduction: " << describeReduction(reduced) << "\n"
             << "  absorbed power P [W] (vertical) and peak upward acceleration a [g] (";
   if (opt.lowpass_hz > 0)
     std::cout << std::defaultfloat << opt.lowpass_hz << " Hz low-pass" << std::fixed;
   else
     std::cout << "unfiltered";
   std::cout << ") per speed:\n  speed km/h";
-  for (const std::string& p : points) std::cout << std::setw(22) << p + " P" << std::setw(12) << "a";
+  for (const std::string& p : points)
+    std::cout << std::setw(22) << p + " P" << std::setw(12) << "a";
   std::cout << "\n";
   for (const auto& [speed, r] : runs) {
     std::cout << "  " << std::setw(9) << std::setprecision(2) << speed << (r.in_sweep ? " " : "*");
     for (const PointRide& m : r.points)
-      std::cout << std::setw(22) << std::setprecision(3) << m.absorbed_power << std::setw(12) << m.peak_up_g;
+      std::cout << std::setw(22) << std::setprecision(3) << m.absorbed_power << std::setw(12)
+                << m.peak_up_g;
     std::cout << "\n";
   }
   std::cout << "  (* speeds the bisection added)\n";
@@ -263,8 +275,8 @@ void run(const RideOptions& opt) {
   power_limit << std::defaultfloat << opt.power_limit_w << " W";
   peak_limit << std::defaultfloat << opt.peak_limit_g << " g";
   for (std::size_t i = 0; i < points.size(); ++i)
-    std::cout << "  " << points[i] << ": " << describeLimit(limits[i].power, power_limit.str()) << "; "
-              << describeLimit(limits[i].peak, peak_limit.str()) << "\n";
+    std::cout << "  " << points[i] << ": " << describeLimit(limits[i].power, power_limit.str())
+              << "; " << describeLimit(limits[i].peak, peak_limit.str()) << "\n";
   std::cout << std::setprecision(3) << "  " << runs.size()
             << (runs.size() == 1 ? " run, " : " runs, ") << simulated << " s simulated in " << wall
             << " s\n";
@@ -276,40 +288,49 @@ void registerRideCommand(CLI::App& app) {
   auto opt = std::make_shared<RideOptions>();
   CLI::App* cmd = app.add_subcommand(
       "ride",
-      "Ride-limiting speeds: absorbed power and peak acceleration over a speed sweep (6 W / 2.5 g), simulated "
+      "Ride-limiting speeds: absorbed power and peak acceleration over a speed sweep (6 W / 2.5 "
+      "g), simulated "
       "over a --track, or the absorbed power spectrally on an ISO 8608 class (--iso8608)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
-  CLI::Option* variant = cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
-                             ->check(CLI::IsMember({"untracked", "tracked"}));
-  CLI::Option* track =
-      cmd->add_option("--track", opt->track,
-                      "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 m) or terrain file (CSV/YAML), e.g. an "
-                      "ISO 8608 road from tvd terrain: "
-                      "simulated in time at every speed");
-  CLI::Option* iso = cmd->add_option(
-      "--iso8608", opt->iso_class,
-      "instead of --track: the PSD of ISO 8608 road class A..H, evaluated spectrally at every speed "
-      "(absorbed power, a_wz, r.m.s.; no peaks)");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
+      ->required()
+      ->check(CLI::ExistingFile);
+  CLI::Option* variant =
+      cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
+          ->check(CLI::IsMember({"untracked", "tracked"}));
+  CLI::Option* track = cmd->add_option("--track", opt->track,
+                                       "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 "
+                                       "m) or terrain file (CSV/YAML), e.g. an "
+                                       "ISO 8608 road from tvd terrain: "
+                                       "simulated in time at every speed");
+  CLI::Option* iso = cmd->add_option("--iso8608", opt->iso_class,
+                                     "instead of --track: the PSD of ISO 8608 road class A..H, "
+                                     "evaluated spectrally at every speed "
+                                     "(absorbed power, a_wz, r.m.s.; no peaks)");
   cmd->add_option("--speeds", opt->speeds,
                   "speeds [km/h]: FIRST:LAST:STEP (STEP must land on LAST) or a list 5,10,20");
   CLI::Option* points = cmd->add_option(
       "--points", opt->points,
       "points of the hull, comma-separated: hull (the CoG) and the description's named "
       "points (default: all)");
-  cmd->add_option("--power-limit-w", opt->power_limit_w, "absorbed-power limit [W]")->check(positiveNumber());
+  cmd->add_option("--power-limit-w", opt->power_limit_w, "absorbed-power limit [W]")
+      ->check(positiveNumber());
   // The time-domain run's own options, refused with --iso8608.
   const std::vector<CLI::Option*> time_only = {
       cmd->add_option("--peak-limit-g", opt->peak_limit_g, "peak upward acceleration limit [g]")
           ->check(positiveNumber()),
-      cmd->add_option("--lowpass-hz", opt->lowpass_hz,
-                      "Butterworth (4th order) low-pass before the peak is read [Hz]; 0: unfiltered")
+      cmd->add_option(
+             "--lowpass-hz", opt->lowpass_hz,
+             "Butterworth (4th order) low-pass before the peak is read [Hz]; 0: unfiltered")
           ->check(nonNegativeNumber()),
       // At most 2 ms: the 30 Hz low-pass and the absorbed-power filter (peaking at 4.5 Hz, K up
       // to 80 Hz) need fs well above 60 Hz.
-      cmd->add_option("--dt", opt->dt, "time step [s] (1e-4 .. 0.002)")->check(numberIn(1e-4, 0.002, "s"))};
-  cmd->add_option("--tolerance-kmh", opt->tolerance_kmh, "bisection stops at this bracket width [km/h]")
+      cmd->add_option("--dt", opt->dt, "time step [s] (1e-4 .. 0.002)")
+          ->check(numberIn(1e-4, 0.002, "s"))};
+  cmd->add_option("--tolerance-kmh", opt->tolerance_kmh,
+                  "bisection stops at this bracket width [km/h]")
       ->check(numberIn(1e-3, 10.0, "km/h"));
-  cmd->add_option("--lateral-offset", opt->lateral_offset, "lateral offset of the path [m] (y left)")
+  cmd->add_option("--lateral-offset", opt->lateral_offset,
+                  "lateral offset of the path [m] (y left)")
       ->check(finiteNumber());
   // The road spectrum's options (those of tvd terrain --iso8608, and the grid), refused without
   // --iso8608.
@@ -336,22 +357,26 @@ void registerRideCommand(CLI::App& app) {
              "or .mat")
           ->check(outputFile({".csv", ".mat"}))};
   opt->reduced.addTo(cmd);
-  cmd->add_option("--out", opt->out_file, "every run, by speed: CSV, or .mat (one variable per column)")
+  cmd->add_option("--out", opt->out_file,
+                  "every run, by speed: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
   cmd->callback([opt, variant, track, iso, time_only, spectral_only, points]() {
     const bool spectral = iso->count() > 0;
     if (spectral && track->count() > 0)
-      throw InputError("ride: --track and --iso8608 exclude each other: give a terrain to simulate over, "
-                       "or an ISO 8608 class to evaluate spectrally");
+      throw InputError(
+          "ride: --track and --iso8608 exclude each other: give a terrain to simulate over, "
+          "or an ISO 8608 class to evaluate spectrally");
     if (!spectral && track->count() == 0)
-      throw InputError("ride: --track is required (a terrain to simulate over), or --iso8608 CLASS for "
-                       "the spectral method");
+      throw InputError(
+          "ride: --track is required (a terrain to simulate over), or --iso8608 CLASS for "
+          "the spectral method");
     for (const CLI::Option* o : spectral ? time_only : spectral_only)
       if (o->count() > 0)
         throw InputError("ride: " + o->get_name() +
-                         (spectral ? " applies to a --track simulation, not to the spectral --iso8608"
-                                   : " applies to --iso8608 (the spectral method) only"));
+                         (spectral
+                              ? " applies to a --track simulation, not to the spectral --iso8608"
+                              : " applies to --iso8608 (the spectral method) only"));
     opt->reduced.check("ride", "reduced");
     if (!opt->psd_out.empty() && !opt->out_file.empty() &&
         std::filesystem::path(opt->psd_out).lexically_normal() ==

@@ -17,7 +17,8 @@ RideModel loadRideModel(const RideOptions& opt, const terrain::Terrain* track,
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, warnings);
   std::vector<std::string> named;
-  for (const vehicle::NamedPoint& p : description.named_points) named.push_back(p.name);
+  for (const vehicle::NamedPoint& p : description.named_points)
+    named.push_back(p.name);
   std::vector<std::string> points =
       choosePoints(opt.points, opt.points_given, named);  // before any work
   if (track)
@@ -34,11 +35,14 @@ dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()
   for (;;) {
     const std::vector<double> speeds = known_speeds();
     std::vector<double> values;
-    for (double v : speeds) values.push_back(metric(v));
-    dynamics::LimitCrossing c = dynamics::findLimitCrossing(speeds, values, limit, tolerance, metric);
+    for (double v : speeds)
+      values.push_back(metric(v));
+    dynamics::LimitCrossing c =
+        dynamics::findLimitCrossing(speeds, values, limit, tolerance, metric);
     refinements += c.refinements;
     c.refinements = refinements;
-    if (known_speeds().size() == speeds.size()) return c;
+    if (known_speeds().size() == speeds.size())
+      return c;
   }
 }
 
@@ -52,8 +56,10 @@ std::vector<std::string> choosePoints(const std::string& spec, bool given,
   for (const std::string& name : splitPointList("ride", {spec})) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
       std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw InputError("ride: --points: the model has no point '" + name + "' (it has " + list + ")");
+      for (const std::string& k : known)
+        list += (list.empty() ? "" : ", ") + k;
+      throw InputError("ride: --points: the model has no point '" + name + "' (it has " + list +
+                       ")");
     }
     if (std::find(chosen.begin(), chosen.end(), name) != chosen.end())
       throw InputError("ride: --points: '" + name + "' is listed twice");
@@ -62,7 +68,8 @@ std::vector<std::string> choosePoints(const std::string& spec, bool given,
   return chosen;
 }
 
-void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit, const char* unit) {
+void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit,
+                    const char* unit) {
   json.beginObject()
       .field("limit", limit)
       .field("unit", std::string(unit))

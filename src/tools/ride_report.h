@@ -51,20 +51,25 @@ class RideRuns {
 
   const Run& at(double speed_kmh) {
     auto found = runs_.find(speed_kmh);
-    if (found != runs_.end()) return found->second;
+    if (found != runs_.end())
+      return found->second;
     return runs_.emplace(speed_kmh, make_(speed_kmh)).first->second;
   }
   /// Evaluates every speed of the sweep and marks its runs (Run::in_sweep).
   void sweep(const std::vector<double>& speeds) {
-    for (double v : speeds) at(v);
-    for (double v : speeds) runs_.at(v).in_sweep = true;
+    for (double v : speeds)
+      at(v);
+    for (double v : speeds)
+      runs_.at(v).in_sweep = true;
   }
   const std::map<double, Run>& all() const { return runs_; }
 
-  std::vector<dynamics::LimitCrossing> limits(const std::vector<RideCriterion<Run>>& criteria, double tolerance) {
+  std::vector<dynamics::LimitCrossing> limits(const std::vector<RideCriterion<Run>>& criteria,
+                                              double tolerance) {
     auto known = [this] {
       std::vector<double> v;
-      for (const auto& entry : runs_) v.push_back(entry.first);
+      for (const auto& entry : runs_)
+        v.push_back(entry.first);
       return v;
     };
     std::vector<dynamics::LimitCrossing> found(criteria.size());
@@ -72,8 +77,9 @@ class RideRuns {
       before = runs_.size();
       for (std::size_t i = 0; i < criteria.size(); ++i) {
         const int so_far = found[i].refinements;
-        found[i] = lowestCrossing(known, [&](double v) { return criteria[i].value(at(v)); }, criteria[i].limit,
-                                  tolerance);
+        found[i] = lowestCrossing(
+            known, [&](double v) { return criteria[i].value(at(v)); }, criteria[i].limit,
+            tolerance);
         found[i].refinements += so_far;  // summed over the rounds
       }
     }
@@ -97,7 +103,8 @@ dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()
                                        double tolerance);
 
 /// {limit, unit, status, speed_kmh, bracket_kmh, refinements} of one crossing.
-void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit, const char* unit);
+void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit,
+                    const char* unit);
 
 /// "6 W at 14.03 km/h (between 14.00 and 14.06)", "... already at the lowest speed, ...",
 /// "... not reached up to ... km/h"; `what` names the limit ("6 W").

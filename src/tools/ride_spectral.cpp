@@ -49,7 +49,8 @@ struct Run {
 
 dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
   const std::string& c = opt.iso_class;
-  const char upper = c.size() == 1 ? static_cast<char>(std::toupper(static_cast<unsigned char>(c[0]))) : 0;
+  const char upper =
+      c.size() == 1 ? static_cast<char>(std::toupper(static_cast<unsigned char>(c[0]))) : 0;
   if (upper < 'A' || upper > 'H')
     throw InputError("ride: --iso8608 must be one road class A..H, got '" + c + "'");
   if (!(opt.min_frequency < opt.max_frequency)) {
@@ -127,7 +128,8 @@ void runSpectralRide(const RideOptions& opt) {
   const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;
   std::vector<DofIndex> rows;
-  for (const std::string& p : points) rows.push_back(outputRow(sys.output_names, p + " uz", "ride"));
+  for (const std::string& p : points)
+    rows.push_back(outputRow(sys.output_names, p + " uz", "ride"));
 
   // The modes and the grouped modal input matrices, once for every speed.
   const auto start = Clock::now();
@@ -149,19 +151,21 @@ void runSpectralRide(const RideOptions& opt) {
   rate.sweep(sweep);
   std::vector<RideCriterion<Run>> criteria;
   for (std::size_t i = 0; i < points.size(); ++i)
-    criteria.push_back({[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
+    criteria.push_back(
+        {[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
   const std::vector<dynamics::LimitCrossing> limits = rate.limits(criteria, opt.tolerance_kmh);
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;
-  const double rms_height =
-      std::sqrt(terrain::iso8608Variance(road.road_class, road.min_frequency, road.max_frequency, road.waviness));
+  const double rms_height = std::sqrt(terrain::iso8608Variance(road.road_class, road.min_frequency,
+                                                               road.max_frequency, road.waviness));
 
   std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
   for (const std::string& p : points)
-    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2"}) headers.push_back(p + q);
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2"})
+      headers.push_back(p + q);
   Matrix table(static_cast<Eigen::Index>(runs.size()), static_cast<Eigen::Index>(headers.size()));
   Eigen::Index row = 0;
   for (const auto& [speed, r] : runs) {
@@ -243,7 +247,8 @@ void runSpectralRide(const RideOptions& opt) {
         .field("evaluations", static_cast<long long>(runs.size()))
         .field("setup_seconds", setup)
         .field("wall_seconds", wall);
-    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.out_file.empty())
+      json.field("out", opt.out_file);
     if (!opt.psd_out.empty())
       json.field("psd_out", opt.psd_out);
     json.endObject();
@@ -251,20 +256,25 @@ void runSpectralRide(const RideOptions& opt) {
   }
 
   std::cout << std::defaultfloat << std::setprecision(4) << "ride limits on the ISO 8608 class "
-            << road.road_class << " road spectrum (G_d(n0) " << terrain::iso8608ReferencePsd(road.road_class)
-            << " m^3, waviness " << road.waviness << ", " << road.min_frequency << ".." << road.max_frequency
-            << " cycles/m, " << rms_height * 1e3 << " mm r.m.s.; "
+            << road.road_class << " road spectrum (G_d(n0) "
+            << terrain::iso8608ReferencePsd(road.road_class) << " m^3, waviness " << road.waviness
+            << ", " << road.min_frequency << ".." << road.max_frequency << " cycles/m, "
+            << rms_height * 1e3 << " mm r.m.s.; "
             << (sides ? "left and right independent" : "one profile across the width") << "), "
-            << vehicle::variantName(variant) << " reduced model (" << sys.size() << " DOFs), spectral ("
-            << opt.points_per_decade << " frequencies per decade)\n  reduction: " << describeReduction(reduced)
-            << "\n  absorbed power P [W] and ISO 2631-1 weighted r.m.s. a_wz [m/s^2] (vertical) per speed:\n"
+            << vehicle::variantName(variant) << " reduced model (" << sys.size()
+            << " DOFs), spectral (" << opt.points_per_decade
+            << " frequencies per decade)\n  reduction: " << describeReduction(reduced)
+            << "\n  absorbed power P [W] and ISO 2631-1 weighted r.m.s. a_wz [m/s^2] (vertical) "
+               "per speed:\n"
             << "  speed km/h";
-  for (const std::string& p : points) std::cout << std::setw(22) << p + " P" << std::setw(12) << "a_wz";
+  for (const std::string& p : points)
+    std::cout << std::setw(22) << p + " P" << std::setw(12) << "a_wz";
   std::cout << "\n" << std::fixed;
   for (const auto& [speed, r] : runs) {
     std::cout << "  " << std::setw(9) << std::setprecision(2) << speed << (r.in_sweep ? " " : "*");
     for (const dynamics::SpectralOutput& m : r.points)
-      std::cout << std::setw(22) << std::setprecision(3) << m.absorbed_power << std::setw(12) << m.weighted_rms;
+      std::cout << std::setw(22) << std::setprecision(3) << m.absorbed_power << std::setw(12)
+                << m.weighted_rms;
     std::cout << "\n";
   }
   std::cout << "  (* speeds the bisection added)\n";
@@ -272,10 +282,11 @@ void runSpectralRide(const RideOptions& opt) {
   power_limit << std::defaultfloat << opt.power_limit_w << " W";
   for (std::size_t i = 0; i < points.size(); ++i)
     std::cout << "  " << points[i] << ": " << describeLimit(limits[i], power_limit.str()) << "\n";
-  std::cout << "  peak acceleration: not computed (a PSD gives variances, not the peaks of one road or "
-               "obstacle: use --track)\n"
-            << std::setprecision(3) << "  " << runs.size() << " speeds evaluated in " << wall
-            << " s (modes and input matrices: " << setup << " s)\n";
+  std::cout
+      << "  peak acceleration: not computed (a PSD gives variances, not the peaks of one road or "
+         "obstacle: use --track)\n"
+      << std::setprecision(3) << "  " << runs.size() << " speeds evaluated in " << wall
+      << " s (modes and input matrices: " << setup << " s)\n";
   if (!opt.psd_out.empty())
     std::cout << "  PSDs at the " << sweep.size() << " speeds of --speeds written to "
               << opt.psd_out << "\n";

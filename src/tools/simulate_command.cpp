@@ -79,23 +79,27 @@ void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSumm
         << s.min_contact_force * 1e-3 << " kN (within the linear model's range)\n";
     return;
   }
-  out << "  ground contact: the linear model pulls on " << s.contactsEverInTension() << " of " << s.contacts
-      << " contacts (up to " << s.max_in_tension << " at once, min " << s.min_contact_force * 1e-3 << " kN)";
+  out << "  ground contact: the linear model pulls on " << s.contactsEverInTension() << " of "
+      << s.contacts << " contacts (up to " << s.max_in_tension << " at once, min "
+      << s.min_contact_force * 1e-3 << " kN)";
   if (s.in_tension_at_rest > 0)
     out << "; " << s.in_tension_at_rest << " already at rest (its bonded statics)";
   if (s.first_new_tension_contact < 0) {
     out << "; none pressed at rest goes into tension\n";
     return;
   }
-  out << (s.in_tension_at_rest > 0 ? ", contacts pressed at rest" : "") << " from t = " << s.first_new_tension_time
-      << " s (x = " << s.first_new_tension_station << " m, " << s.newTensionFraction() * 100
+  out << (s.in_tension_at_rest > 0 ? ", contacts pressed at rest" : "")
+      << " from t = " << s.first_new_tension_time << " s (x = " << s.first_new_tension_station
+      << " m, " << s.newTensionFraction() * 100
       << " % of samples): beyond its range, a real vehicle would lift there";
   if (s.groups > 0) {
     if (s.first_new_group_tension >= 0)
-      out << "; whole pads (up to " << s.max_groups_in_tension << " of " << s.groups << " at once) from t = "
-          << s.first_new_group_tension_time << " s (x = " << s.first_new_group_tension_station << " m)";
+      out << "; whole pads (up to " << s.max_groups_in_tension << " of " << s.groups
+          << " at once) from t = " << s.first_new_group_tension_time
+          << " s (x = " << s.first_new_group_tension_station << " m)";
     else
-      out << "; no pad pressed at rest pulls as a whole (min " << s.min_group_force * 1e-3 << " kN)";
+      out << "; no pad pressed at rest pulls as a whole (min " << s.min_group_force * 1e-3
+          << " kN)";
   }
   out << "\n";
 }
@@ -103,15 +107,17 @@ void writeGroundContactText(std::ostream& out, const dynamics::GroundContactSumm
 // The ground contact block of the JSON (ground_contact_monitor.h).
 void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactSummary& s,
                             const std::vector<std::string>& labels, const Vector& stations,
-                            const std::vector<dynamics::GroundContact>& contacts, double static_total,
-                            double setup_seconds) {
+                            const std::vector<dynamics::GroundContact>& contacts,
+                            double static_total, double setup_seconds) {
   auto contact = [&](DofIndex i) {
     json.beginObject().field("index", static_cast<long long>(i));
     if (i >= 0) {
       const dynamics::GroundContact& c = contacts[static_cast<std::size_t>(i)];
-      if (static_cast<std::size_t>(c.input) < labels.size()) json.field("input", labels[static_cast<std::size_t>(c.input)]);
+      if (static_cast<std::size_t>(c.input) < labels.size())
+        json.field("input", labels[static_cast<std::size_t>(c.input)]);
       json.field("side", dynamics::contactSideName(c.side));
-      if (c.input < stations.size()) json.field("x_m", stations(c.input));
+      if (c.input < stations.size())
+        json.field("x_m", stations(c.input));
       json.field("y_m", c.lateral);
     }
     json.endObject();
@@ -166,15 +172,15 @@ void writeGroundContactJson(io::JsonWriter& json, const dynamics::GroundContactS
       .endObject();
 }
 
-
 void run(const SimulateOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > dynamics::kMaxSpeedKmh)
     throw InputError("simulate: --speed-kmh must be in (0, " + brief(dynamics::kMaxSpeedKmh) +
                      "], got " + beyond(opt.speed_kmh, dynamics::kMaxSpeedKmh));
   if (opt.method != "modal" && opt.max_mode_hz >= 0)
-    throw InputError("simulate: --max-mode-hz applies to --method modal only (the exact method "
-                     "integrates every mode)");
+    throw InputError(
+        "simulate: --max-mode-hz applies to --method modal only (the exact method "
+        "integrates every mode)");
   std::optional<dynamics::SpeedProfile> profile;
   if (!opt.speed_profile.empty()) {
     profile = dynamics::loadSpeedProfile(opt.speed_profile);
@@ -216,15 +222,18 @@ void run(const SimulateOptions& opt) {
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
   refuseDrivingBesideTerrain(opt.track, track, description, opt.lateral_offset);
   if (opt.model == "full") {
-    if (opt.method != "modal") throw InputError("simulate: --model full runs with --method modal only");
+    if (opt.method != "modal")
+      throw InputError("simulate: --model full runs with --method modal only");
     if (opt.max_mode_hz == 0 || opt.max_mode_hz > 100)
-      throw InputError("simulate: --model full needs --max-mode-hz in (0, 100] Hz (the full model's "
-                       "modes up to it are dynamic, the rest static; above 100 Hz the tracked "
-                       "model's chain-link modes take minutes to solve)");
+      throw InputError(
+          "simulate: --model full needs --max-mode-hz in (0, 100] Hz (the full model's "
+          "modes up to it are dynamic, the rest static; above 100 Hz the tracked "
+          "model's chain-link modes take minutes to solve)");
     reduction::FullReferenceOptions ref_options;
-    if (opt.max_mode_hz >= 0) ref_options.max_frequency_hz = opt.max_mode_hz;
-    full = std::make_unique<reduction::FullModelReference>(reduction::buildVehicleReference(
-        description, variant, ref_options));
+    if (opt.max_mode_hz >= 0)
+      ref_options.max_frequency_hz = opt.max_mode_hz;
+    full = std::make_unique<reduction::FullModelReference>(
+        reduction::buildVehicleReference(description, variant, ref_options));
   } else {
     reduced = obtainReducedModel(description, variant, opt.variant_given, "simulate", opt.reduced);
     variant = reduced->variant;  // a --reduced file's
@@ -242,8 +251,9 @@ void run(const SimulateOptions& opt) {
   else if (travel)
     reduced_travel = dynamics::withTravelInertia(model_sys, reduced->model.travel_load);
   const reduction::FullModelReference* full_run = full_travel ? full_travel.get() : full.get();
-  const dynamics::SecondOrderSystem& sys =
-      full_run ? full_run->modal : travel ? reduced_travel : model_sys;
+  const dynamics::SecondOrderSystem& sys = full_run ? full_run->modal
+                                           : travel ? reduced_travel
+                                                    : model_sys;
   const bool from_cache = reduced && reduced->kind == ReducedModelSource::Kind::Cache;
 
   dynamics::SimulatorOptions sim_options;
@@ -251,7 +261,8 @@ void run(const SimulateOptions& opt) {
   sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
   sim_options.method = opt.method == "modal" ? dynamics::DiscretizationMethod::ModalDecoupled
                                              : dynamics::DiscretizationMethod::AugmentedExponential;
-  sim_options.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
+  sim_options.quantities = {dynamics::OutputQuantity::Displacement,
+                            dynamics::OutputQuantity::Velocity,
                             dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = gravity;
   if (sim_options.method == dynamics::DiscretizationMethod::ModalDecoupled && !full)
@@ -298,20 +309,23 @@ void run(const SimulateOptions& opt) {
   const std::vector<std::string>& names = sim.outputNames();
   const SimulationLayout layout = simulationLayout(names, sys.output_names);
   // The road under each wheel centre, from its height at the start like the displacements.
-  const std::vector<RoadUnderWheel> roads = roadUnderWheels(layout, vehicle::vehicleGeometry(description));
+  const std::vector<RoadUnderWheel> roads =
+      roadUnderWheels(layout, vehicle::vehicleGeometry(description));
   auto roadHeight = [&](const RoadUnderWheel& r, long k) {
     return track.height(drive.station(k) + r.x, r.y + opt.lateral_offset);
   };
   Vector road0(static_cast<Eigen::Index>(roads.size()));
-  for (std::size_t r = 0; r < roads.size(); ++r) road0(static_cast<Eigen::Index>(r)) = roadHeight(roads[r], 0);
+  for (std::size_t r = 0; r < roads.size(); ++r)
+    road0(static_cast<Eigen::Index>(r)) = roadHeight(roads[r], 0);
   // Ride comfort at the hull's CoG and at every named point: ISO 2631-1 Wk and absorbed power
   // vertically, Wd in x and y.
   std::vector<std::string> comfort_points = {"hull"};
   comfort_points.insert(comfort_points.end(), layout.points.begin(), layout.points.end());
   std::vector<PointComfort> comfort;
   for (const std::string& point : comfort_points)
-    comfort.emplace_back(point, outputRow(names, point + " ux/acc"), outputRow(names, point + " uy/acc"),
-                         outputRow(names, point + " uz/acc"), opt.dt);
+    comfort.emplace_back(point, outputRow(names, point + " ux/acc"),
+                         outputRow(names, point + " uy/acc"), outputRow(names, point + " uz/acc"),
+                         opt.dt);
 
   constexpr int kFirstColumn = 2;  // after time and station
   const auto first_road = static_cast<Eigen::Index>(kFirstColumn + layout.columns.size());
@@ -330,37 +344,43 @@ void run(const SimulateOptions& opt) {
   Eigen::RowVectorXd absolute(static_cast<Eigen::Index>(names.size()));
   Vector y0;
   const auto start = Clock::now();
-  driveOver(sim, sys, gravity, drive, road, lines, full_run,
-            [&](long k, const OutputRow& relative) {
-              const double a = drive.acceleration(k);
-              series(k, travel_column) = a;
-              if (travel) {
-                absolute = relative;
-                for (const DofIndex r : x_accelerations) absolute(r) += a;
-              }
-              const OutputRow y = travel ? OutputRow(absolute) : relative;
-              if (k == 0) y0 = y.transpose();
-              series(k, 0) = k * opt.dt;
-              series(k, 1) = drive.station(k);
-              for (std::size_t c = 0; c < layout.columns.size(); ++c) {
-                const SimulationColumn& col = layout.columns[c];
-                series(k, kFirstColumn + c) = col.scale * (y(col.row) - (col.relative ? y0(col.row) : 0.0));
-              }
-              for (PointComfort& c : comfort) c.add(y);
-            },
-            contact_forces.get(), [&](long first, const Eigen::Ref<const Matrix>& forces) {
-              Vector times(forces.rows()), stations(forces.rows());
-              for (Eigen::Index j = 0; j < forces.rows(); ++j) {
-                times(j) = (first + j) * opt.dt;
-                stations(j) = drive.station(first + j);
-              }
-              contact_monitor->add(forces, times, stations);
-            });
+  driveOver(
+      sim, sys, gravity, drive, road, lines, full_run,
+      [&](long k, const OutputRow& relative) {
+        const double a = drive.acceleration(k);
+        series(k, travel_column) = a;
+        if (travel) {
+          absolute = relative;
+          for (const DofIndex r : x_accelerations)
+            absolute(r) += a;
+        }
+        const OutputRow y = travel ? OutputRow(absolute) : relative;
+        if (k == 0)
+          y0 = y.transpose();
+        series(k, 0) = k * opt.dt;
+        series(k, 1) = drive.station(k);
+        for (std::size_t c = 0; c < layout.columns.size(); ++c) {
+          const SimulationColumn& col = layout.columns[c];
+          series(k, kFirstColumn + c) =
+              col.scale * (y(col.row) - (col.relative ? y0(col.row) : 0.0));
+        }
+        for (PointComfort& c : comfort)
+          c.add(y);
+      },
+      contact_forces.get(),
+      [&](long first, const Eigen::Ref<const Matrix>& forces) {
+        Vector times(forces.rows()), stations(forces.rows());
+        for (Eigen::Index j = 0; j < forces.rows(); ++j) {
+          times(j) = (first + j) * opt.dt;
+          stations(j) = drive.station(first + j);
+        }
+        contact_monitor->add(forces, times, stations);
+      });
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
   if (monitor_contact && contact_monitor->leftForce().size() != static_cast<std::size_t>(steps + 1))
     throw std::logic_error("simulate: the ground contact monitor saw " +
-                           std::to_string(contact_monitor->leftForce().size()) + " samples, the run " +
-                           std::to_string(steps + 1));
+                           std::to_string(contact_monitor->leftForce().size()) +
+                           " samples, the run " + std::to_string(steps + 1));
   if (monitor_contact)
     for (long k = 0; k <= steps; ++k) {
       const auto i = static_cast<std::size_t>(k);
@@ -377,7 +397,8 @@ void run(const SimulateOptions& opt) {
   const double travelled = series(steps, 1) - track.startStation();
   if (travelled < distance * (1 - 1e-9)) {
     std::ostringstream w;
-    w << "the speed profile ends after " << travelled << " m, before the track's " << distance << " m";
+    w << "the speed profile ends after " << travelled << " m, before the track's " << distance
+      << " m";
     warnings.push_back(w.str());
     std::cerr << "tvd: warning: " << warnings.back() << "\n";
   }
@@ -392,12 +413,16 @@ void run(const SimulateOptions& opt) {
   const double peak_wheel =
       layout.wheel_count == 0
           ? 0.0
-          : series.middleCols(kFirstColumn + layout.first_wheel, layout.wheel_count).cwiseAbs().maxCoeff();
+          : series.middleCols(kFirstColumn + layout.first_wheel, layout.wheel_count)
+                .cwiseAbs()
+                .maxCoeff();
 
   if (!opt.out_file.empty()) {
     std::vector<std::string> headers = {"time_s", "station_m"};
-    for (const SimulationColumn& col : layout.columns) headers.push_back(col.header);
-    for (const RoadUnderWheel& r : roads) headers.push_back(r.header);
+    for (const SimulationColumn& col : layout.columns)
+      headers.push_back(col.header);
+    for (const RoadUnderWheel& r : roads)
+      headers.push_back(r.header);
     headers.push_back("travel_accel_m_s2");
     if (monitor_contact)
       for (const char* h : {"ground_force_left_n", "ground_force_right_n", "contacts_in_tension"})
@@ -448,10 +473,10 @@ void run(const SimulateOptions& opt) {
         .field("peak_travel_accel_m_s2", series.col(travel_column).cwiseAbs().maxCoeff());
     json.key("ground_contact");
     if (monitor_contact)
-      writeGroundContactJson(json, contact_monitor->summary(), reduced->model.input_labels,
-                             model_sys.input_stations, contacts,
-                             contact_monitor->leftForce().front() + contact_monitor->rightForce().front(),
-                             contact_setup_seconds);
+      writeGroundContactJson(
+          json, contact_monitor->summary(), reduced->model.input_labels, model_sys.input_stations,
+          contacts, contact_monitor->leftForce().front() + contact_monitor->rightForce().front(),
+          contact_setup_seconds);
     else
       json.beginObject()
           .field("monitored", false)
@@ -469,13 +494,15 @@ void run(const SimulateOptions& opt) {
     json.endArray().key("comfort");
     comfort.front().writeJson(json);
     json.key("comfort_at_points").beginArray();
-    for (std::size_t i = 1; i < comfort.size(); ++i) comfort[i].writeJson(json);
+    for (std::size_t i = 1; i < comfort.size(); ++i)
+      comfort[i].writeJson(json);
     json.endArray()
         .field("simulated_seconds", simulated)
         .field("wall_seconds", wall)
         .field("setup_seconds", setup_seconds)
         .field("real_time_factor", simulated / wall);
-    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.out_file.empty())
+      json.field("out", opt.out_file);
     json.endObject();
     return;
   }
@@ -503,12 +530,14 @@ void run(const SimulateOptions& opt) {
               << " m, vertical acceleration " << peak(point + "_accel_z_m_s2") << " m/s^2\n";
   std::cout << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "
                "vertical):\n";
-  for (const PointComfort& c : comfort) c.writeText(std::cout);
+  for (const PointComfort& c : comfort)
+    c.writeText(std::cout);
   if (monitor_contact)
     writeGroundContactText(std::cout, contact_monitor->summary());
   else
     std::cout << "  ground contact: not monitored ("
-              << (full ? "--model full; the reduced model reports it" : "--ground-contact off") << ")\n";
+              << (full ? "--model full; the reduced model reports it" : "--ground-contact off")
+              << ")\n";
   std::cout << "  simulated " << simulated << " s in " << wall * 1e3 << " ms (real-time factor "
             << std::setprecision(0) << simulated / wall << ")\n";
 }
@@ -517,12 +546,17 @@ void run(const SimulateOptions& opt) {
 
 void registerSimulateCommand(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
-  CLI::App* cmd = app.add_subcommand("simulate", "Time response of the reduced (or full) vehicle over a track");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  CLI::App* cmd =
+      app.add_subcommand("simulate", "Time response of the reduced (or full) vehicle over a track");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
+      ->required()
+      ->check(CLI::ExistingFile);
   CLI::Option* variant =
       cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
           ->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--track", opt->track, "long_hill | separated_waves | oop_waves | half_round:H (obstacle, H in m) | terrain file (CSV/YAML)");
+  cmd->add_option("--track", opt->track,
+                  "long_hill | separated_waves | oop_waves | half_round:H (obstacle, H in m) | "
+                  "terrain file (CSV/YAML)");
   CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
   cmd->add_option("--speed-profile", opt->speed_profile,
                   "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), linear "
@@ -534,9 +568,11 @@ void registerSimulateCommand(CLI::App& app) {
   // needs more than 25 Hz.
   cmd->add_option("--dt", opt->dt, "time step [s] (1e-5 .. 0.01, default 0.001)")
       ->check(numberIn(1e-5, 0.01, "s"));
-  cmd->add_option("--lateral-offset", opt->lateral_offset, "lateral offset of the path [m] (y left)")
+  cmd->add_option("--lateral-offset", opt->lateral_offset,
+                  "lateral offset of the path [m] (y left)")
       ->check(finiteNumber());
-  cmd->add_option("--method", opt->method, "discretisation: modal (decoupled, fast) | exact (augmented exponential)")
+  cmd->add_option("--method", opt->method,
+                  "discretisation: modal (decoupled, fast) | exact (augmented exponential)")
       ->check(CLI::IsMember({"modal", "exact"}));
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "

@@ -11,20 +11,23 @@ namespace tools {
 namespace {
 
 bool endsWith(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 }  // namespace
 
 DofIndex outputRow(const std::vector<std::string>& simulator_rows, const std::string& name,
                    const std::string& command) {
   const auto it = std::find(simulator_rows.begin(), simulator_rows.end(), name);
-  if (it == simulator_rows.end()) throw InputError(command + ": the model has no output '" + name + "'");
+  if (it == simulator_rows.end())
+    throw InputError(command + ": the model has no output '" + name + "'");
   return static_cast<DofIndex>(it - simulator_rows.begin());
 }
 
 std::size_t SimulationLayout::column(const std::string& header) const {
   for (std::size_t c = 0; c < columns.size(); ++c)
-    if (columns[c].header == header) return c;
+    if (columns[c].header == header)
+      return c;
   throw std::logic_error("simulate: no column " + header);
 }
 
@@ -32,7 +35,8 @@ std::vector<std::string> namedPoints(const std::vector<std::string>& system_outp
   std::vector<std::string> points;
   for (const std::string& n : system_outputs) {
     const std::string point = n.substr(0, n.rfind(' '));
-    if (endsWith(n, " uz") && point != "hull" && point.rfind("road_wheel", 0) != 0) points.push_back(point);
+    if (endsWith(n, " uz") && point != "hull" && point.rfind("road_wheel", 0) != 0)
+      points.push_back(point);
   }
   return points;
 }
@@ -58,7 +62,8 @@ SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows
   add("hull_surge_m", "hull ux/disp");
   layout.first_wheel = layout.columns.size();
   for (const std::string& n : system_outputs)
-    if (n.rfind("road_wheel", 0) == 0) add(n.substr(0, n.find(' ')) + "_m", n + "/disp");
+    if (n.rfind("road_wheel", 0) == 0)
+      add(n.substr(0, n.find(' ')) + "_m", n + "/disp");
   layout.wheel_count = layout.columns.size() - layout.first_wheel;
   layout.points = namedPoints(system_outputs);
   for (const std::string& point : layout.points) {
@@ -76,8 +81,9 @@ std::vector<RoadUnderWheel> roadUnderWheels(const SimulationLayout& layout,
   for (std::size_t c = layout.first_wheel; c < layout.first_wheel + layout.wheel_count; ++c) {
     const std::string& header = layout.columns[c].header;  // "<wheel>_m"
     const std::string wheel = header.substr(0, header.size() - 2);
-    const auto it = std::find_if(geometry.wheels.begin(), geometry.wheels.end(),
-                                 [&](const vehicle::VehicleGeometry::Body& b) { return b.name == wheel; });
+    const auto it =
+        std::find_if(geometry.wheels.begin(), geometry.wheels.end(),
+                     [&](const vehicle::VehicleGeometry::Body& b) { return b.name == wheel; });
     if (it == geometry.wheels.end())
       throw InputError("simulate: the vehicle description has no road wheel '" + wheel +
                        "', which the model outputs");

@@ -13,9 +13,9 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 struct SimulationColumn {
-  std::string header;  ///< e.g. "hull_pitch_deg"
-  DofIndex row = 0;    ///< row of the simulator's outputs
-  double scale = 1.0;  ///< to the header's unit (rad -> deg)
+  std::string header;     ///< e.g. "hull_pitch_deg"
+  DofIndex row = 0;       ///< row of the simulator's outputs
+  double scale = 1.0;     ///< to the header's unit (rad -> deg)
   bool relative = false;  ///< a displacement: reported from the initial static equilibrium
 };
 

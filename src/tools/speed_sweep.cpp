@@ -30,8 +30,10 @@ std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
   std::string part;
   std::istringstream in(text);
-  while (std::getline(in, part, separator)) parts.push_back(part);
-  if (!text.empty() && text.back() == separator) parts.push_back("");
+  while (std::getline(in, part, separator))
+    parts.push_back(part);
+  if (!text.empty() && text.back() == separator)
+    parts.push_back("");
   return parts;
 }
 
@@ -41,10 +43,13 @@ std::vector<double> parseSpeedSweep(const std::string& text) {
   std::vector<double> speeds;
   if (text.find(':') != std::string::npos) {
     const std::vector<std::string> f = split(text, ':');
-    if (f.size() != 3) reject(text, "a range has three fields");
+    if (f.size() != 3)
+      reject(text, "a range has three fields");
     const double first = number(text, f[0]), last = number(text, f[1]), step = number(text, f[2]);
-    if (!(step > 0)) reject(text, "the step must be positive");
-    if (!(last >= first)) reject(text, "LAST must not be below FIRST");
+    if (!(step > 0))
+      reject(text, "the step must be positive");
+    if (!(last >= first))
+      reject(text, "LAST must not be below FIRST");
     const double count = std::floor((last - first) / step + 1e-9) + 1;
     // LAST is the top of the sweep the user asked for: a step that passes it would quietly rate a
     // lower top speed, so it is refused rather than rounded.
@@ -58,19 +63,24 @@ std::vector<double> parseSpeedSweep(const std::string& text) {
     }
     if (count > static_cast<double>(kMaxSweepSpeeds))
       reject(text, "more than " + std::to_string(kMaxSweepSpeeds) + " speeds");
-    for (long i = 0; i < static_cast<long>(count); ++i) speeds.push_back(first + static_cast<double>(i) * step);
+    for (long i = 0; i < static_cast<long>(count); ++i)
+      speeds.push_back(first + static_cast<double>(i) * step);
   } else {
-    for (const std::string& f : split(text, ',')) speeds.push_back(number(text, f));
-    if (speeds.size() > kMaxSweepSpeeds) reject(text, "more than " + std::to_string(kMaxSweepSpeeds) + " speeds");
+    for (const std::string& f : split(text, ','))
+      speeds.push_back(number(text, f));
+    if (speeds.size() > kMaxSweepSpeeds)
+      reject(text, "more than " + std::to_string(kMaxSweepSpeeds) + " speeds");
   }
-  if (speeds.empty()) reject(text, "no speeds");
+  if (speeds.empty())
+    reject(text, "no speeds");
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     if (!(speeds[i] > 0.0 && speeds[i] <= dynamics::kMaxSpeedKmh)) {
       std::ostringstream m;
       m << "speed " << speeds[i] << " km/h is outside (0, " << dynamics::kMaxSpeedKmh << "]";
       reject(text, m.str());
     }
-    if (i > 0 && !(speeds[i] > speeds[i - 1])) reject(text, "the speeds must be strictly increasing");
+    if (i > 0 && !(speeds[i] > speeds[i - 1]))
+      reject(text, "the speeds must be strictly increasing");
   }
   return speeds;
 }

@@ -24,7 +24,6 @@ namespace tools {
 
 namespace {
 
-
 struct StaticsOptions {
   std::string vehicle_file;
   std::string variant = "tracked";
@@ -33,7 +32,9 @@ struct StaticsOptions {
   std::string out_file;
 };
 
-const char* sideName(int side) { return side == 0 ? "left" : "right"; }
+const char* sideName(int side) {
+  return side == 0 ? "left" : "right";
+}
 
 /// `value` as printed with `decimals` fixed decimals, without the sign of a round-off residue
 /// ("-0.0000" for a symmetric vehicle's roll of -1e-13 deg).
@@ -73,8 +74,8 @@ void run(const StaticsOptions& opt) {
   const std::vector<vehicle::ChainWheelContact>& chain_wheels = built.layout.chain_wheel_contacts;
   const vehicle::ChainWheel kChainWheels[] = {
       vehicle::ChainWheel::Sprocket, vehicle::ChainWheel::Idler, vehicle::ChainWheel::ReturnRoller};
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   if (!opt.out_file.empty()) {
     Matrix table(static_cast<Eigen::Index>(g.assemblies.size()), 7);
@@ -110,10 +111,10 @@ void run(const StaticsOptions& opt) {
     for (int side = 0; side < 2; ++side) {
       json.key(sideName(side)).beginObject();
       for (const vehicle::ChainWheel wheel : kChainWheels)
-        json.field(vehicle::chainWheelName(wheel),
-                   vehicle::chainWheelRelease(built.layout, contact.chain_wheel_released, side,
-                                              wheel)
-                       .released);
+        json.field(
+            vehicle::chainWheelName(wheel),
+            vehicle::chainWheelRelease(built.layout, contact.chain_wheel_released, side, wheel)
+                .released);
       json.endObject();
     }
     json.endObject()
@@ -136,7 +137,9 @@ void run(const StaticsOptions& opt) {
         .field("mean_peak_pressure_pa", g.mean_peak_pressure);
     json.key("peak_assembly_pressure").beginObject();
     if (peak)
-      json.field("pressure_pa", peak->pressure).field("side", sideName(peak->side)).field("x_m", peak->x);
+      json.field("pressure_pa", peak->pressure)
+          .field("side", sideName(peak->side))
+          .field("x_m", peak->x);
     json.endObject().field("lifting_assemblies", g.lifting);
     json.key("road_wheels").beginArray();
     for (std::size_t i = 0; i < model.layout.wheels.size(); ++i) {
@@ -164,7 +167,8 @@ void run(const StaticsOptions& opt) {
     json.endArray().key("track_assemblies").beginArray();
     for (const vehicle::AssemblyGroundLoad& a : g.assemblies)
       json.beginObject()
-          .field("name", std::string("track_") + sideName(a.side) + "_" + std::to_string(a.assembly))
+          .field("name",
+                 std::string("track_") + sideName(a.side) + "_" + std::to_string(a.assembly))
           .field("side", sideName(a.side))
           .field("assembly", a.assembly)
           .field("x_m", a.x)
@@ -174,7 +178,8 @@ void run(const StaticsOptions& opt) {
           .field("pressure_pa", a.pressure)
           .endObject();
     json.endArray().field("seconds", seconds);
-    if (!opt.out_file.empty()) json.field("out", opt.out_file);
+    if (!opt.out_file.empty())
+      json.field("out", opt.out_file);
     json.endObject();
     return;
   }
@@ -195,7 +200,8 @@ void run(const StaticsOptions& opt) {
               << " road wheels lifted, " << contact.iterations
               << (contact.iterations == 1 ? " solve\n" : " solves\n");
   else
-    std::cout << "contacts: bilateral (the linear model: the equilibrium the dynamics start from)\n";
+    std::cout
+        << "contacts: bilateral (the linear model: the equilibrium the dynamics start from)\n";
   if (!chain_wheels.empty()) {
     // Unilateral: the contacts released; bilateral: those the link pulls on (N < 0).
     std::vector<bool> shown = contact.chain_wheel_released;
@@ -255,10 +261,11 @@ void run(const StaticsOptions& opt) {
                "pressure = load / (width x pitch) [kPa]\n"
             << "  side   assembly    x [m]   load [kN]   inner   outer   pressure [kPa]\n";
   for (const vehicle::AssemblyGroundLoad& a : g.assemblies)
-    std::cout << "  " << std::left << std::setw(5) << sideName(a.side) << std::right << std::setw(10)
-              << a.assembly << std::setw(9) << std::setprecision(3) << a.x << std::setw(12)
-              << std::setprecision(2) << a.load / 1e3 << std::setw(8) << a.inner / 1e3 << std::setw(8)
-              << a.outer / 1e3 << std::setw(17) << std::setprecision(1) << a.pressure / 1e3 << "\n";
+    std::cout << "  " << std::left << std::setw(5) << sideName(a.side) << std::right
+              << std::setw(10) << a.assembly << std::setw(9) << std::setprecision(3) << a.x
+              << std::setw(12) << std::setprecision(2) << a.load / 1e3 << std::setw(8)
+              << a.inner / 1e3 << std::setw(8) << a.outer / 1e3 << std::setw(17)
+              << std::setprecision(1) << a.pressure / 1e3 << "\n";
   std::cout << "\nground reactions " << std::setprecision(1) << s.ground_reaction << " N (left "
             << g.side_load[0] << ", right " << g.side_load[1] << ") = weight " << s.weight
             << " N, relative error " << std::scientific << std::setprecision(1) << s.balanceError()
@@ -269,28 +276,34 @@ void run(const StaticsOptions& opt) {
             << " kPa (mean of the peaks under the wheels); Rowland's empirical estimate "
             << g.rowland_mean_maximum_pressure / 1e3 << " kPa\n";
   if (peak)
-    std::cout << "largest assembly pressure: " << peak->pressure / 1e3 << " kPa (" << sideName(peak->side)
-              << ", x = " << std::setprecision(3) << peak->x << " m)";
+    std::cout << "largest assembly pressure: " << peak->pressure / 1e3 << " kPa ("
+              << sideName(peak->side) << ", x = " << std::setprecision(3) << peak->x << " m)";
   if (unilateral)
     std::cout << "\n";
   else
-    std::cout << "; " << g.lifting << " assemblies pulled down (the linear model holds them on the "
+    std::cout << "; " << g.lifting
+              << " assemblies pulled down (the linear model holds them on the "
                  "road; --contact unilateral lets them lift)\n";
-  if (!opt.out_file.empty()) std::cout << "  wrote " << opt.out_file << "\n";
+  if (!opt.out_file.empty())
+    std::cout << "  wrote " << opt.out_file << "\n";
 }
 
 }  // namespace
 
 void registerStaticsCommand(CLI::App& app) {
   auto opt = std::make_shared<StaticsOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "statics", "The vehicle at rest under gravity: hull sag, wheel loads, ground load and pressure under the track");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")->required()->check(CLI::ExistingFile);
+  CLI::App* cmd = app.add_subcommand("statics",
+                                     "The vehicle at rest under gravity: hull sag, wheel loads, "
+                                     "ground load and pressure under the track");
+  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
+      ->required()
+      ->check(CLI::ExistingFile);
   cmd->add_option("--variant", opt->variant, "untracked | tracked")
       ->check(CLI::IsMember({"untracked", "tracked"}));
-  cmd->add_option("--out", opt->out_file,
-                  "CSV (or .mat: one variable per column), one row per assembly on the ground: side "
-                  "(0 left, 1 right), assembly, x_m, load_n, inner_pad_n, outer_pad_n, pressure_pa")
+  cmd->add_option(
+         "--out", opt->out_file,
+         "CSV (or .mat: one variable per column), one row per assembly on the ground: side "
+         "(0 left, 1 right), assembly, x_m, load_n, inner_pad_n, outer_pad_n, pressure_pa")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_option("--contact", opt->contact,
                   "unilateral: pads, road wheels and the links on the sprockets, idlers and "

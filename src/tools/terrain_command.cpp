@@ -25,8 +25,8 @@ namespace tools {
 namespace {
 
 struct TerrainOptions {
-  std::string track;     // a built-in track ...
-  std::string iso_class; // ... or an ISO 8608 class A-H
+  std::string track;      // a built-in track ...
+  std::string iso_class;  // ... or an ISO 8608 class A-H
   double length = 200.0;
   double width = terrain::kTrackWidth;
   double spacing = 0.05;
@@ -50,19 +50,24 @@ void run(const TerrainOptions& opt) {
   char road_class = 0;
   terrain::Iso8608Options iso_options;
   terrain::Terrain t = [&] {
-    if (!iso) return terrain::makeTrack(opt.track);
-    if (opt.iso_class.size() != 1 || std::toupper(static_cast<unsigned char>(opt.iso_class[0])) < 'A' ||
+    if (!iso)
+      return terrain::makeTrack(opt.track);
+    if (opt.iso_class.size() != 1 ||
+        std::toupper(static_cast<unsigned char>(opt.iso_class[0])) < 'A' ||
         std::toupper(static_cast<unsigned char>(opt.iso_class[0])) > 'H')
-      throw InputError("terrain: --iso8608 must be one road class A..H, got '" + opt.iso_class + "'");
+      throw InputError("terrain: --iso8608 must be one road class A..H, got '" + opt.iso_class +
+                       "'");
     road_class = static_cast<char>(std::toupper(static_cast<unsigned char>(opt.iso_class[0])));
     iso_options.min_frequency = opt.min_frequency;
     iso_options.max_frequency = opt.max_frequency;
     iso_options.taper_length = opt.taper;
     iso_options.correlation = opt.independent_sides ? terrain::LateralCorrelation::IndependentSides
                                                     : terrain::LateralCorrelation::Uniform;
-    return terrain::makeIso8608(road_class, opt.length, opt.width, opt.spacing, opt.seed, iso_options);
+    return terrain::makeIso8608(road_class, opt.length, opt.width, opt.spacing, opt.seed,
+                                iso_options);
   }();
-  if (io::lowerExtension(opt.out_file) == ".csv")  // else .yaml / .yml: checked by --out's validator
+  if (io::lowerExtension(opt.out_file) ==
+      ".csv")  // else .yaml / .yml: checked by --out's validator
     terrain::saveTerrainCsv(t, opt.out_file);
   else
     terrain::saveTerrainYaml(t, opt.out_file);
@@ -100,8 +105,11 @@ void run(const TerrainOptions& opt) {
   }
   std::cout << std::setprecision(4) << t.name() << ": " << n << " stations, " << t.startStation()
             << " .. " << t.endStation() << " m, " << t.lateral().size() << " lateral lines; height "
-            << t.heights().minCoeff() << " .. " << t.heights().maxCoeff() << " m, r.m.s. " << rms << " m";
-  if (iso) std::cout << " (ISO 8608 class " << road_class << ": " << expected_rms << " m r.m.s. in the band, untapered)";
+            << t.heights().minCoeff() << " .. " << t.heights().maxCoeff() << " m, r.m.s. " << rms
+            << " m";
+  if (iso)
+    std::cout << " (ISO 8608 class " << road_class << ": " << expected_rms
+              << " m r.m.s. in the band, untapered)";
   std::cout << "\n  wrote " << opt.out_file << "\n";
 }
 
@@ -124,14 +132,17 @@ CLI::Validator builtInTrack() {
 
 void registerTerrainCommand(CLI::App& app) {
   auto opt = std::make_shared<TerrainOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "terrain", "Write a terrain file: a built-in track or an ISO 8608 random road (for simulate --track FILE)");
+  CLI::App* cmd = app.add_subcommand("terrain",
+                                     "Write a terrain file: a built-in track or an ISO 8608 random "
+                                     "road (for simulate --track FILE)");
   CLI::Option* track =
-      cmd->add_option("--track", opt->track,
-                      "built-in track: long_hill | separated_waves | oop_waves | half_round:H (the NRMM "
-                      "half-round obstacle, H its height in m, e.g. half_round:0.2)")
+      cmd->add_option(
+             "--track", opt->track,
+             "built-in track: long_hill | separated_waves | oop_waves | half_round:H (the NRMM "
+             "half-round obstacle, H its height in m, e.g. half_round:0.2)")
           ->check(builtInTrack());
-  CLI::Option* iso = cmd->add_option("--iso8608", opt->iso_class, "random road of ISO 8608 class A..H instead");
+  CLI::Option* iso =
+      cmd->add_option("--iso8608", opt->iso_class, "random road of ISO 8608 class A..H instead");
   track->excludes(iso);
   // The random road's options need --iso8608 (CLI11 names both when one comes without the other).
   for (CLI::Option* o :

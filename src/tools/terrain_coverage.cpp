@@ -42,7 +42,8 @@ std::optional<std::string> terrainCoverageWarning(const std::string& track,
     return std::nullopt;
   const Vector& y = road.inputY();
   const double y_min = y.minCoeff(), y_max = y.maxCoeff();
-  const double t_min = terrain.lateral()(0), t_max = terrain.lateral()(terrain.lateral().size() - 1);
+  const double t_min = terrain.lateral()(0),
+               t_max = terrain.lateral()(terrain.lateral().size() - 1);
   const auto [outside, left, right, farthest] = overhang(y, t_min, t_max);
   if (outside == 0)
     return std::nullopt;

@@ -1,4 +1,5 @@
-// tvd: the offline command-line tool (modes, statics, MAC, reduction, FRF, simulation, ride limits, terrain).
+// tvd: the offline command-line tool (modes, statics, MAC, reduction, FRF, simulation, ride limits,
+// terrain).
 #include <CLI/CLI.hpp>
 
 #include <iostream>

@@ -11,11 +11,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
-vehicle::VehicleDescription loadVehicle(const std::string& file, std::vector<std::string>* warnings) {
+vehicle::VehicleDescription loadVehicle(const std::string& file,
+                                        std::vector<std::string>* warnings) {
   vehicle::VehicleDescription description = vehicle::loadVehicleDescription(file);
   for (const std::string& w : vehicle::descriptionWarnings(description)) {
     std::cerr << "tvd: warning: " << file << ": " << w << "\n";
-    if (warnings) warnings->push_back(file + ": " + w);
+    if (warnings)
+      warnings->push_back(file + ": " + w);
   }
   return description;
 }

@@ -64,8 +64,10 @@ ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
   if (idler_centre_.y() - ri <= z)
     throw InputError("idler.centre_z: the idler reaches down to the ground run");
   if (std::abs(sprocket_centre_.x()) <= half)
-    throw InputError("sprocket.centre_x: the sprocket must lie beyond an end of the ground run "
-                     "(|x| > " + brief(half) + " m)");
+    throw InputError(
+        "sprocket.centre_x: the sprocket must lie beyond an end of the ground run "
+        "(|x| > " +
+        brief(half) + " m)");
   // The wheel at each end of the loop: a rear drive sprocket with the idler in front, or a front
   // drive sprocket with the idler behind.
   const bool drive_front = frontDrive(d);
@@ -115,7 +117,8 @@ ChainPath::ChainPath(const VehicleDescription& d, double idler_x) {
   arc(rear_arc, rear_centre, r_rear, t3, t4);
   line(ChainSegment::RearIncline, t4, rear);
   if (top_t.x() >= 0.0)
-    throw InputError("idler: the top run must run rearwards (the front wheel ahead of the rear one)");
+    throw InputError(
+        "idler: the top run must run rearwards (the front wheel ahead of the rear one)");
   for (Piece& p : pieces_) {
     p.s0 = length_;
     length_ += p.len;
@@ -180,11 +183,11 @@ double solveIdlerX(const VehicleDescription& d) {
   if (ChainPath(d, idlerX(lo)).length() > target)
     throw InputError(chain + " is too short to wrap the sprocket and the idler");
   if (ChainPath(d, idlerX(hi)).length() < target)
-    throw InputError(chain + " is too long: it closes only with the idler beyond x = " +
-                     brief(idlerX(hi)) + " m, i.e. more than " + brief(kWheelOverhang) +
-                     " m " + (side > 0 ? "ahead of the hull's front" : "behind the hull's rear") +
-                     " end (x = " + brief(side * hull_end) + " m; hull.length " +
-                     brief(d.hull.length) + " m)");
+    throw InputError(
+        chain + " is too long: it closes only with the idler beyond x = " + brief(idlerX(hi)) +
+        " m, i.e. more than " + brief(kWheelOverhang) + " m " +
+        (side > 0 ? "ahead of the hull's front" : "behind the hull's rear") +
+        " end (x = " + brief(side * hull_end) + " m; hull.length " + brief(d.hull.length) + " m)");
   while (hi - lo > kClosureTolerance) {
     const double mid = 0.5 * (lo + hi);
     if (ChainPath(d, idlerX(mid)).length() < target)

@@ -9,10 +9,12 @@ namespace vehicle {
 std::vector<fem::UnilateralSpring> unilateralContacts(const VehicleModel& vehicle) {
   std::vector<fem::UnilateralSpring> contacts;
   // The road pushes each sole up (global z, the ground spring's frame).
-  for (const RoadInput& in : vehicle.layout.road_inputs) contacts.push_back({in.spring, 2, 1.0});
+  for (const RoadInput& in : vehicle.layout.road_inputs)
+    contacts.push_back({in.spring, 2, 1.0});
   // The patch spring runs from the wheel (n1) to the link (n2); the link pushes the wheel along
   // the contact frame's z axis, the link's normal, away from the link.
-  for (const WheelStation& w : vehicle.layout.wheels) contacts.push_back({w.contact_spring, 2, 1.0});
+  for (const WheelStation& w : vehicle.layout.wheels)
+    contacts.push_back({w.contact_spring, 2, 1.0});
   // Sprocket, idler and rollers: the same spring from the wheel (n1) to the link (n2); the
   // frame's z axis is the loop's inward normal, from the link towards the wheel's centre, so the
   // link pushes the wheel along +z (on the ground run, the road wheels' case, it is global z).

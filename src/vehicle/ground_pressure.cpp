@@ -52,15 +52,16 @@ GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescript
     loads[k].x /= inputs[k];
     loads[k].pressure = loads[k].load / footprint;
   }
-  std::stable_sort(loads.begin(), loads.end(), [](const AssemblyGroundLoad& a,
-                                                  const AssemblyGroundLoad& b) {
-    return a.side != b.side ? a.side < b.side : a.x > b.x;
-  });
+  std::stable_sort(loads.begin(), loads.end(),
+                   [](const AssemblyGroundLoad& a, const AssemblyGroundLoad& b) {
+                     return a.side != b.side ? a.side < b.side : a.x > b.x;
+                   });
   g.assemblies = std::move(loads);
   for (std::size_t k = 0; k < g.assemblies.size(); ++k) {
     const AssemblyGroundLoad& a = g.assemblies[k];
     g.side_load[a.side == 0 ? 0 : 1] += a.load;
-    if (a.load < 0.0) ++g.lifting;
+    if (a.load < 0.0)
+      ++g.lifting;
     // Strictly larger by more than round-off: of mirror-image twins the left one is the peak.
     if (g.peak < 0 ||
         a.pressure > g.assemblies[static_cast<std::size_t>(g.peak)].pressure +
@@ -74,8 +75,10 @@ GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescript
     const double x = vehicle.model.nodes[nodes.at(w.centre)].position.x();
     double peak = -std::numeric_limits<double>::infinity();
     for (const AssemblyGroundLoad& a : g.assemblies)
-      if (a.side == w.side && std::abs(a.x - x) <= reach) peak = std::max(peak, a.pressure);
-    if (!std::isfinite(peak)) peak = 0.0;  // no assembly under it (cannot happen on a built model)
+      if (a.side == w.side && std::abs(a.x - x) <= reach)
+        peak = std::max(peak, a.pressure);
+    if (!std::isfinite(peak))
+      peak = 0.0;  // no assembly under it (cannot happen on a built model)
     g.wheel_peak_pressure.push_back(peak);
     g.wheel_x.push_back(x);
     g.mean_peak_pressure += peak / static_cast<double>(layout.wheels.size());
@@ -83,10 +86,9 @@ GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescript
   const double weight = statics.weight;
   g.nominal_pressure = weight / (2.0 * track.width * track.ground_length);
   const double wheel_diameter = 2.0 * description.road_wheel.radius;
-  g.rowland_mean_maximum_pressure =
-      kRowlandConstant * weight /
-      (2.0 * description.running_gear.axle_count * track.width *
-       std::sqrt(track.pitch * wheel_diameter));
+  g.rowland_mean_maximum_pressure = kRowlandConstant * weight /
+                                    (2.0 * description.running_gear.axle_count * track.width *
+                                     std::sqrt(track.pitch * wheel_diameter));
   return g;
 }
 

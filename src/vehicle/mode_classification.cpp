@@ -58,7 +58,8 @@ bool ModeClass::matches(const std::string& paper_type) const {
   if (t.rfind("wheel bounce", 0) == 0) {
     // "wheel bounce" matches any wheel mode; "wheel bounce+roll" one that rolls the hull.
     const auto plus = t.find('+');
-    if (kind != ModeKind::WheelBounce) return false;
+    if (kind != ModeKind::WheelBounce)
+      return false;
     return plus == std::string::npos ||
            (!hull_motions.empty() && t.substr(plus + 1) == hullMotionName(hull_motions.front()));
   }

@@ -401,18 +401,19 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   const bool front_drive = frontDrive(d);
   c.require(std::abs(d.sprocket.centre_x) > 0.5 * t.ground_length, "sprocket.centre_x",
             "the sprocket must lie beyond an end of the ground run (|x| > " +
-                brief(0.5 * t.ground_length) + " m; x < 0 for a rear drive, x > 0 for a front one)");
+                brief(0.5 * t.ground_length) +
+                " m; x < 0 for a rear drive, x > 0 for a front one)");
   // The sprocket wheel within the hull length, with kWheelOverhang to spare (the idler follows
   // from the chain length: solveIdlerX checks it).
-  c.require(std::abs(d.sprocket.centre_x) + d.sprocket.radius <=
-                0.5 * d.hull.length + kWheelOverhang,
-            "sprocket.centre_x",
-            "the sprocket reaches x = " +
-                brief(d.sprocket.centre_x + (front_drive ? 1.0 : -1.0) * d.sprocket.radius) +
-                " m, more than " + brief(kWheelOverhang) + " m beyond the hull's " +
-                (front_drive ? "front end (x = " + brief(0.5 * d.hull.length)
-                             : "rear end (x = " + brief(-0.5 * d.hull.length)) +
-                " m)");
+  c.require(
+      std::abs(d.sprocket.centre_x) + d.sprocket.radius <= 0.5 * d.hull.length + kWheelOverhang,
+      "sprocket.centre_x",
+      "the sprocket reaches x = " +
+          brief(d.sprocket.centre_x + (front_drive ? 1.0 : -1.0) * d.sprocket.radius) +
+          " m, more than " + brief(kWheelOverhang) + " m beyond the hull's " +
+          (front_drive ? "front end (x = " + brief(0.5 * d.hull.length)
+                       : "rear end (x = " + brief(-0.5 * d.hull.length)) +
+          " m)");
   // Sprocket and idler within the vehicle's height (else the chain cannot wrap them, and the
   // builder would blame the chain's length).
   for (const auto& [centre_z, radius, key] :
@@ -450,11 +451,10 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     c.require(names.insert(p.name).second, key, "name given twice");
     // The name becomes CSV columns, MAT variables ("<name>_accel_z_m_s2", at most 63 characters)
     // and a tf frame, next to the hull's and the road wheels' own.
-    const bool identifier =
-        std::isalpha(static_cast<unsigned char>(p.name[0])) &&
-        std::all_of(p.name.begin(), p.name.end(), [](char ch) {
-          return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
-        });
+    const bool identifier = std::isalpha(static_cast<unsigned char>(p.name[0])) &&
+                            std::all_of(p.name.begin(), p.name.end(), [](char ch) {
+                              return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                            });
     c.require(identifier && p.name.size() <= 40, key,
               "a name must start with a letter, hold only letters, digits and '_', and have at "
               "most 40 characters");
@@ -485,7 +485,8 @@ E readChoice(const io::YamlValue& entry, const std::string& what,
   const std::string name = v.asString();
   std::string names;
   for (const auto& [choice, value] : choices) {
-    if (name == choice) return value;
+    if (name == choice)
+      return value;
     names += (names.empty() ? "" : " or ") + std::string(choice);
   }
   v.fail("unknown " + what + " '" + name + "' (" + names + ")");
@@ -536,14 +537,14 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
       if (std::string(f.section) == section_name)
         readField(section, f, d.sources);
     if (damping)
-      d.damping.model = readChoice<DampingModel>(section["model"], "damping model",
-                                   {{"modal", DampingModel::Modal}, {"rayleigh", DampingModel::Rayleigh}},
-                                   d.sources);
+      d.damping.model = readChoice<DampingModel>(
+          section["model"], "damping model",
+          {{"modal", DampingModel::Modal}, {"rayleigh", DampingModel::Rayleigh}}, d.sources);
     if (ties)
-      d.ties.road_input_station =
-          readChoice<RoadInputStation>(section["road_input_station"], "road input station",
-                     {{"pad_centre", RoadInputStation::PadCentre}, {"sole", RoadInputStation::Sole}},
-                     d.sources);
+      d.ties.road_input_station = readChoice<RoadInputStation>(
+          section["road_input_station"], "road input station",
+          {{"pad_centre", RoadInputStation::PadCentre}, {"sole", RoadInputStation::Sole}},
+          d.sources);
   }
   const io::YamlValue points = root["named_points"];
   d.named_points.clear();
@@ -659,12 +660,13 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
         ", or arm dampers: suspension.arm_damping > 0 on some damping.damped_stations)");
   const double half_wheelbase = 0.5 * d.running_gear.axle_spacing * (d.running_gear.axle_count - 1);
   if (std::abs(d.hull.cog_x) > half_wheelbase)
-    warnings.push_back("hull.cog_x: the centre of gravity (x = " + brief(d.hull.cog_x) +
-                       " m) lies " + (d.hull.cog_x > 0 ? "ahead of the front" : "behind the rear") +
-                       " axle (x = " + brief(d.hull.cog_x > 0 ? half_wheelbase : -half_wheelbase) +
-                       " m): the suspensions at the other end then carry negative static loads, and the "
-                       "linear model's ground holds those wheels down where a real vehicle would "
-                       "tip");
+    warnings.push_back(
+        "hull.cog_x: the centre of gravity (x = " + brief(d.hull.cog_x) + " m) lies " +
+        (d.hull.cog_x > 0 ? "ahead of the front" : "behind the rear") +
+        " axle (x = " + brief(d.hull.cog_x > 0 ? half_wheelbase : -half_wheelbase) +
+        " m): the suspensions at the other end then carry negative static loads, and the "
+        "linear model's ground holds those wheels down where a real vehicle would "
+        "tip");
   const auto& h = d.hull;
   // The hull hangs on its suspension: its CoG lies above the arm pivots (0.53 m against 1.57 m on
   // the paper vehicle). One below them is almost always measured from another datum (the hull's

@@ -14,8 +14,10 @@ VehicleGeometry vehicleGeometry(const VehicleDescription& description) {
   VehicleGeometry geometry;
   geometry.vehicle_name = description.name;
   geometry.cog = position(built.layout.hull);
-  for (const WheelStation& wheel : built.layout.wheels) geometry.wheels.push_back({wheel.name, position(wheel.centre)});
-  for (const NamedPoint& point : description.named_points) geometry.points.push_back({point.name, point.position});
+  for (const WheelStation& wheel : built.layout.wheels)
+    geometry.wheels.push_back({wheel.name, position(wheel.centre)});
+  for (const NamedPoint& point : description.named_points)
+    geometry.points.push_back({point.name, point.position});
   return geometry;
 }
 

@@ -127,8 +127,8 @@ class Builder {
     const Vector2 s = path.sprocketCentre(), i = path.idlerCentre();
     int axle = overlappedRoadWheel(s.x(), s.y(), d_.sprocket.radius);
     if (axle >= 0)
-      throw InputError("sprocket.centre_x: the sprocket (centre x = " + brief(s.x()) + " m, z = " +
-                       brief(s.y()) + " m, radius " + brief(d_.sprocket.radius) +
+      throw InputError("sprocket.centre_x: the sprocket (centre x = " + brief(s.x()) +
+                       " m, z = " + brief(s.y()) + " m, radius " + brief(d_.sprocket.radius) +
                        " m) overlaps " + roadWheelText(axle));
     axle = overlappedRoadWheel(i.x(), i.y(), d_.idler.radius);
     if (axle >= 0)
@@ -146,10 +146,12 @@ class Builder {
         "return_rollers.x: the roller at x = " + brief(xr) + " m (radius " + brief(r) +
         " m, its centre hanging under the top run at z = " + brief(zr) + " m)";
     if (zr - r <= d_.track_assembly.upper_surface_height)
-      throw InputError(roller + " reaches down to the ground run (return_rollers.radius, or the "
-                                "top run is too low)");
+      throw InputError(roller +
+                       " reaches down to the ground run (return_rollers.radius, or the "
+                       "top run is too low)");
     const int axle = overlappedRoadWheel(xr, zr, r);
-    if (axle >= 0) throw InputError(roller + " overlaps " + roadWheelText(axle));
+    if (axle >= 0)
+      throw InputError(roller + " overlaps " + roadWheelText(axle));
   }
 
   // Trailing arm: pivot ahead of and above the wheel centre, x_p = x_w + a cos(beta),
@@ -401,8 +403,8 @@ class Builder {
         const bool idler_in_front = path.idlerCentre().x() > path.sprocketCentre().x();
         if (idler_in_front ? xr >= path.idlerCentre().x() : xr <= path.idlerCentre().x())
           throw InputError("return_rollers.x: roller at x = " + brief(xr) + " m lies " +
-                           (idler_in_front ? "ahead of" : "behind") + " the idler (x = " +
-                           brief(path.idlerCentre().x()) + " m)");
+                           (idler_in_front ? "ahead of" : "behind") +
+                           " the idler (x = " + brief(path.idlerCentre().x()) + " m)");
         checkRollerClearance(xr, path.topRunHeight(xr) - d_.return_rollers.radius);
         int best = -1;
         double best_dist = 1e300;
@@ -499,10 +501,12 @@ Variant parseVariant(const std::string& text) {
   throw InputError("unknown vehicle variant '" + text + "' (untracked or tracked)");
 }
 
-Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::DofRef>& ground_inputs) {
+Vector roadInputStations(const VehicleLayout& layout,
+                         const std::vector<fem::DofRef>& ground_inputs) {
   if (ground_inputs.size() != layout.road_inputs.size())
     throw std::logic_error("roadInputStations: " + std::to_string(ground_inputs.size()) +
-                           " ground inputs, " + std::to_string(layout.road_inputs.size()) + " road inputs");
+                           " ground inputs, " + std::to_string(layout.road_inputs.size()) +
+                           " road inputs");
   Vector x(static_cast<Eigen::Index>(ground_inputs.size()));
   for (std::size_t q = 0; q < ground_inputs.size(); ++q) {
     if (ground_inputs[q].node != layout.road_inputs[q].node)
@@ -515,28 +519,44 @@ Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::Dof
 }
 
 std::string nodePart(const VehicleLayout& layout, NodeId node) {
-  if (node == layout.hull) return "hull";
+  if (node == layout.hull)
+    return "hull";
   for (const auto& [name, id] : layout.named_points)
-    if (id == node) return name;
+    if (id == node)
+      return name;
   // Station nodes: stationNode(side, axle, part), parts 0..6 as in vehicle_model.h.
-  static const char* const kStationParts[] = {"pivot", "arm", "centre", "wheel contact",
-                                              "link contact", "wheel guide contact",
+  static const char* const kStationParts[] = {"pivot",
+                                              "arm",
+                                              "centre",
+                                              "wheel contact",
+                                              "link contact",
+                                              "wheel guide contact",
                                               "link guide contact"};
   for (const WheelStation& wheel : layout.wheels) {
     const NodeId base = stationNode(wheel.side, wheel.axle, 0);
-    if (node >= base && node < base + 7) return wheel.name + " " + kStationParts[node - base];
+    if (node >= base && node < base + 7)
+      return wheel.name + " " + kStationParts[node - base];
   }
   for (const AssemblyRecord& a : layout.assemblies) {
     const TrackAssemblyNodes& n = a.nodes;
-    if (node < n.base || node >= n.base + 100) continue;
-    auto in = [node](const auto& ids) { return std::find(ids.begin(), ids.end(), node) != ids.end(); };
-    const char* part = in(n.soles) ? "sole" : in(n.cores) ? "pad core" : in(n.tops) ? "pad top"
-                       : in(n.front_pin) || in(n.rear_pin) ? "pin" : "link";
-    return std::string("track assembly ") + sideName(a.side) + " " + std::to_string(a.index + 1) + " " + part;
+    if (node < n.base || node >= n.base + 100)
+      continue;
+    auto in = [node](const auto& ids) {
+      return std::find(ids.begin(), ids.end(), node) != ids.end();
+    };
+    const char* part = in(n.soles)                         ? "sole"
+                       : in(n.cores)                       ? "pad core"
+                       : in(n.tops)                        ? "pad top"
+                       : in(n.front_pin) || in(n.rear_pin) ? "pin"
+                                                           : "link";
+    return std::string("track assembly ") + sideName(a.side) + " " + std::to_string(a.index + 1) +
+           " " + part;
   }
   for (std::size_t side = 0; side < layout.sprockets.size(); ++side) {  // one per side, left first
-    if (layout.sprockets[side] == node) return std::string("sprocket ") + sideName(static_cast<int>(side));
-    if (layout.idlers[side] == node) return std::string("idler ") + sideName(static_cast<int>(side));
+    if (layout.sprockets[side] == node)
+      return std::string("sprocket ") + sideName(static_cast<int>(side));
+    if (layout.idlers[side] == node)
+      return std::string("idler ") + sideName(static_cast<int>(side));
   }
   for (const NodeId roller : layout.return_rollers)
     if (roller == node)

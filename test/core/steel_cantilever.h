@@ -11,7 +11,8 @@ namespace test {
 inline fem::Model steelCantilever(int elements) {
   fem::Model model;
   model.name = "cantilever";
-  for (int i = 0; i <= elements; ++i) model.addNode(i, Vector3(2.0 * i / elements, 0.0, 0.0));
+  for (int i = 0; i <= elements; ++i)
+    model.addNode(i, Vector3(2.0 * i / elements, 0.0, 0.0));
   model.materials.push_back(fem::Material{"steel", 210e9, 81e9, 7850.0});
   fem::Section section;
   section.name = "bar";

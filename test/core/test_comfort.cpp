@@ -29,7 +29,9 @@ constexpr double kClosedFormTolerance = 0.01;
 // Online and batch sums differ only by rounding order.
 constexpr double kAgreementTolerance = 1e-9;
 
-double decibels(double ratio) { return 20.0 * std::log10(ratio); }
+double decibels(double ratio) {
+  return 20.0 * std::log10(ratio);
+}
 
 Vector sinusoid(double amplitude, double frequency, double sample_rate, double duration) {
   const auto n = static_cast<Eigen::Index>(std::llround(duration * sample_rate));
@@ -73,7 +75,8 @@ double worstErrorDb(const WeightingFilter& filter, Weighting weighting, double f
   for (double f = 0.1;; f = std::min(f * std::pow(10.0, 0.05), f_max)) {
     const double ratio = std::abs(filter.response(f)) / std::abs(iso2631Response(weighting, f));
     worst = std::max(worst, std::abs(decibels(ratio)));
-    if (f >= f_max) return worst;
+    if (f >= f_max)
+      return worst;
   }
 }
 
@@ -173,19 +176,19 @@ TEST(Comfort, AbsorbedPowerFilterReproducesChronosCoefficients) {
   for (double t : {1e-3, 5e-3, 0.02}) {
     const double b_chrono[4] = {29.0 * t * (22.0 * t + 1.0), 29.0 * t * (22.0 * t - 1.0),
                                 -29.0 * t * (22.0 * t + 1.0), -29.0 * t * (22.0 * t - 1.0)};
-    const double a_chrono[4] = {
-        (63.0 * t + 2.0) * (375.0 * t * t + 24.0 * t + 2.0),
-        (63.0 * t - 2.0) * (375.0 * t * t + 24.0 * t + 2.0) +
-            (63.0 * t + 2.0) * (750.0 * t * t - 4.0),
-        (63.0 * t + 2.0) * (375.0 * t * t - 24.0 * t + 2.0) +
-            (63.0 * t - 2.0) * (750.0 * t * t - 4.0),
-        (63.0 * t - 2.0) * (375.0 * t * t - 24.0 * t + 2.0)};
+    const double a_chrono[4] = {(63.0 * t + 2.0) * (375.0 * t * t + 24.0 * t + 2.0),
+                                (63.0 * t - 2.0) * (375.0 * t * t + 24.0 * t + 2.0) +
+                                    (63.0 * t + 2.0) * (750.0 * t * t - 4.0),
+                                (63.0 * t + 2.0) * (375.0 * t * t - 24.0 * t + 2.0) +
+                                    (63.0 * t - 2.0) * (750.0 * t * t - 4.0),
+                                (63.0 * t - 2.0) * (375.0 * t * t - 24.0 * t + 2.0)};
     // Our H_p as one rational function in z^-1: the product of the sections, each bilinear.
     std::vector<double> num{1.0}, den{1.0};
     auto multiply = [](const std::vector<double>& p, const std::vector<double>& q) {
       std::vector<double> r(p.size() + q.size() - 1, 0.0);
       for (std::size_t i = 0; i < p.size(); ++i)
-        for (std::size_t j = 0; j < q.size(); ++j) r[i + j] += p[i] * q[j];
+        for (std::size_t j = 0; j < q.size(); ++j)
+          r[i + j] += p[i] * q[j];
       return r;
     };
     const double k = 2.0 / t;
@@ -241,7 +244,8 @@ TEST(Comfort, OnlineMeterAgreesWithBatch) {
   std::mt19937_64 rng(2024);
   std::normal_distribution<double> noise(0.0, 1.0);
   Vector a(20000);
-  for (Eigen::Index i = 0; i < a.size(); ++i) a(i) = noise(rng) + 3.0 * std::sin(0.02 * i);
+  for (Eigen::Index i = 0; i < a.size(); ++i)
+    a(i) = noise(rng) + 3.0 * std::sin(0.02 * i);
   for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
     ComfortOptions options;
     options.weighting = weighting;

@@ -32,9 +32,11 @@ TEST(CoreBoundary, NoRosHeadersInTheCore) {
   int files = 0;
   for (const char* top : {"include/tracked_vehicle_dynamics", "src"}) {
     for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
-      if (!entry.is_regular_file()) continue;
+      if (!entry.is_regular_file())
+        continue;
       const std::string path = entry.path().generic_string();
-      if (path.find("/ros/") != std::string::npos) continue;  // the ROS layer itself
+      if (path.find("/ros/") != std::string::npos)
+        continue;  // the ROS layer itself
       std::ifstream in(entry.path());
       std::string line;
       int number = 0;

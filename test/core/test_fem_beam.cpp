@@ -23,15 +23,22 @@ constexpr double kLength = 2.0;
 constexpr double kFrequencyTolerance = 0.005;  // 0.5 % of Euler-Bernoulli
 constexpr double kIdentityTolerance = 1e-8;
 
-double areaOf() { return kWidth * kHeight; }
-double iyOf() { return kWidth * kHeight * kHeight * kHeight / 12.0; }  // bending in x-z
-double izOf() { return kHeight * kWidth * kWidth * kWidth / 12.0; }    // bending in x-y
+double areaOf() {
+  return kWidth * kHeight;
+}
+double iyOf() {
+  return kWidth * kHeight * kHeight * kHeight / 12.0;
+}  // bending in x-z
+double izOf() {
+  return kHeight * kWidth * kWidth * kWidth / 12.0;
+}  // bending in x-y
 
 // A straight beam along x with `elements` elements; optionally clamped at node 0.
 Model makeBeam(int elements, bool clamped) {
   Model m;
   m.name = "beam";
-  for (int i = 0; i <= elements; ++i) m.addNode(i + 1, tvd::Vector3(kLength * i / elements, 0, 0));
+  for (int i = 0; i <= elements; ++i)
+    m.addNode(i + 1, tvd::Vector3(kLength * i / elements, 0, 0));
   m.materials.push_back({"steel", kE, kG, kRho});
   tvd::fem::Section s;
   s.name = "rect";
@@ -49,7 +56,8 @@ Model makeBeam(int elements, bool clamped) {
     b.orientation = tvd::Vector3::UnitZ();
     m.beams.push_back(b);
   }
-  if (clamped) m.fixed.push_back({1, {{true, true, true, true, true, true}}});
+  if (clamped)
+    m.fixed.push_back({1, {{true, true, true, true, true, true}}});
   return m;
 }
 
@@ -83,7 +91,8 @@ TEST(BeamModes, CantileverMatchesEulerBernoulli) {
     for (double root : kCantileverRoots) {
       const double expected = bendingFrequency(root, inertia);
       double best = 1e9;
-      for (double f : sortedFrequencies(basis)) best = std::min(best, std::abs(f - expected) / expected);
+      for (double f : sortedFrequencies(basis))
+        best = std::min(best, std::abs(f - expected) / expected);
       EXPECT_LT(best, kFrequencyTolerance) << "bending mode at " << expected << " Hz";
     }
   }
@@ -95,7 +104,8 @@ TEST(BeamModes, FreeFreeHasSixRigidBodyModesThenFlexible) {
   req.count = 9;
   const tvd::fem::ModalBasis basis = tvd::fem::solveModes(sys.stiffness, sys.mass, req);
   const double first_flexible = bendingFrequency(kFreeFreeRoots[0], iyOf());
-  for (int i = 0; i < 6; ++i) EXPECT_LT(basis.frequencies_hz(i), 1e-4 * first_flexible) << i;
+  for (int i = 0; i < 6; ++i)
+    EXPECT_LT(basis.frequencies_hz(i), 1e-4 * first_flexible) << i;
   EXPECT_NEAR(basis.frequencies_hz(6), first_flexible, kFrequencyTolerance * first_flexible);
   // Next: the first bending mode in the stiffer plane (I_z = 6.25 I_y), then the second in x-z.
   const double stiff_plane = bendingFrequency(kFreeFreeRoots[0], izOf());
@@ -121,7 +131,8 @@ TEST(BeamModes, LanczosMatchesDenseAndIdentitiesHold) {
   const tvd::Matrix& phi = lanczos.shapes;
   const tvd::Matrix orth = phi.transpose() * (sys.mass * phi);
   EXPECT_LT((orth - tvd::Matrix::Identity(20, 20)).cwiseAbs().maxCoeff(), kIdentityTolerance);
-  const tvd::Matrix residual = sys.stiffness * phi - sys.mass * phi * lanczos.eigenvalues.asDiagonal();
+  const tvd::Matrix residual =
+      sys.stiffness * phi - sys.mass * phi * lanczos.eigenvalues.asDiagonal();
   const double scale = (sys.stiffness * phi).norm();
   EXPECT_LT(residual.norm() / scale, kIdentityTolerance);
 }
@@ -135,7 +146,8 @@ TEST(BeamModes, FrequencyLimitReturnsAllModesBelowIt) {
   const tvd::fem::ModalBasis dense =
       tvd::fem::solveModesDense(tvd::Matrix(sys.stiffness), tvd::Matrix(sys.mass));
   int below = 0;
-  while (dense.frequencies_hz(below) <= 200.0) ++below;
+  while (dense.frequencies_hz(below) <= 200.0)
+    ++below;
   EXPECT_EQ(limited.count(), below);
 }
 
@@ -184,16 +196,20 @@ TEST(BeamStatics, RotatedBeamGivesTheSameAnswer) {
   // The same cantilever along a skew axis, loaded perpendicular to it, deflects by P L^3 / 3EI.
   Model m = makeBeam(8, true);
   const tvd::Vector3 axis = tvd::Vector3(1, 2, 2).normalized();
-  for (auto& n : m.nodes) n.position = axis * n.position.x();
+  for (auto& n : m.nodes)
+    n.position = axis * n.position.x();
   const tvd::Vector3 perp = axis.cross(tvd::Vector3::UnitX()).normalized();
-  for (auto& b : m.beams) b.orientation = perp;  // local z = perp, bending about local y
+  for (auto& b : m.beams)
+    b.orientation = perp;  // local z = perp, bending about local y
   const tvd::fem::System sys = tvd::fem::assemble(m);
   tvd::Vector f = tvd::Vector::Zero(sys.size());
   const double load = 100.0;
-  for (int d = 0; d < 3; ++d) f(sys.dofs.requireActive(9, d)) = load * perp(d);
+  for (int d = 0; d < 3; ++d)
+    f(sys.dofs.requireActive(9, d)) = load * perp(d);
   const tvd::fem::StaticResult r = tvd::fem::solveStatic(sys, f);
   tvd::Vector3 tip;
-  for (int d = 0; d < 3; ++d) tip(d) = r.displacement(sys.dofs.requireActive(9, d));
+  for (int d = 0; d < 3; ++d)
+    tip(d) = r.displacement(sys.dofs.requireActive(9, d));
   const double expected = load * std::pow(kLength, 3) / (3 * kE * iyOf());
   EXPECT_NEAR(tip.dot(perp), expected, 1e-9 * expected);
   EXPECT_NEAR(tip.dot(axis), 0.0, 1e-12);
@@ -206,7 +222,8 @@ TEST(BeamStatics, BeamMassAndGravityLoad) {
   EXPECT_NEAR(m.totalMass(), mass, 1e-12 * mass);
   double fz = 0.0;
   for (tvd::DofIndex i = 0; i < sys.size(); ++i)
-    if (sys.dofs.dofOf(i).direction == 2) fz += sys.gravity_load(i);
+    if (sys.dofs.dofOf(i).direction == 2)
+      fz += sys.gravity_load(i);
   EXPECT_NEAR(fz, -mass * tvd::kStandardGravity, 1e-9 * mass);
 }
 

@@ -243,7 +243,8 @@ TEST(RigidJoint, LongChainIsOneRigidBodyOfBoundedTerms) {
   EXPECT_NEAR(mass(0, 0), n * m, 1e-9 * n * m);  // ux of the root carries every mass
   // theta_z of the root about its own node: sum of m (x_i - x_1)^2.
   double inertia = 0.0;
-  for (int i = 1; i <= n; ++i) inertia += m * std::pow((i - 1) * spacing, 2);
+  for (int i = 1; i <= n; ++i)
+    inertia += m * std::pow((i - 1) * spacing, 2);
   EXPECT_NEAR(mass(5, 5), inertia, 1e-9 * inertia);
 }
 
@@ -252,8 +253,8 @@ TEST(RigidJoint, RevoluteJointLeavesOneRotationFree) {
   // k_t about y and a tip mass m at arm length a give omega^2 = k_t / (m a^2).
   const double kt = 5e5, m = 1200.0, a = 0.5;
   Model model;
-  model.addNode(1, tvd::Vector3(0, 0, 0));  // pivot, clamped
-  model.addNode(2, tvd::Vector3(0, 0, 0));  // arm root
+  model.addNode(1, tvd::Vector3(0, 0, 0));   // pivot, clamped
+  model.addNode(2, tvd::Vector3(0, 0, 0));   // arm root
   model.addNode(3, tvd::Vector3(-a, 0, 0));  // wheel centre
   model.fixed.push_back({1, {{true, true, true, true, true, true}}});
   tvd::fem::RigidJoint revolute;
@@ -283,7 +284,8 @@ TEST(RigidJoint, RevoluteJointLeavesOneRotationFree) {
   f_phys(sys.dofs.physical(3, 2)) = -1000.0;
   f = sys.dofs.transformation().transpose() * f_phys;
   const auto r = tvd::fem::solveStatic(sys, f);
-  EXPECT_NEAR(tvd::fem::physicalDisplacement(sys, r.displacement, 3, 2), -1000.0 * a * a / kt, 1e-12);
+  EXPECT_NEAR(tvd::fem::physicalDisplacement(sys, r.displacement, 3, 2), -1000.0 * a * a / kt,
+              1e-12);
 }
 
 TEST(RigidJoint, ConflictingConstraintsAreRejected) {

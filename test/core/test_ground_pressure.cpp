@@ -85,7 +85,8 @@ TEST(GroundPressure, UntrackedAssemblyCarriesItsWheelAndItself) {
   for (std::size_t i = 0; i < wheels.size(); ++i) {
     const veh::AssemblyGroundLoad& a = r.ground.assemblies[i];  // same order: left 1..7, right 1..7
     EXPECT_EQ(a.assembly, wheels[i].axle);
-    EXPECT_NEAR(a.load, r.statics.wheel_loads[i] + 27.0 * kGravity, 1e-6 * a.load) << wheels[i].name;
+    EXPECT_NEAR(a.load, r.statics.wheel_loads[i] + 27.0 * kGravity, 1e-6 * a.load)
+        << wheels[i].name;
     EXPECT_GT(a.load, 0.0);
     // One assembly under each wheel: the peak under it is that assembly's pressure.
     EXPECT_DOUBLE_EQ(r.ground.wheel_peak_pressure[i], a.pressure) << wheels[i].name;
@@ -103,7 +104,8 @@ TEST(GroundPressure, TrackedGroundRunCarriesTheWholeVehicle) {
   const auto& a = r.ground.assemblies;
   EXPECT_NEAR(a.front().x - a[29].x, 29 * 0.1615, 1e-9);
   int lifting = 0;
-  for (const auto& x : a) lifting += x.load < 0.0;
+  for (const auto& x : a)
+    lifting += x.load < 0.0;
   EXPECT_EQ(r.ground.lifting, lifting);
   // The peak under each wheel is one of the assemblies under it (within 0.39 m) and no lower than
   // the nearest one; their mean is the FE mean maximum pressure.
@@ -115,9 +117,12 @@ TEST(GroundPressure, TrackedGroundRunCarriesTheWholeVehicle) {
     const veh::AssemblyGroundLoad* nearest = nullptr;
     bool found = false;
     for (const auto& s : a) {
-      if (s.side != wheels[i].side) continue;
-      if (!nearest || std::abs(s.x - x) < std::abs(nearest->x - x)) nearest = &s;
-      if (std::abs(s.x - x) <= 0.39 && s.pressure == r.ground.wheel_peak_pressure[i]) found = true;
+      if (s.side != wheels[i].side)
+        continue;
+      if (!nearest || std::abs(s.x - x) < std::abs(nearest->x - x))
+        nearest = &s;
+      if (std::abs(s.x - x) <= 0.39 && s.pressure == r.ground.wheel_peak_pressure[i])
+        found = true;
     }
     EXPECT_TRUE(found) << wheels[i].name;
     EXPECT_GE(r.ground.wheel_peak_pressure[i], nearest->pressure) << wheels[i].name;
@@ -146,8 +151,9 @@ TEST(GroundPressure, PadRowsAndWheelReachOfGivenReactions) {
   const auto& inputs = r.model.layout.road_inputs;
   int spiked = 0;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    const bool spike = inputs[i].side == 0 &&
-                       r.model.layout.assemblies[static_cast<std::size_t>(inputs[i].assembly)].index == 26;
+    const bool spike =
+        inputs[i].side == 0 &&
+        r.model.layout.assemblies[static_cast<std::size_t>(inputs[i].assembly)].index == 26;
     spiked += spike;
     r.statics.pad_loads[i] = std::abs(inputs[i].y) + (spike ? 1.0 : 0.0);
   }

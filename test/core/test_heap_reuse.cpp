@@ -56,7 +56,10 @@ TEST(HeapReuse, FreedMatricesReuseTheirPagesInsideTheScope) {
 }
 
 TEST(HeapReuse, AfterwardsLargeBlocksAreMappedAndTheFreeMemoryIsReturned) {
-  { const tvd::HeapReuse reuse; faultsOfOneMatrix(); }
+  {
+    const tvd::HeapReuse reuse;
+    faultsOfOneMatrix();
+  }
   // The heap kept no large free block (malloc_trim), and the thresholds sit at the ceiling of
   // glibc's dynamic rule: a block above 32 MiB is mapped on its own, one below comes from the heap.
   EXPECT_LT(mallinfo2().fordblks, 16u << 20);

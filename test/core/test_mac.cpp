@@ -123,12 +123,13 @@ TEST(EigenspaceMac, IsBasisInvariantForRepeatedModesAndPlainOtherwise) {
   phi_b.col(3) = 0.3 * phi_a.col(2) - 2.0 * phi_a.col(3);
   Vector f_a(5), f_b(4);
   f_a << 1.0, 2.0, 3.0, 3.0 * (1.0 + 1e-9), 5.0;  // A: modes 2 and 3 repeated
-  f_b << 1.5, 2.5, 2.5, 4.0;                     // B: modes 1 and 2 repeated
+  f_b << 1.5, 2.5, 2.5, 4.0;                      // B: modes 1 and 2 repeated
   const Matrix plain = mac(phi_a, phi_b);
   const Matrix m = eigenspaceMac(phi_a, f_a, phi_b, f_b);
   // Single with single: the plain MAC.
   for (int j : {0, 1, 4})
-    for (int k : {0, 3}) EXPECT_NEAR(m(j, k), plain(j, k), kRoundOff) << j << "," << k;
+    for (int k : {0, 3})
+      EXPECT_NEAR(m(j, k), plain(j, k), kRoundOff) << j << "," << k;
   // Group with anything: at least the best plain MAC of its members, one value for the group.
   EXPECT_GE(m(0, 1) + kRoundOff, std::max(plain(0, 1), plain(0, 2)));
   EXPECT_EQ(m(0, 1), m(0, 2));
@@ -145,7 +146,8 @@ TEST(EigenspaceMac, IsBasisInvariantForRepeatedModesAndPlainOtherwise) {
   // A gap below A's 1e-9 splitting keeps A's modes 2 and 3 apart: plain MACs with B's single modes.
   const Matrix narrow = eigenspaceMac(phi_a, f_a, phi_b, f_b, 1e-12);
   for (int j : {2, 3})
-    for (int k : {0, 3}) EXPECT_NEAR(narrow(j, k), plain(j, k), kRoundOff) << j << "," << k;
+    for (int k : {0, 3})
+      EXPECT_NEAR(narrow(j, k), plain(j, k), kRoundOff) << j << "," << k;
   EXPECT_GT(m(2, 0), plain(2, 0) + 0.01);
   EXPECT_THROW(eigenspaceMac(phi_a, f_b, phi_b, f_b), InputError);  // 4 frequencies, 5 shapes
 }

@@ -290,7 +290,8 @@ TEST_F(ModelYamlTest, SpringMassChainExample) {
   // Only uz stays free at each node: 10 DOFs.
   int free_dofs = 0;
   for (const fem::FixedDofs& fixed : model.fixed) {
-    for (bool held : fixed.dofs) free_dofs += held ? 0 : 1;
+    for (bool held : fixed.dofs)
+      free_dofs += held ? 0 : 1;
   }
   EXPECT_EQ(free_dofs, 10);
   EXPECT_EQ(model.fixed.size(), 10u);

@@ -29,12 +29,24 @@ TEST(ReductionCache, FileNameNamesVariantDescriptionAndOptions) {
   for (int which = 0; which < 6; ++which) {
     VehicleReductionOptions o;
     switch (which) {
-      case 0: o.rule = tvd::reduction::VehicleModeRule::Band; break;
-      case 1: o.global_modes = 41; break;
-      case 2: o.band_hz = 30.000001; break;
-      case 3: o.mac_threshold = 0.8; break;
-      case 4: o.mogesec_masters = 10; break;
-      default: o.mode_count = 30; break;
+      case 0:
+        o.rule = tvd::reduction::VehicleModeRule::Band;
+        break;
+      case 1:
+        o.global_modes = 41;
+        break;
+      case 2:
+        o.band_hz = 30.000001;
+        break;
+      case 3:
+        o.mac_threshold = 0.8;
+        break;
+      case 4:
+        o.mogesec_masters = 10;
+        break;
+      default:
+        o.mode_count = 30;
+        break;
     }
     const std::string name = tvd::reduction::reducedModelCachePath("/c", variant, "abc", o);
     EXPECT_EQ(name, tvd::reduction::reducedModelCachePath("/c", variant, "abc", o));
@@ -110,15 +122,18 @@ TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
   std::filesystem::remove_all(dir);
   const auto variant = tvd::vehicle::Variant::Untracked;
   tvd::reduction::VehicleReductionReport first, second, third;
-  const auto defaults = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), {}, &first);
+  const auto defaults =
+      tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), {}, &first);
   VehicleReductionOptions fewer;
   fewer.mogesec_masters = 4;
   const std::string hash =
       tvd::vehicle::descriptionHashHex(tvd::vehicle::loadVehicleDescription(kVehicle));
-  std::filesystem::copy_file(first.cache_file,
-                             tvd::reduction::reducedModelCachePath(dir.string(), variant, hash, fewer));
-  const auto computed = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &second);
-  const auto cached = tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
+  std::filesystem::copy_file(
+      first.cache_file, tvd::reduction::reducedModelCachePath(dir.string(), variant, hash, fewer));
+  const auto computed =
+      tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &second);
+  const auto cached =
+      tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
   EXPECT_FALSE(first.from_cache);
   EXPECT_FALSE(second.from_cache) << second.cache_note;
   EXPECT_NE(second.cache_note.find("is stale: " + second.cache_file +

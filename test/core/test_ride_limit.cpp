@@ -29,7 +29,8 @@ TEST(Butterworth, AnalogueMagnitudeIsMaximallyFlat) {
     EXPECT_EQ(sections.size(), static_cast<std::size_t>((n + 1) / 2));
     for (double f : {0.0, 3.0, 15.0, 30.0, 45.0, 120.0}) {
       const double expected = 1.0 / std::sqrt(1.0 + std::pow(f / 30.0, 2 * n));
-      EXPECT_NEAR(std::abs(analogResponse(sections, f)), expected, kExact * expected) << n << " " << f;
+      EXPECT_NEAR(std::abs(analogResponse(sections, f)), expected, kExact * expected)
+          << n << " " << f;
     }
   }
   // The 4th order's quality factors 1/(2 sin(π/8)) and 1/(2 sin(3π/8)).
@@ -56,22 +57,26 @@ TEST(Butterworth, RejectsBadOrderAndCorner) {
   expectInputError([] { butterworthLowPass(0, 30.0); }, "order must be 1..12, got 0");
   expectInputError([] { butterworthLowPass(13, 30.0); }, "order must be 1..12, got 13");
   expectInputError([] { butterworthLowPass(4, 0.0); }, "corner frequency");
-  expectInputError([] { butterworthLowPass(4, std::numeric_limits<double>::quiet_NaN()); }, "corner frequency");
+  expectInputError([] { butterworthLowPass(4, std::numeric_limits<double>::quiet_NaN()); },
+                   "corner frequency");
 }
 
 std::vector<double> sineSamples(double amplitude, double frequency, double fs, double seconds) {
   std::vector<double> a;
-  for (long k = 0; k < std::lround(seconds * fs); ++k) a.push_back(amplitude * std::sin(2.0 * kPi * frequency * k / fs));
+  for (long k = 0; k < std::lround(seconds * fs); ++k)
+    a.push_back(amplitude * std::sin(2.0 * kPi * frequency * k / fs));
   return a;
 }
 
 TEST(ShockMeter, PeaksOfSinusoidsFollowTheLowPassGain) {
   const double fs = 1000.0;
-  const WeightingFilter reference(butterworthLowPass(4, 30.0), fs, Discretisation::BilinearPrewarped);
+  const WeightingFilter reference(butterworthLowPass(4, 30.0), fs,
+                                  Discretisation::BilinearPrewarped);
   // Well inside the pass band: the peak is the amplitude times the gain, within the start-up
   // transient of a 4th-order filter (below 0.5 % for a 2 Hz sine).
   ShockMeter pass(fs);
-  for (double a : sineSamples(20.0, 2.0, fs, 5.0)) pass.add(a);
+  for (double a : sineSamples(20.0, 2.0, fs, 5.0))
+    pass.add(a);
   const double gain = std::abs(reference.response(2.0));
   EXPECT_NEAR(pass.peakUp(), 20.0 * gain, 0.005 * 20.0);
   EXPECT_NEAR(pass.peakAbsolute(), 20.0 * gain, 0.005 * 20.0);
@@ -88,11 +93,13 @@ TEST(ShockMeter, PeaksOfSinusoidsFollowTheLowPassGain) {
   ShockOptions raw;
   raw.lowpass_corner_hz = 0.0;
   ShockMeter plain(fs, raw);
-  for (double a : {0.0, -3.0, 1.5, -7.25, 2.0}) plain.add(a);
+  for (double a : {0.0, -3.0, 1.5, -7.25, 2.0})
+    plain.add(a);
   EXPECT_EQ(plain.peakUp(), 2.0);
   EXPECT_EQ(plain.peakAbsolute(), 7.25);
   ShockMeter falling(fs, raw);
-  for (double a : {0.0, -1.0, -2.0}) falling.add(a);
+  for (double a : {0.0, -1.0, -2.0})
+    falling.add(a);
   EXPECT_EQ(falling.peakUp(), 0.0);
   plain.reset();
   EXPECT_EQ(plain.peakAbsolute(), 0.0);
@@ -115,20 +122,26 @@ TEST(ShockMeter, RejectsBadCornerAndSamples) {
 
 std::vector<double> evaluateAll(const std::vector<double>& v, double (*f)(double)) {
   std::vector<double> m;
-  for (double x : v) m.push_back(f(x));
+  for (double x : v)
+    m.push_back(f(x));
   return m;
 }
 
-double square(double v) { return v * v; }
-double line(double v) { return 0.75 * v - 1.0; }
+double square(double v) {
+  return v * v;
+}
+double line(double v) {
+  return 0.75 * v - 1.0;
+}
 
 TEST(LimitCrossing, BisectsToTheCrossingOfASquare) {
   const std::vector<double> speeds = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
   int calls = 0;
-  const LimitCrossing c = findLimitCrossing(speeds, evaluateAll(speeds, square), 6.0, 1e-3, [&](double v) {
-    ++calls;
-    return square(v);
-  });
+  const LimitCrossing c =
+      findLimitCrossing(speeds, evaluateAll(speeds, square), 6.0, 1e-3, [&](double v) {
+        ++calls;
+        return square(v);
+      });
   EXPECT_EQ(c.status, LimitCrossing::Status::Reached);
   EXPECT_LE(c.lower, std::sqrt(6.0));
   EXPECT_GE(c.upper, std::sqrt(6.0));
@@ -142,8 +155,9 @@ TEST(LimitCrossing, BisectsToTheCrossingOfASquare) {
 
 TEST(LimitCrossing, ExactOnALinearMetricWithoutRefinement) {
   const std::vector<double> speeds = {0, 4, 8};
-  const LimitCrossing c = findLimitCrossing(speeds, evaluateAll(speeds, line), 2.5, 10.0,
-                                            [](double) -> double { throw std::logic_error("not needed"); });
+  const LimitCrossing c =
+      findLimitCrossing(speeds, evaluateAll(speeds, line), 2.5, 10.0,
+                        [](double) -> double { throw std::logic_error("not needed"); });
   EXPECT_EQ(c.status, LimitCrossing::Status::Reached);
   EXPECT_NEAR(c.speed, 3.5 / 0.75, kExact);
   EXPECT_EQ(c.refinements, 0);
@@ -153,13 +167,16 @@ TEST(LimitCrossing, ReportsTheFirstCrossingAndTheEnds) {
   // Up, down, up again: the first interval that brackets the limit is the one searched.
   const std::vector<double> speeds = {0, 1, 2, 3};
   const std::vector<double> bumpy = {0, 10, 2, 10};
-  const LimitCrossing first = findLimitCrossing(speeds, bumpy, 5.0, 0.25, [](double v) { return 10.0 * v; });
+  const LimitCrossing first =
+      findLimitCrossing(speeds, bumpy, 5.0, 0.25, [](double v) { return 10.0 * v; });
   EXPECT_EQ(first.status, LimitCrossing::Status::Reached);
   EXPECT_NEAR(first.speed, 0.5, kExact);
-  const LimitCrossing low = findLimitCrossing(speeds, {7, 8, 9, 10}, 5.0, 0.1, [](double) { return 0.0; });
+  const LimitCrossing low =
+      findLimitCrossing(speeds, {7, 8, 9, 10}, 5.0, 0.1, [](double) { return 0.0; });
   EXPECT_EQ(low.status, LimitCrossing::Status::AtLowest);
   EXPECT_EQ(low.speed, 0.0);
-  const LimitCrossing none = findLimitCrossing(speeds, {1, 2, 3, 4}, 5.0, 0.1, [](double) { return 0.0; });
+  const LimitCrossing none =
+      findLimitCrossing(speeds, {1, 2, 3, 4}, 5.0, 0.1, [](double) { return 0.0; });
   EXPECT_EQ(none.status, LimitCrossing::Status::NotReached);
   EXPECT_EQ(none.speed, 3.0);
   EXPECT_STREQ(limitStatusName(none.status), "not_reached");
@@ -173,15 +190,26 @@ TEST(LimitCrossing, RejectsBadSweeps) {
   expectInputError([&] { findLimitCrossing({1, 2}, {1}, 1.0, 0.1, f); }, "1 values for 2 speeds");
   expectInputError([&] { findLimitCrossing({1, 1}, {1, 2}, 1.5, 0.1, f); }, "strictly increasing");
   expectInputError([&] { findLimitCrossing({1, 2}, {1, 2}, 1.5, 0.0, f); }, "tolerance");
-  expectInputError([&] { findLimitCrossing({1, 2}, {1, 2}, std::nan(""), 0.1, f); }, "limit is not finite");
+  expectInputError(
+      [&] {
+        findLimitCrossing({1, 2}, {1, 2}, std::nan(""), 0.1, f);
+      },
+      "limit is not finite");
   // A tolerance below one ulp of the speed stops at adjacent doubles instead of looping forever.
   const LimitCrossing fine = findLimitCrossing({1, 2}, {1, 2}, 1.5, 1e-300, f);
   EXPECT_EQ(fine.status, LimitCrossing::Status::Reached);
   EXPECT_EQ(std::nextafter(fine.lower, 2.0), fine.upper);
   EXPECT_NEAR(fine.speed, 1.5, 1e-15);
-  expectInputError([&] { findLimitCrossing({1, 2}, {1, std::nan("")}, 1.5, 0.1, f); }, "at speed 2");
-  expectInputError([&] { findLimitCrossing({1, 2}, {1, 2}, 1.5, 0.01, [](double) { return std::nan(""); }); },
-                   "at speed 1.5");
+  expectInputError(
+      [&] {
+        findLimitCrossing({1, 2}, {1, std::nan("")}, 1.5, 0.1, f);
+      },
+      "at speed 2");
+  expectInputError(
+      [&] {
+        findLimitCrossing({1, 2}, {1, 2}, 1.5, 0.01, [](double) { return std::nan(""); });
+      },
+      "at speed 1.5");
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ tvd::terrain::Terrain plane(double a, double b) {
   tvd::Vector y = tvd::Vector::LinSpaced(11, -2.5, 2.5);
   tvd::Matrix h(y.size(), x.size());
   for (int i = 0; i < y.size(); ++i)
-    for (int j = 0; j < x.size(); ++j) h(i, j) = a * x(j) + b * y(i);
+    for (int j = 0; j < x.size(); ++j)
+      h(i, j) = a * x(j) + b * y(i);
   return tvd::terrain::Terrain(x, y, h, "plane");
 }
 }  // namespace
@@ -87,7 +88,8 @@ TEST(RoadExcitation, VaryingSpeedSeriesSamplesEachRowAtItsStationAndSpeed) {
     }
   const double s0 = 3.0, speed = 8.0, dt = 0.01;
   tvd::Vector even(30);
-  for (int j = 0; j < 30; ++j) even(j) = s0 + speed * (5 + j) * dt;
+  for (int j = 0; j < 30; ++j)
+    even(j) = s0 + speed * (5 + j) * dt;
   // (Not bit for bit: the compiler may contract s0 + v k dt into an FMA in one place only.)
   EXPECT_LT((road.sampleSeries(plane(a, b), even, tvd::Vector::Constant(30, speed)) -
              road.sampleSeries(plane(a, b), s0, speed, dt, 5, 30))
@@ -154,7 +156,8 @@ TEST(RoadExcitation, HeldSeriesIsTheDenseSeriesBitForBit) {
           // One channel pair per station and distinct profile: on a laterally uniform track
           // (the hill, the separated waves) the four pad rows are one profile.
           std::set<int> profiles;
-          for (int r = 0; r < 4; ++r) profiles.insert(lines.profileOf(rows[r] + offset));
+          for (int r = 0; r < 4; ++r)
+            profiles.insert(lines.profileOf(rows[r] + offset));
           if (std::string(name) != "oop_waves") {
             EXPECT_EQ(profiles.size(), 1u) << name;
           } else {
@@ -163,7 +166,8 @@ TEST(RoadExcitation, HeldSeriesIsTheDenseSeriesBitForBit) {
           EXPECT_EQ(held.channels.size(), 10 * profiles.size()) << name;
           // Most samples are flat terrain: the events are a small part of the series.
           std::size_t events = 0;
-          for (const auto& ch : held.channels) events += ch.steps.size() * ch.columns.size();
+          for (const auto& ch : held.channels)
+            events += ch.steps.size() * ch.columns.size();
           if (std::string(name) == "long_hill") {
             EXPECT_LT(events, static_cast<std::size_t>(dense.size() / 4)) << kmh;
           }
@@ -177,7 +181,8 @@ TEST(RoadExcitation, HeldSeriesIsTheDenseSeriesBitForBit) {
   const tvd::Vector other_y = (tvd::Vector(1) << 0.3).finished();
   const tvd::terrain::TerrainLines lines(track, other_y);
   const tvd::Matrix dense = road.sampleSeries(lines, track.startStation(), 2.0, 1e-3, 0, 3000);
-  const tvd::Matrix back = road.sampleHeldSeries(lines, track.startStation(), 2.0, 1e-3, 0, 3000).dense();
+  const tvd::Matrix back =
+      road.sampleHeldSeries(lines, track.startStation(), 2.0, 1e-3, 0, 3000).dense();
   EXPECT_EQ(std::memcmp(back.data(), dense.data(), sizeof(double) * dense.size()), 0);
 }
 
@@ -223,5 +228,6 @@ TEST(RoadExcitation, HeldSeriesRejectsInconsistentChannels) {
   EXPECT_EQ(w(4, 0), 0.1);
   EXPECT_EQ(w(9, 1), 0.2);
   EXPECT_EQ(w(9, 2), 0.0);
-  for (long k = 0; k < 10; ++k) EXPECT_EQ((s.row(k) - w.row(k).transpose()).norm(), 0.0);
+  for (long k = 0; k < 10; ++k)
+    EXPECT_EQ((s.row(k) - w.row(k).transpose()).norm(), 0.0);
 }

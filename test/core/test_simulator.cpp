@@ -347,7 +347,8 @@ TEST(Simulator, QuasiStaticTruncationKeepsStaticsAndDisplacements) {
   const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(n);
   const Matrix w = bumpInputs(s.input_stations, 900, 1e-3, 8.0, 0.05, 1.0, 2.0);
 
-  SimulatorOptions exact_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  SimulatorOptions exact_options =
+      options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
   exact_options.generalized_force = f_g;
   SimulatorOptions cut_options = exact_options;
   cut_options.max_mode_frequency_hz = cut;
@@ -471,7 +472,8 @@ struct EngineRuns {
 EngineRuns runEngines(const SecondOrderSystem& s, const Vector& f_g, const Matrix& w) {
   SimulatorOptions dense_options =
       options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
-  SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  SimulatorOptions modal_options =
+      options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
   dense_options.generalized_force = modal_options.generalized_force = f_g;
   Simulator dense(s, dense_options), batch(s, modal_options), stepped(s, modal_options);
   const Vector z0 = staticEquilibrium(s, Vector::Zero(s.inputCount()), f_g);
@@ -495,7 +497,8 @@ TEST(Simulator, BlocksWithSomeInputsChangingAreExact) {
   const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(n);
   const int samples = 1800;
   Matrix w(samples, 2 * inputs);
-  for (int q = 0; q < 2 * inputs; ++q) w.col(q).setConstant(1e-3 * (1 + q % 7));  // held values
+  for (int q = 0; q < 2 * inputs; ++q)
+    w.col(q).setConstant(1e-3 * (1 + q % 7));  // held values
   for (int k = 0; k < samples; ++k) {
     // A quarter of the heights change, a different quarter after sample 700 and 1300.
     const int first = k < 700 ? 0 : k < 1300 ? 20 : 10;
@@ -532,7 +535,8 @@ TEST(Simulator, SparseInputChangesAreExact) {
 
   // Quasi-static modes above the 20th: compare with dense input changes by linearity.
   const ModalSystem modal(s);
-  SimulatorOptions cut_options = options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
+  SimulatorOptions cut_options =
+      options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
   cut_options.generalized_force = f_g;
   const Vector z0 = staticEquilibrium(s, Vector::Zero(inputs), f_g);
   cut_options.max_mode_frequency_hz = modal.naturalFrequencies()(20) / kTwoPi;
@@ -554,11 +558,12 @@ TEST(Simulator, SparseInputChangesAreExact) {
   const Matrix zero = Matrix::Zero(w.rows(), w.cols());
   for (bool step_by_step : {false, true}) {
     const Matrix y_sparse = run(w, step_by_step);
-    const Matrix y_linear = run(w + dither, step_by_step) - run(dither, step_by_step) + run(zero, step_by_step);
+    const Matrix y_linear =
+        run(w + dither, step_by_step) - run(dither, step_by_step) + run(zero, step_by_step);
     // Displacements and velocities (the rows the quasi-static terms enter).
-    EXPECT_LT(relativeBlockError(y_sparse.leftCols(2 * outputs), y_linear.leftCols(2 * outputs),
-                                 outputs),
-              1e-9)
+    EXPECT_LT(
+        relativeBlockError(y_sparse.leftCols(2 * outputs), y_linear.leftCols(2 * outputs), outputs),
+        1e-9)
         << (step_by_step ? "stepped" : "blocked");
   }
 }
@@ -574,7 +579,8 @@ TEST(Simulator, HeldSeriesEqualsItsDenseSeries) {
   HeldInputSeries held;
   held.samples = 2100;
   held.initial = Vector::Zero(2 * inputs);
-  for (int j = 60; j < 80; ++j) held.initial(j) = 1e-3 * (j % 5);  // in no channel: held
+  for (int j = 60; j < 80; ++j)
+    held.initial(j) = 1e-3 * (j % 5);  // in no channel: held
   // Channel c carries columns c, c + 10, c + 20 (heights) or 40 + c, 50 + c (rates).
   for (int c = 0; c < 10; ++c) {
     HeldInputSeries::Channel h, r;
@@ -582,7 +588,7 @@ TEST(Simulator, HeldSeriesEqualsItsDenseSeries) {
     r.columns = {40 + c, 50 + c};
     for (long k = 1; k < held.samples; ++k) {
       const bool dense_window = k > 300 + 50 * c && k < 900 + 50 * c;  // every sample
-      const bool sparse_event = k % (97 + c) == 0;                       // now and then
+      const bool sparse_event = k % (97 + c) == 0;                     // now and then
       if (dense_window || sparse_event) {
         h.steps.push_back(k);
         h.values.push_back(0.03 * std::sin(0.011 * k * (c + 1)));
@@ -599,7 +605,8 @@ TEST(Simulator, HeldSeriesEqualsItsDenseSeries) {
   for (const double cut_hz : {0.0, modal.naturalFrequencies()(15) / kTwoPi}) {
     for (const DiscretizationMethod method :
          {DiscretizationMethod::ModalDecoupled, DiscretizationMethod::AugmentedExponential}) {
-      if (method == DiscretizationMethod::AugmentedExponential && cut_hz > 0) continue;
+      if (method == DiscretizationMethod::AugmentedExponential && cut_hz > 0)
+        continue;
       SimulatorOptions o = options(method, InputHold::FirstOrder);
       o.generalized_force = f_g;
       o.max_mode_frequency_hz = cut_hz;

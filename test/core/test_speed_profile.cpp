@@ -5,8 +5,8 @@
 
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <string>
 
@@ -20,7 +20,9 @@ using tvd::dynamics::SpeedProfile;
 namespace {
 
 // Cruise at 10 m/s, brake at 2 m/s^2 to 2 m/s, then at 1 m/s^2 to a stop, then stand.
-SpeedProfile cruiseAndBrake() { return SpeedProfile({0.0, 2.0, 6.0, 8.0}, {10.0, 10.0, 2.0, 0.0}); }
+SpeedProfile cruiseAndBrake() {
+  return SpeedProfile({0.0, 2.0, 6.0, 8.0}, {10.0, 10.0, 2.0, 0.0});
+}
 
 std::string messageOf(const std::function<void()>& f) {
   try {
@@ -83,7 +85,8 @@ TEST(SpeedProfile, AccelerationIsTheExactDerivativeOfTheSpeed) {
   // dv/dt = a inside every segment.
   for (double t = 0.05; t < 9.0; t += 0.1) {
     const double h = 1e-4;
-    if (std::abs(t - 2.0) < 2 * h || std::abs(t - 6.0) < 2 * h || std::abs(t - 8.0) < 2 * h) continue;
+    if (std::abs(t - 2.0) < 2 * h || std::abs(t - 6.0) < 2 * h || std::abs(t - 8.0) < 2 * h)
+      continue;
     EXPECT_NEAR((p.speed(t + h) - p.speed(t - h)) / (2 * h), p.acceleration(t), 1e-9) << t;
   }
 }
@@ -101,18 +104,27 @@ TEST(SpeedProfile, LargestAccelerationAndWhere) {
 
 TEST(SpeedProfile, RejectsBadSamplesByIndex) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_NE(messageOf([] { SpeedProfile({0.0, 1.0}, {1.0}, "p"); }).find("2 times but 1 speeds"),
+  EXPECT_NE(messageOf([] {
+              SpeedProfile({0.0, 1.0}, {1.0}, "p");
+            }).find("2 times but 1 speeds"),
             std::string::npos);
   EXPECT_NE(messageOf([] { SpeedProfile({0.0}, {1.0}, "p"); }).find("at least two samples"),
             std::string::npos);
-  EXPECT_NE(messageOf([] { SpeedProfile({0.5, 1.0}, {1.0, 1.0}, "p"); }).find("sample 0: the first time must be 0"),
+  EXPECT_NE(messageOf([] {
+              SpeedProfile({0.5, 1.0}, {1.0, 1.0}, "p");
+            }).find("sample 0: the first time must be 0"),
             std::string::npos);
-  EXPECT_NE(messageOf([] { SpeedProfile({0.0, 1.0, 1.0}, {1.0, 1.0, 1.0}, "p"); })
-                .find("sample 2: time 1 s is not after"),
+  EXPECT_NE(messageOf([] {
+              SpeedProfile({0.0, 1.0, 1.0}, {1.0, 1.0, 1.0}, "p");
+            }).find("sample 2: time 1 s is not after"),
             std::string::npos);
-  EXPECT_NE(messageOf([] { SpeedProfile({0.0, 1.0}, {1.0, -2.0}, "p"); }).find("sample 1: speed -2 m/s is negative"),
+  EXPECT_NE(messageOf([] {
+              SpeedProfile({0.0, 1.0}, {1.0, -2.0}, "p");
+            }).find("sample 1: speed -2 m/s is negative"),
             std::string::npos);
-  EXPECT_NE(messageOf([&] { SpeedProfile({0.0, 1.0}, {nan, 1.0}, "p"); }).find("p: sample 0: speed is not a finite"),
+  EXPECT_NE(messageOf([&] {
+              SpeedProfile({0.0, 1.0}, {nan, 1.0}, "p");
+            }).find("p: sample 0: speed is not a finite"),
             std::string::npos);
 }
 
@@ -138,17 +150,22 @@ TEST(SpeedProfile, RejectsBadFilesNamingTheRow) {
     const ProfileFile f(text);
     return messageOf([&] { tvd::dynamics::loadSpeedProfile(f.path()); });
   };
-  EXPECT_NE(load("time_s,speed_mph\n0,1\n1,1\n").find("row 1: expected the header time_s,speed_kmh"),
-            std::string::npos);
+  EXPECT_NE(
+      load("time_s,speed_mph\n0,1\n1,1\n").find("row 1: expected the header time_s,speed_kmh"),
+      std::string::npos);
   EXPECT_NE(load("time_s,speed_kmh\n0,1\n1,-1\n").find("row 3, column 2: speed -1 is negative"),
             std::string::npos);
-  EXPECT_NE(load("time_s,speed_kmh\n0,1\n1\n").find("row 3: expected 2 columns"), std::string::npos);
+  EXPECT_NE(load("time_s,speed_kmh\n0,1\n1\n").find("row 3: expected 2 columns"),
+            std::string::npos);
   EXPECT_NE(load("time_s,speed_kmh\n0,1\nx,1\n").find("row 3, column 1: time 'x' is not a number"),
             std::string::npos);
-  EXPECT_NE(load("time_s,speed_kmh\n0,1\n2,1\n1,1\n").find("row 4, column 1: time 1 s is not after"),
-            std::string::npos);
+  EXPECT_NE(
+      load("time_s,speed_kmh\n0,1\n2,1\n1,1\n").find("row 4, column 1: time 1 s is not after"),
+      std::string::npos);
   EXPECT_NE(load("time_s,speed_kmh\n0,1\n").find("at least two samples"), std::string::npos);
   EXPECT_NE(load("").find("empty"), std::string::npos);
-  EXPECT_NE(messageOf([] { tvd::dynamics::loadSpeedProfile("/nonexistent/profile.csv"); }).find("file not found"),
+  EXPECT_NE(messageOf([] {
+              tvd::dynamics::loadSpeedProfile("/nonexistent/profile.csv");
+            }).find("file not found"),
             std::string::npos);
 }

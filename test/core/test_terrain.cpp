@@ -55,10 +55,12 @@ std::vector<double> crossings(const Terrain& t, double y, double level, double f
   const Vector& x = t.stations();
   const Vector h = t.profile(y);
   for (Eigen::Index i = 1; i < x.size(); ++i) {
-    if (x(i - 1) < from || x(i) > to) continue;
+    if (x(i - 1) < from || x(i) > to)
+      continue;
     const double a = h(i - 1) - level;
     const double b = h(i) - level;
-    if ((a < 0.0) != (b < 0.0)) out.push_back(x(i - 1) + (x(i) - x(i - 1)) * a / (a - b));
+    if ((a < 0.0) != (b < 0.0))
+      out.push_back(x(i - 1) + (x(i) - x(i - 1)) * a / (a - b));
   }
   return out;
 }
@@ -76,7 +78,8 @@ class TempDir {
   ~TempDir() { std::filesystem::remove_all(path_); }
   std::string file(const std::string& name, const std::string& content = "") const {
     const std::string path = (path_ / name).string();
-    if (!content.empty()) std::ofstream(path) << content;
+    if (!content.empty())
+      std::ofstream(path) << content;
     return path;
   }
 
@@ -217,7 +220,8 @@ TEST(Terrain, BilinearIsExactForBilinearSurfaces) {
   y << -1.0, 0.0, 2.0;
   Matrix h(3, 4);
   for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 4; ++i) h(j, i) = surface(x(i), y(j));
+    for (int i = 0; i < 4; ++i)
+      h(j, i) = surface(x(i), y(j));
   }
   const Terrain t(x, y, h);
   EXPECT_FALSE(t.isUniform());
@@ -409,7 +413,8 @@ TEST(Tracks, LongHillClosedForms) {
   const double s = kLongHillHeight / kLongHillRamp;  // ramp slope
   // Plateau: exactly the hill height at least W/2 away from the ramp corners, any y.
   for (double x = kLongHillStart + kLongHillRamp + w / 2; x <= 18.9 + 1e-9; x += 0.05) {
-    for (double y : {-2.5, 0.0, 1.3}) EXPECT_NEAR(t.height(x, y), kLongHillHeight, kRoundoff);
+    for (double y : {-2.5, 0.0, 1.3})
+      EXPECT_NEAR(t.height(x, y), kLongHillHeight, kRoundoff);
   }
   // Ramp midpoints and the linear stretch of the ramps.
   EXPECT_NEAR(t.height(10.5, 0.0), 0.5 * kLongHillHeight, kRoundoff);
@@ -443,7 +448,8 @@ TEST(Tracks, SeparatedWavesWavelengthAndDepth) {
   // Mid-level crossings every half wavelength: 2 per period.
   const std::vector<double> x = crossings(t, 0.0, -d / 2, kSeparatedWavesStart + 0.5, end - 0.5);
   ASSERT_EQ(x.size(), 2u * kSeparatedWavesPeriods - 2);
-  for (std::size_t i = 1; i < x.size(); ++i) EXPECT_NEAR(x[i] - x[i - 1], lambda / 2, 1e-3);
+  for (std::size_t i = 1; i < x.size(); ++i)
+    EXPECT_NEAR(x[i] - x[i - 1], lambda / 2, 1e-3);
   // Depth: peak-to-trough D sinc(W/λ) between interior crests (x0 + kλ) and troughs.
   for (int k = 1; k < kSeparatedWavesPeriods; ++k) {
     const double crest = kSeparatedWavesStart + k * lambda;
@@ -479,7 +485,8 @@ TEST(Tracks, OopWavesOppositePhaseAndInnerOuterDiffer) {
   const double end = kOopWavesStart + kOopWavesPeriods * lambda;
   const std::vector<double> x = crossings(t, 2.5, 0.0, kOopWavesStart + 0.3, end - 0.3);
   ASSERT_GE(x.size(), 2u * kOopWavesPeriods - 2);
-  for (std::size_t i = 1; i < x.size(); ++i) EXPECT_NEAR(x[i] - x[i - 1], lambda / 2, 1e-3);
+  for (std::size_t i = 1; i < x.size(); ++i)
+    EXPECT_NEAR(x[i] - x[i - 1], lambda / 2, 1e-3);
 }
 
 TEST(Tracks, OopWavesDefaultOffsetShiftsThePathFrame) {
@@ -579,10 +586,9 @@ TEST(Tracks, HalfRoundSmoothedKeepsTheAreaAndLowersTheCrest) {
     // feet inside the window (H <= W/2) their sampling error divided by W; otherwise the chords'
     // mean sag, dx² |h''| / 12, at most at the window's edge: h'' = -H² / (H² - u²)^1.5.
     const double a = 0.5 * w;
-    const double tolerance =
-        height <= a + 1e-12
-            ? 1.1 * footSamplingError(height, dx) / w
-            : dx * dx / 12.0 * height * height / std::pow(height * height - a * a, 1.5);
+    const double tolerance = height <= a + 1e-12 ? 1.1 * footSamplingError(height, dx) / w
+                                                 : dx * dx / 12.0 * height * height /
+                                                       std::pow(height * height - a * a, 1.5);
     const double crest = smoothedCrest(height, w);
     EXPECT_NEAR(t.height(kHalfRoundCentre, 0.0), crest, tolerance);
     EXPECT_LT(crest, height - 5.0 * tolerance);  // lower than H, measurably
@@ -701,7 +707,8 @@ TEST(Iso8608, PeriodogramFollowsClassPsd) {
   int count = 0;
   for (int k = 10; k <= 500; k += 7) {
     std::complex<double> x(0.0, 0.0);
-    for (Eigen::Index i = 0; i < m; ++i) x += h(i) * std::polar(1.0, -2.0 * kPi * k * i / m);
+    for (Eigen::Index i = 0; i < m; ++i)
+      x += h(i) * std::polar(1.0, -2.0 * kPi * k * i / m);
     const double amplitude = 2.0 * std::abs(x) / static_cast<double>(m);
     const double psd = amplitude * amplitude / 2.0 * length;  // a_k^2 / (2 Δn)
     const double lx = std::log(k / length / kIso8608ReferenceFrequency);
@@ -867,7 +874,8 @@ void addPlane(TerrainBuffer* buffer, double start, double spacing, int samples) 
   y << -1.0, 0.0, 1.0;
   Matrix h(3, samples);
   for (int j = 0; j < 3; ++j) {
-    for (int k = 0; k < samples; ++k) h(j, k) = 0.1 * (start + k * spacing) + 0.05 * y(j);
+    for (int k = 0; k < samples; ++k)
+      h(j, k) = 0.1 * (start + k * spacing) + 0.05 * y(j);
   }
   buffer->addPatch(start, spacing, y, h);
 }
@@ -916,14 +924,16 @@ TEST(TerrainBuffer, NewerPatchWinsAndFreesCoveredOnes) {
 
 TEST(TerrainBuffer, DropBehindFreesOldDataAndKeepsTheRest) {
   TerrainBuffer buffer;
-  for (int p = 0; p < 5; ++p) addPlane(&buffer, p * 1.0, 0.1, 10);  // 0 .. 4.9
+  for (int p = 0; p < 5; ++p)
+    addPlane(&buffer, p * 1.0, 0.1, 10);  // 0 .. 4.9
   EXPECT_NEAR(buffer.coveredUntil(), 4.9, kRoundoff);
   buffer.dropBehind(2.35);
   EXPECT_EQ(buffer.patchCount(), 3u);
   EXPECT_LE(buffer.coveredFrom(), 2.35);
   EXPECT_GT(buffer.coveredFrom(), 2.2);
   EXPECT_FALSE(buffer.covers(1.0));
-  for (double x = 2.35; x <= 4.9; x += 0.05) EXPECT_NEAR(buffer.height(x, 0.0), 0.1 * x, kRoundoff);
+  for (double x = 2.35; x <= 4.9; x += 0.05)
+    EXPECT_NEAR(buffer.height(x, 0.0), 0.1 * x, kRoundoff);
   // Dropping just past a patch end keeps the bridge into the next patch.
   buffer.dropBehind(2.95);
   EXPECT_NEAR(buffer.height(2.95, 0.0), 0.295, kRoundoff);
@@ -939,7 +949,7 @@ TEST(TerrainBuffer, GridForGivesTheAnsweringGridAndWhereItAnswers) {
   Vector y(1);
   y << 0.0;
   buffer.addPatch(1.0, 0.1, y, Matrix::Constant(1, 5, 7.0));  // newer, 1.0 .. 1.4, inside
-  addPlane(&buffer, 3.0, 0.1, 10);                              // 3.0 .. 3.9 (bridged gap)
+  addPlane(&buffer, 3.0, 0.1, 10);                            // 3.0 .. 3.9 (bridged gap)
   const std::uint64_t revision = buffer.revision();
   double from = 0.0, until = 0.0;
   const Terrain* grid = buffer.gridFor(0.5, &from, &until);
@@ -960,7 +970,8 @@ TEST(TerrainBuffer, GridForGivesTheAnsweringGridAndWhereItAnswers) {
   for (int k = 0; k < 500; ++k) {
     const double x = station(rng);
     const Terrain* g = buffer.gridFor(x, &from, &until);
-    if (g == nullptr) continue;
+    if (g == nullptr)
+      continue;
     ASSERT_LE(from, x);
     ASSERT_GE(until, x);
     for (double t : {0.0, 0.37, 1.0}) {
@@ -1025,7 +1036,8 @@ TEST(TerrainLines, EqualTerrainSampling) {
       const double xk = k < 10 ? t->stations()(k % t->stations().size()) : x(rng);
       for (double y : {0.37, -0.61, ys(0), 0.9 /* not a line: falls back */}) {
         const double scale = 1.0 + std::abs(t->height(xk, y));
-        EXPECT_NEAR(lines.height(xk, y), t->height(xk, y), 1e-12 * scale) << t->name() << " x " << xk;
+        EXPECT_NEAR(lines.height(xk, y), t->height(xk, y), 1e-12 * scale)
+            << t->name() << " x " << xk;
         EXPECT_NEAR(lines.slope(xk, y), t->slope(xk, y), 1e-9 * (1.0 + std::abs(t->slope(xk, y))))
             << t->name() << " x " << xk;
         // The combined lookup is the same arithmetic as the two separate ones.

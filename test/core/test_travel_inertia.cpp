@@ -43,7 +43,7 @@ namespace tracked_vehicle_dynamics {
 namespace {
 
 const std::string kVehicle = std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
-constexpr double kGravity = 9.80665;  // [m/s^2], the models' gravity
+constexpr double kGravity = 9.80665;          // [m/s^2], the models' gravity
 constexpr double kBraking = -0.3 * kGravity;  // 0.3 g [m/s^2]
 // Ground reactions against the mass: both sides are sums of the same masses, the reactions
 // rounded through one sparse solve.
@@ -60,7 +60,7 @@ struct Full {
   vehicle::VehicleDescription description;
   vehicle::VehicleModel model;
   fem::System system;
-  double mass = 0.0;  // [kg], statics.weight / g
+  double mass = 0.0;                                            // [kg], statics.weight / g
   std::vector<std::vector<std::pair<DofIndex, double>>> terms;  // vehicleOutputs()
   std::vector<std::string> names;
 };
@@ -92,14 +92,16 @@ const reduction::ReducedModel& reduced(vehicle::Variant variant) {
 
 std::size_t indexOf(const std::vector<std::string>& names, const std::string& name) {
   const auto it = std::find(names.begin(), names.end(), name);
-  if (it == names.end()) throw std::logic_error("no output " + name);
+  if (it == names.end())
+    throw std::logic_error("no output " + name);
   return static_cast<std::size_t>(it - names.begin());
 }
 
 // An output of the full model from its active-DOF displacement.
 double fullOutput(const Full& f, const Vector& x, const std::string& name) {
   double y = 0.0;
-  for (const auto& [active, coefficient] : f.terms[indexOf(f.names, name)]) y += coefficient * x(active);
+  for (const auto& [active, coefficient] : f.terms[indexOf(f.names, name)])
+    y += coefficient * x(active);
   return y;
 }
 
@@ -131,7 +133,8 @@ TEST(TravelInertia, AugmentedSystemAndInputsHaveTheDocumentedLayout) {
   EXPECT_EQ(a.mass, s.mass);
   EXPECT_EQ(a.stiffness, s.stiffness);
   // Statics: K q = K_u u + f_a a.
-  const Vector q = dynamics::staticEquilibrium(a, (Vector(2) << 0.2, -2.0).finished(), Vector::Zero(2));
+  const Vector q =
+      dynamics::staticEquilibrium(a, (Vector(2) << 0.2, -2.0).finished(), Vector::Zero(2));
   EXPECT_LT((q.head(2) - (s.input_stiffness.col(0) * 0.2 + f_a * -2.0) / 4.0).norm(), 1e-15);
 
   // Rows [u, u'] -> [u, a, u', 0], one row or a block.
@@ -158,7 +161,8 @@ TEST_P(TravelInertiaOfVehicle, GroundReactionsAlongXCarryTheMassTimesTheAccelera
   // ground, so the ground's force on the structure along x is -(K e)^T x.
   Vector e = Vector::Zero(sys.size());
   for (DofIndex j = 0; j < sys.size(); ++j)
-    if (sys.dofs.dofOf(j).direction == 0) e(j) = 1.0;
+    if (sys.dofs.dofOf(j).direction == 0)
+      e(j) = 1.0;
   const Vector ke = sys.stiffness * e;
   // The load itself: -m per unit a.
   EXPECT_NEAR(e.dot(sys.travel_load), -f.mass, kBalanceTolerance * f.mass);
@@ -171,7 +175,8 @@ TEST_P(TravelInertiaOfVehicle, GroundReactionsAlongXCarryTheMassTimesTheAccelera
   // No vertical or lateral resultant: gravity's consistent load along z carries the same mass.
   Vector ez = Vector::Zero(sys.size());
   for (DofIndex j = 0; j < sys.size(); ++j)
-    if (sys.dofs.dofOf(j).direction == 2) ez(j) = 1.0;
+    if (sys.dofs.dofOf(j).direction == 2)
+      ez(j) = 1.0;
   EXPECT_NEAR(ez.dot(sys.gravity_load), -f.mass * kGravity, kBalanceTolerance * f.mass * kGravity);
   EXPECT_LT(std::abs(ez.dot(sys.travel_load)), 1e-12 * f.mass);
 }
@@ -203,7 +208,8 @@ TEST_P(TravelInertiaOfVehicle, ReducedStaticResponseMatchesTheFullModel) {
     std::cout << vehicle::variantName(GetParam()) << " " << name << " per unit a: full " << full_y
               << ", reduced " << reduced_y << " (relative difference "
               << std::abs(reduced_y - full_y) / std::abs(full_y) << ")\n";
-    if (name == "hull uz") continue;  // a by-product of the pitch; not asserted
+    if (name == "hull uz")
+      continue;  // a by-product of the pitch; not asserted
     EXPECT_NEAR(reduced_y, full_y, kReductionTolerance * std::abs(full_y)) << name;
   }
   // Reduced like gravity: the total x load is still -m (the masters carry the rigid translation).
@@ -285,7 +291,8 @@ TEST_P(TravelInertiaOfVehicle, ConstantBrakingSettlesToTheStaticPitch) {
   Matrix w = Matrix::Zero(steps + 1, 2 * (n_u + 1));
   w.col(n_u).setConstant(kBraking);
   w(0, n_u) = 0.0;
-  sim.reset(dynamics::staticEquilibrium(s, Vector::Zero(n_u + 1), m.gravity_load), w.row(0).transpose());
+  sim.reset(dynamics::staticEquilibrium(s, Vector::Zero(n_u + 1), m.gravity_load),
+            w.row(0).transpose());
   const Matrix y = sim.simulate(w);
   const auto pitch = static_cast<Eigen::Index>(indexOf(sim.outputNames(), "hull ry/disp"));
   const auto surge_acc = static_cast<Eigen::Index>(indexOf(sim.outputNames(), "hull ux/acc"));
@@ -299,8 +306,10 @@ TEST_P(TravelInertiaOfVehicle, ConstantBrakingSettlesToTheStaticPitch) {
   std::cout << vehicle::variantName(GetParam()) << " reduced model at " << kBraking
             << " m/s^2: hull pitch " << (y(steps, pitch) - y(0, pitch)) * 180.0 / M_PI << " deg ("
             << (y(steps, pitch) - y(0, pitch)) * 1e3 << " mrad), surge "
-            << kBraking * reducedStaticPerUnitA(m)(static_cast<Eigen::Index>(
-                              indexOf(m.system.output_names, "hull ux"))) * 1e3
+            << kBraking *
+                   reducedStaticPerUnitA(m)(
+                       static_cast<Eigen::Index>(indexOf(m.system.output_names, "hull ux"))) *
+                   1e3
             << " mm\n";
 }
 

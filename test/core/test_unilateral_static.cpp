@@ -42,11 +42,13 @@ fem::Model barOnSupports(int n, double eccentricity) {
   bar.master = middle;
   for (int i = 0; i < n; ++i) {
     m.addNode(i + 1, tvd::Vector3(i, 0, 0));
-    if (i + 1 != middle) bar.slaves.push_back(i + 1);
+    if (i + 1 != middle)
+      bar.slaves.push_back(i + 1);
     fem::Spring s;
     s.n1 = i + 1;
     s.stiffness(2) = kK;
-    if (i + 1 == middle) s.stiffness << kK, kK, kK, kK, 0.0, kK;
+    if (i + 1 == middle)
+      s.stiffness << kK, kK, kK, kK, 0.0, kK;
     s.name = "support_" + std::to_string(i);
     m.springs.push_back(s);
   }
@@ -63,7 +65,8 @@ fem::Model barOnSupports(int n, double eccentricity) {
 /// Every support of barOnSupports(n, ...) unilateral, pushing up.
 std::vector<fem::UnilateralSpring> supports(std::size_t n = 3) {
   std::vector<fem::UnilateralSpring> all;
-  for (std::size_t i = 0; i < n; ++i) all.push_back({i, 2, 1.0});
+  for (std::size_t i = 0; i < n; ++i)
+    all.push_back({i, 2, 1.0});
   return all;
 }
 
@@ -138,9 +141,11 @@ TEST(UnilateralStatic, NormalFollowsTheSpringFrameAndTheSign) {
   // pull it down, all in tension under gravity, and the released bar floats.
   const double f = kMass * kGravity;
   fem::Model model = barOnSupports(3, 0.8);
-  for (fem::Spring& s : model.springs) s.frame = tvd::Vector3(1.0, -1.0, -1.0).asDiagonal();
+  for (fem::Spring& s : model.springs)
+    s.frame = tvd::Vector3(1.0, -1.0, -1.0).asDiagonal();
   std::vector<fem::UnilateralSpring> down = supports();
-  for (fem::UnilateralSpring& c : down) c.sign = -1.0;
+  for (fem::UnilateralSpring& c : down)
+    c.sign = -1.0;
   const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, down);
   ASSERT_EQ(r.released, (std::vector<bool>{true, false, false}));
   EXPECT_NEAR(r.normal_force[1], 0.2 * f, 1e-9 * f);
@@ -176,7 +181,8 @@ TEST(UnilateralStatic, BothUpdateRulesFindTheOneSolution) {
     const fem::UnilateralStaticResult r = fem::solveUnilateralStatic(model, all, 100, update);
     EXPECT_EQ(r.released, (std::vector<bool>{true, true, true, true, false, false, false}));
     const double expected[7] = {0, 0, 0, 0, 2.0 / 15.0, 1.0 / 3.0, 8.0 / 15.0};
-    for (int i = 0; i < 7; ++i) EXPECT_NEAR(r.normal_force[i], expected[i] * f, 1e-9 * f) << i;
+    for (int i = 0; i < 7; ++i)
+      EXPECT_NEAR(r.normal_force[i], expected[i] * f, 1e-9 * f) << i;
     EXPECT_NEAR(verticalDisplacement(r.system, r.statics, 4), f / (15.0 * kK), 1e-9 * f / kK);
   }
   // Released all at once: {0, 1}, then {2}, then {3}: four solves; one at a time, five.
@@ -230,7 +236,8 @@ TEST(ContactStatics, TrackedVehicleRestsOnPadsAndWheelsThatPush) {
   int lifted = 0;
   for (std::size_t i = 0; i < s.pad_loads.size(); ++i) {
     EXPECT_GE(s.pad_loads[i], -tolerance) << i;
-    if (!c.pad_lifted[i]) continue;
+    if (!c.pad_lifted[i])
+      continue;
     ++lifted;
     EXPECT_EQ(s.pad_loads[i], 0.0) << i;
     EXPECT_GE(u(c.system.dofs.physical(vehicle.layout.road_inputs[i].node, 2)), -1e-12) << i;
@@ -265,7 +272,8 @@ TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
   EXPECT_TRUE(vehicle.layout.chain_wheel_contacts.empty());
   EXPECT_TRUE(c.chain_wheel_released.empty());
   EXPECT_TRUE(c.summary.chain_wheel_loads.empty());
-  const veh::StaticSummary bonded = veh::computeStaticSummary(vehicle, fem::assemble(vehicle.model));
+  const veh::StaticSummary bonded =
+      veh::computeStaticSummary(vehicle, fem::assemble(vehicle.model));
   EXPECT_NEAR(c.summary.hull_sag, bonded.hull_sag, 1e-12);
   for (std::size_t i = 0; i < bonded.wheel_loads.size(); ++i)
     EXPECT_NEAR(c.summary.wheel_loads[i], bonded.wheel_loads[i], 1e-9 * bonded.weight);
@@ -299,7 +307,9 @@ TEST(ContactStatics, LinksPushTheirSprocketsIdlersAndRollersOrLeaveThem) {
     const tvd::Vector u = c.system.dofs.transformation() *
                           fem::solveStatic(c.system, c.system.gravity_load).displacement;
     const auto index = vehicle.model.nodeIndex();
-    const auto position = [&](tvd::NodeId id) { return vehicle.model.nodes[index.at(id)].position; };
+    const auto position = [&](tvd::NodeId id) {
+      return vehicle.model.nodes[index.at(id)].position;
+    };
     const auto displacement = [&](tvd::NodeId id) -> tvd::Vector3 {
       return u.segment<3>(c.system.dofs.physical(id, 0));
     };

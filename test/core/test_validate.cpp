@@ -128,7 +128,8 @@ TEST(Validate, RejectsUnknownNodes) {
       {"set", [](Model& m) { m.dof_sets["outputs"][1].node = 11; }, "sets.outputs[1]",
        "node 11 does not exist"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, RejectsDuplicates) {
@@ -144,7 +145,8 @@ TEST(Validate, RejectsDuplicates) {
       {"unnamed material", [](Model& m) { m.materials[0].name.clear(); }, "materials[0]",
        "no name"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, RejectsNonFiniteValues) {
@@ -174,7 +176,8 @@ TEST(Validate, RejectsNonFiniteValues) {
        "non-finite inertia"},
       {"offset", [](Model& m) { m.masses[0].offset.x() = kNaN; }, "masses[0]", "non-finite offset"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, RejectsNonPhysicalProperties) {
@@ -207,7 +210,8 @@ TEST(Validate, RejectsNonPhysicalProperties) {
        [](Model& m) { m.masses[0].inertia(0, 1) = m.masses[0].inertia(1, 0) = 0.5; }, "masses[0]",
        "not positive semi-definite"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, RejectsBadGeometry) {
@@ -232,7 +236,8 @@ TEST(Validate, RejectsBadGeometry) {
       {"frame left-handed", [](Model& m) { m.springs[1].frame.col(2) *= -1.0; }, "springs[1]",
        "frame is left-handed"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, RejectsBadConstraints) {
@@ -280,7 +285,8 @@ TEST(Validate, RejectsBadConstraints) {
       {"fixed nothing", [](Model& m) { m.fixed[0].dofs.fill(false); }, "fixed[0]",
        "no DOFs selected"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, RejectsBadDofSets) {
@@ -300,7 +306,8 @@ TEST(Validate, RejectsBadDofSets) {
        },
        "sets", "empty name"},
   };
-  for (const Case& c : cases) expectInvalid(c);
+  for (const Case& c : cases)
+    expectInvalid(c);
 }
 
 TEST(Validate, AcceptsLegitimateEdgeCases) {

@@ -266,7 +266,9 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
     d.track_assembly.count = count;
     d.track_assembly.chain_length = count * d.track_assembly.pitch;
     const std::string e = buildError(d);
-    EXPECT_NE(e.find("track_assembly.count: a chain of " + std::to_string(count)), std::string::npos) << e;
+    EXPECT_NE(e.find("track_assembly.count: a chain of " + std::to_string(count)),
+              std::string::npos)
+        << e;
     EXPECT_NE(e.find("is too long"), std::string::npos) << e;
     EXPECT_NE(e.find("hull's front end (x = 3.8 m"), std::string::npos) << e;
   }
@@ -276,7 +278,8 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   d.return_rollers.radius = 0.5;
   d.return_rollers.mass = 30;
   std::string e = buildError(d);
-  EXPECT_NE(e.find("return_rollers.x: the roller at x = -1.5 m (radius 0.5 m"), std::string::npos) << e;
+  EXPECT_NE(e.find("return_rollers.x: the roller at x = -1.5 m (radius 0.5 m"), std::string::npos)
+      << e;
   EXPECT_NE(e.find("reaches down to the ground run"), std::string::npos) << e;
   d.return_rollers.x = {-1.56};  // over road wheel 6 (x = -1.56 m), hanging into it
   d.return_rollers.radius = 0.2;
@@ -320,7 +323,7 @@ TEST(VehicleDescription, FrontDriveSprocketMirrorsTheChain) {
   const double ground = rear.track_assembly.ground_length;
   for (double s : {0.3, 2.0, 5.5, 7.7, 10.1, 13.9}) {
     const veh::Vector2 p = a.at(ground + s).position;  // from the front end of the ground run
-    const veh::Vector2 q = b.at(-s).position;         // back from the rear end
+    const veh::Vector2 q = b.at(-s).position;          // back from the rear end
     EXPECT_NEAR(q.x(), -p.x(), 1e-8) << s;
     EXPECT_NEAR(q.y(), p.y(), 1e-8) << s;
   }
@@ -334,7 +337,8 @@ TEST(VehicleDescription, FrontDriveSprocketMirrorsTheChain) {
     FAIL() << "expected InputError";
   } catch (const tvd::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("roller at x = 3.5 m lies ahead of the sprocket"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   front.return_rollers.x = {-3.5};
   try {
@@ -365,7 +369,9 @@ TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {
   w = veh::descriptionWarnings(d);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_NE(w[0].find("hull.cog_x: the centre of gravity (x = -2.5 m) lies behind the rear axle "
-                      "(x = -2.34 m)"), std::string::npos) << w[0];
+                      "(x = -2.34 m)"),
+            std::string::npos)
+      << w[0];
   // Mass in tonnes: below the 14 road wheels' 16,800 kg, and radii of gyration of tens of metres.
   d = veh::VehicleDescription{};
   d.hull.mass = 30.3;
@@ -427,7 +433,8 @@ TEST(VehicleOptions, ReturnRollersAndArmDampers) {
   // More rollers than node numbers: refused, not two nodes with one id.
   veh::VehicleDescription many;
   many.return_rollers.radius = 0.01;
-  for (int i = 0; i < 51; ++i) many.return_rollers.x.push_back(-2.0 + 0.05 * i);
+  for (int i = 0; i < 51; ++i)
+    many.return_rollers.x.push_back(-2.0 + 0.05 * i);
   try {
     veh::validateDescription(many);
     FAIL() << "expected InputError";
@@ -544,9 +551,9 @@ TEST_F(VehicleModels, NodePartsNameWhatANodeBelongsTo) {
     EXPECT_EQ(veh::nodePart(l, l.wheels[2].arm), "road_wheel_left_3 arm");
     EXPECT_EQ(veh::nodePart(l, l.wheels[7].centre), "road_wheel_right_1 centre");
     const veh::AssemblyRecord& a = l.assemblies.back();
-    EXPECT_EQ(veh::nodePart(l, a.nodes.soles[4]),
-              std::string("track assembly ") + (a.side == 0 ? "left " : "right ") +
-                  std::to_string(a.index + 1) + " sole");
+    EXPECT_EQ(veh::nodePart(l, a.nodes.soles[4]), std::string("track assembly ") +
+                                                      (a.side == 0 ? "left " : "right ") +
+                                                      std::to_string(a.index + 1) + " sole");
     const std::string pin = veh::nodePart(l, a.nodes.front_pin[1]);
     EXPECT_EQ(pin.substr(pin.size() - 4), " pin") << pin;
   }

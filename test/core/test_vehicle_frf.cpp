@@ -35,7 +35,7 @@ namespace {
 
 const std::string kDescriptionFile =
     std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
-constexpr double kBandHz = 30.0;       // the CMS band of the paper
+constexpr double kBandHz = 30.0;         // the CMS band of the paper
 constexpr double kFrfToleranceDb = 1.0;  // issue 4: reduced vs full within 1 dB
 constexpr double kTimeTolerance = 0.02;  // issue 5: within 2 % of the peak
 // A frequency is "near an anti-resonance" when the full FRF is 12 dB below its largest value
@@ -56,8 +56,8 @@ const Variant& models(vehicle::Variant variant) {
   auto& slot = cache[variant];
   if (!slot) {
     const vehicle::VehicleDescription d = vehicle::loadVehicleDescription(kDescriptionFile);
-    slot = std::make_unique<Variant>(
-        Variant{reduction::reduceVehicle(d, variant, {}), reduction::buildVehicleReference(d, variant)});
+    slot = std::make_unique<Variant>(Variant{reduction::reduceVehicle(d, variant, {}),
+                                             reduction::buildVehicleReference(d, variant)});
   }
   return *slot;
 }
@@ -89,7 +89,8 @@ std::pair<double, double> worstDb(const Vector& hz, const Vector& full, const Ve
     ++in_band;
     const Eigen::Index a = std::max<Eigen::Index>(0, i - window);
     const Eigen::Index b = std::min<Eigen::Index>(hz.size() - 1, i + window);
-    if (full(i) < kAntiResonanceRatio * full.segment(a, b - a + 1).maxCoeff()) continue;
+    if (full(i) < kAntiResonanceRatio * full.segment(a, b - a + 1).maxCoeff())
+      continue;
     ++compared;
     worst = std::max(worst, std::abs(20.0 * std::log10(reduced(i) / full(i))));
   }
@@ -106,9 +107,8 @@ TEST(FullReference, StaticsEqualTheReducedModel) {
   for (double speed : {0.0, 30.0}) {
     const ComplexMatrix full =
         v.full.frf(zero, delayAt(v.full.modal, speed), OutputQuantity::Displacement);
-    const ComplexMatrix reduced = dynamics::frfModal(v.reduced.system, zero,
-                                                     delayAt(v.reduced.system, speed),
-                                                     OutputQuantity::Displacement);
+    const ComplexMatrix reduced = dynamics::frfModal(
+        v.reduced.system, zero, delayAt(v.reduced.system, speed), OutputQuantity::Displacement);
     ASSERT_EQ(full.cols(), reduced.cols());
     // Lifting every input by 1 m lifts the whole vehicle by 1 m.
     EXPECT_NEAR(std::abs(full(0, column(v.full.modal.output_names, "hull uz"))), 1.0, 1e-6);
@@ -322,21 +322,25 @@ TEST(VehicleFrf, UntrackedWheelsIgnoreSpeedTrackedWheelsStayBelowSynchronous) {
     const dynamics::ModalSystem modal(s);
     const DofIndex k = column(s.output_names, output);
     const auto peak = [&](double v) {
-      const Matrix m = dynamics::frfModal(modal, hz, delayAt(s, v), OutputQuantity::Acceleration).cwiseAbs();
+      const Matrix m =
+          dynamics::frfModal(modal, hz, delayAt(s, v), OutputQuantity::Acceleration).cwiseAbs();
       return m.col(k).maxCoeff();
     };
     return peak(speed_kmh) / peak(0.0);
   };
   for (const char* wheel : {"road_wheel_left_1 uz", "road_wheel_left_7 uz"})
     for (double speed : {10.0, 30.0, 50.0}) {
-      const double untracked = peakRatio(models(vehicle::Variant::Untracked).reduced.system, wheel, speed);
-      const double tracked = peakRatio(models(vehicle::Variant::Tracked).reduced.system, wheel, speed);
+      const double untracked =
+          peakRatio(models(vehicle::Variant::Untracked).reduced.system, wheel, speed);
+      const double tracked =
+          peakRatio(models(vehicle::Variant::Tracked).reduced.system, wheel, speed);
       EXPECT_NEAR(untracked, 1.0, 0.1) << wheel << " at " << speed << " km/h";
       EXPECT_LT(tracked, 0.7) << wheel << " at " << speed << " km/h";
     }
   vehicle::VehicleDescription sole = vehicle::loadVehicleDescription(kDescriptionFile);
   sole.ties.road_input_station = vehicle::RoadInputStation::Sole;
-  const reduction::ReducedModel filtered = reduction::reduceVehicle(sole, vehicle::Variant::Untracked, {});
+  const reduction::ReducedModel filtered =
+      reduction::reduceVehicle(sole, vehicle::Variant::Untracked, {});
   EXPECT_LT(peakRatio(filtered.system, "road_wheel_left_1 uz", 10.0), 0.5);
 }
 
@@ -362,16 +366,19 @@ TEST(VehicleTimeResponse, ReducedMatchesFullOnLongHill) {
       const dynamics::RoadExcitation road(s.input_stations, s.input_lateral);
       const terrain::TerrainLines lines(track, road.inputY());
       const Matrix w = road.sampleSeries(lines, track.startStation(), speed, dt, 0, steps + 1);
-      sim.reset(dynamics::staticEquilibrium(s, w.row(0).head(road.inputCount()).transpose(), gravity),
-                w.row(0).transpose());
+      sim.reset(
+          dynamics::staticEquilibrium(s, w.row(0).head(road.inputCount()).transpose(), gravity),
+          w.row(0).transpose());
       Matrix y = sim.simulate(w).leftCols(s.outputCount());
-      if (full) full->addResidual(w, OutputQuantity::Displacement, y);
+      if (full)
+        full->addResidual(w, OutputQuantity::Displacement, y);
       return Matrix(y.rowwise() - y.row(0));
     };
     const Matrix full = run(v.full.modal, v.full.modal_gravity, &v.full, 0.0);
     const Matrix reduced = run(v.reduced.system, v.reduced.gravity_load, nullptr, 0.5 / dt);
     for (const std::string& name : v.reduced.system.output_names) {
-      if (name != "hull uz" && name != "hull ry" && name.rfind("road_wheel", 0) != 0) continue;
+      if (name != "hull uz" && name != "hull ry" && name.rfind("road_wheel", 0) != 0)
+        continue;
       const DofIndex jf = column(v.full.modal.output_names, name);
       const DofIndex jr = column(v.reduced.system.output_names, name);
       const double peak = full.col(jf).cwiseAbs().maxCoeff();

@@ -233,9 +233,9 @@ NodeRun runNamed(const std::string& name, const std::string& arguments) {
   const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
   const std::string cache_dir = test::requiredParam<std::string>(private_nh, "cache_dir");
   const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
-  return runNode("__name:=" + name + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir + " " +
-                     arguments,
-                 timeout);
+  return runNode(
+      "__name:=" + name + " _vehicle:=" + vehicle + " _cache_dir:=" + cache_dir + " " + arguments,
+      timeout);
 }
 
 // ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.
@@ -289,11 +289,17 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
     std::string message;
   };
   const std::vector<Case> cases = {
-      {"imu_unknown", {}, {"nowhere"},
+      {"imu_unknown",
+       {},
+       {"nowhere"},
        "imu_points: unknown point 'nowhere' (the description has: crew_seat, sensor_mount)"},
-      {"imu_unpublished", {"crew_seat"}, {"sensor_mount"},
+      {"imu_unpublished",
+       {"crew_seat"},
+       {"sensor_mount"},
        "imu_points: point 'sensor_mount' is not published as a frame; add it to ~points"},
-      {"imu_twice", {}, {"crew_seat", "crew_seat"},
+      {"imu_twice",
+       {},
+       {"crew_seat", "crew_seat"},
        "imu_points: point 'crew_seat' is listed twice"},
   };
   for (const Case& c : cases) {
@@ -309,8 +315,7 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
   // Not a list (a scalar on the command line).
   const NodeRun run = runNamed("imu_scalar", "_imu_points:=sensor_mount");
   EXPECT_EQ(run.exit_status, 1) << run.output;
-  EXPECT_NE(run.output.find("/imu_scalar/imu_points: must be a list of strings"),
-            std::string::npos)
+  EXPECT_NE(run.output.find("/imu_scalar/imu_points: must be a list of strings"), std::string::npos)
       << run.output;
 }
 
@@ -580,7 +585,8 @@ TEST_F(NodeReducedModel, GivenFileIsRunAndNamed) {
   EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("from ~reduced_model " + file), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("band_hz 40; "), std::string::npos) << run.output;
-  EXPECT_NE(run.output.find("differ from the reduction of " + file + " ('variant tracked; rule "
+  EXPECT_NE(run.output.find("differ from the reduction of " + file +
+                            " ('variant tracked; rule "
                             "mac; global_modes 40; band_hz 30; "),
             std::string::npos)
       << run.output;
@@ -613,10 +619,10 @@ TEST_F(NodeReducedModel, BadFileStopsTheNodeNamingIt) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
-    const NodeRun run = runNode("__name:=" + c.name + " _vehicle:=" + c.vehicle + " _variant:=" +
-                                    c.variant + " _cache_dir:=" + cache_dir +
-                                    " _reduced_model:=" + c.file,
-                                timeout);
+    const NodeRun run =
+        runNode("__name:=" + c.name + " _vehicle:=" + c.vehicle + " _variant:=" + c.variant +
+                    " _cache_dir:=" + cache_dir + " _reduced_model:=" + c.file,
+                timeout);
     EXPECT_EQ(run.exit_status, 1) << run.output;
     EXPECT_NE(run.output.find("FATAL"), std::string::npos) << run.output;
     EXPECT_NE(run.output.find("/" + c.name + "/reduced_model: "), std::string::npos) << run.output;

@@ -152,12 +152,11 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
 
   // Simulated time runs once the node has loaded its model and published its first sample.
   ros::Time t(200.0);
-  ASSERT_TRUE(test::tickClockUntil(clock_pub_, &t, [&] { return messages_ > 0; }, 45.0))
+  ASSERT_TRUE(test::tickClockUntil(
+      clock_pub_, &t, [&] { return messages_ > 0; }, 45.0))
       << "the node published nothing";
   ASSERT_TRUE(test::spinUntil(
-      [&] {
-        return terrain_pub_.getNumSubscribers() > 0 && speed_pub_.getNumSubscribers() > 0;
-      },
+      [&] { return terrain_pub_.getNumSubscribers() > 0 && speed_pub_.getNumSubscribers() > 0; },
       5.0));
   t += ros::Duration(0.001);
   setClock(t);
@@ -191,8 +190,9 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
     ASSERT_TRUE(waitForSample(start_));
     test::spinFor(0.1);
     play(&inputs_first);
-    expectSameRun(first, inputs_first, tolerance,
-                  pause > 0.0 ? "inputs handled before the jump back" : "inputs before the jump back");
+    expectSameRun(
+        first, inputs_first, tolerance,
+        pause > 0.0 ? "inputs handled before the jump back" : "inputs before the jump back");
   }
 
   // Fourth loop: the jump back first, then the inputs.

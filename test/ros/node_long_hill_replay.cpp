@@ -46,7 +46,7 @@ struct NodeSample {
   Vector3 body_rate = Vector3::Zero();       // imu/<point> angular_velocity [rad/s]
   Eigen::Quaterniond orientation;            // imu/<point> orientation
   bool has_odom = false;
-  Vector6 odom_twist = Vector6::Zero();      // odom twist {linear; angular}
+  Vector6 odom_twist = Vector6::Zero();  // odom twist {linear; angular}
 };
 
 /// The offline run: hull heave, pitch and wheel displacements per step k (station k v h).
@@ -56,8 +56,8 @@ struct Reference {
   std::vector<Vector3> specific_force;      // [k] at the IMU point, in its axes [m/s^2]
   std::vector<Vector3> body_rate;           // [k] [rad/s]
   std::vector<Vector6> odom_twist;          // [k] base_link's twist in its axes
-  double twist_peak = 0.0;  // max |odom linear velocity - travel speed| [m/s]
-  double rate_peak = 0.0;   // max |body rate| [rad/s]
+  double twist_peak = 0.0;                  // max |odom linear velocity - travel speed| [m/s]
+  double rate_peak = 0.0;                   // max |body rate| [rad/s]
   double heave_peak = 0.0, pitch_peak = 0.0, wheel_peak = 0.0;
   double vibration_peak = 0.0;  // max |f - f at rest| [m/s^2]
   // Ground contact (ground_contact.h): per step k, whether a contact that pressed at rest pulls.
@@ -82,8 +82,7 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
   // As the node by default (~max_mode_frequency = ~rate / 2): modes above respond quasi-statically.
   if (method == dynamics::DiscretizationMethod::ModalDecoupled)
     options.max_mode_frequency_hz = 0.5 * rate;
-  options.quantities = {dynamics::OutputQuantity::Displacement,
-                        dynamics::OutputQuantity::Velocity,
+  options.quantities = {dynamics::OutputQuantity::Displacement, dynamics::OutputQuantity::Velocity,
                         dynamics::OutputQuantity::Acceleration};
   dynamics::Simulator sim(sys, options);
   const Eigen::Index n = sys.inputCount();
@@ -138,8 +137,8 @@ Reference offlineRun(const reduction::ReducedModel& model, const VehicleGeometry
     const Vector3 a = rigidPointAcceleration(geometry.cog, u, du, ddu, imu_position) + model_a -
                       (ddu.head<3>() + ddu.tail<3>().cross(r));
     ref.specific_force.push_back(specificForce(hullPose(0.0, geometry.cog, u).rotation, a));
-    ref.vibration_peak = std::max(
-        ref.vibration_peak, (ref.specific_force.back() - ref.specific_force.front()).norm());
+    ref.vibration_peak = std::max(ref.vibration_peak,
+                                  (ref.specific_force.back() - ref.specific_force.front()).norm());
     ref.body_rate.push_back(bodyRate(u.tail<3>(), du.tail<3>()));
     ref.rate_peak = std::max(ref.rate_peak, ref.body_rate.back().norm());
     const bool moving = !ref.odom_twist.empty();  // record() runs once at rest first
@@ -337,13 +336,15 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
               pitch_error, pitch_error / ref.pitch_peak);
   std::printf("wheels: peak %.4f m, max error %.3g m (%.3g of peak)\n", ref.wheel_peak, wheel_error,
               wheel_error / ref.wheel_peak);
-  std::printf("imu/%s: %zu samples, vibration peak %.3f m/s^2, max error %.3g m/s^2 (%.3g of "
-              "peak); body rate error %.3g rad/s; orientation vs /tf %.3g rad\n",
-              imu_point_.c_str(), imu_compared, ref.vibration_peak, imu_error,
-              imu_error / ref.vibration_peak, rate_error, orientation_error);
-  std::printf("odom: %zu samples, linear velocity peak (less the travel speed) %.3f m/s, max "
-              "error %.3g m/s; body rate peak %.3f rad/s\n",
-              odom_compared, ref.twist_peak, twist_error, ref.rate_peak);
+  std::printf(
+      "imu/%s: %zu samples, vibration peak %.3f m/s^2, max error %.3g m/s^2 (%.3g of "
+      "peak); body rate error %.3g rad/s; orientation vs /tf %.3g rad\n",
+      imu_point_.c_str(), imu_compared, ref.vibration_peak, imu_error,
+      imu_error / ref.vibration_peak, rate_error, orientation_error);
+  std::printf(
+      "odom: %zu samples, linear velocity peak (less the travel speed) %.3f m/s, max "
+      "error %.3g m/s; body rate peak %.3f rad/s\n",
+      odom_compared, ref.twist_peak, twist_error, ref.rate_peak);
   EXPECT_LE(min_station, covered_from) << "the replay's start was not seen";
   EXPECT_GE(max_station, covered_until);
   EXPECT_LE(heave_error, tolerance * ref.heave_peak);
@@ -356,7 +357,7 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   EXPECT_GT(ref.vibration_peak, 1.0);  // the hill shakes the point
   EXPECT_LE(imu_error, rate_tolerance * ref.vibration_peak);
   EXPECT_LE(rate_error, rate_tolerance * ref.rate_peak);  // the IMU's and odom's
-  EXPECT_LE(orientation_error, 1e-12);  // the IMU's orientation is the /tf pose's
+  EXPECT_LE(orientation_error, 1e-12);                    // the IMU's orientation is the /tf pose's
   EXPECT_LE(twist_error, rate_tolerance * ref.twist_peak);
   // At rest before the hill the accelerometer reads gravity (static attitude: about +g0 up).
   EXPECT_NEAR(ref.specific_force.front().z(), kStandardGravity, 1e-3);

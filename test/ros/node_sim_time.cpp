@@ -97,7 +97,8 @@ TEST_F(NodeSimTime, DiagnosticsSayWaitingBeforeTheClock) {
                std::string::npos;
       },
       45.0))
-      << "no WARN 'waiting for ROS time' before the first /clock:\n" << diagnostics_.describe();
+      << "no WARN 'waiting for ROS time' before the first /clock:\n"
+      << diagnostics_.describe();
   EXPECT_EQ(messages_, 0u);
   // A speed sent before simulated time starts (a stack that commands it once, then starts its
   // clock): its ~speed_timeout counts from the first /clock, so the vehicle drives off with it
@@ -114,7 +115,8 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   const double speed_timeout = test::requiredParam<double>(private_nh_, "speed_timeout");
   // Simulated time runs once the node has loaded its model and published its first sample.
   ros::Time t(100.0);
-  ASSERT_TRUE(test::tickClockUntil(clock_pub_, &t, [&] { return messages_ > 0; }, 45.0))
+  ASSERT_TRUE(test::tickClockUntil(
+      clock_pub_, &t, [&] { return messages_ > 0; }, 45.0))
       << "the node published nothing";
   // The named points' static frames come with the first sample, stamped with its time (not 0:
   // ROS time before the first /clock). This test's road_wheels subscription may connect a few

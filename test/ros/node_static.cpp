@@ -126,9 +126,9 @@ class NodeStatic : public ::testing::Test {
   ros::NodeHandle nh_, private_nh_;
   std::string prefix_, base_, odom_, footprint_;
   bool publish_odom_tf_ = true;
-  std::size_t from_odom_ = 0;                    // /tf transforms whose parent is odom
-  std::map<ros::Time, RigidPose> above_poses_;   // footprint -> base_link without odom's
-  std::vector<double> path_offsets_;  // |odom -> footprint - (s, 0, 0)| + its rotation
+  std::size_t from_odom_ = 0;                   // /tf transforms whose parent is odom
+  std::map<ros::Time, RigidPose> above_poses_;  // footprint -> base_link without odom's
+  std::vector<double> path_offsets_;            // |odom -> footprint - (s, 0, 0)| + its rotation
   test::DiagnosticsCache diagnostics_;
   ros::Subscriber tf_sub_, tf_static_sub_, wheels_sub_, comfort_sub_, odom_sub_;
   std::vector<ros::Subscriber> imu_subs_;

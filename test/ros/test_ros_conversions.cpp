@@ -299,11 +299,10 @@ TEST_F(VehicleFrameRates, RigidPointAccelerationIsItsPositionsSecondDerivative) 
     const RigidPose pose = hullPose(speed_ * t, cog_, accelerated(t));
     return Vector3(pose.rotation * point + pose.translation);
   };
-  const Vector3 second =
-      (position(step) - 2.0 * position(0.0) + position(-step)) / (step * step);
+  const Vector3 second = (position(step) - 2.0 * position(0.0) + position(-step)) / (step * step);
   const Vector3 a = rigidPointAcceleration(cog_, u_, du_, ddu_, point);
-  EXPECT_NEAR((a - second).norm(), 0.0, 1e-5 * a.norm()) << a.transpose() << " / "
-                                                          << second.transpose();
+  EXPECT_NEAR((a - second).norm(), 0.0, 1e-5 * a.norm())
+      << a.transpose() << " / " << second.transpose();
   // The linear model's u_G'' + theta'' x r is off by the centripetal and Euler-rate terms.
   const Vector3 linear = ddu_.head<3>() + ddu_.tail<3>().cross(point - cog_);
   EXPECT_GT((a - linear).norm(), 0.1 * a.norm());
@@ -377,7 +376,8 @@ TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
 // first station at 0 and its lines shifted by the centre-line position, on its own grid.
 TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
   const terrain::Terrain road = terrain::makeIso8608('C', 40.0, 5.0, 0.05, 3);
-  const terrain::Terrain shifted(road.stations().array() + 12.0, road.lateral(), road.heights(), "road");
+  const terrain::Terrain shifted(road.stations().array() + 12.0, road.lateral(), road.heights(),
+                                 "road");
   const std::string file = temporaryPath("road.csv");
   terrain::saveTerrainCsv(shifted, file);
   TrackBagOptions options;
@@ -435,7 +435,8 @@ TEST(TrackBag, SpeedProfileMovesTheReferencePointByItsIntegral) {
     if (due <= 0.0) {
       EXPECT_EQ(timed.time, 0.0);
     } else {
-      EXPECT_NEAR(options.speed_profile->station(timed.time), due, 1e-9) << timed.patch.start_station;
+      EXPECT_NEAR(options.speed_profile->station(timed.time), due, 1e-9)
+          << timed.patch.start_station;
     }
   }
   // A profile that stops short of the end ends the run with it.
@@ -450,7 +451,8 @@ TEST(TrackBag, SpeedProfileMovesTheReferencePointByItsIntegral) {
 TEST(TrackBag, InvalidOptionsNameTheField) {
   TrackBagOptions options;
   options.speed = 0.0;
-  const std::string message = inputErrorOf([&] { writeTrackBag(temporaryPath("never.bag"), options); });
+  const std::string message =
+      inputErrorOf([&] { writeTrackBag(temporaryPath("never.bag"), options); });
   EXPECT_NE(message.find("speed"), std::string::npos) << message;
   // Above tvd simulate's 200 km/h, at constant speed or along a profile.
   options.speed = 200.0001 / 3.6;

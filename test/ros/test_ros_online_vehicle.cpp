@@ -12,10 +12,10 @@
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
-#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 #include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 #include "../core/count_allocations.h"
 #include "../core/expect_input_error.h"
@@ -493,7 +493,8 @@ TEST(OnlineVehicle, OneSlewRateSetBoundsBothDirections) {
     vehicle.step();
     EXPECT_NEAR(vehicle.travelAcceleration(), -3.0, 1e-9);
   }
-  EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), slewing(-1.0, 0.0)), InputError);
+  EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), slewing(-1.0, 0.0)),
+               InputError);
   EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), slewing(0.0, NAN)), InputError);
   reduction::ReducedModel without = test::toyModel();
   without.travel_load.resize(0);
@@ -526,8 +527,10 @@ TEST(OnlineVehicle, ConstantBrakingPitchesToTheStaticValueAndTheImuReadsTheBraki
   EXPECT_NEAR(acceleration.z(), 0.0, 1e-3 * kBraking);
   const double theta = vehicle.hullDisplacement()(4);
   const Vector3 f = specificForce(vehicle.hullPose().rotation, acceleration);
-  EXPECT_NEAR(f.x(), -kBraking * std::cos(theta) - kStandardGravity * std::sin(theta), 1e-3 * kBraking);
-  EXPECT_NEAR(f.z(), -kBraking * std::sin(theta) + kStandardGravity * std::cos(theta), 1e-3 * kBraking);
+  EXPECT_NEAR(f.x(), -kBraking * std::cos(theta) - kStandardGravity * std::sin(theta),
+              1e-3 * kBraking);
+  EXPECT_NEAR(f.z(), -kBraking * std::sin(theta) + kStandardGravity * std::cos(theta),
+              1e-3 * kBraking);
   EXPECT_LT(f.x(), -kBraking);  // the nose-down pitch adds gravity's share to the braking
   // Stopped: the acceleration ends and the pitch returns.
   for (int k = 0; k < 4000; ++k)
@@ -562,8 +565,8 @@ TEST(OnlineVehicle, BrakingPaperVehicleSettlesToTheReducedModelsStaticPitch) {
   ASSERT_NEAR(vehicle.travelAcceleration(), -kBraking, 1e-6);
   const auto& names = model.system.output_names;
   const auto ry = std::find(names.begin(), names.end(), "hull ry") - names.begin();
-  const double pitch =
-      -kBraking * (model.system.output * model.system.stiffness.ldlt().solve(model.travel_load))(ry);
+  const double pitch = -kBraking * (model.system.output *
+                                    model.system.stiffness.ldlt().solve(model.travel_load))(ry);
   EXPECT_GT(pitch, 0.0);  // nose down
   EXPECT_NEAR(vehicle.hullDisplacement()(4) - rest, pitch, 1e-2 * pitch);
   // Settled, the crew seat's accelerometer reads the braking along the path's x.
@@ -587,9 +590,9 @@ TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
   double peak = 0.0, worst = 0.0;
   for (int k = 0; k < 600; ++k) {
     vehicle.step();
-    const Vector3 rigid = rigidPointAcceleration(vehicle.geometry().cog, vehicle.hullDisplacement(),
-                                                 vehicle.hullVelocity(),
-                                                 vehicle.hullAcceleration(), point);
+    const Vector3 rigid =
+        rigidPointAcceleration(vehicle.geometry().cog, vehicle.hullDisplacement(),
+                               vehicle.hullVelocity(), vehicle.hullAcceleration(), point);
     const Vector3 expected = rigid + Vector3(0.0, 0.0, 0.3 * vehicle.wheels()[0].acceleration);
     peak = std::max(peak, 0.3 * std::abs(vehicle.wheels()[0].acceleration));
     worst = std::max(worst, (vehicle.pointAcceleration(0) - expected).norm());
@@ -700,21 +703,21 @@ TEST(OnlineVehicle, GroundContactWatchSaysWhyAModelCannotBeChecked) {
 TEST(OnlineVehicle, StepAllocatesNothing) {
   for (auto method : {dynamics::DiscretizationMethod::ModalDecoupled,
                       dynamics::DiscretizationMethod::AugmentedExponential})
-  for (const double slew : {0.0, 2.0}) {  // without and with the speed slew (travel inertia)
-    OnlineVehicleOptions o = options(method);
-    o.max_acceleration = o.max_deceleration = slew;
-    OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), o);
-    for (const TerrainPatch& p : patches(bump(), 40))
-      vehicle.addTerrain(p);
-    vehicle.setSpeed(5.0);
-    vehicle.step();
-    g_allocations = 0;
-    g_count_allocations = true;
-    for (int k = 0; k < 500; ++k)
+    for (const double slew : {0.0, 2.0}) {  // without and with the speed slew (travel inertia)
+      OnlineVehicleOptions o = options(method);
+      o.max_acceleration = o.max_deceleration = slew;
+      OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), o);
+      for (const TerrainPatch& p : patches(bump(), 40))
+        vehicle.addTerrain(p);
+      vehicle.setSpeed(5.0);
       vehicle.step();
-    g_count_allocations = false;
-    EXPECT_EQ(g_allocations, 0);
-  }
+      g_allocations = 0;
+      g_count_allocations = true;
+      for (int k = 0; k < 500; ++k)
+        vehicle.step();
+      g_count_allocations = false;
+      EXPECT_EQ(g_allocations, 0);
+    }
 }
 #endif
 
@@ -763,17 +766,21 @@ TEST(RoadInputSampler, RememberedLookupsGiveTheBuffersHeights) {
   Eigen::Index next = 0;  // first sample of the next patch to add
   auto addNext = [&] {
     const Eigen::Index count = std::min<Eigen::Index>(per_patch, t.stations().size() - next);
-    if (count <= 0) return;
+    if (count <= 0)
+      return;
     buffer.addPatch(t.stations()(next), spacing, t.lateral(), t.heights().middleCols(next, count));
     next += count;
   };
-  for (int i = 0; i < 4; ++i) addNext();
+  for (int i = 0; i < 4; ++i)
+    addNext();
   long checked = 0;
   for (int k = 0; k < 3000; ++k) {
     const double station = t.startStation() + 2.0 + 0.0013 * k;
     const double offset = k < 1500 ? 0.25 : -0.1;
-    if (k % 97 == 0) addNext();
-    if (k % 211 == 0) buffer.dropBehind(station - 2.5);
+    if (k % 97 == 0)
+      addNext();
+    if (k % 211 == 0)
+      buffer.dropBehind(station - 2.5);
     if (k == 700) {  // a newer patch over part of the older ones
       Vector y(1);
       y << 0.0;

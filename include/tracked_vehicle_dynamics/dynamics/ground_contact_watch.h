@@ -71,11 +71,11 @@ struct GroundContactRecord {
 /// The forces at the last check.
 struct GroundContactNow {
   double time = std::numeric_limits<double>::quiet_NaN();  ///< [s]
-  DofIndex pulling = 0;          ///< contacts pressed at rest that pull now
-  DofIndex pulling_at_rest = 0;  ///< contacts that pull now and already pulled at rest
-  double left = 0.0;             ///< total ground force on the left side (y > 0) [N]
-  double right = 0.0;            ///< and on the right (y < 0) [N]
-  int groups_pulling = 0;        ///< groups pressed at rest whose total pulls now
+  DofIndex pulling = 0;            ///< contacts pressed at rest that pull now
+  DofIndex pulling_at_rest = 0;    ///< contacts that pull now and already pulled at rest
+  double left = 0.0;               ///< total ground force on the left side (y > 0) [N]
+  double right = 0.0;              ///< and on the right (y < 0) [N]
+  int groups_pulling = 0;          ///< groups pressed at rest whose total pulls now
   int groups_pulling_at_rest = 0;  ///< groups whose total pulls now and already pulled at rest
 };
 

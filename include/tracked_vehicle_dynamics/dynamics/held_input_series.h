@@ -24,8 +24,8 @@ struct HeldInputSeries {
     std::vector<double> values;     ///< the signal from each event on (same length as steps)
   };
 
-  long samples = 0;       ///< n_samples (>= 1 to simulate)
-  Vector initial;         ///< w_0 [n_w]
+  long samples = 0;  ///< n_samples (>= 1 to simulate)
+  Vector initial;    ///< w_0 [n_w]
   std::vector<Channel> channels;
 
   DofIndex inputCount() const { return initial.size(); }

@@ -38,8 +38,8 @@ struct LimitCrossing {
 /// speed, sizes that differ, speeds not strictly increasing, a non-finite limit or a non-positive
 /// tolerance, and
 /// for a non-finite value (naming its speed).
-LimitCrossing findLimitCrossing(const std::vector<double>& speeds, const std::vector<double>& values,
-                                double limit, double tolerance,
+LimitCrossing findLimitCrossing(const std::vector<double>& speeds,
+                                const std::vector<double>& values, double limit, double tolerance,
                                 const std::function<double(double)>& evaluate);
 
 /// "reached", "at_lowest_speed", "not_reached".

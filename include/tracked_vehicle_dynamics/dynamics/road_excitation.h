@@ -28,8 +28,9 @@ class RoadExcitation {
   RoadExcitation(const Vector& input_x, const Vector& input_y, double lateral_offset = 0.0)
       : x_(input_x), y_(input_y.array() + lateral_offset) {
     if (input_x.size() != input_y.size())
-      throw InputError("road excitation: " + std::to_string(input_x.size()) + " input stations but " +
-                       std::to_string(input_y.size()) + " lateral positions");
+      throw InputError("road excitation: " + std::to_string(input_x.size()) +
+                       " input stations but " + std::to_string(input_y.size()) +
+                       " lateral positions");
     if (!input_x.allFinite() || !input_y.allFinite() || !std::isfinite(lateral_offset))
       throw InputError("road excitation: input positions must be finite");
   }
@@ -41,7 +42,8 @@ class RoadExcitation {
   template <typename HeightSource>
   void sample(const HeightSource& terrain, double station, double speed, Vector& w) const {
     const DofIndex n = x_.size();
-    if (w.size() != 2 * n) w.resize(2 * n);
+    if (w.size() != 2 * n)
+      w.resize(2 * n);
     for (DofIndex q = 0; q < n; ++q)
       sampleOne(terrain, station + x_(q), y_(q), speed, w(q), w(n + q));
   }
@@ -49,7 +51,8 @@ class RoadExcitation {
   /// The input series of a run: row j is sample() at station stations(j) [m] and speed
   /// speeds(j) [m/s]. [rows x 2 n_inputs].
   template <typename HeightSource>
-  Matrix sampleSeries(const HeightSource& terrain, const Vector& stations, const Vector& speeds) const {
+  Matrix sampleSeries(const HeightSource& terrain, const Vector& stations,
+                      const Vector& speeds) const {
     if (stations.size() != speeds.size())
       throw InputError("road excitation: " + std::to_string(stations.size()) + " stations but " +
                        std::to_string(speeds.size()) + " speeds");
@@ -73,7 +76,8 @@ class RoadExcitation {
   Matrix sampleSeries(const HeightSource& terrain, double station0, double speed, double dt,
                       long first, long count) const {
     Vector stations(count);
-    for (long j = 0; j < count; ++j) stations(j) = station0 + speed * static_cast<double>(first + j) * dt;
+    for (long j = 0; j < count; ++j)
+      stations(j) = station0 + speed * static_cast<double>(first + j) * dt;
     return sampleSeries(terrain, stations, Vector::Constant(count, speed));
   }
 
@@ -82,8 +86,8 @@ class RoadExcitation {
   /// (TerrainLines::sampleRun), and contacts at the same station on lines with the same profile
   /// share one channel. Needs speed > 0 and dt > 0 for skipping (otherwise every sample is
   /// taken). Inputs whose lateral position is not one of the lines' are sampled at every step.
-  HeldInputSeries sampleHeldSeries(const terrain::TerrainLines& lines, double station0, double speed,
-                                   double dt, long first, long count) const;
+  HeldInputSeries sampleHeldSeries(const terrain::TerrainLines& lines, double station0,
+                                   double speed, double dt, long first, long count) const;
 
   const Vector& inputX() const { return x_; }
   const Vector& inputY() const { return y_; }  ///< including the lateral offset

@@ -22,7 +22,8 @@ struct SecondOrderSystem {
   Matrix input_stiffness;  ///< K_u [n x n_inputs]
   Matrix input_damping;    ///< C_u [n x n_inputs]
   Matrix output;           ///< H [n_outputs x n]: recovers physical displacements
-  std::vector<std::string> output_names;  ///< one per row of H, e.g. "hull uz", "road_wheel_left_1 uz"
+  std::vector<std::string>
+      output_names;  ///< one per row of H, e.g. "hull uz", "road_wheel_left_1 uz"
   /// Longitudinal station of each input relative to the vehicle reference point [m]
   /// (x forward), used for the wheelbase delay tau_q = L_q / v (paper eq. 24).
   Vector input_stations;

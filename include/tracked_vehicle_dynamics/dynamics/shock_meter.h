@@ -20,7 +20,7 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
 struct ShockOptions {
-  int lowpass_order = 4;           ///< Butterworth order, 1..12
+  int lowpass_order = 4;            ///< Butterworth order, 1..12
   double lowpass_corner_hz = 30.0;  ///< [Hz], below fs/2; 0 = unfiltered
 };
 

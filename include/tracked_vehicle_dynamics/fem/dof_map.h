@@ -44,12 +44,12 @@ class DofMap {
   static DofMap build(const Model& model, const std::vector<bool>& inactive = {});
 
  private:
-  std::vector<NodeId> node_ids_;                       // by node position
-  std::vector<Vector3> positions_;                     // by node position
+  std::vector<NodeId> node_ids_;    // by node position
+  std::vector<Vector3> positions_;  // by node position
   std::unordered_map<NodeId, std::size_t> node_index_;
-  std::vector<DofIndex> physical_to_active_;           // -1 when not active
+  std::vector<DofIndex> physical_to_active_;  // -1 when not active
   std::vector<DofIndex> active_to_physical_;
-  std::vector<char> status_;                           // 'a' active, 'f' fixed, 's' slave, 'n' null
+  std::vector<char> status_;  // 'a' active, 'f' fixed, 's' slave, 'n' null
   SparseMatrix transformation_;
 };
 

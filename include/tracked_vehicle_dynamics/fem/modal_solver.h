@@ -10,8 +10,8 @@ namespace fem {
 
 /// What to compute: the lowest `count` modes, or every mode below `max_frequency_hz` (when > 0).
 struct ModalRequest {
-  int count = 20;                   ///< number of modes (upper bound when max_frequency_hz > 0)
-  double max_frequency_hz = 0.0;    ///< 0: use count only
+  int count = 20;                 ///< number of modes (upper bound when max_frequency_hz > 0)
+  double max_frequency_hz = 0.0;  ///< 0: use count only
   /// Shift sigma [rad^2/s^2]; negative so that rigid-body modes (omega = 0) are found and
   /// K - sigma M is positive definite. 0: chosen automatically from the matrix scales.
   double shift = 0.0;
@@ -23,13 +23,13 @@ enum class ModalStatus { Converged, NotConverged, NumericalIssue };
 
 /// Modes sorted by increasing frequency; shapes are mass-normalised (Phi^T M Phi = I).
 struct ModalBasis {
-  Vector eigenvalues;      ///< omega^2 [rad^2/s^2]
-  Vector frequencies_hz;   ///< omega / 2 pi [Hz]; rigid-body modes give ~0
-  ModeShapes shapes;       ///< [n x modes]
+  Vector eigenvalues;     ///< omega^2 [rad^2/s^2]
+  Vector frequencies_hz;  ///< omega / 2 pi [Hz]; rigid-body modes give ~0
+  ModeShapes shapes;      ///< [n x modes]
   ModalStatus status = ModalStatus::Converged;
-  int converged = 0;       ///< number of converged Ritz pairs
+  int converged = 0;  ///< number of converged Ritz pairs
   int iterations = 0;
-  double seconds = 0.0;    ///< wall time of the solve [s]
+  double seconds = 0.0;  ///< wall time of the solve [s]
 
   int count() const { return static_cast<int>(eigenvalues.size()); }
 };

@@ -34,12 +34,13 @@ struct Material {
 /// Beam cross-section; local y, z are the principal axes.
 struct Section {
   std::string name;
-  double area = 0.0;           ///< A [m^2]
-  double iy = 0.0;             ///< second moment about local y [m^4]
-  double iz = 0.0;             ///< second moment about local z [m^4]
-  double torsion = 0.0;        ///< torsion constant J [m^4]
-  double shear_factor_y = 0.0; ///< Timoshenko shear area factor for shear along y (0 = Euler-Bernoulli)
-  double shear_factor_z = 0.0; ///< same along z
+  double area = 0.0;     ///< A [m^2]
+  double iy = 0.0;       ///< second moment about local y [m^4]
+  double iz = 0.0;       ///< second moment about local z [m^4]
+  double torsion = 0.0;  ///< torsion constant J [m^4]
+  double shear_factor_y =
+      0.0;  ///< Timoshenko shear area factor for shear along y (0 = Euler-Bernoulli)
+  double shear_factor_z = 0.0;  ///< same along z
 };
 
 /// 3-D two-node beam. Local x runs n1 -> n2; local z is orthogonal to x in the plane of x and
@@ -68,9 +69,9 @@ struct Spring {
 /// Lumped mass or rigid body attached to a node; its centre of gravity sits at node + offset.
 struct Mass {
   NodeId node = 0;
-  double mass = 0.0;                      ///< [kg]
-  Matrix3 inertia = Matrix3::Zero();      ///< about the centre of gravity, global axes [kg m^2]
-  Vector3 offset = Vector3::Zero();       ///< centre of gravity - node [m]
+  double mass = 0.0;                  ///< [kg]
+  Matrix3 inertia = Matrix3::Zero();  ///< about the centre of gravity, global axes [kg m^2]
+  Vector3 offset = Vector3::Zero();   ///< centre of gravity - node [m]
   std::string name;
 };
 

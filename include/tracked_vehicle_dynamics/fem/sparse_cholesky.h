@@ -1,6 +1,6 @@
 // Sparse Cholesky factorisation A = L L^T of a symmetric positive definite matrix (CHOLMOD,
-// simplicial or supernodal), kept behind one narrow class so that solvers share one factorisation and check
-// its status (STYLE.md #9).
+// simplicial or supernodal), kept behind one narrow class so that solvers share one factorisation
+// and check its status (STYLE.md #9).
 #pragma once
 
 #include <memory>

@@ -9,8 +9,8 @@ namespace tracked_vehicle_dynamics {
 namespace fem {
 
 struct StaticResult {
-  Vector displacement;      ///< x over the active DOFs
-  double residual = 0.0;    ///< ||K x - f|| / ||f||
+  Vector displacement;    ///< x over the active DOFs
+  double residual = 0.0;  ///< ||K x - f|| / ||f||
 };
 
 /// Solves K x = f. A singular K (a free rigid-body motion or a mechanism) throws SolverError

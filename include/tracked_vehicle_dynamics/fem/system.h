@@ -25,8 +25,8 @@ struct System {
   DofMap dofs;
   /// Ground springs as road inputs: the force on the structure is K_u u + C_u u' where u holds
   /// the vertical ground displacement under each grounded spring in `ground_inputs` order.
-  SparseMatrix input_stiffness;  ///< K_u [n x n_inputs]
-  SparseMatrix input_damping;    ///< C_u [n x n_inputs]
+  SparseMatrix input_stiffness;       ///< K_u [n x n_inputs]
+  SparseMatrix input_damping;         ///< C_u [n x n_inputs]
   std::vector<DofRef> ground_inputs;  ///< the node under each input (direction uz)
   /// Named DOF sets resolved to active indices (entries that are not active are dropped and
   /// listed in `dropped_set_entries`).

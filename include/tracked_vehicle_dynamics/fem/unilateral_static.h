@@ -34,7 +34,7 @@ struct UnilateralStaticResult {
   StaticResult statics;        ///< its solution under the gravity load
   std::vector<bool> released;  ///< per UnilateralSpring, in the order given
   std::vector<double> normal_force;  ///< N of each (0 when released) [N]
-  int iterations = 0;          ///< solves done
+  int iterations = 0;                ///< solves done
 };
 
 /// How the active set changes between solves.

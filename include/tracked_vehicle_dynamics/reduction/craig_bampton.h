@@ -160,12 +160,12 @@ class CraigBamptonReducer {
   std::unique_ptr<State> state_;
 };
 
-/// Reduces an assembled system (M, K, C, K_u, C_u, gravity and travel inertia loads) on the given master DOFs
-/// (active indices, any order). Throws InputError for a repeated or out-of-range master,
-/// more fixed-interface modes than slave DOFs, an out-of-range recovery DOF, or an empty basis
-/// (m + r = 0); SolverError when K_ss is not positive definite (the masters leave a rigid-body
-/// motion or mechanism of the slaves free) or the fixed-interface eigen-solve fails (for the
-/// dense path used for many modes, M_ss must be positive definite).
+/// Reduces an assembled system (M, K, C, K_u, C_u, gravity and travel inertia loads) on the given
+/// master DOFs (active indices, any order). Throws InputError for a repeated or out-of-range
+/// master, more fixed-interface modes than slave DOFs, an out-of-range recovery DOF, or an empty
+/// basis (m + r = 0); SolverError when K_ss is not positive definite (the masters leave a
+/// rigid-body motion or mechanism of the slaves free) or the fixed-interface eigen-solve fails (for
+/// the dense path used for many modes, M_ss must be positive definite).
 CraigBamptonResult craigBampton(const fem::System& system, const std::vector<DofIndex>& masters,
                                 const CraigBamptonOptions& options = {});
 

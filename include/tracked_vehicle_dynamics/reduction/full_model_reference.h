@@ -49,11 +49,11 @@ struct FullModelReference {
   Matrix residual_input;    ///< H R [K_u, C_u] [n_outputs x 2 n_inputs]
   Vector residual_gravity;  ///< H R f_g [n_outputs]
   /// The travel inertia per unit forward acceleration (fem::System::travel_load), like gravity.
-  Vector modal_travel;      ///< Phi_k^T f_a [k]
-  Vector residual_travel;   ///< H R f_a [n_outputs]
-  Vector frequencies_hz;    ///< the k dynamic modes [Hz]
+  Vector modal_travel;     ///< Phi_k^T f_a [k]
+  Vector residual_travel;  ///< H R f_a [n_outputs]
+  Vector frequencies_hz;   ///< the k dynamic modes [Hz]
   DofIndex full_dofs = 0;
-  double seconds = 0.0;     ///< wall time to build it [s]
+  double seconds = 0.0;  ///< wall time to build it [s]
 
   /// Adds the residual part of `quantity` for the input series W (rows w = [u; u'],
   /// [n_samples x 2 n_inputs]) to the outputs Y [n_samples x n_outputs]: displacement

@@ -41,8 +41,9 @@ constexpr double kDegenerateRelativeGap = 1e-6;
 /// (the cosine squared of their smallest principal angle). Between single modes it is mac(). On
 /// the un-tracked vehicle 11 road wheels bouncing alone share one frequency, so which vectors of
 /// that eigenspace the solver returns, and so each mode's plain MAC with them, is round-off (a
-/// build with FMA selected one tracked mode fewer); this is not. Shapes of negligible norm (see mac()) add nothing to a group's span.
-/// Throws InputError like mac(), or when a frequency vector does not have one entry per shape.
+/// build with FMA selected one tracked mode fewer); this is not. Shapes of negligible norm (see
+/// mac()) add nothing to a group's span. Throws InputError like mac(), or when a frequency vector
+/// does not have one entry per shape.
 Matrix eigenspaceMac(const Matrix& phi_a, const Vector& f_a, const Matrix& phi_b, const Vector& f_b,
                      double relative_gap = kDegenerateRelativeGap);
 

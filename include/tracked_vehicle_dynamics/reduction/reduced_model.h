@@ -36,13 +36,13 @@ struct ReducedModel {
   /// stations/lateral: x and y of the node under each road input [m] (global frame; empty when
   /// a node has no active DOF).
   dynamics::SecondOrderSystem system;
-  Vector gravity_load;                    ///< T^T f_g [k] [N, N m]
+  Vector gravity_load;  ///< T^T f_g [k] [N, N m]
   /// T^T f_a [k]: travel inertia per unit forward acceleration of the path frame
   /// [N, N m per m/s^2] (fem::System::travel_load); the load is a(t) travel_load.
   Vector travel_load;
-  std::vector<std::string> dof_labels;    ///< k labels: "node 12 uz", then "mode 3 (12.4 Hz)"
-  std::vector<fem::DofRef> masters;       ///< physical DOF of each of the m master coordinates
-  Matrix master_positions;                ///< [m x 3] undeformed position of each master's node [m]
+  std::vector<std::string> dof_labels;  ///< k labels: "node 12 uz", then "mode 3 (12.4 Hz)"
+  std::vector<fem::DofRef> masters;     ///< physical DOF of each of the m master coordinates
+  Matrix master_positions;              ///< [m x 3] undeformed position of each master's node [m]
   /// One per master: why it is one, e.g. "road input", "hull", "wheel arm", "MoGeSeC 3" (the
   /// third MoGeSeC pick); "master" when the caller did not say.
   std::vector<std::string> master_groups;
@@ -55,14 +55,14 @@ struct ReducedModel {
   /// What was reduced and how (caller's), e.g. "variant tracked; rule mac; ...": one description
   /// gives a model per variant and per reduction option, and a cache must serve only its own.
   std::string reduction;
-  std::string version;           ///< softwareVersion() at creation
-  std::string created_utc;       ///< "2024-05-01T12:00:00Z"
-  std::string creator;           ///< free text, e.g. "tvd reduce"
+  std::string version;      ///< softwareVersion() at creation
+  std::string created_utc;  ///< "2024-05-01T12:00:00Z"
+  std::string creator;      ///< free text, e.g. "tvd reduce"
   /// What the reduction warned about when it was made (e.g. a --global-modes count that cuts a
   /// repeated eigenvalue, reduction::modeCountCut): kept with the model, so that a cached or
   /// saved model says it again on every load instead of only on the run that built it.
   std::vector<std::string> warnings;
-  DofIndex full_dof_count = 0;   ///< active DOFs of the full model
+  DofIndex full_dof_count = 0;  ///< active DOFs of the full model
 
   DofIndex size() const { return system.size(); }
   DofIndex masterCount() const { return static_cast<DofIndex>(masters.size()); }
@@ -70,11 +70,11 @@ struct ReducedModel {
 };
 
 struct ReductionRequest {
-  std::vector<DofIndex> masters;      ///< active DOFs, e.g. MasterSelection::masters
+  std::vector<DofIndex> masters;           ///< active DOFs, e.g. MasterSelection::masters
   std::vector<std::string> master_groups;  ///< ReducedModel::master_groups; empty: "master"
-  CraigBamptonOptions craig_bampton;  ///< its recovery_dofs are set from `outputs`
-  std::vector<OutputDof> outputs;     ///< rows of H
-  ModeSelection selection;            ///< recorded with the model for the report
+  CraigBamptonOptions craig_bampton;       ///< its recovery_dofs are set from `outputs`
+  std::vector<OutputDof> outputs;          ///< rows of H
+  ModeSelection selection;                 ///< recorded with the model for the report
   std::string description_hash;
   std::string reduction;  ///< ReducedModel::reduction
   std::string creator;

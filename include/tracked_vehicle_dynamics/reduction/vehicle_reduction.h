@@ -43,10 +43,10 @@ constexpr int kMaxReductionCount = 1000;
 
 struct VehicleReductionOptions {
   VehicleModeRule rule = VehicleModeRule::MacCorrelation;
-  int global_modes = 40;           ///< modes of each variant computed for MAC (paper: 40)
-  double band_hz = 30.0;           ///< bandwidth of interest [Hz] (paper: 0-30 Hz)
-  double mac_threshold = 0.7;      ///< paper Fig. 9: 70 %
-  int mogesec_masters = 9;         ///< extra MoGeSeC master DOFs (paper Table 5: 9)
+  int global_modes = 40;       ///< modes of each variant computed for MAC (paper: 40)
+  double band_hz = 30.0;       ///< bandwidth of interest [Hz] (paper: 0-30 Hz)
+  double mac_threshold = 0.7;  ///< paper Fig. 9: 70 %
+  int mogesec_masters = 9;     ///< extra MoGeSeC master DOFs (paper Table 5: 9)
   /// Fixed-interface modes; 0: twice the selected global modes, raised by the selected count (at
   /// least 4) until every full-model mode below band_hz is reproduced within 2 % (at most 8
   /// times, up to 200 modes).
@@ -90,7 +90,7 @@ std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& vehicle,
 /// What was done and how long it took, for logs and `tvd reduce --json`.
 struct VehicleReductionReport {
   DofIndex full_dofs = 0;
-  DofIndex interface_dofs = 0;   ///< masters imposed (road inputs' nodes, hull)
+  DofIndex interface_dofs = 0;  ///< masters imposed (road inputs' nodes, hull)
   DofIndex mogesec_dofs = 0;
   /// Each MoGeSeC pick, in pick order (built models only): its weights at the moment it was
   /// picked, and vehicle::nodePart() of its node.
@@ -119,13 +119,13 @@ struct VehicleReductionReport {
   /// (f_red,r - f_full,r) / f_full,r of each pair, signed (>= 0 by Rayleigh-Ritz, to rounding):
   /// what the band check and max_relative_frequency_error judge (the latter above 0.1 Hz only).
   std::vector<double> relative_frequency_errors;
-  double build_seconds = 0.0, modes_seconds = 0.0, selection_seconds = 0.0,
-         reduce_seconds = 0.0, total_seconds = 0.0;
+  double build_seconds = 0.0, modes_seconds = 0.0, selection_seconds = 0.0, reduce_seconds = 0.0,
+         total_seconds = 0.0;
   bool from_cache = false;
   std::string cache_file;
-  std::string cache_note;        ///< why the cache was (not) used
-  bool cache_rebuilt = false;    ///< a cached model existed but was stale or corrupt (cache_note)
-  std::string cache_error;       ///< why a model built here could not be cached (empty: it was)
+  std::string cache_note;      ///< why the cache was (not) used
+  bool cache_rebuilt = false;  ///< a cached model existed but was stale or corrupt (cache_note)
+  std::string cache_error;     ///< why a model built here could not be cached (empty: it was)
   /// Rule mac: global_modes ends inside a repeated eigenvalue of a variant that the selection
   /// uses (global_modes.h), or the solver skipped part of one (one line each,
   /// naming the variant, the frequency, the modes kept of the group and the counts that would

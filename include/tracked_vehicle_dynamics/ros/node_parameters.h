@@ -43,15 +43,15 @@ struct NodeParameters {
   /// ~reduced_model: a file written by `tvd reduce --out`, run instead of the cache (its own
   /// reduction options replace ~reduction/*); empty: the cache.
   std::string reduced_model;
-  double publish_rate = 0.0;                             ///< ~publish_rate [Hz], default ~rate
-  double comfort_rate = 10.0;                            ///< ~comfort_rate [Hz]
+  double publish_rate = 0.0;   ///< ~publish_rate [Hz], default ~rate
+  double comfort_rate = 10.0;  ///< ~comfort_rate [Hz]
   /// ~comfort_point was set (vehicle_options.comfort_point holds it). Unset, the node watches the
   /// description's `crew_seat` point when it names one, else the hull's CoG.
   bool comfort_point_given = false;
   /// ~ground_contact_rate [Hz]: how often the contact forces are checked for a pull (the bonded
   /// model beyond its range, OnlineVehicle::checkGroundContact); 0: never.
   double ground_contact_rate = 50.0;
-  double max_speed = 30.0;          ///< ~max_speed [m/s]; faster speed messages are rejected
+  double max_speed = 30.0;  ///< ~max_speed [m/s]; faster speed messages are rejected
   /// ~speed_timeout [s] of ROS time without a valid speed message after which the vehicle stops
   /// where it is (a driver that died must not leave it driving on); 0: never.
   double speed_timeout = 0.0;

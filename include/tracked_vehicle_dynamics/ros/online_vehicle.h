@@ -150,8 +150,8 @@ class OnlineVehicle {
   double timeStep() const { return time_step_; }     ///< h [s]
   double time() const { return simulator_.time(); }  ///< since reset [s]
   long stepCount() const { return simulator_.stepCount(); }
-  double station() const { return station_; }  ///< [m]
-  double speed() const { return speed_; }      ///< current (slewed) speed [m/s]
+  double station() const { return station_; }                 ///< [m]
+  double speed() const { return speed_; }                     ///< current (slewed) speed [m/s]
   double commandedSpeed() const { return commanded_speed_; }  ///< [m/s]
   /// Forward acceleration a_k of the last step [m/s^2] (0 without a slew, and after a reset).
   double travelAcceleration() const { return travel_acceleration_; }

@@ -76,8 +76,8 @@ class RoadInputSampler {
     terrain::Terrain::LateralCell cell;
   };
   /// u'_q by central differences on the buffer (see the file comment).
-  double rate(const terrain::TerrainBuffer& buffer, double x, double y, double height,
-              double speed, double from, double until) const;
+  double rate(const terrain::TerrainBuffer& buffer, double x, double y, double height, double speed,
+              double from, double until) const;
 
   Vector stations_;
   Vector lateral_;

@@ -1,14 +1,15 @@
 // Rosbags of the paper's test tracks (terrain/tracks.h) or of terrain files driven at a constant
 // speed, as the node consumes them online: terrain patches published ahead of the vehicle, the
-// speed, and optionally /clock. Replay with `rosbag play --clock` and use_sim_time (launch/replay_track.launch).
+// speed, and optionally /clock. Replay with `rosbag play --clock` and use_sim_time
+// (launch/replay_track.launch).
 //
 // The run: the vehicle reference point starts at station 0 at bag time start_time and drives at
 // speed v (or along a speed profile) until station s_end = track end + behind (the rear contacts
-// have left the track), so it lasts s_end / v. The terrain is the track sampled on its own grid (stations k * spacing, its
-// lateral lines), held flat beyond both ends (Terrain's edge rule), from station -behind to
-// s_end + lookahead, cut into patches of patch_length; a patch starting at station a is written
-// at the time the reference point reaches a - lookahead (at the start for the first ones), so
-// the buffer always holds at least `lookahead` metres ahead of the reference point.
+// have left the track), so it lasts s_end / v. The terrain is the track sampled on its own grid
+// (stations k * spacing, its lateral lines), held flat beyond both ends (Terrain's edge rule), from
+// station -behind to s_end + lookahead, cut into patches of patch_length; a patch starting at
+// station a is written at the time the reference point reaches a - lookahead (at the start for the
+// first ones), so the buffer always holds at least `lookahead` metres ahead of the reference point.
 #pragma once
 
 #include <optional>
@@ -41,11 +42,11 @@ struct TrackBagOptions {
   /// moves by its exact station, the speed messages carry v(t), and the run ends where the
   /// station reaches its end, or where the profile stops for good.
   std::optional<dynamics::SpeedProfile> speed_profile;
-  double patch_length = 2.0;        ///< terrain per message [m]
-  double lookahead = 10.0;          ///< terrain published ahead of the reference point [m]
-  double behind = 5.0;              ///< terrain before station 0 and run-out after the track [m]
-  double speed_rate = 50.0;         ///< speed messages [Hz]
-  double clock_rate = 0.0;          ///< /clock messages in the bag [Hz]; 0: none
+  double patch_length = 2.0;  ///< terrain per message [m]
+  double lookahead = 10.0;    ///< terrain published ahead of the reference point [m]
+  double behind = 5.0;        ///< terrain before station 0 and run-out after the track [m]
+  double speed_rate = 50.0;   ///< speed messages [Hz]
+  double clock_rate = 0.0;    ///< /clock messages in the bag [Hz]; 0: none
   /// Vehicle centre line on the track, y_t [m]; unset: the track's default (terrain/tracks.h),
   /// 0 for a terrain file.
   std::optional<double> lateral_offset;

@@ -15,8 +15,8 @@
 // (resynchronisation, warned and counted). ROS time going backwards (a bag loop) resets the
 // vehicle and re-applies the terrain and speed that arrived just before the jump but belong to
 // the new time (rosbag sends a loop's first messages before its first /clock, on other
-// connections). Bad input never stops the node: it is rejected or held, with a throttled warning and
-// a diagnostics entry.
+// connections). Bad input never stops the node: it is rejected or held, with a throttled warning
+// and a diagnostics entry.
 //
 // Threading: the vehicle is owned by one tick at a time, which takes its own callback queue
 // (terrain, speed, ~reset, ~reset_to and, with use_sim_time, /clock) first: no locks, a
@@ -29,8 +29,8 @@
 #pragma once
 
 #include <atomic>
-#include <cstdint>
 #include <chrono>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <string>
@@ -89,7 +89,7 @@ class VehicleDynamicsNode {
     std::uint64_t patches_implausible = 0;
     std::uint64_t patches_behind = 0;  // valid, but wholly behind the terrain kept: dropped
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
-    std::uint64_t speed_timeouts = 0;  // stops after ~speed_timeout without a speed message
+    std::uint64_t speed_timeouts = 0;   // stops after ~speed_timeout without a speed message
     std::uint64_t uncovered_steps = 0;  // steps with at least one contact off the terrain
     std::uint64_t diverged = 0;
     std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
@@ -100,7 +100,7 @@ class VehicleDynamicsNode {
   /// A terrain patch kept for kRewindWindow of wall time, in case ROS time jumps back to it.
   struct RecentPatch {
     TerrainProfile::ConstPtr msg;
-    ros::Time ros_arrival;   // the loop's ROS time when it was handled
+    ros::Time ros_arrival;  // the loop's ROS time when it was handled
     ros::WallTime arrival;
   };
   /// Change of a counter since the previous diagnostics report.
@@ -144,8 +144,7 @@ class VehicleDynamicsNode {
   void advanceTo(const ros::Time& now);
   /// A new run: the vehicle restarts (OnlineVehicle::resetTo, by default station 0 on flat
   /// ground) and the old run's speed timeout is forgotten. Returns the uncovered contacts.
-  int restart(double station = 0.0, double speed = 0.0,
-              ResetTerrain terrain = ResetTerrain::Clear);
+  int restart(double station = 0.0, double speed = 0.0, ResetTerrain terrain = ResetTerrain::Clear);
   /// A reset the user asked for (~reset, ~reset_to): the inputs kept for a bag loop belong to
   /// the old run.
   void forgetRecentInputs();
@@ -242,16 +241,16 @@ class VehicleDynamicsNode {
   ros::Time last_speed_time_;           // ROS time of the last valid speed message
   bool stopped_by_timeout_ = false;     // ~speed_timeout stopped the vehicle; a speed clears it
   std::chrono::steady_clock::time_point tick_start_;  // before the tick's message callbacks
-  ros::WallTime last_time_change_;      // wall time at which ROS time last moved
-  ros::WallTime next_wall_report_;      // reportOnWallTime() publishes from then on
-  bool cached_ = false;                 // the reduced model is in the cache file
+  ros::WallTime last_time_change_;                    // wall time at which ROS time last moved
+  ros::WallTime next_wall_report_;                    // reportOnWallTime() publishes from then on
+  bool cached_ = false;                               // the reduced model is in the cache file
   std::string not_cached_reason_;
   std::int64_t max_steps_in_tick_ = 0;
   DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
 
   std::atomic<bool> stop_{false};
   std::unique_ptr<NetworkThreadTimer> tick_timer_;  // real time: calls tick()
-  std::thread loop_;  // last: started when everything else exists
+  std::thread loop_;                                // last: started when everything else exists
 };
 
 }  // namespace ros_layer

@@ -51,15 +51,19 @@ class Terrain {
   /// height(x, cell) with x's station weight already found (by this terrain's
   /// stationWeightOf(x)): the same value, bit for bit.
   double height(const StationWeight& station, const LateralCell& cell) const {
-    if (station.edge < 0) return sampleHeight(0, cell);
-    if (station.edge > 0) return sampleHeight(stations_.size() - 1, cell);
+    if (station.edge < 0)
+      return sampleHeight(0, cell);
+    if (station.edge > 0)
+      return sampleHeight(stations_.size() - 1, cell);
     return blend(sampleHeight(station.cell, cell), sampleHeight(station.cell + 1, cell),
                  station.weight);
   }
   /// The end of the flat run from station sample i: the last station x_k such that samples
   /// i..k are equal on every lateral line (x_i when sample i + 1 differs). Over [x_i, x_k]
   /// height(x, y) is, exactly, the height of sample i at y.
-  double flatRunEnd(Eigen::Index i) const { return stations_(flat_end_[static_cast<std::size_t>(i)]); }
+  double flatRunEnd(Eigen::Index i) const {
+    return stations_(flat_end_[static_cast<std::size_t>(i)]);
+  }
   /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
   double slope(double x, double y) const;
   /// Both: h = height(x, y), dhdx = slope(x, y) (the interface RoadExcitation samples).

@@ -44,8 +44,8 @@ class TerrainLines {
  private:
   struct Line {
     double y = 0.0;
-    Vector heights;  ///< h(x_i, y) [n_x]
-    Vector slopes;   ///< cell slopes [n_x - 1] (empty for a single station)
+    Vector heights;   ///< h(x_i, y) [n_x]
+    Vector slopes;    ///< cell slopes [n_x - 1] (empty for a single station)
     int profile = 0;  ///< index of the first line with the same heights
     /// sampleRun(): for a flat cell i (slope 0), the first station index j > i whose cell is
     /// not flat (n_x - 1: flat to the end).

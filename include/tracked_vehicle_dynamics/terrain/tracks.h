@@ -103,8 +103,8 @@ constexpr int kOopWavesPeriods = 10;
 constexpr double kOopWavesStart = 9.0;          ///< [m]
 constexpr double kOopWavesLateralOffset = 1.0;  ///< vehicle centreline at y_t = +1 m [m]
 
-constexpr double kHalfRoundCentre = 10.0;               ///< crest station xc [m]
-constexpr double kHalfRoundMaxHeight = 1.0;             ///< largest radius H accepted [m]
+constexpr double kHalfRoundCentre = 10.0;                ///< crest station xc [m]
+constexpr double kHalfRoundMaxHeight = 1.0;              ///< largest radius H accepted [m]
 constexpr const char* kHalfRoundPrefix = "half_round:";  ///< a half-round track's name is this + H
 
 /// Sampling of a built-in track; the defaults are the paper's.

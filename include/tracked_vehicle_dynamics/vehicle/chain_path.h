@@ -2,8 +2,9 @@
 // forward along the ground, up the front incline, around the front wheel, back along the top run,
 // around the rear wheel and down the rear incline. The front wheel is the idler and the rear one
 // the drive sprocket (rear drive, the paper's vehicle), or the other way round when the sprocket
-// stands ahead of the ground run (front drive, sprocket.centre_x > 0). Straight segments are tangent to the wheel
-// circles; the only corners are at the ends of the ground run, where an assembly joint lies.
+// stands ahead of the ground run (front drive, sprocket.centre_x > 0). Straight segments are
+// tangent to the wheel circles; the only corners are at the ends of the ground run, where an
+// assembly joint lies.
 #pragma once
 
 #include <vector>

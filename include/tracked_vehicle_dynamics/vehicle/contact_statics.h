@@ -27,14 +27,14 @@ namespace vehicle {
 std::vector<fem::UnilateralSpring> unilateralContacts(const VehicleModel& vehicle);
 
 struct ContactStatics {
-  VehicleModel vehicle;         ///< the model with the released contacts' normal stiffness 0
-  fem::System system;           ///< it, assembled
-  StaticSummary summary;        ///< its equilibrium (pad_loads 0 where a pad has lifted)
+  VehicleModel vehicle;            ///< the model with the released contacts' normal stiffness 0
+  fem::System system;              ///< it, assembled
+  StaticSummary summary;           ///< its equilibrium (pad_loads 0 where a pad has lifted)
   std::vector<bool> pad_lifted;    ///< per road input
   std::vector<bool> wheel_lifted;  ///< per road wheel: its patch has left the link
   /// Per VehicleLayout::chain_wheel_contacts: the link has left its sprocket, idler or roller.
   std::vector<bool> chain_wheel_released;
-  int iterations = 0;           ///< solves of the active-set iteration
+  int iterations = 0;  ///< solves of the active-set iteration
 };
 
 /// Of one side's contacts with one kind of chain wheel: how many there are, how many released.

@@ -29,31 +29,31 @@ namespace vehicle {
 
 /// The vertical ground reaction under one track assembly on the road.
 struct AssemblyGroundLoad {
-  int side = 0;          ///< 0 left (+y), 1 right (-y)
-  int assembly = 0;      ///< its position k (AssemblyRecord::index; model name track_<side>_<k>):
-                         ///< tracked 0 at the rear end of the ground run, un-tracked the axle
-  double x = 0.0;        ///< mean station of its road inputs [m]
-  double load = 0.0;     ///< sum of its road inputs' reactions [N] (positive: upwards)
-  double inner = 0.0;    ///< of which under the inner pad row (towards the hull centre line) [N]
-  double outer = 0.0;    ///< of which under the outer pad row [N]
-  double pressure = 0.0; ///< load / (track width x pitch) [Pa]
+  int side = 0;           ///< 0 left (+y), 1 right (-y)
+  int assembly = 0;       ///< its position k (AssemblyRecord::index; model name track_<side>_<k>):
+                          ///< tracked 0 at the rear end of the ground run, un-tracked the axle
+  double x = 0.0;         ///< mean station of its road inputs [m]
+  double load = 0.0;      ///< sum of its road inputs' reactions [N] (positive: upwards)
+  double inner = 0.0;     ///< of which under the inner pad row (towards the hull centre line) [N]
+  double outer = 0.0;     ///< of which under the outer pad row [N]
+  double pressure = 0.0;  ///< load / (track width x pitch) [Pa]
 };
 
 struct GroundPressure {
   /// Left side front to rear, then the right side front to rear.
   std::vector<AssemblyGroundLoad> assemblies;
-  double side_load[2] = {0.0, 0.0};   ///< sum per side [N]
-  double nominal_pressure = 0.0;      ///< NGP [Pa]
+  double side_load[2] = {0.0, 0.0};  ///< sum per side [N]
+  double nominal_pressure = 0.0;     ///< NGP [Pa]
   /// Rowland's empirical estimate of the mean maximum pressure, MMP [Pa] (the FE model's own
   /// figure is mean_peak_pressure).
   double rowland_mean_maximum_pressure = 0.0;
   /// Per road wheel (VehicleLayout::wheels order): the largest assembly pressure on its side within
   /// half an axle spacing of its centre's x [Pa].
   std::vector<double> wheel_peak_pressure;
-  std::vector<double> wheel_x;         ///< per road wheel: its centre's station [m]
-  double mean_peak_pressure = 0.0;    ///< their mean: the FE model's mean maximum pressure [Pa]
-  int peak = -1;                      ///< index into `assemblies` of the largest pressure
-  int lifting = 0;                    ///< assemblies with a downward (negative) reaction
+  std::vector<double> wheel_x;      ///< per road wheel: its centre's station [m]
+  double mean_peak_pressure = 0.0;  ///< their mean: the FE model's mean maximum pressure [Pa]
+  int peak = -1;                    ///< index into `assemblies` of the largest pressure
+  int lifting = 0;                  ///< assemblies with a downward (negative) reaction
 };
 
 /// Groups the static ground reactions by assembly and computes the pressures. `statics` must come

@@ -21,17 +21,17 @@ struct StaticSummary {
                                           ///< contact [N] (VehicleLayout::chain_wheel_contacts
                                           ///< order, positive: compression, the link pushing
                                           ///< the wheel)
-  std::vector<double> pad_loads;    ///< vertical ground reaction at each road input [N]
-                                    ///< (VehicleLayout::road_inputs order, positive: upwards)
+  std::vector<double> pad_loads;          ///< vertical ground reaction at each road input [N]
+                                          ///< (VehicleLayout::road_inputs order, positive: upwards)
   /// Vertical force of the sprockets, idlers and rollers on the chain, summed [N] (positive:
   /// up). The chain presses them, and so the hull, down by as much: with its own weight it is
   /// why the road-wheel loads need not sum to the weight. The chain's vertical balance,
   ///   ground_reaction + chain_wheel_vertical = sum(wheel_loads) + chain weight,
   /// holds to the static solve's tolerance. 0 for the un-tracked variant.
   double chain_wheel_vertical = 0.0;
-  double ground_reaction = 0.0;     ///< sum of the vertical ground reactions [N]
-  double weight = 0.0;              ///< total weight m g [N]
-  double residual = 0.0;            ///< ||K x - f|| / ||f|| of the static solve
+  double ground_reaction = 0.0;  ///< sum of the vertical ground reactions [N]
+  double weight = 0.0;           ///< total weight m g [N]
+  double residual = 0.0;         ///< ||K x - f|| / ||f|| of the static solve
 
   /// |ground_reaction - weight| / weight.
   double balanceError() const;

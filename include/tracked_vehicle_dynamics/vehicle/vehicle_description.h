@@ -126,7 +126,8 @@ struct ReturnRollerDescription {
   double mass = 0.0;      ///< each [kg]
 };
 
-/// Where along the path a pad ground node reads the road, u_q = h(s + x_q, y_q) (road_excitation.h).
+/// Where along the path a pad ground node reads the road, u_q = h(s + x_q, y_q)
+/// (road_excitation.h).
 enum class RoadInputStation {
   /// At its pad's centre: the three sole columns of a pad share one height, so a pad transmits
   /// every wavelength (no contact-length filter inside a pad). The paper's reading: its

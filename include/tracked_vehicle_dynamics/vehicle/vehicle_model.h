@@ -72,9 +72,9 @@ struct AssemblyRecord {
 struct RoadInput {
   NodeId node = 0;
   int side = 0;
-  int assembly = 0;        ///< index into VehicleLayout::assemblies
-  double x = 0.0;          ///< [m]
-  double y = 0.0;          ///< [m]
+  int assembly = 0;  ///< index into VehicleLayout::assemblies
+  double x = 0.0;    ///< [m]
+  double y = 0.0;    ///< [m]
   /// Where it reads the road [m]: x, or its pad's centre (ChainTieDescription::road_input_station).
   double road_x = 0.0;
   std::size_t spring = 0;  ///< index into Model::springs of its ground spring
@@ -141,7 +141,8 @@ struct VehicleModel {
 /// The road station of every ground input, in the order of the assembled system's inputs
 /// (fem::System::ground_inputs, which follow the model's ground springs). Throws std::logic_error
 /// when the two lists disagree.
-Vector roadInputStations(const VehicleLayout& layout, const std::vector<fem::DofRef>& ground_inputs);
+Vector roadInputStations(const VehicleLayout& layout,
+                         const std::vector<fem::DofRef>& ground_inputs);
 
 /// What a node of the model belongs to, for reports: "hull", "road_wheel_left_3 arm",
 /// "track assembly left 17 sole", "sprocket right", a named point's name, ... ("node N" when
