@@ -15,6 +15,18 @@
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
+const char* methodName(DiscretizationMethod method) {
+  return method == DiscretizationMethod::ModalDecoupled ? "modal" : "exact";
+}
+
+std::optional<DiscretizationMethod> methodFromName(const std::string& name) {
+  for (const DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled})
+    if (name == methodName(method))
+      return method;
+  return std::nullopt;
+}
+
 namespace {
 
 void checkOptions(const SecondOrderSystem& system, const SimulatorOptions& options) {

@@ -8,6 +8,17 @@
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
+const char* holdName(InputHold hold) {
+  return hold == InputHold::FirstOrder ? "first_order" : "zero_order";
+}
+
+std::optional<InputHold> holdFromName(const std::string& name) {
+  for (const InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder})
+    if (name == holdName(hold))
+      return hold;
+  return std::nullopt;
+}
+
 void validateStateSpace(const StateSpace& s) {
   const std::string where = "StateSpace";
   const DofIndex n = s.stateCount();

@@ -493,6 +493,13 @@ const char* modeRuleName(VehicleModeRule rule) {
   return rule == VehicleModeRule::Band ? "band" : "mac";
 }
 
+std::optional<VehicleModeRule> modeRuleFromName(const std::string& name) {
+  for (const VehicleModeRule rule : {VehicleModeRule::MacCorrelation, VehicleModeRule::Band})
+    if (name == modeRuleName(rule))
+      return rule;
+  return std::nullopt;
+}
+
 namespace {
 
 std::string number(double value, bool legacy) {
@@ -539,7 +546,10 @@ bool parseReductionKey(const std::string& key, vehicle::Variant* variant,
   if (name != "tracked" && name != "untracked")
     return false;
   const vehicle::Variant v = vehicle::parseVariant(name);
-  o.rule = std::string(rule) == "band" ? VehicleModeRule::Band : VehicleModeRule::MacCorrelation;
+  const std::optional<VehicleModeRule> named_rule = modeRuleFromName(rule);
+  if (!named_rule)
+    return false;
+  o.rule = *named_rule;
   // Exactly reductionKey()'s text (or the %.17g one of earlier versions): no other spelling,
   // every double to the last bit.
   const std::string legacy =

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -196,27 +197,15 @@ std::string defaultCacheDirectory() {
 }
 
 dynamics::DiscretizationMethod parseMethod(const std::string& text, const std::string& name) {
-  if (text == "modal")
-    return dynamics::DiscretizationMethod::ModalDecoupled;
-  if (text == "exact")
-    return dynamics::DiscretizationMethod::AugmentedExponential;
+  if (const std::optional<dynamics::DiscretizationMethod> method = dynamics::methodFromName(text))
+    return *method;
   throw ParameterError(name + ": unknown method '" + text + "' (modal or exact)");
 }
 
 dynamics::InputHold parseHold(const std::string& text, const std::string& name) {
-  if (text == "first_order")
-    return dynamics::InputHold::FirstOrder;
-  if (text == "zero_order")
-    return dynamics::InputHold::ZeroOrder;
+  if (const std::optional<dynamics::InputHold> hold = dynamics::holdFromName(text))
+    return *hold;
   throw ParameterError(name + ": unknown hold '" + text + "' (first_order or zero_order)");
-}
-
-const char* methodName(dynamics::DiscretizationMethod method) {
-  return method == dynamics::DiscretizationMethod::ModalDecoupled ? "modal" : "exact";
-}
-
-const char* holdName(dynamics::InputHold hold) {
-  return hold == dynamics::InputHold::FirstOrder ? "first_order" : "zero_order";
 }
 
 namespace {
@@ -352,13 +341,10 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
 
   reduction::VehicleReductionOptions& r = p.reduction_options;
   const std::string rule = in.string("reduction/rule", "mac");
-  if (rule == "mac") {
-    r.rule = reduction::VehicleModeRule::MacCorrelation;
-  } else if (rule == "band") {
-    r.rule = reduction::VehicleModeRule::Band;
-  } else {
+  const std::optional<reduction::VehicleModeRule> named_rule = reduction::modeRuleFromName(rule);
+  if (!named_rule)
     throw in.error("reduction/rule", "unknown rule '" + rule + "' (mac or band)");
-  }
+  r.rule = *named_rule;
   // The command line's ranges (vehicle_reduction.h).
   r.global_modes = in.integer("reduction/global_modes", r.global_modes, 1,
                               reduction::kMaxGlobalModes, reduction::kMaxGlobalModesReason);

@@ -68,8 +68,7 @@ reduction::VehicleReductionOptions ReductionFlags::options(const std::string& co
   if (mac_threshold_->count() > 0 && rule_ != "mac")
     throw InputError(command + ": --mac-threshold applies to --rule mac only");
   reduction::VehicleReductionOptions o = options_;
-  o.rule = rule_ == "band" ? reduction::VehicleModeRule::Band
-                           : reduction::VehicleModeRule::MacCorrelation;
+  o.rule = reduction::modeRuleFromName(rule_).value();  // CLI11 checked the name
   return o;
 }
 

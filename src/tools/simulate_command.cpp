@@ -259,8 +259,7 @@ void run(const SimulateOptions& opt) {
   dynamics::SimulatorOptions sim_options;
   sim_options.time_step = opt.dt;
   sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
-  sim_options.method = opt.method == "modal" ? dynamics::DiscretizationMethod::ModalDecoupled
-                                             : dynamics::DiscretizationMethod::AugmentedExponential;
+  sim_options.method = dynamics::methodFromName(opt.method).value();  // CLI11 checked the name
   sim_options.quantities = {dynamics::OutputQuantity::Displacement,
                             dynamics::OutputQuantity::Velocity,
                             dynamics::OutputQuantity::Acceleration};

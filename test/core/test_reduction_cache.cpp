@@ -150,3 +150,12 @@ TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
   EXPECT_EQ((cached.system.stiffness - computed.system.stiffness).cwiseAbs().maxCoeff(), 0.0);
   std::filesystem::remove_all(dir);
 }
+
+TEST(ReductionCache, ModeRuleNamesRoundTrip) {
+  for (const auto rule :
+       {tvd::reduction::VehicleModeRule::MacCorrelation, tvd::reduction::VehicleModeRule::Band})
+    EXPECT_EQ(tvd::reduction::modeRuleFromName(tvd::reduction::modeRuleName(rule)), rule);
+  EXPECT_STREQ(tvd::reduction::modeRuleName(tvd::reduction::VehicleModeRule::Band), "band");
+  for (const char* bad : {"", "MAC", "all", "band "})
+    EXPECT_FALSE(tvd::reduction::modeRuleFromName(bad).has_value()) << bad;
+}

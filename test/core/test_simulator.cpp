@@ -632,3 +632,20 @@ TEST(Simulator, HeldSeriesEqualsItsDenseSeries) {
   std::swap(unordered.channels[0].steps[0], unordered.channels[0].steps[1]);
   EXPECT_THROW(sim.simulate(unordered), InputError);
 }
+
+TEST(Simulator, MethodAndHoldNamesRoundTrip) {
+  // One name per variant, each parsed back to it; any other spelling is none (the callers name
+  // the option in their refusal).
+  for (const auto method : {dynamics::DiscretizationMethod::AugmentedExponential,
+                            dynamics::DiscretizationMethod::ModalDecoupled})
+    EXPECT_EQ(dynamics::methodFromName(dynamics::methodName(method)), method);
+  EXPECT_STREQ(dynamics::methodName(dynamics::DiscretizationMethod::ModalDecoupled), "modal");
+  EXPECT_STREQ(dynamics::methodName(dynamics::DiscretizationMethod::AugmentedExponential), "exact");
+  for (const auto hold : {dynamics::InputHold::ZeroOrder, dynamics::InputHold::FirstOrder})
+    EXPECT_EQ(dynamics::holdFromName(dynamics::holdName(hold)), hold);
+  EXPECT_STREQ(dynamics::holdName(dynamics::InputHold::FirstOrder), "first_order");
+  for (const char* bad : {"", "Modal", "exact ", "first order", "zero_order\n"}) {
+    EXPECT_FALSE(dynamics::methodFromName(bad).has_value()) << bad;
+    EXPECT_FALSE(dynamics::holdFromName(bad).has_value()) << bad;
+  }
+}

@@ -27,6 +27,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,12 @@ enum class DiscretizationMethod {
   /// (modal damping zeta_r = phi_r^T C phi_r / (2 omega_r)) otherwise. Much faster per step.
   ModalDecoupled,
 };
+
+/// "exact" (AugmentedExponential) or "modal" (ModalDecoupled): the method's name in command-line
+/// options, node parameters and reports.
+const char* methodName(DiscretizationMethod method);
+/// The method named by methodName()'s text; nullopt for any other text.
+std::optional<DiscretizationMethod> methodFromName(const std::string& name);
 
 struct SimulatorOptions {
   double time_step = 1e-3;  ///< h [s]

@@ -18,6 +18,7 @@
 //                 C = [-H M^-1 K  -H M^-1 C], D = [H M^-1 K_u  H M^-1 C_u], y0 = H M^-1 f_g.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,11 @@ enum class InputHold {
   /// e.g. a terrain profile sampled in space and interpolated linearly.
   FirstOrder,
 };
+
+/// "zero_order" or "first_order": the hold's name in node parameters and reports.
+const char* holdName(InputHold hold);
+/// The hold named by holdName()'s text; nullopt for any other text.
+std::optional<InputHold> holdFromName(const std::string& name);
 
 struct StateSpace {
   Matrix state_matrix;        ///< A [n_states x n_states]

@@ -3,6 +3,7 @@
 //   -> MoGeSeC master DOFs -> Craig-Bampton -> ReducedModel (cached as a .mat file).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ enum class VehicleModeRule {
 
 /// "mac" or "band": the rule's name in option values, reduction keys and reports.
 const char* modeRuleName(VehicleModeRule rule);
+/// The rule named by modeRuleName()'s text; nullopt for any other text.
+std::optional<VehicleModeRule> modeRuleFromName(const std::string& name);
 
 /// The reduction's aim below the band (paper §3.2: the reduced model's frequencies within 2 % of
 /// the full model's at worst): the default fixed-interface count is raised until it holds.

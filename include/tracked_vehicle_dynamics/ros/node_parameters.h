@@ -90,14 +90,10 @@ std::string defaultCacheDirectory();
 /// parameter for a missing ~vehicle, a wrong type or an out-of-range value.
 NodeParameters readParameters(const ros::NodeHandle& private_nh);
 
-/// "modal" / "exact" -> method; "first_order" / "zero_order" -> hold. Throw ParameterError.
+/// "modal" / "exact" -> method; "first_order" / "zero_order" -> hold (dynamics::methodName,
+/// dynamics::holdName: the inverse). Throw ParameterError naming the parameter `name`.
 dynamics::DiscretizationMethod parseMethod(const std::string& text, const std::string& name);
 dynamics::InputHold parseHold(const std::string& text, const std::string& name);
-
-/// The parameter values naming a method and a hold, the inverse of the two parsers
-/// (parseMethod(methodName(m), name) == m): for the start-up log and the diagnostics.
-const char* methodName(dynamics::DiscretizationMethod method);
-const char* holdName(dynamics::InputHold hold);
 
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics
