@@ -150,9 +150,13 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     const TerrainPatch patch = fromMsg(*msg);
     // Judged against the terrain before it is added (the step at its start), said once taken.
-    const std::vector<std::string> doubts = terrain::patchWarnings(
-        patch.start_station, patch.spacing, patch.lateral, patch.heights, vehicle_->terrain(),
-        flat_since_restart_ && vehicle_->terrain().empty());
+    const bool flat_ground = flat_since_restart_ && vehicle_->terrain().empty();
+    const std::vector<std::string> doubts =
+        terrain::patchWarnings(patch.start_station, patch.spacing, patch.lateral, patch.heights,
+                               vehicle_->terrain(), flat_ground);
+    const bool stepped = terrain::patchStep(patch.start_station, patch.lateral, patch.heights,
+                                            vehicle_->terrain(), flat_ground)
+                             .implausible();
     if (!vehicle_->addTerrain(patch)) {
       // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station
       // frame mistake. Said once per kWarnPeriod and counted, not taken for terrain.
@@ -196,6 +200,8 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
       for (const std::string& doubt : doubts)
         text << ": " << doubt;
       last_implausible_patch_ = text.str();
+      if (stepped)
+        stepped_patch_ = last_implausible_patch_;
       ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain %s", nodeName(), last_implausible_patch_.c_str());
     }
     if (use_sim_time_) {
@@ -304,8 +310,10 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
 int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terrain) {
   const int uncovered = vehicle_->resetTo(station, speed, terrain);
   // Cleared terrain means flat ground (u = 0) until a patch arrives, wherever the restart is.
-  if (terrain == ResetTerrain::Clear)
+  if (terrain == ResetTerrain::Clear) {
     flat_since_restart_ = true;
+    stepped_patch_.clear();  // the offset terrain is gone
+  }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   ++events_.resets;
   return uncovered;

@@ -103,6 +103,11 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   } else if (implausible > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches unlike ground (a step, slope or spacing): units or altitudes?");
+  } else if (!stepped_patch_.empty()) {
+    // The step's offset stays in every height after it: WARN until a reset clears the terrain.
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "terrain stepped off the ground since the start or reset (altitudes or units?): "
+                   "the outputs on it are offset until ~reset");
   } else if (narrow > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches narrower than the contacts: the outer ones read the edge lines");
@@ -117,6 +122,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("last narrow patch", last_narrow_patch_);
   status.add("patches unlike ground (total)", events_.patches_implausible);
   status.add("last patch unlike ground", last_implausible_patch_);
+  status.add("step off the ground since the start or reset",
+             stepped_patch_.empty() ? std::string("none") : stepped_patch_);
   status.add("patches behind the vehicle, dropped (total)", events_.patches_behind);
   status.add("last patch behind the vehicle", last_behind_patch_);
   status.add("steps with uncovered contacts (total)", events_.uncovered_steps);

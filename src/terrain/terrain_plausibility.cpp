@@ -79,29 +79,40 @@ std::vector<std::string> patchWarnings(double start, double spacing, const Vecto
   if (heights.cols() > 1 && spacing > kCoarsestPlausibleSpacing)
     warnings.push_back(spacingText(spacing));
   // The step a contact meets entering the patch: from what it reads (or holds) just before.
-  const bool has_terrain = !std::isnan(buffer.heightBefore(start, lateral(0)));
-  if (!has_terrain && !flat_ground)
-    return warnings;
-  double step = 0.0, reference = 0.0, at = 0.0;
-  for (Eigen::Index j = 0; j < lateral.size(); ++j) {
-    const double before = has_terrain ? buffer.heightBefore(start, lateral(j)) : 0.0;
-    if (std::abs(heights(j, 0) - before) > std::abs(step)) {
-      step = heights(j, 0) - before;
-      reference = before;
-      at = lateral(j);
-    }
-  }
-  if (std::abs(step) > kLargestPlausibleStep) {
+  const PatchStep step = patchStep(start, lateral, heights, buffer, flat_ground);
+  if (step.implausible()) {
+    const bool has_terrain = !std::isnan(buffer.heightBefore(start, lateral(0)));
     warnings.push_back(
-        "starts " + brief(std::abs(step)) + " m " + (step > 0 ? "above" : "below") + " " +
-        (has_terrain ? "the terrain before it (" + brief(reference) + " m"
+        "starts " + brief(std::abs(step.step)) + " m " + (step.step > 0 ? "above" : "below") + " " +
+        (has_terrain ? "the terrain before it (" + brief(step.reference) + " m"
                      : std::string("the flat ground the vehicle stands on since the start or "
                                    "reset (0 m")) +
-        " at y = " + brief(at) +
+        " at y = " + brief(step.lateral) +
         " m), a step no tracked vehicle drives: heights are relative to "
         "the ground plane of the start (z = 0), not altitudes?");
   }
   return warnings;
+}
+
+PatchStep patchStep(double start, const Vector& lateral, const Matrix& heights,
+                    const TerrainBuffer& buffer, bool flat_ground) {
+  PatchStep out;
+  if (lateral.size() == 0 || heights.rows() != lateral.size() || heights.cols() == 0 ||
+      !std::isfinite(start))
+    return out;
+  const bool has_terrain = !std::isnan(buffer.heightBefore(start, lateral(0)));
+  if (!has_terrain && !flat_ground)
+    return out;
+  out.known = true;
+  for (Eigen::Index j = 0; j < lateral.size(); ++j) {
+    const double before = has_terrain ? buffer.heightBefore(start, lateral(j)) : 0.0;
+    if (std::abs(heights(j, 0) - before) > std::abs(out.step)) {
+      out.step = heights(j, 0) - before;
+      out.reference = before;
+      out.lateral = lateral(j);
+    }
+  }
+  return out;
 }
 
 }  // namespace terrain

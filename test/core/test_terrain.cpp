@@ -212,6 +212,35 @@ TEST(TerrainPlausibility, AnOnlinePatchIsCheckedAgainstTheGroundBeforeIt) {
   EXPECT_EQ(w[0].rfind("sampled every 10 m", 0), 0u) << w[0];
 }
 
+TEST(TerrainPlausibility, PatchStepIsTheLargestLineStepFromTheGroundBefore) {
+  Vector y(2);
+  y << -2.0, 2.0;
+  TerrainBuffer buffer;
+  Matrix first = Matrix::Constant(2, 11, 0.2);
+  first(1, 0) = -1.3;  // the left line starts 1.3 m below the flat ground
+  terrain::PatchStep s = terrain::patchStep(0.0, y, first, buffer, true);
+  EXPECT_TRUE(s.known);
+  EXPECT_DOUBLE_EQ(s.step, -1.3);
+  EXPECT_DOUBLE_EQ(s.reference, 0.0);
+  EXPECT_DOUBLE_EQ(s.lateral, 2.0);
+  EXPECT_TRUE(s.implausible());
+  // Nothing to step from: unknown, never implausible.
+  s = terrain::patchStep(0.0, y, first, buffer, false);
+  EXPECT_FALSE(s.known);
+  EXPECT_FALSE(s.implausible());
+  // From the terrain before it, line by line: 0.9 m up on the right, within kLargestPlausibleStep.
+  buffer.addPatch(0.0, 0.1, y, Matrix::Constant(2, 11, 0.1));
+  Matrix next = Matrix::Constant(2, 5, 0.1);
+  next(0, 0) = 1.0;
+  s = terrain::patchStep(1.0, y, next, buffer, false);
+  EXPECT_TRUE(s.known);
+  EXPECT_NEAR(s.step, 0.9, 1e-12);
+  EXPECT_DOUBLE_EQ(s.lateral, -2.0);
+  EXPECT_FALSE(s.implausible());
+  // Wrong shapes are no step (addPatch refuses them).
+  EXPECT_FALSE(terrain::patchStep(1.0, y, Matrix::Constant(3, 5, 9.0), buffer, true).known);
+}
+
 TEST(Terrain, BilinearIsExactForBilinearSurfaces) {
   // h = a + b x + c y + d x y is reproduced exactly by bilinear interpolation.
   const auto surface = [](double x, double y) { return 0.1 + 0.2 * x - 0.3 * y + 0.05 * x * y; };

@@ -18,6 +18,7 @@
 #include <geometry_msgs/AccelStamped.h>
 #include <geometry_msgs/TwistStamped.h>
 #include <std_msgs/Float64.h>
+#include <std_srvs/Empty.h>
 #include <tf2_msgs/TFMessage.h>
 
 #include "node_test_utils.h"
@@ -194,8 +195,22 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.level(": terrain"),
             static_cast<int>(diagnostic_msgs::DiagnosticStatus::WARN));
+  // The step's offset stays in the terrain after it: named until a reset clears the terrain.
+  EXPECT_NE(diagnostics_.text(": terrain", "step off the ground since the start or reset")
+                .find("starts 250 m above"),
+            std::string::npos)
+      << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
+  std_srvs::Empty reset;
+  ASSERT_TRUE(ros::service::call("/vehicle_dynamics/reset", reset));
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.text(": terrain", "step off the ground since the start or reset") ==
+               "none";
+      },
+      5.0))
+      << diagnostics_.describe();
 }
 
 struct NodeRun {

@@ -206,6 +206,10 @@ class VehicleDynamicsNode {
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::vector<geometry_msgs::TransformStamped> pending_static_;  // until the first /clock
   bool flat_since_restart_ = true;  // no patch since the start or a reset that cleared the terrain
+  // The last patch taken since then that stepped more than terrain::kLargestPlausibleStep from
+  // the ground before it (empty: none): the terrain after it, and every output on it, sit that
+  // far off (absolute altitudes, units) until a reset clears the terrain.
+  std::string stepped_patch_;
   diagnostic_updater::Updater updater_;
 
   // Messages reused every publication.

@@ -5,6 +5,7 @@
 // the user is told.
 #pragma once
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,21 @@ std::vector<std::string> terrainWarnings(const std::string& name, const Terrain&
 std::vector<std::string> patchWarnings(double start, double spacing, const Vector& lateral,
                                        const Matrix& heights, const TerrainBuffer& buffer,
                                        bool flat_ground);
+
+/// The step a contact meets entering a patch (heights [n_y x n_x] on lines `lateral`) at its
+/// first station `start`: over the lines j, the largest |h(j, 0) - before_j|, before_j what the
+/// buffer reads just before `start` on that line (TerrainBuffer::heightBefore), or 0 with
+/// `flat_ground` when the buffer holds nothing at or before `start`.
+struct PatchStep {
+  bool known = false;      ///< false: nothing to step from (then the rest is 0)
+  double step = 0.0;       ///< h(j, 0) - before_j of the largest [m]
+  double reference = 0.0;  ///< before_j [m]
+  double lateral = 0.0;    ///< y_j [m]
+  /// |step| > kLargestPlausibleStep: the terrain after it sits that far off the ground before.
+  bool implausible() const { return known && std::abs(step) > kLargestPlausibleStep; }
+};
+PatchStep patchStep(double start, const Vector& lateral, const Matrix& heights,
+                    const TerrainBuffer& buffer, bool flat_ground);
 
 }  // namespace terrain
 }  // namespace tracked_vehicle_dynamics
