@@ -54,10 +54,9 @@
 #include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
-#include "tracked_vehicle_dynamics/ros/duration_statistics.h"
 #include "tracked_vehicle_dynamics/ros/network_thread_timer.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 

@@ -10,7 +10,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 

@@ -252,7 +252,8 @@ void VehicleDynamicsNode::diagnoseGroundContact(
                     static_cast<long>(interval.most_pulling));
   } else if (pads && run.groupsBeyondRange()) {
     status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
-                    "pads on the road since the last report (a pad lifted at t = %.3f s, station "
+                    "pads on the road since the last report (a pad lifted %.3f s after the start "
+                    "or reset, station "
                     "%.2f m)",
                     run.first_group_beyond_time, run.first_group_beyond_station);
   } else if (pads) {
@@ -266,9 +267,10 @@ void VehicleDynamicsNode::diagnoseGroundContact(
                     "on the road since the last report (a real vehicle would lift off there)",
                     static_cast<long>(interval.most_pulling));
   } else if (run.beyondRange()) {
-    status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
-                    "in range since the last report (left it at t = %.3f s, station %.2f m)",
-                    run.first_beyond_time, run.first_beyond_station);
+    status.summaryf(
+        diagnostic_msgs::DiagnosticStatus::OK,
+        "in range since the last report (left it %.3f s after the start or reset, station %.2f m)",
+        run.first_beyond_time, run.first_beyond_station);
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    "in range: every contact pressed at rest presses on the road");
@@ -292,7 +294,7 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   if (run.beyondRange()) {
     const dynamics::GroundContact& c =
         watch->contacts()[static_cast<std::size_t>(run.first_beyond_contact)];
-    status.add("first beyond the range: time [s]", run.first_beyond_time);
+    status.add("first beyond the range: time since the start or reset [s]", run.first_beyond_time);
     status.add("first beyond the range: station [m]", run.first_beyond_station);
     status.add("first beyond the range: road input",
                std::to_string(c.input) + " (" + dynamics::contactSideName(c.side) + ")");
@@ -311,7 +313,7 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   status.add("pads pulling now", static_cast<long>(now.groups_pulling));
   status.add("checks with a pad pulling (since the last start or reset)", run.checks_groups_beyond);
   if (run.groupsBeyondRange()) {
-    status.add("first pad pulling: time [s]", run.first_group_beyond_time);
+    status.add("first pad pulling: time since the start or reset [s]", run.first_group_beyond_time);
     status.add("first pad pulling: station [m]", run.first_group_beyond_station);
     status.add("first pad pulling: road inputs", padInputs(*watch, run.first_group_beyond));
   }

@@ -11,8 +11,8 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {

@@ -10,8 +10,8 @@
 #include "tracked_vehicle_dynamics/heap_reuse.h"
 #include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 

@@ -24,7 +24,7 @@
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 

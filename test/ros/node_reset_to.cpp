@@ -15,7 +15,7 @@
 #include "node_test_utils.h"
 #include "tracked_vehicle_dynamics/ResetVehicle.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 
 using namespace tracked_vehicle_dynamics;
 using namespace tracked_vehicle_dynamics::ros_layer;

@@ -16,7 +16,7 @@
 #include "tracked_vehicle_dynamics/reduction/contact_groups.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"

@@ -12,10 +12,9 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
-#include "tracked_vehicle_dynamics/ros/duration_statistics.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"

@@ -14,8 +14,7 @@
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {

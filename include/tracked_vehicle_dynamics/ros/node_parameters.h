@@ -10,7 +10,7 @@
 #include <ros/node_handle.h>
 
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {

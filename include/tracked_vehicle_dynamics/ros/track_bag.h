@@ -20,7 +20,7 @@
 #include <ros/time.h>
 
 #include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {

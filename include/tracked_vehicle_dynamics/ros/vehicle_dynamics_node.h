@@ -56,10 +56,9 @@
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
-#include "tracked_vehicle_dynamics/ros/duration_statistics.h"
 #include "tracked_vehicle_dynamics/ros/network_thread_timer.h"
 #include "tracked_vehicle_dynamics/ros/node_parameters.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/ros/online_names.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {

@@ -31,16 +31,16 @@
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_watch.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/online/road_input_sampler.h"
+#include "tracked_vehicle_dynamics/online/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
-#include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 #include "tracked_vehicle_dynamics/types.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 /// One patch of terrain as TerrainBuffer::addPatch takes it (the content of a TerrainProfile).
 struct TerrainPatch {
@@ -272,5 +272,5 @@ class OnlineVehicle {
   Vector watched_state_;
 };
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

@@ -44,7 +44,7 @@
 #include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 /// A child frame's pose in its parent: p_parent = rotation * p_child + translation.
 struct RigidPose {
@@ -106,5 +106,5 @@ Vector3 rigidPointAcceleration(const Vector3& cog, const Vector6& hull_displacem
 /// an accelerometer there reads (sensor_msgs/Imu linear_acceleration, REP-145).
 Vector3 specificForce(const Eigen::Quaterniond& rotation, const Vector3& acceleration);
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

@@ -32,7 +32,7 @@
 #include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 class RoadInputSampler {
  public:
@@ -95,5 +95,5 @@ class RoadInputSampler {
   std::uint64_t lookup_revision_ = 0;
 };
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

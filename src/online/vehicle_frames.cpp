@@ -1,10 +1,10 @@
-#include "tracked_vehicle_dynamics/ros/vehicle_frames.h"
+#include "tracked_vehicle_dynamics/online/vehicle_frames.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 Eigen::Quaterniond rotationFromRollPitchYaw(double roll, double pitch, double yaw) {
   return Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Vector3::UnitZ()) *
@@ -122,5 +122,5 @@ Vector3 specificForce(const Eigen::Quaterniond& rotation, const Vector3& acceler
   return rotation.conjugate() * (acceleration + Vector3(0.0, 0.0, kStandardGravity));
 }
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

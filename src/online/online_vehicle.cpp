@@ -1,4 +1,4 @@
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
+#include "tracked_vehicle_dynamics/online/online_vehicle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 namespace {
 
 const char* const kHullOutputs[6] = {"hull ux", "hull uy", "hull uz",
@@ -317,7 +317,7 @@ Vector6 OnlineVehicle::block(const std::vector<Eigen::Index>& rows, Eigen::Index
 }
 
 RigidPose OnlineVehicle::hullPose() const {
-  return ros_layer::hullPose(station_, geometry_.cog, hullDisplacement());
+  return online::hullPose(station_, geometry_.cog, hullDisplacement());
 }
 
 const std::vector<WheelState>& OnlineVehicle::wheels() const {
@@ -366,5 +366,5 @@ Vector3 OnlineVehicle::pointAcceleration(std::size_t i) const {
          Vector3(travel_acceleration_, 0.0, 0.0);
 }
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

@@ -1,10 +1,10 @@
-#include "tracked_vehicle_dynamics/ros/duration_statistics.h"
+#include "tracked_vehicle_dynamics/online/duration_statistics.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 void DurationStatistics::add(double seconds) {
   const double s = std::isfinite(seconds) ? std::max(seconds, 0.0) : 0.0;
@@ -39,5 +39,5 @@ double DurationStatistics::percentile(double fraction) const {
   return max_;
 }
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

@@ -7,7 +7,7 @@
 #include <cstdint>
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 class DurationStatistics {
  public:
@@ -35,5 +35,5 @@ class DurationStatistics {
   double max_ = 0.0;
 };
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

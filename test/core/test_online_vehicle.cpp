@@ -11,17 +11,17 @@
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/online/online_vehicle.h"
+#include "tracked_vehicle_dynamics/online/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
-#include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
-#include "../core/count_allocations.h"
-#include "../core/expect_input_error.h"
+#include "count_allocations.h"
+#include "expect_input_error.h"
 
 using namespace tracked_vehicle_dynamics;
-using namespace tracked_vehicle_dynamics::ros_layer;
+using namespace tracked_vehicle_dynamics::online;
 
 namespace {
 

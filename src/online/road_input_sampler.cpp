@@ -1,4 +1,4 @@
-#include "tracked_vehicle_dynamics/ros/road_input_sampler.h"
+#include "tracked_vehicle_dynamics/online/road_input_sampler.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 
 RoadInputSampler::RoadInputSampler(const Vector& stations, const Vector& lateral,
                                    std::vector<bool> needs_rate)
@@ -152,5 +152,5 @@ void RoadInputSampler::setHeld(const Vector& heights) {
   held_ = heights;
 }
 
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics

@@ -5,11 +5,11 @@
 // input below it, so C_u != 0 and the road rate u' matters.
 #pragma once
 
+#include "tracked_vehicle_dynamics/online/online_vehicle.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
-#include "tracked_vehicle_dynamics/ros/online_vehicle.h"
 
 namespace tracked_vehicle_dynamics {
-namespace ros_layer {
+namespace online {
 namespace test {
 
 struct ToyVehicle {
@@ -93,5 +93,5 @@ inline VehicleGeometry toyGeometry() {
 }
 
 }  // namespace test
-}  // namespace ros_layer
+}  // namespace online
 }  // namespace tracked_vehicle_dynamics
