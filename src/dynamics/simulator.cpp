@@ -16,7 +16,13 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
 const char* methodName(DiscretizationMethod method) {
-  return method == DiscretizationMethod::ModalDecoupled ? "modal" : "exact";
+  switch (method) {  // no default: a new method without a name is a compiler warning
+    case DiscretizationMethod::AugmentedExponential:
+      return "exact";
+    case DiscretizationMethod::ModalDecoupled:
+      return "modal";
+  }
+  return "?";
 }
 
 std::optional<DiscretizationMethod> methodFromName(const std::string& name) {

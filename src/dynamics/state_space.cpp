@@ -9,7 +9,13 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
 const char* holdName(InputHold hold) {
-  return hold == InputHold::FirstOrder ? "first_order" : "zero_order";
+  switch (hold) {  // no default: a new hold without a name is a compiler warning
+    case InputHold::ZeroOrder:
+      return "zero_order";
+    case InputHold::FirstOrder:
+      return "first_order";
+  }
+  return "?";
 }
 
 std::optional<InputHold> holdFromName(const std::string& name) {

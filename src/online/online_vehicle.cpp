@@ -145,9 +145,16 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
                      " contact groups for " + std::to_string(sampler_.size()) + " road inputs");
   try {
     std::vector<dynamics::GroundContact> contacts = dynamics::groundContacts(model.system);
-    if (!contact_groups.empty())
+    if (!contact_groups.empty()) {
+      int next = *std::max_element(contact_groups.begin(), contact_groups.end()) + 1;
       for (dynamics::GroundContact& c : contacts)
         c.group = contact_groups[static_cast<std::size_t>(c.input)];
+      // A contact on no pad is watched as a pad of its own: its pulling is never taken for a
+      // pad rocking on its soles.
+      for (dynamics::GroundContact& c : contacts)
+        if (c.group < 0)
+          c.group = next++;
+    }
     std::vector<DofIndex> rows;
     std::vector<DofIndex> index_of(static_cast<std::size_t>(simulator_.stateCount() / 2), -1);
     for (dynamics::GroundContact& c : contacts) {

@@ -490,7 +490,13 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
 }
 
 const char* modeRuleName(VehicleModeRule rule) {
-  return rule == VehicleModeRule::Band ? "band" : "mac";
+  switch (rule) {  // no default: a new rule without a name is a compiler warning
+    case VehicleModeRule::MacCorrelation:
+      return "mac";
+    case VehicleModeRule::Band:
+      return "band";
+  }
+  return "?";
 }
 
 std::optional<VehicleModeRule> modeRuleFromName(const std::string& name) {

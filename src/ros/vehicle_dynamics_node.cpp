@@ -34,6 +34,15 @@ constexpr double kRewindWindow = 0.25;
 // Publisher queues hold at least this many messages; more when one tick may publish more.
 constexpr std::uint32_t kMinQueue = 10;
 
+// "patch at x = 12 m: <doubt>: <doubt>" (terrain::patchWarnings' texts, which do not name it).
+std::string patchDoubts(const TerrainPatch& patch, const std::vector<std::string>& doubts) {
+  std::ostringstream text;
+  text << "patch at x = " << patch.start_station << " m";
+  for (const std::string& doubt : doubts)
+    text << ": " << doubt;
+  return text.str();
+}
+
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
@@ -195,11 +204,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     }
     if (!doubts.empty()) {
       ++events_.patches_implausible;
-      std::ostringstream text;
-      text << "patch at x = " << patch.start_station << " m";
-      for (const std::string& doubt : doubts)
-        text << ": " << doubt;
-      last_implausible_patch_ = text.str();
+      last_implausible_patch_ = patchDoubts(patch, doubts);
       if (stepped)
         stepped_patch_ = last_implausible_patch_;
       ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain %s", nodeName(), last_implausible_patch_.c_str());
@@ -364,7 +369,18 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
     if (std::abs((stamp - now).toSec()) >= std::abs((stamp - recent.ros_arrival).toSec()))
       continue;
     try {
-      vehicle_->addTerrain(fromMsg(*recent.msg));
+      const TerrainPatch patch = fromMsg(*recent.msg);
+      // Judged again against the restarted vehicle's flat ground: a loop of absolute altitudes
+      // steps off it as the first loop did.
+      const bool flat_ground = flat_since_restart_ && vehicle_->terrain().empty();
+      if (terrain::patchStep(patch.start_station, patch.lateral, patch.heights, vehicle_->terrain(),
+                             flat_ground)
+              .implausible())
+        stepped_patch_ = patchDoubts(patch, terrain::patchWarnings(
+                                                patch.start_station, patch.spacing, patch.lateral,
+                                                patch.heights, vehicle_->terrain(), flat_ground)) +
+                         " (re-applied after the time jump back)";
+      vehicle_->addTerrain(patch);
       flat_since_restart_ = false;
       ++events_.patches_reapplied;
     } catch (const std::exception& e) {  // accepted once, so not expected

@@ -2,6 +2,8 @@
 // contact), filled by diagnostic_updater every ~diagnostic_period from what the node has counted.
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -203,18 +205,26 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
 
 namespace {
 
-// A pad by its soles' road inputs and side: "12, 13, 14, 15 (left)".
-std::string padInputs(const dynamics::GroundContactWatch& watch, int group) {
+// A pad by its side and station in base_link (the mean of its soles' x_q) and, for the model's
+// files, its road inputs: "left pad at x = 1.86 m (road inputs 12, 13, 14, 15)".
+std::string padName(const dynamics::GroundContactWatch& watch, int group, const Vector& stations) {
   std::string inputs;
+  double x = 0.0;
+  int soles = 0;
   for (const dynamics::GroundContact& c : watch.contacts())
-    if (c.group == group)
+    if (c.group == group) {
       inputs += (inputs.empty() ? "" : ", ") + std::to_string(c.input);
+      x += stations(c.input);
+      ++soles;
+    }
   const DofIndex first = watch.groupContact(group);
-  if (first >= 0)
-    inputs += std::string(" (") +
-              dynamics::contactSideName(watch.contacts()[static_cast<std::size_t>(first)].side) +
-              ")";
-  return inputs;
+  if (first < 0 || soles == 0)
+    return "pad " + std::to_string(group);
+  std::ostringstream text;
+  text << dynamics::contactSideName(watch.contacts()[static_cast<std::size_t>(first)].side)
+       << " pad at x = " << std::setprecision(4) << x / soles << " m (road inputs " << inputs
+       << ")";
+  return text.str();
 }
 
 }  // namespace
@@ -315,7 +325,8 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   if (run.groupsBeyondRange()) {
     status.add("first pad pulling: time since the start or reset [s]", run.first_group_beyond_time);
     status.add("first pad pulling: station [m]", run.first_group_beyond_station);
-    status.add("first pad pulling: road inputs", padInputs(*watch, run.first_group_beyond));
+    status.add("first pad pulling: pad",
+               padName(*watch, run.first_group_beyond, vehicle_->sampler().stations()));
   }
 }
 

@@ -4,6 +4,7 @@
 // rest, of the records since the restart and per interval; refusals.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -245,29 +246,33 @@ TEST(GroundContactWatch, APadPullsOnlyWhenTheSumOfItsSolesDoes) {
 TEST(GroundContactWatch, PadRecordsAgreeWithTheOfflineMonitor) {
   // Random sole forces, checked one sample at a time by the watch (F_i = -k q_i with u = 0) and
   // handed whole to GroundContactMonitor: the same first whole-pad departure, the same count of
-  // samples with one. Seven contacts: pads {0, 1, 2}, {3, 4}, {6}; contact 5 on none.
+  // samples with one. Eight contacts: pads {0, 1, 2}, {3, 4}, {6}, {7}; contact 5 on none. Pad 3
+  // (contact 7) pulls at rest and throughout: the watch leaves it out of its counts and minimum,
+  // the monitor counts it among the pads pulling at once.
   std::vector<GroundContact> contacts;
-  const int group_of[] = {0, 0, 0, 1, 1, -1, 2};
-  for (DofIndex i = 0; i < 7; ++i) {
+  const int group_of[] = {0, 0, 0, 1, 1, -1, 2, 3};
+  for (DofIndex i = 0; i < 8; ++i) {
     contacts.push_back(contact(i, i, 1e5, 0.0, i < 3 ? 1.0 : -1.0));
     contacts.back().group = group_of[i];
   }
   const long samples = 400;
   std::mt19937 rng(7);
   std::normal_distribution<double> noise(0.0, 1.0);
-  Matrix forces(samples, 7);
-  for (long k = 0; k < samples; ++k)
+  Matrix forces(samples, 8);
+  for (long k = 0; k < samples; ++k) {
     for (int i = 0; i < 7; ++i)  // pressed at rest by 1 kN; later samples wander by ~0.6 kN
       forces(k, i) = k == 0 ? 1e3 : 1e3 + 600.0 * noise(rng) - 3.0 * static_cast<double>(k);
+    forces(k, 7) = -2e5;  // below every other force: the monitor's minimum, not the watch's
+  }
   const Vector times = Vector::LinSpaced(samples, 0.0, 0.02 * static_cast<double>(samples - 1));
   const Vector stations = 3.0 * times;
   dynamics::GroundContactMonitor monitor(contacts);
   monitor.add(forces, times, stations);
-  GroundContactWatch watch(contacts, 7);
-  const Vector w = Vector::Zero(14);
-  Vector z = Vector::Zero(14);
+  GroundContactWatch watch(contacts, 8);
+  const Vector w = Vector::Zero(16);
+  Vector z = Vector::Zero(16);
   for (long k = 0; k < samples; ++k) {
-    z.head(7) = -forces.row(k).transpose() / 1e5;
+    z.head(8) = -forces.row(k).transpose() / 1e5;
     if (k == 0)
       watch.restart(times(k), z, w);
     else
@@ -281,9 +286,19 @@ TEST(GroundContactWatch, PadRecordsAgreeWithTheOfflineMonitor) {
   EXPECT_EQ(run.first_group_beyond, s.first_new_group_tension);
   EXPECT_DOUBLE_EQ(run.first_group_beyond_time, s.first_new_group_tension_time);
   EXPECT_DOUBLE_EQ(run.first_group_beyond_station, s.first_new_group_tension_station);
-  EXPECT_EQ(run.most_groups_pulling, s.max_groups_in_tension);  // none pulled at rest
-  EXPECT_DOUBLE_EQ(run.min_group_force, s.min_group_force);
-  EXPECT_EQ(run.min_group, s.min_group);
+  EXPECT_EQ(watch.groupsPullingAtRest(), 1);
+  EXPECT_EQ(s.groups_in_tension_at_rest, 1);
+  EXPECT_EQ(run.most_groups_pulling + 1, s.max_groups_in_tension);  // + the one pulling at rest
+  EXPECT_DOUBLE_EQ(s.min_group_force, -2e5);
+  EXPECT_EQ(s.min_group, 3);
+  EXPECT_GT(run.min_group_force, -2e5);  // among the pads pressed at rest only
+  EXPECT_NE(run.min_group, 3);
+  // Their minimum is the lowest pad total pressed at rest over the checks.
+  double lowest = INFINITY;
+  for (long k = 1; k < samples; ++k)
+    lowest = std::min({lowest, forces(k, 0) + forces(k, 1) + forces(k, 2),
+                       forces(k, 3) + forces(k, 4), forces(k, 6)});
+  EXPECT_DOUBLE_EQ(run.min_group_force, lowest);
   EXPECT_EQ(run.checks_beyond, s.new_tension_samples);
 }
 

@@ -682,6 +682,27 @@ TEST(OnlineVehicle, ContactGroupsMakeTheWatchsPads) {
   EXPECT_EQ(watch->sinceRestart().checks_groups_beyond, pad_pulls);
   EXPECT_LE(pad_pulls, sole_pulls);  // a pad pulls only when a sole does
 
+  // Each tyre a pad of its own (the second given none: watched as its own pad): a pad pulls
+  // exactly when its tyre does, at the same checks.
+  OnlineVehicle single(test::toyModel(), test::toyGeometry(),
+                       options(dynamics::DiscretizationMethod::ModalDecoupled), {0, -1});
+  dynamics::GroundContactWatch* own = single.groundContactWatch();
+  ASSERT_NE(own, nullptr);
+  ASSERT_EQ(own->groupCount(), 2);
+  for (const TerrainPatch& p : patches(bump(), 50))
+    single.addTerrain(p);
+  single.setSpeed(15.0);
+  long tyre_pulls = 0;
+  for (int k = 0; k < 600; ++k) {
+    single.step();
+    single.checkGroundContact();
+    EXPECT_EQ(own->now().groups_pulling, own->now().pulling) << k;
+    tyre_pulls += own->now().pulling > 0;
+  }
+  EXPECT_GT(tyre_pulls, 0);
+  EXPECT_EQ(own->sinceRestart().checks_groups_beyond, tyre_pulls);
+  EXPECT_EQ(own->sinceRestart().first_group_beyond_time, own->sinceRestart().first_beyond_time);
+
   expectInputError(
       [] { OnlineVehicle(test::toyModel(), test::toyGeometry(), {}, std::vector<int>{0}); },
       "1 contact groups for 2 road inputs");

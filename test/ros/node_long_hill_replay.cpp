@@ -282,6 +282,7 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
 
   // The offline reference, on the node's own cached model.
   const auto [model, geometry, pads] = test::nodeModel(private_nh_);
+  ASSERT_FALSE(pads.empty()) << "the node's model has no pads";
   const terrain::Terrain track = terrain::makeTrack(track_name);
   const Reference ref = offlineRun(model, geometry, track, v, rate, max_station_, method, hold,
                                    lateral_offset, imu_point_, pads);
@@ -395,7 +396,6 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
 
   // Whole pads (the node groups the soles by track assembly): the same, a pad's force the sum of
   // its soles'; the hill lifts a whole pad too (README, Ground contact).
-  ASSERT_FALSE(pads.empty());
   EXPECT_EQ(diagnostics_.value(": ground contact", "pads"),
             static_cast<double>(*std::max_element(pads.begin(), pads.end()) + 1));
   ASSERT_GE(ref.first_pad_beyond, 0) << "no whole pad pulls offline";

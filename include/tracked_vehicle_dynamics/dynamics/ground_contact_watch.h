@@ -16,8 +16,9 @@
 // reduction::groupContactsByAssembly), each group's force is the sum of its contacts' and is
 // watched the same way: a sole can pull while its pad as a whole presses (the pad carries its
 // moments as opposite forces on its soles and would rock onto an edge), but a pad pressed at rest
-// whose total pulls would leave the road. On the tracked model the least-loaded sole carries 78 N
-// at rest, so single soles pull on a road a few millimetres rough; whole pads do not.
+// whose total pulls would leave the road. Single soles pull first (the tracked model's
+// least-loaded sole carries 78 N at rest), but on real roads whole pads follow: on an ISO 8608
+// class A road at 30 km/h whole tracked pads pull too (doc/ros_node.md).
 //
 // Cost per check: O(n_contacts) on a state the caller provides: the full [q; q'], or only the
 // contacts' coordinates with the contacts numbering them (the node: Simulator::coordinates(),

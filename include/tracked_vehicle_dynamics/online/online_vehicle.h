@@ -118,9 +118,9 @@ class OnlineVehicle {
   /// "<wheel> uz", "<point> ux|uy|uz"), the comfort point is unknown, or the options are invalid
   /// (rate <= 0, ...); SolverError from the simulator or the static equilibrium.
   /// contact_groups: per road input of the model, the pad (track assembly) its contact belongs
-  /// to, numbered from 0 (-1: none), for the ground-contact check's whole-pad records
-  /// (reduction::groupContactsByAssembly gives them); empty: no pads. Throws InputError when it
-  /// is neither empty nor one per road input.
+  /// to, numbered from 0 (-1: none, watched as a pad of its own), for the ground-contact check's
+  /// whole-pad records (reduction::roadInputGroups gives them); empty: no pads. Throws InputError
+  /// when it is neither empty nor one per road input.
   OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,
                 const OnlineVehicleOptions& options = {},
                 const std::vector<int>& contact_groups = {});
