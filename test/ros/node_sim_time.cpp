@@ -160,7 +160,20 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   EXPECT_NEAR(last_.station - station_before, speed * catch_up_limit, kStation);
 
   // Time going backwards (a bag loop): reset to station 0 at the new time (the node restarts on
-  // the /clock message itself).
+  // the /clock message itself). Just before it, the next loop's first patch arrives, stamped at
+  // the new time and in absolute altitudes (250 m): re-applied after the restart, it is judged
+  // against the restarted vehicle's flat ground and named until a reset clears it.
+  TerrainPatch altitudes;
+  altitudes.start_station = 30.0;
+  altitudes.spacing = 0.05;
+  altitudes.lateral = Vector::LinSpaced(11, -2.5, 2.5);
+  altitudes.heights = Matrix::Constant(11, 101, 250.0);
+  TerrainProfile next_loop;
+  toMsg(altitudes, &next_loop);
+  next_loop.header.frame_id = "odom";
+  next_loop.header.stamp = t0;
+  terrain_pub_.publish(next_loop);
+  test::spinFor(0.05);  // within the node's 0.25 s rewind window
   t = t0;
   setClock(t);
   test::spinFor(0.05);
@@ -169,6 +182,17 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   EXPECT_EQ(last_.station, 0.0);
   for (const auto& w : last_.wheels)
     EXPECT_NEAR(w.displacement, 0.0, kEquilibrium) << w.name;
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.text(": terrain", "step off the ground since the start or reset")
+                       .find("starts 250 m above the flat ground") != std::string::npos &&
+               diagnostics_.value(": loop", "patches re-applied after a jump back (total)") >= 1;
+      },
+      5.0))
+      << diagnostics_.describe();
+  EXPECT_NE(diagnostics_.text(": terrain", "step off the ground since the start or reset")
+                .find("re-applied after the time jump back"),
+            std::string::npos);
 
   // And it runs on from there (speed is zero after the reset until a new speed message).
   speed_pub_.publish(v);
@@ -187,6 +211,13 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   std_srvs::Empty reset;
   ASSERT_TRUE(ros::service::call("/vehicle_dynamics/reset", reset));
   test::spinFor(0.2);  // anything the reset publishes arrives
+  EXPECT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.text(": terrain", "step off the ground since the start or reset") ==
+               "none";
+      },
+      5.0))
+      << diagnostics_.describe();
   // The reset state goes out with the next sample, at a new stamp; nothing is published at the
   // stamp already used.
   EXPECT_EQ(messages_, before_reset);
