@@ -250,7 +250,15 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   // pad rocks onto an edge, which on the tracked model (78 N on the least-loaded sole at rest)
   // a road a few millimetres rough does (ground_contact_watch.h).
   const bool pads = watch->groupCount() > 0;
-  if (pads && interval.groupsBeyondRange()) {
+  // No check since the last report (simulated time paused): the state is the last check's, so
+  // is its verdict.
+  const long pulling_now = pads ? now.groups_pulling : static_cast<long>(now.pulling);
+  if (interval.checks == 0 && run.checks > 0 && pulling_now > 0) {
+    status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
+                    "beyond the linear model's range at the last check: %ld %s pressed at rest "
+                    "pulling (no check since the last report: time paused?)",
+                    pulling_now, pads ? "pads" : "contacts");
+  } else if (pads && interval.groupsBeyondRange()) {
     status.summaryf(diagnostic_msgs::DiagnosticStatus::WARN,
                     "beyond the linear model's range: up to %d pads pressed at rest pulled on the "
                     "road as a whole since the last report (a real vehicle would lift them off)",
