@@ -353,6 +353,14 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   restart();
   sample_time_ = now;
   reapplyRecentInputs(now);
+  if (now.isZero()) {
+    // Back to time 0 (a simulator's world reset): ROS time 0 means "no time yet", as before the
+    // first /clock. The vehicle waits at rest and its first sample is stamped when the clock
+    // runs again, not 0.0.
+    clock_started_ = false;
+    updater_.force_update();
+    return;
+  }
   publishState();
   updater_.force_update();
 }

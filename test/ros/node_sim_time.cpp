@@ -46,6 +46,8 @@ class NodeSimTime : public ::testing::Test {
   void onWheels(const RoadWheels::ConstPtr& msg) {
     if (messages_ == 0)
       first_stamp_ = msg->header.stamp;
+    if (msg->header.stamp.isZero())
+      ++zero_stamps_;
     if (messages_ > 0 && msg->header.stamp == last_.header.stamp)
       ++repeated_wheel_stamps_;
     last_ = *msg;
@@ -85,6 +87,7 @@ class NodeSimTime : public ::testing::Test {
   std::size_t messages_ = 0, non_finite_ = 0;
   ros::Time last_tf_stamp_;
   std::size_t tf_messages_ = 0, repeated_wheel_stamps_ = 0, repeated_tf_stamps_ = 0;
+  std::size_t zero_stamps_ = 0;  // samples stamped 0.0 ("no time" in ROS)
 };
 
 // Before the first /clock, ROS time stands at 0 and diagnostic_updater (on ROS time) would say
@@ -269,6 +272,26 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
       },
       10.0))
       << diagnostics_.describe();
+
+  // The clock reset to 0 (a simulator's world reset): the vehicle restarts, publishes nothing
+  // stamped 0.0 ("no time"), says it waits for the clock, and its first sample is stamped when
+  // the clock runs again, at station 0.
+  const std::size_t before_zero = messages_;
+  setClock(ros::Time(0.0));
+  EXPECT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.describe().find("loop [1] waiting for ROS time (/clock)") !=
+               std::string::npos;
+      },
+      5.0))
+      << diagnostics_.describe();
+  EXPECT_EQ(messages_, before_zero);
+  ASSERT_TRUE(advanceTo(ros::Time(3.0)));
+  EXPECT_EQ(last_.station, 0.0);
+  EXPECT_EQ(zero_stamps_, 0u);
+  t = ros::Time(3.0) + ros::Duration(0.01);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_EQ(zero_stamps_, 0u);
 }
 
 }  // namespace
