@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "tracked_vehicle_dynamics/io/file_type.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 #include <unistd.h>
 
@@ -146,6 +147,19 @@ inline CLI::Validator outputDirectory() {
         return std::string();
       },
       "DIR");
+}
+
+/// --vehicle FILE, required and existing: the vehicle description every vehicle command reads.
+inline CLI::Option* addVehicleOption(CLI::App* cmd, std::string* file,
+                                     const std::string& help = "vehicle description") {
+  return cmd->add_option("--vehicle", *file, help)->required()->check(CLI::ExistingFile);
+}
+
+/// --variant untracked | tracked (vehicle::variantName's names), with `help`.
+inline CLI::Option* addVariantOption(CLI::App* cmd, std::string* variant, const std::string& help) {
+  return cmd->add_option("--variant", *variant, help)
+      ->check(CLI::IsMember({vehicle::variantName(vehicle::Variant::Untracked),
+                             vehicle::variantName(vehicle::Variant::Tracked)}));
 }
 
 void registerModesCommand(CLI::App& app);

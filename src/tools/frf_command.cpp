@@ -318,12 +318,9 @@ void registerFrfCommand(CLI::App& app) {
       "frf",
       "Acceleration FRFs per unit road height (hull vertical/pitch, front/rear wheel, "
       "named points)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addVehicleOption(cmd, &opt->vehicle_file);
   CLI::Option* variant =
-      cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
-          ->check(CLI::IsMember({"untracked", "tracked"}));
+      addVariantOption(cmd, &opt->variant, "untracked | tracked (with --reduced: the file's)");
   cmd->add_option("--model", opt->model,
                   "reduced (Craig-Bampton: cached with the reduction options, or --reduced FILE) | "
                   "full (FE modes + static residual)")

@@ -216,9 +216,7 @@ void registerMacCommand(CLI::App& app) {
   auto opt = std::make_shared<MacOptions>();
   CLI::App* cmd = app.add_subcommand(
       "mac", "MAC between the un-tracked and tracked variants and their correlation (Table 4)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addVehicleOption(cmd, &opt->vehicle_file);
   // Both variants' modes, as the reduction's --global-modes: the same limit.
   cmd->add_option("--count,-n", opt->count,
                   "modes of each variant, 1 .. " + std::to_string(reduction::kMaxGlobalModes) +

@@ -227,8 +227,7 @@ void registerModesCommand(CLI::App& app) {
                       ->check(CLI::ExistingFile);
   model->excludes(vehicle);
   CLI::Option* variant =
-      cmd->add_option("--variant", opt->variant, "vehicle variant: untracked | tracked")
-          ->check(CLI::IsMember({"untracked", "tracked"}));
+      addVariantOption(cmd, &opt->variant, "vehicle variant: untracked | tracked");
   // At most 500: one variant's modes (the MAC and the reduction solve both: at most 200).
   cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")
       ->check(CLI::Range(1, 500));

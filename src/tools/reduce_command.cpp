@@ -186,11 +186,8 @@ void registerReduceCommand(CLI::App& app) {
   auto opt = std::make_shared<ReduceOptions>();
   CLI::App* cmd =
       app.add_subcommand("reduce", "Craig-Bampton reduction of a vehicle (MAC + MoGeSeC)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--variant", opt->variant, "untracked | tracked")
-      ->check(CLI::IsMember({"untracked", "tracked"}));
+  addVehicleOption(cmd, &opt->vehicle_file);
+  addVariantOption(cmd, &opt->variant, "untracked | tracked");
   opt->reduction_flags.addTo(cmd);
   cmd->add_flag("--json", opt->json, "print a JSON document");
   cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")

@@ -291,12 +291,9 @@ void registerRideCommand(CLI::App& app) {
       "Ride-limiting speeds: absorbed power and peak acceleration over a speed sweep (6 W / 2.5 "
       "g), simulated "
       "over a --track, or the absorbed power spectrally on an ISO 8608 class (--iso8608)");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addVehicleOption(cmd, &opt->vehicle_file);
   CLI::Option* variant =
-      cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
-          ->check(CLI::IsMember({"untracked", "tracked"}));
+      addVariantOption(cmd, &opt->variant, "untracked | tracked (with --reduced: the file's)");
   CLI::Option* track = cmd->add_option("--track", opt->track,
                                        "built-in track (e.g. half_round:0.2, an obstacle H = 0.2 "
                                        "m) or terrain file (CSV/YAML), e.g. an "

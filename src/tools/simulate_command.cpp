@@ -547,12 +547,9 @@ void registerSimulateCommand(CLI::App& app) {
   auto opt = std::make_shared<SimulateOptions>();
   CLI::App* cmd =
       app.add_subcommand("simulate", "Time response of the reduced (or full) vehicle over a track");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
-      ->required()
-      ->check(CLI::ExistingFile);
+  addVehicleOption(cmd, &opt->vehicle_file);
   CLI::Option* variant =
-      cmd->add_option("--variant", opt->variant, "untracked | tracked (with --reduced: the file's)")
-          ->check(CLI::IsMember({"untracked", "tracked"}));
+      addVariantOption(cmd, &opt->variant, "untracked | tracked (with --reduced: the file's)");
   cmd->add_option("--track", opt->track,
                   "long_hill | separated_waves | oop_waves | half_round:H (obstacle, H in m) | "
                   "terrain file (CSV/YAML)");

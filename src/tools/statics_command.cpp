@@ -295,11 +295,8 @@ void registerStaticsCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("statics",
                                      "The vehicle at rest under gravity: hull sag, wheel loads, "
                                      "ground load and pressure under the track");
-  cmd->add_option("--vehicle", opt->vehicle_file, "vehicle description")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cmd->add_option("--variant", opt->variant, "untracked | tracked")
-      ->check(CLI::IsMember({"untracked", "tracked"}));
+  addVehicleOption(cmd, &opt->vehicle_file);
+  addVariantOption(cmd, &opt->variant, "untracked | tracked");
   cmd->add_option(
          "--out", opt->out_file,
          "CSV (or .mat: one variable per column), one row per assembly on the ground: side "
