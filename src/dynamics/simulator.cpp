@@ -10,6 +10,7 @@
 #include "tracked_vehicle_dynamics/dynamics/discretization.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/validation.h"
+#include "tracked_vehicle_dynamics/enum_names.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -26,11 +27,9 @@ const char* methodName(DiscretizationMethod method) {
 }
 
 std::optional<DiscretizationMethod> methodFromName(const std::string& name) {
-  for (const DiscretizationMethod method :
-       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled})
-    if (name == methodName(method))
-      return method;
-  return std::nullopt;
+  return enumFromName(
+      name, {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled},
+      methodName);
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/validation.h"
+#include "tracked_vehicle_dynamics/enum_names.h"
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
@@ -19,10 +20,7 @@ const char* holdName(InputHold hold) {
 }
 
 std::optional<InputHold> holdFromName(const std::string& name) {
-  for (const InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder})
-    if (name == holdName(hold))
-      return hold;
-  return std::nullopt;
+  return enumFromName(name, {InputHold::ZeroOrder, InputHold::FirstOrder}, holdName);
 }
 
 void validateStateSpace(const StateSpace& s) {

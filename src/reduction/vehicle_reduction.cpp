@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 
+#include "tracked_vehicle_dynamics/enum_names.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -500,10 +501,7 @@ const char* modeRuleName(VehicleModeRule rule) {
 }
 
 std::optional<VehicleModeRule> modeRuleFromName(const std::string& name) {
-  for (const VehicleModeRule rule : {VehicleModeRule::MacCorrelation, VehicleModeRule::Band})
-    if (name == modeRuleName(rule))
-      return rule;
-  return std::nullopt;
+  return enumFromName(name, {VehicleModeRule::MacCorrelation, VehicleModeRule::Band}, modeRuleName);
 }
 
 namespace {
