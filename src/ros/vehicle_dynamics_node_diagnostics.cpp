@@ -247,8 +247,8 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   const dynamics::GroundContactRecord& run = watch->sinceRestart();
   const dynamics::GroundContactNow& now = watch->now();
   // With pads known, a whole pad pulling is what leaves the range: a single sole pulls while its
-  // pad rocks onto an edge, which on the tracked model (78 N on the least-loaded sole at rest)
-  // a road a few millimetres rough does (ground_contact_watch.h).
+  // pad rocks onto an edge (the tracked model's least-loaded sole carries 78 N at rest), which is
+  // counted but not a WARN; on real roads at speed whole pads follow (ground_contact_watch.h).
   const bool pads = watch->groupCount() > 0;
   // No check since the last report (simulated time paused): the state is the last check's, so
   // is its verdict.
@@ -271,8 +271,7 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   } else if (pads && run.groupsBeyondRange()) {
     status.summaryf(diagnostic_msgs::DiagnosticStatus::OK,
                     "pads on the road since the last report (a pad lifted %.3f s after the start "
-                    "or reset, station "
-                    "%.2f m)",
+                    "or reset, station %.2f m)",
                     run.first_group_beyond_time, run.first_group_beyond_station);
   } else if (pads) {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
