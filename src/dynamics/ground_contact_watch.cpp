@@ -37,6 +37,7 @@ void GroundContactWatch::evaluate(const Vector& state, const Vector& input) {
 void GroundContactWatch::restart(double time, const Vector& state, const Vector& input) {
   evaluate(state, input);
   pulling_at_rest_ = 0;
+  rest_force_ = forces_.sum();
   for (DofIndex i = 0; i < contactCount(); ++i) {
     const bool pressed = forces_(i) >= 0.0;
     pressed_at_rest_[static_cast<std::size_t>(i)] = pressed ? 1 : 0;
@@ -75,8 +76,10 @@ DofIndex GroundContactWatch::tally(double time) {
     }
     if (lowest < 0 || f < forces_(lowest))
       lowest = i;
-    if (f < 0.0)
+    if (f < 0.0) {
       ++now_.pulling;
+      now_.pull -= f;
+    }
   }
   return lowest;
 }
@@ -114,6 +117,7 @@ void GroundContactWatch::check(double time, double station, const Vector& state,
       continue;
     ++r->checks_beyond;
     r->most_pulling = std::max(r->most_pulling, now_.pulling);
+    r->max_pull = std::max(r->max_pull, now_.pull);
     if (r->first_beyond_contact < 0) {
       r->first_beyond_time = time;
       r->first_beyond_station = station;

@@ -303,6 +303,12 @@ void VehicleDynamicsNode::diagnoseGroundContact(
   status.add("checks (since last report)", interval.checks);
   status.add("checks beyond the range (since last report)", interval.checks_beyond);
   status.add("most pulling at once (since last report)", static_cast<long>(interval.most_pulling));
+  // How far beyond: the ground springs' largest total pull against the weight they carry at rest.
+  status.add("largest total pull of contacts pressed at rest (since last report) [N]",
+             interval.max_pull);
+  if (watch->restForce() > 0.0)
+    status.add("largest total pull (since last report) [% of the ground force at rest]",
+               100.0 * interval.max_pull / watch->restForce());
   status.add("min force of a contact pressed at rest (since last report) [N]", interval.min_force);
   status.add("pulling now", static_cast<long>(now.pulling));
   status.add("ground force left now [N]", now.left);

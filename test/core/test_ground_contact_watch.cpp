@@ -149,6 +149,8 @@ TEST(GroundContactWatch, CountsPullingAtRestApartAndKeepsTwoRecords) {
   watch.check(5.2, 52.0, z, w);
   EXPECT_DOUBLE_EQ(watch.forces()(0), -210.0);
   EXPECT_EQ(watch.now().pulling, 1);
+  EXPECT_DOUBLE_EQ(watch.now().pull, 210.0);
+  EXPECT_DOUBLE_EQ(watch.restForce(), 1e3 + 4e3 - 1e2);  // every contact, as at the restart
   const GroundContactRecord first = watch.takeInterval();
   EXPECT_EQ(first.checks, 2);
   EXPECT_EQ(first.checks_beyond, 1);
@@ -164,13 +166,15 @@ TEST(GroundContactWatch, CountsPullingAtRestApartAndKeepsTwoRecords) {
   const GroundContactRecord second = watch.takeInterval();
   EXPECT_EQ(second.checks, 1);
   EXPECT_EQ(second.most_pulling, 2);
-  EXPECT_EQ(second.first_beyond_contact, 1);  // the hardest pull of that check
+  EXPECT_DOUBLE_EQ(second.max_pull, 210.0 + 2e3);  // contact 2, pulling at rest, not counted
+  EXPECT_EQ(second.first_beyond_contact, 1);       // the hardest pull of that check
   EXPECT_DOUBLE_EQ(second.first_beyond_time, 5.3);
   EXPECT_DOUBLE_EQ(second.min_force, -2e3);
   const GroundContactRecord& run = watch.sinceRestart();
   EXPECT_EQ(run.checks, 3);
   EXPECT_EQ(run.checks_beyond, 2);
   EXPECT_EQ(run.most_pulling, 2);
+  EXPECT_DOUBLE_EQ(run.max_pull, 210.0 + 2e3);
   EXPECT_DOUBLE_EQ(run.first_beyond_time, 5.2);
   EXPECT_EQ(run.first_beyond_contact, 0);
   EXPECT_EQ(watch.now().pulling_at_rest, 1);

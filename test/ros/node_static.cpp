@@ -319,6 +319,15 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
                 1e-9);
   else
     EXPECT_TRUE(std::isnan(diagnostics_.value(": ground contact", "check rate requested [Hz]")));
+  // Nothing pressed at rest pulls, so no total pull; its share of the weight is shown beside it.
+  EXPECT_EQ(
+      diagnostics_.value(": ground contact",
+                         "largest total pull of contacts pressed at rest (since last report) [N]"),
+      0.0);
+  EXPECT_EQ(
+      diagnostics_.value(": ground contact",
+                         "largest total pull (since last report) [% of the ground force at rest]"),
+      0.0);
   // The pads (soles grouped by track assembly): none pressed at rest pulls as a whole.
   EXPECT_GT(diagnostics_.value(": ground contact", "pads"), 0.0);
   EXPECT_EQ(diagnostics_.value(": ground contact", "pads pulling now"), 0.0);

@@ -42,6 +42,9 @@ struct GroundContactRecord {
   long checks_beyond = 0;
   /// Most contacts pressed at rest that pulled at one check.
   DofIndex most_pulling = 0;
+  /// The largest total pull at one check: the sum of -F_i over the contacts pressed at rest with
+  /// F_i < 0 [N]; how far beyond its range the model went, against the weight it carries.
+  double max_pull = 0.0;
   /// The first check beyond the range: time [s], station [m] and the contact pulling hardest
   /// among those pressed at rest; NaN and -1 when none.
   double first_beyond_time = std::numeric_limits<double>::quiet_NaN();
@@ -72,11 +75,12 @@ struct GroundContactRecord {
 /// The forces at the last check.
 struct GroundContactNow {
   double time = std::numeric_limits<double>::quiet_NaN();  ///< [s]
-  DofIndex pulling = 0;            ///< contacts pressed at rest that pull now
-  DofIndex pulling_at_rest = 0;    ///< contacts that pull now and already pulled at rest
-  double left = 0.0;               ///< total ground force on the left side (y > 0) [N]
-  double right = 0.0;              ///< and on the right (y < 0) [N]
-  int groups_pulling = 0;          ///< groups pressed at rest whose total pulls now
+  DofIndex pulling = 0;          ///< contacts pressed at rest that pull now
+  DofIndex pulling_at_rest = 0;  ///< contacts that pull now and already pulled at rest
+  double pull = 0.0;       ///< sum of -F_i over the contacts pressed at rest that pull now [N]
+  double left = 0.0;       ///< total ground force on the left side (y > 0) [N]
+  double right = 0.0;      ///< and on the right (y < 0) [N]
+  int groups_pulling = 0;  ///< groups pressed at rest whose total pulls now
   int groups_pulling_at_rest = 0;  ///< groups whose total pulls now and already pulled at rest
 };
 
@@ -109,6 +113,8 @@ class GroundContactWatch {
   DofIndex contactCount() const { return static_cast<DofIndex>(contacts_.size()); }
   /// Contacts pulling (F < 0) at the last restart.
   DofIndex pullingAtRest() const { return pulling_at_rest_; }
+  /// The total ground force at the last restart, sum of F_i [N]: the weight of a vehicle at rest.
+  double restForce() const { return rest_force_; }
   /// Groups: 1 + the largest GroundContact::group (0 when none has one).
   int groupCount() const { return static_cast<int>(group_forces_.size()); }
   /// Groups whose total pulled at the last restart.
@@ -130,6 +136,7 @@ class GroundContactWatch {
   DofIndex input_count_ = 0;
   std::vector<char> pressed_at_rest_;  // per contact: F_i >= 0 at the restart
   DofIndex pulling_at_rest_ = 0;
+  double rest_force_ = 0.0;
   std::vector<DofIndex> group_contact_;      // per group: its first contact
   std::vector<char> group_pressed_at_rest_;  // per group: its total >= 0 at the restart
   int groups_pulling_at_rest_ = 0;
