@@ -32,6 +32,13 @@ GroundContactWatch::GroundContactWatch(std::vector<GroundContact> contacts, DofI
 
 void GroundContactWatch::evaluate(const Vector& state, const Vector& input) {
   contactForces(contacts_, state, input, input_count_, forces_, "ground contact watch");
+  // F_g = sum of F_i over the contacts i of group g.
+  group_forces_.setZero();
+  for (DofIndex i = 0; i < contactCount(); ++i) {
+    const int g = contacts_[static_cast<std::size_t>(i)].group;
+    if (g >= 0)
+      group_forces_(g) += forces_(i);
+  }
 }
 
 void GroundContactWatch::restart(double time, const Vector& state, const Vector& input) {
@@ -43,9 +50,6 @@ void GroundContactWatch::restart(double time, const Vector& state, const Vector&
     pressed_at_rest_[static_cast<std::size_t>(i)] = pressed ? 1 : 0;
     pulling_at_rest_ += pressed ? 0 : 1;
   }
-  // Group totals first with every group counted as pressed, then the pressed set from them.
-  std::fill(group_pressed_at_rest_.begin(), group_pressed_at_rest_.end(), 1);
-  tallyGroups();
   groups_pulling_at_rest_ = 0;
   for (int g = 0; g < groupCount(); ++g) {
     const bool pressed = group_forces_(g) >= 0.0;
@@ -127,13 +131,6 @@ void GroundContactWatch::check(double time, double station, const Vector& state,
 }
 
 int GroundContactWatch::tallyGroups() {
-  // F_g = sum of F_i over the contacts i of group g.
-  group_forces_.setZero();
-  for (DofIndex i = 0; i < contactCount(); ++i) {
-    const int g = contacts_[static_cast<std::size_t>(i)].group;
-    if (g >= 0)
-      group_forces_(g) += forces_(i);
-  }
   now_.groups_pulling = 0;
   now_.groups_pulling_at_rest = 0;
   int lowest = -1;

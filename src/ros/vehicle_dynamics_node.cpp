@@ -155,17 +155,23 @@ void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queu
   out->publisher = nh_.advertise<M>(topic, queue_size, recount, recount);
 }
 
+std::vector<std::string> VehicleDynamicsNode::judgePatch(const TerrainPatch& patch,
+                                                         bool* stepped) const {
+  // Against the terrain the contacts read before it, or the flat ground of a start or reset.
+  const bool flat_ground = flat_since_restart_ && vehicle_->terrain().empty();
+  *stepped = terrain::patchStep(patch.start_station, patch.lateral, patch.heights,
+                                vehicle_->terrain(), flat_ground)
+                 .implausible();
+  return terrain::patchWarnings(patch.start_station, patch.spacing, patch.lateral, patch.heights,
+                                vehicle_->terrain(), flat_ground);
+}
+
 void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   try {
     const TerrainPatch patch = fromMsg(*msg);
     // Judged against the terrain before it is added (the step at its start), said once taken.
-    const bool flat_ground = flat_since_restart_ && vehicle_->terrain().empty();
-    const std::vector<std::string> doubts =
-        terrain::patchWarnings(patch.start_station, patch.spacing, patch.lateral, patch.heights,
-                               vehicle_->terrain(), flat_ground);
-    const bool stepped = terrain::patchStep(patch.start_station, patch.lateral, patch.heights,
-                                            vehicle_->terrain(), flat_ground)
-                             .implausible();
+    bool stepped = false;
+    const std::vector<std::string> doubts = judgePatch(patch, &stepped);
     if (!vehicle_->addTerrain(patch)) {
       // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station
       // frame mistake. Said once per kWarnPeriod and counted, not taken for terrain.
@@ -380,14 +386,10 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
       const TerrainPatch patch = fromMsg(*recent.msg);
       // Judged again against the restarted vehicle's flat ground: a loop of absolute altitudes
       // steps off it as the first loop did.
-      const bool flat_ground = flat_since_restart_ && vehicle_->terrain().empty();
-      if (terrain::patchStep(patch.start_station, patch.lateral, patch.heights, vehicle_->terrain(),
-                             flat_ground)
-              .implausible())
-        stepped_patch_ = patchDoubts(patch, terrain::patchWarnings(
-                                                patch.start_station, patch.spacing, patch.lateral,
-                                                patch.heights, vehicle_->terrain(), flat_ground)) +
-                         " (re-applied after the time jump back)";
+      bool stepped = false;
+      const std::vector<std::string> doubts = judgePatch(patch, &stepped);
+      if (stepped)
+        stepped_patch_ = patchDoubts(patch, doubts) + " (re-applied after the time jump back)";
       vehicle_->addTerrain(patch);
       flat_since_restart_ = false;
       ++events_.patches_reapplied;

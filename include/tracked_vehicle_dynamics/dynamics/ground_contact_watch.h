@@ -124,12 +124,13 @@ class GroundContactWatch {
   const std::vector<GroundContact>& contacts() const { return contacts_; }
 
  private:
+  /// forces_ and group_forces_ (each group's the sum of its contacts') from the state.
   void evaluate(const Vector& state, const Vector& input);
   /// now_ from forces_ (side totals; among the contacts pressed at rest, those pulling).
   /// Returns the contact pressed at rest with the lowest force (-1: none).
   DofIndex tally(double time);
-  /// The same for the groups: group_forces_, now_'s group counts; returns the group pressed at
-  /// rest with the lowest force (-1: none).
+  /// The same for the groups: now_'s group counts from group_forces_; returns the group pressed
+  /// at rest with the lowest force (-1: none).
   int tallyGroups();
 
   std::vector<GroundContact> contacts_;

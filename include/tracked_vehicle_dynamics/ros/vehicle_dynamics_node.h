@@ -120,6 +120,9 @@ class VehicleDynamicsNode {
   /// ~imu_points: each a published point frame, listed once, a valid topic name imu/<point>.
   void setUpImus();
   void onTerrain(const TerrainProfile::ConstPtr& msg);
+  /// terrain::patchWarnings for a patch about to be added (not yet named), and in `stepped`
+  /// whether it steps more than kLargestPlausibleStep off the ground the contacts read before it.
+  std::vector<std::string> judgePatch(const TerrainPatch& patch, bool* stepped) const;
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   /// ~reset_to: restart at a station in static equilibrium on its terrain (or on flat ground).
