@@ -20,10 +20,10 @@ std::map<fem::DofRef, DofIndex> rowIndex(const std::vector<fem::DofRef>& dofs, c
   std::map<fem::DofRef, DofIndex> index;
   for (std::size_t i = 0; i < dofs.size(); ++i) {
     if (dofs[i].direction < 0 || dofs[i].direction >= kDofsPerNode)
-      throw InputError(std::string("commonTranslationalDofs: ") + which + "[" + std::to_string(i) +
+      throw InputError(std::string("commonTranslationalRows: ") + which + "[" + std::to_string(i) +
                        "] has direction " + std::to_string(dofs[i].direction) + ", not in 0..5");
     if (!index.emplace(dofs[i], static_cast<DofIndex>(i)).second)
-      throw InputError(std::string("commonTranslationalDofs: ") + which + " lists " +
+      throw InputError(std::string("commonTranslationalRows: ") + which + " lists " +
                        name(dofs[i]) + " twice (rows " + std::to_string(index[dofs[i]]) + " and " +
                        std::to_string(i) + ")");
   }
@@ -40,7 +40,7 @@ std::vector<fem::DofRef> activeDofRefs(const fem::DofMap& dofs) {
   return out;
 }
 
-CommonDofs commonTranslationalDofs(const std::vector<fem::DofRef>& dofs_a,
+CommonDofs commonTranslationalRows(const std::vector<fem::DofRef>& dofs_a,
                                    const std::vector<fem::DofRef>& dofs_b) {
   rowIndex(dofs_a, "dofs_a");  // checks A the same way as B
   const std::map<fem::DofRef, DofIndex> index_b = rowIndex(dofs_b, "dofs_b");

@@ -83,9 +83,12 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
       tvd::vehicle::loadVehicleDescription(vehicle_file);
   const auto model = tvd::reduction::loadOrReduceVehicle(
       description, tvd::vehicle::parseVariant(variant), cache, {}, &report);
-  // The node's pads (whole-pad records of the ground-contact check), as the node forms them.
-  const std::vector<int> pads = tvd::reduction::roadInputGroups(
-      tvd::vehicle::buildVehicleModel(description, tvd::vehicle::parseVariant(variant)), model);
+  // The node's pads (whole-pad records of the ground-contact check) and frames, as the node
+  // forms them.
+  const tvd::vehicle::VehicleModel layout =
+      tvd::vehicle::buildVehicleModel(description, tvd::vehicle::parseVariant(variant));
+  const std::vector<int> pads = tvd::reduction::roadInputGroups(layout, model);
+  const rl::VehicleGeometry geometry = rl::vehicleGeometry(description, layout);
   rl::OnlineVehicleOptions options;
   options.rate = rate;
   options.method = rl::parseMethod(method, "--method");
@@ -98,7 +101,7 @@ int offline(const std::string& vehicle_file, const std::string& variant, const s
   // One run of the track on a fresh vehicle, the patches added at their times; step(vehicle)
   // does (and times) each step.
   const auto run_track = [&](const std::function<void(rl::OnlineVehicle&)>& step) {
-    rl::OnlineVehicle vehicle(model, rl::vehicleGeometry(description), options, pads);
+    rl::OnlineVehicle vehicle(model, geometry, options, pads);
     vehicle.setSpeed(track.speed);
     std::size_t next_patch = 0;
     for (long k = 0; k < steps; ++k) {

@@ -81,13 +81,13 @@ void VehicleDynamicsNode::loadVehicle() {
     // exact spends seconds in the augmented exponential, which is not the cache's doing.
     load_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();
     const auto setup_start = Clock::now();
-    // The pads the contacts belong to, for the ground-contact check's whole-pad records: from
-    // the vehicle's FE layout, which the cache does not keep (built here in 4-16 ms on the tracked
-    // model).
-    const std::vector<int> pads =
-        reduction::roadInputGroups(vehicle::buildVehicleModel(description, params_.variant), model);
-    vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description),
-                                               params_.vehicle_options, pads);
+    // The pads the contacts belong to, for the ground-contact check's whole-pad records, and
+    // where the frames go: from the vehicle's FE layout, which the cache does not keep (built
+    // here once, in 4-16 ms on the tracked model).
+    const vehicle::VehicleModel layout = vehicle::buildVehicleModel(description, params_.variant);
+    vehicle_ = std::make_unique<OnlineVehicle>(model, vehicleGeometry(description, layout),
+                                               params_.vehicle_options,
+                                               reduction::roadInputGroups(layout, model));
     setup_seconds_ = std::chrono::duration<double>(Clock::now() - setup_start).count();
     model_dofs_ = model.size();
     model_inputs_ = model.system.inputCount();

@@ -8,7 +8,10 @@ namespace vehicle {
 VehicleGeometry vehicleGeometry(const VehicleDescription& description) {
   // Building the untracked model takes milliseconds and is the one place the positions are
   // computed, so they cannot drift from the model's.
-  const VehicleModel built = buildVehicleModel(description, Variant::Untracked);
+  return vehicleGeometry(description, buildVehicleModel(description, Variant::Untracked));
+}
+
+VehicleGeometry vehicleGeometry(const VehicleDescription& description, const VehicleModel& built) {
   const auto index = built.model.nodeIndex();
   auto position = [&](NodeId id) { return built.model.nodes.at(index.at(id)).position; };
   VehicleGeometry geometry;

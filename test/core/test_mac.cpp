@@ -179,7 +179,7 @@ TEST(CommonDofs, KeepsSharedTranslationsInTheOrderOfA) {
   using fem::DofRef;
   const std::vector<DofRef> a = {{1, 0}, {1, 2}, {1, 4}, {2, 2}, {3, 1}, {7, 2}};
   const std::vector<DofRef> b = {{2, 2}, {1, 2}, {1, 4}, {9, 0}, {3, 1}, {1, 1}};
-  const CommonDofs common = commonTranslationalDofs(a, b);
+  const CommonDofs common = commonTranslationalRows(a, b);
   // {1, 4} is a rotation: ignored even though both have it (paper §3.1.1).
   ASSERT_EQ(common.size(), 3);
   EXPECT_EQ(common.dofs[0], (DofRef{1, 2}));
@@ -193,8 +193,8 @@ TEST(CommonDofs, KeepsSharedTranslationsInTheOrderOfA) {
   EXPECT_EQ(picked(1, 1), 0.0);
   EXPECT_EQ(picked(2, 0), 4.0);
   EXPECT_THROW(selectRows(shapes, {6}), InputError);
-  EXPECT_THROW(commonTranslationalDofs({{1, 2}, {1, 2}}, b), InputError);
-  EXPECT_THROW(commonTranslationalDofs(a, {{1, 6}}), InputError);
+  EXPECT_THROW(commonTranslationalRows({{1, 2}, {1, 2}}, b), InputError);
+  EXPECT_THROW(commonTranslationalRows(a, {{1, 6}}), InputError);
 }
 
 // A 2 m steel cantilever along x. `planar`: uy, rx, rz held at every node, so only the x-z
@@ -217,7 +217,7 @@ TEST(ModeSelection, CorrelationKeepsTheModesSharedWithTheReference) {
   const fem::ModalBasis ref_modes = fem::solveModes(reference.stiffness, reference.mass, request);
   const fem::ModalBasis cand_modes = fem::solveModes(candidate.stiffness, candidate.mass, request);
   const CommonDofs common =
-      commonTranslationalDofs(activeDofRefs(candidate.dofs), activeDofRefs(reference.dofs));
+      commonTranslationalRows(activeDofRefs(candidate.dofs), activeDofRefs(reference.dofs));
   ASSERT_EQ(common.size(), 20);  // ux and uz of the 10 free nodes
   ModeReference ref;
   ref.mac = mac(selectRows(cand_modes.shapes, common.rows_a),

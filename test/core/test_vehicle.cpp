@@ -16,6 +16,7 @@
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 #ifndef TVD_SOURCE_DIR
@@ -593,6 +594,25 @@ TEST_F(VehicleModels, SharedPartsHaveTheSameNodeIdsInBothVariants) {
   EXPECT_LT((hull.row(0) - untracked_->basis.shapes.row(row)).norm(), 1e-12);
   EXPECT_THROW(veh::physicalShapes(untracked_->system, {{999999, 0}}, untracked_->basis.shapes),
                tvd::InputError);
+}
+
+TEST_F(VehicleModels, GeometryIsTheSameFromEitherVariant) {
+  // The node places its frames from the tracked model it builds for the pads; the wheel centres,
+  // the CoG and the named points must be where the untracked model puts them.
+  const veh::VehicleGeometry own = veh::vehicleGeometry(description());
+  const veh::VehicleGeometry from_tracked = veh::vehicleGeometry(description(), tracked_->vehicle);
+  EXPECT_EQ(own.vehicle_name, from_tracked.vehicle_name);
+  EXPECT_EQ((own.cog - from_tracked.cog).norm(), 0.0);
+  ASSERT_EQ(own.wheels.size(), 14u);
+  ASSERT_EQ(own.wheels.size(), from_tracked.wheels.size());
+  for (std::size_t i = 0; i < own.wheels.size(); ++i) {
+    EXPECT_EQ(own.wheels[i].name, from_tracked.wheels[i].name);
+    EXPECT_EQ((own.wheels[i].position - from_tracked.wheels[i].position).norm(), 0.0)
+        << own.wheels[i].name;
+  }
+  ASSERT_EQ(own.points.size(), from_tracked.points.size());
+  // The CoG is the hull node, 1.57 m above the ground (Table 1's height).
+  EXPECT_NEAR(own.cog.z(), 1.57, 1e-12);
 }
 
 TEST_F(VehicleModels, GroundReactionsBalanceTheWeight) {

@@ -25,8 +25,9 @@ struct CommonDofs {
 
 /// The translational DOFs (ux, uy, uz) present in both lists (same node id and direction), in
 /// the order of `dofs_a`. Throws InputError when a list names a DOF twice or a direction is not
-/// in 0..5.
-CommonDofs commonTranslationalDofs(const std::vector<fem::DofRef>& dofs_a,
+/// in 0..5. Rows of two DOF lists, for any two systems; which nodes two vehicle models share (by
+/// id and position) is vehicle::commonTranslationalDofs().
+CommonDofs commonTranslationalRows(const std::vector<fem::DofRef>& dofs_a,
                                    const std::vector<fem::DofRef>& dofs_b);
 
 /// The given rows of `shapes` [rows.size() x shapes.cols()]. Throws InputError naming an

@@ -20,7 +20,7 @@ constexpr double kNegligibleShape = 1e-8;
 ///   MAC_jk = (phi_j^T phi_k)^2 / ((phi_j^T phi_j) (phi_k^T phi_k))   in [0, 1], result [a x b].
 /// It is invariant to the scaling (and sign) of each shape, and it is NOT mass-weighted: two
 /// M-orthogonal modes can have a non-zero MAC. Both sets must be given over the same DOFs in the
-/// same order (see commonTranslationalDofs()).
+/// same order (see commonTranslationalRows()).
 /// A shape whose norm is at most kNegligibleShape times the largest norm of its set has MAC 0
 /// with every shape: it does not move on these DOFs, and the round-off left there (a lateral
 /// mode seen on vertical DOFs, say) would otherwise, being scale-invariant, correlate with

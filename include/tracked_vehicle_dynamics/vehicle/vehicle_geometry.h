@@ -13,6 +13,8 @@
 namespace tracked_vehicle_dynamics {
 namespace vehicle {
 
+struct VehicleModel;  // vehicle_model.h
+
 /// Static positions [m] of the hull CoG, the road-wheel centres and the named points.
 struct VehicleGeometry {
   struct Body {
@@ -28,6 +30,10 @@ struct VehicleGeometry {
 /// The geometry of a description, from its untracked FE model (the wheel centres are the same in
 /// both variants). Throws InputError like buildVehicleModel().
 VehicleGeometry vehicleGeometry(const VehicleDescription& description);
+
+/// The same from a model already built from `description` (either variant), so a caller that
+/// needs the model anyway (the node, for the contacts' pads) builds it once.
+VehicleGeometry vehicleGeometry(const VehicleDescription& description, const VehicleModel& built);
 
 }  // namespace vehicle
 }  // namespace tracked_vehicle_dynamics
