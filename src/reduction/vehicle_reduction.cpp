@@ -117,8 +117,8 @@ void warnIfCut(const AssembledVariant& v, vehicle::Variant variant, int global_m
          << brief(cut->frequency_hz)
          << " Hz than the solver returned: it returned part of a repeated eigenvalue there, so "
             "a MAC selection against that eigenspace depends on round-off. A global_modes count "
-            "that ends below "
-         << brief(cut->frequency_hz) << " Hz does not";
+            "whose modes all lie below "
+         << brief(cut->frequency_hz) << " Hz is not affected";
   else
     // Counts that end at a gap: below the group, every mode is returned (the Sylvester count
     // says so); above it only if the Lanczos run returns the whole group, which the check of

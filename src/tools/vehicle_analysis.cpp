@@ -37,6 +37,9 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   fem::ModalRequest request;
   request.count = count;
   a.modes = fem::solveModes(a.system.stiffness, a.system.mass, request);
+  const std::string missed = fem::missedModesWarning(a.modes);
+  if (!missed.empty())
+    std::cerr << "tvd: warning: " << missed << "\n";
   a.classes = vehicle::classifyModes(a.vehicle, a.system, a.modes);
   return a;
 }

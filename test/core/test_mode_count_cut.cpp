@@ -47,7 +47,7 @@ const std::vector<double> kRepeatedThird = {1.0, 2.0, 3.0, 3.0, 3.0, 4.0, 5.0};
 
 TEST(EigenvaluesBelow, CountsTheChosenEigenvalues) {
   const ChosenSystem s = chosenSystem(kRepeatedThird);
-  auto below = [&](double hz) { return eigenvaluesBelow(s.k, s.m, std::pow(kTwoPi * hz, 2)); };
+  auto below = [&](double hz) { return fem::eigenvaluesBelow(s.k, s.m, std::pow(kTwoPi * hz, 2)); };
   EXPECT_EQ(below(0.5), 0);
   EXPECT_EQ(below(1.5), 1);
   EXPECT_EQ(below(2.9), 2);

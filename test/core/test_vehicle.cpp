@@ -10,6 +10,7 @@
 
 #include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
@@ -791,3 +792,33 @@ TEST_F(VehicleModels, ModeEnergiesAreShares) {
 }
 
 }  // namespace
+
+TEST(VehicleModes, EveryCopyOfARepeatedTrackAssemblyModeIsFound) {
+  // Six axles un-tracked: twelve identical track assemblies whose local modes repeat ten times at
+  // 107.72 Hz, 0.01 Hz below the next mode. One Lanczos run returned nine copies and went on to
+  // 107.73 Hz (the lowest 40 modes missed one); the solver's Sylvester count finds the tenth.
+  veh::VehicleDescription d = veh::loadVehicleDescription(kDescriptionFile);
+  d.running_gear.axle_count = 6;
+  const veh::VehicleModel built = veh::buildVehicleModel(d, veh::Variant::Untracked);
+  const tvd::fem::System system = tvd::fem::assemble(built.model);
+  tvd::fem::ModalRequest request;
+  request.count = kModeCount;
+  const tvd::fem::ModalBasis basis = tvd::fem::solveModes(system.stiffness, system.mass, request);
+  ASSERT_EQ(basis.count(), kModeCount);
+  EXPECT_EQ(basis.missed, 0);
+  // The returned modes are the lowest: as many eigenvalues lie below each returned one (less a
+  // relative 1e-6, within which copies count as one value) as modes are returned below it.
+  for (int i = 1; i < basis.count(); ++i) {
+    const double below = basis.eigenvalues(i) * (1.0 - 1e-6);
+    const auto returned = (basis.eigenvalues.array() < below).count();
+    if (i % 4 == 0 || i == basis.count() - 1) {  // a factorisation each: every 4th and the last
+      EXPECT_EQ(tvd::fem::eigenvaluesBelow(system.stiffness, system.mass, below), returned) << i;
+    }
+  }
+  int copies = 0;
+  for (int i = 0; i < basis.count(); ++i)
+    copies += std::abs(basis.frequencies_hz(i) - basis.frequencies_hz(kModeCount - 1)) <
+              1e-6 * basis.frequencies_hz(kModeCount - 1);
+  EXPECT_EQ(copies, 10) << "the highest returned mode, " << basis.frequencies_hz(kModeCount - 1)
+                        << " Hz, should be the tenth copy of the repeated assembly mode";
+}

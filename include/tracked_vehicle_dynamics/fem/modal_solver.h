@@ -28,6 +28,10 @@ struct ModalBasis {
   ModeShapes shapes;      ///< [n x modes]
   ModalStatus status = ModalStatus::Converged;
   int converged = 0;  ///< number of converged Ritz pairs
+  /// Modes below the highest one returned that the solver could not find (the count of
+  /// eigenvalues below it by Sylvester's law, less the modes returned below it): 0 when none is
+  /// missing. Not counted (0) when K - lambda M cannot be factorised there.
+  int missed = 0;
   int iterations = 0;
   double seconds = 0.0;  ///< wall time of the solve [s]
 
@@ -39,6 +43,10 @@ struct ModalBasis {
 /// InputError for mismatched sizes or a non-positive count.
 ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
                       const ModalRequest& request);
+
+/// "" when `basis` holds every mode below its highest one (ModalBasis::missed == 0), else a
+/// sentence for the user saying how many are missing below which frequency.
+std::string missedModesWarning(const ModalBasis& basis);
 
 /// Dense generalised eigenproblem of all modes (small systems, references in tests).
 ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass);

@@ -5,18 +5,12 @@
 
 #include <optional>
 
+#include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/reduction/mac.h"
 #include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
-
-/// The eigenvalues of K phi = lambda M phi below `lambda` [rad^2/s^2], by Sylvester's law of
-/// inertia: the negative pivots of the LDL^T factorisation of the congruent K - lambda M (M
-/// positive definite). No eigenvector is computed, so the solve that produced the modes is not
-/// touched. Throws SolverError when the factorisation fails (lambda an eigenvalue to working
-/// precision) and InputError when the sizes differ.
-int eigenvaluesBelow(const SparseMatrix& stiffness, const SparseMatrix& mass, double lambda);
 
 /// A degenerate group cut by the count: the lowest `kept` of its `size` modes are among the
 /// computed ones.
@@ -33,9 +27,9 @@ struct ModeCountCut {
 
 /// Whether the modes `frequencies_hz` (the lowest of (K, M), ascending) end inside a group of
 /// modes within `relative_gap` of each other in frequency (as degenerateGroups() forms them): the
-/// group of the last computed mode is counted in full with eigenvaluesBelow() just above its
-/// frequency; eigenvaluesBelow() just below it checks that no mode below is missing. Empty when
-/// the count ends at a gap and no mode is missing.
+/// group of the last computed mode is counted in full with fem::eigenvaluesBelow() just above its
+/// frequency; fem::eigenvaluesBelow() just below it checks that no mode below is missing. Empty
+/// when the count ends at a gap and no mode is missing.
 std::optional<ModeCountCut> modeCountCut(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                          const Vector& frequencies_hz,
                                          double relative_gap = kDegenerateRelativeGap);
