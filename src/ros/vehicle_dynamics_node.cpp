@@ -172,7 +172,13 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     // Judged against the terrain before it is added (the step at its start), said once taken.
     bool stepped = false;
     const std::vector<std::string> doubts = judgePatch(patch, &stepped);
-    if (!vehicle_->addTerrain(patch)) {
+    const bool taken = vehicle_->addTerrain(patch);
+    // Kept for a jump back of ROS time even when dropped: a bag loop's first patches may reach
+    // the node before the /clock message of the jump, when the vehicle is at the end of the
+    // previous loop and they lie wholly behind it (reapplyRecentInputs).
+    if (use_sim_time_)
+      rememberPatch(msg);
+    if (!taken) {
       // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station
       // frame mistake. Said once per kWarnPeriod and counted, not taken for terrain.
       ++events_.patches_behind;
@@ -183,9 +189,10 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
       last_behind_patch_ = text.str();
       ROS_WARN_THROTTLE(kWarnPeriod,
                         "%s: terrain %s: wholly behind the vehicle by more "
-                        "than ~terrain_keep_behind (%g m), dropped",
+                        "than ~terrain_keep_behind (%g m), dropped%s",
                         nodeName(), last_behind_patch_.c_str(),
-                        params_.vehicle_options.terrain_keep_behind);
+                        params_.vehicle_options.terrain_keep_behind,
+                        use_sim_time_ ? " (re-applied if ROS time jumps back to its stamp)" : "");
       return;
     }
     flat_since_restart_ = false;
@@ -215,18 +222,19 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
         stepped_patch_ = last_implausible_patch_;
       ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain %s", nodeName(), last_implausible_patch_.c_str());
     }
-    if (use_sim_time_) {
-      const ros::WallTime arrival = ros::WallTime::now();
-      const ros::WallTime oldest = arrival - ros::WallDuration(kRewindWindow);
-      while (!recent_patches_.empty() && recent_patches_.front().arrival < oldest)
-        recent_patches_.pop_front();
-      recent_patches_.push_back({msg, latest_clock_, arrival});
-    }
   } catch (const std::exception& e) {  // InputError, or bad_alloc for an absurd patch
     ++events_.patches_rejected;
     last_patch_error_ = e.what();
     ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
   }
+}
+
+void VehicleDynamicsNode::rememberPatch(const TerrainProfile::ConstPtr& msg) {
+  const ros::WallTime arrival = ros::WallTime::now();
+  const ros::WallTime oldest = arrival - ros::WallDuration(kRewindWindow);
+  while (!recent_patches_.empty() && recent_patches_.front().arrival < oldest)
+    recent_patches_.pop_front();
+  recent_patches_.push_back({msg, latest_clock_, arrival});
 }
 
 std::string VehicleDynamicsNode::speedProblem(double v) const {

@@ -145,9 +145,11 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   ASSERT_EQ(rate, 1000.0) << "the bursts are in 1 ms steps";
   // 0.7 s, with bursts as long as ~catch_up_limit (0.1 s = 100 steps).
   bursts_ = {1, 1, 2, 5, 10, 20, 50, 100, 3, 7, 100, 1, 100, 50, 100, 20, 30, 100};
-  // The first patches, as a bag sends them: flat under the vehicle, a 5 cm bump at 4-5 m (the
-  // front road wheels are at 2.34 m), more beyond.
-  patches_ = {bumpProfile(-5.0, 2.0, 4.0, 1.0, 0.05), bumpProfile(2.01, 6.0, 4.0, 1.0, 0.05),
+  // The first patches, as a bag sends them: a 5 cm bump under the vehicle at 0.5-1.5 m (the
+  // pads on the ground span -2.4..2.4 m), another at 4-5 m (the front road wheels are at
+  // 2.34 m), flat beyond. At the end of a loop (7 m at 10 m/s) the first patch lies wholly
+  // behind the vehicle: sent before the jump back, it is dropped, and must be re-applied.
+  patches_ = {bumpProfile(-5.0, 2.0, 0.5, 1.0, 0.05), bumpProfile(2.01, 6.0, 4.0, 1.0, 0.05),
               bumpProfile(6.01, 14.0, 4.0, 1.0, 0.05)};
 
   // Simulated time runs once the node has loaded its model and published its first sample.

@@ -157,6 +157,8 @@ class VehicleDynamicsNode {
   /// stamped nearer `now` than the ROS time they arrived at, and the last speed if it arrived in
   /// that window, go to the restarted vehicle. Clears the kept inputs.
   void reapplyRecentInputs(const ros::Time& now);
+  /// Keeps an accepted patch (taken, or dropped as wholly behind) for reapplyRecentInputs.
+  void rememberPatch(const TerrainProfile::ConstPtr& msg);
   void publishState();
   void publishComfort();
 
