@@ -1,6 +1,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
@@ -8,6 +9,12 @@
 namespace tracked_vehicle_dynamics {
 
 std::string brief(double value) {
+  // Not "-nan" (the sign bit of a NaN means nothing) nor "-0" (equal to 0, and read as a sign
+  // mistake).
+  if (std::isnan(value))
+    return "nan";
+  if (value == 0.0)
+    return "0";
   // Six digits, unless the value is exactly one of up to ten: a value the user typed (200.0001
   // against a bound of 200) must not be shown as the bound it breaks, while a computed value
   // (0.1 + 0.2), which no short decimal gives exactly, keeps its six.

@@ -215,7 +215,7 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
                      " m (beyond it a step's advance is lost in the station's rounding)");
   }
   setSpeed(speed);  // validates first: a bad speed throws before anything changes
-  speed_ = speed;   // at once, also with a slew: the vehicle restarts at rest relative to it
+  speed_ = commanded_speed_;  // at once, also with a slew: it restarts at rest relative to it
   travel_acceleration_ = 0.0;
   station_ = station;
   peak_acceleration_ = 0.0;
@@ -267,9 +267,11 @@ void OnlineVehicle::setSpeed(double speed) {
     throw InputError("online vehicle: speed " + brief(speed) +
                      " m/s must be finite and not negative");
   }
-  commanded_speed_ = speed;
+  // -0.0 passes the test above; + 0.0 makes it +0.0 (IEEE 754, round to nearest), so that
+  // nothing the vehicle reports shows "-0".
+  commanded_speed_ = speed + 0.0;
   if (!slews())
-    speed_ = speed;
+    speed_ = commanded_speed_;
 }
 
 int OnlineVehicle::sampleInput() {

@@ -303,6 +303,11 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
                                     " km/h, as tvd's --speed-kmh), got " + brief(p.max_speed));
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
+  // Less than one step would skip time at every tick that is a step late (on real time, most).
+  if (p.catch_up_limit < 1.0 / v.rate)
+    throw in.error("catch_up_limit",
+                   "must be at least one step, 1 / ~rate = " + brief(1.0 / v.rate) + " s, got " +
+                       brief(p.catch_up_limit));
 
   p.odom_frame = in.frame("odom_frame", p.odom_frame, false);
   p.base_frame = in.frame("base_frame", p.base_frame, false);

@@ -338,7 +338,10 @@ TEST(Brief, ShowsAGivenValueExactlyAndAComputedOneShort) {
   EXPECT_EQ(brief(0.1 + 0.2), "0.3");  // 0.30000000000000004: no ten-digit decimal is it
   EXPECT_EQ(brief(1.0 / 3.0), "0.333333");
   EXPECT_EQ(brief(kInf), "inf");
-  EXPECT_EQ(brief(kNaN).find("nan") != std::string::npos, true);
+  EXPECT_EQ(brief(kNaN), "nan");
+  EXPECT_EQ(brief(-kNaN), "nan");  // not "-nan": a NaN's sign bit means nothing
+  EXPECT_EQ(brief(-0.0), "0");     // not "-0"
+  EXPECT_EQ(brief(-kInf), "-inf");
   // beyond(): the rejected value never reads as the bound, however many digits that takes.
   EXPECT_EQ(beyond(200.00000001, 200.0), "200.00000001");
   EXPECT_EQ(beyond(200.0001 / 3.6 * 3.6, 200.0).substr(0, 8), "200.0001");

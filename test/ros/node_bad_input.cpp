@@ -352,6 +352,16 @@ TEST(NodeBadParameters, BadSpeedSlewRatesAreNamed) {
   }
 }
 
+// ~catch_up_limit below one step (1 / ~rate) skipped time at every late tick: refused, naming it.
+TEST(NodeBadParameters, CatchUpLimitBelowOneStepIsNamed) {
+  const NodeRun run = runNamed("short_catch_up", "_rate:=500 _catch_up_limit:=0.001");
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find("/short_catch_up/catch_up_limit: must be at least one step, 1 / ~rate "
+                            "= 0.002 s, got 0.001"),
+            std::string::npos)
+      << run.output;
+}
+
 // ~rate must let the comfort meter filter (ISO 2631-1 Wk: above 25 Hz): named as ~rate.
 TEST(NodeBadParameters, RateTooLowForTheComfortFilterIsNamed) {
   const NodeRun run = runNamed("slow_rate", "_rate:=5");
