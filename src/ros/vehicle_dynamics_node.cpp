@@ -197,6 +197,25 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     }
     flat_since_restart_ = false;
     ++events_.patches_accepted;
+    // The stations are along this vehicle's path by definition (TerrainProfile.msg), whatever
+    // the header says; a patch that names another frame (map, or another vehicle's odom) is
+    // taken all the same, but is more often a wiring mistake than a choice. The odom frame
+    // without ~frame_prefix passes: a terrain source (or a bag made by tvd_make_bag) that
+    // knows of no prefix.
+    const std::string& frame = msg->header.frame_id;
+    const std::string bare = !frame.empty() && frame.front() == '/' ? frame.substr(1) : frame;
+    const std::string& odom = params_.odom_frame;
+    const std::string& prefix = params_.frame_prefix;
+    const bool unprefixed_odom = !prefix.empty() && odom.compare(0, prefix.size(), prefix) == 0 &&
+                                 bare == odom.substr(prefix.size());
+    if (!bare.empty() && bare != odom && !unprefixed_odom) {
+      ++events_.patches_other_frame;
+      last_other_frame_patch_ = "patch at x = " + brief(patch.start_station) + " m in frame '" +
+                                frame + "', not '" + params_.odom_frame + "'";
+      ROS_WARN_THROTTLE(kWarnPeriod,
+                        "%s: terrain %s: taken as stations along this vehicle's path all the same",
+                        nodeName(), last_other_frame_patch_.c_str());
+    }
     // Contacts beyond a patch's outer lines take the edge line's heights (terrain.h); a patch
     // narrower than the vehicle is more often a unit or frame mistake than a choice.
     const Vector& y = vehicle_->sampler().lateral();

@@ -75,6 +75,7 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t narrow = terrain_narrow_.delta(events_.patches_narrow);
   const std::uint64_t behind = terrain_behind_.delta(events_.patches_behind);
   const std::uint64_t implausible = terrain_implausible_.delta(events_.patches_implausible);
+  const std::uint64_t other_frame = terrain_other_frame_.delta(events_.patches_other_frame);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
   if (buffer.empty() && rejected > 0) {
@@ -110,6 +111,10 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "terrain stepped off the ground since the start or reset (altitudes or units?): "
                    "the outputs on it are offset until ~reset");
+  } else if (other_frame > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "patches in another frame than " + params_.odom_frame +
+                       ": taken as stations along this vehicle's path");
   } else if (narrow > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches narrower than the contacts: the outer ones read the edge lines");
@@ -122,6 +127,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("last rejection", last_patch_error_);
   status.add("patches narrower than the contacts (total)", events_.patches_narrow);
   status.add("last narrow patch", last_narrow_patch_);
+  status.add("patches in another frame (total)", events_.patches_other_frame);
+  status.add("last patch in another frame", last_other_frame_patch_);
   status.add("patches unlike ground (total)", events_.patches_implausible);
   status.add("last patch unlike ground", last_implausible_patch_);
   status.add("step off the ground since the start or reset",

@@ -160,7 +160,9 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
 
   ASSERT_TRUE(test::spinUntil([&] { return wheel_messages_ > 0; }, 45.0))
       << "the node published nothing";
-  terrain_pub_.publish(test::flatProfile(-20.0, 20.0));
+  TerrainProfile flat = test::flatProfile(-20.0, 20.0);
+  flat.header.frame_id = prefix_ + "odom";  // this vehicle's path frame
+  terrain_pub_.publish(flat);
   test::spinFor(0.3);  // terrain in, a few steps on it
   collecting_ = true;
   test::spinFor(duration);
@@ -341,6 +343,24 @@ TEST_F(NodeStatic, FlatTerrainAtRestIsStaticEquilibriumWithAllFrames) {
   const double right = diagnostics_.value(": ground contact", "ground force right now [N]");
   EXPECT_GT(left, 0.0);
   EXPECT_NEAR(left, right, 1e-6 * left);
+}
+
+TEST_F(NodeStatic, APatchInAnotherFrameIsTakenAndWarnedAbout) {
+  ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": terrain"); }, 45.0));
+  EXPECT_EQ(diagnostics_.value(": terrain", "patches in another frame (total)"), 0.0)
+      << diagnostics_.describe();
+  // Another vehicle's path frame (or map): the stations are taken as this vehicle's all the same.
+  TerrainProfile other = test::flatProfile(-20.0, 20.0);
+  other.header.frame_id = "veh2/odom";
+  terrain_pub_.publish(other);
+  ASSERT_TRUE(test::spinUntil(
+      [&] { return diagnostics_.value(": terrain", "patches in another frame (total)") == 1.0; },
+      10.0))
+      << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.level(": terrain"), 1) << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.text(": terrain", "last patch in another frame"),
+            "patch at x = -20 m in frame 'veh2/odom', not '" + prefix_ + "odom'");
+  EXPECT_GE(diagnostics_.value(": terrain", "patches accepted (total)"), 1.0);
 }
 
 }  // namespace

@@ -87,6 +87,7 @@ class VehicleDynamicsNode {
     // accepted, but a slope, spacing or step at its start unlike ground (terrain_plausibility.h)
     std::uint64_t patches_implausible = 0;
     std::uint64_t patches_behind = 0;  // valid, but wholly behind the terrain kept: dropped
+    std::uint64_t patches_other_frame = 0;  // header.frame_id set, not this vehicle's odom frame
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
     std::uint64_t speed_timeouts = 0;   // stops after ~speed_timeout without a speed message
     std::uint64_t uncovered_steps = 0;  // steps with at least one contact off the terrain
@@ -238,10 +239,10 @@ class VehicleDynamicsNode {
 
   Events events_;
   Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
-      terrain_uncovered_, terrain_narrow_, terrain_implausible_, terrain_behind_, speed_rejected_,
-      speed_timed_out_;
+      terrain_uncovered_, terrain_narrow_, terrain_implausible_, terrain_behind_,
+      terrain_other_frame_, speed_rejected_, speed_timed_out_;
   std::string last_patch_error_, last_speed_error_, last_narrow_patch_, last_behind_patch_,
-      last_implausible_patch_;
+      last_implausible_patch_, last_other_frame_patch_;
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
   ros::WallTime recent_speed_arrival_;  // zero: none kept
