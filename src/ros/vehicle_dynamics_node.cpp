@@ -347,6 +347,8 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
 
 int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terrain) {
   const int uncovered = vehicle_->resetTo(station, speed, terrain);
+  restart_cleared_ = terrain == ResetTerrain::Clear;
+  restart_station_ = station;
   // Cleared terrain means flat ground (u = 0) until a patch arrives, wherever the restart is.
   if (terrain == ResetTerrain::Clear) {
     flat_since_restart_ = true;

@@ -48,7 +48,7 @@ TerrainProfile plateau(double centre, double half, double height) {
 
 class NodeResetTo : public ::testing::Test {
  protected:
-  NodeResetTo() : private_nh_("~") {
+  NodeResetTo() : private_nh_("~"), diagnostics_(nh_) {
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
     wheels_sub_ = nh_.subscribe("road_wheels", 10000, &NodeResetTo::onWheels, this,
                                 ros::TransportHints().tcpNoDelay());
@@ -96,6 +96,7 @@ class NodeResetTo : public ::testing::Test {
   }
 
   ros::NodeHandle nh_, private_nh_;
+  test::DiagnosticsCache diagnostics_;
   ros::Publisher clock_pub_, terrain_pub_;
   ros::Subscriber wheels_sub_, tf_sub_;
   ros::Time t_{100.0};
@@ -124,6 +125,22 @@ TEST_F(NodeResetTo, RestartsInEquilibriumOnTheTerrainAtTheStation) {
   terrain_pub_.publish(plateau(station, half, height));
   test::spinFor(0.5);
   ASSERT_TRUE(step());  // the patch is in the buffer (it is far ahead: the vehicle does not move)
+  ASSERT_EQ(last_.station, 0.0);
+  // Standing at the start on its flat ground, the patch far ahead: its contacts are off the
+  // terrain, but the vehicle waits as it does with no terrain (OK), not "underrun" (WARN).
+  for (int k = 0; k < 12; ++k)  // 1.2 s of steps: at least one diagnostics period
+    ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.1)));
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.value(": terrain",
+                                  "steps with uncovered contacts (since last report)") > 0.0;
+      },
+      10.0))
+      << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.level(": terrain"), 0) << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.message(": terrain"),
+            "waiting for terrain under the contacts: standing on flat ground since the start or "
+            "reset");
   ASSERT_EQ(last_.station, 0.0);
   ASSERT_TRUE(ros::service::waitForService(service, ros::Duration(10.0)));
 

@@ -92,6 +92,11 @@ class DiagnosticsCache {
           return kv.value;
     return "";
   }
+  /// Summary message of the status whose name ends with `suffix`; empty when none.
+  std::string message(const std::string& suffix) const {
+    const auto* s = find(suffix);
+    return s == nullptr ? std::string() : s->message;
+  }
   std::size_t arrays() const { return arrays_; }
   std::string describe() const {
     std::string out;

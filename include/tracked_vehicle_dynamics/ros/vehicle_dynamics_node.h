@@ -211,6 +211,10 @@ class VehicleDynamicsNode {
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::vector<geometry_msgs::TransformStamped> pending_static_;  // until the first /clock
   bool flat_since_restart_ = true;  // no patch since the start or a reset that cleared the terrain
+  // The last start or reset cleared the terrain (the contacts hold the flat ground u = 0 until a
+  // patch covers them), at this station.
+  bool restart_cleared_ = true;
+  double restart_station_ = 0.0;
   // The last patch taken since then that stepped more than terrain::kLargestPlausibleStep from
   // the ground before it (empty: none): the terrain after it, and every output on it, sit that
   // far off (absolute altitudes, units) until a reset clears the terrain.
