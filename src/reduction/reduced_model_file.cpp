@@ -280,13 +280,25 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                      "by tvd frf, statics or modes?)");
   const double format = in.readScalar("format_version");
   if (format != kReducedModelFormatVersion)
-    throw InputError(where + ": file format version " + brief(format) +
+    throw InputError(where + ": file format version " + beyond(format, kReducedModelFormatVersion) +
                      ", this software reads version " + std::to_string(kReducedModelFormatVersion));
   ReducedModel model;
   model.version = in.readString("version");
-  if (options.require_same_version && model.version != softwareVersion())
-    throw InputError(where + ": written by version " + model.version + ", this is version " +
-                     softwareVersion());
+  // The release is the version before '+', the build (commit) after it.
+  const auto release = [](const std::string& v) { return v.substr(0, v.find('+')); };
+  std::string other_build;
+  if (model.version != softwareVersion()) {
+    if (options.require_same_version ||
+        (options.require_same_release && release(model.version) != release(softwareVersion())))
+      throw InputError(where + ": written by version " + model.version + ", this is version " +
+                       softwareVersion());
+    const bool same_release = release(model.version) == release(softwareVersion());
+    other_build = where + ": written by " +
+                  (same_release ? "build " + model.version + " of this release"
+                                : "version " + model.version) +
+                  ", this is " + softwareVersion() +
+                  ": taken; if the reduction changed between them, tvd reduce writes it again";
+  }
   model.description_hash = in.readString("description_hash");
   if (model.description_hash != expected_hash)
     throw InputError(where + ": reduced from another description (description hash " +
@@ -349,6 +361,8 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                      " of the content differs from "
                      "the stored " +
                      stored);
+  if (!other_build.empty())
+    model.warnings.push_back(other_build);  // after the checksum, which covers the stored ones
   return model;
 }
 

@@ -582,7 +582,11 @@ std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant
 VehicleModelFile loadVehicleModelFile(const std::string& path,
                                       const vehicle::VehicleDescription& description) {
   VehicleModelFile f;
-  f.model = loadReducedModel(path, vehicle::descriptionHashHex(description));
+  // A file the user names: another build of this release is taken with a warning (the cache,
+  // loadOrReduceVehicle, rebuilds on any other version).
+  ReducedModelLoadOptions load;
+  load.require_same_version = false;
+  f.model = loadReducedModel(path, vehicle::descriptionHashHex(description), load);
   if (!parseReductionKey(f.model.reduction, &f.variant, &f.options))
     throw StaleCacheError(path + ": its reduction '" + f.model.reduction +
                           "' is not one tvd reduce writes");

@@ -469,7 +469,30 @@ TEST_F(ReducedModelFileTest, OtherSoftwareVersionIsStaleUnlessAllowed) {
   expectStale(path_, kHash, "written by version 0.0.1");
   ReducedModelLoadOptions options;
   options.require_same_version = false;
-  EXPECT_EQ(loadReducedModel(path_, kHash, options).version, "0.0.1");
+  // Another release: refused unless that is allowed too.
+  expectStale(path_, kHash, "written by version 0.0.1", options);
+  options.require_same_release = false;
+  const ReducedModel other_release = loadReducedModel(path_, kHash, options);
+  EXPECT_EQ(other_release.version, "0.0.1");
+  ASSERT_EQ(other_release.warnings.size(), model_.warnings.size() + 1);
+  EXPECT_NE(other_release.warnings.back().find("written by version 0.0.1, this is "),
+            std::string::npos)
+      << other_release.warnings.back();
+
+  // Another build of this release (the commit after '+'): taken, with a warning, when only the
+  // release must match; refused when the version must.
+  const std::string current = softwareVersion();
+  old.version = current.substr(0, current.find('+')) + "+0123456789ab";
+  ASSERT_NE(old.version, current);
+  saveReducedModel(old, path_);
+  expectStale(path_, kHash, "written by version " + old.version);
+  options.require_same_release = true;
+  const ReducedModel other_build = loadReducedModel(path_, kHash, options);
+  ASSERT_EQ(other_build.warnings.size(), model_.warnings.size() + 1);
+  EXPECT_NE(other_build.warnings.back().find("written by build " + old.version +
+                                             " of this release, this is " + current + ": taken"),
+            std::string::npos)
+      << other_build.warnings.back();
 }
 
 TEST_F(ReducedModelFileTest, TruncatedFilesAreRefused) {

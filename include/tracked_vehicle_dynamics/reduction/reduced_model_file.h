@@ -56,6 +56,11 @@ struct ReducedModelLoadOptions {
   /// Refuse a file written by another software version: the reduction or the assembly may have
   /// changed even when the description did not.
   bool require_same_version = true;
+  /// With require_same_version false: refuse a file of another release (the version before
+  /// '+'), and take one of another build of this release (the commit after '+') with a warning
+  /// in ReducedModel::warnings. A file the user names is a deliverable: a rebuild of the same
+  /// release must not void it; a cache is rebuilt instead.
+  bool require_same_release = true;
   /// When not empty, the file's `reduction` must equal it (same variant and reduction options).
   std::string expected_reduction;
   /// Relative symmetry tolerance of M_R, K_R, C_R: max|A - A^T| <= tol * max|A|.

@@ -74,7 +74,8 @@ struct VehicleModelFile {
 };
 
 /// Loads `path` with the cache's checks (complete MAT file, checksum, format and software
-/// version, the hash of `description`) and parses its reduction key. Throws StaleCacheError,
+/// release, the hash of `description`; another build of this release is taken, with a warning in
+/// its `warnings`) and parses its reduction key. Throws StaleCacheError,
 /// whose message starts with the file name and says what is wrong, also for a key that
 /// reductionKey() does not write; callers append how to make a good file.
 VehicleModelFile loadVehicleModelFile(const std::string& path,
