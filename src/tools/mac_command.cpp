@@ -156,7 +156,11 @@ void run(const MacOptions& opt) {
         const double none = std::numeric_limits<double>::quiet_NaN();
         json.field("tracked_mode", none).field("tracked_hz", none).field("tracked_type", none);
       }
-      json.field("mac", r.correlation.best_mac).key("other_matches").beginArray();
+      // The best match is shown whatever its MAC; below the threshold it is no correlation.
+      json.field("mac", r.correlation.best_mac)
+          .field("matched", hasPartner(r) && r.correlation.best_mac >= opt.threshold)
+          .key("other_matches")
+          .beginArray();
       for (const auto& m : r.correlation.matches) {
         if (m.mode == r.correlation.best_match)
           continue;
@@ -182,7 +186,8 @@ void run(const MacOptions& opt) {
             << opt.threshold << "), among the tracked modes with "
             << brief(100.0 * reduction::kGlobalEnergyShare)
             << " % or more of their kinetic energy in the hull and running gear, as the reduction "
-               "pairs them\n\n";
+               "pairs them; a best match below the threshold is shown and marked (< "
+            << brief(opt.threshold) << ")\n\n";
   std::cout
       << "  UV mode  f_UV [Hz]  type                      TV mode  f_TV [Hz]   MAC   others\n";
   for (const CorrelationRow& r : rows) {
@@ -201,7 +206,10 @@ void run(const MacOptions& opt) {
       std::cout << std::setw(7) << best + 1 << std::setw(11) << tv.modes.frequencies_hz(best);
     else
       std::cout << std::setw(7) << "-" << std::setw(11) << "-";
-    std::cout << std::setw(6) << std::setprecision(2) << r.correlation.best_mac << "   ";
+    std::cout << std::setw(6) << std::setprecision(2) << r.correlation.best_mac
+              << (hasPartner(r) && r.correlation.best_mac < opt.threshold
+                      ? " (< " + brief(opt.threshold) + ") "
+                      : std::string("   "));
     for (const auto& m : r.correlation.matches)
       if (m.mode != best)
         std::cout << "(" << m.mode + 1 << ": " << std::setprecision(2)

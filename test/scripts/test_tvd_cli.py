@@ -222,6 +222,12 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(lifted, [])
         text = self.tvd("statics", "--vehicle", VEHICLE, "--contact", "bilateral").stdout
         self.assertIn(f"mean maximum pressure: {d['mean_peak_pressure_pa'] / 1e3:.1f} kPa", text)
+        # Bonded, the sprocket links pull the chain down: said with the force's own direction.
+        self.assertLess(d["chain_wheel_vertical_force_n"], 0.0)
+        self.assertIn(f"rollers pull it down with {-d['chain_wheel_vertical_force_n'] / 1e3:.2f} kN,"
+                      " with which it pulls the hull up", text)
+        self.assertIn(f"rollers push it up with {u['chain_wheel_vertical_force_n'] / 1e3:.2f} kN",
+                      self.tvd("statics", "--vehicle", VEHICLE).stdout)
         self.assertIn(f"Rowland's empirical estimate {rowland / 1e3:.1f} kPa", text)
         text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
         self.assertIn("nominal ground pressure", text)
@@ -1352,7 +1358,10 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(space[i, j], best, places=12)
             for m in r["other_matches"]:
                 self.assertTrue(tv_global[m["tracked_mode"] - 1], m)
+            # matched: the best MAC reaches the threshold (0.7), else it is shown, not a match.
+            self.assertEqual(r["matched"], r["mac"] >= d["threshold"], r)
         pitch = next(r for r in rows if r["type"] == "pitch")
+        self.assertFalse(pitch["matched"])
         self.assertLess(space[pitch["untracked_mode"] - 1].max(), 0.7)
         self.assertNotEqual(pitch["tracked_mode"], 3)
         # The roll mode pairs with the tracked roll (Table 4: 6.73 -> 13.7 Hz).
