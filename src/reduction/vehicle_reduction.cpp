@@ -322,7 +322,11 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   if (selection.count() == 0)
     throw InputError("reduction: no global mode selected below " + brief(options.band_hz) + " Hz" +
                      (options.rule == VehicleModeRule::MacCorrelation
-                          ? " (MAC threshold " + brief(options.mac_threshold) + ")"
+                          ? " (MAC threshold " + brief(options.mac_threshold) +
+                                " among the global modes of each variant's lowest " +
+                                std::to_string(options.global_modes) +
+                                "; more global_modes (tvd --global-modes, "
+                                "~reduction/global_modes) or a lower threshold may pair some)"
                           : std::string(" (the lowest mode lies above the band; raise --band)")));
 
   // 3. Masters: the ground interface, hull and wheels, then MoGeSeC on the selected modes. As in
@@ -342,8 +346,16 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   for (const vehicle::RoadInput& input : model.vehicle.layout.road_inputs)
     filter.excluded_nodes.push_back(input.node);
   const std::vector<DofIndex> inputs(imposed.begin() + interface_count, imposed.end());
-  MasterSelection masters =
-      selectMasters(model.system.dofs, selected_shapes, inputs, filter, mogesec_options);
+  MasterSelection masters;
+  try {
+    masters = selectMasters(model.system.dofs, selected_shapes, inputs, filter, mogesec_options);
+  } catch (const InputError& e) {
+    // Named as the user sets it: most often a count beyond the candidates of a small variant.
+    throw InputError(std::string("reduction: mogesec_masters ") +
+                     std::to_string(options.mogesec_masters) +
+                     " (tvd --masters, ~reduction/mogesec_masters) for the " +
+                     vehicle::variantName(variant) + " variant: " + e.what());
+  }
   // The basis' masters in interfaceMasters()' order: interface, hull, wheels, then the picks.
   masters.masters.insert(masters.masters.begin(), imposed.begin(),
                          imposed.begin() + interface_count);

@@ -58,6 +58,25 @@ void run(const TerrainOptions& opt) {
       throw InputError("terrain: --iso8608 must be one road class A..H, got '" + opt.iso_class +
                        "'");
     road_class = static_cast<char>(std::toupper(static_cast<unsigned char>(opt.iso_class[0])));
+    // The core's checks name its fields (taper_length, band); here they name the options.
+    if (opt.taper > 0.5 * opt.length)
+      throw InputError("terrain: --taper " + brief(opt.taper) +
+                       " m must be at most half of --length (" + brief(opt.length) +
+                       " m: at most " + brief(0.5 * opt.length) + " m)");
+    if (opt.min_frequency >= opt.max_frequency)
+      throw InputError("terrain: --min-frequency " + brief(opt.min_frequency) +
+                       " cycles/m must be below --max-frequency " + brief(opt.max_frequency) +
+                       " cycles/m");
+    const double nyquist = 0.5 / opt.spacing;
+    if (opt.max_frequency > nyquist)
+      throw InputError("terrain: --max-frequency " + brief(opt.max_frequency) + " cycles/m" +
+                       (opt.max_frequency == terrain::Iso8608Options{}.max_frequency
+                            ? " (the default, ISO 8608's upper bound)"
+                            : "") +
+                       " is above what --spacing " + brief(opt.spacing) +
+                       " m can hold, 1 / (2 spacing) = " + brief(nyquist) +
+                       " cycles/m: give --spacing at most " + brief(0.5 / opt.max_frequency) +
+                       " m or a lower --max-frequency");
     iso_options.min_frequency = opt.min_frequency;
     iso_options.max_frequency = opt.max_frequency;
     iso_options.taper_length = opt.taper;
