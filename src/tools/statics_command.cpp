@@ -65,6 +65,9 @@ void run(const StaticsOptions& opt) {
   const vehicle::VehicleModel& model = contact.vehicle;
   const fem::System& system = contact.system;
   const vehicle::StaticSummary& s = contact.summary;
+  const std::vector<std::string> warnings = vehicle::staticWarnings(s, description);
+  for (const std::string& w : warnings)
+    std::cerr << "tvd: warning: " << w << "\n";
   const vehicle::GroundPressure g = vehicle::groundPressure(model, description, s);
   const auto count = [](const std::vector<bool>& v) {
     return static_cast<int>(std::count(v.begin(), v.end(), true));
@@ -177,6 +180,9 @@ void run(const StaticsOptions& opt) {
           .field("outer_pad_n", a.outer)
           .field("pressure_pa", a.pressure)
           .endObject();
+    json.endArray().key("warnings").beginArray();
+    for (const std::string& w : warnings)
+      json.value(w);
     json.endArray().field("seconds", seconds);
     if (!opt.out_file.empty())
       json.field("out", opt.out_file);

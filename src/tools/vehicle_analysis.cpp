@@ -32,6 +32,8 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
 
   const auto t1 = Clock::now();
   a.statics = vehicle::computeStaticSummary(a.vehicle, a.system);
+  for (const std::string& w : vehicle::staticWarnings(a.statics, description))
+    std::cerr << "tvd: warning: " << w << "\n";
   a.statics_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
 
   fem::ModalRequest request;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/spring_element.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 
@@ -57,6 +58,23 @@ StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& sy
         (fem::bushingMatrix(c.stiffness, c.frame) * (nodal(c.n2) - nodal(c.n1)))(2);
   }
   return s;
+}
+
+std::vector<std::string> staticWarnings(const StaticSummary& summary,
+                                        const VehicleDescription& description) {
+  std::vector<std::string> out;
+  // A linear model's sag grows with load / stiffness without bound; a trailing arm of length a
+  // cannot lower the hull by more than a (the arm turned through 90 degrees). Beyond that the
+  // numbers are a description's typo (5.2e2 for 5.2e5 N m/rad gave 13 m), not a vehicle.
+  const double arm = description.suspension.arm_length;
+  if (std::abs(summary.hull_sag) > arm)
+    out.push_back("static hull sag " + brief(std::abs(summary.hull_sag)) +
+                  " m is more than the road-wheel arm's length (suspension.arm_length " +
+                  brief(arm) +
+                  " m), which no trailing arm travels: check suspension.torsion_bar_stiffness "
+                  "and the masses; the linear model's results mean little this far from its "
+                  "geometry");
+  return out;
 }
 
 }  // namespace vehicle

@@ -822,3 +822,28 @@ TEST(VehicleModes, EveryCopyOfARepeatedTrackAssemblyModeIsFound) {
   EXPECT_EQ(copies, 10) << "the highest returned mode, " << basis.frequencies_hz(kModeCount - 1)
                         << " Hz, should be the tenth copy of the repeated assembly mode";
 }
+
+TEST(VehicleStatics, ASagNoArmTravelsIsWarnedAbout) {
+  // A torsion bar a thousand times too soft (5.2e2 for 5.2e5 N m/rad): the linear model sags by
+  // metres, which loading alone cannot catch (a soft bar is a valid value).
+  veh::VehicleDescription d = veh::loadVehicleDescription(kDescriptionFile);
+  const auto warnings = [&] {
+    const veh::VehicleModel built = veh::buildVehicleModel(d, veh::Variant::Untracked);
+    const tvd::fem::System system = tvd::fem::assemble(built.model);
+    return veh::staticWarnings(veh::computeStaticSummary(built, system), d);
+  };
+  EXPECT_TRUE(warnings().empty());  // the bundled vehicle sags by millimetres
+  d.suspension.torsion_bar_stiffness = 5.2e2;
+  const std::vector<std::string> soft = warnings();
+  ASSERT_EQ(soft.size(), 1u);
+  EXPECT_NE(soft[0].find("more than the road-wheel arm's length (suspension.arm_length 0.58 m)"),
+            std::string::npos)
+      << soft[0];
+  EXPECT_NE(soft[0].find("suspension.torsion_bar_stiffness"), std::string::npos) << soft[0];
+  // The bound is the arm's length: a summary just inside it is not warned about.
+  veh::StaticSummary summary;
+  summary.hull_sag = -0.99 * d.suspension.arm_length;
+  EXPECT_TRUE(veh::staticWarnings(summary, d).empty());
+  summary.hull_sag = -1.01 * d.suspension.arm_length;
+  EXPECT_EQ(veh::staticWarnings(summary, d).size(), 1u);
+}

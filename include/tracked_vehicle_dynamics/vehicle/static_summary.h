@@ -2,10 +2,12 @@
 // sag and attitude, road-wheel and pad loads, and the balance of ground reactions and weight.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 namespace tracked_vehicle_dynamics {
@@ -45,6 +47,13 @@ StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::Syste
 /// `vehicle.model`, under its gravity load).
 StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,
                               const fem::StaticResult& solution);
+
+/// What a solved equilibrium shows to be physically wrong with the description (a typo in a
+/// stiffness or a mass that loading alone does not catch): a hull sag larger than the road-wheel
+/// arm's length, which no trailing arm travels (its wheel would pass the pivot's level by far).
+/// Empty when nothing is.
+std::vector<std::string> staticWarnings(const StaticSummary& summary,
+                                        const VehicleDescription& description);
 
 }  // namespace vehicle
 }  // namespace tracked_vehicle_dynamics
