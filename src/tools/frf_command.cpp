@@ -92,7 +92,7 @@ void checkPoints(const std::vector<std::string>& points,
           "named points: " +
           (known.empty() ? std::string("it has none") : known));
     if (!named)
-      throw InputError("frf: --points: unknown point '" + *it + "' (the description has: " +
+      throw InputError("frf: --points: unknown point '" + *it + "' (the vehicle has: " +
                        (known.empty() ? std::string("no named points") : known) + ")");
     if (std::find(points.begin(), it, *it) != it)
       throw InputError("frf: --points: point '" + *it + "' is listed twice");
@@ -242,7 +242,8 @@ void run(const FrfOptions& opt) {
         .field("vehicle", description.name)
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
-        .field("model", source)
+        .field("model", opt.model)  // reduced | full, as simulate's
+        .field("model_description", source)
         .field("dofs", static_cast<long long>(dofs))
         .field("full_dofs", static_cast<long long>(full_dofs))
         .field("excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous")

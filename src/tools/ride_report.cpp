@@ -58,11 +58,11 @@ std::vector<std::string> choosePoints(const std::string& spec, bool given,
       std::string list;
       for (const std::string& k : known)
         list += (list.empty() ? "" : ", ") + k;
-      throw InputError("ride: --points: the model has no point '" + name + "' (it has " + list +
+      throw InputError("ride: --points: unknown point '" + name + "' (the vehicle has: " + list +
                        ")");
     }
     if (std::find(chosen.begin(), chosen.end(), name) != chosen.end())
-      throw InputError("ride: --points: '" + name + "' is listed twice");
+      throw InputError("ride: --points: point '" + name + "' is listed twice");
     chosen.push_back(name);
   }
   return chosen;

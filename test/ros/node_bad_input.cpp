@@ -253,6 +253,14 @@ NodeRun runNamed(const std::string& name, const std::string& arguments) {
       timeout);
 }
 
+/// Runs the node as runNamed(); it must stop at start-up (exit status 1) saying `message`.
+void expectRefused(const std::string& name, const std::string& arguments,
+                   const std::string& message) {
+  const NodeRun run = runNamed(name, arguments);
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
+}
+
 // ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.
 TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
   int index = 0;
@@ -286,12 +294,9 @@ TEST(NodeBadParameters, UnknownComfortPointIsNamed) {
 
 // ~max_speed beyond the tools' 200 km/h: refused, with both units.
 TEST(NodeBadParameters, MaxSpeedBeyondTheModelsRangeIsRefused) {
-  const NodeRun run = runNamed("bad_max_speed", "_max_speed:=100.0");
-  EXPECT_EQ(run.exit_status, 1) << run.output;
-  EXPECT_NE(run.output.find("/bad_max_speed/max_speed: must be at most 55.5556 m/s (200 km/h, as "
-                            "tvd's --speed-kmh), got 100"),
-            std::string::npos)
-      << run.output;
+  expectRefused("bad_max_speed", "_max_speed:=100.0",
+                "/bad_max_speed/max_speed: must be at most 55.5556 m/s (200 km/h, as tvd's "
+                "--speed-kmh), got 100");
 }
 
 // ~imu_points: each entry a published point frame, once; every bad entry is named.
@@ -328,10 +333,8 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
     EXPECT_NE(run.output.find("/" + c.name + "/" + c.message), std::string::npos) << run.output;
   }
   // Not a list (a scalar on the command line).
-  const NodeRun run = runNamed("imu_scalar", "_imu_points:=sensor_mount");
-  EXPECT_EQ(run.exit_status, 1) << run.output;
-  EXPECT_NE(run.output.find("/imu_scalar/imu_points: must be a list of strings"), std::string::npos)
-      << run.output;
+  expectRefused("imu_scalar", "_imu_points:=sensor_mount",
+                "/imu_scalar/imu_points: must be a list of strings");
 }
 
 // ~max_acceleration and ~max_deceleration: >= 0 m/s^2 and finite, a number; each named.
@@ -354,12 +357,9 @@ TEST(NodeBadParameters, BadSpeedSlewRatesAreNamed) {
 
 // ~catch_up_limit below one step (1 / ~rate) skipped time at every late tick: refused, naming it.
 TEST(NodeBadParameters, CatchUpLimitBelowOneStepIsNamed) {
-  const NodeRun run = runNamed("short_catch_up", "_rate:=500 _catch_up_limit:=0.001");
-  EXPECT_EQ(run.exit_status, 1) << run.output;
-  EXPECT_NE(run.output.find("/short_catch_up/catch_up_limit: must be at least one step, 1 / ~rate "
-                            "= 0.002 s, got 0.001"),
-            std::string::npos)
-      << run.output;
+  expectRefused("short_catch_up", "_rate:=500 _catch_up_limit:=0.001",
+                "/short_catch_up/catch_up_limit: must be at least one step, 1 / ~rate = 0.002 s, "
+                "got 0.001");
 }
 
 // ~rate must let the comfort meter filter (ISO 2631-1 Wk: above 25 Hz): named as ~rate.
