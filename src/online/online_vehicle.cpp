@@ -214,7 +214,7 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
                      " m: |station| must not exceed " + brief(kMaxResetStation) +
                      " m (beyond it a step's advance is lost in the station's rounding)");
   }
-  setSpeed(speed);  // validates first: a bad speed throws before anything changes
+  setSpeed(speed);            // validates first: a bad speed throws before anything changes
   speed_ = commanded_speed_;  // at once, also with a slew: it restarts at rest relative to it
   travel_acceleration_ = 0.0;
   station_ = station;

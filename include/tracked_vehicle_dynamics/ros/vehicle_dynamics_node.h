@@ -86,7 +86,7 @@ class VehicleDynamicsNode {
     std::uint64_t patches_narrow = 0;  // accepted, but narrower than the contacts' lateral span
     // accepted, but a slope, spacing or step at its start unlike ground (terrain_plausibility.h)
     std::uint64_t patches_implausible = 0;
-    std::uint64_t patches_behind = 0;  // valid, but wholly behind the terrain kept: dropped
+    std::uint64_t patches_behind = 0;       // valid, but wholly behind the terrain kept: dropped
     std::uint64_t patches_other_frame = 0;  // header.frame_id set, not this vehicle's odom frame
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
     std::uint64_t speed_timeouts = 0;   // stops after ~speed_timeout without a speed message
