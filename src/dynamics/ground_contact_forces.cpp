@@ -61,6 +61,34 @@ Simulator coordinateSimulator(const SecondOrderSystem& system,
   return Simulator(s, modal->withOutput(s.output, s.output_names), o);
 }
 
+// The contacts' Simulator on the run's discretisation: its Phi and Gamma, the contacts' output
+// equation (discretize() keeps the continuous state, so C, D and y0 carry over as they are).
+Simulator coordinateSimulator(const SecondOrderSystem& system,
+                              const std::vector<GroundContact>& contacts, SimulatorOptions options,
+                              const StateSpace& discrete) {
+  const SecondOrderSystem s = coordinateSystem(system, contacts);
+  const SimulatorOptions o = coordinateOptions(std::move(options), anyDamped(contacts));
+  if (o.method != DiscretizationMethod::AugmentedExponential)
+    throw InputError(
+        "ground contact forces: a shared discretisation needs the augmented "
+        "exponential method");
+  const StateSpace outputs = fromSecondOrder(s, o.quantities, o.generalized_force);
+  if (discrete.isContinuous() || discrete.stateCount() != outputs.stateCount() ||
+      discrete.inputCount() != outputs.inputCount())
+    throw InputError("ground contact forces: the shared discretisation has " +
+                     std::to_string(discrete.stateCount()) + " states and " +
+                     std::to_string(discrete.inputCount()) + " inputs (sample time " +
+                     brief(discrete.sample_time) + " s), the system " +
+                     std::to_string(outputs.stateCount()) + " and " +
+                     std::to_string(outputs.inputCount()));
+  StateSpace d = discrete;
+  d.output_matrix = outputs.output_matrix;
+  d.feedthrough_matrix = outputs.feedthrough_matrix;
+  d.output_offset = outputs.output_offset;
+  d.output_names = outputs.output_names;
+  return Simulator(d);
+}
+
 // out[k] = w_k(column) for k = 0 .. samples-1 from the held series (its channel's events).
 void heldColumn(const HeldInputSeries& series, const std::vector<DofIndex>& channel_of,
                 DofIndex column, double* out) {
@@ -140,6 +168,14 @@ GroundContactForces::GroundContactForces(const SecondOrderSystem& system,
                                          SimulatorOptions options, const ModalSystem* modal)
     : contacts_(std::move(contacts)),
       sim_(coordinateSimulator(system, contacts_, std::move(options), modal)),
+      n_u_(system.inputCount()),
+      damped_(anyDamped(contacts_)) {}
+
+GroundContactForces::GroundContactForces(const SecondOrderSystem& system,
+                                         std::vector<GroundContact> contacts,
+                                         SimulatorOptions options, const StateSpace& discrete)
+    : contacts_(std::move(contacts)),
+      sim_(coordinateSimulator(system, contacts_, std::move(options), discrete)),
       n_u_(system.inputCount()),
       damped_(anyDamped(contacts_)) {}
 

@@ -11,6 +11,7 @@
 
 #include "dynamics_test_models.h"
 #include "expect_input_error.h"
+#include "tracked_vehicle_dynamics/dynamics/discretization.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_monitor.h"
@@ -294,6 +295,60 @@ TEST(GroundContact, TheRunsModalDecompositionGivesTheSameForces) {
   expectInputError([&] { dynamics::Simulator(s, other, options); }, "20 modes");
   expectInputError([&] { modal.withOutput(Matrix::Zero(2, 23), {}); }, "24 columns");
   expectInputError([&] { modal.withOutput(Matrix::Zero(2, 24), {"a"}); }, "1 names for 2");
+}
+
+// tvd simulate --method exact hands the run's discretisation to its contact forces: the same
+// forces as from their own augmented exponential, to the bit, for both holds and with a damped
+// contact (velocity outputs); a discretisation of another system is refused.
+TEST(GroundContact, TheRunsExactDiscretisationGivesTheSameForces) {
+  const SecondOrderSystem base = dynamics::test::randomVehicle(24, 5, 4, 11);
+  Matrix w = Matrix::Zero(300, 10);
+  for (long k = 0; k < w.rows(); ++k)
+    for (int q = 0; q < 5; ++q) {
+      w(k, q) = 0.01 * std::sin(0.05 * static_cast<double>(k * (q + 1)));
+      w(k, 5 + q) = 0.5 * (q + 1) * 0.01 * std::cos(0.05 * static_cast<double>(k * (q + 1)));
+    }
+  for (const bool damped : {false, true}) {
+    // The test vehicle's tyres are damped (C_u != 0: velocity outputs too); without C_u not.
+    SecondOrderSystem s = base;
+    if (!damped)
+      s.input_damping.setZero();
+    const std::vector<GroundContact> contacts = dynamics::groundContacts(s);
+    ASSERT_EQ(contacts.front().damping != 0.0, damped);
+    for (const auto hold : {dynamics::InputHold::ZeroOrder, dynamics::InputHold::FirstOrder}) {
+      SCOPED_TRACE(std::string(damped ? "damped" : "undamped") + ", hold " +
+                   dynamics::holdName(hold));
+      SimulatorOptions options;
+      options.time_step = 1e-3;
+      options.hold = hold;
+      options.method = dynamics::DiscretizationMethod::AugmentedExponential;
+      options.generalized_force = Vector::LinSpaced(24, -900.0, 300.0);
+      const dynamics::StateSpace discrete = dynamics::discretize(
+          dynamics::fromSecondOrder(s, options.quantities, options.generalized_force),
+          options.time_step, options.hold);
+      GroundContactForces own(s, contacts, options);
+      GroundContactForces shared(s, contacts, options, discrete);
+      own.reset(Vector::Zero(48), w.row(0).transpose());
+      shared.reset(Vector::Zero(48), w.row(0).transpose());
+      const Matrix a = own.simulate(w);
+      ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
+      EXPECT_EQ(a, shared.simulate(w));
+      // The run's Simulator on the same discretisation is the one built from the system.
+      dynamics::Simulator from_system(s, options);
+      dynamics::Simulator from_discrete(discrete);
+      EXPECT_EQ(from_discrete.simulate(w), from_system.simulate(w));
+    }
+  }
+  SimulatorOptions options;
+  options.method = dynamics::DiscretizationMethod::AugmentedExponential;
+  const SecondOrderSystem other = dynamics::test::randomVehicle(20, 5, 4, 11);
+  const dynamics::StateSpace wrong =
+      dynamics::discretize(dynamics::fromSecondOrder(other), options.time_step, options.hold);
+  const std::vector<GroundContact> contacts = dynamics::groundContacts(base);
+  expectInputError([&] { GroundContactForces(base, contacts, options, wrong); }, "40 states");
+  options.method = dynamics::DiscretizationMethod::ModalDecoupled;
+  expectInputError([&] { GroundContactForces(base, contacts, options, wrong); },
+                   "augmented exponential");
 }
 
 TEST(GroundContactMonitor, TensionAtRestIsCountedApart) {

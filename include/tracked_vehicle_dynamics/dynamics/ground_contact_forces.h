@@ -22,6 +22,7 @@
 #include "tracked_vehicle_dynamics/dynamics/held_input_series.h"
 #include "tracked_vehicle_dynamics/dynamics/second_order_system.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
+#include "tracked_vehicle_dynamics/dynamics/state_space.h"
 #include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
@@ -43,6 +44,14 @@ class GroundContactForces {
   /// system again (the tracked vehicle: 431 DOFs, about a third of `tvd simulate`'s set-up).
   GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
                       SimulatorOptions options, const ModalSystem* modal = nullptr);
+  /// The same on the run's exact discretisation, `discrete` = discretize(fromSecondOrder(system,
+  /// options.quantities, options.generalized_force), options.time_step, options.hold) (method
+  /// AugmentedExponential): the forces' Simulator steps its Phi and Gamma with the contacts'
+  /// outputs (the state is the continuous one, so only the output equation differs) instead of
+  /// computing the augmented exponential again (about 10 s on the tracked vehicle). Throws
+  /// InputError as above, and when `discrete` is continuous or its sizes are not the system's.
+  GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
+                      SimulatorOptions options, const StateSpace& discrete);
 
   /// As Simulator::reset(state, input): z0 [2n], w0 [2 n_inputs].
   void reset(const Vector& state, const Vector& input);
