@@ -85,10 +85,19 @@ void ReducedModelFlags::addTo(CLI::App* command) {
                    "reduced model from `tvd reduce --out` (.mat) instead of the cache; it keeps "
                    "the reduction options it was made with")
       ->check(CLI::ExistingFile);
-  cache_dir_option_ = command->add_option(
-      "--cache-dir", cache_dir_,
-      "reduced-model cache (default $XDG_CACHE_HOME/tracked_vehicle_dynamics, else "
-      "~/.cache/tracked_vehicle_dynamics; not used with --reduced)");
+  cache_dir_option_ =
+      command
+          ->add_option(
+              "--cache-dir", cache_dir_,
+              "reduced-model cache (default $XDG_CACHE_HOME/tracked_vehicle_dynamics, else "
+              "~/.cache/tracked_vehicle_dynamics; not used with --reduced)")
+          // Not checked for writing: an unwritable cache warns and the run goes
+          // on. An empty one silently meant the default.
+          ->check(CLI::Validator(
+              [](std::string& text) {
+                return text.empty() ? std::string("must name a directory, got ''") : std::string();
+              },
+              "DIR"));
   reduction_.addTo(command);
 }
 

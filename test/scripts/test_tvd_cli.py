@@ -2132,6 +2132,8 @@ class TvdCliTest(unittest.TestCase):
                                 "--ground-contact applies to --model reduced only")
         self.assert_input_error(["modes", "--vehicle", VEHICLE, "--out", ""],
                                 "--out", "must name a directory")
+        # An empty --cache-dir is no directory (it silently meant the default cache).
+        self.assert_input_error(sim + ["--cache-dir", ""], "--cache-dir", "must name a directory")
         chain = os.path.join(ROOT, "config", "models", "spring_mass_chain.yaml")
         self.assert_input_error(["modes", "--model", chain, "--max-frequency", "0"],
                                 "--max-frequency", "must be a positive number")
