@@ -204,11 +204,12 @@ ModalBasis sortAndNormalise(const Vector& values, const Matrix& vectors, const S
   return basis;
 }
 
-// Replaces the highest of `current`'s modes by the `added` columns of the extra ones: the lowest
-// current.count() of the union, in `values` and `vectors`.
+// Adds the `added` columns of the extra modes to `current`'s and keeps, in `values` and
+// `vectors`, the lowest current.count() of the union (the added displace the highest), or all of
+// it with `keep_all`.
 void keepLowest(const ModalBasis& current, const Vector& extra_values, const Matrix& extra_vectors,
-                const std::vector<Eigen::Index>& added, const SparseMatrix& mass, Vector* values,
-                Matrix* vectors) {
+                const std::vector<Eigen::Index>& added, const SparseMatrix& mass, bool keep_all,
+                Vector* values, Matrix* vectors) {
   const Eigen::Index found = current.count();
   Vector merged_values(found + static_cast<Eigen::Index>(added.size()));
   Matrix merged_vectors(current.shapes.rows(), merged_values.size());
@@ -219,8 +220,9 @@ void keepLowest(const ModalBasis& current, const Vector& extra_values, const Mat
     merged_vectors.col(found + static_cast<Eigen::Index>(j)) = extra_vectors.col(added[j]);
   }
   const ModalBasis merged = sortAndNormalise(merged_values, merged_vectors, &mass, nullptr);
-  *values = merged.eigenvalues.head(found);
-  *vectors = merged.shapes.leftCols(found);
+  const Eigen::Index keep = keep_all ? merged.count() : found;
+  *values = merged.eigenvalues.head(keep);
+  *vectors = merged.shapes.leftCols(keep);
 }
 
 }  // namespace
@@ -301,6 +303,11 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     nev = std::min(request.count, 2 * nev);
   }
 
+  // With a frequency limit the union of found and recovered modes is kept (the limit and the
+  // count cut it at the end): dropping the highest for a recovered copy could leave modes under
+  // the limit out.
+  const bool keep_union = request.max_frequency_hz > 0;
+
   // Verification of repeated eigenvalues: a Krylov space holds one vector per distinct
   // eigenvalue, so exact copies (the six rigid-body modes of a free structure, symmetric pairs)
   // may be missed. A missed copy has an eigenvalue below the highest one kept, i.e. it dominates
@@ -338,7 +345,7 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     op.deflate(Matrix());
     if (added.empty())
       break;
-    keepLowest(current, extra_values, extra_vectors, added, mass, &values, &vectors);
+    keepLowest(current, extra_values, extra_vectors, added, mass, keep_union, &values, &vectors);
   }
 
   // The count check (Sylvester's law, eigenvalue_count.h). The verification above finds a missed
@@ -348,7 +355,7 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
   // the highest mode kept counts every mode below it; the missing ones are sought by deflated
   // Lanczos runs, each asked for them and a few more.
   int missed = 0;
-  for (int pass = 0; pass < kMaxDeflationPasses; ++pass) {
+  for (int pass = 0;; ++pass) {
     const Eigen::Index found = values.size();
     if (found == 0)
       break;
@@ -358,19 +365,24 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     const auto returned_below =
         static_cast<int>((current.eigenvalues.array() < accept_below).count());
     try {
-      missed = eigenvaluesBelow(stiffness, mass, accept_below) - returned_below;
+      missed = std::max(eigenvaluesBelow(stiffness, mass, accept_below) - returned_below, 0);
     } catch (const SolverError&) {
       missed = 0;  // an eigenvalue at the limit to working precision: no count, no claim
       break;
     }
-    if (missed <= 0 || found + missed + kVerificationModes >= n) {
-      missed = std::max(missed, 0);
+    // Counted after every recovery, so `missed` is the final set's; recovered up to
+    // kMaxDeflationPasses times.
+    if (missed == 0 || pass == kMaxDeflationPasses || found + missed + kVerificationModes >= n)
       break;
-    }
     op.deflate(current.shapes);
     Vector extra_values;
     Matrix extra_vectors;
-    std::tie(extra_values, extra_vectors) = lanczos(missed + kVerificationModes);
+    try {
+      std::tie(extra_values, extra_vectors) = lanczos(missed + kVerificationModes);
+    } catch (const SolverError&) {
+      op.deflate(Matrix());  // the modes found stand; the count says what they lack
+      break;
+    }
     op.deflate(Matrix());
     std::vector<Eigen::Index> added;
     for (Eigen::Index i = 0; i < extra_values.size(); ++i)
@@ -378,7 +390,7 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
         added.push_back(i);
     if (added.empty())
       break;
-    keepLowest(current, extra_values, extra_vectors, added, mass, &values, &vectors);
+    keepLowest(current, extra_values, extra_vectors, added, mass, keep_union, &values, &vectors);
   }
 
   ModalBasis basis = sortAndNormalise(values, vectors, &mass, nullptr);
@@ -405,7 +417,7 @@ std::string missedModesWarning(const ModalBasis& basis) {
          brief(basis.frequencies_hz(basis.count() - 1)) + " Hz but the system has " +
          std::to_string(basis.missed) +
          " more below that frequency (Sylvester count), copies of a repeated eigenvalue that "
-         "deflated runs did not recover: these are not the lowest modes; ask for more modes";
+         "deflated runs could not recover: these are not the lowest modes; ask for more modes";
 }
 
 ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass) {

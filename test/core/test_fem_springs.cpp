@@ -1,8 +1,10 @@
 // Springs, masses, rigid joints and solver errors against hand-solved cases.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -390,6 +392,57 @@ TEST(StaticSolver, GroundReactionsBalanceGravity) {
   const tvd::fem::System sys = tvd::fem::assemble(model);
   const auto r = tvd::fem::solveStatic(sys, sys.gravity_load);
   EXPECT_NEAR(r.displacement(0), -50.0 * tvd::kStandardGravity / 2e5, 1e-15);
+}
+
+// 80 copies of 5 Hz among 300 distinct frequencies of 1..100 Hz, uncoupled (K diagonal, M
+// unequal masses): a Krylov space holds one vector per distinct eigenvalue, so a Lanczos run
+// returns few copies; the solver's Sylvester count must bring back every one, for a count and
+// for a frequency limit (where recovered copies must not push modes under the limit out).
+TEST(ModalSolver, EveryCopyOfAManyfoldEigenvalueIsReturned) {
+  std::vector<double> hz;
+  for (int i = 0; i < 300; ++i)
+    hz.push_back(1.0 + 99.0 * i / 299.0);
+  for (int i = 0; i < 80; ++i)
+    hz.push_back(5.0);
+  const auto n = static_cast<Eigen::Index>(hz.size());
+  std::vector<tvd::Triplet> k, m;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double mass = 1.0 + 0.01 * static_cast<double>(i % 7);
+    m.emplace_back(i, i, mass);
+    k.emplace_back(i, i, mass * std::pow(2.0 * kPi * hz[static_cast<std::size_t>(i)], 2));
+  }
+  tvd::SparseMatrix ks(n, n), ms(n, n);
+  ks.setFromTriplets(k.begin(), k.end());
+  ms.setFromTriplets(m.begin(), m.end());
+  std::vector<double> sorted = hz;
+  std::sort(sorted.begin(), sorted.end());
+
+  tvd::fem::ModalRequest by_count;
+  by_count.count = 100;  // 13 distinct below 5 Hz, the 80 copies, 7 above
+  const tvd::fem::ModalBasis lowest = tvd::fem::solveModes(ks, ms, by_count);
+  ASSERT_EQ(lowest.count(), 100);
+  EXPECT_EQ(lowest.missed, 0);
+  EXPECT_EQ(tvd::fem::missedModesWarning(lowest), "");
+  for (int i = 0; i < 100; ++i)
+    EXPECT_NEAR(lowest.frequencies_hz(i), sorted[static_cast<std::size_t>(i)], 1e-9) << i;
+
+  tvd::fem::ModalRequest by_limit;
+  by_limit.count = 300;
+  by_limit.max_frequency_hz = 6.0;  // 16 distinct up to 5.97 Hz and the 80 copies
+  const tvd::fem::ModalBasis below = tvd::fem::solveModes(ks, ms, by_limit);
+  ASSERT_EQ(below.count(), 96);
+  EXPECT_EQ(below.missed, 0);
+  for (int i = 0; i < 96; ++i)
+    EXPECT_NEAR(below.frequencies_hz(i), sorted[static_cast<std::size_t>(i)], 1e-9) << i;
+
+  // What cannot be recovered is said, with how many and below which frequency.
+  tvd::fem::ModalBasis short_of_some = lowest;
+  short_of_some.missed = 3;
+  EXPECT_NE(tvd::fem::missedModesWarning(short_of_some)
+                .find("returned 100 modes up to " + tvd::brief(lowest.frequencies_hz(99)) +
+                      " Hz but the system has 3 more below that frequency"),
+            std::string::npos)
+      << tvd::fem::missedModesWarning(short_of_some);
 }
 
 TEST(ModalSolver, BadRequestsAreRejected) {
