@@ -248,6 +248,10 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
   }
 }
 
+bool VehicleDynamicsNode::standingOnClearedGround() const {
+  return restart_cleared_ && vehicle_->speed() == 0.0 && vehicle_->station() == restart_station_;
+}
+
 void VehicleDynamicsNode::rememberPatch(const TerrainProfile::ConstPtr& msg) {
   const ros::WallTime arrival = ros::WallTime::now();
   const ros::WallTime oldest = arrival - ros::WallDuration(kRewindWindow);
@@ -571,8 +575,12 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     step_total_.add(step_seconds);
     sample_time_ += ros::Duration().fromNSec(step_ns_);
     ++steps_since_start_;
-    // Standing still before any terrain arrived is the normal start, not an underrun.
-    const bool waiting = vehicle_->terrain().empty() && vehicle_->speed() == 0.0;
+    last_uncovered_ = result.uncovered;
+    // Standing still before any terrain arrived is the normal start, not an underrun; so is
+    // standing where a start or reset put it while the patches lie elsewhere (a ~reset_to target
+    // sent first).
+    const bool waiting =
+        (vehicle_->terrain().empty() && vehicle_->speed() == 0.0) || standingOnClearedGround();
     if (result.uncovered > 0 && !waiting) {
       ++events_.uncovered_steps;
       if (vehicle_->terrain().empty()) {

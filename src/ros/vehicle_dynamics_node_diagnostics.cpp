@@ -78,10 +78,6 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t other_frame = terrain_other_frame_.delta(events_.patches_other_frame);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
-  // Standing where the last start or reset put it, on the flat ground it cleared to, with the
-  // patches elsewhere (ahead, for a ~reset_to with keep_terrain): waiting, as with no patch.
-  const bool standing_on_cleared_ground =
-      restart_cleared_ && vehicle_->speed() == 0.0 && vehicle_->station() == restart_station_;
   if (buffer.empty() && rejected > 0) {
     // A source wrong from its first message must not look like one that has not started.
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
@@ -99,7 +95,7 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
                    flat_since_restart_ ? "no terrain yet: moving on flat ground since the start "
                                          "or reset"
                                        : "no terrain: holding the last heights");
-  } else if (uncovered > 0 && !standing_on_cleared_ground) {
+  } else if (uncovered > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "terrain underrun: contacts off the terrain held at their last height");
   } else if (rejected > 0) {
@@ -122,7 +118,10 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   } else if (narrow > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches narrower than the contacts: the outer ones read the edge lines");
-  } else if (uncovered > 0) {
+  } else if (last_uncovered_ > 0 && standingOnClearedGround()) {
+    // Standing where the last start or reset put it, on the flat ground it cleared to, with the
+    // patches elsewhere (a ~reset_to target sent first): waiting, as with no patch; its steps
+    // are not counted as uncovered.
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    "waiting for terrain under the contacts: standing on flat ground since the "
                    "start or reset");

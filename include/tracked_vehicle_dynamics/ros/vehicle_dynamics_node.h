@@ -158,6 +158,8 @@ class VehicleDynamicsNode {
   /// stamped nearer `now` than the ROS time they arrived at, and the last speed if it arrived in
   /// that window, go to the restarted vehicle. Clears the kept inputs.
   void reapplyRecentInputs(const ros::Time& now);
+  /// Standing (speed 0) where the last start or reset put it, on the flat ground it cleared to.
+  bool standingOnClearedGround() const;
   /// Keeps an accepted patch (taken, or dropped as wholly behind) for reapplyRecentInputs.
   void rememberPatch(const TerrainProfile::ConstPtr& msg);
   void publishState();
@@ -215,6 +217,7 @@ class VehicleDynamicsNode {
   // patch covers them), at this station.
   bool restart_cleared_ = true;
   double restart_station_ = 0.0;
+  int last_uncovered_ = 0;  // contacts off the terrain at the last step
   // The last patch taken since then that stepped more than terrain::kLargestPlausibleStep from
   // the ground before it (empty: none): the terrain after it, and every output on it, sit that
   // far off (absolute altitudes, units) until a reset clears the terrain.
