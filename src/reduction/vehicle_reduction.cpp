@@ -320,14 +320,16 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     selection = selectModes(model.modes.frequencies_hz, selection_options);
   }
   if (selection.count() == 0)
-    throw InputError("reduction: no global mode selected below " + brief(options.band_hz) + " Hz" +
-                     (options.rule == VehicleModeRule::MacCorrelation
-                          ? " (MAC threshold " + brief(options.mac_threshold) +
-                                " among the global modes of each variant's lowest " +
-                                std::to_string(options.global_modes) +
-                                "; more global_modes (tvd --global-modes, "
-                                "~reduction/global_modes) or a lower threshold may pair some)"
-                          : std::string(" (the lowest mode lies above the band; raise --band)")));
+    throw InputError(
+        "reduction: no global mode selected below " + brief(options.band_hz) + " Hz" +
+        (options.rule == VehicleModeRule::MacCorrelation
+             ? " (MAC threshold " + brief(options.mac_threshold) +
+                   " among the global modes of each variant's lowest " +
+                   std::to_string(options.global_modes) +
+                   "; more global_modes (tvd --global-modes, "
+                   "~reduction/global_modes) or a lower mac_threshold (tvd --mac-threshold, "
+                   "~reduction/mac_threshold) may pair some)"
+             : std::string(" (the lowest mode lies above the band; raise --band)")));
 
   // 3. Masters: the ground interface, hull and wheels, then MoGeSeC on the selected modes. As in
   // the paper (§3.1.2), MoGeSeC starts from the input DOFs (hull and wheels) alone: the pad soles
@@ -350,11 +352,12 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   try {
     masters = selectMasters(model.system.dofs, selected_shapes, inputs, filter, mogesec_options);
   } catch (const InputError& e) {
-    // Named as the user sets it: most often a count beyond the candidates of a small variant.
-    throw InputError(std::string("reduction: mogesec_masters ") +
+    // With the setting the user knows it by (most often a count beyond a small variant's
+    // candidates), not as its cause.
+    throw InputError(std::string("reduction: MoGeSeC masters of the ") +
+                     vehicle::variantName(variant) + " variant, mogesec_masters " +
                      std::to_string(options.mogesec_masters) +
-                     " (tvd --masters, ~reduction/mogesec_masters) for the " +
-                     vehicle::variantName(variant) + " variant: " + e.what());
+                     " (tvd --masters, ~reduction/mogesec_masters): " + e.what());
   }
   // The basis' masters in interfaceMasters()' order: interface, hull, wheels, then the picks.
   masters.masters.insert(masters.masters.begin(), imposed.begin(),

@@ -304,7 +304,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
   // Less than one step would skip time at every tick that is a step late (on real time, most).
-  if (p.catch_up_limit < 1.0 / v.rate)
+  // (to rounding: 0.000333333 typed for one step at 3000 Hz is one step)
+  if (p.catch_up_limit * v.rate < 1.0 - 1e-6)
     throw in.error("catch_up_limit",
                    "must be at least one step, 1 / ~rate = " + brief(1.0 / v.rate) + " s, got " +
                        brief(p.catch_up_limit));

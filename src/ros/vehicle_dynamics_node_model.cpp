@@ -139,7 +139,8 @@ void VehicleDynamicsNode::loadVehicle() {
 }
 
 // ~reduced_model: a file of `tvd reduce --out`, checked as the cache is (complete MAT file,
-// checksum, format and software version, the description's hash) and holding the ~variant. It is
+// checksum, format version, software release (another build of it warns), the description's
+// hash) and holding the ~variant. It is
 // the user's explicit choice, so a file that fails a check stops the node instead of being
 // rebuilt behind their back; the message says how to make a good one.
 reduction::ReducedModel VehicleDynamicsNode::loadGivenModel(

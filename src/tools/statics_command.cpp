@@ -261,7 +261,8 @@ void run(const StaticsOptions& opt) {
               << (s.chain_wheel_vertical >= 0.0 ? "push it up" : "pull it down") << " with "
               << std::abs(s.chain_wheel_vertical) / 1e3 << " kN, with which it "
               << (s.chain_wheel_vertical >= 0.0 ? "pushes the hull down" : "pulls the hull up")
-              << " (the loop's tension at rest)";
+              << (s.chain_wheel_vertical >= 0.0 ? " (the loop's tension at rest)"
+                                                : " (the bonded links pulling on them)");
   else
     std::cout << ": the track assemblies under them add their own weight ("
               << model.layout.mass.track_assemblies * model.model.gravity.norm() / 1e3 << " kN)";

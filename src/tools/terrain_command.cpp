@@ -45,6 +45,13 @@ double rmsHeight(const terrain::Terrain& t, Eigen::Index first, Eigen::Index las
   return std::sqrt(block.squaredNorm() / static_cast<double>(block.size()));
 }
 
+// `value` > 0 to six significant digits, rounded down: a bound the user may type back as it is
+// (brief() rounds 1/6 up to 0.166667, which the bound then refuses).
+std::string roundedDown(double value) {
+  const double scale = std::pow(10.0, 5 - std::floor(std::log10(value)));
+  return brief(std::floor(value * scale) / scale);
+}
+
 void run(const TerrainOptions& opt) {
   const bool iso = !opt.iso_class.empty();
   char road_class = 0;
@@ -75,7 +82,7 @@ void run(const TerrainOptions& opt) {
                             : "") +
                        " is above what --spacing " + brief(opt.spacing) +
                        " m can hold, 1 / (2 spacing) = " + brief(nyquist) +
-                       " cycles/m: give --spacing at most " + brief(0.5 / opt.max_frequency) +
+                       " cycles/m: give --spacing at most " + roundedDown(0.5 / opt.max_frequency) +
                        " m or a lower --max-frequency");
     iso_options.min_frequency = opt.min_frequency;
     iso_options.max_frequency = opt.max_frequency;

@@ -1723,6 +1723,32 @@ class TvdCliTest(unittest.TestCase):
         self.assertNotIn("Traceback", message)
         self.assertNotIn("terminate called", message)
 
+    def test_random_road_and_reduction_errors_name_the_options(self):
+        """tvd terrain --iso8608 names --taper and --length, --max-frequency and --spacing (its
+        suggested spacing is accepted as printed); a MoGeSeC count beyond the candidates and a
+        MAC selection that pairs nothing name the options that set them."""
+        road = self.path("named_road.csv")
+        iso = ["terrain", "--iso8608", "C", "--out", road]
+        self.assert_input_error(iso + ["--length", "100", "--taper", "60"],
+                                "--taper 60 m must be at most half of --length (100 m: at most "
+                                "50 m)")
+        self.assert_input_error(iso + ["--min-frequency", "3"],
+                                "--min-frequency 3 cycles/m must be below --max-frequency 2.83")
+        r = self.tvd(*iso, "--max-frequency", "3", "--spacing", "0.2", status=INPUT_ERROR_STATUS)
+        self.assertIn("--max-frequency 3 cycles/m is above what --spacing 0.2 m can hold, "
+                      "1 / (2 spacing) = 2.5 cycles/m: give --spacing at most 0.166666 m", r.stderr)
+        self.tvd(*iso, "--max-frequency", "3", "--spacing", "0.166666", "--length", "20")
+        self.assertTrue(os.path.exists(road))
+        reduce = ["reduce", "--vehicle", VEHICLE, "--variant", "untracked"]
+        self.assert_input_error(reduce + ["--masters", "1000"],
+                                "MoGeSeC masters of the untracked variant, mogesec_masters 1000 "
+                                "(tvd --masters, ~reduction/mogesec_masters)",
+                                "only 364 candidates")
+        self.assert_input_error(reduce + ["--global-modes", "5"],
+                                "no global mode selected below 30 Hz (MAC threshold 0.7 among the "
+                                "global modes of each variant's lowest 5",
+                                "--global-modes", "--mac-threshold")
+
     def test_a_run_that_cannot_be_driven_is_refused_before_the_model_is_built(self):
         """A track of one station, or a speed too slow to finish within the step limit, is
         refused at once: no reduction is run (the cache directory stays empty) and the refusal
