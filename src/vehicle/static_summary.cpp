@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -63,17 +64,33 @@ StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& sy
 std::vector<std::string> staticWarnings(const StaticSummary& summary,
                                         const VehicleDescription& description) {
   std::vector<std::string> out;
-  // A linear model's sag grows with load / stiffness without bound; a trailing arm of length a
-  // cannot lower the hull by more than a (the arm turned through 90 degrees). Beyond that the
-  // numbers are a description's typo (5.2e2 for 5.2e5 N m/rad gave 13 m), not a vehicle.
-  const double arm = description.suspension.arm_length;
-  if (std::abs(summary.hull_sag) > arm)
+  // A linear model's deflections grow with load / stiffness without bound; a trailing arm turns
+  // through a fraction of a radian. Beyond that the numbers are a description's typo (5.2e2 for
+  // 5.2e5 N m/rad), not a vehicle.
+  const SuspensionDescription& arm = description.suspension;
+  // The arm's static rotation: the torsion bar carries the wheel's load on the lever
+  // a cos(beta), theta = F a cos(beta) / k_t. In the tracked model the chain can carry the
+  // hull with the arms turned through many radians and the hull barely lower, so the hull's sag
+  // alone does not show it.
+  double largest_load = 0.0;
+  for (double load : summary.wheel_loads)
+    largest_load = std::max(largest_load, std::abs(load));
+  const double rotation =
+      largest_load * arm.arm_length * std::cos(arm.arm_angle) / arm.torsion_bar_stiffness;
+  if (rotation > kMaxStaticArmRotation)
+    out.push_back("the most loaded road wheel's arm turns " + brief(rotation) +
+                  " rad under its static load (" + brief(largest_load) +
+                  " N x arm_length x cos(arm_angle) / torsion_bar_stiffness), more than " +
+                  brief(kMaxStaticArmRotation) +
+                  " rad: check suspension.torsion_bar_stiffness and the masses; the linear "
+                  "model's results mean little this far from its geometry");
+  // The hull lower by more than an arm's length: no trailing arm travels that far.
+  if (std::abs(summary.hull_sag) > arm.arm_length)
     out.push_back("static hull sag " + brief(std::abs(summary.hull_sag)) +
                   " m is more than the road-wheel arm's length (suspension.arm_length " +
-                  brief(arm) +
+                  brief(arm.arm_length) +
                   " m), which no trailing arm travels: check suspension.torsion_bar_stiffness "
-                  "and the masses; the linear model's results mean little this far from its "
-                  "geometry");
+                  "and the masses");
   return out;
 }
 

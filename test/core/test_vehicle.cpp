@@ -823,27 +823,42 @@ TEST(VehicleModes, EveryCopyOfARepeatedTrackAssemblyModeIsFound) {
                         << " Hz, should be the tenth copy of the repeated assembly mode";
 }
 
-TEST(VehicleStatics, ASagNoArmTravelsIsWarnedAbout) {
-  // A torsion bar a thousand times too soft (5.2e2 for 5.2e5 N m/rad): the linear model sags by
-  // metres, which loading alone cannot catch (a soft bar is a valid value).
+TEST(VehicleStatics, AnArmTurnedBeyondItsTravelIsWarnedAbout) {
+  // A torsion bar a thousand times too soft (5.2e2 for 5.2e5 N m/rad): the arms turn through
+  // tens of radians, which loading alone cannot catch (a soft bar is a valid value); in the
+  // tracked model the chain carries the hull and it sags by millimetres only, so the arm's
+  // rotation, not the sag, must show it.
   veh::VehicleDescription d = veh::loadVehicleDescription(kDescriptionFile);
-  const auto warnings = [&] {
-    const veh::VehicleModel built = veh::buildVehicleModel(d, veh::Variant::Untracked);
+  const auto warnings = [&](veh::Variant variant) {
+    const veh::VehicleModel built = veh::buildVehicleModel(d, variant);
     const tvd::fem::System system = tvd::fem::assemble(built.model);
     return veh::staticWarnings(veh::computeStaticSummary(built, system), d);
   };
-  EXPECT_TRUE(warnings().empty());  // the bundled vehicle sags by millimetres
+  for (const veh::Variant v : {veh::Variant::Untracked, veh::Variant::Tracked})
+    EXPECT_TRUE(warnings(v).empty());  // the bundled vehicle's arms turn at most 0.09 rad
   d.suspension.torsion_bar_stiffness = 5.2e2;
-  const std::vector<std::string> soft = warnings();
-  ASSERT_EQ(soft.size(), 1u);
-  EXPECT_NE(soft[0].find("more than the road-wheel arm's length (suspension.arm_length 0.58 m)"),
-            std::string::npos)
-      << soft[0];
-  EXPECT_NE(soft[0].find("suspension.torsion_bar_stiffness"), std::string::npos) << soft[0];
-  // The bound is the arm's length: a summary just inside it is not warned about.
+  for (const veh::Variant v : {veh::Variant::Untracked, veh::Variant::Tracked}) {
+    const std::vector<std::string> soft = warnings(v);
+    ASSERT_GE(soft.size(), 1u) << veh::variantName(v);
+    EXPECT_NE(soft[0].find("the most loaded road wheel's arm turns"), std::string::npos) << soft[0];
+    EXPECT_NE(soft[0].find("check suspension.torsion_bar_stiffness"), std::string::npos) << soft[0];
+  }
+  // The bounds, on summaries: the arm's rotation F a cos(beta) / k_t, and the sag against the
+  // arm's length.
+  d = veh::loadVehicleDescription(kDescriptionFile);
+  const double lever = d.suspension.arm_length * std::cos(d.suspension.arm_angle);
   veh::StaticSummary summary;
+  summary.wheel_loads = {
+      1e4, -0.99 * veh::kMaxStaticArmRotation * d.suspension.torsion_bar_stiffness / lever};
+  EXPECT_TRUE(veh::staticWarnings(summary, d).empty());
+  summary.wheel_loads[1] *= 1.02;
+  EXPECT_EQ(veh::staticWarnings(summary, d).size(), 1u);
+  summary.wheel_loads = {1e4};
   summary.hull_sag = -0.99 * d.suspension.arm_length;
   EXPECT_TRUE(veh::staticWarnings(summary, d).empty());
   summary.hull_sag = -1.01 * d.suspension.arm_length;
-  EXPECT_EQ(veh::staticWarnings(summary, d).size(), 1u);
+  ASSERT_EQ(veh::staticWarnings(summary, d).size(), 1u);
+  EXPECT_NE(veh::staticWarnings(summary, d)[0].find("more than the road-wheel arm's length "
+                                                    "(suspension.arm_length 0.58 m)"),
+            std::string::npos);
 }

@@ -48,10 +48,15 @@ StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::Syste
 StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,
                               const fem::StaticResult& solution);
 
+/// A road-wheel arm's static rotation beyond which the description is taken for a typo [rad]
+/// (57 degrees: a torsion-bar arm's whole travel is about that, from full rebound to the bump
+/// stop; the bundled vehicle's arms turn at most 0.09 rad).
+constexpr double kMaxStaticArmRotation = 1.0;
+
 /// What a solved equilibrium shows to be physically wrong with the description (a typo in a
-/// stiffness or a mass that loading alone does not catch): a hull sag larger than the road-wheel
-/// arm's length, which no trailing arm travels (its wheel would pass the pivot's level by far).
-/// Empty when nothing is.
+/// stiffness or a mass that loading alone does not catch): a road-wheel arm turned by more than
+/// kMaxStaticArmRotation under its static load, or a hull sag larger than the arm's length,
+/// which no trailing arm travels. Empty when nothing is.
 std::vector<std::string> staticWarnings(const StaticSummary& summary,
                                         const VehicleDescription& description);
 
