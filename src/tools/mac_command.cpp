@@ -1,5 +1,6 @@
 // `tvd mac`: MAC between the un-tracked and tracked variants (paper eq. 11, Fig. 9) and the
 // correlation table of Table 4.
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -206,10 +207,13 @@ void run(const MacOptions& opt) {
       std::cout << std::setw(7) << best + 1 << std::setw(11) << tv.modes.frequencies_hz(best);
     else
       std::cout << std::setw(7) << "-" << std::setw(11) << "-";
-    std::cout << std::setw(6) << std::setprecision(2) << r.correlation.best_mac
-              << (hasPartner(r) && r.correlation.best_mac < opt.threshold
-                      ? " (< " + brief(opt.threshold) + ") "
-                      : std::string("   "));
+    // Three decimals where two would round a MAC below the threshold up to it ("0.70 (< 0.7)").
+    const bool below = hasPartner(r) && r.correlation.best_mac < opt.threshold;
+    const int decimals =
+        below && std::round(100.0 * r.correlation.best_mac) >= 100.0 * opt.threshold ? 3 : 2;
+    std::cout << std::setw(6) << std::setprecision(decimals) << r.correlation.best_mac
+              << std::setprecision(2)
+              << (below ? " (< " + brief(opt.threshold) + ") " : std::string("   "));
     for (const auto& m : r.correlation.matches)
       if (m.mode != best)
         std::cout << "(" << m.mode + 1 << ": " << std::setprecision(2)

@@ -349,6 +349,14 @@ TEST_F(NodeStatic, APatchInAnotherFrameIsTakenAndWarnedAbout) {
   ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.has(": terrain"); }, 45.0));
   EXPECT_EQ(diagnostics_.value(": terrain", "patches in another frame (total)"), 0.0)
       << diagnostics_.describe();
+  // Its own odom frame with a leading '/' (tf1 style), and odom without ~frame_prefix (a source
+  // that knows of no prefix): taken, not counted (the count below is exactly the one patch).
+  for (const std::string& frame : {"/" + prefix_ + "odom", std::string("odom")}) {
+    TerrainProfile own = test::flatProfile(-20.0, 20.0);
+    own.header.frame_id = frame;
+    terrain_pub_.publish(own);
+    test::spinFor(0.2);
+  }
   // Another vehicle's path frame (or map): the stations are taken as this vehicle's all the same.
   TerrainProfile other = test::flatProfile(-20.0, 20.0);
   other.header.frame_id = "veh2/odom";
@@ -360,7 +368,7 @@ TEST_F(NodeStatic, APatchInAnotherFrameIsTakenAndWarnedAbout) {
   EXPECT_EQ(diagnostics_.level(": terrain"), 1) << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.text(": terrain", "last patch in another frame"),
             "patch at x = -20 m in frame 'veh2/odom', not '" + prefix_ + "odom'");
-  EXPECT_GE(diagnostics_.value(": terrain", "patches accepted (total)"), 1.0);
+  EXPECT_GE(diagnostics_.value(": terrain", "patches accepted (total)"), 3.0);
 }
 
 }  // namespace
