@@ -231,6 +231,15 @@ TEST(GroundContact, HeldSeriesGivesTheDenseSeriesForces) {
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * a.cwiseAbs().maxCoeff());
 }
 
+// From rest (48 states) under the series w: the two give the same forces to the bit, not all zero.
+void expectSameForces(GroundContactForces& own, GroundContactForces& shared, const Matrix& w) {
+  own.reset(Vector::Zero(48), w.row(0).transpose());
+  shared.reset(Vector::Zero(48), w.row(0).transpose());
+  const Matrix a = own.simulate(w);
+  ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(a, shared.simulate(w));
+}
+
 // tvd simulate hands the run's ModalSystem to its contact forces: the same forces as from their
 // own decomposition, to the bit (the same eigen-solve, H Phi with the contacts' rows), for both
 // holds, with and without truncated modes; and a Simulator on a ModalSystem is the one built from
@@ -261,11 +270,7 @@ TEST(GroundContact, TheRunsModalDecompositionGivesTheSameForces) {
       options.generalized_force = Vector::LinSpaced(24, -900.0, 300.0);
       GroundContactForces own(s, contacts, options);
       GroundContactForces shared(s, contacts, options, &modal);
-      own.reset(Vector::Zero(48), w.row(0).transpose());
-      shared.reset(Vector::Zero(48), w.row(0).transpose());
-      const Matrix a = own.simulate(w);
-      ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
-      EXPECT_EQ(a, shared.simulate(w));
+      expectSameForces(own, shared, w);
 
       dynamics::Simulator from_system(s, options);
       dynamics::Simulator from_modes(s, modal, options);
@@ -328,11 +333,7 @@ TEST(GroundContact, TheRunsExactDiscretisationGivesTheSameForces) {
           options.time_step, options.hold);
       GroundContactForces own(s, contacts, options);
       GroundContactForces shared(s, contacts, options, discrete);
-      own.reset(Vector::Zero(48), w.row(0).transpose());
-      shared.reset(Vector::Zero(48), w.row(0).transpose());
-      const Matrix a = own.simulate(w);
-      ASSERT_GT(a.cwiseAbs().maxCoeff(), 0.0);
-      EXPECT_EQ(a, shared.simulate(w));
+      expectSameForces(own, shared, w);
       // The run's Simulator on the same discretisation is the one built from the system.
       dynamics::Simulator from_system(s, options);
       dynamics::Simulator from_discrete(discrete);
