@@ -78,18 +78,24 @@ OnlineVehicleOptions options(dynamics::DiscretizationMethod method) {
   return o;
 }
 
+/// Flat ground (height 0) from `from` to `to` [m] every `spacing`, on two lines at y =
+/// +-half_width.
+TerrainPatch flatPatch(double from, double to, double spacing, double half_width) {
+  TerrainPatch flat;
+  flat.start_station = from;
+  flat.spacing = spacing;
+  flat.lateral = Eigen::Vector2d(-half_width, half_width);
+  flat.heights = Matrix::Zero(2, std::lround((to - from) / spacing) + 1);
+  return flat;
+}
+
 }  // namespace
 
 TEST(OnlineVehicle, AtRestOnFlatTerrainStaysInStaticEquilibrium) {
   const reduction::ReducedModel model = test::toyModel();
   OnlineVehicle vehicle(model, test::toyGeometry(),
                         options(dynamics::DiscretizationMethod::ModalDecoupled));
-  TerrainPatch flat;
-  flat.start_station = -5.0;
-  flat.spacing = 0.1;
-  flat.lateral = Eigen::Vector2d(-1.0, 1.0);
-  flat.heights = Matrix::Zero(2, 101);
-  vehicle.addTerrain(flat);
+  vehicle.addTerrain(flatPatch(-5.0, 5.0, 0.1, 1.0));  // 101 samples
   const Vector6 start = vehicle.hullDisplacement();
   // Equilibrium: K q0 = f_g; the hull sinks by g (M + 2 m) / (2 k_t) + g M / (2 k_s).
   using T = test::ToyVehicle;
@@ -407,15 +413,6 @@ OnlineVehicleOptions slewing(double max_acceleration, double max_deceleration) {
   return o;
 }
 
-TerrainPatch flatPatch(double length) {
-  TerrainPatch flat;
-  flat.start_station = -5.0;
-  flat.spacing = 0.5;
-  flat.lateral = Eigen::Vector2d(-1.0, 1.0);
-  flat.heights = Matrix::Zero(2, static_cast<Eigen::Index>(length / flat.spacing) + 1);
-  return flat;
-}
-
 }  // namespace
 
 TEST(OnlineVehicle, WithoutSlewASpeedAppliesAtOnceWithoutTravelInertia) {
@@ -434,7 +431,7 @@ TEST(OnlineVehicle, SlewReachesTheCommandedSpeedAlongUniformlyAcceleratedMotion)
   OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), slewing(kAccel, kDecel));
   EXPECT_TRUE(vehicle.slews());
   EXPECT_EQ(vehicle.simulator().inputCount(), 6);  // [u; a; u'; 0]
-  vehicle.addTerrain(flatPatch(200.0));
+  vehicle.addTerrain(flatPatch(-5.0, 195.0, 0.5, 1.0));
   const double h = 1.0 / kRate;
   // 0 -> 10 m/s at 2 m/s^2: 5 s = 5000 steps, s = a t^2 / 2.
   vehicle.setSpeed(10.0);
@@ -507,7 +504,7 @@ TEST(OnlineVehicle, ConstantBrakingPitchesToTheStaticValueAndTheImuReadsTheBraki
   constexpr double kBraking = 0.3 * kStandardGravity;
   const reduction::ReducedModel model = test::toyModel();
   OnlineVehicle vehicle(model, test::toyGeometry(), slewing(1.0, kBraking));
-  vehicle.addTerrain(flatPatch(200.0));
+  vehicle.addTerrain(flatPatch(-5.0, 195.0, 0.5, 1.0));
   vehicle.resetTo(0.0, 20.0, ResetTerrain::Keep);
   const Vector6 rest = vehicle.hullDisplacement();
   vehicle.setSpeed(0.0);
@@ -551,12 +548,7 @@ TEST(OnlineVehicle, BrakingPaperVehicleSettlesToTheReducedModelsStaticPitch) {
       reduction::reduceVehicle(description, vehicle::Variant::Untracked, {});
   constexpr double kBraking = 1.0;  // [m/s^2]
   OnlineVehicle vehicle(model, vehicleGeometry(description), slewing(1.0, kBraking));
-  TerrainPatch flat;
-  flat.start_station = -10.0;
-  flat.spacing = 1.0;
-  flat.lateral = Eigen::Vector2d(-3.0, 3.0);
-  flat.heights = Matrix::Zero(2, 400);
-  vehicle.addTerrain(flat);
+  vehicle.addTerrain(flatPatch(-10.0, 389.0, 1.0, 3.0));  // 400 samples
   vehicle.resetTo(0.0, 25.0, ResetTerrain::Keep);
   const double rest = vehicle.hullDisplacement()(4);
   vehicle.setSpeed(0.0);
