@@ -159,11 +159,12 @@ std::vector<std::string> VehicleDynamicsNode::judgePatch(const TerrainPatch& pat
                                                          bool* stepped) const {
   // Against the terrain the contacts read before it, or the flat ground of a start or reset.
   const bool flat_ground = flat_since_restart_ && vehicle_->terrain().empty();
-  *stepped = terrain::patchStep(patch.start_station, patch.lateral, patch.heights,
-                                vehicle_->terrain(), flat_ground)
-                 .implausible();
-  return terrain::patchWarnings(patch.start_station, patch.spacing, patch.lateral, patch.heights,
-                                vehicle_->terrain(), flat_ground);
+  terrain::PatchStep step;
+  std::vector<std::string> doubts =
+      terrain::patchWarnings(patch.start_station, patch.spacing, patch.lateral, patch.heights,
+                             vehicle_->terrain(), flat_ground, &step);
+  *stepped = step.implausible();
+  return doubts;
 }
 
 void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {

@@ -66,8 +66,10 @@ std::vector<std::string> terrainWarnings(const std::string& name, const Terrain&
 
 std::vector<std::string> patchWarnings(double start, double spacing, const Vector& lateral,
                                        const Matrix& heights, const TerrainBuffer& buffer,
-                                       bool flat_ground) {
+                                       bool flat_ground, PatchStep* step_out) {
   std::vector<std::string> warnings;
+  if (step_out != nullptr)
+    *step_out = PatchStep{};
   if (lateral.size() == 0 || heights.rows() != lateral.size() || heights.cols() == 0 ||
       !(spacing > 0.0) || !std::isfinite(start))
     return warnings;  // addPatch refuses it and says why
@@ -80,6 +82,8 @@ std::vector<std::string> patchWarnings(double start, double spacing, const Vecto
     warnings.push_back(spacingText(spacing));
   // The step a contact meets entering the patch: from what it reads (or holds) just before.
   const PatchStep step = patchStep(start, lateral, heights, buffer, flat_ground);
+  if (step_out != nullptr)
+    *step_out = step;
   if (step.implausible()) {
     const bool has_terrain = !std::isnan(buffer.heightBefore(start, lateral(0)));
     warnings.push_back(

@@ -194,8 +194,15 @@ TEST(TerrainPlausibility, AnOnlinePatchIsCheckedAgainstTheGroundBeforeIt) {
   // After a gap the contacts hold the last heights: the step is from there.
   Matrix down = patch(100.0);
   down.row(1).setConstant(99.0);
-  w = patchWarnings(20.0, 0.1, y, down, buffer, false);
+  PatchStep judged;
+  w = patchWarnings(20.0, 0.1, y, down, buffer, false, &judged);
   ASSERT_EQ(w.size(), 1u);
+  // The step it judged is handed out, as patchStep() gives it.
+  const PatchStep step = patchStep(20.0, y, down, buffer, false);
+  EXPECT_TRUE(judged.known && judged.implausible());
+  EXPECT_EQ(judged.step, step.step);
+  EXPECT_EQ(judged.reference, step.reference);
+  EXPECT_EQ(judged.lateral, step.lateral);
   EXPECT_EQ(w[0].rfind("starts 3.5 m below the terrain before it (102.5 m at y = 2 m)", 0), 0u)
       << w[0];
   // A patch starting before all the terrain has nothing before it.

@@ -55,10 +55,13 @@ std::vector<std::string> terrainWarnings(const std::string& name, const Terrain&
 /// stand on z = 0), the flat ground. A step beyond kLargestPlausibleStep is named with its sign
 /// and reference. The texts do not name the patch; the caller does. Safe on any input (a patch
 /// addPatch refuses gets no warnings, or ones the caller drops with the patch): call it before
-/// the patch is added, since the step is from the terrain without it.
+/// the patch is added, since the step is from the terrain without it. `step`, when given,
+/// receives the patchStep() it judged (unknown for a patch it does not judge), so a caller that
+/// needs the step too does not compute it again.
+struct PatchStep;
 std::vector<std::string> patchWarnings(double start, double spacing, const Vector& lateral,
                                        const Matrix& heights, const TerrainBuffer& buffer,
-                                       bool flat_ground);
+                                       bool flat_ground, PatchStep* step = nullptr);
 
 /// The step a contact meets entering a patch (heights [n_y x n_x] on lines `lateral`) at its
 /// first station `start`: over the lines j, the largest |h(j, 0) - before_j|, before_j what the
