@@ -55,12 +55,15 @@ std::unique_ptr<SimulatorEngine> makeEngine(const SecondOrderSystem& system,
   if (options.max_mode_frequency_hz != 0.0)
     throw InputError(
         "Simulator: max_mode_frequency_hz applies to DiscretizationMethod::ModalDecoupled only");
-  const StateSpace continuous =
-      fromSecondOrder(system, options.quantities, options.generalized_force);
-  return makeDenseEngine(discretize(continuous, options.time_step, options.hold));
+  return makeDenseEngine(exactDiscretization(system, options));
 }
 
 }  // namespace
+
+StateSpace exactDiscretization(const SecondOrderSystem& system, const SimulatorOptions& options) {
+  return discretize(fromSecondOrder(system, options.quantities, options.generalized_force),
+                    options.time_step, options.hold);
+}
 
 Simulator::Simulator(const StateSpace& discrete) {
   validateStateSpace(discrete);

@@ -23,7 +23,6 @@
 #include "simulation_layout.h"
 #include "terrain_coverage.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
-#include "tracked_vehicle_dynamics/dynamics/discretization.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_monitor.h"
@@ -278,9 +277,7 @@ void run(const SimulateOptions& opt) {
   std::optional<dynamics::StateSpace> discrete;
   if (!full && sim_options.method == dynamics::DiscretizationMethod::AugmentedExponential &&
       opt.ground_contact == "on")
-    discrete = dynamics::discretize(
-        dynamics::fromSecondOrder(sys, sim_options.quantities, sim_options.generalized_force),
-        sim_options.time_step, sim_options.hold);
+    discrete = dynamics::exactDiscretization(sys, sim_options);
   dynamics::Simulator sim = modal      ? dynamics::Simulator(sys, *modal, sim_options)
                             : discrete ? dynamics::Simulator(*discrete)
                                        : dynamics::Simulator(sys, sim_options);

@@ -328,9 +328,7 @@ TEST(GroundContact, TheRunsExactDiscretisationGivesTheSameForces) {
       options.hold = hold;
       options.method = dynamics::DiscretizationMethod::AugmentedExponential;
       options.generalized_force = Vector::LinSpaced(24, -900.0, 300.0);
-      const dynamics::StateSpace discrete = dynamics::discretize(
-          dynamics::fromSecondOrder(s, options.quantities, options.generalized_force),
-          options.time_step, options.hold);
+      const dynamics::StateSpace discrete = dynamics::exactDiscretization(s, options);
       GroundContactForces own(s, contacts, options);
       GroundContactForces shared(s, contacts, options, discrete);
       expectSameForces(own, shared, w);

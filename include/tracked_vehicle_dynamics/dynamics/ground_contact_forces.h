@@ -44,12 +44,12 @@ class GroundContactForces {
   /// system again (the tracked vehicle: 431 DOFs, about a third of `tvd simulate`'s set-up).
   GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
                       SimulatorOptions options, const ModalSystem* modal = nullptr);
-  /// The same on the run's exact discretisation, `discrete` = discretize(fromSecondOrder(system,
-  /// options.quantities, options.generalized_force), options.time_step, options.hold) (method
-  /// AugmentedExponential): the forces' Simulator steps its Phi and Gamma with the contacts'
-  /// outputs (the state is the continuous one, so only the output equation differs) instead of
-  /// computing the augmented exponential again (about 10 s on the tracked vehicle). Throws
-  /// InputError as above, and when `discrete` is continuous or its sizes are not the system's.
+  /// The same on the run's exact discretisation, `discrete` = exactDiscretization(system,
+  /// options) (method AugmentedExponential): the forces' Simulator steps its Phi and Gamma with the
+  /// contacts' outputs (the state is the continuous one, so only the output equation differs)
+  /// instead of computing the augmented exponential again (about 10 s on the tracked vehicle).
+  /// Throws InputError as above, and when `discrete` is continuous or its sizes are not the
+  /// system's.
   GroundContactForces(const SecondOrderSystem& system, std::vector<GroundContact> contacts,
                       SimulatorOptions options, const StateSpace& discrete);
 

@@ -80,6 +80,12 @@ inline double nyquistCutoff(double time_step) {
   return 0.5 / time_step;
 }
 
+/// The discrete system Simulator(system, options) steps with the augmented exponential method:
+/// discretize(fromSecondOrder(system, options.quantities, options.generalized_force),
+/// options.time_step, options.hold). Computed once, it can serve Simulator(discrete) and another
+/// simulator on the same state with other outputs (GroundContactForces). Throws as they do.
+StateSpace exactDiscretization(const SecondOrderSystem& system, const SimulatorOptions& options);
+
 class SimulatorEngine;
 
 class Simulator {
