@@ -6,6 +6,8 @@
 #include <unordered_map>
 #include <utility>
 
+#include "tracked_vehicle_dynamics/dynamics/ground_tie_damping.h"
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/output_layout.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
@@ -86,13 +88,50 @@ dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model
   return sim;
 }
 
+namespace {
+
+// The simulator; with the modal method on a decomposition made here, whose modes also tell
+// whether the ground-tie modes are dynamic and damped to an inertial frame
+// (ground_tie_damping.h): `tie_warning` receives that warning, "" when they are not.
+dynamics::Simulator makeSimulator(const reduction::ReducedModel& model,
+                                  const OnlineVehicleOptions& options, std::string* tie_warning) {
+  const dynamics::SecondOrderSystem system = simulatedSystem(model, options);
+  const dynamics::SimulatorOptions sim = simulatorOptions(model, options);
+  std::optional<dynamics::ModalSystem> modal;
+  if (sim.method == dynamics::DiscretizationMethod::ModalDecoupled)
+    modal.emplace(system);
+  try {
+    const std::string how =
+        !modal                               ? "method exact integrates every mode"
+        : options.max_mode_frequency_hz == 0 ? "max_mode_frequency 0 keeps every mode dynamic"
+        : options.max_mode_frequency_hz > 0
+            ? "max_mode_frequency " + brief(options.max_mode_frequency_hz) + " Hz"
+            : "max_mode_frequency defaults to rate / 2, " + brief(sim.max_mode_frequency_hz) +
+                  " Hz";
+    const std::string instead =
+        !modal ? "use the modal method, which keeps the modes above max_mode_frequency (rate / "
+                 "2 by default) quasi-static"
+               : "set max_mode_frequency below them (the ride modes lie far below), which keeps "
+                 "them quasi-static";
+    *tie_warning = dynamics::groundTieDampingWarning(
+        system, dynamics::groundContacts(model.system), modal ? &*modal : nullptr,
+        sim.max_mode_frequency_hz, dynamics::nyquistCutoff(sim.time_step), how, instead);
+  } catch (const Error&) {
+    // Road inputs that are no ground springs (the contact watch says so), or a model not held
+    // by them alone: no tie to judge.
+  }
+  return modal ? dynamics::Simulator(system, *modal, sim) : dynamics::Simulator(system, sim);
+}
+
+}  // namespace
+
 OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeometry geometry,
                              const OnlineVehicleOptions& options,
                              const std::vector<int>& contact_groups)
     : geometry_(std::move(geometry)),
       options_(options),
       time_step_(1.0 / options.rate),
-      simulator_(simulatedSystem(model, options), simulatorOptions(model, options)),
+      simulator_(makeSimulator(model, options, &tie_warning_)),
       sampler_(model.system.input_stations, model.system.input_lateral,
                inputsWithRate(model.system)),
       comfort_(options.rate, comfortOptions(options)),

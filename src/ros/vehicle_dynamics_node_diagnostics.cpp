@@ -257,6 +257,8 @@ void VehicleDynamicsNode::diagnoseGroundContact(
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "not checked (~ground_contact_rate 0)");
     return;
   }
+  if (!vehicle_->groundTieDampingWarning().empty())
+    status.add("damped ground ties", vehicle_->groundTieDampingWarning());
   const dynamics::GroundContactRecord interval = watch->takeInterval();
   const dynamics::GroundContactRecord& run = watch->sinceRestart();
   const dynamics::GroundContactNow& now = watch->now();

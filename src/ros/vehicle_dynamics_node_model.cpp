@@ -97,6 +97,10 @@ void VehicleDynamicsNode::loadVehicle() {
     // (e.g. a ~reduction/global_modes that cuts a repeated eigenvalue).
     for (const std::string& warning : model.warnings)
       ROS_WARN("%s: reduction: %s", nodeName(), warning.c_str());
+    // ~method exact (or a ~max_mode_frequency above the ground ties) with modal damping: the
+    // contact forces of the ground-contact check carry a damping force no road exerts.
+    if (!vehicle_->groundTieDampingWarning().empty())
+      ROS_WARN("%s: %s", nodeName(), vehicle_->groundTieDampingWarning().c_str());
   } catch (const Error& e) {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }

@@ -53,13 +53,25 @@ double medianSpacing(const Vector& x) {
   return *middle;  // the upper median for an even count: a warning, not a statistic
 }
 
+bool isSampledProfile(const Terrain& terrain) {
+  const Vector& x = terrain.stations();
+  const Matrix& h = terrain.heights();
+  if (x.size() < 2 || (h.array() == h(0, 0)).all())
+    return false;  // a single station, or flat: any spacing describes it
+  const double median = medianSpacing(x);
+  Eigen::Index alike = 0;
+  for (Eigen::Index i = 0; i + 1 < x.size(); ++i)
+    alike += std::abs(x(i + 1) - x(i) - median) <= kUniformSpacingTolerance * median;
+  return static_cast<double>(alike) >= kUniformSpacingShare * static_cast<double>(x.size() - 1);
+}
+
 std::vector<std::string> terrainWarnings(const std::string& name, const Terrain& terrain) {
   std::vector<std::string> warnings;
   const SteepestSlope s = steepestSlope(terrain);
   if (s.slope > kSteepestPlausibleSlope)
     warnings.push_back(name + ": " + slopeText(s));
   const double spacing = medianSpacing(terrain.stations());
-  if (spacing > kCoarsestPlausibleSpacing)
+  if (spacing > kCoarsestPlausibleSpacing && isSampledProfile(terrain))
     warnings.push_back(name + ": " + spacingText(spacing));
   return warnings;
 }

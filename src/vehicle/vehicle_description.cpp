@@ -348,6 +348,35 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
                 " m inside the pitch line, more than the " +
                 (d.sprocket.radius <= d.idler.radius ? "sprocket" : "idler") + " radius " +
                 brief(wrap_radius) + " m that the chain wraps");
+  // A section's radius of gyration sqrt(I / A) cannot exceed the link it belongs to (pitch
+  // along the track, width across): an inertia in mm^4 typed as m^4, 1e12 times too stiff
+  // against the pins' flexibility, leaves a chain whose stiffness matrix the solvers lose.
+  const double link_size = std::max(t.pitch, t.width);
+  const struct {
+    double inertia, area;
+    const char *key, *area_key;
+  } sections[] = {
+      {t.link_member_bending_inertia, t.link_member_area, "link_member_bending_inertia",
+       "link_member_area"},
+      {t.link_member_lateral_inertia, t.link_member_area, "link_member_lateral_inertia",
+       "link_member_area"},
+      {t.link_member_torsion_constant, t.link_member_area, "link_member_torsion_constant",
+       "link_member_area"},
+      {t.link_beam_bending_inertia, t.link_beam_area, "link_beam_bending_inertia",
+       "link_beam_area"},
+      {t.link_beam_inplane_inertia, t.link_beam_area, "link_beam_inplane_inertia",
+       "link_beam_area"},
+      {t.link_beam_torsion_constant, t.link_beam_area, "link_beam_torsion_constant",
+       "link_beam_area"},
+  };
+  for (const auto& sec : sections) {
+    const double gyration = std::sqrt(sec.inertia / sec.area);
+    c.require(gyration <= link_size, std::string("track_assembly.") + sec.key,
+              brief(sec.inertia) + " m^4 over " + sec.area_key + " " + brief(sec.area) +
+                  " m^2 gives a radius of gyration sqrt(I / A) = " + brief(gyration) +
+                  " m, larger than the link (" + brief(link_size) +
+                  " m, the larger of pitch and width): mm^4 typed as m^4?");
+  }
   // The guide horns touch the wheel's rim between the wheel path and the hub.
   c.require(d.suspension.guide_contact_height < d.road_wheel.radius,
             "suspension.guide_contact_height",

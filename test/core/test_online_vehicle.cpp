@@ -565,6 +565,36 @@ TEST(OnlineVehicle, BrakingPaperVehicleSettlesToTheReducedModelsStaticPitch) {
   EXPECT_NEAR(vehicle.pointAcceleration(0).x(), -kBraking, 1e-2 * kBraking);
 }
 
+TEST(OnlineVehicle, DampedGroundTiesIntegratedDynamicallyAreSaid) {
+  // The bundled vehicle's 2e10 N/m ground ties make modes at 9.1 kHz and up, which its 5 % modal
+  // damping holds to an inertial frame (dynamics/ground_tie_damping.h): quasi-static under the
+  // default cut-off (rate / 2), dynamic with the exact method or a cut-off above them.
+  const vehicle::VehicleDescription description = vehicle::loadVehicleDescription(
+      std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
+  const reduction::ReducedModel model =
+      reduction::reduceVehicle(description, vehicle::Variant::Untracked, {});
+  OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  EXPECT_EQ(OnlineVehicle(model, vehicleGeometry(description), o).groundTieDampingWarning(), "");
+  o.max_mode_frequency_hz = 5000.0;
+  EXPECT_EQ(OnlineVehicle(model, vehicleGeometry(description), o).groundTieDampingWarning(), "");
+  o.max_mode_frequency_hz = 0.0;
+  const std::string all =
+      OnlineVehicle(model, vehicleGeometry(description), o).groundTieDampingWarning();
+  EXPECT_NE(all.find("the ground-tie modes from 9139 Hz up"), std::string::npos) << all;
+  EXPECT_NE(all.find("max_mode_frequency 0 keeps every mode dynamic"), std::string::npos) << all;
+  const std::string exact =
+      OnlineVehicle(model, vehicleGeometry(description),
+                    options(dynamics::DiscretizationMethod::AugmentedExponential))
+          .groundTieDampingWarning();
+  EXPECT_NE(exact.find("method exact integrates every mode"), std::string::npos) << exact;
+  // The toy's tyres hop at 10.8 Hz, a ride mode the step resolves, and are damped relative to
+  // the road: nothing to say.
+  EXPECT_EQ(OnlineVehicle(test::toyModel(), test::toyGeometry(),
+                          options(dynamics::DiscretizationMethod::AugmentedExponential))
+                .groundTieDampingWarning(),
+            "");
+}
+
 TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {
   // A crew seat that also follows the front wheel by 0.3 of its travel (a seat on a flexible
   // mount, say): its acceleration is the hull's exact rigid motion plus 0.3 of the wheel's.

@@ -172,6 +172,29 @@ TEST(TerrainPlausibility, StationsInMillimetresAreNamedByTheirSpacing) {
   EXPECT_EQ(medianSpacing(Vector::Constant(1, 3.0)), 0.0);
 }
 
+TEST(TerrainPlausibility, BreakpointProfilesAreNotSampledProfiles) {
+  // A step given by its corners (spacings 2, 0.2, 1.8, 0.2, 1.8 m) and a flat run given by its
+  // ends are piecewise-linear roads described exactly: no spacing warning. The same step sampled
+  // every 1.8 m is a sampled profile, and coarse.
+  Vector x(6);
+  x << 0.0, 2.0, 2.2, 4.0, 4.2, 6.0;
+  Matrix h(1, 6);
+  h << 0.0, 0.0, 0.05, 0.05, 0.0, 0.0;
+  const Terrain corners(x, Vector::Zero(1), h);
+  EXPECT_NEAR(medianSpacing(x), 1.8, 1e-12);
+  EXPECT_FALSE(isSampledProfile(corners));
+  EXPECT_TRUE(terrainWarnings("step.csv", corners).empty());
+  const Terrain flat(Eigen::Vector2d(0.0, 15.0), Vector::Zero(1), Matrix::Zero(1, 2));
+  EXPECT_FALSE(isSampledProfile(flat));
+  EXPECT_TRUE(terrainWarnings("flat.csv", flat).empty());
+  const Vector sampled_x = Vector::LinSpaced(6, 0.0, 9.0);
+  const Terrain sampled(sampled_x, Vector::Zero(1), h);
+  EXPECT_TRUE(isSampledProfile(sampled));
+  const std::vector<std::string> w = terrainWarnings("coarse.csv", sampled);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(w[0].rfind("coarse.csv: sampled every 1.8 m (median spacing)", 0), 0u) << w[0];
+}
+
 TEST(TerrainPlausibility, AnOnlinePatchIsCheckedAgainstTheGroundBeforeIt) {
   Vector y(2);
   y << -2.0, 2.0;
@@ -836,6 +859,9 @@ TEST(TerrainIo, ShippedExamplesLoad) {
   EXPECT_GT(twist.height(1.5, 1.5), 0.0);
   const Terrain step = loadTerrain(dir + "step_profile.csv");
   EXPECT_DOUBLE_EQ(step.height(3.0, 1.0), 0.05);
+  // Ground that looks like ground (the README runs them): no warning.
+  for (const char* file : {"bump.yaml", "twist.csv", "step_profile.csv", "flat_15m.csv"})
+    EXPECT_TRUE(terrainWarnings(file, loadTerrain(dir + file)).empty()) << file;
 }
 
 TEST(TerrainIo, BadCsvNamesFileAndRow) {

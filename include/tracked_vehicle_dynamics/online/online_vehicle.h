@@ -206,6 +206,11 @@ class OnlineVehicle {
     return contact_watch_ ? &*contact_watch_ : nullptr;
   }
   const std::string& groundContactUnavailable() const { return contact_watch_reason_; }
+  /// Non-empty when the run integrates the ground-tie modes dynamically with damping that holds
+  /// the contacts to an inertial frame (dynamics/ground_tie_damping.h: the exact method, or a
+  /// max_mode_frequency above them, with modal damping): the contact forces the watch checks
+  /// then carry a damping force no road exerts. Said once at start-up.
+  const std::string& groundTieDampingWarning() const { return tie_warning_; }
   /// One check of the sole and pad forces at the current sample: the contacts' coordinates alone
   /// (Simulator::coordinates, O(n_contacts x (modes + inputs)), 30-60 us on the tracked model),
   /// no allocation with the modal method; a few per hundred steps, not one per step. Does nothing
@@ -237,6 +242,7 @@ class OnlineVehicle {
   VehicleGeometry geometry_;
   OnlineVehicleOptions options_;
   double time_step_;
+  std::string tie_warning_;  // before simulator_, whose construction writes it
   dynamics::Simulator simulator_;
   RoadInputSampler sampler_;
   terrain::TerrainBuffer terrain_;

@@ -43,9 +43,18 @@ SteepestSlope steepestSlope(const Terrain& terrain);
 /// given by two samples 50 m apart does not make a finely sampled profile coarse.
 double medianSpacing(const Vector& stations);
 
+/// A sampled profile: its heights not all equal, and at least kUniformSpacingShare of its
+/// spacings within kUniformSpacingTolerance of the median. Not one: a list of breakpoints (a flat
+/// run given by its two ends, a step by its corners), which describes a piecewise-linear road
+/// exactly at any spacing, as the examples in config/tracks do.
+constexpr double kUniformSpacingShare = 0.9;
+constexpr double kUniformSpacingTolerance = 0.01;
+bool isSampledProfile(const Terrain& terrain);
+
 /// The warnings to print for a terrain named `name` (the track or file), each starting with the
-/// name: a slope beyond kSteepestPlausibleSlope (how steep, where) and a median spacing beyond
-/// kCoarsestPlausibleSpacing. Empty for ground that looks like ground.
+/// name: a slope beyond kSteepestPlausibleSlope (how steep, where) and, for a sampled profile
+/// (isSampledProfile), a median spacing beyond kCoarsestPlausibleSpacing. Empty for ground that
+/// looks like ground.
 std::vector<std::string> terrainWarnings(const std::string& name, const Terrain& terrain);
 
 /// The same for a patch arriving online (stations start + k spacing, as TerrainBuffer::addPatch
