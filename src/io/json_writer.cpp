@@ -111,10 +111,43 @@ JsonWriter& JsonWriter::value(const std::vector<std::string>& v) {
   return endArray();
 }
 
+namespace {
+
+// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong forms, no
+// surrogates, nothing above U+10FFFF), 0 when there is none.
+std::size_t utf8Length(const std::string& s, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char b = byte(i);
+  std::size_t n = 0;
+  unsigned char low = 0x80, high = 0xBF;  // the second byte's range
+  if (b >= 0xC2 && b <= 0xDF) {
+    n = 2;
+  } else if (b >= 0xE0 && b <= 0xEF) {
+    n = 3;
+    low = b == 0xE0 ? 0xA0 : 0x80;
+    high = b == 0xED ? 0x9F : 0xBF;
+  } else if (b >= 0xF0 && b <= 0xF4) {
+    n = 4;
+    low = b == 0xF0 ? 0x90 : 0x80;
+    high = b == 0xF4 ? 0x8F : 0xBF;
+  } else {
+    return 0;
+  }
+  if (i + n > s.size() || byte(i + 1) < low || byte(i + 1) > high)
+    return 0;
+  for (std::size_t k = 2; k < n; ++k)
+    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF)
+      return 0;
+  return n;
+}
+
+}  // namespace
+
 std::string JsonWriter::escape(const std::string& s) {
   std::string out;
   out.reserve(s.size());
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
     switch (c) {
       case '"':
         out += "\\\"";
@@ -133,8 +166,15 @@ std::string JsonWriter::escape(const std::string& s) {
           char buf[8];
           std::snprintf(buf, sizeof(buf), "\\u%04x", c);
           out += buf;
-        } else {
+        } else if (static_cast<unsigned char>(c) < 0x80) {
           out += c;
+        } else if (const std::size_t n = utf8Length(s, i); n > 0) {
+          out.append(s, i, n);
+          i += n - 1;
+        } else {
+          // A byte of no UTF-8 character (a Latin-1 file name, say): JSON text must be UTF-8,
+          // so it reads as the replacement character rather than making the document invalid.
+          out += "\\ufffd";
         }
     }
   }

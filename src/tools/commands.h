@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
@@ -17,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tracked_vehicle_dynamics {
@@ -117,6 +119,22 @@ inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
         return std::string();
       },
       "FILE");
+}
+
+/// Refuses, before any work, an output file that is one of the command's input files (the same
+/// file however spelt: std::filesystem::equivalent), which writing it would destroy. `inputs`:
+/// (option, path) pairs; empty paths and names of no file (built-in tracks) pass.
+inline void refuseOutputOverInput(const std::string& command, const std::string& out_option,
+                                  const std::string& out,
+                                  const std::vector<std::pair<std::string, std::string>>& inputs) {
+  if (out.empty())
+    return;
+  for (const auto& [option, path] : inputs) {
+    std::error_code ec;
+    if (!path.empty() && std::filesystem::equivalent(out, path, ec) && !ec)
+      throw InputError(command + ": " + out_option + " " + out + " is the " + option +
+                       " file: writing it would destroy the input; write elsewhere");
+  }
 }
 
 /// An output directory, checked before any work: an existing writable directory, or one that can

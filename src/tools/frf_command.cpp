@@ -359,6 +359,9 @@ void registerFrfCommand(CLI::App& app) {
     if (max_mode->count() > 0 && opt->model != "full")
       throw InputError("frf: --max-mode-hz applies to --model full only");
     opt->reduced.check("frf", opt->model);
+    refuseOutputOverInput(
+        "frf", "--out", opt->out_file,
+        {{"--vehicle", opt->vehicle_file}, {"--reduced", opt->reduced.reducedFile()}});
     opt->points = splitPointList("frf", opt->points);  // split here: CLI11 drops empty names
     opt->variant_given = variant->count() > 0;
     run(*opt);

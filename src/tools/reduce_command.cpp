@@ -192,7 +192,10 @@ void registerReduceCommand(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "print a JSON document");
   cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")
       ->check(outputFile({".mat"}));
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() {
+    refuseOutputOverInput("reduce", "--out", opt->out_file, {{"--vehicle", opt->vehicle_file}});
+    run(*opt);
+  });
 }
 
 }  // namespace tools

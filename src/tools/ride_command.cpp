@@ -375,6 +375,12 @@ void registerRideCommand(CLI::App& app) {
                               ? " applies to a --track simulation, not to the spectral --iso8608"
                               : " applies to --iso8608 (the spectral method) only"));
     opt->reduced.check("ride", "reduced");
+    for (const auto& [name, out] :
+         {std::make_pair("--out", opt->out_file), std::make_pair("--psd-out", opt->psd_out)})
+      refuseOutputOverInput("ride", name, out,
+                            {{"--vehicle", opt->vehicle_file},
+                             {"--track", opt->track},
+                             {"--reduced", opt->reduced.reducedFile()}});
     if (!opt->psd_out.empty() && !opt->out_file.empty() &&
         std::filesystem::path(opt->psd_out).lexically_normal() ==
             std::filesystem::path(opt->out_file).lexically_normal())

@@ -627,6 +627,11 @@ void registerSimulateCommand(CLI::App& app) {
           ->check(CLI::IsMember({"on", "off"}));
   cmd->callback([opt, variant, ground_contact]() {
     opt->reduced.check("simulate", opt->model);
+    refuseOutputOverInput("simulate", "--out", opt->out_file,
+                          {{"--vehicle", opt->vehicle_file},
+                           {"--track", opt->track},
+                           {"--speed-profile", opt->speed_profile},
+                           {"--reduced", opt->reduced.reducedFile()}});
     if (ground_contact->count() > 0 && opt->model == "full")
       throw InputError(
           "simulate: --ground-contact applies to --model reduced only (the full "

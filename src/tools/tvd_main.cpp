@@ -2,6 +2,8 @@
 // terrain).
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -53,6 +55,18 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::cerr << "tvd: error: " << e.what() << "\n";
     return 1;
+  }
+  // The results printed (text or --json) are the run's output as much as its files: a full disk
+  // or a closed pipe must not pass for success.
+  errno = 0;
+  std::cout.flush();
+  if (!std::cout) {
+    const int error = errno;
+    std::cerr << "tvd: error: cannot write standard output"
+              << (error != 0 ? std::string(": ") + std::strerror(error)
+                             : std::string(" (a full disk, or a closed pipe?)"))
+              << "\n";
+    return 2;
   }
   return 0;
 }

@@ -1751,6 +1751,43 @@ class TvdCliTest(unittest.TestCase):
         self.assertNotIn("Traceback", message)
         self.assertNotIn("terminate called", message)
 
+    def test_a_failed_write_of_the_printed_results_is_an_error(self):
+        """Text or JSON results that cannot be written (a full disk: /dev/full) fail the run
+        (status 2, one line naming standard output) instead of passing for success."""
+        for extra in ((), ("--json",)):
+            with open("/dev/full", "w") as full:
+                result = subprocess.run([TVD, "statics", "--vehicle", VEHICLE, "--variant",
+                                         "untracked", *extra], stdout=full,
+                                        stderr=subprocess.PIPE, text=True, timeout=120)
+            self.assertEqual(result.returncode, INPUT_ERROR_STATUS, result.stderr)
+            self.assertEqual(result.stderr.count("tvd: error: cannot write standard output"), 1,
+                             result.stderr)
+
+    def test_an_output_over_an_input_file_is_refused(self):
+        """--out naming an input file (however spelt) is refused before any work, and the input
+        is left as it was: the terrain of simulate and ride, the reduced model of frf."""
+        track = self.path("own_track.csv")
+        with open(os.path.join(ROOT, "config", "tracks", "step_profile.csv")) as f:
+            terrain = f.read()
+        with open(track, "w") as f:
+            f.write(terrain)
+        spelt = os.path.join(os.path.dirname(track), ".", os.path.basename(track))
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--track", track, "--out", spelt],
+                                f"--out {spelt} is the --track file", "write elsewhere")
+        self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--track", track, "--speeds", "10", "--out", track],
+                                "ride: --out", "is the --track file")
+        with open(track) as f:
+            self.assertEqual(f.read(), terrain)
+        mat, _ = self.band_model()
+        with open(mat, "rb") as f:
+            model = f.read()
+        self.assert_input_error(["frf", "--vehicle", VEHICLE, "--reduced", mat, "--out", mat],
+                                "is the --reduced file")
+        with open(mat, "rb") as f:
+            self.assertEqual(f.read(), model)
+
     def test_random_road_and_reduction_errors_name_the_options(self):
         """tvd terrain --iso8608 names --taper and --length, --max-frequency and --spacing (its
         suggested spacing is accepted as printed); a MoGeSeC count beyond the candidates and a
