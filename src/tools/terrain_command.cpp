@@ -104,9 +104,14 @@ void run(const TerrainOptions& opt) {
   // [max(n_min, 1/(2 L)), n_max] (iso8608.h).
   const double rms = rmsHeight(t, 0, iso ? n - 1 : n);
   double expected_rms = 0.0;
+  // The band generated: a road of length L holds no wavelength longer than 2 L.
+  const double n_low = std::max(opt.min_frequency, 0.5 / opt.length);
   if (iso) {
-    const double n_low = std::max(opt.min_frequency, 0.5 / opt.length);
     expected_rms = std::sqrt(terrain::iso8608Variance(road_class, n_low, opt.max_frequency));
+    if (n_low > opt.min_frequency)
+      std::cerr << "tvd: note: --min-frequency " << brief(opt.min_frequency)
+                << " cycles/m is below 1/(2 --length) = " << brief(n_low) << ": a road of "
+                << brief(opt.length) << " m holds no longer wavelength, so its band starts there\n";
   }
 
   if (opt.json) {
@@ -116,7 +121,7 @@ void run(const TerrainOptions& opt) {
       json.field("iso8608_class", std::string(1, road_class))
           .field("seed", static_cast<long long>(opt.seed))
           .field("psd_at_n0_m3", terrain::iso8608ReferencePsd(road_class))
-          .field("band_cycles_per_m", std::vector<double>{opt.min_frequency, opt.max_frequency})
+          .field("band_cycles_per_m", std::vector<double>{n_low, opt.max_frequency})
           .field("taper_m", opt.taper)
           .field("band_rms_height_m", expected_rms);
     json.field("stations", static_cast<long long>(n))

@@ -148,6 +148,8 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "must start with a letter"},
       {"  crew_seat: {value:", "  1seat: {value:", "named_points.1seat",
        "must start with a letter"},
+      {"  crew_seat: {value:", "  crew_seat_of_the_commander_in_turret2: {value:",
+       "named_points.crew_seat_of_the_commander_in_turret2", "at most 36 characters"},
       {"  crew_seat: {value:", "  hull: {value:", "named_points.hull", "reserved"},
       {"  crew_seat: {value:", "  road_wheel_left_9: {value:", "named_points.road_wheel_left_9",
        "reserved"},

@@ -959,6 +959,14 @@ class TvdCliTest(unittest.TestCase):
         self.assertAlmostEqual(d["comfort"]["absorbed_power_w"] / c["comfort"]["absorbed_power_w"],
                                4.0, places=6)
 
+        # A band reaching below 1/(2 L) is generated from 1/(2 L) up, and said so.
+        r = self.tvd("terrain", "--iso8608", "C", "--length", str(length), "--min-frequency",
+                     "1e-5", "--out", self.path("long_waves.csv"), "--json")
+        d = json.loads(r.stdout)
+        self.assertEqual(d["band_cycles_per_m"], [0.5 / length, n_high])
+        band = 256e-6 * n0 ** 2 * (2 * length - 1 / n_high)
+        self.assertAlmostEqual(d["band_rms_height_m"] / np.sqrt(band), 1.0, places=8)
+        self.assertIn("--min-frequency 1e-05 cycles/m is below 1/(2 --length) = 0.00625", r.stderr)
         r = self.tvd("terrain", "--out", self.path("x.csv"), status=INPUT_ERROR_STATUS)
         self.assertIn("give --track NAME or --iso8608 CLASS", r.stderr)
         r = self.tvd("terrain", "--iso8608", "Q", "--out", self.path("x.csv"),
@@ -1318,9 +1326,12 @@ class TvdCliTest(unittest.TestCase):
                 (["--iso8608", "C", "--min-frequency", "3"],
                  ["--min-frequency 3 must be below --max-frequency 2.83 cycles/m"]),
                 (["--iso8608", "C", "--points-per-decade", "5"], ["--points-per-decade", "[10, 100000]"]),
-                (["--iso8608", "C", "--waviness", "0"], ["--waviness", "positive"]),
-                (["--iso8608", "C", "--min-frequency", "1e-300", "--points-per-decade", "1e5"],
-                 ["needs 3.004518e+07 frequencies; at most 1e+06"]),
+                (["--iso8608", "C", "--waviness", "0"], ["--waviness", "[0.5, 5], got 0"]),
+                (["--iso8608", "C", "--waviness", "1e300"], ["--waviness", "[0.5, 5], got 1e300"]),
+                (["--iso8608", "C", "--min-frequency", "1e-300"],
+                 ["--min-frequency", "[0.001, 100] cycles/m, got 1e-300"]),
+                (["--iso8608", "C", "--max-frequency", "1e10"],
+                 ["--max-frequency", "[0.001, 100] cycles/m, got 1e10"]),
                 (["--iso8608", "C", "--points", "moon"], ["unknown point 'moon'"]),
                 (["--iso8608", "C", "--speeds", "0,10"], ["speed 0 km/h is outside (0, 200]"]),
                 ([], ["--track is required", "or --iso8608 CLASS for the spectral method"])):
