@@ -14,9 +14,6 @@ namespace {
 
 // Stations closer to equal spacing than this (relative) use the O(1) cell lookup.
 constexpr double kUniformTolerance = 1e-9;
-// Heights beyond +-10 km (above any road's altitude) are a unit or format mistake; left in, they
-// reached the ride metrics as overflowed accelerations.
-constexpr double kMaxHeight = 1e4;
 
 std::string number(double value) {
   std::ostringstream out;
@@ -60,7 +57,7 @@ Terrain::Terrain(Vector stations, Vector lateral, Matrix heights, std::string na
   checkIncreasing(lateral_, "lateral line", name_);
   for (Eigen::Index j = 0; j < heights_.rows(); ++j) {
     for (Eigen::Index i = 0; i < heights_.cols(); ++i) {
-      if (!(std::abs(heights_(j, i)) <= kMaxHeight)) {
+      if (!(std::abs(heights_(j, i)) <= kMaxTerrainHeight)) {
         throw InputError("terrain '" + name_ + "': height at lateral line " + std::to_string(j) +
                          " (y = " + number(lateral_(j)) + " m), station " + std::to_string(i) +
                          " (x = " + number(stations_(i)) + " m) is " + number(heights_(j, i)) +

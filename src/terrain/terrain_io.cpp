@@ -131,10 +131,20 @@ Terrain loadTerrainCsv(const std::string& path) {
                            format(x(i - 1)) + " m; stations must be strictly increasing");
     }
     for (std::size_t c = 1; c < columns; ++c) {
-      h(static_cast<Eigen::Index>(c - 1), i) = reader.number(row, c, "height");
+      const double height = reader.number(row, c, "height");
+      if (!(std::abs(height) <= kMaxTerrainHeight))
+        reader.fail(row, c,
+                    "height " + format(height) +
+                        " m is beyond +-10000 m (heights are in m, "
+                        "relative to the road: mm, or altitudes?)");
+      h(static_cast<Eigen::Index>(c - 1), i) = height;
     }
   }
-  return Terrain(x, lateral, h, stem(path));
+  try {
+    return Terrain(x, lateral, h, stem(path));
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
 }
 
 Terrain loadTerrainYaml(const std::string& path) {
@@ -187,8 +197,16 @@ Terrain loadTerrainYaml(const std::string& path) {
     if (spacing <= 0.0)
       spacing_value.fail("spacing " + format(spacing) + " m must be > 0");
     const double start = root.has("start") ? root["start"].asNumber() : 0.0;
-    for (std::size_t i = 0; i < count; ++i)
-      x(static_cast<Eigen::Index>(i)) = start + i * spacing;
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto k = static_cast<Eigen::Index>(i);
+      x(k) = start + static_cast<double>(i) * spacing;
+      // A spacing lost to round-off beside a huge start (or a start beyond double range).
+      if (!std::isfinite(x(k)) || (k > 0 && !(x(k) > x(k - 1))))
+        (root.has("start") ? root["start"] : spacing_value)
+            .fail("start " + format(start) + " m and spacing " + format(spacing) +
+                  " m give station " + std::to_string(i) + " = " + format(x(k)) +
+                  " m, not finite or not beyond the one before it");
+    }
   } else {
     const std::vector<io::YamlValue> items =
         root["x"].elements(count, "one station [m] per height (" + std::to_string(count) + ")");
@@ -203,8 +221,19 @@ Terrain loadTerrainYaml(const std::string& path) {
   for (std::size_t j = 0; j < rows.size(); ++j) {
     h.row(static_cast<Eigen::Index>(j)) =
         Eigen::Map<const Eigen::RowVectorXd>(rows[j].data(), static_cast<Eigen::Index>(count));
+    for (std::size_t i = 0; i < count; ++i)
+      if (!(std::abs(rows[j][i]) <= kMaxTerrainHeight)) {
+        const io::YamlValue line = root.has("y") ? heights.elements()[j] : heights;
+        line.elements()[i].fail("height " + format(rows[j][i]) +
+                                " m is beyond +-10000 m (heights are in m, relative to the road: "
+                                "mm, or altitudes?)");
+      }
   }
-  return Terrain(x, lateral, h, name);
+  try {
+    return Terrain(x, lateral, h, name);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
 }
 
 Terrain loadTerrain(const std::string& path) {

@@ -873,6 +873,7 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
   const std::vector<Case> cases = {
       {"x,-1,1\n0,0,0\n1,nan,0\n", {"row 3, column 2", "height 'nan' is not a finite number"}},
       {"x,-1,1\n0,0,0\ninf,0,0\n", {"row 3, column 1", "station 'inf' is not a finite number"}},
+      {"x,-1,1\n0,0,0\n1,0,1e30\n", {"row 3, column 3", "height 1e+30 m is beyond +-10000 m"}},
       {"x,-1,1\n0,0,0\n1,0,0\n1,0,0\n", {"row 4", "duplicate station x = 1 m (also on row 3)"}},
       {"x,-1,1\n0,0,0\n2,0,0\n1,0,0\n", {"row 4", "stations must be strictly increasing"}},
       {"x,-1,1\n0,0,0\n1,0\n", {"row 3", "expected 3 columns (x and 2 heights), got 2"}},
@@ -917,6 +918,11 @@ TEST(TerrainIo, BadYamlNamesFileAndKey) {
       {"spacing: 0.1\ny: [1, -1]\nheights: [[0], [0]]\n",
        {"y[1]", "lateral positions must be strictly increasing"}},
       {"spacing: 0.1\nheights: []\n", {"heights", "at least one height"}},
+      {"spacing: 0.1\ny: [-1, 1]\nheights: [[0, 0.1, 0.2], [0, 5e4, 0]]\n",
+       {"heights[1][1]", "height 50000 m is beyond +-10000 m", "(line 3)"}},
+      {"spacing: 0.1\nheights: [0, 0.1, -2e4]\n", {"heights[2]", "-20000 m is beyond"}},
+      {"spacing: 0.1\nstart: 1e300\nheights: [0, 0.1, 0]\n",
+       {"start: start 1e+300 m and spacing 0.1 m give station 1 = 1e+300 m", "(line 2)"}},
   };
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string path = dir.file("bad" + std::to_string(i) + ".yaml", cases[i].content);

@@ -17,6 +17,10 @@
 namespace tracked_vehicle_dynamics {
 namespace terrain {
 
+/// Heights beyond +-10 km (above any road's altitude) are a unit or format mistake; left in, they
+/// reached the ride metrics as overflowed accelerations [m].
+constexpr double kMaxTerrainHeight = 1e4;
+
 class Terrain {
  public:
   /// stations [n_x] strictly increasing [m]; lateral [n_y] strictly increasing [m];
