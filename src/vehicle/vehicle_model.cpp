@@ -65,6 +65,9 @@ class Builder {
 
   VehicleModel build() {
     validateDescription(d_, d_.origin);
+    // One description is valid or not whichever variant is built from it: the un-tracked one has
+    // no chain, but the same file makes the tracked one.
+    const ChainPath path = checkedChainPath();
     out_.layout.pad_springs = calibrateTrackAssembly(d_.track_assembly);
     addTrackAssemblyProperties(out_.model, d_.track_assembly);
     addHull();
@@ -74,7 +77,7 @@ class Builder {
     if (out_.layout.variant == Variant::Untracked)
       addUntrackedAssemblies();
     else
-      addChains();
+      addChains(path);
     model().rigid_joints.insert(model().rigid_joints.begin(), spider_);
     addDofSets();
     summariseMass();
@@ -136,6 +139,22 @@ class Builder {
                        " m, set by the chain length; z = " + brief(i.y()) + " m, radius " +
                        brief(d_.idler.radius) + " m) overlaps " + roadWheelText(axle) +
                        ": raise the idler or lengthen the chain (track_assembly.count)");
+  }
+
+  // The chain's path (the idler's x from the chain length), its sprocket and idler clear of the
+  // road wheels, and its return rollers between them, clear of the wheels and the ground run.
+  ChainPath checkedChainPath() const {
+    ChainPath path(d_, solveIdlerX(d_));
+    checkEndWheelClearance(path);
+    const bool idler_in_front = path.idlerCentre().x() > path.sprocketCentre().x();
+    for (const double xr : d_.return_rollers.x) {
+      if (idler_in_front ? xr >= path.idlerCentre().x() : xr <= path.idlerCentre().x())
+        throw InputError("return_rollers.x: roller at x = " + brief(xr) + " m lies " +
+                         (idler_in_front ? "ahead of" : "behind") +
+                         " the idler (x = " + brief(path.idlerCentre().x()) + " m)");
+      checkRollerClearance(xr, path.topRunHeight(xr) - d_.return_rollers.radius);
+    }
+    return path;
   }
 
   // A return roller hangs under the top run (centre z_r = top-run height - r); it must clear the
@@ -332,12 +351,10 @@ class Builder {
   }
 
   // Paper Fig. 2b: closed chains, pin to pin rigid joints, ground run on ground springs.
-  void addChains() {
+  void addChains(const ChainPath& path) {
     const auto& t = d_.track_assembly;
     const auto& s = d_.suspension;
-    layout().idler_x = solveIdlerX(d_);
-    const ChainPath path(d_, layout().idler_x);
-    checkEndWheelClearance(path);
+    layout().idler_x = path.idlerCentre().x();
     const auto sprocket_arc = path.interval(ChainSegment::Sprocket);
     const auto idler_arc = path.interval(ChainSegment::Idler);
     for (int side = 0; side < 2; ++side) {
@@ -399,13 +416,7 @@ class Builder {
       }
       const auto top = path.interval(ChainSegment::TopRun);
       for (std::size_t r = 0; r < d_.return_rollers.x.size(); ++r) {
-        const double xr = d_.return_rollers.x[r];
-        const bool idler_in_front = path.idlerCentre().x() > path.sprocketCentre().x();
-        if (idler_in_front ? xr >= path.idlerCentre().x() : xr <= path.idlerCentre().x())
-          throw InputError("return_rollers.x: roller at x = " + brief(xr) + " m lies " +
-                           (idler_in_front ? "ahead of" : "behind") +
-                           " the idler (x = " + brief(path.idlerCentre().x()) + " m)");
-        checkRollerClearance(xr, path.topRunHeight(xr) - d_.return_rollers.radius);
+        const double xr = d_.return_rollers.x[r];  // checked: checkedChainPath()
         int best = -1;
         double best_dist = 1e300;
         for (int k = 0; k < t.count; ++k) {

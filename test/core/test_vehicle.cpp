@@ -264,13 +264,21 @@ TEST(VehicleDescription, InconsistentDescriptionsBuiltInCodeAreRejected) {
 // once gave a model whose loop never closed (an idler 50 m ahead, the hull sagging upwards), and
 // return rollers were placed under the ground or inside the road wheels.
 TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
+  // Whichever variant is built: one description is valid or not for both (the un-tracked
+  // model has no chain, but its file makes the tracked one).
   const auto buildError = [](const veh::VehicleDescription& d) {
-    try {
-      veh::buildVehicleModel(d, veh::Variant::Tracked);
-    } catch (const tvd::InputError& e) {
-      return std::string(e.what());
+    std::string errors[2];
+    int k = 0;
+    for (const veh::Variant variant : {veh::Variant::Tracked, veh::Variant::Untracked}) {
+      try {
+        veh::buildVehicleModel(d, variant);
+      } catch (const tvd::InputError& e) {
+        errors[k] = e.what();
+      }
+      ++k;
     }
-    return std::string();
+    EXPECT_EQ(errors[0], errors[1]);
+    return errors[0];
   };
   veh::VehicleDescription d;
   for (int count : {102, 900}) {  // a few links more than fit, and far too many
@@ -298,6 +306,9 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   EXPECT_NE(e.find("overlaps road wheel 6 (centre x = -1.56 m"), std::string::npos) << e;
   d.return_rollers.radius = 0.05;  // a small roller clears the wheel below it
   EXPECT_EQ(buildError(d), "");
+  d.return_rollers.x = {100.0};
+  EXPECT_NE(buildError(d).find("return_rollers.x: roller at x = 100 m lies ahead of the idler"),
+            std::string::npos);
   d = veh::VehicleDescription{};
   d.sprocket.centre_x = -2.8;  // 0.46 m behind the rear road wheel: the wheels interpenetrate
   d.sprocket.centre_z = 0.5;
