@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string_view>
 #include <system_error>
 
@@ -56,8 +57,18 @@ std::vector<CsvRow> CsvReader::readRows() const {
   if (!in)
     fail("cannot be opened");
   std::vector<CsvRow> rows;
-  std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
+  const std::string all((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad())
+    fail("cannot be read");
+  // Lines end in LF, CR LF, or a lone CR (classic Mac OS, and some spreadsheets' "CSV (Mac)"):
+  // read as one line, such a file would be one comment or one ragged row.
+  std::size_t at = 0;
+  for (int line = 1; at < all.size(); ++line) {
+    const std::size_t end = all.find_first_of("\r\n", at);
+    std::string text = all.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    at = end == std::string::npos                                           ? all.size()
+         : all[end] == '\r' && end + 1 < all.size() && all[end + 1] == '\n' ? end + 2
+                                                                            : end + 1;
     // A UTF-8 byte-order mark (spreadsheets write one) is not part of the first cell.
     if (line == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0)
       text.erase(0, 3);
@@ -75,8 +86,6 @@ std::vector<CsvRow> CsvReader::readRows() const {
     }
     rows.push_back(std::move(row));
   }
-  if (in.bad())
-    fail("cannot be read");
   return rows;
 }
 

@@ -20,6 +20,9 @@ namespace {
 
 // Node ids and mode numbers travel as doubles; they are exact below 2^53.
 constexpr double kMaxExactInteger = 9007199254740992.0;
+// Negative LDL^T pivots of C_R beyond this share of the largest are a damping that feeds energy
+// in, not round-off (an empty C_R of an undamped model passes).
+constexpr double kDampingDefiniteness = 1e-9;
 
 // One variable of the file, in file order (the checksum depends on the order).
 // A model's matrices are referred to, not copied (7 MB of a tracked model, at every load's
@@ -247,6 +250,22 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
   checkSymmetric(where, "C_R", s.damping, symmetry_tolerance);
   if (Eigen::LLT<Matrix>(s.mass).info() != Eigen::Success)
     throw InputError(where + ": M_R is not positive definite");
+  // A vehicle on its ground springs has no free motion, and damping dissipates: a file whose
+  // checksum holds but whose K_R or C_R does not is refused here, naming the file, rather than
+  // by the solver that first meets it.
+  if (Eigen::LLT<Matrix>(s.stiffness).info() != Eigen::Success)
+    throw InputError(where +
+                     ": K_R is not positive definite (a vehicle on its ground springs "
+                     "has no free motion); reduce the vehicle again (tvd reduce)");
+  if (s.damping.size() == 0)
+    return;
+  const Eigen::LDLT<Matrix> damping(s.damping);
+  const double scale = damping.vectorD().cwiseAbs().maxCoeff();
+  if (damping.info() != Eigen::Success ||
+      damping.vectorD().minCoeff() < -kDampingDefiniteness * scale)
+    throw InputError(where +
+                     ": C_R is not positive semi-definite (damping that feeds energy "
+                     "in); reduce the vehicle again (tvd reduce)");
 }
 
 double integer(const std::string& where, const char* name, double value) {

@@ -221,7 +221,10 @@ TrackAssemblyStiffness measureTrackAssembly(const fem::Model& model,
   const fem::System sys = fem::assemble(model);
   fem::SparseCholesky chol;
   if (!chol.factorize(sys.stiffness))
-    throw SolverError("track assembly: the stiffness matrix is not positive definite");
+    throw SolverError(
+        "track assembly: the stiffness matrix is not positive definite: a track_assembly "
+        "stiffness, link section property or steel_young_modulus many orders of magnitude too "
+        "small (or away from the others)?");
   // Unit total load shared over the link nodes, in x, y, z and as a moment about y.
   const int directions[4] = {0, 1, 2, 4};
   Matrix loads = Matrix::Zero(sys.size(), 4);
@@ -243,6 +246,9 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
   double normal_sum = t.compression_stiffness;  // sum over the 6 columns
   double end_share = std::min(1.0, t.torsional_stiffness_y / (t.compression_stiffness * c2));
   PadSprings s;
+  // The target furthest from what the last iteration measured, for the message if it fails.
+  std::string worst_key;
+  double worst_target = 0.0, worst_measured = 0.0, worst_error = -1.0;
   s.shear_x = t.shear_stiffness_x / 6.0;
   s.shear_y = t.shear_stiffness_y / 6.0;
   for (int it = 1; it <= kMaxCalibrationIterations; ++it) {
@@ -256,6 +262,18 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
     if (std::max({std::abs(rx - 1), std::abs(ry - 1), std::abs(rz - 1), std::abs(rr - 1)}) <
         kCalibrationTolerance)
       return s;
+    worst_error = -1.0;
+    for (const auto& [key, ratio, target, measured] :
+         {std::make_tuple("shear_stiffness_x", rx, t.shear_stiffness_x, k.kx),
+          std::make_tuple("shear_stiffness_y", ry, t.shear_stiffness_y, k.ky),
+          std::make_tuple("compression_stiffness", rz, t.compression_stiffness, k.kz),
+          std::make_tuple("torsional_stiffness_y", rr, t.torsional_stiffness_y, k.kry)})
+      if (std::abs(ratio - 1.0) > worst_error) {
+        worst_error = std::abs(ratio - 1.0);
+        worst_key = key;
+        worst_target = target;
+        worst_measured = measured;
+      }
     // Each stiffness is governed mainly by its own spring group (series with the nearly rigid
     // link): scale the group by target / measured.
     s.shear_x *= rx;
@@ -280,8 +298,13 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
                      " m): lower torsional_stiffness_y or raise compression_stiffness"));
     }
   }
-  throw SolverError("track assembly calibration did not converge in " +
-                    std::to_string(kMaxCalibrationIterations) + " iterations");
+  throw InputError(
+      "track_assembly." + worst_key + ": the pad springs' calibration does not reach " +
+      brief(worst_target) + " (the assembly gives " + brief(worst_measured) + ", off by " +
+      brief(worst_error) + " relative after " + std::to_string(kMaxCalibrationIterations) +
+      " steps; tolerance " + brief(kCalibrationTolerance) +
+      "): a value in another unit (N/mm for N/m), or many orders of magnitude from "
+      "the other stiffnesses?");
 }
 
 TrackAssemblyModel buildTrackAssemblyModel(const TrackAssemblyDescription& t) {

@@ -12,6 +12,7 @@
 #include <iterator>
 #include <limits>
 
+#include "expect_input_error.h"
 #include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -571,6 +572,14 @@ TEST_F(ReducedModelFileTest, InconsistentModelsAreNotSaved) {
   ReducedModel outputs = model_;
   outputs.system.output_names.push_back("extra");
   EXPECT_THROW(saveReducedModel(outputs, path_), InputError);
+  // The same checks guard a load: a file whose checksum holds over a K_R or C_R of the wrong
+  // sign is named, not left to the solver that meets it.
+  ReducedModel loose = model_;
+  loose.system.stiffness = -loose.system.stiffness;
+  expectInputError([&] { saveReducedModel(loose, path_); }, "K_R is not positive definite");
+  ReducedModel active = model_;
+  active.system.damping = -active.system.damping;
+  expectInputError([&] { saveReducedModel(active, path_); }, "C_R is not positive semi-definite");
   // The file on disk is still the good one (saving is atomic).
   EXPECT_NO_THROW(loadReducedModel(path_, kHash));
 }

@@ -864,6 +864,30 @@ TEST(TerrainIo, ShippedExamplesLoad) {
     EXPECT_TRUE(terrainWarnings(file, loadTerrain(dir + file)).empty()) << file;
 }
 
+TEST(TerrainIo, CsvLineEndingsOfEveryKindReadAlike) {
+  // LF, CR LF and a lone CR (classic Mac OS): the same terrain, and the same row numbers in a
+  // message. Read as one line, a CR-only file was a single comment ("empty").
+  const TempDir dir;
+  const std::string lines[] = {"# twist", "x,-1,1", "0,0,0", "1,0.1,-0.1", "2,0,0"};
+  Matrix first;
+  for (const std::string end : {"\n", "\r\n", "\r"}) {
+    std::string text;
+    for (const std::string& line : lines)
+      text += line + end;
+    const Terrain t = loadTerrainCsv(dir.file("ends.csv", text));
+    ASSERT_EQ(t.stations().size(), 3);
+    EXPECT_DOUBLE_EQ(t.height(1.0, 1.0), -0.1);
+    if (first.size() > 0) {
+      EXPECT_EQ(t.heights(), first);
+    }
+    first = t.heights();
+    std::string bad = text;
+    bad.replace(bad.find("0.1"), 3, "abc");
+    expectInputError([&] { loadTerrainCsv(dir.file("bad_ends.csv", bad)); },
+                     {"row 4, column 2", "'abc' is not a number"});
+  }
+}
+
 TEST(TerrainIo, BadCsvNamesFileAndRow) {
   const TempDir dir;
   struct Case {

@@ -103,6 +103,25 @@ TEST(TrackAssemblyCalibration, ColumnsTooCloseForTheTorsionalStiffnessAreRejecte
   }
 }
 
+TEST(TrackAssemblyCalibration, AStiffnessInAnotherUnitIsNamed) {
+  // k_x typed as 1.4 (N/m) for 1.4e6: a million times below the pads' other springs, the
+  // assembly's stiffness matrix no longer lets the calibration reach it to 1e-9.
+  tvd::vehicle::TrackAssemblyDescription d;
+  d.shear_stiffness_x = 1.4;
+  try {
+    tvd::vehicle::calibrateTrackAssembly(d);
+    FAIL() << "expected InputError";
+  } catch (const tvd::InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("track_assembly.shear_stiffness_x: the pad springs' calibration does "
+                         "not reach 1.4 ",
+                         0),
+              0u)
+        << what;
+    EXPECT_NE(what.find("a value in another unit"), std::string::npos) << what;
+  }
+}
+
 // The refusal says what the columns can give and where they would give the target (k_ry ~ f k_z
 // c^2): 2 % below the first, and at 2 % beyond the second, the calibration succeeds.
 TEST(TrackAssemblyCalibration, RefusalSaysWhatWouldFit) {
