@@ -1774,6 +1774,13 @@ class TvdCliTest(unittest.TestCase):
             self.assertEqual(result.stderr.count("tvd: error: cannot write standard output"), 1,
                              result.stderr)
 
+    def test_an_empty_number_is_refused_not_read_as_zero(self):
+        """An empty value of a number option (an unset shell variable) is no 0: frf took
+        --speed-kmh '' for synchronous excitation without a word."""
+        for args in (["frf", "--vehicle", VEHICLE, "--speed-kmh", ""],
+                     ["simulate", "--vehicle", VEHICLE, "--speed-kmh", ""]):
+            self.assert_input_error(args, "--speed-kmh: '' is not a number")
+
     def test_an_output_over_an_input_file_is_refused(self):
         """--out naming an input file (however spelt) is refused before any work, and the input
         is left as it was: the terrain of simulate and ride, the reduced model of frf."""
