@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -89,13 +90,32 @@ std::vector<CsvRow> CsvReader::readRows() const {
   return rows;
 }
 
+namespace {
+
+// A cell as a message shows it: control bytes (a NUL would end the message there) as \xNN.
+std::string printable(const std::string& cell) {
+  std::string out;
+  for (const char c : cell) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof(hex), "\\x%02x", static_cast<unsigned char>(c));
+      out += hex;
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 double CsvReader::number(const CsvRow& row, std::size_t column, const std::string& what) const {
   const std::string& cell = row.cells[column];
   const std::optional<double> value = parseNumber(cell);
   if (!value)
-    fail(row, column, what + " '" + cell + "' is not a number");
+    fail(row, column, what + " '" + printable(cell) + "' is not a number");
   if (!std::isfinite(*value))
-    fail(row, column, what + " '" + cell + "' is not a finite number");
+    fail(row, column, what + " '" + printable(cell) + "' is not a finite number");
   return *value;
 }
 

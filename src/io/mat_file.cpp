@@ -107,7 +107,9 @@ MatFormat checkMatStructure(const std::string& path) {
   while (offset < size) {
     unsigned char tag[8];
     if (offset + 8 > size)
-      throw InputError(path + ": truncated: a data element starts at byte " +
+      throw InputError(path +
+                       ": truncated (or bytes appended after its last variable): a data "
+                       "element starts at byte " +
                        std::to_string(offset) + " but the file ends at byte " +
                        std::to_string(size));
     in.seekg(static_cast<std::streamoff>(offset));
@@ -121,9 +123,11 @@ MatFormat checkMatStructure(const std::string& path) {
     if (type == kMiMatrix)
       end = (end + 7) / 8 * 8;  // uncompressed elements are 8-byte aligned
     if (offset + 8 + bytes > size)
-      throw InputError(path + ": truncated: the data element at byte " + std::to_string(offset) +
-                       " needs " + std::to_string(bytes) + " bytes but the file ends at byte " +
-                       std::to_string(size));
+      throw InputError(path +
+                       ": truncated (or bytes appended after its last variable): the "
+                       "data element at byte " +
+                       std::to_string(offset) + " needs " + std::to_string(bytes) +
+                       " bytes but the file ends at byte " + std::to_string(size));
     offset = std::min(end, size);
   }
   return MatFormat::Mat5;

@@ -898,6 +898,8 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
       {"x,-1,1\n0,0,0\n1,nan,0\n", {"row 3, column 2", "height 'nan' is not a finite number"}},
       {"x,-1,1\n0,0,0\ninf,0,0\n", {"row 3, column 1", "station 'inf' is not a finite number"}},
       {"x,-1,1\n0,0,0\n1,0,1e30\n", {"row 3, column 3", "height 1e+30 m is beyond +-10000 m"}},
+      {std::string("x,-1,1\n0,0,0\n1,0\0,0\n", 21),
+       {"row 3, column 2", "height '0\\x00' is not a number"}},
       {"x,-1,1\n0,0,0\n1,0,0\n1,0,0\n", {"row 4", "duplicate station x = 1 m (also on row 3)"}},
       {"x,-1,1\n0,0,0\n2,0,0\n1,0,0\n", {"row 4", "stations must be strictly increasing"}},
       {"x,-1,1\n0,0,0\n1,0\n", {"row 3", "expected 3 columns (x and 2 heights), got 2"}},
