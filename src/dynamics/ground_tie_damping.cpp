@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 
+#include "tracked_vehicle_dynamics/dynamics/validation.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -13,20 +15,29 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
 
-void checkContacts(const SecondOrderSystem& system, const std::vector<GroundContact>& contacts,
-                   DofIndex inputs) {
+void checkContacts(const SecondOrderSystem& system, const std::vector<GroundContact>& contacts) {
+  validateSystem(system);
   for (const GroundContact& c : contacts)
-    if (c.coordinate < 0 || c.coordinate >= system.size() || c.input < 0 || c.input >= inputs)
+    if (c.coordinate < 0 || c.coordinate >= system.size() || c.input < 0 ||
+        c.input >= system.inputCount())
       throw InputError("ground tie damping: contact of road input " + std::to_string(c.input) +
                        " on coordinate " + std::to_string(c.coordinate) + " lies outside the " +
                        std::to_string(system.size()) + "-coordinate system");
+}
+
+// k_m: the ground stiffness on each contact's coordinate, the sum of the contacts acting there.
+std::map<DofIndex, double> tieStiffness(const std::vector<GroundContact>& contacts) {
+  std::map<DofIndex, double> k;
+  for (const GroundContact& c : contacts)
+    k[c.coordinate] += c.stiffness;
+  return k;
 }
 
 }  // namespace
 
 Vector absoluteContactDamping(const SecondOrderSystem& system,
                               const std::vector<GroundContact>& contacts) {
-  checkContacts(system, contacts, system.inputCount());
+  checkContacts(system, contacts);
   const DofIndex n = system.size();
   // K r = K_u 1 over the contacts only (a travel input is no road).
   Vector lift = Vector::Zero(n);
@@ -43,18 +54,33 @@ Vector absoluteContactDamping(const SecondOrderSystem& system,
         "ground tie damping: K is singular: the model is not held by its ground springs alone, "
         "so a uniform lift of the road moves it in no single rigid way");
   const Vector absolute = system.damping * r - road_damping;
+  const std::map<DofIndex, double> k = tieStiffness(contacts);
   Vector ratio(static_cast<Eigen::Index>(contacts.size()));
   for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const GroundContact& c = contacts[i];
-    const double mass = system.mass(c.coordinate, c.coordinate);
+    const DofIndex m = contacts[i].coordinate;
+    const double mass = system.mass(m, m);
     ratio(static_cast<Eigen::Index>(i)) =
-        mass > 0.0 ? std::abs(absolute(c.coordinate)) / (2.0 * std::sqrt(c.stiffness * mass)) : 0.0;
+        mass > 0.0 ? std::abs(absolute(m)) / (2.0 * std::sqrt(k.at(m) * mass)) : 0.0;
   }
   return ratio;
 }
 
-double lowestGroundTieModeHz(const ModalSystem& modal, const std::vector<GroundContact>& contacts,
-                             double above_hz) {
+std::vector<GroundContact> stiffTies(const SecondOrderSystem& system,
+                                     const std::vector<GroundContact>& contacts) {
+  checkContacts(system, contacts);
+  const std::map<DofIndex, double> k = tieStiffness(contacts);
+  std::vector<GroundContact> stiff;
+  for (const GroundContact& c : contacts) {
+    const double tie = k.at(c.coordinate);
+    const double rest = system.stiffness(c.coordinate, c.coordinate) - tie;  // K_mm - k_m
+    if (tie >= kStiffTieRatio * std::max(rest, 0.0))
+      stiff.push_back(c);
+  }
+  return stiff;
+}
+
+std::pair<double, double> groundTieModeRangeHz(const ModalSystem& modal,
+                                               const std::vector<GroundContact>& contacts) {
   const ModeShapes& phi = modal.shapes();
   const Vector& omega = modal.naturalFrequencies();
   for (const GroundContact& c : contacts)
@@ -62,44 +88,55 @@ double lowestGroundTieModeHz(const ModalSystem& modal, const std::vector<GroundC
       throw InputError("ground tie damping: contact of road input " + std::to_string(c.input) +
                        " on coordinate " + std::to_string(c.coordinate) + " lies outside the " +
                        std::to_string(phi.rows()) + "-coordinate modes");
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  std::pair<double, double> range{kNone, kNone};
   for (Eigen::Index r = 0; r < omega.size(); ++r) {  // ascending
-    if (!(omega(r) > 0.0) || omega(r) <= kTwoPi * above_hz)
+    if (!(omega(r) > 0.0))
       continue;           // a rigid-body mode strains nothing
     double energy = 0.0;  // 2 x the ground springs' share, sum_i k_i phi_r(m(i))^2
     for (const GroundContact& c : contacts)
       energy += c.stiffness * phi(c.coordinate, r) * phi(c.coordinate, r);
-    if (energy > 0.5 * omega(r) * omega(r))
-      return omega(r) / kTwoPi;
+    if (energy > 0.5 * omega(r) * omega(r)) {
+      if (std::isinf(range.first))
+        range.first = omega(r) / kTwoPi;
+      range.second = omega(r) / kTwoPi;
+    }
   }
-  return std::numeric_limits<double>::infinity();
+  return range;
 }
 
 std::string groundTieDampingWarning(const SecondOrderSystem& system,
                                     const std::vector<GroundContact>& contacts,
                                     const ModalSystem* modal, double max_dynamic_hz,
-                                    double nyquist_hz, const std::string& how,
-                                    const std::string& instead) {
-  if (contacts.empty())
+                                    const std::string& how, const std::string& instead) {
+  const std::vector<GroundContact> ties = stiffTies(system, contacts);
+  if (ties.empty())
     return "";
   // The damping first: it is cheap, and without it no mode needs finding.
-  const Vector ratio = absoluteContactDamping(system, contacts);
+  const Vector ratio = absoluteContactDamping(system, ties);
   const double worst = ratio.maxCoeff();
   if (!(worst >= kNegligibleTieDamping))
     return "";
   std::optional<ModalSystem> own;
   if (modal == nullptr)
     modal = &own.emplace(system);
-  const double lowest_hz = lowestGroundTieModeHz(*modal, contacts, nyquist_hz);
-  if (!std::isfinite(lowest_hz) || (max_dynamic_hz > 0.0 && lowest_hz > max_dynamic_hz))
-    return "";  // no tie mode the step cannot resolve, or all of them quasi-static
+  const auto [lowest_hz, highest_hz] = groundTieModeRangeHz(*modal, ties);
+  const bool all_dynamic = !(max_dynamic_hz > 0.0);
+  if (std::isinf(lowest_hz) || (!all_dynamic && lowest_hz > max_dynamic_hz))
+    return "";  // no tie mode, or all of them quasi-static
   double stiffest = 0.0;
-  for (const GroundContact& c : contacts)
+  for (const GroundContact& c : ties)
     stiffest = std::max(stiffest, c.stiffness);
-  return "ground contact: the ground-tie modes from " + brief(std::round(lowest_hz)) +
-         " Hz up (each contact's mass on its ground spring, up to " + brief(stiffest) +
-         " N/m; above the step's Nyquist frequency, " + brief(nyquist_hz) +
-         " Hz) are integrated dynamically (" + how +
-         "), and the model's damping holds the contacts to an inertial frame with up to " +
+  const std::string which = all_dynamic || highest_hz <= max_dynamic_hz
+                                ? "the ground-tie modes (" + brief(std::round(lowest_hz)) + " to " +
+                                      brief(std::round(highest_hz)) + " Hz"
+                                : "the ground-tie modes from " + brief(std::round(lowest_hz)) +
+                                      " Hz up to the cut-off " + brief(max_dynamic_hz) +
+                                      " Hz (of " + brief(std::round(lowest_hz)) + " to " +
+                                      brief(std::round(highest_hz)) + " Hz";
+  return "ground contact: " + which + ": each contact's mass on its ground spring, up to " +
+         brief(stiffest) + " N/m, a penalty for a rigid contact) are integrated dynamically (" +
+         how + "), and the model's damping holds the contacts to an inertial frame with up to " +
          brief(std::round(worst * 1000.0) / 10.0) +
          " % of a tie's critical damping (modal or mass-proportional damping acts on absolute "
          "velocities): the contact forces then carry about 2 zeta sqrt(k m) times the road's "

@@ -113,9 +113,9 @@ dynamics::Simulator makeSimulator(const reduction::ReducedModel& model,
                  "2 by default) quasi-static"
                : "set max_mode_frequency below them (the ride modes lie far below), which keeps "
                  "them quasi-static";
-    *tie_warning = dynamics::groundTieDampingWarning(
-        system, dynamics::groundContacts(model.system), modal ? &*modal : nullptr,
-        sim.max_mode_frequency_hz, dynamics::nyquistCutoff(sim.time_step), how, instead);
+    *tie_warning = dynamics::groundTieDampingWarning(system, dynamics::groundContacts(model.system),
+                                                     modal ? &*modal : nullptr,
+                                                     sim.max_mode_frequency_hz, how, instead);
   } catch (const Error&) {
     // Road inputs that are no ground springs (the contact watch says so), or a model not held
     // by them alone: no tie to judge.

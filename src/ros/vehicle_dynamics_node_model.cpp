@@ -99,7 +99,7 @@ void VehicleDynamicsNode::loadVehicle() {
       ROS_WARN("%s: reduction: %s", nodeName(), warning.c_str());
     // ~method exact (or a ~max_mode_frequency above the ground ties) with modal damping: the
     // contact forces of the ground-contact check carry a damping force no road exerts.
-    if (!vehicle_->groundTieDampingWarning().empty())
+    if (!vehicle_->groundTieDampingWarning().empty() && params_.ground_contact_rate > 0.0)
       ROS_WARN("%s: %s", nodeName(), vehicle_->groundTieDampingWarning().c_str());
   } catch (const Error& e) {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());

@@ -62,6 +62,18 @@ struct Run {
   std::vector<PointRide> points;  // as RideSetup::points
 };
 
+// The --out table's columns: speed, whether in the sweep, six metrics per point.
+std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
+  std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
+  for (const std::string& p : points)
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
+                          "_vibration_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
+      headers.push_back(p + q);
+  return headers;
+}
+
+constexpr std::size_t kMaxMatVariableName = 63;
+
 void run(const RideOptions& opt) {
   const std::vector<double> sweep = parseSpeedSweep(opt.speeds);
   const terrain::Terrain track = terrain::loadTrack(opt.track);
@@ -91,6 +103,15 @@ void run(const RideOptions& opt) {
   }
   const RideModel model = loadRideModel(opt, &track, &warnings);
   const std::vector<std::string>& points = model.points;
+  // A point name of up to 40 characters (the description's limit) with its longest suffix can
+  // exceed a MAT variable's 63: refused before the sweep, not after it.
+  if (io::lowerExtension(opt.out_file) == ".mat")
+    for (const std::string& h : rideHeaders(points))
+      if (h.size() > kMaxMatVariableName)
+        throw InputError("ride: --out " + opt.out_file + ": the column '" + h + "' (" +
+                         std::to_string(h.size()) +
+                         " characters) is longer than a MAT "
+                         "variable name may be (63): write .csv, or shorten the point's name");
   const ReducedModelSource& reduced = model.reduced;
   const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;
@@ -167,12 +188,8 @@ void run(const RideOptions& opt) {
   const std::map<double, Run>& runs = ride.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count();
 
-  // Every run, by speed: the table's rows.
-  std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
-  for (const std::string& p : points)
-    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
-                          "_vibration_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
-      headers.push_back(p + q);
+  // Every run, by speed: the table's rows (headers as checked before the sweep).
+  const std::vector<std::string> headers = rideHeaders(points);
   Matrix table(static_cast<Eigen::Index>(runs.size()), static_cast<Eigen::Index>(headers.size()));
   Eigen::Index row = 0;
   for (const auto& [speed, r] : runs) {

@@ -319,8 +319,7 @@ void run(const SimulateOptions& opt) {
                  : "set --max-mode-hz below them (the ride modes lie far below), which keeps "
                    "them quasi-static";
     const std::string w = dynamics::groundTieDampingWarning(
-        sys, contacts, modal ? &*modal : nullptr, sim_options.max_mode_frequency_hz,
-        dynamics::nyquistCutoff(opt.dt), how, instead);
+        sys, contacts, modal ? &*modal : nullptr, sim_options.max_mode_frequency_hz, how, instead);
     if (!w.empty()) {
       warnings.push_back(w);
       std::cerr << "tvd: warning: " << w << "\n";

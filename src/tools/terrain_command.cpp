@@ -34,6 +34,7 @@ struct TerrainOptions {
   bool independent_sides = false;
   double taper = 5.0;
   double min_frequency = terrain::Iso8608Options{}.min_frequency;
+  bool min_frequency_given = false;  // the note on a band cut by the length is for a chosen one
   double max_frequency = terrain::Iso8608Options{}.max_frequency;
   std::string out_file;
   bool json = false;
@@ -108,7 +109,7 @@ void run(const TerrainOptions& opt) {
   const double n_low = std::max(opt.min_frequency, 0.5 / opt.length);
   if (iso) {
     expected_rms = std::sqrt(terrain::iso8608Variance(road_class, n_low, opt.max_frequency));
-    if (n_low > opt.min_frequency)
+    if (n_low > opt.min_frequency && opt.min_frequency_given)
       std::cerr << "tvd: note: --min-frequency " << brief(opt.min_frequency)
                 << " cycles/m is below 1/(2 --length) = " << brief(n_low) << ": a road of "
                 << brief(opt.length) << " m holds no longer wavelength, so its band starts there\n";
@@ -201,11 +202,12 @@ void registerTerrainCommand(CLI::App& app) {
       ->required()
       ->check(outputFile({".csv", ".yaml", ".yml"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt, track, iso]() {
+  cmd->callback([cmd, opt, track, iso]() {
     if (track->count() == 0 && iso->count() == 0)
       throw InputError("terrain: give --track NAME or --iso8608 CLASS");
     if (iso->count() > 0 && opt->iso_class.empty())
       throw InputError("terrain: --iso8608 must be one road class A..H, got ''");
+    opt->min_frequency_given = cmd->get_option("--min-frequency")->count() > 0;
     run(*opt);
   });
 }

@@ -298,13 +298,17 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
                      " m): lower torsional_stiffness_y or raise compression_stiffness"));
     }
   }
-  throw InputError(
-      "track_assembly." + worst_key + ": the pad springs' calibration does not reach " +
-      brief(worst_target) + " (the assembly gives " + brief(worst_measured) + ", off by " +
-      brief(worst_error) + " relative after " + std::to_string(kMaxCalibrationIterations) +
-      " steps; tolerance " + brief(kCalibrationTolerance) +
-      "): a value in another unit (N/mm for N/m), or many orders of magnitude from "
-      "the other stiffnesses?");
+  // Ten digits: the two differ in the seventh when the calibration stalls on round-off.
+  char reached[96];
+  std::snprintf(reached, sizeof(reached), "%.10g (the assembly gives %.10g", worst_target,
+                worst_measured);
+  throw InputError("track_assembly." + worst_key +
+                   ": the pad springs' calibration does not reach " + reached + ", off by " +
+                   brief(worst_error) + " relative after " +
+                   std::to_string(kMaxCalibrationIterations) + " steps; tolerance " +
+                   brief(kCalibrationTolerance) +
+                   "): a value in another unit (N/mm for N/m), or many orders of magnitude from "
+                   "the other stiffnesses?");
 }
 
 TrackAssemblyModel buildTrackAssemblyModel(const TrackAssemblyDescription& t) {

@@ -478,16 +478,16 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     const std::string key = "named_points." + p.name;
     c.require(!p.name.empty(), "named_points", "a point has no name");
     c.require(names.insert(p.name).second, key, "name given twice");
-    // The name becomes CSV columns, MAT variables (at most 63 characters; the longest made from
-    // it, ride's "<name>_vibration_total_value_m_s2", adds 27) and a tf frame, next to the hull's
-    // and the road wheels' own.
+    // The name becomes CSV columns, MAT variables ("<name>_accel_z_m_s2", at most 63 characters;
+    // ride's longest, "<name>_vibration_total_value_m_s2", is checked by ride --out .mat) and a tf
+    // frame, next to the hull's and the road wheels' own.
     const bool identifier = std::isalpha(static_cast<unsigned char>(p.name[0])) &&
                             std::all_of(p.name.begin(), p.name.end(), [](char ch) {
                               return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
                             });
-    c.require(identifier && p.name.size() <= 36, key,
+    c.require(identifier && p.name.size() <= 40, key,
               "a name must start with a letter, hold only letters, digits and '_', and have at "
-              "most 36 characters");
+              "most 40 characters");
     c.require(p.name != "hull" && p.name != "base_link" && p.name != "odom" &&
                   p.name.rfind("road_wheel_", 0) != 0,
               key, "the name is reserved (hull, base_link, odom, road_wheel_*)");

@@ -580,7 +580,7 @@ TEST(OnlineVehicle, DampedGroundTiesIntegratedDynamicallyAreSaid) {
   o.max_mode_frequency_hz = 0.0;
   const std::string all =
       OnlineVehicle(model, vehicleGeometry(description), o).groundTieDampingWarning();
-  EXPECT_NE(all.find("the ground-tie modes from 9139 Hz up"), std::string::npos) << all;
+  EXPECT_NE(all.find("the ground-tie modes (9139 to 58125 Hz"), std::string::npos) << all;
   EXPECT_NE(all.find("max_mode_frequency 0 keeps every mode dynamic"), std::string::npos) << all;
   const std::string exact =
       OnlineVehicle(model, vehicleGeometry(description),

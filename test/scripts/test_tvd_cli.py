@@ -662,9 +662,15 @@ class TvdCliTest(unittest.TestCase):
                           ("exact", "--method exact integrates every mode")):
             tie = [w for w in runs[name]["warnings"] if "ground-tie" in w]
             self.assertEqual(len(tie), 1, runs[name]["warnings"])
-            self.assertIn("the ground-tie modes from 9139 Hz up", tie[0])
+            self.assertIn("the ground-tie modes (9139 to 58125 Hz", tie[0])
             self.assertIn(f"({how})", tie[0])
             self.assertIn("up to 4.9 % of a tie's critical damping", tie[0])
+        # A step fine enough to resolve the ties makes them dynamic under the default cut-off
+        # (its Nyquist frequency), part of them here: said all the same.
+        fine = self.tvd_json(*common, "--dt", "1e-5")
+        tie = [w for w in fine["warnings"] if "ground-tie" in w]
+        self.assertEqual(len(tie), 1, fine["warnings"])
+        self.assertIn("from 9139 Hz up to the cut-off 50000 Hz (of 9139 to 58125 Hz", tie[0])
         base = runs["default"]
         for name in ("all", "exact"):
             d = runs[name]
@@ -1780,6 +1786,17 @@ class TvdCliTest(unittest.TestCase):
         for args in (["frf", "--vehicle", VEHICLE, "--speed-kmh", ""],
                      ["simulate", "--vehicle", VEHICLE, "--speed-kmh", ""]):
             self.assert_input_error(args, "--speed-kmh: '' is not a number")
+
+    def test_ride_mat_output_with_a_long_point_name_is_refused_before_the_sweep(self):
+        """A 40-character point name (the description's limit) loads, but ride's longest MAT
+        variable from it would have 67 characters: refused before any run, not after the sweep."""
+        name = "abcdefghij" * 4
+        vehicle = self.vehicle_with("long_point.yaml", "crew_seat:", name + ":")
+        self.assert_input_error(["ride", "--vehicle", vehicle, "--variant", "untracked", "--track",
+                                 "half_round:0.2", "--out", self.path("long.mat")],
+                                f"'{name}_vibration_total_value_m_s2' (67 characters)",
+                                "write .csv")
+        self.assertFalse(os.path.exists(self.path("long.mat")))
 
     def test_an_output_over_an_input_file_is_refused(self):
         """--out naming an input file (however spelt) is refused before any work, and the input
