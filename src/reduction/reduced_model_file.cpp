@@ -21,7 +21,7 @@ namespace {
 // Node ids and mode numbers travel as doubles; they are exact below 2^53.
 constexpr double kMaxExactInteger = 9007199254740992.0;
 // Negative LDL^T pivots of C_R beyond this share of the largest are a damping that feeds energy
-// in, not round-off (an empty C_R of an undamped model passes).
+// in, not round-off (the zero C_R of an undamped model passes).
 constexpr double kDampingDefiniteness = 1e-9;
 
 // One variable of the file, in file order (the checksum depends on the order).
@@ -257,9 +257,7 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
     throw InputError(where +
                      ": K_R is not positive definite (a vehicle on its ground springs "
                      "has no free motion); reduce the vehicle again (tvd reduce)");
-  if (s.damping.size() == 0)
-    return;
-  const Eigen::LDLT<Matrix> damping(s.damping);
+  const Eigen::LDLT<Matrix> damping(s.damping);  // k x k: checkSize above
   const double scale = damping.vectorD().cwiseAbs().maxCoeff();
   if (damping.info() != Eigen::Success ||
       damping.vectorD().minCoeff() < -kDampingDefiniteness * scale)

@@ -71,7 +71,10 @@ std::vector<std::string> terrainWarnings(const std::string& name, const Terrain&
   if (s.slope > kSteepestPlausibleSlope)
     warnings.push_back(name + ": " + slopeText(s));
   const double spacing = medianSpacing(terrain.stations());
-  if (spacing > kCoarsestPlausibleSpacing && isSampledProfile(terrain))
+  const Matrix& h = terrain.heights();
+  const bool flat = h.size() == 0 || (h.array() == h(0, 0)).all();
+  if (spacing > kCoarsestPlausibleSpacing &&
+      (isSampledProfile(terrain) || (!flat && spacing > kCoarsestPlausibleBreakpoints)))
     warnings.push_back(name + ": " + spacingText(spacing));
   return warnings;
 }

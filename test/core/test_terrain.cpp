@@ -187,6 +187,21 @@ TEST(TerrainPlausibility, BreakpointProfilesAreNotSampledProfiles) {
   const Terrain flat(Eigen::Vector2d(0.0, 15.0), Vector::Zero(1), Matrix::Zero(1, 2));
   EXPECT_FALSE(isSampledProfile(flat));
   EXPECT_TRUE(terrainWarnings("flat.csv", flat).empty());
+  // The same corners in mm read as m: 6 km of road, its median spacing 1800 m.
+  const Terrain in_mm(x * 1000.0, Vector::Zero(1), h);
+  const std::vector<std::string> mm = terrainWarnings("step_mm.csv", in_mm);
+  ASSERT_EQ(mm.size(), 1u);
+  EXPECT_EQ(mm[0].rfind("step_mm.csv: sampled every 1800 m (median spacing)", 0), 0u) << mm[0];
+  // A survey every 2 m with +-5 % jitter is a sampled profile.
+  Vector survey(21);
+  Matrix bumps(1, 21);
+  for (int i = 0; i < 21; ++i) {
+    survey(i) = 2.0 * i + (i % 2 == 0 ? 0.1 : -0.1) * (i > 0 && i < 20);
+    bumps(0, i) = 0.05 * std::sin(0.7 * i);
+  }
+  const Terrain surveyed(survey, Vector::Zero(1), bumps);
+  EXPECT_TRUE(isSampledProfile(surveyed));
+  EXPECT_EQ(terrainWarnings("survey.csv", surveyed).size(), 1u);
   const Vector sampled_x = Vector::LinSpaced(6, 0.0, 9.0);
   const Terrain sampled(sampled_x, Vector::Zero(1), h);
   EXPECT_TRUE(isSampledProfile(sampled));

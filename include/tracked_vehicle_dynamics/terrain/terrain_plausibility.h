@@ -44,17 +44,22 @@ SteepestSlope steepestSlope(const Terrain& terrain);
 double medianSpacing(const Vector& stations);
 
 /// A sampled profile: its heights not all equal, and at least kUniformSpacingShare of its
-/// spacings within kUniformSpacingTolerance of the median. Not one: a list of breakpoints (a flat
-/// run given by its two ends, a step by its corners), which describes a piecewise-linear road
-/// exactly at any spacing, as the examples in config/tracks do.
+/// spacings within kUniformSpacingTolerance of the median (a survey's jitter of a few per cent
+/// included). Not one: a list of breakpoints (a flat run given by its two ends, a step by its
+/// corners: spacings of 2, 0.2 and 1.8 m), which describes a piecewise-linear road exactly at any
+/// spacing, as the examples in config/tracks do.
 constexpr double kUniformSpacingShare = 0.9;
-constexpr double kUniformSpacingTolerance = 0.01;
+constexpr double kUniformSpacingTolerance = 0.25;
 bool isSampledProfile(const Terrain& terrain);
+/// A median spacing no road profile has, sampled or by breakpoints [m]: a breakpoint list in mm
+/// read as m (the 6 m step profile becomes 6 km long) is still named.
+constexpr double kCoarsestPlausibleBreakpoints = 100.0;
 
 /// The warnings to print for a terrain named `name` (the track or file), each starting with the
-/// name: a slope beyond kSteepestPlausibleSlope (how steep, where) and, for a sampled profile
-/// (isSampledProfile), a median spacing beyond kCoarsestPlausibleSpacing. Empty for ground that
-/// looks like ground.
+/// name: a slope beyond kSteepestPlausibleSlope (how steep, where) and a median spacing beyond
+/// kCoarsestPlausibleSpacing for a sampled profile (isSampledProfile), beyond
+/// kCoarsestPlausibleBreakpoints for any other but a flat one. Empty for ground that looks like
+/// ground.
 std::vector<std::string> terrainWarnings(const std::string& name, const Terrain& terrain);
 
 /// The same for a patch arriving online (stations start + k spacing, as TerrainBuffer::addPatch
