@@ -15,14 +15,20 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
 
-void checkContacts(const SecondOrderSystem& system, const std::vector<GroundContact>& contacts) {
-  validateSystem(system);
+// Every contact on one of `coordinates` coordinates and one of `inputs` inputs (< 0: unchecked).
+void checkContacts(const std::vector<GroundContact>& contacts, DofIndex coordinates,
+                   DofIndex inputs, const char* of) {
   for (const GroundContact& c : contacts)
-    if (c.coordinate < 0 || c.coordinate >= system.size() || c.input < 0 ||
-        c.input >= system.inputCount())
+    if (c.coordinate < 0 || c.coordinate >= coordinates || c.input < 0 ||
+        (inputs >= 0 && c.input >= inputs))
       throw InputError("ground tie damping: contact of road input " + std::to_string(c.input) +
                        " on coordinate " + std::to_string(c.coordinate) + " lies outside the " +
-                       std::to_string(system.size()) + "-coordinate system");
+                       std::to_string(coordinates) + "-coordinate " + of);
+}
+
+void checkContacts(const SecondOrderSystem& system, const std::vector<GroundContact>& contacts) {
+  validateSystem(system);
+  checkContacts(contacts, system.size(), system.inputCount(), "system");
 }
 
 // k_m: the ground stiffness on each contact's coordinate, the sum of the contacts acting there.
@@ -83,11 +89,7 @@ std::pair<double, double> groundTieModeRangeHz(const ModalSystem& modal,
                                                const std::vector<GroundContact>& contacts) {
   const ModeShapes& phi = modal.shapes();
   const Vector& omega = modal.naturalFrequencies();
-  for (const GroundContact& c : contacts)
-    if (c.coordinate < 0 || c.coordinate >= phi.rows())
-      throw InputError("ground tie damping: contact of road input " + std::to_string(c.input) +
-                       " on coordinate " + std::to_string(c.coordinate) + " lies outside the " +
-                       std::to_string(phi.rows()) + "-coordinate modes");
+  checkContacts(contacts, phi.rows(), modal.inputCount(), "modes");
   constexpr double kNone = std::numeric_limits<double>::infinity();
   std::pair<double, double> range{kNone, kNone};
   for (Eigen::Index r = 0; r < omega.size(); ++r) {  // ascending

@@ -25,6 +25,11 @@ std::string spacingText(double spacing) {
          brief(2 * spacing) + " m; stations in mm read as m?";
 }
 
+// Every height the same: no spacing can miss a feature of it.
+bool flat(const Matrix& h) {
+  return h.size() == 0 || (h.array() == h(0, 0)).all();
+}
+
 }  // namespace
 
 SteepestSlope steepestSlope(const Vector& x, const Vector& lateral, const Matrix& h) {
@@ -55,8 +60,7 @@ double medianSpacing(const Vector& x) {
 
 bool isSampledProfile(const Terrain& terrain) {
   const Vector& x = terrain.stations();
-  const Matrix& h = terrain.heights();
-  if (x.size() < 2 || (h.array() == h(0, 0)).all())
+  if (x.size() < 2 || flat(terrain.heights()))
     return false;  // a single station, or flat: any spacing describes it
   const double median = medianSpacing(x);
   Eigen::Index alike = 0;
@@ -71,10 +75,9 @@ std::vector<std::string> terrainWarnings(const std::string& name, const Terrain&
   if (s.slope > kSteepestPlausibleSlope)
     warnings.push_back(name + ": " + slopeText(s));
   const double spacing = medianSpacing(terrain.stations());
-  const Matrix& h = terrain.heights();
-  const bool flat = h.size() == 0 || (h.array() == h(0, 0)).all();
   if (spacing > kCoarsestPlausibleSpacing &&
-      (isSampledProfile(terrain) || (!flat && spacing > kCoarsestPlausibleBreakpoints)))
+      (isSampledProfile(terrain) ||
+       (!flat(terrain.heights()) && spacing > kCoarsestPlausibleBreakpoints)))
     warnings.push_back(name + ": " + spacingText(spacing));
   return warnings;
 }
