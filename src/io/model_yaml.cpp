@@ -24,6 +24,8 @@ const char* const kDampingKeys[kDofsPerNode] = {"cx", "cy", "cz", "crx", "cry", 
 const char* const kDofHelp =
     "DOFs are written as digits 1-6 (\"123456\", 1-3 translations, 4-6 rotations) or as a list "
     "of names [ux, uy, uz, rx, ry, rz]";
+/// Largest gravity magnitude a model file may give [m/s^2]: about 100 g.
+constexpr double kMaxGravity = 1000.0;
 
 /// The elements of an optional list; an absent or empty (null) key means no items.
 std::vector<YamlValue> optionalList(const YamlValue& root, const char* key,
@@ -287,8 +289,18 @@ fem::Model readModel(const YamlValue& root) {
   fem::Model model;
   if (const auto name = root.find("name"))
     model.name = name->asString();
-  if (const auto gravity = root.find("gravity"))
+  if (const auto gravity = root.find("gravity")) {
     model.gravity = gravity->asVector3();
+    // The file is SI: 1000 m/s^2 is about 100 g, far beyond any load case, and the statics it
+    // feeds is linear in g, so a value in mm/s^2 (9806.65) or a typo would print as a sag of
+    // kilometres or overflow instead of failing here.
+    if (model.gravity.stableNorm() > kMaxGravity) {
+      std::ostringstream text;
+      text << "magnitude " << model.gravity.stableNorm()
+           << " m/s^2 is beyond 1000 m/s^2 (about 100 g): the file is SI (a value in mm/s^2?)";
+      gravity->fail(text.str());
+    }
+  }
   for (const YamlValue& node : root["nodes"].elements("a list of nodes {id, x: [x, y, z]}")) {
     model.nodes.push_back(readNode(node));
   }

@@ -472,6 +472,20 @@ TEST_F(ModelYamlTest, RejectsNonFiniteNumbers) {
                   {"materials[0].rho: number 1e400 is out of range"});
 }
 
+TEST_F(ModelYamlTest, RejectsGravityBeyondAHundredG) {
+  // Standard gravity in mm/s^2: the statics would print a sag a thousand times too large.
+  expectLoadError("gravity_mm.yaml", std::string(kBase) + "gravity: [0, 0, -9806.65]\n",
+                  {"gravity: magnitude 9806.65 m/s^2 is beyond 1000 m/s^2", "a value in mm/s^2?"});
+  expectLoadError("gravity_huge.yaml", std::string(kBase) + "gravity: [0, 0, -9.8e300]\n",
+                  {"gravity: magnitude 9.8e+300 m/s^2"});
+  // The Moon, Jupiter and a 100 g shock stay accepted.
+  for (const char* gravity : {"[0, 0, -1.62]", "[0, 0, -24.79]", "[0, 0, -980.665]"}) {
+    const std::string path =
+        write("gravity_ok.yaml", std::string(kBase) + "gravity: " + gravity + "\n");
+    EXPECT_NO_THROW(loadModelYaml(path)) << gravity;
+  }
+}
+
 TEST_F(ModelYamlTest, RejectsUnknownAndRepeatedKeys) {
   expectLoadError("top_typo.yaml", replaced("beams:\n", "beam:\n"),
                   {"beam: unknown key (allowed keys: name, gravity, nodes,", "(line 9)"});
