@@ -143,6 +143,10 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "over link_member_area 0.0012 m^2 gives a radius of gyration sqrt(I / A) = 3027.65 m"},
       {"link_beam_torsion_constant: {value: 3.0e-7,", "link_beam_torsion_constant: {value: 3.0e5,",
        "track_assembly.link_beam_torsion_constant", "mm^4 typed as m^4?"},
+      // A ground that carries nothing once left a free body, reported as a list of DOFs.
+      {"ground_stiffness: {value: 2e10,", "ground_stiffness: {value: 1e-200,",
+       "ties.ground_stiffness",
+       "1e-200 N/m is less than a thousandth of the pads' compression_stiffness 1.895e+07 N/m"},
       // Named points become CSV columns, MAT variables and tf frames.
       {"  crew_seat: {value:", "  \"crew,seat\": {value:", "named_points.crew,seat",
        "must start with a letter"},
