@@ -41,8 +41,6 @@ constexpr double kRoundoff = 1e-12;
 // Smoothing the piecewise-linear interpolant of a sinusoid sampled every dx instead of the
 // sinusoid itself errs by about A (2π dx / λ)^2 / 12: below 7e-5 m for the tracks' waves.
 constexpr double kSamplingTolerance = 1e-4;
-// Relative tolerance of PSD / variance identities of the ISO 8608 synthesis.
-constexpr double kPsdTolerance = 0.10;
 
 double sinc(double window, double wavelength) {
   const double a = kPi * window / wavelength;
@@ -754,20 +752,39 @@ TEST(Iso8608, ClassReferencePsd) {
                    {"length 200000 m", "station-harmonic terms", "generate a shorter road"});
 }
 
-TEST(Iso8608, VarianceMatchesPsdIntegral) {
+TEST(Iso8608, VarianceIsThePsdIntegralInClosedForm) {
+  // ∫ G0 (n/n0)^-2 dn over [a, b] = G0 n0^2 (1/a - 1/b); class C, the ISO band 0.011 .. 2.83:
+  // 256e-6 * 0.01 * (1/0.011 - 1/2.83) = 2.31823e-4 m^2.
+  const double c_band = 256e-6 * 0.01 * (1.0 / 0.011 - 1.0 / 2.83);
+  EXPECT_NEAR(iso8608Variance('C', 0.011, 2.83) / c_band, 1.0, kRoundoff);
+  EXPECT_NEAR(c_band, 2.31823e-4, 1e-9);
+  // w = 4: G0 n0^4 (a^-3 - b^-3) / 3.
+  EXPECT_NEAR(iso8608Variance('B', 0.05, 1.0, 4.0) / (64e-6 * 1e-4 * (8000.0 - 1.0) / 3.0), 1.0,
+              kRoundoff);
+  // w = 1, a branch of its own (the power law's antiderivative is a logarithm there):
+  // G0 n0 ln(b / a), and continuous with its neighbours.
+  const double log_band = 16e-6 * 0.1 * std::log(10.0);
+  EXPECT_NEAR(iso8608Variance('A', 0.1, 1.0, 1.0) / log_band, 1.0, kRoundoff);
+  EXPECT_NEAR(iso8608Variance('A', 0.1, 1.0, 1.0 + 1e-7) / log_band, 1.0, 1e-6);
+  EXPECT_NEAR(iso8608Variance('A', 0.1, 1.0, 1.0 - 1e-7) / log_band, 1.0, 1e-6);
+}
+
+TEST(Iso8608, SampledVarianceIsTheBandsVariance) {
   const double length = 200.0;
   const double spacing = 0.05;
-  Iso8608Options options;  // ISO band 0.011 .. 2.83 cycles/m
+  Iso8608Options options;  // ISO band 0.011 .. 2.83 cycles/m, no taper
   const Terrain road = makeIso8608('C', length, 5.0, spacing, 42, options);
   const Vector h = road.profile(0.0);
-  // One period: samples 0 .. N-2 (the last station repeats the first).
+  // One period: samples 0 .. N-2 (the last station repeats the first). The harmonics are whole
+  // periods of it and below Nyquist, so they are orthogonal on the samples and the variance is
+  // Σ a_k^2 / 2 exactly, whatever the random phases: the bins [(k ∓ 1/2) / L] clipped to the
+  // band tile it (1/(2L) = 0.0025 lies below 0.011), so Σ a_k^2 / 2 = ∫ G over the band.
   const Vector period = h.head(h.size() - 1);
   const double mean = period.mean();
   const double variance = (period.array() - mean).square().mean();
-  const double generated_low = std::max(options.min_frequency, 0.5 / length);
-  const double expected = iso8608Variance('C', generated_low, options.max_frequency);
-  EXPECT_NEAR(variance / expected, 1.0, kPsdTolerance);
-  EXPECT_NEAR(mean, 0.0, 1e-9);
+  const double expected = 256e-6 * 0.01 * (1.0 / 0.011 - 1.0 / 2.83);
+  EXPECT_NEAR(variance / expected, 1.0, 1e-9);
+  EXPECT_NEAR(mean, 0.0, 1e-12);
 }
 
 TEST(Iso8608, PeriodogramFollowsClassPsd) {
@@ -776,27 +793,19 @@ TEST(Iso8608, PeriodogramFollowsClassPsd) {
   const Terrain road = makeIso8608('D', length, 5.0, spacing, 7);
   const Vector h = road.profile(0.0);
   const Eigen::Index m = h.size() - 1;  // samples in one period
-  // Fit log G = log G(n0) - w log(n / n0) over harmonics well inside the band.
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int count = 0;
+  // Harmonic k carries the PSD integrated over its bin [(k - 1/2), (k + 1/2)] / L, so its
+  // periodogram a_k^2 L / 2 is the bin's mean of G = G0 n0^2 n^-2, that is G(k/L) / (1 - 1/(4k^2)),
+  // whatever its random phase (class D: G0 = 1024e-6 m^3, n0 = 0.1 cycles/m).
   for (int k = 10; k <= 500; k += 7) {
     std::complex<double> x(0.0, 0.0);
     for (Eigen::Index i = 0; i < m; ++i)
       x += h(i) * std::polar(1.0, -2.0 * kPi * k * i / m);
     const double amplitude = 2.0 * std::abs(x) / static_cast<double>(m);
     const double psd = amplitude * amplitude / 2.0 * length;  // a_k^2 / (2 Δn)
-    const double lx = std::log(k / length / kIso8608ReferenceFrequency);
-    const double ly = std::log(psd);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-    ++count;
+    const double n = k / length;
+    const double bin_mean = 1024e-6 * std::pow(n / 0.1, -2.0) / (1.0 - 1.0 / (4.0 * k * k));
+    EXPECT_NEAR(psd / bin_mean, 1.0, 1e-8) << "harmonic " << k;
   }
-  const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-  const double intercept = (sy - slope * sx) / count;
-  EXPECT_NEAR(slope, -2.0, 0.02);
-  EXPECT_NEAR(std::exp(intercept) / iso8608ReferencePsd('D'), 1.0, kPsdTolerance);
 }
 
 TEST(Iso8608, SeedsAreDeterministicAndClassesScale) {
