@@ -147,6 +147,32 @@ TEST(CraigBampton, StiffnessIsBlockDiagonalAndModesAreMassNormalised) {
   EXPECT_EQ(cb.mass, cb.mass.transpose());
 }
 
+TEST(CraigBampton, FixedInterfaceModesAreEigenpairsOfTheSlavePartition) {
+  // Φ_N^T K_ss Φ_N = Λ and Φ_N^T M_ss Φ_N = I hold for any Ritz set; the eigen-equation
+  // K_ss φ_r = λ_r M_ss φ_r and the lowest λ of a dense solve of (K_ss, M_ss) pin the modes
+  // themselves (240 DOFs: the Lanczos path).
+  const int elements = 40;
+  const fem::System system = cantilever(elements);
+  const std::vector<DofIndex> m = masters(system, elements);
+  const int r = 8;
+  CraigBamptonOptions options;
+  options.fixed_interface.count = r;
+  options.keep_transformation = true;
+  const CraigBamptonResult cb = craigBampton(system, m, options);
+  const std::vector<DofIndex> s = slavesOf(system.size(), m);
+  const Matrix k_ss = Matrix(system.stiffness)(s, s);
+  const Matrix m_ss = Matrix(system.mass)(s, s);
+  const fem::ModalBasis dense = fem::solveModesDense(k_ss, m_ss);
+  ASSERT_EQ(cb.modeCount(), r);
+  for (int j = 0; j < r; ++j) {
+    const Vector phi = cb.transformation(s, static_cast<Eigen::Index>(m.size()) + j);
+    const double lambda = cb.fixed_interface_eigenvalues(j);
+    EXPECT_LT((k_ss * phi - lambda * (m_ss * phi)).norm(), 1e-8 * (k_ss * phi).norm())
+        << "mode " << j;
+    EXPECT_NEAR(lambda, dense.eigenvalues(j), 1e-10 * dense.eigenvalues(j)) << "mode " << j;
+  }
+}
+
 TEST(CraigBampton, GuyanStiffnessIsExactForLoadsOnTheMasters) {
   const fem::System system = cantilever(16);
   const std::vector<DofIndex> m = masters(system, 16);

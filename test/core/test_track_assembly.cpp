@@ -14,8 +14,9 @@ using tvd::Vector;
 
 namespace {
 
-/// Table 1 stiffnesses must be met within 2 % (issue 3).
-constexpr double kStiffnessTolerance = 0.02;
+/// Table 1 stiffnesses must be met within 2 % (issue 3); the pad springs are calibrated to them
+/// (calibrateTrackAssembly, to 1e-9), so the static solves give them to the solver's rounding.
+constexpr double kStiffnessTolerance = 1e-6;
 /// The paper's compression test: 18,950 N gives 1.0 mm (§2.1.2).
 constexpr double kTestLoad = 18950.0;
 constexpr double kTestDeflection = 1.0e-3;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -549,8 +550,33 @@ TEST_F(VehicleModels, LayoutFollowsThePaper) {
     EXPECT_GT(position(l.wheels[0].centre).y(), 0.0);                               // left = +y
     EXPECT_NEAR(position(l.hull).z(), 1.57, 1e-12);
     EXPECT_EQ(l.named_points.count("crew_seat"), 1u);
-    for (const veh::RoadInput& in : l.road_inputs)
+    // Each road input stands at its sole node, and reads the road at its pad's centre: the
+    // mean x of the pad's three sole columns (same assembly, same side of the link).
+    std::map<std::pair<int, double>, std::vector<double>> pads;
+    for (const veh::RoadInput& in : l.road_inputs) {
       EXPECT_NEAR(position(in.node).z(), 0.0, 1e-12);
+      EXPECT_NEAR(position(in.node).x(), in.x, 1e-12);
+      EXPECT_NEAR(position(in.node).y(), in.y, 1e-12);
+      pads[{in.assembly, in.y}].push_back(in.x);
+    }
+    const tvd::Vector stations = veh::roadInputStations(l, s->system.ground_inputs);
+    for (std::size_t q = 0; q < l.road_inputs.size(); ++q) {
+      const std::vector<double>& xs = pads.at({l.road_inputs[q].assembly, l.road_inputs[q].y});
+      ASSERT_EQ(xs.size(), 3u);
+      EXPECT_NEAR(stations(static_cast<Eigen::Index>(q)), (xs[0] + xs[1] + xs[2]) / 3.0, 1e-12);
+    }
+  }
+  // Reading the road under each sole column: the stations are the soles' own x.
+  veh::VehicleDescription sole = description();
+  sole.ties.road_input_station = veh::RoadInputStation::Sole;
+  const veh::VehicleModel by_sole = veh::buildVehicleModel(sole, veh::Variant::Untracked);
+  const tvd::fem::System by_sole_system = tvd::fem::assemble(by_sole.model);
+  const tvd::Vector sole_stations =
+      veh::roadInputStations(by_sole.layout, by_sole_system.ground_inputs);
+  for (std::size_t q = 0; q < by_sole.layout.road_inputs.size(); ++q) {
+    for (const auto& n : by_sole.model.nodes)
+      if (n.id == by_sole.layout.road_inputs[q].node)
+        EXPECT_EQ(sole_stations(static_cast<Eigen::Index>(q)), n.position.x());
   }
   // Interface (ground-contact) DOFs of paper Table 5: 84 and 360.
   EXPECT_EQ(untracked_->vehicle.layout.road_inputs.size(), 84u);
