@@ -397,7 +397,7 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
             "at most 999 assemblies per side are supported (node numbering)");
   const double wheelbase = g.axle_spacing * (g.axle_count - 1);
   c.require(wheelbase < t.ground_length, "track_assembly.ground_length",
-            "the ground run " + brief(t.ground_length) + " m is shorter than the wheelbase " +
+            "the ground run " + brief(t.ground_length) + " m is not longer than the wheelbase " +
                 brief(wheelbase) + " m");
   c.require(t.width < g.track_centre_distance, "track_assembly.width",
             "the tracks overlap (width >= track_centre_distance)");
@@ -428,10 +428,11 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   c.require(2.0 * d.road_wheel.radius < g.axle_spacing, "road_wheel.radius",
             "wheels of radius " + brief(d.road_wheel.radius) + " m overlap at the axle spacing " +
                 brief(g.axle_spacing) + " m");
-  c.require(wheelbase < d.hull.length, "hull.length",
-            brief(d.hull.length) + " m is shorter than the wheelbase " + brief(wheelbase) + " m");
+  c.require(
+      wheelbase < d.hull.length, "hull.length",
+      brief(d.hull.length) + " m is not longer than the wheelbase " + brief(wheelbase) + " m");
   c.require(g.track_centre_distance < d.hull.width, "hull.width",
-            brief(d.hull.width) + " m is narrower than the track centre distance " +
+            brief(d.hull.width) + " m is not wider than the track centre distance " +
                 brief(g.track_centre_distance) + " m");
   // The chain wraps the sprocket at one end of the ground run and the idler at the other
   // (chain_path.h): a rear drive sprocket (x < 0, the paper's vehicle) or a front one (x > 0).

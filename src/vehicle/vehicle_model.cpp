@@ -152,14 +152,17 @@ class Builder {
         throw InputError("return_rollers.x: roller at x = " + brief(xr) + " m lies " +
                          (idler_in_front ? "ahead of" : "behind") +
                          " the idler (x = " + brief(path.idlerCentre().x()) + " m)");
-      checkRollerClearance(xr, path.topRunHeight(xr) - d_.return_rollers.radius);
+      checkRollerClearance(path, xr, path.topRunHeight(xr) - d_.return_rollers.radius);
     }
     return path;
   }
 
   // A return roller hangs under the top run (centre z_r = top-run height - r); it must clear the
-  // road wheels (centre distance >= R + r) and the ground run below them.
-  void checkRollerClearance(double xr, double zr) const {
+  // road wheels, the sprocket and the idler (centre distance >= R + r) and the ground run below
+  // them. Next to a wheel the chain wraps, a roller under a level top run needs
+  // |x_r - x_c| >= 2 sqrt(R r) to clear it; closer, it would sit inside that wheel and carry the
+  // chain's wrap as a load of its own.
+  void checkRollerClearance(const ChainPath& path, double xr, double zr) const {
     const double r = d_.return_rollers.radius;
     const std::string roller =
         "return_rollers.x: the roller at x = " + brief(xr) + " m (radius " + brief(r) +
@@ -171,6 +174,17 @@ class Builder {
     const int axle = overlappedRoadWheel(xr, zr, r);
     if (axle >= 0)
       throw InputError(roller + " overlaps " + roadWheelText(axle));
+    const struct {
+      const char* name;
+      Vector2 centre;
+      double radius;
+    } ends[] = {{"sprocket", path.sprocketCentre(), d_.sprocket.radius},
+                {"idler", path.idlerCentre(), d_.idler.radius}};
+    for (const auto& end : ends)
+      if (std::hypot(xr - end.centre.x(), zr - end.centre.y()) < r + end.radius)
+        throw InputError(
+            roller + " overlaps the " + end.name + " (centre x = " + brief(end.centre.x()) +
+            " m, z = " + brief(end.centre.y()) + " m, radius " + brief(end.radius) + " m)");
   }
 
   // Trailing arm: pivot ahead of and above the wheel centre, x_p = x_w + a cos(beta),

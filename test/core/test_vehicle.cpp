@@ -123,8 +123,9 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
       // Geometry that once built a model no vehicle has.
       {"  radius: {value: 0.34, unit: m,", "  radius: {value: 0.4, unit: m,", "road_wheel.radius",
        "overlap at the axle spacing 0.78 m"},
+      // (Equal is refused too: it read "3.5 m is shorter than the wheelbase 3.5 m".)
       {"  length: {value: 7.6, unit: m,", "  length: {value: 4, unit: m,", "hull.length",
-       "shorter than the wheelbase 4.68 m"},
+       "4 m is not longer than the wheelbase 4.68 m"},
       {"  arm_angle: {value: 9, unit: deg,", "  arm_angle: {value: -89, unit: deg,",
        "suspension.arm_angle", "below the ground"},
       {"damped_stations: {value: [],", "damped_stations: {value: [4294967297],",
@@ -314,6 +315,15 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   d.return_rollers.x = {100.0};
   EXPECT_NE(buildError(d).find("return_rollers.x: roller at x = 100 m lies ahead of the idler"),
             std::string::npos);
+  // Next to the sprocket (x = -3.05 m) a roller under the top run sits inside it: it once carried
+  // 40 kN of the chain's wrap. Half a metre on it clears it.
+  d.return_rollers.x = {-3.0};
+  e = buildError(d);
+  EXPECT_NE(e.find("return_rollers.x: the roller at x = -3 m (radius 0.05 m"), std::string::npos)
+      << e;
+  EXPECT_NE(e.find("overlaps the sprocket (centre x = -3.05 m"), std::string::npos) << e;
+  d.return_rollers.x = {-2.55};
+  EXPECT_EQ(buildError(d), "");
   d = veh::VehicleDescription{};
   d.sprocket.centre_x = -2.8;  // 0.46 m behind the rear road wheel: the wheels interpenetrate
   d.sprocket.centre_z = 0.5;
