@@ -16,8 +16,13 @@ std::string format(const char* pattern, double value) {
   return buffer;
 }
 
+/// Three significant figures, trailing zeros kept: 24.98 Hz reads "25.0 Hz" like its neighbours'
+/// "6.95 Hz", not "25 Hz"; 120.4 Hz reads "120 Hz".
 std::string hz(double f) {
-  return format("%.3g Hz", f);
+  std::string text = format("%#.3g", f);
+  if (text.back() == '.')
+    text.pop_back();
+  return text + " Hz";
 }
 
 bool inBand(double f, const ModeSelectionOptions& o) {

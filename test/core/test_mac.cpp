@@ -260,14 +260,14 @@ TEST(ModeSelection, ReasonsNameTheReferenceModeAndFrequency) {
              0.86, 0.72,
              0.10, 0.65;
   // clang-format on
-  ref.frequencies_hz = (Vector(2) << 4.93, 3.72).finished();
+  ref.frequencies_hz = (Vector(2) << 24.98, 3.72).finished();  // 3 figures: "25.0", not "25"
   const Vector f = (Vector(3) << 5.0, 8.5, 9.4).finished();
   ModeSelectionOptions options;
   options.reference_name = "un-tracked";
   const ModeSelection s = selectModes(f, options, &ref);
   ASSERT_EQ(s.count(), 1);
   EXPECT_EQ(s.modes[0].mode, 1);
-  EXPECT_EQ(s.modes[0].reason, "MAC 0.86 with un-tracked mode 1 (4.93 Hz); also 0.72 with mode 2");
+  EXPECT_EQ(s.modes[0].reason, "MAC 0.86 with un-tracked mode 1 (25.0 Hz); also 0.72 with mode 2");
   EXPECT_DOUBLE_EQ(s.highestFrequencyHz(), 8.5);
   options.max_frequency_hz = 8.0;  // the band excludes it
   EXPECT_EQ(selectModes(f, options, &ref).count(), 0);
@@ -294,7 +294,7 @@ TEST(ModeSelection, CountAndBand) {
   ASSERT_EQ(band.count(), 3);
   EXPECT_EQ(band.modes.front().mode, 1);
   EXPECT_EQ(band.modes.back().mode, 3);
-  EXPECT_EQ(band.modes[0].reason, "2.6 Hz in the band [1, 30] Hz");
+  EXPECT_EQ(band.modes[0].reason, "2.60 Hz in the band [1, 30] Hz");
   options.max_frequency_hz = 0.0;
   EXPECT_THROW(selectModes(f, options), InputError);
 }
