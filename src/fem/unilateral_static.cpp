@@ -52,7 +52,8 @@ std::string releasedNames(const Model& model, const std::vector<UnilateralSpring
 
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
-                                             int max_iterations, ActiveSetUpdate update) {
+                                             int max_iterations, ActiveSetUpdate update,
+                                             double forward_acceleration) {
   std::vector<double> normal_stiffness;
   for (const UnilateralSpring& c : springs) {
     if (c.spring >= model.springs.size())
@@ -78,7 +79,10 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
           r.released[i] ? 0.0 : normal_stiffness[i];
     r.system = assemble(r.model);
     try {
-      r.statics = solveStatic(r.system, r.system.gravity_load);
+      r.statics = solveStatic(r.system, forward_acceleration == 0.0
+                                            ? r.system.gravity_load
+                                            : Vector(r.system.gravity_load +
+                                                     forward_acceleration * r.system.travel_load));
     } catch (const SolverError& e) {
       const auto lifted = std::count(r.released.begin(), r.released.end(), true);
       if (lifted == 0)

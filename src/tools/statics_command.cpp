@@ -1,6 +1,8 @@
 // `tvd statics`: the vehicle at rest under gravity (paper §2, issue 3): hull sag and attitude,
 // road-wheel loads, and the ground reaction under every track assembly with the ground-pressure
-// figures (vehicle/ground_pressure.h). Linear statics K x = f_g, no modal solve.
+// figures (vehicle/ground_pressure.h). Linear statics K x = f_g, no modal solve; with --accel a,
+// the steady state of a constant forward acceleration, K x = f_g + a f_a (f_a = -M e_x, the
+// travel inertia): braking's load transfer to the front and its nose-down pitch.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -28,6 +30,7 @@ struct StaticsOptions {
   std::string vehicle_file;
   std::string variant = "tracked";
   std::string contact = "unilateral";
+  double accel = 0.0;  ///< steady forward acceleration of the vehicle [m/s^2], braking < 0
   bool json = false;
   std::string out_file;
 };
@@ -51,11 +54,11 @@ void run(const StaticsOptions& opt) {
   vehicle::ContactStatics contact;
   const bool unilateral = opt.contact == "unilateral";
   if (unilateral) {
-    contact = vehicle::computeContactStatics(built);
+    contact = vehicle::computeContactStatics(built, opt.accel);
   } else {
     contact.vehicle = built;
     contact.system = fem::assemble(built.model);
-    contact.summary = vehicle::computeStaticSummary(built, contact.system);
+    contact.summary = vehicle::computeStaticSummary(built, contact.system, opt.accel);
     contact.iterations = 1;
     // Nothing released: one false flag per contact, so both modes report alike.
     contact.pad_lifted.assign(built.layout.road_inputs.size(), false);
@@ -93,7 +96,8 @@ void run(const StaticsOptions& opt) {
                {{"vehicle", description.name},
                 {"vehicle_file", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
-                {"contact", opt.contact}});
+                {"contact", opt.contact},
+                {"forward_acceleration_m_s2", brief(opt.accel)}});
   }
   const vehicle::AssemblyGroundLoad* peak =
       g.peak >= 0 ? &g.assemblies[static_cast<std::size_t>(g.peak)] : nullptr;
@@ -105,6 +109,7 @@ void run(const StaticsOptions& opt) {
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("contact", opt.contact)
+        .field("forward_acceleration_m_s2", opt.accel)
         .field("iterations", contact.iterations)
         .field("lifted_pads", pads_lifted)
         .field("lifted_wheels", wheels_lifted)
@@ -129,6 +134,7 @@ void run(const StaticsOptions& opt) {
         .field("hull_pitch_deg", s.hull_pitch * kRadToDegree)
         .field("hull_roll_deg", s.hull_roll * kRadToDegree)
         .field("ground_reaction_sum_n", s.ground_reaction)
+        .field("longitudinal_ground_reaction_sum_n", s.ground_reaction_x)
         .field("road_wheel_load_sum_n",
                std::accumulate(s.wheel_loads.begin(), s.wheel_loads.end(), 0.0))
         .field("chain_wheel_vertical_force_n", s.chain_wheel_vertical)
@@ -231,14 +237,21 @@ void run(const StaticsOptions& opt) {
     }
     std::cout << "\n";
   }
+  if (opt.accel != 0.0)
+    std::cout << "steady forward acceleration " << std::setprecision(3) << opt.accel << " m/s^2 ("
+              << std::setprecision(3) << std::abs(opt.accel) / kStandardGravity << " g, "
+              << (opt.accel < 0.0 ? "braking" : "accelerating")
+              << "): the road holds the vehicle with " << std::setprecision(2)
+              << s.ground_reaction_x / 1e3 << " kN along x\n";
   std::cout
       << "\n"
       // hull_sag is the CoG's z displacement (z up, as in the JSON): a hull that settles
       // has a negative one, printed as a positive sag beside it.
-      << "hull at rest: sag " << std::setprecision(3) << -s.hull_sag * 1e3 << " mm (z "
-      << s.hull_sag * 1e3 << " mm), pitch " << std::setprecision(4)
-      << printed(s.hull_pitch * kRadToDegree, 4) << " deg (nose down +), roll "
-      << printed(s.hull_roll * kRadToDegree, 4) << " deg (left up +)\n\n"
+      << (opt.accel == 0.0 ? "hull at rest: sag " : "hull: sag ") << std::setprecision(3)
+      << -s.hull_sag * 1e3 << " mm (z " << s.hull_sag * 1e3 << " mm), pitch "
+      << std::setprecision(4) << printed(s.hull_pitch * kRadToDegree, 4)
+      << " deg (nose down +), roll " << printed(s.hull_roll * kRadToDegree, 4)
+      << " deg (left up +)\n\n"
       << "road wheels: normal force on the track [kN] (negative: pulling on it, would lift off);\n"
       << "the largest assembly pressure within half an axle spacing [kPa]\n"
       << "  wheel                   x [m]   load [kN]   peak pressure under it [kPa]\n";
@@ -318,6 +331,11 @@ void registerStaticsCommand(CLI::App& app) {
                   "the linear model, every contact bonded (the equilibrium the dynamics start "
                   "from, as tvd modes reports)")
       ->check(CLI::IsMember({"unilateral", "bilateral"}));
+  cmd->add_option("--accel", opt->accel,
+                  "steady forward acceleration of the vehicle [m/s^2], braking negative (e.g. "
+                  "-2.94 for 0.3 g): the travel inertia -m a at every mass moves the load to the "
+                  "front pads and pitches the nose down; 0 (default): at rest")
+      ->check(numberIn(-15.0, 15.0, "m/s^2"));
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the tables");
   cmd->callback([opt]() { run(*opt); });
 }

@@ -14,8 +14,12 @@ double StaticSummary::balanceError() const {
   return weight > 0.0 ? std::abs(ground_reaction - weight) / weight : 0.0;
 }
 
-StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system) {
-  return staticSummaryOf(vehicle, system, fem::solveStatic(system, system.gravity_load));
+StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system,
+                                   double forward_acceleration) {
+  if (forward_acceleration == 0.0)
+    return staticSummaryOf(vehicle, system, fem::solveStatic(system, system.gravity_load));
+  const Vector load = system.gravity_load + forward_acceleration * system.travel_load;
+  return staticSummaryOf(vehicle, system, fem::solveStatic(system, load));
 }
 
 StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,
@@ -39,6 +43,7 @@ StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& sy
     const Vector6 f = -fem::bushingMatrix(g.stiffness, g.frame) * nodal(in.node);
     s.pad_loads.push_back(f(2));
     s.ground_reaction += f(2);
+    s.ground_reaction_x += f(0);
   }
   for (const WheelStation& w : vehicle.layout.wheels) {
     // Contact between coincident nodes (wheel side n1, link side n2): force on the link -K d,

@@ -135,6 +135,40 @@ TEST(UnilateralStatic, BarLiftsOffItsUnloadedSupport) {
   EXPECT_EQ(r.model.springs[1].stiffness(0), kK);
 }
 
+TEST(UnilateralStatic, BrakingMovesTheLoadForwardAndLiftsTheRearSupport) {
+  // The weight at height h = 1 m over the middle support (x = 1). A steady forward acceleration a
+  // adds the travel inertia -m a along x at that height; the moment balance about the middle
+  // support gives sum (x_i - 1) F_i = -m a h (braking, a < 0: load to the front, +x). Bonded on
+  // three supports: F_i = m g / 3 - m a h (x_i - 1) / 2, and the rear one pulls once
+  // -a > 2 g / (3 h). At a = -8 m/s^2 it lets go, and the bar on two supports gives
+  // F_2 = -m a h = 8000 N, F_1 = m g - 8000 N; the middle support holds F_x = m a.
+  const double f = kMass * kGravity;
+  fem::Model model = barOnSupports(3, 0.0);
+  model.masses[0].offset = tvd::Vector3(0.0, 0.0, 1.0);
+  for (const double a : {-2.0, 2.0}) {
+    const fem::UnilateralStaticResult r =
+        fem::solveUnilateralStatic(model, supports(), 100, fem::ActiveSetUpdate::AllViolated, a);
+    ASSERT_EQ(r.released, (std::vector<bool>{false, false, false})) << a;
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(r.normal_force[static_cast<std::size_t>(i)], f / 3.0 - kMass * a * (i - 1) / 2.0,
+                  1e-9 * f)
+          << "a = " << a << ", support " << i;
+    // The longitudinal reaction: the middle support's x spring, -k u_x = m a.
+    EXPECT_NEAR(-kK * fem::physicalDisplacement(r.system, r.statics.displacement, 2, 0), kMass * a,
+                1e-9 * f);
+  }
+  const fem::UnilateralStaticResult r =
+      fem::solveUnilateralStatic(model, supports(), 100, fem::ActiveSetUpdate::AllViolated, -8.0);
+  ASSERT_EQ(r.released, (std::vector<bool>{true, false, false}));
+  EXPECT_NEAR(r.normal_force[1], f - 8000.0, 1e-9 * f);
+  EXPECT_NEAR(r.normal_force[2], 8000.0, 1e-9 * f);
+  // Zero acceleration is the gravity case itself.
+  const fem::UnilateralStaticResult rest = fem::solveUnilateralStatic(model, supports());
+  const fem::UnilateralStaticResult zero =
+      fem::solveUnilateralStatic(model, supports(), 100, fem::ActiveSetUpdate::AllViolated, 0.0);
+  EXPECT_EQ(rest.statics.displacement, zero.statics.displacement);
+}
+
 TEST(UnilateralStatic, NormalFollowsTheSpringFrameAndTheSign) {
   // The same supports with their frames turned 180 deg about x (local z = global -z): with sign
   // -1 they still push the bar up, and the lift-off is the one above; with sign +1 they would
@@ -277,6 +311,40 @@ TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
   EXPECT_NEAR(c.summary.hull_sag, bonded.hull_sag, 1e-12);
   for (std::size_t i = 0; i < bonded.wheel_loads.size(); ++i)
     EXPECT_NEAR(c.summary.wheel_loads[i], bonded.wheel_loads[i], 1e-9 * bonded.weight);
+}
+
+TEST(ContactStatics, BrakingIsHeldByTheRoadAndLoadsTheFrontWheels) {
+  // 0.3 g braking of the tracked vehicle: the road holds it back with m a along x and still
+  // carries its weight; the nose goes down (+ry, REP-103) and the front wheels take load from
+  // the rear ones. Linear in a while the contacts stay bonded (the un-tracked vehicle).
+  const double a = -0.3 * kGravity;
+  const veh::VehicleDescription d = paperDescription();
+  const veh::VehicleModel tracked = veh::buildVehicleModel(d, veh::Variant::Tracked);
+  const veh::ContactStatics rest = veh::computeContactStatics(tracked);
+  const veh::ContactStatics brake = veh::computeContactStatics(tracked, a);
+  const double m = tracked.model.totalMass();
+  EXPECT_NEAR(brake.summary.ground_reaction_x, m * a, 1e-6 * m * kGravity);
+  EXPECT_NEAR(rest.summary.ground_reaction_x, 0.0, 1e-6 * m * kGravity);
+  EXPECT_NEAR(brake.summary.ground_reaction, brake.summary.weight, 1e-6 * brake.summary.weight);
+  EXPECT_GT(brake.summary.hull_pitch, rest.summary.hull_pitch);
+  EXPECT_GT(brake.summary.wheel_loads.front(), rest.summary.wheel_loads.front());  // left 1
+  EXPECT_LT(brake.summary.wheel_loads[6], rest.summary.wheel_loads[6]);            // left 7
+
+  const veh::VehicleModel untracked = veh::buildVehicleModel(d, veh::Variant::Untracked);
+  const fem::System system = fem::assemble(untracked.model);
+  const veh::StaticSummary s0 = veh::computeStaticSummary(untracked, system);
+  const veh::StaticSummary s1 = veh::computeStaticSummary(untracked, system, a);
+  const veh::StaticSummary s2 = veh::computeStaticSummary(untracked, system, 2.0 * a);
+  EXPECT_NEAR(s2.hull_pitch - s0.hull_pitch, 2.0 * (s1.hull_pitch - s0.hull_pitch),
+              1e-9 * std::abs(s1.hull_pitch - s0.hull_pitch));
+  EXPECT_NEAR(s1.ground_reaction_x, untracked.model.totalMass() * a,
+              1e-6 * untracked.model.totalMass() * kGravity);
+  // Unilateral and bonded agree while no pad sole lifts: at 0.05 g (at 0.3 g the rear soles of
+  // the rear pads, tipped forward by the shear, let go).
+  const veh::StaticSummary gentle = veh::computeStaticSummary(untracked, system, a / 6.0);
+  const veh::ContactStatics c1 = veh::computeContactStatics(untracked, a / 6.0);
+  EXPECT_EQ(std::count(c1.pad_lifted.begin(), c1.pad_lifted.end(), true), 0);
+  EXPECT_NEAR(c1.summary.hull_pitch, gentle.hull_pitch, 1e-9 * std::abs(gentle.hull_pitch));
 }
 
 TEST(ContactStatics, LinksPushTheirSprocketsIdlersAndRollersOrLeaveThem) {

@@ -237,6 +237,49 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["statics", "--vehicle", VEHICLE, "--contact", "sticky"],
                                 "--contact", "sticky")
 
+    def test_statics_under_steady_braking(self):
+        """tvd statics --accel: the road holds the vehicle back with m a and still carries its
+        weight, the load moves forward by the inertia moment, the nose goes down."""
+        a = -0.3 * GRAVITY
+        csv_file = self.path("braking.csv")
+        rest = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked",
+                             "--contact", "bilateral")
+        d = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked",
+                          "--contact", "bilateral", "--accel", repr(a), "--out", csv_file)
+        self.assertEqual(rest["forward_acceleration_m_s2"], 0)
+        self.assertAlmostEqual(d["forward_acceleration_m_s2"], a, delta=1e-9)
+        self.assertAlmostEqual(rest["longitudinal_ground_reaction_sum_n"], 0.0,
+                               delta=1e-9 * rest["weight_n"])
+        self.assertAlmostEqual(d["longitudinal_ground_reaction_sum_n"] / (d["mass_kg"] * a), 1.0,
+                               delta=1e-6)
+        self.assertAlmostEqual(d["ground_reaction_sum_n"] / d["weight_n"], 1.0, delta=1e-6)
+        self.assertGreater(d["hull_pitch_deg"], rest["hull_pitch_deg"])  # nose down is +ry
+        # The moment of the vertical reactions about the ground moves by -m a h over the masses'
+        # heights h above the road (the ground springs' x forces act at the road, no moment).
+        x = np.array([p["x_m"] for p in d["track_assemblies"]])
+        moved = x @ (np.array([p["load_n"] for p in d["track_assemblies"]])
+                     - np.array([p["load_n"] for p in rest["track_assemblies"]]))
+        self.assertGreater(moved, 0.0)
+        # Hull (30.3 t at 1.57 m) and wheels (16.8 t at their centres, 0.34 m + the link): the
+        # inertia moment lies between m a x 0.5 m and m a x 1.57 m.
+        self.assertGreater(moved, -d["mass_kg"] * a * 0.5)
+        self.assertLess(moved, -d["mass_kg"] * a * 1.57)
+        header, rows = read_csv(csv_file)
+        np.testing.assert_allclose(rows[:, 3], [p["load_n"] for p in d["track_assemblies"]],
+                                   rtol=1e-9)
+        # Bonded, the response is linear in a.
+        twice = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked",
+                              "--contact", "bilateral", "--accel", repr(2 * a))
+        self.assertAlmostEqual((twice["hull_pitch_deg"] - rest["hull_pitch_deg"])
+                               / (d["hull_pitch_deg"] - rest["hull_pitch_deg"]), 2.0, delta=1e-6)
+        text = self.tvd("statics", "--vehicle", VEHICLE, "--accel", "-2.94").stdout
+        self.assertIn("steady forward acceleration -2.940 m/s^2 (0.300 g, braking)", text)
+        self.assertIn("hull: sag", text)
+        self.assertNotIn("hull at rest", text)
+        for bad in ("nan", "-20", "abc"):
+            self.assert_input_error(["statics", "--vehicle", VEHICLE, "--accel", bad],
+                                    "--accel", bad)
+
     def test_statics_chain_wheel_contacts(self):
         """tvd statics lists the links' contacts with the sprockets, idlers and return rollers:
         unilateral, none pulls, a released one carries nothing, the rollers carry the top run;
@@ -481,9 +524,14 @@ class TvdCliTest(unittest.TestCase):
         np.testing.assert_allclose(namespace["frequencies_hz"][:6], full["frequencies_hz"], rtol=1e-3)
         self.assertAlmostEqual(namespace["hull_sag_m"] / full["static"]["hull_sag_m"], 1.0, delta=1e-6)
         self.assertEqual(namespace["A"].shape, (2 * reduced["reduced_dofs"],) * 2)
-        # The full FE model's static pitch under 0.3 g braking (test_travel_inertia: 0.314577
-        # mrad; the reduced model's equals it to 1e-11).
-        self.assertAlmostEqual(namespace["brake_pitch_mrad"] / 0.314577, 1.0, delta=1e-5)
+        # The full FE model's static pitch under 0.3 g braking, bonded as the reduced model is
+        # (tvd statics --accel; the reduced model's equals it to 1e-11, test_travel_inertia).
+        braking = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "tracked",
+                                "--contact", "bilateral", "--accel", repr(-0.3 * 9.80665))
+        at_rest = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "tracked",
+                                "--contact", "bilateral")
+        full_pitch_mrad = np.radians(braking["hull_pitch_deg"] - at_rest["hull_pitch_deg"]) * 1e3
+        self.assertAlmostEqual(namespace["brake_pitch_mrad"] / full_pitch_mrad, 1.0, delta=1e-6)
         # The checksum, recomputed from the loaded values as the doc defines it.
         self.assertEqual(documented_checksum(os.path.join(work, "tracked.mat")),
                          str(scipy.io.loadmat(os.path.join(work, "tracked.mat"))["checksum"][0]))

@@ -31,7 +31,7 @@ struct UnilateralSpring {
 struct UnilateralStaticResult {
   Model model;                 ///< the input model with the released springs' normal stiffness 0
   System system;               ///< `model` assembled
-  StaticResult statics;        ///< its solution under the gravity load
+  StaticResult statics;        ///< its solution under the load (gravity, and travel inertia)
   std::vector<bool> released;  ///< per UnilateralSpring, in the order given
   std::vector<double> normal_force;  ///< N of each (0 when released) [N]
   int iterations = 0;                ///< solves done
@@ -43,7 +43,9 @@ enum class ActiveSetUpdate {
   WorstOnly,    ///< the worst violated spring only (slower; what the first falls back to)
 };
 
-/// Solves the gravity load case of `model` with the listed springs unilateral. Throws InputError
+/// Solves the gravity load case of `model` with the listed springs unilateral, plus the travel
+/// inertia of a forward acceleration `forward_acceleration` [m/s^2] of the vehicle (f_g + a f_a,
+/// System::travel_load; braking is a < 0), 0 for gravity alone. Throws InputError
 /// for a spring index out of range, an axis not in 0..2 or a zero sign or normal stiffness,
 /// SolverError when the released springs leave a free motion (the structure would lift off
 /// entirely, or a part would hang on nothing but released springs: a mechanism; the message names
@@ -52,7 +54,8 @@ enum class ActiveSetUpdate {
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
                                              int max_iterations = 100,
-                                             ActiveSetUpdate update = ActiveSetUpdate::AllViolated);
+                                             ActiveSetUpdate update = ActiveSetUpdate::AllViolated,
+                                             double forward_acceleration = 0.0);
 
 }  // namespace fem
 }  // namespace tracked_vehicle_dynamics

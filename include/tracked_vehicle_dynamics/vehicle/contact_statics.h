@@ -48,9 +48,11 @@ struct ChainWheelRelease {
 ChainWheelRelease chainWheelRelease(const VehicleLayout& layout, const std::vector<bool>& released,
                                     int side, ChainWheel wheel);
 
-/// Equilibrium under gravity with unilateral contacts. Throws SolverError as
-/// fem::solveUnilateralStatic does.
-ContactStatics computeContactStatics(const VehicleModel& vehicle);
+/// Equilibrium under gravity with unilateral contacts, and under the travel inertia of a steady
+/// forward acceleration [m/s^2] (braking < 0: the load moves to the front pads). Throws
+/// SolverError as fem::solveUnilateralStatic does.
+ContactStatics computeContactStatics(const VehicleModel& vehicle,
+                                     double forward_acceleration = 0.0);
 
 }  // namespace vehicle
 }  // namespace tracked_vehicle_dynamics

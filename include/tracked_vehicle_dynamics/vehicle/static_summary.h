@@ -32,6 +32,9 @@ struct StaticSummary {
   /// holds to the static solve's tolerance. 0 for the un-tracked variant.
   double chain_wheel_vertical = 0.0;
   double ground_reaction = 0.0;  ///< sum of the vertical ground reactions [N]
+  /// Sum of the longitudinal (x) ground reactions [N]: 0 at rest, m a under a steady forward
+  /// acceleration a (the road holding the vehicle back while it brakes, a < 0).
+  double ground_reaction_x = 0.0;
   double weight = 0.0;           ///< total weight m g [N]
   double residual = 0.0;         ///< ||K x - f|| / ||f|| of the static solve
 
@@ -39,12 +42,14 @@ struct StaticSummary {
   double balanceError() const;
 };
 
-/// Solves the gravity load case of an assembled vehicle model. Throws SolverError if the model
-/// is not supported (a free rigid-body motion).
-StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system);
+/// Solves the gravity load case of an assembled vehicle model, plus the travel inertia of a
+/// steady forward acceleration [m/s^2] (f_g + a f_a; braking a < 0). Throws SolverError if the
+/// model is not supported (a free rigid-body motion).
+StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system,
+                                   double forward_acceleration = 0.0);
 
 /// The summary of a solution already computed (`solution` solves `system`, assembled from
-/// `vehicle.model`, under its gravity load).
+/// `vehicle.model`, under its gravity load and any travel inertia).
 StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,
                               const fem::StaticResult& solution);
 
