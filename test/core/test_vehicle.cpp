@@ -584,9 +584,10 @@ TEST_F(VehicleModels, LayoutFollowsThePaper) {
   const tvd::Vector sole_stations =
       veh::roadInputStations(by_sole.layout, by_sole_system.ground_inputs);
   for (std::size_t q = 0; q < by_sole.layout.road_inputs.size(); ++q) {
-    for (const auto& n : by_sole.model.nodes)
+    for (const auto& n : by_sole.model.nodes) {
       if (n.id == by_sole.layout.road_inputs[q].node)
         EXPECT_EQ(sole_stations(static_cast<Eigen::Index>(q)), n.position.x());
+    }
   }
   // Interface (ground-contact) DOFs of paper Table 5: 84 and 360.
   EXPECT_EQ(untracked_->vehicle.layout.road_inputs.size(), 84u);

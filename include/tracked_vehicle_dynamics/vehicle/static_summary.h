@@ -35,8 +35,8 @@ struct StaticSummary {
   /// Sum of the longitudinal (x) ground reactions [N]: 0 at rest, m a under a steady forward
   /// acceleration a (the road holding the vehicle back while it brakes, a < 0).
   double ground_reaction_x = 0.0;
-  double weight = 0.0;           ///< total weight m g [N]
-  double residual = 0.0;         ///< ||K x - f|| / ||f|| of the static solve
+  double weight = 0.0;    ///< total weight m g [N]
+  double residual = 0.0;  ///< ||K x - f|| / ||f|| of the static solve
 
   /// |ground_reaction - weight| / weight.
   double balanceError() const;
