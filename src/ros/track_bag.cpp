@@ -184,7 +184,10 @@ TrackRun trackRun(const TrackBagOptions& options) {
             track.height(static_cast<double>(k0 + i) * spacing, track.lateral()(j));
       }
     }
-    timed.time = std::min(motion.timeAt(patch.start_station - options.lookahead), run.duration);
+    // Due one spacing early: the heights between the previous sample and this patch's first
+    // need it (a breakpoint file's 15 m spacing would leave the front contacts without terrain).
+    timed.time =
+        std::min(motion.timeAt(patch.start_station - spacing - options.lookahead), run.duration);
     run.patches.push_back(std::move(timed));
   }
   return std::move(extent.run);

@@ -218,10 +218,12 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
                         nodeName(), last_other_frame_patch_.c_str());
     }
     // Contacts beyond a patch's outer lines take the edge line's heights (terrain.h); a patch
-    // narrower than the vehicle is more often a unit or frame mistake than a choice.
+    // narrower than the vehicle is more often a unit or frame mistake than a choice. One line is
+    // a road uniform across the width (a profile: tvd_make_bag writes such files so), which
+    // every contact reads as meant.
     const Vector& y = vehicle_->sampler().lateral();
     const double offset = params_.vehicle_options.lateral_offset;
-    if (y.size() > 0 && patch.lateral.size() > 0 &&
+    if (y.size() > 0 && patch.lateral.size() > 1 &&
         (y.minCoeff() + offset < patch.lateral(0) - 1e-9 ||
          y.maxCoeff() + offset > patch.lateral(patch.lateral.size() - 1) + 1e-9)) {
       ++events_.patches_narrow;

@@ -585,8 +585,9 @@ TEST_F(VehicleModels, LayoutFollowsThePaper) {
       veh::roadInputStations(by_sole.layout, by_sole_system.ground_inputs);
   for (std::size_t q = 0; q < by_sole.layout.road_inputs.size(); ++q) {
     for (const auto& n : by_sole.model.nodes) {
-      if (n.id == by_sole.layout.road_inputs[q].node)
+      if (n.id == by_sole.layout.road_inputs[q].node) {
         EXPECT_EQ(sole_stations(static_cast<Eigen::Index>(q)), n.position.x());
+      }
     }
   }
   // Interface (ground-contact) DOFs of paper Table 5: 84 and 360.

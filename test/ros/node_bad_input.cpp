@@ -143,6 +143,11 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   narrow.lateral = {-0.5, 0.5};
   narrow.heights.resize(2 * (narrow.heights.size() / 11));
   terrain_pub_.publish(narrow);
+  // One line is a road uniform across the width (a profile file's bag): no narrower warning.
+  TerrainProfile uniform = test::flatProfile(terrain_end + 50.0, terrain_end + 60.0);
+  uniform.lateral = {0.0};
+  uniform.heights.resize(uniform.heights.size() / 11);
+  terrain_pub_.publish(uniform);
   // Valid, far ahead, but altitudes: 250 m above the patch before it (a datum or unit mistake).
   TerrainProfile altitude = test::flatProfile(terrain_end + 1000.0, terrain_end + 1010.0);
   for (double& h : altitude.heights)

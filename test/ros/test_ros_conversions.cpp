@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <random>
 #include <string>
 
@@ -404,6 +405,33 @@ TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
     for (double y : {-1.5, 0.0, 1.2})
       ASSERT_NEAR(buffer.height(x, y), shifted.height(x + 12.0, y + 0.4), 1e-12) << x << ", " << y;
 
+  // A breakpoint file, uniform across the width (one line) with samples 15 m apart: every patch
+  // is one sample, sent early enough that the terrain up to `lookahead` ahead is interpolable
+  // whenever one arrives (sent at `lookahead` ahead, the first contacts past station 0 once had
+  // none until the vehicle reached 5 m).
+  const std::string coarse = temporaryPath("coarse.csv");
+  {
+    std::ofstream out(coarse);
+    out << "x,h\n0,0\n15,0.2\n30,0\n";
+  }
+  TrackBagOptions sparse;
+  sparse.track = coarse;
+  sparse.speed = 5.0;
+  const TrackRun coarse_run = trackRun(sparse);
+  std::remove(coarse.c_str());
+  terrain::TerrainBuffer coarse_buffer;
+  for (std::size_t i = 0; i < coarse_run.patches.size(); ++i) {
+    const TimedPatch& timed = coarse_run.patches[i];
+    EXPECT_EQ(timed.patch.heights.cols(), 1);
+    EXPECT_DOUBLE_EQ(timed.patch.spacing, 15.0);
+    coarse_buffer.addPatch(timed.patch.start_station, timed.patch.spacing, timed.patch.lateral,
+                           timed.patch.heights);
+    if (i + 1 < coarse_run.patches.size() && coarse_run.patches[i + 1].time == timed.time)
+      continue;
+    EXPECT_GE(coarse_buffer.coveredUntil(), timed.time * sparse.speed + sparse.lookahead - 1e-9)
+        << "t = " << timed.time;
+  }
+
   options.track = "moon_craters";
   const std::string unknown = inputErrorOf([&] { trackRun(options); });
   EXPECT_NE(unknown.find("neither a built-in track (long_hill"), std::string::npos) << unknown;
@@ -411,7 +439,7 @@ TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
 
 // A speed profile (brake from 10 to 2 m/s over the first 4 s, then hold): the run lasts until
 // the station, the profile's exact integral, reaches the end; the speed messages carry v(t); and
-// each patch is written when the reference point is `lookahead` before it.
+// each patch is written when the reference point is `lookahead` and one spacing before it.
 TEST(TrackBag, SpeedProfileMovesTheReferencePointByItsIntegral) {
   TrackBagOptions options;
   options.track = "long_hill";
@@ -430,7 +458,7 @@ TEST(TrackBag, SpeedProfileMovesTheReferencePointByItsIntegral) {
   }
   const TrackRun run = trackRun(options);
   for (const TimedPatch& timed : run.patches) {
-    const double due = timed.patch.start_station - options.lookahead;
+    const double due = timed.patch.start_station - timed.patch.spacing - options.lookahead;
     if (due <= 0.0) {
       EXPECT_EQ(timed.time, 0.0);
     } else {

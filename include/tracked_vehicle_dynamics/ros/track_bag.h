@@ -7,9 +7,11 @@
 // speed v (or along a speed profile) until station s_end = track end + behind (the rear contacts
 // have left the track), so it lasts s_end / v. The terrain is the track sampled on its own grid
 // (stations k * spacing, its lateral lines), held flat beyond both ends (Terrain's edge rule), from
-// station -behind to s_end + lookahead, cut into patches of patch_length; a patch starting at
-// station a is written at the time the reference point reaches a - lookahead (at the start for the
-// first ones), so the buffer always holds at least `lookahead` metres ahead of the reference point.
+// station -behind to s_end + lookahead, cut into patches of patch_length (at least one sample);
+// a patch starting at station a is written at the time the reference point reaches
+// a - spacing - lookahead (at the start for the first ones): heights between two samples are
+// interpolated, so the terrain up to `lookahead` ahead of the reference point is always known,
+// even where a breakpoint file's samples lie metres apart.
 #pragma once
 
 #include <optional>
