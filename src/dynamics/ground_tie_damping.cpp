@@ -13,8 +13,6 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 namespace {
 
-constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
-
 // Every contact on one of `coordinates` coordinates and one of `inputs` inputs (< 0: unchecked).
 void checkContacts(const std::vector<GroundContact>& contacts, DofIndex coordinates,
                    DofIndex inputs, const char* of) {

@@ -147,9 +147,17 @@ std::string YamlValue::describe() const {
     return "a list";
   if (node_.IsMap())
     return "a map";
+  // A file of another kind (a CSV given as a description) is one long plain scalar: its start
+  // says what it is, the whole of it would fill the terminal.
+  constexpr std::size_t kShown = 60;
+  const std::string& text = node_.Scalar();
+  const std::string shown =
+      text.size() <= kShown
+          ? text
+          : text.substr(0, kShown) + "... (" + std::to_string(text.size()) + " characters)";
   if (node_.Tag() == "!")
-    return "the string \"" + node_.Scalar() + "\"";
-  return "'" + node_.Scalar() + "'";
+    return "the string \"" + shown + "\"";
+  return "'" + shown + "'";
 }
 
 void YamlValue::expectMap() const {

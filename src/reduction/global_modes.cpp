@@ -3,6 +3,8 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "tracked_vehicle_dynamics/reduction/mac.h"
 
@@ -27,6 +29,23 @@ std::vector<bool> globalModes(const vehicle::VehicleModel& vehicle, const fem::S
     std::fill(global.begin() + first, global.begin() + end, largest >= kGlobalEnergyShare);
   }
   return global;
+}
+
+Matrix globalPairs(Matrix mac, const std::vector<bool>& row_global,
+                   const std::vector<bool>& column_global) {
+  if (static_cast<Eigen::Index>(row_global.size()) != mac.rows() ||
+      static_cast<Eigen::Index>(column_global.size()) != mac.cols())
+    throw std::logic_error("globalPairs: " + std::to_string(row_global.size()) + " x " +
+                           std::to_string(column_global.size()) + " flags for a " +
+                           std::to_string(mac.rows()) + " x " + std::to_string(mac.cols()) +
+                           " MAC");
+  for (Eigen::Index j = 0; j < mac.rows(); ++j)
+    if (!row_global[static_cast<std::size_t>(j)])
+      mac.row(j).setZero();
+  for (Eigen::Index k = 0; k < mac.cols(); ++k)
+    if (!column_global[static_cast<std::size_t>(k)])
+      mac.col(k).setZero();
+  return mac;
 }
 
 }  // namespace reduction

@@ -290,18 +290,11 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     // Only global modes pair: the others' rows and columns are zero.
     const std::vector<bool> own = globalModes(model);
     const std::vector<bool> global = globalModes(other);
-    for (Eigen::Index j = 0; j < reference.mac.rows(); ++j) {
-      if (!own[static_cast<std::size_t>(j)])
-        reference.mac.row(j).setZero();
-      else if (model.modes.frequencies_hz(j) <= options.band_hz)
+    reference.mac = globalPairs(std::move(reference.mac), own, global);
+    for (Eigen::Index j = 0; j < reference.mac.rows(); ++j)
+      if (own[static_cast<std::size_t>(j)] && model.modes.frequencies_hz(j) <= options.band_hz)
         ++rep.mac_candidate_modes;
-    }
-    for (Eigen::Index k = 0; k < reference.mac.cols(); ++k) {
-      if (!global[static_cast<std::size_t>(k)])
-        reference.mac.col(k).setZero();
-      else
-        ++rep.mac_reference_modes;
-    }
+    rep.mac_reference_modes += static_cast<int>(std::count(global.begin(), global.end(), true));
     // The candidates are the reduced variant's global modes in the band, the references the other
     // variant's global modes.
     warnIfCut(model, variant, options.global_modes, own, options.band_hz, &rep.warnings);

@@ -279,8 +279,9 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   };
   p.comfort_rate = derivedRate("comfort_rate", p.comfort_rate, false);
   p.ground_contact_rate = derivedRate("ground_contact_rate", p.ground_contact_rate, true);
-  v.method = parseMethod(in.string("method", "modal"), in.name("method"));
-  v.hold = parseHold(in.string("hold", "first_order"), in.name("hold"));
+  // Defaults: OnlineVehicleOptions' own, by name (every tunable lives once).
+  v.method = parseMethod(in.string("method", dynamics::methodName(v.method)), in.name("method"));
+  v.hold = parseHold(in.string("hold", dynamics::holdName(v.hold)), in.name("hold"));
   if (in.has("max_mode_frequency"))  // unset: OnlineVehicleOptions' default (rate / 2)
     v.max_mode_frequency_hz = in.nonNegative("max_mode_frequency", 0.0, "Hz");
   v.lateral_offset = in.number("lateral_offset", v.lateral_offset);
@@ -346,7 +347,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.diagnostic_period = in.positive("diagnostic_period", p.diagnostic_period, "s");
 
   reduction::VehicleReductionOptions& r = p.reduction_options;
-  const std::string rule = in.string("reduction/rule", "mac");
+  const std::string rule = in.string("reduction/rule", reduction::modeRuleName(r.rule));
   const std::optional<reduction::VehicleModeRule> named_rule = reduction::modeRuleFromName(rule);
   if (!named_rule)
     throw in.error("reduction/rule", "unknown rule '" + rule + "' (mac or band)");

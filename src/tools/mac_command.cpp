@@ -60,15 +60,9 @@ void run(const MacOptions& opt) {
                                                     tv.modes.frequencies_hz);
   // Paired as the reduction pairs them: global modes only (global_modes.h), so a chain mode that
   // leaves the hull and wheels at rest is no one's partner whatever its MAC.
-  Matrix pairing = space_mac;
   const std::vector<bool> uv_global = reduction::globalModes(uv.vehicle, uv.system, uv.modes);
   const std::vector<bool> tv_global = reduction::globalModes(tv.vehicle, tv.system, tv.modes);
-  for (Eigen::Index j = 0; j < pairing.rows(); ++j)
-    if (!uv_global[static_cast<std::size_t>(j)])
-      pairing.row(j).setZero();
-  for (Eigen::Index k = 0; k < pairing.cols(); ++k)
-    if (!tv_global[static_cast<std::size_t>(k)])
-      pairing.col(k).setZero();
+  const Matrix pairing = reduction::globalPairs(space_mac, uv_global, tv_global);
   const std::vector<reduction::ModeCorrelation> correlations =
       reduction::correlateModes(pairing, opt.threshold);
 

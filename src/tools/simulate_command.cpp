@@ -438,6 +438,26 @@ void run(const SimulateOptions& opt) {
     warnings.push_back(w.str());
     std::cerr << "tvd: warning: " << warnings.back() << "\n";
   }
+  // The node's criterion (its "beyond the linear model's range" WARN): a whole pad pressed at
+  // rest pulls on the road (without pads, a contact). Beyond it the run is the bonded model's,
+  // not a vehicle's, however plausible its curves look: said where warnings are looked for.
+  if (monitor_contact) {
+    const dynamics::GroundContactSummary& s = contact_monitor->summary();
+    const bool by_pads = s.groups > 0;
+    if (by_pads ? s.first_new_group_tension >= 0 : s.first_new_tension_contact >= 0) {
+      std::ostringstream w;
+      w << std::setprecision(3) << "beyond the linear model's range from t = "
+        << (by_pads ? s.first_new_group_tension_time : s.first_new_tension_time)
+        << " s (x = " << (by_pads ? s.first_new_group_tension_station : s.first_new_tension_station)
+        << " m): the bonded model pulls on the road with " << (by_pads ? "whole pads" : "contacts")
+        << " pressed at rest (up to " << (by_pads ? s.max_groups_in_tension : s.max_in_tension)
+        << " of " << (by_pads ? s.groups : s.contacts)
+        << " at once), where a vehicle would lift them; the results after that are the linear "
+           "model's (ground_contact in the JSON; README, \"Ground contact\")";
+      warnings.push_back(w.str());
+      std::cerr << "tvd: warning: " << warnings.back() << "\n";
+    }
+  }
 
   auto peak = [&](const std::string& header) {
     return series.col(kFirstColumn + layout.column(header)).cwiseAbs().maxCoeff();

@@ -25,8 +25,9 @@ std::vector<fem::UnilateralSpring> unilateralContacts(const VehicleModel& vehicl
 
 ContactStatics computeContactStatics(const VehicleModel& vehicle, double forward_acceleration) {
   const std::vector<fem::UnilateralSpring> contacts = unilateralContacts(vehicle);
-  fem::UnilateralStaticResult r = fem::solveUnilateralStatic(
-      vehicle.model, contacts, 100, fem::ActiveSetUpdate::AllViolated, forward_acceleration);
+  fem::UnilateralStaticResult r =
+      fem::solveUnilateralStatic(vehicle.model, contacts, fem::kMaxActiveSetSolves,
+                                 fem::ActiveSetUpdate::AllViolated, forward_acceleration);
   ContactStatics c;
   c.vehicle.layout = vehicle.layout;
   c.vehicle.model = std::move(r.model);

@@ -35,6 +35,16 @@ INPUT_ERROR_STATUS = 2
 TVD = None  # set from --tvd
 
 
+RANGE_WARNING = "beyond the linear model's range"
+
+
+def input_warnings(warnings):
+    """The warnings about the input: all but the bonded ground contact's range (which most runs
+    over the paper's tracks reach, and test_simulate_says_when_the_linear_model_leaves_its_range
+    checks)."""
+    return [w for w in warnings if not w.startswith(RANGE_WARNING)]
+
+
 def read_csv(path):
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
@@ -1034,7 +1044,7 @@ class TvdCliTest(unittest.TestCase):
         self.tvd("terrain", "--iso8608", "C", "--width", "1", "--length", "20", "--out", narrow)
         r = self.tvd("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", narrow,
                      "--speed-kmh", "30", "--cache-dir", self.cache, "--json")
-        self.assertEqual(len(json.loads(r.stdout)["warnings"]), 1)
+        self.assertEqual(len(input_warnings(json.loads(r.stdout)["warnings"])), 1)
         self.assertEqual(r.stderr.count("tvd: warning: the contacts span y = -1.555 .. 1.555 m but "
                                         "the terrain's lines only -0.5 .. 0.5 m"), 1, r.stderr)
         # A built-in track written out and read back simulates like the built-in itself.
@@ -1046,7 +1056,7 @@ class TvdCliTest(unittest.TestCase):
                           "long_hill", "--speed-kmh", "30", "--cache-dir", self.cache)
         for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
             self.assertAlmostEqual(a[key], b[key], places=9, msg=key)
-        self.assertEqual(a["warnings"], [])
+        self.assertEqual(input_warnings(a["warnings"]), [])
 
     def ride_road(self):
         """An 80 m class-C road (seed 7, no taper) shared by the ride tests; its path."""
@@ -2025,19 +2035,43 @@ class TvdCliTest(unittest.TestCase):
                                "--track", "long_hill", "--speed-profile", profile,
                                "--cache-dir", self.cache)
         self.assertAlmostEqual(result["travelled_m"], 20.0, delta=1e-6)
-        self.assertEqual(len(result["warnings"]), 1, result["warnings"])
+        self.assertEqual(len(input_warnings(result["warnings"])), 1, result["warnings"])
         self.assertIn("ends after 20", result["warnings"][0])
+
+    def test_simulate_says_when_the_linear_model_leaves_its_range(self):
+        """A whole pad pressed at rest that pulls on the road (the node's criterion) is a warning,
+        with the time and station the JSON's ground_contact block gives; a gentle road is not."""
+        common = ("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
+                  self.cache, "--json")
+        r = self.tvd(*common, "--track", "long_hill", "--speed-kmh", "50")
+        d = json.loads(r.stdout)
+        pads = d["ground_contact"]["pads"]
+        ranged = [w for w in d["warnings"] if w.startswith(RANGE_WARNING)]
+        self.assertEqual(len(ranged), 1, d["warnings"])
+        self.assertIn(f"from t = {pads['first_new_tension_time_s']:.3g} s", ranged[0])
+        self.assertIn(f"(up to {pads['max_in_tension']} of {pads['count']} at once)", ranged[0])
+        self.assertIn("tvd: warning: " + ranged[0], r.stderr)
+        self.assertFalse(d["ground_contact"]["in_range"])
+        # A 2 cm bump at walking pace: single soles may rock into tension, whole pads keep
+        # pressing, and that is no warning.
+        bump = self.path("bump.csv")
+        with open(bump, "w") as f:
+            f.write("x,h\n0,0\n10,0\n12,0.02\n14,0\n30,0\n")
+        gentle = json.loads(self.tvd(*common, "--track", bump, "--speed-kmh", "5").stdout)
+        self.assertEqual(gentle["ground_contact"]["pads"]["max_in_tension"], 0,
+                         gentle["ground_contact"])
+        self.assertEqual([w for w in gentle["warnings"] if w.startswith(RANGE_WARNING)], [])
 
     def test_built_in_oop_track_runs_without_an_edge_warning(self):
         result = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
                                "--track", "oop_waves", "--speed-kmh", "30", "--cache-dir", self.cache)
-        self.assertEqual(result["warnings"], [])
+        self.assertEqual(input_warnings(result["warnings"]), [])
         # The same track as a file is user data: the 5.5 cm overhang is reported.
         track = self.path("oop.csv")
         self.tvd("terrain", "--track", "oop_waves", "--out", track)
         result = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked",
                                "--track", track, "--speed-kmh", "30", "--cache-dir", self.cache)
-        self.assertEqual(len(result["warnings"]), 1)
+        self.assertEqual(len(input_warnings(result["warnings"])), 1)
         self.assertIn("edge line", result["warnings"][0])
 
     def test_half_round_obstacle_track(self):
@@ -2084,7 +2118,7 @@ class TvdCliTest(unittest.TestCase):
         from_file = self.tvd_json(*common, "--track", track, "--speed-kmh", "10")
         for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg"):
             self.assertAlmostEqual(from_file[key] / built_in[key], 1.0, places=9, msg=key)
-        self.assertEqual(built_in["warnings"], [])
+        self.assertEqual(input_warnings(built_in["warnings"]), [])
         self.assertEqual(built_in["track"], "half_round:0.15")
         # At rest on the flat until the front wheel (2.34 m ahead of the reference point) meets
         # the obstacle's foot; the peak while the wheels cross it; then it rings down on the 17 m
@@ -2345,7 +2379,7 @@ class TvdCliTest(unittest.TestCase):
         sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir", self.cache,
                "--track"]
         r = self.tvd(*sim, "long_hill", "--lateral-offset", "2", "--json")
-        warnings = json.loads(r.stdout)["warnings"]
+        warnings = input_warnings(json.loads(r.stdout)["warnings"])
         self.assertEqual(len(warnings), 1, warnings)
         self.assertRegex(warnings[0], r"\d+ of \d+ contacts lie outside, up to [0-9.]+ m beyond")
         self.assertIn("--lateral-offset 2 m", warnings[0])
@@ -2354,7 +2388,8 @@ class TvdCliTest(unittest.TestCase):
         # the paper): not warned about, nor an offset that reduces it; one that adds to it is.
         for offset, warned in (("0", False), ("-0.01", False), ("0.01", True)):
             d = self.tvd_json(*sim, "oop_waves", "--speed-kmh", "30", "--lateral-offset", offset)
-            self.assertEqual(len(d["warnings"]), 1 if warned else 0, (offset, d["warnings"]))
+            self.assertEqual(len(input_warnings(d["warnings"])), 1 if warned else 0,
+                             (offset, d["warnings"]))
         self.assert_input_error(sim + ["oop_waves", "--lateral-offset", "10"],
                                 "oop_waves: every contact", "lies off the terrain",
                                 "--lateral-offset 10 m")

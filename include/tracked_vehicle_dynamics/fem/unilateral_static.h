@@ -37,6 +37,10 @@ struct UnilateralStaticResult {
   int iterations = 0;                ///< solves done
 };
 
+/// Solves of the active-set iteration before it gives up (the bundled tracked vehicle settles in
+/// 4).
+constexpr int kMaxActiveSetSolves = 100;
+
 /// How the active set changes between solves.
 enum class ActiveSetUpdate {
   AllViolated,  ///< every violated spring at once; the worst one at a time once a set repeats
@@ -53,7 +57,7 @@ enum class ActiveSetUpdate {
 /// `max_iterations` solves.
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
-                                             int max_iterations = 100,
+                                             int max_iterations = kMaxActiveSetSolves,
                                              ActiveSetUpdate update = ActiveSetUpdate::AllViolated,
                                              double forward_acceleration = 0.0);
 

@@ -36,5 +36,12 @@ constexpr double kGlobalEnergyShare = 0.01;
 std::vector<bool> globalModes(const vehicle::VehicleModel& vehicle, const fem::System& system,
                               const fem::ModalBasis& modes);
 
+/// The pairing matrix of two variants: `mac` (rows: one variant's modes, columns: the other's,
+/// e.g. eigenspaceMac()) with the rows and columns of the modes that are not global zeroed, so
+/// that only global modes pair (Table 4 in `tvd mac`, the reduction's MAC mode selection).
+/// Throws std::logic_error when the flags do not fit `mac`.
+Matrix globalPairs(Matrix mac, const std::vector<bool>& row_global,
+                   const std::vector<bool>& column_global);
+
 }  // namespace reduction
 }  // namespace tracked_vehicle_dynamics
