@@ -280,6 +280,18 @@ def labelled(text):
     return (label or os.path.splitext(os.path.basename(path))[0], path)
 
 
+def check_unique_labels(files):
+    """files: (label, path) pairs from labelled(). Fails with one line when two share a label (a
+    legend would name only one of their curves): two LABEL= alike, or two bare files of the same
+    base name in different directories."""
+    seen = {}
+    for label, path in files:
+        if label in seen:
+            fail(f"label '{label}' is given to both {seen[label]} and {path}: give each file its "
+                 f"own LABEL=FILE")
+        seen[label] = path
+
+
 # --- outputs -------------------------------------------------------------------------------------
 
 def check_outputs(*options):

@@ -34,7 +34,7 @@ import math
 
 # First: plot_common selects the Agg backend before pyplot loads.
 from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs, fail,
-                         labelled, positive_float, save)
+                         check_unique_labels, labelled, positive_float, save)
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -43,8 +43,10 @@ import numpy as np
 OUTPUTS = {
     "hull_vertical_acc": ("hull vertical acceleration", r"$|\ddot z_s / h|$ [(m/s$^2$)/m]"),
     "hull_pitch_acc": ("hull pitch acceleration", r"$|\ddot\theta_s / h|$ [(rad/s$^2$)/m]"),
-    "front_wheel_acc": ("front road wheel acceleration", r"$|\ddot z_{u,F} / h|$ [(m/s$^2$)/m]"),
-    "rear_wheel_acc": ("rear road wheel acceleration", r"$|\ddot z_{u,R} / h|$ [(m/s$^2$)/m]"),
+    "front_wheel_acc": ("front-left road wheel acceleration",
+                        r"$|\ddot z_{u,F} / h|$ [(m/s$^2$)/m]"),
+    "rear_wheel_acc": ("rear-left road wheel acceleration",
+                       r"$|\ddot z_{u,R} / h|$ [(m/s$^2$)/m]"),
 }
 # Decades of magnitude drawn below the largest value of a panel (log scale).
 DECADES_SHOWN = 3
@@ -122,6 +124,7 @@ def main():
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE",
                         help=LABELLED_HELP)
     args = parser.parse_args()
+    check_unique_labels(args.files)
 
     check_outputs(("--out", args.out))  # before reading: bad input writes no figure
     curves = [(label, *load(path)) for label, path in args.files]

@@ -18,8 +18,8 @@ with status 2 and one line on stderr naming the file; no figure is written then.
 import argparse
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, json_number, labelled,
-                         read_json, save)
+from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, json_number,
+                         check_unique_labels, labelled, read_json, save)
 import matplotlib.pyplot as plt
 
 SIDES = ("left", "right")
@@ -65,6 +65,7 @@ def main():
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE.json",
                         help="outputs of `tvd statics --json`, drawn over each other")
     args = parser.parse_args()
+    check_unique_labels(args.files)
     check_outputs(("--out", args.out))
 
     runs = [(label, *load(path)) for label, path in args.files]

@@ -19,8 +19,8 @@ figure is written then.
 import argparse
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, labelled, load_mat,
-                         save, vehicle_view)
+from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, check_unique_labels,
+                         labelled, load_mat, save, vehicle_view)
 import matplotlib.pyplot as plt
 import numpy as np
 
@@ -95,6 +95,7 @@ def main():
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE.mat",
                         help="reduced models written by `tvd reduce --out`, one row each")
     args = parser.parse_args()
+    check_unique_labels(args.files)
     check_outputs(("--out", args.out))
 
     models = [(label, *load(path)) for label, path in args.files]

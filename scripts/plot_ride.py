@@ -27,8 +27,8 @@ written then.
 import argparse
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, json_number, labelled,
-                         read_json, save)
+from plot_common import (OUT_HELP, ArgumentParser, check_outputs, fail, json_number,
+                         check_unique_labels, labelled, read_json, save)
 import matplotlib.pyplot as plt
 
 KEYS = ("points", "runs", "limits", "power_limit_w", "peak_limit_g", "peak_lowpass_hz")
@@ -94,6 +94,7 @@ def main():
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE.json",
                         help="outputs of `tvd ride --json`, drawn together")
     args = parser.parse_args()
+    check_unique_labels(args.files)
     check_outputs(("--out", args.out))
     wanted = None if args.points is None else args.points.split(",")
 

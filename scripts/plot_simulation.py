@@ -27,8 +27,8 @@ import math
 import re
 
 # First: plot_common selects the Agg backend before pyplot loads.
-from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs, labelled,
-                         save)
+from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs,
+                         check_unique_labels, labelled, save)
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 import numpy as np
@@ -45,8 +45,8 @@ MIN_SPAN = {"hull_roll_deg": 0.02, "hull_pitch_deg": 0.02}
 PANELS = {
     "hull_heave_m": "hull heave [m]",
     "hull_vertical_accel_m_s2": "hull vertical acceleration [m/s$^2$]",
-    "hull_pitch_deg": "hull pitch [deg]",
-    "hull_roll_deg": "hull roll [deg]",
+    "hull_pitch_deg": "hull pitch [deg, nose down +]",
+    "hull_roll_deg": "hull roll [deg, left up +]",
     "front_left_wheel": "front-left road wheel [m]",
     "rear_left_wheel": "rear-left road wheel [m]",
 }
@@ -98,6 +98,7 @@ def main():
     parser.add_argument("files", nargs="+", type=labelled, metavar="[LABEL=]FILE",
                         help=LABELLED_HELP)
     args = parser.parse_args()
+    check_unique_labels(args.files)
 
     check_outputs(("--out", args.out))  # before reading: bad input writes no figure
 

@@ -434,6 +434,21 @@ class PlotScriptsTest(unittest.TestCase):
         self.assert_input_error(result, bad, negative, "'crew_seat_vertical_acc_wk_mag'",
                                 "negative")
 
+    def test_a_label_given_twice_is_refused(self):
+        # A legend would name one of the two curves only: refused by every LABEL=FILE script,
+        # for two LABEL= alike and for two bare files of one base name.
+        columns = frf_columns()
+        first = write_csv(self.path("frf.csv"), columns)
+        os.makedirs(self.path("other"))
+        second = write_csv(os.path.join(self.path("other"), "frf.csv"), columns)
+        out = self.path("twice.png")
+        for args in ([f"a={first}", f"a={second}"], [first, second]):
+            result = self.run_script("plot_frf.py", "--out", out, *args)
+            label = "a" if args[0].startswith("a=") else "frf"
+            self.assert_input_error(result, out, f"label '{label}' is given to both", second)
+        self.assert_png(self.run_script("plot_frf.py", "--out", out, f"a={first}",
+                                        f"b={second}"), out)
+
     def test_frf_missing_frequency_column(self):
         columns = frf_columns()
         columns["f"] = columns.pop("frequency_hz")
@@ -548,14 +563,14 @@ class PlotScriptsTest(unittest.TestCase):
         self.assertIs(fig.axes[0].get_legend(), legends[0])
         self.assertEqual([t.get_text() for t in legends[0].get_texts()],
                          ["a", "b", "road under the wheel"])
-        roll = panels["hull roll [deg]"]
+        roll = panels["hull roll [deg, left up +]"]
         self.assertTrue(any("no lateral excitation" in t.get_text() for t in roll.texts))
         fig = draw(f"a={a}", f"c={c}")
         front = {ax.get_ylabel(): ax for ax in fig.axes}["front-left road wheel [m]"]
         self.assertEqual(len([l for l in front.get_lines() if l.get_color() == "grey"]), 2)
         # A roll that is a signal (0.5 deg) gets no such note.
         fig = draw(f"slow={write_csv(self.path('r.csv'), simulation_columns())}")
-        roll = {ax.get_ylabel(): ax for ax in fig.axes}["hull roll [deg]"]
+        roll = {ax.get_ylabel(): ax for ax in fig.axes}["hull roll [deg, left up +]"]
         self.assertEqual(len(roll.texts), 0)
 
     def test_simulation_named_point_panel(self):
