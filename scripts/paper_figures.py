@@ -138,6 +138,12 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
                       f"tracked, {TRACK_NAMES[track]} (reduced model)"]
                      + [f"{s} km/h={runs.sim_csv('tracked', 'reduced', track, s)}"
                         for s in TRACKED_SPEEDS_KMH]))
+    # Each figure names the paper's figure it stands for, so that a PNG taken out of the report
+    # still says which it is.
+    for name, _, args in jobs:
+        if "--title" in args:
+            i = args.index("--title") + 1
+            args[i] = f"{caption(name).split(':')[0]}: {args[i]}"
     return jobs
 
 

@@ -215,7 +215,8 @@ class Table:
                 self._columns[name] = values
             elif values.size != 1:  # numeric scalars are metadata
                 fail(f"{self.path}: variable '{name}' has {values.size} entries, the others "
-                     f"{rows}")
+                     f"{rows}: not a table of equal columns (the .mat of a tvd simulate, frf or "
+                     f"statics --out)")
         self.header = list(self._columns)
 
     def column(self, name):

@@ -144,6 +144,9 @@ def pad_rows(vehicle):
     try:
         with open(vehicle) as f:
             d = yaml.safe_load(f)
+        if not isinstance(d, dict):
+            fail(f"{vehicle}: not a vehicle description (a YAML map of sections, e.g. "
+                 f"config/vehicles/paper_vehicle.yaml)")
         entries = {"running_gear.track_centre_distance":
                    d["running_gear"]["track_centre_distance"],
                    "track_assembly.pad_lateral_offset": d["track_assembly"]["pad_lateral_offset"]}
