@@ -126,9 +126,10 @@ int main(int argc, char** argv) {
   std::printf("ours: load cached model %.1f ms (median of 10), first load %.1f ms\n",
               1e3 * median(load), 1e3 * load.front());
   // Issue 3's target: the full tracked model assembled and its lowest 40 modes, <= 1 s.
-  std::printf("ours: tracked model built and assembled %.3f s + its 40 modes %.3f s = %.3f s "
-              "(issue 3 target 1 s)\n",
-              median(build), median(modes), median(build) + median(modes));
+  std::printf(
+      "ours: tracked model built and assembled %.3f s + its 40 modes %.3f s = %.3f s "
+      "(issue 3 target 1 s)\n",
+      median(build), median(modes), median(build) + median(modes));
   const double pipeline_megabytes = peakMegabytes();
   std::printf("ours: peak resident memory after the pipeline %.0f MB\n", pipeline_megabytes);
 
