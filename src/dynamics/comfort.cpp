@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -25,25 +24,19 @@ constexpr int kFitGridPoints = 240;
 constexpr double kFitKnee = 0.25;
 constexpr double kFitTopWeight = 0.03;
 
-std::string format(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 const char* weightingName(Weighting weighting) {
   return weighting == Weighting::Wk ? "Wk" : "Wd";
 }
 
 void checkSampleRate(double sample_rate) {
   if (!std::isfinite(sample_rate) || sample_rate <= 0.0) {
-    throw InputError("comfort: sample rate " + format(sample_rate) + " Hz must be positive");
+    throw InputError("comfort: sample rate " + brief(sample_rate) + " Hz must be positive");
   }
 }
 
 void checkOptions(const ComfortOptions& options) {
   if (!std::isfinite(options.running_rms_time) || options.running_rms_time <= 0.0) {
-    throw InputError("comfort: running_rms_time " + format(options.running_rms_time) +
+    throw InputError("comfort: running_rms_time " + brief(options.running_rms_time) +
                      " s must be positive");
   }
 }
@@ -284,21 +277,21 @@ WeightingFilter::WeightingFilter(std::vector<AnalogSection> sections, double sam
       throw InputError(where + "denominator is zero");
     for (const std::complex<double>& pole : poles(a)) {
       if (!(pole.real() < 0.0)) {
-        throw InputError(where + "pole " + format(pole.real()) + (pole.imag() < 0 ? " - " : " + ") +
-                         format(std::abs(pole.imag())) +
+        throw InputError(where + "pole " + brief(pole.real()) + (pole.imag() < 0 ? " - " : " + ") +
+                         brief(std::abs(pole.imag())) +
                          "j rad/s is not in the open left half-plane (unstable filter)");
       }
       if (discretisation == Discretisation::MatchedMagnitude &&
           std::abs(pole.imag()) >= kPi * sample_rate) {
         throw InputError(where + "pole oscillates at " +
-                         format(std::abs(pole.imag()) / (2.0 * kPi)) +
-                         " Hz, not below fs/2 = " + format(nyquist) + " Hz");
+                         brief(std::abs(pole.imag()) / (2.0 * kPi)) +
+                         " Hz, not below fs/2 = " + brief(nyquist) + " Hz");
       }
     }
     if (discretisation == Discretisation::BilinearPrewarped) {
       if (a.prewarp_frequency < 0.0 || a.prewarp_frequency >= nyquist) {
-        throw InputError(where + "pre-warping frequency " + format(a.prewarp_frequency) +
-                         " Hz must be in [0, fs/2 = " + format(nyquist) + " Hz)");
+        throw InputError(where + "pre-warping frequency " + brief(a.prewarp_frequency) +
+                         " Hz must be in [0, fs/2 = " + brief(nyquist) + " Hz)");
       }
       biquads_.push_back(bilinear(a, sample_rate));
     } else {
@@ -313,9 +306,9 @@ WeightingFilter WeightingFilter::iso2631(Weighting weighting, double sample_rate
   const Iso2631Parameters p = iso2631Parameters(weighting);
   const double needed = 2.0 * std::max(p.f4, std::isfinite(p.f5) ? std::sqrt(p.f5 * p.f6) : 0.0);
   if (sample_rate <= needed) {
-    throw InputError("comfort: sample rate " + format(sample_rate) +
+    throw InputError("comfort: sample rate " + brief(sample_rate) +
                      " Hz is too low for ISO 2631-1 " + weightingName(weighting) + " (needs > " +
-                     format(needed) + " Hz)");
+                     brief(needed) + " Hz)");
   }
   std::vector<AnalogSection> sections = iso2631Sections(weighting);
   if (p.f2 > kLowPassLimit * sample_rate)

@@ -2,21 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
-namespace {
-
-std::string format(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-}  // namespace
+namespace {}  // namespace
 
 SpeedProfile::SpeedProfile(std::vector<double> time, std::vector<double> speed,
                            const std::string& name)
@@ -33,13 +24,13 @@ SpeedProfile::SpeedProfile(std::vector<double> time, std::vector<double> speed,
     if (!std::isfinite(speed_[k]))
       throw InputError(sample + "speed is not a finite number");
     if (speed_[k] < 0)
-      throw InputError(sample + "speed " + format(speed_[k]) +
+      throw InputError(sample + "speed " + brief(speed_[k]) +
                        " m/s is negative (the road inputs assume forward travel)");
     if (k == 0 && time_[k] != 0)
-      throw InputError(sample + "the first time must be 0, got " + format(time_[k]) + " s");
+      throw InputError(sample + "the first time must be 0, got " + brief(time_[k]) + " s");
     if (k > 0 && !(time_[k] > time_[k - 1]))
-      throw InputError(sample + "time " + format(time_[k]) + " s is not after the previous one (" +
-                       format(time_[k - 1]) + " s); times must be strictly increasing");
+      throw InputError(sample + "time " + brief(time_[k]) + " s is not after the previous one (" +
+                       brief(time_[k - 1]) + " s); times must be strictly increasing");
   }
   station_.assign(time_.size(), 0.0);
   for (std::size_t k = 1; k < time_.size(); ++k)

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -32,12 +31,6 @@ constexpr double kInertiaTolerance = 1e-9;
 const char* const kStiffnessNames[kDofsPerNode] = {"kx", "ky", "kz", "krx", "kry", "krz"};
 const char* const kDampingNames[kDofsPerNode] = {"cx", "cy", "cz", "crx", "cry", "crz"};
 const char* const kInertiaNames[3] = {"Ixx", "Iyy", "Izz"};
-
-std::string number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 std::string dofLabel(NodeId node, int direction) {
   return "node " + std::to_string(node) + " " + directionName(direction);
@@ -82,21 +75,21 @@ class Validator {
   }
   void requireFinite(const std::string& label, double value, const std::string& what) const {
     if (!std::isfinite(value)) {
-      fail(label, "non-finite " + what + " (" + number(value) + ")");
+      fail(label, "non-finite " + what + " (" + brief(value) + ")");
     }
   }
   void requirePositive(const std::string& label, double value, const std::string& what,
                        const char* unit) const {
     requireFinite(label, value, what);
     if (value <= 0.0) {
-      fail(label, "non-positive " + what + " " + number(value) + (*unit ? " " : "") + unit);
+      fail(label, "non-positive " + what + " " + brief(value) + (*unit ? " " : "") + unit);
     }
   }
   void requireNonNegative(const std::string& label, double value, const std::string& what,
                           const char* unit) const {
     requireFinite(label, value, what);
     if (value < 0.0) {
-      fail(label, "negative " + what + " " + number(value) + (*unit ? " " : "") + unit);
+      fail(label, "negative " + what + " " + brief(value) + (*unit ? " " : "") + unit);
     }
   }
 
@@ -226,7 +219,7 @@ class Validator {
     const double orthonormality_error =
         (spring.frame.transpose() * spring.frame - Matrix3::Identity()).cwiseAbs().maxCoeff();
     if (orthonormality_error > kOrthonormalTolerance) {
-      fail(label, "frame is not orthonormal (max |R^T R - I| = " + number(orthonormality_error) +
+      fail(label, "frame is not orthonormal (max |R^T R - I| = " + brief(orthonormality_error) +
                       "; the axes must be unit vectors at right angles)");
     }
     if (spring.frame.determinant() < 0.0) {
@@ -248,7 +241,7 @@ class Validator {
     for (int d = 0; d < 3; ++d) {
       if (mass.inertia(d, d) < 0.0) {
         fail(label, std::string("negative inertia ") + kInertiaNames[d] + " " +
-                        number(mass.inertia(d, d)) + " kg m^2");
+                        brief(mass.inertia(d, d)) + " kg m^2");
       }
     }
     const double magnitude = mass.inertia.cwiseAbs().maxCoeff();
@@ -260,7 +253,7 @@ class Validator {
     const double smallest = eigen.eigenvalues().minCoeff();
     if (smallest < -kInertiaTolerance * magnitude) {
       fail(label, "inertia tensor is not positive semi-definite (principal moment " +
-                      number(smallest) + " kg m^2)");
+                      brief(smallest) + " kg m^2)");
     }
   }
 

@@ -23,12 +23,6 @@ constexpr double kClassRatio = 4.0;
 constexpr double kMaxStations = 2e7;
 constexpr double kMaxTerms = 1e10;
 
-std::string format(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 [[noreturn]] void fail(const std::string& what) {
   throw InputError("ISO 8608 road: " + what);
 }
@@ -67,14 +61,14 @@ double iso8608ReferencePsd(char road_class) {
 double iso8608Psd(char road_class, double n, double waviness) {
   const double reference = iso8608ReferencePsd(road_class);
   if (!(n > 0.0) || !std::isfinite(n))
-    fail("spatial frequency " + format(n) + " must be > 0");
+    fail("spatial frequency " + brief(n) + " must be > 0");
   return reference * std::pow(n / kIso8608ReferenceFrequency, -waviness);
 }
 
 double iso8608Variance(char road_class, double n_low, double n_high, double waviness) {
   const double reference = iso8608ReferencePsd(road_class);
   if (!(n_low > 0.0 && n_low <= n_high && std::isfinite(n_high))) {
-    fail("band [" + format(n_low) + ", " + format(n_high) +
+    fail("band [" + brief(n_low) + ", " + brief(n_high) +
          "] cycles/m must satisfy 0 < low <= high");
   }
   const double n0 = kIso8608ReferenceFrequency;
@@ -89,28 +83,28 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
                     std::uint64_t seed, const Iso8608Options& options) {
   const char upper = static_cast<char>('A' + classIndex(road_class));
   if (!(std::isfinite(length) && length > 0.0))
-    fail("length " + format(length) + " m must be > 0");
+    fail("length " + brief(length) + " m must be > 0");
   if (!(std::isfinite(width) && width >= 0.0))
-    fail("width " + format(width) + " m must be >= 0");
+    fail("width " + brief(width) + " m must be >= 0");
   if (!(std::isfinite(spacing) && spacing > 0.0 && spacing <= length)) {
-    fail("spacing " + format(spacing) + " m must be in (0, length]");
+    fail("spacing " + brief(spacing) + " m must be in (0, length]");
   }
   if (!(std::isfinite(options.waviness) && options.waviness > 0.0)) {
-    fail("waviness " + format(options.waviness) + " must be > 0");
+    fail("waviness " + brief(options.waviness) + " must be > 0");
   }
   const double nyquist = 0.5 / spacing;
   if (!(options.min_frequency > 0.0 && options.min_frequency < options.max_frequency &&
         options.max_frequency <= nyquist)) {
-    fail("band [" + format(options.min_frequency) + ", " + format(options.max_frequency) +
-         "] cycles/m must satisfy 0 < min < max <= Nyquist 1/(2 spacing) = " + format(nyquist));
+    fail("band [" + brief(options.min_frequency) + ", " + brief(options.max_frequency) +
+         "] cycles/m must satisfy 0 < min < max <= Nyquist 1/(2 spacing) = " + brief(nyquist));
   }
   if (!(std::isfinite(options.taper_length) && options.taper_length >= 0.0 &&
         options.taper_length <= 0.5 * length)) {
-    fail("taper_length " + format(options.taper_length) + " m must be in [0, length / 2]");
+    fail("taper_length " + brief(options.taper_length) + " m must be in [0, length / 2]");
   }
   const bool sides = options.correlation == LateralCorrelation::IndependentSides;
   if (sides && !(options.side_gap > 0.0 && options.side_gap < width)) {
-    fail("side_gap " + format(options.side_gap) + " m must be in (0, width = " + format(width) +
+    fail("side_gap " + brief(options.side_gap) + " m must be in (0, width = " + brief(width) +
          " m) for independent sides");
   }
 
@@ -118,9 +112,9 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
   const double harmonics =
       (std::min(options.max_frequency, nyquist) - options.min_frequency) * length;
   if (stations > kMaxStations || stations * harmonics > kMaxTerms) {
-    fail("length " + format(length) + " m at spacing " + format(spacing) + " m needs " +
-         format(stations) + " stations x " + format(harmonics) + " harmonics; at most " +
-         format(kMaxStations) + " stations and " + format(kMaxTerms) +
+    fail("length " + brief(length) + " m at spacing " + brief(spacing) + " m needs " +
+         brief(stations) + " stations x " + brief(harmonics) + " harmonics; at most " +
+         brief(kMaxStations) + " stations and " + brief(kMaxTerms) +
          " station-harmonic terms (13 km at 0.05 m spacing, about two minutes): generate a shorter "
          "road");
   }
@@ -144,8 +138,8 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
     amplitudes.push_back(std::sqrt(2.0 * iso8608Variance(upper, low, high, options.waviness)));
   }
   if (frequencies.empty()) {
-    fail("band [" + format(options.min_frequency) + ", " + format(options.max_frequency) +
-         "] cycles/m holds no harmonic of 1/length = " + format(dn) + " cycles/m");
+    fail("band [" + brief(options.min_frequency) + ", " + brief(options.max_frequency) +
+         "] cycles/m holds no harmonic of 1/length = " + brief(dn) + " cycles/m");
   }
 
   const auto count = static_cast<Eigen::Index>(std::floor(length / spacing + 1e-9)) + 1;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
@@ -15,22 +14,16 @@ namespace {
 // Stations closer to equal spacing than this (relative) use the O(1) cell lookup.
 constexpr double kUniformTolerance = 1e-9;
 
-std::string number(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 void checkIncreasing(const Vector& values, const std::string& what, const std::string& name) {
   for (Eigen::Index i = 0; i < values.size(); ++i) {
     if (!std::isfinite(values(i))) {
       throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " is " +
-                       number(values(i)) + ", not a finite number");
+                       brief(values(i)) + ", not a finite number");
     }
     if (i > 0 && values(i) <= values(i - 1)) {
       throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " (" +
-                       number(values(i)) + " m) is not greater than " + what + " " +
-                       std::to_string(i - 1) + " (" + number(values(i - 1)) +
+                       brief(values(i)) + " m) is not greater than " + what + " " +
+                       std::to_string(i - 1) + " (" + brief(values(i - 1)) +
                        " m); they must be strictly increasing");
     }
   }
@@ -59,8 +52,8 @@ Terrain::Terrain(Vector stations, Vector lateral, Matrix heights, std::string na
     for (Eigen::Index i = 0; i < heights_.cols(); ++i) {
       if (!(std::abs(heights_(j, i)) <= kMaxTerrainHeight)) {
         throw InputError("terrain '" + name_ + "': height at lateral line " + std::to_string(j) +
-                         " (y = " + number(lateral_(j)) + " m), station " + std::to_string(i) +
-                         " (x = " + number(stations_(i)) + " m) is " + number(heights_(j, i)) +
+                         " (y = " + brief(lateral_(j)) + " m), station " + std::to_string(i) +
+                         " (x = " + brief(stations_(i)) + " m) is " + brief(heights_(j, i)) +
                          " m; heights must be finite and within +-10000 m");
       }
     }

@@ -4,7 +4,6 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -22,21 +21,15 @@ double bridgeableGap(double spacing) {
   return TerrainBuffer::kBridgeFactor * spacing * (1.0 + kSlack);
 }
 
-std::string format(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 }  // namespace
 
 void TerrainBuffer::addPatch(double start_station, double spacing, const Vector& lateral,
                              const Matrix& heights) {
-  const std::string where = "terrain patch at station " + format(start_station) + " m: ";
+  const std::string where = "terrain patch at station " + brief(start_station) + " m: ";
   if (!std::isfinite(start_station))
     throw InputError(where + "start station is not finite");
   if (!std::isfinite(spacing) || spacing <= 0.0) {
-    throw InputError(where + "spacing " + format(spacing) + " m must be positive and finite");
+    throw InputError(where + "spacing " + brief(spacing) + " m must be positive and finite");
   }
   if (lateral.size() == 0)
     throw InputError(where + "no lateral positions");
@@ -52,18 +45,18 @@ void TerrainBuffer::addPatch(double start_station, double spacing, const Vector&
   const double last_station = start_station + spacing * static_cast<double>(heights.cols() - 1);
   if (!std::isfinite(last_station) || !(start_station + spacing > start_station) ||
       !(last_station - spacing < last_station)) {
-    throw InputError(where + "spacing " + format(spacing) + " m over " +
+    throw InputError(where + "spacing " + brief(spacing) + " m over " +
                      std::to_string(heights.cols()) +
                      " samples gives stations that are not finite and distinct (last " +
-                     format(last_station) + " m): too large or too small for the start station");
+                     brief(last_station) + " m): too large or too small for the start station");
   }
   for (Eigen::Index j = 0; j < lateral.size(); ++j) {
     if (!std::isfinite(lateral(j))) {
       throw InputError(where + "lateral position " + std::to_string(j) + " is not finite");
     }
     if (j > 0 && lateral(j) <= lateral(j - 1)) {
-      throw InputError(where + "lateral position " + std::to_string(j) + " (" + format(lateral(j)) +
-                       " m) is not greater than the previous one (" + format(lateral(j - 1)) +
+      throw InputError(where + "lateral position " + std::to_string(j) + " (" + brief(lateral(j)) +
+                       " m) is not greater than the previous one (" + brief(lateral(j - 1)) +
                        " m)");
     }
   }
@@ -82,7 +75,7 @@ void TerrainBuffer::addPatch(double start_station, double spacing, const Vector&
   }
   // Named by its place: the grid's own checks (heights within +-10 km) then read "terrain
   // 'patch at x = 12 m': ...".
-  Patch patch{Terrain(stations, lateral, heights, "patch at x = " + format(start_station) + " m"),
+  Patch patch{Terrain(stations, lateral, heights, "patch at x = " + brief(start_station) + " m"),
               spacing, next_sequence_++};
   const double end = patch.end();
   // Older patches lying entirely under the new one can never win a query again.
@@ -178,10 +171,10 @@ double TerrainBuffer::height(double x, double y) const {
     const double w = (x - x0) / (x1 - x0);
     return (1.0 - w) * left->grid.height(x0, y) + w * right->grid.height(x1, y);
   }
-  throw InputError("terrain buffer: station x = " + format(x) + " m is not covered (" +
+  throw InputError("terrain buffer: station x = " + brief(x) + " m is not covered (" +
                    (empty() ? std::string("no terrain received")
-                            : "coverage starts at " + format(coveredFrom()) +
-                                  " m, contiguous until " + format(coveredUntil()) + " m") +
+                            : "coverage starts at " + brief(coveredFrom()) +
+                                  " m, contiguous until " + brief(coveredUntil()) + " m") +
                    ")");
 }
 

@@ -5,7 +5,6 @@
 #include <fstream>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -18,12 +17,6 @@
 namespace tracked_vehicle_dynamics {
 namespace terrain {
 namespace {
-
-std::string format(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
 
 /// A YAML double-quoted scalar.
 std::string quoted(const std::string& text) {
@@ -56,12 +49,12 @@ void checkIncreasing(const std::vector<io::YamlValue>& items, const std::vector<
                      const std::string& what) {
   for (std::size_t i = 1; i < values.size(); ++i) {
     if (values[i] == values[i - 1]) {
-      items[i].fail("duplicate " + what + " " + format(values[i]) + " m (same as entry " +
+      items[i].fail("duplicate " + what + " " + brief(values[i]) + " m (same as entry " +
                     std::to_string(i - 1) + ")");
     }
     if (values[i] < values[i - 1]) {
-      items[i].fail(what + " " + format(values[i]) + " m is less than the previous one (" +
-                    format(values[i - 1]) + " m); " + what + "s must be strictly increasing");
+      items[i].fail(what + " " + brief(values[i]) + " m is less than the previous one (" +
+                    brief(values[i - 1]) + " m); " + what + "s must be strictly increasing");
     }
   }
 }
@@ -96,8 +89,8 @@ Terrain loadTerrainCsv(const std::string& path) {
         lateral(static_cast<Eigen::Index>(c - 1)) = reader.number(first, c, "lateral position");
         if (c > 1 && lateral(c - 1) <= lateral(c - 2)) {
           reader.fail(first, c,
-                      "lateral position " + format(lateral(c - 1)) + " m is not greater than " +
-                          format(lateral(c - 2)) +
+                      "lateral position " + brief(lateral(c - 1)) + " m is not greater than " +
+                          brief(lateral(c - 2)) +
                           " m; lateral positions must be strictly increasing");
         }
       }
@@ -123,18 +116,18 @@ Terrain loadTerrainCsv(const std::string& path) {
     }
     x(i) = reader.number(row, 0, "station");
     if (i > 0 && x(i) == x(i - 1)) {
-      reader.fail(row, "duplicate station x = " + format(x(i)) + " m (also on row " +
+      reader.fail(row, "duplicate station x = " + brief(x(i)) + " m (also on row " +
                            std::to_string(rows[first_data + i - 1].line) + ")");
     }
     if (i > 0 && x(i) < x(i - 1)) {
-      reader.fail(row, "station x = " + format(x(i)) + " m is less than the previous station " +
-                           format(x(i - 1)) + " m; stations must be strictly increasing");
+      reader.fail(row, "station x = " + brief(x(i)) + " m is less than the previous station " +
+                           brief(x(i - 1)) + " m; stations must be strictly increasing");
     }
     for (std::size_t c = 1; c < columns; ++c) {
       const double height = reader.number(row, c, "height");
       if (!(std::abs(height) <= kMaxTerrainHeight))
         reader.fail(row, c,
-                    "height " + format(height) +
+                    "height " + brief(height) +
                         " m is beyond +-10000 m (heights are in m, "
                         "relative to the road: mm, or altitudes?)");
       h(static_cast<Eigen::Index>(c - 1), i) = height;
@@ -195,7 +188,7 @@ Terrain loadTerrainYaml(const std::string& path) {
     const io::YamlValue spacing_value = root["spacing"];
     const double spacing = spacing_value.asNumber();
     if (spacing <= 0.0)
-      spacing_value.fail("spacing " + format(spacing) + " m must be > 0");
+      spacing_value.fail("spacing " + brief(spacing) + " m must be > 0");
     const double start = root.has("start") ? root["start"].asNumber() : 0.0;
     for (std::size_t i = 0; i < count; ++i) {
       const auto k = static_cast<Eigen::Index>(i);
@@ -203,8 +196,8 @@ Terrain loadTerrainYaml(const std::string& path) {
       // A spacing lost to round-off beside a huge start (or a start beyond double range).
       if (!std::isfinite(x(k)) || (k > 0 && !(x(k) > x(k - 1))))
         (root.has("start") ? root["start"] : spacing_value)
-            .fail("start " + format(start) + " m and spacing " + format(spacing) +
-                  " m give station " + std::to_string(i) + " = " + format(x(k)) +
+            .fail("start " + brief(start) + " m and spacing " + brief(spacing) +
+                  " m give station " + std::to_string(i) + " = " + brief(x(k)) +
                   " m, not finite or not beyond the one before it");
     }
   } else {
@@ -224,7 +217,7 @@ Terrain loadTerrainYaml(const std::string& path) {
     for (std::size_t i = 0; i < count; ++i)
       if (!(std::abs(rows[j][i]) <= kMaxTerrainHeight)) {
         const io::YamlValue line = root.has("y") ? heights.elements()[j] : heights;
-        line.elements()[i].fail("height " + format(rows[j][i]) +
+        line.elements()[i].fail("height " + brief(rows[j][i]) +
                                 " m is beyond +-10000 m (heights are in m, relative to the road: "
                                 "mm, or altitudes?)");
       }
