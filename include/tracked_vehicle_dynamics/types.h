@@ -40,6 +40,8 @@ int parseDirection(const std::string& name);
 
 /// Standard gravity [m/s^2].
 constexpr double kStandardGravity = 9.80665;
+/// km/h in one m/s: speeds are m/s in the core, km/h where users give or read them.
+constexpr double kKmhPerMs = 3.6;
 /// pi and 2 pi (rad/s per Hz), to double precision: one definition for the whole project.
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;

@@ -5,6 +5,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/csv_reader.h"
+#include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
@@ -18,7 +19,7 @@ SpeedProfile loadSpeedProfile(const std::string& path) {
   if (header.cells.size() != 2 || header.cells[0] != "time_s" ||
       (header.cells[1] != "speed_kmh" && header.cells[1] != "speed_m_s"))
     reader.fail(header, "expected the header time_s,speed_kmh or time_s,speed_m_s");
-  const double to_m_s = header.cells[1] == "speed_kmh" ? 1.0 / 3.6 : 1.0;
+  const double to_m_s = header.cells[1] == "speed_kmh" ? 1.0 / kKmhPerMs : 1.0;
   std::vector<double> time, speed;
   for (std::size_t i = 1; i < rows.size(); ++i) {
     const io::CsvRow& row = rows[i];

@@ -298,8 +298,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
 
   p.max_speed = in.positive("max_speed", p.max_speed, "m/s");
   // The tools' limit (speed_profile.h): beyond it the model describes nothing a vehicle does.
-  if (p.max_speed > dynamics::kMaxSpeedKmh / 3.6)
-    throw in.error("max_speed", "must be at most " + brief(dynamics::kMaxSpeedKmh / 3.6) +
+  if (p.max_speed > dynamics::kMaxSpeedKmh / kKmhPerMs)
+    throw in.error("max_speed", "must be at most " + brief(dynamics::kMaxSpeedKmh / kKmhPerMs) +
                                     " m/s (" + brief(dynamics::kMaxSpeedKmh) +
                                     " km/h, as tvd's --speed-kmh), got " + brief(p.max_speed));
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");

@@ -413,7 +413,8 @@ int node(int argc, char** argv, int pid, const rl::TrackBagOptions& track, doubl
                                 static_cast<std::size_t>(f * d.latencies.size()))];
   };
   std::printf("run: %s at %.1f km/h, %d lap(s), %.2f s wall, %zu road_wheels messages (%.0f Hz)\n",
-              track.track.c_str(), track.speed * 3.6, laps, wall, received, received / wall);
+              track.track.c_str(), track.speed * tracked_vehicle_dynamics::kKmhPerMs, laps, wall,
+              received, received / wall);
   std::printf("node CPU: %.3f s in %.2f s = %.1f %% of one core\n", cpu, wall, 100.0 * cpu / wall);
   printThreads(threads_start, threads_end, wall);
   std::printf(
@@ -553,7 +554,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   }
-  track.speed = speed_kmh / 3.6;
+  track.speed = speed_kmh / tracked_vehicle_dynamics::kKmhPerMs;
   try {
     if (off->parsed())
       return offline(vehicle, variant, cache, track, rate, method);

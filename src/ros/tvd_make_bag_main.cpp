@@ -20,7 +20,7 @@ int main(int argc, char** argv) {
   namespace rl = tracked_vehicle_dynamics::ros_layer;
   rl::TrackBagOptions options;
   std::string out;
-  double speed_kmh = options.speed * 3.6;
+  double speed_kmh = options.speed * tracked_vehicle_dynamics::kKmhPerMs;
   double lateral_offset = 0.0;
   CLI::App app{"tvd_make_bag: rosbag of a paper test track or a terrain file at a constant speed"};
   app.add_option("--track", options.track,
@@ -74,17 +74,22 @@ int main(int argc, char** argv) {
   // Checked in the unit given (writeTrackBag would say "m/s" of a km/h argument), and the range
   // of tvd simulate: the model is not meant for more.
   if (profile_file.empty() &&
-      !(std::isfinite(speed_kmh) && speed_kmh > 0.0 && speed_kmh <= rl::kMaxTrackBagSpeed * 3.6)) {
+      !(std::isfinite(speed_kmh) && speed_kmh > 0.0 &&
+        speed_kmh <= rl::kMaxTrackBagSpeed * tracked_vehicle_dynamics::kKmhPerMs)) {
     std::cerr << "tvd_make_bag: error: --speed-kmh must be in (0, "
-              << tracked_vehicle_dynamics::brief(rl::kMaxTrackBagSpeed * 3.6) << "], got "
-              << tracked_vehicle_dynamics::beyond(speed_kmh, rl::kMaxTrackBagSpeed * 3.6) << "\n";
+              << tracked_vehicle_dynamics::brief(rl::kMaxTrackBagSpeed *
+                                                 tracked_vehicle_dynamics::kKmhPerMs)
+              << "], got "
+              << tracked_vehicle_dynamics::beyond(
+                     speed_kmh, rl::kMaxTrackBagSpeed * tracked_vehicle_dynamics::kKmhPerMs)
+              << "\n";
     return 2;
   }
   if (out.empty() && !peak_only) {
     std::cerr << "tvd_make_bag: error: --out is required (the bag file to write)\n";
     return 2;
   }
-  options.speed = speed_kmh / 3.6;
+  options.speed = speed_kmh / tracked_vehicle_dynamics::kKmhPerMs;
   if (offset->count() > 0)
     options.lateral_offset = lateral_offset;
   try {

@@ -15,7 +15,7 @@ Drive::Drive(double start, double distance, double dt, double speed)
   const double samples = std::ceil(distance / speed / dt);
   if (samples > kMaxSteps) {
     std::ostringstream message;
-    message << "simulate: " << distance << " m at " << speed * 3.6 << " km/h take " << samples
+    message << "simulate: " << distance << " m at " << speed * kKmhPerMs << " km/h take " << samples
             << " time steps of " << dt << " s; at most " << kMaxSteps;
     throw InputError(message.str());
   }

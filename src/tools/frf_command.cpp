@@ -152,7 +152,7 @@ void run(const FrfOptions& opt) {
   std::string source;
   std::optional<ReducedModelSource> reduced;
   auto delayFor = [&](const Vector& x) {
-    return opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / 3.6)
+    return opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / kKmhPerMs)
                              : dynamics::InputDelay::synchronous();
   };
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);

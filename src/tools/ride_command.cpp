@@ -82,7 +82,7 @@ void run(const RideOptions& opt) {
     throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
 
   // The slowest run is the longest; the bisections only run faster ones. Checked before any work.
-  const double longest = std::ceil(distance / (sweep.front() / 3.6) / opt.dt);
+  const double longest = std::ceil(distance / (sweep.front() / kKmhPerMs) / opt.dt);
   if (longest > Drive::kMaxSteps) {
     std::ostringstream m;
     m << "ride: --speeds: " << distance << " m at " << sweep.front() << " km/h take " << longest
@@ -141,7 +141,7 @@ void run(const RideOptions& opt) {
   double simulated = 0.0;
   const auto start = Clock::now();
   RideRuns<Run> ride([&](double speed_kmh) {
-    const Drive drive(track.startStation(), distance, opt.dt, speed_kmh / 3.6);
+    const Drive drive(track.startStation(), distance, opt.dt, speed_kmh / kKmhPerMs);
     std::vector<PointComfort> comfort;
     std::vector<dynamics::ShockMeter> peaks;
     std::vector<DofIndex> z_rows;

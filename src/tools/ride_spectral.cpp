@@ -85,7 +85,7 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
   std::vector<dynamics::SpectralRideResult> results;
   Eigen::Index rows = 0;
   for (double speed_kmh : speeds) {
-    results.push_back(ride.evaluate(speed_kmh / 3.6));
+    results.push_back(ride.evaluate(speed_kmh / kKmhPerMs));
     rows += results.back().frequencies_hz.size();
   }
   const std::vector<dynamics::AnalogSection> power_filter =
@@ -139,9 +139,9 @@ void runSpectralRide(const RideOptions& opt) {
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
 
   RideRuns<Run> rate([&](double speed_kmh) {
-    const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / 3.6);
+    const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / kKmhPerMs);
     Run run;
-    const Vector f = ride.grid(speed_kmh / 3.6);
+    const Vector f = ride.grid(speed_kmh / kKmhPerMs);
     run.frequencies = f.size();
     run.low_hz = f(0);
     run.high_hz = f(f.size() - 1);

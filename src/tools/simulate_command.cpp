@@ -185,10 +185,10 @@ void run(const SimulateOptions& opt) {
   std::optional<dynamics::SpeedProfile> profile;
   if (!opt.speed_profile.empty()) {
     profile = dynamics::loadSpeedProfile(opt.speed_profile);
-    if (profile->maxSpeed() * 3.6 > dynamics::kMaxSpeedKmh)
+    if (profile->maxSpeed() * kKmhPerMs > dynamics::kMaxSpeedKmh)
       throw InputError(opt.speed_profile + ": speeds above " + brief(dynamics::kMaxSpeedKmh) +
                        " km/h are outside the model's use (it reaches " +
-                       beyond(profile->maxSpeed() * 3.6, dynamics::kMaxSpeedKmh) + " km/h)");
+                       beyond(profile->maxSpeed() * kKmhPerMs, dynamics::kMaxSpeedKmh) + " km/h)");
   }
   // Plausibility (terrain_plausibility.h): said before any work, run all the same.
   std::vector<std::string> warnings;  // printed on stderr as they arise, and in the JSON
@@ -213,7 +213,7 @@ void run(const SimulateOptions& opt) {
     throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
   const Drive drive =
       profile ? Drive(track.startStation(), distance, opt.dt, *profile, opt.speed_profile)
-              : Drive(track.startStation(), distance, opt.dt, opt.speed_kmh / 3.6);
+              : Drive(track.startStation(), distance, opt.dt, opt.speed_kmh / kKmhPerMs);
   const long steps = drive.steps();
 
   // The reduced model (cached or from a file), or the full FE model in modal form with its
@@ -499,8 +499,8 @@ void run(const SimulateOptions& opt) {
         .field("track", track.name());
     if (profile) {
       json.field("speed_profile", opt.speed_profile)
-          .field("mean_speed_kmh", travelled / simulated * 3.6)
-          .field("max_speed_kmh", profile->maxSpeed() * 3.6);
+          .field("mean_speed_kmh", travelled / simulated * kKmhPerMs)
+          .field("max_speed_kmh", profile->maxSpeed() * kKmhPerMs);
     } else {
       json.field("speed_kmh", opt.speed_kmh);
     }
@@ -565,7 +565,7 @@ void run(const SimulateOptions& opt) {
   std::cout << std::fixed << std::setprecision(3) << track.name();
   if (profile)
     std::cout << " with the speed profile " << opt.speed_profile << " (mean "
-              << travelled / simulated * 3.6 << " km/h, " << travelled << " m travelled"
+              << travelled / simulated * kKmhPerMs << " km/h, " << travelled << " m travelled"
               << (travelled < distance ? ", the profile ends before the track does" : "") << ")";
   else
     std::cout << " at " << opt.speed_kmh << " km/h";

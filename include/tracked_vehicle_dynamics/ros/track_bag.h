@@ -29,7 +29,7 @@ namespace ros_layer {
 
 /// The fastest a bag drives [m/s]: 200 km/h, the range of `tvd simulate --speed-kmh` (the model
 /// is not meant for more).
-constexpr double kMaxTrackBagSpeed = dynamics::kMaxSpeedKmh / 3.6;
+constexpr double kMaxTrackBagSpeed = dynamics::kMaxSpeedKmh / kKmhPerMs;
 /// The longest run a bag holds [s]: it is replayed in real time, and `tvd simulate` stops at 1e7
 /// steps of its default 1 ms; a longer one is a crawl or a stray far station, not a test drive.
 constexpr double kMaxTrackBagDuration = 1e4;
@@ -39,7 +39,7 @@ struct TrackBagOptions {
   /// (.csv/.yaml, terrain_io.h, e.g. from `tvd terrain --iso8608 C`): its first station becomes
   /// station 0, where the vehicle starts.
   std::string track = "long_hill";
-  double speed = 30.0 / 3.6;  ///< [m/s], in (0, kMaxTrackBagSpeed]
+  double speed = 30.0 / kKmhPerMs;  ///< [m/s], in (0, kMaxTrackBagSpeed]
   /// A speed varying in time instead of `speed` (dynamics/speed_profile.h): the reference point
   /// moves by its exact station, the speed messages carry v(t), and the run ends where the
   /// station reaches its end, or where the profile stops for good.
