@@ -7,6 +7,12 @@
 
 namespace tracked_vehicle_dynamics {
 
+// Which to throw: InputError for what a user supplied (a file, a parameter, a message) that is
+// wrong, named; SolverError for a well-formed problem the numerics cannot solve as posed; and
+// std::logic_error (or a subclass) for a caller's broken precondition, a bug in the calling
+// code rather than in its data. Tools and the node catch Error to report the first two in one
+// line; a logic_error escaping to them is a defect to fix, not a message to word.
+
 /// Base of all errors raised by the core.
 class Error : public std::runtime_error {
  public:
