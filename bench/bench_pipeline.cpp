@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
   // 2. Simulation over the long hill at 5 km/h, 1 ms, first-order hold.
   const tvd::dynamics::SecondOrderSystem& s = model.system;
   const tvd::terrain::Terrain track = tvd::terrain::makeTrack("long_hill");
-  const double dt = 1e-3, speed = 5.0 / 3.6;
+  const double dt = 1e-3, speed = 5.0 / tvd::kKmhPerMs;
   const long steps = static_cast<long>(std::ceil(track.length() / speed / dt));
   const tvd::dynamics::RoadExcitation road(s.input_stations, s.input_lateral);
   const tvd::terrain::TerrainLines lines(track, road.inputY());

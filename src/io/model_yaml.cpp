@@ -294,12 +294,11 @@ fem::Model readModel(const YamlValue& root) {
     // The file is SI: 1000 m/s^2 is about 100 g, far beyond any load case, and the statics it
     // feeds is linear in g, so a value in mm/s^2 (9806.65) or a typo would print as a sag of
     // kilometres or overflow instead of failing here.
-    if (model.gravity.stableNorm() > kMaxGravity) {
-      std::ostringstream text;
-      text << "magnitude " << model.gravity.stableNorm()
-           << " m/s^2 is beyond 1000 m/s^2 (about 100 g): the file is SI (a value in mm/s^2?)";
-      gravity->fail(text.str());
-    }
+    const double magnitude = model.gravity.stableNorm();
+    if (magnitude > kMaxGravity)
+      gravity->fail("magnitude " + beyond(magnitude, kMaxGravity) + " m/s^2 is beyond " +
+                    brief(kMaxGravity) +
+                    " m/s^2 (about 100 g): the file is SI (a value in mm/s^2?)");
   }
   for (const YamlValue& node : root["nodes"].elements("a list of nodes {id, x: [x, y, z]}")) {
     model.nodes.push_back(readNode(node));

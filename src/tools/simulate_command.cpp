@@ -446,7 +446,7 @@ void run(const SimulateOptions& opt) {
     const bool by_pads = s.groups > 0;
     if (by_pads ? s.first_new_group_tension >= 0 : s.first_new_tension_contact >= 0) {
       std::ostringstream w;
-      w << std::setprecision(3) << "beyond the linear model's range from t = "
+      w << std::fixed << std::setprecision(3) << "beyond the linear model's range from t = "
         << (by_pads ? s.first_new_group_tension_time : s.first_new_tension_time)
         << " s (x = " << (by_pads ? s.first_new_group_tension_station : s.first_new_tension_station)
         << " m): the bonded model pulls on the road with " << (by_pads ? "whole pads" : "contacts")

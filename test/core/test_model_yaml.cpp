@@ -478,6 +478,9 @@ TEST_F(ModelYamlTest, RejectsGravityBeyondAHundredG) {
                   {"gravity: magnitude 9806.65 m/s^2 is beyond 1000 m/s^2", "a value in mm/s^2?"});
   expectLoadError("gravity_huge.yaml", std::string(kBase) + "gravity: [0, 0, -9.8e300]\n",
                   {"gravity: magnitude 9.8e+300 m/s^2"});
+  // Just beyond the bound reads as typed, not as the bound.
+  expectLoadError("gravity_edge.yaml", std::string(kBase) + "gravity: [0, 0, -1000.0001]\n",
+                  {"gravity: magnitude 1000.0001 m/s^2 is beyond 1000 m/s^2"});
   // The Moon, Jupiter and a 100 g shock stay accepted.
   for (const char* gravity : {"[0, 0, -1.62]", "[0, 0, -24.79]", "[0, 0, -980.665]"}) {
     const std::string path =

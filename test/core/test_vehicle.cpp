@@ -324,6 +324,12 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   EXPECT_NE(e.find("overlaps the sprocket (centre x = -3.05 m"), std::string::npos) << e;
   d.return_rollers.x = {-2.55};
   EXPECT_EQ(buildError(d), "");
+  // The same at the idler's end (its centre at x = 3.27 m, from the chain length).
+  d.return_rollers.x = {3.2};
+  e = buildError(d);
+  EXPECT_NE(e.find("overlaps the idler (centre x = 3.27"), std::string::npos) << e;
+  d.return_rollers.x = {2.75};
+  EXPECT_EQ(buildError(d), "");
   d = veh::VehicleDescription{};
   d.sprocket.centre_x = -2.8;  // 0.46 m behind the rear road wheel: the wheels interpenetrate
   d.sprocket.centre_z = 0.5;

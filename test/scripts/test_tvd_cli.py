@@ -2048,7 +2048,8 @@ class TvdCliTest(unittest.TestCase):
         pads = d["ground_contact"]["pads"]
         ranged = [w for w in d["warnings"] if w.startswith(RANGE_WARNING)]
         self.assertEqual(len(ranged), 1, d["warnings"])
-        self.assertIn(f"from t = {pads['first_new_tension_time_s']:.3g} s", ranged[0])
+        self.assertIn(f"from t = {pads['first_new_tension_time_s']:.3f} s "
+                      f"(x = {pads['first_new_tension_station_m']:.3f} m)", ranged[0])
         self.assertIn(f"(up to {pads['max_in_tension']} of {pads['count']} at once)", ranged[0])
         self.assertIn("tvd: warning: " + ranged[0], r.stderr)
         self.assertFalse(d["ground_contact"]["in_range"])
