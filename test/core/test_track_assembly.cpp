@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -95,13 +96,8 @@ TEST_F(TrackAssemblyTest, TopologyOfTheOneDimensionalModel) {
 TEST(TrackAssemblyCalibration, ColumnsTooCloseForTheTorsionalStiffnessAreRejected) {
   tvd::vehicle::TrackAssemblyDescription d;
   d.pad_column_offset = 0.03;  // k_z c^2 = 1.7e4 < k_ry = 6.3e4
-  try {
-    tvd::vehicle::calibrateTrackAssembly(d);
-    FAIL() << "expected InputError";
-  } catch (const tvd::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("track_assembly.pad_column_offset"), std::string::npos)
-        << e.what();
-  }
+  tvd::expectInputError([&] { tvd::vehicle::calibrateTrackAssembly(d); },
+                        "track_assembly.pad_column_offset");
 }
 
 TEST(TrackAssemblyCalibration, AStiffnessInAnotherUnitIsNamed) {
@@ -153,27 +149,15 @@ TEST(TrackAssemblyCalibration, RefusalSaysWhatWouldFit) {
   // A target no column spacing within the pitch reaches is not sent to a wider spacing.
   tvd::vehicle::TrackAssemblyDescription stiff = d;
   stiff.torsional_stiffness_y = 10.0 * d.torsional_stiffness_y;
-  try {
-    tvd::vehicle::calibrateTrackAssembly(stiff);
-    FAIL() << "expected InputError";
-  } catch (const tvd::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("would not fit in the pitch (" + tvd::brief(d.pitch) +
-                                         " m): lower torsional_stiffness_y or raise "
-                                         "compression_stiffness"),
-              std::string::npos)
-        << e.what();
-  }
+  tvd::expectInputError([&] { tvd::vehicle::calibrateTrackAssembly(stiff); },
+                        {"would not fit in the pitch (" + tvd::brief(d.pitch) +
+                         " m): lower torsional_stiffness_y or raise compression_stiffness"});
 }
 
 TEST(TrackAssemblyCalibration, MassNotCoveringPadsAndPinsIsRejected) {
   tvd::vehicle::TrackAssemblyDescription d;
   d.mass = 5.0;
-  try {
-    tvd::vehicle::buildTrackAssemblyModel(d);
-    FAIL() << "expected InputError";
-  } catch (const tvd::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("track_assembly.mass"), std::string::npos) << e.what();
-  }
+  tvd::expectInputError([&] { tvd::vehicle::buildTrackAssemblyModel(d); }, "track_assembly.mass");
 }
 
 }  // namespace
