@@ -79,10 +79,7 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
           r.released[i] ? 0.0 : normal_stiffness[i];
     r.system = assemble(r.model);
     try {
-      r.statics = solveStatic(r.system, forward_acceleration == 0.0
-                                            ? r.system.gravity_load
-                                            : Vector(r.system.gravity_load +
-                                                     forward_acceleration * r.system.travel_load));
+      r.statics = solveStatic(r.system, r.system.steadyLoad(forward_acceleration));
     } catch (const SolverError& e) {
       const auto lifted = std::count(r.released.begin(), r.released.end(), true);
       if (lifted == 0)

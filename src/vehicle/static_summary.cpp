@@ -16,10 +16,8 @@ double StaticSummary::balanceError() const {
 
 StaticSummary computeStaticSummary(const VehicleModel& vehicle, const fem::System& system,
                                    double forward_acceleration) {
-  if (forward_acceleration == 0.0)
-    return staticSummaryOf(vehicle, system, fem::solveStatic(system, system.gravity_load));
-  const Vector load = system.gravity_load + forward_acceleration * system.travel_load;
-  return staticSummaryOf(vehicle, system, fem::solveStatic(system, load));
+  return staticSummaryOf(vehicle, system,
+                         fem::solveStatic(system, system.steadyLoad(forward_acceleration)));
 }
 
 StaticSummary staticSummaryOf(const VehicleModel& vehicle, const fem::System& system,

@@ -34,6 +34,11 @@ struct System {
   std::vector<std::string> dropped_set_entries;
 
   DofIndex size() const { return stiffness.rows(); }
+  /// The static load of a steady forward acceleration a [m/s^2] (braking < 0): f_g + a f_a;
+  /// f_g itself at a = 0.
+  Vector steadyLoad(double forward_acceleration) const {
+    return gravity_load + forward_acceleration * travel_load;
+  }
 };
 
 /// Options of the assembly.
