@@ -18,6 +18,13 @@ namespace tracked_vehicle_dynamics {
 namespace terrain {
 namespace {
 
+// The refusal of a height beyond kMaxTerrainHeight, for both readers (which name its row and
+// column, or its YAML line; Terrain's own check knows only indices).
+std::string heightBeyondRange(double height) {
+  return "height " + brief(height) + " m is beyond +-" + brief(kMaxTerrainHeight) +
+         " m (heights are in m, relative to the road: mm, or altitudes?)";
+}
+
 /// A YAML double-quoted scalar.
 std::string quoted(const std::string& text) {
   std::string out = "\"";
@@ -126,10 +133,7 @@ Terrain loadTerrainCsv(const std::string& path) {
     for (std::size_t c = 1; c < columns; ++c) {
       const double height = reader.number(row, c, "height");
       if (!(std::abs(height) <= kMaxTerrainHeight))
-        reader.fail(row, c,
-                    "height " + brief(height) +
-                        " m is beyond +-10000 m (heights are in m, "
-                        "relative to the road: mm, or altitudes?)");
+        reader.fail(row, c, heightBeyondRange(height));
       h(static_cast<Eigen::Index>(c - 1), i) = height;
     }
   }
@@ -217,9 +221,7 @@ Terrain loadTerrainYaml(const std::string& path) {
     for (std::size_t i = 0; i < count; ++i)
       if (!(std::abs(rows[j][i]) <= kMaxTerrainHeight)) {
         const io::YamlValue line = root.has("y") ? heights.elements()[j] : heights;
-        line.elements()[i].fail("height " + brief(rows[j][i]) +
-                                " m is beyond +-10000 m (heights are in m, relative to the road: "
-                                "mm, or altitudes?)");
+        line.elements()[i].fail(heightBeyondRange(rows[j][i]));
       }
   }
   try {
