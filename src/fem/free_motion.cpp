@@ -42,7 +42,9 @@ std::string describeFreeMotions(const System& system) {
   // Zero-energy vectors: lowest eigenvectors of (K, I) — independent of how M looks.
   SparseMatrix identity(n, n);
   identity.setIdentity();
-  const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff();
+  // A stiffness with nothing in it (every DOF free) still needs a scale for the shift below.
+  const double largest = system.stiffness.diagonal().cwiseAbs().maxCoeff();
+  const double scale = largest > 0.0 ? largest : 1.0;
   ModalRequest request;
   // Up to six rigid-body motions and a few mechanisms (the message says when there may be more).
   request.count = static_cast<int>(std::min<DofIndex>(24, n));

@@ -78,6 +78,12 @@ void SparseCholesky::analyze(const SparseMatrix& a) {
 }
 
 bool SparseCholesky::factorize(const SparseMatrix& a) {
+  // A matrix with no entry at all (a stiffness with nothing on its free DOFs) is singular, not
+  // a failure: CHOLMOD's symbolic analysis refuses it outright.
+  if (a.rows() > 0 && a.nonZeros() == 0 && a.rows() == a.cols()) {
+    impl_->factorised = false;
+    return false;
+  }
   if (!impl_->factor || a.rows() != rows_)
     analyze(a);
   cholmod_sparse s = Impl::view(a);

@@ -8,6 +8,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
 #include "tracked_vehicle_dynamics/fem/spring_element.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -329,6 +330,25 @@ TEST(StaticSolver, SingularStiffnessNamesTheFreeMotion) {
   model.springs.push_back(springAlong(2, tvd::fem::kGround, 1, 1e4));
   const std::string message = singularStaticsMessage(model);
   EXPECT_NE(message.find("rigid-body translation along x"), std::string::npos) << message;
+}
+
+TEST(StaticSolver, AStiffnessWithNothingInItNamesTheFreeMotion) {
+  // One mass held in every direction but z, and no spring at all: K is the 1 x 1 zero matrix,
+  // which the sparse factorisation's symbolic analysis refuses outright. Still a free motion,
+  // named as such, not a solver failure.
+  Model model;
+  model.addNode(1, tvd::Vector3(0, 0, 0));
+  model.masses.push_back(pointMass(1, 2.0));
+  tvd::fem::FixedDofs fixed;
+  fixed.node = 1;
+  fixed.dofs[2] = false;  // uz
+  model.fixed.push_back(fixed);
+  const std::string message = singularStaticsMessage(model);
+  EXPECT_NE(message.find("free motion: rigid-body translation along z"), std::string::npos)
+      << message;
+  tvd::fem::SparseCholesky chol;
+  EXPECT_FALSE(chol.factorize(tvd::fem::assemble(model).stiffness));
+  EXPECT_EQ(chol.rcond(), 0.0);
 }
 
 TEST(StaticSolver, SingularStiffnessNamesAMechanismByItsDofs) {
