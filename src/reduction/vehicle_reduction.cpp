@@ -634,7 +634,7 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
       rep.total_seconds = secondsSince(start);
       return cached;
     } catch (const StaleCacheError& e) {
-      rep.cache_note = std::string("rebuilt, the cached model is stale: ") + e.what();
+      rep.cache_note = std::string("rebuilt, the cached model cannot be used: ") + e.what();
       rep.cache_rebuilt = true;
     }
   } else {

@@ -20,6 +20,11 @@ namespace {
 
 // The highest ~rate the node accepts [Hz] (a 10 us step).
 constexpr double kMaxRateHz = 1e5;
+// The longest ~catch_up_limit [s]: an hour of simulated time replayed in one tick.
+constexpr double kMaxCatchUpLimit = 3600.0;
+// The longest ~diagnostic_period [s]: a day (ros::Duration's 32-bit seconds end at 68 years, but
+// wall timers add it to the epoch time).
+constexpr double kMaxDiagnosticPeriod = 86400.0;
 
 // Reads the parameters of one node handle; every error names the resolved parameter.
 class Reader {
@@ -114,9 +119,7 @@ class Reader {
                  std::abs(static_cast<double>(raw)) < 1e9) {
         value = static_cast<int>(static_cast<double>(raw));
       } else {
-        throw error(key, "must be an integer" + (raw.getType() == XmlRpc::XmlRpcValue::TypeDouble
-                                                     ? ", got " + text(static_cast<double>(raw))
-                                                     : std::string()));
+        throw error(key, "must be an integer" + got(key));
       }
     }
     if (maximum == std::numeric_limits<int>::max()) {
@@ -310,6 +313,13 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("catch_up_limit",
                    "must be at least one step, 1 / ~rate = " + brief(1.0 / v.rate) + " s, got " +
                        brief(p.catch_up_limit));
+  // A tick runs the whole catch-up before it returns, and the publishers' queues are sized for
+  // it: an hour (3.6e6 steps at 1 kHz) is already far beyond any stall worth replaying, and
+  // 1e300 ("never skip") overflowed the step count into "skip at every late tick".
+  if (p.catch_up_limit > kMaxCatchUpLimit)
+    throw in.error("catch_up_limit", "must be at most " + brief(kMaxCatchUpLimit) +
+                                         " s (a tick replays it all before it returns), got " +
+                                         brief(p.catch_up_limit));
 
   p.odom_frame = in.frame("odom_frame", p.odom_frame, false);
   p.base_frame = in.frame("base_frame", p.base_frame, false);
@@ -345,6 +355,10 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
       in.nonNegative("variance/imu_linear_acceleration", var.imu_linear_acceleration, "(m/s^2)^2");
   // <= 0 would make diagnostic_updater publish at every tick (1 kHz).
   p.diagnostic_period = in.positive("diagnostic_period", p.diagnostic_period, "s");
+  // ros::Duration holds 32-bit seconds; a day is already more than anyone waits for a report.
+  if (p.diagnostic_period > kMaxDiagnosticPeriod)
+    throw in.error("diagnostic_period", "must be at most " + brief(kMaxDiagnosticPeriod) +
+                                            " s (a day), got " + brief(p.diagnostic_period));
 
   reduction::VehicleReductionOptions& r = p.reduction_options;
   const std::string rule = in.string("reduction/rule", reduction::modeRuleName(r.rule));
@@ -368,7 +382,9 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   // Every key above has been asked for: what else is set in the private namespace is unknown
   // (a misspelt ~speed_timout would leave the dead-driver stop off without a word).
   for (const std::string& key : in.unread()) {
-    const std::string near = in.nearest(key);
+    // tf_prefix is ROS 1's retired convention for what ~frame_prefix does here (no spelling is
+    // near it).
+    const std::string near = key == "tf_prefix" ? "frame_prefix" : in.nearest(key);
     p.unknown_parameters.push_back("~" + key +
                                    (near.empty() ? "" : " (did you mean ~" + near + "?)"));
   }

@@ -59,7 +59,9 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   loop_nh_.setCallbackQueue(&loop_queue_);
   loop_private_nh_.setCallbackQueue(&loop_queue_);
   use_sim_time_ = ros::Time::isSimTime();
-  loadVehicle();
+  loadVehicle();  // seconds when the model is built: a Ctrl-C meanwhile only flags the shutdown
+  if (!ros::ok())
+    throw StartUpInterrupted();
   setUpFrames();
 
   const double rate = params_.vehicle_options.rate;
@@ -561,11 +563,20 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const std::int64_t skipped = due - max_catch_up_steps_;
     ++events_.resyncs;
     events_.skipped_steps += static_cast<std::uint64_t>(skipped);
+    // A step slower than the period (~method exact at a high ~rate) falls behind for good:
+    // the cause, not only the symptom, is what the user can act on.
+    const double step_mean = step_total_.mean();
+    const std::string cause = step_mean * 1e9 > static_cast<double>(step_ns_)
+                                  ? " (a step takes " + brief(std::round(step_mean * 1e7) / 10.0) +
+                                        " us on average, more than the period of " +
+                                        brief(step_ns_ * 1e-3) +
+                                        " us: lower ~rate, or use ~method modal)"
+                                  : std::string();
     ROS_WARN_THROTTLE(kWarnPeriod,
                       "%s: %.3f s behind ROS time, more than ~catch_up_limit "
-                      "(%.3f s): skipping %.3f s and resynchronising",
+                      "(%.3f s): skipping %.3f s and resynchronising%s",
                       nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
-                      skipped * step_ns_ * 1e-9);
+                      skipped * step_ns_ * 1e-9, cause.c_str());
     sample_time_ += ros::Duration().fromNSec(skipped * step_ns_);
     due = max_catch_up_steps_;
   }

@@ -30,6 +30,10 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
                        " s of wall time: the simulation is paused or stopped");
   } else if (diverged > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite outputs: reset");
+  } else if (resyncs > 0 && step_window_.mean() > period) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "cannot keep up: a step takes longer than the period (lower ~rate, or use "
+                   "~method modal); resynchronised beyond ~catch_up_limit");
   } else if (resyncs > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "fell behind ROS time beyond ~catch_up_limit: resynchronised");

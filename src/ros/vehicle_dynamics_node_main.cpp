@@ -1,5 +1,7 @@
 // vehicle_dynamics_node: see doc/ros_node.md and
 // include/tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h.
+#include <cstdio>
+
 #include <ros/ros.h>
 
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
@@ -11,6 +13,10 @@ int main(int argc, char** argv) {
   try {
     tracked_vehicle_dynamics::ros_layer::VehicleDynamicsNode node(nh, private_nh);
     ros::spin();
+  } catch (const tracked_vehicle_dynamics::ros_layer::StartUpInterrupted& e) {
+    // Asked to stop: not a failure. stdout, since /rosout is gone with ROS.
+    std::printf("%s: %s\n", tracked_vehicle_dynamics::ros_layer::nodeName(), e.what());
+    return 0;
   } catch (const std::exception& e) {
     ROS_FATAL("%s: %s", tracked_vehicle_dynamics::ros_layer::nodeName(), e.what());
     return 1;

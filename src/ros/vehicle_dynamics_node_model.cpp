@@ -72,11 +72,20 @@ void VehicleDynamicsNode::loadVehicle() {
     // before the stepping starts; the free memory then goes back to the system (declared before
     // the model: it outlives it).
     const HeapReuse heap_reuse;
-    const reduction::ReducedModel model =
-        params_.reduced_model.empty()
-            ? reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,
-                                             params_.reduction_options, &report_)
-            : loadGivenModel(description);
+    // A reduction that fails on a valid description (no global mode paired under
+    // ~reduction/mac_threshold 1.0) is the ~reduction/* parameters' doing as much as the file's:
+    // its message names both, not ~vehicle alone.
+    const reduction::ReducedModel model = [&] {
+      if (!params_.reduced_model.empty())
+        return loadGivenModel(description);
+      try {
+        return reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,
+                                              params_.reduction_options, &report_);
+      } catch (const Error& e) {
+        throw ParameterError(private_nh_.resolveName("reduction") + "/* (reducing " +
+                             params_.vehicle + "): " + e.what());
+      }
+    }();
     // The model's load (or build) and the discretisation's set-up are timed apart: ~method
     // exact spends seconds in the augmented exponential, which is not the cache's doing.
     load_seconds_ = std::chrono::duration<double>(Clock::now() - start).count();

@@ -136,7 +136,7 @@ TEST(ReductionCache, OtherOptionsAreNotServedFromTheDefaultCache) {
       tvd::reduction::loadOrReduceVehicle(kVehicle, variant, dir.string(), fewer, &third);
   EXPECT_FALSE(first.from_cache);
   EXPECT_FALSE(second.from_cache) << second.cache_note;
-  EXPECT_NE(second.cache_note.find("is stale: " + second.cache_file +
+  EXPECT_NE(second.cache_note.find("cannot be used: " + second.cache_file +
                                    ": reduced as 'variant untracked; rule mac; "
                                    "global_modes 40; band_hz 30; mac_threshold 0.7; "
                                    "mogesec_masters 9; modes 0', expected"),

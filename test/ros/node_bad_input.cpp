@@ -269,7 +269,8 @@ void expectRefused(const std::string& name, const std::string& arguments,
 // ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.
 TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
   int index = 0;
-  for (const std::string value : {"0", "-1", "nan", "inf"}) {
+  // 3e9 s: beyond ros::Duration's 32-bit seconds, once a FATAL that named no parameter.
+  for (const std::string value : {"0", "-1", "nan", "inf", "3e9"}) {
     SCOPED_TRACE("~diagnostic_period " + value);
     const std::string name = "bad_diagnostic_period_" + std::to_string(index++);
     const NodeRun run = runNamed(name, "_diagnostic_period:=" + value);
@@ -365,6 +366,10 @@ TEST(NodeBadParameters, CatchUpLimitBelowOneStepIsNamed) {
   expectRefused("short_catch_up", "_rate:=500 _catch_up_limit:=0.001",
                 "/short_catch_up/catch_up_limit: must be at least one step, 1 / ~rate = 0.002 s, "
                 "got 0.001");
+  // 1e300 ("never skip") overflowed the step count into skipping at every late tick.
+  expectRefused("long_catch_up", "_catch_up_limit:=1e300",
+                "/long_catch_up/catch_up_limit: must be at most 3600 s (a tick replays it all "
+                "before it returns), got 1e+300");
 }
 
 // ~rate must let the comfort meter filter (ISO 2631-1 Wk: above 25 Hz): named as ~rate.
@@ -444,7 +449,7 @@ void expectEachStopsNamed(const std::vector<StopCase>& cases) {
 TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
   expectEachStopsNamed({
       {"mode_count_half", "_reduction/mode_count:=2.5",
-       "/mode_count_half/reduction/mode_count: must be an integer, got 2.5"},
+       "/mode_count_half/reduction/mode_count: must be an integer, got the number 2.5"},
       // The command line's ranges (tvd --global-modes, --masters, --modes).
       {"global_modes_300", "_reduction/global_modes:=300",
        "/global_modes_300/reduction/global_modes: must be an integer in [1, 200], got 300 (more "
@@ -468,7 +473,8 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
   const NodeRun run =
       runNode("__name:=said _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
                   " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
-                  " _rate:=40 _publish_rate:=15 _speed_timout:=1 _frame_prefix:=veh1",
+                  " _rate:=40 _publish_rate:=15 _speed_timout:=1 _frame_prefix:=veh1"
+                  " _tf_prefix:=veh1/",
               test::requiredParam<int>(private_nh, "bad_parameter_timeout"));
   EXPECT_EQ(run.exit_status, 124) << "the node should run until `timeout` stops it:\n"
                                   << run.output;
@@ -477,6 +483,10 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
       run.output.find(
           "parameter ~speed_timout (did you mean ~speed_timeout?) is set but not a parameter"),
       std::string::npos)
+      << run.output;
+  // ROS 1's retired tf_prefix, what ~frame_prefix does here.
+  EXPECT_NE(run.output.find("parameter ~tf_prefix (did you mean ~frame_prefix?) is set but not"),
+            std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("~publish_rate 15 Hz does not divide ~rate 40 Hz: publishing every 3 "
                             "steps, at 13.3333 Hz"),

@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -69,10 +70,20 @@ inline const char* nodeName() {
   return ros::this_node::getName().c_str();
 }
 
+/// Thrown by the constructor when the node was asked to shut down (Ctrl-C, rosnode kill) while
+/// it loaded or built its model: nothing is advertised after ROS has shut down (a publish then
+/// trips an assertion in roscpp), and the node ends quietly, as asked.
+class StartUpInterrupted : public std::runtime_error {
+ public:
+  StartUpInterrupted()
+      : std::runtime_error("shut down during start-up, before the model was ready") {}
+};
+
 class VehicleDynamicsNode {
  public:
   /// Reads the parameters, loads or builds the reduced model, advertises, subscribes and starts
-  /// the loop. Throws ParameterError naming the parameter (or the description file) at fault.
+  /// the loop. Throws ParameterError naming the parameter (or the description file) at fault,
+  /// StartUpInterrupted when ROS shut down while the model was being loaded or built.
   VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
   /// Stops the tick (timerfd or loop thread).
   ~VehicleDynamicsNode();
