@@ -134,7 +134,13 @@ def load_mat(path, variable_names=None):
     if os.path.isdir(path):
         fail(f"{path}: cannot read MAT file (it is a directory)")
     try:
-        data = scipy.io.loadmat(path, variable_names=variable_names)
+        try:
+            # tvd writes text as UTF-16 code units, as MATLAB does; SciPy's default codec keeps
+            # one byte of each. A character beyond U+FFFF (a surrogate pair) defeats that codec.
+            data = scipy.io.loadmat(path, variable_names=variable_names,
+                                    uint16_codec="utf-16-le")
+        except Exception:  # noqa: BLE001 - then as SciPy reads it by default (or fails)
+            data = scipy.io.loadmat(path, variable_names=variable_names)
     except Exception as error:  # noqa: BLE001 - corrupt files raise zlib.error, struct.error, ...
         if isinstance(error, OSError) and not os.path.isfile(path):
             fail(f"{path}: cannot read MAT file ({reason(error)})")

@@ -1,5 +1,7 @@
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 
+#include "tracked_vehicle_dynamics/io/utf8.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -110,38 +112,6 @@ JsonWriter& JsonWriter::value(const std::vector<std::string>& v) {
     value(s);
   return endArray();
 }
-
-namespace {
-
-// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong forms, no
-// surrogates, nothing above U+10FFFF), 0 when there is none.
-std::size_t utf8Length(const std::string& s, std::size_t i) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-  const unsigned char b = byte(i);
-  std::size_t n = 0;
-  unsigned char low = 0x80, high = 0xBF;  // the second byte's range
-  if (b >= 0xC2 && b <= 0xDF) {
-    n = 2;
-  } else if (b >= 0xE0 && b <= 0xEF) {
-    n = 3;
-    low = b == 0xE0 ? 0xA0 : 0x80;
-    high = b == 0xED ? 0x9F : 0xBF;
-  } else if (b >= 0xF0 && b <= 0xF4) {
-    n = 4;
-    low = b == 0xF0 ? 0x90 : 0x80;
-    high = b == 0xF4 ? 0x8F : 0xBF;
-  } else {
-    return 0;
-  }
-  if (i + n > s.size() || byte(i + 1) < low || byte(i + 1) > high)
-    return 0;
-  for (std::size_t k = 2; k < n; ++k)
-    if (byte(i + k) < 0x80 || byte(i + k) > 0xBF)
-      return 0;
-  return n;
-}
-
-}  // namespace
 
 std::string JsonWriter::escape(const std::string& s) {
   std::string out;

@@ -14,8 +14,10 @@
 #include <limits>
 #include <new>
 #include <set>
+#include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/utf8.h"
 
 namespace tracked_vehicle_dynamics {
 namespace io {
@@ -44,23 +46,6 @@ bool isIdentifier(const std::string& name) {
   return std::all_of(name.begin(), name.end(), [](char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
   });
-}
-
-// Appends the UTF-8 encoding of a UTF-16 code unit (surrogates, which no name or label of ours
-// uses, become '?').
-void appendUtf8(std::string& out, std::uint16_t unit) {
-  if (unit < 0x80) {
-    out.push_back(static_cast<char>(unit));
-  } else if (unit < 0x800) {
-    out.push_back(static_cast<char>(0xC0 | (unit >> 6)));
-    out.push_back(static_cast<char>(0x80 | (unit & 0x3F)));
-  } else if (unit >= 0xD800 && unit <= 0xDFFF) {
-    out.push_back('?');
-  } else {
-    out.push_back(static_cast<char>(0xE0 | (unit >> 12)));
-    out.push_back(static_cast<char>(0x80 | ((unit >> 6) & 0x3F)));
-    out.push_back(static_cast<char>(0x80 | (unit & 0x3F)));
-  }
 }
 
 struct VarDeleter {
@@ -97,7 +82,9 @@ MatFormat checkMatStructure(const std::string& path) {
   const bool little = header[126] == 'I' && header[127] == 'M';
   const bool big = header[126] == 'M' && header[127] == 'I';
   if (!little && !big)
-    throw InputError(path + ": not a MAT 5 or 7.3 file (no endian indicator in the header)");
+    throw InputError(path +
+                     ": not a MAT 5 or 7.3 file (no endian indicator in the header; Octave's "
+                     "default text format and -v4 are not: save with -v7 or -v6)");
   const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
   if (version == 0x0200)
     return MatFormat::Mat73;
@@ -198,17 +185,21 @@ void MatWriter::writeScalar(const std::string& name, double value) {
 }
 
 namespace {
-matvar_t* charVariable(const char* name, const std::string& value, int options) {
+// A 1 x n char array of UTF-16 code units, as MATLAB writes text (utf8.h): n counts characters
+// (code units), not bytes, so accented names and paths read back whole in MATLAB, Octave and
+// SciPy. The units are copied into the variable (they live only in this call).
+matvar_t* charVariable(const char* name, const std::string& value) {
+  std::vector<std::uint16_t> units = utf8ToUtf16(value);
   // MATLAB writes '' as 0x0; a 1x0 char would read back as a 1x0 array.
-  std::size_t d[2] = {value.empty() ? 0u : 1u, value.size()};
-  void* data = value.empty() ? nullptr : const_cast<char*>(value.data());
-  return Mat_VarCreate(name, MAT_C_CHAR, MAT_T_UTF8, 2, d, data, options);
+  std::size_t d[2] = {units.empty() ? 0u : 1u, units.size()};
+  void* data = units.empty() ? nullptr : units.data();
+  return Mat_VarCreate(name, MAT_C_CHAR, MAT_T_UINT16, 2, d, data, 0);
 }
 }  // namespace
 
 void MatWriter::writeString(const std::string& name, const std::string& value) {
   checkName(name);
-  impl_->write(charVariable(name.c_str(), value, MAT_F_DONT_COPY_DATA), name, path_);
+  impl_->write(charVariable(name.c_str(), value), name, path_);
 }
 
 void MatWriter::writeStrings(const std::string& name, const std::vector<std::string>& values) {
@@ -219,8 +210,8 @@ void MatWriter::writeStrings(const std::string& name, const std::vector<std::str
     throw InputError(path_ + ": cannot create variable '" + name + "' (matio)");
   VarPtr owned(cell);
   for (std::size_t i = 0; i < values.size(); ++i) {
-    // Copied (options 0): the cell owns its elements and frees them with itself.
-    matvar_t* element = charVariable(nullptr, values[i], 0);
+    // Copied: the cell owns its elements and frees them with itself.
+    matvar_t* element = charVariable(nullptr, values[i]);
     if (!element)
       throw InputError(path_ + ": cannot create '" + name + "'{" + std::to_string(i + 1) + "}");
     Mat_VarSetCell(cell, static_cast<int>(i), element);
@@ -387,9 +378,7 @@ std::string charData(const matvar_t* var, const std::string& where) {
     case MAT_T_UINT16:
     case MAT_T_UTF16:
     case MAT_T_INT16: {
-      const auto* units = static_cast<const std::uint16_t*>(var->data);
-      for (std::size_t i = 0; i < var->nbytes / 2 && units[i] != 0; ++i)
-        appendUtf8(out, units[i]);
+      out = utf16ToUtf8(static_cast<const std::uint16_t*>(var->data), var->nbytes / 2);
       break;
     }
     default:

@@ -12,6 +12,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/fnv1a.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/io/utf8.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
@@ -167,13 +168,15 @@ std::string checksum(const std::vector<Variable>& variables) {
         c.add(static_cast<std::uint64_t>(v.numeric().cols()));
         c.add(v.numeric().data(), static_cast<std::size_t>(v.numeric().size()));
         break;
+      // Over the text the file holds and reads back (utf8.h): the same bytes for valid UTF-8,
+      // U+FFFD for a byte of no character (a Latin-1 point name), which reads back so.
       case Variable::Kind::Text:
-        c.add(v.text);
+        c.add(io::validUtf8(v.text));
         break;
       case Variable::Kind::TextList:
         c.add(static_cast<std::uint64_t>(v.texts.size()));
         for (const std::string& s : v.texts)
-          c.add(s);
+          c.add(io::validUtf8(s));
         break;
     }
   }

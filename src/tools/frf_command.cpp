@@ -223,7 +223,9 @@ void run(const FrfOptions& opt) {
                {{"vehicle", description.name},
                 {"vehicle_file", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
-                {"model", opt.model}});
+                {"model", opt.model},
+                {"excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous"},
+                {"speed_kmh", opt.speed_kmh}});
   }
 
   // Per output: the largest peak and every local maximum above 10 % of it (the resonances).

@@ -103,6 +103,9 @@ void run(const MacOptions& opt) {
           flags(static_cast<Eigen::Index>(i)) = (*global)[i] ? 1.0 : 0.0;
         mat.writeMatrix(name, flags);
       }
+      writeMetadata(mat, {{"vehicle", description.name},
+                          {"vehicle_file", opt.vehicle_file},
+                          {"common_dofs", static_cast<double>(common.size())}});
       mat.close();
     });
     // One row per un-tracked mode, then one column per tracked mode, named by its number.
@@ -113,7 +116,7 @@ void run(const MacOptions& opt) {
     for (int j = 0; j < mac.cols(); ++j)
       headers.push_back(std::to_string(j + 1));
     written.write(opt.out_dir + "/mac.csv",
-                  [&](const std::string& path) { writeTable(path, headers, table, 6); });
+                  [&](const std::string& path) { writeTable(path, headers, table, 10); });
     written.commit();
   }
 

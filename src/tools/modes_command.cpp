@@ -131,7 +131,8 @@ void runModel(const ModesOptions& opt) {
   const GravitySag sag = gravitySag(sys);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
-    writeModeFiles(opt.out_dir, sys, basis, {}, written);
+    writeModeFiles(opt.out_dir, sys, basis, {},
+                   {{"model", model.name}, {"model_file", opt.model_file}}, written);
     written.commit();
   }
   if (opt.json) {
@@ -171,7 +172,11 @@ void runVehicle(const ModesOptions& opt) {
     types.push_back(c.label);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
-    writeModeFiles(opt.out_dir, a.system, a.modes, types, written);
+    writeModeFiles(opt.out_dir, a.system, a.modes, types,
+                   {{"vehicle", description.name},
+                    {"vehicle_file", opt.vehicle_file},
+                    {"variant", vehicle::variantName(variant)}},
+                   written);
     const std::string node_shapes =
         (std::filesystem::path(opt.out_dir) / "node_shapes.csv").string();
     written.write(node_shapes, [&](const std::string& path) {

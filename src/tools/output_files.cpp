@@ -23,8 +23,18 @@ void makeOutputDirectory(const std::string& dir) {
     throw InputError("cannot create output directory " + dir + ": " + ec.message());
 }
 
+void writeMetadata(io::MatWriter& mat, const Metadata& metadata) {
+  for (const MetadataEntry& entry : metadata) {
+    if (const auto* text = std::get_if<std::string>(&entry.value))
+      mat.writeString(entry.name, *text);
+    else
+      mat.writeScalar(entry.name, std::get<double>(entry.value));
+  }
+}
+
 void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::ModalBasis& basis,
-                    const std::vector<std::string>& mode_types, OutputFileSet& written) {
+                    const std::vector<std::string>& mode_types, const Metadata& metadata,
+                    OutputFileSet& written) {
   makeOutputDirectory(dir);
   const std::filesystem::path root(dir);
   const bool typed = static_cast<int>(mode_types.size()) == basis.count();
@@ -76,19 +86,19 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
     mat.writeStrings("dof_labels", labels);
     if (typed)
       mat.writeStrings("mode_types", mode_types);
+    writeMetadata(mat, metadata);
     mat.close();
   });
 }
 
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
-                int precision, const std::vector<std::pair<std::string, std::string>>& metadata) {
+                int precision, const Metadata& metadata) {
   if (static_cast<Eigen::Index>(names.size()) != data.cols())
     throw std::logic_error("writeTable: " + std::to_string(names.size()) + " names for " +
                            std::to_string(data.cols()) + " columns");
   if (io::lowerExtension(path) == ".mat") {
     io::MatWriter mat(path);
-    for (const auto& [name, text] : metadata)
-      mat.writeString(name, text);
+    writeMetadata(mat, metadata);
     for (std::size_t c = 0; c < names.size(); ++c)
       mat.writeMatrix(names[c], data.col(static_cast<Eigen::Index>(c)));
     mat.close();

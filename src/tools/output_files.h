@@ -4,10 +4,12 @@
 #include <functional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -40,21 +42,33 @@ class OutputFileSet {
   bool committed_ = false;
 };
 
+/// What a result .mat says about its run beside the data: a text (char array) or a number (1 x 1
+/// double: forward_acceleration_m_s2 is a number in MATLAB, not "-2.942").
+struct MetadataEntry {
+  std::string name;
+  std::variant<std::string, double> value;
+};
+using Metadata = std::vector<MetadataEntry>;
+
+/// Writes each entry as a variable of `mat` (names as MatWriter checks them).
+void writeMetadata(io::MatWriter& mat, const Metadata& metadata);
+
 /// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type]), DIR/shapes.csv (one row per
 /// active DOF: node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz,
-/// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types]). Creates DIR. Each file
-/// is staged in `written` (the caller commits); InputError names a file that cannot be written.
+/// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types], then `metadata`).
+/// Creates DIR. Each file is staged in `written` (the caller commits); InputError names a file
+/// that cannot be written.
 void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
-                    const std::vector<std::string>& mode_types, OutputFileSet& written);
+                    const std::vector<std::string>& mode_types, const Metadata& metadata,
+                    OutputFileSet& written);
 
 /// Writes a table of named columns: MATLAB/Octave/SciPy .mat when `path` ends in ".mat" (one n x 1
-/// variable per column, named by its header, plus the `metadata` strings as char variables), CSV
+/// variable per column, named by its header, plus the `metadata` variables), CSV
 /// otherwise (a header row, then `precision` significant digits; metadata not written). Either way
 /// the data go to a temporary file renamed onto `path`, so a failure leaves no partial file. Names
 /// must be valid MATLAB identifiers. Throws InputError naming the file when it cannot be written.
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
-                int precision,
-                const std::vector<std::pair<std::string, std::string>>& metadata = {});
+                int precision, const Metadata& metadata = {});
 
 /// Where reduced models are cached: $XDG_CACHE_HOME/tracked_vehicle_dynamics, else
 /// ~/.cache/tracked_vehicle_dynamics, else /tmp/tracked_vehicle_dynamics.

@@ -208,7 +208,10 @@ void run(const RideOptions& opt) {
                {{"vehicle", model.vehicle_name},
                 {"vehicle_file", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
-                {"track", track.name()}});
+                {"track", track.name()},
+                {"track_argument", opt.track},
+                {"dt_s", opt.dt},
+                {"lateral_offset_m", opt.lateral_offset}});
 
   if (opt.json) {
     io::JsonWriter json(std::cout);

@@ -33,6 +33,11 @@ namespace tools {
 
 namespace {
 
+// How the two sides' profiles relate, as the JSON and the .mat files name it.
+std::string lateralCorrelationName(bool independent_sides) {
+  return independent_sides ? "independent_sides" : "uniform";
+}
+
 using Clock = std::chrono::steady_clock;
 
 // What the time-domain method reports and this one does not: a PSD gives the variance of a
@@ -109,7 +114,8 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
              {{"vehicle", vehicle_name},
               {"vehicle_file", opt.vehicle_file},
               {"variant", variant},
-              {"road", road_name}});
+              {"road", road_name},
+              {"lateral_correlation", lateralCorrelationName(opt.independent_sides)}});
 }
 
 }  // namespace
@@ -184,7 +190,8 @@ void runSpectralRide(const RideOptions& opt) {
                  {{"vehicle", model.vehicle_name},
                   {"vehicle_file", opt.vehicle_file},
                   {"variant", vehicle::variantName(variant)},
-                  {"road", road_name}});
+                  {"road", road_name},
+                  {"lateral_correlation", lateralCorrelationName(opt.independent_sides)}});
     });
   if (!opt.psd_out.empty())
     written.write(opt.psd_out, [&](const std::string& path) {
@@ -207,7 +214,7 @@ void runSpectralRide(const RideOptions& opt) {
         .field("psd_at_n0_m3", terrain::iso8608ReferencePsd(road.road_class))
         .field("waviness", road.waviness)
         .field("band_cycles_per_m", std::vector<double>{road.min_frequency, road.max_frequency})
-        .field("lateral_correlation", std::string(sides ? "independent_sides" : "uniform"))
+        .field("lateral_correlation", lateralCorrelationName(sides))
         .field("band_rms_height_m", rms_height)
         .endObject();
     json.field("warnings", warnings)

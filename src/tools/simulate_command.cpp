@@ -483,12 +483,20 @@ void run(const SimulateOptions& opt) {
     if (monitor_contact)
       for (const char* h : {"ground_force_left_n", "ground_force_right_n", "contacts_in_tension"})
         headers.push_back(h);
-    writeTable(opt.out_file, headers, series, 9,
-               {{"vehicle", description.name},
-                {"vehicle_file", opt.vehicle_file},
-                {"variant", vehicle::variantName(variant)},
-                {"track", track.name()},
-                {"model", full ? "full" : "reduced"}});
+    Metadata metadata = {{"vehicle", description.name},
+                         {"vehicle_file", opt.vehicle_file},
+                         {"variant", vehicle::variantName(variant)},
+                         {"track", track.name()},
+                         {"track_argument", opt.track},
+                         {"model", full ? "full" : "reduced"},
+                         {"method", opt.method},
+                         {"dt_s", opt.dt},
+                         {"lateral_offset_m", opt.lateral_offset}};
+    if (profile)
+      metadata.push_back({"speed_profile", opt.speed_profile});
+    else
+      metadata.push_back({"speed_kmh", opt.speed_kmh});
+    writeTable(opt.out_file, headers, series, 9, metadata);
   }
   if (opt.json) {
     io::JsonWriter json(std::cout);

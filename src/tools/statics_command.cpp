@@ -97,7 +97,7 @@ void run(const StaticsOptions& opt) {
                 {"vehicle_file", opt.vehicle_file},
                 {"variant", vehicle::variantName(variant)},
                 {"contact", opt.contact},
-                {"forward_acceleration_m_s2", brief(opt.accel)}});
+                {"forward_acceleration_m_s2", opt.accel}});
   }
   const vehicle::AssemblyGroundLoad* peak =
       g.peak >= 0 ? &g.assemblies[static_cast<std::size_t>(g.peak)] : nullptr;

@@ -96,10 +96,15 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
     out.writeString("nothing", "");
     out.writeStrings("names", {"hull uz", "", "node 12 uz"});
     out.writeStrings("no_names", {});
+    // Beyond U+FFFF (a surrogate pair in the file) and a Latin-1 byte (no UTF-8 character: it
+    // is stored, and reads back, as U+FFFD).
+    out.writeStrings("wide", {"v\xc3\xa9hicule \xf0\x9f\x9a\x9c", "caf\xe9"});
     out.close();
   }
   const io::MatReader in(path);
-  EXPECT_EQ(in.names().size(), 8u);
+  EXPECT_EQ(in.names().size(), 9u);
+  EXPECT_EQ(in.readStrings("wide", 2),
+            (std::vector<std::string>{"v\xc3\xa9hicule \xf0\x9f\x9a\x9c", "caf\xef\xbf\xbd"}));
   EXPECT_EQ(in.readMatrix("A", 7, 3), a);
   EXPECT_EQ(in.readMatrix("empty").cols(), 4);
   EXPECT_EQ(in.readMatrix("empty").rows(), 0);

@@ -247,6 +247,35 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["statics", "--vehicle", VEHICLE, "--contact", "sticky"],
                                 "--contact", "sticky")
 
+    def test_mat_files_carry_their_run_and_non_ascii_text(self):
+        """Result .mat files: texts as UTF-16 code units, as MATLAB writes them, so an accented
+        path or name reads back whole (a UTF-8 element counted in bytes was unreadable in Octave
+        and read with trailing garbage by SciPy); the settings that change the results are
+        variables, numbers as numbers."""
+        folder = self.path("d\u00edr_\u00fc")
+        os.makedirs(folder, exist_ok=True)
+        with open(VEHICLE, encoding="utf-8") as f:
+            text = f.read()
+        text = text.replace(f"name: {self.vehicle_name}", "name: v\u00e9hicule_\u00fc", 1)
+        vehicle = os.path.join(folder, "v\u00e9hicule.yaml")
+        with open(vehicle, "w", encoding="utf-8") as f:
+            f.write(text)
+        statics, frf = self.path("statics_utf.mat"), self.path("frf_utf.mat")
+        self.tvd("statics", "--vehicle", vehicle, "--variant", "untracked", "--accel", "-1.5",
+                 "--out", statics)
+        m = scipy.io.loadmat(statics, uint16_codec="utf-16-le")
+        self.assertEqual(str(m["vehicle_file"][0]), vehicle)
+        self.assertEqual(str(m["vehicle"][0]), "v\u00e9hicule_\u00fc")
+        self.assertEqual(m["forward_acceleration_m_s2"].dtype, np.float64)
+        self.assertEqual(float(m["forward_acceleration_m_s2"][0, 0]), -1.5)
+        # ASCII text reads the same with SciPy's default codec.
+        self.assertEqual(str(scipy.io.loadmat(statics)["variant"][0]), "untracked")
+        self.tvd("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--speed-kmh", "30",
+                 "--max-hz", "5", "--out", frf)
+        m = scipy.io.loadmat(frf)
+        self.assertEqual(str(m["excitation"][0]), "travelled")
+        self.assertEqual(float(m["speed_kmh"][0, 0]), 30.0)
+
     def test_statics_under_steady_braking(self):
         """tvd statics --accel: the road holds the vehicle back with m a and still carries its
         weight, the load moves forward by the inertia moment, the nose goes down."""
