@@ -14,13 +14,29 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
+// ROS_WARN_THROTTLE on the wall clock. rosconsole's throttle reads ros::Time, which on simulated
+// time is the simulator's: a /clock that jumps back (two clock sources, a bag looping fast)
+// re-opens it at every jump, and the "throttled" warning floods the log; a paused clock would
+// hold it shut. One throttle per call site, as ROS_WARN_THROTTLE has.
+#define TVD_LOG_THROTTLE(log, period, ...)                                              \
+  do {                                                                                  \
+    static double tvd_warn_last_ = -1e300;                                              \
+    const double tvd_warn_now_ = ::ros::WallTime::now().toSec();                        \
+    if (tvd_warn_now_ >= tvd_warn_last_ + (period) || tvd_warn_now_ < tvd_warn_last_) { \
+      tvd_warn_last_ = tvd_warn_now_;                                                   \
+      log(__VA_ARGS__);                                                                 \
+    }                                                                                   \
+  } while (false)
+#define TVD_WARN_THROTTLE(period, ...) TVD_LOG_THROTTLE(ROS_WARN, period, __VA_ARGS__)
+#define TVD_ERROR_THROTTLE(period, ...) TVD_LOG_THROTTLE(ROS_ERROR, period, __VA_ARGS__)
+
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Throttle period of repeated warnings [s].
+// Throttle period of repeated warnings [s] of wall time.
 constexpr double kWarnPeriod = 5.0;
 // Terrain messages queued: a source sending a whole track at start-up (hundreds of patches) must
 // not lose the oldest (roscpp drops them from a full queue without a count).
@@ -190,7 +206,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
            << patch.start_station + patch.spacing * static_cast<double>(patch.heights.cols() - 1)
            << " m, rearmost contact at " << vehicle_->rearContactStation() << " m";
       last_behind_patch_ = text.str();
-      ROS_WARN_THROTTLE(kWarnPeriod,
+      TVD_WARN_THROTTLE(kWarnPeriod,
                         "%s: terrain %s: wholly behind the vehicle by more "
                         "than ~terrain_keep_behind (%g m), dropped%s",
                         nodeName(), last_behind_patch_.c_str(),
@@ -215,7 +231,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
       ++events_.patches_other_frame;
       last_other_frame_patch_ = "patch at x = " + brief(patch.start_station) + " m in frame '" +
                                 frame + "', not '" + params_.odom_frame + "'";
-      ROS_WARN_THROTTLE(kWarnPeriod,
+      TVD_WARN_THROTTLE(kWarnPeriod,
                         "%s: terrain %s: taken as stations along this vehicle's path all the same",
                         nodeName(), last_other_frame_patch_.c_str());
     }
@@ -234,7 +250,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
            << " .. " << patch.lateral(patch.lateral.size() - 1) << " m, the contacts "
            << y.minCoeff() + offset << " .. " << y.maxCoeff() + offset << " m";
       last_narrow_patch_ = text.str();
-      ROS_WARN_THROTTLE(kWarnPeriod,
+      TVD_WARN_THROTTLE(kWarnPeriod,
                         "%s: terrain %s: narrower than the contacts, the outer ones read the "
                         "patch's edge lines",
                         nodeName(), last_narrow_patch_.c_str());
@@ -244,12 +260,12 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
       last_implausible_patch_ = patchDoubts(patch, doubts);
       if (stepped)
         stepped_patch_ = last_implausible_patch_;
-      ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain %s", nodeName(), last_implausible_patch_.c_str());
+      TVD_WARN_THROTTLE(kWarnPeriod, "%s: terrain %s", nodeName(), last_implausible_patch_.c_str());
     }
   } catch (const std::exception& e) {  // InputError, or bad_alloc for an absurd patch
     ++events_.patches_rejected;
     last_patch_error_ = e.what();
-    ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
+    TVD_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
   }
 }
 
@@ -284,7 +300,7 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
     last_speed_error_ = why;
     // The last valid speed is kept: the commanded one (with a slew the current speed is still on
     // its way there).
-    ROS_WARN_THROTTLE(kWarnPeriod, "%s: %s; keeping %.3f m/s", nodeName(), why.c_str(),
+    TVD_WARN_THROTTLE(kWarnPeriod, "%s: %s; keeping %.3f m/s", nodeName(), why.c_str(),
                       vehicle_->commandedSpeed());
     return;
   }
@@ -432,7 +448,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
       flat_since_restart_ = false;
       ++events_.patches_reapplied;
     } catch (const std::exception& e) {  // accepted once, so not expected
-      ROS_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
+      TVD_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
     }
   }
   recent_patches_.clear();
@@ -513,7 +529,7 @@ void VehicleDynamicsNode::step() {
     updater_.update();
   } catch (const std::exception& e) {
     // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
-    ROS_ERROR_THROTTLE(kWarnPeriod, "%s: step failed: %s", nodeName(), e.what());
+    TVD_ERROR_THROTTLE(kWarnPeriod, "%s: step failed: %s", nodeName(), e.what());
   }
 }
 
@@ -543,7 +559,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     // affected, so only the time base is re-anchored.
     ++events_.time_jumps_back;
     ++events_.resyncs;
-    ROS_WARN_THROTTLE(kWarnPeriod,
+    TVD_WARN_THROTTLE(kWarnPeriod,
                       "%s: the wall clock stepped back by %.3f s: "
                       "resynchronising (the vehicle state is kept)",
                       nodeName(), -ahead_ns * 1e-9);
@@ -572,7 +588,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
                                         brief(step_ns_ * 1e-3) +
                                         " us: lower ~rate, or use ~method modal)"
                                   : std::string();
-    ROS_WARN_THROTTLE(kWarnPeriod,
+    TVD_WARN_THROTTLE(kWarnPeriod,
                       "%s: %.3f s behind ROS time, more than ~catch_up_limit "
                       "(%.3f s): skipping %.3f s and resynchronising%s",
                       nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
@@ -603,12 +619,12 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
                 ? std::string()
                 : " (" + std::to_string(events_.patches_behind) +
                       " patches arrived wholly behind the vehicle and were dropped)";
-        ROS_WARN_THROTTLE(kWarnPeriod,
+        TVD_WARN_THROTTLE(kWarnPeriod,
                           "%s: no terrain stored%s, moving at %.3f m/s at station %.2f m: the "
                           "contacts hold their last height",
                           nodeName(), behind.c_str(), vehicle_->speed(), vehicle_->station());
       } else {
-        ROS_WARN_THROTTLE(kWarnPeriod,
+        TVD_WARN_THROTTLE(kWarnPeriod,
                           "%s: no terrain under %d of %d contacts at station "
                           "%.2f m (terrain covers %.2f .. %.2f m): holding their last height",
                           nodeName(), result.uncovered, vehicle_->sampler().size(),
@@ -618,7 +634,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     }
     if (result.diverged) {
       ++events_.diverged;
-      ROS_ERROR_THROTTLE(kWarnPeriod, "%s: non-finite outputs: back to equilibrium", nodeName());
+      TVD_ERROR_THROTTLE(kWarnPeriod, "%s: non-finite outputs: back to equilibrium", nodeName());
     }
     if (steps_since_start_ % publish_every_ == 0)
       publishState();
