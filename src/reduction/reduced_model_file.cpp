@@ -168,8 +168,9 @@ std::string checksum(const std::vector<Variable>& variables) {
         c.add(static_cast<std::uint64_t>(v.numeric().cols()));
         c.add(v.numeric().data(), static_cast<std::size_t>(v.numeric().size()));
         break;
-      // Over the text the file holds and reads back (utf8.h): the same bytes for valid UTF-8,
-      // U+FFFD for a byte of no character (a Latin-1 point name), which reads back so.
+      // Over the text the file holds and reads back (utf8.h). The texts are ASCII in practice
+      // (labels, identifiers, hashes), the same bytes either way; should one ever hold a byte of
+      // no UTF-8 character, the file stores U+FFFD for it and the checksum must cover that.
       case Variable::Kind::Text:
         c.add(io::validUtf8(v.text));
         break;

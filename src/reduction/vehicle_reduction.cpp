@@ -313,7 +313,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     selection = selectModes(model.modes.frequencies_hz, selection_options);
   }
   if (selection.count() == 0)
-    throw InputError(
+    throw ReductionOptionsError(
         "reduction: no global mode selected below " + brief(options.band_hz) + " Hz" +
         (options.rule == VehicleModeRule::MacCorrelation
              ? " (MAC threshold " + brief(options.mac_threshold) +
@@ -347,10 +347,10 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
   } catch (const InputError& e) {
     // With the setting the user knows it by (most often a count beyond a small variant's
     // candidates), not as its cause.
-    throw InputError(std::string("reduction: MoGeSeC masters of the ") +
-                     vehicle::variantName(variant) + " variant, mogesec_masters " +
-                     std::to_string(options.mogesec_masters) +
-                     " (tvd --masters, ~reduction/mogesec_masters): " + e.what());
+    throw ReductionOptionsError(std::string("reduction: MoGeSeC masters of the ") +
+                                vehicle::variantName(variant) + " variant, mogesec_masters " +
+                                std::to_string(options.mogesec_masters) +
+                                " (tvd --masters, ~reduction/mogesec_masters): " + e.what());
   }
   // The basis' masters in interfaceMasters()' order: interface, hull, wheels, then the picks.
   masters.masters.insert(masters.masters.begin(), imposed.begin(),

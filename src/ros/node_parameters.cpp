@@ -20,10 +20,13 @@ namespace {
 
 // The highest ~rate the node accepts [Hz] (a 10 us step).
 constexpr double kMaxRateHz = 1e5;
-// The longest ~catch_up_limit [s]: an hour of simulated time replayed in one tick.
-constexpr double kMaxCatchUpLimit = 3600.0;
-// The longest ~diagnostic_period [s]: a day (ros::Duration's 32-bit seconds end at 68 years, but
-// wall timers add it to the epoch time).
+// The longest ~catch_up_limit [s]. A tick replays the whole catch-up before it returns (on real
+// time in roscpp's network thread, which meanwhile serves no message) and the publishers' queues
+// hold all of it: 10 s is 10,000 steps at 1 kHz, about 0.1 s of work, and far beyond any
+// stall worth replaying rather than skipping.
+constexpr double kMaxCatchUpLimit = 10.0;
+// The longest ~diagnostic_period [s]: a day. diagnostic_updater adds it to ros::Time::now(),
+// whose 32-bit seconds overflow (a FATAL that named no parameter) for a period of about 2e9 s.
 constexpr double kMaxDiagnosticPeriod = 86400.0;
 
 // Reads the parameters of one node handle; every error names the resolved parameter.
@@ -313,8 +316,6 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("catch_up_limit",
                    "must be at least one step, 1 / ~rate = " + brief(1.0 / v.rate) + " s, got " +
                        brief(p.catch_up_limit));
-  // A tick runs the whole catch-up before it returns, and the publishers' queues are sized for
-  // it: an hour (3.6e6 steps at 1 kHz) is already far beyond any stall worth replaying, and
   // 1e300 ("never skip") overflowed the step count into "skip at every late tick".
   if (p.catch_up_limit > kMaxCatchUpLimit)
     throw in.error("catch_up_limit", "must be at most " + brief(kMaxCatchUpLimit) +

@@ -14,14 +14,14 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
-// ROS_WARN_THROTTLE on the wall clock. rosconsole's throttle reads ros::Time, which on simulated
-// time is the simulator's: a /clock that jumps back (two clock sources, a bag looping fast)
-// re-opens it at every jump, and the "throttled" warning floods the log; a paused clock would
+// ROS_WARN_THROTTLE on the monotonic wall clock. rosconsole's throttle reads ros::Time, which on
+// simulated time is the simulator's: a /clock that jumps back (two clock sources, a bag looping
+// fast) re-opens it at every jump, and the "throttled" warning floods the log; a paused clock would
 // hold it shut. One throttle per call site, as ROS_WARN_THROTTLE has.
 #define TVD_LOG_THROTTLE(log, period, ...)                                              \
   do {                                                                                  \
     static double tvd_warn_last_ = -1e300;                                              \
-    const double tvd_warn_now_ = ::ros::WallTime::now().toSec();                        \
+    const double tvd_warn_now_ = ::ros::SteadyTime::now().toSec();                      \
     if (tvd_warn_now_ >= tvd_warn_last_ + (period) || tvd_warn_now_ < tvd_warn_last_) { \
       tvd_warn_last_ = tvd_warn_now_;                                                   \
       log(__VA_ARGS__);                                                                 \
@@ -171,6 +171,10 @@ void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queu
     out->subscribers.store(out->publisher.getNumSubscribers(), std::memory_order_relaxed);
   };
   out->publisher = nh_.advertise<M>(topic, queue_size, recount, recount);
+  // A shutdown after the check that follows loadVehicle() leaves an invalid publisher, which a
+  // publish would trip on (an assertion in roscpp).
+  if (!out->publisher)
+    throw StartUpInterrupted();
 }
 
 std::vector<std::string> VehicleDynamicsNode::judgePatch(const TerrainPatch& patch,
@@ -581,7 +585,8 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     events_.skipped_steps += static_cast<std::uint64_t>(skipped);
     // A step slower than the period (~method exact at a high ~rate) falls behind for good:
     // the cause, not only the symptom, is what the user can act on.
-    const double step_mean = step_total_.mean();
+    // The steps since the last diagnostics report, as the loop status judges them.
+    const double step_mean = step_window_.mean();
     const std::string cause = step_mean * 1e9 > static_cast<double>(step_ns_)
                                   ? " (a step takes " + brief(std::round(step_mean * 1e7) / 10.0) +
                                         " us on average, more than the period of " +

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
     tracked_vehicle_dynamics::ros_layer::VehicleDynamicsNode node(nh, private_nh);
     ros::spin();
   } catch (const tracked_vehicle_dynamics::ros_layer::StartUpInterrupted& e) {
-    // Asked to stop: not a failure. stdout, since /rosout is gone with ROS.
+    // Asked to stop: not a failure. On the console (ROS_INFO's /rosout has shut down).
     std::printf("%s: %s\n", tracked_vehicle_dynamics::ros_layer::nodeName(), e.what());
     return 0;
   } catch (const std::exception& e) {

@@ -72,16 +72,16 @@ void VehicleDynamicsNode::loadVehicle() {
     // before the stepping starts; the free memory then goes back to the system (declared before
     // the model: it outlives it).
     const HeapReuse heap_reuse;
-    // A reduction that fails on a valid description (no global mode paired under
-    // ~reduction/mac_threshold 1.0) is the ~reduction/* parameters' doing as much as the file's:
-    // its message names both, not ~vehicle alone.
+    // A reduction that the options cannot carry out on a valid description (no global mode
+    // paired under ~reduction/mac_threshold 1.0) names ~reduction/* and the file; any other
+    // failure is the description's (~vehicle, below).
     const reduction::ReducedModel model = [&] {
       if (!params_.reduced_model.empty())
         return loadGivenModel(description);
       try {
         return reduction::loadOrReduceVehicle(description, params_.variant, params_.cache_dir,
                                               params_.reduction_options, &report_);
-      } catch (const Error& e) {
+      } catch (const reduction::ReductionOptionsError& e) {
         throw ParameterError(private_nh_.resolveName("reduction") + "/* (reducing " +
                              params_.vehicle + "): " + e.what());
       }

@@ -491,7 +491,14 @@ void run(const SimulateOptions& opt) {
                          {"model", full ? "full" : "reduced"},
                          {"method", opt.method},
                          {"dt_s", opt.dt},
+                         // the modes integrated, up to this (0: every mode); above it quasi-static
+                         {"max_mode_hz", !full ? sim_options.max_mode_frequency_hz
+                                         : opt.max_mode_hz >= 0
+                                             ? opt.max_mode_hz
+                                             : reduction::FullReferenceOptions().max_frequency_hz},
                          {"lateral_offset_m", opt.lateral_offset}};
+    if (!opt.reduced.reducedFile().empty())
+      metadata.push_back({"reduced_model_file", opt.reduced.reducedFile()});
     if (profile)
       metadata.push_back({"speed_profile", opt.speed_profile});
     else

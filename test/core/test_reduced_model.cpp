@@ -3,6 +3,7 @@
 // corrupted or foreign files.
 #include <gtest/gtest.h>
 #include <hdf5.h>
+#include <matio.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -11,6 +12,8 @@
 #include <functional>
 #include <iterator>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "expect_input_error.h"
 #include "steel_cantilever.h"
@@ -121,6 +124,35 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
   EXPECT_EQ(in.readString("empty"), "");
   EXPECT_THROW(in.readString("no_names"), InputError);  // an empty cell is not a text
   EXPECT_THROW(in.readStrings("names", 2), InputError);
+  std::remove(path.c_str());
+}
+
+// What MATLAB, Octave and SciPy see, read with matio itself rather than through our reader
+// (which read back the old miUTF8 text, dimensions counted in bytes, that Octave refused): a char
+// array of UTF-16 code units, its dimensions counting those units.
+TEST(MatFile, TextIsStoredAsUtf16CodeUnitsCountedByUnit) {
+  const std::string path = tempPath("utf16.mat");
+  {
+    io::MatWriter out(path);
+    out.writeString("name", "v\xc3\xa9hicule \xf0\x9f\x9a\x9c");  // 9 characters, then U+1F69C
+    out.close();
+  }
+  mat_t* mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+  ASSERT_NE(mat, nullptr);
+  matvar_t* var = Mat_VarRead(mat, "name");
+  ASSERT_NE(var, nullptr);
+  EXPECT_EQ(var->class_type, MAT_C_CHAR);
+  EXPECT_EQ(var->data_type, MAT_T_UINT16);
+  ASSERT_EQ(var->rank, 2);
+  EXPECT_EQ(var->dims[0], 1u);
+  EXPECT_EQ(var->dims[1], 11u);  // the emoji is a surrogate pair
+  ASSERT_EQ(var->nbytes, 22u);
+  const auto* units = static_cast<const std::uint16_t*>(var->data);
+  const std::vector<std::uint16_t> expected = {0x76, 0xE9, 0x68, 0x69,   0x63,  0x75,
+                                               0x6C, 0x65, 0x20, 0xD83D, 0xDE9C};
+  EXPECT_EQ(std::vector<std::uint16_t>(units, units + 11), expected);
+  Mat_VarFree(var);
+  Mat_Close(mat);
   std::remove(path.c_str());
 }
 

@@ -270,7 +270,7 @@ void expectRefused(const std::string& name, const std::string& arguments,
 TEST(NodeBadParameters, DiagnosticPeriodMustBePositiveAndFinite) {
   int index = 0;
   // 3e9 s: beyond ros::Duration's 32-bit seconds, once a FATAL that named no parameter.
-  for (const std::string value : {"0", "-1", "nan", "inf", "3e9"}) {
+  for (const std::string value : {"0", "-1", "nan", "inf", "3e9", "86401"}) {
     SCOPED_TRACE("~diagnostic_period " + value);
     const std::string name = "bad_diagnostic_period_" + std::to_string(index++);
     const NodeRun run = runNamed(name, "_diagnostic_period:=" + value);
@@ -368,8 +368,20 @@ TEST(NodeBadParameters, CatchUpLimitBelowOneStepIsNamed) {
                 "got 0.001");
   // 1e300 ("never skip") overflowed the step count into skipping at every late tick.
   expectRefused("long_catch_up", "_catch_up_limit:=1e300",
-                "/long_catch_up/catch_up_limit: must be at most 3600 s (a tick replays it all "
+                "/long_catch_up/catch_up_limit: must be at most 10 s (a tick replays it all "
                 "before it returns), got 1e+300");
+}
+
+// A reduction the ~reduction/* settings cannot carry out on a valid description (a MAC threshold
+// of 1 pairs no mode) names those settings and the file, not ~vehicle alone.
+TEST(NodeBadParameters, AReductionTheSettingsCannotCarryOutNamesThem) {
+  const NodeRun run = runNamed("no_pairs", "_reduction/mac_threshold:=1.0");
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find("/no_pairs/reduction/* (reducing "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("): reduction: no global mode selected below 30 Hz (MAC threshold 1 "),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("/no_pairs/vehicle ("), std::string::npos) << run.output;
 }
 
 // ~rate must let the comfort meter filter (ISO 2631-1 Wk: above 25 Hz): named as ~rate.

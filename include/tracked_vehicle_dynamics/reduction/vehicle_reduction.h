@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/reduction/mogesec.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
@@ -43,6 +44,14 @@ constexpr const char* kMaxGlobalModesReason =
 /// The largest mogesec_masters and mode_count they take: a reduced model of thousands of DOFs
 /// is no longer small (the tracked vehicle's default has 431).
 constexpr int kMaxReductionCount = 1000;
+
+/// A reduction that the options given cannot carry out on a valid description (no global mode
+/// paired under the MAC threshold, more MoGeSeC masters than candidates): the caller names its
+/// reduction settings (the node's ~reduction/*), not the description, as the culprit.
+class ReductionOptionsError : public InputError {
+ public:
+  using InputError::InputError;
+};
 
 struct VehicleReductionOptions {
   VehicleModeRule rule = VehicleModeRule::MacCorrelation;
