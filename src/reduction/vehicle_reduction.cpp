@@ -587,6 +587,28 @@ std::string reducedModelCachePath(const std::string& cache_dir, vehicle::Variant
   return (std::filesystem::path(cache_dir) / (name + ".mat")).string();
 }
 
+namespace {
+
+// A vehicle's reduced model drives on road inputs, each reading the road where it stands: a file
+// without them (a generic model's, or one edited and re-signed) passed the file's own checks,
+// which allow a model without stations, and then read the stations of nothing (a null
+// dereference in the terrain coverage check).
+void requireRoadInputs(const std::string& path, const ReducedModel& model) {
+  const DofIndex inputs = model.system.inputCount();
+  if (inputs == 0)
+    throw StaleCacheError(path +
+                          ": the model has no road input (K_u has no column): not a "
+                          "vehicle's reduced model");
+  if (model.system.input_stations.size() != inputs || model.system.input_lateral.size() != inputs)
+    throw StaleCacheError(path + ": " + std::to_string(inputs) + " road inputs but " +
+                          std::to_string(model.system.input_stations.size()) +
+                          " input_stations and " +
+                          std::to_string(model.system.input_lateral.size()) +
+                          " input_lateral: where each input reads the road is missing");
+}
+
+}  // namespace
+
 VehicleModelFile loadVehicleModelFile(const std::string& path,
                                       const vehicle::VehicleDescription& description) {
   VehicleModelFile f;
@@ -595,6 +617,7 @@ VehicleModelFile loadVehicleModelFile(const std::string& path,
   ReducedModelLoadOptions load;
   load.require_same_version = false;
   f.model = loadReducedModel(path, vehicle::descriptionHashHex(description), load);
+  requireRoadInputs(path, f.model);
   if (!parseReductionKey(f.model.reduction, &f.variant, &f.options))
     throw StaleCacheError(path + ": its reduction '" + f.model.reduction +
                           "' is not one tvd reduce writes");
@@ -625,6 +648,7 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
       ReducedModelLoadOptions load;
       load.expected_reduction = reductionKey(variant, options);
       ReducedModel cached = loadReducedModel(path.string(), hash, load);
+      requireRoadInputs(path.string(), cached);
       rep.from_cache = true;
       rep.cache_note = "loaded " + path.string();
       rep.reduced_dofs = cached.size();

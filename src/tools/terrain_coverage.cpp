@@ -38,9 +38,9 @@ std::optional<std::string> terrainCoverageWarning(const std::string& track,
                                                   const terrain::Terrain& terrain,
                                                   const dynamics::RoadExcitation& road,
                                                   double lateral_offset) {
-  if (terrain.lateral().size() < 2)
-    return std::nullopt;
   const Vector& y = road.inputY();
+  if (terrain.lateral().size() < 2 || y.size() == 0)  // (no input: nothing to cover)
+    return std::nullopt;
   const double y_min = y.minCoeff(), y_max = y.maxCoeff();
   const double t_min = terrain.lateral()(0),
                t_max = terrain.lateral()(terrain.lateral().size() - 1);

@@ -8,6 +8,7 @@ Run as
     /usr/bin/python3 test/scripts/test_tvd_cli.py --tvd PATH/TO/tvd [--xml OUTDIR/tvd_cli.xml]
 """
 import csv
+import glob
 import json
 import os
 import re
@@ -246,6 +247,27 @@ class TvdCliTest(unittest.TestCase):
                                 "must end in .csv or .mat")
         self.assert_input_error(["statics", "--vehicle", VEHICLE, "--contact", "sticky"],
                                 "--contact", "sticky")
+
+    def test_our_eigen_code_beside_a_library_built_for_another_simd_level(self):
+        """Debian's liborocos-kdl (libtf2-geometry-msgs-dev depends on it) exports Eigen's
+        JacobiSVD and Matrix functions built for SSE2; loaded before libtvd_core, whose Eigen
+        is built for AVX here, it used to take over libtvd_core's calls (a segfault freeing
+        their memory: rc 139). The libraries bind their calls to their own code."""
+        kdl = sorted(glob.glob("/usr/lib/x86_64-linux-gnu/liborocos-kdl.so.*")
+                     + glob.glob("/lib/x86_64-linux-gnu/liborocos-kdl.so.*"))
+        self.assertTrue(kdl, "liborocos-kdl not installed (a dependency of libtf2-geometry-msgs-dev)")
+        env = dict(os.environ, LD_PRELOAD=kdl[0])
+        plain = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "untracked",
+                              "--count", "6")
+        result = subprocess.run([TVD, "modes", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--count", "6", "--json"], capture_output=True, text=True,
+                                env=env, timeout=240)
+        self.assertEqual(result.returncode, 0, result.stderr[-2000:])
+        np.testing.assert_allclose(json.loads(result.stdout)["frequencies_hz"],
+                                   plain["frequencies_hz"], rtol=1e-9)
+        result = subprocess.run([TVD, "mac", "--vehicle", VEHICLE, "--count", "10", "--json"],
+                                capture_output=True, text=True, env=env, timeout=240)
+        self.assertEqual(result.returncode, 0, result.stderr[-2000:])
 
     def test_mat_files_carry_their_run_and_non_ascii_text(self):
         """Result .mat files: texts as UTF-16 code units, as MATLAB writes them, so an accented
