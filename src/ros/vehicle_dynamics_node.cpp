@@ -177,6 +177,18 @@ void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queu
     throw StartUpInterrupted();
 }
 
+// A step slower than the period (~method exact at a high ~rate) falls behind for good: the
+// cause, not only the symptom, is what the user can act on. From the steps since the last
+// diagnostics report, as the loop status judges them; built only when the warning is printed.
+std::string VehicleDynamicsNode::slowStepCause() const {
+  const double step_mean = step_window_.mean();
+  if (!(step_mean * 1e9 > static_cast<double>(step_ns_)))
+    return std::string();
+  return " (a step takes " + brief(std::round(step_mean * 1e7) / 10.0) +
+         " us on average, more than the period of " + brief(step_ns_ * 1e-3) +
+         " us: lower ~rate, or use ~method modal)";
+}
+
 std::vector<std::string> VehicleDynamicsNode::judgePatch(const TerrainPatch& patch,
                                                          bool* stepped) const {
   // Against the terrain the contacts read before it, or the flat ground of a start or reset.
@@ -583,21 +595,11 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const std::int64_t skipped = due - max_catch_up_steps_;
     ++events_.resyncs;
     events_.skipped_steps += static_cast<std::uint64_t>(skipped);
-    // A step slower than the period (~method exact at a high ~rate) falls behind for good:
-    // the cause, not only the symptom, is what the user can act on.
-    // The steps since the last diagnostics report, as the loop status judges them.
-    const double step_mean = step_window_.mean();
-    const std::string cause = step_mean * 1e9 > static_cast<double>(step_ns_)
-                                  ? " (a step takes " + brief(std::round(step_mean * 1e7) / 10.0) +
-                                        " us on average, more than the period of " +
-                                        brief(step_ns_ * 1e-3) +
-                                        " us: lower ~rate, or use ~method modal)"
-                                  : std::string();
     TVD_WARN_THROTTLE(kWarnPeriod,
                       "%s: %.3f s behind ROS time, more than ~catch_up_limit "
                       "(%.3f s): skipping %.3f s and resynchronising%s",
                       nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
-                      skipped * step_ns_ * 1e-9, cause.c_str());
+                      skipped * step_ns_ * 1e-9, slowStepCause().c_str());
     sample_time_ += ros::Duration().fromNSec(skipped * step_ns_);
     due = max_catch_up_steps_;
   }

@@ -134,6 +134,8 @@ class VehicleDynamicsNode {
   void onTerrain(const TerrainProfile::ConstPtr& msg);
   /// terrain::patchWarnings for a patch about to be added (not yet named), and in `stepped`
   /// whether it steps more than kLargestPlausibleStep off the ground the contacts read before it.
+  /// " (a step takes X us …)" when the recent steps are slower than the period, else "".
+  std::string slowStepCause() const;
   std::vector<std::string> judgePatch(const TerrainPatch& patch, bool* stepped) const;
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
