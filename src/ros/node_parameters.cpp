@@ -147,6 +147,10 @@ class Reader {
       throw error(key, "'" + value + "' must not start with '/' (tf2 refuses such frame ids)");
     if (value.find_first_of(" \t\n") != std::string::npos)
       throw error(key, "'" + value + "' must not contain whitespace");
+    // An empty name segment: tf2 takes 'veh1//odom', but no tool lists it as 'veh1/odom', so a
+    // listener asking for the frame it expects never finds it.
+    if (value.find("//") != std::string::npos)
+      throw error(key, "'" + value + "' must not contain '//' (an empty name between slashes)");
     return value;
   }
 

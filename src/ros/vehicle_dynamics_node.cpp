@@ -71,7 +71,12 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
       params_(readParameters(private_nh)),
       loop_nh_(nh),
       loop_private_nh_(private_nh),
-      updater_(nh, private_nh) {
+      // The updater reads its period from "diagnostic_period" under this handle, at every report
+      // and as the parameter changes on the master: a namespace that does not hold it, so that
+      // the node's own validated ~diagnostic_period, read once, sets the pace (reportDiagnostics):
+      // a rosparam set of 1e10 or 0 at run time would otherwise throw out of every report, or
+      // publish at ~rate.
+      updater_(nh, ros::NodeHandle(private_nh, "diagnostic_updater")) {
   loop_nh_.setCallbackQueue(&loop_queue_);
   loop_private_nh_.setCallbackQueue(&loop_queue_);
   use_sim_time_ = ros::Time::isSimTime();
@@ -133,10 +138,6 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
     clock_sub_ = loop_nh_.subscribe("/clock", 10, &VehicleDynamicsNode::onClock, this,
                                     ros::TransportHints().tcpNoDelay());
   }
-  if (use_sim_time_)
-    loop_ = std::thread(&VehicleDynamicsNode::run, this);
-  else
-    tick_timer_ = std::make_unique<NetworkThreadTimer>(step_ns_, [this] { tick(); });
   // Publishing happens every round(rate / publish_rate) steps: the rate it gives is the one
   // logged, and a requested rate that does not divide ~rate is said to be rounded.
   const double published_rate = rate / static_cast<double>(publish_every_);
@@ -160,6 +161,12 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
         "%s: on simulated time (/use_sim_time true): the vehicle starts with "
         "the first /clock message",
         nodeName());
+  // Last: a constructor that throws skips ~VehicleDynamicsNode (which stops the loop), and a
+  // running std::thread destroyed with the members ends the process.
+  if (use_sim_time_)
+    loop_ = std::thread(&VehicleDynamicsNode::run, this);
+  else
+    tick_timer_ = std::make_unique<NetworkThreadTimer>(step_ns_, [this] { tick(); });
 }
 
 template <class M>
@@ -290,8 +297,8 @@ bool VehicleDynamicsNode::standingOnClearedGround() const {
 }
 
 void VehicleDynamicsNode::rememberPatch(const TerrainProfile::ConstPtr& msg) {
-  const ros::WallTime arrival = ros::WallTime::now();
-  const ros::WallTime oldest = arrival - ros::WallDuration(kRewindWindow);
+  const ros::SteadyTime arrival = ros::SteadyTime::now();
+  const ros::SteadyTime oldest = arrival - ros::WallDuration(kRewindWindow);
   while (!recent_patches_.empty() && recent_patches_.front().arrival < oldest)
     recent_patches_.pop_front();
   recent_patches_.push_back({msg, latest_clock_, arrival});
@@ -323,9 +330,9 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   vehicle_->setSpeed(v);
   ++events_.speeds_accepted;
   stopped_by_timeout_ = false;
-  last_speed_time_ = now();
+  markSpeedTime(now());
   recent_speed_ = v;
-  recent_speed_arrival_ = ros::WallTime::now();
+  recent_speed_arrival_ = ros::SteadyTime::now();
 }
 
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
@@ -368,7 +375,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   // a second transform at it, TF_REPEATED_DATA); the next published sample shows the new state.
   forgetRecentInputs();
   // The requested speed counts as a speed message for ~speed_timeout.
-  last_speed_time_ = now();
+  markSpeedTime(now());
   std::ostringstream text;
   text.precision(10);  // the default 6 digits would print station 123456.7 m as 123457
   text << "at station " << request.station << " m, speed " << request.speed
@@ -402,7 +409,7 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
 
 void VehicleDynamicsNode::forgetRecentInputs() {
   recent_patches_.clear();
-  recent_speed_arrival_ = ros::WallTime();
+  recent_speed_arrival_ = ros::SteadyTime();
 }
 
 VehicleDynamicsNode::~VehicleDynamicsNode() {
@@ -434,18 +441,35 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
     // first /clock. The vehicle waits at rest and its first sample is stamped when the clock
     // runs again, not 0.0.
     clock_started_ = false;
-    updater_.force_update();
+    reportDiagnostics(now);
     return;
   }
   publishState();
+  reportDiagnostics(now);
+}
+
+void VehicleDynamicsNode::reportDiagnostics(const ros::Time& now) {
+  next_diagnostics_ = now + ros::Duration(params_.diagnostic_period);
   updater_.force_update();
+}
+
+void VehicleDynamicsNode::markSpeedTime(const ros::Time& now) {
+  last_speed_time_ = now;
+  last_speed_steady_ = ros::SteadyTime::now();
+}
+
+double VehicleDynamicsNode::secondsSinceSpeed(const ros::Time& now) const {
+  // On real time ROS time is the system clock, which an NTP correction steps (back: the vehicle
+  // would drive on for the step's length; forward: stop at once): the monotonic clock instead.
+  return use_sim_time_ ? (now - last_speed_time_).toSec()
+                       : (ros::SteadyTime::now() - last_speed_steady_).toSec();
 }
 
 void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   // A patch of the new time (a bag's next loop) that arrived before the jump was stamped near
   // `now`, long before the old time it arrived at; one of the old time was stamped near the
   // old time. Unstamped patches cannot be told apart and are not re-applied.
-  const ros::WallTime oldest = ros::WallTime::now() - ros::WallDuration(kRewindWindow);
+  const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
   for (const RecentPatch& recent : recent_patches_) {
     const ros::Time& stamp = recent.msg->header.stamp;
     if (recent.arrival < oldest || stamp.isZero())
@@ -473,13 +497,13 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
     vehicle_->setSpeed(recent_speed_);
     stopped_by_timeout_ = false;
-    last_speed_time_ = now;
+    markSpeedTime(now);
     ++events_.speeds_reapplied;
   }
-  recent_speed_arrival_ = ros::WallTime();
+  recent_speed_arrival_ = ros::SteadyTime();
 }
 
-void VehicleDynamicsNode::reportOnWallTime(const ros::WallTime& wall) {
+void VehicleDynamicsNode::reportOnWallTime(const ros::SteadyTime& wall) {
   if (wall < next_wall_report_)
     return;
   next_wall_report_ = wall + ros::WallDuration(params_.diagnostic_period);
@@ -497,7 +521,7 @@ void VehicleDynamicsNode::run() {
   // the clock stops.
   const ros::WallDuration sim_wait(0.05);
   while (!stop_ && ros::ok()) {
-    loop_queue_.callAvailable(sim_wait);
+    handleMessages(sim_wait);
     tick_start_ = Clock::now();  // the wait for /clock is not the node's time
     step();
   }
@@ -507,13 +531,24 @@ void VehicleDynamicsNode::tick() {
   // The tick's time includes handling the messages that arrived: a huge terrain patch is copied
   // and checked here, on the loop's thread, and delays the steps.
   tick_start_ = Clock::now();
-  loop_queue_.callAvailable(ros::WallDuration(0));
+  handleMessages(ros::WallDuration(0));
   step();
+}
+
+void VehicleDynamicsNode::handleMessages(const ros::WallDuration& wait) {
+  // roscpp passes a subscriber callback's exception out of callAvailable: here it would end the
+  // loop's thread, and with it the process. None is expected (each callback catches what its
+  // message can cause); one that escapes is reported and the loop goes on.
+  try {
+    loop_queue_.callAvailable(wait);
+  } catch (const std::exception& e) {
+    TVD_ERROR_THROTTLE(kWarnPeriod, "%s: handling a message failed: %s", nodeName(), e.what());
+  }
 }
 
 void VehicleDynamicsNode::step() {
   const ros::Time t = now();
-  const ros::WallTime wall = ros::WallTime::now();
+  const ros::SteadyTime wall = ros::SteadyTime::now();
   if (t != last_step_time_) {
     last_step_time_ = t;
     last_time_change_ = wall;
@@ -530,9 +565,9 @@ void VehicleDynamicsNode::step() {
   // and the next speed message moves it again. With a speed slew it brakes to a stop at
   // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
   if (params_.speed_timeout > 0.0 && vehicle_->commandedSpeed() > 0.0 &&
-      (t - last_speed_time_).toSec() > params_.speed_timeout) {
+      secondsSinceSpeed(t) > params_.speed_timeout) {
     ROS_WARN("%s: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m", nodeName(),
-             (t - last_speed_time_).toSec(), params_.speed_timeout,
+             secondsSinceSpeed(t), params_.speed_timeout,
              vehicle_->slews() ? "braking to a stop at ~max_deceleration from station"
                                : "stopping the vehicle at station",
              vehicle_->station());
@@ -542,7 +577,9 @@ void VehicleDynamicsNode::step() {
   }
   try {
     advanceTo(t);
-    updater_.update();
+    // Paced on the node's own time (sim: its /clock; a time that stepped back re-arms it).
+    if (t >= next_diagnostics_ || (next_diagnostics_ - t).toSec() > params_.diagnostic_period)
+      reportDiagnostics(t);
   } catch (const std::exception& e) {
     // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
     TVD_ERROR_THROTTLE(kWarnPeriod, "%s: step failed: %s", nodeName(), e.what());

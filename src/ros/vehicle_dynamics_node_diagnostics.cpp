@@ -21,7 +21,7 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   const double step_p99 = step_window_.percentile(0.99);
   // ROS time that stopped moving (a paused or dead simulator, a bag at its end) is said: the
   // frozen step count alone reads like a healthy loop.
-  const double stalled = (ros::WallTime::now() - last_time_change_).toSec();
+  const double stalled = (ros::SteadyTime::now() - last_time_change_).toSec();
   if (!clock_started_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for ROS time (/clock)");
   } else if (use_sim_time_ && stalled > params_.diagnostic_period) {

@@ -82,8 +82,15 @@ void VehicleDynamicsNode::setUpFrames() {
     for (std::size_t i = 0; i < geometry.points.size(); ++i)
       published_points_.push_back(i);
   } else {
-    for (const std::string& name : params_.points)
-      published_points_.push_back(pointIndex(name, "points"));
+    for (const std::string& name : params_.points) {
+      const std::size_t i = pointIndex(name, "points");
+      // As ~imu_points: a name given twice is a slip, said rather than guessed at.
+      if (std::find(published_points_.begin(), published_points_.end(), i) !=
+          published_points_.end())
+        throw ParameterError(private_nh_.resolveName("points") + ": point '" + name +
+                             "' is listed twice");
+      published_points_.push_back(i);
+    }
   }
   setUpImus();
   // Points rigid with the hull never move in base_link: /tf_static once, not /tf every sample.

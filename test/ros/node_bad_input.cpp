@@ -305,7 +305,8 @@ TEST(NodeBadParameters, MaxSpeedBeyondTheModelsRangeIsRefused) {
                 "--speed-kmh), got 100");
 }
 
-// ~imu_points: each entry a published point frame, once; every bad entry is named.
+// ~imu_points: each entry a published point frame, once (~points: once); every bad entry is
+// named.
 TEST(NodeBadParameters, BadImuPointsAreNamed) {
   // Lists cannot be given on a node's command line (roscpp reads scalars there): they go on the
   // master under the node's name first.
@@ -327,6 +328,11 @@ TEST(NodeBadParameters, BadImuPointsAreNamed) {
        {},
        {"crew_seat", "crew_seat"},
        "imu_points: point 'crew_seat' is listed twice"},
+      // ~points likewise (it published the frame twice in every /tf message).
+      {"points_twice",
+       {"sensor_mount", "crew_seat", "sensor_mount"},
+       {},
+       "points: point 'sensor_mount' is listed twice"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
@@ -472,6 +478,10 @@ TEST(NodeBadParameters, NonIntegersAndBadFrameIdsAreNamed) {
        "/modes_1001/reduction/mode_count: must be an integer in [0, 1000], got 1001"},
       {"slash_prefix", "_frame_prefix:=/veh1/",
        "/slash_prefix/frame_prefix: '/veh1/' must not start with '/'"},
+      {"double_slash_prefix", "_frame_prefix:=veh1//",
+       "/double_slash_prefix/frame_prefix: 'veh1//' must not contain '//' (an empty name"},
+      {"double_slash_base", "_base_frame:=hull//base",
+       "/double_slash_base/base_frame: 'hull//base' must not contain '//'"},
       {"base_is_point", "_base_frame:=crew_seat",
        "/base_is_point/base_frame: 'crew_seat' is also the frame of a road wheel or named point"},
   });

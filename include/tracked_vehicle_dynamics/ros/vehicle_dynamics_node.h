@@ -112,7 +112,7 @@ class VehicleDynamicsNode {
   struct RecentPatch {
     TerrainProfile::ConstPtr msg;
     ros::Time ros_arrival;  // the loop's ROS time when it was handled
-    ros::WallTime arrival;
+    ros::SteadyTime arrival;
   };
   /// Change of a counter since the previous diagnostics report.
   struct Window {
@@ -153,7 +153,15 @@ class VehicleDynamicsNode {
   void step();
   /// /diagnostics on wall time while ROS time stands still (use_sim_time with no /clock yet, or a
   /// paused one): diagnostic_updater publishes on ROS time and would say nothing, not even why.
-  void reportOnWallTime(const ros::WallTime& wall);
+  void reportOnWallTime(const ros::SteadyTime& wall);
+  /// Publishes /diagnostics now and schedules the next report ~diagnostic_period after `now`.
+  void reportDiagnostics(const ros::Time& now);
+  /// A valid speed (message, ~reset_to, or re-applied after a jump back) at ROS time `now`.
+  void markSpeedTime(const ros::Time& now);
+  /// Seconds since the last valid speed, for ~speed_timeout.
+  double secondsSinceSpeed(const ros::Time& now) const;
+  /// The loop queue's messages, services and /clock (waiting up to `wait` for the first).
+  void handleMessages(const ros::WallDuration& wait);
   /// ROS time now; with use_sim_time the latest /clock this loop has seen.
   ros::Time now() const;
   /// Runs the steps due up to `now` and publishes.
@@ -265,13 +273,15 @@ class VehicleDynamicsNode {
       last_implausible_patch_, last_other_frame_patch_;
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
-  ros::WallTime recent_speed_arrival_;  // zero: none kept
+  ros::SteadyTime recent_speed_arrival_;  // zero: none kept
   ros::Time last_step_time_;            // ROS time of the previous step() call
   ros::Time last_speed_time_;           // ROS time of the last valid speed message
+  ros::SteadyTime last_speed_steady_;   // the same on the monotonic clock
+  ros::Time next_diagnostics_;          // ROS time of the next /diagnostics report
   bool stopped_by_timeout_ = false;     // ~speed_timeout stopped the vehicle; a speed clears it
   std::chrono::steady_clock::time_point tick_start_;  // before the tick's message callbacks
-  ros::WallTime last_time_change_;                    // wall time at which ROS time last moved
-  ros::WallTime next_wall_report_;                    // reportOnWallTime() publishes from then on
+  ros::SteadyTime last_time_change_;                  // monotonic time at which ROS time last moved
+  ros::SteadyTime next_wall_report_;                  // reportOnWallTime() publishes from then on
   bool cached_ = false;                               // the reduced model is in the cache file
   std::string not_cached_reason_;
   std::int64_t max_steps_in_tick_ = 0;
