@@ -274,11 +274,11 @@ class VehicleDynamicsNode {
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
   ros::SteadyTime recent_speed_arrival_;  // zero: none kept
-  ros::Time last_step_time_;            // ROS time of the previous step() call
-  ros::Time last_speed_time_;           // ROS time of the last valid speed message
-  ros::SteadyTime last_speed_steady_;   // the same on the monotonic clock
-  ros::Time next_diagnostics_;          // ROS time of the next /diagnostics report
-  bool stopped_by_timeout_ = false;     // ~speed_timeout stopped the vehicle; a speed clears it
+  ros::Time last_step_time_;              // ROS time of the previous step() call
+  ros::Time last_speed_time_;             // ROS time of the last valid speed message
+  ros::SteadyTime last_speed_steady_;     // the same on the monotonic clock
+  ros::Time next_diagnostics_;            // ROS time of the next /diagnostics report
+  bool stopped_by_timeout_ = false;       // ~speed_timeout stopped the vehicle; a speed clears it
   std::chrono::steady_clock::time_point tick_start_;  // before the tick's message callbacks
   ros::SteadyTime last_time_change_;                  // monotonic time at which ROS time last moved
   ros::SteadyTime next_wall_report_;                  // reportOnWallTime() publishes from then on
