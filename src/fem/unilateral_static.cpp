@@ -73,6 +73,8 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
   r.normal_force.assign(springs.size(), 0.0);
   std::set<std::vector<bool>> visited{r.released};
   bool single_change = update == ActiveSetUpdate::WorstOnly;
+  // The set of the last solve that succeeded, while the sets change several springs at a time.
+  std::vector<bool> last_solved;
   for (r.iterations = 1; r.iterations <= max_iterations; ++r.iterations) {
     for (std::size_t i = 0; i < springs.size(); ++i)
       r.model.springs[springs[i].spring].stiffness(springs[i].axis) =
@@ -81,13 +83,25 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
     try {
       r.statics = solveStatic(r.system, r.system.steadyLoad(forward_acceleration));
     } catch (const SolverError& e) {
+      // Releasing every tensioned spring at once can overshoot into a set that leaves a part
+      // free where the solution does not (pads of a vehicle whose centre of gravity lies far
+      // aft, each left on one line of soles for one solve): back to the last solved set, and one
+      // spring at a time from there.
+      if (!single_change && !last_solved.empty()) {
+        single_change = true;
+        r.released = last_solved;
+        continue;
+      }
       const auto lifted = std::count(r.released.begin(), r.released.end(), true);
       if (lifted == 0)
         throw;
-      throw SolverError("with the " + std::to_string(lifted) + " unilateral springs in tension " +
-                        "released (" + releasedNames(r.model, springs, r.released) +
-                        "): " + e.what());
+      throw UnilateralFreeMotionError(
+          "with the " + std::to_string(lifted) + " unilateral springs in tension released (" +
+              releasedNames(r.model, springs, r.released) + "): " + e.what(),
+          r.released);
     }
+    if (!single_change)
+      last_solved = r.released;
     const Vector u = r.system.dofs.transformation() * r.statics.displacement;
     // Each spring's force with its own stiffness: what it carries when active, what it would
     // carry (its penetration times k) when released.

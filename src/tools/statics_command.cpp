@@ -54,7 +54,12 @@ void run(const StaticsOptions& opt) {
   vehicle::ContactStatics contact;
   const bool unilateral = opt.contact == "unilateral";
   if (unilateral) {
-    contact = vehicle::computeContactStatics(built, opt.accel);
+    try {
+      contact = vehicle::computeContactStatics(built, opt.accel);
+    } catch (const SolverError& e) {
+      throw SolverError(std::string(e.what()) +
+                        "; --contact bilateral solves the bonded model at this load");
+    }
   } else {
     contact.vehicle = built;
     contact.system = fem::assemble(built.model);

@@ -2,6 +2,9 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
 namespace vehicle {
@@ -23,11 +26,78 @@ std::vector<fem::UnilateralSpring> unilateralContacts(const VehicleModel& vehicl
   return contacts;
 }
 
+namespace {
+
+// The track assemblies that stand on one column of pad soles (a line across the track: the
+// inner and outer soles at one station) in a set of released contacts, e.g.
+// "track_left_0 at x = 2.34 m (front column)"; how many in *count.
+std::string assembliesOnOneColumn(const VehicleModel& vehicle, const std::vector<bool>& released,
+                                  int* count) {
+  const VehicleLayout& layout = vehicle.layout;
+  // Per assembly: bit c set when a sole of column c still presses.
+  std::vector<int> pressed(layout.assemblies.size(), 0);
+  for (std::size_t i = 0; i < layout.road_inputs.size(); ++i) {
+    if (released[i])
+      continue;
+    const RoadInput& in = layout.road_inputs[i];
+    const TrackAssemblyNodes& nodes =
+        layout.assemblies[static_cast<std::size_t>(in.assembly)].nodes;
+    for (std::size_t j = 0; j < nodes.soles.size(); ++j)
+      if (nodes.soles[j] == in.node)
+        pressed[static_cast<std::size_t>(in.assembly)] |= 1 << (j % 3);
+  }
+  const auto node_index = vehicle.model.nodeIndex();
+  const char* const column_names[3] = {"rear", "middle",
+                                       "front"};  // along e1, forward on the ground
+  std::string names;
+  *count = 0;
+  constexpr int kNamesShown = 4;
+  for (std::size_t a = 0; a < pressed.size(); ++a) {
+    const int bits = pressed[a];
+    if (bits != 1 && bits != 2 && bits != 4)
+      continue;
+    if ((*count)++ >= kNamesShown)
+      continue;
+    const AssemblyRecord& rec = layout.assemblies[a];
+    const double x = vehicle.model.nodes[node_index.at(rec.nodes.linkCentre())].position.x();
+    names += std::string(names.empty() ? "" : ", ") + "track_" +
+             (rec.side == 0 ? "left" : "right") + "_" + std::to_string(rec.index) +
+             " at x = " + brief(x) + " m (" +
+             column_names[bits == 1   ? 0
+                          : bits == 2 ? 1
+                                      : 2] +
+             " column)";
+  }
+  if (*count > kNamesShown)
+    names += " and " + std::to_string(*count - kNamesShown) + " more";
+  return names;
+}
+
+}  // namespace
+
 ContactStatics computeContactStatics(const VehicleModel& vehicle, double forward_acceleration) {
   const std::vector<fem::UnilateralSpring> contacts = unilateralContacts(vehicle);
-  fem::UnilateralStaticResult r =
-      fem::solveUnilateralStatic(vehicle.model, contacts, fem::kMaxActiveSetSolves,
-                                 fem::ActiveSetUpdate::AllViolated, forward_acceleration);
+  fem::UnilateralStaticResult r;
+  try {
+    r = fem::solveUnilateralStatic(vehicle.model, contacts, fem::kMaxActiveSetSolves,
+                                   fem::ActiveSetUpdate::AllViolated, forward_acceleration);
+  } catch (const fem::UnilateralFreeMotionError& e) {
+    // A pad left on one line of soles can rock about it: the road wheel touches its link at one
+    // point, which carries no moment, and (un-tracked) no neighbouring link holds it. A static
+    // equilibrium then needs the load's moment about that line to vanish, which it does not: the
+    // pad would tip onto its edge, which this model of soles at three stations cannot represent.
+    int count = 0;
+    const std::string names = assembliesOnOneColumn(vehicle, e.released, &count);
+    if (count == 0)
+      throw;
+    throw SolverError(
+        "no static equilibrium with contacts that cannot pull: " + std::to_string(count) +
+        " track assemblies stand on one column of pad soles (" + names +
+        ") and tip about it: the road wheel touches its link at one point, which "
+        "carries no moment, and soles at three stations cannot represent a pad "
+        "rolling onto its edge (the bonded model, whose contacts also pull, has an "
+        "equilibrium)");
+  }
   ContactStatics c;
   c.vehicle.layout = vehicle.layout;
   c.vehicle.model = std::move(r.model);

@@ -340,6 +340,17 @@ class TvdCliTest(unittest.TestCase):
         for bad in ("nan", "-20", "abc"):
             self.assert_input_error(["statics", "--vehicle", VEHICLE, "--accel", bad],
                                     "--accel", bad)
+        # Beyond the un-tracked pads' tipping limit (doc/vehicle_model.md): one line naming the
+        # pads and the way out, a solver error (status 3), and the bonded model solves it.
+        err = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked", "--accel",
+                       "-9", status=3).stderr
+        self.assertEqual(len(err.strip().splitlines()), 1, err)
+        self.assertIn("14 track assemblies stand on one column of pad soles (track_left_0 at "
+                      "x = 2.34 m (front column)", err)
+        self.assertTrue(err.strip().endswith(
+            "; --contact bilateral solves the bonded model at this load"), err)
+        self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked", "--accel", "-9",
+                 "--contact", "bilateral")
 
     def test_statics_chain_wheel_contacts(self):
         """tvd statics lists the links' contacts with the sprockets, idlers and return rollers:

@@ -13,8 +13,11 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/model.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -37,6 +40,15 @@ struct UnilateralStaticResult {
   int iterations = 0;                ///< solves done
 };
 
+/// The SolverError of solveUnilateralStatic when a set of released springs leaves a free motion:
+/// it carries that set, so that a caller who knows the structure can say what came loose.
+class UnilateralFreeMotionError : public SolverError {
+ public:
+  UnilateralFreeMotionError(const std::string& message, std::vector<bool> released_springs)
+      : SolverError(message), released(std::move(released_springs)) {}
+  std::vector<bool> released;  ///< per UnilateralSpring, in the order given
+};
+
 /// Solves of the active-set iteration before it gives up (the bundled tracked vehicle settles in
 /// 4).
 constexpr int kMaxActiveSetSolves = 100;
@@ -53,7 +65,8 @@ enum class ActiveSetUpdate {
 /// for a spring index out of range, an axis not in 0..2 or a zero sign or normal stiffness,
 /// SolverError when the released springs leave a free motion (the structure would lift off
 /// entirely, or a part would hang on nothing but released springs: a mechanism; the message names
-/// the released springs and the DOFs that move freely) or the active set has not settled after
+/// the released springs and the DOFs that move freely; UnilateralFreeMotionError when springs
+/// were released) or the active set has not settled after
 /// `max_iterations` solves.
 UnilateralStaticResult solveUnilateralStatic(const Model& model,
                                              const std::vector<UnilateralSpring>& springs,
