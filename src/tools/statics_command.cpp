@@ -73,7 +73,25 @@ void run(const StaticsOptions& opt) {
   const vehicle::VehicleModel& model = contact.vehicle;
   const fem::System& system = contact.system;
   const vehicle::StaticSummary& s = contact.summary;
-  const std::vector<std::string> warnings = vehicle::staticWarnings(s, description);
+  std::vector<std::string> warnings = vehicle::staticWarnings(s, description);
+  // A road wheel off the track at rest is a vehicle that does not stand on its wheels (a centre
+  // of gravity far off the wheelbase, a chain stiff enough to carry the hull): said, not only
+  // counted. Under --accel lifting wheels are the expected result.
+  if (unilateral && opt.accel == 0.0) {
+    std::string lifted;
+    int n = 0;
+    for (std::size_t i = 0; i < contact.wheel_lifted.size(); ++i)
+      if (contact.wheel_lifted[i])
+        lifted += std::string(n++ ? ", " : "") + built.layout.wheels[i].name;
+    if (n > 0)
+      warnings.push_back(std::to_string(n) + " of " + std::to_string(contact.wheel_lifted.size()) +
+                         " road wheels lift off the track at rest (" + lifted +
+                         "): the hull rests on the others" +
+                         (variant == vehicle::Variant::Tracked
+                              ? " and the chain; check hull.cog_x and the chain's bending "
+                                "stiffness (track_assembly.link_member_bending_inertia)"
+                              : "; check hull.cog_x"));
+  }
   for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";
   const vehicle::GroundPressure g = vehicle::groundPressure(model, description, s);

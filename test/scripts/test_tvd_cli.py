@@ -351,6 +351,17 @@ class TvdCliTest(unittest.TestCase):
             "; --contact bilateral solves the bonded model at this load"), err)
         self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked", "--accel", "-9",
                  "--contact", "bilateral")
+        # A centre of gravity 2.3 m aft: the front wheels' pads lift at rest (the active set's
+        # all-at-once change first left every pad on one column: retaken one contact at a time),
+        # and wheels off the track at rest are a warning, not only a count.
+        aft = self.vehicle_with("aft.yaml", "cog_x: {value: 0.12", "cog_x: {value: -2.3")
+        d = self.tvd_json("statics", "--vehicle", aft, "--variant", "untracked")
+        self.assertEqual(d["lifted_wheels"], 2)
+        self.assertIn("2 of 14 road wheels lift off the track at rest (road_wheel_left_1, "
+                      "road_wheel_right_1): the hull rests on the others; check hull.cog_x",
+                      d["warnings"])
+        self.assertAlmostEqual(d["ground_reaction_sum_n"] / d["weight_n"], 1.0, delta=1e-9)
+        self.assertEqual(self.tvd_json("statics", "--vehicle", VEHICLE)["warnings"], [])
 
     def test_statics_chain_wheel_contacts(self):
         """tvd statics lists the links' contacts with the sprockets, idlers and return rollers:
