@@ -84,9 +84,10 @@ UnilateralStaticResult solveUnilateralStatic(const Model& model,
       r.statics = solveStatic(r.system, r.system.steadyLoad(forward_acceleration));
     } catch (const SolverError& e) {
       // Releasing every tensioned spring at once can overshoot into a set that leaves a part
-      // free where the solution does not (pads of a vehicle whose centre of gravity lies far
-      // aft, each left on one line of soles for one solve): back to the last solved set, and one
-      // spring at a time from there.
+      // free where the solution does not (an un-tracked vehicle whose centre of gravity lies far
+      // aft: two pads lifted entirely with their wheels' patches, free bodies, for one solve):
+      // back to the last solved set, and one spring at a time from there. (A total lift-off is
+      // then reported at the first set that leaves a free motion on the way.)
       if (!single_change && !last_solved.empty()) {
         single_change = true;
         r.released = last_solved;

@@ -450,7 +450,16 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
 
 void VehicleDynamicsNode::reportDiagnostics(const ros::Time& now) {
   next_diagnostics_ = now + ros::Duration(params_.diagnostic_period);
-  updater_.force_update();
+  publishDiagnostics();
+}
+
+void VehicleDynamicsNode::publishDiagnostics() {
+  // A report must not end the loop, nor a failing step silence the reports: each on its own.
+  try {
+    updater_.force_update();
+  } catch (const std::exception& e) {
+    TVD_ERROR_THROTTLE(kWarnPeriod, "%s: publishing /diagnostics failed: %s", nodeName(), e.what());
+  }
 }
 
 void VehicleDynamicsNode::markSpeedTime(const ros::Time& now) {
@@ -507,7 +516,7 @@ void VehicleDynamicsNode::reportOnWallTime(const ros::SteadyTime& wall) {
   if (wall < next_wall_report_)
     return;
   next_wall_report_ = wall + ros::WallDuration(params_.diagnostic_period);
-  updater_.force_update();
+  publishDiagnostics();
 }
 
 ros::Time VehicleDynamicsNode::now() const {
@@ -577,13 +586,13 @@ void VehicleDynamicsNode::step() {
   }
   try {
     advanceTo(t);
-    // Paced on the node's own time (sim: its /clock; a time that stepped back re-arms it).
-    if (t >= next_diagnostics_ || (next_diagnostics_ - t).toSec() > params_.diagnostic_period)
-      reportDiagnostics(t);
   } catch (const std::exception& e) {
     // Nothing in a step is expected to throw; if it does, the node reports it and goes on.
     TVD_ERROR_THROTTLE(kWarnPeriod, "%s: step failed: %s", nodeName(), e.what());
   }
+  // Paced on the node's own time (sim: its /clock; a time that stepped back re-arms it).
+  if (t >= next_diagnostics_ || (next_diagnostics_ - t).toSec() > params_.diagnostic_period)
+    reportDiagnostics(t);
 }
 
 void VehicleDynamicsNode::advanceTo(const ros::Time& now) {

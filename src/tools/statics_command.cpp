@@ -56,7 +56,8 @@ void run(const StaticsOptions& opt) {
   if (unilateral) {
     try {
       contact = vehicle::computeContactStatics(built, opt.accel);
-    } catch (const SolverError& e) {
+    } catch (const fem::UnilateralFreeMotionError& e) {
+      // Released contacts left a free motion; the bonded model (contacts that also pull) has none.
       throw SolverError(std::string(e.what()) +
                         "; --contact bilateral solves the bonded model at this load");
     }
@@ -84,13 +85,15 @@ void run(const StaticsOptions& opt) {
       if (contact.wheel_lifted[i])
         lifted += std::string(n++ ? ", " : "") + built.layout.wheels[i].name;
     if (n > 0)
-      warnings.push_back(std::to_string(n) + " of " + std::to_string(contact.wheel_lifted.size()) +
-                         " road wheels lift off the track at rest (" + lifted +
-                         "): the hull rests on the others" +
-                         (variant == vehicle::Variant::Tracked
-                              ? " and the chain; check hull.cog_x and the chain's bending "
-                                "stiffness (track_assembly.link_member_bending_inertia)"
-                              : "; check hull.cog_x"));
+      warnings.push_back(
+          std::to_string(n) + " of " + std::to_string(contact.wheel_lifted.size()) +
+          " road wheels lift off " +
+          (variant == vehicle::Variant::Tracked ? "the track" : "their track assemblies") +
+          " at rest (" + lifted + "): the hull rests on the others" +
+          (variant == vehicle::Variant::Tracked
+               ? " and the chain; check hull.cog_x and the chain's bending "
+                 "stiffness (track_assembly.link_member_bending_inertia)"
+               : "; check hull.cog_x"));
   }
   for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";

@@ -28,12 +28,15 @@ std::vector<fem::UnilateralSpring> unilateralContacts(const VehicleModel& vehicl
 
 namespace {
 
-// The track assemblies that stand on one column of pad soles (a line across the track: the
-// inner and outer soles at one station) in a set of released contacts, e.g.
-// "track_left_0 at x = 2.34 m (front column)"; how many in *count.
-std::string assembliesOnOneColumn(const VehicleModel& vehicle, const std::vector<bool>& released,
-                                  int* count) {
+// When every pad on the ground of an un-tracked vehicle stands on one column of soles (a line
+// across the track: the inner and outer soles at one station), or has lifted entirely: those pads
+// named, e.g. "track_left_0 at x = 2.34 m (front column)", and how many in *count; else "".
+std::string padsOnOneColumn(const VehicleModel& vehicle, const std::vector<bool>& released,
+                            int* count) {
+  *count = 0;
   const VehicleLayout& layout = vehicle.layout;
+  if (layout.variant != Variant::Untracked)
+    return "";
   // Per assembly: bit c set when a sole of column c still presses.
   std::vector<int> pressed(layout.assemblies.size(), 0);
   for (std::size_t i = 0; i < layout.road_inputs.size(); ++i) {
@@ -46,30 +49,38 @@ std::string assembliesOnOneColumn(const VehicleModel& vehicle, const std::vector
       if (nodes.soles[j] == in.node)
         pressed[static_cast<std::size_t>(in.assembly)] |= 1 << (j % 3);
   }
+  for (std::size_t a = 0; a < pressed.size(); ++a) {
+    const int bits = pressed[a];
+    if (layout.assemblies[a].on_ground && bits != 0 && bits != 1 && bits != 2 && bits != 4)
+      return "";  // a pad on two columns or more holds the hull
+  }
   const auto node_index = vehicle.model.nodeIndex();
-  const char* const column_names[3] = {"rear", "middle",
-                                       "front"};  // along e1, forward on the ground
+  // Along e1, forward on the ground run.
+  const char* const column_names[3] = {"rear", "middle", "front"};
   std::string names;
-  *count = 0;
+  int lifted = 0;
   constexpr int kNamesShown = 4;
   for (std::size_t a = 0; a < pressed.size(); ++a) {
     const int bits = pressed[a];
-    if (bits != 1 && bits != 2 && bits != 4)
+    if (!layout.assemblies[a].on_ground)
       continue;
+    if (bits == 0) {
+      ++lifted;
+      continue;
+    }
     if ((*count)++ >= kNamesShown)
       continue;
     const AssemblyRecord& rec = layout.assemblies[a];
     const double x = vehicle.model.nodes[node_index.at(rec.nodes.linkCentre())].position.x();
+    const int column = bits == 1 ? 0 : bits == 2 ? 1 : 2;
     names += std::string(names.empty() ? "" : ", ") + "track_" +
              (rec.side == 0 ? "left" : "right") + "_" + std::to_string(rec.index) +
-             " at x = " + brief(x) + " m (" +
-             column_names[bits == 1   ? 0
-                          : bits == 2 ? 1
-                                      : 2] +
-             " column)";
+             " at x = " + brief(x) + " m (" + column_names[column] + " column)";
   }
   if (*count > kNamesShown)
     names += " and " + std::to_string(*count - kNamesShown) + " more";
+  if (lifted > 0)
+    names += "; " + std::to_string(lifted) + " lifted entirely";
   return names;
 }
 
@@ -82,21 +93,24 @@ ContactStatics computeContactStatics(const VehicleModel& vehicle, double forward
     r = fem::solveUnilateralStatic(vehicle.model, contacts, fem::kMaxActiveSetSolves,
                                    fem::ActiveSetUpdate::AllViolated, forward_acceleration);
   } catch (const fem::UnilateralFreeMotionError& e) {
-    // A pad left on one line of soles can rock about it: the road wheel touches its link at one
-    // point, which carries no moment, and (un-tracked) no neighbouring link holds it. A static
-    // equilibrium then needs the load's moment about that line to vanish, which it does not: the
-    // pad would tip onto its edge, which this model of soles at three stations cannot represent.
+    // Un-tracked, a pad left on one column of soles can rock about it: the road wheel touches its
+    // link at one point, which carries no moment, and no neighbouring link holds it. While some
+    // pad keeps two columns it holds the hull; once none does, the hull can move with every pad
+    // rocking about its column (one free motion: a dense eigen-decomposition of K shows one zero
+    // eigenvalue, every assembly turning alike). The load then has no equilibrium: the pads
+    // would roll onto their edges, which soles at three stations cannot represent.
     int count = 0;
-    const std::string names = assembliesOnOneColumn(vehicle, e.released, &count);
+    const std::string names = padsOnOneColumn(vehicle, e.released, &count);
     if (count == 0)
       throw;
-    throw SolverError(
-        "no static equilibrium with contacts that cannot pull: " + std::to_string(count) +
-        " track assemblies stand on one column of pad soles (" + names +
-        ") and tip about it: the road wheel touches its link at one point, which "
-        "carries no moment, and soles at three stations cannot represent a pad "
-        "rolling onto its edge (the bonded model, whose contacts also pull, has an "
-        "equilibrium)");
+    throw fem::UnilateralFreeMotionError(
+        "no static equilibrium with contacts that cannot pull: every pad on the road has lifted "
+        "but for one column of soles (" +
+            std::to_string(count) + " track assemblies: " + names +
+            "), and together they let the hull move, each pad rocking about its column: a road "
+            "wheel touches its link at one point, which carries no moment, and soles at three "
+            "stations cannot represent a pad rolling onto its edge",
+        e.released);
   }
   ContactStatics c;
   c.vehicle.layout = vehicle.layout;

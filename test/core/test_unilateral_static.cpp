@@ -320,10 +320,11 @@ TEST(ContactStatics, UntrackedVehicleIsAlreadyInCompression) {
 }
 
 TEST(ContactStatics, UntrackedPadsLeftOnOneColumnOfSolesAreNamed) {
-  // Hard braking (or accelerating) tips every un-tracked pad onto its front (rear) column of
-  // soles, about which it could rock freely: the wheel-link contact carries no moment. No
-  // equilibrium with contacts that cannot pull; the message names the pads and the column
-  // instead of the mechanism's node numbers. Just below the limit the pads keep two columns.
+  // Hard braking (or accelerating) leaves every un-tracked pad on its front (rear) column of
+  // soles, and together they let the hull move, each pad rocking about its column (the
+  // wheel-link contact carries no moment). No equilibrium with contacts that cannot pull; the
+  // message names the pads and the column instead of the free motion's node numbers. Just below
+  // the limit some pads keep two columns.
   const veh::VehicleModel vehicle =
       veh::buildVehicleModel(paperDescription(), veh::Variant::Untracked);
   for (const auto& [a, column] : {std::pair<double, std::string>{-9.0, "front"}, {9.0, "rear"}}) {
@@ -333,8 +334,9 @@ TEST(ContactStatics, UntrackedPadsLeftOnOneColumnOfSolesAreNamed) {
       ADD_FAILURE() << "solved, but every pad stands on one column of soles";
     } catch (const tvd::SolverError& e) {
       EXPECT_NE(std::string(e.what()).find(
-                    "no static equilibrium with contacts that cannot pull: 14 track assemblies "
-                    "stand on one column of pad soles (track_left_0 at x = 2.34 m (" +
+                    "no static equilibrium with contacts that cannot pull: every pad on the road "
+                    "has lifted but for one column of soles (14 track assemblies: track_left_0 "
+                    "at x = 2.34 m (" +
                     column + " column), "),
                 std::string::npos)
           << e.what();
@@ -345,10 +347,10 @@ TEST(ContactStatics, UntrackedPadsLeftOnOneColumnOfSolesAreNamed) {
 }
 
 TEST(ContactStatics, AChangeThatLeavesAPartFreeIsRetakenOneContactAtATime) {
-  // Centre of gravity 2.3 m aft: changing every violated contact at once leaves each pad on one
-  // column of soles for a solve (singular), though the solution keeps two. From the last solved
-  // set one contact at a time finds it: the same set as the worst-only rule from the start,
-  // with no pressed sole pulling and no released one below the road.
+  // Centre of gravity 2.3 m aft: changing every violated contact at once lifts two pads entirely
+  // with their wheels' patches (free bodies) for a solve. From the last solved set one contact
+  // at a time finds the solution: the same set as the worst-only rule from the start, no
+  // pressed contact pulling, reactions equal to the weight.
   veh::VehicleDescription aft = paperDescription();
   aft.hull.cog_x = -2.3;
   const veh::VehicleModel vehicle = veh::buildVehicleModel(aft, veh::Variant::Untracked);

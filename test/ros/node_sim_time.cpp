@@ -90,8 +90,8 @@ class NodeSimTime : public ::testing::Test {
   std::size_t zero_stamps_ = 0;  // samples stamped 0.0 ("no time" in ROS)
 };
 
-// Before the first /clock, ROS time stands at 0 and diagnostic_updater (on ROS time) would say
-// nothing; the node reports why on wall time. (Runs first: no /clock has been published yet.)
+// Before the first /clock, ROS time stands at 0 and reports paced on ROS time would say nothing;
+// the node reports why on wall time. (Runs first: no /clock has been published yet.)
 TEST_F(NodeSimTime, DiagnosticsSayWaitingBeforeTheClock) {
   // (diagnostic_updater's own "Node starting up" comes first, while the model loads.)
   ASSERT_TRUE(test::spinUntil(

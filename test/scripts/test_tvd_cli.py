@@ -345,19 +345,20 @@ class TvdCliTest(unittest.TestCase):
         err = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked", "--accel",
                        "-9", status=3).stderr
         self.assertEqual(len(err.strip().splitlines()), 1, err)
-        self.assertIn("14 track assemblies stand on one column of pad soles (track_left_0 at "
-                      "x = 2.34 m (front column)", err)
+        self.assertIn("every pad on the road has lifted but for one column of soles (14 track "
+                      "assemblies: track_left_0 at x = 2.34 m (front column)", err)
         self.assertTrue(err.strip().endswith(
             "; --contact bilateral solves the bonded model at this load"), err)
         self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked", "--accel", "-9",
                  "--contact", "bilateral")
-        # A centre of gravity 2.3 m aft: the front wheels' pads lift at rest (the active set's
-        # all-at-once change first left every pad on one column: retaken one contact at a time),
-        # and wheels off the track at rest are a warning, not only a count.
+        # A centre of gravity 2.3 m aft: the front wheels lift at rest (the active set's
+        # all-at-once change first left two pads free: retaken one contact at a time), and wheels
+        # lifted at rest are a warning, not only a count.
         aft = self.vehicle_with("aft.yaml", "cog_x: {value: 0.12", "cog_x: {value: -2.3")
         d = self.tvd_json("statics", "--vehicle", aft, "--variant", "untracked")
         self.assertEqual(d["lifted_wheels"], 2)
-        self.assertIn("2 of 14 road wheels lift off the track at rest (road_wheel_left_1, "
+        self.assertIn("2 of 14 road wheels lift off their track assemblies at rest "
+                      "(road_wheel_left_1, "
                       "road_wheel_right_1): the hull rests on the others; check hull.cog_x",
                       d["warnings"])
         self.assertAlmostEqual(d["ground_reaction_sum_n"] / d["weight_n"], 1.0, delta=1e-9)

@@ -55,8 +55,10 @@ constexpr int kMaxActiveSetSolves = 100;
 
 /// How the active set changes between solves.
 enum class ActiveSetUpdate {
-  AllViolated,  ///< every violated spring at once; the worst one at a time once a set repeats
-  WorstOnly,    ///< the worst violated spring only (slower; what the first falls back to)
+  /// every violated spring at once; the worst one at a time once a set repeats, or from the last
+  /// solved set once a change leaves a free motion
+  AllViolated,
+  WorstOnly,  ///< the worst violated spring only (slower; what the first falls back to)
 };
 
 /// Solves the gravity load case of `model` with the listed springs unilateral, plus the travel

@@ -151,11 +151,13 @@ class VehicleDynamicsNode {
   void tick();
   /// Steps to ROS time now, publishes, diagnoses.
   void step();
-  /// /diagnostics on wall time while ROS time stands still (use_sim_time with no /clock yet, or a
-  /// paused one): diagnostic_updater publishes on ROS time and would say nothing, not even why.
+  /// /diagnostics on monotonic wall time while ROS time stands still (use_sim_time with no /clock
+  /// yet, or a paused one): the reports paced on ROS time would say nothing, not even why.
   void reportOnWallTime(const ros::SteadyTime& wall);
   /// Publishes /diagnostics now and schedules the next report ~diagnostic_period after `now`.
   void reportDiagnostics(const ros::Time& now);
+  /// updater_.force_update(), an exception logged (throttled) instead of passed on.
+  void publishDiagnostics();
   /// A valid speed (message, ~reset_to, or re-applied after a jump back) at ROS time `now`.
   void markSpeedTime(const ros::Time& now);
   /// Seconds since the last valid speed, for ~speed_timeout.
