@@ -467,11 +467,11 @@ void VehicleDynamicsNode::markSpeedTime(const ros::Time& now) {
   last_speed_steady_ = ros::SteadyTime::now();
 }
 
-double VehicleDynamicsNode::secondsSinceSpeed(const ros::Time& now) const {
+double VehicleDynamicsNode::secondsSinceSpeed(const ros::Time& now,
+                                              const ros::SteadyTime& steady) const {
   // On real time ROS time is the system clock, which an NTP correction steps (back: the vehicle
   // would drive on for the step's length; forward: stop at once): the monotonic clock instead.
-  return use_sim_time_ ? (now - last_speed_time_).toSec()
-                       : (ros::SteadyTime::now() - last_speed_steady_).toSec();
+  return use_sim_time_ ? (now - last_speed_time_).toSec() : (steady - last_speed_steady_).toSec();
 }
 
 void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
@@ -573,10 +573,11 @@ void VehicleDynamicsNode::step() {
   // A driver that stopped publishing must not leave the vehicle driving on: it stops where it is
   // and the next speed message moves it again. With a speed slew it brakes to a stop at
   // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
+  const double since_speed = params_.speed_timeout > 0.0 ? secondsSinceSpeed(t, wall) : 0.0;
   if (params_.speed_timeout > 0.0 && vehicle_->commandedSpeed() > 0.0 &&
-      secondsSinceSpeed(t) > params_.speed_timeout) {
+      since_speed > params_.speed_timeout) {
     ROS_WARN("%s: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m", nodeName(),
-             secondsSinceSpeed(t), params_.speed_timeout,
+             since_speed, params_.speed_timeout,
              vehicle_->slews() ? "braking to a stop at ~max_deceleration from station"
                                : "stopping the vehicle at station",
              vehicle_->station());

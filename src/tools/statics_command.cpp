@@ -35,9 +35,7 @@ struct StaticsOptions {
   std::string out_file;
 };
 
-const char* sideName(int side) {
-  return side == 0 ? "left" : "right";
-}
+using vehicle::sideName;
 
 /// `value` as printed with `decimals` fixed decimals, without the sign of a round-off residue
 /// ("-0.0000" for a symmetric vehicle's roll of -1e-13 deg).
@@ -202,8 +200,7 @@ void run(const StaticsOptions& opt) {
     json.endArray().key("track_assemblies").beginArray();
     for (const vehicle::AssemblyGroundLoad& a : g.assemblies)
       json.beginObject()
-          .field("name",
-                 std::string("track_") + sideName(a.side) + "_" + std::to_string(a.assembly))
+          .field("name", vehicle::assemblyName(a.side, a.assembly))
           .field("side", sideName(a.side))
           .field("assembly", a.assembly)
           .field("x_m", a.x)

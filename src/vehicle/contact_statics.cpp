@@ -73,8 +73,7 @@ std::string padsOnOneColumn(const VehicleModel& vehicle, const std::vector<bool>
     const AssemblyRecord& rec = layout.assemblies[a];
     const double x = vehicle.model.nodes[node_index.at(rec.nodes.linkCentre())].position.x();
     const int column = bits == 1 ? 0 : bits == 2 ? 1 : 2;
-    names += std::string(names.empty() ? "" : ", ") + "track_" +
-             (rec.side == 0 ? "left" : "right") + "_" + std::to_string(rec.index) +
+    names += std::string(names.empty() ? "" : ", ") + assemblyName(rec.side, rec.index) +
              " at x = " + brief(x) + " m (" + column_names[column] + " column)";
   }
   if (*count > kNamesShown)

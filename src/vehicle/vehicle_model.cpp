@@ -11,14 +11,19 @@
 namespace tracked_vehicle_dynamics {
 namespace vehicle {
 
+const char* sideName(int side) {
+  return side == 0 ? "left" : "right";
+}
+
+std::string assemblyName(int side, int index) {
+  return std::string("track_") + sideName(side) + "_" + std::to_string(index);
+}
+
 namespace {
 
 /// Un-tracked assemblies sit centred under their wheel, apart from the chain's: own id block.
 constexpr NodeId kUntrackedAssemblyBase = 500000;
 
-const char* sideName(int side) {
-  return side == 0 ? "left" : "right";
-}
 double sideY(const VehicleDescription& d, int side) {
   return (side == 0 ? 0.5 : -0.5) * d.running_gear.track_centre_distance;
 }
@@ -245,7 +250,7 @@ class Builder {
     rec.index = k;
     rec.on_ground = on_ground;
     rec.nodes = addTrackAssembly(model(), d_.track_assembly, layout().pad_springs, frame, base,
-                                 std::string("track_") + sideName(side) + "_" + std::to_string(k));
+                                 assemblyName(side, k));
     const int index = static_cast<int>(layout().assemblies.size());
     if (on_ground) {
       const double kg = d_.ties.ground_stiffness;

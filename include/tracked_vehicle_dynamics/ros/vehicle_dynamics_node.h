@@ -160,8 +160,9 @@ class VehicleDynamicsNode {
   void publishDiagnostics();
   /// A valid speed (message, ~reset_to, or re-applied after a jump back) at ROS time `now`.
   void markSpeedTime(const ros::Time& now);
-  /// Seconds since the last valid speed, for ~speed_timeout.
-  double secondsSinceSpeed(const ros::Time& now) const;
+  /// Seconds since the last valid speed, for ~speed_timeout, at ROS time `now` and monotonic
+  /// time `steady`.
+  double secondsSinceSpeed(const ros::Time& now, const ros::SteadyTime& steady) const;
   /// The loop queue's messages, services and /clock (waiting up to `wait` for the first).
   void handleMessages(const ros::WallDuration& wait);
   /// ROS time now; with use_sim_time the latest /clock this loop has seen.

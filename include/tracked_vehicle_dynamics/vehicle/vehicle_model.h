@@ -45,6 +45,12 @@ const char* variantName(Variant variant);
 /// Parses "untracked" / "tracked"; throws InputError naming the text otherwise.
 Variant parseVariant(const std::string& text);
 
+/// "left" (side 0) / "right" (side 1).
+const char* sideName(int side);
+/// The name of a side's track assembly `index` (AssemblyRecord::index, its place in the chain
+/// loop), e.g. "track_left_0"; the names of its springs start with it.
+std::string assemblyName(int side, int index);
+
 constexpr NodeId kHullNode = 1;
 
 /// One road-wheel station.
