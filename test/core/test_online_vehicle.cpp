@@ -350,6 +350,42 @@ TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
   EXPECT_LT((vehicle.hullDisplacement() - rest).cwiseAbs().maxCoeff(), kAtRest);
 }
 
+// ~lateral_offset: every contact reads the terrain at y + offset. On a plane sloping across the
+// path, h = a y, an offset d raises every contact by a d, so the vehicle stands and drives a d
+// higher, rigidly: every wheel and the hull's heave up by a d, its attitude and station unchanged
+// (the model's ground inputs moved alike are a rigid translation: K T = K_u 1).
+TEST(OnlineVehicle, LateralOffsetReadsTheTerrainThatFarToTheLeft) {
+  const reduction::ReducedModel model = test::toyModel();
+  const double a = 0.1, d = 0.4;  // [m/m], [m]
+  TerrainPatch plane = flatPatch(-5.0, 10.0, 0.05, 3.0);
+  plane.heights.row(0).setConstant(-3.0 * a);
+  plane.heights.row(1).setConstant(3.0 * a);
+  OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  OnlineVehicle centred(model, test::toyGeometry(), o);
+  o.lateral_offset = d;
+  OnlineVehicle offset(model, test::toyGeometry(), o);
+  for (OnlineVehicle* v : {&centred, &offset}) {
+    v->addTerrain(plane);
+    ASSERT_EQ(v->resetTo(0.0, 0.0, ResetTerrain::Keep), 0);
+    v->setSpeed(5.0);
+  }
+  Vector6 rise = Vector6::Zero();
+  rise(2) = a * d;
+  for (int k = 0; k <= 500; ++k) {
+    ASSERT_EQ(offset.station(), centred.station());
+    EXPECT_LT((offset.hullDisplacement() - centred.hullDisplacement() - rise).cwiseAbs().maxCoeff(),
+              1e-12)
+        << "step " << k;
+    ASSERT_EQ(offset.wheels().size(), centred.wheels().size());
+    for (std::size_t i = 0; i < centred.wheels().size(); ++i)
+      EXPECT_NEAR(offset.wheels()[i].displacement - centred.wheels()[i].displacement, a * d, 1e-12)
+          << "wheel " << i << ", step " << k;
+    centred.step();
+    offset.step();
+  }
+  EXPECT_GT(offset.station(), 2.0);
+}
+
 // resetTo(s, v > 0, Keep): the first step interpolates from w = [u; u'] with u' = v dh/dx, as a
 // step at s samples it, and the state is the equilibrium on u alone (q0' = 0). The front contact
 // (x = +1) at 2.525 m is mid-cell on the bump's rising flank: bilinear, u = the mean of the

@@ -1116,6 +1116,12 @@ TEST(TerrainBuffer, RejectsBadPatches) {
                    {"3 lines", "2 lateral positions"});
   h(1, 4) = std::nan("");
   expectInputError([&] { buffer.addPatch(3.0, 0.1, y, h); }, {"line 1, sample 4 is not finite"});
+  // Finite but beyond +-10 km (a height in millimetres read as metres, or a sentinel such as
+  // -3.4e38 for "no data"): refused through the grid's own check, naming the sample.
+  h(1, 4) = -3.4e38;
+  expectInputError([&] { buffer.addPatch(3.0, 0.1, y, h); },
+                   {"patch at x = 3 m", "lateral line 1", "station 4 (x = 3.4 m)", "+-10000 m"});
+  h(1, 4) = 0.0;
   Vector reversed(2);
   reversed << 1.0, -1.0;
   expectInputError([&] { buffer.addPatch(3.0, 0.1, reversed, Matrix::Zero(2, 5)); },

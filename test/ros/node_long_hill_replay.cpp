@@ -417,6 +417,13 @@ TEST_F(LongHillReplay, HeavePitchAndWheelsMatchTheOfflineSimulator) {
   EXPECT_TRUE(ref.pad_beyond_range[static_cast<std::size_t>(node_pad_step)])
       << "node reports a whole pad pulling at step " << node_pad_step;
   EXPECT_LE(node_pad_first - offline_pad_first, 0.5);
+  // What a diagnostic aggregator (or an operator's rqt_robot_monitor) sees: the report after
+  // that check is a WARN saying the model left its range.
+  EXPECT_EQ(diagnostics_.highestLevel(": ground contact"), 1) << diagnostics_.describe();
+  EXPECT_EQ(
+      diagnostics_.highestMessage(": ground contact").rfind("beyond the linear model's range", 0),
+      0u)
+      << diagnostics_.highestMessage(": ground contact");
 }
 
 }  // namespace

@@ -166,6 +166,18 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   ASSERT_TRUE(advanceTo(t));
   EXPECT_NEAR(last_.station - station_before, speed * catch_up_limit, kStation);
 
+  // A clock that steps back by less than a step (a jittery source) is the sample already taken:
+  // no reset (the count of jumps back stays 1 below), nothing published, the next step goes on
+  // from the station.
+  const double station_held = last_.station;
+  const std::size_t before_jitter = messages_;
+  setClock(t - ros::Duration(0.0005));
+  test::spinFor(0.1);
+  EXPECT_EQ(messages_, before_jitter);
+  t += ros::Duration(0.001);
+  ASSERT_TRUE(advanceTo(t));
+  EXPECT_NEAR(last_.station - station_held, speed * 0.001, kStation);
+
   // Time going backwards (a bag loop): reset to station 0 at the new time (the node restarts on
   // the /clock message itself). Just before it, the next loop's first patch arrives, stamped at
   // the new time and in absolute altitudes (250 m): re-applied after the restart, it is judged
@@ -225,6 +237,12 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
       },
       5.0))
       << diagnostics_.describe();
+  // That report (on wall time: the clock stands still here) has the loop's step count and
+  // simulated time restarted with the vehicle (the restart after the jump back was the first
+  // reset).
+  EXPECT_EQ(diagnostics_.value(": loop", "resets (total)"), 2.0) << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.value(": loop", "steps"), 0.0);
+  EXPECT_EQ(diagnostics_.value(": loop", "simulated time [s]"), 0.0);
   // The reset state goes out with the next sample, at a new stamp; nothing is published at the
   // stamp already used.
   EXPECT_EQ(messages_, before_reset);

@@ -97,6 +97,16 @@ class DiagnosticsCache {
     const auto* s = find(suffix);
     return s == nullptr ? std::string() : s->message;
   }
+  /// The highest level any status whose name ends with `suffix` has reported (-1: none), and
+  /// the summary it first reported it with: a WARN between two reads is not missed.
+  int highestLevel(const std::string& suffix) const {
+    const auto* s = find(suffix, highest_);
+    return s == nullptr ? -1 : s->level;
+  }
+  std::string highestMessage(const std::string& suffix) const {
+    const auto* s = find(suffix, highest_);
+    return s == nullptr ? std::string() : s->message;
+  }
   std::size_t arrays() const { return arrays_; }
   std::string describe() const {
     std::string out;
@@ -111,11 +121,20 @@ class DiagnosticsCache {
  private:
   void onArray(const diagnostic_msgs::DiagnosticArray::ConstPtr& msg) {
     ++arrays_;
-    for (const auto& s : msg->status)
+    for (const auto& s : msg->status) {
       latest_[s.name] = s;
+      const auto highest = highest_.find(s.name);
+      if (highest == highest_.end() || s.level > highest->second.level)
+        highest_[s.name] = s;
+    }
   }
+  using Statuses = std::map<std::string, diagnostic_msgs::DiagnosticStatus>;
   const diagnostic_msgs::DiagnosticStatus* find(const std::string& suffix) const {
-    for (const auto& [name, s] : latest_) {
+    return find(suffix, latest_);
+  }
+  static const diagnostic_msgs::DiagnosticStatus* find(const std::string& suffix,
+                                                       const Statuses& statuses) {
+    for (const auto& [name, s] : statuses) {
       if (name.size() >= suffix.size() &&
           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
         return &s;
@@ -125,7 +144,7 @@ class DiagnosticsCache {
   }
 
   ros::Subscriber sub_;
-  std::map<std::string, diagnostic_msgs::DiagnosticStatus> latest_;
+  Statuses latest_, highest_;
   std::size_t arrays_ = 0;
 };
 

@@ -298,6 +298,27 @@ class LaunchFilesTest(unittest.TestCase):
             os.killpg(master.pid, 15)
             master.wait(timeout=30)
 
+    def test_replay_ends_when_the_node_dies_at_start_up(self):
+        # The node is required: a FATAL parameter ends the whole launch (player and recorder
+        # included), at once, instead of a player waiting on a node that never comes.
+        with socket.socket() as s:
+            s.bind(("127.0.0.1", 0))
+            port = s.getsockname()[1]
+        env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
+                   ROS_HOME=os.path.join(self.work, "ros_home_required"))
+        start = time.monotonic()
+        result = subprocess.run([ENV_SH, "roslaunch", "-p", str(port), PACKAGE, "replay_track.launch",
+                                 "comfort_point:=nowhere", "record:=false",
+                                 "bag_dir:=" + os.path.join(self.work, "required_bags")],
+                                env=env, capture_output=True, text=True, timeout=120,
+                                start_new_session=True)
+        elapsed = time.monotonic() - start
+        output = result.stdout + result.stderr
+        self.assertIn("unknown point 'nowhere'", output)
+        self.assertIn("REQUIRED process [vehicle_dynamics", output)
+        self.assertIn("[track_player", output)  # started, then ended with the launch
+        self.assertLess(elapsed, 60.0, output)
+
     def test_tvd_make_bag_command_line(self):
         # Errors: status 2 and one line naming the option; --peak-speed: the run's fastest speed
         # in m/s, nothing written.

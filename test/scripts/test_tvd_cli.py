@@ -1073,6 +1073,18 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(d["rms_height_m"] / d["band_rms_height_m"], 1.0, places=9)
             self.assertEqual(d["stations"], round(length / 0.05) + 1)
             self.assertEqual(d["end_station_m"], length)
+            if road_class == "C":
+                # "The same seed gives the same road on every machine": the phases come from
+                # std::mt19937_64 (its sequence fixed by the C++ standard) through the top 53
+                # bits, not from a library's distribution. Heights of seed 7 as first generated
+                # (2026-12-05); only libm's cos may move their last digits.
+                with open(road) as f:  # a comment line, the header, then x and the heights
+                    road_rows = np.array([line.split(",") for line in f.read().splitlines()
+                                          if line and not line.startswith(("#", "x"))], dtype=float)
+                for x, height in ((0.0, 0.028042333836760594), (20.0, 0.0009948818003772976),
+                                  (60.0, -0.015191744029391458)):
+                    row = road_rows[np.argmin(np.abs(road_rows[:, 0] - x))]
+                    np.testing.assert_allclose(row[1:], height, rtol=1e-9, err_msg=f"x = {x} m")
             out = self.path(f"ride_{road_class}.csv")
             runs[road_class] = (self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant",
                                               "untracked", "--track", road, "--speed-kmh", "40",
@@ -1479,7 +1491,16 @@ class TvdCliTest(unittest.TestCase):
     def test_mat_outputs_hold_the_csv_columns(self):
         """--out FILE.mat (simulate, frf): one n x 1 variable per CSV column, the same values
         (to the CSV's digits), and the run's vehicle/variant/model as strings."""
-        for command, extra, digits in (("simulate", ("--track", "separated_waves", "--speed-kmh", "20"), 9),
+        # The run's settings as variables beside the columns (non-default ones where they have
+        # a default: a setting that is not passed through would read as the default).
+        settings = {
+            "simulate": {"track": "separated_waves", "track_argument": "separated_waves",
+                         "model": "reduced", "method": "modal", "dt_s": 0.002,
+                         "max_mode_hz": 250.0, "lateral_offset_m": 0.5, "speed_kmh": 20.0},
+            "frf": {"model": "reduced", "excitation": "travelled", "speed_kmh": 30.0},
+        }
+        for command, extra, digits in (("simulate", ("--track", "separated_waves", "--speed-kmh", "20",
+                                                     "--dt", "0.002", "--lateral-offset", "0.5"), 9),
                                        ("frf", ("--speed-kmh", "30"), 10)):
             args = (command, "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
                     self.cache, *extra)
@@ -1491,6 +1512,12 @@ class TvdCliTest(unittest.TestCase):
             self.assertEqual(str(m["variant"][0]), "untracked")
             self.assertEqual(str(m["vehicle"][0]), self.vehicle_name)  # as the JSON's
             self.assertEqual(str(m["vehicle_file"][0]), VEHICLE)
+            for name, value in settings[command].items():
+                if isinstance(value, str):
+                    self.assertEqual(str(m[name][0]), value, name)
+                else:
+                    self.assertEqual(m[name].shape, (1, 1), name)
+                    self.assertEqual(float(m[name][0, 0]), value, name)
             for i, name in enumerate(header):
                 self.assertEqual(m[name].shape, (len(rows), 1), name)
                 np.testing.assert_allclose(m[name][:, 0], rows[:, i], rtol=10.0 ** (1 - digits),
@@ -1954,6 +1981,16 @@ class TvdCliTest(unittest.TestCase):
                                 "is the --reduced file")
         with open(mat, "rb") as f:
             self.assertEqual(f.read(), model)
+        # The speed profile of simulate: a CSV like the output, the easiest one to overwrite.
+        profile = self.path("own_profile.csv")
+        with open(profile, "w") as f:
+            f.write("t,v\n0,5\n10,5\n")
+        self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--track", "long_hill", "--speed-profile", profile,
+                                 "--out", profile],
+                                f"--out {profile} is the --speed-profile file", "write elsewhere")
+        with open(profile) as f:
+            self.assertEqual(f.read(), "t,v\n0,5\n10,5\n")
 
     def test_random_road_and_reduction_errors_name_the_options(self):
         """tvd terrain --iso8608 names --taper and --length, --max-frequency and --spacing (its
