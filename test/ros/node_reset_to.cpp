@@ -8,6 +8,8 @@
 // keep_terrain false restarts on flat ground.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <tf2_msgs/TFMessage.h>
@@ -202,6 +204,31 @@ TEST_F(NodeResetTo, RestartsInEquilibriumOnTheTerrainAtTheStation) {
               0.0, tolerance);
   for (const auto& w : last_.wheels)
     EXPECT_NEAR(w.displacement, 0.0, tolerance) << w.name;
+
+  // ~reset_to at a speed counts as a speed message for ~speed_timeout: the vehicle drives off
+  // with it for the timeout (no speed message follows), then stops where it is.
+  const double timeout = test::requiredParam<double>(private_nh_, "speed_timeout");
+  const double v = 3.0;  // [m/s]
+  ResetVehicle moving = request(station + 20.0, v, false);
+  ASSERT_TRUE(ros::service::call(service, moving));
+  EXPECT_TRUE(moving.response.success) << moving.response.message;
+  // In bursts of 50 ms, within ~catch_up_limit: every step is taken.
+  for (int k = 0; k < static_cast<int>(std::lround((timeout - 0.1) / 0.05)); ++k)
+    ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.05)));
+  EXPECT_EQ(last_.speed, v);
+  EXPECT_NEAR(last_.station, station + 20.0 + v * (timeout - 0.1), 1e-9);
+  for (int k = 0; k < 4; ++k)  // past the timeout
+    ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.05)));
+  EXPECT_EQ(last_.speed, 0.0);
+  const double stopped_at = last_.station;
+  EXPECT_GE(stopped_at, station + 20.0 + v * (timeout - 0.1));
+  EXPECT_LE(stopped_at, station + 20.0 + v * (timeout + 0.001) + 1e-9);
+  ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.5)));
+  EXPECT_EQ(last_.station, stopped_at);
+  std::printf(
+      "[ measured ] ~reset_to at %.1f m/s: stopped at station %.4f m, %.3f s after the "
+      "call (~speed_timeout %.1f s)\n",
+      v, stopped_at, (stopped_at - station - 20.0) / v, timeout);
 
   EXPECT_EQ(repeated_stamps_, 0u) << "a stamp was published twice in a row";
 }

@@ -191,6 +191,21 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   toMsg(altitudes, &next_loop);
   next_loop.header.frame_id = "odom";
   next_loop.header.stamp = t0;
+  // Two patches that must not be re-applied: one unstamped (it cannot be told apart) and one
+  // stamped at the old time (the old pass's last). Both lie under the restarted vehicle, 0.2 m
+  // high: re-applied, they would lift its wheels (checked at 0 below).
+  TerrainPatch under;
+  under.start_station = -5.0;
+  under.spacing = 0.05;
+  under.lateral = Vector::LinSpaced(11, -2.5, 2.5);
+  under.heights = Matrix::Constant(11, 201, 0.2);
+  TerrainProfile unstamped, old_pass;
+  toMsg(under, &unstamped);
+  unstamped.header.frame_id = "odom";
+  old_pass = unstamped;
+  old_pass.header.stamp = t;
+  terrain_pub_.publish(unstamped);
+  terrain_pub_.publish(old_pass);
   terrain_pub_.publish(next_loop);
   test::spinFor(0.05);  // within the node's 0.25 s rewind window
   t = t0;
@@ -212,6 +227,8 @@ TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {
   EXPECT_NE(diagnostics_.text(": terrain", "step off the ground since the start or reset")
                 .find("re-applied after the time jump back"),
             std::string::npos);
+  EXPECT_EQ(diagnostics_.value(": loop", "patches re-applied after a jump back (total)"), 1.0)
+      << diagnostics_.describe();
 
   // And it runs on from there (speed is zero after the reset until a new speed message).
   speed_pub_.publish(v);
