@@ -130,6 +130,32 @@ class TvdCliTest(unittest.TestCase):
     def tvd_json(self, *args):
         return json.loads(self.tvd(*args, "--json").stdout)
 
+    def test_default_cache_directory_follows_xdg(self):
+        """Without --cache-dir the reduced model is cached under $XDG_CACHE_HOME/tracked_vehicle_dynamics,
+        else ~/.cache/tracked_vehicle_dynamics (README), one <variant>_<hash>.mat; the second run
+        reads it instead of reducing again."""
+        args = ("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--max-hz", "5", "--json")
+        for name, env in (("xdg", {"XDG_CACHE_HOME": self.path("xdg_cache")}),
+                          ("home", {"HOME": self.path("home")})):
+            environment = {k: v for k, v in os.environ.items() if k != "XDG_CACHE_HOME"}
+            environment.update(env)
+            expected = (os.path.join(env["XDG_CACHE_HOME"], "tracked_vehicle_dynamics")
+                        if "XDG_CACHE_HOME" in env
+                        else os.path.join(env["HOME"], ".cache", "tracked_vehicle_dynamics"))
+            runs = []
+            for _ in range(2):
+                result = subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240,
+                                        env=environment)
+                self.assertEqual(result.returncode, 0, result.stderr)
+                runs.append(json.loads(result.stdout))
+            files = os.listdir(expected)
+            self.assertEqual(len(files), 1, (name, files))
+            self.assertRegex(files[0], r"^untracked_[0-9a-f]+\.mat$", name)
+            self.assertEqual([r["reduction"]["source"] for r in runs], ["computed", "cache"], name)
+            for r in runs:
+                self.assertEqual(r["reduction"]["file"], os.path.join(expected, files[0]), name)
+            self.assertEqual(runs[0]["outputs"], runs[1]["outputs"], name)
+
     def test_modes_json_and_statics(self):
         count = 12
         d = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "untracked",
@@ -2664,6 +2690,23 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
                                  "half_round:0.1", "--speeds", "5:7:3"],
                                 "--speeds '5:7:3'", "does not land on LAST 7")
+
+    def test_documented_ranges_are_refused_at_their_bounds(self):
+        """The ranges the help texts give, refused just outside and named: simulate's speed in
+        (0, 200] km/h (0 would never leave the start), frf's in [0, 200] (0 is synchronous),
+        mac's count in 1 .. 200, ride's step in [1e-4, 2e-3] s."""
+        sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "long_hill"]
+        for value in ("0", "201"):
+            self.assert_input_error(sim + ["--speed-kmh", value],
+                                    "simulate: --speed-kmh must be in (0, 200], got " + value)
+        self.assert_input_error(["frf", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--speed-kmh", "201"],
+                                "frf: --speed-kmh must be in [0, 200] (0: synchronous), got 201")
+        self.assert_input_error(["mac", "--vehicle", VEHICLE, "--count", "201"],
+                                "mac: --count", "201 not in range 1 to 200")
+        self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                                 "long_hill", "--speeds", "10", "--dt", "0.005"],
+                                "ride: --dt: must be a number in [0.0001, 0.002] s, got 0.005")
 
     def test_text_output_fits_the_run(self):
         """#11: the un-tracked statics do not mention chain links; one ride run is '1 run'."""
