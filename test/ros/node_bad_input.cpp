@@ -13,6 +13,7 @@
 #include <iterator>
 #include <limits>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #include <geometry_msgs/AccelStamped.h>
@@ -590,10 +591,26 @@ TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
   ros::NodeHandle private_nh("~");
   const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
   const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
-  // The node runs until the timeout; the WARN goes to stderr, unbuffered.
-  const NodeRun run = runNode("__name:=unwritable_cache _vehicle:=" + vehicle +
-                                  " _variant:=untracked _cache_dir:=/proc/tvd_no_cache",
-                              timeout);
+  // The node runs until the timeout (its own thread here, so that this one reads /diagnostics
+  // meanwhile); the WARN goes to stderr, unbuffered.
+  ros::NodeHandle nh;
+  test::DiagnosticsCache diagnostics(nh);
+  NodeRun run;
+  std::thread node([&] {
+    run = runNode("__name:=unwritable_cache _vehicle:=" + vehicle +
+                      " _variant:=untracked _cache_dir:=/proc/tvd_no_cache",
+                  timeout);
+  });
+  // What an operator's monitor shows: the model status WARN, not cached.
+  const bool reported =
+      test::spinUntil([&] { return diagnostics.has("unwritable_cache: model"); }, timeout - 2.0);
+  node.join();
+  ASSERT_TRUE(reported) << diagnostics.describe() << run.output;
+  EXPECT_EQ(diagnostics.level("unwritable_cache: model"), 1) << diagnostics.describe();
+  EXPECT_EQ(diagnostics.message("unwritable_cache: model").rfind("built; not cached: ", 0), 0u)
+      << diagnostics.describe();
+  EXPECT_EQ(diagnostics.text("unwritable_cache: model", "cached"), "False")
+      << diagnostics.describe();
   // A WARN line that says it (the reduction's own WARNs, e.g. a cut eigenspace, do not count).
   std::istringstream lines(run.output);
   bool warned = false;
