@@ -601,9 +601,14 @@ TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
                       " _variant:=untracked _cache_dir:=/proc/tvd_no_cache",
                   timeout);
   });
-  // What an operator's monitor shows: the model status WARN, not cached.
-  const bool reported =
-      test::spinUntil([&] { return diagnostics.has("unwritable_cache: model"); }, timeout - 2.0);
+  // What an operator's monitor shows: the model status WARN, not cached (after
+  // diagnostic_updater's own "Node starting up", sent while the model is built).
+  const bool reported = test::spinUntil(
+      [&] {
+        return diagnostics.has("unwritable_cache: model") &&
+               diagnostics.message("unwritable_cache: model") != "Node starting up";
+      },
+      timeout - 2.0);
   node.join();
   ASSERT_TRUE(reported) << diagnostics.describe() << run.output;
   EXPECT_EQ(diagnostics.level("unwritable_cache: model"), 1) << diagnostics.describe();
