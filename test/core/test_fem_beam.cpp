@@ -180,6 +180,21 @@ TEST(BeamStatics, TimoshenkoAddsShearDeflection) {
   EXPECT_NEAR(r.displacement(sys.dofs.requireActive(11, 2)), expected, 1e-9 * std::abs(expected));
 }
 
+// The same in the x-y plane (bending about local z, shear along y: shear_factor_y), whose
+// Timoshenko block is separate from the x-z one above.
+TEST(BeamStatics, TimoshenkoAddsShearDeflectionInTheOtherPlane) {
+  Model m = makeBeam(10, true);
+  m.sections[0].shear_factor_y = 5.0 / 6.0;
+  const tvd::fem::System sys = tvd::fem::assemble(m);
+  tvd::Vector f = tvd::Vector::Zero(sys.size());
+  const double load = -1000.0;
+  f(sys.dofs.requireActive(11, 1)) = load;
+  const tvd::fem::StaticResult r = tvd::fem::solveStatic(sys, f);
+  const double expected = load * std::pow(kLength, 3) / (3 * kE * izOf()) +
+                          load * kLength / (5.0 / 6.0 * kG * areaOf());
+  EXPECT_NEAR(r.displacement(sys.dofs.requireActive(11, 1)), expected, 1e-9 * std::abs(expected));
+}
+
 TEST(BeamStatics, AxialAndTorsion) {
   Model m = makeBeam(4, true);
   const tvd::fem::System sys = tvd::fem::assemble(m);

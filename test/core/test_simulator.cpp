@@ -242,6 +242,27 @@ TEST(Newmark, UnconditionallyStableWithoutNumericalDamping) {
 
 // A single discrete damper at the chain's end is not proportional: the modal engine reports the
 // neglected coupling, and both engines still agree roughly (lightly damped).
+// Average acceleration on a damped oscillator, at a coarse step: the rule's energy balance is
+// exact, E_{n+1} - E_n = -h c vbar^2 with vbar = (v_n + v_{n+1}) / 2 (the trapezoid's power of
+// the damper), for any h. A stray h C a term in the right-hand side breaks it at O(h^2).
+TEST(Newmark, AverageAccelerationDissipatesExactlyTheDampersWork) {
+  const double m = 2.0, c = 3.0, k = 800.0, h = 0.02;  // omega h = 0.4
+  NewmarkIntegrator newmark(toSparse(test::oneDof(m, c, k, 0.0)), h);
+  newmark.reset(Vector::Constant(1, 0.1), Vector::Zero(1), Vector::Zero(2));
+  const double scale = 0.5 * k * 0.1 * 0.1;  // the initial energy
+  double worst = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    const double q0 = newmark.displacement()(0), v0 = newmark.velocity()(0);
+    newmark.step(Vector::Zero(2));
+    const double q1 = newmark.displacement()(0), v1 = newmark.velocity()(0);
+    const double e0 = 0.5 * m * v0 * v0 + 0.5 * k * q0 * q0;
+    const double e1 = 0.5 * m * v1 * v1 + 0.5 * k * q1 * q1;
+    const double v_bar = 0.5 * (v0 + v1);
+    worst = std::max(worst, std::abs(e1 - e0 + h * c * v_bar * v_bar) / scale);
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
 TEST(Simulator, ReportsNonProportionalDamping) {
   SecondOrderSystem s = test::chain(5, 20.0, 2e5, 0.0, 4e5, 0.0);
   s.damping(4, 4) = 300.0;
@@ -306,6 +327,12 @@ TEST(Simulator, GivenModalDampingRatios) {
   Simulator dense(s, options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder));
   const Matrix w = bumpInputs(s.input_stations, 800, 1e-3, 10.0, 0.05, 1.0, 2.5);
   EXPECT_LT(relativeBlockError(modal.simulate(w), dense.simulate(w), 3), kMethodAgreement);
+  // The ratios read back (reports print them): zeta_r = d_r / (2 omega_r).
+  EXPECT_LT(
+      (ModalSystem(test::randomVehicle(6, 2, 3, 4, 2e10, 0.0, 0.0), zeta).dampingRatios() - zeta)
+          .cwiseAbs()
+          .maxCoeff(),
+      1e-12);
 }
 
 #if TVD_COUNTS_ALLOCATIONS  // glibc, no sanitizer: see count_allocations.h
@@ -361,8 +388,12 @@ TEST(Simulator, QuasiStaticTruncationKeepsStaticsAndDisplacements) {
   exact.reset(z0, w.row(0).transpose());
   truncated.reset(z0, w.row(0).transpose());
   stepped.reset(z0, w.row(0).transpose());
-  // Statics: the truncated state at rest is the static equilibrium, to rounding.
+  // Statics: the truncated state at rest is the static equilibrium, to rounding, and so are its
+  // outputs, H z0: the cut modes' share of the sag comes in through their static response to
+  // gravity (the displacement changes compared below would cancel a constant offset).
   EXPECT_LT((truncated.state() - z0).cwiseAbs().maxCoeff(), 1e-12 * z0.cwiseAbs().maxCoeff());
+  const Vector at_rest = s.output * z0.head(n);
+  EXPECT_LT((truncated.outputs().head(outputs) - at_rest).norm(), 1e-10 * at_rest.norm());
 
   const Matrix y_exact = exact.simulate(w);
   const Matrix y_cut = truncated.simulate(w);

@@ -109,6 +109,12 @@ TEST(RoadInput, CentralDifferencesAreExactForQuadratics) {
     EXPECT_NEAR(w(k, 2), 2.0 * k * dt, kIdentityTolerance);
     EXPECT_NEAR(w(k, 3), -1.0, kIdentityTolerance);
   }
+  // The ends take one-sided differences: exact for the line, (t_1^2 - t_0^2) / dt = dt and
+  // (t_5^2 - t_4^2) / dt = 9 dt for the quadratic.
+  for (int k : {0, 5})
+    EXPECT_NEAR(w(k, 3), -1.0, kIdentityTolerance) << k;
+  EXPECT_NEAR(w(0, 2), dt, kIdentityTolerance);
+  EXPECT_NEAR(w(5, 2), 9.0 * dt, kIdentityTolerance);
   EXPECT_THROW(roadInputSeries(heights, 0.0), InputError);
   EXPECT_EQ(roadInput(Vector::Ones(2), Vector::Zero(2)).size(), 4);
   EXPECT_THROW(roadInput(Vector::Ones(2), Vector::Zero(3)), InputError);

@@ -447,6 +447,33 @@ TEST(MovingAverage, KeepsLinesAndScalesSinusoidsBySinc) {
   expectInputError([&] { movingAverage(wave, dx, -1.0); }, {"window -1 m"});
 }
 
+// A window that is not a whole number of samples (0.15 m at 0.02 m: 3.75 either side) takes the
+// partial end cells by interpolation: the result is the mean of the piecewise-linear profile over
+// the window, here against a fine midpoint rule. (The default 0.2 m at 0.01 m ends on samples,
+// and a straight line's two end errors cancel: neither sees a wrong weight at the ends.)
+TEST(MovingAverage, AFractionalWindowIsTheMeanOfTheInterpolatedProfile) {
+  const double dx = 0.02, window = 0.15;
+  const int n = 200;
+  Vector wave(n);
+  for (int i = 0; i < n; ++i)
+    wave(i) = std::sin(2.0 * kPi * i * dx / 0.3);
+  const Vector smooth = movingAverage(wave, dx, window);
+  const auto profile = [&](double x) {
+    const double t = x / dx;
+    const int k = static_cast<int>(std::floor(t));
+    return (1.0 - (t - k)) * wave(k) + (t - k) * wave(k + 1);
+  };
+  double worst = 0.0;
+  for (int i = 10; i < n - 10; ++i) {
+    const int parts = 20000;
+    double sum = 0.0;
+    for (int j = 0; j < parts; ++j)
+      sum += profile(i * dx - 0.5 * window + (j + 0.5) * window / parts);
+    worst = std::max(worst, std::abs(smooth(i) - sum / parts));
+  }
+  EXPECT_LT(worst, 1e-6);
+}
+
 // ---------------------------------------------------------------------------------------------
 // The paper's tracks (§4.2.1)
 
@@ -819,6 +846,42 @@ TEST(Iso8608, SeedsAreDeterministicAndClassesScale) {
   EXPECT_TRUE(up.heights().isApprox(2.0 * a.heights(), 1e-12));
   // Fully correlated by default: both sides see the same profile.
   EXPECT_EQ(a.profile(-2.5), a.profile(2.5));
+}
+
+// The taper is the raised cosine w(d) = (1 - cos(pi d / L)) / 2 of the distance d to the nearer
+// end, and 1 beyond L: the same road with and without it differ by exactly that factor.
+TEST(Iso8608, TaperIsARaisedCosineOfTheDistanceToTheEnd) {
+  Iso8608Options tapered;
+  tapered.taper_length = 5.0;
+  const Terrain plain = makeIso8608('C', 100.0, 3.0, 0.05, 7);
+  const Terrain road = makeIso8608('C', 100.0, 3.0, 0.05, 7, tapered);
+  double worst = 0.0;
+  for (Eigen::Index i = 0; i < plain.stations().size(); ++i) {
+    const double d = std::min(plain.stations()(i), 100.0 - plain.stations()(i));
+    const double w = d < 5.0 ? 0.5 * (1.0 - std::cos(kPi * d / 5.0)) : 1.0;
+    worst = std::max(worst, std::abs(road.heights()(0, i) - w * plain.heights()(0, i)));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+// Each harmonic's phase is uniform on [0, 2 pi): the road is zero-mean over seeds. With the
+// harmonics on the DFT's grid (k / length) and no taper, the DFT of one road gives each phase
+// back, so their signs split about evenly (a phase drawn on [0, pi) would leave none negative).
+TEST(Iso8608, HarmonicPhasesCoverTheWholeCircle) {
+  const double length = 100.0, dx = 0.05;
+  const Terrain road = makeIso8608('C', length, 3.0, dx, 3);
+  const int samples = static_cast<int>(std::lround(length / dx));
+  int negative = 0, harmonics = 0;
+  for (int k = 2; k <= 280; ++k) {  // inside the default band, 0.011 .. 2.83 cycles/m
+    std::complex<double> x = 0.0;
+    for (int i = 0; i < samples; ++i)
+      x += road.heights()(0, i) * std::polar(1.0, -2.0 * kPi * k * i / samples);
+    ++harmonics;
+    negative += std::arg(x) < 0.0 ? 1 : 0;
+  }
+  const double share = static_cast<double>(negative) / harmonics;
+  EXPECT_GT(share, 0.3);
+  EXPECT_LT(share, 0.7);
 }
 
 TEST(Iso8608, IndependentSidesAndTaper) {

@@ -633,6 +633,22 @@ TEST_F(VehicleModels, NodePartsNameWhatANodeBelongsTo) {
   EXPECT_EQ(veh::nodePart(t, 987654321), "node 987654321");
 }
 
+// The chain loop is tangent-continuous where it wraps the sprocket and the idler (their arcs'
+// ends meet the inclines and the top run), also with an idler smaller than the sprocket, where
+// the top run's angle depends on the radii's difference. (The inclines meet the ground run at a
+// corner, under the end road wheels, by design.)
+TEST(VehicleDescription, ChainLoopIsSmoothWithUnequalWheels) {
+  veh::VehicleDescription d;
+  d.idler.radius = 0.22;
+  const veh::ChainPath path(d, veh::solveIdlerX(d));
+  for (veh::ChainSegment segment : {veh::ChainSegment::Sprocket, veh::ChainSegment::Idler}) {
+    for (double s : {path.interval(segment).first, path.interval(segment).second}) {
+      const veh::Vector2 before = path.at(s - 1e-7).tangent, after = path.at(s + 1e-7).tangent;
+      EXPECT_LT((after - before).norm(), 1e-5) << "at s = " << s;
+    }
+  }
+}
+
 TEST_F(VehicleModels, ChainLoopClosesWithThirtyPitchesOnTheGround) {
   const auto& d = description();
   const veh::ChainPath path(d, tracked_->vehicle.layout.idler_x);
