@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -167,32 +168,29 @@ TEST(BeamStatics, CantileverTipDeflection) {
   EXPECT_LT(r.residual, 1e-10);
 }
 
+// A cantilever's tip deflection with shear: P L^3 / (3 E I) + P L / (kappa G A), in each bending
+// plane (x-z: shear_factor_z, I_y; x-y: shear_factor_y, I_z), whose Timoshenko blocks are apart.
 TEST(BeamStatics, TimoshenkoAddsShearDeflection) {
-  Model m = makeBeam(10, true);
-  m.sections[0].shear_factor_z = 5.0 / 6.0;
-  const tvd::fem::System sys = tvd::fem::assemble(m);
-  tvd::Vector f = tvd::Vector::Zero(sys.size());
-  const double load = -1000.0;
-  f(sys.dofs.requireActive(11, 2)) = load;
-  const tvd::fem::StaticResult r = tvd::fem::solveStatic(sys, f);
-  const double expected = load * std::pow(kLength, 3) / (3 * kE * iyOf()) +
-                          load * kLength / (5.0 / 6.0 * kG * areaOf());
-  EXPECT_NEAR(r.displacement(sys.dofs.requireActive(11, 2)), expected, 1e-9 * std::abs(expected));
-}
-
-// The same in the x-y plane (bending about local z, shear along y: shear_factor_y), whose
-// Timoshenko block is separate from the x-z one above.
-TEST(BeamStatics, TimoshenkoAddsShearDeflectionInTheOtherPlane) {
-  Model m = makeBeam(10, true);
-  m.sections[0].shear_factor_y = 5.0 / 6.0;
-  const tvd::fem::System sys = tvd::fem::assemble(m);
-  tvd::Vector f = tvd::Vector::Zero(sys.size());
-  const double load = -1000.0;
-  f(sys.dofs.requireActive(11, 1)) = load;
-  const tvd::fem::StaticResult r = tvd::fem::solveStatic(sys, f);
-  const double expected = load * std::pow(kLength, 3) / (3 * kE * izOf()) +
-                          load * kLength / (5.0 / 6.0 * kG * areaOf());
-  EXPECT_NEAR(r.displacement(sys.dofs.requireActive(11, 1)), expected, 1e-9 * std::abs(expected));
+  struct Plane {
+    double tvd::fem::Section::*shear_factor;
+    int dof;  // the tip's translation loaded
+    double inertia;
+  };
+  for (const Plane& plane : {Plane{&tvd::fem::Section::shear_factor_z, 2, iyOf()},
+                             Plane{&tvd::fem::Section::shear_factor_y, 1, izOf()}}) {
+    SCOPED_TRACE("tip dof " + std::to_string(plane.dof));
+    Model m = makeBeam(10, true);
+    m.sections[0].*plane.shear_factor = 5.0 / 6.0;
+    const tvd::fem::System sys = tvd::fem::assemble(m);
+    tvd::Vector f = tvd::Vector::Zero(sys.size());
+    const double load = -1000.0;
+    f(sys.dofs.requireActive(11, plane.dof)) = load;
+    const tvd::fem::StaticResult r = tvd::fem::solveStatic(sys, f);
+    const double expected = load * std::pow(kLength, 3) / (3 * kE * plane.inertia) +
+                            load * kLength / (5.0 / 6.0 * kG * areaOf());
+    EXPECT_NEAR(r.displacement(sys.dofs.requireActive(11, plane.dof)), expected,
+                1e-9 * std::abs(expected));
+  }
 }
 
 TEST(BeamStatics, AxialAndTorsion) {

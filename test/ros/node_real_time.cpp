@@ -136,6 +136,29 @@ class NodeRealTime : public ::testing::Test {
     return held;
   }
 
+  /// The sample of `r` at which the timeout took effect: the first below v0 after it had reached
+  /// v0 (from `start`), ~speed_timeout after the last speed message (within late_tolerance: not
+  /// before, while messages were still due, nor late). end() when there is none.
+  std::map<ros::Time, Sample>::const_iterator timedOut(const Recorder& r, const ros::Time& start,
+                                                       const ros::Time& last_message) const {
+    const auto& samples = r.samples();
+    const auto moving = std::find_if(samples.lower_bound(start), samples.end(),
+                                     [&](const auto& s) { return s.second.speed == speed_; });
+    if (moving == samples.end()) {
+      ADD_FAILURE() << "never reached the commanded speed";
+      return samples.end();
+    }
+    const auto changed = r.firstBelow(moving->first, speed_);
+    if (changed == samples.end()) {
+      ADD_FAILURE() << "did not slow down after ~speed_timeout";
+      return samples.end();
+    }
+    const double after = (changed->first - last_message).toSec();
+    EXPECT_GE(after, timeout_ - 0.02) << "slowed down while speed messages were still due";
+    EXPECT_LE(after, timeout_ + late_) << "slowed down late";
+    return changed;
+  }
+
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
   Recorder stopping_, braking_;
@@ -161,14 +184,9 @@ TEST_F(NodeRealTime, NoSpeedMessageForTheTimeoutStopsOrBrakesTheVehicle) {
   {
     SCOPED_TRACE("stopping");
     const auto& samples = stopping_.samples();
-    const auto moving = std::find_if(samples.lower_bound(start), samples.end(),
-                                     [&](const auto& s) { return s.second.speed == speed_; });
-    ASSERT_NE(moving, samples.end()) << "never reached the commanded speed";
-    const auto stop = stopping_.firstBelow(moving->first, speed_);
-    ASSERT_NE(stop, samples.end()) << "did not stop after ~speed_timeout";
+    const auto stop = timedOut(stopping_, start, last_message);
+    ASSERT_NE(stop, samples.end());
     const double after = (stop->first - last_message).toSec();
-    EXPECT_GE(after, timeout_ - 0.02) << "stopped while speed messages were still due";
-    EXPECT_LE(after, timeout_ + late_) << "stopped late";
     for (auto it = stop; it != samples.end(); ++it) {
       EXPECT_EQ(it->second.speed, 0.0);
       EXPECT_EQ(it->second.station, stop->second.station) << "moved after the stop";
@@ -215,14 +233,9 @@ TEST_F(NodeRealTime, NoSpeedMessageForTheTimeoutStopsOrBrakesTheVehicle) {
   {
     SCOPED_TRACE("braking");
     const auto& samples = braking_.samples();
-    const auto cruising = std::find_if(samples.lower_bound(start), samples.end(),
-                                       [&](const auto& s) { return s.second.speed == speed_; });
-    ASSERT_NE(cruising, samples.end()) << "never reached the commanded speed";
-    const auto braking = braking_.firstBelow(cruising->first, speed_);
-    ASSERT_NE(braking, samples.end()) << "did not brake after ~speed_timeout";
+    const auto braking = timedOut(braking_, start, last_message);
+    ASSERT_NE(braking, samples.end());
     const double after = (braking->first - last_message).toSec();
-    EXPECT_GE(after, timeout_ - 0.02);
-    EXPECT_LE(after, timeout_ + late_);
     const double s0 = std::prev(braking)->second.station;
     // Counted in steps, not stamps: a catch-up skip moves the stamps on, not the vehicle.
     double worst_speed = 0.0, worst_station = 0.0;

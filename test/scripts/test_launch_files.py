@@ -52,6 +52,16 @@ def make_track_bag(track, speed, bag_dir, env=None):
                           capture_output=True, text=True, timeout=120)
 
 
+def private_master(ros_home):
+    """A free local port for a master of this test alone (parallel tests must not share one) and
+    the environment that points ROS at it, with its own ROS_HOME: (port, env)."""
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    return port, dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
+                      ROS_HOME=ros_home)
+
+
 def cleared_namespaces(launch_file):
     """The namespaces roslaunch deletes from the master before setting the launch's parameters."""
     code = ("import sys, rospkg, roslaunch.config\n"
@@ -257,11 +267,7 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_the_player_refuses_a_bag_faster_than_the_nodes_max_speed(self):
         # Else the node rejects every speed message and the replay records a vehicle at rest.
-        with socket.socket() as s:
-            s.bind(("127.0.0.1", 0))
-            port = s.getsockname()[1]
-        env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
-                   ROS_HOME=os.path.join(self.work, "ros_home"))
+        port, env = private_master(os.path.join(self.work, "ros_home"))
         master = subprocess.Popen([ENV_SH, "rosmaster", "--core", "-p", str(port)], env=env,
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                   start_new_session=True)
@@ -301,11 +307,7 @@ class LaunchFilesTest(unittest.TestCase):
     def test_replay_ends_when_the_node_dies_at_start_up(self):
         # The node is required: a FATAL parameter ends the whole launch (player and recorder
         # included), at once, instead of a player waiting on a node that never comes.
-        with socket.socket() as s:
-            s.bind(("127.0.0.1", 0))
-            port = s.getsockname()[1]
-        env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
-                   ROS_HOME=os.path.join(self.work, "ros_home_required"))
+        port, env = private_master(os.path.join(self.work, "ros_home_required"))
         start = time.monotonic()
         result = subprocess.run([ENV_SH, "roslaunch", "-p", str(port), PACKAGE, "replay_track.launch",
                                  "comfort_point:=nowhere", "record:=false",
