@@ -159,6 +159,21 @@ class NodeRealTime : public ::testing::Test {
     return changed;
   }
 
+  /// The `speed` diagnostics of the node in namespace `ns` come to WARN "vehicle stopped", its
+  /// one stop counted.
+  void expectStoppedStatus(const std::string& ns) {
+    const std::string status = ns + "/vehicle_dynamics: speed";
+    ASSERT_TRUE(test::spinUntil(
+        [&] {
+          return diagnostics_.message(status) ==
+                 "no speed message within ~speed_timeout: vehicle stopped";
+        },
+        5.0))
+        << diagnostics_.describe();
+    EXPECT_EQ(diagnostics_.level(status), 1);
+    EXPECT_EQ(diagnostics_.value(status, "stops after the speed timeout (total)"), 1.0);
+  }
+
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
   Recorder stopping_, braking_;
@@ -216,17 +231,7 @@ TEST_F(NodeRealTime, NoSpeedMessageForTheTimeoutStopsOrBrakesTheVehicle) {
       EXPECT_NEAR(median(dt), every * h, kStampTolerance);
     }
 
-    ASSERT_TRUE(test::spinUntil(
-        [&] {
-          return diagnostics_.message("stopping/vehicle_dynamics: speed") ==
-                 "no speed message within ~speed_timeout: vehicle stopped";
-        },
-        5.0))
-        << diagnostics_.describe();
-    EXPECT_EQ(diagnostics_.level("stopping/vehicle_dynamics: speed"), 1);
-    EXPECT_EQ(diagnostics_.value("stopping/vehicle_dynamics: speed",
-                                 "stops after the speed timeout (total)"),
-              1.0);
+    ASSERT_NO_FATAL_FAILURE(expectStoppedStatus("stopping"));
   }
 
   // --- braking: from the timeout on, v_k = max(0, v0 - D k h) and the trapezoid's station.
@@ -254,13 +259,7 @@ TEST_F(NodeRealTime, NoSpeedMessageForTheTimeoutStopsOrBrakesTheVehicle) {
         "[ measured ] braking: braked from %.3f s after the last speed message; "
         "|v - max(0, v0 - D k h)| %.3g m/s, |s - trapezoid| %.3g m over %d samples\n",
         after, worst_speed, worst_station, k - 1);
-    ASSERT_TRUE(test::spinUntil(
-        [&] {
-          return diagnostics_.message("braking/vehicle_dynamics: speed") ==
-                 "no speed message within ~speed_timeout: vehicle stopped";
-        },
-        5.0))
-        << diagnostics_.describe();
+    ASSERT_NO_FATAL_FAILURE(expectStoppedStatus("braking"));
   }
 
   // The next speed message moves the stopped vehicle again, and the WARN clears while the
