@@ -587,6 +587,24 @@ TEST(NodeBadParameters, InterruptedWhileBuildingTheModelExitsCleanly) {
   EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
 }
 
+// A step slower than the period (~method exact, every one of the 862 states, at 20 kHz: about
+// 440 us per 50 us step here) cannot keep up: the "behind ROS time" warning says why and what to
+// do, with the mean step time.
+TEST(NodeBadParameters, AStepSlowerThanThePeriodIsSaid) {
+  ros::NodeHandle private_nh("~");
+  const NodeRun run = runNode(
+      "__name:=slow_exact _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
+          " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
+          " _method:=exact _rate:=20000",
+      10);
+  EXPECT_NE(run.output.find("behind ROS time, more than ~catch_up_limit"), std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("more than the period of 50 us: lower ~rate, or use ~method modal)"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("(a step takes "), std::string::npos) << run.output;
+}
+
 TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
   ros::NodeHandle private_nh("~");
   const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
