@@ -351,11 +351,14 @@ TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
 }
 
 // ~lateral_offset: every contact reads the terrain at y + offset. On a plane sloping across the
-// path, h = a y, an offset d raises every contact by a d, so the vehicle stands and drives a d
-// higher, rigidly: every wheel and the hull's heave up by a d, its attitude and station unchanged
-// (the model's ground inputs moved alike are a rigid translation: K T = K_u 1).
+// path, h = a y, the toy's contacts (put at y = +-0.5 m here: the toy has them on its centre line)
+// stand in static equilibrium on u_i = a (y_i + d); an offset d raises every contact by a d, so
+// the vehicle stands and drives a d higher, rigidly: every wheel and the hull's heave up by a d,
+// its attitude and station unchanged (the model's ground inputs moved alike are a rigid
+// translation: K T = K_u 1).
 TEST(OnlineVehicle, LateralOffsetReadsTheTerrainThatFarToTheLeft) {
-  const reduction::ReducedModel model = test::toyModel();
+  reduction::ReducedModel model = test::toyModel();
+  model.system.input_lateral = Eigen::Vector2d(0.5, -0.5);
   const double a = 0.1, d = 0.4;  // [m/m], [m]
   TerrainPatch plane = flatPatch(-5.0, 10.0, 0.05, 3.0);
   plane.heights.row(0).setConstant(-3.0 * a);
@@ -367,7 +370,13 @@ TEST(OnlineVehicle, LateralOffsetReadsTheTerrainThatFarToTheLeft) {
   for (OnlineVehicle* v : {&centred, &offset}) {
     v->addTerrain(plane);
     ASSERT_EQ(v->resetTo(0.0, 0.0, ResetTerrain::Keep), 0);
-    v->setSpeed(5.0);
+  }
+  for (const auto& [vehicle, shift] : {std::pair<OnlineVehicle*, double>{&centred, 0.0},
+                                       std::pair<OnlineVehicle*, double>{&offset, d}}) {
+    const Vector u = a * (model.system.input_lateral.array() + shift).matrix();
+    const Vector z0 = dynamics::staticEquilibrium(model.system, u, model.gravity_load);
+    EXPECT_LT((vehicle->simulator().state() - z0).cwiseAbs().maxCoeff(), 1e-12) << shift;
+    vehicle->setSpeed(5.0);
   }
   Vector6 rise = Vector6::Zero();
   rise(2) = a * d;

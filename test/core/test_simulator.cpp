@@ -240,8 +240,6 @@ TEST(Newmark, UnconditionallyStableWithoutNumericalDamping) {
   EXPECT_THROW(NewmarkIntegrator(toSparse(s), 0.0), InputError);
 }
 
-// A single discrete damper at the chain's end is not proportional: the modal engine reports the
-// neglected coupling, and both engines still agree roughly (lightly damped).
 // Average acceleration on a damped oscillator, at a coarse step: the rule's energy balance is
 // exact, E_{n+1} - E_n = -h c vbar^2 with vbar = (v_n + v_{n+1}) / 2 (the trapezoid's power of
 // the damper), for any h. A stray h C a term in the right-hand side breaks it at O(h^2).
@@ -263,6 +261,8 @@ TEST(Newmark, AverageAccelerationDissipatesExactlyTheDampersWork) {
   EXPECT_LT(worst, 1e-12);
 }
 
+// A single discrete damper at the chain's end is not proportional: the modal engine reports the
+// neglected coupling, and both engines still agree roughly (lightly damped).
 TEST(Simulator, ReportsNonProportionalDamping) {
   SecondOrderSystem s = test::chain(5, 20.0, 2e5, 0.0, 4e5, 0.0);
   s.damping(4, 4) = 300.0;

@@ -2,6 +2,7 @@
 // entry for each kind; the loop holds its rate (node_bad_input.test, real time). A bad parameter
 // stops a second node at once with one FATAL line naming it.
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <array>
 
 #include <sys/wait.h>
@@ -566,20 +567,37 @@ TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
   });
 }
 
-// An unwritable ~cache_dir does not stop the node (the model is built), but it must not be
-// reported as cached: a WARN says "not cached" and why.
 // Ctrl-C while the model is being built (an empty cache: the tracked reduction takes about a
 // second): the node says so on one line and exits 0. It once ended in SIGTRAP, publishing on a
-// publisher created after roscpp had shut down.
+// publisher created after roscpp had shut down. The signal goes to the node itself once it has
+// registered with the master (roscpp's handler installed; the build runs from then on).
 TEST(NodeBadParameters, InterruptedWhileBuildingTheModelExitsCleanly) {
   ros::NodeHandle private_nh("~");
   const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
   char cache[] = "/tmp/tvd_interrupted_XXXXXX";
   ASSERT_NE(mkdtemp(cache), nullptr);
-  const NodeRun run = runNode("__name:=interrupted _vehicle:=" + vehicle +
-                                  " _variant:=tracked _cache_dir:=" + std::string(cache),
-                              "--preserve-status -s INT 0.4");
+  NodeRun run;
+  // -k: a node that ignored the signal is killed 20 s later, failing this test alone.
+  std::thread node([&] {
+    run = runNode("__name:=interrupted _vehicle:=" + vehicle +
+                      " _variant:=tracked _cache_dir:=" + std::string(cache),
+                  "-k 20 --preserve-status 60");
+  });
+  const bool registered = test::spinUntil(
+      [] {
+        std::vector<std::string> nodes;
+        return ros::master::getNodes(nodes) &&
+               std::find(nodes.begin(), nodes.end(), "/interrupted") != nodes.end();
+      },
+      30.0);
+  // The node's own process (its command line starts with its path; the shell and timeout(1)
+  // that started it are left alone).
+  const int signalled =
+      std::system("pkill -INT -f '^/[^ ]*/vehicle_dynamics_node __name:=interrupted'");
+  node.join();
   std::filesystem::remove_all(cache);
+  ASSERT_TRUE(registered) << run.output;
+  EXPECT_EQ(signalled, 0) << "no node process to signal";
   EXPECT_EQ(run.exit_status, 0) << run.output;
   EXPECT_NE(run.output.find("/interrupted: shut down during start-up, before the model was ready"),
             std::string::npos)
@@ -587,24 +605,29 @@ TEST(NodeBadParameters, InterruptedWhileBuildingTheModelExitsCleanly) {
   EXPECT_EQ(run.output.find("FATAL"), std::string::npos) << run.output;
 }
 
-// A step slower than the period (~method exact, every one of the 862 states, at 20 kHz: about
-// 440 us per 50 us step here) cannot keep up: the "behind ROS time" warning says why and what to
-// do, with the mean step time.
+// A step slower than the period (~method exact at 100 kHz on the un-tracked model: its 254
+// states take about 25-40 us per 10 us step here) cannot keep up: the "behind ROS time" warning
+// says why and what to do, with the mean step time.
 TEST(NodeBadParameters, AStepSlowerThanThePeriodIsSaid) {
   ros::NodeHandle private_nh("~");
+  char cache[] = "/tmp/tvd_slow_XXXXXX";
+  ASSERT_NE(mkdtemp(cache), nullptr);
   const NodeRun run = runNode(
       "__name:=slow_exact _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
-          " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
-          " _method:=exact _rate:=20000",
-      10);
+          " _variant:=untracked _cache_dir:=" + std::string(cache) +
+          " _method:=exact _rate:=100000",
+      4);
+  std::filesystem::remove_all(cache);
   EXPECT_NE(run.output.find("behind ROS time, more than ~catch_up_limit"), std::string::npos)
       << run.output;
-  EXPECT_NE(run.output.find("more than the period of 50 us: lower ~rate, or use ~method modal)"),
+  EXPECT_NE(run.output.find("more than the period of 10 us: lower ~rate, or use ~method modal)"),
             std::string::npos)
       << run.output;
   EXPECT_NE(run.output.find("(a step takes "), std::string::npos) << run.output;
 }
 
+// An unwritable ~cache_dir does not stop the node (the model is built), but it must not be
+// reported as cached: a WARN says "not cached" and why.
 TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
   ros::NodeHandle private_nh("~");
   const std::string vehicle = test::requiredParam<std::string>(private_nh, "vehicle");
@@ -620,7 +643,7 @@ TEST(NodeBadParameters, UnwritableCacheDirIsWarnedNotCached) {
                   timeout);
   });
   // What an operator's monitor shows: the model status WARN, not cached (after
-  // diagnostic_updater's own "Node starting up", sent while the model is built).
+  // diagnostic_updater's own "Node starting up").
   const bool reported = test::spinUntil(
       [&] {
         return diagnostics.has("unwritable_cache: model") &&

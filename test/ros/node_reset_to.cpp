@@ -221,8 +221,10 @@ TEST_F(NodeResetTo, RestartsInEquilibriumOnTheTerrainAtTheStation) {
     ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.05)));
   EXPECT_EQ(last_.speed, 0.0);
   const double stopped_at = last_.station;
-  EXPECT_GE(stopped_at, station + 20.0 + v * (timeout - 0.1));
-  EXPECT_LE(stopped_at, station + 20.0 + v * (timeout + 0.001) + 1e-9);
+  // On simulated time exactly: at the clock message 2.0 s after the call the time without a speed
+  // message is not yet beyond the timeout (the step to it is driven); at the next, 50 ms later,
+  // it is, and the vehicle stops before that step.
+  EXPECT_NEAR(stopped_at, station + 20.0 + v * timeout, 1e-9);
   ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.5)));
   EXPECT_EQ(last_.station, stopped_at);
   std::printf(

@@ -309,13 +309,22 @@ class LaunchFilesTest(unittest.TestCase):
         # included), at once, instead of a player waiting on a node that never comes.
         port, env = private_master(os.path.join(self.work, "ros_home_required"))
         start = time.monotonic()
-        result = subprocess.run([ENV_SH, "roslaunch", "-p", str(port), PACKAGE, "replay_track.launch",
-                                 "comfort_point:=nowhere", "record:=false",
-                                 "bag_dir:=" + os.path.join(self.work, "required_bags")],
-                                env=env, capture_output=True, text=True, timeout=120,
-                                start_new_session=True)
+        launch = subprocess.Popen([ENV_SH, "roslaunch", "-p", str(port), PACKAGE,
+                                   "replay_track.launch", "comfort_point:=nowhere", "record:=false",
+                                   "bag_dir:=" + os.path.join(self.work, "required_bags")],
+                                  env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                  text=True, start_new_session=True)
+        try:
+            output, _ = launch.communicate(timeout=120)
+        finally:
+            # The launch's whole process group (master, player): left running, they would
+            # outlive a failure of this test.
+            try:
+                os.killpg(launch.pid, 15)
+            except ProcessLookupError:
+                pass
+            launch.wait(timeout=30)
         elapsed = time.monotonic() - start
-        output = result.stdout + result.stderr
         self.assertIn("unknown point 'nowhere'", output)
         self.assertIn("REQUIRED process [vehicle_dynamics", output)
         self.assertIn("[track_player", output)  # started, then ended with the launch

@@ -2692,21 +2692,25 @@ class TvdCliTest(unittest.TestCase):
                                 "--speeds '5:7:3'", "does not land on LAST 7")
 
     def test_documented_ranges_are_refused_at_their_bounds(self):
-        """The ranges the help texts give, refused just outside and named: simulate's speed in
-        (0, 200] km/h (0 would never leave the start), frf's in [0, 200] (0 is synchronous),
-        mac's count in 1 .. 200, ride's step in [1e-4, 2e-3] s."""
+        """The ranges the help texts give, refused just outside each bound and named: simulate's
+        speed in (0, 200] km/h (0 would never leave the start), frf's in [0, 200] (0 is
+        synchronous), mac's count in 1 .. 200, ride's step in [1e-4, 2e-3] s."""
         sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "long_hill"]
-        for value in ("0", "201"):
+        for value in ("0", "200.1"):
             self.assert_input_error(sim + ["--speed-kmh", value],
                                     "simulate: --speed-kmh must be in (0, 200], got " + value)
-        self.assert_input_error(["frf", "--vehicle", VEHICLE, "--variant", "untracked",
-                                 "--speed-kmh", "201"],
-                                "frf: --speed-kmh must be in [0, 200] (0: synchronous), got 201")
-        self.assert_input_error(["mac", "--vehicle", VEHICLE, "--count", "201"],
-                                "mac: --count", "201 not in range 1 to 200")
-        self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
-                                 "long_hill", "--speeds", "10", "--dt", "0.005"],
-                                "ride: --dt: must be a number in [0.0001, 0.002] s, got 0.005")
+        for value in ("-0.1", "200.1"):
+            self.assert_input_error(["frf", "--vehicle", VEHICLE, "--variant", "untracked",
+                                     "--speed-kmh", value],
+                                    "frf: --speed-kmh must be in [0, 200] (0: synchronous), got "
+                                    + value)
+        for value in ("0", "201"):
+            self.assert_input_error(["mac", "--vehicle", VEHICLE, "--count", value],
+                                    "mac: --count", value + " not in range 1 to 200")
+        for value in ("9e-05", "0.0021"):
+            self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked",
+                                     "--track", "long_hill", "--speeds", "10", "--dt", value],
+                                    "ride: --dt: must be a number in [0.0001, 0.002] s, got " + value)
 
     def test_text_output_fits_the_run(self):
         """#11: the un-tracked statics do not mention chain links; one ride run is '1 run'."""
