@@ -358,7 +358,7 @@ TEST(OnlineVehicle, ResetToStandsInEquilibriumOnTheTerrainAtTheStation) {
 // translation: K T = K_u 1).
 TEST(OnlineVehicle, LateralOffsetReadsTheTerrainThatFarToTheLeft) {
   reduction::ReducedModel model = test::toyModel();
-  model.system.input_lateral = Eigen::Vector2d(0.5, -0.5);
+  model.system.input_lateral = (Vector(2) << 0.5, -0.5).finished();
   const double a = 0.1, d = 0.4;  // [m/m], [m]
   TerrainPatch plane = flatPatch(-5.0, 10.0, 0.05, 3.0);
   plane.heights.row(0).setConstant(-3.0 * a);
