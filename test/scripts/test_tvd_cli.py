@@ -175,6 +175,9 @@ class TvdCliTest(unittest.TestCase):
         self.assertLess(abs(s["ground_reaction_sum_n"] - s["weight_n"]) / s["weight_n"], 1e-6)
         self.assertLess(s["relative_balance_error"], 1e-6)
         self.assertLess(s["hull_sag_m"], 0.0)
+        # Symmetric left and right: no static roll; the trailing arms pitch it a little.
+        self.assertLess(abs(s["hull_roll_deg"]), 1e-6)
+        self.assertGreater(abs(s["hull_pitch_deg"]), 1e-6)
         wheels = np.array(s["road_wheel_loads_n"])
         self.assertEqual(len(wheels), 14)
         self.assertTrue(np.all(wheels > 0.0))
@@ -890,6 +893,18 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(peak["peak_vertical_accel_m_s2"],
                                    np.abs(c[name + "_accel_z_m_s2"]).max(), places=5)
 
+    def test_vibration_total_value_sums_the_three_axes(self):
+        """ISO 2631-1 eq. (9) with k = 1 on every axis: a_v = sqrt(a_wx^2 + a_wy^2 + a_wz^2),
+        at the hull and at every named point, on the out-of-phase waves, which roll the hull
+        (a_wy > 0)."""
+        d = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          "oop_waves", "--speed-kmh", "10", "--cache-dir", self.cache)
+        for p in [d["comfort"]] + d["comfort_at_points"]:
+            total = np.sqrt(p["weighted_rms_x_m_s2"] ** 2 + p["weighted_rms_y_m_s2"] ** 2
+                            + p["weighted_rms_m_s2"] ** 2)
+            self.assertAlmostEqual(p["vibration_total_value_m_s2"] / total, 1.0, delta=1e-8, msg=p)
+            self.assertGreater(p["weighted_rms_y_m_s2"], 1e-3, p)
+
     def test_simulate_braking_travel_inertia(self):
         """A braking profile loads the model with the travel inertia a(t) f_a: on a flat track at
         a constant rate the hull pitch settles to a H K_R^-1 travel_load (the reduced-model
@@ -950,7 +965,10 @@ class TvdCliTest(unittest.TestCase):
         # The braking is in ISO 2631's horizontal a_wx (Wd passes its onset and end; on the flat
         # track at constant speed there is nothing).
         self.assertLess(d["comfort"]["weighted_rms_x_m_s2"], 1e-6)
-        self.assertGreater(braking["comfort"]["weighted_rms_x_m_s2"], 1e-3)
+        # Braking straight ahead is fore and aft only: a_wx, no lateral a_wy, at every point.
+        for p in [braking["comfort"]] + braking["comfort_at_points"]:
+            self.assertGreater(p["weighted_rms_x_m_s2"], 1e-3, p)
+            self.assertLess(p["weighted_rms_y_m_s2"], 1e-6, p)
         header, rows = read_csv(steady)
         self.assertEqual(header[-4], "travel_accel_m_s2")
         self.assertEqual(np.abs(rows[:, -4]).max(), 0.0)
@@ -2340,6 +2358,16 @@ class TvdCliTest(unittest.TestCase):
                 expected = np.interp(column["station_m"] + x, stations, profile) - profile[0]
                 name = f"road_under_road_wheel_{side}_{k}_m"
                 np.testing.assert_allclose(column[name], expected, rtol=0, atol=1e-7, err_msg=name)
+        # Heights are taken from the start's: a level track 0.3 m up reads 0 under every wheel.
+        raised, raised_out = self.path("raised_road.csv"), self.path("raised_run.csv")
+        with open(raised, "w") as f:
+            f.write("x,h\n-10,0.3\n400,0.3\n")
+        self.tvd("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", raised,
+                 "--speed-kmh", "30", "--cache-dir", self.cache, "--out", raised_out)
+        raised_header, raised_rows = read_csv(raised_out)
+        under = [i for i, name in enumerate(raised_header) if name.startswith("road_under_")]
+        self.assertEqual(len(under), 14)
+        self.assertEqual(np.abs(raised_rows[:, under]).max(), 0.0)
         # The track is not the same left and right, so the test above is not one line twice.
         self.assertGreater(np.abs(column["road_under_road_wheel_left_1_m"]
                                   - column["road_under_road_wheel_right_1_m"]).max(), 0.1)
