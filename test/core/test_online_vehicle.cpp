@@ -15,6 +15,7 @@
 #include "tracked_vehicle_dynamics/online/road_input_sampler.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/terrain/terrain.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_buffer.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 #include "count_allocations.h"
@@ -638,6 +639,74 @@ TEST(OnlineVehicle, DampedGroundTiesIntegratedDynamicallyAreSaid) {
                           options(dynamics::DiscretizationMethod::AugmentedExponential))
                 .groundTieDampingWarning(),
             "");
+}
+
+// The toy's crew seat (outputs u_G + theta x r) is rigid with the hull, and a wheel centre keeps
+// its base_link x and y while the hull pitches (only its uz is a model output).
+TEST(OnlineVehicle, RigidPointsAndWheelCentresStayWhereTheGeometryPutsThem) {
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::ModalDecoupled));
+  EXPECT_TRUE(vehicle.pointIsRigid(0));
+  driveOverBump(vehicle, 300);
+  EXPECT_GT(std::abs(vehicle.hullDisplacement()(4)), 1e-4);  // pitched
+  for (std::size_t i = 0; i < vehicle.geometry().wheels.size(); ++i) {
+    const Vector3 at = vehicle.wheelPosition(i), rest = vehicle.geometry().wheels[i].position;
+    EXPECT_EQ(at.x(), rest.x()) << i;
+    EXPECT_EQ(at.y(), rest.y()) << i;
+  }
+}
+
+// peakAcceleration() is the largest |vertical acceleration| at the comfort point: over a bump
+// and over a dip alike (a dip's largest is downward). The toy's crew seat at r = (0.5, 0.3, .)
+// from the CoG, with no roll: a_z = a_Gz - 0.5 theta_y''.
+TEST(OnlineVehicle, PeakAccelerationIsTheLargestMagnitudeUpOrDown) {
+  for (const double amplitude : {0.05, -0.05}) {
+    SCOPED_TRACE(amplitude);
+    OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
+                          options(dynamics::DiscretizationMethod::ModalDecoupled));
+    TerrainPatch bump = flatPatch(-5.0, 15.0, 0.05, 1.0);
+    for (Eigen::Index j = 0; j < bump.heights.cols(); ++j) {
+      const double x = -5.0 + 0.05 * static_cast<double>(j);
+      if (x > 2.0 && x < 2.5)
+        bump.heights.col(j).setConstant(amplitude * std::sin(kPi * (x - 2.0) / 0.5));
+    }
+    vehicle.addTerrain(bump);
+    vehicle.setSpeed(5.0);
+    double peak = 0.0;
+    for (int k = 0; k < 1200; ++k) {
+      vehicle.step();
+      const Vector6 a = vehicle.hullAcceleration();
+      peak = std::max(peak, std::abs(a(2) - 0.5 * a(4)));
+    }
+    EXPECT_GT(peak, 1.0);
+    EXPECT_NEAR(vehicle.peakAcceleration(), peak, 1e-12 * peak);
+  }
+}
+
+// The road rate u' = v dh/dx where the sampler cannot take a centred slope: at the first covered
+// station (nothing behind it) the forward slope, and at the last station of a flat run, where the
+// rise ahead starts (a flat run's cached height must not hide it).
+TEST(RoadInputSampler, RateAtTheEdgeOfCoverageAndAtTheEndOfAFlatRun) {
+  Vector w(2);
+  terrain::TerrainBuffer ramp;
+  Matrix rising(2, 11);
+  for (int j = 0; j <= 10; ++j)
+    rising.col(j).setConstant(0.01 * j);  // 0.1 m/m from station 0
+  ramp.addPatch(0.0, 0.1, Eigen::Vector2d(-1.0, 1.0), rising);
+  RoadInputSampler at_edge(Vector::Zero(1), Vector::Zero(1));
+  at_edge.sample(ramp, 0.0, 4.0, 0.0, &w);
+  EXPECT_NEAR(w(1), 0.4, 1e-6);
+
+  terrain::TerrainBuffer flat_then_ramp;
+  Matrix heights(2, 101);
+  for (int j = 0; j <= 100; ++j)
+    heights.col(j).setConstant(j <= 50 ? 0.0 : 0.01 * (j - 50));  // flat to 5 m, then 0.1 m/m
+  flat_then_ramp.addPatch(0.0, 0.1, Eigen::Vector2d(-1.0, 1.0), heights);
+  RoadInputSampler sampler(Vector::Zero(1), Vector::Zero(1));
+  sampler.sample(flat_then_ramp, 2.0, 4.0, 0.0, &w);  // inside the flat run: u' = 0
+  EXPECT_EQ(w(1), 0.0);
+  sampler.sample(flat_then_ramp, 5.0, 4.0, 0.0, &w);  // its last station: the mean of 0 and 0.1
+  EXPECT_NEAR(w(1), 0.2, 1e-6);
 }
 
 TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {

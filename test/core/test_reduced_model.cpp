@@ -156,6 +156,88 @@ TEST(MatFile, TextIsStoredAsUtf16CodeUnitsCountedByUnit) {
   std::remove(path.c_str());
 }
 
+// What MATLAB, Octave and SciPy see (matio reads the file): an empty text is '' (0x0, as MATLAB
+// writes it), a list of texts an n x 1 cell.
+TEST(MatFile, EmptyTextAndTextListsHaveMatlabsShapes) {
+  const std::string path = tempPath("shapes.mat");
+  {
+    io::MatWriter out(path);
+    out.writeString("nothing", "");
+    out.writeStrings("names", {"a", "bb", "ccc"});
+    out.close();
+  }
+  mat_t* mat = Mat_Open(path.c_str(), MAT_ACC_RDONLY);
+  ASSERT_NE(mat, nullptr);
+  matvar_t* empty = Mat_VarReadInfo(mat, "nothing");
+  ASSERT_NE(empty, nullptr);
+  EXPECT_EQ(empty->dims[0], 0u);
+  EXPECT_EQ(empty->dims[1], 0u);
+  Mat_VarFree(empty);
+  matvar_t* names = Mat_VarReadInfo(mat, "names");
+  ASSERT_NE(names, nullptr);
+  EXPECT_EQ(names->class_type, MAT_C_CELL);
+  EXPECT_EQ(names->dims[0], 3u);
+  EXPECT_EQ(names->dims[1], 1u);
+  Mat_VarFree(names);
+  Mat_Close(mat);
+  std::remove(path.c_str());
+}
+
+// A MAT 5 file written on a big-endian machine (header "MI", every field byte-swapped) reads back.
+TEST(MatFile, BigEndianMat5FileReads) {
+  const auto be32 = [](std::string& s, std::uint32_t v) {
+    for (int i = 3; i >= 0; --i)
+      s.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+  };
+  std::string f(116, ' ');
+  std::memcpy(&f[0], "MATLAB 5.0 MAT-file, big-endian", 31);
+  f += std::string(8, '\0');        // subsystem data offset
+  f += std::string("\x01\x00", 2);  // version 0x0100, big-endian
+  f += "MI";
+  be32(f, 14);  // miMATRIX
+  be32(f, 64);
+  be32(f, 6);  // array flags: mxDOUBLE_CLASS
+  be32(f, 8);
+  be32(f, 6);
+  be32(f, 0);
+  be32(f, 5);  // dimensions 1 x 1
+  be32(f, 8);
+  be32(f, 1);
+  be32(f, 1);
+  be32(f, 1);  // name "a"
+  be32(f, 1);
+  f += std::string("a\0\0\0\0\0\0\0", 8);
+  be32(f, 9);  // miDOUBLE, 8 bytes
+  be32(f, 8);
+  const double value = 2.5;
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &value, 8);
+  for (int i = 7; i >= 0; --i)
+    f.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
+  const std::string path = tempPath("big_endian.mat");
+  std::ofstream(path, std::ios::binary) << f;
+  EXPECT_EQ(io::MatReader(path).readScalar("a"), 2.5);
+  std::remove(path.c_str());
+}
+
+// A MAT 5 file cut inside its last element, even by a few bytes of its data, is "truncated".
+TEST(MatFile, AFileCutByAFewBytesIsTruncated) {
+  const std::string path = tempPath("cut.mat");
+  {
+    io::MatWriter out(path, io::MatFormat::Mat5, false);
+    out.writeMatrix("A", Matrix::Ones(3, 3));
+    out.close();
+  }
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() - 4);
+  expectInputError([&] { io::MatReader(path).readMatrix("A"); }, "truncated");
+  std::remove(path.c_str());
+}
+
 INSTANTIATE_TEST_SUITE_P(Formats, MatFileTest,
                          testing::Values(io::MatFormat::Mat5, io::MatFormat::Mat73));
 
@@ -597,6 +679,18 @@ TEST_F(ReducedModelFileTest, GarbageMissingAndForeignFilesAreRefused) {
     out.close();
   }
   expectStale(path_, kHash, "checksum");
+}
+
+// Symmetry is judged against the matrix's size: round-off asymmetry of a stiff model (here
+// 1e-13 of its largest entry, far above any absolute bound for a K_R of ground ties at 2e10 N/m)
+// saves and loads; 1e-3 of it does not (below).
+TEST_F(ReducedModelFileTest, RoundOffAsymmetryIsJudgedAgainstTheMatrixSize) {
+  ReducedModel rounded = model_;
+  const double scale = rounded.system.stiffness.cwiseAbs().maxCoeff();
+  ASSERT_GT(1e-13 * scale, 1e-9) << "the test model must be stiff enough to tell";
+  rounded.system.stiffness(0, 1) += 1e-13 * scale;
+  ASSERT_NO_THROW(saveReducedModel(rounded, path_));
+  EXPECT_EQ(loadReducedModel(path_, kHash).system.stiffness(0, 1), rounded.system.stiffness(0, 1));
 }
 
 TEST_F(ReducedModelFileTest, InconsistentModelsAreNotSaved) {

@@ -536,4 +536,14 @@ TEST(DurationStatistics, PercentilesOfAKnownDistribution) {
   EXPECT_DOUBLE_EQ(stats.percentile(1.0), 1.0);
   stats.clear();
   EXPECT_EQ(stats.count(), 0u);
+  // A percentile is never below the samples it counts (a bin's upper edge, capped at the
+  // maximum), and falls in the bin of the sample that reaches it.
+  for (int i = 0; i < 100; ++i)
+    stats.add(2.5e-6);
+  EXPECT_EQ(stats.percentile(0.5), 2.5e-6);
+  stats.clear();
+  stats.add(1.5e-6);
+  stats.add(5.5e-6);
+  EXPECT_LE(stats.percentile(0.5), 2e-6);
+  EXPECT_GE(stats.percentile(0.5), 1.5e-6);
 }
