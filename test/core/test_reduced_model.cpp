@@ -215,7 +215,7 @@ TEST(MatFile, BigEndianMat5FileReads) {
   for (int i = 7; i >= 0; --i)
     f.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
   const std::string path = tempPath("big_endian.mat");
-  std::ofstream(path, std::ios::binary) << f;
+  writeBytes(path, f);
   EXPECT_EQ(io::MatReader(path).readScalar("a"), 2.5);
   std::remove(path.c_str());
 }
@@ -228,12 +228,8 @@ TEST(MatFile, AFileCutByAFewBytesIsTruncated) {
     out.writeMatrix("A", Matrix::Ones(3, 3));
     out.close();
   }
-  std::string bytes;
-  {
-    std::ifstream in(path, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() - 4);
+  const std::string bytes = readBytes(path);
+  writeBytes(path, bytes.substr(0, bytes.size() - 4));
   expectInputError([&] { io::MatReader(path).readMatrix("A"); }, "truncated");
   std::remove(path.c_str());
 }

@@ -225,14 +225,10 @@ struct NodeRun {
   std::string output;    // stdout and stderr
 };
 
-/// Runs vehicle_dynamics_node with `arguments` until it exits (at most `timeout` seconds). The
-/// node is the one beside this test executable (both in the devel space's lib/<package>; rosrun
-/// refuses to choose when several devel spaces hold the package).
-NodeRun runNode(const std::string& arguments, const std::string& timeout);
-NodeRun runNode(const std::string& arguments, int timeout) {
-  return runNode(arguments, std::to_string(timeout));
-}
-/// The same with timeout(1)'s own arguments, e.g. "--preserve-status -s INT 0.4".
+/// Runs vehicle_dynamics_node with `arguments` until it exits, under timeout(1) with `timeout`
+/// as its arguments (e.g. "-k 20 --preserve-status 60"; the int overload: that many seconds).
+/// The node is the one beside this test executable (both in the devel space's lib/<package>;
+/// rosrun refuses to choose when several devel spaces hold the package).
 NodeRun runNode(const std::string& arguments, const std::string& timeout) {
   const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
   const std::string node = self.substr(0, self.rfind('/') + 1) + "vehicle_dynamics_node";
@@ -251,6 +247,9 @@ NodeRun runNode(const std::string& arguments, const std::string& timeout) {
   if (WIFEXITED(status))
     run.exit_status = WEXITSTATUS(status);
   return run;
+}
+NodeRun runNode(const std::string& arguments, int timeout) {
+  return runNode(arguments, std::to_string(timeout));
 }
 
 /// Runs the node named `name` on the test's ~vehicle and ~cache_dir with `arguments` (more

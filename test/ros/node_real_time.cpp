@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <string>
 #include <tuple>
@@ -82,19 +83,12 @@ class Recorder {
   std::vector<ros::Time> comfort_stamps_;
 };
 
-/// Differences [s] between consecutive stamps from `from` on.
-template <typename Stamps>
-std::vector<double> intervals(const Stamps& stamps, const ros::Time& from) {
+/// Differences [s] between consecutive stamps (in order) from `from` on.
+std::vector<double> intervals(const std::vector<ros::Time>& stamps, const ros::Time& from) {
   std::vector<double> out;
-  const ros::Time* previous = nullptr;
-  for (const auto& entry : stamps) {
-    const ros::Time& t = entry;
-    if (t < from)
-      continue;
-    if (previous != nullptr)
-      out.push_back((t - *previous).toSec());
-    previous = &t;
-  }
+  const auto first = std::lower_bound(stamps.begin(), stamps.end(), from);
+  for (auto it = first; it != stamps.end() && std::next(it) != stamps.end(); ++it)
+    out.push_back((*std::next(it) - *it).toSec());
   return out;
 }
 std::vector<ros::Time> stampsOf(const std::map<ros::Time, Sample>& samples) {

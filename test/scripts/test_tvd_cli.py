@@ -53,6 +53,15 @@ def read_csv(path):
     return header, body
 
 
+def read_terrain_csv(path):
+    """A terrain CSV as `tvd terrain` writes it (comment lines, the header x,y_1,...,y_m, then
+    the station and the heights per row): (lateral positions, stations, heights)."""
+    with open(path) as f:
+        lines = [line.strip().split(",") for line in f if line.strip() and not line.startswith("#")]
+    rows = np.array(lines[1:], dtype=float)
+    return np.array(lines[0][1:], dtype=float), rows[:, 0], rows[:, 1:]
+
+
 def documented_checksum(path):
     """FNV-1a 64 over each variable before `checksum`, in file order, as
     doc/reduced_model_file.md defines it: name, kind (0 matrix, 1 text, 2 list of texts), then
@@ -1122,13 +1131,11 @@ class TvdCliTest(unittest.TestCase):
                 # std::mt19937_64 (its sequence fixed by the C++ standard) through the top 53
                 # bits, not from a library's distribution. Heights of seed 7 as first generated
                 # (2026-12-05); only libm's cos may move their last digits.
-                with open(road) as f:  # a comment line, the header, then x and the heights
-                    road_rows = np.array([line.split(",") for line in f.read().splitlines()
-                                          if line and not line.startswith(("#", "x"))], dtype=float)
+                _, stations, heights = read_terrain_csv(road)
                 for x, height in ((0.0, 0.028042333836760594), (20.0, 0.0009948818003772976),
                                   (60.0, -0.015191744029391458)):
-                    row = road_rows[np.argmin(np.abs(road_rows[:, 0] - x))]
-                    np.testing.assert_allclose(row[1:], height, rtol=1e-9, err_msg=f"x = {x} m")
+                    np.testing.assert_allclose(heights[np.argmin(np.abs(stations - x))], height,
+                                               rtol=1e-9, err_msg=f"x = {x} m")
             out = self.path(f"ride_{road_class}.csv")
             runs[road_class] = (self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant",
                                               "untracked", "--track", road, "--speed-kmh", "40",
@@ -1359,11 +1366,9 @@ class TvdCliTest(unittest.TestCase):
         road = self.path("spectral_road_C.csv")
         self.tvd("terrain", "--iso8608", "C", "--length", "600", "--spacing", "0.02", "--taper",
                  "0", "--seed", "3", "--out", road)
-        with open(road) as f:
-            lines = [line for line in f if not line.startswith("#")]
-        self.assertEqual(lines[0].strip(), "x,-2.5,2.5")  # one profile across the width
-        rows = np.loadtxt(lines[1:], delimiter=",")
-        x, h = rows[:, 0], rows[:, 1]
+        lateral, x, heights = read_terrain_csv(road)
+        self.assertEqual(list(lateral), [-2.5, 2.5])  # one profile across the width
+        h = heights[:, 0]
         sides = {}
         for side in ("left", "right"):
             path = sides[side] = self.path(f"spectral_road_{side}.csv")
@@ -2248,10 +2253,7 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(d["name"], "half_round:0.15")
         self.assertEqual((d["stations"], d["start_station_m"], d["end_station_m"]), (3001, 0, 30))
         self.assertEqual(d["min_height_m"], 0.0)
-        with open(track) as f:
-            lines = [line.strip().split(",") for line in f if not line.startswith("#")]
-        y_lines, rows = np.array(lines[0][1:], dtype=float), np.array(lines[1:], dtype=float)
-        stations, heights = rows[:, 0], rows[:, 1:]
+        y_lines, stations, heights = read_terrain_csv(track)
         self.assertEqual((y_lines[0], y_lines[-1]), (-2.5, 2.5))
         for j in range(1, heights.shape[1]):
             np.testing.assert_array_equal(heights[:, j], heights[:, 0])  # uniform across the width
@@ -2335,11 +2337,7 @@ class TvdCliTest(unittest.TestCase):
         # the difference to 1e-7 m; a wheel misplaced by 1 mm would differ by up to 1.6 mm.
         track, out = self.path("oop_road.csv"), self.path("oop_run.csv")
         self.tvd("terrain", "--track", "oop_waves", "--out", track)
-        with open(track) as f:
-            lines = [line for line in f if not line.startswith("#")]
-        y_lines = np.array(lines[0].strip().split(",")[1:], dtype=float)
-        grid = np.array([line.split(",") for line in lines[1:]], dtype=float)
-        stations, heights = grid[:, 0], grid[:, 1:]
+        y_lines, stations, heights = read_terrain_csv(track)
         self.tvd("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", track,
                  "--speed-kmh", "30", "--cache-dir", self.cache, "--out", out)
         header, rows = read_csv(out)
