@@ -294,6 +294,11 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                        const ReducedModelLoadOptions& options) {
   const std::string& where = in.path();
   // The checks of where the file comes from first: they give the most useful message.
+  // A file cut right after its 128-byte header reads as a valid MAT file holding nothing.
+  if (in.names().empty())
+    throw InputError(where +
+                     ": holds no variables (an empty MAT file, or one cut after its 128-byte "
+                     "header: an interrupted write?); run tvd reduce again");
   // A .mat of another command (tvd frf, statics, modes) lacks the model's marker altogether.
   if (!in.has("format_version"))
     throw InputError(where +

@@ -20,6 +20,11 @@ void checkIncreasing(const Vector& values, const std::string& what, const std::s
       throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " is " +
                        brief(values(i)) + ", not a finite number");
     }
+    if (!(std::abs(values(i)) <= kMaxTerrainCoordinate)) {
+      throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " is " +
+                       brief(values(i)) + " m, beyond +-" + brief(kMaxTerrainCoordinate) +
+                       " m (positions are in m: mm, or a datum far away?)");
+    }
     if (i > 0 && values(i) <= values(i - 1)) {
       throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " (" +
                        brief(values(i)) + " m) is not greater than " + what + " " +

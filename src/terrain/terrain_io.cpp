@@ -122,6 +122,10 @@ Terrain loadTerrainCsv(const std::string& path) {
                            std::to_string(row.cells.size()));
     }
     x(i) = reader.number(row, 0, "station");
+    if (!(std::abs(x(i)) <= kMaxTerrainCoordinate))
+      reader.fail(row, 0,
+                  "station " + brief(x(i)) + " m is beyond +-" + brief(kMaxTerrainCoordinate) +
+                      " m (stations are in m: mm, or a datum far away?)");
     if (i > 0 && x(i) == x(i - 1)) {
       reader.fail(row, "duplicate station x = " + brief(x(i)) + " m (also on row " +
                            std::to_string(rows[first_data + i - 1].line) + ")");

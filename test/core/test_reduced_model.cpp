@@ -617,6 +617,9 @@ TEST_F(ReducedModelFileTest, TruncatedFilesAreRefused) {
     writeBytes(path_, bytes.substr(0, static_cast<std::size_t>(fraction * bytes.size())));
     expectStale(path_, kHash, "truncated");
   }
+  // Cut right after the 128-byte header: a valid MAT file that holds nothing.
+  writeBytes(path_, bytes.substr(0, 128));
+  expectStale(path_, kHash, "holds no variables");
   writeBytes(path_, bytes.substr(0, 60));
   expectStale(path_, kHash, "not a MAT file");
 }

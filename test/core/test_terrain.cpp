@@ -420,6 +420,18 @@ TEST(Terrain, RejectsBadGrids) {
   expectInputError([&] { Terrain(x, y, Matrix::Zero(3, 3), "size"); },
                    {"heights are 3 x 3", "expected 2 lateral lines x 3 stations"});
   expectInputError([&] { Terrain(Vector(), y, Matrix::Zero(2, 0), "empty"); }, {"no stations"});
+  // Positions near the double range overflowed the track's length (x_end - x_start) to inf.
+  x << -1e308, 0.0, 1e308;
+  expectInputError([&] { Terrain(x, y, Matrix::Zero(2, 3), "far"); },
+                   {"terrain 'far'", "station 0 is -1e+308 m", "beyond +-1e+08 m"});
+  x << 0.0, 1.0, 2.0;
+  y << -2e8, 1.0;
+  expectInputError([&] { Terrain(x, y, Matrix::Zero(2, 3), "wide"); },
+                   {"lateral line 0 is -2e+08 m", "beyond +-1e+08 m"});
+  // The bound itself, and a UTM northing as a station datum, are accepted.
+  y << -1.0, 1e8;
+  x << 5.3e6, 5.3e6 + 1.0, 5.3e6 + 2.0;
+  EXPECT_EQ(Terrain(x, y, Matrix::Zero(2, 3), "utm").height(5.3e6 + 1.0, 0.0), 0.0);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -985,6 +997,7 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
       {"x,-1,1\n0,0,0\n1,nan,0\n", {"row 3, column 2", "height 'nan' is not a finite number"}},
       {"x,-1,1\n0,0,0\ninf,0,0\n", {"row 3, column 1", "station 'inf' is not a finite number"}},
       {"x,-1,1\n0,0,0\n1,0,1e30\n", {"row 3, column 3", "height 1e+30 m is beyond +-10000 m"}},
+      {"x,-1,1\n0,0,0\n1e300,0,0\n", {"row 3, column 1", "station 1e+300 m is beyond +-1e+08 m"}},
       {std::string("x,-1,1\n0,0,0\n1,0\0,0\n", 21),
        {"row 3, column 2", "height '0\\x00' is not a number"}},
       {"x,-1,1\n0,0,0\n1,0,0\n1,0,0\n", {"row 4", "duplicate station x = 1 m (also on row 3)"}},

@@ -20,13 +20,17 @@ namespace terrain {
 /// Heights beyond +-10 km (above any road's altitude) are a unit or format mistake; left in, they
 /// reached the ride metrics as overflowed accelerations [m].
 constexpr double kMaxTerrainHeight = 1e4;
+/// Stations and lateral positions beyond +-1e8 m (100,000 km, more than twice round the Earth)
+/// are a mistake too; near the double range they overflowed the track's length to inf [m].
+constexpr double kMaxTerrainCoordinate = 1e8;
 
 class Terrain {
  public:
   /// stations [n_x] strictly increasing [m]; lateral [n_y] strictly increasing [m];
   /// heights [n_y x n_x] [m], row j is the longitudinal profile at y = lateral(j).
   /// Throws InputError (naming the offending index) for empty or mismatched sizes, non-finite
-  /// values, duplicate or decreasing stations or lateral positions.
+  /// values, duplicate or decreasing stations or lateral positions, heights beyond
+  /// kMaxTerrainHeight, stations or lateral positions beyond kMaxTerrainCoordinate.
   Terrain(Vector stations, Vector lateral, Matrix heights, std::string name = "terrain");
 
   /// Height at station x [m], lateral position y [m] -> [m]. NaN in either gives NaN.
