@@ -17,7 +17,9 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
+#include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 #include "vehicle_analysis.h"
+#include "wheel_rate_report.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -208,6 +210,7 @@ void runVehicle(const ModesOptions& opt) {
         .field("relative_balance_error", a.statics.balanceError())
         .field("road_wheel_loads_n", a.statics.wheel_loads)
         .endObject();
+    writeWheelRateEstimate(json, vehicle::wheelRateEstimate(description, variant));
     json.endObject();
     return;
   }
@@ -218,7 +221,8 @@ void runVehicle(const ModesOptions& opt) {
             << -a.statics.hull_sag * 1000.0 << " mm (z " << a.statics.hull_sag * 1000.0
             << " mm), pitch " << a.statics.hull_pitch * kRadToDegree << " deg; ground reactions "
             << std::setprecision(1) << a.statics.ground_reaction << " N = weight "
-            << a.statics.weight << " N\n";
+            << a.statics.weight << " N\n"
+            << wheelRateEstimateText(vehicle::wheelRateEstimate(description, variant)) << "\n";
 }
 
 }  // namespace

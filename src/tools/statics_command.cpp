@@ -19,7 +19,9 @@
 #include "tracked_vehicle_dynamics/vehicle/contact_statics.h"
 #include "tracked_vehicle_dynamics/vehicle/ground_pressure.h"
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+#include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 #include "vehicle_analysis.h"
+#include "wheel_rate_report.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -73,6 +75,13 @@ void run(const StaticsOptions& opt) {
   const fem::System& system = contact.system;
   const vehicle::StaticSummary& s = contact.summary;
   std::vector<std::string> warnings = vehicle::staticWarnings(s, description);
+  const vehicle::WheelRateEstimate estimate = vehicle::wheelRateEstimate(description, variant);
+  // At rest only: under --accel the sag is the load case's, not the suspension's.
+  if (opt.accel == 0.0) {
+    const std::string carried = vehicle::sagShareWarning(s, description, variant);
+    if (!carried.empty())
+      warnings.push_back(carried);
+  }
   // A road wheel off the track at rest is a vehicle that does not stand on its wheels (a centre
   // of gravity far off the wheelbase, a chain stiff enough to carry the hull): said, not only
   // counted. Under --accel lifting wheels are the expected result.
@@ -153,6 +162,7 @@ void run(const StaticsOptions& opt) {
         .field("active_dofs", static_cast<long long>(system.size()))
         .field("mass_kg", model.model.totalMass());
     writeMassBreakdown(json, model.layout.mass);
+    writeWheelRateEstimate(json, estimate);
     json.field("weight_n", s.weight)
         .field("hull_sag_m", s.hull_sag)
         .field("hull_pitch_deg", s.hull_pitch * kRadToDegree)
@@ -274,7 +284,8 @@ void run(const StaticsOptions& opt) {
       << -s.hull_sag * 1e3 << " mm (z " << s.hull_sag * 1e3 << " mm), pitch "
       << std::setprecision(4) << printed(s.hull_pitch * kRadToDegree, 4)
       << " deg (nose down +), roll " << printed(s.hull_roll * kRadToDegree, 4)
-      << " deg (left up +)\n\n"
+      << " deg (left up +)\n"
+      << wheelRateEstimateText(estimate) << "\n\n"
       << "road wheels: normal force on the track [kN] (negative: pulling on it, would lift off);\n"
       << "the largest assembly pressure within half an axle spacing [kPa]\n"
       << "  wheel                   x [m]   load [kN]   peak pressure under it [kPa]\n";

@@ -3,6 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -32,7 +36,11 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
 
   const auto t1 = Clock::now();
   a.statics = vehicle::computeStaticSummary(a.vehicle, a.system);
-  for (const std::string& w : vehicle::staticWarnings(a.statics, description))
+  std::vector<std::string> warnings = vehicle::staticWarnings(a.statics, description);
+  const std::string carried = vehicle::sagShareWarning(a.statics, description, variant);
+  if (!carried.empty())
+    warnings.push_back(carried);
+  for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";
   a.statics_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
 
@@ -43,6 +51,10 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   if (!missed.empty())
     std::cerr << "tvd: warning: " << missed << "\n";
   a.classes = vehicle::classifyModes(a.vehicle, a.system, a.modes);
+  const std::string stiff =
+      vehicle::bounceWarning(description, variant, a.classes, a.modes.frequencies_hz);
+  if (!stiff.empty())
+    std::cerr << "tvd: warning: " << stiff << "\n";
   return a;
 }
 

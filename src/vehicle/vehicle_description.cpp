@@ -26,6 +26,9 @@ constexpr double kLengthTolerance = 1e-3;
 /// No value of a vehicle comes near 1e15 in SI (the stiffest, k_w, is 2e10 N/m); beyond it a value
 /// is a typo, and 1e300 kg once overflowed the statics into -4.8e293 m of sag.
 constexpr double kImplausible = 1e15;
+/// The one optional scalar of the description (suspension.guide_stiffness), outside the table of
+/// required fields.
+constexpr const char* kGuideStiffnessKey = "guide_stiffness";
 
 enum class Kind { Real, Integer, RealList, IntegerList, Angle };
 // PoissonRatio: (-1, 0.5], outside which an isotropic material has a negative or infinite bulk
@@ -312,6 +315,12 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     }
   }
 
+  if (d.suspension.guide_stiffness) {
+    const double x = *d.suspension.guide_stiffness;
+    c.require(std::isfinite(x) && x >= 0.0 && x <= kImplausible,
+              std::string("suspension.") + kGuideStiffnessKey,
+              "value " + brief(x) + " is out of range or not finite");
+  }
   const auto& t = d.track_assembly;
   const auto& g = d.running_gear;
   c.require(t.ground_count <= t.count, "track_assembly.ground_count",
@@ -567,14 +576,26 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
         keys.insert(f.key);
     const bool damping = std::string(section_name) == "damping";
     const bool ties = std::string(section_name) == "ties";
+    const bool suspension = std::string(section_name) == "suspension";
     if (damping)
       keys.insert("model");
     if (ties)
       keys.insert("road_input_station");
+    if (suspension)
+      keys.insert(kGuideStiffnessKey);
     expectKeys(section, keys);
     for (const Field& f : fields)
       if (std::string(f.section) == section_name)
         readField(section, f, d.sources);
+    // Optional (descriptions written before it keep their meaning and their hash).
+    if (suspension && section.has(kGuideStiffnessKey)) {
+      double value = 0.0;
+      readField(
+          section,
+          Field{"suspension", kGuideStiffnessKey, "N/m", Kind::Real, Range::NonNegative, &value},
+          d.sources);
+      d.suspension.guide_stiffness = value;
+    }
     if (damping)
       d.damping.model = readChoice<DampingModel>(
           section["model"], "damping model",
@@ -653,6 +674,10 @@ std::string canonicalDescription(const VehicleDescription& d) {
     }
     out << "\n";
   }
+  // Only when given: a description without it hashes as before the key existed.
+  if (d.suspension.guide_stiffness)
+    out << "suspension." << kGuideStiffnessKey << "=" << format(*d.suspension.guide_stiffness)
+        << "\n";
   out << "damping.model=" << dampingModelName(d.damping.model) << "\n";
   out << "ties.road_input_station=" << roadInputStationName(d.ties.road_input_station) << "\n";
   for (const NamedPoint& p : d.named_points)

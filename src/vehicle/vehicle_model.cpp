@@ -340,8 +340,9 @@ class Builder {
   }
 
   // Road wheel on its assembly: the wheel is rigid with its arm (no spin DOF), so the contact
-  // patch carries the normal force (k_w) and the longitudinal force; the lateral force passes
-  // through the guide horn, which touches the wheels' rims above the link's upper surface.
+  // patch carries the normal force (k_w) and the longitudinal force (contact_shear_stiffness:
+  // locked when high, rolling when low); the lateral force passes through the guide horn, which
+  // touches the wheels' rims above the link's upper surface (guideStiffness()).
   void tieWheel(WheelStation& st, int assembly) {
     const auto& s = d_.suspension;
     st.assembly = assembly;
@@ -354,8 +355,8 @@ class Builder {
                st.name + "/contact");
     st.contact_spring = model().springs.size() - 1;
     addContact(st.centre, stationNode(st.side, st.axle, 5), stationNode(st.side, st.axle, 6), a,
-               patch + s.guide_contact_height * Vector3::UnitZ(), frame, 0.0,
-               s.contact_shear_stiffness, 0.0, st.name + "/guide");
+               patch + s.guide_contact_height * Vector3::UnitZ(), frame, 0.0, guideStiffness(s),
+               0.0, st.name + "/guide");
   }
 
   // Paper Fig. 2a: each road wheel stands on one assembly, centred under it.
@@ -419,7 +420,8 @@ class Builder {
         const double sk = (k + 0.5) * t.pitch;
         const AssemblyRecord& a = layout().assemblies[index[k]];
         const Matrix3 frame = frameAt(path.at(sk).position, path.at(sk).tangent, y, 0).axes;
-        const double kc = s.contact_stiffness, ks = s.contact_shear_stiffness;
+        // Across the chain: the guide stiffness (the teeth hold the pins along it with k_w).
+        const double kc = s.contact_stiffness, ks = guideStiffness(s);
         const NodeId base = a.nodes.base;
         const std::string tag = std::string(sideName(side)) + "_" + std::to_string(k);
         if (sk >= sprocket_arc.first && sk < sprocket_arc.second) {
@@ -457,8 +459,7 @@ class Builder {
         const Matrix3 frame = frameAt(path.at(sb).position, path.at(sb).tangent, y, 0).axes;
         const AssemblyRecord& a = layout().assemblies[index[best]];
         addContact(roller, a.nodes.base + kWheelContact, a.nodes.base + kLinkContact, a,
-                   upperSurface(a, frame, 0.0), frame, 0.0, s.contact_shear_stiffness,
-                   s.contact_stiffness,
+                   upperSurface(a, frame, 0.0), frame, 0.0, guideStiffness(s), s.contact_stiffness,
                    std::string("return_roller_") + sideName(side) + "_" + std::to_string(r));
         recordChainWheelContact(ChainWheel::ReturnRoller, side, static_cast<int>(r), index[best]);
       }

@@ -199,6 +199,66 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(stored, sorted(m))
         np.testing.assert_allclose(np.ravel(m[stored[0]])[:count], f, rtol=1e-9)
 
+    def test_hand_estimate_beside_the_model_and_its_warnings(self):
+        """modes and statics give the hull on its torsion bars alone (wheel rate k_t / (a cos b)^2
+        in series with the pads' k_z, n wheels, the hull and what is rigid with it) in the closed
+        form recomputed here from the description, and warn when the model is far stiffer: never
+        on the bundled vehicle, on the light fixture (the paper's chain and locked wheels on a
+        10 t vehicle) both ways, and no longer for its rolling wheels guided laterally."""
+        with open(VEHICLE) as f:
+            v = yaml.safe_load(f)
+        value = lambda section, key: float(v[section][key]["value"])
+        lever = value("suspension", "arm_length") * np.cos(np.radians(value("suspension", "arm_angle")))
+        rate = value("suspension", "torsion_bar_stiffness") / lever ** 2
+        kz = value("track_assembly", "compression_stiffness")
+        series = rate * kz / (rate + kz)
+        wheels = 2 * int(value("running_gear", "axle_count"))
+        for variant, mass in (("untracked", value("hull", "mass")),
+                              ("tracked", value("hull", "mass") + 2 * (
+                                  value("sprocket", "mass") + value("idler", "mass")))):
+            modes = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", variant, "--count", "6")
+            statics = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", variant)
+            for e in (modes["wheel_rate_estimate"], statics["wheel_rate_estimate"]):
+                self.assertAlmostEqual(e["wheel_rate_n_m"] / rate, 1.0, delta=1e-9)  # JSON: 10 digits
+                self.assertAlmostEqual(e["series_rate_n_m"] / series, 1.0, delta=1e-9)
+                self.assertEqual((e["road_wheels"], e["sprung_mass_kg"]), (wheels, mass))
+                self.assertAlmostEqual(e["sag_m"] / (mass * GRAVITY / (wheels * series)), 1.0,
+                                       delta=1e-9)
+                self.assertAlmostEqual(
+                    e["bounce_hz"] / (np.sqrt(wheels * series / mass) / (2 * np.pi)), 1.0,
+                    delta=1e-9)
+            self.assertFalse([w for w in statics["warnings"] if "torsion bars" in w], statics)
+            e = modes["wheel_rate_estimate"]
+            text = self.tvd("modes", "--vehicle", VEHICLE, "--variant", variant, "--count", "6")
+            self.assertIn(f"torsion bars and pads alone (hand estimate): sag {e['sag_m'] * 1e3:.1f} "
+                          f"mm, bounce {e['bounce_hz']:.2f} Hz", text.stdout)
+            self.assertNotIn("torsion bars", text.stderr)
+        self.assertAlmostEqual(modes["wheel_rate_estimate"]["sag_m"], 0.0162, delta=5e-5)
+
+        light = self.tvd_json("statics", "--vehicle", OWN_VEHICLE, "--variant", "tracked")
+        carried = [w for w in light["warnings"] if "less than a fifth" in w]
+        self.assertEqual(len(carried), 1, light["warnings"])
+        self.assertIn("track_assembly.link_member_bending_inertia", carried[0])
+        r = self.tvd("modes", "--vehicle", OWN_VEHICLE, "--variant", "untracked", "--count", "8")
+        self.assertIn("tvd: warning: the hull's bounce (mode ", r.stderr)
+        self.assertIn("suspension.contact_shear_stiffness 2e+10 N/m", r.stderr)
+        with open(OWN_VEHICLE) as f:
+            text = f.read()
+        start = text.index("  contact_shear_stiffness:")
+        end = text.index("  guide_contact_height:")
+        rolling = self.path("light_rolling.yaml")
+        with open(rolling, "w") as f:
+            f.write(text[:start] +
+                    '  contact_shear_stiffness: {value: 1e4, unit: N/m, source: "rolling"}\n'
+                    '  guide_stiffness: {value: 2e10, unit: N/m, source: "guide horns"}\n' +
+                    text[end:])
+        r = self.tvd("modes", "--vehicle", rolling, "--variant", "untracked", "--count", "8",
+                     "--json")
+        self.assertNotIn("torsion bars", r.stderr)
+        d = json.loads(r.stdout)
+        bounce = d["frequencies_hz"][d["mode_types"].index("bounce")]
+        self.assertAlmostEqual(bounce / d["wheel_rate_estimate"]["bounce_hz"], 1.0, delta=0.1)
+
     def test_statics_loads_match_modes_and_files(self):
         """tvd statics: the same equilibrium as `modes`, wheel and ground loads that balance the
         weight, the per-assembly CSV/.mat equal to the JSON, and the closed-form NGP."""

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,12 +55,24 @@ struct SuspensionDescription {
   double arm_length = 0.58;              ///< a, pivot to wheel centre [m]
   /// beta, static arm angle, pivot above the wheel centre [rad]
   double arm_angle = 9.0 * (kPi / 180.0);
-  double pivot_y = 0.98;                  ///< |y| of the pivots (hull side walls) [m]
-  double contact_stiffness = 2e10;        ///< k_w, normal to the track [N/m]
-  double contact_shear_stiffness = 2e10;  ///< along (patch) and across (guide horn) [N/m]
-  double guide_contact_height = 0.09;     ///< guide horn-rim contact above the link surface [m]
-  double arm_damping = 0.0;               ///< rotary damper at each damped station [N m s/rad]
+  double pivot_y = 0.98;            ///< |y| of the pivots (hull side walls) [m]
+  double contact_stiffness = 2e10;  ///< k_w, normal to the track [N/m]
+  /// Along the chain at each road wheel's contact patch [N/m]: the wheel has no spin DOF, so
+  /// this is a locked wheel when high, a rolling one when low.
+  double contact_shear_stiffness = 2e10;
+  /// Across the chain [N/m]: the guide horns against the road wheels' rims, and the sprockets',
+  /// idlers' and rollers' lateral hold on the links. Optional in a description file
+  /// (suspension.guide_stiffness); unset, it is contact_shear_stiffness (guideStiffness()), so a
+  /// rolling wheel (low contact_shear_stiffness) can keep its lateral guidance.
+  std::optional<double> guide_stiffness;
+  double guide_contact_height = 0.09;  ///< guide horn-rim contact above the link surface [m]
+  double arm_damping = 0.0;            ///< rotary damper at each damped station [N m s/rad]
 };
+
+/// The lateral stiffness the model uses: guide_stiffness when given, else contact_shear_stiffness.
+inline double guideStiffness(const SuspensionDescription& s) {
+  return s.guide_stiffness.value_or(s.contact_shear_stiffness);
+}
 
 /// The track assembly (link, two pins, two pads) and the chain it forms.
 struct TrackAssemblyDescription {

@@ -1,0 +1,108 @@
+#include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace vehicle {
+namespace {
+
+std::string fixed(double value, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
+  return buffer;
+}
+
+// "the hull (30,300 kg) on its 14 road wheels' torsion bars and pads alone (wheel rate
+// k_t / (a cos beta)^2 = 1.58e+06 N/m in series with track_assembly.compression_stiffness
+// 1.9e+07 N/m)": the estimate, said once for both warnings.
+std::string estimateText(const WheelRateEstimate& e, Variant variant) {
+  return std::string("the hull") + (variant == Variant::Tracked ? " with its chain wheels" : "") +
+         " (" + brief(e.sprung_mass) + " kg) on its " + std::to_string(e.wheels) +
+         " road wheels' torsion bars and pads alone (wheel rate k_t / (a cos beta)^2 = " +
+         brief(e.wheel_rate) +
+         " N/m, in series with track_assembly.compression_stiffness: " + brief(e.series_rate) +
+         " N/m per wheel)";
+}
+
+// What carries the hull besides its suspension, and where the docs say how to fit it.
+std::string carriersText(const VehicleDescription& d, Variant variant) {
+  const std::string ties =
+      "the road wheels locked to their links fore and aft "
+      "(suspension.contact_shear_stiffness " +
+      brief(d.suspension.contact_shear_stiffness) +
+      " N/m: each arm drags its contact patch against the pads' shear as "
+      "it turns; a rolling wheel is free there, suspension.guide_stiffness "
+      "keeping its lateral guidance)";
+  if (variant == Variant::Untracked)
+    return "it is stiffened by " + ties +
+           "; doc/vehicle_model.md, \"The un-tracked bounce against a hand estimate\"";
+  return "the chain's bending (track_assembly.link_member_bending_inertia " +
+         brief(d.track_assembly.link_member_bending_inertia) + " m^4) or " + ties +
+         " carry the hull; values fitted to the paper's 55 t vehicle rarely suit another: fit "
+         "them to yours (doc/vehicle_model.md, \"Tuning\")";
+}
+
+}  // namespace
+
+WheelRateEstimate wheelRateEstimate(const VehicleDescription& d, Variant variant) {
+  WheelRateEstimate e;
+  const SuspensionDescription& s = d.suspension;
+  const double lever = s.arm_length * std::cos(s.arm_angle);
+  e.wheel_rate = s.torsion_bar_stiffness / (lever * lever);
+  const double kz = d.track_assembly.compression_stiffness;
+  e.series_rate = e.wheel_rate * kz / (e.wheel_rate + kz);
+  e.wheels = 2 * d.running_gear.axle_count;
+  e.sprung_mass = d.hull.mass;
+  if (variant == Variant::Tracked)
+    e.sprung_mass += 2.0 * (d.sprocket.mass + d.idler.mass +
+                            static_cast<double>(d.return_rollers.x.size()) * d.return_rollers.mass);
+  const double n_k = e.wheels * e.series_rate;
+  e.sag = e.sprung_mass * kStandardGravity / n_k;
+  e.bounce_hz = std::sqrt(n_k / e.sprung_mass) / (2.0 * kPi);
+  return e;
+}
+
+std::string sagShareWarning(const StaticSummary& summary, const VehicleDescription& description,
+                            Variant variant) {
+  const WheelRateEstimate e = wheelRateEstimate(description, variant);
+  const double sag = -summary.hull_sag;  // positive down, as e.sag
+  if (sag >= kMinSagShare * e.sag)
+    return "";
+  const std::string what =
+      sag < 0.0
+          ? "the hull rises " + fixed(-sag * 1e3, 2) + " mm under its own weight"
+          : "the hull sags " + fixed(sag * 1e3, 2) + " mm under its weight, less than a fifth of";
+  return what + (sag < 0.0 ? ", where " : " ") + "the " + fixed(e.sag * 1e3, 1) + " mm of " +
+         estimateText(e, variant) + (sag < 0.0 ? " would sag" : "") + ": " +
+         carriersText(description, variant);
+}
+
+std::string bounceWarning(const VehicleDescription& description, Variant variant,
+                          const std::vector<ModeClass>& classes, const Vector& frequencies_hz) {
+  for (std::size_t i = 0;
+       i < classes.size() && static_cast<Eigen::Index>(i) < frequencies_hz.size(); ++i) {
+    const ModeClass& c = classes[i];
+    if (c.kind != ModeKind::Hull || c.hull_motions.empty() ||
+        c.hull_motions.front() != HullMotion::Bounce)
+      continue;
+    const WheelRateEstimate e = wheelRateEstimate(description, variant);
+    const double f = frequencies_hz(static_cast<Eigen::Index>(i));
+    const double ratio = f / e.bounce_hz;
+    const double limit =
+        variant == Variant::Tracked ? kMaxTrackedBounceRatio : kMaxUntrackedBounceRatio;
+    if (ratio <= limit)
+      return "";
+    return "the hull's bounce (mode " + std::to_string(i + 1) + ", " + fixed(f, 2) + " Hz) is " +
+           fixed(ratio, 1) + " times the " + fixed(e.bounce_hz, 2) + " Hz of " +
+           estimateText(e, variant) + "; beyond " + brief(limit) +
+           " times (the paper's vehicle: " + (variant == Variant::Tracked ? "2.0" : "1.2") +
+           ") it is not the torsion bars that hold the hull: " + carriersText(description, variant);
+  }
+  return "";
+}
+
+}  // namespace vehicle
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,274 @@
+// The hand estimate of the hull on its torsion bars (vehicle/wheel_rate_estimate.h), the
+// warnings that compare the model with it, and suspension.guide_stiffness, which lets a rolling
+// road wheel (low contact_shear_stiffness) keep its lateral guidance.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "expect_input_error.h"
+#include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
+#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
+#include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+#include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
+
+#ifndef TVD_SOURCE_DIR
+#define TVD_SOURCE_DIR "."
+#endif
+
+namespace tvd = tracked_vehicle_dynamics;
+namespace veh = tracked_vehicle_dynamics::vehicle;
+using tracked_vehicle_dynamics::expectInputError;
+
+namespace {
+
+const std::string kPaperFile = std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
+const std::string kLightFile = std::string(TVD_SOURCE_DIR) + "/test/data/light_5_axle.yaml";
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// The paper's description with `line` added after the suspension's contact_shear_stiffness entry.
+std::string withSuspensionLine(const std::string& line) {
+  std::string text = readFile(kPaperFile);
+  const std::size_t key = text.find("  contact_shear_stiffness:");
+  const std::size_t next = text.find("  guide_contact_height:", key);
+  EXPECT_NE(key, std::string::npos);
+  EXPECT_NE(next, std::string::npos);
+  text.insert(next, line + "\n");
+  return text;
+}
+
+struct Solved {
+  veh::VehicleModel vehicle;
+  tvd::fem::System system;
+  tvd::fem::ModalBasis basis;
+  std::vector<veh::ModeClass> classes;
+};
+
+Solved solve(const veh::VehicleDescription& d, veh::Variant variant, int count) {
+  Solved s;
+  s.vehicle = veh::buildVehicleModel(d, variant);
+  s.system = tvd::fem::assemble(s.vehicle.model);
+  tvd::fem::ModalRequest request;
+  request.count = count;
+  s.basis = tvd::fem::solveModes(s.system.stiffness, s.system.mass, request);
+  s.classes = veh::classifyModes(s.vehicle, s.system, s.basis);
+  return s;
+}
+
+// The frequency of the lowest mode whose main hull motion is `motion` (NaN if none).
+double lowest(const Solved& s, veh::HullMotion motion) {
+  for (std::size_t i = 0; i < s.classes.size(); ++i)
+    if (s.classes[i].kind == veh::ModeKind::Hull && s.classes[i].hull_motions.front() == motion)
+      return s.basis.frequencies_hz(static_cast<Eigen::Index>(i));
+  return std::nan("");
+}
+
+veh::ModeClass hullMode(std::vector<veh::HullMotion> motions) {
+  veh::ModeClass c;
+  c.kind = veh::ModeKind::Hull;
+  c.hull_motions = std::move(motions);
+  return c;
+}
+
+}  // namespace
+
+// k_r = k_t / (a cos beta)^2 in series with k_z; sag m g / (n k_s), bounce sqrt(n k_s / m) / 2 pi.
+TEST(WheelRateEstimate, ClosedFormOnThePaperVehicle) {
+  const veh::VehicleDescription d;
+  const veh::WheelRateEstimate u = veh::wheelRateEstimate(d, veh::Variant::Untracked);
+  const double lever = 0.58 * std::cos(9.0 * tvd::kPi / 180.0);
+  const double kr = 5.2e5 / (lever * lever);
+  EXPECT_NEAR(u.wheel_rate / kr, 1.0, 1e-12);
+  EXPECT_NEAR(u.wheel_rate, 1.5846e6, 100.0);  // the doc's 1.58e6 N/m
+  const double ks = 1.0 / (1.0 / kr + 1.0 / 1.895e7);
+  EXPECT_NEAR(u.series_rate / ks, 1.0, 1e-12);
+  EXPECT_EQ(u.wheels, 14);
+  EXPECT_EQ(u.sprung_mass, 30300.0);
+  EXPECT_NEAR(u.sag / (30300.0 * tvd::kStandardGravity / (14.0 * ks)), 1.0, 1e-12);
+  EXPECT_NEAR(u.bounce_hz / (std::sqrt(14.0 * ks / 30300.0) / (2.0 * tvd::kPi)), 1.0, 1e-12);
+  EXPECT_NEAR(u.bounce_hz, 4.14, 0.005);  // doc/vehicle_model.md
+  // Tracked: the sprockets and idlers are rigid with the hull and ride on the same springs.
+  const veh::WheelRateEstimate t = veh::wheelRateEstimate(d, veh::Variant::Tracked);
+  EXPECT_EQ(t.sprung_mass, 30300.0 + 2.0 * (d.sprocket.mass + d.idler.mass));
+  EXPECT_NEAR(t.sag / u.sag, t.sprung_mass / u.sprung_mass, 1e-12);
+  EXPECT_NEAR(t.bounce_hz / u.bounce_hz, std::sqrt(u.sprung_mass / t.sprung_mass), 1e-12);
+}
+
+// The un-tracked model under a load through the CoG turns every arm alike: its sag is the
+// estimate's (the wheels' tie drags no patch against another), within the CoG's small offset.
+TEST(WheelRateEstimate, TheUntrackedSagIsTheEstimatesAndThePaperVehicleIsNotWarnedAbout) {
+  const veh::VehicleDescription d;
+  for (const veh::Variant v : {veh::Variant::Untracked, veh::Variant::Tracked}) {
+    const veh::VehicleModel model = veh::buildVehicleModel(d, v);
+    const tvd::fem::System system = tvd::fem::assemble(model.model);
+    const veh::StaticSummary s = veh::computeStaticSummary(model, system);
+    const veh::WheelRateEstimate e = veh::wheelRateEstimate(d, v);
+    if (v == veh::Variant::Untracked)
+      EXPECT_NEAR(-s.hull_sag / e.sag, 1.0, 0.07) << s.hull_sag;  // 15.3 mm against 14.5
+    else
+      EXPECT_GT(-s.hull_sag / e.sag, veh::kMinSagShare);  // 4.5 mm against 16.2: 0.28
+    EXPECT_EQ(veh::sagShareWarning(s, d, v), "");
+  }
+}
+
+// The light fixture holds the paper's chain bending and locked wheels on a 10 t vehicle: the
+// chain carries its hull (1.2 mm of sag against 39.5 mm), and the locked wheels stiffen its
+// un-tracked bounce 2.7 times. Both are said, naming the keys to fit.
+TEST(WheelRateEstimate, ACopiedChainAndLockedWheelsOnALightVehicleAreNamed) {
+  const veh::VehicleDescription d = veh::loadVehicleDescription(kLightFile);
+  const Solved tracked = solve(d, veh::Variant::Tracked, 20);
+  const veh::StaticSummary s = veh::computeStaticSummary(tracked.vehicle, tracked.system);
+  const std::string sag = veh::sagShareWarning(s, d, veh::Variant::Tracked);
+  for (const char* part : {"the hull sags 1.", "less than a fifth of the 39.5 mm",
+                           "track_assembly.link_member_bending_inertia 1.1e-08 m^4",
+                           "suspension.contact_shear_stiffness 2e+10 N/m", "\"Tuning\""})
+    EXPECT_TRUE(contains(sag, part)) << part << "\n" << sag;
+  const std::string bounce =
+      veh::bounceWarning(d, veh::Variant::Tracked, tracked.classes, tracked.basis.frequencies_hz);
+  EXPECT_TRUE(contains(bounce, "the hull's bounce (mode ")) << bounce;
+  EXPECT_TRUE(contains(bounce, "beyond 2.5 times")) << bounce;
+
+  const Solved untracked = solve(d, veh::Variant::Untracked, 12);
+  const double f = lowest(untracked, veh::HullMotion::Bounce);
+  const veh::WheelRateEstimate e = veh::wheelRateEstimate(d, veh::Variant::Untracked);
+  EXPECT_GT(f / e.bounce_hz, 2.5) << f;  // 7.0 Hz against 2.6
+  const std::string u = veh::bounceWarning(d, veh::Variant::Untracked, untracked.classes,
+                                           untracked.basis.frequencies_hz);
+  for (const char* part : {"times the 2.60 Hz of the hull (9500 kg) on its 10 road wheels'",
+                           "beyond 1.5 times (the paper's vehicle: 1.2)",
+                           "suspension.contact_shear_stiffness 2e+10 N/m",
+                           "\"The un-tracked bounce against a hand estimate\""})
+    EXPECT_TRUE(contains(u, part)) << part << "\n" << u;
+  EXPECT_FALSE(contains(u, "link_member_bending_inertia")) << u;  // no chain un-tracked
+}
+
+// The limits, exactly: at and just below them nothing is said; just beyond, the warning.
+TEST(WheelRateEstimate, WarningsStartJustBeyondTheirLimits) {
+  const veh::VehicleDescription d;
+  for (const veh::Variant v : {veh::Variant::Untracked, veh::Variant::Tracked}) {
+    const veh::WheelRateEstimate e = veh::wheelRateEstimate(d, v);
+    const double limit =
+        v == veh::Variant::Tracked ? veh::kMaxTrackedBounceRatio : veh::kMaxUntrackedBounceRatio;
+    veh::ModeClass chain;  // a track mode first: the bounce mode is the second
+    const std::vector<veh::ModeClass> classes = {chain, hullMode({veh::HullMotion::Bounce})};
+    tvd::Vector f(2);
+    f << 0.5, limit * e.bounce_hz;
+    EXPECT_EQ(veh::bounceWarning(d, v, classes, f), "");
+    f(1) = 1.01 * limit * e.bounce_hz;
+    EXPECT_TRUE(contains(veh::bounceWarning(d, v, classes, f), "(mode 2, "));
+    // A pitch mode that bounces too is not the bounce mode; without one nothing is judged.
+    EXPECT_EQ(veh::bounceWarning(
+                  d, v, {chain, hullMode({veh::HullMotion::Pitch, veh::HullMotion::Bounce})}, f),
+              "");
+    EXPECT_EQ(veh::bounceWarning(d, v, {}, tvd::Vector()), "");
+
+    veh::StaticSummary s;
+    s.hull_sag = -veh::kMinSagShare * e.sag;
+    EXPECT_EQ(veh::sagShareWarning(s, d, v), "");
+    s.hull_sag *= 0.99;
+    EXPECT_TRUE(contains(veh::sagShareWarning(s, d, v), "less than a fifth"));
+    // A hull that rises under its own weight (a bonded chain bent upwards can lift it).
+    s.hull_sag = 1.5e-3;
+    const std::string rises = veh::sagShareWarning(s, d, v);
+    EXPECT_TRUE(contains(rises, "the hull rises 1.50 mm under its own weight, where the "))
+        << rises;
+    EXPECT_TRUE(contains(rises, " would sag: ")) << rises;
+  }
+}
+
+// suspension.guide_stiffness: optional; given, it is the lateral stiffness of the guide horns and
+// of the chain wheels' hold across the links, while contact_shear_stiffness keeps the patches'
+// along the chain. A description without it means what it meant and hashes as before.
+TEST(GuideStiffness, IsOptionalReadWithItsUnitAndKeepsOldHashes) {
+  const veh::VehicleDescription plain = veh::loadVehicleDescription(kPaperFile);
+  EXPECT_FALSE(plain.suspension.guide_stiffness.has_value());
+  EXPECT_EQ(veh::guideStiffness(plain.suspension), plain.suspension.contact_shear_stiffness);
+  EXPECT_EQ(veh::descriptionHash(plain), veh::descriptionHash(veh::VehicleDescription{}));
+
+  const veh::VehicleDescription given = veh::parseVehicleDescription(
+      withSuspensionLine("  guide_stiffness: {value: 3e9, unit: N/m, source: \"test\"}"),
+      "given.yaml");
+  ASSERT_TRUE(given.suspension.guide_stiffness.has_value());
+  EXPECT_EQ(*given.suspension.guide_stiffness, 3e9);
+  EXPECT_EQ(veh::guideStiffness(given.suspension), 3e9);
+  EXPECT_NE(veh::descriptionHash(given), veh::descriptionHash(plain));
+  EXPECT_EQ(given.sources.at("suspension.guide_stiffness"), "test");
+
+  expectInputError(
+      [&] {
+        veh::parseVehicleDescription(
+            withSuspensionLine("  guide_stiffness: {value: -1, unit: N/m, source: \"test\"}"),
+            "negative.yaml");
+      },
+      {"negative.yaml", "suspension.guide_stiffness", "must not be negative"});
+  expectInputError(
+      [&] {
+        veh::parseVehicleDescription(
+            withSuspensionLine("  guide_stiffness: {value: 1, unit: kN/m, source: \"test\"}"),
+            "unit.yaml");
+      },
+      {"unit.yaml", "suspension.guide_stiffness.unit", "not the expected 'N/m'"});
+  veh::VehicleDescription coded;
+  coded.suspension.guide_stiffness = std::nan("");
+  expectInputError([&] { veh::validateDescription(coded, "coded"); },
+                   {"suspension.guide_stiffness", "out of range or not finite"});
+}
+
+TEST(GuideStiffness, SetsTheLateralSpringsAndKeepsARollingWheelGuided) {
+  veh::VehicleDescription d = veh::loadVehicleDescription(kLightFile);
+  d.suspension.contact_shear_stiffness = 1e4;  // rolling wheels
+  d.suspension.guide_stiffness = 2e10;
+  for (const veh::Variant v : {veh::Variant::Untracked, veh::Variant::Tracked}) {
+    const veh::VehicleModel model = veh::buildVehicleModel(d, v);
+    int guides = 0, patches = 0, chain_wheels = 0;
+    for (const tvd::fem::Spring& s : model.model.springs) {
+      if (contains(s.name, "/guide")) {
+        ++guides;
+        EXPECT_EQ(s.stiffness(0), 0.0) << s.name;
+        EXPECT_EQ(s.stiffness(1), 2e10) << s.name;
+      } else if (contains(s.name, "/contact")) {
+        ++patches;
+        EXPECT_EQ(s.stiffness(0), 1e4) << s.name;
+        EXPECT_EQ(s.stiffness(1), 0.0) << s.name;
+      } else if (s.name.rfind("sprocket_", 0) == 0 || s.name.rfind("idler_", 0) == 0) {
+        ++chain_wheels;
+        EXPECT_EQ(s.stiffness(1), 2e10) << s.name;
+      }
+    }
+    EXPECT_EQ(guides, 10);
+    EXPECT_EQ(patches, 10);
+    EXPECT_EQ(chain_wheels > 0, v == veh::Variant::Tracked);
+  }
+  // Rolling, the un-tracked hull bounces on its torsion bars (the estimate less the wheels'
+  // own motion), and the guide horns still hold it sideways: its lateral mode stays several
+  // times what it is when the guides are as soft as the patches.
+  const Solved guided = solve(d, veh::Variant::Untracked, 12);
+  const double bounce = lowest(guided, veh::HullMotion::Bounce);
+  EXPECT_NEAR(bounce / veh::wheelRateEstimate(d, veh::Variant::Untracked).bounce_hz, 1.0, 0.1)
+      << bounce;
+  EXPECT_EQ(
+      veh::bounceWarning(d, veh::Variant::Untracked, guided.classes, guided.basis.frequencies_hz),
+      "");
+  d.suspension.guide_stiffness.reset();  // the guides as soft as the patches
+  const Solved loose = solve(d, veh::Variant::Untracked, 12);
+  const double lateral_guided = lowest(guided, veh::HullMotion::Lateral);
+  const double lateral_loose = lowest(loose, veh::HullMotion::Lateral);
+  EXPECT_GT(lateral_guided, 3.0 * lateral_loose) << lateral_guided << " " << lateral_loose;
+  EXPECT_NEAR(lowest(loose, veh::HullMotion::Bounce), bounce, 1e-6 * bounce);
+}
