@@ -217,11 +217,14 @@ void runVehicle(const ModesOptions& opt) {
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
              a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
   std::cout << massBreakdownText(m) << "\n";
-  std::cout << "\nstatic equilibrium under gravity: hull sag " << std::setprecision(4)
-            << -a.statics.hull_sag * 1000.0 << " mm (z " << a.statics.hull_sag * 1000.0
-            << " mm), pitch " << a.statics.hull_pitch * kRadToDegree << " deg; ground reactions "
-            << std::setprecision(1) << a.statics.ground_reaction << " N = weight "
-            << a.statics.weight << " N\n"
+  // The bonded model's (every contact pulls as well as pushes): the state the dynamics start
+  // from; tvd statics' default lets the contacts only push, which can differ much (a light chain).
+  std::cout << "\nstatic equilibrium under gravity (the linear model's, every contact bonded; "
+               "tvd statics: contacts that only push): hull sag "
+            << std::setprecision(4) << -a.statics.hull_sag * 1000.0 << " mm (z "
+            << a.statics.hull_sag * 1000.0 << " mm), pitch " << a.statics.hull_pitch * kRadToDegree
+            << " deg; ground reactions " << std::setprecision(1) << a.statics.ground_reaction
+            << " N = weight " << a.statics.weight << " N\n"
             << wheelRateEstimateText(vehicle::wheelRateEstimate(description, variant)) << "\n";
 }
 
