@@ -344,9 +344,17 @@ StepResult OnlineVehicle::step() {
   const double acceleration = simulator_.outputs()(comfort_row_);
   if (!simulator_.outputs().allFinite()) {
     // Cannot happen for finite inputs and a stable model; never publish NaN if it does: back to
-    // equilibrium where the vehicle is, terrain and speed kept.
-    input_.setZero();
-    simulator_.reset(equilibrium_, input_);
+    // equilibrium where the vehicle is, on the terrain under it (as resetTo() keeping the
+    // terrain), speed kept. Zero inputs would restart it on flat ground and the next step would
+    // lift every contact onto the terrain at once: a shock in the comfort metrics.
+    travel_acceleration_ = 0.0;
+    sampleInput();
+    Vector state = equilibrium_solver_.solve(road_input_.head(sampler_.size()));
+    if (!state.allFinite()) {  // not on this terrain either: on flat ground
+      input_.setZero();
+      state = equilibrium_;
+    }
+    simulator_.reset(state, input_);
     restartContactWatch();
     result.diverged = true;
     return result;

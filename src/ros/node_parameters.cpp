@@ -25,6 +25,9 @@ constexpr double kMaxRateHz = 1e5;
 // hold all of it: 10 s is 10,000 steps at 1 kHz, about 0.1 s of work, and far beyond any
 // stall worth replaying rather than skipping.
 constexpr double kMaxCatchUpLimit = 10.0;
+// Publishing and check rates below this [Hz] (once in 11.6 days) are a slip: ~rate / 1e-20
+// overflowed the step count (llround) into "every step", the opposite of what was asked.
+constexpr double kMinDerivedRateHz = 1e-6;
 // The longest ~diagnostic_period [s]: a day. diagnostic_updater adds it to ros::Time::now(),
 // whose 32-bit seconds overflow (a FATAL that named no parameter) for a period of about 2e9 s.
 constexpr double kMaxDiagnosticPeriod = 86400.0;
@@ -272,7 +275,14 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   } catch (const InputError& e) {
     throw in.error("rate", e.what());
   }
-  p.publish_rate = in.positive("publish_rate", v.rate, "Hz");
+  const auto notTooSlow = [&](const std::string& key, double value, bool zero_allowed) {
+    if (value < kMinDerivedRateHz && !(zero_allowed && value == 0.0))
+      throw in.error(key, "must be at least " + Reader::text(kMinDerivedRateHz) +
+                              " Hz (once in 11.6 days" + (zero_allowed ? "; 0 turns it off" : "") +
+                              "), got " + Reader::text(value));
+    return value;
+  };
+  p.publish_rate = notTooSlow("publish_rate", in.positive("publish_rate", v.rate, "Hz"), false);
   if (p.publish_rate > v.rate) {
     throw in.error("publish_rate", "must not exceed ~rate (" + Reader::text(v.rate) + " Hz), got " +
                                        Reader::text(p.publish_rate));
@@ -280,8 +290,11 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   // Unset, the derived rates are their defaults capped at ~rate (a 5 Hz ~rate runs; it cannot
   // publish comfort at 10 Hz); set above ~rate, they are refused.
   const auto derivedRate = [&](const std::string& key, double fallback, bool zero_allowed) {
-    const double value = zero_allowed ? in.nonNegative(key, std::min(fallback, v.rate), "Hz")
-                                      : in.positive(key, std::min(fallback, v.rate), "Hz");
+    const double value =
+        notTooSlow(key,
+                   zero_allowed ? in.nonNegative(key, std::min(fallback, v.rate), "Hz")
+                                : in.positive(key, std::min(fallback, v.rate), "Hz"),
+                   zero_allowed);
     if (value > v.rate)
       throw in.error(key, "must not exceed ~rate (" + Reader::text(v.rate) + " Hz), got " +
                               Reader::text(value));

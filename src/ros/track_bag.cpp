@@ -56,7 +56,7 @@ void checkOptions(const TrackBagOptions& o) {
 terrain::Terrain runTerrain(const TrackBagOptions& options) {
   terrain::TrackOptions track_options;
   track_options.lateral_offset = options.lateral_offset;
-  const terrain::Terrain t = terrain::loadTrack(options.track, track_options);
+  terrain::Terrain t = terrain::loadTrack(options.track, track_options);  // not const: moved out
   if (t.startStation() == 0.0)
     return t;
   return terrain::Terrain(t.stations().array() - t.startStation(), t.lateral(), t.heights(),

@@ -195,6 +195,37 @@ TEST(OnlineVehicle, TerrainGapHoldsTheLastHeightAndStaysFinite) {
   EXPECT_DOUBLE_EQ(vehicle.sampler().held()(0), 0.05);  // last height held
 }
 
+// A model whose outputs overflow (a hull with negative damping, its motion growing e^100-fold a
+// step) is reset when they do, to equilibrium where it is: on the terrain under it, 5 cm high
+// here, not on flat ground, from which the next step would lift every contact 5 cm at once.
+TEST(OnlineVehicle, ADivergedVehicleRestartsAtRestOnTheTerrainUnderIt) {
+  reduction::ReducedModel unstable = test::toyModel();
+  unstable.system.damping(0, 0) -= 1e8;  // sigma = 1e8 / (2 m) = 5e4 /s at 1 kHz
+  OnlineVehicle vehicle(unstable, test::toyGeometry(),
+                        options(dynamics::DiscretizationMethod::AugmentedExponential));
+  TerrainPatch p;
+  p.spacing = 0.1;
+  p.lateral = Eigen::Vector2d(-1.0, 1.0);
+  p.start_station = -2.0;
+  p.heights = Matrix::Constant(2, 41, 0.05);
+  vehicle.addTerrain(p);
+  const Eigen::Index uz = 2;  // hull uz, the toy's output row
+  const double flat = vehicle.simulator().outputs()(uz);
+  vehicle.setSpeed(1.0);
+  int k = 0;
+  StepResult r;
+  for (; k < 100 && !r.diverged; ++k)
+    r = vehicle.step();
+  ASSERT_TRUE(r.diverged) << "no divergence in 100 steps";
+  ASSERT_TRUE(vehicle.simulator().outputs().allFinite());
+  // At rest on a uniform 5 cm: the toy rigidly 5 cm above its flat-ground equilibrium, its
+  // inputs the terrain's.
+  EXPECT_NEAR(vehicle.simulator().outputs()(uz) - flat, 0.05, 1e-9);
+  EXPECT_NEAR(vehicle.simulator().input()(0), 0.05, 1e-15);
+  EXPECT_NEAR(vehicle.simulator().input()(1), 0.05, 1e-15);
+  EXPECT_EQ(vehicle.speed(), 1.0);  // the speed is kept
+}
+
 TEST(OnlineVehicle, InvalidTerrainAndSpeedAreRejectedWithoutChange) {
   OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
                         options(dynamics::DiscretizationMethod::ModalDecoupled));

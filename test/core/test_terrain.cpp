@@ -1123,10 +1123,14 @@ TEST(TerrainBuffer, DropBehindFreesOldDataAndKeepsTheRest) {
   EXPECT_NEAR(buffer.coveredUntil(), 4.9, kRoundoff);
   buffer.dropBehind(2.35);
   EXPECT_EQ(buffer.patchCount(), 3u);
-  EXPECT_LE(buffer.coveredFrom(), 2.35);
-  EXPECT_GT(buffer.coveredFrom(), 2.2);
+  // The patch from 2 m is kept whole while less than half of it lies behind (a cut copies the
+  // rest); at 2.55 m half does, and it is cut at its last sample before, 2.5 m.
+  EXPECT_NEAR(buffer.coveredFrom(), 2.0, kRoundoff);
   EXPECT_FALSE(buffer.covers(1.0));
-  for (double x = 2.35; x <= 4.9; x += 0.05)
+  buffer.dropBehind(2.55);
+  EXPECT_EQ(buffer.patchCount(), 3u);
+  EXPECT_NEAR(buffer.coveredFrom(), 2.5, kRoundoff);
+  for (double x = 2.55; x <= 4.9; x += 0.05)
     EXPECT_NEAR(buffer.height(x, 0.0), 0.1 * x, kRoundoff);
   // Dropping just past a patch end keeps the bridge into the next patch.
   buffer.dropBehind(2.95);
@@ -1179,6 +1183,32 @@ TEST(TerrainBuffer, GridForGivesTheAnsweringGridAndWhereItAnswers) {
   EXPECT_EQ(buffer.revision(), revision);  // queries change nothing
   buffer.dropBehind(0.2);
   EXPECT_NE(buffer.revision(), revision);
+}
+
+// One long patch under a vehicle that keeps receiving short ones ahead: each arrival's
+// dropBehind() used to copy the rest of the long patch (3 ms a time for 10 km). It is cut only
+// when half of it lies behind, so over 10,000 arrivals it is cut a handful of times, each cut at
+// least halving it, and every height ahead is kept.
+TEST(TerrainBuffer, ALongPatchIsCutByHalvesNotAtEveryArrival) {
+  TerrainBuffer buffer;
+  addPlane(&buffer, 0.0, 0.1, 10001);  // 0 .. 1000 m
+  double from = buffer.coveredFrom();
+  int cuts = 0;
+  for (int k = 1; k <= 1000; ++k) {
+    const double station = k * 1.0;
+    addPlane(&buffer, 1000.0 + station, 0.1, 11);  // a metre ahead, every metre
+    buffer.dropBehind(station - 0.5);
+    if (buffer.coveredFrom() != from) {
+      ++cuts;
+      // Cut at the last sample at or before the station, after half of what was there.
+      EXPECT_LE(buffer.coveredFrom(), station - 0.5 + kRoundoff);
+      EXPECT_GE(buffer.coveredFrom() - from, 0.5 * (1000.0 - from) - 0.1);
+      from = buffer.coveredFrom();
+    }
+    EXPECT_NEAR(buffer.height(station, 0.0), 0.1 * station, 1e-9);
+  }
+  EXPECT_GE(cuts, 8);  // 0 -> 500 -> 750 -> ... -> 999
+  EXPECT_LE(cuts, 12);
 }
 
 TEST(TerrainBuffer, RejectsBadPatches) {

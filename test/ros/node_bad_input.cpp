@@ -384,6 +384,16 @@ TEST(NodeBadParameters, CatchUpLimitBelowOneStepIsNamed) {
                 "before it returns), got 1e+300");
 }
 
+// A publishing or check rate of 1e-20 Hz overflowed ~rate / rate (llround) into "every step".
+TEST(NodeBadParameters, RatesTooSlowToCountInStepsAreNamed) {
+  expectRefused("slow_publish", "_publish_rate:=1e-20",
+                "/slow_publish/publish_rate: must be at least 1e-06 Hz (once in 11.6 days), got "
+                "1e-20");
+  expectRefused("slow_contact", "_ground_contact_rate:=1e-20",
+                "/slow_contact/ground_contact_rate: must be at least 1e-06 Hz (once in 11.6 days; "
+                "0 turns it off), got 1e-20");
+}
+
 // A reduction the ~reduction/* settings cannot carry out on a valid description (a MAC threshold
 // of 1 pairs no mode) names those settings and the file, not ~vehicle alone.
 TEST(NodeBadParameters, AReductionTheSettingsCannotCarryOutNamesThem) {

@@ -170,7 +170,9 @@ class OnlineVehicle {
   /// Hull displacement at static equilibrium on flat ground.
   const Vector6& staticHullDisplacement() const { return static_hull_; }
 
-  /// Road wheels, in geometry().wheels order.
+  /// Road wheels, in geometry().wheels order. Fills a buffer the vehicle owns (no allocation per
+  /// step): valid until the next call, and not to be called from two threads at once although
+  /// it is const.
   const std::vector<WheelState>& wheels() const;
   /// Position [m] in base_link of wheel centre i (vertical motion relative to the hull).
   Vector3 wheelPosition(std::size_t i) const;

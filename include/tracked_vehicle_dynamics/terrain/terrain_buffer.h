@@ -52,8 +52,8 @@ class TerrainBuffer {
   /// while it does not. A copy starts with its original's revision (and its own grids).
   std::uint64_t revision() const { return revision_; }
   /// Frees data behind `station` [m]: patches ending before it are dropped and a patch straddling
-  /// it is cut to its samples from the last one at or before `station`; queries at stations
-  /// >= station keep their values.
+  /// it is cut to its samples from the last one at or before `station` once at least half of it
+  /// lies behind (a cut copies what it keeps); queries at stations >= station keep their values.
   void dropBehind(double station);
   /// Whether dropBehind(station) frees a patch ending at `end` [m] with `spacing` [m]: it ends
   /// before `station` by more than a bridgeable gap (a nearer one still anchors the bridge).
