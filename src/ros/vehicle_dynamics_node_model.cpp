@@ -14,6 +14,7 @@
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
+#include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -98,6 +99,13 @@ void VehicleDynamicsNode::loadVehicle() {
                                                params_.vehicle_options,
                                                reduction::roadInputGroups(layout, model));
     setup_seconds_ = std::chrono::duration<double>(Clock::now() - setup_start).count();
+    // The model's sag at rest against the hull on its torsion bars alone (as tvd statics and
+    // modes say it): a chain or locked wheels carrying the hull, the usual sign of values copied
+    // from the paper's vehicle onto a light one, said to integrators who never run tvd.
+    const std::string carried = vehicle::sagShareWarning(vehicle_->staticHullDisplacement()(2),
+                                                         description, params_.variant);
+    if (!carried.empty())
+      ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), carried.c_str());
     model_dofs_ = model.size();
     model_inputs_ = model.system.inputCount();
     model_outputs_ = model.system.outputCount();

@@ -67,8 +67,13 @@ WheelRateEstimate wheelRateEstimate(const VehicleDescription& d, Variant variant
 
 std::string sagShareWarning(const StaticSummary& summary, const VehicleDescription& description,
                             Variant variant) {
+  return sagShareWarning(summary.hull_sag, description, variant);
+}
+
+std::string sagShareWarning(double hull_sag, const VehicleDescription& description,
+                            Variant variant) {
   const WheelRateEstimate e = wheelRateEstimate(description, variant);
-  const double sag = -summary.hull_sag;  // positive down, as e.sag
+  const double sag = -hull_sag;  // positive down, as e.sag
   if (sag >= kMinSagShare * e.sag)
     return "";
   const std::string what =

@@ -54,6 +54,9 @@ constexpr double kMaxTrackedBounceRatio = 2.5;
 /// the estimate, naming the estimate and the description keys that carry the hull; "" otherwise.
 std::string sagShareWarning(const StaticSummary& summary, const VehicleDescription& description,
                             Variant variant);
+/// The same from the hull's static z displacement [m] (negative: down), e.g. a reduced model's.
+std::string sagShareWarning(double hull_sag, const VehicleDescription& description,
+                            Variant variant);
 
 /// A warning when the lowest mode whose main motion is the hull's bounce lies above the
 /// variant's limit times the estimate's bounce, naming the mode, the ratio and the keys; ""
