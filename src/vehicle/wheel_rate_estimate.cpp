@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -87,26 +88,36 @@ std::string sagShareWarning(double hull_sag, const VehicleDescription& descripti
 
 std::string bounceWarning(const VehicleDescription& description, Variant variant,
                           const std::vector<ModeClass>& classes, const Vector& frequencies_hz) {
-  for (std::size_t i = 0;
-       i < classes.size() && static_cast<Eigen::Index>(i) < frequencies_hz.size(); ++i) {
-    const ModeClass& c = classes[i];
+  const WheelRateEstimate e = wheelRateEstimate(description, variant);
+  const double limit =
+      variant == Variant::Tracked ? kMaxTrackedBounceRatio : kMaxUntrackedBounceRatio;
+  const std::string beyond =
+      "; beyond " + brief(limit) +
+      " times (the paper's vehicle: " + (variant == Variant::Tracked ? "2.0" : "1.2") +
+      ") it is not the torsion bars that hold the hull: " + carriersText(description, variant);
+  const auto n =
+      std::min<Eigen::Index>(static_cast<Eigen::Index>(classes.size()), frequencies_hz.size());
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const ModeClass& c = classes[static_cast<std::size_t>(i)];
     if (c.kind != ModeKind::Hull || c.hull_motions.empty() ||
         c.hull_motions.front() != HullMotion::Bounce)
       continue;
-    const WheelRateEstimate e = wheelRateEstimate(description, variant);
-    const double f = frequencies_hz(static_cast<Eigen::Index>(i));
+    const double f = frequencies_hz(i);
     const double ratio = f / e.bounce_hz;
-    const double limit =
-        variant == Variant::Tracked ? kMaxTrackedBounceRatio : kMaxUntrackedBounceRatio;
     if (ratio <= limit)
       return "";
     return "the hull's bounce (mode " + std::to_string(i + 1) + ", " + fixed(f, 2) + " Hz) is " +
            fixed(ratio, 1) + " times the " + fixed(e.bounce_hz, 2) + " Hz of " +
-           estimateText(e, variant) + "; beyond " + brief(limit) +
-           " times (the paper's vehicle: " + (variant == Variant::Tracked ? "2.0" : "1.2") +
-           ") it is not the torsion bars that hold the hull: " + carriersText(description, variant);
+           estimateText(e, variant) + beyond;
   }
-  return "";
+  // None among the modes solved: judged only when they already reach beyond the limit (the
+  // bounce lies above the last of them), else nothing can be said.
+  if (n == 0 || frequencies_hz(n - 1) <= limit * e.bounce_hz)
+    return "";
+  return "no hull bounce mode among the " + std::to_string(n) + " lowest modes (up to " +
+         fixed(frequencies_hz(n - 1), 2) + " Hz, " + fixed(frequencies_hz(n - 1) / e.bounce_hz, 1) +
+         " times the " + fixed(e.bounce_hz, 2) + " Hz of " + estimateText(e, variant) +
+         "; more modes, --count, show where it is)" + beyond;
 }
 
 }  // namespace vehicle

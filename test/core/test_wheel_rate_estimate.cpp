@@ -173,9 +173,15 @@ TEST(WheelRateEstimate, WarningsStartJustBeyondTheirLimits) {
     f(1) = 1.01 * limit * e.bounce_hz;
     EXPECT_TRUE(contains(veh::bounceWarning(d, v, classes, f), "(mode 2, "));
     // A pitch mode that bounces too is not the bounce mode; without one nothing is judged.
-    EXPECT_EQ(veh::bounceWarning(
-                  d, v, {chain, hullMode({veh::HullMotion::Pitch, veh::HullMotion::Bounce})}, f),
-              "");
+    const std::vector<veh::ModeClass> no_bounce = {
+        chain, hullMode({veh::HullMotion::Pitch, veh::HullMotion::Bounce})};
+    f(1) = limit * e.bounce_hz;  // the modes reach the limit, not beyond: nothing to say
+    EXPECT_EQ(veh::bounceWarning(d, v, no_bounce, f), "");
+    // Beyond it with no bounce mode among them: the bounce lies higher still.
+    f(1) = 1.01 * limit * e.bounce_hz;
+    const std::string above = veh::bounceWarning(d, v, no_bounce, f);
+    EXPECT_TRUE(contains(above, "no hull bounce mode among the 2 lowest modes (up to ")) << above;
+    EXPECT_TRUE(contains(above, "--count")) << above;
     EXPECT_EQ(veh::bounceWarning(d, v, {}, tvd::Vector()), "");
 
     veh::StaticSummary s;
