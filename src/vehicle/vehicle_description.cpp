@@ -317,7 +317,7 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
 
   if (d.suspension.guide_stiffness) {
     const double x = *d.suspension.guide_stiffness;
-    c.require(std::isfinite(x) && x >= 0.0 && x <= kImplausible,
+    c.require(std::isfinite(x) && x > 0.0 && x <= kImplausible,  // 0: free sideways, singular
               std::string("suspension.") + kGuideStiffnessKey,
               "value " + brief(x) + " is out of range or not finite");
   }
@@ -590,10 +590,9 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
     // Optional (descriptions written before it keep their meaning and their hash).
     if (suspension && section.has(kGuideStiffnessKey)) {
       double value = 0.0;
-      readField(
-          section,
-          Field{"suspension", kGuideStiffnessKey, "N/m", Kind::Real, Range::NonNegative, &value},
-          d.sources);
+      readField(section,
+                Field{"suspension", kGuideStiffnessKey, "N/m", Kind::Real, Range::Positive, &value},
+                d.sources);
       d.suspension.guide_stiffness = value;
     }
     if (damping)

@@ -91,10 +91,13 @@ std::string bounceWarning(const VehicleDescription& description, Variant variant
   const WheelRateEstimate e = wheelRateEstimate(description, variant);
   const double limit =
       variant == Variant::Tracked ? kMaxTrackedBounceRatio : kMaxUntrackedBounceRatio;
+  // Un-tracked, the statics match the estimate (every arm turns alike under the CoG's load):
+  // what stiffens is the bounce alone, not what carries the hull.
   const std::string beyond =
-      "; beyond " + brief(limit) +
-      " times (the paper's vehicle: " + (variant == Variant::Tracked ? "2.0" : "1.2") +
-      ") it is not the torsion bars that hold the hull: " + carriersText(description, variant);
+      "; beyond " + brief(limit) + " times (the paper's vehicle: " +
+      (variant == Variant::Tracked ? "2.0) it is not the torsion bars that hold the hull: "
+                                   : "1.2) the torsion bars alone do not set it: ") +
+      carriersText(description, variant);
   const auto n =
       std::min<Eigen::Index>(static_cast<Eigen::Index>(classes.size()), frequencies_hz.size());
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -107,11 +110,15 @@ std::string bounceWarning(const VehicleDescription& description, Variant variant
     if (ratio <= limit)
       return "";
     return "the hull's bounce (mode " + std::to_string(i + 1) + ", " + fixed(f, 2) + " Hz) is " +
-           fixed(ratio, 1) + " times the " + fixed(e.bounce_hz, 2) + " Hz of " +
+           fixed(ratio, 2) + " times the " + fixed(e.bounce_hz, 2) + " Hz of " +
            estimateText(e, variant) + beyond;
   }
-  // None among the modes solved: judged only when they already reach beyond the limit (the
-  // bounce lies above the last of them), else nothing can be said.
+  // No mode led by the bounce among those solved: judged only when none bounces at all (an
+  // off-centre CoG turns the bounce into pitch+bounce, which is not "above them all") and they
+  // already reach beyond the limit (the bounce lies above the last of them).
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (classes[static_cast<std::size_t>(i)].has(HullMotion::Bounce))
+      return "";
   if (n == 0 || frequencies_hz(n - 1) <= limit * e.bounce_hz)
     return "";
   return "no hull bounce mode among the " + std::to_string(n) + " lowest modes (up to " +

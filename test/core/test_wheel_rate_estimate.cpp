@@ -110,6 +110,23 @@ TEST(WheelRateEstimate, ClosedFormOnThePaperVehicle) {
   EXPECT_NEAR(t.bounce_hz / u.bounce_hz, std::sqrt(u.sprung_mass / t.sprung_mass), 1e-12);
 }
 
+// The cosine in the lever a cos(beta) matters: on the light fixture with rolling wheels (nothing
+// but the torsion bars and pads holding the hull up) the un-tracked model's sag follows the
+// estimate at arm angles from 0 to 45 degrees, where dropping the cosine would be 2x off.
+TEST(WheelRateEstimate, TheUntrackedSagFollowsTheArmAngle) {
+  veh::VehicleDescription d = veh::loadVehicleDescription(kLightFile);
+  d.suspension.contact_shear_stiffness = 1e4;
+  d.suspension.guide_stiffness = 2e10;
+  for (const double degrees : {0.0, 20.0, 45.0}) {
+    d.suspension.arm_angle = degrees * tvd::kPi / 180.0;
+    const veh::VehicleModel model = veh::buildVehicleModel(d, veh::Variant::Untracked);
+    const tvd::fem::System system = tvd::fem::assemble(model.model);
+    const veh::StaticSummary s = veh::computeStaticSummary(model, system);
+    const veh::WheelRateEstimate e = veh::wheelRateEstimate(d, veh::Variant::Untracked);
+    EXPECT_NEAR(-s.hull_sag / e.sag, 1.0, 0.03) << degrees << " deg: " << s.hull_sag;
+  }
+}
+
 // The un-tracked model under a load through the CoG turns every arm alike: its sag is the
 // estimate's (the wheels' tie drags no patch against another), within the CoG's small offset.
 TEST(WheelRateEstimate, TheUntrackedSagIsTheEstimatesAndThePaperVehicleIsNotWarnedAbout) {
@@ -173,11 +190,14 @@ TEST(WheelRateEstimate, WarningsStartJustBeyondTheirLimits) {
     f(1) = 1.01 * limit * e.bounce_hz;
     EXPECT_TRUE(contains(veh::bounceWarning(d, v, classes, f), "(mode 2, "));
     // A pitch mode that bounces too is not the bounce mode; without one nothing is judged.
-    const std::vector<veh::ModeClass> no_bounce = {
-        chain, hullMode({veh::HullMotion::Pitch, veh::HullMotion::Bounce})};
+    // An off-centre CoG makes the bounce pitch+bounce: that is no verdict of "above them all".
+    EXPECT_EQ(veh::bounceWarning(
+                  d, v, {chain, hullMode({veh::HullMotion::Pitch, veh::HullMotion::Bounce})}, f),
+              "");
+    const std::vector<veh::ModeClass> no_bounce = {chain, hullMode({veh::HullMotion::Pitch})};
     f(1) = limit * e.bounce_hz;  // the modes reach the limit, not beyond: nothing to say
     EXPECT_EQ(veh::bounceWarning(d, v, no_bounce, f), "");
-    // Beyond it with no bounce mode among them: the bounce lies higher still.
+    // Beyond it with no mode that bounces at all: the bounce lies higher still.
     f(1) = 1.01 * limit * e.bounce_hz;
     const std::string above = veh::bounceWarning(d, v, no_bounce, f);
     EXPECT_TRUE(contains(above, "no hull bounce mode among the 2 lowest modes (up to ")) << above;
@@ -222,7 +242,15 @@ TEST(GuideStiffness, IsOptionalReadWithItsUnitAndKeepsOldHashes) {
             withSuspensionLine("  guide_stiffness: {value: -1, unit: N/m, source: \"test\"}"),
             "negative.yaml");
       },
-      {"negative.yaml", "suspension.guide_stiffness", "must not be negative"});
+      {"negative.yaml", "suspension.guide_stiffness", "must be positive, got -1"});
+  // 0 would leave the hull free sideways: a singular stiffness that named no key.
+  expectInputError(
+      [&] {
+        veh::parseVehicleDescription(
+            withSuspensionLine("  guide_stiffness: {value: 0, unit: N/m, source: \"test\"}"),
+            "zero.yaml");
+      },
+      {"zero.yaml", "suspension.guide_stiffness", "must be positive, got 0"});
   expectInputError(
       [&] {
         veh::parseVehicleDescription(

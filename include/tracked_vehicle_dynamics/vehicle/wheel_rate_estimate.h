@@ -60,8 +60,9 @@ std::string sagShareWarning(double hull_sag, const VehicleDescription& descripti
 
 /// A warning when the lowest mode whose main motion is the hull's bounce lies above the
 /// variant's limit times the estimate's bounce, naming the mode, the ratio and the keys, or when
-/// no such mode is among `classes` (frequencies_hz, same order) while they already reach beyond
-/// that limit (the bounce is above them all); "" otherwise.
+/// no mode among `classes` (frequencies_hz, same order) bounces at all while they already reach
+/// beyond that limit (the bounce is above them all); "" otherwise. The sprung mass leaves out the
+/// chain's top run lying on the chain wheels (a few % of the hull's).
 std::string bounceWarning(const VehicleDescription& description, Variant variant,
                           const std::vector<ModeClass>& classes, const Vector& frequencies_hz);
 
