@@ -265,10 +265,7 @@ int OnlineVehicle::resetTo(double station, double speed, ResetTerrain terrain) {
     input_.setZero();
     simulator_.reset(equilibrium_, input_);
   } else {
-    // The input the next step interpolates from (first-order hold) is the one a step at this
-    // station would have sampled, u' included; the state is at rest on its heights u.
-    uncovered = sampleInput();
-    simulator_.reset(equilibrium_solver_.solve(road_input_.head(sampler_.size())), input_);
+    uncovered = restOnTerrain();
   }
   restartContactWatch();
   comfort_.reset();
@@ -323,6 +320,20 @@ int OnlineVehicle::sampleInput() {
   return uncovered;
 }
 
+int OnlineVehicle::restOnTerrain() {
+  travel_acceleration_ = 0.0;
+  // The input the next step interpolates from (first-order hold) is the one a step at this
+  // station would have sampled, u' included; the state is at rest on its heights u.
+  const int uncovered = sampleInput();
+  Vector state = equilibrium_solver_.solve(road_input_.head(sampler_.size()));
+  if (!state.allFinite()) {  // not on this terrain either: on flat ground
+    input_.setZero();
+    state = equilibrium_;
+  }
+  simulator_.reset(state, input_);
+  return uncovered;
+}
+
 StepResult OnlineVehicle::step() {
   StepResult result;
   if (slews()) {
@@ -347,14 +358,7 @@ StepResult OnlineVehicle::step() {
     // equilibrium where the vehicle is, on the terrain under it (as resetTo() keeping the
     // terrain), speed kept. Zero inputs would restart it on flat ground and the next step would
     // lift every contact onto the terrain at once: a shock in the comfort metrics.
-    travel_acceleration_ = 0.0;
-    sampleInput();
-    Vector state = equilibrium_solver_.solve(road_input_.head(sampler_.size()));
-    if (!state.allFinite()) {  // not on this terrain either: on flat ground
-      input_.setZero();
-      state = equilibrium_;
-    }
-    simulator_.reset(state, input_);
+    restOnTerrain();
     restartContactWatch();
     result.diverged = true;
     return result;

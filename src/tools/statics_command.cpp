@@ -78,7 +78,7 @@ void run(const StaticsOptions& opt) {
   const vehicle::WheelRateEstimate estimate = vehicle::wheelRateEstimate(description, variant);
   // At rest only: under --accel the sag is the load case's, not the suspension's.
   if (opt.accel == 0.0) {
-    const std::string carried = vehicle::sagShareWarning(s, description, variant);
+    const std::string carried = vehicle::sagShareWarning(s.hull_sag, description, variant);
     if (!carried.empty())
       warnings.push_back(carried);
   }

@@ -37,7 +37,7 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   const auto t1 = Clock::now();
   a.statics = vehicle::computeStaticSummary(a.vehicle, a.system);
   std::vector<std::string> warnings = vehicle::staticWarnings(a.statics, description);
-  const std::string carried = vehicle::sagShareWarning(a.statics, description, variant);
+  const std::string carried = vehicle::sagShareWarning(a.statics.hull_sag, description, variant);
   if (!carried.empty())
     warnings.push_back(carried);
   for (const std::string& w : warnings)

@@ -16,9 +16,9 @@ std::string fixed(double value, int digits) {
   return buffer;
 }
 
-// "the hull (30,300 kg) on its 14 road wheels' torsion bars and pads alone (wheel rate
-// k_t / (a cos beta)^2 = 1.58e+06 N/m in series with track_assembly.compression_stiffness
-// 1.9e+07 N/m)": the estimate, said once for both warnings.
+// "the hull (30300 kg) on its 14 road wheels' torsion bars and pads alone (wheel rate
+// k_t / (a cos beta)^2 = 1.58456e+06 N/m, in series with track_assembly.compression_stiffness:
+// 1.46228e+06 N/m per wheel)": the estimate, said once for both warnings.
 std::string estimateText(const WheelRateEstimate& e, Variant variant) {
   return std::string("the hull") + (variant == Variant::Tracked ? " with its chain wheels" : "") +
          " (" + brief(e.sprung_mass) + " kg) on its " + std::to_string(e.wheels) +
@@ -64,11 +64,6 @@ WheelRateEstimate wheelRateEstimate(const VehicleDescription& d, Variant variant
   e.sag = e.sprung_mass * kStandardGravity / n_k;
   e.bounce_hz = std::sqrt(n_k / e.sprung_mass) / (2.0 * kPi);
   return e;
-}
-
-std::string sagShareWarning(const StaticSummary& summary, const VehicleDescription& description,
-                            Variant variant) {
-  return sagShareWarning(summary.hull_sag, description, variant);
 }
 
 std::string sagShareWarning(double hull_sag, const VehicleDescription& description,

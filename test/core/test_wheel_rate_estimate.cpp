@@ -140,7 +140,7 @@ TEST(WheelRateEstimate, TheUntrackedSagIsTheEstimatesAndThePaperVehicleIsNotWarn
       EXPECT_NEAR(-s.hull_sag / e.sag, 1.0, 0.07) << s.hull_sag;  // 15.3 mm against 14.5
     else
       EXPECT_GT(-s.hull_sag / e.sag, veh::kMinSagShare);  // 4.5 mm against 16.2: 0.28
-    EXPECT_EQ(veh::sagShareWarning(s, d, v), "");
+    EXPECT_EQ(veh::sagShareWarning(s.hull_sag, d, v), "");
   }
 }
 
@@ -151,7 +151,7 @@ TEST(WheelRateEstimate, ACopiedChainAndLockedWheelsOnALightVehicleAreNamed) {
   const veh::VehicleDescription d = veh::loadVehicleDescription(kLightFile);
   const Solved tracked = solve(d, veh::Variant::Tracked, 20);
   const veh::StaticSummary s = veh::computeStaticSummary(tracked.vehicle, tracked.system);
-  const std::string sag = veh::sagShareWarning(s, d, veh::Variant::Tracked);
+  const std::string sag = veh::sagShareWarning(s.hull_sag, d, veh::Variant::Tracked);
   for (const char* part : {"the hull sags 1.", "less than a fifth of the 39.5 mm",
                            "track_assembly.link_member_bending_inertia 1.1e-08 m^4",
                            "suspension.contact_shear_stiffness 2e+10 N/m", "\"Tuning\""})
@@ -206,12 +206,12 @@ TEST(WheelRateEstimate, WarningsStartJustBeyondTheirLimits) {
 
     veh::StaticSummary s;
     s.hull_sag = -veh::kMinSagShare * e.sag;
-    EXPECT_EQ(veh::sagShareWarning(s, d, v), "");
+    EXPECT_EQ(veh::sagShareWarning(s.hull_sag, d, v), "");
     s.hull_sag *= 0.99;
-    EXPECT_TRUE(contains(veh::sagShareWarning(s, d, v), "less than a fifth"));
+    EXPECT_TRUE(contains(veh::sagShareWarning(s.hull_sag, d, v), "less than a fifth"));
     // A hull that rises under its own weight (a bonded chain bent upwards can lift it).
     s.hull_sag = 1.5e-3;
-    const std::string rises = veh::sagShareWarning(s, d, v);
+    const std::string rises = veh::sagShareWarning(s.hull_sag, d, v);
     EXPECT_TRUE(contains(rises, "the hull rises 1.50 mm under its own weight, where the "))
         << rises;
     EXPECT_TRUE(contains(rises, " would sag: ")) << rises;

@@ -236,6 +236,10 @@ class OnlineVehicle {
   /// Samples the road at the current station and speed into road_input_ and the simulator's
   /// input_ (widened with the travel acceleration when slewing); returns the uncovered contacts.
   int sampleInput();
+  /// The simulator at rest on the terrain under the vehicle at its station, without travel
+  /// acceleration (the static equilibrium on the sampled heights, those heights its input); on
+  /// flat ground if that equilibrium is not finite. Returns the uncovered contacts.
+  int restOnTerrain();
   /// Whether the last three point_rows_ (a point at `point`) are the hull's rigid motion in H.
   bool movesWithHull(const Matrix& output, const Vector3& point) const;
   /// After every simulator_.reset(): the contact watch's state at rest.

@@ -17,7 +17,6 @@
 
 #include "tracked_vehicle_dynamics/types.h"
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
-#include "tracked_vehicle_dynamics/vehicle/static_summary.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
@@ -50,11 +49,10 @@ constexpr double kMaxUntrackedBounceRatio = 1.5;
 /// 2.2); copied onto a 9-12 t vehicle, 5-6.
 constexpr double kMaxTrackedBounceRatio = 2.5;
 
-/// A warning when `summary` (a static solution of `variant`) sags less than kMinSagShare of
-/// the estimate, naming the estimate and the description keys that carry the hull; "" otherwise.
-std::string sagShareWarning(const StaticSummary& summary, const VehicleDescription& description,
-                            Variant variant);
-/// The same from the hull's static z displacement [m] (negative: down), e.g. a reduced model's.
+/// A warning when the hull's static z displacement `hull_sag` [m] (negative: down; a static
+/// solution of `variant`, StaticSummary::hull_sag or a reduced model's) is less than
+/// kMinSagShare of the estimate's sag, naming the estimate and the description keys that carry
+/// the hull; "" otherwise.
 std::string sagShareWarning(double hull_sag, const VehicleDescription& description,
                             Variant variant);
 
