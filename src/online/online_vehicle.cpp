@@ -21,12 +21,20 @@ const char* const kHullOutputs[6] = {"hull ux", "hull uy", "hull uz",
                                      "hull rx", "hull ry", "hull rz"};
 const char* const kTranslations[3] = {"ux", "uy", "uz"};
 
-std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system) {
+// Which inputs' u'_q the simulator uses: those with a C_u column (the force C_u u'), and, when
+// modes are quasi-static, every input with a K_u column, since those modes move at
+// H Phi_t Omega_t^-2 Phi_t^T K_u u' (simulator.h). Left at 0 there, the hull's velocity lost the
+// ground ties' part: on the bundled vehicle (no ground damping) the node's rates were not the
+// derivative of its poses, by 0.2 % of the roll rate's peak on the out-of-phase waves.
+std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system,
+                                 bool quasi_static_modes) {
   std::vector<bool> flags(static_cast<std::size_t>(system.inputCount()), false);
-  if (system.input_damping.size() == 0)
-    return flags;
   for (Eigen::Index q = 0; q < system.inputCount(); ++q) {
-    flags[static_cast<std::size_t>(q)] = !system.input_damping.col(q).isZero(0.0);
+    const bool damped =
+        system.input_damping.size() != 0 && !system.input_damping.col(q).isZero(0.0);
+    const bool stiff =
+        system.input_stiffness.size() != 0 && !system.input_stiffness.col(q).isZero(0.0);
+    flags[static_cast<std::size_t>(q)] = damped || (quasi_static_modes && stiff);
   }
   return flags;
 }
@@ -133,7 +141,7 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
       time_step_(1.0 / options.rate),
       simulator_(makeSimulator(model, options, &tie_warning_)),
       sampler_(model.system.input_stations, model.system.input_lateral,
-               inputsWithRate(model.system)),
+               inputsWithRate(model.system, simulator_.quasiStaticModeCount() > 0)),
       comfort_(options.rate, comfortOptions(options)),
       comfort_point_(options.comfort_point),
       equilibrium_solver_(model.system, model.gravity_load) {

@@ -84,9 +84,13 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       continue;
     }
     Lookup& lookup = lookups_[g];
-    if (lookup.grid != nullptr && x >= lookup.from && x <= lookup.until && x >= lookup.flat_from &&
-        x <= lookup.flat_until && lateral_offset == lookup.offset) {
-      // Still on the same flat run of the same grid: the heights held are the terrain's.
+    // A group that needs u' leaves the run at its last station: the cell ahead rises there.
+    const bool in_flat_run =
+        x >= lookup.flat_from && (group_rate_[g] ? x < lookup.flat_until : x <= lookup.flat_until);
+    if (lookup.grid != nullptr && x >= lookup.from && x <= lookup.until && in_flat_run &&
+        lateral_offset == lookup.offset) {
+      // Still on the same flat run of the same grid: the heights held are the terrain's, and
+      // the cell ahead is flat (u' = 0).
       for (std::size_t k = first; k < last; ++k) {
         const Eigen::Index q = members_[k];
         (*w)(q) = held_(q);
@@ -101,7 +105,7 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
     lookup.flat_until = 0.0;
     if (lookup.grid != nullptr) {
       weight = lookup.grid->stationWeightOf(x);
-      if (weight.edge == 0 && !group_rate_[g]) {
+      if (weight.edge == 0) {
         lookup.flat_from = lookup.grid->stations()(weight.cell);
         lookup.flat_until = lookup.grid->flatRunEnd(weight.cell);
         lookup.offset = lateral_offset;
@@ -122,9 +126,15 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
         held_(q) = lookup.grid->height(weight, cell.cell);
       }
       (*w)(q) = held_(q);
-      (*w)(n + q) = needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0
-                        ? rate(buffer, x, y, held_(q), speed, from, until)
-                        : 0.0;
+      double rate_q = 0.0;
+      if (needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0) {
+        // Inside a grid its cell's slope, as Terrain::slope() gives it; at a grid's edge (where
+        // the next patch may go on) or in a bridged gap, differences on the buffer.
+        rate_q = lookup.grid != nullptr && weight.edge == 0 && !std::isnan(y)
+                     ? speed * lookup.grid->slope(weight, cell.cell)
+                     : rate(buffer, x, y, held_(q), speed, from, until);
+      }
+      (*w)(n + q) = rate_q;
     }
   }
   return uncovered;
@@ -132,14 +142,14 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
 
 double RoadInputSampler::rate(const terrain::TerrainBuffer& buffer, double x, double y,
                               double height, double speed, double from, double until) const {
+  // The cell ahead, as inside a grid (on its last station, the next patch's or the bridge's
+  // first cell); backwards only at the end of coverage.
   auto covered = [&](double s) { return (s >= from && s <= until) || buffer.covers(s); };
-  const double xa = x - kSlopeStep, xb = x + kSlopeStep;
-  const bool a = covered(xa), b = covered(xb);
-  if (a && b)
-    return speed * (buffer.height(xb, y) - buffer.height(xa, y)) / (2.0 * kSlopeStep);
-  if (b)
+  const double xb = x + kSlopeStep;
+  if (covered(xb))
     return speed * (buffer.height(xb, y) - height) / kSlopeStep;
-  if (a)
+  const double xa = x - kSlopeStep;
+  if (covered(xa))
     return speed * (height - buffer.height(xa, y)) / kSlopeStep;
   return 0.0;
 }

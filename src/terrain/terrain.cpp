@@ -157,14 +157,7 @@ double Terrain::slope(double x, double y) const {
   const Eigen::Index n = stations_.size();
   if (n == 1 || x < stations_(0) || x >= stations_(n - 1))
     return 0.0;
-  Eigen::Index j = 0;
-  double wy = 0.0;
-  lateralCell(y, &j, &wy);
-  const Eigen::Index i = stationCell(x);
-  const auto cell_slope = [&](Eigen::Index line) {
-    return (heights_(line, i + 1) - heights_(line, i)) / (stations_(i + 1) - stations_(i));
-  };
-  return wy == 0.0 ? cell_slope(j) : blend(cell_slope(j), cell_slope(j + 1), wy);
+  return cellSlope(stationCell(x), lateralCellOf(y));
 }
 
 Vector Terrain::profile(double y) const {

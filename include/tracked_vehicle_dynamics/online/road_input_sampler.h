@@ -5,10 +5,14 @@
 // the vehicle reference point at station s, speed v and the vehicle centre line at lateral
 // position `lateral_offset` on the terrain (y left), the input w = [u; u'] is
 //   u_q  = h(s + x_q, y_q + lateral_offset)                                    [m]
-//   u'_q = v dh/dx ≈ v (h(x + e) - h(x - e)) / (2 e),  e = kSlopeStep          [m/s]
-// The central difference reproduces the bilinear cell's slope except within e of a sample, where
-// it averages the two neighbouring cells. u' is evaluated only for inputs whose C_u column is
-// non-zero (it multiplies nothing otherwise) and is 0 elsewhere.
+//   u'_q = v dh/dx                                                              [m/s]
+// with dh/dx the slope of the bilinear cell under the contact, on a station the cell ahead: what
+// Terrain::slope() gives offline (RoadExcitation), bit for bit. On a grid's first or last
+// station (the next patch may go on) or in a gap bridged between patches, dh/dx is the forward
+// difference on the whole buffer, (h(x + e) - h(x)) / e, e = kSlopeStep: the cell ahead too
+// (backwards at the end of coverage).
+// u' is evaluated only for the inputs flagged (OnlineVehicle: a C_u column, or a K_u column when
+// modes are quasi-static) and is 0 elsewhere.
 //
 // A contact the buffer does not cover (no terrain yet, or a gap ahead) keeps its last height with
 // u' = 0 and is counted, so the state stays finite and the node can warn.
@@ -21,7 +25,8 @@
 //   that grid keeps answering (TerrainBuffer::gridFor), each contact its lateral cell in that
 //   grid, until the buffer changes (TerrainBuffer::revision).
 // - On flat terrain (a run of equal grid samples, Terrain::flatRunEnd) the heights are those of
-//   the last call, exactly: a station still in the run skips the lookups (most of a track).
+//   the last call, exactly, and u' = 0: a station still in the run skips the lookups (most of a
+//   track); one whose u' is used leaves it at the run's last station, where the cell ahead rises.
 // The heights are the buffer's, bit for bit.
 #pragma once
 
@@ -36,7 +41,7 @@ namespace online {
 
 class RoadInputSampler {
  public:
-  /// Half-width of the central difference for dh/dx [m].
+  /// Step of the difference for dh/dx at a grid's edge [m].
   static constexpr double kSlopeStep = 1e-6;
 
   /// stations x_q [m], lateral y_q [m] (same length n); needs_rate: n flags, true where u'_q is
@@ -75,7 +80,7 @@ class RoadInputSampler {
     double y = 0.0;                          ///< [m]
     terrain::Terrain::LateralCell cell;
   };
-  /// u'_q by central differences on the buffer (see the file comment).
+  /// u'_q by differences on the buffer, at a grid's edge or in a gap (see the file comment).
   double rate(const terrain::TerrainBuffer& buffer, double x, double y, double height, double speed,
               double from, double until) const;
 

@@ -73,7 +73,14 @@ class Terrain {
     return stations_(flat_end_[static_cast<std::size_t>(i)]);
   }
   /// dh/dx at (x, y) [m/m]: the slope of the bilinear cell, 0 outside the stations (held edge).
+  /// On a station x_i it is the slope of the cell ahead, [x_i, x_{i+1}] (the one a contact moving
+  /// forward crosses next).
   double slope(double x, double y) const;
+  /// slope(x, cell) with x's station weight already found (stationWeightOf(x)): inside the
+  /// stations (edge 0) the same value as slope(x, y), bit for bit; 0 at a held edge.
+  double slope(const StationWeight& station, const LateralCell& cell) const {
+    return station.edge != 0 ? 0.0 : cellSlope(station.cell, cell);
+  }
   /// Both: h = height(x, y), dhdx = slope(x, y) (the interface RoadExcitation samples).
   void heightAndSlope(double x, double y, double& h, double& dhdx) const {
     h = height(x, y);
@@ -118,6 +125,15 @@ class Terrain {
     const Eigen::Index j = cell.line;
     const double wy = cell.weight;
     return wy == 0.0 ? heights_(j, i) : blend(heights_(j, i), heights_(j + 1, i), wy);
+  }
+  /// dh/dx over station cell [x_i, x_{i+1}] on a lateral cell: each line's slope, blended.
+  double cellSlope(Eigen::Index i, const LateralCell& cell) const {
+    const auto line_slope = [&](Eigen::Index line) {
+      return (heights_(line, i + 1) - heights_(line, i)) / (stations_(i + 1) - stations_(i));
+    };
+    return cell.weight == 0.0
+               ? line_slope(cell.line)
+               : blend(line_slope(cell.line), line_slope(cell.line + 1), cell.weight);
   }
 
   Vector stations_;
