@@ -541,6 +541,9 @@ void run(const SimulateOptions& opt) {
         .field("peak_roll_rate_deg_s", peak("hull_roll_rate_deg_s"))
         .field("peak_pitch_accel_deg_s2", peak("hull_pitch_accel_deg_s2"))
         .field("peak_roll_accel_deg_s2", peak("hull_roll_accel_deg_s2"))
+        .field("peak_yaw_deg", peak("hull_yaw_deg"))
+        .field("peak_yaw_rate_deg_s", peak("hull_yaw_rate_deg_s"))
+        .field("peak_yaw_accel_deg_s2", peak("hull_yaw_accel_deg_s2"))
         .field("peak_travel_accel_m_s2", series.col(travel_column).cwiseAbs().maxCoeff());
     json.key("ground_contact");
     if (monitor_contact)

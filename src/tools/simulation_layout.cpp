@@ -60,6 +60,13 @@ SimulationLayout simulationLayout(const std::vector<std::string>& simulator_rows
   add("hull_longitudinal_accel_m_s2", "hull ux/acc");
   add("hull_lateral_accel_m_s2", "hull uy/acc");
   add("hull_surge_m", "hull ux/disp");
+  // The hull's yaw and sway: the lateral and yaw modes the out-of-phase waves and any uneven
+  // road excite, which an azimuth stabiliser or a point of one's own needs (a_y(P) = a_y(G) +
+  // yaw'' x_P - roll'' z_P, relative to the CoG).
+  add("hull_sway_m", "hull uy/disp");
+  add("hull_yaw_deg", "hull rz/disp", kRadToDegree);
+  add("hull_yaw_rate_deg_s", "hull rz/vel", kRadToDegree);
+  add("hull_yaw_accel_deg_s2", "hull rz/acc", kRadToDegree);
   layout.first_wheel = layout.columns.size();
   for (const std::string& n : system_outputs)
     if (n.rfind("road_wheel", 0) == 0)

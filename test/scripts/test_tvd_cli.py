@@ -912,9 +912,10 @@ class TvdCliTest(unittest.TestCase):
                                    1.0, delta=1e-6)
 
     def test_simulate_rates_and_named_points_are_consistent(self):
-        """The CSV's rates are the time derivatives of its displacements, and a named point moves
-        with the hull as a rigid body: u_z(P) = u_z(G) + roll (y_P - y_G) - pitch (x_P - x_G) for
-        the small rotations of the linear model, and the same for accelerations. Out-of-phase
+        """The CSV's rates are the time derivatives of its displacements (yaw included), and a
+        named point moves with the hull as a rigid body: u_z(P) = u_z(G) + roll (y_P - y_G) -
+        pitch (x_P - x_G) for the small rotations of the linear model, the same for the vertical
+        accelerations, and a_P = a_G + alpha x r along and across. Out-of-phase
         waves (built in with the 1 m lateral offset of paper §4.2.1), so that the hull rolls as
         well."""
         out = self.path("oop.csv")
@@ -938,6 +939,11 @@ class TvdCliTest(unittest.TestCase):
         assert_derivative("hull_heave_rate_m_s", "hull_vertical_accel_m_s2")
         assert_derivative("hull_pitch_rate_deg_s", "hull_pitch_accel_deg_s2")
         assert_derivative("hull_roll_rate_deg_s", "hull_roll_accel_deg_s2")
+        assert_derivative("hull_yaw_deg", "hull_yaw_rate_deg_s")
+        assert_derivative("hull_yaw_rate_deg_s", "hull_yaw_accel_deg_s2")
+        for quantity in ("yaw_deg", "yaw_rate_deg_s", "yaw_accel_deg_s2"):
+            self.assertAlmostEqual(d["peak_" + quantity], np.abs(c["hull_" + quantity]).max(),
+                                   places=5)
         self.assertGreater(d["peak_roll_deg"], 0.5)
         self.assertAlmostEqual(d["peak_roll_rate_deg_s"], np.abs(c["hull_roll_rate_deg_s"]).max(),
                                places=5)
@@ -957,6 +963,17 @@ class TvdCliTest(unittest.TestCase):
                 rigid = c[heave] + deg * (c[roll] * r[1] - c[pitch] * r[0])
                 np.testing.assert_allclose(c[name + value], rigid, rtol=0,
                                            atol=1e-6 * np.abs(rigid).max(), err_msg=name + value)
+            # Across and along: a_P = a_G + alpha x r with alpha = (roll'', pitch'', yaw''); the
+            # yaw term is what the hull's yaw columns give (without them the lateral
+            # acceleration of a point off the CoG could not be had from the CSV).
+            alpha = [deg * c["hull_" + a + "_accel_deg_s2"] for a in ("roll", "pitch", "yaw")]
+            rigid_x = c["hull_longitudinal_accel_m_s2"] + alpha[1] * r[2] - alpha[2] * r[1]
+            rigid_y = c["hull_lateral_accel_m_s2"] + alpha[2] * r[0] - alpha[0] * r[2]
+            for column, rigid in (("_accel_x_m_s2", rigid_x), ("_accel_y_m_s2", rigid_y)):
+                np.testing.assert_allclose(c[name + column], rigid, rtol=0,
+                                           atol=1e-6 * np.abs(rigid).max(), err_msg=name + column)
+            yaw_term = np.abs(alpha[2] * r[0]).max()
+            self.assertGreater(yaw_term, 1e-3 * np.abs(rigid_y).max(), name)
             self.assertAlmostEqual(peak["peak_vertical_displacement_m"],
                                    np.abs(c[name + "_vertical_m"]).max(), places=7)
             self.assertAlmostEqual(peak["peak_vertical_accel_m_s2"],
