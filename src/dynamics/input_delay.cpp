@@ -24,13 +24,33 @@ InputDelay InputDelay::travelling(const Vector& stations, double speed) {
   return InputDelay(lags, speed);
 }
 
+InputDelay InputDelay::scaled(const Vector& factors) const {
+  if (!factors.allFinite())
+    throw InputError("InputDelay: input factors must be finite");
+  if (!isSynchronous())
+    detail::requireLength("InputDelay::scaled", "input factors", factors, lags_.size());
+  InputDelay out = *this;
+  out.factors_ = factors;
+  return out;
+}
+
+Vector InputDelay::antiPhaseFactors(const Vector& lateral) {
+  if (!lateral.allFinite())
+    throw InputError("InputDelay: input lateral positions must be finite");
+  return lateral.unaryExpr([](double y) { return y > 0.0 ? 1.0 : y < 0.0 ? -1.0 : 0.0; });
+}
+
 ComplexVector InputDelay::at(double omega, DofIndex input_count) const {
-  if (isSynchronous())
-    return ComplexVector::Ones(input_count);
-  detail::requireLength("InputDelay::at", "input stations", lags_, input_count);
-  ComplexVector tau(input_count);
-  for (DofIndex q = 0; q < input_count; ++q)
-    tau(q) = std::polar(1.0, -omega * lags_(q) / speed_);
+  ComplexVector tau = ComplexVector::Ones(input_count);
+  if (!isSynchronous()) {
+    detail::requireLength("InputDelay::at", "input stations", lags_, input_count);
+    for (DofIndex q = 0; q < input_count; ++q)
+      tau(q) = std::polar(1.0, -omega * lags_(q) / speed_);
+  }
+  if (factors_.size() > 0) {
+    detail::requireLength("InputDelay::at", "input factors", factors_, input_count);
+    tau = tau.cwiseProduct(factors_.cast<Complex>());
+  }
   return tau;
 }
 

@@ -31,6 +31,8 @@ struct FrfOptions {
   std::string variant = "tracked";
   std::string model = "reduced";
   double speed_kmh = 0.0;  // 0: synchronous (tau = 1)
+  /// in_phase (the paper's: both tracks' roads alike) | anti_phase (opposite, input_delay.h).
+  std::string excitation = "in_phase";
   double max_hz = 50.0;
   double step_hz = 0.05;
   double max_mode_hz = 100.0;  // full model: dynamic modes up to here
@@ -99,16 +101,32 @@ void checkPoints(const std::vector<std::string>& points,
   }
 }
 
+// Anti-phase roads roll, sway and yaw the hull (a stabiliser's disturbance): those outputs too.
+std::vector<NamedColumn> rollOutputs(const std::vector<std::string>& names) {
+  std::vector<NamedColumn> out = {{"hull_lateral_acc", "hull uy", "(m/s^2)/m"},
+                                  {"hull_roll_acc", "hull rx", "(rad/s^2)/m"},
+                                  {"hull_yaw_acc", "hull rz", "(rad/s^2)/m"}};
+  for (NamedColumn& c : out)
+    c.index = outputIndex(names, c.output);
+  return out;
+}
+
 // Every model has the outputs "<point> ux|uy|uz" of each named point (vehicleOutputs()); the
-// vertical one is what a seat transmits to the crew.
+// vertical one is what a seat transmits to the crew, and under anti-phase roads the lateral one
+// what the roll adds at a point above the CoG.
 std::vector<NamedColumn> pointOutputs(const std::vector<std::string>& names,
-                                      const std::vector<std::string>& points) {
+                                      const std::vector<std::string>& points, bool lateral) {
   std::vector<NamedColumn> out;
   for (const std::string& point : points) {
     NamedColumn c{point + "_vertical_acc", point + " uz", "(m/s^2)/m"};
     c.index = outputIndex(names, c.output);
     c.wk_weighted = true;
     out.push_back(c);
+    if (lateral) {
+      NamedColumn y{point + "_lateral_acc", point + " uy", "(m/s^2)/m"};
+      y.index = outputIndex(names, y.output);
+      out.push_back(y);
+    }
   }
   return out;
 }
@@ -151,9 +169,12 @@ void run(const FrfOptions& opt) {
   DofIndex dofs = 0, full_dofs = 0;
   std::string source;
   std::optional<ReducedModelSource> reduced;
-  auto delayFor = [&](const Vector& x) {
-    return opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / kKmhPerMs)
-                             : dynamics::InputDelay::synchronous();
+  const bool anti_phase = opt.excitation == "anti_phase";
+  auto delayFor = [&](const Vector& x, const Vector& y) {
+    const dynamics::InputDelay delay =
+        opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / kKmhPerMs)
+                          : dynamics::InputDelay::synchronous();
+    return anti_phase ? delay.scaled(dynamics::InputDelay::antiPhaseFactors(y)) : delay;
   };
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   checkPoints(opt.points, description);
@@ -162,7 +183,8 @@ void run(const FrfOptions& opt) {
     variant = reduced->variant;  // a --reduced file's
     const reduction::ReducedModel& model = reduced->model;
     names = model.system.output_names;
-    h = dynamics::frfModal(model.system, hz, delayFor(model.system.input_stations),
+    h = dynamics::frfModal(model.system, hz,
+                           delayFor(model.system.input_stations, model.system.input_lateral),
                            dynamics::OutputQuantity::Acceleration);
     dofs = model.size();
     full_dofs = model.full_dof_count;
@@ -175,7 +197,8 @@ void run(const FrfOptions& opt) {
     const reduction::FullModelReference ref =
         reduction::buildVehicleReference(description, variant, ref_options);
     names = ref.modal.output_names;
-    h = ref.frf(hz, delayFor(ref.modal.input_stations), dynamics::OutputQuantity::Acceleration);
+    h = ref.frf(hz, delayFor(ref.modal.input_stations, ref.modal.input_lateral),
+                dynamics::OutputQuantity::Acceleration);
     dofs = ref.full_dofs;
     full_dofs = ref.full_dofs;
     source = "full (" + std::to_string(ref.frequencies_hz.size()) + " modes up to " +
@@ -191,7 +214,11 @@ void run(const FrfOptions& opt) {
                           " Hz: an undamped mode lies on the frequency grid (give the vehicle "
                           "damping, or shift the grid with --step-hz)");
   std::vector<NamedColumn> columns = comfortOutputs(names);
-  const std::vector<NamedColumn> point_columns = pointOutputs(names, opt.points);
+  if (anti_phase) {
+    const std::vector<NamedColumn> roll = rollOutputs(names);
+    columns.insert(columns.end(), roll.begin(), roll.end());
+  }
+  const std::vector<NamedColumn> point_columns = pointOutputs(names, opt.points, anti_phase);
   columns.insert(columns.end(), point_columns.begin(), point_columns.end());
   // |Wk(j 2 pi f)| on the grid (0 at 0 Hz: the weighting's high-pass).
   Vector wk(hz.size());
@@ -225,6 +252,7 @@ void run(const FrfOptions& opt) {
                 {"variant", vehicle::variantName(variant)},
                 {"model", opt.model},
                 {"excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous"},
+                {"sides", opt.excitation},
                 {"speed_kmh", opt.speed_kmh}});
   }
 
@@ -249,6 +277,7 @@ void run(const FrfOptions& opt) {
         .field("dofs", static_cast<long long>(dofs))
         .field("full_dofs", static_cast<long long>(full_dofs))
         .field("excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous")
+        .field("sides", opt.excitation)
         .field("speed_kmh", opt.speed_kmh)
         .field("frequencies", static_cast<long long>(hz.size()))
         .field("max_hz", hz(hz.size() - 1));
@@ -290,7 +319,8 @@ void run(const FrfOptions& opt) {
             << " DOFs), "
             << (opt.speed_kmh > 0 ? "travelled at " + brief(opt.speed_kmh) + " km/h"
                                   : std::string("synchronous excitation"))
-            << ", 0-" << hz(hz.size() - 1) << " Hz\n";
+            << (anti_phase ? ", the tracks' roads in anti-phase" : "") << ", 0-"
+            << hz(hz.size() - 1) << " Hz\n";
   if (reduced)
     std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
   for (const NamedColumn& c : columns) {
@@ -330,6 +360,12 @@ void registerFrfCommand(CLI::App& app) {
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh,
                   "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
+  cmd->add_option("--sides", opt->excitation,
+                  "in_phase: both tracks' roads alike (the paper's) | anti_phase: left +h, "
+                  "right -h, which rolls the hull (adds hull_lateral_acc, hull_roll_acc, "
+                  "hull_yaw_acc and each point's _lateral_acc)")
+      ->check(CLI::IsMember({"in_phase", "anti_phase"}))
+      ->capture_default_str();
   cmd->add_option("--max-hz", opt->max_hz, "highest frequency [Hz]")->check(positiveNumber());
   cmd->add_option("--step-hz", opt->step_hz,
                   "frequency step [Hz] (at most --max-hz; when --max-hz is not a "

@@ -13,6 +13,7 @@
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/reduction/full_model_reference.h"
@@ -306,6 +307,60 @@ TEST(VehicleFrf, WheelbaseFilter) {
             0.7 * wheel_attenuation[vehicle::Variant::Untracked])
       << "tracked " << wheel_attenuation[vehicle::Variant::Tracked] << ", untracked "
       << wheel_attenuation[vehicle::Variant::Untracked];
+}
+
+// Anti-phase roads (input_delay.h): left +h, right -h. On the symmetric bundled vehicle they
+// leave heave and pitch alone and roll the hull, whose roll FRF peaks at the un-tracked roll mode
+// (7.13 Hz); in-phase roads do the opposite; the reduced roll FRF is the full model's within
+// 1 dB; and by linearity the left track's road alone gives half their sum, which the synchronous
+// FRF of a delay that lifts the left inputs only must equal.
+TEST(VehicleFrf, AntiPhaseRoadsRollTheHullAtItsRollMode) {
+  const Vector hz = frequencies(kBandHz, 0.05);
+  const Variant& v = models(vehicle::Variant::Untracked);
+  const dynamics::SecondOrderSystem& s = v.reduced.system;
+  const Vector sides = InputDelay::antiPhaseFactors(s.input_lateral);
+  ASSERT_EQ(sides.cwiseAbs().minCoeff(), 1.0);  // every input on one track or the other
+  ASSERT_NEAR(sides.sum(), 0.0, 0.0);           // as many left as right
+  const dynamics::ModalSystem modal(s);
+  const ComplexMatrix in_phase =
+      dynamics::frfModal(modal, hz, InputDelay::synchronous(), OutputQuantity::Acceleration);
+  const ComplexMatrix anti = dynamics::frfModal(modal, hz, InputDelay::synchronous().scaled(sides),
+                                                OutputQuantity::Acceleration);
+  const DofIndex uz = column(s.output_names, "hull uz"), ry = column(s.output_names, "hull ry"),
+                 rx = column(s.output_names, "hull rx");
+  const auto peak = [&](const ComplexMatrix& h, DofIndex c) {
+    return h.col(c).cwiseAbs().maxCoeff();
+  };
+  // The reduced model is symmetric to the MoGeSeC masters' placement (1e-5, test_reduced_model).
+  EXPECT_LT(peak(anti, uz), 1e-3 * peak(in_phase, uz));
+  EXPECT_LT(peak(anti, ry), 1e-3 * peak(in_phase, ry));
+  EXPECT_LT(peak(in_phase, rx), 1e-3 * peak(anti, rx));
+  Eigen::Index top = 0;
+  anti.col(rx).cwiseAbs().maxCoeff(&top);
+  // The un-tracked roll mode of the README's Table 4 (mode 6, 7.13 Hz).
+  EXPECT_NEAR(hz(top), 7.13, 0.1) << "roll FRF peak";
+  const ComplexMatrix full = v.full.frf(
+      hz,
+      InputDelay::synchronous().scaled(InputDelay::antiPhaseFactors(v.full.modal.input_lateral)),
+      OutputQuantity::Acceleration);
+  const auto [db, fraction] =
+      worstDb(hz, full.col(column(v.full.modal.output_names, "hull rx")).cwiseAbs(),
+              anti.col(rx).cwiseAbs());
+  EXPECT_LT(db, kFrfToleranceDb);
+  EXPECT_GT(fraction, 0.45);
+  const Vector left_only = (sides.array() > 0.0).cast<double>();
+  const ComplexMatrix left = dynamics::frfModal(
+      modal, hz, InputDelay::travelling(s.input_stations, 30 / 3.6).scaled(left_only),
+      OutputQuantity::Acceleration);
+  const ComplexMatrix sum =
+      0.5 * (dynamics::frfModal(modal, hz, InputDelay::travelling(s.input_stations, 30 / 3.6),
+                                OutputQuantity::Acceleration) +
+             dynamics::frfModal(modal, hz,
+                                InputDelay::travelling(s.input_stations, 30 / 3.6).scaled(sides),
+                                OutputQuantity::Acceleration));
+  EXPECT_LT((left - sum).cwiseAbs().maxCoeff(), 1e-12 * left.cwiseAbs().maxCoeff());
+  EXPECT_THROW(InputDelay::travelling(s.input_stations, 1.0).scaled(Vector::Ones(3)), InputError);
+  EXPECT_THROW(InputDelay::synchronous().scaled(Vector::Ones(3)).at(1.0, 4), InputError);
 }
 
 // Paper §4.1.3: "the un-tracked vehicle road wheels are uncoupled each other, hence their

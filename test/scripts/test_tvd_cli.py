@@ -1847,6 +1847,56 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("crew_seat_vertical_acc peak", text)
         self.assertIn("Wk-weighted peak", text)
 
+    def test_frf_anti_phase_roads_roll_and_points_stay_rigid(self):
+        """--sides anti_phase (left +h, right -h): the hull's lateral, roll and yaw columns and
+        each point's lateral one are added; the un-tracked roll FRF peaks at the roll mode (the
+        README's Table 4: 7.13 Hz); heave and pitch stay ~0 on the symmetric vehicle; each point
+        moves with the rigid hull, the roll now included: H_z(P) = H_z + y_P H_roll - (x_P - x_G)
+        H_pitch and H_y(P) = H_y + (x_P - x_G) H_yaw - (z_P - z_G) H_roll. The default is
+        in_phase, unchanged to the byte."""
+        points = ["crew_seat", "sensor_mount"]
+        d, c, _ = self.frf_columns("frf_anti.csv", "--cache-dir", self.cache, "--sides",
+                                   "anti_phase", "--points", ",".join(points))
+        self.assertEqual(d["sides"], "anti_phase")
+        self.assertEqual([o["column"] for o in d["outputs"]],
+                         ["hull_vertical_acc", "hull_pitch_acc", "front_wheel_acc",
+                          "rear_wheel_acc", "hull_lateral_acc", "hull_roll_acc", "hull_yaw_acc",
+                          "crew_seat_vertical_acc", "crew_seat_lateral_acc",
+                          "sensor_mount_vertical_acc", "sensor_mount_lateral_acc"])
+        outputs = {o["column"]: o for o in d["outputs"]}
+        self.assertAlmostEqual(outputs["hull_roll_acc"]["peak_hz"], 7.13, delta=0.1)
+        self.assertEqual(outputs["hull_roll_acc"]["unit"], "(rad/s^2)/m")
+        plain, plain_columns, plain_text = self.frf_columns("frf_in_phase.csv", "--cache-dir",
+                                                            self.cache)
+        self.assertEqual(plain["sides"], "in_phase")
+        for name in ("hull_vertical_acc", "hull_pitch_acc"):
+            self.assertLess(c[name + "_mag"].max(), 1e-3 * plain_columns[name + "_mag"].max(),
+                            name)
+        _, default_columns, default_text = self.frf_columns("frf_default.csv", "--cache-dir",
+                                                            self.cache, "--sides", "in_phase")
+        self.assertEqual(default_text, plain_text.replace("frf_in_phase", "frf_default"))
+        with open(VEHICLE) as f:
+            description = yaml.safe_load(f)
+        cog = np.array([description["hull"]["cog_x"]["value"], 0.0,
+                        description["hull"]["cog_height"]["value"]])
+        h = {n: self.complex_frf(c, "hull_" + n + "_acc")
+             for n in ("vertical", "pitch", "lateral", "roll", "yaw")}
+        for point in points:
+            r = np.array(description["named_points"][point]["value"]) - cog
+            rigid_z = h["vertical"] + r[1] * h["roll"] - r[0] * h["pitch"]
+            rigid_y = h["lateral"] + r[0] * h["yaw"] - r[2] * h["roll"]
+            for column, rigid in (("_vertical_acc", rigid_z), ("_lateral_acc", rigid_y)):
+                got = self.complex_frf(c, point + column)
+                scale = np.abs(got).max()
+                self.assertGreater(scale, 0.0, point + column)
+                self.assertLess(np.abs(got - rigid).max() / scale,
+                                self.REDUCED_OFF_CENTRE_TOLERANCE, point + column)
+        # The crew seat (0.55 m left) now rolls: its vertical FRF is mostly the roll term.
+        self.assertGreater(np.abs(0.55 * h["roll"]).max(),
+                           0.5 * c["crew_seat_vertical_acc_mag"].max())
+        bad = self.tvd("frf", "--vehicle", VEHICLE, "--sides", "opposite", status=2)
+        self.assertIn("--sides", bad.stderr)
+
     def test_frf_points_of_the_full_model_match_the_reduced(self):
         if os.path.join(ROOT, "scripts") not in sys.path:
             sys.path.insert(0, os.path.join(ROOT, "scripts"))
