@@ -69,7 +69,10 @@ WheelRateEstimate wheelRateEstimate(const VehicleDescription& d, Variant variant
 std::string sagShareWarning(double hull_sag, const VehicleDescription& description,
                             Variant variant) {
   const WheelRateEstimate e = wheelRateEstimate(description, variant);
-  const double sag = -hull_sag;  // positive down, as e.sag
+  // Positive down, as e.sag; 0 - x, not -x, so that a hull that does not move sags "0.00 mm"
+  // and never "-0.00 mm" (IEEE 754: 0 - 0 is +0).
+  const double sag = 0.0 - hull_sag;
+  static_assert(kMinSagShare == 0.2, "the warning says \"less than a fifth\"");
   if (sag >= kMinSagShare * e.sag)
     return "";
   const std::string what =

@@ -275,6 +275,23 @@ TEST(OnlineVehicle, ADivergedVehicleRestartsAtRestOnTheTerrainUnderIt) {
   EXPECT_NEAR(vehicle.simulator().input()(0), 0.05, 1e-15);
   EXPECT_NEAR(vehicle.simulator().input()(1), 0.05, 1e-15);
   EXPECT_EQ(vehicle.speed(), 1.0);  // the speed is kept
+
+  // Slewing: the restart is at rest, so no travel acceleration rides along with the state solved
+  // without it (input w = [u; a; u'; 0]: a is entry 2 of the toy's).
+  OnlineVehicleOptions slew = options(dynamics::DiscretizationMethod::AugmentedExponential);
+  slew.max_acceleration = slew.max_deceleration = 1.0;
+  OnlineVehicle speeding(unstable, test::toyGeometry(), slew);
+  speeding.addTerrain(p);
+  speeding.setSpeed(10.0);
+  r = StepResult();
+  for (k = 0; k < 100 && !r.diverged; ++k)
+    r = speeding.step();
+  ASSERT_TRUE(r.diverged) << "no divergence in 100 steps";
+  EXPECT_EQ(speeding.travelAcceleration(), 0.0);
+  ASSERT_EQ(speeding.simulator().input().size(), 6);
+  EXPECT_EQ(speeding.simulator().input()(2), 0.0);
+  EXPECT_GT(speeding.speed(), 0.0);
+  EXPECT_LT(speeding.speed(), 10.0);
 }
 
 TEST(OnlineVehicle, InvalidTerrainAndSpeedAreRejectedWithoutChange) {

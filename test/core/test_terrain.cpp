@@ -998,6 +998,7 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
       {"x,-1,1\n0,0,0\ninf,0,0\n", {"row 3, column 1", "station 'inf' is not a finite number"}},
       {"x,-1,1\n0,0,0\n1,0,1e30\n", {"row 3, column 3", "height 1e+30 m is beyond +-10000 m"}},
       {"x,-1,1\n0,0,0\n1e300,0,0\n", {"row 3, column 1", "station 1e+300 m is beyond +-1e+08 m"}},
+      {"x,-1,1\n-1e300,0,0\n1,0,0\n", {"row 2, column 1", "station -1e+300 m is beyond +-1e+08 m"}},
       {std::string("x,-1,1\n0,0,0\n1,0\0,0\n", 21),
        {"row 3, column 2", "height '0\\x00' is not a number"}},
       {"x,-1,1\n0,0,0\n1,0,0\n1,0,0\n", {"row 4", "duplicate station x = 1 m (also on row 3)"}},
@@ -1017,6 +1018,8 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
     SCOPED_TRACE(cases[i].content);
     expectInputError([&] { loadTerrainCsv(path); }, parts);
   }
+  // The bound itself is a station like any other.
+  EXPECT_EQ(loadTerrainCsv(dir.file("bound.csv", "x,-1,1\n0,0,0\n1e8,0,0\n")).endStation(), 1e8);
   expectInputError([&] { loadTerrain(dir.file("missing.csv")); },
                    {"missing.csv", "file not found"});
   expectInputError([&] { loadTerrain(dir.file("terrain.txt", "0,0\n")); },

@@ -306,3 +306,100 @@ TEST(GuideStiffness, SetsTheLateralSpringsAndKeepsARollingWheelGuided) {
   EXPECT_GT(lateral_guided, 3.0 * lateral_loose) << lateral_guided << " " << lateral_loose;
   EXPECT_NEAR(lowest(loose, veh::HullMotion::Bounce), bounce, 1e-6 * bounce);
 }
+
+// What the warnings print, to the digit, and which modes and keys they judge (from a mutation
+// run: each of these once passed with the code wrong). The paper vehicle's estimate: k_r =
+// 1.58456e6 N/m, k_s = 1.46228e6 N/m, 14 wheels, 30300 kg, sag 14.5 mm, bounce 4.14 Hz.
+TEST(WheelRateEstimate, TheWarningsSayTheEstimateAndJudgeTheRightMode) {
+  veh::VehicleDescription d;
+  const veh::Variant un = veh::Variant::Untracked, tr = veh::Variant::Tracked;
+  const veh::WheelRateEstimate e = veh::wheelRateEstimate(d, un);
+  const double b = e.bounce_hz;
+  // The estimate as printed: the series rate beside the wheel rate.
+  const std::string tiny = veh::sagShareWarning(-0.15 * e.sag, d, un);
+  for (const char* part :
+       {"the hull sags 2.18 mm under its weight, less than a fifth of the 14.5 mm of the hull "
+        "(30300 kg) on its 14 road wheels' torsion bars and pads alone (wheel rate "
+        "k_t / (a cos beta)^2 = 1.58456e+06 N/m, in series with "
+        "track_assembly.compression_stiffness: 1.46228e+06 N/m per wheel)"})
+    EXPECT_TRUE(contains(tiny, part)) << tiny;
+  // A hull that does not move sags 0.00 mm, whatever the sign of its zero.
+  for (const double zero : {0.0, -0.0}) {
+    const std::string none = veh::sagShareWarning(zero, d, tr);
+    EXPECT_TRUE(contains(none,
+                         "the hull sags 0.00 mm under its weight, less than a fifth of the "
+                         "16.2 mm"))
+        << none;
+  }
+  // The bounce ratio with two decimals.
+  veh::ModeClass chain;
+  tvd::Vector f(2);
+  f << 0.5, 2.0 * b;
+  const std::string twice =
+      veh::bounceWarning(d, un, {chain, hullMode({veh::HullMotion::Bounce})}, f);
+  EXPECT_TRUE(contains(twice,
+                       "the hull's bounce (mode 2, 8.27 Hz) is 2.00 times the 4.14 Hz of "
+                       "the hull (30300 kg)"))
+      << twice;
+  // Only the lowest bounce-led hull mode is judged: a second one far above is no verdict.
+  f << b, 3.0 * b;
+  EXPECT_EQ(veh::bounceWarning(d, un,
+                               {hullMode({veh::HullMotion::Bounce}),
+                                hullMode({veh::HullMotion::Bounce, veh::HullMotion::Pitch})},
+                               f),
+            "");
+  // A wheel mode that carries the hull's bounce along is not the hull's bounce.
+  veh::ModeClass wheel;
+  wheel.kind = veh::ModeKind::WheelBounce;
+  wheel.hull_motions = {veh::HullMotion::Bounce};
+  f << 3.0 * b, b;
+  EXPECT_EQ(veh::bounceWarning(d, un, {wheel, hullMode({veh::HullMotion::Bounce})}, f), "");
+  // No bounce mode at all, the modes three times beyond: the factor as printed.
+  f << 0.5, 3.0 * b;
+  const std::string above =
+      veh::bounceWarning(d, un, {chain, hullMode({veh::HullMotion::Pitch})}, f);
+  EXPECT_TRUE(contains(above,
+                       "no hull bounce mode among the 2 lowest modes (up to 12.41 Hz, 3.0 "
+                       "times the 4.14 Hz"))
+      << above;
+  // The key that locks the wheels is contact_shear_stiffness, not guide_stiffness.
+  veh::VehicleDescription light = veh::loadVehicleDescription(kLightFile);
+  light.suspension.contact_shear_stiffness = 1e4;
+  light.suspension.guide_stiffness = 2e10;
+  const std::string named = veh::sagShareWarning(-0.001, light, tr);
+  EXPECT_TRUE(contains(named, "suspension.contact_shear_stiffness 10000 N/m")) << named;
+  // Return rollers ride on the hull too (each side's), tracked only.
+  d.return_rollers.x = {0.5, -1.0};
+  d.return_rollers.mass = 60.0;
+  EXPECT_EQ(veh::wheelRateEstimate(d, tr).sprung_mass,
+            30300.0 + 2.0 * (d.sprocket.mass + d.idler.mass + 2.0 * 60.0));
+  EXPECT_EQ(veh::wheelRateEstimate(d, un).sprung_mass, 30300.0);
+}
+
+// guide_stiffness, given in code, is checked by validateDescription() like a read one; left
+// unset it is not in the canonical text (so the hash of every earlier description stands); and
+// it is also the return rollers' hold across the links.
+TEST(GuideStiffness, CheckedInCodeAbsentFromOldHashesAndHoldsTheRollers) {
+  veh::VehicleDescription coded;
+  for (const double bad : {0.0, 1e16}) {
+    coded.suspension.guide_stiffness = bad;
+    expectInputError([&] { veh::validateDescription(coded, "coded"); },
+                     {"suspension.guide_stiffness", "out of range or not finite"});
+  }
+  const veh::VehicleDescription paper = veh::loadVehicleDescription(kPaperFile);
+  EXPECT_FALSE(contains(veh::canonicalDescription(paper), "guide_stiffness"));
+
+  veh::VehicleDescription d = paper;
+  d.return_rollers.x = {0.4, -1.2};
+  d.return_rollers.mass = 50.0;
+  d.suspension.contact_shear_stiffness = 1e4;
+  d.suspension.guide_stiffness = 3e9;
+  const veh::VehicleModel model = veh::buildVehicleModel(d, veh::Variant::Tracked);
+  int rollers = 0;
+  for (const tvd::fem::Spring& s : model.model.springs)
+    if (s.name.rfind("return_roller_", 0) == 0) {
+      ++rollers;
+      EXPECT_EQ(s.stiffness(1), 3e9) << s.name;
+    }
+  EXPECT_EQ(rollers, 4);
+}

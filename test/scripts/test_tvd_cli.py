@@ -229,16 +229,31 @@ class TvdCliTest(unittest.TestCase):
                     delta=1e-9)
             self.assertFalse([w for w in statics["warnings"] if "torsion bars" in w], statics)
             e = modes["wheel_rate_estimate"]
-            text = self.tvd("modes", "--vehicle", VEHICLE, "--variant", variant, "--count", "6")
-            self.assertIn(f"torsion bars and pads alone (hand estimate): sag {e['sag_m'] * 1e3:.1f} "
-                          f"mm, bounce {e['bounce_hz']:.2f} Hz", text.stdout)
-            self.assertNotIn("torsion bars", text.stderr)
+            # The whole line, in both commands' text.
+            line = (f"torsion bars and pads alone (hand estimate): sag {e['sag_m'] * 1e3:.1f} "
+                    f"mm, bounce {e['bounce_hz']:.2f} Hz (wheel rate {rate:.6g} N/m, {wheels} "
+                    f"road wheels, {mass:g} kg)")
+            for command in ("modes", "statics"):
+                text = self.tvd(command, "--vehicle", VEHICLE, "--variant", variant,
+                                *(["--count", "6"] if command == "modes" else []))
+                self.assertIn(line, text.stdout, command)
+                self.assertNotIn("torsion bars", text.stderr, command)
         self.assertAlmostEqual(modes["wheel_rate_estimate"]["sag_m"], 0.0162, delta=5e-5)
 
         light = self.tvd_json("statics", "--vehicle", OWN_VEHICLE, "--variant", "tracked")
         carried = [w for w in light["warnings"] if "less than a fifth" in w]
         self.assertEqual(len(carried), 1, light["warnings"])
         self.assertIn("track_assembly.link_member_bending_inertia", carried[0])
+        # modes says it too, of the tracked variant's own estimate (the chain wheels' mass).
+        r = self.tvd("modes", "--vehicle", OWN_VEHICLE, "--variant", "tracked", "--count", "8")
+        self.assertIn("tvd: warning: the hull sags 1.18 mm under its weight, less than a fifth of "
+                      "the 39.5 mm of the hull with its chain wheels (10200 kg)", r.stderr)
+        # Under braking the statics are another load case: no verdict on the sag there.
+        braking = self.tvd_json("statics", "--vehicle", OWN_VEHICLE, "--variant", "tracked",
+                                "--accel", "-1")
+        self.assertLess(-braking["hull_sag_m"], 0.2 * light["wheel_rate_estimate"]["sag_m"])
+        self.assertFalse([w for w in braking["warnings"] if "less than a fifth" in w],
+                         braking["warnings"])
         r = self.tvd("modes", "--vehicle", OWN_VEHICLE, "--variant", "untracked", "--count", "8")
         self.assertIn("tvd: warning: the hull's bounce (mode ", r.stderr)
         self.assertIn("suspension.contact_shear_stiffness 2e+10 N/m", r.stderr)
