@@ -757,10 +757,13 @@ class TvdCliTest(unittest.TestCase):
         header, rows = read_csv(out)
         self.assertEqual(header[:6], ["time_s", "station_m", "hull_heave_m",
                                       "hull_vertical_accel_m_s2", "hull_pitch_deg", "hull_roll_deg"])
-        # 7 more hull rates and accelerations and the hull's surge, 14 wheels, 4 columns for each
-        # of 2 named points, the road under each of the 14 wheels, the travel acceleration, the
-        # ground force per side and the contacts in tension.
-        self.assertEqual(len(header), 6 + 8 + 14 + 2 * 4 + 14 + 1 + 3)
+        # 7 more hull rates and accelerations, the hull's surge, sway, yaw, yaw rate and yaw
+        # acceleration, 14 wheels, 4 columns for each of 2 named points, the road under each of
+        # the 14 wheels, the travel acceleration, the ground force per side and the contacts in
+        # tension.
+        self.assertEqual(len(header), 6 + 12 + 14 + 2 * 4 + 14 + 1 + 3)
+        self.assertEqual(header[6 + 7:6 + 12], ["hull_surge_m", "hull_sway_m", "hull_yaw_deg",
+                                                "hull_yaw_rate_deg_s", "hull_yaw_accel_deg_s2"])
         self.assertEqual(header[-4:], ["travel_accel_m_s2", "ground_force_left_n",
                                        "ground_force_right_n", "contacts_in_tension"])
         self.assertEqual(d["peak_travel_accel_m_s2"], 0.0)

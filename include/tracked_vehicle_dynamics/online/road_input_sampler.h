@@ -7,7 +7,8 @@
 //   u_q  = h(s + x_q, y_q + lateral_offset)                                    [m]
 //   u'_q = v dh/dx                                                              [m/s]
 // with dh/dx the slope of the bilinear cell under the contact, on a station the cell ahead: what
-// Terrain::slope() gives offline (RoadExcitation), bit for bit. On a grid's first or last
+// Terrain::slope() gives on the same grid (offline: RoadExcitation), bit for bit. On a grid's
+// first or last
 // station (the next patch may go on) or in a gap bridged between patches, dh/dx is the forward
 // difference on the whole buffer, (h(x + e) - h(x)) / e, e = kSlopeStep: the cell ahead too
 // (backwards at the end of coverage).
