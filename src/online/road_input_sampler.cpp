@@ -84,7 +84,7 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       continue;
     }
     Lookup& lookup = lookups_[g];
-    // A group that needs u' leaves the run at its last station: the cell ahead rises there.
+    // A group that needs u' leaves the run at its last station: the cell ahead is not flat.
     const bool in_flat_run =
         x >= lookup.flat_from && (group_rate_[g] ? x < lookup.flat_until : x <= lookup.flat_until);
     if (lookup.grid != nullptr && x >= lookup.from && x <= lookup.until && in_flat_run &&
@@ -105,7 +105,10 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
     lookup.flat_until = 0.0;
     if (lookup.grid != nullptr) {
       weight = lookup.grid->stationWeightOf(x);
-      if (weight.edge == 0) {
+      // A run of one sample is no run: the heights held were sampled inside its sloped cell,
+      // not on its station, which a contact moved back onto it would be given.
+      if (weight.edge == 0 &&
+          lookup.grid->flatRunEnd(weight.cell) > lookup.grid->stations()(weight.cell)) {
         lookup.flat_from = lookup.grid->stations()(weight.cell);
         lookup.flat_until = lookup.grid->flatRunEnd(weight.cell);
         lookup.offset = lateral_offset;
@@ -128,8 +131,8 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       (*w)(q) = held_(q);
       double rate_q = 0.0;
       if (needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0) {
-        // Inside a grid its cell's slope, as Terrain::slope() gives it; at a grid's edge (where
-        // the next patch may go on) or in a bridged gap, differences on the buffer.
+        // Inside a grid its cell's slope, as Terrain::slope() gives it; on a grid's last
+        // station (where the next patch may go on) or in a bridged gap, rate().
         rate_q = lookup.grid != nullptr && weight.edge == 0 && !std::isnan(y)
                      ? speed * lookup.grid->slope(weight, cell.cell)
                      : rate(buffer, x, y, held_(q), speed, from, until);
@@ -142,16 +145,18 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
 
 double RoadInputSampler::rate(const terrain::TerrainBuffer& buffer, double x, double y,
                               double height, double speed, double from, double until) const {
-  // The cell ahead, as inside a grid (on its last station, the next patch's or the bridge's
-  // first cell); backwards only at the end of coverage.
-  auto covered = [&](double s) { return (s >= from && s <= until) || buffer.covers(s); };
+  // The cell ahead, as inside a grid: the cell slope of the grid that answers just ahead (the
+  // next patch, or an older one a newer patch ends inside: its heights may step from ours); in a
+  // bridged gap the bridge's, linear from `height`. Nothing ahead: 0, as Terrain::slope() at a
+  // terrain's end.
   const double xb = x + kSlopeStep;
-  if (covered(xb))
-    return speed * (buffer.height(xb, y) - height) / kSlopeStep;
-  const double xa = x - kSlopeStep;
-  if (covered(xa))
-    return speed * (height - buffer.height(xa, y)) / kSlopeStep;
-  return 0.0;
+  if (!((xb >= from && xb <= until) || buffer.covers(xb)))
+    return 0.0;
+  double grid_from = 0.0, grid_until = 0.0;
+  const terrain::Terrain* grid = buffer.gridFor(xb, &grid_from, &grid_until);
+  if (grid != nullptr && !std::isnan(y))
+    return speed * grid->slope(grid->stationWeightOf(xb), grid->lateralCellOf(y));
+  return speed * (buffer.height(xb, y) - height) / (xb - x);
 }
 
 void RoadInputSampler::setHeld(const Vector& heights) {

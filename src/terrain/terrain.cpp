@@ -139,7 +139,9 @@ double Terrain::height(double x, const LateralCell& cell) const {
 Terrain::StationWeight Terrain::stationWeightOf(double x) const {
   StationWeight station;
   const Eigen::Index n = stations_.size();
-  if (x <= stations_(0)) {
+  // The first station is inside (cell 0, weight 0: its height exactly, and slope() the cell
+  // ahead's, as slope(x, y)); a one-sample grid has no cell.
+  if (x < stations_(0) || (n == 1 && x == stations_(0))) {
     station.edge = -1;
   } else if (x >= stations_(n - 1)) {
     station.edge = 1;

@@ -782,9 +782,9 @@ TEST(OnlineVehicle, PeakAccelerationIsTheLargestMagnitudeUpOrDown) {
   }
 }
 
-// The road rate u' = v dh/dx at the first covered station (the grid's edge, nothing behind it:
-// the forward difference) and at the last station of a flat run, where the rise ahead starts:
-// the cell ahead, also when the run's cached heights served the step before.
+// The road rate u' = v dh/dx at the first covered station (nothing behind it: its cell's slope)
+// and at the last station of a flat run, where the rise ahead starts: the cell ahead, also when
+// the run's cached heights served the step before.
 TEST(RoadInputSampler, RateAtTheEdgeOfCoverageAndAtTheEndOfAFlatRun) {
   Vector w(2);
   terrain::TerrainBuffer ramp;
@@ -818,6 +818,67 @@ TEST(RoadInputSampler, RateAtTheEdgeOfCoverageAndAtTheEndOfAFlatRun) {
   heights_only.sample(flat_then_ramp, 5.0, 4.0, 0.0, &w);
   EXPECT_EQ(w(0), 0.0);
   EXPECT_EQ(w(1), 0.0);
+}
+
+// Where patches meet, u' is the slope of the cell ahead in whatever grid answers there, never a
+// difference across two grids: a newer patch 1 mm above an older one, ending at the contact,
+// once gave u' = -1e-3 m / 1e-6 m * v = -1e4 m/s, a one-step spike of 0.13 m/s in the bundled
+// vehicle's hull velocity. At the end of coverage u' = 0 (Terrain::slope() at a terrain's end);
+// on a grid's first station its cell's slope exactly, whatever the datum; and a contact moved back
+// onto the station that starts a sloped cell gets that station's height, not the one held from
+// inside the cell.
+TEST(RoadInputSampler, RateAcrossPatchesIsTheCellAheadNeverAStep) {
+  Vector w(2);
+  const Eigen::Vector2d lines(-1.0, 1.0);
+  terrain::TerrainBuffer stepped;
+  stepped.addPatch(0.0, 0.5, lines, Matrix::Zero(2, 21));           // 0 .. 10 m, flat
+  stepped.addPatch(3.0, 0.5, lines, Matrix::Constant(2, 7, 1e-3));  // newer: 3 .. 6 m, 1 mm up
+  RoadInputSampler sampler(Vector::Zero(1), Vector::Zero(1));
+  for (const double x : {5.999999, 6.0, 6.000001}) {
+    sampler.sample(stepped, x, 10.0, 0.0, &w);
+    EXPECT_EQ(w(1), 0.0) << x;
+  }
+  terrain::TerrainBuffer behind;  // a patch re-sent behind an older one ahead of it
+  behind.addPatch(10.0, 0.5, lines, Matrix::Constant(2, 5, 1e-3));
+  behind.addPatch(0.0, 0.5, lines, Matrix::Zero(2, 21));
+  sampler.sample(behind, 10.0, 10.0, 0.0, &w);
+  EXPECT_EQ(w(1), 0.0);
+
+  // The end of coverage: 0, 0, 0.1 on stations 0, 1, 2.
+  Matrix end(2, 3);
+  end << 0.0, 0.0, 0.1, 0.0, 0.0, 0.1;
+  terrain::TerrainBuffer ends;
+  ends.addPatch(0.0, 1.0, lines, end);
+  const terrain::Terrain whole(Eigen::Vector3d(0.0, 1.0, 2.0), lines, end, "end");
+  RoadInputSampler at_end(Vector::Zero(1), Vector::Zero(1));
+  at_end.sample(ends, 2.0, 10.0, 0.0, &w);
+  EXPECT_EQ(w(1), 10.0 * whole.slope(2.0, 0.0));
+  EXPECT_EQ(w(1), 0.0);
+
+  // A grid's first station, far from the origin and the datum: the cell's slope, exactly.
+  Matrix high(2, 3);
+  high << 1000.0, 1000.1, 1000.2, 1000.0, 1000.1, 1000.2;
+  terrain::TerrainBuffer far;
+  far.addPatch(1e7, 1.0, lines, high);
+  const terrain::Terrain far_grid(Eigen::Vector3d(1e7, 1e7 + 1.0, 1e7 + 2.0), lines, high, "far");
+  EXPECT_EQ(far_grid.stationWeightOf(1e7).edge, 0);
+  EXPECT_EQ(far_grid.slope(far_grid.stationWeightOf(1e7), far_grid.lateralCellOf(0.0)),
+            far_grid.slope(1e7, 0.0));
+  RoadInputSampler first(Vector::Zero(1), Vector::Zero(1));
+  first.sample(far, 1e7, 1.0, 0.0, &w);
+  EXPECT_EQ(w(0), 1000.0);
+  EXPECT_EQ(w(1), far_grid.slope(1e7, 0.0));
+
+  // Heights only (no u'): inside the sloped cell [1, 2] m, then back onto its station 1 m.
+  Matrix ramp(2, 4);
+  ramp << 0.0, 0.1, 0.3, 0.6, 0.0, 0.1, 0.3, 0.6;
+  terrain::TerrainBuffer ramps;
+  ramps.addPatch(0.0, 1.0, lines, ramp);
+  RoadInputSampler heights(Vector::Zero(1), Vector::Zero(1), {false});
+  heights.sample(ramps, 1.5, 1.0, 0.0, &w);
+  EXPECT_DOUBLE_EQ(w(0), 0.2);
+  heights.sample(ramps, 1.0, 1.0, 0.0, &w);
+  EXPECT_EQ(w(0), 0.1);
 }
 
 TEST(OnlineVehicle, PointAccelerationAddsTheModelsElasticPart) {

@@ -337,6 +337,11 @@ TEST(VehicleFrf, AntiPhaseRoadsRollTheHullAtItsRollMode) {
   EXPECT_LT(peak(in_phase, rx), 1e-3 * peak(anti, rx));
   Eigen::Index top = 0;
   anti.col(rx).cwiseAbs().maxCoeff(&top);
+  // Left up, right down: the hull's left side rises, a positive roll about +x (REP-103), so at low
+  // frequency its roll acceleration -omega^2 theta is in opposition to the road (180 deg).
+  const dynamics::Complex low = anti(1, rx);
+  EXPECT_LT(low.real(), 0.0) << low;
+  EXPECT_LT(std::abs(low.imag()), 0.01 * std::abs(low.real())) << low;
   // The un-tracked roll mode of the README's Table 4 (mode 6, 7.13 Hz).
   EXPECT_NEAR(hz(top), 7.13, 0.1) << "roll FRF peak";
   const ComplexMatrix full = v.full.frf(

@@ -1884,6 +1884,9 @@ class TvdCliTest(unittest.TestCase):
                           "sensor_mount_vertical_acc", "sensor_mount_lateral_acc"])
         outputs = {o["column"]: o for o in d["outputs"]}
         self.assertAlmostEqual(outputs["hull_roll_acc"]["peak_hz"], 7.13, delta=0.1)
+        # Left up, right down: positive roll (REP-103: about +x, lifting the left side), so at
+        # 0.05 Hz the roll acceleration -omega^2 theta is in opposition to the road.
+        self.assertAlmostEqual(abs(c["hull_roll_acc_phase_deg"][1]), 180.0, delta=1.0)
         self.assertEqual(outputs["hull_roll_acc"]["unit"], "(rad/s^2)/m")
         plain, plain_columns, plain_text = self.frf_columns("frf_in_phase.csv", "--cache-dir",
                                                             self.cache)

@@ -8,10 +8,11 @@
 //   u'_q = v dh/dx                                                              [m/s]
 // with dh/dx the slope of the bilinear cell under the contact, on a station the cell ahead: what
 // Terrain::slope() gives on the same grid (offline: RoadExcitation), bit for bit. On a grid's
-// first or last
-// station (the next patch may go on) or in a gap bridged between patches, dh/dx is the forward
-// difference on the whole buffer, (h(x + e) - h(x)) / e, e = kSlopeStep: the cell ahead too
-// (backwards at the end of coverage).
+// last station (the next patch may go on), the cell ahead is that of whatever answers at x + e,
+// e = kSlopeStep: another grid's own cell slope (a difference across two grids would turn a step
+// between them into a slope of step / e), or in a gap bridged between patches the bridge's,
+// (h(x + e) - h(x)) / e. Where nothing covers x + e (the end of coverage) u' = 0, as
+// Terrain::slope() is at a terrain's end.
 // u' is evaluated only for the inputs flagged (OnlineVehicle: a C_u column, or a K_u column when
 // modes are quasi-static) and is 0 elsewhere.
 //
@@ -95,7 +96,7 @@ class RoadInputSampler {
   std::vector<Eigen::Index> members_;
   std::vector<std::size_t> group_begin_;
   std::vector<Lookup> lookups_;     // per group
-  std::vector<char> group_rate_;    // per group: a member needs u' (no flat-run shortcut)
+  std::vector<char> group_rate_;    // per group: a member needs u' (leaves a run at its end)
   std::vector<ContactCell> cells_;  // per contact
   const terrain::TerrainBuffer* lookup_buffer_ = nullptr;
   std::uint64_t lookup_revision_ = 0;

@@ -52,7 +52,7 @@ class Terrain {
   struct StationWeight {
     Eigen::Index cell = 0;
     double weight = 0.0;
-    int edge = 0;  ///< -1: x <= first station, +1: x >= last station, 0: inside
+    int edge = 0;  ///< -1: x < first station, +1: x >= last station, 0: inside
   };
   /// x must not be NaN.
   StationWeight stationWeightOf(double x) const;
