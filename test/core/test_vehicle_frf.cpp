@@ -312,8 +312,8 @@ TEST(VehicleFrf, WheelbaseFilter) {
 // Anti-phase roads (input_delay.h): left +h, right -h. On the symmetric bundled vehicle they
 // leave heave and pitch alone and roll the hull, whose roll FRF peaks at the un-tracked roll mode
 // (7.13 Hz); in-phase roads do the opposite; the reduced roll FRF is the full model's within
-// 1 dB; and by linearity the left track's road alone gives half their sum, which the synchronous
-// FRF of a delay that lifts the left inputs only must equal.
+// 1 dB; and by linearity the left track's road alone gives half their sum, which a delay that
+// lifts the left inputs only must give, travelled at 30 km/h too (the factors ride on the lags).
 TEST(VehicleFrf, AntiPhaseRoadsRollTheHullAtItsRollMode) {
   const Vector hz = frequencies(kBandHz, 0.05);
   const Variant& v = models(vehicle::Variant::Untracked);
