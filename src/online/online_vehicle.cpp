@@ -32,8 +32,7 @@ std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system,
   for (Eigen::Index q = 0; q < system.inputCount(); ++q) {
     const bool damped =
         system.input_damping.size() != 0 && !system.input_damping.col(q).isZero(0.0);
-    const bool stiff =
-        system.input_stiffness.size() != 0 && !system.input_stiffness.col(q).isZero(0.0);
+    const bool stiff = !system.input_stiffness.col(q).isZero(0.0);
     flags[static_cast<std::size_t>(q)] = damped || (quasi_static_modes && stiff);
   }
   return flags;

@@ -118,7 +118,8 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       const Eigen::Index q = members_[k];
       const double y = lateral_(q) + lateral_offset;
       ContactCell& cell = cells_[k];
-      if (lookup.grid == nullptr || std::isnan(y)) {
+      const bool on_grid = lookup.grid != nullptr && !std::isnan(y);
+      if (!on_grid) {
         held_(q) = buffer.height(x, y);
       } else {
         if (cell.grid != lookup.grid || cell.y != y) {
@@ -133,9 +134,8 @@ int RoadInputSampler::sample(const terrain::TerrainBuffer& buffer, double statio
       if (needs_rate_[static_cast<std::size_t>(q)] && speed != 0.0) {
         // Inside a grid its cell's slope, as Terrain::slope() gives it; on a grid's last
         // station (where the next patch may go on) or in a bridged gap, rate().
-        rate_q = lookup.grid != nullptr && weight.edge == 0 && !std::isnan(y)
-                     ? speed * lookup.grid->slope(weight, cell.cell)
-                     : rate(buffer, x, y, held_(q), speed, from, until);
+        rate_q = on_grid && weight.edge == 0 ? speed * lookup.grid->slope(weight, cell.cell)
+                                             : rate(buffer, x, y, held_(q), speed, from, until);
       }
       (*w)(n + q) = rate_q;
     }
@@ -153,9 +153,8 @@ double RoadInputSampler::rate(const terrain::TerrainBuffer& buffer, double x, do
   if (!((xb >= from && xb <= until) || buffer.covers(xb)))
     return 0.0;
   double grid_from = 0.0, grid_until = 0.0;
-  const terrain::Terrain* grid = buffer.gridFor(xb, &grid_from, &grid_until);
-  if (grid != nullptr && !std::isnan(y))
-    return speed * grid->slope(grid->stationWeightOf(xb), grid->lateralCellOf(y));
+  if (const terrain::Terrain* grid = buffer.gridFor(xb, &grid_from, &grid_until))
+    return speed * grid->slope(xb, y);
   return speed * (buffer.height(xb, y) - height) / (xb - x);
 }
 

@@ -32,7 +32,7 @@ struct FrfOptions {
   std::string model = "reduced";
   double speed_kmh = 0.0;  // 0: synchronous (tau = 1)
   /// in_phase (the paper's: both tracks' roads alike) | anti_phase (opposite, input_delay.h).
-  std::string excitation = "in_phase";
+  std::string sides = "in_phase";
   double max_hz = 50.0;
   double step_hz = 0.05;
   double max_mode_hz = 100.0;  // full model: dynamic modes up to here
@@ -169,7 +169,7 @@ void run(const FrfOptions& opt) {
   DofIndex dofs = 0, full_dofs = 0;
   std::string source;
   std::optional<ReducedModelSource> reduced;
-  const bool anti_phase = opt.excitation == "anti_phase";
+  const bool anti_phase = opt.sides == "anti_phase";
   auto delayFor = [&](const Vector& x, const Vector& y) {
     const dynamics::InputDelay delay =
         opt.speed_kmh > 0 ? dynamics::InputDelay::travelling(x, opt.speed_kmh / kKmhPerMs)
@@ -252,7 +252,7 @@ void run(const FrfOptions& opt) {
                 {"variant", vehicle::variantName(variant)},
                 {"model", opt.model},
                 {"excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous"},
-                {"sides", opt.excitation},
+                {"sides", opt.sides},
                 {"speed_kmh", opt.speed_kmh}});
   }
 
@@ -277,7 +277,7 @@ void run(const FrfOptions& opt) {
         .field("dofs", static_cast<long long>(dofs))
         .field("full_dofs", static_cast<long long>(full_dofs))
         .field("excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous")
-        .field("sides", opt.excitation)
+        .field("sides", opt.sides)
         .field("speed_kmh", opt.speed_kmh)
         .field("frequencies", static_cast<long long>(hz.size()))
         .field("max_hz", hz(hz.size() - 1));
@@ -360,7 +360,7 @@ void registerFrfCommand(CLI::App& app) {
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh,
                   "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
-  cmd->add_option("--sides", opt->excitation,
+  cmd->add_option("--sides", opt->sides,
                   "in_phase: both tracks' roads alike (the paper's) | anti_phase: left +h, "
                   "right -h, which rolls the hull (adds hull_lateral_acc, hull_roll_acc, "
                   "hull_yaw_acc and each point's _lateral_acc)")
