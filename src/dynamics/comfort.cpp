@@ -388,9 +388,23 @@ ComfortMetrics evaluateComfort(const Vector& acceleration, double sample_rate,
     peak = std::max(peak, mean_square);
   }
   metrics.mtvv = std::sqrt(peak);
+  metrics.peak_weighted = weighted.cwiseAbs().maxCoeff();
   if (absorbed)
     metrics.absorbed_power = absorbed->filter(acceleration).squaredNorm() / n;
   return metrics;
+}
+
+BasicMethodRatios basicMethodRatios(const ComfortMetrics& metrics) {
+  BasicMethodRatios r;
+  const double rms = metrics.weighted_rms;
+  if (!(rms > 0.0) || !(metrics.duration > 0.0))
+    return r;
+  r.crest_factor = metrics.peak_weighted / rms;
+  r.mtvv_ratio = metrics.mtvv / rms;
+  // VDV^4 = Σ a_w^4 / fs; for a signal of constant a_w,rms the VDV is a_w T^(1/4) times a shape
+  // factor (1 for a square wave, (3/2)^(1/4) for a sinusoid): the ratio is that shape factor.
+  r.vdv_ratio = metrics.vdv / (rms * std::pow(metrics.duration, 0.25));
+  return r;
 }
 
 ComfortMeter::ComfortMeter(double sample_rate, const ComfortOptions& options)
@@ -414,6 +428,7 @@ void ComfortMeter::add(double acceleration) {
   sum_fourth_ += y2 * y2;
   running_mean_square_ += running_alpha_ * (y2 - running_mean_square_);
   max_running_mean_square_ = std::max(max_running_mean_square_, running_mean_square_);
+  peak_weighted_ = std::max(peak_weighted_, std::abs(y));
   last_weighted_ = y;
   if (absorbed_power_) {
     const double z = absorbed_power_->step(acceleration);
@@ -427,7 +442,7 @@ void ComfortMeter::reset() {
     absorbed_power_->reset();
   count_ = 0;
   sum_squares_ = sum_fourth_ = sum_power_ = 0.0;
-  running_mean_square_ = max_running_mean_square_ = last_weighted_ = 0.0;
+  running_mean_square_ = max_running_mean_square_ = peak_weighted_ = last_weighted_ = 0.0;
 }
 
 double ComfortMeter::weightedRms() const {
@@ -461,6 +476,7 @@ ComfortMetrics ComfortMeter::metrics() const {
   metrics.weighted_rms = weightedRms();
   metrics.vdv = vibrationDoseValue();
   metrics.mtvv = maximumTransientVibrationValue();
+  metrics.peak_weighted = peak_weighted_;
   metrics.absorbed_power = absorbedPower();
   metrics.duration = duration();
   metrics.samples = count_;

@@ -381,7 +381,7 @@ void registerRideCommand(CLI::App& app) {
                   "every run, by speed: CSV, or .mat (one variable per column)")
       ->check(outputFile({".csv", ".mat"}));
   cmd->add_flag("--json", opt->json, "print a JSON summary");
-  cmd->callback([opt, variant, track, iso, time_only, spectral_only, points]() {
+  cmd->callback([cmd, opt, variant, track, iso, time_only, spectral_only, points]() {
     const bool spectral = iso->count() > 0;
     if (spectral && track->count() > 0)
       throw InputError(
@@ -410,6 +410,7 @@ void registerRideCommand(CLI::App& app) {
       throw InputError("ride: --psd-out and --out name the same file " + opt->out_file);
     opt->variant_given = variant->count() > 0;
     opt->points_given = points->count() > 0;
+    opt->max_frequency_given = cmd->get_option("--max-frequency")->count() > 0;
     if (spectral)
       runSpectralRide(*opt);
     else

@@ -35,6 +35,7 @@ struct RideOptions {
   double waviness = terrain::Iso8608Options{}.waviness;
   double min_frequency = terrain::Iso8608Options{}.min_frequency;
   double max_frequency = terrain::Iso8608Options{}.max_frequency;
+  bool max_frequency_given = false;  // the band note is for the default band only
   double points_per_decade = 400.0;
   std::string psd_out;  // --psd-out: the PSDs at the sweep's speeds (spectral only)
 };

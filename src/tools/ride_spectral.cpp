@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -118,6 +119,86 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
               {"lateral_correlation", lateralCorrelationName(opt.independent_sides)}});
 }
 
+// ISO 8608 classifies a road by its PSD over 0.011..2.83 cycles/m; the road does not end there.
+// At speed v the band reaches v n_max only (3.9 Hz at 5 km/h, below the hull's bounce), so at low
+// speed the figures leave out whatever the shorter waves excite. Were the class's PSD to go on to
+// kBandCheckFrequency (waves of 0.1 m, shorter than the pads, which average them), this says
+// where that changes the absorbed power by more than kBandCheckShare: a sensitivity, not a
+// correction (what a real road holds beyond n_max is the user's to give, --max-frequency).
+constexpr double kBandCheckFrequency = 10.0;  // [cycles/m]
+constexpr double kBandCheckShare = 0.1;
+
+// runs: the sweep's results on the road's own band, by speed.
+std::optional<std::string> bandCutWarning(const RideOptions& opt,
+                                          const dynamics::ModalSystem& modal, const Vector& lateral,
+                                          const std::vector<DofIndex>& rows,
+                                          const std::vector<std::string>& points,
+                                          const dynamics::RoadSpectrum& road,
+                                          const std::vector<double>& sweep,
+                                          const std::map<double, Run>& runs) {
+  if (opt.max_frequency_given || !(road.max_frequency < kBandCheckFrequency))
+    return std::nullopt;
+  dynamics::RoadSpectrum extended = road;
+  extended.max_frequency = kBandCheckFrequency;
+  dynamics::SpectralRideOptions options;
+  options.points_per_decade = opt.points_per_decade;
+  const dynamics::SpectralRide wide(modal, lateral, rows, extended, options);
+  // The worst point at the lowest speed, and the fastest speed of the sweep still over the share.
+  double worst_ratio = 0.0, worst_base = 0.0, worst_wide = 0.0, fastest = 0.0;
+  std::size_t worst_point = 0;
+  for (double speed_kmh : sweep) {
+    const std::vector<dynamics::SpectralOutput>& base = runs.at(speed_kmh).points;
+    const dynamics::SpectralRideResult more = wide.evaluate(speed_kmh / kKmhPerMs);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double p = base[i].absorbed_power, q = more.outputs[i].absorbed_power;
+      if (!(q > (1.0 + kBandCheckShare) * p))
+        continue;
+      fastest = speed_kmh;
+      if (speed_kmh == sweep.front() && q / p > worst_ratio) {
+        worst_ratio = q / p;
+        worst_base = p;
+        worst_wide = q;
+        worst_point = i;
+      }
+    }
+  }
+  if (fastest == 0.0)
+    return std::nullopt;
+  std::ostringstream m;
+  m << std::setprecision(3) << "the road's band ends at " << road.max_frequency
+    << " cycles/m (ISO 8608's classification band), which at " << sweep.front() << " km/h is "
+    << road.max_frequency * sweep.front() / kKmhPerMs << " Hz: were the class's PSD to go on to "
+    << kBandCheckFrequency << " cycles/m (waves of " << 1.0 / kBandCheckFrequency << " m), ";
+  if (worst_ratio > 0.0)
+    m << points[worst_point] << " would absorb " << worst_wide << " W at " << sweep.front()
+      << " km/h, not " << worst_base << " W; ";
+  m << "over " << 100.0 * kBandCheckShare << " % more power at the sweep's speeds up to " << fastest
+    << " km/h, less above. --max-frequency sets the band your road has";
+  return m.str();
+}
+
+// With independent sides the left and right profiles meet at the road's centre line: an offset
+// that carries inputs across it puts them on the other track's profile.
+std::optional<std::string> sideCrossingWarning(const RideOptions& opt,
+                                               const dynamics::SecondOrderSystem& sys) {
+  if (!opt.independent_sides || opt.lateral_offset == 0.0)
+    return std::nullopt;
+  Eigen::Index crossed = 0;
+  for (Eigen::Index q = 0; q < sys.input_lateral.size(); ++q) {
+    const double y = sys.input_lateral(q);
+    if (y != 0.0 && (y > 0.0) != (y + opt.lateral_offset > 0.0))
+      ++crossed;
+  }
+  if (crossed == 0)
+    return std::nullopt;
+  std::ostringstream m;
+  m << "--lateral-offset " << opt.lateral_offset << " m carries " << crossed << " of "
+    << sys.input_lateral.size()
+    << " road inputs across the road's centre line, where --independent-sides joins its left and "
+       "right profiles: they ride the other side's profile";
+  return m.str();
+}
+
 }  // namespace
 
 void runSpectralRide(const RideOptions& opt) {
@@ -143,6 +224,10 @@ void runSpectralRide(const RideOptions& opt) {
   const Vector lateral = sys.input_lateral.array() + opt.lateral_offset;
   const dynamics::SpectralRide ride(modal, lateral, rows, road, spectral);
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
+  if (const std::optional<std::string> w = sideCrossingWarning(opt, sys)) {
+    warnings.push_back(*w);
+    std::cerr << "tvd: warning: " << *w << "\n";
+  }
 
   RideRuns<Run> rate([&](double speed_kmh) {
     const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / kKmhPerMs);
@@ -162,6 +247,11 @@ void runSpectralRide(const RideOptions& opt) {
   const std::vector<dynamics::LimitCrossing> limits = rate.limits(criteria, opt.tolerance_kmh);
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
+  if (const std::optional<std::string> w =
+          bandCutWarning(opt, modal, lateral, rows, points, road, sweep, runs)) {
+    warnings.push_back(*w);
+    std::cerr << "tvd: warning: " << *w << "\n";
+  }
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;

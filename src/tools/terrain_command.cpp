@@ -113,6 +113,20 @@ void run(const TerrainOptions& opt) {
       std::cerr << "tvd: note: --min-frequency " << brief(opt.min_frequency)
                 << " cycles/m is below 1/(2 --length) = " << brief(n_low) << ": a road of "
                 << brief(opt.length) << " m holds no longer wavelength, so its band starts there\n";
+    else if (n_low > opt.min_frequency) {
+      // The default band's longest waves (90 m) do not fit: the road is smoother than its class
+      // over the default band. Said when that costs more than 1 % of the r.m.s. height.
+      const double full_rms =
+          std::sqrt(terrain::iso8608Variance(road_class, opt.min_frequency, opt.max_frequency));
+      if (expected_rms < 0.99 * full_rms)
+        std::cerr << std::setprecision(3) << "tvd: note: a road of " << opt.length
+                  << " m holds no wavelength longer than " << 2.0 * opt.length
+                  << " m, so its band starts at " << n_low << " cycles/m, not the default "
+                  << opt.min_frequency << ": r.m.s. height " << expected_rms * 1e3
+                  << " mm against the class's " << full_rms * 1e3
+                  << " mm over the default band (--length " << std::ceil(0.5 / opt.min_frequency)
+                  << " or more keeps it)\n";
+    }
   }
 
   if (opt.json) {

@@ -286,6 +286,7 @@ TEST(Comfort, OnlineMeterAgreesWithBatch) {
     EXPECT_NEAR(online.weighted_rms / batch.weighted_rms, 1.0, kAgreementTolerance);
     EXPECT_NEAR(online.vdv / batch.vdv, 1.0, kAgreementTolerance);
     EXPECT_NEAR(online.mtvv / batch.mtvv, 1.0, kAgreementTolerance);
+    EXPECT_NEAR(online.peak_weighted / batch.peak_weighted, 1.0, kAgreementTolerance);
     EXPECT_NEAR(*online.absorbed_power / *batch.absorbed_power, 1.0, kAgreementTolerance);
     EXPECT_DOUBLE_EQ(online.duration, batch.duration);
     EXPECT_GT(meter.runningRms(), 0.0);
@@ -293,9 +294,56 @@ TEST(Comfort, OnlineMeterAgreesWithBatch) {
     meter.reset();
     EXPECT_EQ(meter.sampleCount(), 0u);
     EXPECT_DOUBLE_EQ(meter.weightedRms(), 0.0);
+    EXPECT_DOUBLE_EQ(meter.peakWeighted(), 0.0);
     meter.add(a(0));
     EXPECT_NEAR(meter.lastWeighted(), weighted(0), kAgreementTolerance);
   }
+}
+
+// ISO 2631-1's tests of the basic method: a steady sinusoid has the closed-form ratios √2, the
+// MTVV's sqrt(1 + G) (as above) and (3/2)^(1/4), all within the limits; one shock in a quiet
+// record exceeds all three.
+TEST(Comfort, BasicMethodRatiosOfASinusoidAndOfAShock) {
+  const double fs = 1000.0;
+  const double f = 5.0;
+  const double duration = 60.0;
+  const ComfortMetrics steady = evaluateComfort(sinusoid(1.0, f, fs, duration), fs);
+  const BasicMethodRatios r = basicMethodRatios(steady);
+  // The peak is the weighted signal's; the 0.4 Hz high-pass's start-up transient lifts the first
+  // peaks of a sinusoid switched on at t = 0 by 3 % above the steady √2.
+  const Vector weighted =
+      WeightingFilter::iso2631(Weighting::Wk, fs).filter(sinusoid(1.0, f, fs, duration));
+  EXPECT_DOUBLE_EQ(steady.peak_weighted, weighted.cwiseAbs().maxCoeff());
+  EXPECT_GT(r.crest_factor, std::sqrt(2.0));
+  EXPECT_LT(r.crest_factor, 1.04 * std::sqrt(2.0));
+  const double alpha = -std::expm1(-1.0 / fs);
+  const double g = std::abs(alpha / (1.0 - (1.0 - alpha) * std::polar(1.0, -4.0 * kPi * f / fs)));
+  EXPECT_NEAR(r.mtvv_ratio / std::sqrt(1.0 + g), 1.0, kClosedFormTolerance);
+  EXPECT_NEAR(r.vdv_ratio / std::pow(1.5, 0.25), 1.0, kClosedFormTolerance);
+  EXPECT_TRUE(r.basicMethodSufficient());
+
+  // A 0.1 m/s^2 sinusoid with one half-sine of 20 m/s^2 lasting 0.1 s at t = 30 s.
+  Vector shock = sinusoid(0.1, f, fs, duration);
+  for (Eigen::Index i = 0; i < 100; ++i)
+    shock(30000 + i) += 20.0 * std::sin(kPi * static_cast<double>(i) / 100.0);
+  const ComfortMetrics jolted = evaluateComfort(shock, fs);
+  const BasicMethodRatios s = basicMethodRatios(jolted);
+  EXPECT_GT(s.crest_factor, BasicMethodRatios::kMaxCrestFactor);
+  EXPECT_GT(s.mtvv_ratio, BasicMethodRatios::kMaxMtvvRatio);
+  EXPECT_GT(s.vdv_ratio, BasicMethodRatios::kMaxVdvRatio);
+  EXPECT_FALSE(s.basicMethodSufficient());
+  // Each limit alone decides: just over the crest-factor limit, the others in range.
+  ComfortMetrics edge = steady;
+  edge.peak_weighted = 9.01 * steady.weighted_rms;
+  EXPECT_FALSE(basicMethodRatios(edge).basicMethodSufficient());
+  edge.peak_weighted = 8.99 * steady.weighted_rms;
+  EXPECT_TRUE(basicMethodRatios(edge).basicMethodSufficient());
+
+  // No vibration: no ratio, and nothing to object to.
+  const BasicMethodRatios none = basicMethodRatios(evaluateComfort(Vector::Zero(1000), fs));
+  EXPECT_DOUBLE_EQ(none.crest_factor, 0.0);
+  EXPECT_DOUBLE_EQ(none.vdv_ratio, 0.0);
+  EXPECT_TRUE(none.basicMethodSufficient());
 }
 
 TEST(Comfort, EmptySeriesGivesZeros) {

@@ -1255,6 +1255,37 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(d["comfort"][key] / c["comfort"][key], 2.0, places=7, msg=key)
         self.assertAlmostEqual(d["comfort"]["absorbed_power_w"] / c["comfort"]["absorbed_power_w"],
                                4.0, places=6)
+        # ISO 2631-1's ratios (6.2.1, 6.3.3) are the metrics' and do not scale with the road.
+        for point in [c["comfort"]] + c["comfort_at_points"]:
+            rms, duration = point["weighted_rms_m_s2"], c["simulated_seconds"]
+            self.assertAlmostEqual(point["crest_factor"] * rms / point["peak_weighted_m_s2"], 1.0,
+                                   places=8)
+            self.assertAlmostEqual(point["mtvv_ratio"] * rms / point["mtvv_m_s2"], 1.0, places=8)
+            # T = samples / fs: one sample more than the steps simulated.
+            self.assertAlmostEqual(point["vdv_ratio"] * rms * duration ** 0.25
+                                   / point["vdv_m_s1_75"], 1.0, delta=1e-4)
+            self.assertEqual(point["basic_method_sufficient"],
+                             point["crest_factor"] <= 9 and point["mtvv_ratio"] <= 1.5
+                             and point["vdv_ratio"] <= 1.75)
+            self.assertGreater(point["crest_factor"], np.sqrt(2))  # a random road, not a sinusoid
+        for key in ("crest_factor", "mtvv_ratio", "vdv_ratio", "basic_method_sufficient"):
+            self.assertAlmostEqual(d["comfort"][key], c["comfort"][key], places=7, msg=key)
+        self.assertAlmostEqual(d["comfort"]["peak_weighted_m_s2"]
+                               / c["comfort"]["peak_weighted_m_s2"], 2.0, places=7)
+
+        # A road too short for the default band's longest waves starts its band higher, said
+        # with what that costs; at 46 m (1/(2 L) < 0.011) nothing is said.
+        r = self.tvd("terrain", "--iso8608", "C", "--length", "10", "--out", self.path("short.csv"),
+                     "--json")
+        short = json.loads(r.stdout)
+        self.assertEqual(short["band_cycles_per_m"], [0.05, 2.83])
+        self.assertIn("tvd: note: a road of 10 m holds no wavelength longer than 20 m, so its band "
+                      "starts at 0.05 cycles/m, not the default 0.011: r.m.s. height 7.09 mm "
+                      "against the class's 15.2 mm over the default band (--length 46 or more "
+                      "keeps it)", r.stderr)
+        self.assertAlmostEqual(short["band_rms_height_m"] * 1e3, 7.09, delta=0.005)
+        r = self.tvd("terrain", "--iso8608", "C", "--length", "46", "--out", self.path("46.csv"))
+        self.assertNotIn("note", r.stderr)
 
         # A band reaching below 1/(2 L) is generated from 1/(2 L) up, and said so.
         r = self.tvd("terrain", "--iso8608", "C", "--length", str(length), "--min-frequency",
@@ -1598,6 +1629,52 @@ class TvdCliTest(unittest.TestCase):
                 # 400 per decade: within 5e-4 of a 100x finer grid (README), 4000: 100x closer.
                 self.assertAlmostEqual(q["absorbed_power_w"] / p["absorbed_power_w"], 1.0,
                                        delta=5e-4)
+
+    def test_ride_spectral_warns_of_the_band_cut_and_of_sides_crossed(self):
+        """The default band (ISO 8608's 0.011-2.83 cycles/m) stops exciting at 3.9 Hz at 5 km/h:
+        the warning's figures are a --max-frequency 10 run's, and it names the fastest speed of
+        the sweep where that adds over 10 %; a band the user sets is not questioned. An offset
+        that carries a track across the centre line of independent sides is named."""
+        speeds = "5,10,20,40"
+        c = self.spectral_ride("--iso8608", "C", "--speeds", speeds)
+        wide = self.spectral_ride("--iso8608", "C", "--speeds", speeds, "--max-frequency", "10")
+        self.assertEqual(wide["warnings"], [])
+        cut = [w for w in c["warnings"] if w.startswith("the road's band ends at 2.83 cycles/m")]
+        self.assertEqual(len(cut), 1, c["warnings"])
+        m = re.search(r"which at 5 km/h is ([0-9.]+) Hz: .* \(waves of 0.1 m\), (\w+) would "
+                      r"absorb ([0-9.e+-]+) W at 5 km/h, not ([0-9.e+-]+) W; over 10 % more power "
+                      r"at the sweep's speeds up to ([0-9.]+) km/h", cut[0])
+        self.assertIsNotNone(m, cut[0])
+        self.assertAlmostEqual(float(m.group(1)) / (2.83 * 5 / 3.6), 1.0, delta=2e-3)
+        power = {(r["speed_kmh"], p["point"]): p["absorbed_power_w"]
+                 for d, key in ((c, "cut"), (wide, "wide")) for r in d["runs"]
+                 for p in [dict(q, point=(key, q["point"])) for q in r["points"]]}
+        sweep = [float(v) for v in speeds.split(",")]
+        over = {(v, pt) for v in sweep for pt in ("crew_seat", "hull")
+                if power[(v, ("wide", pt))] > 1.1 * power[(v, ("cut", pt))]}
+        self.assertEqual(float(m.group(5)), max(v for v, _ in over))
+        worst = max((pt for v, pt in over if v == 5.0),
+                    key=lambda pt: power[(5.0, ("wide", pt))] / power[(5.0, ("cut", pt))])
+        self.assertEqual(m.group(2), worst)
+        # Three significant digits of the two runs' figures.
+        self.assertAlmostEqual(float(m.group(3)) / power[(5.0, ("wide", worst))], 1.0, delta=5e-3)
+        self.assertAlmostEqual(float(m.group(4)) / power[(5.0, ("cut", worst))], 1.0, delta=5e-3)
+        # Fast enough that the shorter waves add little: nothing to say.
+        fast = self.spectral_ride("--iso8608", "C", "--speeds", "40,50")
+        self.assertEqual(fast["warnings"], [])
+        # The chosen band, even ISO's own, is the user's.
+        self.assertEqual(self.spectral_ride("--iso8608", "C", "--speeds", speeds,
+                                            "--max-frequency", "2.83")["warnings"], [])
+
+        crossed = self.spectral_ride("--iso8608", "C", "--independent-sides", "--speeds", "40,50",
+                                     "--lateral-offset", "100")
+        self.assertEqual([w for w in crossed["warnings"] if "centre line" in w],
+                         ["--lateral-offset 100 m carries 42 of 84 road inputs across the road's "
+                          "centre line, where --independent-sides joins its left and right "
+                          "profiles: they ride the other side's profile"])
+        for args in (("--lateral-offset", "0.5"), ()):
+            self.assertEqual(self.spectral_ride("--iso8608", "C", "--independent-sides", "--speeds",
+                                                "40,50", *args)["warnings"], [])
 
     def test_ride_spectral_bad_options_are_named_before_any_work(self):
         cache = self.path("cache_spectral_refused")

@@ -42,6 +42,12 @@
 //   running r.m.s.    a_w(t0) = sqrt(1/τ ∫ a_w^2(t) exp((t - t0)/τ) dt),  τ = 1 s by default,
 //                     as ms_k = (1 - α) ms_{k-1} + α a_w,k^2, α = 1 - exp(-1/(fs τ))
 //   MTVV              max over t0 of the running r.m.s.                   [m/s^2]
+//   peak              max |a_w|                                           [m/s^2]
+// and, from these, when the basic method (a_w,rms alone) suffices (BasicMethodRatios):
+//   crest factor      peak / a_w,rms                 basic method "normally sufficient" <= 9
+//   (6.2.1) MTVV ratio        MTVV / a_w,rms                 additional methods to be reported
+//   > 1.5 (6.3.3) VDV ratio         VDV / (a_w,rms T^(1/4))        the same > 1.75 (6.3.3)
+// (For a steady sinusoid the three are √2, 1 and (3/2)^(1/4) = 1.107.)
 //
 // Absorbed power (Pradko, Lee & Kaluza, "Theory of human vibration response", ASME 66-WA/BHF-15,
 // 1966; Lee & Pradko, "Analytical analysis of human vibration", SAE 680091, 1968) is defined in the
@@ -171,10 +177,29 @@ struct ComfortMetrics {
   double weighted_rms = 0.0;             ///< a_w,rms [m/s^2]
   double vdv = 0.0;                      ///< vibration dose value [m/s^1.75]
   double mtvv = 0.0;                     ///< maximum transient vibration value [m/s^2]
+  double peak_weighted = 0.0;            ///< max |a_w| [m/s^2]
   std::optional<double> absorbed_power;  ///< [W], when ComfortOptions::absorbed_power is set
   double duration = 0.0;                 ///< N / fs [s]
   std::size_t samples = 0;
 };
+
+/// ISO 2631-1:1997's tests of whether the weighted r.m.s. alone describes a signal (6.2.1,
+/// 6.3.3): when the signal carries shocks or transients, the standard asks for the VDV or the
+/// MTVV to be reported beside a_w,rms. All 0 (and sufficient) for a_w,rms = 0.
+struct BasicMethodRatios {
+  static constexpr double kMaxCrestFactor = 9.0;  ///< 6.2.1
+  static constexpr double kMaxMtvvRatio = 1.5;    ///< 6.3.3, eq. (8)
+  static constexpr double kMaxVdvRatio = 1.75;    ///< 6.3.3, eq. (9)
+  double crest_factor = 0.0;                      ///< peak |a_w| / a_w,rms
+  double mtvv_ratio = 0.0;                        ///< MTVV / a_w,rms
+  double vdv_ratio = 0.0;                         ///< VDV / (a_w,rms T^(1/4))
+  /// True when no ratio exceeds its limit: a_w,rms alone is an adequate measure.
+  bool basicMethodSufficient() const {
+    return crest_factor <= kMaxCrestFactor && mtvv_ratio <= kMaxMtvvRatio &&
+           vdv_ratio <= kMaxVdvRatio;
+  }
+};
+BasicMethodRatios basicMethodRatios(const ComfortMetrics& metrics);
 
 /// Metrics of an acceleration series [m/s^2] sampled at sample_rate [Hz], filters starting at
 /// rest; all 0 for an empty series. Throws InputError for a non-finite sample (naming its index),
@@ -198,6 +223,7 @@ class ComfortMeter {
   double weightedRms() const;                             ///< [m/s^2]
   double vibrationDoseValue() const;                      ///< [m/s^1.75]
   double maximumTransientVibrationValue() const;          ///< MTVV [m/s^2]
+  double peakWeighted() const { return peak_weighted_; }  ///< max |a_w| [m/s^2]
   double runningRms() const;                              ///< running r.m.s. now [m/s^2]
   double lastWeighted() const { return last_weighted_; }  ///< a_w of the last sample [m/s^2]
   std::optional<double> absorbedPower() const;            ///< [W], when configured
@@ -216,6 +242,7 @@ class ComfortMeter {
   double sum_power_ = 0.0;
   double running_mean_square_ = 0.0;
   double max_running_mean_square_ = 0.0;
+  double peak_weighted_ = 0.0;
   double last_weighted_ = 0.0;
 };
 
