@@ -8,7 +8,8 @@
 # terrain file NAME_SPEEDkmh.HASH.bag (NAME its stem), with a speed profile NAME_PROFILE.HASH.bag
 # (PROFILE its stem): HASH (8 hex) is that of the record of both inputs, each file's absolute path
 # and content hash (BAG.source).
-# Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node.
+# Arguments roslaunch appends (__name:=..., __log:=...) are ignored, so it runs as a launch node;
+# remappings (from:=to) are passed to the player.
 # With TVD_BAG_MAKE_ONLY=1 the bag is only written (when needed) and its path printed, alone on
 # stdout (tvd_make_bag's summary goes to stderr then).
 # The options are those of rosbag's play executable (`rosbag play`'s; /usr/lib/rosbag/play --help),
@@ -64,9 +65,11 @@ run_child() {  # run_child COMMAND...: runs it as the child the traps stop (with
 }
 
 args=()
+remaps=()  # a launch file's <remap> (from:=to): the player's, applied to the bag's topics
 for a in "$@"; do
   case "$a" in
     __*:=*) ;;
+    *:=*) remaps+=("$a") ;;
     *) args+=("$a") ;;
   esac
 done
@@ -186,7 +189,7 @@ if [ -z "$play" ] || [ ! -x "$play" ]; then
   echo "play_track_bag.sh: rosbag's play executable not found (catkin_find --libexec rosbag play)" >&2
   exit 2
 fi
-run_child "$play" --clock --hz=1000 "${extra[@]}" "$bag"
+run_child "$play" --clock --hz=1000 "${extra[@]}" "$bag" "${remaps[@]}"
 # The player is the launch's required node: its end stops the recorder. The node publishes the
 # last /clock tick's sample after play has sent it; linger so the recorder receives it too
 # (TVD_REPLAY_LINGER seconds, default 1).

@@ -74,6 +74,27 @@ def cleared_namespaces(launch_file):
     return result.stdout.split()
 
 
+def launch_nodes(launch_path, *args):
+    """The nodes of a launch file (a path) as roslaunch would start them, with these args:
+    {resolved name: roslaunch.core.Node}."""
+    code = ("import sys, roslaunch.config\n"
+            "c = roslaunch.config.load_config_default([(sys.argv[1], sys.argv[2:])], None)\n"
+            "for n in c.nodes:\n"
+            "    print(repr((n.namespace + n.name, n.required, n.respawn, n.respawn_delay,\n"
+            "                n.remap_args)))\n")
+    result = subprocess.run([ENV_SH, "/usr/bin/python3", "-c", code, launch_path, *args],
+                            capture_output=True, text=True, timeout=120)
+    if result.returncode != 0:
+        raise AssertionError(f"loading {launch_path} failed:\n{result.stdout}\n{result.stderr}")
+    import ast
+    return {n[0]: n[1:] for n in map(ast.literal_eval, result.stdout.splitlines())}
+
+
+def launch_path(launch_file):
+    return os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(
+        os.path.abspath(__file__)))), "launch", launch_file)
+
+
 class LaunchFilesTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -170,6 +191,38 @@ class LaunchFilesTest(unittest.TestCase):
                           p["publish_odom_tf"], p["speed_timeout"]),
                          ("/tmp/m.mat", "veh1/", "base_footprint", False, 0.5))
 
+    def test_respawn_makes_the_node_not_required(self):
+        # roslaunch refuses a node both required and respawning: respawn:=true drops required.
+        path = launch_path("vehicle_dynamics.launch")
+        for args, flags in (((), (True, False, 1.0)), (("respawn:=true",), (False, True, 1.0)),
+                            (("respawn:=true", "respawn_delay:=3"), (False, True, 3.0)),
+                            (("required:=false",), (False, False, 1.0))):
+            self.assertEqual(launch_nodes(path, *args)[NODE][:3], flags, args)
+
+    def test_replay_track_in_a_namespace(self):
+        # Included under <group ns="veh1">: /use_sim_time stays global, the player plays the bag's
+        # absolute topics into the namespace, the recorder records the namespace's topics.
+        wrapper = os.path.join(self.work, "replay_in_ns.launch")
+        with open(wrapper, "w") as f:
+            f.write('<launch><group ns="veh1"><include file="' + launch_path("replay_track.launch")
+                    + '"><arg name="frame_prefix" value="veh1/"/></include></group></launch>')
+        dumped = yaml.safe_load(roslaunch("--dump-params", wrapper))
+        self.assertIs(dumped.get("/use_sim_time"), True)
+        self.assertNotIn("/veh1/use_sim_time", dumped)
+        self.assertEqual(dumped["/veh1/vehicle_dynamics/frame_prefix"], "veh1/")
+        nodes = launch_nodes(wrapper)
+        self.assertEqual(sorted(nodes), ["/veh1/output_recorder", "/veh1/track_player",
+                                         "/veh1/vehicle_dynamics"])
+        remaps = dict(nodes["/veh1/track_player"][3])
+        # (resolved by the player in its namespace, /veh1/terrain_profile)
+        # and its relative "clock" to the master's /clock.
+        self.assertEqual({k: remaps[k] for k in ("/terrain_profile", "/speed", "clock")},
+                         {"/terrain_profile": "terrain_profile", "/speed": "speed",
+                          "clock": "/clock"})
+        recorder = shlex.split(roslaunch("--args", "/veh1/output_recorder", wrapper))
+        for topic in ("/tf", "/tf_static", "/diagnostics", "odom", "road_wheels", "comfort"):
+            self.assertIn(topic, recorder)
+
     def test_parameters_of_an_earlier_launch_are_cleared(self):
         # Without clear_params a parameter the launch does not set (reduced_model, cache_dir,
         # points: not in the parameter file) would keep an earlier launch's value on the master.
@@ -178,18 +231,20 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_replay_track_records_the_static_frames(self):
         recorder = shlex.split(roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch"))
-        topics = ["/tf", "/tf_static", "/odom", "/hull/accel", "/hull/twist", "/road_wheels",
-                  "/comfort", "/diagnostics"]
+        # The node's topics relative (a namespace's, when the file is included in one), the
+        # global ones absolute.
+        topics = ["/tf", "/tf_static", "odom", "hull/accel", "hull/twist", "road_wheels",
+                  "comfort", "/diagnostics"]
         for topic in topics:
             self.assertIn(topic, recorder)
         # Listed, not matched by a regex (found on a ROS-time timer: late on simulated time).
         self.assertNotIn("--regex", recorder)
         self.assertNotIn("-e", recorder)
-        self.assertFalse([t for t in recorder if t.startswith("/imu/")])
+        self.assertFalse([t for t in recorder if t.startswith("imu/")])
         recorder = shlex.split(roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch",
                                          "imu_points:=[sensor_mount, 'crew_seat']"))
-        self.assertEqual([t for t in recorder if t.startswith("/")][-2:],
-                         ["/imu/sensor_mount", "/imu/crew_seat"])
+        self.assertEqual([t for t in recorder if t.startswith("imu/")],
+                         ["imu/sensor_mount", "imu/crew_seat"])
         self.assertEqual(recorder[recorder.index("-O") + 1].rsplit("/", 1)[-1],
                          "long_hill_30kmh_output.bag")
         # A terrain or speed-profile file is named by its stem (a path would name a directory).
