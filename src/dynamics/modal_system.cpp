@@ -1,4 +1,7 @@
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
+#include <iomanip>
+#include <sstream>
+#include <string>
 
 #include <cmath>
 #include <limits>
@@ -130,6 +133,21 @@ Vector ModalSystem::dampingRatios() const {
     if (frequencies_(r) > 0.0)
       zeta(r) = damping_coefficients_(r) / (2.0 * frequencies_(r));
   return zeta;
+}
+
+std::string modalDampingCouplingWarning(double coupling, const std::string& what,
+                                        const std::string& instead) {
+  if (!(coupling > kModalDampingCouplingTolerance))
+    return "";
+  std::ostringstream m;
+  m << std::setprecision(3)
+    << "the damping couples the modes (Phi^T C Phi off its diagonal by up to " << coupling
+    << " of the diagonal terms: discrete dampers such as suspension.arm_damping): " << what
+    << " keeps only the diagonal (modal damping), which can move peaks by tens of per "
+       "cent (two 20 kN m s/rad arm dampers on the un-tracked paper vehicle: the hull's peak "
+       "acceleration on the long hill at 30 km/h 12.6 m/s^2 against 27.9 exact); "
+    << instead;
+  return m.str();
 }
 
 }  // namespace dynamics

@@ -400,10 +400,17 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
     throw InputError(where + " has " + std::to_string(var->rank) + " dimensions, expected 2");
   const auto r = static_cast<DofIndex>(var->dims[0]);
   const auto c = static_cast<DofIndex>(var->dims[1]);
-  if ((rows != kAnySize && r != rows) || (cols != kAnySize && c != cols))
+  if ((rows != kAnySize && r != rows) || (cols != kAnySize && c != cols)) {
+    // A row where a column is expected: what SciPy's savemat writes for a 1-D array (and
+    // loadmat(squeeze_me=True) makes 1-D arrays of columns), unless told oned_as='column'.
+    const bool row_for_column = cols == 1 && r == 1 && c != 1;
     throw InputError(where + " is " + dims(r, c) + ", expected " +
                      (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
-                     (cols == kAnySize ? std::string("any") : std::to_string(cols)));
+                     (cols == kAnySize ? std::string("any") : std::to_string(cols)) +
+                     (row_for_column ? " (a row saved for a column: SciPy's savemat writes 1-D "
+                                       "arrays as rows unless given oned_as='column')"
+                                     : ""));
+  }
   // The dimensions come from the file: a damaged header may claim more than memory holds (or,
   // read as signed, a negative count), which must read as a damaged file, not end the program.
   if (r < 0 || c < 0 || r > std::numeric_limits<int>::max() || c > std::numeric_limits<int>::max())

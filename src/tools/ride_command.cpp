@@ -30,6 +30,7 @@
 #include "speed_sweep.h"
 #include "terrain_coverage.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/shock_meter.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
@@ -123,7 +124,17 @@ void run(const RideOptions& opt) {
   sim_options.max_mode_frequency_hz = dynamics::nyquistCutoff(opt.dt);  // as tvd simulate
   sim_options.quantities = {dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = reduced.model.gravity_load;
-  dynamics::Simulator sim(sys, sim_options);
+  const dynamics::ModalSystem modal(sys);
+  dynamics::Simulator sim(sys, modal, sim_options);
+  {
+    const std::string w = dynamics::modalDampingCouplingWarning(
+        modal.maxOffDiagonalDampingRatio(), "tvd ride's modal integration",
+        "tvd simulate --method exact gives the exact run at a speed");
+    if (!w.empty()) {
+      warnings.push_back(w);
+      std::cerr << "tvd: warning: " << w << "\n";
+    }
+  }
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());

@@ -224,6 +224,15 @@ void runSpectralRide(const RideOptions& opt) {
   const Vector lateral = sys.input_lateral.array() + opt.lateral_offset;
   const dynamics::SpectralRide ride(modal, lateral, rows, road, spectral);
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
+  {
+    const std::string w = dynamics::modalDampingCouplingWarning(
+        modal.maxOffDiagonalDampingRatio(), "the spectral ride's modal superposition",
+        "tvd frf solves such a model directly");
+    if (!w.empty()) {
+      warnings.push_back(w);
+      std::cerr << "tvd: warning: " << w << "\n";
+    }
+  }
   if (const std::optional<std::string> w = sideCrossingWarning(opt, sys)) {
     warnings.push_back(*w);
     std::cerr << "tvd: warning: " << *w << "\n";

@@ -283,6 +283,15 @@ void run(const SimulateOptions& opt) {
                             : discrete ? dynamics::Simulator(*discrete)
                                        : dynamics::Simulator(sys, sim_options);
   const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
+  if (modal) {
+    const std::string w = dynamics::modalDampingCouplingWarning(
+        modal->maxOffDiagonalDampingRatio(), "--method modal (the default)",
+        "--method exact integrates the whole C (slower: seconds to set up on the tracked model)");
+    if (!w.empty()) {
+      warnings.push_back(w);
+      std::cerr << "tvd: warning: " << w << "\n";
+    }
+  }
   // Ground contact (ground_contact.h): the force of every road input's spring, checked for
   // tension, the limit of the bonded linear model. Reduced model only: the full model's modal
   // coordinates carry no ground DOF (K_u = Phi^T K_u is not of the spring form), and its ground

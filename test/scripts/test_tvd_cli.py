@@ -22,6 +22,7 @@ import unittest
 
 import numpy as np
 import scipy.io
+import scipy.linalg
 import yaml
 from scipy.signal import lfilter
 
@@ -2015,6 +2016,66 @@ class TvdCliTest(unittest.TestCase):
                                               self.ANTI_RESONANCE_WINDOW_HZ)
             self.assertLess(db, self.FRF_TOLERANCE_DB, column)
             self.assertGreater(share, 0.45, column)
+
+    def test_frf_of_coupled_damping_is_the_direct_solution(self):
+        """Arm dampers couple the modes: tvd frf then solves eq. 18 directly, and its FRF is that
+        of the file's M_R, C_R, K_R (SciPy, dense solve); eq. 20's modal damping is off by a
+        factor of two at the front wheel. simulate's default modal run warns of the coupling."""
+        damped = self.vehicle_with("arm_damped.yaml", "arm_damping: {value: 0,",
+                                   "arm_damping: {value: 20000,")
+        with open(damped) as f:
+            text = f.read()
+        with open(damped, "w") as f:
+            f.write(text.replace('damped_stations: {value: [],', 'damped_stations: {value: [1, 7],'))
+        mat = self.path("arm_damped.mat")
+        self.tvd("reduce", "--vehicle", damped, "--variant", "untracked", "--out", mat)
+        out = self.path("arm_damped_frf.csv")
+        d = self.tvd_json("frf", "--vehicle", damped, "--reduced", mat, "--out", out)
+        self.assertEqual(d["solution"], "direct")
+        self.assertGreater(d["damping_coupling"], 0.1)
+        header, rows = read_csv(out)
+        m = scipy.io.loadmat(mat)
+        names = [str(np.ravel(n)[0]) for n in np.ravel(m["output_names"])]
+        M, C, K, Ku, Cu, H = (m[k] for k in ("M_R", "C_R", "K_R", "K_u", "C_u", "H"))
+        picks = [(header.index("hull_vertical_acc_mag"), names.index("hull uz")),
+                 (header.index("front_wheel_acc_mag"), names.index("road_wheel_left_1 uz"))]
+        for i in range(0, len(rows), 40):
+            f = rows[i, 0]
+            w = 2 * np.pi * f
+            x = np.linalg.solve(K - w * w * M + 1j * w * C, (Ku + 1j * w * Cu).sum(axis=1))
+            for col, row in picks:
+                exact = abs(-w * w * (H[row] @ x))
+                self.assertAlmostEqual(rows[i, col], exact, delta=1e-6 * rows[:, col].max() + 1e-9,
+                                       msg=(f, header[col]))
+        # What eq. 20 would give: modal damping ratios from the diagonal of Phi^T C Phi.
+        lam, phi = scipy.linalg.eigh(K, M)
+        c = np.diag(phi.T @ C @ phi)
+        front = picks[1][0]
+        peak = rows[:, front].argmax()
+        w = 2 * np.pi * rows[peak, 0]
+        eta = (phi.T @ (Ku + 1j * w * Cu).sum(axis=1)) / (lam - w * w + 1j * w * c)
+        modal_front = abs(-w * w * (H[names.index("road_wheel_left_1 uz")] @ (phi @ eta)))
+        self.assertGreater(abs(modal_front / rows[peak, front] - 1), 0.3)
+        # The bundled vehicle's modal damping is diagonal: modal superposition, as the paper.
+        self.assertEqual(self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked",
+                                       "--cache-dir", self.cache, "--max-hz", "5")["solution"],
+                         "modal")
+        # SciPy's squeeze_me round trip writes the column vectors as rows: refused, saying why.
+        squeezed = self.path("arm_damped_squeezed.mat")
+        scipy.io.savemat(squeezed, scipy.io.loadmat(mat, squeeze_me=True))
+        r = self.tvd("frf", "--vehicle", damped, "--reduced", squeezed, "--out",
+                     self.path("x.csv"), status=INPUT_ERROR_STATUS)
+        self.assertIn("a row saved for a column: SciPy's savemat writes 1-D arrays as rows unless "
+                      "given oned_as='column'", r.stderr)
+        columns = self.path("arm_damped_columns.mat")
+        scipy.io.savemat(columns, scipy.io.loadmat(mat, squeeze_me=True), oned_as="column")
+        self.tvd("frf", "--vehicle", damped, "--reduced", columns, "--max-hz", "2", "--out",
+                 self.path("x.csv"))
+        sim = self.tvd_json("simulate", "--vehicle", damped, "--reduced", mat, "--track",
+                            "long_hill", "--speed-kmh", "30", "--ground-contact", "off", "--out",
+                            self.path("arm_damped.csv"))
+        self.assertEqual(len([w for w in sim["warnings"] if w.startswith(
+            "the damping couples the modes") and "--method exact" in w]), 1, sim["warnings"])
 
     def test_frf_points_bad_names_are_refused(self):
         renamed = self.vehicle_with("renamed_seat.yaml", "\n  crew_seat:", "\n  driver_seat:")

@@ -19,6 +19,17 @@
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
+/// Above this maxOffDiagonalDampingRatio() the damping couples the modes beyond round-off
+/// (discrete dampers, e.g. suspension.arm_damping): the modal damping approximation is then an
+/// approximation, and the tools say so or solve without it.
+constexpr double kModalDampingCouplingTolerance = 1e-6;
+
+/// What the modal damping approximation drops, for a user: "" when coupling is within the
+/// tolerance. `what`: the run or result it concerns (e.g. "--method modal (the default)");
+/// `instead`: what gives the exact answer.
+std::string modalDampingCouplingWarning(double coupling, const std::string& what,
+                                        const std::string& instead);
+
 class ModalSystem {
  public:
   /// Solves the dense generalised eigenproblem K phi = omega^2 M phi (O(n^3)).
