@@ -10,6 +10,8 @@
 #include <sstream>
 #include <vector>
 
+#include <ros/names.h>
+
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -348,6 +350,16 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
                          "' has no trailing '/': the frames read '" + p.frame_prefix + "odom', '" +
                          p.frame_prefix + "base_link' (give '" + p.frame_prefix + "/' for '" +
                          p.frame_prefix + "/odom')");
+  // Namespaces do not reach tf frame ids: two vehicles pushed into /veh1 and /veh2 without a
+  // prefix both publish odom -> base_link -> road_wheel_left_1 into one tree, silently.
+  const std::string ns = ros::names::parentNamespace(private_nh.getNamespace());
+  if (p.frame_prefix.empty() && ns != "/" && !ns.empty())
+    p.warnings.push_back(
+        in.name("frame_prefix") + " is empty while the node runs in the namespace " + ns +
+        ": its frames (" + p.odom_frame + ", " + p.base_frame +
+        ", road_wheel_left_1, ...) are those of any other vehicle in the tf tree, where they "
+        "would collide; give frame_prefix:=" +
+        ns.substr(1) + "/ for a tree of its own (a vehicle alone in the tree may ignore this)");
   if (p.odom_frame == p.base_frame)
     throw in.error("base_frame", "must differ from ~odom_frame");
   // The prefix names one vehicle's whole tree (REP-105 per robot: veh1/odom -> veh1/base_link

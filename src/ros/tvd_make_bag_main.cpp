@@ -11,6 +11,8 @@
 
 #include <ros/time.h>
 
+#include <ros/names.h>
+
 #include "command_line_errors.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -58,6 +60,11 @@ int main(int argc, char** argv) {
                                 "vehicle centre line on the track y_t [m] (default: the track's)");
   app.add_option("--start-time", options.start_time, "bag time of the start [s]")
       ->capture_default_str();
+  std::string ns;
+  app.add_option("--namespace", ns,
+                 "write the topics in this namespace, e.g. /veh1: /veh1/terrain_profile and "
+                 "/veh1/speed, for a node in it; bags of several vehicles then play together "
+                 "from one rosbag play --clock (default: /terrain_profile, /speed)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -88,6 +95,21 @@ int main(int argc, char** argv) {
   if (out.empty() && !peak_only) {
     std::cerr << "tvd_make_bag: error: --out is required (the bag file to write)\n";
     return 2;
+  }
+  if (!ns.empty()) {
+    // A global graph name: the bag's topics are absolute (a relative one would resolve in the
+    // player's namespace, not the node's).
+    std::string why;
+    while (ns.size() > 1 && ns.back() == '/')
+      ns.pop_back();
+    if (ns.front() != '/' || ns == "/" || !ros::names::validate(ns, why)) {
+      std::cerr << "tvd_make_bag: error: --namespace must be a global namespace such as /veh1, "
+                   "got '"
+                << ns << "'" << (why.empty() ? "" : ": " + why) << "\n";
+      return 2;
+    }
+    options.terrain_topic = ns + options.terrain_topic;
+    options.speed_topic = ns + options.speed_topic;
   }
   options.speed = speed_kmh / tracked_vehicle_dynamics::kKmhPerMs;
   if (offset->count() > 0)

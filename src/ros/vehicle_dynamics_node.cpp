@@ -116,9 +116,9 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   reset_to_service_ =
       loop_private_nh_.advertiseService("reset_to", &VehicleDynamicsNode::onResetTo, this);
 
-  updater_.setHardwareID(report_.cache_file.empty()
-                             ? vehicle_->geometry().vehicle_name
-                             : vehicle_->geometry().vehicle_name + " (" + report_.cache_file + ")");
+  // The node's name first: two copies of one vehicle share the rest.
+  updater_.setHardwareID(std::string(nodeName()) + ": " + vehicle_->geometry().vehicle_name +
+                         (report_.cache_file.empty() ? "" : " (" + report_.cache_file + ")"));
   updater_.add("loop", this, &VehicleDynamicsNode::diagnoseLoop);
   updater_.add("terrain", this, &VehicleDynamicsNode::diagnoseTerrain);
   updater_.add("speed", this, &VehicleDynamicsNode::diagnoseInput);
@@ -642,11 +642,22 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const std::int64_t skipped = due - max_catch_up_steps_;
     ++events_.resyncs;
     events_.skipped_steps += static_cast<std::uint64_t>(skipped);
-    TVD_WARN_THROTTLE(kWarnPeriod,
-                      "%s: %.3f s behind ROS time, more than ~catch_up_limit "
-                      "(%.3f s): skipping %.3f s and resynchronising%s",
-                      nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
-                      skipped * step_ns_ * 1e-9, slowStepCause().c_str());
+    // On simulated time a tick follows /clock: so far behind, /clock jumped ahead (or its
+    // messages came faster than the steps), which "behind" would blame on the node.
+    if (use_sim_time_)
+      TVD_WARN_THROTTLE(kWarnPeriod,
+                        "%s: ROS time (/clock) is %.3f s ahead of the last sample, more than "
+                        "~catch_up_limit (%.3f s): the clock jumped forward or ran ahead of the "
+                        "steps; skipping %.3f s and resynchronising (the vehicle state and station "
+                        "are kept)%s",
+                        nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
+                        skipped * step_ns_ * 1e-9, slowStepCause().c_str());
+    else
+      TVD_WARN_THROTTLE(kWarnPeriod,
+                        "%s: %.3f s behind ROS time, more than ~catch_up_limit "
+                        "(%.3f s): skipping %.3f s and resynchronising%s",
+                        nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
+                        skipped * step_ns_ * 1e-9, slowStepCause().c_str());
     sample_time_ += ros::Duration().fromNSec(skipped * step_ns_);
     due = max_catch_up_steps_;
   }

@@ -36,7 +36,9 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
                    "~method modal); resynchronised beyond ~catch_up_limit");
   } else if (resyncs > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "fell behind ROS time beyond ~catch_up_limit: resynchronised");
+                   use_sim_time_ ? "/clock ran ahead beyond ~catch_up_limit (a jump forward): "
+                                   "resynchronised"
+                                 : "fell behind ROS time beyond ~catch_up_limit: resynchronised");
   } else if (jumps > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "ROS time jumped backwards: vehicle reset");

@@ -535,6 +535,30 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
                             "read 'veh1odom'"),
             std::string::npos)
       << run.output;
+  EXPECT_EQ(run.output.find("while the node runs in the namespace"), std::string::npos)
+      << run.output;  // at the root
+}
+
+// Two vehicles pushed into namespaces without ~frame_prefix share every frame in the tf tree:
+// the node says so, naming the prefix to give; with it (or at the root) nothing is said.
+TEST(NodeBadParameters, ANamespaceWithoutAFramePrefixIsSaid) {
+  ros::NodeHandle private_nh("~");
+  const std::string common =
+      " _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
+      " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir");
+  const int timeout = test::requiredParam<int>(private_nh, "bad_parameter_timeout");
+  const NodeRun bare = runNode("__ns:=/tank1 __name:=in_ns" + common, timeout);
+  EXPECT_EQ(bare.exit_status, 124) << bare.output;
+  EXPECT_NE(bare.output.find("/tank1/in_ns/frame_prefix is empty while the node runs in the "
+                             "namespace /tank1: its frames (odom, base_link, road_wheel_left_1, "
+                             "...) are those of any other vehicle in the tf tree"),
+            std::string::npos)
+      << bare.output;
+  EXPECT_NE(bare.output.find("give frame_prefix:=tank1/ for a tree of its own"), std::string::npos)
+      << bare.output;
+  const NodeRun prefixed =
+      runNode("__ns:=/tank1 __name:=in_ns_prefixed _frame_prefix:=tank1/" + common, timeout);
+  EXPECT_EQ(prefixed.output.find("frame_prefix is empty"), std::string::npos) << prefixed.output;
 }
 
 // A vehicle of our own without a crew_seat point starts with ~comfort_point unset: the comfort

@@ -404,6 +404,20 @@ class LaunchFilesTest(unittest.TestCase):
             self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
             self.assertIn(expected, result.stderr)
             self.assertEqual(len(result.stderr.strip().splitlines()), 1, result.stderr)
+        for ns in ("veh1", "/", "/veh 1"):
+            result = make_bag("--namespace", ns, "--out", "x.bag")
+            self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+            self.assertIn("tvd_make_bag: error: --namespace must be a global namespace such as "
+                          "/veh1", result.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.work, "x.bag")))
+        # --namespace: the topics of a vehicle in it, for one player of several vehicles' bags.
+        result = make_bag("--namespace", "/veh1/", "--out", "ns.bag")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        info = subprocess.run([ENV_SH, "rosbag", "info", "--yaml", "--key", "topics",
+                               os.path.join(self.work, "ns.bag")], capture_output=True, text=True,
+                              timeout=120)
+        self.assertEqual(sorted(t["topic"] for t in yaml.safe_load(info.stdout)),
+                         ["/veh1/speed", "/veh1/terrain_profile"], info.stderr)
         result = make_bag("--speed-kmh", "90", "--peak-speed")
         self.assertEqual((result.returncode, float(result.stdout)), (0, 25.0), result.stderr)
         profile = os.path.join(self.work, "peak.csv")
