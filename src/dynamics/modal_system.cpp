@@ -1,10 +1,10 @@
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
-#include <iomanip>
-#include <sstream>
-#include <string>
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
+#include <string>
 
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/validation.h"
@@ -143,9 +143,8 @@ std::string modalDampingCouplingWarning(double coupling, const std::string& what
   m << std::setprecision(3)
     << "the damping couples the modes (Phi^T C Phi off its diagonal by up to " << coupling
     << " of the diagonal terms: discrete dampers such as suspension.arm_damping): " << what
-    << " keeps only the diagonal (modal damping), which can move peaks by tens of per "
-       "cent (two 20 kN m s/rad arm dampers on the un-tracked paper vehicle: the hull's peak "
-       "acceleration on the long hill at 30 km/h 12.6 m/s^2 against 27.9 exact); "
+    << " keeps only the diagonal (modal damping), which can move peaks by tens of per cent "
+       "(README, tvd frf); "
     << instead;
   return m.str();
 }

@@ -403,7 +403,7 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
   if ((rows != kAnySize && r != rows) || (cols != kAnySize && c != cols)) {
     // A row where a column is expected: what SciPy's savemat writes for a 1-D array (and
     // loadmat(squeeze_me=True) makes 1-D arrays of columns), unless told oned_as='column'.
-    const bool row_for_column = cols == 1 && r == 1 && c != 1;
+    const bool row_for_column = cols == 1 && r == 1 && c != 1 && (rows == kAnySize || c == rows);
     throw InputError(where + " is " + dims(r, c) + ", expected " +
                      (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
                      (cols == kAnySize ? std::string("any") : std::to_string(cols)) +

@@ -642,14 +642,14 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     const std::int64_t skipped = due - max_catch_up_steps_;
     ++events_.resyncs;
     events_.skipped_steps += static_cast<std::uint64_t>(skipped);
-    // On simulated time a tick follows /clock: so far behind, /clock jumped ahead (or its
-    // messages came faster than the steps), which "behind" would blame on the node.
+    // On simulated time a tick follows /clock: so far ahead, the clock jumped, ticks coarsely,
+    // or ran faster than the node could step; "behind" alone would blame the node.
     if (use_sim_time_)
       TVD_WARN_THROTTLE(kWarnPeriod,
                         "%s: ROS time (/clock) is %.3f s ahead of the last sample, more than "
-                        "~catch_up_limit (%.3f s): the clock jumped forward or ran ahead of the "
-                        "steps; skipping %.3f s and resynchronising (the vehicle state and station "
-                        "are kept)%s",
+                        "~catch_up_limit (%.3f s): a clock jump, a /clock coarser than the limit, "
+                        "or steps slower than the clock; skipping %.3f s and resynchronising (the "
+                        "vehicle state and station are kept)%s",
                         nodeName(), ahead_ns * 1e-9, params_.catch_up_limit,
                         skipped * step_ns_ * 1e-9, slowStepCause().c_str());
     else

@@ -36,8 +36,8 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
                    "~method modal); resynchronised beyond ~catch_up_limit");
   } else if (resyncs > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   use_sim_time_ ? "/clock ran ahead beyond ~catch_up_limit (a jump forward): "
-                                   "resynchronised"
+                   use_sim_time_ ? "/clock ran ahead of the steps beyond ~catch_up_limit (a "
+                                   "jump, a coarse clock or slow steps): resynchronised"
                                  : "fell behind ROS time beyond ~catch_up_limit: resynchronised");
   } else if (jumps > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,

@@ -55,9 +55,6 @@ struct NamedColumn {
   bool wk_weighted = false;
 };
 
-// Above this, Phi^T C Phi is not diagonal to round-off: the damping couples the modes.
-constexpr double kModalCouplingLimit = 1e-6;
-
 DofIndex outputIndex(const std::vector<std::string>& names, const std::string& output) {
   const auto it = std::find(names.begin(), names.end(), output);
   if (it == names.end())
@@ -196,7 +193,7 @@ void run(const FrfOptions& opt) {
     damping_coupling = modal.maxOffDiagonalDampingRatio();
     const dynamics::InputDelay delay =
         delayFor(model.system.input_stations, model.system.input_lateral);
-    solution = damping_coupling > kModalCouplingLimit ? "direct" : "modal";
+    solution = damping_coupling > dynamics::kModalDampingCouplingTolerance ? "direct" : "modal";
     h = solution == "direct"
             ? dynamics::frfDirect(model.system, hz, delay, dynamics::OutputQuantity::Acceleration)
             : dynamics::frfModal(modal, hz, delay, dynamics::OutputQuantity::Acceleration);
@@ -211,6 +208,19 @@ void run(const FrfOptions& opt) {
     const reduction::FullModelReference ref =
         reduction::buildVehicleReference(description, variant, ref_options);
     names = ref.modal.output_names;
+    // Its modal damping (eq. 20) drops what couples the modes, as the reduced model's would:
+    // in mass-normalised modal coordinates c_rs / sqrt(c_rr c_ss) of its damping matrix.
+    const Matrix& c = ref.modal.damping;
+    for (Eigen::Index r = 0; r < c.rows(); ++r)
+      for (Eigen::Index q = 0; q < r; ++q)
+        if (c(r, r) > 0.0 && c(q, q) > 0.0)
+          damping_coupling =
+              std::max(damping_coupling, std::abs(c(r, q)) / std::sqrt(c(r, r) * c(q, q)));
+    const std::string w = dynamics::modalDampingCouplingWarning(
+        damping_coupling, "--model full (its modes, each with its own damping)",
+        "the reduced model's FRF (--model reduced, solved directly) is the exact one");
+    if (!w.empty())
+      std::cerr << "tvd: warning: " << w << "\n";
     h = ref.frf(hz, delayFor(ref.modal.input_stations, ref.modal.input_lateral),
                 dynamics::OutputQuantity::Acceleration);
     dofs = ref.full_dofs;
@@ -295,12 +305,11 @@ void run(const FrfOptions& opt) {
         .field("speed_kmh", opt.speed_kmh)
         .field("frequencies", static_cast<long long>(hz.size()))
         .field("max_hz", hz(hz.size() - 1));
-    if (reduced) {
-      // How the reduced model's FRF was solved: modal superposition (eq. 20) when its damping is
-      // diagonal in the modes, else directly (eq. 18).
-      json.field("solution", solution).field("damping_coupling", damping_coupling);
+    // How the FRF was solved: modal superposition (eq. 20) when the damping is diagonal in the
+    // modes (the full model always), else directly (eq. 18, the reduced model).
+    json.field("solution", solution).field("damping_coupling", damping_coupling);
+    if (reduced)
       writeReductionJson(json.key("reduction"), *reduced);
-    }
     json.key("outputs").beginArray();
     for (const NamedColumn& c : columns) {
       const auto [top, local] = peaks(magnitude(c));

@@ -283,10 +283,15 @@ void run(const SimulateOptions& opt) {
                             : discrete ? dynamics::Simulator(*discrete)
                                        : dynamics::Simulator(sys, sim_options);
   const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
-  if (modal) {
+  {
+    // Every modal run, the full model's included (0 for the exact method, which keeps all of C).
     const std::string w = dynamics::modalDampingCouplingWarning(
-        modal->maxOffDiagonalDampingRatio(), "--method modal (the default)",
-        "--method exact integrates the whole C (slower: seconds to set up on the tracked model)");
+        sim.maxOffDiagonalDampingRatio(),
+        full ? "--model full (its modes, each with its own damping)"
+             : "--method modal (the default)",
+        full ? "the reduced model with --method exact integrates the whole C"
+             : "--method exact integrates the whole C (slower: seconds to set up on the tracked "
+               "model)");
     if (!w.empty()) {
       warnings.push_back(w);
       std::cerr << "tvd: warning: " << w << "\n";

@@ -118,14 +118,17 @@ void run(const TerrainOptions& opt) {
       // over the default band. Said when that costs more than 1 % of the r.m.s. height.
       const double full_rms =
           std::sqrt(terrain::iso8608Variance(road_class, opt.min_frequency, opt.max_frequency));
-      if (expected_rms < 0.99 * full_rms)
+      if (expected_rms < 0.99 * full_rms) {
+        const std::streamsize precision = std::cerr.precision();
         std::cerr << std::setprecision(3) << "tvd: note: a road of " << opt.length
                   << " m holds no wavelength longer than " << 2.0 * opt.length
                   << " m, so its band starts at " << n_low << " cycles/m, not the default "
                   << opt.min_frequency << ": r.m.s. height " << expected_rms * 1e3
                   << " mm against the class's " << full_rms * 1e3
                   << " mm over the default band (--length " << std::ceil(0.5 / opt.min_frequency)
-                  << " or more keeps it)\n";
+                  << " or more keeps it)\n"
+                  << std::setprecision(static_cast<int>(precision));
+      }
     }
   }
 

@@ -332,11 +332,22 @@ TEST(Comfort, BasicMethodRatiosOfASinusoidAndOfAShock) {
   EXPECT_GT(s.mtvv_ratio, BasicMethodRatios::kMaxMtvvRatio);
   EXPECT_GT(s.vdv_ratio, BasicMethodRatios::kMaxVdvRatio);
   EXPECT_FALSE(s.basicMethodSufficient());
-  // Each limit alone decides: just over the crest-factor limit, the others in range.
+  // Each limit alone decides: just over one limit, the others in range.
   ComfortMetrics edge = steady;
   edge.peak_weighted = 9.01 * steady.weighted_rms;
   EXPECT_FALSE(basicMethodRatios(edge).basicMethodSufficient());
   edge.peak_weighted = 8.99 * steady.weighted_rms;
+  EXPECT_TRUE(basicMethodRatios(edge).basicMethodSufficient());
+  edge = steady;
+  edge.mtvv = 1.51 * steady.weighted_rms;
+  EXPECT_FALSE(basicMethodRatios(edge).basicMethodSufficient());
+  edge.mtvv = 1.49 * steady.weighted_rms;
+  EXPECT_TRUE(basicMethodRatios(edge).basicMethodSufficient());
+  edge = steady;
+  const double t4 = std::pow(duration, 0.25);
+  edge.vdv = 1.76 * steady.weighted_rms * t4;
+  EXPECT_FALSE(basicMethodRatios(edge).basicMethodSufficient());
+  edge.vdv = 1.74 * steady.weighted_rms * t4;
   EXPECT_TRUE(basicMethodRatios(edge).basicMethodSufficient());
 
   // No vibration: no ratio, and nothing to object to.

@@ -205,7 +205,8 @@ class LaunchFilesTest(unittest.TestCase):
         wrapper = os.path.join(self.work, "replay_in_ns.launch")
         with open(wrapper, "w") as f:
             f.write('<launch><group ns="veh1"><include file="' + launch_path("replay_track.launch")
-                    + '"><arg name="frame_prefix" value="veh1/"/></include></group></launch>')
+                    + '"><arg name="frame_prefix" value="veh1/"/><arg name="ns" value="/veh1"/>'
+                    '<arg name="imu_points" value="[sensor_mount]"/></include></group></launch>')
         dumped = yaml.safe_load(roslaunch("--dump-params", wrapper))
         self.assertIs(dumped.get("/use_sim_time"), True)
         self.assertNotIn("/veh1/use_sim_time", dumped)
@@ -220,8 +221,10 @@ class LaunchFilesTest(unittest.TestCase):
                          {"/terrain_profile": "terrain_profile", "/speed": "speed",
                           "clock": "/clock"})
         recorder = shlex.split(roslaunch("--args", "/veh1/output_recorder", wrapper))
-        for topic in ("/tf", "/tf_static", "/diagnostics", "odom", "road_wheels", "comfort"):
+        for topic in ("/tf", "/tf_static", "/diagnostics", "/veh1/odom", "/veh1/road_wheels",
+                      "/veh1/comfort", "/veh1/imu/sensor_mount"):
             self.assertIn(topic, recorder)
+        self.assertNotIn("/odom", recorder)
 
     def test_parameters_of_an_earlier_launch_are_cleared(self):
         # Without clear_params a parameter the launch does not set (reduced_model, cache_dir,
@@ -231,20 +234,19 @@ class LaunchFilesTest(unittest.TestCase):
 
     def test_replay_track_records_the_static_frames(self):
         recorder = shlex.split(roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch"))
-        # The node's topics relative (a namespace's, when the file is included in one), the
-        # global ones absolute.
-        topics = ["/tf", "/tf_static", "odom", "hull/accel", "hull/twist", "road_wheels",
-                  "comfort", "/diagnostics"]
+        # Global names: rosbag record stores a relative name as given, without its namespace.
+        topics = ["/tf", "/tf_static", "/odom", "/hull/accel", "/hull/twist", "/road_wheels",
+                  "/comfort", "/diagnostics"]
         for topic in topics:
             self.assertIn(topic, recorder)
         # Listed, not matched by a regex (found on a ROS-time timer: late on simulated time).
         self.assertNotIn("--regex", recorder)
         self.assertNotIn("-e", recorder)
-        self.assertFalse([t for t in recorder if t.startswith("imu/")])
+        self.assertFalse([t for t in recorder if "imu/" in t])
         recorder = shlex.split(roslaunch("--args", "output_recorder", PACKAGE, "replay_track.launch",
                                          "imu_points:=[sensor_mount, 'crew_seat']"))
-        self.assertEqual([t for t in recorder if t.startswith("imu/")],
-                         ["imu/sensor_mount", "imu/crew_seat"])
+        self.assertEqual([t for t in recorder if t.startswith("/imu/")],
+                         ["/imu/sensor_mount", "/imu/crew_seat"])
         self.assertEqual(recorder[recorder.index("-O") + 1].rsplit("/", 1)[-1],
                          "long_hill_30kmh_output.bag")
         # A terrain or speed-profile file is named by its stem (a path would name a directory).

@@ -2060,6 +2060,13 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked",
                                        "--cache-dir", self.cache, "--max-hz", "5")["solution"],
                          "modal")
+        # The full model keeps eq. 20 and says what it drops.
+        r = self.tvd("frf", "--vehicle", damped, "--variant", "untracked", "--model", "full",
+                     "--max-hz", "2", "--json")
+        self.assertEqual(json.loads(r.stdout)["solution"], "modal")
+        self.assertGreater(json.loads(r.stdout)["damping_coupling"], 0.1)
+        self.assertIn("the damping couples the modes", r.stderr)
+        self.assertIn("--model full (its modes, each with its own damping)", r.stderr)
         # SciPy's squeeze_me round trip writes the column vectors as rows: refused, saying why.
         squeezed = self.path("arm_damped_squeezed.mat")
         scipy.io.savemat(squeezed, scipy.io.loadmat(mat, squeeze_me=True))

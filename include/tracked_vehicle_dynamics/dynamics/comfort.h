@@ -44,10 +44,11 @@
 //   MTVV              max over t0 of the running r.m.s.                   [m/s^2]
 //   peak              max |a_w|                                           [m/s^2]
 // and, from these, when the basic method (a_w,rms alone) suffices (BasicMethodRatios):
-//   crest factor      peak / a_w,rms                 basic method "normally sufficient" <= 9
-//   (6.2.1) MTVV ratio        MTVV / a_w,rms                 additional methods to be reported
-//   > 1.5 (6.3.3) VDV ratio         VDV / (a_w,rms T^(1/4))        the same > 1.75 (6.3.3)
-// (For a steady sinusoid the three are √2, 1 and (3/2)^(1/4) = 1.107.)
+//   crest factor   peak / a_w,rms            basic method normally sufficient up to 9 (6.2.1)
+//   MTVV ratio     MTVV / a_w,rms            additional methods to report above 1.5 (6.3.3)
+//   VDV ratio      VDV / (a_w,rms T^(1/4))   the same above 1.75 (6.3.3)
+// (A steady sinusoid gives √2, sqrt(1 + G) ≈ 1 with G the running mean square's ripple at
+// twice its frequency, and (3/2)^(1/4) = 1.107.)
 //
 // Absorbed power (Pradko, Lee & Kaluza, "Theory of human vibration response", ASME 66-WA/BHF-15,
 // 1966; Lee & Pradko, "Analytical analysis of human vibration", SAE 680091, 1968) is defined in the
