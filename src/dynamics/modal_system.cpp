@@ -72,16 +72,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
 
   // c = Phi^T C Phi; its diagonal gives the modal damping d_r = 2 zeta_r omega_r.
   const Matrix modal_damping = shapes_.transpose() * system.damping * shapes_;
-  max_off_diagonal_damping_ratio_ = 0.0;
-  for (DofIndex s = 0; s < n; ++s)
-    for (DofIndex r = 0; r < n; ++r) {
-      if (r == s || modal_damping(r, s) == 0.0)
-        continue;
-      const double diagonal = std::sqrt(std::abs(modal_damping(r, r) * modal_damping(s, s)));
-      const double ratio = diagonal > 0.0 ? std::abs(modal_damping(r, s)) / diagonal
-                                          : std::numeric_limits<double>::infinity();
-      max_off_diagonal_damping_ratio_ = std::max(max_off_diagonal_damping_ratio_, ratio);
-    }
+  max_off_diagonal_damping_ratio_ = maxOffDiagonalRatio(modal_damping);
   if (damping_ratios.size() != 0) {
     damping_coefficients_ = 2.0 * damping_ratios.cwiseProduct(frequencies_);
   } else {
@@ -133,6 +124,20 @@ Vector ModalSystem::dampingRatios() const {
     if (frequencies_(r) > 0.0)
       zeta(r) = damping_coefficients_(r) / (2.0 * frequencies_(r));
   return zeta;
+}
+
+double maxOffDiagonalRatio(const Matrix& modal_damping) {
+  double worst = 0.0;
+  for (DofIndex s = 0; s < modal_damping.cols(); ++s)
+    for (DofIndex r = 0; r < modal_damping.rows(); ++r) {
+      if (r == s || modal_damping(r, s) == 0.0)
+        continue;
+      const double diagonal = std::sqrt(std::abs(modal_damping(r, r) * modal_damping(s, s)));
+      const double ratio = diagonal > 0.0 ? std::abs(modal_damping(r, s)) / diagonal
+                                          : std::numeric_limits<double>::infinity();
+      worst = std::max(worst, ratio);
+    }
+  return worst;
 }
 
 std::string modalDampingCouplingWarning(double coupling, const std::string& what,

@@ -208,14 +208,8 @@ void run(const FrfOptions& opt) {
     const reduction::FullModelReference ref =
         reduction::buildVehicleReference(description, variant, ref_options);
     names = ref.modal.output_names;
-    // Its modal damping (eq. 20) drops what couples the modes, as the reduced model's would:
-    // in mass-normalised modal coordinates c_rs / sqrt(c_rr c_ss) of its damping matrix.
-    const Matrix& c = ref.modal.damping;
-    for (Eigen::Index r = 0; r < c.rows(); ++r)
-      for (Eigen::Index q = 0; q < r; ++q)
-        if (c(r, r) > 0.0 && c(q, q) > 0.0)
-          damping_coupling =
-              std::max(damping_coupling, std::abs(c(r, q)) / std::sqrt(c(r, r) * c(q, q)));
+    // Its modal damping (eq. 20) drops what couples the modes, as the reduced model's would.
+    damping_coupling = dynamics::maxOffDiagonalRatio(ref.modal.damping);
     const std::string w = dynamics::modalDampingCouplingWarning(
         damping_coupling, "--model full (its modes, each with its own damping)",
         "the reduced model's FRF (--model reduced, solved directly) is the exact one");

@@ -30,7 +30,6 @@
 #include "speed_sweep.h"
 #include "terrain_coverage.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
-#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/shock_meter.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
@@ -40,6 +39,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_lines.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "vehicle_analysis.h"
+#include "warning_list.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -98,10 +98,8 @@ void run(const RideOptions& opt) {
     throw InputError(m.str());
   }
   std::vector<std::string> warnings;
-  for (const std::string& w : terrain::terrainWarnings(opt.track, track)) {
-    warnings.push_back(w);
-    std::cerr << "tvd: warning: " << w << "\n";
-  }
+  for (const std::string& w : terrain::terrainWarnings(opt.track, track))
+    warn(&warnings, w);
   const RideModel model = loadRideModel(opt, &track, &warnings);
   const std::vector<std::string>& points = model.points;
   // A point name of up to 40 characters (the description's limit) with its longest suffix can
@@ -124,25 +122,14 @@ void run(const RideOptions& opt) {
   sim_options.max_mode_frequency_hz = dynamics::nyquistCutoff(opt.dt);  // as tvd simulate
   sim_options.quantities = {dynamics::OutputQuantity::Acceleration};
   sim_options.generalized_force = reduced.model.gravity_load;
-  const dynamics::ModalSystem modal(sys);
-  dynamics::Simulator sim(sys, modal, sim_options);
-  {
-    const std::string w = dynamics::modalDampingCouplingWarning(
-        modal.maxOffDiagonalDampingRatio(), "tvd ride's modal integration",
-        "tvd simulate --method exact gives the exact run at a speed");
-    if (!w.empty()) {
-      warnings.push_back(w);
-      std::cerr << "tvd: warning: " << w << "\n";
-    }
-  }
+  dynamics::Simulator sim(sys, sim_options);
+  warn(&warnings, dynamics::modalDampingCouplingWarning(
+                      sim.maxOffDiagonalDampingRatio(), "tvd ride's modal integration",
+                      "tvd simulate --method exact gives the exact run at a speed"));
 
   const dynamics::RoadExcitation road(sys.input_stations, sys.input_lateral, opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());
-  if (const std::optional<std::string> w =
-          terrainCoverageWarning(opt.track, track, road, opt.lateral_offset)) {
-    warnings.push_back(*w);
-    std::cerr << "tvd: warning: " << *w << "\n";
-  }
+  warn(&warnings, terrainCoverageWarning(opt.track, track, road, opt.lateral_offset));
   const std::vector<std::string>& names = sim.outputNames();
   dynamics::ShockOptions shock;
   shock.lowpass_corner_hz = opt.lowpass_hz;

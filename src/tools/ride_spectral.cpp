@@ -28,6 +28,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "vehicle_analysis.h"
+#include "warning_list.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -224,19 +225,10 @@ void runSpectralRide(const RideOptions& opt) {
   const Vector lateral = sys.input_lateral.array() + opt.lateral_offset;
   const dynamics::SpectralRide ride(modal, lateral, rows, road, spectral);
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
-  {
-    const std::string w = dynamics::modalDampingCouplingWarning(
-        modal.maxOffDiagonalDampingRatio(), "the spectral ride's modal superposition",
-        "tvd frf solves such a model directly");
-    if (!w.empty()) {
-      warnings.push_back(w);
-      std::cerr << "tvd: warning: " << w << "\n";
-    }
-  }
-  if (const std::optional<std::string> w = sideCrossingWarning(opt, sys)) {
-    warnings.push_back(*w);
-    std::cerr << "tvd: warning: " << *w << "\n";
-  }
+  warn(&warnings, dynamics::modalDampingCouplingWarning(modal.maxOffDiagonalDampingRatio(),
+                                                        "the spectral ride's modal superposition",
+                                                        "tvd frf solves such a model directly"));
+  warn(&warnings, sideCrossingWarning(opt, sys));
 
   RideRuns<Run> rate([&](double speed_kmh) {
     const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / kKmhPerMs);
@@ -256,11 +248,7 @@ void runSpectralRide(const RideOptions& opt) {
   const std::vector<dynamics::LimitCrossing> limits = rate.limits(criteria, opt.tolerance_kmh);
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
-  if (const std::optional<std::string> w =
-          bandCutWarning(opt, modal, lateral, rows, points, road, sweep, runs)) {
-    warnings.push_back(*w);
-    std::cerr << "tvd: warning: " << *w << "\n";
-  }
+  warn(&warnings, bandCutWarning(opt, modal, lateral, rows, points, road, sweep, runs));
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;

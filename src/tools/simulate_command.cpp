@@ -43,6 +43,7 @@
 #include "tracked_vehicle_dynamics/vehicle/vehicle_geometry.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 #include "vehicle_analysis.h"
+#include "warning_list.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -283,20 +284,15 @@ void run(const SimulateOptions& opt) {
                             : discrete ? dynamics::Simulator(*discrete)
                                        : dynamics::Simulator(sys, sim_options);
   const double setup_seconds = std::chrono::duration<double>(Clock::now() - setup_start).count();
-  {
-    // Every modal run, the full model's included (0 for the exact method, which keeps all of C).
-    const std::string w = dynamics::modalDampingCouplingWarning(
-        sim.maxOffDiagonalDampingRatio(),
-        full ? "--model full (its modes, each with its own damping)"
-             : "--method modal (the default)",
-        full ? "the reduced model with --method exact integrates the whole C"
-             : "--method exact integrates the whole C (slower: seconds to set up on the tracked "
-               "model)");
-    if (!w.empty()) {
-      warnings.push_back(w);
-      std::cerr << "tvd: warning: " << w << "\n";
-    }
-  }
+  // Every modal run, the full model's included (0 for the exact method, which keeps all of C).
+  warn(&warnings,
+       dynamics::modalDampingCouplingWarning(
+           sim.maxOffDiagonalDampingRatio(),
+           full ? "--model full (its modes, each with its own damping)"
+                : "--method modal (the default)",
+           full ? "the reduced model with --method exact integrates the whole C"
+                : "--method exact integrates the whole C (slower: seconds to set up on the "
+                  "tracked model)"));
   // Ground contact (ground_contact.h): the force of every road input's spring, checked for
   // tension, the limit of the bonded linear model. Reduced model only: the full model's modal
   // coordinates carry no ground DOF (K_u = Phi^T K_u is not of the spring form), and its ground
@@ -336,10 +332,7 @@ void run(const SimulateOptions& opt) {
       const std::string w =
           dynamics::groundTieDampingWarning(sys, contacts, modal ? &*modal : nullptr,
                                             sim_options.max_mode_frequency_hz, how, instead);
-      if (!w.empty()) {
-        warnings.push_back(w);
-        std::cerr << "tvd: warning: " << w << "\n";
-      }
+      warn(&warnings, w);
     } catch (const Error&) {
       // A diagnostic: a model not held by its ground springs alone has no tie to judge, and
       // the run goes on.
@@ -350,11 +343,7 @@ void run(const SimulateOptions& opt) {
   const dynamics::RoadExcitation road(model_sys.input_stations, model_sys.input_lateral,
                                       opt.lateral_offset);
   const terrain::TerrainLines lines(track, road.inputY());  // the pad rows, precomputed
-  if (const std::optional<std::string> w =
-          terrainCoverageWarning(opt.track, track, road, opt.lateral_offset)) {
-    warnings.push_back(*w);
-    std::cerr << "tvd: warning: " << *w << "\n";
-  }
+  warn(&warnings, terrainCoverageWarning(opt.track, track, road, opt.lateral_offset));
 
   const std::vector<std::string>& names = sim.outputNames();
   const SimulationLayout layout = simulationLayout(names, sys.output_names);
@@ -449,8 +438,7 @@ void run(const SimulateOptions& opt) {
     std::ostringstream w;
     w << "the speed profile ends after " << travelled << " m, before the track's " << distance
       << " m";
-    warnings.push_back(w.str());
-    std::cerr << "tvd: warning: " << warnings.back() << "\n";
+    warn(&warnings, w.str());
   }
   // The node's criterion (its "beyond the linear model's range" WARN): a whole pad pressed at
   // rest pulls on the road (without pads, a contact). Beyond it the run is the bonded model's,
@@ -468,8 +456,7 @@ void run(const SimulateOptions& opt) {
         << " of " << (by_pads ? s.groups : s.contacts)
         << " at once), where a vehicle would lift them; the results after that are the linear "
            "model's (ground_contact in the JSON; README, \"Ground contact\")";
-      warnings.push_back(w.str());
-      std::cerr << "tvd: warning: " << warnings.back() << "\n";
+      warn(&warnings, w.str());
     }
   }
 

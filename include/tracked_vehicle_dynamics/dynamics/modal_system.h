@@ -24,6 +24,11 @@ namespace dynamics {
 /// approximation, and the tools say so or solve without it.
 constexpr double kModalDampingCouplingTolerance = 1e-6;
 
+/// max over r != s of |c_rs| / sqrt(c_rr c_ss) of a damping matrix in mass-normalised modal
+/// coordinates (infinite where an off-diagonal term meets a zero diagonal): what the modal
+/// damping approximation drops, 0 when c is diagonal.
+double maxOffDiagonalRatio(const Matrix& modal_damping);
+
 /// What the modal damping approximation drops, for a user: "" when coupling is within the
 /// tolerance. `what`: the run or result it concerns (e.g. "--method modal (the default)");
 /// `instead`: what gives the exact answer.
