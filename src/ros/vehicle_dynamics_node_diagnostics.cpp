@@ -6,6 +6,7 @@
 #include <sstream>
 #include <string>
 
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
 
@@ -204,6 +205,9 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "built; not cached: " + not_cached_reason_);
   }
+  if (damping_coupling_ > dynamics::kModalDampingCouplingTolerance)
+    status.mergeSummary(diagnostic_msgs::DiagnosticStatus::WARN,
+                        "~method modal drops the damping's coupling of the modes");
   status.add("vehicle file", params_.vehicle);
   status.add("vehicle", vehicle_->geometry().vehicle_name);
   status.add("variant", vehicle::variantName(params_.variant));
@@ -214,6 +218,7 @@ void VehicleDynamicsNode::diagnoseModel(diagnostic_updater::DiagnosticStatusWrap
   status.add("fixed-interface modes", report_.flexible_modes);
   status.add("damping", model_damping_);
   status.add("method", methodName(params_.vehicle_options.method));
+  status.add("damping coupling dropped", damping_coupling_);
   status.add("hold", holdName(params_.vehicle_options.hold));
   status.add("cache file", report_.cache_file);
   status.add("cached", cached_);

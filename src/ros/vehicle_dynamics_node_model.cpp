@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/heap_reuse.h"
 #include "tracked_vehicle_dynamics/reduction/contact_groups.h"
@@ -118,6 +119,14 @@ void VehicleDynamicsNode::loadVehicle() {
     // contact forces of the ground-contact check carry a damping force no road exerts.
     if (!vehicle_->groundTieDampingWarning().empty() && params_.ground_contact_rate > 0.0)
       ROS_WARN("%s: %s", nodeName(), vehicle_->groundTieDampingWarning().c_str());
+    // ~method modal keeps only the diagonal of Phi^T C Phi (0 for exact): discrete dampers
+    // couple the modes, as tvd simulate warns.
+    damping_coupling_ = vehicle_->simulator().maxOffDiagonalDampingRatio();
+    const std::string coupling = dynamics::modalDampingCouplingWarning(
+        damping_coupling_, "~method modal",
+        "~method exact integrates the whole C (seconds to set up on the tracked model)");
+    if (!coupling.empty())
+      ROS_WARN("%s: %s", nodeName(), coupling.c_str());
   } catch (const Error& e) {
     throw ParameterError(vehicle_param + " (" + params_.vehicle + "): " + e.what());
   }

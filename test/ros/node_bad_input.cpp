@@ -598,6 +598,45 @@ TEST(NodeBadParameters, UnsetComfortPointFallsBackToTheHullOnAVehicleWithoutACre
       << named.output;
 }
 
+// Discrete arm dampers make Phi^T C Phi non-diagonal; ~method modal (the default) keeps its
+// diagonal only, and the node says so at start-up and in its model diagnostics, as tvd simulate
+// does (the exact method keeps the whole C: Simulator's ratio is 0 there, test_simulator.cpp).
+TEST(NodeBadParameters, ModalMethodWithArmDampersWarnsOfTheCoupling) {
+  ros::NodeHandle private_nh("~");
+  const std::string own = test::requiredParam<std::string>(private_nh, "own_vehicle");
+  const std::string cache_dir =
+      test::requiredParam<std::string>(private_nh, "cache_dir") + "/arm_damped";
+  std::filesystem::create_directories(cache_dir);
+  const std::string damped = cache_dir + "/arm_damped.yaml";
+  {
+    std::ifstream in(own);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string zero = "arm_damping: {value: 0,";
+    const std::string::size_type at = text.find(zero);
+    ASSERT_NE(at, std::string::npos) << own << " has no zero arm_damping to replace";
+    text.replace(at, zero.size(), "arm_damping: {value: 20000,");
+    const std::string stations = "damped_stations:\n    value: []";
+    const std::string::size_type st = text.find(stations);
+    ASSERT_NE(st, std::string::npos) << own << " has no empty damped_stations to replace";
+    text.replace(st, stations.size(), "damped_stations:\n    value: [1, 5]");
+    std::ofstream(damped) << text;
+  }
+  const NodeRun run = runNode(
+      "__name:=arm_damped _variant:=untracked _vehicle:=" + damped + " _cache_dir:=" + cache_dir,
+      test::requiredParam<int>(private_nh, "bad_parameter_timeout"));
+  EXPECT_EQ(run.exit_status, 124) << "the node should run until `timeout` stops it:\n"
+                                  << run.output;
+  EXPECT_NE(run.output.find("/arm_damped: the damping couples the modes (Phi^T C Phi off its "
+                            "diagonal by up to "),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("~method modal keeps only the diagonal (modal damping)"),
+            std::string::npos)
+      << run.output;
+  EXPECT_NE(run.output.find("~method exact integrates the whole C"), std::string::npos)
+      << run.output;
+}
+
 // ~footprint_frame must be a frame of its own; ~publish_odom_tf a boolean.
 TEST(NodeBadParameters, BadFootprintFrameAndOdomTfAreNamed) {
   expectEachStopsNamed({

@@ -207,6 +207,7 @@ class VehicleDynamicsNode {
   std::string given_reduction_;  ///< the reduction key of ~reduced_model's file, when given
   DofIndex model_dofs_ = 0, model_inputs_ = 0, model_outputs_ = 0;
   std::string model_damping_;
+  double damping_coupling_ = 0.0;  // Phi^T C Phi off its diagonal that ~method modal drops
   std::vector<std::size_t> published_points_;  // indices into geometry().points, on /tf
   std::vector<std::size_t> static_points_;     // rigid with the hull: once on /tf_static
   std::vector<std::size_t> imu_points_;        // ~imu_points, indices into geometry().points
