@@ -1,0 +1,37 @@
+// Exact FRF of a second-order system whose damping couples its modes (paper eq. 18 with a
+// non-proportional C, e.g. discrete arm dampers), in O(n^2) per frequency instead of a dense
+// O(n^3) LU: one Hessenberg reduction of the state matrix serves every frequency (Laub,
+// "Efficient multivariable frequency response computations", IEEE TAC 26(2), 1981).
+//
+// In mass-normalised modal coordinates q = Phi eta (Phi^T M Phi = I, Phi^T K Phi = Omega^2):
+//   eta'' + D eta' + Omega^2 eta = Phi^T (K_u u + C_u u'),   D = Phi^T C Phi (full, not diagonal)
+// and with the state y = [Omega eta; eta'] (both halves in the units of a modal velocity, so
+// the state matrix holds omega_r, not omega_r^2: entries up to 1e4 rad/s on the tracked model
+// instead of 1e8):
+//   y' = A y + [0; Phi^T F],   A = [0  Omega; -Omega  -D]
+// A = Q H Q^T once (H upper Hessenberg, Q orthogonal); per frequency
+//   (j omega I - H) w = Q_2^T Phi^T F(omega),   y = Q w          (Q_2: Q's lower n rows)
+// is Gaussian elimination on a Hessenberg matrix (pivoting between adjacent rows), O((2n)^2).
+// Outputs: velocity H Phi eta' = (H Phi Q_2) w, acceleration j omega times it, displacement
+// H Phi eta with eta_r = y_r / omega_r (a rigid mode's eta_r = eta_r' / (j omega)).
+#pragma once
+
+#include "tracked_vehicle_dynamics/dynamics/frf.h"
+
+namespace tracked_vehicle_dynamics {
+namespace dynamics {
+
+/// The FRF of `system` with its whole damping C (no modal damping approximation) per unit road
+/// amplitude, [n_frequencies x n_outputs] as frfDirect(); `modal` must be ModalSystem(system)
+/// (its modes and projections are reused; its modal damping is not). frequencies_hz [Hz] >= 0.
+/// Equal to frfDirect() to round-off, 5-10x faster on the reduced models (2n x 2n reduction once,
+/// about 2 s for the tracked reduced model).
+/// Throws InputError for negative or non-finite frequencies or a modal system of another size,
+/// SolverError when j omega I - A is singular at a frequency (an undamped resonance on the
+/// grid, or a rigid-body mode at 0 Hz), naming the frequency.
+ComplexMatrix frfStateSpace(const SecondOrderSystem& system, const ModalSystem& modal,
+                            const Vector& frequencies_hz, const InputDelay& delay,
+                            OutputQuantity quantity = OutputQuantity::Acceleration);
+
+}  // namespace dynamics
+}  // namespace tracked_vehicle_dynamics
