@@ -136,7 +136,10 @@ def main():
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0))
     axes[0].set_yscale("log")
-    axes[0].set_title("ride limits: vertical absorbed power" + (f" on {first['track']}" if first["track"] else ""))
+    # Every file's road, once each, in the order given (a track and a spectral road drawn
+    # together are both named).
+    tracks = list(dict.fromkeys(r[4]["track"] for r in runs if r[4]["track"]))
+    axes[0].set_title("ride limits: vertical absorbed power" + (f" on {' and '.join(tracks)}" if tracks else ""))
     if timed:
         axes[1].set_title(f"peak upward acceleration ({timed[0]['peak_lowpass_hz']:g} Hz low-pass)"
                           if timed[0]["peak_lowpass_hz"] > 0 else "peak upward acceleration (unfiltered)")

@@ -277,13 +277,23 @@ void run(const FrfOptions& opt) {
                 {"speed_kmh", opt.speed_kmh}});
   }
 
-  // Per output: the largest peak and every local maximum above 10 % of it (the resonances).
+  // Per output: the largest peak and the resonances, every local maximum at or above 10 % of
+  // that peak or, divided by omega^2 (the displacement it stands for), at or above 10 % of the
+  // largest such value: an acceleration FRF grows as omega^2, so a body mode at 2 Hz is a few %
+  // of a wheel hop at 25 Hz while its displacement is the larger (a light vehicle: 490 against
+  // 8,100 (m/s^2)/m).
   auto peaks = [&](const Vector& mag) {
     Eigen::Index top = 0;
     mag.maxCoeff(&top);
+    Vector displacement = Vector::Zero(mag.size());
+    for (Eigen::Index i = 0; i < mag.size(); ++i)
+      if (hz(i) > 0.0)
+        displacement(i) = mag(i) / std::pow(kTwoPi * hz(i), 2);
+    const double top_displacement = displacement.maxCoeff();
     std::vector<std::pair<double, double>> local;
     for (Eigen::Index i = 1; i + 1 < mag.size(); ++i)
-      if (mag(i) > mag(i - 1) && mag(i) >= mag(i + 1) && mag(i) >= 0.1 * mag(top))
+      if (mag(i) > mag(i - 1) && mag(i) >= mag(i + 1) &&
+          (mag(i) >= 0.1 * mag(top) || displacement(i) >= 0.1 * top_displacement))
         local.emplace_back(hz(i), mag(i));
     return std::make_pair(top, local);
   };

@@ -183,11 +183,12 @@ double solveIdlerX(const VehicleDescription& d) {
   if (ChainPath(d, idlerX(lo)).length() > target)
     throw InputError(chain + " is too short to wrap the sprocket and the idler");
   if (ChainPath(d, idlerX(hi)).length() < target)
-    throw InputError(
-        chain + " is too long: it closes only with the idler beyond x = " + brief(idlerX(hi)) +
-        " m, i.e. more than " + brief(kWheelOverhang) + " m " +
-        (side > 0 ? "ahead of the hull's front" : "behind the hull's rear") +
-        " end (x = " + brief(side * hull_end) + " m; hull.length " + brief(d.hull.length) + " m)");
+    throw InputError(chain + " is too long: it closes only with the idler's centre beyond x = " +
+                     brief(idlerX(hi)) + " m, where its wheel (idler.radius " +
+                     brief(d.idler.radius) + " m) reaches more than " + brief(kWheelOverhang) +
+                     " m " + (side > 0 ? "ahead of the hull's front" : "behind the hull's rear") +
+                     " end (x = " + brief(side * hull_end) + " m, half of hull.length " +
+                     brief(d.hull.length) + " m from the middle of the wheelbase)");
   while (hi - lo > kClosureTolerance) {
     const double mid = 0.5 * (lo + hi);
     if (ChainPath(d, idlerX(mid)).length() < target)

@@ -296,6 +296,11 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
         << e;
     EXPECT_NE(e.find("is too long"), std::string::npos) << e;
     EXPECT_NE(e.find("hull's front end (x = 3.8 m"), std::string::npos) << e;
+    // The limit is the idler wheel's, said as such (its centre stops radius short of it).
+    EXPECT_NE(e.find("closes only with the idler's centre beyond x = "), std::string::npos) << e;
+    EXPECT_NE(e.find("where its wheel (idler.radius 0.33 m) reaches more than 0.5 m ahead"),
+              std::string::npos)
+        << e;
   }
   d = veh::VehicleDescription{};
   EXPECT_EQ(buildError(d), "");  // the paper's 92 links close with the idler inside the hull
