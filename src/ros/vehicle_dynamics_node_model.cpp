@@ -107,6 +107,10 @@ void VehicleDynamicsNode::loadVehicle() {
                                                          description, params_.variant);
     if (!carried.empty())
       ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), carried.c_str());
+    const std::string tilted = vehicle::attitudeWarning(vehicle_->staticHullDisplacement()(4),
+                                                        description, params_.variant);
+    if (!tilted.empty())
+      ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), tilted.c_str());
     model_dofs_ = model.size();
     model_inputs_ = model.system.inputCount();
     model_outputs_ = model.system.outputCount();

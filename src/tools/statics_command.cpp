@@ -81,6 +81,9 @@ void run(const StaticsOptions& opt) {
     const std::string carried = vehicle::sagShareWarning(s.hull_sag, description, variant);
     if (!carried.empty())
       warnings.push_back(carried);
+    const std::string tilted = vehicle::attitudeWarning(s.hull_pitch, description, variant);
+    if (!tilted.empty())
+      warnings.push_back(tilted);
   }
   // A road wheel off the track at rest is a vehicle that does not stand on its wheels (a centre
   // of gravity far off the wheelbase, a chain stiff enough to carry the hull): said, not only

@@ -40,6 +40,9 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   const std::string carried = vehicle::sagShareWarning(a.statics.hull_sag, description, variant);
   if (!carried.empty())
     warnings.push_back(carried);
+  const std::string tilted = vehicle::attitudeWarning(a.statics.hull_pitch, description, variant);
+  if (!tilted.empty())
+    warnings.push_back(tilted);
   for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";
   a.statics_seconds = std::chrono::duration<double>(Clock::now() - t1).count();

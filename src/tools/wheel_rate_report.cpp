@@ -17,6 +17,8 @@ void writeWheelRateEstimate(io::JsonWriter& json, const vehicle::WheelRateEstima
       .field("sprung_mass_kg", e.sprung_mass)
       .field("sag_m", e.sag)
       .field("bounce_hz", e.bounce_hz)
+      .field("cog_x_m", e.cog_x)
+      .field("pitch_deg", e.pitch * 180.0 / kPi)
       .endObject();
 }
 

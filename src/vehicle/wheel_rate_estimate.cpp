@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/vehicle/chain_path.h"
 
 namespace tracked_vehicle_dynamics {
 namespace vehicle {
@@ -63,6 +64,26 @@ WheelRateEstimate wheelRateEstimate(const VehicleDescription& d, Variant variant
   const double n_k = e.wheels * e.series_rate;
   e.sag = e.sprung_mass * kStandardGravity / n_k;
   e.bounce_hz = std::sqrt(n_k / e.sprung_mass) / (2.0 * kPi);
+  // The sprung mass's CoG: the hull's, and tracked the chain wheels rigid with it (the idler's
+  // x is where the chain closes).
+  double moment = d.hull.mass * d.hull.cog_x;
+  if (variant == Variant::Tracked) {
+    moment += 2.0 * (d.sprocket.mass * d.sprocket.centre_x + d.idler.mass * solveIdlerX(d));
+    for (const double x : d.return_rollers.x)
+      moment += 2.0 * d.return_rollers.mass * x;
+  }
+  e.cog_x = moment / e.sprung_mass;
+  // Axles at x_j = ((N - 1) / 2 - j) l about the wheelbase's middle, one wheel a side.
+  const int axles = d.running_gear.axle_count;
+  double second_moment = 0.0;
+  for (int j = 0; j < axles; ++j) {
+    const double x = (0.5 * (axles - 1) - j) * d.running_gear.axle_spacing;
+    second_moment += 2.0 * x * x;
+  }
+  e.end_station = 0.5 * (axles - 1) * d.running_gear.axle_spacing;
+  e.pitch = second_moment > 0.0
+                ? e.sprung_mass * kStandardGravity * e.cog_x / (e.series_rate * second_moment)
+                : 0.0;
   return e;
 }
 
@@ -82,6 +103,30 @@ std::string sagShareWarning(double hull_sag, const VehicleDescription& descripti
   return what + (sag < 0.0 ? ", where " : " ") + "the " + fixed(e.sag * 1e3, 1) + " mm of " +
          estimateText(e, variant) + (sag < 0.0 ? " would sag" : "") + ": " +
          carriersText(description, variant);
+}
+
+std::string attitudeWarning(double hull_pitch, const VehicleDescription& description,
+                            Variant variant) {
+  const WheelRateEstimate e = wheelRateEstimate(description, variant);
+  const double off = std::abs(hull_pitch - e.pitch) * e.end_station;
+  if (!(off > kMaxPitchShare * e.sag))
+    return "";
+  const auto attitude = [](double pitch) {
+    const double deg = pitch * 180.0 / kPi;
+    return std::abs(deg) < 0.005
+               ? std::string("level")
+               : fixed(std::abs(deg), 2) + (deg > 0.0 ? " deg nose down" : " deg nose up");
+  };
+  return "the hull sits " + attitude(hull_pitch) + " at rest, where " + estimateText(e, variant) +
+         " would sit " + attitude(e.pitch) + " (its CoG " + fixed(e.cog_x, 3) +
+         " m ahead of the wheelbase's middle): the end axles " + fixed(off * 1e3, 1) +
+         " mm off the estimate's attitude, more than a quarter of its " + fixed(e.sag * 1e3, 1) +
+         " mm sag, so the wheel loads do not follow the CoG; " +
+         carriersText(description, variant) +
+         (variant == Variant::Tracked
+              ? " (compare tvd statics --contact bilateral, the linear model, with the default "
+                "contacts that cannot pull)"
+              : "");
 }
 
 std::string bounceWarning(const VehicleDescription& description, Variant variant,
