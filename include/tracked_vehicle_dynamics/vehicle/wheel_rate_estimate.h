@@ -31,10 +31,10 @@ struct WheelRateEstimate {
   int wheels = 0;            ///< road wheels n
   /// m: the hull, and in the tracked variant the sprockets, idlers and rollers rigid with it [kg]
   double sprung_mass = 0.0;
-  double sag = 0.0;        ///< d, positive down [m]
-  double bounce_hz = 0.0;  ///< f [Hz]
-  double cog_x = 0.0;      ///< x_G of the sprung mass from the wheelbase's middle [m]
-  double pitch = 0.0;      ///< phi [rad], positive nose down (REP-103: about +y)
+  double sag = 0.0;          ///< d, positive down [m]
+  double bounce_hz = 0.0;    ///< f [Hz]
+  double cog_x = 0.0;        ///< x_G of the sprung mass from the wheelbase's middle [m]
+  double pitch = 0.0;        ///< phi [rad], positive nose down (REP-103: about +y)
   double end_station = 0.0;  ///< the foremost axle's x, half the wheelbase [m]
 };
 
