@@ -403,6 +403,7 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
     stepped_patch_.clear();  // the offset terrain is gone
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
+  patches_behind_at_restart_ = events_.patches_behind;
   ++events_.resets;
   return uncovered;
 }
@@ -671,19 +672,22 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
     sample_time_ += ros::Duration().fromNSec(step_ns_);
     ++steps_since_start_;
     last_uncovered_ = result.uncovered;
-    // Standing still before any terrain arrived is the normal start, not an underrun; so is
-    // standing where a start or reset put it while the patches lie elsewhere (a ~reset_to target
-    // sent first).
-    const bool waiting =
-        (vehicle_->terrain().empty() && vehicle_->speed() == 0.0) || standingOnClearedGround();
+    // Standing still is not an underrun: before any terrain arrived (the normal start), where a
+    // start or reset put it while the patches lie elsewhere (a ~reset_to target sent first), or
+    // stopped beyond the terrain's end (a driver timed out, ~speed_timeout braking past the
+    // patches sent ahead): contacts that do not move hold the heights they stand on. The
+    // underrun was counted and said while it drove off the terrain.
+    const bool waiting = vehicle_->speed() == 0.0;
     if (result.uncovered > 0 && !waiting) {
       ++events_.uncovered_steps;
       if (vehicle_->terrain().empty()) {
+        // Only this run's: a bag loop's earlier passes dropped (and re-applied) patches too.
+        const std::uint64_t dropped = events_.patches_behind - patches_behind_at_restart_;
         const std::string behind =
-            events_.patches_behind == 0
-                ? std::string()
-                : " (" + std::to_string(events_.patches_behind) +
-                      " patches arrived wholly behind the vehicle and were dropped)";
+            dropped == 0 ? std::string()
+                         : " (" + std::to_string(dropped) +
+                               " patches arrived wholly behind the vehicle since the last start "
+                               "or reset and were dropped)";
         TVD_WARN_THROTTLE(kWarnPeriod,
                           "%s: no terrain stored%s, moving at %.3f m/s at station %.2f m: the "
                           "contacts hold their last height",

@@ -67,6 +67,7 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("step time mean [us]", step_window_.mean() * 1e6);
   status.add("step time p99 [us]", step_p99 * 1e6);
   status.add("step time max [us]", step_window_.max() * 1e6);
+  status.add("tick time mean [us]", tick_window_.mean() * 1e6);
   status.add("tick time p99 [us]", tick_window_.percentile(0.99) * 1e6);
   status.add("tick time max [us]", tick_window_.max() * 1e6);
   status.add("step time mean since start [us]", step_total_.mean() * 1e6);
@@ -132,6 +133,12 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    "waiting for terrain under the contacts: standing on flat ground since the "
                    "start or reset");
+  } else if (last_uncovered_ > 0 && vehicle_->speed() == 0.0) {
+    // Stopped with contacts off the terrain (beyond its end, a driver that timed out): they
+    // hold the heights they stand on; the underrun was said while it drove there.
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   "standing with contacts off the terrain: they hold the heights they stand on "
+                   "until it moves");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "covered");
   }
@@ -151,6 +158,7 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("last patch behind the vehicle", last_behind_patch_);
   status.add("steps with uncovered contacts (total)", events_.uncovered_steps);
   status.add("steps with uncovered contacts (since last report)", uncovered);
+  status.add("contacts off the terrain now", last_uncovered_);
   status.add("patches stored", buffer.patchCount());
   if (buffer.empty()) {  // not the buffer's +-inf sentinels
     status.add("covered from [m]", "none");

@@ -209,6 +209,21 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
+  // Stopped beyond the terrain's end (a driver gone, ~speed_timeout braking past the patches
+  // sent ahead): standing is not an underrun; the count stops where driving off left it.
+  publishSpeed(0.0);
+  ASSERT_TRUE(test::spinUntil([&] { return last_speed_ == 0.0; }, 5.0));
+  // Terrain ahead of its rear contacts only: stored (the buffer not empty, which was always
+  // "waiting"), the rear contacts still off it.
+  terrain_pub_.publish(test::flatProfile(station_ + 1.0, station_ + 20.0));
+  test::spinFor(1.5);  // a diagnostics period, for the last moving steps to be reported
+  EXPECT_GT(diagnostics_.value(": terrain", "contacts off the terrain now"), 0.0)
+      << diagnostics_.describe();
+  const double uncovered = diagnostics_.value(": terrain", "steps with uncovered contacts (total)");
+  EXPECT_GT(uncovered, 0.0);
+  test::spinFor(2.5);
+  EXPECT_EQ(diagnostics_.value(": terrain", "steps with uncovered contacts (total)"), uncovered)
+      << diagnostics_.describe();
   std_srvs::Empty reset;
   ASSERT_TRUE(ros::service::call("/vehicle_dynamics/reset", reset));
   ASSERT_TRUE(test::spinUntil(

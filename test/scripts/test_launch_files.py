@@ -191,6 +191,15 @@ class LaunchFilesTest(unittest.TestCase):
                           p["publish_odom_tf"], p["speed_timeout"]),
                          ("/tmp/m.mat", "veh1/", "base_footprint", False, 0.5))
 
+    def test_replay_track_loops_on_request(self):
+        # loop:=true hands --loop on to rosbag play (through play_track_bag.sh); not by default.
+        player = shlex.split(roslaunch("--args", "track_player", PACKAGE, "replay_track.launch"))
+        self.assertNotIn("--loop", player)
+        self.assertIn("--wait-for-subscribers", player)
+        player = shlex.split(roslaunch("--args", "track_player", PACKAGE, "replay_track.launch",
+                                       "loop:=true"))
+        self.assertIn("--loop", player)
+
     def test_respawn_makes_the_node_not_required(self):
         # roslaunch refuses a node both required and respawning: respawn:=true drops required.
         path = launch_path("vehicle_dynamics.launch")

@@ -238,6 +238,7 @@ class VehicleDynamicsNode {
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::vector<geometry_msgs::TransformStamped> pending_static_;  // until the first /clock
   bool flat_since_restart_ = true;  // no patch since the start or a reset that cleared the terrain
+  std::uint64_t patches_behind_at_restart_ = 0;  // events_.patches_behind at the last restart
   // The last start or reset cleared the terrain (the contacts hold the flat ground u = 0 until a
   // patch covers them), at this station.
   bool restart_cleared_ = true;
