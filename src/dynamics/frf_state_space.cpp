@@ -24,8 +24,11 @@ using RowComplexMatrix = Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, 
 // O(N^2). The rows of j omega I - H are formed as the elimination reaches them, so H is read
 // once and only U is written: `cur` holds row k of the partly eliminated matrix (from column k
 // on), `fresh` row k+1 of j omega I - H; the pivot row goes to U's row k and the other, less
-// l times the pivot row, becomes the next `cur`. False when a pivot is not above round-off of
-// `scale` (a norm of H plus omega): singular.
+// l times the pivot row, becomes the next `cur`. False when j omega I - H is singular to working
+// precision: a pivot not above round-off of `scale` (a norm of H plus omega), or the smallest
+// pivot below 10 N eps times the largest, where the error bound of the elimination,
+// N eps |largest / smallest|, would pass 10 % (an undamped resonance on the grid, to within
+// round-off).
 struct HessenbergWork {
   RowComplexMatrix u;  // the upper triangle of U
   ComplexVector cur, fresh;
@@ -42,6 +45,7 @@ bool solveShiftedHessenberg(const RowMatrix& h, double omega, double scale, Hess
   ComplexVector& fresh = work->fresh;
   cur = -h.row(0).transpose().cast<Complex>();
   cur(0) += j_omega;
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
   for (DofIndex k = 0; k + 1 < n; ++k) {
     const DofIndex m = n - k;
     fresh.segment(k, m) = -h.row(k + 1).segment(k, m).transpose().cast<Complex>();
@@ -52,6 +56,8 @@ bool solveShiftedHessenberg(const RowMatrix& h, double omega, double scale, Hess
     }
     if (!(std::abs(cur(k)) > tiny))
       return false;
+    smallest = std::min(smallest, std::abs(cur(k)));
+    largest = std::max(largest, std::abs(cur(k)));
     work->u.row(k).segment(k, m) = cur.segment(k, m).transpose();
     const Complex l = fresh(k) / cur(k);
     fresh.segment(k + 1, m - 1) -= l * cur.segment(k + 1, m - 1);
@@ -59,6 +65,10 @@ bool solveShiftedHessenberg(const RowMatrix& h, double omega, double scale, Hess
     cur.swap(fresh);
   }
   if (!(std::abs(cur(n - 1)) > tiny))
+    return false;
+  smallest = std::min(smallest, std::abs(cur(n - 1)));
+  largest = std::max(largest, std::abs(cur(n - 1)));
+  if (smallest < 10.0 * static_cast<double>(n) * std::numeric_limits<double>::epsilon() * largest)
     return false;
   work->u(n - 1, n - 1) = cur(n - 1);
   work->u.triangularView<Eigen::Upper>().solveInPlace(w);
@@ -83,6 +93,25 @@ ComplexMatrix frfStateSpace(const SecondOrderSystem& system, const ModalSystem& 
                      " inputs, " + std::to_string(system.outputCount()) + " outputs)");
   const Vector& omega_r = modal.naturalFrequencies();
   const ModeShapes& phi = modal.shapes();
+  // Sizes agree for any modal system of the same shape: its projections must be this system's
+  // (not withOutput()'s other rows, nor another model's modes).
+  const auto differs = [](const Matrix& a, const Matrix& b) {
+    return (a - b).cwiseAbs().maxCoeff() > 1e-9 * std::max(1.0, b.cwiseAbs().maxCoeff());
+  };
+  // Its modes must be this system's: phi_r^T M phi_r = 1 and phi_r^T K phi_r = omega_r^2 (two
+  // n^3 products, a few % of the reduction below).
+  const Vector unit_mass = (phi.transpose() * system.mass * phi).diagonal();
+  const Vector squares = (phi.transpose() * system.stiffness * phi).diagonal();
+  const bool other_modes = n > 0 && (differs(unit_mass, Vector::Ones(n)) ||
+                                     (squares - omega_r.cwiseAbs2()).cwiseAbs().maxCoeff() >
+                                         1e-9 * std::max(1.0, omega_r.cwiseAbs2().maxCoeff()));
+  if (other_modes ||
+      (n > 0 && system.outputCount() > 0 && differs(modal.modalOutput(), system.output * phi)) ||
+      (n > 0 && system.inputCount() > 0 &&
+       differs(modal.modalInputStiffness(), phi.transpose() * system.input_stiffness)))
+    throw InputError(
+        "frfStateSpace: the modal system is not this system's (its modes, or its outputs or "
+        "inputs projected on them, differ): give ModalSystem(system)");
 
   // A = [0 Omega; -Omega -D] with D = Phi^T C Phi (the whole of it), reduced once.
   Matrix a = Matrix::Zero(2 * n, 2 * n);

@@ -190,7 +190,7 @@ void run(const FrfOptions& opt) {
     // damping). Discrete dampers (suspension.arm_damping) couple the modes, and dropping the
     // coupling moved a wheel's peak by 105 % (two 20 kN m s/rad arm dampers, un-tracked): then
     // eq. 18 is solved exactly: one Hessenberg reduction of the state matrix, then O(n^2) per
-    // frequency (frf_state_space.h; a dense LU per frequency took 8x longer on the tracked model).
+    // frequency (frf_state_space.h; a dense LU per frequency takes 6-7x longer, bench_frf).
     const dynamics::ModalSystem modal(model.system);
     damping_coupling = modal.maxOffDiagonalDampingRatio();
     const dynamics::InputDelay delay =
@@ -277,11 +277,12 @@ void run(const FrfOptions& opt) {
                 {"speed_kmh", opt.speed_kmh}});
   }
 
-  // Per output: the largest peak and the resonances, every local maximum at or above 10 % of
-  // that peak or, divided by omega^2 (the displacement it stands for), at or above 10 % of the
-  // largest such value: an acceleration FRF grows as omega^2, so a body mode at 2 Hz is a few %
-  // of a wheel hop at 25 Hz while its displacement is the larger (a light vehicle: 490 against
-  // 8,100 (m/s^2)/m).
+  // Per output: the largest peak and the resonances, the local maxima of the FRF at or above
+  // 10 % of that peak and those of |FRF| / omega^2 (the displacement it stands for) at or above
+  // 10 % of its largest, merged: an acceleration FRF grows as omega^2, so a body mode at 2 Hz is
+  // a few % of a wheel hop at 25 Hz while its displacement is the larger (a light vehicle: 490
+  // against 8,100 (m/s^2)/m), and a well-damped body mode may be no maximum of the acceleration
+  // at all.
   auto peaks = [&](const Vector& mag) {
     Eigen::Index top = 0;
     mag.maxCoeff(&top);
@@ -290,11 +291,30 @@ void run(const FrfOptions& opt) {
       if (hz(i) > 0.0)
         displacement(i) = mag(i) / std::pow(kTwoPi * hz(i), 2);
     const double top_displacement = displacement.maxCoeff();
+    // Rising into it, not falling out of it: a plateau counts once, at its start.
+    const auto maximum = [](const Vector& v, Eigen::Index i, double floor) {
+      return v(i) > v(i - 1) && v(i) >= v(i + 1) && v(i) >= floor;
+    };
+    // A displacement maximum and the acceleration maximum just above it (the FRF still rising
+    // to it, within 25 % in frequency) are one resonance, listed where the FRF peaks.
+    const auto climb = [&](Eigen::Index i) {
+      Eigen::Index k = i;
+      while (k + 2 < mag.size() && mag(k + 1) > mag(k))
+        ++k;
+      return k + 1 < mag.size() && hz(k) <= 1.25 * hz(i) && maximum(mag, k, 0.0) ? k : i;
+    };
+    std::vector<Eigen::Index> at;
+    for (Eigen::Index i = 1; i + 1 < mag.size(); ++i) {
+      if (maximum(mag, i, 0.1 * mag(top)))
+        at.push_back(i);
+      if (maximum(displacement, i, 0.1 * top_displacement))
+        at.push_back(climb(i));
+    }
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
     std::vector<std::pair<double, double>> local;
-    for (Eigen::Index i = 1; i + 1 < mag.size(); ++i)
-      if (mag(i) > mag(i - 1) && mag(i) >= mag(i + 1) &&
-          (mag(i) >= 0.1 * mag(top) || displacement(i) >= 0.1 * top_displacement))
-        local.emplace_back(hz(i), mag(i));
+    for (const Eigen::Index i : at)
+      local.emplace_back(hz(i), mag(i));
     return std::make_pair(top, local);
   };
   if (opt.json) {

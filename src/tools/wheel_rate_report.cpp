@@ -18,7 +18,7 @@ void writeWheelRateEstimate(io::JsonWriter& json, const vehicle::WheelRateEstima
       .field("sag_m", e.sag)
       .field("bounce_hz", e.bounce_hz)
       .field("cog_x_m", e.cog_x)
-      .field("pitch_deg", e.pitch * 180.0 / kPi)
+      .field("pitch_deg", e.pitch * kRadToDegree)
       .endObject();
 }
 
@@ -27,7 +27,8 @@ std::string wheelRateEstimateText(const vehicle::WheelRateEstimate& e) {
   text << std::fixed << "torsion bars and pads alone (hand estimate): sag " << std::setprecision(1)
        << e.sag * 1e3 << " mm, bounce " << std::setprecision(2) << e.bounce_hz << " Hz (wheel rate "
        << brief(e.wheel_rate) << " N/m, " << e.wheels << " road wheels, " << brief(e.sprung_mass)
-       << " kg)";
+       << " kg), pitch " << std::setprecision(2) << e.pitch * kRadToDegree
+       << " deg (positive nose down; its CoG x " << std::setprecision(3) << e.cog_x << " m)";
   return text.str();
 }
 

@@ -108,18 +108,20 @@ std::string sagShareWarning(double hull_sag, const VehicleDescription& descripti
 std::string attitudeWarning(double hull_pitch, const VehicleDescription& description,
                             Variant variant) {
   const WheelRateEstimate e = wheelRateEstimate(description, variant);
+  static_assert(kMaxPitchShare == 0.25, "the warning says \"more than a quarter\"");
   const double off = std::abs(hull_pitch - e.pitch) * e.end_station;
   if (!(off > kMaxPitchShare * e.sag))
     return "";
   const auto attitude = [](double pitch) {
-    const double deg = pitch * 180.0 / kPi;
+    const double deg = pitch * kRadToDegree;
     return std::abs(deg) < 0.005
                ? std::string("level")
                : fixed(std::abs(deg), 2) + (deg > 0.0 ? " deg nose down" : " deg nose up");
   };
   return "the hull sits " + attitude(hull_pitch) + " at rest, where " + estimateText(e, variant) +
-         " would sit " + attitude(e.pitch) + " (its CoG " + fixed(e.cog_x, 3) +
-         " m ahead of the wheelbase's middle): the end axles " + fixed(off * 1e3, 1) +
+         " would sit " + attitude(e.pitch) + " (its CoG " + fixed(std::abs(e.cog_x), 3) +
+         (e.cog_x < 0.0 ? " m behind" : " m ahead of") +
+         " the wheelbase's middle): the end axles " + fixed(off * 1e3, 1) +
          " mm off the estimate's attitude, more than a quarter of its " + fixed(e.sag * 1e3, 1) +
          " mm sag, so the wheel loads do not follow the CoG; " +
          carriersText(description, variant) +

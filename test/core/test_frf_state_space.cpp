@@ -3,6 +3,7 @@
 // eq. 20's modal damping does not.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dynamics_test_models.h"
@@ -17,6 +18,16 @@ namespace {
 // max |a - b| over the peak of |b|: round-off of the two solutions relative to the response.
 double errorOverPeak(const ComplexMatrix& a, const ComplexMatrix& b) {
   return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+// The same output by output: max over columns of max |a - b| / max |b| in that column (a small
+// output is not judged against a large one's peak).
+double errorPerOutput(const ComplexMatrix& a, const ComplexMatrix& b) {
+  double worst = 0.0;
+  for (Eigen::Index c = 0; c < b.cols(); ++c)
+    worst = std::max(worst,
+                     (a.col(c) - b.col(c)).cwiseAbs().maxCoeff() / b.col(c).cwiseAbs().maxCoeff());
+  return worst;
 }
 
 // A discrete damper c between DOFs i and j (a rotary arm damper in the vehicle): C stops being
@@ -48,6 +59,7 @@ TEST(FrfStateSpace, EqualsTheDirectSolutionWhenDampersCoupleTheModes) {
       ASSERT_EQ(fast.rows(), direct.rows());
       ASSERT_EQ(fast.cols(), direct.cols());
       EXPECT_LT(errorOverPeak(fast, direct), 1e-9) << static_cast<int>(quantity);
+      EXPECT_LT(errorPerOutput(fast, direct), 1e-8) << static_cast<int>(quantity);
       // What the exactness buys: eq. 20 (diagonal of Phi^T C Phi) is visibly off here.
       EXPECT_GT(errorOverPeak(frfModal(modal, f, delay, quantity), direct), 1e-3);
     }
@@ -108,9 +120,23 @@ TEST(FrfStateSpace, Errors) {
   } catch (const SolverError& e) {
     EXPECT_NE(std::string(e.what()).find("1.000000 Hz"), std::string::npos) << e.what();
   }
+  // 1e-15 off the resonance: the elimination's error bound N eps / (2e-15) passes 10 %, so
+  // singular to working precision, not a response of 1e15 of unknown accuracy.
+  EXPECT_THROW(
+      frfStateSpace(undamped, modal, Vector::Constant(1, 1.0 + 1e-15), InputDelay::synchronous()),
+      SolverError);
   EXPECT_THROW(frfStateSpace(undamped, modal, Vector::Constant(1, -1.0), InputDelay::synchronous()),
                InputError);
   const SecondOrderSystem other = test::quarterCar();
   EXPECT_THROW(frfStateSpace(other, modal, Vector::Constant(1, 2.0), InputDelay::synchronous()),
+               InputError);
+  // Same sizes, other outputs (withOutput) or another model's modes: refused, not a wrong FRF.
+  const ModalSystem car(other);
+  EXPECT_THROW(frfStateSpace(other, car.withOutput(Matrix::Identity(2, 2) * 2.0, {"a", "b"}),
+                             Vector::Constant(1, 2.0), InputDelay::synchronous()),
+               InputError);
+  const SecondOrderSystem softer = test::quarterCar(300.0, 30.0, 2e4);
+  EXPECT_THROW(frfStateSpace(other, ModalSystem(softer), Vector::Constant(1, 2.0),
+                             InputDelay::synchronous()),
                InputError);
 }

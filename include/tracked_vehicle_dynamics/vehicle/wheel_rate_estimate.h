@@ -38,7 +38,9 @@ struct WheelRateEstimate {
   double end_station = 0.0;  ///< the foremost axle's x, half the wheelbase [m]
 };
 
-/// The estimate for a description's variant (closed form above).
+/// The estimate for a description's variant (closed form above). Tracked, the idler's x is
+/// where the chain closes (solveIdlerX): throws InputError for a chain that cannot close, as
+/// building the model does.
 WheelRateEstimate wheelRateEstimate(const VehicleDescription& description, Variant variant);
 
 /// The model's static sag below this share of the estimate (or a hull that rises) is taken for
@@ -64,14 +66,15 @@ std::string sagShareWarning(double hull_sag, const VehicleDescription& descripti
 /// The model's static pitch off the estimate's by more than this share of the estimate's sag at
 /// the end axles (|phi - phi_e| x_end > share d): a hull that does not sit on its torsion bars
 /// as the hand estimate does. The paper's vehicle: 0.05 tracked (bonded), 0.03 un-tracked; a
-/// light front-drive carrier with the paper's chain bending (test/data/front_drive_carrier.yaml):
+/// light front-drive carrier whose chain bends a hundred times more easily than the paper's
+/// (link_member_bending_inertia 1e-10 m^4; test/data/front_drive_carrier.yaml):
 /// 0.39 bonded (0.74 deg nose up against 0.64 deg nose down), 0.06 with contacts that cannot
 /// pull (0.85 deg nose down).
 constexpr double kMaxPitchShare = 0.25;
 
 /// A warning when the hull's static pitch `hull_pitch` [rad] (positive nose down,
 /// StaticSummary::hull_pitch or a reduced model's) is off the estimate's beyond kMaxPitchShare,
-/// naming both attitudes, the end axles' wheel-load direction and the keys; "" otherwise.
+/// naming both attitudes, how far off the end axles are and the keys; "" otherwise.
 std::string attitudeWarning(double hull_pitch, const VehicleDescription& description,
                             Variant variant);
 
