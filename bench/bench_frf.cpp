@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/dynamics/frf_state_space.h"
 #include "tracked_vehicle_dynamics/heap_reuse.h"
@@ -29,18 +30,11 @@
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 namespace tvd = tracked_vehicle_dynamics;
-using Clock = std::chrono::steady_clock;
+using bench::Clock;
+using bench::median;
+using bench::seconds;
 
 namespace {
-
-double seconds(Clock::time_point a) {
-  return std::chrono::duration<double>(Clock::now() - a).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
 
 struct Timing {
   double state_space = 0.0;  // ModalSystem + frfStateSpace [s], median
@@ -105,21 +99,8 @@ int main(int argc, char** argv) {
       "usage: bench_frf [--repeat N]   (N >= 1 repetitions, default 3)\n"
       "The exact FRF of the paper vehicle with arm dampers (coupled modes), ours beside SciPy's\n"
       "solve per frequency on the same matrices (bench/scipy_frf.py); about a minute.\n";
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
-      std::fputs(usage, stdout);
-      return 0;
-    }
-    if (std::strcmp(argv[i], "--repeat") == 0) {
-      repeat = i + 1 < argc ? std::atoi(argv[++i]) : 0;
-      if (repeat >= 1)
-        continue;
-      std::fprintf(stderr, "bench_frf: --repeat needs a whole number >= 1\n%s", usage);
-      return 2;
-    }
-    std::fprintf(stderr, "bench_frf: unexpected argument '%s'\n%s", argv[i], usage);
-    return 2;
-  }
+  if (const int status = bench::parseRepeat(argc, argv, "bench_frf", usage, &repeat); status >= 0)
+    return status;
   tvd::vehicle::VehicleDescription description = tvd::vehicle::loadVehicleDescription(
       std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml");
   // Two 20 kN m s/rad rotary dampers on the front and rear arms: Phi^T C Phi is then not

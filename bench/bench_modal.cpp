@@ -15,11 +15,13 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/heap_reuse.h"
 
 namespace tvd = tracked_vehicle_dynamics;
+using bench::median;
 
 namespace {
 
@@ -99,11 +101,6 @@ tvd::fem::Model makeChainModel(int assemblies, int nodes_per_link) {
     }
   }
   return m;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 
 #include <sys/resource.h>
 
+#include "bench_common.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
@@ -37,24 +38,17 @@
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
 namespace tvd = tracked_vehicle_dynamics;
-using Clock = std::chrono::steady_clock;
+using bench::Clock;
+using bench::median;
+using bench::seconds;
 
 namespace {
-
-double seconds(Clock::time_point a) {
-  return std::chrono::duration<double>(Clock::now() - a).count();
-}
 
 /// Peak resident set of this process so far [MB] (getrusage: ru_maxrss in KiB on Linux).
 double peakMegabytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
 }
 
 }  // namespace
@@ -67,21 +61,9 @@ int main(int argc, char** argv) {
       "usage: bench_pipeline [--repeat N]   (N >= 1 repetitions, default 3)\n"
       "The reduction pipeline and the simulation of the tracked paper vehicle, beside SciPy on\n"
       "the same matrices (bench/scipy_pipeline.py); a few minutes.\n";
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0) {
-      std::fputs(usage, stdout);
-      return 0;
-    }
-    if (std::strcmp(argv[i], "--repeat") == 0) {
-      repeat = i + 1 < argc ? std::atoi(argv[++i]) : 0;
-      if (repeat >= 1)
-        continue;
-      std::fprintf(stderr, "bench_pipeline: --repeat needs a whole number >= 1\n%s", usage);
-      return 2;
-    }
-    std::fprintf(stderr, "bench_pipeline: unexpected argument '%s'\n%s", argv[i], usage);
-    return 2;
-  }
+  if (const int status = bench::parseRepeat(argc, argv, "bench_pipeline", usage, &repeat);
+      status >= 0)
+    return status;
   const std::string vehicle_file =
       std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tvd_bench_pipeline";
