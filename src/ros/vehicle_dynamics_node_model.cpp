@@ -103,14 +103,10 @@ void VehicleDynamicsNode::loadVehicle() {
     // The model's sag at rest against the hull on its torsion bars alone (as tvd statics and
     // modes say it): a chain or locked wheels carrying the hull, the usual sign of values copied
     // from the paper's vehicle onto a light one, said to integrators who never run tvd.
-    const std::string carried = vehicle::sagShareWarning(vehicle_->staticHullDisplacement()(2),
-                                                         description, params_.variant);
-    if (!carried.empty())
-      ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), carried.c_str());
-    const std::string tilted = vehicle::attitudeWarning(vehicle_->staticHullDisplacement()(4),
-                                                        description, params_.variant);
-    if (!tilted.empty())
-      ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), tilted.c_str());
+    const Vector6& rest = vehicle_->staticHullDisplacement();  // ux, uy, uz, rx, ry, rz
+    for (const std::string& w :
+         vehicle::restWarnings(rest(2), rest(4), description, params_.variant))
+      ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), w.c_str());
     model_dofs_ = model.size();
     model_inputs_ = model.system.inputCount();
     model_outputs_ = model.system.outputCount();

@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <iostream>
 #include <numeric>
+#include <utility>
 
 #include "commands.h"
 #include "mass_breakdown_report.h"
@@ -78,12 +79,8 @@ void run(const StaticsOptions& opt) {
   const vehicle::WheelRateEstimate estimate = vehicle::wheelRateEstimate(description, variant);
   // At rest only: under --accel the sag is the load case's, not the suspension's.
   if (opt.accel == 0.0) {
-    const std::string carried = vehicle::sagShareWarning(s.hull_sag, description, variant);
-    if (!carried.empty())
-      warnings.push_back(carried);
-    const std::string tilted = vehicle::attitudeWarning(s.hull_pitch, description, variant);
-    if (!tilted.empty())
-      warnings.push_back(tilted);
+    for (std::string& w : vehicle::restWarnings(s.hull_sag, s.hull_pitch, description, variant))
+      warnings.push_back(std::move(w));
   }
   // A road wheel off the track at rest is a vehicle that does not stand on its wheels (a centre
   // of gravity far off the wheelbase, a chain stiff enough to carry the hull): said, not only

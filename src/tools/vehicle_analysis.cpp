@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
@@ -37,12 +38,9 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   const auto t1 = Clock::now();
   a.statics = vehicle::computeStaticSummary(a.vehicle, a.system);
   std::vector<std::string> warnings = vehicle::staticWarnings(a.statics, description);
-  const std::string carried = vehicle::sagShareWarning(a.statics.hull_sag, description, variant);
-  if (!carried.empty())
-    warnings.push_back(carried);
-  const std::string tilted = vehicle::attitudeWarning(a.statics.hull_pitch, description, variant);
-  if (!tilted.empty())
-    warnings.push_back(tilted);
+  for (std::string& w :
+       vehicle::restWarnings(a.statics.hull_sag, a.statics.hull_pitch, description, variant))
+    warnings.push_back(std::move(w));
   for (const std::string& w : warnings)
     std::cerr << "tvd: warning: " << w << "\n";
   a.statics_seconds = std::chrono::duration<double>(Clock::now() - t1).count();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
@@ -129,6 +130,16 @@ std::string attitudeWarning(double hull_pitch, const VehicleDescription& descrip
               ? " (compare tvd statics --contact bilateral, the linear model, with the default "
                 "contacts that cannot pull)"
               : "");
+}
+
+std::vector<std::string> restWarnings(double hull_sag, double hull_pitch,
+                                      const VehicleDescription& description, Variant variant) {
+  std::vector<std::string> warnings;
+  for (std::string w : {sagShareWarning(hull_sag, description, variant),
+                        attitudeWarning(hull_pitch, description, variant)})
+    if (!w.empty())
+      warnings.push_back(std::move(w));
+  return warnings;
 }
 
 std::string bounceWarning(const VehicleDescription& description, Variant variant,

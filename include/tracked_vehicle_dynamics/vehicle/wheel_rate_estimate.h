@@ -78,6 +78,11 @@ constexpr double kMaxPitchShare = 0.25;
 std::string attitudeWarning(double hull_pitch, const VehicleDescription& description,
                             Variant variant);
 
+/// Both of the above for a static solution at rest (sag, then attitude), the non-empty ones:
+/// what tvd statics, modes and mac and the node say of a hull its suspension does not carry.
+std::vector<std::string> restWarnings(double hull_sag, double hull_pitch,
+                                      const VehicleDescription& description, Variant variant);
+
 /// A warning when the lowest mode whose main motion is the hull's bounce lies above the
 /// variant's limit times the estimate's bounce, naming the mode, the ratio and the keys, or when
 /// no mode among `classes` (frequencies_hz, same order) bounces at all while they already reach
