@@ -2,6 +2,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/beam_element.h"
+#include "tracked_vehicle_dynamics/fem/geometric_stiffness.h"
 #include "tracked_vehicle_dynamics/fem/mass_element.h"
 #include "tracked_vehicle_dynamics/fem/spring_element.h"
 
@@ -44,6 +45,11 @@ PhysicalMatrices elementMatrices(const Model& model,
       const DofIndex dofs[2] = {base(beam.n1), base(beam.n2)};
       scatter<12>(pm.k, e.stiffness, dofs);
       scatter<12>(pm.m, e.mass, dofs);
+      if (beam.axial_force != 0.0)
+        scatter<12>(pm.k,
+                    beamGeometricStiffness(pos(beam.n1), pos(beam.n2), beam.orientation,
+                                           *model.findSection(beam.section), beam.axial_force),
+                    dofs);
     } catch (const InputError& err) {
       throw InputError("beams[" + std::to_string(i) + "]: " + err.what());
     }
@@ -68,6 +74,19 @@ PhysicalMatrices elementMatrices(const Model& model,
       scatter<12>(pm.k, e.stiffness, dofs);
       scatter<12>(pm.c, e.damping, dofs);
     }
+  }
+  // Pre-loads at rest: K_total = K + K_G (geometric_stiffness.h).
+  for (const Tie& tie : model.ties) {
+    const DofIndex dofs[2] = {base(tie.n1), base(tie.n2)};
+    scatter<12>(pm.k, tieGeometricStiffness(pos(tie.n1), pos(tie.n2), tie.force), dofs);
+  }
+  for (const BodyPreload& body : model.body_preloads) {
+    const Matrix3 k = bodyPreloadStiffness(pos(body.node), body.points, body.forces);
+    const DofIndex rotation = base(body.node) + 3;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (k(i, j) != 0.0)
+          pm.k.emplace_back(rotation + i, rotation + j, k(i, j));
   }
   for (const Mass& mass : model.masses) {
     const DofIndex dofs[1] = {base(mass.node)};

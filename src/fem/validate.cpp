@@ -27,6 +27,9 @@ constexpr double kParallelSineTolerance = 1e-6;
 constexpr double kOrthonormalTolerance = 1e-6;
 /// Relative tolerance for the symmetry and semi-definiteness of an inertia tensor.
 constexpr double kInertiaTolerance = 1e-9;
+/// A body pre-load's resultant (and moment / model size) as a share of its forces' sum: round-off
+/// of forces summed from members' directions, far below a load that was meant.
+constexpr double kPreloadBalanceTolerance = 1e-9;
 
 const char* const kStiffnessNames[kDofsPerNode] = {"kx", "ky", "kz", "krx", "kry", "krz"};
 const char* const kDampingNames[kDofsPerNode] = {"cx", "cy", "cz", "crx", "cry", "crz"};
@@ -56,6 +59,10 @@ class Validator {
     checkRigidJointCycles();
     for (std::size_t i = 0; i < model_.fixed.size(); ++i)
       checkFixed(i);
+    for (std::size_t i = 0; i < model_.ties.size(); ++i)
+      checkTie(i);
+    for (std::size_t i = 0; i < model_.body_preloads.size(); ++i)
+      checkBodyPreload(i);
     for (const auto& [name, dofs] : model_.dof_sets)
       checkSet(name, dofs);
   }
@@ -175,6 +182,7 @@ class Validator {
     if (model_.findSection(beam.section) == nullptr) {
       fail(label, "section '" + beam.section + "' does not exist");
     }
+    requireFinite(label, beam.axial_force, "axial force");
     const Vector3 axis = model_.nodes[node_index_.at(beam.n2)].position -
                          model_.nodes[node_index_.at(beam.n1)].position;
     if (axis.norm() <= kCoincidentTolerance * scale_) {
@@ -224,6 +232,50 @@ class Validator {
     }
     if (spring.frame.determinant() < 0.0) {
       fail(label, "frame is left-handed (z must equal x cross y)");
+    }
+  }
+
+  void checkTie(std::size_t i) const {
+    const Tie& tie = model_.ties[i];
+    const std::string label = item("ties", i);
+    requireNode(label, tie.n1);
+    requireNode(label, tie.n2);
+    requireFinite(label, tie.force, "force");
+    const Vector3 d = model_.nodes[node_index_.at(tie.n2)].position -
+                      model_.nodes[node_index_.at(tie.n1)].position;
+    // Its stiffness is F / L: a tie needs a length to turn through.
+    if (d.norm() <= kCoincidentTolerance * scale_) {
+      fail(label, "zero-length tie: nodes " + std::to_string(tie.n1) + " and " +
+                      std::to_string(tie.n2) + " coincide");
+    }
+  }
+
+  void checkBodyPreload(std::size_t i) const {
+    const BodyPreload& body = model_.body_preloads[i];
+    const std::string label = item("body_preloads", i);
+    requireNode(label, body.node);
+    if (body.points.size() != body.forces.size()) {
+      fail(label, std::to_string(body.points.size()) + " points but " +
+                      std::to_string(body.forces.size()) + " forces");
+    }
+    Vector3 force = Vector3::Zero(), moment = Vector3::Zero();
+    double total = 0.0;
+    const Vector3& centre = model_.nodes[node_index_.at(body.node)].position;
+    for (std::size_t k = 0; k < body.points.size(); ++k) {
+      if (!body.points[k].allFinite() || !body.forces[k].allFinite()) {
+        fail(label, "non-finite point or force " + std::to_string(k));
+      }
+      force += body.forces[k];
+      moment += (body.points[k] - centre).cross(body.forces[k]);
+      total += body.forces[k].norm();
+    }
+    // Its stiffness is that of a self-equilibrated load (the body's internal stress); a resultant
+    // would be a load on the model, which a pre-load is not.
+    if (force.norm() > kPreloadBalanceTolerance * total ||
+        moment.norm() > kPreloadBalanceTolerance * total * scale_) {
+      fail(label, "the forces are not self-equilibrated (resultant " + brief(force.norm()) +
+                      " N, moment " + brief(moment.norm()) + " N m, of " + brief(total) +
+                      " N in all)");
     }
   }
 

@@ -149,7 +149,7 @@ fem::Section readSection(const YamlValue& value) {
 }
 
 fem::Beam readBeam(const YamlValue& value) {
-  value.expectMap({"nodes", "material", "section", "orientation"});
+  value.expectMap({"nodes", "material", "section", "orientation", "axial_force"});
   fem::Beam beam;
   const std::vector<YamlValue> nodes = value["nodes"].elements(2, "two node ids [n1, n2]");
   beam.n1 = readNodeId(nodes[0]);
@@ -158,6 +158,8 @@ fem::Beam readBeam(const YamlValue& value) {
   beam.section = value["section"].asString();
   if (const auto orientation = value.find("orientation"))
     beam.orientation = orientation->asVector3();
+  if (const auto force = value.find("axial_force"))
+    beam.axial_force = force->asNumber();
   return beam;
 }
 
@@ -265,6 +267,31 @@ fem::RigidJoint readRigidJoint(const YamlValue& value) {
   return joint;
 }
 
+fem::Tie readTie(const YamlValue& value) {
+  value.expectMap({"name", "nodes", "force"});
+  fem::Tie tie;
+  if (const auto name = value.find("name"))
+    tie.name = name->asString();
+  const std::vector<YamlValue> nodes = value["nodes"].elements(2, "two node ids [n1, n2]");
+  tie.n1 = readNodeId(nodes[0]);
+  tie.n2 = readNodeId(nodes[1]);
+  tie.force = value["force"].asNumber();
+  return tie;
+}
+
+fem::BodyPreload readBodyPreload(const YamlValue& value) {
+  value.expectMap({"name", "node", "points", "forces"});
+  fem::BodyPreload body;
+  if (const auto name = value.find("name"))
+    body.name = name->asString();
+  body.node = readNodeId(value["node"]);
+  for (const YamlValue& point : value["points"].elements("a list of points [x, y, z]"))
+    body.points.push_back(point.asVector3());
+  for (const YamlValue& force : value["forces"].elements("a list of forces [fx, fy, fz]"))
+    body.forces.push_back(force.asVector3());
+  return body;
+}
+
 fem::FixedDofs readFixed(const YamlValue& value) {
   value.expectMap({"node", "dofs"});
   fem::FixedDofs fixed;
@@ -285,7 +312,7 @@ std::vector<fem::DofRef> readSet(const YamlValue& value) {
 
 fem::Model readModel(const YamlValue& root) {
   root.expectMap({"name", "gravity", "nodes", "materials", "sections", "beams", "springs", "masses",
-                  "rigid_joints", "fixed", "sets"});
+                  "rigid_joints", "fixed", "ties", "body_preloads", "sets"});
   fem::Model model;
   if (const auto name = root.find("name"))
     model.name = name->asString();
@@ -323,6 +350,13 @@ fem::Model readModel(const YamlValue& root) {
   }
   for (const YamlValue& item : optionalList(root, "fixed", "a list of fixed DOFs")) {
     model.fixed.push_back(readFixed(item));
+  }
+  for (const YamlValue& item : optionalList(root, "ties", "a list of pre-loaded ties")) {
+    model.ties.push_back(readTie(item));
+  }
+  for (const YamlValue& item :
+       optionalList(root, "body_preloads", "a list of rigid bodies' pre-loads")) {
+    model.body_preloads.push_back(readBodyPreload(item));
   }
   if (const auto sets = root.find("sets"); sets && !sets->isNull()) {
     for (const auto& [name, set] : sets->entries())

@@ -141,6 +141,10 @@ void writeItems(YAML::Emitter& out, const fem::Model& model) {
       name(out, beam.section);
       out << YAML::Key << "orientation" << YAML::Value;
       vector(out, beam.orientation);
+      if (beam.axial_force != 0.0) {
+        out << YAML::Key << "axial_force" << YAML::Value;
+        number(out, beam.axial_force);
+      }
       out << YAML::EndMap;
     }
     out << YAML::EndSeq;
@@ -222,6 +226,42 @@ void writeItems(YAML::Emitter& out, const fem::Model& model) {
       out << YAML::Flow << YAML::BeginMap << YAML::Key << "node" << YAML::Value << fixed.node
           << YAML::Key << "dofs" << YAML::Value << YAML::DoubleQuoted << dofDigits(fixed.dofs)
           << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+
+  if (!model.ties.empty()) {
+    out << YAML::Key << "ties" << YAML::Value << YAML::BeginSeq;
+    for (const fem::Tie& tie : model.ties) {
+      out << YAML::Flow << YAML::BeginMap;
+      if (!tie.name.empty()) {
+        out << YAML::Key << "name" << YAML::Value;
+        name(out, tie.name);
+      }
+      out << YAML::Key << "nodes" << YAML::Value << YAML::Flow << YAML::BeginSeq << tie.n1 << tie.n2
+          << YAML::EndSeq << YAML::Key << "force" << YAML::Value;
+      number(out, tie.force);
+      out << YAML::EndMap;
+    }
+    out << YAML::EndSeq;
+  }
+
+  if (!model.body_preloads.empty()) {
+    out << YAML::Key << "body_preloads" << YAML::Value << YAML::BeginSeq;
+    for (const fem::BodyPreload& body : model.body_preloads) {
+      out << YAML::BeginMap;
+      if (!body.name.empty()) {
+        out << YAML::Key << "name" << YAML::Value;
+        name(out, body.name);
+      }
+      out << YAML::Key << "node" << YAML::Value << body.node;
+      out << YAML::Key << "points" << YAML::Value << YAML::BeginSeq;
+      for (const Vector3& point : body.points)
+        vector(out, point);
+      out << YAML::EndSeq << YAML::Key << "forces" << YAML::Value << YAML::BeginSeq;
+      for (const Vector3& force : body.forces)
+        vector(out, force);
+      out << YAML::EndSeq << YAML::EndMap;
     }
     out << YAML::EndSeq;
   }

@@ -17,6 +17,7 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 #include "vehicle_analysis.h"
 #include "wheel_rate_report.h"
@@ -194,7 +195,8 @@ void runVehicle(const ModesOptions& opt) {
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("active_dofs", static_cast<long long>(a.system.size()))
-        .field("mass_kg", a.vehicle.model.totalMass());
+        .field("mass_kg", a.vehicle.model.totalMass())
+        .field("track_tension_n", vehicle::modelTrackTension(description, variant));
     writeMassBreakdown(json, m);
     json.field("frequencies_hz", a.modes.frequencies_hz)
         .field("mode_types", types)
@@ -217,6 +219,8 @@ void runVehicle(const ModesOptions& opt) {
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
              a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
   std::cout << massBreakdownText(m) << "\n";
+  if (const std::string tension = vehicle::trackTensionText(description, variant); !tension.empty())
+    std::cout << tension << "\n";
   // The bonded model's (every contact pulls as well as pushes): the state the dynamics start
   // from; tvd statics' default lets the contacts only push, which can differ much (a light chain).
   std::cout << "\nstatic equilibrium under gravity (the linear model's, every contact bonded; "

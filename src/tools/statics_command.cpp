@@ -20,6 +20,7 @@
 #include "tracked_vehicle_dynamics/vehicle/contact_statics.h"
 #include "tracked_vehicle_dynamics/vehicle/ground_pressure.h"
 #include "tracked_vehicle_dynamics/vehicle/static_summary.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 #include "vehicle_analysis.h"
 #include "wheel_rate_report.h"
@@ -143,6 +144,7 @@ void run(const StaticsOptions& opt) {
         .field("variant", vehicle::variantName(variant))
         .field("contact", opt.contact)
         .field("forward_acceleration_m_s2", opt.accel)
+        .field("track_tension_n", vehicle::modelTrackTension(description, variant))
         .field("iterations", contact.iterations)
         .field("lifted_pads", pads_lifted)
         .field("lifted_wheels", wheels_lifted)
@@ -270,6 +272,8 @@ void run(const StaticsOptions& opt) {
     }
     std::cout << "\n";
   }
+  if (const std::string tension = vehicle::trackTensionText(description, variant); !tension.empty())
+    std::cout << tension << "\n";
   if (opt.accel != 0.0)
     std::cout << "steady forward acceleration " << std::setprecision(3) << opt.accel << " m/s^2 ("
               << std::setprecision(3) << std::abs(opt.accel) / kStandardGravity << " g, "

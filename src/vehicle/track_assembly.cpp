@@ -115,10 +115,9 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
   // Link: transverse beam and the fore/aft members to the pins; pins across the track.
   for (int i = 0; i < 4; ++i)
     model.beams.push_back({n.link[i], n.link[i + 1], kLinkSteel, kBeamSection, e3});
-  const int member_link[3] = {0, 2, 4};
   for (int i = 0; i < 3; ++i) {
-    model.beams.push_back({n.rear_pin[i], n.link[member_link[i]], kLinkSteel, kMemberSection, e3});
-    model.beams.push_back({n.link[member_link[i]], n.front_pin[i], kLinkSteel, kMemberSection, e3});
+    model.beams.push_back({n.rear_pin[i], n.laneLink(i), kLinkSteel, kMemberSection, e3});
+    model.beams.push_back({n.laneLink(i), n.front_pin[i], kLinkSteel, kMemberSection, e3});
   }
   for (int i = 0; i < 2; ++i) {
     model.beams.push_back({n.front_pin[i], n.front_pin[i + 1], kSteel, kPinSection, e3});

@@ -26,9 +26,10 @@ constexpr double kLengthTolerance = 1e-3;
 /// No value of a vehicle comes near 1e15 in SI (the stiffest, k_w, is 2e10 N/m); beyond it a value
 /// is a typo, and 1e300 kg once overflowed the statics into -4.8e293 m of sag.
 constexpr double kImplausible = 1e15;
-/// The one optional scalar of the description (suspension.guide_stiffness), outside the table of
-/// required fields.
+/// The optional scalars of the description (suspension.guide_stiffness,
+/// track_assembly.static_tension), outside the table of required fields.
 constexpr const char* kGuideStiffnessKey = "guide_stiffness";
+constexpr const char* kStaticTensionKey = "static_tension";
 
 enum class Kind { Real, Integer, RealList, IntegerList, Angle };
 // PoissonRatio: (-1, 0.5], outside which an isotropic material has a negative or infinite bulk
@@ -321,6 +322,12 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
               std::string("suspension.") + kGuideStiffnessKey,
               "value " + brief(x) + " is out of range or not finite");
   }
+  if (d.track_assembly.static_tension) {
+    const double x = *d.track_assembly.static_tension;
+    c.require(std::isfinite(x) && x >= 0.0 && x <= kImplausible,  // < 0: a chain pushed, buckling
+              std::string("track_assembly.") + kStaticTensionKey,
+              "value " + brief(x) + " N is out of range or not finite (a tension: 0 or more)");
+  }
   const auto& t = d.track_assembly;
   const auto& g = d.running_gear;
   c.require(t.ground_count <= t.count, "track_assembly.ground_count",
@@ -577,12 +584,15 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
     const bool damping = std::string(section_name) == "damping";
     const bool ties = std::string(section_name) == "ties";
     const bool suspension = std::string(section_name) == "suspension";
+    const bool track = std::string(section_name) == "track_assembly";
     if (damping)
       keys.insert("model");
     if (ties)
       keys.insert("road_input_station");
     if (suspension)
       keys.insert(kGuideStiffnessKey);
+    if (track)
+      keys.insert(kStaticTensionKey);
     expectKeys(section, keys);
     for (const Field& f : fields)
       if (std::string(f.section) == section_name)
@@ -594,6 +604,14 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
                 Field{"suspension", kGuideStiffnessKey, "N/m", Kind::Real, Range::Positive, &value},
                 d.sources);
       d.suspension.guide_stiffness = value;
+    }
+    if (track && section.has(kStaticTensionKey)) {
+      double value = 0.0;
+      readField(
+          section,
+          Field{"track_assembly", kStaticTensionKey, "N", Kind::Real, Range::NonNegative, &value},
+          d.sources);
+      d.track_assembly.static_tension = value;
     }
     if (damping)
       d.damping.model = readChoice<DampingModel>(
@@ -676,6 +694,9 @@ std::string canonicalDescription(const VehicleDescription& d) {
   // Only when given: a description without it hashes as before the key existed.
   if (d.suspension.guide_stiffness)
     out << "suspension." << kGuideStiffnessKey << "=" << format(*d.suspension.guide_stiffness)
+        << "\n";
+  if (d.track_assembly.static_tension)
+    out << "track_assembly." << kStaticTensionKey << "=" << format(*d.track_assembly.static_tension)
         << "\n";
   out << "damping.model=" << dampingModelName(d.damping.model) << "\n";
   out << "ties.road_input_station=" << roadInputStationName(d.ties.road_input_station) << "\n";

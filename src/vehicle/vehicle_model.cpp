@@ -7,6 +7,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 
 namespace tracked_vehicle_dynamics {
 namespace vehicle {
@@ -398,6 +399,12 @@ class Builder {
           model().rigid_joints.push_back(pin);
         }
       }
+      // The tensioner's pre-load (track_assembly.static_tension): a pre-stress of the loop.
+      ChainLoop loop;
+      loop.side = sideName(side);
+      for (int k = 0; k < t.count; ++k)
+        loop.assemblies.push_back(layout().assemblies[index[k]].nodes);
+      addChainTension(model(), loop, layout().hull, t.static_tension.value_or(0.0));
       // Road wheels on the ground assembly nearest below them.
       for (WheelStation& st : layout().wheels) {
         if (st.side != side)

@@ -303,6 +303,37 @@ class TvdCliTest(unittest.TestCase):
         bounce = d["frequencies_hz"][d["mode_types"].index("bounce")]
         self.assertAlmostEqual(bounce / d["wheel_rate_estimate"]["bounce_hz"], 1.0, delta=0.1)
 
+    def test_static_track_tension_is_reported_and_stiffens_the_top_run(self):
+        """track_assembly.static_tension: the tracked model carries it (JSON track_tension_n, a
+        text line in modes and statics), its free top run's first mode rises as a taut string
+        (f_T^2 - f_0^2 = T / (4 mu L^2), within the 1.0-1.2 the core test measures); the
+        un-tracked variant says it is not used; a negative tension is refused by key."""
+        anchor = 'track_assembly:\n'
+        tension = 20000.0
+        tensioned = self.vehicle_with(
+            "tensioned.yaml", anchor,
+            anchor + f'  static_tension: {{value: {tension}, unit: N, source: "tensioner"}}\n')
+        bare = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "tracked", "--count", "2")
+        tight = self.tvd_json("modes", "--vehicle", tensioned, "--variant", "tracked", "--count", "2")
+        self.assertEqual((bare["track_tension_n"], tight["track_tension_n"]), (0.0, tension))
+        mu, span = 27.0 / 0.1615, 6.32  # the bundled chain's mass per metre; its top run [m]
+        for f0, f in zip(bare["frequencies_hz"], tight["frequencies_hz"]):
+            rise = (f * f - f0 * f0) / (tension / (4 * mu * span * span))
+            self.assertTrue(1.0 < rise < 1.2, (f0, f, rise))
+        for command, extra in (("modes", ("--count", "1")), ("statics", ())):
+            out = self.tvd(command, "--vehicle", tensioned, "--variant", "tracked", *extra).stdout
+            self.assertIn("track tension 20000 N per chain, a pre-stress", out)
+            out = self.tvd(command, "--vehicle", tensioned, "--variant", "untracked", *extra).stdout
+            self.assertIn("track tension (track_assembly.static_tension 20000 N) not used: the "
+                          "un-tracked variant has no chain loop", out)
+        self.assertEqual(self.tvd_json("statics", "--vehicle", tensioned,
+                                       "--variant", "untracked")["track_tension_n"], 0.0)
+        pushed = self.vehicle_with(
+            "pushed.yaml", anchor,
+            anchor + '  static_tension: {value: -1000, unit: N, source: "typo"}\n')
+        r = self.tvd("modes", "--vehicle", pushed, "--variant", "tracked", status=2)
+        self.assertIn("track_assembly.static_tension", r.stderr)
+
     def test_statics_loads_match_modes_and_files(self):
         """tvd statics: the same equilibrium as `modes`, wheel and ground loads that balance the
         weight, the per-assembly CSV/.mat equal to the JSON, and the closed-form NGP."""

@@ -52,6 +52,32 @@ struct Beam {
   std::string material;
   std::string section;
   Vector3 orientation = Vector3::UnitZ();  ///< a vector not parallel to the beam axis
+  /// Axial force the beam carries at rest [N], tension > 0 (e.g. a tensioned track chain). Its
+  /// only effect on the linear model is the beam's geometric stiffness (geometric_stiffness.h).
+  double axial_force = 0.0;
+};
+
+/// A pre-loaded pin-ended link without elastic stiffness: a force F along n1 -> n2 (tension > 0)
+/// carried at rest, e.g. through a rigid joint that holds two nodes apart. It adds only its
+/// geometric stiffness (F / L)(I - e e^T) on the nodes' relative translation.
+struct Tie {
+  NodeId n1 = 0;
+  NodeId n2 = 0;
+  double force = 0.0;  ///< [N]
+  std::string name;
+};
+
+/// The pre-load a rigid body carries at rest: forces f_i applied to it at points x_i by pre-loaded
+/// members (beams' axial forces, ties), together self-equilibrated (sum f_i = 0, sum x_i x f_i =
+/// 0). Turning the body turns them with it, so their geometric stiffness acts on the body's
+/// rotation at `node`: K = (sum f.r) I - (1/2) sum (f r^T + r f^T), r = x_i - node
+/// (geometric_stiffness.h). Without it a tensioned loop held by the body would resist the whole
+/// model's rigid rotation.
+struct BodyPreload {
+  NodeId node = 0;
+  std::vector<Vector3> points;  ///< [m], global frame
+  std::vector<Vector3> forces;  ///< [N], applied to the body
+  std::string name;
 };
 
 /// Six uncoupled springs and viscous dampers along/about the axes of a local frame, between two
@@ -112,6 +138,8 @@ struct Model {
   std::vector<Mass> masses;
   std::vector<RigidJoint> rigid_joints;
   std::vector<FixedDofs> fixed;
+  std::vector<Tie> ties;
+  std::vector<BodyPreload> body_preloads;
   /// Named DOF sets (inputs, outputs, interface DOFs, ...).
   std::map<std::string, std::vector<DofRef>> dof_sets;
   /// Gravity acceleration vector [m/s^2] used for the gravity load.

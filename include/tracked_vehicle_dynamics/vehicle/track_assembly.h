@@ -54,6 +54,9 @@ struct TrackAssemblyNodes {
   std::array<NodeId, 6> tops{};       ///< pad top nodes (rigid with the link)
 
   NodeId linkCentre() const { return link[2]; }
+  /// The link node each lane's fore/aft members meet at: lane i runs rear_pin[i] ->
+  /// link[laneLink(i)] -> front_pin[i] (the chain's tension path).
+  NodeId laneLink(int lane) const { return link[2 * lane]; }
 };
 
 /// Stiffness of an assembly measured on its FE model with the soles held (the paper's tests):

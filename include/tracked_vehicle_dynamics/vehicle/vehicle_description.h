@@ -112,6 +112,10 @@ struct TrackAssemblyDescription {
   double link_beam_bending_inertia = 4.0e-7;   ///< about the tangential axis (pads' load) [m^4]
   double link_beam_inplane_inertia = 4.0e-6;   ///< about the normal axis [m^4]
   double link_beam_torsion_constant = 3.0e-7;  ///< [m^4]
+  /// Static track tension, the tensioner's pre-load in each chain [N]. Optional in a description
+  /// file (track_assembly.static_tension); unset or 0, the chain is a free-length beam loop (the
+  /// paper's model). The tracked variant carries it as a pre-stress (vehicle/track_tension.h).
+  std::optional<double> static_tension;
 };
 
 /// The rear drive sprocket; rigid with the hull (held by the final drive and brakes).
