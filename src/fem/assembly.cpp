@@ -1,5 +1,7 @@
 #include "tracked_vehicle_dynamics/fem/system.h"
 
+#include <algorithm>
+
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/beam_element.h"
 #include "tracked_vehicle_dynamics/fem/geometric_stiffness.h"
@@ -127,6 +129,9 @@ System assemble(const Model& model, const AssemblyOptions& options) {
   const SparseMatrix cu_phys = fromTriplets(n_phys, n_inputs, pm.cu);
 
   System sys;
+  sys.prestressed = !model.ties.empty() || !model.body_preloads.empty() ||
+                    std::any_of(model.beams.begin(), model.beams.end(),
+                                [](const Beam& b) { return b.axial_force != 0.0; });
   sys.dofs = DofMap::build(model);
   if (options.drop_null_dofs) {
     // An independent DOF whose column is empty in both T^T K T and T^T M T is decoupled from

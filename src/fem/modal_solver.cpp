@@ -424,6 +424,27 @@ std::string missedModesWarning(const ModalBasis& basis) {
          "deflated runs could not recover: these are not the lowest modes; ask for more modes";
 }
 
+std::string unstableModesWarning(const ModalBasis& basis) {
+  if (basis.count() == 0)
+    return "";
+  // Rigid-body modes come out as +-1e-10 of the elastic eigenvalues; an unstable one is of
+  // their order.
+  constexpr double kRoundOff = 1e-8;
+  const double threshold = -kRoundOff * basis.eigenvalues.cwiseAbs().maxCoeff();
+  int negative = 0;
+  for (Eigen::Index i = 0; i < basis.count(); ++i)
+    negative += basis.eigenvalues(i) < threshold;
+  if (negative == 0)
+    return "";
+  const double lowest = basis.eigenvalues.minCoeff();
+  return std::to_string(negative) + (negative == 1 ? " mode has" : " modes have") +
+         " omega^2 < 0 (the lowest " + brief(lowest) + " rad^2/s^2: a motion growing as exp(" +
+         brief(std::sqrt(-lowest)) +
+         " t), t in s), shown as 0 Hz: the structure is unstable, its stiffness indefinite; a "
+         "compressive pre-load beyond buckling (a beam's axial_force or a tie's force below 0, "
+         "a rigid body's pre-load)";
+}
+
 ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass) {
   if (stiffness.rows() != stiffness.cols() || mass.rows() != mass.cols() ||
       stiffness.rows() != mass.rows())

@@ -25,7 +25,12 @@ StaticResult solveStatic(const System& system, const Vector& load) {
   SparseCholesky chol;
   if (!chol.factorize(system.stiffness) || chol.rcond() < kSingularRcond)
     throw SolverError("stiffness matrix is singular: free motion: " + describeFreeMotions(system) +
-                      " (add supports or springs that restrain it)");
+                      " (add supports or springs that restrain it" +
+                      (system.prestressed
+                           ? std::string("; or the model's pre-loads make it unstable: a "
+                                         "compression beyond buckling turns K indefinite")
+                           : std::string()) +
+                      ")");
   StaticResult result;
   result.displacement = chol.solve(load);
   const double fnorm = load.norm();

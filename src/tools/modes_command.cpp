@@ -128,9 +128,9 @@ void runModel(const ModesOptions& opt) {
   request.count = opt.count;
   request.max_frequency_hz = opt.max_frequency_hz;
   const fem::ModalBasis basis = fem::solveModes(sys.stiffness, sys.mass, request);
-  const std::string missed = fem::missedModesWarning(basis);
-  if (!missed.empty())
-    std::cerr << "tvd: warning: " << missed << "\n";
+  for (const std::string& w : {fem::missedModesWarning(basis), fem::unstableModesWarning(basis)})
+    if (!w.empty())
+      std::cerr << "tvd: warning: " << w << "\n";
   const GravitySag sag = gravitySag(sys);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;

@@ -308,11 +308,11 @@ void run(const StaticsOptions& opt) {
     std::cout << ": the chain lies between them and the ground with its own weight ("
               << model.layout.mass.track_assemblies * model.model.gravity.norm() / 1e3
               << " kN),\n  and the sprockets, idlers and rollers "
-              // Up (the loop's tension at rest) or, on a bilateral ground whose wheels pull, down.
+              // Up (the loop hanging on them) or, on a bilateral ground whose wheels pull, down.
               << (s.chain_wheel_vertical >= 0.0 ? "push it up" : "pull it down") << " with "
               << std::abs(s.chain_wheel_vertical) / 1e3 << " kN, with which it "
               << (s.chain_wheel_vertical >= 0.0 ? "pushes the hull down" : "pulls the hull up")
-              << (s.chain_wheel_vertical >= 0.0 ? " (the loop's tension at rest)"
+              << (s.chain_wheel_vertical >= 0.0 ? " (the loop hanging on them under gravity)"
                                                 : " (the bonded links pulling on them)");
   else
     std::cout << ": the track assemblies under them add their own weight ("

@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 
 namespace tracked_vehicle_dynamics {
@@ -51,6 +53,16 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
   const std::string missed = fem::missedModesWarning(a.modes);
   if (!missed.empty())
     std::cerr << "tvd: warning: " << missed << "\n";
+  // A vehicle's only compressive pre-load is the hull's, which a track tension far beyond its
+  // suspension's hold turns into a pitch instability.
+  const std::string unstable = fem::unstableModesWarning(a.modes);
+  if (!unstable.empty()) {
+    const double tension = vehicle::modelTrackTension(description, variant);
+    std::cerr << "tvd: warning: " << unstable
+              << (tension > 0.0 ? "; here track_assembly.static_tension (" + brief(tension) + " N)"
+                                : std::string())
+              << "\n";
+  }
   a.classes = vehicle::classifyModes(a.vehicle, a.system, a.modes);
   const std::string stiff =
       vehicle::bounceWarning(description, variant, a.classes, a.modes.frequencies_hz);

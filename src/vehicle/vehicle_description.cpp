@@ -787,6 +787,21 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
                               : "less than 5 % of its smallest dimension " + brief(smallest)) +
                          " m: the mass or the inertia in another unit (t, t*m^2)?");
   }
+  // The tensioner's pre-load against the vehicle's weight: beyond half of it, a value meant in
+  // another unit rather than a track. The model stays linear either way, but far beyond the
+  // weight the hull's share of the pre-stress outweighs its suspension (an unstable pitch).
+  if (d.track_assembly.static_tension) {
+    const double weight =
+        kStandardGravity *
+        (h.mass + unsprung + 2.0 * d.track_assembly.count * d.track_assembly.mass +
+         2.0 * (d.sprocket.mass + d.idler.mass) +
+         2.0 * static_cast<double>(d.return_rollers.x.size()) * d.return_rollers.mass);
+    if (*d.track_assembly.static_tension > 0.5 * weight)
+      warnings.push_back(
+          "track_assembly.static_tension: " + brief(*d.track_assembly.static_tension) +
+          " N in each chain is more than half the vehicle's weight (" + brief(weight) +
+          " N): a value in another unit?");
+  }
   return warnings;
 }
 

@@ -42,8 +42,13 @@ std::string carriersText(const VehicleDescription& d, Variant variant) {
   if (variant == Variant::Untracked)
     return "it is stiffened by " + ties +
            "; doc/vehicle_model.md, \"The un-tracked bounce against a hand estimate\"";
+  const std::string tension =
+      d.track_assembly.static_tension && *d.track_assembly.static_tension > 0.0
+          ? ", the chain's tension (track_assembly.static_tension " +
+                brief(*d.track_assembly.static_tension) + " N: a taut loop holds the hull up)"
+          : std::string();
   return "the chain's bending (track_assembly.link_member_bending_inertia " +
-         brief(d.track_assembly.link_member_bending_inertia) + " m^4) or " + ties +
+         brief(d.track_assembly.link_member_bending_inertia) + " m^4)" + tension + " or " + ties +
          " carry the hull; values fitted to the paper's 55 t vehicle rarely suit another: fit "
          "them to yours (doc/vehicle_model.md, \"Tuning\")";
 }

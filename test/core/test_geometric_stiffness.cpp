@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "expect_input_error.h"
+#include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/geometric_stiffness.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/model_yaml.h"
 
@@ -17,6 +19,7 @@ namespace tvd = tracked_vehicle_dynamics;
 using tvd::kPi;
 using tvd::Matrix;
 using tvd::Matrix3;
+using tvd::Vector;
 using tvd::Vector3;
 using tvd::fem::Model;
 using Vector12 = Eigen::Matrix<double, 12, 1>;
@@ -75,6 +78,34 @@ TEST(GeometricStiffness, HalfTheEulerLoadHalvesThePinnedBeamsFirstEigenvalue) {
   EXPECT_NEAR(firstEigenvalue(simplySupported(40, -0.5 * euler)) /
                   firstEigenvalue(simplySupported(40, 0.0)),
               0.5, kBeamTolerance);
+}
+
+TEST(GeometricStiffness, BeyondTheEulerLoadTheModesAndTheStaticsSayUnstable) {
+  const double euler = kPi * kPi * kE * kIz / (kLength * kLength);
+  auto dense = [](const Model& model) {
+    const tvd::fem::System s = tvd::fem::assemble(model);
+    return tvd::fem::solveModesDense(Matrix(s.stiffness), Matrix(s.mass));
+  };
+  EXPECT_EQ(tvd::fem::unstableModesWarning(dense(simplySupported(20, -0.5 * euler))), "");
+  // At twice the weak axis's Euler load omega_1^2 = -omega_0^2, one mode (the strong axis, 4
+  // times stiffer, and the weak axis's second mode, 16 - 8 > 0, hold).
+  const tvd::fem::ModalBasis buckled = dense(simplySupported(20, -2.0 * euler));
+  EXPECT_NEAR(buckled.eigenvalues(0) / -pinnedPinnedEigenvalue(0.0), 1.0, 1e-3);
+  EXPECT_EQ(buckled.frequencies_hz(0), 0.0);
+  const std::string warning = tvd::fem::unstableModesWarning(buckled);
+  EXPECT_NE(warning.find("1 mode has omega^2 < 0"), std::string::npos) << warning;
+  EXPECT_NE(warning.find("compressive pre-load beyond buckling"), std::string::npos) << warning;
+  const Model model = simplySupported(20, -2.0 * euler);
+  const tvd::fem::System s = tvd::fem::assemble(model);
+  EXPECT_TRUE(s.prestressed);
+  try {
+    tvd::fem::solveStatic(s, Vector::Ones(s.size()));
+    ADD_FAILURE() << "an indefinite K was factorised";
+  } catch (const tvd::SolverError& e) {
+    EXPECT_NE(std::string(e.what()).find("pre-loads make it unstable"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(tvd::fem::assemble(simplySupported(20, 0.0)).prestressed);
 }
 
 TEST(GeometricStiffness, BeamMatrixIsSymmetricAndFreeOfRigidMotionButTheTurn) {

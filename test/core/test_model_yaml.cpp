@@ -494,7 +494,7 @@ TEST_F(ModelYamlTest, RejectsUnknownAndRepeatedKeys) {
                   {"beam: unknown key (allowed keys: name, gravity, nodes,", "(line 9)"});
   expectLoadError("item_typo.yaml", replaced("material: steel", "materail: steel"),
                   {"beams[0].materail: unknown key (allowed keys: nodes, material, section, "
-                   "orientation)"});
+                   "orientation, axial_force)"});
   expectLoadError("spring_typo.yaml", replaced("k: [1, 1, 1, 0, 0, 0]", "kz: 1, kzz: 2"),
                   {"springs[0].kzz: unknown key"});
   expectLoadError("repeated_key.yaml", replaced("rho: 7850", "rho: 7850, E: 1"),

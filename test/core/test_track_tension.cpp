@@ -104,6 +104,18 @@ TEST(TrackTension, TheFreeTopRunsFirstModeRisesAsATautString) {
   }
 }
 
+TEST(TrackTension, ATensionBeyondHalfTheWeightIsQuestioned) {
+  auto questioned = [](double tension) {
+    for (const std::string& w : veh::descriptionWarnings(tensioned(tension)))
+      if (w.find("track_assembly.static_tension") != std::string::npos &&
+          w.find("more than half the vehicle's weight") != std::string::npos)
+        return true;
+    return false;
+  };
+  EXPECT_FALSE(questioned(60e3));  // the paper vehicle weighs 546 kN
+  EXPECT_TRUE(questioned(20e6));   // 20 kN typed in mN
+}
+
 TEST(TrackTension, TheUntrackedVehicleHasNoLoopToTension) {
   const tvd::fem::System loaded = assembled(tensioned(kTension), veh::Variant::Untracked);
   const tvd::fem::System bare = assembled(veh::VehicleDescription{}, veh::Variant::Untracked);

@@ -18,7 +18,8 @@ namespace fem {
 /// Gallagher & Ziemian, Matrix Structural Analysis, 2nd ed., eq. 9.19):
 ///   bending  N / L [6/5, L/10, -6/5, L/10; L/10, 2L^2/15, -L/10, -L^2/30; ...] in each plane,
 ///   torsion  N I_p / (A L) [1, -1; -1, 1], I_p = I_y + I_z (the Wagner term),
-/// no axial term (a member's axial tangent stiffness is its EA / L).
+/// and without McGuire's axial term N / L [1, -1; -1, 1] (beside EA / L it is round-off; the tie
+/// has none either, so a rigid turn costs both the same N L).
 Matrix12 beamLocalGeometricStiffness(const Section& section, double length, double axial_force);
 
 /// The same in global coordinates, T^T k_G T (DOF order u1, theta1, u2, theta2).

@@ -48,6 +48,11 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
 /// sentence for the user saying how many are missing below which frequency.
 std::string missedModesWarning(const ModalBasis& basis);
 
+/// "" when every eigenvalue of `basis` is >= 0 (to round-off: -1e-8 of the largest |omega^2|),
+/// else a sentence saying how many are negative and the lowest: the structure is unstable (a
+/// compressive pre-load beyond buckling), and those modes' frequencies read 0 Hz.
+std::string unstableModesWarning(const ModalBasis& basis);
+
 /// Dense generalised eigenproblem of all modes (small systems, references in tests).
 ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass);
 

@@ -23,6 +23,9 @@ struct System {
   /// mass feels -m a along x, so the load on the structure is a(t) f_a.
   Vector travel_load;
   DofMap dofs;
+  /// K holds the geometric stiffness of pre-loads (Model::ties, body_preloads, beams' axial
+  /// forces): a compressive one can make it singular or indefinite (buckling).
+  bool prestressed = false;
   /// Ground springs as road inputs: the force on the structure is K_u u + C_u u' where u holds
   /// the vertical ground displacement under each grounded spring in `ground_inputs` order.
   SparseMatrix input_stiffness;       ///< K_u [n x n_inputs]
