@@ -13,6 +13,7 @@
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/ros/online_names.h"
 #include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
@@ -103,6 +104,9 @@ void VehicleDynamicsNode::loadVehicle() {
     // The model's sag at rest against the hull on its torsion bars alone (as tvd statics and
     // modes say it): a chain or locked wheels carrying the hull, the usual sign of values copied
     // from the paper's vehicle onto a light one, said to integrators who never run tvd.
+    if (const std::string tension = vehicle::trackTensionText(description, params_.variant);
+        !tension.empty())
+      ROS_INFO("%s: %s: %s", nodeName(), params_.vehicle.c_str(), tension.c_str());
     const Vector6& rest = vehicle_->staticHullDisplacement();  // ux, uy, uz, rx, ry, rz
     for (const std::string& w :
          vehicle::restWarnings(rest(2), rest(4), description, params_.variant))

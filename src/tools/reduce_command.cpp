@@ -12,6 +12,7 @@
 #include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
@@ -70,6 +71,7 @@ void run(const ReduceOptions& opt) {
         .field("vehicle", description.name)
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
+        .field("track_tension_n", vehicle::modelTrackTension(description, variant))
         .field("full_dofs", static_cast<long long>(report.full_dofs))
         .field("interface_dofs", static_cast<long long>(report.interface_dofs))
         .field("input_dofs", static_cast<long long>(model.masterCount() - report.interface_dofs -
@@ -131,8 +133,10 @@ void run(const ReduceOptions& opt) {
   std::cout << description.name << " (" << vehicle::variantName(variant)
             << "): " << report.full_dofs << " active DOFs -> " << report.reduced_dofs
             << " CMS DOFs (" << std::fixed << std::setprecision(1)
-            << 100.0 * report.reduced_dofs / report.full_dofs << " %)\n"
-            << "  interface DOFs " << report.interface_dofs << ", hull and wheel DOFs "
+            << 100.0 * report.reduced_dofs / report.full_dofs << " %)\n";
+  if (const std::string tension = vehicle::trackTensionText(description, variant); !tension.empty())
+    std::cout << "  " << tension << "\n";
+  std::cout << "  interface DOFs " << report.interface_dofs << ", hull and wheel DOFs "
             << model.masterCount() - report.interface_dofs - report.mogesec_dofs
             << ", MoGeSeC DOFs " << report.mogesec_dofs << ", flexible modes "
             << report.flexible_modes;

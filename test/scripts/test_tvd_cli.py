@@ -328,6 +328,11 @@ class TvdCliTest(unittest.TestCase):
                           "un-tracked variant has no chain loop", out)
         self.assertEqual(self.tvd_json("statics", "--vehicle", tensioned,
                                        "--variant", "untracked")["track_tension_n"], 0.0)
+        reduced = self.tvd_json("reduce", "--vehicle", tensioned, "--variant", "tracked")
+        self.assertEqual(reduced["track_tension_n"], tension)
+        # The reduced model keeps the tensioned top run (the CMS error of the full model's modes).
+        self.assertAlmostEqual(reduced["band_modes"][0]["full_hz"] / tight["frequencies_hz"][0],
+                               1.0, delta=1e-6)
         pushed = self.vehicle_with(
             "pushed.yaml", anchor,
             anchor + '  static_tension: {value: -1000, unit: N, source: "typo"}\n')
