@@ -100,6 +100,18 @@ class Validator {
     }
   }
 
+  /// n2 - n1 of a two-node element (`what`: "beam", "tie"), whose nodes must not coincide: its
+  /// stiffness grows as a power of 1/L.
+  Vector3 requireLength(const std::string& label, NodeId n1, NodeId n2, const char* what) const {
+    const Vector3 d =
+        model_.nodes[node_index_.at(n2)].position - model_.nodes[node_index_.at(n1)].position;
+    if (d.norm() <= kCoincidentTolerance * scale_) {
+      fail(label, std::string("zero-length ") + what + ": nodes " + std::to_string(n1) + " and " +
+                      std::to_string(n2) + " coincide");
+    }
+    return d;
+  }
+
   void checkGravity() const {
     if (!model_.gravity.allFinite()) {
       fail("gravity", "non-finite gravity vector");
@@ -183,12 +195,7 @@ class Validator {
       fail(label, "section '" + beam.section + "' does not exist");
     }
     requireFinite(label, beam.axial_force, "axial force");
-    const Vector3 axis = model_.nodes[node_index_.at(beam.n2)].position -
-                         model_.nodes[node_index_.at(beam.n1)].position;
-    if (axis.norm() <= kCoincidentTolerance * scale_) {
-      fail(label, "zero-length beam: nodes " + std::to_string(beam.n1) + " and " +
-                      std::to_string(beam.n2) + " coincide");
-    }
+    const Vector3 axis = requireLength(label, beam.n1, beam.n2, "beam");
     if (!beam.orientation.allFinite()) {
       fail(label, "non-finite orientation vector");
     }
@@ -241,13 +248,8 @@ class Validator {
     requireNode(label, tie.n1);
     requireNode(label, tie.n2);
     requireFinite(label, tie.force, "force");
-    const Vector3 d = model_.nodes[node_index_.at(tie.n2)].position -
-                      model_.nodes[node_index_.at(tie.n1)].position;
     // Its stiffness is F / L: a tie needs a length to turn through.
-    if (d.norm() <= kCoincidentTolerance * scale_) {
-      fail(label, "zero-length tie: nodes " + std::to_string(tie.n1) + " and " +
-                      std::to_string(tie.n2) + " coincide");
-    }
+    requireLength(label, tie.n1, tie.n2, "tie");
   }
 
   void checkBodyPreload(std::size_t i) const {

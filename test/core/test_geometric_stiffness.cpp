@@ -13,7 +13,6 @@
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
-#include "tracked_vehicle_dynamics/io/model_yaml.h"
 
 namespace tvd = tracked_vehicle_dynamics;
 using tvd::kPi;
@@ -220,32 +219,6 @@ TEST(GeometricStiffness, AnUnbalancedBodyPreloadOrAPointlessTieIsRefusedByName) 
   tvd::expectInputError([&] { tvd::fem::assemble(short_tie); }, {"ties[4]", "zero-length tie"});
   Model nan_force = simplySupported(4, std::nan(""));
   tvd::expectInputError([&] { tvd::fem::assemble(nan_force); }, {"beams[0]", "axial force"});
-}
-
-TEST(GeometricStiffness, PreloadsSurviveTheModelFileBitForBit) {
-  Model model = tensionedSquare(3e3, 1.5, true);
-  Model beam = simplySupported(3, 1234.5);
-  model.materials = beam.materials;
-  model.sections = beam.sections;
-  for (const auto& node : beam.nodes)
-    model.addNode(node.id + 10, node.position + Vector3(0, 0, 3));
-  model.beams.push_back({10, 11, "steel", "bar", Vector3::UnitZ()});
-  model.beams.back().axial_force = 1234.5;
-  const Model read = tvd::io::parseModelYaml(tvd::io::formatModelYaml(model), "round trip");
-  ASSERT_EQ(read.ties.size(), model.ties.size());
-  for (std::size_t i = 0; i < model.ties.size(); ++i) {
-    EXPECT_EQ(read.ties[i].n1, model.ties[i].n1);
-    EXPECT_EQ(read.ties[i].n2, model.ties[i].n2);
-    EXPECT_EQ(read.ties[i].force, model.ties[i].force);
-    EXPECT_EQ(read.ties[i].name, model.ties[i].name);
-  }
-  ASSERT_EQ(read.body_preloads.size(), 1u);
-  EXPECT_EQ(read.body_preloads[0].node, 0);
-  EXPECT_EQ(read.body_preloads[0].points, model.body_preloads[0].points);
-  EXPECT_EQ(read.body_preloads[0].forces, model.body_preloads[0].forces);
-  EXPECT_EQ(read.beams.back().axial_force, 1234.5);
-  const tvd::fem::System a = tvd::fem::assemble(model), b = tvd::fem::assemble(read);
-  EXPECT_EQ(Matrix(a.stiffness), Matrix(b.stiffness));
 }
 
 }  // namespace

@@ -72,6 +72,7 @@ void expectModelsEqual(const fem::Model& a, const fem::Model& b) {
     EXPECT_EQ(a.beams[i].material, b.beams[i].material);
     EXPECT_EQ(a.beams[i].section, b.beams[i].section);
     EXPECT_EQ(a.beams[i].orientation, b.beams[i].orientation);
+    EXPECT_EQ(a.beams[i].axial_force, b.beams[i].axial_force);
   }
   ASSERT_EQ(a.springs.size(), b.springs.size());
   for (std::size_t i = 0; i < a.springs.size(); ++i) {
@@ -102,6 +103,20 @@ void expectModelsEqual(const fem::Model& a, const fem::Model& b) {
     EXPECT_EQ(a.fixed[i].node, b.fixed[i].node);
     EXPECT_EQ(a.fixed[i].dofs, b.fixed[i].dofs);
   }
+  ASSERT_EQ(a.ties.size(), b.ties.size());
+  for (std::size_t i = 0; i < a.ties.size(); ++i) {
+    EXPECT_EQ(a.ties[i].n1, b.ties[i].n1);
+    EXPECT_EQ(a.ties[i].n2, b.ties[i].n2);
+    EXPECT_EQ(a.ties[i].force, b.ties[i].force);
+    EXPECT_EQ(a.ties[i].name, b.ties[i].name);
+  }
+  ASSERT_EQ(a.body_preloads.size(), b.body_preloads.size());
+  for (std::size_t i = 0; i < a.body_preloads.size(); ++i) {
+    EXPECT_EQ(a.body_preloads[i].node, b.body_preloads[i].node);
+    EXPECT_EQ(a.body_preloads[i].points, b.body_preloads[i].points);
+    EXPECT_EQ(a.body_preloads[i].forces, b.body_preloads[i].forces);
+    EXPECT_EQ(a.body_preloads[i].name, b.body_preloads[i].name);
+  }
   EXPECT_EQ(a.dof_sets, b.dof_sets);
 }
 
@@ -122,6 +137,11 @@ fem::Model awkwardModel() {
   model.sections.push_back({"123", 1e-4, 1e-8, 2e-8, 3e-8, 0.0, 5.0 / 6.0});
   model.beams.push_back({-5, 2, "steel", "tube", Vector3(0.0, 0.0, 1.0)});
   model.beams.push_back({2, 1000000000000, "~", "123", Vector3(0.1, 0.7, -0.2)});
+  model.beams.back().axial_force = -1e3 / 3.0;
+  model.ties.push_back({-5, 4, 1e4 / 7.0, "tie: A"});
+  // A pre-load pair along the line through its points: balanced, as validation asks.
+  const Vector3 p(1.0 / 3.0, M_PI, -1e-3), d(0.7, -0.2, 0.1);
+  model.body_preloads.push_back({4, {p, Vector3(p + d)}, {1e3 / 7.0 * d, -1e3 / 7.0 * d}, "null"});
   fem::Spring ground;
   ground.n1 = 4;
   ground.stiffness << 1e6, 2e6, 3.3e6, 0.0, 1.0 / 3.0, 5e4;
