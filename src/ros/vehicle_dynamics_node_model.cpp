@@ -101,12 +101,13 @@ void VehicleDynamicsNode::loadVehicle() {
                                                params_.vehicle_options,
                                                reduction::roadInputGroups(layout, model));
     setup_seconds_ = std::chrono::duration<double>(Clock::now() - setup_start).count();
-    // The model's sag at rest against the hull on its torsion bars alone (as tvd statics and
-    // modes say it): a chain or locked wheels carrying the hull, the usual sign of values copied
-    // from the paper's vehicle onto a light one, said to integrators who never run tvd.
+    // What the model does with the description's track tension, as tvd modes says it.
     if (const std::string tension = vehicle::trackTensionText(description, params_.variant);
         !tension.empty())
       ROS_INFO("%s: %s: %s", nodeName(), params_.vehicle.c_str(), tension.c_str());
+    // The model's sag at rest against the hull on its torsion bars alone (as tvd statics and
+    // modes say it): a chain or locked wheels carrying the hull, the usual sign of values copied
+    // from the paper's vehicle onto a light one, said to integrators who never run tvd.
     const Vector6& rest = vehicle_->staticHullDisplacement();  // ux, uy, uz, rx, ry, rz
     for (const std::string& w :
          vehicle::restWarnings(rest(2), rest(4), description, params_.variant))
