@@ -69,9 +69,9 @@ struct Tie {
 
 /// The pre-load a rigid body carries at rest: forces f_i applied to it at points x_i by pre-loaded
 /// members (beams' axial forces, ties), together self-equilibrated (sum f_i = 0, sum x_i x f_i =
-/// 0). Turning the body turns them with it, so their geometric stiffness acts on the body's
-/// rotation at `node`: K = (sum f.r) I - (1/2) sum (f r^T + r f^T), r = x_i - node
-/// (geometric_stiffness.h). Without it a tensioned loop held by the body would resist the whole
+/// 0). The body carries them as an internal stress (its compression path); turning the body
+/// with that stress in it takes work, a geometric stiffness on its rotation at `node`:
+/// K = (sum f.r) I - (1/2) sum (f r^T + r f^T), r = x_i - node (geometric_stiffness.h). Without it a tensioned loop held by the body would resist the whole
 /// model's rigid rotation.
 struct BodyPreload {
   NodeId node = 0;
