@@ -71,8 +71,8 @@ struct Tie {
 /// members (beams' axial forces, ties), together self-equilibrated (sum f_i = 0, sum x_i x f_i =
 /// 0). The body carries them as an internal stress (its compression path); turning the body
 /// with that stress in it takes work, a geometric stiffness on its rotation at `node`:
-/// K = (sum f.r) I - (1/2) sum (f r^T + r f^T), r = x_i - node (geometric_stiffness.h). Without it a tensioned loop held by the body would resist the whole
-/// model's rigid rotation.
+/// K = (sum f.r) I - (1/2) sum (f r^T + r f^T), r = x_i - node (geometric_stiffness.h). Without it
+/// a tensioned loop held by the body would resist the whole model's rigid rotation.
 struct BodyPreload {
   NodeId node = 0;
   std::vector<Vector3> points;  ///< [m], global frame
