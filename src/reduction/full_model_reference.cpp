@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tracked_vehicle_dynamics/dynamics/frf_state_space.h"
+#include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -91,10 +93,25 @@ FullModelReference FullModelReference::withTravelInertia() const {
   return out;
 }
 
+double FullModelReference::dampingCoupling() const {
+  return dynamics::maxOffDiagonalRatio(modal.damping);
+}
+
+bool FullModelReference::dampingCouplesModes() const {
+  return dampingCoupling() > dynamics::kModalDampingCouplingTolerance;
+}
+
 dynamics::ComplexMatrix FullModelReference::frf(const Vector& frequencies_hz,
                                                 const dynamics::InputDelay& delay,
                                                 dynamics::OutputQuantity quantity) const {
-  dynamics::ComplexMatrix out = dynamics::frfModal(modal, frequencies_hz, delay, quantity);
+  // Discrete dampers make D = Phi_k^T C Phi_k full: eq. 20's modal damping would drop what
+  // couples the modes (a wheel's peak moved by 105 % with two arm dampers), so eq. 18 is then
+  // solved in the k modal coordinates exactly (frf_state_space.h: one Hessenberg reduction,
+  // O(k^2) per frequency). The residual below is static either way.
+  dynamics::ComplexMatrix out = dampingCouplesModes()
+                                    ? dynamics::frfStateSpace(modal, dynamics::ModalSystem(modal),
+                                                              frequencies_hz, delay, quantity)
+                                    : dynamics::frfModal(modal, frequencies_hz, delay, quantity);
   const DofIndex n_u = modal.inputCount();
   for (Eigen::Index i = 0; i < frequencies_hz.size(); ++i) {
     const double omega = kTwoPi * frequencies_hz(i);

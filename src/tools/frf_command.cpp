@@ -211,13 +211,10 @@ void run(const FrfOptions& opt) {
     const reduction::FullModelReference ref =
         reduction::buildVehicleReference(description, variant, ref_options);
     names = ref.modal.output_names;
-    // Its modal damping (eq. 20) drops what couples the modes, as the reduced model's would.
-    damping_coupling = dynamics::maxOffDiagonalRatio(ref.modal.damping);
-    const std::string w = dynamics::modalDampingCouplingWarning(
-        damping_coupling, "--model full (its modes, each with its own damping)",
-        "the reduced model's FRF (--model reduced, solved directly) is the exact one");
-    if (!w.empty())
-      std::cerr << "tvd: warning: " << w << "\n";
+    // Discrete dampers coupling its modes: eq. 18 in its modal coordinates, as the reduced
+    // model's (FullModelReference::frf).
+    damping_coupling = ref.dampingCoupling();
+    solution = ref.dampingCouplesModes() ? "direct" : "modal";
     h = ref.frf(hz, delayFor(ref.modal.input_stations, ref.modal.input_lateral),
                 dynamics::OutputQuantity::Acceleration);
     dofs = ref.full_dofs;
@@ -375,14 +372,13 @@ void run(const FrfOptions& opt) {
                                   : std::string("synchronous excitation"))
             << (anti_phase ? ", the tracks' roads in anti-phase" : "") << ", 0-"
             << hz(hz.size() - 1) << " Hz\n";
-  if (reduced) {
+  if (reduced)
     std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
-    if (solution == "direct")
-      std::cout << "  solved directly (eq. 18): the damping couples the modes (off-diagonal "
-                   "Phi^T C Phi up to "
-                << std::setprecision(3) << damping_coupling
-                << " of the diagonal), which eq. 20's modal damping would drop\n";
-  }
+  if (solution == "direct")
+    std::cout << "  solved directly (eq. 18" << (reduced ? "" : ", in the modal coordinates")
+              << "): the damping couples the modes (off-diagonal Phi^T C Phi up to "
+              << std::setprecision(3) << damping_coupling
+              << " of the diagonal), which eq. 20's modal damping would drop\n";
   for (const NamedColumn& c : columns) {
     const auto [top, local] = peaks(magnitude(c));
     std::cout << "  " << std::left << std::setw(18) << c.column << std::right << " peak "

@@ -64,6 +64,7 @@ struct SimulateOptions {
   double dt = 1e-3;
   double lateral_offset = 0.0;
   std::string method = "modal";
+  bool method_given = false;  // --model full: unless given, exact when dampers couple its modes
   std::string model = "reduced";
   double max_mode_hz = -1.0;  // < 0: the Nyquist frequency 1 / (2 dt)
   ReducedModelFlags reduced;
@@ -179,10 +180,10 @@ void run(const SimulateOptions& opt) {
   if (!(opt.speed_kmh > 0) || opt.speed_kmh > dynamics::kMaxSpeedKmh)
     throw InputError("simulate: --speed-kmh must be in (0, " + brief(dynamics::kMaxSpeedKmh) +
                      "], got " + beyond(opt.speed_kmh, dynamics::kMaxSpeedKmh));
-  if (opt.method != "modal" && opt.max_mode_hz >= 0)
+  if (opt.method != "modal" && opt.max_mode_hz >= 0 && opt.model != "full")
     throw InputError(
-        "simulate: --max-mode-hz applies to --method modal only (the exact method "
-        "integrates every mode)");
+        "simulate: --max-mode-hz applies to --method modal only, or to --model full (the "
+        "exact method integrates every mode of the reduced model)");
   std::optional<dynamics::SpeedProfile> profile;
   if (!opt.speed_profile.empty()) {
     profile = dynamics::loadSpeedProfile(opt.speed_profile);
@@ -224,8 +225,6 @@ void run(const SimulateOptions& opt) {
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
   refuseDrivingBesideTerrain(opt.track, track, description, opt.lateral_offset);
   if (opt.model == "full") {
-    if (opt.method != "modal")
-      throw InputError("simulate: --model full runs with --method modal only");
     if (opt.max_mode_hz == 0 || opt.max_mode_hz > 100)
       throw InputError(
           "simulate: --model full needs --max-mode-hz in (0, 100] Hz (the full model's "
@@ -261,7 +260,12 @@ void run(const SimulateOptions& opt) {
   dynamics::SimulatorOptions sim_options;
   sim_options.time_step = opt.dt;
   sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
-  sim_options.method = dynamics::methodFromName(opt.method).value();  // CLI11 checked the name
+  // The full model is the reference: discrete dampers coupling its modes are integrated whole
+  // (the augmented exponential of its modal coordinates, all below --max-mode-hz, so no stiff
+  // ground tie among them) unless --method modal is asked for.
+  const std::string method =
+      full_run && !opt.method_given && full_run->dampingCouplesModes() ? "exact" : opt.method;
+  sim_options.method = dynamics::methodFromName(method).value();  // CLI11 checked the name
   sim_options.quantities = {dynamics::OutputQuantity::Displacement,
                             dynamics::OutputQuantity::Velocity,
                             dynamics::OutputQuantity::Acceleration};
@@ -290,7 +294,8 @@ void run(const SimulateOptions& opt) {
            sim.maxOffDiagonalDampingRatio(),
            full ? "--model full (its modes, each with its own damping)"
                 : "--method modal (the default)",
-           full ? "the reduced model with --method exact integrates the whole C"
+           full ? "--method exact (the default for --model full with such damping) integrates "
+                  "the whole C"
                 : "--method exact integrates the whole C (slower: seconds to set up on the "
                   "tracked model)"));
   // Ground contact (ground_contact.h): the force of every road input's spring, checked for
@@ -490,7 +495,7 @@ void run(const SimulateOptions& opt) {
                          {"track", track.name()},
                          {"track_argument", opt.track},
                          {"model", full ? "full" : "reduced"},
-                         {"method", opt.method},
+                         {"method", method},
                          {"dt_s", opt.dt},
                          // the modes integrated, up to this (0: every mode); above it quasi-static
                          {"max_mode_hz", !full ? sim_options.max_mode_frequency_hz
@@ -524,6 +529,7 @@ void run(const SimulateOptions& opt) {
         .field("travelled_m", travelled)
         .field("time_step_s", opt.dt)
         .field("model", full ? "full" : "reduced")
+        .field("method", method)
         .field(full ? "modal_coordinates" : "reduced_dofs", static_cast<long long>(sys.size()))
         .field("full_dofs",
                static_cast<long long>(full ? full->full_dofs : reduced->model.full_dof_count))
@@ -591,7 +597,10 @@ void run(const SimulateOptions& opt) {
   std::cout << ", " << vehicle::variantName(variant)
             << (full ? " full model (" + std::to_string(sys.size()) + " modes + static residual"
                      : " reduced model (" + std::to_string(sys.size()) + " DOFs")
-            << (from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n";
+            << (from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms"
+            << (method != opt.method ? ", integrated exactly: discrete dampers couple its modes"
+                                     : "")
+            << "\n";
   if (reduced)
     std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
   std::cout << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
@@ -647,9 +656,12 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--lateral-offset", opt->lateral_offset,
                   "lateral offset of the path [m] (y left)")
       ->check(finiteNumber());
-  cmd->add_option("--method", opt->method,
-                  "discretisation: modal (decoupled, fast) | exact (augmented exponential)")
-      ->check(CLI::IsMember({"modal", "exact"}));
+  CLI::Option* method =
+      cmd->add_option("--method", opt->method,
+                      "discretisation: modal (decoupled, fast; the default) | exact (augmented "
+                      "exponential: the whole damping); --model full: exact by default when "
+                      "discrete dampers couple its modes")
+          ->check(CLI::IsMember({"modal", "exact"}));
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "
                   "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic)")
@@ -669,7 +681,7 @@ void registerSimulateCommand(CLI::App& app) {
                       "on | off: report where the linear model's ground springs pull the vehicle "
                       "down (F < 0: beyond its range); reduced model only")
           ->check(CLI::IsMember({"on", "off"}));
-  cmd->callback([opt, variant, ground_contact]() {
+  cmd->callback([opt, variant, ground_contact, method]() {
     opt->reduced.check("simulate", opt->model);
     refuseOutputOverInput("simulate", "--out", opt->out_file,
                           {{"--vehicle", opt->vehicle_file},
@@ -681,6 +693,7 @@ void registerSimulateCommand(CLI::App& app) {
           "simulate: --ground-contact applies to --model reduced only (the full "
           "model is the reference; the reduced model reports ground contact)");
     opt->variant_given = variant->count() > 0;
+    opt->method_given = method->count() > 0;
     run(*opt);
   });
 }

@@ -1903,6 +1903,14 @@ class TvdCliTest(unittest.TestCase):
     FRF_TOLERANCE_DB, ANTI_RESONANCE_RATIO, ANTI_RESONANCE_WINDOW_HZ = 1.0, 0.25, 1.0
     BAND_HZ = 30.0
 
+    def worst_db(self, hz, full, reduced):
+        """paper_tables.worst_db with test_vehicle_frf's criterion: (worst dB, share compared)."""
+        if os.path.join(ROOT, "scripts") not in sys.path:
+            sys.path.insert(0, os.path.join(ROOT, "scripts"))
+        import paper_tables  # noqa: E402
+        return paper_tables.worst_db(hz, full, reduced, self.BAND_HZ, self.ANTI_RESONANCE_RATIO,
+                                     self.ANTI_RESONANCE_WINDOW_HZ)
+
     def frf_columns(self, name, *args):
         """`tvd frf --variant untracked --max-hz 30 ARGS --out NAME --json`: the JSON, the CSV's
         columns by name and its text."""
@@ -2074,9 +2082,6 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("--sides", bad.stderr)
 
     def test_frf_points_of_the_full_model_match_the_reduced(self):
-        if os.path.join(ROOT, "scripts") not in sys.path:
-            sys.path.insert(0, os.path.join(ROOT, "scripts"))
-        import paper_tables  # noqa: E402  (worst_db: test_vehicle_frf's comparison)
         _, reduced, _ = self.frf_columns("frf_points_reduced.csv", "--cache-dir", self.cache,
                                          "--points", "crew_seat")
         full_json, full, _ = self.frf_columns("frf_points_full.csv", "--model", "full",
@@ -2087,16 +2092,16 @@ class TvdCliTest(unittest.TestCase):
         # The full model is symmetric: its crew seat is rigid with the hull to rounding.
         self.assert_rigid_with_the_hull(full, "crew_seat", "full model", self.RIGID_POINT_TOLERANCE)
         for column in ("crew_seat_vertical_acc_mag", "crew_seat_vertical_acc_wk_mag"):
-            db, share = paper_tables.worst_db(full["frequency_hz"], full[column], reduced[column],
-                                              self.BAND_HZ, self.ANTI_RESONANCE_RATIO,
-                                              self.ANTI_RESONANCE_WINDOW_HZ)
+            db, share = self.worst_db(full["frequency_hz"], full[column], reduced[column])
             self.assertLess(db, self.FRF_TOLERANCE_DB, column)
             self.assertGreater(share, 0.45, column)
 
     def test_frf_of_coupled_damping_is_the_direct_solution(self):
         """Arm dampers couple the modes: tvd frf then solves eq. 18 directly, and its FRF is that
         of the file's M_R, C_R, K_R (SciPy, dense solve); eq. 20's modal damping is off by a
-        factor of two at the front wheel. simulate's default modal run warns of the coupling."""
+        factor of two at the front wheel. The full model is solved exactly too, and the reduced
+        model lies within 1 dB of it. simulate's default modal run warns of the coupling; the
+        full model's is exact unless told otherwise."""
         damped = self.vehicle_with("arm_damped.yaml", "arm_damping: {value: 0,",
                                    "arm_damping: {value: 20000,")
         with open(damped) as f:
@@ -2136,13 +2141,27 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(self.tvd_json("frf", "--vehicle", VEHICLE, "--variant", "untracked",
                                        "--cache-dir", self.cache, "--max-hz", "5")["solution"],
                          "modal")
-        # The full model keeps eq. 20 and says what it drops.
-        r = self.tvd("frf", "--vehicle", damped, "--variant", "untracked", "--model", "full",
-                     "--max-hz", "2", "--json")
-        self.assertEqual(json.loads(r.stdout)["solution"], "modal")
-        self.assertGreater(json.loads(r.stdout)["damping_coupling"], 0.1)
-        self.assertIn("the damping couples the modes", r.stderr)
-        self.assertIn("--model full (its modes, each with its own damping)", r.stderr)
+        # The full model solves eq. 18 in its modal coordinates likewise, silently, and the
+        # reduced model's exact FRF lies within the 1 dB of issue 4 of it, both speeds.
+        for speed in ("0", "30"):
+            full_out = self.path(f"arm_damped_full_{speed}.csv")
+            r = self.tvd("frf", "--vehicle", damped, "--variant", "untracked", "--model", "full",
+                         "--speed-kmh", speed, "--out", full_out, "--json")
+            self.assertEqual(json.loads(r.stdout)["solution"], "direct")
+            self.assertGreater(json.loads(r.stdout)["damping_coupling"], 0.1)
+            self.assertEqual(r.stderr, "")
+            reduced_out = self.path(f"arm_damped_reduced_{speed}.csv")
+            self.tvd("frf", "--vehicle", damped, "--reduced", mat, "--speed-kmh", speed,
+                     "--out", reduced_out)
+            full_header, full_rows = read_csv(full_out)
+            reduced_header, reduced_rows = read_csv(reduced_out)
+            self.assertEqual(full_header, reduced_header)
+            for column in ("hull_vertical_acc_mag", "hull_pitch_acc_mag", "front_wheel_acc_mag",
+                           "rear_wheel_acc_mag"):
+                c = full_header.index(column)
+                db, share = self.worst_db(full_rows[:, 0], full_rows[:, c], reduced_rows[:, c])
+                self.assertLess(db, self.FRF_TOLERANCE_DB, (speed, column))
+                self.assertGreater(share, 0.45, (speed, column))
         # SciPy's squeeze_me round trip writes the column vectors as rows: refused, saying why.
         squeezed = self.path("arm_damped_squeezed.mat")
         scipy.io.savemat(squeezed, scipy.io.loadmat(mat, squeeze_me=True))
@@ -2159,6 +2178,29 @@ class TvdCliTest(unittest.TestCase):
                             self.path("arm_damped.csv"))
         self.assertEqual(len([w for w in sim["warnings"] if w.startswith(
             "the damping couples the modes") and "--method exact" in w]), 1, sim["warnings"])
+        self.assertEqual(sim["method"], "modal")
+        # The full model, the reference, integrates the whole D unless told --method modal, and
+        # the reduced model run exactly follows it within 2 % of each peak (issue 5).
+        exact = self.tvd_json("simulate", "--vehicle", damped, "--reduced", mat, "--track",
+                              "long_hill", "--speed-kmh", "30", "--ground-contact", "off",
+                              "--method", "exact")
+        full = self.tvd_json("simulate", "--vehicle", damped, "--variant", "untracked",
+                             "--model", "full", "--track", "long_hill", "--speed-kmh", "30")
+        self.assertEqual((exact["method"], full["method"]), ("exact", "exact"))
+        self.assertEqual(full["warnings"], [])
+        for key in ("peak_hull_heave_m", "peak_hull_vertical_accel_m_s2", "peak_pitch_deg",
+                    "peak_wheel_displacement_m"):
+            self.assertAlmostEqual(exact[key], full[key], delta=0.02 * abs(full[key]), msg=key)
+        # Eq. 20's diagonal misses the hull's peak acceleration by half.
+        self.assertLess(sim["peak_hull_vertical_accel_m_s2"],
+                        0.6 * full["peak_hull_vertical_accel_m_s2"])
+        modal = self.tvd("simulate", "--vehicle", damped, "--variant", "untracked", "--model",
+                         "full", "--method", "modal", "--track", "long_hill", "--speed-kmh", "30",
+                         "--json")
+        self.assertEqual(json.loads(modal.stdout)["method"], "modal")
+        self.assertIn("--model full (its modes, each with its own damping)", modal.stderr)
+        self.assertIn("--method exact (the default for --model full with such damping)",
+                      modal.stderr)
 
     def test_frf_points_bad_names_are_refused(self):
         renamed = self.vehicle_with("renamed_seat.yaml", "\n  crew_seat:", "\n  driver_seat:")

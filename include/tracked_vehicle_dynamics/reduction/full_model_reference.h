@@ -11,7 +11,9 @@
 // n_outputs sparse solves with one factorisation. Statics are therefore exact (q = K^-1 f at
 // rest) and the truncation error in the band falls like (omega / omega_cut)^2.
 //
-// Frequency response (eq. 20 plus the residual):  y(omega) = H Phi_k x_eta(omega) + H R F(omega).
+// Frequency response (eq. 20 plus the residual):  y(omega) = H Phi_k x_eta(omega) + H R F(omega),
+// with x_eta from eq. 20 while D is diagonal, and from eq. 18 in the k coordinates, whole D
+// (frf_state_space.h), when discrete dampers couple the modes.
 // Time response: a Simulator on `modal` (exact per-mode discretisation) plus residualOutput().
 #pragma once
 
@@ -62,8 +64,15 @@ struct FullModelReference {
   /// Throws InputError for mismatched sizes.
   void addResidual(const Matrix& inputs, dynamics::OutputQuantity quantity,
                    Eigen::Ref<Matrix> outputs) const;
+  /// max |d_rs| / sqrt(d_rr d_ss) over r != s of D = modal.damping: what eq. 20 would drop.
+  double dampingCoupling() const;
+  /// dampingCoupling() above dynamics::kModalDampingCouplingTolerance (discrete dampers).
+  bool dampingCouplesModes() const;
   /// FRF per unit road height (eq. 18-25) of the outputs: modal part plus the residual
   /// H R (K_u + j omega C_u) tau times 1, j omega or -omega^2. [n_frequencies x n_outputs].
+  /// The modal part is eq. 20 for a diagonal D, else eq. 18 solved exactly in the modal
+  /// coordinates (dampingCouplesModes(): the whole D). Throws SolverError when an undamped mode
+  /// lies on the grid in the coupled case (the diagonal case returns a non-finite entry).
   dynamics::ComplexMatrix frf(const Vector& frequencies_hz, const dynamics::InputDelay& delay,
                               dynamics::OutputQuantity quantity) const;
   /// The reference with the travel acceleration a(t) as one more input after the road inputs
