@@ -7,6 +7,8 @@
 #include <string>
 #include <utility>
 
+#include <Eigen/Eigenvalues>
+
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -83,9 +85,18 @@ double temporalRoadPsd(const RoadSpectrum& road, double frequency, double speed)
   return terrain::iso8608Psd(road.road_class, n, road.waviness) / speed;
 }
 
+Matrix modalDamping(const ModalSystem& modal, const SecondOrderSystem& system) {
+  const ModeShapes& phi = modal.shapes();
+  if (system.damping.rows() != phi.rows() || system.damping.cols() != phi.rows())
+    fail("the damping matrix is " + std::to_string(system.damping.rows()) + " x " +
+         std::to_string(system.damping.cols()) + " for " + std::to_string(phi.rows()) +
+         " modal shape rows");
+  return phi.transpose() * system.damping * phi;
+}
+
 SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral,
                            const std::vector<DofIndex>& output_rows, const RoadSpectrum& road,
-                           const SpectralRideOptions& options)
+                           const SpectralRideOptions& options, const Matrix& modal_damping)
     : road_(road), options_(options) {
   checkSpectralInput(road, options);
   const DofIndex inputs = modal.inputCount();
@@ -150,6 +161,39 @@ SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral
     }
     sides_.push_back(std::move(side));
   }
+
+  const DofIndex n = modal.modeCount();
+  if (modal_damping.size() == 0)
+    return;
+  if (modal_damping.rows() != n || modal_damping.cols() != n)
+    fail("the modal damping matrix is " + std::to_string(modal_damping.rows()) + " x " +
+         std::to_string(modal_damping.cols()) + " for " + std::to_string(n) + " modes");
+  if (!modal_damping.allFinite())
+    fail("the modal damping matrix is not finite");
+  if (!(maxOffDiagonalRatio(modal_damping) > kModalDampingCouplingTolerance))
+    return;
+  // Complex modes of A = [0 Ω; -Ω -D] (see the header).
+  complex_modes_ = true;
+  Matrix a = Matrix::Zero(2 * n, 2 * n);
+  a.topRightCorner(n, n).diagonal() = modal.naturalFrequencies();
+  a.bottomLeftCorner(n, n).diagonal() = -modal.naturalFrequencies();
+  a.bottomRightCorner(n, n) = -modal_damping;
+  const Eigen::EigenSolver<Matrix> eigen(a, true);
+  if (eigen.info() != Eigen::Success)
+    throw SolverError("spectral ride: the eigen-solve of the damped modes failed");
+  const ComplexMatrix v = eigen.eigenvectors();
+  const Eigen::PartialPivLU<ComplexMatrix> lu(v);
+  // Eigenvectors that are nearly dependent (a defective A: critical damping, to round-off) would
+  // amplify round-off by 1 / rcond; 1e-10 leaves 1e-6 of the result.
+  if (!(lu.rcond() > 1e-10))
+    throw SolverError(
+        "spectral ride: the damped modes' eigenvectors are not independent to working "
+        "precision (a mode damped critically?)");
+  eigenvalues_ = eigen.eigenvalues();
+  const ComplexMatrix inverse = lu.inverse();
+  for (Side& side : sides_)
+    side.complex_input = inverse.rightCols(n) * side.input.cast<Complex>();
+  complex_output_ = output_.cast<Complex>() * v.bottomRows(n);
 }
 
 Vector SpectralRide::grid(double speed) const {
@@ -173,31 +217,37 @@ std::vector<DofIndex> SpectralRide::inputGroupCounts() const {
   return counts;
 }
 
-SpectralRideResult SpectralRide::evaluate(double speed) const {
-  const Vector f = grid(speed);
-  const Eigen::Index count = f.size(), outputs = output_.rows(), modes = output_.cols();
+namespace {
 
-  // Σ_sides |H_v,side|^2 per frequency and output.
+// [Re τ, Im τ; -ω Im τ, ω Re τ] for frequencies f(first .. first + nb - 1), τ_g = exp(-jω L_g / v):
+// times [Φ^T K_u | Φ^T C_u] it gives [Re F | Im F] of F = (Φ^T K_u + jω Φ^T C_u) τ.
+void delayColumns(const Vector& f, Eigen::Index first, Eigen::Index nb, const Vector& lags,
+                  double speed, Matrix* x) {
+  const Eigen::Index groups = lags.size();
+  x->resize(2 * groups, 2 * nb);
+  for (Eigen::Index i = 0; i < nb; ++i) {
+    const double omega = kTwoPi * f(first + i);
+    for (Eigen::Index g = 0; g < groups; ++g) {
+      const double phase = omega * lags(g) / speed;
+      const double re = std::cos(phase), im = -std::sin(phase);
+      (*x)(g, i) = re;
+      (*x)(g, nb + i) = im;
+      (*x)(groups + g, i) = -omega * im;
+      (*x)(groups + g, nb + i) = omega * re;
+    }
+  }
+}
+
+}  // namespace
+
+Matrix SpectralRide::realModeGain(const Vector& f, double speed) const {
+  const Eigen::Index count = f.size(), outputs = output_.rows(), modes = output_.cols();
   Matrix gain = Matrix::Zero(count, outputs);
   Matrix x, forces, eta(modes, 2 * kBlock), y;
   for (Eigen::Index first = 0; first < count; first += kBlock) {
     const Eigen::Index nb = std::min(kBlock, count - first);
     for (const Side& side : sides_) {
-      const Eigen::Index groups = side.lags.size();
-      // [Re τ, Im τ; -ω Im τ, ω Re τ], τ_g = exp(-jω L_g / v): times [Φ^T K_u | Φ^T C_u] it gives
-      // [Re F | Im F] of F = (Φ^T K_u + jω Φ^T C_u) τ.
-      x.resize(2 * groups, 2 * nb);
-      for (Eigen::Index i = 0; i < nb; ++i) {
-        const double omega = kTwoPi * f(first + i);
-        for (Eigen::Index g = 0; g < groups; ++g) {
-          const double phase = omega * side.lags(g) / speed;
-          const double re = std::cos(phase), im = -std::sin(phase);
-          x(g, i) = re;
-          x(g, nb + i) = im;
-          x(groups + g, i) = -omega * im;
-          x(groups + g, nb + i) = omega * re;
-        }
-      }
+      delayColumns(f, first, nb, side.lags, speed, &x);
       forces.noalias() = side.input * x;
       // η_r = F_r / D_r, D_r = ω_r^2 - ω^2 + j d_r ω.
       eta.resize(modes, 2 * nb);
@@ -220,6 +270,45 @@ SpectralRideResult SpectralRide::evaluate(double speed) const {
       }
     }
   }
+  return gain;
+}
+
+Matrix SpectralRide::complexModeGain(const Vector& f, double speed) const {
+  const Eigen::Index count = f.size(), outputs = complex_output_.rows(),
+                     states = complex_output_.cols();
+  Matrix gain = Matrix::Zero(count, outputs);
+  Matrix x;
+  ComplexMatrix forces, z(states, kBlock), y;
+  for (Eigen::Index first = 0; first < count; first += kBlock) {
+    const Eigen::Index nb = std::min(kBlock, count - first);
+    for (const Side& side : sides_) {
+      delayColumns(f, first, nb, side.lags, speed, &x);
+      // V^-1 [0; I] times [Re F | Im F]: V^-1 is complex, so the two halves are its products
+      // with Re F and Im F, and V^-1 [0; F] = left + j right.
+      forces.noalias() = side.complex_input * x.cast<Complex>();
+      z.resize(states, nb);
+      for (Eigen::Index i = 0; i < nb; ++i) {
+        const Complex j_omega(0.0, kTwoPi * f(first + i));
+        z.col(i) = (forces.col(i) + Complex(0.0, 1.0) * forces.col(nb + i))
+                       .cwiseQuotient((j_omega - eigenvalues_.array()).matrix());
+      }
+      y.noalias() = complex_output_ * z;
+      // Acceleration jω H Φ η': |.|^2 = ω^2 |H Φ V_2 z|^2.
+      for (Eigen::Index i = 0; i < nb; ++i) {
+        const double omega = kTwoPi * f(first + i);
+        for (Eigen::Index o = 0; o < outputs; ++o)
+          gain(first + i, o) += omega * omega * std::norm(y(o, i));
+      }
+    }
+  }
+  return gain;
+}
+
+SpectralRideResult SpectralRide::evaluate(double speed) const {
+  const Vector f = grid(speed);
+  const Eigen::Index count = f.size(), outputs = output_.rows();
+  // Σ_sides |H_v,side|^2 per frequency and output.
+  const Matrix gain = complex_modes_ ? complexModeGain(f, speed) : realModeGain(f, speed);
 
   // Trapezoidal weights on the (non-uniform) grid: ∫ g df ≈ Σ_i w_i g_i.
   Vector weight(count);

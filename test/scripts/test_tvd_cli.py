@@ -2194,6 +2194,20 @@ class TvdCliTest(unittest.TestCase):
         # Eq. 20's diagonal misses the hull's peak acceleration by half.
         self.assertLess(sim["peak_hull_vertical_accel_m_s2"],
                         0.6 * full["peak_hull_vertical_accel_m_s2"])
+        # The spectral ride takes the whole damping by complex modes, silently; the bundled
+        # vehicle's diagonal damping keeps the real modes.
+        ride = self.tvd("ride", "--vehicle", damped, "--reduced", mat, "--iso8608", "C",
+                        "--speeds", "20,40", "--json")
+        self.assertEqual(json.loads(ride.stdout)["solution"], "complex_modes")
+        self.assertGreater(json.loads(ride.stdout)["damping_coupling"], 0.1)
+        self.assertEqual(json.loads(ride.stdout)["warnings"], [])
+        self.assertEqual(ride.stderr, "")
+        text = self.tvd("ride", "--vehicle", damped, "--reduced", mat, "--iso8608", "C",
+                        "--speeds", "20").stdout
+        self.assertIn("solved by complex modes: the damping couples the modes", text)
+        self.assertEqual(self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked",
+                                       "--cache-dir", self.cache, "--iso8608", "C", "--speeds",
+                                       "20")["solution"], "modal")
         modal = self.tvd("simulate", "--vehicle", damped, "--variant", "untracked", "--model",
                          "full", "--method", "modal", "--track", "long_hill", "--speed-kmh", "30",
                          "--json")

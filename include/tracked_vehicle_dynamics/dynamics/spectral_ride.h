@@ -40,10 +40,21 @@
 // once, at construction: the tracked model's 360 inputs lie at 30 stations) times [Re τ, Im τ;
 // -ω Im τ, ω Re τ]. On the tracked reduced model (431 DOFs): 5 ms per speed, 11 ms with
 // independent sides, after 0.1 s for the modes.
+//
+// Damping that couples the modes (discrete arm dampers: D = Φ^T C Φ not diagonal) is taken whole
+// when given (the constructor's modal_damping): η then comes from the complex modes of the
+// first-order form, with y = [Ω η; η'] (both halves modal velocities, as frf_state_space.h):
+//   y' = A y + [0; F],   A = [0 Ω; -Ω -D] = V Λ V^-1,   z = V^-1 y,
+//   z_i = (V^-1 [0; I] F)_i / (jω - λ_i),   η' = V_2 z (V_2: V's lower n rows),
+//   H_v = jω H Φ η' = jω (H Φ V_2) z,
+// which is eq. 18, exactly, for any A with independent eigenvectors (a damped structure's; one
+// dense non-symmetric eigen-solve, about 1 s for the tracked model's 862 states, then the same
+// products per frequency with 2n complex modes instead of n real ones).
 #pragma once
 
 #include <vector>
 
+#include "tracked_vehicle_dynamics/dynamics/input_delay.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
 #include "tracked_vehicle_dynamics/types.h"
@@ -72,6 +83,10 @@ struct SpectralRideOptions {
   /// Keep the grid and S_a per output in the result (SpectralRideResult::psd).
   bool keep_psd = false;
 };
+
+/// Φ^T C Φ [modes x modes] of `system` on the modes of `modal` (ModalSystem(system)): the whole
+/// damping in modal coordinates, for SpectralRide. Throws InputError when sizes differ.
+Matrix modalDamping(const ModalSystem& modal, const SecondOrderSystem& system);
 
 /// Throws InputError for an invalid road (class A..H, band 0 < n_min < n_max, waviness > 0, side
 /// gap > 0 with independent sides) or options (points_per_decade in [10, 1e5], a grid of at most
@@ -105,9 +120,14 @@ class SpectralRide {
   /// road (class, band 0 < n_min < n_max, waviness > 0, side gap > 0 with independent sides),
   /// stations or lateral positions missing or not one per input or not finite, no output row or
   /// one out of range, and as checkSpectralInput.
+  /// modal_damping: Φ^T C Φ whole [modes x modes] (modalDamping()); when it couples the modes
+  /// (maxOffDiagonalRatio above kModalDampingCouplingTolerance) the response is exact by complex
+  /// modes (see above); empty, or diagonal: eq. 20 with `modal`'s damping coefficients. Throws
+  /// InputError for a matrix of the wrong size or not finite, SolverError when the eigen-solve
+  /// fails or its eigenvectors are not independent to working precision.
   SpectralRide(const ModalSystem& modal, const Vector& input_lateral,
                const std::vector<DofIndex>& output_rows, const RoadSpectrum& road,
-               const SpectralRideOptions& options = {});
+               const SpectralRideOptions& options = {}, const Matrix& modal_damping = Matrix());
 
   /// The metrics at speed v [m/s]. Throws InputError unless v > 0 and finite.
   SpectralRideResult evaluate(double speed) const;
@@ -117,18 +137,28 @@ class SpectralRide {
   /// Input groups per side after merging inputs that share a station (and side weight).
   std::vector<DofIndex> inputGroupCounts() const;
   const RoadSpectrum& road() const { return road_; }
+  /// True when the damping couples the modes and the complex modes carry the response.
+  bool complexModes() const { return complex_modes_; }
 
  private:
   /// One side's excitation (Uniform: one side, the whole width).
   struct Side {
     Vector lags;   ///< L_g [m] of each input group
     Matrix input;  ///< [modes x 2 G]: [Φ^T K_u W | Φ^T C_u W], W sums a group's columns
+    ComplexMatrix complex_input;  ///< complex modes: V^-1 [0; input] [2 modes x 2 G]
   };
+
+  /// Σ_sides |H_v,side|^2 [grid x outputs] by eq. 20 (real modes) or by the complex modes.
+  Matrix realModeGain(const Vector& f, double speed) const;
+  Matrix complexModeGain(const Vector& f, double speed) const;
 
   std::vector<Side> sides_;
   Vector omega_squared_;  ///< ω_r^2 [rad^2/s^2]
   Vector damping_;        ///< d_r [1/s]
   Matrix output_;         ///< rows of H Φ [n_outputs x modes]
+  bool complex_modes_ = false;
+  ComplexVector eigenvalues_;     ///< λ_i of A [2 modes]
+  ComplexMatrix complex_output_;  ///< rows of H Φ V_2 [n_outputs x 2 modes]
   RoadSpectrum road_;
   SpectralRideOptions options_;
 };
