@@ -191,9 +191,21 @@ SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral
         "precision (a mode damped critically?)");
   eigenvalues_ = eigen.eigenvalues();
   const ComplexMatrix inverse = lu.inverse();
-  for (Side& side : sides_)
-    side.complex_input = inverse.rightCols(n) * side.input.cast<Complex>();
+  for (Side& side : sides_) {
+    const ComplexMatrix product = inverse.rightCols(n) * side.input.cast<Complex>();
+    side.complex_input_re = product.real();
+    side.complex_input_im = product.imag();
+  }
   complex_output_ = output_.cast<Complex>() * v.bottomRows(n);
+}
+
+SpectralRide SpectralRide::withMaxFrequency(double max_frequency,
+                                            const SpectralRideOptions& options) const {
+  SpectralRide other = *this;
+  other.road_.max_frequency = max_frequency;
+  other.options_ = options;
+  checkSpectralInput(other.road_, other.options_);
+  return other;
 }
 
 Vector SpectralRide::grid(double speed) const {
@@ -277,20 +289,22 @@ Matrix SpectralRide::complexModeGain(const Vector& f, double speed) const {
   const Eigen::Index count = f.size(), outputs = complex_output_.rows(),
                      states = complex_output_.cols();
   Matrix gain = Matrix::Zero(count, outputs);
-  Matrix x;
-  ComplexMatrix forces, z(states, kBlock), y;
+  Matrix x, re, im;
+  ComplexMatrix z(states, kBlock), y;
   for (Eigen::Index first = 0; first < count; first += kBlock) {
     const Eigen::Index nb = std::min(kBlock, count - first);
     for (const Side& side : sides_) {
       delayColumns(f, first, nb, side.lags, speed, &x);
-      // V^-1 [0; I] times [Re F | Im F]: V^-1 is complex, so the two halves are its products
-      // with Re F and Im F, and V^-1 [0; F] = left + j right.
-      forces.noalias() = side.complex_input * x.cast<Complex>();
+      // W = V^-1 [0; input] = P + jQ times x = [Re F | Im F] = [a | b]: W F = (P a - Q b) +
+      // j (Q a + P b).
+      re.noalias() = side.complex_input_re * x;
+      im.noalias() = side.complex_input_im * x;
       z.resize(states, nb);
       for (Eigen::Index i = 0; i < nb; ++i) {
         const Complex j_omega(0.0, kTwoPi * f(first + i));
-        z.col(i) = (forces.col(i) + Complex(0.0, 1.0) * forces.col(nb + i))
-                       .cwiseQuotient((j_omega - eigenvalues_.array()).matrix());
+        for (Eigen::Index k = 0; k < states; ++k)
+          z(k, i) = Complex(re(k, i) - im(k, nb + i), im(k, i) + re(k, nb + i)) /
+                    (j_omega - eigenvalues_(k));
       }
       y.noalias() = complex_output_ * z;
       // Acceleration jω H Φ η': |.|^2 = ω^2 |H Φ V_2 z|^2.

@@ -131,19 +131,18 @@ constexpr double kBandCheckShare = 0.1;
 
 // runs: the sweep's results on the road's own band, by speed.
 std::optional<std::string> bandCutWarning(const RideOptions& opt,
-                                          const dynamics::ModalSystem& modal, const Vector& lateral,
-                                          const std::vector<DofIndex>& rows,
+                                          const dynamics::SpectralRide& ride,
                                           const std::vector<std::string>& points,
                                           const dynamics::RoadSpectrum& road,
                                           const std::vector<double>& sweep,
                                           const std::map<double, Run>& runs) {
   if (opt.max_frequency_given || !(road.max_frequency < kBandCheckFrequency))
     return std::nullopt;
-  dynamics::RoadSpectrum extended = road;
-  extended.max_frequency = kBandCheckFrequency;
   dynamics::SpectralRideOptions options;
   options.points_per_decade = opt.points_per_decade;
-  const dynamics::SpectralRide wide(modal, lateral, rows, extended, options);
+  // The same model (its complex modes too, when dampers couple them: the same solution as the
+  // run's) on the wider band.
+  const dynamics::SpectralRide wide = ride.withMaxFrequency(kBandCheckFrequency, options);
   // The worst point at the lowest speed, and the fastest speed of the sweep still over the share.
   double worst_ratio = 0.0, worst_base = 0.0, worst_wide = 0.0, fastest = 0.0;
   std::size_t worst_point = 0;
@@ -249,7 +248,7 @@ void runSpectralRide(const RideOptions& opt) {
   const std::vector<dynamics::LimitCrossing> limits = rate.limits(criteria, opt.tolerance_kmh);
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
-  warn(&warnings, bandCutWarning(opt, modal, lateral, rows, points, road, sweep, runs));
+  warn(&warnings, bandCutWarning(opt, ride, points, road, sweep, runs));
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;

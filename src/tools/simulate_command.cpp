@@ -664,7 +664,9 @@ void registerSimulateCommand(CLI::App& app) {
           ->check(CLI::IsMember({"modal", "exact"}));
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "
-                  "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic)")
+                  "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic); "
+                  "--model full, either method: its modes up to it are kept, the rest static "
+                  "(in (0, 100], default 100)")
       ->check(nonNegativeNumber())
       ->default_str("1/(2 dt)");
   cmd->add_option("--model", opt->model,

@@ -456,8 +456,9 @@ TEST(VehicleTimeResponse, ReducedMatchesFullOnLongHill) {
 // Discrete arm dampers couple the full model's modes: its reference FRF then solves eq. 18 in
 // its modal coordinates with the whole D = Phi_k^T C Phi_k, and equals the sparse direct
 // solution of the whole FE model (K - omega^2 M + j omega C) x = (K_u + j omega C_u) tau up to
-// the static residual's neglected inertia (8e-4 of each output's peak at most, at 30 km/h, with
-// the modes up to 100 Hz); eq. 20 on the diagonal of D is off by 80-350 %.
+// what the static residual leaves out, its inertia and its static response to the dampers'
+// force (8e-4 of each output's peak at most, at 30 km/h, with the modes up to 100 Hz); eq. 20
+// on the diagonal of D is off by 80-350 %.
 TEST(FullReference, CoupledDampingEqualsTheSparseDirectSolution) {
   vehicle::VehicleDescription d = vehicle::loadVehicleDescription(kDescriptionFile);
   d.suspension.arm_damping = 2.0e4;  // N m s/rad on axles 1 and 7

@@ -2205,6 +2205,18 @@ class TvdCliTest(unittest.TestCase):
         text = self.tvd("ride", "--vehicle", damped, "--reduced", mat, "--iso8608", "C",
                         "--speeds", "20").stdout
         self.assertIn("solved by complex modes: the damping couples the modes", text)
+        # The band-cut sensitivity is the same model's on the wider band: its figure is the
+        # run with --max-frequency 10 (eq. 20 on the wider band, until 2026-12-06, warned of
+        # nothing here).
+        low = self.tvd_json("ride", "--vehicle", damped, "--reduced", mat, "--iso8608", "C",
+                            "--speeds", "10")
+        wide = self.tvd_json("ride", "--vehicle", damped, "--reduced", mat, "--iso8608", "C",
+                             "--speeds", "10", "--max-frequency", "10")
+        seat = [p["absorbed_power_w"] for p in wide["runs"][0]["points"]
+                if p["point"] == "crew_seat"][0]
+        band = [w for w in low["warnings"] if w.startswith("the road's band ends at 2.83")]
+        self.assertEqual(len(band), 1, low["warnings"])
+        self.assertIn(f"crew_seat would absorb {seat:.3g} W at 10 km/h", band[0])
         self.assertEqual(self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked",
                                        "--cache-dir", self.cache, "--iso8608", "C", "--speeds",
                                        "20")["solution"], "modal")

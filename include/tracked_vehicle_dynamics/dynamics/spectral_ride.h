@@ -137,6 +137,10 @@ class SpectralRide {
   /// Input groups per side after merging inputs that share a station (and side weight).
   std::vector<DofIndex> inputGroupCounts() const;
   const RoadSpectrum& road() const { return road_; }
+  /// The same model, sides and modes on the road with its band's top at max_frequency
+  /// [cycles/m], with `options`: no second eigen-solve. Throws as the constructor for a band or
+  /// options it refuses.
+  SpectralRide withMaxFrequency(double max_frequency, const SpectralRideOptions& options) const;
   /// True when the damping couples the modes and the complex modes carry the response.
   bool complexModes() const { return complex_modes_; }
 
@@ -145,7 +149,9 @@ class SpectralRide {
   struct Side {
     Vector lags;   ///< L_g [m] of each input group
     Matrix input;  ///< [modes x 2 G]: [Φ^T K_u W | Φ^T C_u W], W sums a group's columns
-    ComplexMatrix complex_input;  ///< complex modes: V^-1 [0; input] [2 modes x 2 G]
+    /// Complex modes: Re and Im of V^-1 [0; input] [2 modes x 2 G], apart so that each block
+    /// of frequencies costs two real products, not one complex one (four).
+    Matrix complex_input_re, complex_input_im;
   };
 
   /// Σ_sides |H_v,side|^2 [grid x outputs] by eq. 20 (real modes) or by the complex modes.
