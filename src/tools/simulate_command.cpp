@@ -64,7 +64,6 @@ struct SimulateOptions {
   double dt = 1e-3;
   double lateral_offset = 0.0;
   std::string method = "modal";
-  bool method_given = false;  // --model full: unless given, exact when dampers couple its modes
   std::string model = "reduced";
   double max_mode_hz = -1.0;  // < 0: the Nyquist frequency 1 / (2 dt)
   ReducedModelFlags reduced;
@@ -260,11 +259,9 @@ void run(const SimulateOptions& opt) {
   dynamics::SimulatorOptions sim_options;
   sim_options.time_step = opt.dt;
   sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
-  // The full model is the reference: discrete dampers coupling its modes are integrated whole
-  // (the augmented exponential of its modal coordinates, all below --max-mode-hz, so no stiff
-  // ground tie among them) unless --method modal is asked for.
-  const std::string method =
-      full_run && !opt.method_given && full_run->dampingCouplesModes() ? "exact" : opt.method;
+  // Discrete dampers coupling the modes: both methods keep the whole damping (the modal one
+  // steps the coupled dynamic modes together, modal_engine.cpp).
+  const std::string& method = opt.method;
   sim_options.method = dynamics::methodFromName(method).value();  // CLI11 checked the name
   sim_options.quantities = {dynamics::OutputQuantity::Displacement,
                             dynamics::OutputQuantity::Velocity,
@@ -294,8 +291,7 @@ void run(const SimulateOptions& opt) {
            sim.maxOffDiagonalDampingRatio(),
            full ? "--model full (its modes, each with its own damping)"
                 : "--method modal (the default)",
-           full ? "--method exact (the default for --model full with such damping) integrates "
-                  "the whole C"
+           full ? "--method exact integrates the whole C"
                 : "--method exact integrates the whole C (slower: seconds to set up on the "
                   "tracked model)"));
   // Ground contact (ground_contact.h): the force of every road input's spring, checked for
@@ -597,10 +593,7 @@ void run(const SimulateOptions& opt) {
   std::cout << ", " << vehicle::variantName(variant)
             << (full ? " full model (" + std::to_string(sys.size()) + " modes + static residual"
                      : " reduced model (" + std::to_string(sys.size()) + " DOFs")
-            << (from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms"
-            << (method != opt.method ? ", integrated exactly: discrete dampers couple its modes"
-                                     : "")
-            << "\n";
+            << (from_cache ? ", cached" : "") << "), dt " << opt.dt * 1e3 << " ms\n";
   if (reduced)
     std::cout << "  reduction: " << describeReduction(*reduced) << "\n";
   std::cout << "  peak hull heave " << peak_heave << " m, vertical acceleration " << peak_accel
@@ -656,12 +649,10 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--lateral-offset", opt->lateral_offset,
                   "lateral offset of the path [m] (y left)")
       ->check(finiteNumber());
-  CLI::Option* method =
-      cmd->add_option("--method", opt->method,
-                      "discretisation: modal (decoupled, fast; the default) | exact (augmented "
-                      "exponential: the whole damping); --model full: exact by default when "
-                      "discrete dampers couple its modes")
-          ->check(CLI::IsMember({"modal", "exact"}));
+  cmd->add_option("--method", opt->method,
+                  "discretisation: modal (the modes, fast; the default) | exact (augmented "
+                  "exponential of the whole state)")
+      ->check(CLI::IsMember({"modal", "exact"}));
   cmd->add_option("--max-mode-hz", opt->max_mode_hz,
                   "modal method: modes above this frequency [Hz] are quasi-static "
                   "(default: the Nyquist frequency 1/(2 dt); 0 keeps every mode dynamic); "
@@ -683,7 +674,7 @@ void registerSimulateCommand(CLI::App& app) {
                       "on | off: report where the linear model's ground springs pull the vehicle "
                       "down (F < 0: beyond its range); reduced model only")
           ->check(CLI::IsMember({"on", "off"}));
-  cmd->callback([opt, variant, ground_contact, method]() {
+  cmd->callback([opt, variant, ground_contact]() {
     opt->reduced.check("simulate", opt->model);
     refuseOutputOverInput("simulate", "--out", opt->out_file,
                           {{"--vehicle", opt->vehicle_file},
@@ -695,7 +686,6 @@ void registerSimulateCommand(CLI::App& app) {
           "simulate: --ground-contact applies to --model reduced only (the full "
           "model is the reference; the reduced model reports ground contact)");
     opt->variant_given = variant->count() > 0;
-    opt->method_given = method->count() > 0;
     run(*opt);
   });
 }

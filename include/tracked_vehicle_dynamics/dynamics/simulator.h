@@ -14,9 +14,11 @@
 //     system (discrete_modes.h), modal forces p = Phi^T (K_u u + C_u u' + f_g) and outputs
 //     H Phi eta; O(n (n_w + n_y)) per step, less where few inputs change from one sample to the
 //     next (road inputs on flat terrain): the input terms are then updated by the changed inputs'
-//     columns only, exactly (simulator.cpp). Exact for proportional damping; for any other C it
-//     uses the modal damping approximation zeta_r = phi_r^T C phi_r / (2 omega_r)
-//     (maxOffDiagonalDampingRatio() reports the neglected coupling).
+//     columns only, exactly (simulator.cpp). Exact for proportional damping. Damping that
+//     couples the modes (discrete dampers) is kept whole among the dynamic modes, which are then
+//     stepped together by the exact discretisation of their coupled block, O(n^2) per step
+//     (modal_engine.cpp); given modal_damping_ratios, each mode keeps its own
+//     (maxOffDiagonalDampingRatio() reports the coupling that drops).
 //     Optionally truncated (max_mode_frequency_hz): modes above the cut-off respond
 //     quasi-statically (the mode-acceleration method),
 //       q = Phi_k eta_k + Phi_t Omega_t^-2 Phi_t^T f(t),   f = K_u u + C_u u' + f_g,
@@ -160,7 +162,9 @@ class Simulator {
   double timeStep() const;
   InputHold hold() const;
   DiscretizationMethod method() const;
-  /// ModalDecoupled: max_{r != s} |c_rs| / sqrt(c_rr c_ss) of Phi^T C Phi (0 when exact);
+  /// ModalDecoupled: max_{r != s} |c_rs| / sqrt(c_rr c_ss) of Phi^T C Phi when each mode is
+  /// stepped on its own (modal_damping_ratios given), 0 when the coupled dynamic modes are
+  /// stepped together (the default: nothing of their damping is dropped);
   /// AugmentedExponential: 0.
   double maxOffDiagonalDampingRatio() const;
   /// ModalDecoupled: modes integrated dynamically / treated quasi-statically (above
