@@ -56,8 +56,8 @@ namespace {
 // Left out, as for the cut without dampers: their inertia, their own damping and the rates
 // these terms would add to eta_t' (from eta_n'' and C_u u''). On a random model with dampers
 // next to its tyres the cut then errs by what it costs without dampers (test_simulator: 4.6e-5,
-// against 4 % with both terms dropped); on the paper vehicle the two terms are below 4e-8 of the
-// response. The neglected ratio reported is then 0.
+// against 4 % with both terms dropped); on the paper vehicle the second is below 4e-8 of the
+// dynamic modes' response (|d_sr| omega_r / omega_s^2). The neglected ratio reported is then 0.
 class ModalEngine : public SimulatorEngine {
  public:
   ModalEngine(const SecondOrderSystem& system, const SimulatorOptions& options)
