@@ -261,8 +261,7 @@ void run(const SimulateOptions& opt) {
   sim_options.hold = dynamics::InputHold::FirstOrder;  // the profile is piecewise linear in time
   // Discrete dampers coupling the modes: both methods keep the whole damping (the modal one
   // steps the coupled dynamic modes together, modal_engine.cpp).
-  const std::string& method = opt.method;
-  sim_options.method = dynamics::methodFromName(method).value();  // CLI11 checked the name
+  sim_options.method = dynamics::methodFromName(opt.method).value();  // CLI11 checked the name
   sim_options.quantities = {dynamics::OutputQuantity::Displacement,
                             dynamics::OutputQuantity::Velocity,
                             dynamics::OutputQuantity::Acceleration};
@@ -491,7 +490,7 @@ void run(const SimulateOptions& opt) {
                          {"track", track.name()},
                          {"track_argument", opt.track},
                          {"model", full ? "full" : "reduced"},
-                         {"method", method},
+                         {"method", opt.method},
                          {"dt_s", opt.dt},
                          // the modes integrated, up to this (0: every mode); above it quasi-static
                          {"max_mode_hz", !full ? sim_options.max_mode_frequency_hz
@@ -525,7 +524,7 @@ void run(const SimulateOptions& opt) {
         .field("travelled_m", travelled)
         .field("time_step_s", opt.dt)
         .field("model", full ? "full" : "reduced")
-        .field("method", method)
+        .field("method", opt.method)
         .field(full ? "modal_coordinates" : "reduced_dofs", static_cast<long long>(sys.size()))
         .field("full_dofs",
                static_cast<long long>(full ? full->full_dofs : reduced->model.full_dof_count))

@@ -39,84 +39,45 @@ std::string readText(const std::string& path) {
   return text.str();
 }
 
+/// The same number of items in `a` and `b`, and each of the given fields equal item by item
+/// (EXPECT_EQ: bitwise for finite values), the failing item named `what[i]`.
+template <typename Item, typename... Field>
+void expectItemsEqual(const char* what, const std::vector<Item>& a, const std::vector<Item>& b,
+                      Field Item::*... fields) {
+  ASSERT_EQ(a.size(), b.size()) << what;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const auto expect = [&](auto field) {
+      EXPECT_EQ(a[i].*field, b[i].*field) << what << "[" << i << "]";
+    };
+    (expect(fields), ...);
+  }
+}
+
 /// Exact (bitwise for finite values) equality of every field.
 void expectModelsEqual(const fem::Model& a, const fem::Model& b) {
   EXPECT_EQ(a.name, b.name);
   EXPECT_EQ(a.gravity, b.gravity);
-  ASSERT_EQ(a.nodes.size(), b.nodes.size());
-  for (std::size_t i = 0; i < a.nodes.size(); ++i) {
-    EXPECT_EQ(a.nodes[i].id, b.nodes[i].id) << "nodes[" << i << "]";
-    EXPECT_EQ(a.nodes[i].position, b.nodes[i].position) << "nodes[" << i << "]";
-  }
-  ASSERT_EQ(a.materials.size(), b.materials.size());
-  for (std::size_t i = 0; i < a.materials.size(); ++i) {
-    EXPECT_EQ(a.materials[i].name, b.materials[i].name);
-    EXPECT_EQ(a.materials[i].young_modulus, b.materials[i].young_modulus);
-    EXPECT_EQ(a.materials[i].shear_modulus, b.materials[i].shear_modulus);
-    EXPECT_EQ(a.materials[i].density, b.materials[i].density);
-  }
-  ASSERT_EQ(a.sections.size(), b.sections.size());
-  for (std::size_t i = 0; i < a.sections.size(); ++i) {
-    EXPECT_EQ(a.sections[i].name, b.sections[i].name);
-    EXPECT_EQ(a.sections[i].area, b.sections[i].area);
-    EXPECT_EQ(a.sections[i].iy, b.sections[i].iy);
-    EXPECT_EQ(a.sections[i].iz, b.sections[i].iz);
-    EXPECT_EQ(a.sections[i].torsion, b.sections[i].torsion);
-    EXPECT_EQ(a.sections[i].shear_factor_y, b.sections[i].shear_factor_y);
-    EXPECT_EQ(a.sections[i].shear_factor_z, b.sections[i].shear_factor_z);
-  }
-  ASSERT_EQ(a.beams.size(), b.beams.size());
-  for (std::size_t i = 0; i < a.beams.size(); ++i) {
-    EXPECT_EQ(a.beams[i].n1, b.beams[i].n1);
-    EXPECT_EQ(a.beams[i].n2, b.beams[i].n2);
-    EXPECT_EQ(a.beams[i].material, b.beams[i].material);
-    EXPECT_EQ(a.beams[i].section, b.beams[i].section);
-    EXPECT_EQ(a.beams[i].orientation, b.beams[i].orientation);
-    EXPECT_EQ(a.beams[i].axial_force, b.beams[i].axial_force);
-  }
-  ASSERT_EQ(a.springs.size(), b.springs.size());
-  for (std::size_t i = 0; i < a.springs.size(); ++i) {
-    EXPECT_EQ(a.springs[i].n1, b.springs[i].n1);
-    EXPECT_EQ(a.springs[i].n2, b.springs[i].n2);
-    EXPECT_EQ(a.springs[i].stiffness, b.springs[i].stiffness);
-    EXPECT_EQ(a.springs[i].damping, b.springs[i].damping);
-    EXPECT_EQ(a.springs[i].frame, b.springs[i].frame);
-    EXPECT_EQ(a.springs[i].name, b.springs[i].name);
-  }
-  ASSERT_EQ(a.masses.size(), b.masses.size());
-  for (std::size_t i = 0; i < a.masses.size(); ++i) {
-    EXPECT_EQ(a.masses[i].node, b.masses[i].node);
-    EXPECT_EQ(a.masses[i].mass, b.masses[i].mass);
-    EXPECT_EQ(a.masses[i].inertia, b.masses[i].inertia);
-    EXPECT_EQ(a.masses[i].offset, b.masses[i].offset);
-    EXPECT_EQ(a.masses[i].name, b.masses[i].name);
-  }
-  ASSERT_EQ(a.rigid_joints.size(), b.rigid_joints.size());
-  for (std::size_t i = 0; i < a.rigid_joints.size(); ++i) {
-    EXPECT_EQ(a.rigid_joints[i].master, b.rigid_joints[i].master);
-    EXPECT_EQ(a.rigid_joints[i].slaves, b.rigid_joints[i].slaves);
-    EXPECT_EQ(a.rigid_joints[i].dofs, b.rigid_joints[i].dofs);
-    EXPECT_EQ(a.rigid_joints[i].name, b.rigid_joints[i].name);
-  }
-  ASSERT_EQ(a.fixed.size(), b.fixed.size());
-  for (std::size_t i = 0; i < a.fixed.size(); ++i) {
-    EXPECT_EQ(a.fixed[i].node, b.fixed[i].node);
-    EXPECT_EQ(a.fixed[i].dofs, b.fixed[i].dofs);
-  }
-  ASSERT_EQ(a.ties.size(), b.ties.size());
-  for (std::size_t i = 0; i < a.ties.size(); ++i) {
-    EXPECT_EQ(a.ties[i].n1, b.ties[i].n1);
-    EXPECT_EQ(a.ties[i].n2, b.ties[i].n2);
-    EXPECT_EQ(a.ties[i].force, b.ties[i].force);
-    EXPECT_EQ(a.ties[i].name, b.ties[i].name);
-  }
-  ASSERT_EQ(a.body_preloads.size(), b.body_preloads.size());
-  for (std::size_t i = 0; i < a.body_preloads.size(); ++i) {
-    EXPECT_EQ(a.body_preloads[i].node, b.body_preloads[i].node);
-    EXPECT_EQ(a.body_preloads[i].points, b.body_preloads[i].points);
-    EXPECT_EQ(a.body_preloads[i].forces, b.body_preloads[i].forces);
-    EXPECT_EQ(a.body_preloads[i].name, b.body_preloads[i].name);
-  }
+  expectItemsEqual("nodes", a.nodes, b.nodes, &fem::Node::id, &fem::Node::position);
+  expectItemsEqual("materials", a.materials, b.materials, &fem::Material::name,
+                   &fem::Material::young_modulus, &fem::Material::shear_modulus,
+                   &fem::Material::density);
+  expectItemsEqual("sections", a.sections, b.sections, &fem::Section::name, &fem::Section::area,
+                   &fem::Section::iy, &fem::Section::iz, &fem::Section::torsion,
+                   &fem::Section::shear_factor_y, &fem::Section::shear_factor_z);
+  expectItemsEqual("beams", a.beams, b.beams, &fem::Beam::n1, &fem::Beam::n2, &fem::Beam::material,
+                   &fem::Beam::section, &fem::Beam::orientation, &fem::Beam::axial_force);
+  expectItemsEqual("springs", a.springs, b.springs, &fem::Spring::n1, &fem::Spring::n2,
+                   &fem::Spring::stiffness, &fem::Spring::damping, &fem::Spring::frame,
+                   &fem::Spring::name);
+  expectItemsEqual("masses", a.masses, b.masses, &fem::Mass::node, &fem::Mass::mass,
+                   &fem::Mass::inertia, &fem::Mass::offset, &fem::Mass::name);
+  expectItemsEqual("rigid_joints", a.rigid_joints, b.rigid_joints, &fem::RigidJoint::master,
+                   &fem::RigidJoint::slaves, &fem::RigidJoint::dofs, &fem::RigidJoint::name);
+  expectItemsEqual("fixed", a.fixed, b.fixed, &fem::FixedDofs::node, &fem::FixedDofs::dofs);
+  expectItemsEqual("ties", a.ties, b.ties, &fem::Tie::n1, &fem::Tie::n2, &fem::Tie::force,
+                   &fem::Tie::name);
+  expectItemsEqual("body_preloads", a.body_preloads, b.body_preloads, &fem::BodyPreload::node,
+                   &fem::BodyPreload::points, &fem::BodyPreload::forces, &fem::BodyPreload::name);
   EXPECT_EQ(a.dof_sets, b.dof_sets);
 }
 
