@@ -25,7 +25,15 @@ constexpr double kFitKnee = 0.25;
 constexpr double kFitTopWeight = 0.03;
 
 const char* weightingName(Weighting weighting) {
-  return weighting == Weighting::Wk ? "Wk" : "Wd";
+  switch (weighting) {
+    case Weighting::Wk:
+      return "Wk";
+    case Weighting::Wd:
+      return "Wd";
+    case Weighting::We:
+      return "We";
+  }
+  return "?";
 }
 
 void checkSampleRate(double sample_rate) {
@@ -58,10 +66,15 @@ std::complex<double> sectionResponse(const AnalogSection& section, double freque
 
 Iso2631Parameters iso2631Parameters(Weighting weighting) {
   // ISO 2631-1:1997, Annex A.
-  if (weighting == Weighting::Wk) {
-    return {0.4, 100.0, 12.5, 12.5, 0.63, 2.37, 0.91, 3.35, 0.91};
+  switch (weighting) {
+    case Weighting::Wk:
+      return {0.4, 100.0, 12.5, 12.5, 0.63, 2.37, 0.91, 3.35, 0.91};
+    case Weighting::Wd:
+      return {0.4, 100.0, 2.0, 2.0, 0.63, kInfinity, 0.0, kInfinity, 0.0};
+    case Weighting::We:
+      return {0.4, 100.0, 1.0, 1.0, 0.63, kInfinity, 0.0, kInfinity, 0.0};
   }
-  return {0.4, 100.0, 2.0, 2.0, 0.63, kInfinity, 0.0, kInfinity, 0.0};
+  throw InputError("comfort: unknown weighting " + std::to_string(static_cast<int>(weighting)));
 }
 
 std::vector<AnalogSection> iso2631Sections(Weighting weighting) {

@@ -1,5 +1,7 @@
 #include "point_comfort.h"
 
+#include "simulation_layout.h"
+
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -22,27 +24,56 @@ dynamics::ComfortOptions horizontalOptions() {
   return o;
 }
 
+dynamics::ComfortOptions rotationalOptions() {
+  dynamics::ComfortOptions o;
+  o.weighting = dynamics::Weighting::We;
+  return o;
+}
+
+double rootSumOfSquares(double a, double b, double c) {
+  return std::sqrt(a * a + b * b + c * c);
+}
+
 }  // namespace
 
-PointComfort::PointComfort(std::string point, DofIndex x_row, DofIndex y_row, DofIndex z_row,
-                           double dt)
+ComfortRows comfortRows(const std::vector<std::string>& names, const std::string& point,
+                        const std::string& command) {
+  const auto row = [&](const std::string& name) { return outputRow(names, name, command); };
+  return {row(point + " ux/acc"), row(point + " uy/acc"), row(point + " uz/acc"),
+          row("hull rx/acc"),     row("hull ry/acc"),     row("hull rz/acc")};
+}
+
+PointComfort::PointComfort(std::string point, const ComfortRows& rows, double dt)
     : point_(std::move(point)),
-      x_row_(x_row),
-      y_row_(y_row),
-      z_row_(z_row),
+      rows_(rows),
       vertical_(1.0 / dt, verticalOptions()),
       longitudinal_(1.0 / dt, horizontalOptions()),
-      lateral_(1.0 / dt, horizontalOptions()) {}
+      lateral_(1.0 / dt, horizontalOptions()),
+      roll_(1.0 / dt, rotationalOptions()),
+      pitch_(1.0 / dt, rotationalOptions()),
+      yaw_(1.0 / dt, rotationalOptions()) {}
 
 void PointComfort::add(const OutputRow& outputs) {
-  vertical_.add(outputs(z_row_));
-  longitudinal_.add(outputs(x_row_));
-  lateral_.add(outputs(y_row_));
+  vertical_.add(outputs(rows_.z));
+  longitudinal_.add(outputs(rows_.x));
+  lateral_.add(outputs(rows_.y));
+  roll_.add(outputs(rows_.roll));
+  pitch_.add(outputs(rows_.pitch));
+  yaw_.add(outputs(rows_.yaw));
 }
 
 double PointComfort::totalValue() const {
-  return std::sqrt(std::pow(longitudinal_.weightedRms(), 2) + std::pow(lateral_.weightedRms(), 2) +
-                   std::pow(vertical_.weightedRms(), 2));
+  return rootSumOfSquares(longitudinal_.weightedRms(), lateral_.weightedRms(),
+                          vertical_.weightedRms());
+}
+
+double PointComfort::rotationalTotalValue() const {
+  return rootSumOfSquares(kRollFactor * roll_.weightedRms(), kPitchFactor * pitch_.weightedRms(),
+                          kYawFactor * yaw_.weightedRms());
+}
+
+double PointComfort::overallTotalValue() const {
+  return std::hypot(totalValue(), rotationalTotalValue());
 }
 
 void PointComfort::writeJson(io::JsonWriter& json) const {
@@ -61,6 +92,11 @@ void PointComfort::writeJson(io::JsonWriter& json) const {
       .field("weighted_rms_x_m_s2", longitudinal_.weightedRms())
       .field("weighted_rms_y_m_s2", lateral_.weightedRms())
       .field("vibration_total_value_m_s2", totalValue())
+      .field("weighted_rms_roll_rad_s2", roll_.weightedRms())
+      .field("weighted_rms_pitch_rad_s2", pitch_.weightedRms())
+      .field("weighted_rms_yaw_rad_s2", yaw_.weightedRms())
+      .field("rotational_total_value_m_s2", rotationalTotalValue())
+      .field("overall_total_value_m_s2", overallTotalValue())
       .endObject();
 }
 
@@ -69,6 +105,9 @@ void PointComfort::writeText(std::ostream& out) const {
       << vertical_.vibrationDoseValue() << " m/s^1.75, absorbed power "
       << vertical_.absorbedPower().value_or(0.0) << " W, a_wx " << longitudinal_.weightedRms()
       << ", a_wy " << lateral_.weightedRms() << ", a_v " << totalValue() << " m/s^2\n";
+  out << "      rotation (We): roll " << roll_.weightedRms() << ", pitch " << pitch_.weightedRms()
+      << ", yaw " << yaw_.weightedRms() << " rad/s^2, a_r " << rotationalTotalValue()
+      << " m/s^2; six axes " << overallTotalValue() << " m/s^2\n";
   if (vertical_.sampleCount() == 0 || !(vertical_.weightedRms() > 0.0))
     return;
   // ISO 2631-1 6.2.1 and 6.3.3: whether a_wz alone describes this run.

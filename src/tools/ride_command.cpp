@@ -54,6 +54,7 @@ struct PointRide {
   double weighted_rms_z = 0.0;  ///< a_wz [m/s^2]
   double vdv_z = 0.0;           ///< [m/s^1.75]
   double total_value = 0.0;     ///< a_v [m/s^2]
+  double overall_total = 0.0;   ///< a_v with the rotations, six axes [m/s^2]
   double peak_up_g = 0.0;       ///< low-passed [g]
   double peak_abs_g = 0.0;      ///< low-passed [g]
 };
@@ -63,12 +64,13 @@ struct Run {
   std::vector<PointRide> points;  // as RideSetup::points
 };
 
-// The --out table's columns: speed, whether in the sweep, six metrics per point.
+// The --out table's columns: speed, whether in the sweep, seven metrics per point.
 std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
   std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
   for (const std::string& p : points)
-    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
-                          "_vibration_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
+    for (const char* q :
+         {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
+          "_vibration_total_value_m_s2", "_overall_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
       headers.push_back(p + q);
   return headers;
 }
@@ -144,9 +146,7 @@ void run(const RideOptions& opt) {
     std::vector<dynamics::ShockMeter> peaks;
     std::vector<DofIndex> z_rows;
     for (const std::string& p : points) {
-      comfort.emplace_back(p, outputRow(names, p + " ux/acc", "ride"),
-                           outputRow(names, p + " uy/acc", "ride"),
-                           outputRow(names, p + " uz/acc", "ride"), opt.dt);
+      comfort.emplace_back(p, comfortRows(names, p, "ride"), opt.dt);
       peaks.emplace_back(1.0 / opt.dt, shock);
       z_rows.push_back(outputRow(names, p + " uz/acc", "ride"));
     }
@@ -162,7 +162,8 @@ void run(const RideOptions& opt) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const dynamics::ComfortMeter& z = comfort[i].vertical();
       r.points.push_back({z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
-                          comfort[i].totalValue(), peaks[i].peakUp() / kStandardGravity,
+                          comfort[i].totalValue(), comfort[i].overallTotalValue(),
+                          peaks[i].peakUp() / kStandardGravity,
                           peaks[i].peakAbsolute() / kStandardGravity});
     }
     return r;
@@ -195,9 +196,9 @@ void run(const RideOptions& opt) {
     table(row, 1) = r.in_sweep ? 1.0 : 0.0;
     for (std::size_t i = 0; i < points.size(); ++i) {
       const PointRide& m = r.points[i];
-      const auto c = static_cast<Eigen::Index>(2 + 6 * i);
-      table.block(row, c, 1, 6) << m.absorbed_power, m.weighted_rms_z, m.vdv_z, m.total_value,
-          m.peak_up_g, m.peak_abs_g;
+      const auto c = static_cast<Eigen::Index>(2 + 7 * i);
+      table.block(row, c, 1, 7) << m.absorbed_power, m.weighted_rms_z, m.vdv_z, m.total_value,
+          m.overall_total, m.peak_up_g, m.peak_abs_g;
     }
     ++row;
   }
@@ -244,6 +245,7 @@ void run(const RideOptions& opt) {
             .field("weighted_rms_z_m_s2", m.weighted_rms_z)
             .field("vdv_z_m_s1_75", m.vdv_z)
             .field("vibration_total_value_m_s2", m.total_value)
+            .field("overall_total_value_m_s2", m.overall_total)
             .field("peak_up_g", m.peak_up_g)
             .field("peak_abs_g", m.peak_abs_g)
             .endObject();

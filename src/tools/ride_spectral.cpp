@@ -43,9 +43,14 @@ std::string lateralCorrelationName(bool independent_sides) {
 using Clock = std::chrono::steady_clock;
 
 // What the time-domain method reports and this one does not: a PSD gives the variance of a
-// Gaussian response, not the peaks (nor the fourth-power VDV) of one road.
-const std::vector<std::string> kNotComputed = {"peak_acceleration", "peak_up_g", "peak_abs_g",
-                                               "vdv_z_m_s1_75", "vibration_total_value_m_s2"};
+// Gaussian response, not the peaks (nor the fourth-power VDV) of one road; and the spectra are
+// the vertical ones, so the totals over several axes are left out.
+const std::vector<std::string> kNotComputed = {"peak_acceleration",
+                                               "peak_up_g",
+                                               "peak_abs_g",
+                                               "vdv_z_m_s1_75",
+                                               "vibration_total_value_m_s2",
+                                               "overall_total_value_m_s2"};
 
 struct Run {
   bool in_sweep = false;

@@ -357,14 +357,12 @@ void run(const SimulateOptions& opt) {
   for (std::size_t r = 0; r < roads.size(); ++r)
     road0(static_cast<Eigen::Index>(r)) = roadHeight(roads[r], 0);
   // Ride comfort at the hull's CoG and at every named point: ISO 2631-1 Wk and absorbed power
-  // vertically, Wd in x and y.
+  // vertically, Wd in x and y, We of the hull's rotations.
   std::vector<std::string> comfort_points = {"hull"};
   comfort_points.insert(comfort_points.end(), layout.points.begin(), layout.points.end());
   std::vector<PointComfort> comfort;
   for (const std::string& point : comfort_points)
-    comfort.emplace_back(point, outputRow(names, point + " ux/acc"),
-                         outputRow(names, point + " uy/acc"), outputRow(names, point + " uz/acc"),
-                         opt.dt);
+    comfort.emplace_back(point, comfortRows(names, point, "simulate"), opt.dt);
 
   constexpr int kFirstColumn = 2;  // after time and station
   const auto first_road = static_cast<Eigen::Index>(kFirstColumn + layout.columns.size());
@@ -604,8 +602,8 @@ void run(const SimulateOptions& opt) {
   for (const std::string& point : layout.points)
     std::cout << "  peak at " << point << ": vertical displacement " << peak(point + "_vertical_m")
               << " m, vertical acceleration " << peak(point + "_accel_z_m_s2") << " m/s^2\n";
-  std::cout << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal; absorbed power "
-               "vertical):\n";
+  std::cout << "  ride comfort (ISO 2631-1 a_w: Wk vertical, Wd horizontal, We rotational; "
+               "absorbed power vertical):\n";
   for (const PointComfort& c : comfort)
     c.writeText(std::cout);
   if (monitor_contact)

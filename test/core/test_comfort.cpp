@@ -33,6 +33,8 @@ constexpr double kMtvvTolerance = 1e-4;
 // Online and batch sums differ only by rounding order.
 constexpr double kAgreementTolerance = 1e-9;
 
+const Weighting kWeightings[] = {Weighting::Wk, Weighting::Wd, Weighting::We};
+
 double decibels(double ratio) {
   return 20.0 * std::log10(ratio);
 }
@@ -85,6 +87,28 @@ TEST(Iso2631, WeightingsMatchTheStandardsTable) {
   }
 }
 
+TEST(Iso2631, RotationalWeightingMatchesTheStandardsTable) {
+  // ISO 2631-1:1997's one-third-octave table of the further weightings (Wc, We, Wj): We
+  // (rotational, seat surface) x 1000, 0.1 .. 80 Hz. The a-v
+  // transition at 1 Hz (Q4 0.63) sets the top of the curve, 0.94 at 0.63-0.8 Hz, and the 1/f
+  // flank above it; a transition at 2 Hz (Wd's) would read 1.011 at 1 Hz instead of 0.880.
+  struct Row {
+    double frequency, we;
+  };
+  const Row table[] = {
+      {0.1, 62.5}, {0.125, 97.5}, {0.16, 159}, {0.2, 245},   {0.25, 368}, {0.315, 536},
+      {0.4, 723},  {0.5, 862},    {0.63, 939}, {0.8, 941},   {1, 880},    {1.25, 772},
+      {1.6, 632},  {2, 512},      {2.5, 409},  {3.15, 323},  {4, 253},    {5, 202},
+      {6.3, 160},  {8, 125},      {10, 100},   {12.5, 80.0}, {16, 62.5},  {20, 50.0},
+      {25, 39.9},  {31.5, 31.6},  {40, 24.7},  {50, 19.4},   {63, 14.8},  {80, 10.5},
+  };
+  for (const Row& row : table) {
+    EXPECT_NEAR(std::abs(iso2631Response(Weighting::We, row.frequency)) / (row.we / 1000.0), 1.0,
+                kTableTolerance)
+        << "We at " << row.frequency << " Hz";
+  }
+}
+
 /// Largest |20 log10(|H_digital| / |W|)| over 0.1 Hz .. f_max, 20 points per decade and f_max.
 double worstErrorDb(const WeightingFilter& filter, Weighting weighting, double f_max) {
   double worst = 0.0;
@@ -97,7 +121,7 @@ double worstErrorDb(const WeightingFilter& filter, Weighting weighting, double f
 }
 
 TEST(Iso2631, MatchedFilterMatchesAnalogueUpToTenthOfSampleRate) {
-  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+  for (Weighting weighting : kWeightings) {
     for (double fs : {30.0, 100.0, 200.0, 1000.0, 5000.0}) {
       const WeightingFilter filter = WeightingFilter::iso2631(weighting, fs);
       EXPECT_LT(worstErrorDb(filter, weighting, 0.1 * fs), kFilterToleranceDb) << "fs = " << fs;
@@ -112,7 +136,7 @@ TEST(Iso2631, MatchedFilterMatchesAnalogueUpToTenthOfSampleRate) {
 TEST(Iso2631, MatchedFilterPhaseIsAnalogueUpToATimeShift) {
   // arg(H_d / W) = 2π f τ for one constant τ (a shift the metrics are blind to), over the
   // standard's band 0.5 .. 80 Hz below fs/10.
-  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+  for (Weighting weighting : kWeightings) {
     for (double fs : {100.0, 1000.0, 5000.0}) {
       const WeightingFilter filter = WeightingFilter::iso2631(weighting, fs);
       const auto phase_error = [&](double f) {
@@ -129,7 +153,7 @@ TEST(Iso2631, MatchedFilterPhaseIsAnalogueUpToATimeShift) {
 }
 
 TEST(Iso2631, BilinearFilterMatchesAnalogueUpToThirtiethOfSampleRate) {
-  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+  for (Weighting weighting : kWeightings) {
     for (double fs : {100.0, 1000.0, 5000.0}) {
       const WeightingFilter filter =
           WeightingFilter::iso2631(weighting, fs, Discretisation::BilinearPrewarped);
@@ -146,7 +170,7 @@ TEST(Comfort, SinusoidWeightedRmsAndVdvClosedForms) {
   const double fs = 1000.0;
   const double amplitude = 1.5;
   const double duration = 60.0;  // a whole number of periods of every test frequency
-  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+  for (Weighting weighting : kWeightings) {
     for (double f : {1.0, 2.0, 5.0, 8.0, 16.0}) {
       const double gain = std::abs(iso2631Response(weighting, f));
       ComfortOptions options;
@@ -270,7 +294,7 @@ TEST(Comfort, OnlineMeterAgreesWithBatch) {
   Vector a(20000);
   for (Eigen::Index i = 0; i < a.size(); ++i)
     a(i) = noise(rng) + 3.0 * std::sin(0.02 * i);
-  for (Weighting weighting : {Weighting::Wk, Weighting::Wd}) {
+  for (Weighting weighting : kWeightings) {
     ComfortOptions options;
     options.weighting = weighting;
     options.absorbed_power = testPowerFilter();
@@ -372,6 +396,8 @@ TEST(Comfort, RejectsBadInput) {
   expectInputError([] { WeightingFilter::iso2631(Weighting::Wk, 20.0); },
                    "20 Hz is too low for ISO 2631-1 Wk");
   expectInputError([] { WeightingFilter::iso2631(Weighting::Wd, 0.0); }, "sample rate 0 Hz");
+  expectInputError([] { WeightingFilter::iso2631(Weighting::We, 2.0); },
+                   "2 Hz is too low for ISO 2631-1 We (needs > 2 Hz)");
   expectInputError(
       [] {
         WeightingFilter({AnalogSection{1, 0, 0, 1, 1, 0, 600.0}}, 1000.0,

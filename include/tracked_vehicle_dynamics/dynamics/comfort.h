@@ -11,7 +11,10 @@
 //     Wk (vertical, z):   f1 0.4, f2 100, f3 12.5, f4 12.5, Q4 0.63, f5 2.37, Q5 0.91,
 //                         f6 3.35, Q6 0.91 Hz
 //     Wd (horizontal):    f1 0.4, f2 100, f3 2.0, f4 2.0, Q4 0.63, no upward step
-// (|Wk| = 0.482 at 1 Hz and 1.054 at 6.3 Hz, as in the standard's one-third-octave table.)
+//     We (rotational):    f1 0.4, f2 100, f3 1.0, f4 1.0, Q4 0.63, no upward step
+// (|Wk| = 0.482 at 1 Hz and 1.054 at 6.3 Hz, |We| = 0.880 at 1 Hz, as in the standard's
+// one-third-octave tables.) We weights an angular acceleration [rad/s^2]; above 1 Hz it falls as
+// 1/f, so it rates the angular velocity.
 //
 // Discretisation (Discretisation, per second-order section; fs the sample rate, T = 1/fs):
 //   MatchedMagnitude (default)  poles mapped exactly, z = exp(p T); the numerator (always of
@@ -99,6 +102,7 @@ enum class Discretisation {
 enum class Weighting {
   Wk,  ///< vertical (z) at the seat surface, comfort and health
   Wd,  ///< horizontal (x, y) at the seat surface
+  We,  ///< rotational (roll, pitch, yaw) at the seat surface, comfort
 };
 
 /// Corner frequencies [Hz] and quality factors of an ISO 2631-1 weighting; f5 = f6 = infinity
@@ -130,7 +134,8 @@ class WeightingFilter {
   WeightingFilter(std::vector<AnalogSection> sections, double sample_rate,
                   Discretisation discretisation = Discretisation::MatchedMagnitude);
   /// The ISO 2631-1 weighting at sample_rate [Hz]. Throws InputError when sample_rate is not
-  /// above 2 f4 (and 2 sqrt(f5 f6)) of the weighting: Wk needs > 25 Hz, Wd > 4 Hz.
+  /// above 2 f4 (and 2 sqrt(f5 f6)) of the weighting: Wk needs > 25 Hz, Wd > 4 Hz,
+  /// We > 2 Hz.
   static WeightingFilter iso2631(Weighting weighting, double sample_rate,
                                  Discretisation discretisation = Discretisation::MatchedMagnitude);
 
