@@ -111,6 +111,16 @@ std::complex<double> iso2631Response(Weighting weighting, double frequency) {
   return analogResponse(iso2631Sections(weighting), frequency);
 }
 
+double seatTranslationalTotalValue(double x, double y, double z) {
+  return std::sqrt(x * x + y * y + z * z);
+}
+
+double seatRotationalTotalValue(double roll, double pitch, double yaw) {
+  return seatTranslationalTotalValue(SeatRotationFactors::roll * roll,
+                                     SeatRotationFactors::pitch * pitch,
+                                     SeatRotationFactors::yaw * yaw);
+}
+
 std::vector<AnalogSection> absorbedPowerVerticalSections() {
   // H_p(s) = 14.5 s (s + 44) / ((s + 63)(s^2 + 24 s + 750)) for ft/s^2 (header comment); a in
   // m/s^2 is a / 0.3048 in ft/s^2, so the gain for m/s^2 is 14.5 / 0.3048.

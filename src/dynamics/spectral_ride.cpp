@@ -119,6 +119,7 @@ SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral
            std::to_string(modal.outputCount()) + " outputs");
     output_.row(static_cast<Eigen::Index>(i)) = modal.modalOutput().row(row);
   }
+  checkWeightings();
   omega_squared_ = modal.naturalFrequencies().cwiseAbs2();
   damping_ = modal.dampingCoefficients();
 
@@ -205,7 +206,15 @@ SpectralRide SpectralRide::withMaxFrequency(double max_frequency,
   other.road_.max_frequency = max_frequency;
   other.options_ = options;
   checkSpectralInput(other.road_, other.options_);
+  other.checkWeightings();
   return other;
+}
+
+void SpectralRide::checkWeightings() const {
+  const std::size_t given = options_.weightings.size();
+  if (given != 0 && given != static_cast<std::size_t>(output_.rows()))
+    fail(std::to_string(given) + " weightings for " + std::to_string(output_.rows()) +
+         " output rows: give one per output, or none for Wk on every one");
 }
 
 Vector SpectralRide::grid(double speed) const {
@@ -329,6 +338,12 @@ SpectralRideResult SpectralRide::evaluate(double speed) const {
   for (Eigen::Index i = 0; i < count; ++i)
     weight(i) = 0.5 * (f(std::min(i + 1, count - 1)) - f(std::max<Eigen::Index>(i - 1, 0)));
   const std::vector<AnalogSection> power_filter = absorbedPowerVerticalSections();
+  // Each output's weighting sections, built once (Wk when none is given).
+  std::vector<std::vector<AnalogSection>> weighting(static_cast<std::size_t>(outputs));
+  for (Eigen::Index o = 0; o < outputs; ++o)
+    weighting[static_cast<std::size_t>(o)] = iso2631Sections(
+        options_.weightings.empty() ? Weighting::Wk
+                                    : options_.weightings[static_cast<std::size_t>(o)]);
   SpectralRideResult result;
   result.speed = speed;
   Vector road_psd(count);
@@ -338,12 +353,12 @@ SpectralRideResult SpectralRide::evaluate(double speed) const {
     // S_h = G_d(f / v) / v; every grid point lies in [v n_min, v n_max].
     road_psd(i) = terrain::iso8608Psd(road_.road_class, f(i) / speed, road_.waviness) / speed;
     result.road_variance += weight(i) * road_psd(i);
-    const double wk = std::norm(iso2631Response(Weighting::Wk, f(i)));
     const double k = std::norm(analogResponse(power_filter, f(i)));
     for (Eigen::Index o = 0; o < outputs; ++o) {
       const double s = weight(i) * gain(i, o) * road_psd(i);
       sum_squares(o) += s;
-      sum_weighted(o) += wk * s;
+      sum_weighted(o) +=
+          std::norm(analogResponse(weighting[static_cast<std::size_t>(o)], f(i))) * s;
       sum_power(o) += k * s;
     }
   }

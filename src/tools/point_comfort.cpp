@@ -30,10 +30,6 @@ dynamics::ComfortOptions rotationalOptions() {
   return o;
 }
 
-double rootSumOfSquares(double a, double b, double c) {
-  return std::sqrt(a * a + b * b + c * c);
-}
-
 }  // namespace
 
 ComfortRows comfortRows(const std::vector<std::string>& names, const std::string& point,
@@ -63,13 +59,13 @@ void PointComfort::add(const OutputRow& outputs) {
 }
 
 double PointComfort::totalValue() const {
-  return rootSumOfSquares(longitudinal_.weightedRms(), lateral_.weightedRms(),
-                          vertical_.weightedRms());
+  return dynamics::seatTranslationalTotalValue(longitudinal_.weightedRms(), lateral_.weightedRms(),
+                                               vertical_.weightedRms());
 }
 
 double PointComfort::rotationalTotalValue() const {
-  return rootSumOfSquares(kRollFactor * roll_.weightedRms(), kPitchFactor * pitch_.weightedRms(),
-                          kYawFactor * yaw_.weightedRms());
+  return dynamics::seatRotationalTotalValue(roll_.weightedRms(), pitch_.weightedRms(),
+                                            yaw_.weightedRms());
 }
 
 double PointComfort::overallTotalValue() const {

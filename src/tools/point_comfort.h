@@ -30,7 +30,8 @@ ComfortRows comfortRows(const std::vector<std::string>& names, const std::string
 //   x and y; the vibration total value of the translations (8.2.3, k_x = k_y = k_z = 1)
 //     a_v = sqrt(a_wx^2 + a_wy^2 + a_wz^2);
 // - rotationally a_w (We) of roll, pitch and yaw [rad/s^2], and their total with the standard's
-//   rotational factors for the seat surface, k_rx = 0.63, k_ry = 0.40, k_rz = 0.20 m/rad,
+//   rotational factors for the seat surface, k_rx = 0.63, k_ry = 0.40, k_rz = 0.20 m/rad
+//   (dynamics::SeatRotationFactors),
 //     a_r = sqrt((0.63 a_wrx)^2 + (0.40 a_wry)^2 + (0.20 a_wrz)^2)   [m/s^2];
 // - the overall total of the seat surface's six axes, sqrt(a_v^2 + a_r^2) [m/s^2] (8.2.3 sums
 //   the axes of every contact; the seat back and the feet are not modelled, so this is the
@@ -39,11 +40,6 @@ ComfortRows comfortRows(const std::vector<std::string>& names, const std::string
 // rotations can add as much as a translation to what the crew feels.
 class PointComfort {
  public:
-  /// Rotational multiplying factors of the seat surface [m/rad] (ISO 2631-1:1997, 8.2).
-  static constexpr double kRollFactor = 0.63;
-  static constexpr double kPitchFactor = 0.40;
-  static constexpr double kYawFactor = 0.20;
-
   /// dt [s] the sample interval.
   PointComfort(std::string point, const ComfortRows& rows, double dt);
 
@@ -57,6 +53,10 @@ class PointComfort {
   double overallTotalValue() const;
   /// The vertical (Wk, absorbed power) meter.
   const dynamics::ComfortMeter& vertical() const { return vertical_; }
+  /// The hull's rotations (We) [rad/s^2].
+  const dynamics::ComfortMeter& roll() const { return roll_; }
+  const dynamics::ComfortMeter& pitch() const { return pitch_; }
+  const dynamics::ComfortMeter& yaw() const { return yaw_; }
   void writeJson(io::JsonWriter& json) const;
   void writeText(std::ostream& out) const;
 

@@ -61,7 +61,9 @@ struct PointRide {
 
 struct Run {
   bool in_sweep = false;
-  std::vector<PointRide> points;  // as RideSetup::points
+  std::vector<PointRide> points;              // as RideSetup::points
+  double roll = 0.0, pitch = 0.0, yaw = 0.0;  // the hull's, We [rad/s^2]
+  double rotational_total_value = 0.0;        // a_r [m/s^2]
 };
 
 // The --out table's columns: speed, whether in the sweep, seven metrics per point.
@@ -159,6 +161,11 @@ void run(const RideOptions& opt) {
               });
     simulated += drive.steps() * opt.dt;
     Run r;
+    // The rigid hull's rotations, which every point shares.
+    r.roll = comfort.front().roll().weightedRms();
+    r.pitch = comfort.front().pitch().weightedRms();
+    r.yaw = comfort.front().yaw().weightedRms();
+    r.rotational_total_value = comfort.front().rotationalTotalValue();
     for (std::size_t i = 0; i < points.size(); ++i) {
       const dynamics::ComfortMeter& z = comfort[i].vertical();
       r.points.push_back({z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
@@ -235,6 +242,10 @@ void run(const RideOptions& opt) {
       json.beginObject()
           .field("speed_kmh", speed)
           .field("in_sweep", r.in_sweep)
+          .field("weighted_rms_roll_rad_s2", r.roll)
+          .field("weighted_rms_pitch_rad_s2", r.pitch)
+          .field("weighted_rms_yaw_rad_s2", r.yaw)
+          .field("rotational_total_value_m_s2", r.rotational_total_value)
           .key("points")
           .beginArray();
       for (std::size_t i = 0; i < points.size(); ++i) {

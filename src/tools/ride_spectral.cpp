@@ -43,21 +43,73 @@ std::string lateralCorrelationName(bool independent_sides) {
 using Clock = std::chrono::steady_clock;
 
 // What the time-domain method reports and this one does not: a PSD gives the variance of a
-// Gaussian response, not the peaks (nor the fourth-power VDV) of one road; and the spectra are
-// the vertical ones, so the totals over several axes are left out.
-const std::vector<std::string> kNotComputed = {"peak_acceleration",
-                                               "peak_up_g",
-                                               "peak_abs_g",
-                                               "vdv_z_m_s1_75",
-                                               "vibration_total_value_m_s2",
-                                               "overall_total_value_m_s2"};
+// Gaussian response, not the peaks (nor the fourth-power VDV) of one road.
+const std::vector<std::string> kNotComputed = {"peak_acceleration", "peak_up_g", "peak_abs_g",
+                                               "vdv_z_m_s1_75"};
+
+// The outputs rated, as SpectralRide takes them: per point its z (Wk), x and y (Wd)
+// accelerations, then the hull's roll, pitch and yaw (We), which the rigid hull gives every point.
+struct RatedOutputs {
+  static constexpr std::size_t kPerPoint = 3;  // z, x, y
+  std::vector<DofIndex> rows;
+  std::vector<dynamics::Weighting> weightings;
+  std::size_t rotations = 0;  // index of the roll output
+
+  RatedOutputs(const dynamics::SecondOrderSystem& sys, const std::vector<std::string>& points) {
+    const auto add = [&](const std::string& name, dynamics::Weighting weighting) {
+      rows.push_back(outputRow(sys.output_names, name, "ride"));
+      weightings.push_back(weighting);
+    };
+    for (const std::string& p : points) {
+      add(p + " uz", dynamics::Weighting::Wk);
+      add(p + " ux", dynamics::Weighting::Wd);
+      add(p + " uy", dynamics::Weighting::Wd);
+    }
+    rotations = rows.size();
+    for (const char* r : {"hull rx", "hull ry", "hull rz"})
+      add(r, dynamics::Weighting::We);
+  }
+  static std::size_t vertical(std::size_t point) { return kPerPoint * point; }
+};
+
+// One point's metrics at one speed.
+struct PointRide {
+  dynamics::SpectralOutput z;        // P, a_wz, a_rms of the vertical acceleration
+  double weighted_rms_x = 0.0;       // Wd [m/s^2]
+  double weighted_rms_y = 0.0;       // Wd [m/s^2]
+  double total_value = 0.0;          // a_v [m/s^2]
+  double overall_total_value = 0.0;  // sqrt(a_v^2 + a_r^2) [m/s^2]
+};
 
 struct Run {
   bool in_sweep = false;
   Eigen::Index frequencies = 0;
   double low_hz = 0.0, high_hz = 0.0;
-  std::vector<dynamics::SpectralOutput> points;  // as the chosen points
+  std::vector<PointRide> points;              // as the chosen points
+  double roll = 0.0, pitch = 0.0, yaw = 0.0;  // We [rad/s^2]
+  double rotational_total_value = 0.0;        // a_r [m/s^2]
 };
+
+Run runOf(const dynamics::SpectralRideResult& r, const RatedOutputs& rated, std::size_t points) {
+  Run run;
+  const std::size_t k = rated.rotations;
+  run.roll = r.outputs[k].weighted_rms;
+  run.pitch = r.outputs[k + 1].weighted_rms;
+  run.yaw = r.outputs[k + 2].weighted_rms;
+  run.rotational_total_value = dynamics::seatRotationalTotalValue(run.roll, run.pitch, run.yaw);
+  for (std::size_t i = 0; i < points; ++i) {
+    const std::size_t o = RatedOutputs::vertical(i);
+    PointRide p;
+    p.z = r.outputs[o];
+    p.weighted_rms_x = r.outputs[o + 1].weighted_rms;
+    p.weighted_rms_y = r.outputs[o + 2].weighted_rms;
+    p.total_value =
+        dynamics::seatTranslationalTotalValue(p.weighted_rms_x, p.weighted_rms_y, p.z.weighted_rms);
+    p.overall_total_value = std::hypot(p.total_value, run.rotational_total_value);
+    run.points.push_back(p);
+  }
+  return run;
+}
 
 dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
   const std::string& c = opt.iso_class;
@@ -85,15 +137,21 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
 // frequency of that speed's grid (the grids differ: [v n_min, v n_max]). Per point the raw
 // acceleration PSD S_a, the ISO 2631-1 weighted |W_k|^2 S_a and the absorbed-power density K S_a,
 // so that the trapezoid over one speed's rows gives that run's a_rms^2, a_wz^2 and P (the
-// integrals SpectralRide::evaluate takes on the same grid).
+// integrals SpectralRide::evaluate takes on the same grid), then the raw PSDs of its x and y
+// accelerations; last, those of the hull's roll, pitch and yaw accelerations [(rad/s^2)^2/Hz].
 void writePsdTable(const std::string& path, const RideOptions& opt,
                    const dynamics::SpectralRide& ride, const std::vector<double>& speeds,
-                   const std::vector<std::string>& points, const std::string& vehicle_name,
-                   const std::string& variant, const std::string& road_name) {
+                   const std::vector<std::string>& points, const RatedOutputs& rated,
+                   const std::string& vehicle_name, const std::string& variant,
+                   const std::string& road_name) {
   std::vector<std::string> headers = {"speed_kmh", "frequency_hz", "road_psd_m2_hz"};
   for (const std::string& p : points)
-    for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz"})
+    for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz",
+                          "_psd_x_m2_s4_hz", "_psd_y_m2_s4_hz"})
       headers.push_back(p + q);
+  for (const char* r :
+       {"hull_psd_roll_rad2_s4_hz", "hull_psd_pitch_rad2_s4_hz", "hull_psd_yaw_rad2_s4_hz"})
+    headers.push_back(r);
   std::vector<dynamics::SpectralRideResult> results;
   Eigen::Index rows = 0;
   for (double speed_kmh : speeds) {
@@ -113,8 +171,15 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
       table(row, 0) = speeds[k];
       table(row, 1) = f;
       table(row, 2) = r.road_psd(i);
-      for (Eigen::Index o = 0; o < r.psd.cols(); ++o)
-        table.block(row, 3 + 3 * o, 1, 3) << r.psd(i, o), wk * r.psd(i, o), power * r.psd(i, o);
+      Eigen::Index c = 3;
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        const auto o = static_cast<Eigen::Index>(RatedOutputs::vertical(p));
+        table.block(row, c, 1, 5) << r.psd(i, o), wk * r.psd(i, o), power * r.psd(i, o),
+            r.psd(i, o + 1), r.psd(i, o + 2);
+        c += 5;
+      }
+      const auto k = static_cast<Eigen::Index>(rated.rotations);
+      table.block(row, c, 1, 3) << r.psd(i, k), r.psd(i, k + 1), r.psd(i, k + 2);
     }
   }
   writeTable(path, headers, table, 12,
@@ -138,6 +203,7 @@ constexpr double kBandCheckShare = 0.1;
 std::optional<std::string> bandCutWarning(const RideOptions& opt,
                                           const dynamics::SpectralRide& ride,
                                           const std::vector<std::string>& points,
+                                          const RatedOutputs& rated,
                                           const dynamics::RoadSpectrum& road,
                                           const std::vector<double>& sweep,
                                           const std::map<double, Run>& runs) {
@@ -145,6 +211,7 @@ std::optional<std::string> bandCutWarning(const RideOptions& opt,
     return std::nullopt;
   dynamics::SpectralRideOptions options;
   options.points_per_decade = opt.points_per_decade;
+  options.weightings = rated.weightings;
   // The same model (its complex modes too, when dampers couple them: the same solution as the
   // run's) on the wider band.
   const dynamics::SpectralRide wide = ride.withMaxFrequency(kBandCheckFrequency, options);
@@ -152,10 +219,11 @@ std::optional<std::string> bandCutWarning(const RideOptions& opt,
   double worst_ratio = 0.0, worst_base = 0.0, worst_wide = 0.0, fastest = 0.0;
   std::size_t worst_point = 0;
   for (double speed_kmh : sweep) {
-    const std::vector<dynamics::SpectralOutput>& base = runs.at(speed_kmh).points;
+    const std::vector<PointRide>& base = runs.at(speed_kmh).points;
     const dynamics::SpectralRideResult more = wide.evaluate(speed_kmh / kKmhPerMs);
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const double p = base[i].absorbed_power, q = more.outputs[i].absorbed_power;
+      const double p = base[i].z.absorbed_power,
+                   q = more.outputs[RatedOutputs::vertical(i)].absorbed_power;
       if (!(q > (1.0 + kBandCheckShare) * p))
         continue;
       fastest = speed_kmh;
@@ -219,9 +287,8 @@ void runSpectralRide(const RideOptions& opt) {
   const ReducedModelSource& reduced = model.reduced;
   const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;
-  std::vector<DofIndex> rows;
-  for (const std::string& p : points)
-    rows.push_back(outputRow(sys.output_names, p + " uz", "ride"));
+  const RatedOutputs rated(sys, points);
+  spectral.weightings = rated.weightings;
 
   // The modes and the grouped modal input matrices, once for every speed.
   const auto start = Clock::now();
@@ -229,7 +296,7 @@ void runSpectralRide(const RideOptions& opt) {
   const Vector lateral = sys.input_lateral.array() + opt.lateral_offset;
   // Discrete dampers coupling the modes: the whole Phi^T C Phi, by complex modes (exact; one
   // non-symmetric eigen-solve, seconds on the tracked model) instead of eq. 20's diagonal.
-  const dynamics::SpectralRide ride(modal, lateral, rows, road, spectral,
+  const dynamics::SpectralRide ride(modal, lateral, rated.rows, road, spectral,
                                     dynamics::modalDamping(modal, sys));
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
   const double damping_coupling = modal.maxOffDiagonalDampingRatio();
@@ -237,23 +304,22 @@ void runSpectralRide(const RideOptions& opt) {
 
   RideRuns<Run> rate([&](double speed_kmh) {
     const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / kKmhPerMs);
-    Run run;
+    Run run = runOf(r, rated, points.size());
     const Vector f = ride.grid(speed_kmh / kKmhPerMs);
     run.frequencies = f.size();
     run.low_hz = f(0);
     run.high_hz = f(f.size() - 1);
-    run.points = r.outputs;
     return run;
   });
   rate.sweep(sweep);
   std::vector<RideCriterion<Run>> criteria;
   for (std::size_t i = 0; i < points.size(); ++i)
     criteria.push_back(
-        {[i](const Run& r) { return r.points[i].absorbed_power; }, opt.power_limit_w});
+        {[i](const Run& r) { return r.points[i].z.absorbed_power; }, opt.power_limit_w});
   const std::vector<dynamics::LimitCrossing> limits = rate.limits(criteria, opt.tolerance_kmh);
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
-  warn(&warnings, bandCutWarning(opt, ride, points, road, sweep, runs));
+  warn(&warnings, bandCutWarning(opt, ride, points, rated, road, sweep, runs));
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;
@@ -262,16 +328,19 @@ void runSpectralRide(const RideOptions& opt) {
 
   std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
   for (const std::string& p : points)
-    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2"})
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2",
+                          "_vibration_total_value_m_s2", "_overall_total_value_m_s2"})
       headers.push_back(p + q);
   Matrix table(static_cast<Eigen::Index>(runs.size()), static_cast<Eigen::Index>(headers.size()));
   Eigen::Index row = 0;
   for (const auto& [speed, r] : runs) {
     table(row, 0) = speed;
     table(row, 1) = r.in_sweep ? 1.0 : 0.0;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      table.block(row, static_cast<Eigen::Index>(2 + 3 * i), 1, 3) << r.points[i].absorbed_power,
-          r.points[i].weighted_rms, r.points[i].rms;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const PointRide& p = r.points[i];
+      table.block(row, static_cast<Eigen::Index>(2 + 5 * i), 1, 5) << p.z.absorbed_power,
+          p.z.weighted_rms, p.z.rms, p.total_value, p.overall_total_value;
+    }
     ++row;
   }
   // Both files or neither (a failed --psd-out does not leave a new --out beside an old PSD).
@@ -287,7 +356,7 @@ void runSpectralRide(const RideOptions& opt) {
     });
   if (!opt.psd_out.empty())
     written.write(opt.psd_out, [&](const std::string& path) {
-      writePsdTable(path, opt, ride, sweep, points, model.vehicle_name,
+      writePsdTable(path, opt, ride, sweep, points, rated, model.vehicle_name,
                     vehicle::variantName(variant), road_name);
     });
   written.commit();
@@ -326,15 +395,25 @@ void runSpectralRide(const RideOptions& opt) {
           .field("in_sweep", r.in_sweep)
           .field("frequency_band_hz", std::vector<double>{r.low_hz, r.high_hz})
           .field("frequencies", static_cast<long long>(r.frequencies))
+          .field("weighted_rms_roll_rad_s2", r.roll)
+          .field("weighted_rms_pitch_rad_s2", r.pitch)
+          .field("weighted_rms_yaw_rad_s2", r.yaw)
+          .field("rotational_total_value_m_s2", r.rotational_total_value)
           .key("points")
           .beginArray();
-      for (std::size_t i = 0; i < points.size(); ++i)
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const PointRide& p = r.points[i];
         json.beginObject()
             .field("point", points[i])
-            .field("absorbed_power_w", r.points[i].absorbed_power)
-            .field("weighted_rms_z_m_s2", r.points[i].weighted_rms)
-            .field("rms_z_m_s2", r.points[i].rms)
+            .field("absorbed_power_w", p.z.absorbed_power)
+            .field("weighted_rms_z_m_s2", p.z.weighted_rms)
+            .field("rms_z_m_s2", p.z.rms)
+            .field("weighted_rms_x_m_s2", p.weighted_rms_x)
+            .field("weighted_rms_y_m_s2", p.weighted_rms_y)
+            .field("vibration_total_value_m_s2", p.total_value)
+            .field("overall_total_value_m_s2", p.overall_total_value)
             .endObject();
+      }
       json.endArray().endObject();
     }
     json.endArray().key("limits").beginArray();
@@ -373,17 +452,18 @@ void runSpectralRide(const RideOptions& opt) {
                           coupling.str() +
                           " of the diagonal), which eq. 20's modal damping would drop"
                     : "")
-            << "\n  absorbed power P [W] and ISO 2631-1 weighted r.m.s. a_wz [m/s^2] (vertical) "
-               "per speed:\n"
+            << "\n  absorbed power P [W], ISO 2631-1 weighted r.m.s. a_wz [m/s^2] (vertical) and "
+               "the seat surface's six-axis total a_v6 [m/s^2] (Wk, Wd, We of the hull's "
+               "rotations) per speed:\n"
             << "  speed km/h";
   for (const std::string& p : points)
-    std::cout << std::setw(22) << p + " P" << std::setw(12) << "a_wz";
+    std::cout << std::setw(22) << p + " P" << std::setw(12) << "a_wz" << std::setw(12) << "a_v6";
   std::cout << "\n" << std::fixed;
   for (const auto& [speed, r] : runs) {
     std::cout << "  " << std::setw(9) << std::setprecision(2) << speed << (r.in_sweep ? " " : "*");
-    for (const dynamics::SpectralOutput& m : r.points)
-      std::cout << std::setw(22) << std::setprecision(3) << m.absorbed_power << std::setw(12)
-                << m.weighted_rms;
+    for (const PointRide& m : r.points)
+      std::cout << std::setw(22) << std::setprecision(3) << m.z.absorbed_power << std::setw(12)
+                << m.z.weighted_rms << std::setw(12) << m.overall_total_value;
     std::cout << "\n";
   }
   std::cout << "  (* speeds the bisection added)\n";

@@ -109,6 +109,17 @@ TEST(Iso2631, RotationalWeightingMatchesTheStandardsTable) {
   }
 }
 
+TEST(Iso2631, SeatSurfaceTotalsTakeTheStandardsFactors) {
+  // 8.2.3: the translations with k = 1 (3-4-12 is a Pythagorean triple), the rotations with
+  // 0.63, 0.40 and 0.20 m/rad, each axis alone and together.
+  EXPECT_DOUBLE_EQ(seatTranslationalTotalValue(3.0, 4.0, 12.0), 13.0);
+  EXPECT_DOUBLE_EQ(seatRotationalTotalValue(1.0, 0.0, 0.0), 0.63);
+  EXPECT_DOUBLE_EQ(seatRotationalTotalValue(0.0, 1.0, 0.0), 0.40);
+  EXPECT_DOUBLE_EQ(seatRotationalTotalValue(0.0, 0.0, 1.0), 0.20);
+  EXPECT_NEAR(seatRotationalTotalValue(1.0, 2.0, 3.0),
+              std::sqrt(0.63 * 0.63 + 0.8 * 0.8 + 0.6 * 0.6), 1e-15);
+}
+
 /// Largest |20 log10(|H_digital| / |W|)| over 0.1 Hz .. f_max, 20 points per decade and f_max.
 double worstErrorDb(const WeightingFilter& filter, Weighting weighting, double f_max) {
   double worst = 0.0;

@@ -180,6 +180,54 @@ TEST(SpectralRide, DefaultGridResolvesALightlyDampedResonance) {
   }
 }
 
+// Each output is weighted by its own ISO 2631-1 weighting (Wd for x and y, We for a rotation):
+// the same response rated three ways, each a_w^2 the integral of |W|^2 S_a (Simpson on a fine
+// grid), and the unweighted metrics untouched.
+TEST(SpectralRide, EachOutputTakesItsWeighting) {
+  const double m = 800.0, f_n = 1.1, k = m * std::pow(kTwoPi * f_n, 2);
+  const double c = 2.0 * 0.1 * std::sqrt(k * m);
+  const SecondOrderSystem s = test::oneDof(m, c, k, c);
+  const RoadSpectrum road;
+  SpectralRideOptions options;
+  const std::vector<Weighting> weightings = {Weighting::Wk, Weighting::Wd, Weighting::We};
+  options.weightings = weightings;
+  const ModalSystem modal(s);
+  const SpectralRide ride(modal, Vector::Zero(1), {0, 0, 0}, road, options);
+  const double speed = 6.0;
+  const SpectralRideResult r = ride.evaluate(speed);
+  auto s_a = [&](double f) {
+    const double w = kTwoPi * f;
+    const std::complex<double> h =
+        -w * w * std::complex<double>(k, w * c) / std::complex<double>(k - w * w * m, w * c);
+    return std::norm(h) * temporalRoadPsd(road, f, speed);
+  };
+  const double lo = speed * road.min_frequency, hi = speed * road.max_frequency;
+  std::vector<double> weighted;
+  for (std::size_t o = 0; o < weightings.size(); ++o) {
+    const double expected =
+        simpsonLog([&](double f) { return std::norm(iso2631Response(weightings[o], f)) * s_a(f); },
+                   lo, hi, 200001);
+    EXPECT_NEAR(std::pow(r.outputs[o].weighted_rms, 2) / expected, 1.0, 1e-5) << o;
+    EXPECT_EQ(r.outputs[o].rms, r.outputs[0].rms);
+    EXPECT_EQ(r.outputs[o].absorbed_power, r.outputs[0].absorbed_power);
+    weighted.push_back(r.outputs[o].weighted_rms);
+  }
+  // Near 1 Hz the three differ (Wk 0.48, Wd 1.01, We 0.88): a weighting ignored would show.
+  EXPECT_GT(weighted[1] / weighted[0], 1.5);
+  EXPECT_LT(weighted[2] / weighted[1], 0.95);
+  // The wider band keeps the weightings; a count that does not match the outputs is refused.
+  const SpectralRideResult wide = ride.withMaxFrequency(5.0, options).evaluate(speed);
+  EXPECT_GT(wide.outputs[2].weighted_rms, weighted[2]);
+  SpectralRideOptions two = options;
+  two.weightings.pop_back();
+  expectInputError(
+      [&] {
+        SpectralRide(modal, Vector::Zero(1), {0, 0, 0}, road, two);
+      },
+      "2 weightings for 3 output rows");
+  expectInputError([&] { ride.withMaxFrequency(5.0, two); }, "2 weightings for 3 output rows");
+}
+
 // The PSD is Σ_sides |H_v,side|^2 S_h with H_v the travelled FRF (frfDirect), on a random
 // Rayleigh-damped model (modal = direct), independent sides included.
 TEST(SpectralRide, PsdIsTheTravelledFrfOfEachSide) {

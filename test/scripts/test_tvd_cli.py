@@ -54,6 +54,18 @@ def read_csv(path):
     return header, body
 
 
+def iso2631_transition_weighting(f, corner_hz):
+    """|W(j 2 pi f)|^2 of ISO 2631-1's Wd (corner 2 Hz) or We (1 Hz): the 0.4 Hz high-pass and
+    100 Hz low-pass (Butterworth) and the a-v transition (1 + s/w) / (1 + s/(0.63 w) + s^2/w^2),
+    with no upward step."""
+    s = 2j * np.pi * np.asarray(f)
+    w1, w2, w = 2 * np.pi * 0.4, 2 * np.pi * 100.0, 2 * np.pi * corner_hz
+    q1 = 1 / np.sqrt(2)
+    h = (s ** 2 / (s ** 2 + w1 * s / q1 + w1 ** 2) * w2 ** 2 / (s ** 2 + w2 * s / q1 + w2 ** 2)
+         * (1 + s / w) / (1 + s / (0.63 * w) + s ** 2 / w ** 2))
+    return np.abs(h) ** 2
+
+
 def read_terrain_csv(path):
     """A terrain CSV as `tvd terrain` writes it (comment lines, the header x,y_1,...,y_m, then
     the station and the heights per row): (lateral positions, stations, heights)."""
@@ -1576,13 +1588,14 @@ class TvdCliTest(unittest.TestCase):
                              "--points", points, "--cache-dir", self.cache, *args)
 
     def simulated_ride(self, road):
-        """tvd ride's time-domain metrics on `road` at SPECTRAL_SPEEDS, {(speed, point): metrics}
-        (limits out of reach: the sweep only, no bisection)."""
+        """tvd ride's time-domain metrics on `road` at SPECTRAL_SPEEDS: {(speed, point): metrics}
+        and {speed: run} (limits out of reach: the sweep only, no bisection)."""
         d = self.tvd_json("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", road,
                           "--speeds", self.SPECTRAL_SPEEDS, "--points", "crew_seat,hull",
                           "--power-limit-w", "1e9", "--peak-limit-g", "1e9",
                           "--cache-dir", self.cache)
-        return {(r["speed_kmh"], p["point"]): p for r in d["runs"] for p in r["points"]}
+        return ({(r["speed_kmh"], p["point"]): p for r in d["runs"] for p in r["points"]},
+                {r["speed_kmh"]: r for r in d["runs"]})
 
     def test_ride_spectral_agrees_with_the_time_domain(self):
         """tvd ride --iso8608 C against tvd ride --track on a 600 m class-C road of tvd terrain
@@ -1600,14 +1613,32 @@ class TvdCliTest(unittest.TestCase):
             left, right = (h, 0 * h) if side == "left" else (0 * h, h)
             np.savetxt(path, np.column_stack([x, right, right, left, left]), delimiter=",",
                        header="x,-2.5,-0.05,0.05,2.5", comments="", fmt="%.17g")
-        spectral = {}
+        spectral, spectral_runs = {}, {}
         for name, extra in (("uniform", ()), ("sides", ("--independent-sides",))):
             d = self.spectral_ride("--iso8608", "C", "--speeds", self.SPECTRAL_SPEEDS,
                                    "--power-limit-w", "1e9", *extra)
             spectral[name] = {(r["speed_kmh"], p["point"]): p for r in d["runs"]
                               for p in r["points"]}
-        uniform = self.simulated_ride(road)
-        left, right = self.simulated_ride(sides["left"]), self.simulated_ride(sides["right"])
+            spectral_runs[name] = {r["speed_kmh"]: r for r in d["runs"]}
+        uniform, uniform_runs = self.simulated_ride(road)
+        left, left_runs = self.simulated_ride(sides["left"])
+        right, right_runs = self.simulated_ride(sides["right"])
+        # The hull's rotations (We), per run: pitch on the uniform road, roll too with the sides
+        # apart (a mean square adds over the sides).
+        for speed in (15, 40):
+            s, i = spectral_runs["uniform"][speed], spectral_runs["sides"][speed]
+            u, l, r = (runs[speed] for runs in (uniform_runs, left_runs, right_runs))
+            for axis in ("roll", "pitch", "yaw", "rotational_total_value"):
+                key = (f"weighted_rms_{axis}_rad_s2" if axis != "rotational_total_value"
+                       else "rotational_total_value_m_s2")
+                both = np.hypot(l[key], r[key])
+                self.assertAlmostEqual(both / i[key], 1.0, delta=self.SPECTRAL_AWZ_TOLERANCE,
+                                       msg=f"{speed} {key} sides")
+                if axis == "pitch":
+                    self.assertAlmostEqual(u[key] / s[key], 1.0,
+                                           delta=self.SPECTRAL_AWZ_TOLERANCE, msg=f"{speed} {key}")
+            self.assertGreater(i["weighted_rms_roll_rad_s2"], 0.5 * i["weighted_rms_pitch_rad_s2"])
+            self.assertLess(s["weighted_rms_roll_rad_s2"], 1e-4 * s["weighted_rms_pitch_rad_s2"])
         for key, s in spectral["uniform"].items():
             i = spectral["sides"][key]
             self.assertAlmostEqual(uniform[key]["absorbed_power_w"] / s["absorbed_power_w"], 1.0,
@@ -1620,6 +1651,15 @@ class TvdCliTest(unittest.TestCase):
             awz = np.hypot(left[key]["weighted_rms_z_m_s2"], right[key]["weighted_rms_z_m_s2"])
             self.assertAlmostEqual(awz / i["weighted_rms_z_m_s2"], 1.0,
                                    delta=self.SPECTRAL_AWZ_TOLERANCE, msg=key)
+            # The totals over the seat's axes (Wd of x and y, We of the hull's rotations): each
+            # axis's mean square adds over the sides, so the totals do too.
+            for total in ("vibration_total_value_m_s2", "overall_total_value_m_s2"):
+                self.assertAlmostEqual(uniform[key][total] / s[total], 1.0,
+                                       delta=self.SPECTRAL_AWZ_TOLERANCE, msg=f"{key} {total}")
+                both = np.hypot(left[key][total], right[key][total])
+                self.assertAlmostEqual(both / i[total], 1.0, delta=self.SPECTRAL_AWZ_TOLERANCE,
+                                       msg=f"{key} {total} sides")
+                self.assertGreater(i[total], i["weighted_rms_z_m_s2"], key)
             # The sides differ: independent profiles are not the uniform road's.
             self.assertGreater(abs(i["absorbed_power_w"] / s["absorbed_power_w"] - 1.0), 0.05)
 
@@ -1673,7 +1713,9 @@ class TvdCliTest(unittest.TestCase):
                                    rtol=1e-8)
         # --psd-out: at each speed of --speeds, the grid the JSON describes, the road PSD
         # G_d(f/v)/v (closed form), and per point S_a, |W_k|^2 S_a, K S_a whose trapezoid is the
-        # run's a_rms^2, a_wz^2, P (to the CSV's 12 digits against the JSON's 10).
+        # run's a_rms^2, a_wz^2, P (to the CSV's 12 digits against the JSON's 10); its raw x and
+        # y PSDs, and the hull's roll, pitch and yaw PSDs, which weighted here by the analogue
+        # Wd and We integrate to the JSON's a_wx^2, a_wy^2 and the rotations' a_w^2.
         psd_header, psd = read_csv(psd_out)
         self.assertEqual(psd_header[:6], ["speed_kmh", "frequency_hz", "road_psd_m2_hz",
                                           "crew_seat_psd_z_m2_s4_hz", "crew_seat_wk_psd_z_m2_s4_hz",
@@ -1689,13 +1731,24 @@ class TvdCliTest(unittest.TestCase):
             v = speed / 3.6
             np.testing.assert_allclose(rows_v[:, 2], 256e-6 * (f / (0.1 * v)) ** -2 / v, rtol=1e-9)
             self.assertAlmostEqual(np.trapz(rows_v[:, 2], f) / band, 1.0, delta=1e-4)
-            for k, p in enumerate(run["points"]):
-                cols = rows_v[:, 3 + 3 * k:6 + 3 * k]
-                self.assertTrue(np.all(cols >= 0))
-                for col, value in ((0, p["rms_z_m_s2"] ** 2), (1, p["weighted_rms_z_m_s2"] ** 2),
-                                   (2, p["absorbed_power_w"])):
-                    self.assertAlmostEqual(np.trapz(cols[:, col], f) / value, 1.0, delta=1e-8,
-                                           msg=(speed, p["point"], col))
+            wd, we = iso2631_transition_weighting(f, 2.0), iso2631_transition_weighting(f, 1.0)
+            for p in run["points"]:
+                name = p["point"]
+                for column, weight, value in (
+                        ("_psd_z_m2_s4_hz", 1.0, p["rms_z_m_s2"] ** 2),
+                        ("_wk_psd_z_m2_s4_hz", 1.0, p["weighted_rms_z_m_s2"] ** 2),
+                        ("_power_density_z_w_hz", 1.0, p["absorbed_power_w"]),
+                        ("_psd_x_m2_s4_hz", wd, p["weighted_rms_x_m_s2"] ** 2),
+                        ("_psd_y_m2_s4_hz", wd, p["weighted_rms_y_m_s2"] ** 2)):
+                    density = rows_v[:, psd_header.index(name + column)]
+                    self.assertTrue(np.all(density >= 0))
+                    self.assertAlmostEqual(np.trapz(weight * density, f) / value, 1.0,
+                                           delta=1e-8, msg=(speed, name, column))
+            for axis in ("roll", "pitch", "yaw"):
+                density = rows_v[:, psd_header.index(f"hull_psd_{axis}_rad2_s4_hz")]
+                self.assertAlmostEqual(np.trapz(we * density, f)
+                                       / run[f"weighted_rms_{axis}_rad_s2"] ** 2, 1.0,
+                                       delta=1e-8, msg=(speed, axis))
         limits = {l["point"]: l for l in c["limits"]}
         self.assertEqual(set(limits["crew_seat"]), {"point", "absorbed_power"})
         for point, l in limits.items():

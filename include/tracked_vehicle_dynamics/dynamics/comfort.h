@@ -189,6 +189,22 @@ struct ComfortMetrics {
   std::size_t samples = 0;
 };
 
+/// ISO 2631-1:1997 (8.2, seated comfort) rotational multiplying factors at the supporting seat
+/// surface [m/rad]: roll (rx), pitch (ry), yaw (rz).
+struct SeatRotationFactors {
+  static constexpr double roll = 0.63;
+  static constexpr double pitch = 0.40;
+  static constexpr double yaw = 0.20;
+};
+
+/// Vibration total value of the seat surface's translations (ISO 2631-1 8.2.3, comfort,
+/// k_x = k_y = k_z = 1): a_v = sqrt(a_wx^2 + a_wy^2 + a_wz^2) [m/s^2] of the Wd, Wd, Wk weighted
+/// r.m.s. values [m/s^2].
+double seatTranslationalTotalValue(double x, double y, double z);
+/// The same of its rotations: a_r = sqrt((0.63 a_wrx)^2 + (0.40 a_wry)^2 + (0.20 a_wrz)^2)
+/// [m/s^2] of the We weighted r.m.s. roll, pitch and yaw accelerations [rad/s^2].
+double seatRotationalTotalValue(double roll, double pitch, double yaw);
+
 /// ISO 2631-1:1997's tests of whether the weighted r.m.s. alone describes a signal (6.2.1,
 /// 6.3.3): when the signal carries shocks or transients, the standard asks for the VDV or the
 /// MTVV to be reported beside a_w,rms. All 0 (and sufficient) for a_w,rms = 0.

@@ -22,7 +22,9 @@
 // Metrics of each output (trapezoidal rule in f on the grid below), as ComfortMeter measures them
 // in the time domain on a long stationary run:
 //   r.m.s. acceleration      a_rms = sqrt(∫ S_a df)                    [m/s^2]
-//   ISO 2631-1 weighted      a_w   = sqrt(∫ |W_k(j2πf)|^2 S_a df)      [m/s^2]  (comfort.h)
+//   ISO 2631-1 weighted      a_w   = sqrt(∫ |W(j2πf)|^2 S_a df)        [m/s^2]  (comfort.h)
+//       W = W_k unless SpectralRideOptions::weightings gives the output another (W_d for x and
+//       y, W_e for an angular acceleration, whose a_w is then in rad/s^2)
 //   absorbed power           P     = ∫ K(f) S_a df,  K = |H_p(j2πf)|^2 [W]      (comfort.h)
 // Peaks (the 2.5 g criterion) have no counterpart: a PSD gives the variance of a Gaussian
 // response, not the largest value of one road or obstacle.
@@ -54,6 +56,7 @@
 
 #include <vector>
 
+#include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/input_delay.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
@@ -82,6 +85,9 @@ struct SpectralRideOptions {
   double points_per_decade = 400.0;
   /// Keep the grid and S_a per output in the result (SpectralRideResult::psd).
   bool keep_psd = false;
+  /// ISO 2631-1 weighting of each output's a_w, in the order of the output rows; empty: Wk for
+  /// every output.
+  std::vector<Weighting> weightings;
 };
 
 /// Φ^T C Φ [modes x modes] of `system` on the modes of `modal` (ModalSystem(system)): the whole
@@ -96,7 +102,7 @@ void checkSpectralInput(const RoadSpectrum& road, const SpectralRideOptions& opt
 /// What the spectral method gives at one output.
 struct SpectralOutput {
   double rms = 0.0;             ///< a_rms [m/s^2]
-  double weighted_rms = 0.0;    ///< a_w, ISO 2631-1 Wk [m/s^2]
+  double weighted_rms = 0.0;    ///< a_w, ISO 2631-1, the output's weighting [m/s^2, rad/s^2]
   double absorbed_power = 0.0;  ///< P [W]
 };
 
@@ -124,7 +130,8 @@ class SpectralRide {
   /// (maxOffDiagonalRatio above kModalDampingCouplingTolerance) the response is exact by complex
   /// modes (see above); empty, or diagonal: eq. 20 with `modal`'s damping coefficients. Throws
   /// InputError for a matrix of the wrong size or not finite, SolverError when the eigen-solve
-  /// fails or its eigenvectors are not independent to working precision.
+  /// fails or its eigenvectors are not independent to working precision. Throws InputError when
+  /// options.weightings is neither empty nor one per output row.
   SpectralRide(const ModalSystem& modal, const Vector& input_lateral,
                const std::vector<DofIndex>& output_rows, const RoadSpectrum& road,
                const SpectralRideOptions& options = {}, const Matrix& modal_damping = Matrix());
@@ -139,7 +146,7 @@ class SpectralRide {
   const RoadSpectrum& road() const { return road_; }
   /// The same model, sides and modes on the road with its band's top at max_frequency
   /// [cycles/m], with `options`: no second eigen-solve. Throws as the constructor for a band or
-  /// options it refuses.
+  /// options it refuses (weightings included).
   SpectralRide withMaxFrequency(double max_frequency, const SpectralRideOptions& options) const;
   /// True when the damping couples the modes and the complex modes carry the response.
   bool complexModes() const { return complex_modes_; }
@@ -156,6 +163,8 @@ class SpectralRide {
 
   /// Σ_sides |H_v,side|^2 [grid x outputs] by eq. 20 (real modes) or by the complex modes.
   Matrix realModeGain(const Vector& f, double speed) const;
+  /// Throws InputError unless options_.weightings is empty or one per output.
+  void checkWeightings() const;
   Matrix complexModeGain(const Vector& f, double speed) const;
 
   std::vector<Side> sides_;
