@@ -215,29 +215,28 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     bool stepped = false;
     const std::vector<std::string> doubts = judgePatch(patch, &stepped);
     const bool taken = vehicle_->addTerrain(patch);
-    // Kept for a jump back of ROS time even when dropped: a bag loop's first patches may reach
-    // the node before the /clock message of the jump, when the vehicle is at the end of the
-    // previous loop and they lie wholly behind it (reapplyRecentInputs).
-    if (use_sim_time_)
-      rememberPatch(msg);
+    std::string dropped;
     if (!taken) {
-      // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station
-      // frame mistake. Said once per kWarnPeriod and counted, not taken for terrain.
-      ++events_.patches_behind;
       std::ostringstream text;
       text << "patch at x = " << patch.start_station << " .. "
            << patch.start_station + patch.spacing * static_cast<double>(patch.heights.cols() - 1)
            << " m, rearmost contact at " << vehicle_->rearContactStation() << " m";
-      last_behind_patch_ = text.str();
-      TVD_WARN_THROTTLE(kWarnPeriod,
-                        "%s: terrain %s: wholly behind the vehicle by more "
-                        "than ~terrain_keep_behind (%g m), dropped%s",
-                        nodeName(), last_behind_patch_.c_str(),
-                        params_.vehicle_options.terrain_keep_behind,
-                        use_sim_time_ ? " (re-applied if ROS time jumps back to its stamp)" : "");
-      return;
+      dropped = text.str();
     }
+    // Valid, but behind what the buffer keeps: a source lagging the vehicle, or a station frame
+    // mistake, counted and said. On simulated time it is kept instead, and judged when a jump
+    // back re-applies it or its window closes: a bag loop's first patches reach the node before
+    // the /clock message of the jump, while the vehicle stands at the end of the pass before,
+    // and are no fault (reapplyRecentInputs, expireRecentPatches).
+    if (use_sim_time_)
+      rememberPatch(msg, dropped);
+    else if (!taken)
+      reportDroppedPatch(dropped);
+    if (!taken)
+      return;
     flat_since_restart_ = false;
+    if (holding_for_terrain_)
+      terrain_in_hold_ = true;  // the hold ends at the next /clock (onClock)
     ++events_.patches_accepted;
     // The stations are along this vehicle's path by definition (TerrainProfile.msg), whatever
     // the header says; a patch that names another frame (map, or another vehicle's odom) is
@@ -296,12 +295,27 @@ bool VehicleDynamicsNode::standingOnClearedGround() const {
   return restart_cleared_ && vehicle_->speed() == 0.0 && vehicle_->station() == restart_station_;
 }
 
-void VehicleDynamicsNode::rememberPatch(const TerrainProfile::ConstPtr& msg) {
-  const ros::SteadyTime arrival = ros::SteadyTime::now();
-  const ros::SteadyTime oldest = arrival - ros::WallDuration(kRewindWindow);
-  while (!recent_patches_.empty() && recent_patches_.front().arrival < oldest)
+void VehicleDynamicsNode::rememberPatch(const TerrainProfile::ConstPtr& msg, std::string dropped) {
+  expireRecentPatches();
+  recent_patches_.push_back({msg, latest_clock_, ros::SteadyTime::now(), std::move(dropped)});
+}
+
+void VehicleDynamicsNode::expireRecentPatches() {
+  const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
+  while (!recent_patches_.empty() && recent_patches_.front().arrival < oldest) {
+    if (!recent_patches_.front().dropped.empty())
+      reportDroppedPatch(recent_patches_.front().dropped);
     recent_patches_.pop_front();
-  recent_patches_.push_back({msg, latest_clock_, arrival});
+  }
+}
+
+void VehicleDynamicsNode::reportDroppedPatch(const std::string& where) {
+  ++events_.patches_behind;
+  last_behind_patch_ = where;
+  TVD_WARN_THROTTLE(kWarnPeriod,
+                    "%s: terrain %s: wholly behind the vehicle by more than ~terrain_keep_behind "
+                    "(%g m), dropped",
+                    nodeName(), where.c_str(), params_.vehicle_options.terrain_keep_behind);
 }
 
 std::string VehicleDynamicsNode::speedProblem(double v) const {
@@ -403,12 +417,16 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
     stepped_patch_.clear();  // the offset terrain is gone
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
+  holding_for_terrain_ = terrain_in_hold_ = false;
   patches_behind_at_restart_ = events_.patches_behind;
   ++events_.resets;
   return uncovered;
 }
 
 void VehicleDynamicsNode::forgetRecentInputs() {
+  for (const RecentPatch& recent : recent_patches_)
+    if (!recent.dropped.empty())
+      reportDroppedPatch(recent.dropped);
   recent_patches_.clear();
   recent_speed_arrival_ = ros::SteadyTime();
 }
@@ -426,6 +444,10 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
   // by a restart at the next tick.
   if (clock_started_ && (msg->clock - sample_time_).toNSec() < -step_ns_)
     restartAfterJump(msg->clock);
+  // A held restart goes on at the first /clock after the loop's first patch: rosbag sends the
+  // loop's speed with it, on another connection, which has then arrived too.
+  else if (terrain_in_hold_)
+    holding_for_terrain_ = terrain_in_hold_ = false;
   latest_clock_ = msg->clock;
 }
 
@@ -434,9 +456,21 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   // Every reset is said (not throttled): each one loses the vehicle's state and speed.
   ROS_WARN("%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0",
            nodeName(), (sample_time_ - now).toSec());
+  const bool had_terrain = !flat_since_restart_;
   restart();
   sample_time_ = now;
   reapplyRecentInputs(now);
+  // The old pass's patches lost in the re-application belong to it, not to the new run.
+  patches_behind_at_restart_ = events_.patches_behind;
+  // A bag loop's first patches may reach the node after its /clock has moved on (a loaded
+  // machine, separate connections): stepping meanwhile would drive the restarted vehicle over the
+  // flat ground of the restart, unlike the first loop. So when the run before had terrain and
+  // none came back with the jump, the vehicle waits for it (at most ~catch_up_limit of simulated
+  // time, which the catch-up then steps exactly on the patches; onClock ends the hold).
+  if (had_terrain && vehicle_->terrain().empty()) {
+    holding_for_terrain_ = true;
+    ++events_.terrain_holds;
+  }
   if (now.isZero()) {
     // Back to time 0 (a simulator's world reset): ROS time 0 means "no time yet", as before the
     // first /clock. The vehicle waits at rest and its first sample is stamped when the clock
@@ -482,10 +516,13 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
   for (const RecentPatch& recent : recent_patches_) {
     const ros::Time& stamp = recent.msg->header.stamp;
-    if (recent.arrival < oldest || stamp.isZero())
+    // Not of the new time: a patch dropped as wholly behind is lost for good.
+    if (recent.arrival < oldest || stamp.isZero() ||
+        std::abs((stamp - now).toSec()) >= std::abs((stamp - recent.ros_arrival).toSec())) {
+      if (!recent.dropped.empty())
+        reportDroppedPatch(recent.dropped);
       continue;
-    if (std::abs((stamp - now).toSec()) >= std::abs((stamp - recent.ros_arrival).toSec()))
-      continue;
+    }
     try {
       const TerrainPatch patch = fromMsg(*recent.msg);
       // Judged again against the restarted vehicle's flat ground: a loop of absolute altitudes
@@ -559,6 +596,8 @@ void VehicleDynamicsNode::handleMessages(const ros::WallDuration& wait) {
 void VehicleDynamicsNode::step() {
   const ros::Time t = now();
   const ros::SteadyTime wall = ros::SteadyTime::now();
+  if (!recent_patches_.empty())
+    expireRecentPatches();  // a patch dropped behind, with no jump back to re-apply it, is lost
   if (t != last_step_time_) {
     last_step_time_ = t;
     last_time_change_ = wall;
@@ -637,6 +676,17 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
                                      : (ahead_ns + step_ns_ / 2) / step_ns_;
   if (due == 0)
     return;
+  if (holding_for_terrain_) {
+    if (due < max_catch_up_steps_)
+      return;  // the steps wait for the loop's first patch (restartAfterJump)
+    holding_for_terrain_ = terrain_in_hold_ = false;
+    ++events_.terrain_holds_expired;
+    TVD_WARN_THROTTLE(kWarnPeriod,
+                      "%s: no terrain patch within ~catch_up_limit (%.3f s) of simulated time "
+                      "after ROS time jumped back, although the run before had terrain: driving "
+                      "on from station %.2f m on flat ground",
+                      nodeName(), params_.catch_up_limit, vehicle_->station());
+  }
   if (due > 1 && !use_sim_time_)  // on simulated time the /clock period sets the steps per tick
     ++events_.late_ticks;
   if (due > max_catch_up_steps_) {

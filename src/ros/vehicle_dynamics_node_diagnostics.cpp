@@ -63,6 +63,8 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("resets (total)", events_.resets);
   status.add("patches re-applied after a jump back (total)", events_.patches_reapplied);
   status.add("speeds re-applied after a jump back (total)", events_.speeds_reapplied);
+  status.add("restarts held for the loop's terrain (total)", events_.terrain_holds);
+  status.add("holds ended without terrain (total)", events_.terrain_holds_expired);
   status.add("non-finite resets (total)", events_.diverged);
   status.add("step time mean [us]", step_window_.mean() * 1e6);
   status.add("step time p99 [us]", step_p99 * 1e6);
@@ -90,6 +92,11 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     // A source wrong from its first message must not look like one that has not started.
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no terrain: the patches received were rejected");
+  } else if (holding_for_terrain_) {
+    // A bag loop's first patches due any moment: the restarted vehicle waits for them, unstepped.
+    status.summary(
+        diagnostic_msgs::DiagnosticStatus::OK,
+        "ROS time jumped back: holding the restarted vehicle for the loop's first patch");
   } else if (buffer.empty() && behind > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no terrain: the patches received lay wholly behind the vehicle (dropped)");

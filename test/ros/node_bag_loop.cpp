@@ -7,7 +7,9 @@
 //     still deliver either first),
 //   - before it, with a pause that makes sure the node has them first (the order that lost
 //     them), or
-//   - after it.
+//   - after it, or
+//   - after it and after the clock has run on for a few steps (a loaded machine: the node holds
+//     the restarted vehicle for them, then steps the held time on them).
 // Each loop must give the first loop's samples: the same stamps (none dropped on catch-up
 // bursts), stations and wheel displacements.
 #include <gtest/gtest.h>
@@ -89,12 +91,23 @@ class NodeBagLoop : public ::testing::Test {
   }
 
   /// The clock from the loop's start on, in bursts of 1 to 100 steps; every sample is recorded.
-  void play(LoopRun* run) {
+  /// With late_inputs, the inputs come only after the first `late_inputs` bursts, whose samples
+  /// the node must hold back until then.
+  void play(LoopRun* run, std::size_t late_inputs = 0) {
     recording_ = run;
     ros::Time t = start_;
-    for (int burst : bursts_) {
-      t += ros::Duration(burst * 1e-3);
+    for (std::size_t b = 0; b < bursts_.size(); ++b) {
+      t += ros::Duration(bursts_[b] * 1e-3);
       setClock(t);
+      if (b + 1 < late_inputs)
+        continue;
+      if (b + 1 == late_inputs) {
+        test::spinFor(0.1);
+        EXPECT_EQ(last_.header.stamp, start_) << "a step before the loop's first patch";
+        publishInputs();
+        test::spinFor(0.1);
+        setClock(t + ros::Duration(1e-9));  // wakes the held node at the same step
+      }
       ASSERT_TRUE(waitForSample(t)) << "no sample at " << t;
     }
     test::spinFor(0.1);  // the last messages of a burst
@@ -206,15 +219,29 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   play(&clock_first);
   expectSameRun(first, clock_first, tolerance, "inputs after the jump back");
 
+  // Fifth loop: the jump back, then 4 ms of clock (the first three bursts), then the inputs.
+  LoopRun late;
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  play(&late, 3);
+  expectSameRun(first, late, tolerance, "inputs 4 ms after the jump back");
+
   t = start_ + ros::Duration(5.0);  // let the diagnostics period pass on simulated time
   setClock(t);
   ASSERT_TRUE(test::spinUntil(
-      [&] { return diagnostics_.value(": loop", "time jumps back (total)") >= 3; }, 10.0))
+      [&] { return diagnostics_.value(": loop", "time jumps back (total)") >= 4; }, 10.0))
       << diagnostics_.describe();
   // The third loop's inputs were re-applied after the jump (the second's may have been).
   EXPECT_GE(diagnostics_.value(": loop", "patches re-applied after a jump back (total)"),
             static_cast<double>(patches_.size()));
   EXPECT_GE(diagnostics_.value(": loop", "speeds re-applied after a jump back (total)"), 1.0);
+  // The fifth loop was held (the fourth's inputs may have come before its first step) and none
+  // ran out.
+  EXPECT_GE(diagnostics_.value(": loop", "restarts held for the loop's terrain (total)"), 1.0);
+  EXPECT_EQ(diagnostics_.value(": loop", "holds ended without terrain (total)"), 0.0);
+  // The patches that arrived behind the vehicle before a jump were all re-applied: none is
+  // counted (nor warned) as dropped, so a healthy loop keeps the terrain status OK.
+  EXPECT_EQ(diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
 }
 

@@ -107,12 +107,15 @@ class VehicleDynamicsNode {
     std::uint64_t ticks = 0, late_ticks = 0;  // late: more than one step due at a tick
     std::uint64_t resets = 0;
     std::uint64_t patches_reapplied = 0, speeds_reapplied = 0;  // after a jump back
+    // Restarts after a jump back held for the loop's first patch, and holds that ran out.
+    std::uint64_t terrain_holds = 0, terrain_holds_expired = 0;
   };
   /// A terrain patch kept for kRewindWindow of wall time, in case ROS time jumps back to it.
   struct RecentPatch {
     TerrainProfile::ConstPtr msg;
     ros::Time ros_arrival;  // the loop's ROS time when it was handled
     ros::SteadyTime arrival;
+    std::string dropped;  // dropped as wholly behind: where it lay (reportDroppedPatch); else ""
   };
   /// Change of a counter since the previous diagnostics report.
   struct Window {
@@ -184,8 +187,14 @@ class VehicleDynamicsNode {
   void reapplyRecentInputs(const ros::Time& now);
   /// Standing (speed 0) where the last start or reset put it, on the flat ground it cleared to.
   bool standingOnClearedGround() const;
-  /// Keeps an accepted patch (taken, or dropped as wholly behind) for reapplyRecentInputs.
-  void rememberPatch(const TerrainProfile::ConstPtr& msg);
+  /// Keeps an accepted patch for reapplyRecentInputs: taken (dropped empty), or dropped as
+  /// wholly behind (`dropped` says where it lay), which is a fault only when no jump back
+  /// re-applies it in time (expireRecentPatches).
+  void rememberPatch(const TerrainProfile::ConstPtr& msg, std::string dropped);
+  /// The kept patches older than kRewindWindow are forgotten; those dropped are reported now.
+  void expireRecentPatches();
+  /// A valid patch wholly behind the vehicle, dropped for good: counted, named and said.
+  void reportDroppedPatch(const std::string& where);
   void publishState();
   void publishComfort();
 
@@ -238,6 +247,11 @@ class VehicleDynamicsNode {
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::vector<geometry_msgs::TransformStamped> pending_static_;  // until the first /clock
   bool flat_since_restart_ = true;  // no patch since the start or a reset that cleared the terrain
+  // A restart after a jump back of ROS time (a bag loop) whose run before it had terrain, and
+  // none re-applied: the vehicle is held at its restart, unstepped, until the loop's first patch
+  // arrives, then steps the held time on it (advanceTo) from the next /clock on (onClock).
+  bool holding_for_terrain_ = false;
+  bool terrain_in_hold_ = false;                 // a patch was taken during the hold
   std::uint64_t patches_behind_at_restart_ = 0;  // events_.patches_behind at the last restart
   // The last start or reset cleared the terrain (the contacts hold the flat ground u = 0 until a
   // patch covers them), at this station.
