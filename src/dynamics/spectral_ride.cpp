@@ -21,8 +21,8 @@ namespace {
 // Frequencies evaluated together: one matrix product forms their modal forces. 256 keeps the
 // block's products (modes x 512 doubles, about 1.8 MB for 430 modes) in cache-friendly sizes.
 constexpr Eigen::Index kBlock = 256;
-constexpr double kMinPointsPerDecade = 10.0;
-constexpr double kMaxPointsPerDecade = 1e5;
+constexpr double kMinPointsPerDecade = SpectralRideOptions::kMinPointsPerDecade;
+constexpr double kMaxPointsPerDecade = SpectralRideOptions::kMaxPointsPerDecade;
 constexpr double kMaxGridPoints = 1e6;
 
 [[noreturn]] void fail(const std::string& what) {
@@ -327,11 +327,40 @@ Matrix SpectralRide::complexModeGain(const Vector& f, double speed) const {
   return gain;
 }
 
+std::vector<SpectralRide::ModeDamping> SpectralRide::modeDamping() const {
+  std::vector<ModeDamping> modes;
+  if (complex_modes_) {
+    // λ = -ζω ± jω sqrt(1 - ζ^2): one of each conjugate pair (overdamped pairs, on the real
+    // axis, have no resonance).
+    for (Eigen::Index k = 0; k < eigenvalues_.size(); ++k) {
+      const Complex lambda = eigenvalues_(k);
+      if (lambda.imag() > 0.0)
+        modes.push_back({lambda.imag() / kTwoPi, -lambda.real() / std::abs(lambda)});
+    }
+  } else {
+    // d_r = 2 ζ_r ω_r.
+    for (Eigen::Index r = 0; r < omega_squared_.size(); ++r) {
+      const double omega = std::sqrt(std::max(omega_squared_(r), 0.0));
+      if (omega > 0.0)
+        modes.push_back({omega / kTwoPi, damping_(r) / (2.0 * omega)});
+    }
+  }
+  std::sort(modes.begin(), modes.end(), [](const ModeDamping& a, const ModeDamping& b) {
+    return a.frequency_hz < b.frequency_hz;
+  });
+  return modes;
+}
+
 SpectralRideResult SpectralRide::evaluate(double speed) const {
   const Vector f = grid(speed);
   const Eigen::Index count = f.size(), outputs = output_.rows();
   // Σ_sides |H_v,side|^2 per frequency and output.
   const Matrix gain = complex_modes_ ? complexModeGain(f, speed) : realModeGain(f, speed);
+  for (Eigen::Index i = 0; i < count; ++i)
+    if (!gain.row(i).allFinite())
+      throw SolverError("spectral ride: the response is not finite at " + brief(f(i)) +
+                        " Hz on the grid at " + brief(speed) +
+                        " m/s: an undamped mode lies on it (give the model damping)");
 
   // Trapezoidal weights on the (non-uniform) grid: ∫ g df ≈ Σ_i w_i g_i.
   Vector weight(count);

@@ -250,6 +250,49 @@ std::optional<std::string> bandCutWarning(const RideOptions& opt,
   return m.str();
 }
 
+// Modes in the bands of the speeds evaluated that the grid does not resolve: a half-power band
+// 2ζf narrower than two grid steps (ζ < h = ln(10) / points per decade; spectral_ride.h) is
+// integrated with an error of 1 % of its peak's share at 2ζ = 2h, 8 % at 2ζ = h; an undamped
+// resonance has no finite integral, so those figures are the grid's, not the model's.
+std::optional<std::string> unresolvedModeWarning(const RideOptions& opt,
+                                                 const dynamics::SpectralRide& ride,
+                                                 const dynamics::RoadSpectrum& road,
+                                                 const std::map<double, Run>& runs) {
+  const double low = runs.begin()->first / kKmhPerMs * road.min_frequency;
+  const double high = runs.rbegin()->first / kKmhPerMs * road.max_frequency;
+  const double step = std::log(10.0) / opt.points_per_decade;
+  std::vector<dynamics::SpectralRide::ModeDamping> narrow;
+  double least = step;
+  for (const auto& mode : ride.modeDamping())
+    if (mode.frequency_hz >= low && mode.frequency_hz <= high && mode.ratio < step) {
+      narrow.push_back(mode);
+      least = std::min(least, mode.ratio);
+    }
+  if (narrow.empty())
+    return std::nullopt;
+  constexpr std::size_t kListed = 5;
+  std::ostringstream m;
+  m << std::setprecision(3) << narrow.size() << " mode(s) in the bands of the speeds evaluated ("
+    << low << " .. " << high << " Hz) are damped too lightly for the frequency grid ("
+    << opt.points_per_decade << " points per decade resolve a damping ratio down to " << step
+    << "): ";
+  for (std::size_t i = 0; i < std::min(narrow.size(), kListed); ++i)
+    m << (i ? ", " : "") << narrow[i].frequency_hz << " Hz (" << narrow[i].ratio << ")";
+  if (narrow.size() > kListed)
+    m << " and " << narrow.size() - kListed << " more";
+  m << ". ";
+  const double needed = std::ceil(std::log(10.0) / least);  // inf for an undamped mode
+  if (!(needed <= dynamics::SpectralRideOptions::kMaxPointsPerDecade))
+    m << "Across an undamped resonance the PSD has no finite integral: the figures of the speeds "
+         "whose band holds one are set by the grid, not by the model; give the vehicle damping "
+         "(damping.modal_ratio, or Rayleigh damping) where its dampers do not reach";
+  else
+    m << "The trapezoid misses such a resonance's share by over 1 % (8 % at half the ratio): "
+         "--points-per-decade "
+      << static_cast<long long>(needed) << " resolves them";
+  return m.str();
+}
+
 // With independent sides the left and right profiles meet at the road's centre line: an offset
 // that carries inputs across it puts them on the other track's profile.
 std::optional<std::string> sideCrossingWarning(const RideOptions& opt,
@@ -320,6 +363,7 @@ void runSpectralRide(const RideOptions& opt) {
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
   warn(&warnings, bandCutWarning(opt, ride, points, rated, road, sweep, runs));
+  warn(&warnings, unresolvedModeWarning(opt, ride, road, runs));
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;

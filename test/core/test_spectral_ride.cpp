@@ -228,6 +228,44 @@ TEST(SpectralRide, EachOutputTakesItsWeighting) {
   expectInputError([&] { ride.withMaxFrequency(5.0, two); }, "2 weightings for 3 output rows");
 }
 
+// Each mode's damping ratio, as the grid-resolution check reads it: ζ of a 1-DOF oscillator
+// (0 undamped), and with a damper that couples two of three uncoupled oscillators (complex
+// modes) the third one undamped, the two others damped.
+TEST(SpectralRide, ModeDampingRatiosOfRealAndComplexModes) {
+  const double m = 400.0, k = m * std::pow(kTwoPi * 2.0, 2);
+  const RoadSpectrum road;
+  for (double zeta : {0.0, 0.003, 0.05}) {
+    const double c = 2.0 * zeta * std::sqrt(k * m);
+    const std::vector<SpectralRide::ModeDamping> modes =
+        rideOf(test::oneDof(m, c, k, c), {0}, road).modeDamping();
+    ASSERT_EQ(modes.size(), 1u);
+    EXPECT_NEAR(modes[0].frequency_hz, 2.0, 1e-12);
+    EXPECT_NEAR(modes[0].ratio, zeta, 1e-12);
+  }
+  SecondOrderSystem s;
+  const Eigen::Vector3d f_n(1.5, 2.5, 4.0);
+  s.mass = Matrix::Identity(3, 3) * m;
+  s.stiffness = Matrix::Zero(3, 3);
+  for (int i = 0; i < 3; ++i)
+    s.stiffness(i, i) = m * std::pow(kTwoPi * f_n(i), 2);
+  s.damping = Matrix::Zero(3, 3);
+  addDamper(&s, 0, 1, 500.0);
+  s.input_stiffness = s.stiffness;
+  s.input_damping = Matrix::Zero(3, 3);
+  s.input_stations = Eigen::Vector3d(1.0, 0.0, -1.0);
+  s.input_lateral = Vector::Zero(3);
+  s.output = Matrix::Identity(3, 3);
+  s.output_names = {"a uz", "b uz", "c uz"};
+  const SpectralRide ride = rideOf(s, {0, 1, 2}, road, false, true);
+  ASSERT_TRUE(ride.complexModes());
+  const std::vector<SpectralRide::ModeDamping> modes = ride.modeDamping();
+  ASSERT_EQ(modes.size(), 3u);
+  EXPECT_GT(modes[0].ratio, 1e-3);
+  EXPECT_GT(modes[1].ratio, 1e-3);
+  EXPECT_NEAR(modes[2].frequency_hz, 4.0, 1e-9);  // untouched by the damper
+  EXPECT_LT(modes[2].ratio, 1e-12);
+}
+
 // The PSD is Σ_sides |H_v,side|^2 S_h with H_v the travelled FRF (frfDirect), on a random
 // Rayleigh-damped model (modal = direct), independent sides included.
 TEST(SpectralRide, PsdIsTheTravelledFrfOfEachSide) {

@@ -81,7 +81,10 @@ struct RoadSpectrum {
 double temporalRoadPsd(const RoadSpectrum& road, double frequency, double speed);
 
 struct SpectralRideOptions {
-  /// Grid density [points per decade of frequency], in [10, 1e5].
+  static constexpr double kMinPointsPerDecade = 10.0;
+  static constexpr double kMaxPointsPerDecade = 1e5;
+  /// Grid density [points per decade of frequency], in [kMinPointsPerDecade,
+  /// kMaxPointsPerDecade].
   double points_per_decade = 400.0;
   /// Keep the grid and S_a per output in the result (SpectralRideResult::psd).
   bool keep_psd = false;
@@ -136,8 +139,19 @@ class SpectralRide {
                const std::vector<DofIndex>& output_rows, const RoadSpectrum& road,
                const SpectralRideOptions& options = {}, const Matrix& modal_damping = Matrix());
 
-  /// The metrics at speed v [m/s]. Throws InputError unless v > 0 and finite.
+  /// The metrics at speed v [m/s]. Throws InputError unless v > 0 and finite, SolverError when
+  /// the response is not finite at a frequency of the grid (an undamped mode on it).
   SpectralRideResult evaluate(double speed) const;
+  /// Each mode above 0 Hz, by ascending frequency: its natural frequency ω_r / 2π and damping
+  /// ratio d_r / (2 ω_r), or with the complex modes, of each conjugate pair λ = -ζω ± jω_d,
+  /// ω_d / 2π and -Re λ / |λ|. The grid resolves a resonance whose half-power band, 2ζ f,
+  /// spans two steps (ζ ≥ ln(10) / points_per_decade: the trapezoid then errs by under 1 % of
+  /// it; 8 % at one step, 25 % at 0.7); an undamped one (ζ = 0) has no finite integral at all.
+  struct ModeDamping {
+    double frequency_hz = 0.0;
+    double ratio = 0.0;
+  };
+  std::vector<ModeDamping> modeDamping() const;
 
   /// The frequency grid [Hz] at speed v [m/s].
   Vector grid(double speed) const;
