@@ -77,8 +77,6 @@ std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
   return headers;
 }
 
-constexpr std::size_t kMaxMatVariableName = 63;
-
 void run(const RideOptions& opt) {
   const std::vector<double> sweep = parseSpeedSweep(opt.speeds);
   const terrain::Terrain track = terrain::loadTrack(opt.track);
@@ -106,15 +104,7 @@ void run(const RideOptions& opt) {
     warn(&warnings, w);
   const RideModel model = loadRideModel(opt, &track, &warnings);
   const std::vector<std::string>& points = model.points;
-  // A point name of up to 40 characters (the description's limit) with its longest suffix can
-  // exceed a MAT variable's 63: refused before the sweep, not after it.
-  if (io::lowerExtension(opt.out_file) == ".mat")
-    for (const std::string& h : rideHeaders(points))
-      if (h.size() > kMaxMatVariableName)
-        throw InputError("ride: --out " + opt.out_file + ": the column '" + h + "' (" +
-                         std::to_string(h.size()) +
-                         " characters) is longer than a MAT "
-                         "variable name may be (63): write .csv, or shorten the point's name");
+  checkMatColumns("out", opt.out_file, rideHeaders(points));
   const ReducedModelSource& reduced = model.reduced;
   const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;

@@ -7,6 +7,7 @@
 #include "point_list.h"
 #include "terrain_coverage.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/file_type.h"
 #include "vehicle_analysis.h"
 
 namespace tracked_vehicle_dynamics {
@@ -44,6 +45,19 @@ dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()
     if (known_speeds().size() == speeds.size())
       return c;
   }
+}
+
+void checkMatColumns(const std::string& option, const std::string& file,
+                     const std::vector<std::string>& columns) {
+  constexpr std::size_t kMaxMatVariableName = 63;
+  if (io::lowerExtension(file) != ".mat")
+    return;
+  for (const std::string& c : columns)
+    if (c.size() > kMaxMatVariableName)
+      throw InputError("ride: --" + option + " " + file + ": the column '" + c + "' (" +
+                       std::to_string(c.size()) +
+                       " characters) is longer than a MAT variable "
+                       "name may be (63): write .csv, or shorten the point's name");
 }
 
 std::vector<std::string> choosePoints(const std::string& spec, bool given,

@@ -33,6 +33,12 @@ struct RideModel {
 RideModel loadRideModel(const RideOptions& opt, const terrain::Terrain* track,
                         std::vector<std::string>* warnings);
 
+/// A table's columns as MAT variables: when `file` (given to --`option`) is a .mat file, throws
+/// InputError for a column name longer than a MAT variable may be (63 characters; a point name
+/// of up to 40, the description's limit, with a long suffix can be), before any run.
+void checkMatColumns(const std::string& option, const std::string& file,
+                     const std::vector<std::string>& columns);
+
 /// One limit to search: the metric of point-run `value(run)` and its threshold.
 template <typename Run>
 struct RideCriterion {

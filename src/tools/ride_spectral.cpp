@@ -139,11 +139,7 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
 // so that the trapezoid over one speed's rows gives that run's a_rms^2, a_wz^2 and P (the
 // integrals SpectralRide::evaluate takes on the same grid), then the raw PSDs of its x and y
 // accelerations; last, those of the hull's roll, pitch and yaw accelerations [(rad/s^2)^2/Hz].
-void writePsdTable(const std::string& path, const RideOptions& opt,
-                   const dynamics::SpectralRide& ride, const std::vector<double>& speeds,
-                   const std::vector<std::string>& points, const RatedOutputs& rated,
-                   const std::string& vehicle_name, const std::string& variant,
-                   const std::string& road_name) {
+std::vector<std::string> psdHeaders(const std::vector<std::string>& points) {
   std::vector<std::string> headers = {"speed_kmh", "frequency_hz", "road_psd_m2_hz"};
   for (const std::string& p : points)
     for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz",
@@ -152,6 +148,25 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
   for (const char* r :
        {"hull_psd_roll_rad2_s4_hz", "hull_psd_pitch_rad2_s4_hz", "hull_psd_yaw_rad2_s4_hz"})
     headers.push_back(r);
+  return headers;
+}
+
+// The --out table's columns: speed, whether in the sweep, five metrics per point.
+std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
+  std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
+  for (const std::string& p : points)
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2",
+                          "_vibration_total_value_m_s2", "_overall_total_value_m_s2"})
+      headers.push_back(p + q);
+  return headers;
+}
+
+void writePsdTable(const std::string& path, const RideOptions& opt,
+                   const dynamics::SpectralRide& ride, const std::vector<double>& speeds,
+                   const std::vector<std::string>& points, const RatedOutputs& rated,
+                   const std::string& vehicle_name, const std::string& variant,
+                   const std::string& road_name) {
+  const std::vector<std::string> headers = psdHeaders(points);
   std::vector<dynamics::SpectralRideResult> results;
   Eigen::Index rows = 0;
   for (double speed_kmh : speeds) {
@@ -330,6 +345,9 @@ void runSpectralRide(const RideOptions& opt) {
   const ReducedModelSource& reduced = model.reduced;
   const vehicle::Variant variant = reduced.variant;
   const dynamics::SecondOrderSystem& sys = reduced.model.system;
+  // A long point name's columns would fail a .mat file after the sweep: refused before it.
+  checkMatColumns("out", opt.out_file, rideHeaders(points));
+  checkMatColumns("psd-out", opt.psd_out, psdHeaders(points));
   const RatedOutputs rated(sys, points);
   spectral.weightings = rated.weightings;
 
@@ -370,11 +388,7 @@ void runSpectralRide(const RideOptions& opt) {
   const double rms_height = std::sqrt(terrain::iso8608Variance(road.road_class, road.min_frequency,
                                                                road.max_frequency, road.waviness));
 
-  std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
-  for (const std::string& p : points)
-    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2",
-                          "_vibration_total_value_m_s2", "_overall_total_value_m_s2"})
-      headers.push_back(p + q);
+  const std::vector<std::string> headers = rideHeaders(points);
   Matrix table(static_cast<Eigen::Index>(runs.size()), static_cast<Eigen::Index>(headers.size()));
   Eigen::Index row = 0;
   for (const auto& [speed, r] : runs) {

@@ -2566,6 +2566,12 @@ class TvdCliTest(unittest.TestCase):
                                 f"'{name}_vibration_total_value_m_s2' (67 characters)",
                                 "write .csv")
         self.assertFalse(os.path.exists(self.path("long.mat")))
+        # The spectral method's table has the same column, refused before its sweep too.
+        self.assert_input_error(["ride", "--vehicle", vehicle, "--variant", "untracked",
+                                 "--iso8608", "C", "--out", self.path("long.mat")],
+                                f"--out {self.path('long.mat')}: the column "
+                                f"'{name}_vibration_total_value_m_s2' (67 characters)")
+        self.assertFalse(os.path.exists(self.path("long.mat")))
 
     def test_an_output_over_an_input_file_is_refused(self):
         """--out naming an input file (however spelt) is refused before any work, and the input
