@@ -38,13 +38,6 @@ std::vector<bool> inputsWithRate(const dynamics::SecondOrderSystem& system,
   return flags;
 }
 
-dynamics::ComfortOptions comfortOptions(const OnlineVehicleOptions& options) {
-  dynamics::ComfortOptions comfort;
-  comfort.running_rms_time = options.comfort_running_rms_time;
-  comfort.absorbed_power = dynamics::absorbedPowerVerticalSections();  // comfort.h: Chrono's filter
-  return comfort;
-}
-
 // a_max and d_max of the options, checked; one 0 and the other > 0: the 0 one takes the other's
 // value (online_vehicle.h).
 std::pair<double, double> slewRates(const OnlineVehicleOptions& options) {
@@ -141,7 +134,7 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
       simulator_(makeSimulator(model, options, &tie_warning_)),
       sampler_(model.system.input_stations, model.system.input_lateral,
                inputsWithRate(model.system, simulator_.quasiStaticModeCount() > 0)),
-      comfort_(options.rate, comfortOptions(options)),
+      comfort_(options.rate, options.comfort_running_rms_time),
       comfort_point_(options.comfort_point),
       equilibrium_solver_(model.system, model.gravity_load) {
   if (!std::isfinite(options.lateral_offset)) {
@@ -173,6 +166,8 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   if (comfort_point_.empty())
     comfort_point_ = "hull";
   comfort_row_ = acc_offset_ + outputRow(comfort_point_ + " uz");
+  comfort_x_row_ = acc_offset_ + outputRow(comfort_point_ + " ux");
+  comfort_y_row_ = acc_offset_ + outputRow(comfort_point_ + " uy");
 
   std::tie(max_acceleration_, max_deceleration_) = slewRates(options);
   input_.setZero(simulator_.inputCount());
@@ -370,7 +365,10 @@ StepResult OnlineVehicle::step() {
     result.diverged = true;
     return result;
   }
-  comfort_.add(acceleration);
+  // The hull is rigid: its rotations are the seat's (hull_rows_ 3..5: rx, ry, rz).
+  const Vector& y = simulator_.outputs();
+  comfort_.add({y(comfort_x_row_), y(comfort_y_row_), acceleration, y(acc_offset_ + hull_rows_[3]),
+                y(acc_offset_ + hull_rows_[4]), y(acc_offset_ + hull_rows_[5])});
   peak_acceleration_ = std::max(peak_acceleration_, std::abs(acceleration));
   return result;
 }

@@ -86,6 +86,33 @@ void toMsg(const ComfortReport& report, Comfort* msg) {
   msg->peak_acceleration = report.peak_acceleration;
   msg->duration = report.metrics.duration;
   msg->samples = report.metrics.samples;
+  msg->weighted_rms_x = report.weighted_rms_x;
+  msg->weighted_rms_y = report.weighted_rms_y;
+  msg->vibration_total_value = report.vibration_total_value;
+  msg->weighted_rms_roll = report.weighted_rms_roll;
+  msg->weighted_rms_pitch = report.weighted_rms_pitch;
+  msg->weighted_rms_yaw = report.weighted_rms_yaw;
+  msg->rotational_total_value = report.rotational_total_value;
+  msg->overall_total_value = report.overall_total_value;
+}
+
+ComfortReport comfortReport(const dynamics::SeatComfortMeter& meter, const std::string& point,
+                            double running_rms_time, double peak_acceleration) {
+  ComfortReport report;
+  report.point = point;
+  report.metrics = meter.vertical().metrics();
+  report.running_rms = meter.vertical().runningRms();
+  report.running_rms_time = running_rms_time;
+  report.peak_acceleration = peak_acceleration;
+  report.weighted_rms_x = meter.longitudinal().weightedRms();
+  report.weighted_rms_y = meter.lateral().weightedRms();
+  report.vibration_total_value = meter.translationalTotalValue();
+  report.weighted_rms_roll = meter.roll().weightedRms();
+  report.weighted_rms_pitch = meter.pitch().weightedRms();
+  report.weighted_rms_yaw = meter.yaw().weightedRms();
+  report.rotational_total_value = meter.rotationalTotalValue();
+  report.overall_total_value = meter.overallTotalValue();
+  return report;
 }
 
 ComfortReport fromMsg(const Comfort& msg) {
@@ -101,6 +128,14 @@ ComfortReport fromMsg(const Comfort& msg) {
   report.running_rms = msg.running_rms;
   report.running_rms_time = msg.running_rms_time;
   report.peak_acceleration = msg.peak_acceleration;
+  report.weighted_rms_x = msg.weighted_rms_x;
+  report.weighted_rms_y = msg.weighted_rms_y;
+  report.vibration_total_value = msg.vibration_total_value;
+  report.weighted_rms_roll = msg.weighted_rms_roll;
+  report.weighted_rms_pitch = msg.weighted_rms_pitch;
+  report.weighted_rms_yaw = msg.weighted_rms_yaw;
+  report.rotational_total_value = msg.rotational_total_value;
+  report.overall_total_value = msg.overall_total_value;
   return report;
 }
 

@@ -867,13 +867,9 @@ void VehicleDynamicsNode::publishState() {
 void VehicleDynamicsNode::publishComfort() {
   if (!comfort_pub_.listened())
     return;
-  const dynamics::ComfortMeter& meter = vehicle_->comfort();
-  ComfortReport report;
-  report.point = vehicle_->comfortPoint();
-  report.metrics = meter.metrics();
-  report.running_rms = meter.runningRms();
-  report.running_rms_time = params_.vehicle_options.comfort_running_rms_time;
-  report.peak_acceleration = vehicle_->peakAcceleration();
+  const ComfortReport report =
+      comfortReport(vehicle_->seatComfort(), vehicle_->comfortPoint(),
+                    params_.vehicle_options.comfort_running_rms_time, vehicle_->peakAcceleration());
   comfort_msg_.header.stamp = sample_time_;
   toMsg(report, &comfort_msg_);
   comfort_pub_.publisher.publish(comfort_msg_);

@@ -152,16 +152,16 @@ void run(const RideOptions& opt) {
     simulated += drive.steps() * opt.dt;
     Run r;
     // The rigid hull's rotations, which every point shares.
-    r.roll = comfort.front().roll().weightedRms();
-    r.pitch = comfort.front().pitch().weightedRms();
-    r.yaw = comfort.front().yaw().weightedRms();
-    r.rotational_total_value = comfort.front().rotationalTotalValue();
+    r.roll = comfort.front().meter().roll().weightedRms();
+    r.pitch = comfort.front().meter().pitch().weightedRms();
+    r.yaw = comfort.front().meter().yaw().weightedRms();
+    r.rotational_total_value = comfort.front().meter().rotationalTotalValue();
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const dynamics::ComfortMeter& z = comfort[i].vertical();
-      r.points.push_back({z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
-                          comfort[i].totalValue(), comfort[i].overallTotalValue(),
-                          peaks[i].peakUp() / kStandardGravity,
-                          peaks[i].peakAbsolute() / kStandardGravity});
+      const dynamics::ComfortMeter& z = comfort[i].meter().vertical();
+      r.points.push_back(
+          {z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
+           comfort[i].meter().translationalTotalValue(), comfort[i].meter().overallTotalValue(),
+           peaks[i].peakUp() / kStandardGravity, peaks[i].peakAbsolute() / kStandardGravity});
     }
     return r;
   });

@@ -13,6 +13,7 @@
 
 #include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/seat_comfort.h"
 #include "tracked_vehicle_dynamics/error.h"
 
 namespace tracked_vehicle_dynamics {
@@ -401,6 +402,63 @@ TEST(Comfort, EmptySeriesGivesZeros) {
   EXPECT_DOUBLE_EQ(meter.weightedRms(), 0.0);
   EXPECT_DOUBLE_EQ(meter.vibrationDoseValue(), 0.0);
   EXPECT_FALSE(meter.absorbedPower().has_value());
+}
+
+// The seat meter is the six single-axis meters with the standard's weightings, fed alike, and
+// the totals over them; a sample with a non-finite axis is refused whole.
+TEST(Comfort, SeatMeterIsEveryAxisWithItsWeighting) {
+  const double fs = 500.0;
+  SeatComfortMeter seat(fs, 0.5);
+  std::vector<ComfortMeter> axes;
+  for (Weighting w :
+       {Weighting::Wd, Weighting::Wd, Weighting::Wk, Weighting::We, Weighting::We, Weighting::We}) {
+    ComfortOptions o;
+    o.weighting = w;
+    o.running_rms_time = 0.5;
+    if (w == Weighting::Wk)
+      o.absorbed_power = absorbedPowerVerticalSections();
+    axes.emplace_back(fs, o);
+  }
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  for (int k = 0; k < 4000; ++k) {
+    SeatAcceleration a;
+    a.x = noise(rng);
+    a.y = 0.5 * noise(rng);
+    a.z = 2.0 * noise(rng);
+    a.roll = 0.3 * noise(rng);
+    a.pitch = 0.7 * noise(rng);
+    a.yaw = 0.1 * noise(rng);
+    seat.add(a);
+    const double values[] = {a.x, a.y, a.z, a.roll, a.pitch, a.yaw};
+    for (std::size_t i = 0; i < axes.size(); ++i)
+      axes[i].add(values[i]);
+  }
+  const ComfortMeter* seat_axes[] = {&seat.longitudinal(), &seat.lateral(), &seat.vertical(),
+                                     &seat.roll(),         &seat.pitch(),   &seat.yaw()};
+  for (std::size_t i = 0; i < axes.size(); ++i) {
+    EXPECT_EQ(seat_axes[i]->weightedRms(), axes[i].weightedRms()) << i;
+    EXPECT_EQ(seat_axes[i]->vibrationDoseValue(), axes[i].vibrationDoseValue()) << i;
+    EXPECT_EQ(seat_axes[i]->runningRms(), axes[i].runningRms()) << i;
+    EXPECT_EQ(seat_axes[i]->absorbedPower().has_value(), i == 2) << i;
+  }
+  EXPECT_EQ(*seat.vertical().absorbedPower(), *axes[2].absorbedPower());
+  const double a_v = seatTranslationalTotalValue(axes[0].weightedRms(), axes[1].weightedRms(),
+                                                 axes[2].weightedRms());
+  const double a_r =
+      seatRotationalTotalValue(axes[3].weightedRms(), axes[4].weightedRms(), axes[5].weightedRms());
+  EXPECT_DOUBLE_EQ(seat.translationalTotalValue(), a_v);
+  EXPECT_DOUBLE_EQ(seat.rotationalTotalValue(), a_r);
+  EXPECT_DOUBLE_EQ(seat.overallTotalValue(), std::hypot(a_v, a_r));
+  const std::size_t samples = seat.vertical().sampleCount();
+  SeatAcceleration bad;
+  bad.yaw = NAN;
+  expectInputError([&] { seat.add(bad); }, "non-finite");
+  EXPECT_EQ(seat.vertical().sampleCount(), samples);
+  EXPECT_EQ(seat.yaw().sampleCount(), samples);
+  seat.reset();
+  EXPECT_EQ(seat.pitch().sampleCount(), 0u);
+  EXPECT_EQ(seat.overallTotalValue(), 0.0);
 }
 
 TEST(Comfort, RejectsBadInput) {

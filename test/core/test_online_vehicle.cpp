@@ -365,6 +365,8 @@ TEST(OnlineVehicle, HullComfortPointWeighsTheHullsVerticalAcceleration) {
                      options(dynamics::DiscretizationMethod::ModalDecoupled));
   EXPECT_EQ(vehicle.comfortPoint(), "hull");
   dynamics::ComfortMeter expected(kRate);  // Wk, as the vehicle's (VDV needs no more)
+  // Every axis of the seat meter: the hull's accelerations, translations and rotations.
+  dynamics::SeatComfortMeter expected_seat(kRate);
   for (OnlineVehicle* v : {&vehicle, &seat}) {
     for (const TerrainPatch& p : patches(bump(), 50))
       v->addTerrain(p);
@@ -373,11 +375,27 @@ TEST(OnlineVehicle, HullComfortPointWeighsTheHullsVerticalAcceleration) {
   for (int k = 0; k < 600; ++k) {
     vehicle.step();
     seat.step();
-    expected.add(vehicle.hullAcceleration()(2));
+    const Vector6 a = vehicle.hullAcceleration();
+    expected.add(a(2));
+    expected_seat.add({a(0), a(1), a(2), a(3), a(4), a(5)});
   }
   EXPECT_GT(expected.vibrationDoseValue(), 0.1);
   EXPECT_NEAR(vehicle.comfort().vibrationDoseValue(), expected.vibrationDoseValue(),
               1e-12 * expected.vibrationDoseValue());
+  const dynamics::SeatComfortMeter& got = vehicle.seatComfort();
+  EXPECT_GT(expected_seat.pitch().weightedRms(), 1e-3);
+  for (const auto& [mine, theirs] : {std::pair(&got.longitudinal(), &expected_seat.longitudinal()),
+                                     std::pair(&got.lateral(), &expected_seat.lateral()),
+                                     std::pair(&got.roll(), &expected_seat.roll()),
+                                     std::pair(&got.pitch(), &expected_seat.pitch()),
+                                     std::pair(&got.yaw(), &expected_seat.yaw())})
+    EXPECT_NEAR(mine->weightedRms(), theirs->weightedRms(),
+                1e-12 * (theirs->weightedRms() + 1e-30));
+  EXPECT_NEAR(got.overallTotalValue(), expected_seat.overallTotalValue(),
+              1e-12 * expected_seat.overallTotalValue());
+  // The seat's rotations are the hull's; its translations are not.
+  EXPECT_EQ(seat.seatComfort().pitch().weightedRms(), got.pitch().weightedRms());
+  EXPECT_NE(seat.seatComfort().longitudinal().weightedRms(), got.longitudinal().weightedRms());
   // The crew seat lies ahead of the CoG: pitch makes its dose another one.
   EXPECT_GT(std::abs(seat.comfort().vibrationDoseValue() - expected.vibrationDoseValue()),
             1e-3 * expected.vibrationDoseValue());

@@ -147,6 +147,14 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
   report.running_rms = 0.33;
   report.running_rms_time = 1.0;
   report.peak_acceleration = 5.5;
+  report.weighted_rms_x = 0.11;
+  report.weighted_rms_y = 0.12;
+  report.vibration_total_value = 0.47;
+  report.weighted_rms_roll = 0.21;
+  report.weighted_rms_pitch = 0.22;
+  report.weighted_rms_yaw = 0.23;
+  report.rotational_total_value = 0.17;
+  report.overall_total_value = 0.5;
   for (bool with_power : {false, true}) {
     if (with_power)
       report.metrics.absorbed_power = 2.5;
@@ -165,7 +173,41 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
     EXPECT_EQ(back.running_rms, report.running_rms);
     EXPECT_EQ(back.running_rms_time, report.running_rms_time);
     EXPECT_EQ(back.peak_acceleration, report.peak_acceleration);
+    EXPECT_EQ(back.weighted_rms_x, report.weighted_rms_x);
+    EXPECT_EQ(back.weighted_rms_y, report.weighted_rms_y);
+    EXPECT_EQ(back.vibration_total_value, report.vibration_total_value);
+    EXPECT_EQ(back.weighted_rms_roll, report.weighted_rms_roll);
+    EXPECT_EQ(back.weighted_rms_pitch, report.weighted_rms_pitch);
+    EXPECT_EQ(back.weighted_rms_yaw, report.weighted_rms_yaw);
+    EXPECT_EQ(back.rotational_total_value, report.rotational_total_value);
+    EXPECT_EQ(back.overall_total_value, report.overall_total_value);
   }
+}
+
+// The report of a seat meter: the vertical meter's metrics, each axis and the totals.
+TEST(ComfortConversion, ReportOfASeatMeterCarriesEveryAxis) {
+  dynamics::SeatComfortMeter meter(1000.0);
+  for (int k = 0; k < 3000; ++k) {
+    const double t = k * 1e-3;
+    meter.add({0.5 * std::sin(2.0 * t), 0.3 * std::sin(5.0 * t), std::sin(30.0 * t),
+               0.2 * std::sin(7.0 * t), 0.4 * std::sin(9.0 * t), 0.1 * std::sin(4.0 * t)});
+  }
+  const ComfortReport r = comfortReport(meter, "crew_seat", 1.0, 9.0);
+  EXPECT_EQ(r.point, "crew_seat");
+  EXPECT_EQ(r.metrics.weighted_rms, meter.vertical().weightedRms());
+  EXPECT_EQ(r.metrics.absorbed_power, meter.vertical().absorbedPower());
+  EXPECT_EQ(r.running_rms, meter.vertical().runningRms());
+  EXPECT_EQ(r.peak_acceleration, 9.0);
+  EXPECT_EQ(r.weighted_rms_x, meter.longitudinal().weightedRms());
+  EXPECT_EQ(r.weighted_rms_y, meter.lateral().weightedRms());
+  EXPECT_EQ(r.weighted_rms_roll, meter.roll().weightedRms());
+  EXPECT_EQ(r.weighted_rms_pitch, meter.pitch().weightedRms());
+  EXPECT_EQ(r.weighted_rms_yaw, meter.yaw().weightedRms());
+  EXPECT_EQ(r.vibration_total_value, meter.translationalTotalValue());
+  EXPECT_EQ(r.rotational_total_value, meter.rotationalTotalValue());
+  EXPECT_EQ(r.overall_total_value, meter.overallTotalValue());
+  EXPECT_GT(r.rotational_total_value, 0.0);
+  EXPECT_GT(r.weighted_rms_y, 0.0);
 }
 
 TEST(TransformConversion, RoundTrip) {

@@ -6,7 +6,8 @@
 //   s_{k+1} = s_k + v h                                    station of the reference point [m]
 //   w_{k+1} = RoadInputSampler(terrain, s_{k+1}, v)         road inputs [u; u']
 //   Simulator::step(w_{k+1})                               exact discretisation (simulator.h)
-// and the comfort meter takes the vertical acceleration at the comfort point. The simulator
+// and the comfort meter takes the accelerations at the comfort point (its translations, the
+// hull's rotations: dynamics/seat_comfort.h). The simulator
 // starts from static equilibrium under gravity on flat ground (u = 0), K q0 = f_g, so a vehicle
 // at rest on flat terrain stays exactly where it is; resetTo() restarts it at any station in
 // static equilibrium on the terrain there, K q0 = f_g + K_u u(s). step() allocates nothing.
@@ -27,8 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_watch.h"
+#include "tracked_vehicle_dynamics/dynamics/seat_comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/dynamics/static_equilibrium.h"
 #include "tracked_vehicle_dynamics/online/road_input_sampler.h"
@@ -63,8 +64,8 @@ struct OnlineVehicleOptions {
   double max_mode_frequency_hz = -1.0;
   /// Position of the vehicle centre line on the terrain's lateral axis [m] (y left).
   double lateral_offset = 0.0;
-  /// Output whose vertical acceleration feeds the comfort meter: a named point, or "hull" for
-  /// the hull centre of gravity.
+  /// Output whose accelerations feed the comfort meter: a named point, or "hull" for the hull
+  /// centre of gravity.
   std::string comfort_point = "crew_seat";
   /// Running r.m.s. integration time of the comfort meter [s].
   double comfort_running_rms_time = 1.0;
@@ -188,7 +189,10 @@ class OnlineVehicle {
   /// static position, geometry().points[i].position, at every step.
   bool pointIsRigid(std::size_t i) const { return point_rigid_.at(i); }
 
-  const dynamics::ComfortMeter& comfort() const { return comfort_; }
+  /// The vertical meter (Wk, absorbed power) of the comfort point.
+  const dynamics::ComfortMeter& comfort() const { return comfort_.vertical(); }
+  /// Every axis of the comfort point, and the totals (dynamics/seat_comfort.h).
+  const dynamics::SeatComfortMeter& seatComfort() const { return comfort_; }
   /// The point the comfort meter watches (options.comfort_point).
   const std::string& comfortPoint() const { return comfort_point_; }
   /// Largest |vertical acceleration| at the comfort point since reset [m/s^2].
@@ -252,7 +256,7 @@ class OnlineVehicle {
   dynamics::Simulator simulator_;
   RoadInputSampler sampler_;
   terrain::TerrainBuffer terrain_;
-  dynamics::ComfortMeter comfort_;
+  dynamics::SeatComfortMeter comfort_;
   std::string comfort_point_;
 
   dynamics::StaticEquilibriumSolver equilibrium_solver_;
@@ -266,8 +270,9 @@ class OnlineVehicle {
   std::vector<Eigen::Index> wheel_rows_;  // one base row ("<wheel> uz") per wheel
   std::vector<Eigen::Index> point_rows_;  // 3 base rows per named point
   std::vector<bool> point_rigid_;         // per named point
-  Eigen::Index comfort_row_ = 0;          // full row of the comfort acceleration
-  Vector static_outputs_;                 // displacement block at equilibrium
+  Eigen::Index comfort_row_ = 0;          // full row of the comfort point's vertical acceleration
+  Eigen::Index comfort_x_row_ = 0, comfort_y_row_ = 0;  // and of its x and y accelerations
+  Vector static_outputs_;                               // displacement block at equilibrium
   Vector6 static_hull_ = Vector6::Zero();
   mutable std::vector<WheelState> wheel_states_;
 

@@ -13,7 +13,7 @@
 #include "tracked_vehicle_dynamics/Comfort.h"
 #include "tracked_vehicle_dynamics/RoadWheels.h"
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
-#include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/seat_comfort.h"
 #include "tracked_vehicle_dynamics/ros/online_names.h"
 
 namespace tracked_vehicle_dynamics {
@@ -37,12 +37,19 @@ std::vector<WheelState> fromMsg(const RoadWheels& msg, double* station = nullptr
 
 /// What the comfort topic carries, in core terms.
 struct ComfortReport {
-  std::string point;                 ///< output whose vertical acceleration is weighted
-  dynamics::ComfortMetrics metrics;  ///< weighted r.m.s., VDV, MTVV, absorbed power, duration
+  std::string point;                 ///< output whose accelerations are weighted
+  dynamics::ComfortMetrics metrics;  ///< vertical: weighted r.m.s., VDV, MTVV, absorbed power
   double running_rms = 0.0;          ///< [m/s^2]
   double running_rms_time = 1.0;     ///< [s]
   double peak_acceleration = 0.0;    ///< [m/s^2]
+  /// The other axes (Wd, We) and the totals (dynamics/seat_comfort.h).
+  double weighted_rms_x = 0.0, weighted_rms_y = 0.0, vibration_total_value = 0.0;    ///< [m/s^2]
+  double weighted_rms_roll = 0.0, weighted_rms_pitch = 0.0, weighted_rms_yaw = 0.0;  ///< [rad/s^2]
+  double rotational_total_value = 0.0, overall_total_value = 0.0;                    ///< [m/s^2]
 };
+/// The report of a seat comfort meter watching `point`.
+ComfortReport comfortReport(const dynamics::SeatComfortMeter& meter, const std::string& point,
+                            double running_rms_time, double peak_acceleration);
 /// Report -> Comfort (header untouched; weighting "Wk").
 void toMsg(const ComfortReport& report, Comfort* msg);
 ComfortReport fromMsg(const Comfort& msg);
