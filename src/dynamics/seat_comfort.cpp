@@ -55,7 +55,7 @@ double SeatComfortMeter::rotationalTotalValue() const {
   return seatRotationalTotalValue(roll_.weightedRms(), pitch_.weightedRms(), yaw_.weightedRms());
 }
 
-double SeatComfortMeter::overallTotalValue() const {
+double SeatComfortMeter::seatSurfaceTotalValue() const {
   return std::hypot(translationalTotalValue(), rotationalTotalValue());
 }
 

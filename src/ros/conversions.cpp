@@ -93,7 +93,7 @@ void toMsg(const ComfortReport& report, Comfort* msg) {
   msg->weighted_rms_pitch = report.weighted_rms_pitch;
   msg->weighted_rms_yaw = report.weighted_rms_yaw;
   msg->rotational_total_value = report.rotational_total_value;
-  msg->overall_total_value = report.overall_total_value;
+  msg->seat_surface_total_value = report.seat_surface_total_value;
 }
 
 ComfortReport comfortReport(const dynamics::SeatComfortMeter& meter, const std::string& point,
@@ -111,7 +111,7 @@ ComfortReport comfortReport(const dynamics::SeatComfortMeter& meter, const std::
   report.weighted_rms_pitch = meter.pitch().weightedRms();
   report.weighted_rms_yaw = meter.yaw().weightedRms();
   report.rotational_total_value = meter.rotationalTotalValue();
-  report.overall_total_value = meter.overallTotalValue();
+  report.seat_surface_total_value = meter.seatSurfaceTotalValue();
   return report;
 }
 
@@ -135,7 +135,7 @@ ComfortReport fromMsg(const Comfort& msg) {
   report.weighted_rms_pitch = msg.weighted_rms_pitch;
   report.weighted_rms_yaw = msg.weighted_rms_yaw;
   report.rotational_total_value = msg.rotational_total_value;
-  report.overall_total_value = msg.overall_total_value;
+  report.seat_surface_total_value = msg.seat_surface_total_value;
   return report;
 }
 

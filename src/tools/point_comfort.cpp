@@ -44,7 +44,7 @@ void PointComfort::writeJson(io::JsonWriter& json) const {
       .field("weighted_rms_pitch_rad_s2", meter_.pitch().weightedRms())
       .field("weighted_rms_yaw_rad_s2", meter_.yaw().weightedRms())
       .field("rotational_total_value_m_s2", meter_.rotationalTotalValue())
-      .field("overall_total_value_m_s2", meter_.overallTotalValue())
+      .field("seat_surface_total_value_m_s2", meter_.seatSurfaceTotalValue())
       .endObject();
 }
 
@@ -56,7 +56,7 @@ void PointComfort::writeText(std::ostream& out) const {
       << ", a_v " << meter_.translationalTotalValue() << " m/s^2\n";
   out << "      rotation (We): roll " << meter_.roll().weightedRms() << ", pitch "
       << meter_.pitch().weightedRms() << ", yaw " << meter_.yaw().weightedRms() << " rad/s^2, a_r "
-      << meter_.rotationalTotalValue() << " m/s^2; six axes " << meter_.overallTotalValue()
+      << meter_.rotationalTotalValue() << " m/s^2; six axes " << meter_.seatSurfaceTotalValue()
       << " m/s^2\n";
   if (meter_.vertical().sampleCount() == 0 || !(meter_.vertical().weightedRms() > 0.0))
     return;

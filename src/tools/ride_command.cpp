@@ -54,7 +54,7 @@ struct PointRide {
   double weighted_rms_z = 0.0;  ///< a_wz [m/s^2]
   double vdv_z = 0.0;           ///< [m/s^1.75]
   double total_value = 0.0;     ///< a_v [m/s^2]
-  double overall_total = 0.0;   ///< a_v with the rotations, six axes [m/s^2]
+  double seat_surface_total = 0.0;  ///< a_v with the rotations, six axes [m/s^2]
   double peak_up_g = 0.0;       ///< low-passed [g]
   double peak_abs_g = 0.0;      ///< low-passed [g]
 };
@@ -66,14 +66,16 @@ struct Run {
   double rotational_total_value = 0.0;        // a_r [m/s^2]
 };
 
-// The --out table's columns: speed, whether in the sweep, seven metrics per point.
+// The --out table's columns: speed, whether in the sweep, six metrics per point, then each
+// point's seat-surface total (added last, so that the earlier columns keep their places).
 std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
   std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
   for (const std::string& p : points)
-    for (const char* q :
-         {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
-          "_vibration_total_value_m_s2", "_overall_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_vdv_z_m_s1_75",
+                          "_vibration_total_value_m_s2", "_peak_up_g", "_peak_abs_g"})
       headers.push_back(p + q);
+  for (const std::string& p : points)
+    headers.push_back(p + "_seat_surface_total_value_m_s2");
   return headers;
 }
 
@@ -160,7 +162,7 @@ void run(const RideOptions& opt) {
       const dynamics::ComfortMeter& z = comfort[i].meter().vertical();
       r.points.push_back(
           {z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
-           comfort[i].meter().translationalTotalValue(), comfort[i].meter().overallTotalValue(),
+           comfort[i].meter().translationalTotalValue(), comfort[i].meter().seatSurfaceTotalValue(),
            peaks[i].peakUp() / kStandardGravity, peaks[i].peakAbsolute() / kStandardGravity});
     }
     return r;
@@ -191,11 +193,12 @@ void run(const RideOptions& opt) {
   for (const auto& [speed, r] : runs) {
     table(row, 0) = speed;
     table(row, 1) = r.in_sweep ? 1.0 : 0.0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const PointRide& m = r.points[i];
-      const auto c = static_cast<Eigen::Index>(2 + 7 * i);
-      table.block(row, c, 1, 7) << m.absorbed_power, m.weighted_rms_z, m.vdv_z, m.total_value,
-          m.overall_total, m.peak_up_g, m.peak_abs_g;
+    const auto n = static_cast<Eigen::Index>(points.size());
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const PointRide& m = r.points[static_cast<std::size_t>(i)];
+      table.block(row, 2 + 6 * i, 1, 6) << m.absorbed_power, m.weighted_rms_z, m.vdv_z,
+          m.total_value, m.peak_up_g, m.peak_abs_g;
+      table(row, 2 + 6 * n + i) = m.seat_surface_total;
     }
     ++row;
   }
@@ -246,7 +249,7 @@ void run(const RideOptions& opt) {
             .field("weighted_rms_z_m_s2", m.weighted_rms_z)
             .field("vdv_z_m_s1_75", m.vdv_z)
             .field("vibration_total_value_m_s2", m.total_value)
-            .field("overall_total_value_m_s2", m.overall_total)
+            .field("seat_surface_total_value_m_s2", m.seat_surface_total)
             .field("peak_up_g", m.peak_up_g)
             .field("peak_abs_g", m.peak_abs_g)
             .endObject();
@@ -323,7 +326,8 @@ void registerRideCommand(CLI::App& app) {
   CLI::Option* iso = cmd->add_option("--iso8608", opt->iso_class,
                                      "instead of --track: the PSD of ISO 8608 road class A..H, "
                                      "evaluated spectrally at every speed "
-                                     "(absorbed power, a_wz, r.m.s.; no peaks)");
+                                     "(absorbed power, a_wz, r.m.s., every axis and the totals; "
+                                     "no peaks, no VDV)");
   cmd->add_option("--speeds", opt->speeds,
                   "speeds [km/h]: FIRST:LAST:STEP (STEP must land on LAST) or a list 5,10,20");
   CLI::Option* points = cmd->add_option(
@@ -374,8 +378,8 @@ void registerRideCommand(CLI::App& app) {
       cmd->add_option(
              "--psd-out", opt->psd_out,
              "--iso8608: the acceleration PSDs at every speed of --speeds, one row per speed and "
-             "frequency (road, then per point raw, Wk-weighted and absorbed-power density): CSV, "
-             "or .mat")
+             "frequency (road; per point the vertical raw, Wk-weighted and absorbed-power "
+             "density; per point x and y; the hull's roll, pitch and yaw): CSV, or .mat")
           ->check(outputFile({".csv", ".mat"}))};
   opt->reduced.addTo(cmd);
   cmd->add_option("--out", opt->out_file,

@@ -78,7 +78,7 @@ struct PointRide {
   double weighted_rms_x = 0.0;       // Wd [m/s^2]
   double weighted_rms_y = 0.0;       // Wd [m/s^2]
   double total_value = 0.0;          // a_v [m/s^2]
-  double overall_total_value = 0.0;  // sqrt(a_v^2 + a_r^2) [m/s^2]
+  double seat_surface_total_value = 0.0;  // sqrt(a_v^2 + a_r^2) [m/s^2]
 };
 
 struct Run {
@@ -105,7 +105,7 @@ Run runOf(const dynamics::SpectralRideResult& r, const RatedOutputs& rated, std:
     p.weighted_rms_y = r.outputs[o + 2].weighted_rms;
     p.total_value =
         dynamics::seatTranslationalTotalValue(p.weighted_rms_x, p.weighted_rms_y, p.z.weighted_rms);
-    p.overall_total_value = std::hypot(p.total_value, run.rotational_total_value);
+    p.seat_surface_total_value = std::hypot(p.total_value, run.rotational_total_value);
     run.points.push_back(p);
   }
   return run;
@@ -137,13 +137,16 @@ dynamics::RoadSpectrum roadOf(const RideOptions& opt) {
 // frequency of that speed's grid (the grids differ: [v n_min, v n_max]). Per point the raw
 // acceleration PSD S_a, the ISO 2631-1 weighted |W_k|^2 S_a and the absorbed-power density K S_a,
 // so that the trapezoid over one speed's rows gives that run's a_rms^2, a_wz^2 and P (the
-// integrals SpectralRide::evaluate takes on the same grid), then the raw PSDs of its x and y
-// accelerations; last, those of the hull's roll, pitch and yaw accelerations [(rad/s^2)^2/Hz].
+// integrals SpectralRide::evaluate takes on the same grid); then per point the raw PSDs of its x
+// and y accelerations, and last those of the hull's roll, pitch and yaw accelerations
+// [(rad/s^2)^2/Hz] (after the vertical ones, so that those keep their places).
 std::vector<std::string> psdHeaders(const std::vector<std::string>& points) {
   std::vector<std::string> headers = {"speed_kmh", "frequency_hz", "road_psd_m2_hz"};
   for (const std::string& p : points)
-    for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz",
-                          "_psd_x_m2_s4_hz", "_psd_y_m2_s4_hz"})
+    for (const char* q : {"_psd_z_m2_s4_hz", "_wk_psd_z_m2_s4_hz", "_power_density_z_w_hz"})
+      headers.push_back(p + q);
+  for (const std::string& p : points)
+    for (const char* q : {"_psd_x_m2_s4_hz", "_psd_y_m2_s4_hz"})
       headers.push_back(p + q);
   for (const char* r :
        {"hull_psd_roll_rad2_s4_hz", "hull_psd_pitch_rad2_s4_hz", "hull_psd_yaw_rad2_s4_hz"})
@@ -151,12 +154,15 @@ std::vector<std::string> psdHeaders(const std::vector<std::string>& points) {
   return headers;
 }
 
-// The --out table's columns: speed, whether in the sweep, five metrics per point.
+// The --out table's columns: speed, whether in the sweep, three metrics per point, then each
+// point's two totals (added last, so that the earlier columns keep their places).
 std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
   std::vector<std::string> headers = {"speed_kmh", "in_sweep"};
   for (const std::string& p : points)
-    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2",
-                          "_vibration_total_value_m_s2", "_overall_total_value_m_s2"})
+    for (const char* q : {"_absorbed_power_w", "_weighted_rms_z_m_s2", "_rms_z_m_s2"})
+      headers.push_back(p + q);
+  for (const std::string& p : points)
+    for (const char* q : {"_vibration_total_value_m_s2", "_seat_surface_total_value_m_s2"})
       headers.push_back(p + q);
   return headers;
 }
@@ -187,11 +193,13 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
       table(row, 1) = f;
       table(row, 2) = r.road_psd(i);
       Eigen::Index c = 3;
-      for (std::size_t p = 0; p < points.size(); ++p) {
+      for (std::size_t p = 0; p < points.size(); ++p, c += 3) {
         const auto o = static_cast<Eigen::Index>(RatedOutputs::vertical(p));
-        table.block(row, c, 1, 5) << r.psd(i, o), wk * r.psd(i, o), power * r.psd(i, o),
-            r.psd(i, o + 1), r.psd(i, o + 2);
-        c += 5;
+        table.block(row, c, 1, 3) << r.psd(i, o), wk * r.psd(i, o), power * r.psd(i, o);
+      }
+      for (std::size_t p = 0; p < points.size(); ++p, c += 2) {
+        const auto o = static_cast<Eigen::Index>(RatedOutputs::vertical(p));
+        table.block(row, c, 1, 2) << r.psd(i, o + 1), r.psd(i, o + 2);
       }
       const auto k = static_cast<Eigen::Index>(rated.rotations);
       table.block(row, c, 1, 3) << r.psd(i, k), r.psd(i, k + 1), r.psd(i, k + 2);
@@ -213,6 +221,9 @@ void writePsdTable(const std::string& path, const RideOptions& opt,
 // correction (what a real road holds beyond n_max is the user's to give, --max-frequency).
 constexpr double kBandCheckFrequency = 10.0;  // [cycles/m]
 constexpr double kBandCheckShare = 0.1;
+
+// A damping ratio at or below which a mode counts as undamped (round-off of a zero damping).
+constexpr double kUndampedRatio = 1e-9;
 
 // runs: the sweep's results on the road's own band, by speed.
 std::optional<std::string> bandCutWarning(const RideOptions& opt,
@@ -265,46 +276,79 @@ std::optional<std::string> bandCutWarning(const RideOptions& opt,
   return m.str();
 }
 
-// Modes in the bands of the speeds evaluated that the grid does not resolve: a half-power band
-// 2ζf narrower than two grid steps (ζ < h = ln(10) / points per decade; spectral_ride.h) is
-// integrated with an error of 1 % of its peak's share at 2ζ = 2h, 8 % at 2ζ = h; an undamped
-// resonance has no finite integral, so those figures are the grid's, not the model's.
-std::optional<std::string> unresolvedModeWarning(const RideOptions& opt,
-                                                 const dynamics::SpectralRide& ride,
-                                                 const dynamics::RoadSpectrum& road,
-                                                 const std::map<double, Run>& runs) {
-  const double low = runs.begin()->first / kKmhPerMs * road.min_frequency;
-  const double high = runs.rbegin()->first / kKmhPerMs * road.max_frequency;
-  const double step = std::log(10.0) / opt.points_per_decade;
-  std::vector<dynamics::SpectralRide::ModeDamping> narrow;
-  double least = step;
-  for (const auto& mode : ride.modeDamping())
-    if (mode.frequency_hz >= low && mode.frequency_hz <= high && mode.ratio < step) {
-      narrow.push_back(mode);
-      least = std::min(least, mode.ratio);
-    }
-  if (narrow.empty())
-    return std::nullopt;
+// The modes in [low, high] Hz, their damping ratio below `below`, listed "f Hz (zeta)" with
+// repeated ones (a left and a right mode) once, "x2".
+std::string listModes(const std::vector<dynamics::SpectralRide::ModeDamping>& modes, double below,
+                      double low, double high, std::size_t* count, double* least) {
   constexpr std::size_t kListed = 5;
+  std::vector<std::pair<std::string, int>> listed;
+  *count = 0;
+  for (const auto& mode : modes) {
+    if (!(mode.frequency_hz >= low && mode.frequency_hz <= high && mode.ratio < below))
+      continue;
+    ++*count;
+    *least = std::min(*least, mode.ratio);
+    std::ostringstream one;
+    one << std::setprecision(3) << mode.frequency_hz << " Hz (" << mode.ratio << ")";
+    if (!listed.empty() && listed.back().first == one.str())
+      ++listed.back().second;
+    else
+      listed.emplace_back(one.str(), 1);
+  }
   std::ostringstream m;
-  m << std::setprecision(3) << narrow.size() << " mode(s) in the bands of the speeds evaluated ("
-    << low << " .. " << high << " Hz) are damped too lightly for the frequency grid ("
+  for (std::size_t i = 0; i < std::min(listed.size(), kListed); ++i)
+    m << (i ? ", " : "") << listed[i].first << (listed[i].second > 1 ? " x" : "")
+      << (listed[i].second > 1 ? std::to_string(listed[i].second) : "");
+  if (listed.size() > kListed)
+    m << " and more";
+  return m.str();
+}
+
+// A mode without damping in the band [low, high] Hz of the sweep's speeds: across its resonance
+// S_a has no finite integral, so any figure there would be the grid's, not the model's (and so
+// would the limits found between them). Refused before the sweep, naming the modes.
+void refuseUndampedModes(const dynamics::SpectralRide& ride, double low, double high) {
+  std::size_t count = 0;
+  double least = 1.0;
+  const std::string listed =
+      listModes(ride.modeDamping(), kUndampedRatio, low, high, &count, &least);
+  if (count == 0)
+    return;
+  std::ostringstream m;
+  m << std::setprecision(3) << "ride: " << count << " mode(s) without damping lie in the band of "
+    << "the speeds asked for (" << low << " .. " << high << " Hz): " << listed
+    << ". Across an undamped resonance the PSD has no finite integral, so no figure could be "
+       "given: give the vehicle damping (damping.modal_ratio, or Rayleigh damping) where its "
+       "dampers do not reach, or rate it in the time domain (--track)";
+  throw InputError(m.str());
+}
+
+// Modes in the band that the grid does not resolve: a half-power band 2 zeta f narrower than two
+// grid steps (zeta < h = ln(10) / points per decade; spectral_ride.h). The trapezoid's error on
+// such a resonance, of either sign as the speed moves the grid across it, is 0.4 % of its share
+// at zeta = h, 1 % at 0.84 h, 9 % at h / 2 and 25 % at h / 3; the limits found between such
+// figures move with it.
+std::optional<std::string> unresolvedModeWarning(const RideOptions& opt,
+                                                 const dynamics::SpectralRide& ride, double low,
+                                                 double high) {
+  const double step = std::log(10.0) / opt.points_per_decade;
+  std::size_t count = 0;
+  double least = step;
+  const std::string listed = listModes(ride.modeDamping(), step, low, high, &count, &least);
+  if (count == 0)
+    return std::nullopt;
+  const double needed = std::ceil(std::log(10.0) / least);
+  std::ostringstream m;
+  m << std::setprecision(3) << count << " mode(s) in the band of the speeds asked for (" << low
+    << " .. " << high << " Hz) are damped too lightly for the frequency grid ("
     << opt.points_per_decade << " points per decade resolve a damping ratio down to " << step
-    << "): ";
-  for (std::size_t i = 0; i < std::min(narrow.size(), kListed); ++i)
-    m << (i ? ", " : "") << narrow[i].frequency_hz << " Hz (" << narrow[i].ratio << ")";
-  if (narrow.size() > kListed)
-    m << " and " << narrow.size() - kListed << " more";
-  m << ". ";
-  const double needed = std::ceil(std::log(10.0) / least);  // inf for an undamped mode
-  if (!(needed <= dynamics::SpectralRideOptions::kMaxPointsPerDecade))
-    m << "Across an undamped resonance the PSD has no finite integral: the figures of the speeds "
-         "whose band holds one are set by the grid, not by the model; give the vehicle damping "
-         "(damping.modal_ratio, or Rayleigh damping) where its dampers do not reach";
+    << "): " << listed
+    << ". The grid's error on such a resonance's share is 0.4 % at that ratio, 9 % at half of "
+       "it, and changes sign from one speed to the next, moving the limits found: ";
+  if (needed <= dynamics::SpectralRideOptions::kMaxPointsPerDecade)
+    m << "--points-per-decade " << static_cast<long long>(needed) << " resolves them";
   else
-    m << "The trapezoid misses such a resonance's share by over 1 % (8 % at half the ratio): "
-         "--points-per-decade "
-      << static_cast<long long>(needed) << " resolves them";
+    m << "no grid does; give the vehicle more damping";
   return m.str();
 }
 
@@ -362,6 +406,13 @@ void runSpectralRide(const RideOptions& opt) {
   const double setup = std::chrono::duration<double>(Clock::now() - start).count();
   const double damping_coupling = modal.maxOffDiagonalDampingRatio();
   warn(&warnings, sideCrossingWarning(opt, sys));
+  // The band every speed of the sweep (and of a bisection between them) excites.
+  const double band_low =
+      *std::min_element(sweep.begin(), sweep.end()) / kKmhPerMs * road.min_frequency;
+  const double band_high =
+      *std::max_element(sweep.begin(), sweep.end()) / kKmhPerMs * road.max_frequency;
+  refuseUndampedModes(ride, band_low, band_high);
+  warn(&warnings, unresolvedModeWarning(opt, ride, band_low, band_high));
 
   RideRuns<Run> rate([&](double speed_kmh) {
     const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / kKmhPerMs);
@@ -381,7 +432,6 @@ void runSpectralRide(const RideOptions& opt) {
   const std::map<double, Run>& runs = rate.all();
   const double wall = std::chrono::duration<double>(Clock::now() - start).count() - setup;
   warn(&warnings, bandCutWarning(opt, ride, points, rated, road, sweep, runs));
-  warn(&warnings, unresolvedModeWarning(opt, ride, road, runs));
 
   const std::string road_name = std::string("iso8608_") + road.road_class + "_psd";
   const bool sides = road.correlation == terrain::LateralCorrelation::IndependentSides;
@@ -394,10 +444,11 @@ void runSpectralRide(const RideOptions& opt) {
   for (const auto& [speed, r] : runs) {
     table(row, 0) = speed;
     table(row, 1) = r.in_sweep ? 1.0 : 0.0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const PointRide& p = r.points[i];
-      table.block(row, static_cast<Eigen::Index>(2 + 5 * i), 1, 5) << p.z.absorbed_power,
-          p.z.weighted_rms, p.z.rms, p.total_value, p.overall_total_value;
+    const auto n = static_cast<Eigen::Index>(points.size());
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const PointRide& p = r.points[static_cast<std::size_t>(i)];
+      table.block(row, 2 + 3 * i, 1, 3) << p.z.absorbed_power, p.z.weighted_rms, p.z.rms;
+      table.block(row, 2 + 3 * n + 2 * i, 1, 2) << p.total_value, p.seat_surface_total_value;
     }
     ++row;
   }
@@ -469,7 +520,7 @@ void runSpectralRide(const RideOptions& opt) {
             .field("weighted_rms_x_m_s2", p.weighted_rms_x)
             .field("weighted_rms_y_m_s2", p.weighted_rms_y)
             .field("vibration_total_value_m_s2", p.total_value)
-            .field("overall_total_value_m_s2", p.overall_total_value)
+            .field("seat_surface_total_value_m_s2", p.seat_surface_total_value)
             .endObject();
       }
       json.endArray().endObject();
@@ -511,17 +562,17 @@ void runSpectralRide(const RideOptions& opt) {
                           " of the diagonal), which eq. 20's modal damping would drop"
                     : "")
             << "\n  absorbed power P [W], ISO 2631-1 weighted r.m.s. a_wz [m/s^2] (vertical) and "
-               "the seat surface's six-axis total a_v6 [m/s^2] (Wk, Wd, We of the hull's "
+               "the seat surface's total over six axes [m/s^2] (Wk, Wd, We of the hull's "
                "rotations) per speed:\n"
             << "  speed km/h";
   for (const std::string& p : points)
-    std::cout << std::setw(22) << p + " P" << std::setw(12) << "a_wz" << std::setw(12) << "a_v6";
+    std::cout << std::setw(22) << p + " P" << std::setw(12) << "a_wz" << std::setw(12) << "seat";
   std::cout << "\n" << std::fixed;
   for (const auto& [speed, r] : runs) {
     std::cout << "  " << std::setw(9) << std::setprecision(2) << speed << (r.in_sweep ? " " : "*");
     for (const PointRide& m : r.points)
       std::cout << std::setw(22) << std::setprecision(3) << m.z.absorbed_power << std::setw(12)
-                << m.z.weighted_rms << std::setw(12) << m.overall_total_value;
+                << m.z.weighted_rms << std::setw(12) << m.seat_surface_total_value;
     std::cout << "\n";
   }
   std::cout << "  (* speeds the bisection added)\n";

@@ -449,7 +449,7 @@ TEST(Comfort, SeatMeterIsEveryAxisWithItsWeighting) {
       seatRotationalTotalValue(axes[3].weightedRms(), axes[4].weightedRms(), axes[5].weightedRms());
   EXPECT_DOUBLE_EQ(seat.translationalTotalValue(), a_v);
   EXPECT_DOUBLE_EQ(seat.rotationalTotalValue(), a_r);
-  EXPECT_DOUBLE_EQ(seat.overallTotalValue(), std::hypot(a_v, a_r));
+  EXPECT_DOUBLE_EQ(seat.seatSurfaceTotalValue(), std::hypot(a_v, a_r));
   const std::size_t samples = seat.vertical().sampleCount();
   SeatAcceleration bad;
   bad.yaw = NAN;
@@ -458,7 +458,7 @@ TEST(Comfort, SeatMeterIsEveryAxisWithItsWeighting) {
   EXPECT_EQ(seat.yaw().sampleCount(), samples);
   seat.reset();
   EXPECT_EQ(seat.pitch().sampleCount(), 0u);
-  EXPECT_EQ(seat.overallTotalValue(), 0.0);
+  EXPECT_EQ(seat.seatSurfaceTotalValue(), 0.0);
 }
 
 TEST(Comfort, RejectsBadInput) {

@@ -391,8 +391,8 @@ TEST(OnlineVehicle, HullComfortPointWeighsTheHullsVerticalAcceleration) {
                                      std::pair(&got.yaw(), &expected_seat.yaw())})
     EXPECT_NEAR(mine->weightedRms(), theirs->weightedRms(),
                 1e-12 * (theirs->weightedRms() + 1e-30));
-  EXPECT_NEAR(got.overallTotalValue(), expected_seat.overallTotalValue(),
-              1e-12 * expected_seat.overallTotalValue());
+  EXPECT_NEAR(got.seatSurfaceTotalValue(), expected_seat.seatSurfaceTotalValue(),
+              1e-12 * expected_seat.seatSurfaceTotalValue());
   // The seat's rotations are the hull's; its translations are not.
   EXPECT_EQ(seat.seatComfort().pitch().weightedRms(), got.pitch().weightedRms());
   EXPECT_NE(seat.seatComfort().longitudinal().weightedRms(), got.longitudinal().weightedRms());

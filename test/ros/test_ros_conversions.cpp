@@ -154,7 +154,7 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
   report.weighted_rms_pitch = 0.22;
   report.weighted_rms_yaw = 0.23;
   report.rotational_total_value = 0.17;
-  report.overall_total_value = 0.5;
+  report.seat_surface_total_value = 0.5;
   for (bool with_power : {false, true}) {
     if (with_power)
       report.metrics.absorbed_power = 2.5;
@@ -180,7 +180,7 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
     EXPECT_EQ(back.weighted_rms_pitch, report.weighted_rms_pitch);
     EXPECT_EQ(back.weighted_rms_yaw, report.weighted_rms_yaw);
     EXPECT_EQ(back.rotational_total_value, report.rotational_total_value);
-    EXPECT_EQ(back.overall_total_value, report.overall_total_value);
+    EXPECT_EQ(back.seat_surface_total_value, report.seat_surface_total_value);
   }
 }
 
@@ -205,7 +205,7 @@ TEST(ComfortConversion, ReportOfASeatMeterCarriesEveryAxis) {
   EXPECT_EQ(r.weighted_rms_yaw, meter.yaw().weightedRms());
   EXPECT_EQ(r.vibration_total_value, meter.translationalTotalValue());
   EXPECT_EQ(r.rotational_total_value, meter.rotationalTotalValue());
-  EXPECT_EQ(r.overall_total_value, meter.overallTotalValue());
+  EXPECT_EQ(r.seat_surface_total_value, meter.seatSurfaceTotalValue());
   EXPECT_GT(r.rotational_total_value, 0.0);
   EXPECT_GT(r.weighted_rms_y, 0.0);
 }

@@ -1115,7 +1115,7 @@ class TvdCliTest(unittest.TestCase):
                                  + (0.40 * p["weighted_rms_pitch_rad_s2"]) ** 2
                                  + (0.20 * p["weighted_rms_yaw_rad_s2"]) ** 2)
             self.assertAlmostEqual(p["rotational_total_value_m_s2"] / rotational, 1.0, delta=1e-8)
-            self.assertAlmostEqual(p["overall_total_value_m_s2"] / np.hypot(total, rotational),
+            self.assertAlmostEqual(p["seat_surface_total_value_m_s2"] / np.hypot(total, rotational),
                                    1.0, delta=1e-8)
 
     def test_simulate_braking_travel_inertia(self):
@@ -1462,7 +1462,7 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual(rows.shape[0], len(d["runs"]))
         np.testing.assert_allclose(rows[:, 0], speeds, rtol=1e-9)
         for i, point in enumerate(d["points"]):
-            for key in ("absorbed_power_w", "peak_up_g", "vdv_z_m_s1_75", "overall_total_value_m_s2"):
+            for key in ("absorbed_power_w", "peak_up_g", "vdv_z_m_s1_75", "seat_surface_total_value_m_s2"):
                 column = rows[:, header.index(f"{point}_{key}")]
                 np.testing.assert_allclose(column, [r["points"][i][key] for r in d["runs"]],
                                            rtol=1e-8, err_msg=f"{point} {key}")
@@ -1483,7 +1483,7 @@ class TvdCliTest(unittest.TestCase):
                                       ("weighted_rms_z_m_s2", "weighted_rms_m_s2"),
                                       ("vdv_z_m_s1_75", "vdv_m_s1_75"),
                                       ("vibration_total_value_m_s2", "vibration_total_value_m_s2"),
-                                      ("overall_total_value_m_s2", "overall_total_value_m_s2")):
+                                      ("seat_surface_total_value_m_s2", "seat_surface_total_value_m_s2")):
                 self.assertAlmostEqual(r[ride_key] / comfort[point][sim_key], 1.0, places=9,
                                        msg=f"{point} {ride_key}")
             filtered = sosfilt(sos, sim_rows[:, sim_header.index(column)]) / GRAVITY
@@ -1653,7 +1653,7 @@ class TvdCliTest(unittest.TestCase):
                                    delta=self.SPECTRAL_AWZ_TOLERANCE, msg=key)
             # The totals over the seat's axes (Wd of x and y, We of the hull's rotations): each
             # axis's mean square adds over the sides, so the totals do too.
-            for total in ("vibration_total_value_m_s2", "overall_total_value_m_s2"):
+            for total in ("vibration_total_value_m_s2", "seat_surface_total_value_m_s2"):
                 self.assertAlmostEqual(uniform[key][total] / s[total], 1.0,
                                        delta=self.SPECTRAL_AWZ_TOLERANCE, msg=f"{key} {total}")
                 both = np.hypot(left[key][total], right[key][total])
@@ -1830,10 +1830,10 @@ class TvdCliTest(unittest.TestCase):
     def test_ride_spectral_warns_of_modes_the_grid_does_not_resolve(self):
         """A resonance whose half-power band is narrower than two grid steps (zeta below
         ln(10) / points per decade) is integrated wrongly: at 0.2 % modal damping the default
-        400 points per decade overstate the hull's power by some 18 %, and the warning names
-        the modes and the density that resolves them (1152), which then agrees with a 20,000
-        per decade grid within 0.5 % and warns no more; undamped modes have no finite integral,
-        and the warning says to give damping instead."""
+        400 points per decade overstate the hull's power at 10 km/h by some 18 %, and the warning
+        names the modes and the density that resolves them (1152), which then agrees with a
+        20,000 per decade grid within 0.5 % and warns no more; undamped modes in the band have
+        no finite integral: refused before the sweep, naming them."""
         light = self.vehicle_with("light.yaml", "modal_ratio: {value: 0.05,",
                                   "modal_ratio: {value: 0.002,")
         def ride(vehicle, *extra):
@@ -1853,10 +1853,10 @@ class TvdCliTest(unittest.TestCase):
         self.assertAlmostEqual(power[1] / power[2], 1.0, delta=5e-3)
         undamped = self.vehicle_with("undamped.yaml", "modal_ratio: {value: 0.05,",
                                      "modal_ratio: {value: 0,")
-        [warning] = unresolved(ride(undamped))
-        self.assertIn("2.14 Hz (0)", warning)
-        self.assertIn("no finite integral", warning)
-        self.assertIn("give the vehicle damping", warning)
+        self.assert_input_error(["ride", "--vehicle", undamped, "--variant", "untracked",
+                                 "--iso8608", "C", "--speeds", "10,30", "--cache-dir", self.cache],
+                                "mode(s) without damping lie in the band", "2.14 Hz (0)",
+                                "no finite integral", "give the vehicle damping")
         self.assertEqual(unresolved(ride(VEHICLE)), [])
 
     def test_ride_spectral_bad_options_are_named_before_any_work(self):

@@ -46,7 +46,7 @@ class SeatComfortMeter {
   /// a_r [m/s^2].
   double rotationalTotalValue() const;
   /// sqrt(a_v^2 + a_r^2) [m/s^2].
-  double overallTotalValue() const;
+  double seatSurfaceTotalValue() const;
 
  private:
   ComfortMeter vertical_, longitudinal_, lateral_;

@@ -45,7 +45,7 @@ struct ComfortReport {
   /// The other axes (Wd, We) and the totals (dynamics/seat_comfort.h).
   double weighted_rms_x = 0.0, weighted_rms_y = 0.0, vibration_total_value = 0.0;    ///< [m/s^2]
   double weighted_rms_roll = 0.0, weighted_rms_pitch = 0.0, weighted_rms_yaw = 0.0;  ///< [rad/s^2]
-  double rotational_total_value = 0.0, overall_total_value = 0.0;                    ///< [m/s^2]
+  double rotational_total_value = 0.0, seat_surface_total_value = 0.0;               ///< [m/s^2]
 };
 /// The report of a seat comfort meter watching `point`.
 ComfortReport comfortReport(const dynamics::SeatComfortMeter& meter, const std::string& point,
