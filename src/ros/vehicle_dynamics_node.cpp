@@ -235,8 +235,7 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     if (!taken)
       return;
     flat_since_restart_ = false;
-    if (holding_for_terrain_)
-      terrain_in_hold_ = true;  // the hold ends at the next /clock (onClock)
+    notePatchTaken(msg->header.stamp);
     ++events_.patches_accepted;
     // The stations are along this vehicle's path by definition (TerrainProfile.msg), whatever
     // the header says; a patch that names another frame (map, or another vehicle's odom) is
@@ -295,6 +294,22 @@ bool VehicleDynamicsNode::standingOnClearedGround() const {
   return restart_cleared_ && vehicle_->speed() == 0.0 && vehicle_->station() == restart_station_;
 }
 
+void VehicleDynamicsNode::notePatchTaken(const ros::Time& stamp) {
+  if (first_patch_lag_ < 0.0)
+    first_patch_lag_ = run_start_.isZero() ? 0.0 : std::max(0.0, (now() - run_start_).toSec());
+  // A late patch of the pass before (stamped near the old time) does not end a hold: the new
+  // pass's terrain is still to come. Unstamped patches cannot be told apart and count.
+  if (hold_.active && (stamp.isZero() || std::abs((stamp - hold_.new_time).toSec()) <
+                                             std::abs((stamp - hold_.old_time).toSec())))
+    hold_.terrain = true;  // the hold ends at the next /clock (onClock)
+}
+
+double VehicleDynamicsNode::holdLimit() const {
+  // Half of ~catch_up_limit: the held steps, and one /clock increment more at the release, are
+  // then stepped within one tick's catch-up, without a resynchronisation.
+  return 0.5 * params_.catch_up_limit;
+}
+
 void VehicleDynamicsNode::rememberPatch(const TerrainProfile::ConstPtr& msg, std::string dropped) {
   expireRecentPatches();
   recent_patches_.push_back({msg, latest_clock_, ros::SteadyTime::now(), std::move(dropped)});
@@ -342,6 +357,8 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
     return;
   }
   vehicle_->setSpeed(v);
+  if (hold_.active)
+    hold_.speed = true;
   ++events_.speeds_accepted;
   stopped_by_timeout_ = false;
   markSpeedTime(now());
@@ -353,8 +370,9 @@ bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Re
   ROS_INFO("%s: reset requested: back to static equilibrium at station 0", nodeName());
   // Not published here: the current sample's stamp is already out, and tf2 discards a second
   // transform at the same stamp (TF_REPEATED_DATA). The next published sample shows the reset.
-  restart();
+  // The old run's kept inputs first: a patch of it dropped behind is counted to it.
   forgetRecentInputs();
+  restart();
   return true;
 }
 
@@ -376,6 +394,8 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
     return true;  // the call itself succeeded: the answer is in the response
   }
   const ResetTerrain terrain = request.keep_terrain ? ResetTerrain::Keep : ResetTerrain::Clear;
+  // The old run's kept inputs first: a patch of it dropped behind is counted to it.
+  forgetRecentInputs();
   int uncovered = 0;
   try {
     uncovered = restart(request.station, request.speed, terrain);
@@ -387,7 +407,6 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   }
   // As ~reset: not published here (the current sample's stamp is already out, and tf2 discards
   // a second transform at it, TF_REPEATED_DATA); the next published sample shows the new state.
-  forgetRecentInputs();
   // The requested speed counts as a speed message for ~speed_timeout.
   markSpeedTime(now());
   std::ostringstream text;
@@ -417,7 +436,9 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
     stepped_patch_.clear();  // the offset terrain is gone
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
-  holding_for_terrain_ = terrain_in_hold_ = false;
+  hold_ = Hold();
+  run_start_ = now();
+  first_patch_lag_ = -1.0;
   patches_behind_at_restart_ = events_.patches_behind;
   ++events_.resets;
   return uncovered;
@@ -446,8 +467,8 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
     restartAfterJump(msg->clock);
   // A held restart goes on at the first /clock after the loop's first patch: rosbag sends the
   // loop's speed with it, on another connection, which has then arrived too.
-  else if (terrain_in_hold_)
-    holding_for_terrain_ = terrain_in_hold_ = false;
+  else if (hold_.active && hold_.terrain && (!hold_.awaiting_speed || hold_.speed))
+    hold_ = Hold();
   latest_clock_ = msg->clock;
 }
 
@@ -456,9 +477,15 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   // Every reset is said (not throttled): each one loses the vehicle's state and speed.
   ROS_WARN("%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0",
            nodeName(), (sample_time_ - now).toSec());
-  const bool had_terrain = !flat_since_restart_;
+  // Held for if the run before had terrain from its start (or was itself held), and moving.
+  const bool hold_for_terrain = hold_.active || (!flat_since_restart_ && first_patch_lag_ >= 0.0 &&
+                                                 first_patch_lag_ <= holdLimit());
+  const bool had_speed = hold_.active ? hold_.awaiting_speed : vehicle_->commandedSpeed() > 0.0;
+  const ros::Time old_time = sample_time_;
+  const std::uint64_t speeds_before = events_.speeds_reapplied;
   restart();
   sample_time_ = now;
+  run_start_ = now;
   reapplyRecentInputs(now);
   // The old pass's patches lost in the re-application belong to it, not to the new run.
   patches_behind_at_restart_ = events_.patches_behind;
@@ -467,8 +494,11 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   // flat ground of the restart, unlike the first loop. So when the run before had terrain and
   // none came back with the jump, the vehicle waits for it (at most ~catch_up_limit of simulated
   // time, which the catch-up then steps exactly on the patches; onClock ends the hold).
-  if (had_terrain && vehicle_->terrain().empty()) {
-    holding_for_terrain_ = true;
+  if (hold_for_terrain && vehicle_->terrain().empty()) {
+    hold_.active = true;
+    hold_.awaiting_speed = had_speed && events_.speeds_reapplied == speeds_before;
+    hold_.old_time = old_time;
+    hold_.new_time = now;
     ++events_.terrain_holds;
   }
   if (now.isZero()) {
@@ -531,8 +561,14 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
       const std::vector<std::string> doubts = judgePatch(patch, &stepped);
       if (stepped)
         stepped_patch_ = patchDoubts(patch, doubts) + " (re-applied after the time jump back)";
-      vehicle_->addTerrain(patch);
+      if (!vehicle_->addTerrain(patch)) {  // still wholly behind the restarted vehicle: lost
+        if (!recent.dropped.empty())
+          reportDroppedPatch(recent.dropped);
+        continue;
+      }
       flat_since_restart_ = false;
+      if (first_patch_lag_ < 0.0)
+        first_patch_lag_ = 0.0;
       ++events_.patches_reapplied;
     } catch (const std::exception& e) {  // accepted once, so not expected
       TVD_WARN_THROTTLE(kWarnPeriod, "%s: terrain patch rejected: %s", nodeName(), e.what());
@@ -642,6 +678,8 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   if (!clock_started_) {
     clock_started_ = true;
     sample_time_ = now;
+    if (run_start_.isZero())
+      run_start_ = now;
     if (!pending_static_.empty()) {
       for (auto& t : pending_static_)
         t.header.stamp = now;
@@ -676,16 +714,19 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
                                      : (ahead_ns + step_ns_ / 2) / step_ns_;
   if (due == 0)
     return;
-  if (holding_for_terrain_) {
-    if (due < max_catch_up_steps_)
-      return;  // the steps wait for the loop's first patch (restartAfterJump)
-    holding_for_terrain_ = terrain_in_hold_ = false;
+  if (hold_.active) {
+    if (static_cast<double>(due) * static_cast<double>(step_ns_) * 1e-9 < holdLimit())
+      return;  // the steps wait for the new pass's inputs (restartAfterJump)
+    const bool terrain = hold_.terrain;
+    hold_ = Hold();
     ++events_.terrain_holds_expired;
     TVD_WARN_THROTTLE(kWarnPeriod,
-                      "%s: no terrain patch within ~catch_up_limit (%.3f s) of simulated time "
-                      "after ROS time jumped back, although the run before had terrain: driving "
-                      "on from station %.2f m on flat ground",
-                      nodeName(), params_.catch_up_limit, vehicle_->station());
+                      "%s: no %s within half ~catch_up_limit (%.3f s) of simulated time after ROS "
+                      "time jumped back, although the run before had %s: driving on from station "
+                      "%.2f m%s",
+                      nodeName(), terrain ? "speed message" : "terrain patch", holdLimit(),
+                      terrain ? "moved" : "terrain from its start", vehicle_->station(),
+                      terrain ? "" : " on flat ground");
   }
   if (due > 1 && !use_sim_time_)  // on simulated time the /clock period sets the steps per tick
     ++events_.late_ticks;

@@ -92,14 +92,14 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     // A source wrong from its first message must not look like one that has not started.
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no terrain: the patches received were rejected");
-  } else if (holding_for_terrain_) {
+  } else if (buffer.empty() && behind > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "no terrain: the patches received lay wholly behind the vehicle (dropped)");
+  } else if (hold_.active) {
     // A bag loop's first patches due any moment: the restarted vehicle waits for them, unstepped.
     status.summary(
         diagnostic_msgs::DiagnosticStatus::OK,
         "ROS time jumped back: holding the restarted vehicle for the loop's first patch");
-  } else if (buffer.empty() && behind > 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "no terrain: the patches received lay wholly behind the vehicle (dropped)");
   } else if (buffer.empty() && flat_since_restart_ && vehicle_->speed() == 0.0) {
     // Standing on the flat ground of a start or reset until the terrain source begins is the
     // normal way to start, not a fault for an aggregator to flag.

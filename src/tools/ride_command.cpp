@@ -50,13 +50,13 @@ using Clock = std::chrono::steady_clock;
 
 /// What one run gives at one point.
 struct PointRide {
-  double absorbed_power = 0.0;  ///< [W]
-  double weighted_rms_z = 0.0;  ///< a_wz [m/s^2]
-  double vdv_z = 0.0;           ///< [m/s^1.75]
-  double total_value = 0.0;     ///< a_v [m/s^2]
+  double absorbed_power = 0.0;      ///< [W]
+  double weighted_rms_z = 0.0;      ///< a_wz [m/s^2]
+  double vdv_z = 0.0;               ///< [m/s^1.75]
+  double total_value = 0.0;         ///< a_v [m/s^2]
   double seat_surface_total = 0.0;  ///< a_v with the rotations, six axes [m/s^2]
-  double peak_up_g = 0.0;       ///< low-passed [g]
-  double peak_abs_g = 0.0;      ///< low-passed [g]
+  double peak_up_g = 0.0;           ///< low-passed [g]
+  double peak_abs_g = 0.0;          ///< low-passed [g]
 };
 
 struct Run {

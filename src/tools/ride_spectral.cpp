@@ -74,10 +74,10 @@ struct RatedOutputs {
 
 // One point's metrics at one speed.
 struct PointRide {
-  dynamics::SpectralOutput z;        // P, a_wz, a_rms of the vertical acceleration
-  double weighted_rms_x = 0.0;       // Wd [m/s^2]
-  double weighted_rms_y = 0.0;       // Wd [m/s^2]
-  double total_value = 0.0;          // a_v [m/s^2]
+  dynamics::SpectralOutput z;             // P, a_wz, a_rms of the vertical acceleration
+  double weighted_rms_x = 0.0;            // Wd [m/s^2]
+  double weighted_rms_y = 0.0;            // Wd [m/s^2]
+  double total_value = 0.0;               // a_v [m/s^2]
   double seat_surface_total_value = 0.0;  // sqrt(a_v^2 + a_r^2) [m/s^2]
 };
 

@@ -9,7 +9,8 @@
 //     them), or
 //   - after it, or
 //   - after it and after the clock has run on for a few steps (a loaded machine: the node holds
-//     the restarted vehicle for them, then steps the held time on them).
+//     the restarted vehicle for them, then steps the held time on them);
+// and a last loop sends no inputs: the hold ends after half ~catch_up_limit.
 // Each loop must give the first loop's samples: the same stamps (none dropped on catch-up
 // bursts), stations and wheel displacements.
 #include <gtest/gtest.h>
@@ -226,19 +227,41 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   play(&late, 3);
   expectSameRun(first, late, tolerance, "inputs 4 ms after the jump back");
 
+  // Sixth loop: the jump back and no inputs at all. The hold ends after half ~catch_up_limit
+  // (50 ms) of clock: the vehicle then steps on (on the restart's flat ground), every step
+  // published, the last clock's included. (After 0.3 s of wall time: the node keeps what it
+  // received for 0.25 s, and would re-apply the fifth loop's patches, stamped with the start.)
+  test::spinFor(0.3);
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  ros::Time tick = start_;
+  for (int k = 0; k < 60; ++k) {
+    tick += ros::Duration(1e-3);
+    setClock(tick);
+    if (k == 40) {
+      test::spinFor(0.05);
+      EXPECT_EQ(last_.header.stamp, start_) << "a step during the hold";
+    }
+  }
+  EXPECT_TRUE(waitForSample(tick)) << "the hold did not end";
+
   t = start_ + ros::Duration(5.0);  // let the diagnostics period pass on simulated time
   setClock(t);
   ASSERT_TRUE(test::spinUntil(
-      [&] { return diagnostics_.value(": loop", "time jumps back (total)") >= 4; }, 10.0))
+      [&] {
+        return diagnostics_.value(": loop", "time jumps back (total)") >= 5 &&
+               diagnostics_.value(": loop", "holds ended without terrain (total)") >= 1;
+      },
+      10.0))
       << diagnostics_.describe();
   // The third loop's inputs were re-applied after the jump (the second's may have been).
   EXPECT_GE(diagnostics_.value(": loop", "patches re-applied after a jump back (total)"),
             static_cast<double>(patches_.size()));
   EXPECT_GE(diagnostics_.value(": loop", "speeds re-applied after a jump back (total)"), 1.0);
-  // The fifth loop was held (the fourth's inputs may have come before its first step) and none
-  // ran out.
-  EXPECT_GE(diagnostics_.value(": loop", "restarts held for the loop's terrain (total)"), 1.0);
-  EXPECT_EQ(diagnostics_.value(": loop", "holds ended without terrain (total)"), 0.0);
+  // The fifth and sixth loops were held (the fourth's inputs may have come before its first
+  // step); only the sixth's hold ran out.
+  EXPECT_GE(diagnostics_.value(": loop", "restarts held for the loop's terrain (total)"), 2.0);
+  EXPECT_EQ(diagnostics_.value(": loop", "holds ended without terrain (total)"), 1.0);
   // The patches that arrived behind the vehicle before a jump were all re-applied: none is
   // counted (nor warned) as dropped, so a healthy loop keeps the terrain status OK.
   EXPECT_EQ(diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)"), 0.0);

@@ -191,6 +191,10 @@ class VehicleDynamicsNode {
   /// wholly behind (`dropped` says where it lay), which is a fault only when no jump back
   /// re-applies it in time (expireRecentPatches).
   void rememberPatch(const TerrainProfile::ConstPtr& msg, std::string dropped);
+  /// A patch was taken into the terrain: the run's first patch time, and the end of a hold.
+  void notePatchTaken(const ros::Time& stamp);
+  /// The longest a held restart waits [s] of simulated time: half ~catch_up_limit.
+  double holdLimit() const;
   /// The kept patches older than kRewindWindow are forgotten; those dropped are reported now.
   void expireRecentPatches();
   /// A valid patch wholly behind the vehicle, dropped for good: counted, named and said.
@@ -247,11 +251,24 @@ class VehicleDynamicsNode {
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::vector<geometry_msgs::TransformStamped> pending_static_;  // until the first /clock
   bool flat_since_restart_ = true;  // no patch since the start or a reset that cleared the terrain
-  // A restart after a jump back of ROS time (a bag loop) whose run before it had terrain, and
-  // none re-applied: the vehicle is held at its restart, unstepped, until the loop's first patch
-  // arrives, then steps the held time on it (advanceTo) from the next /clock on (onClock).
-  bool holding_for_terrain_ = false;
-  bool terrain_in_hold_ = false;                 // a patch was taken during the hold
+  // A restart after a jump back of ROS time (a bag loop) whose run before it had terrain from its
+  // start, and none re-applied: the vehicle is held at its restart, unstepped, until the new
+  // pass's first patch (and, if the run before moved and no speed came back with the jump, a
+  // speed) has arrived, then steps the held time on them from the next /clock on (onClock,
+  // advanceTo).
+  struct Hold {
+    bool active = false;
+    bool terrain = false;          // a patch of the new pass was taken
+    bool awaiting_speed = false;   // a speed message is awaited too
+    bool speed = false;            // and has arrived
+    ros::Time old_time, new_time;  // the jump's: a patch stamped nearer new_time is the new pass's
+  };
+  Hold hold_;
+  // The run since the last start or restart: its ROS start time, and how long after it its first
+  // patch came ([s]; < 0: none yet). A run whose terrain came later than a hold may last is not
+  // held for at the next jump (a bag whose terrain begins late would otherwise wait every loop).
+  ros::Time run_start_;
+  double first_patch_lag_ = -1.0;
   std::uint64_t patches_behind_at_restart_ = 0;  // events_.patches_behind at the last restart
   // The last start or reset cleared the terrain (the contacts hold the flat ground u = 0 until a
   // patch covers them), at this station.
