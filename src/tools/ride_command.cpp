@@ -57,6 +57,8 @@ struct PointRide {
   double seat_surface_total = 0.0;  ///< a_v with the rotations, six axes [m/s^2]
   double peak_up_g = 0.0;           ///< low-passed [g]
   double peak_abs_g = 0.0;          ///< low-passed [g]
+  double weighted_rms_x = 0.0;      ///< a_wx (Wd) [m/s^2]
+  double weighted_rms_y = 0.0;      ///< a_wy (Wd) [m/s^2]
 };
 
 struct Run {
@@ -163,7 +165,9 @@ void run(const RideOptions& opt) {
       r.points.push_back(
           {z.absorbedPower().value_or(0.0), z.weightedRms(), z.vibrationDoseValue(),
            comfort[i].meter().translationalTotalValue(), comfort[i].meter().seatSurfaceTotalValue(),
-           peaks[i].peakUp() / kStandardGravity, peaks[i].peakAbsolute() / kStandardGravity});
+           peaks[i].peakUp() / kStandardGravity, peaks[i].peakAbsolute() / kStandardGravity,
+           comfort[i].meter().longitudinal().weightedRms(),
+           comfort[i].meter().lateral().weightedRms()});
     }
     return r;
   });
@@ -248,6 +252,8 @@ void run(const RideOptions& opt) {
             .field("absorbed_power_w", m.absorbed_power)
             .field("weighted_rms_z_m_s2", m.weighted_rms_z)
             .field("vdv_z_m_s1_75", m.vdv_z)
+            .field("weighted_rms_x_m_s2", m.weighted_rms_x)
+            .field("weighted_rms_y_m_s2", m.weighted_rms_y)
             .field("vibration_total_value_m_s2", m.total_value)
             .field("seat_surface_total_value_m_s2", m.seat_surface_total)
             .field("peak_up_g", m.peak_up_g)

@@ -1483,6 +1483,8 @@ class TvdCliTest(unittest.TestCase):
                                       ("weighted_rms_z_m_s2", "weighted_rms_m_s2"),
                                       ("vdv_z_m_s1_75", "vdv_m_s1_75"),
                                       ("vibration_total_value_m_s2", "vibration_total_value_m_s2"),
+                                      ("weighted_rms_x_m_s2", "weighted_rms_x_m_s2"),
+                                      ("weighted_rms_y_m_s2", "weighted_rms_y_m_s2"),
                                       ("seat_surface_total_value_m_s2", "seat_surface_total_value_m_s2")):
                 self.assertAlmostEqual(r[ride_key] / comfort[point][sim_key], 1.0, places=9,
                                        msg=f"{point} {ride_key}")
