@@ -120,6 +120,12 @@ def main():
               "m/s^2, peak |a| %.2f m/s^2 over %.2f s"
               % (comfort.point, comfort.weighting, comfort.weighted_rms, comfort.vdv,
                  comfort.mtvv, comfort.peak_acceleration, comfort.duration))
+        if hasattr(comfort, "seat_surface_total_value"):  # a bag of version 0.5.0 or later
+            print("  every axis of the seat surface: a_v %.3f m/s^2 (x, y, z), hull rotations (We) "
+                  "roll %.3f, pitch %.3f, yaw %.3f rad/s^2, seat-surface total %.3f m/s^2"
+                  % (comfort.vibration_total_value, comfort.weighted_rms_roll,
+                     comfort.weighted_rms_pitch, comfort.weighted_rms_yaw,
+                     comfort.seat_surface_total_value))
     if loop:
         mean_us = float(loop.get("step time mean [us]", "nan"))
         rate = float(loop.get("rate [Hz]", "1000"))
