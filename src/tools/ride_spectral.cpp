@@ -323,35 +323,6 @@ void refuseUndampedModes(const dynamics::SpectralRide& ride, double low, double 
   throw InputError(m.str());
 }
 
-// Modes in the band that the grid does not resolve: a half-power band 2 zeta f narrower than two
-// grid steps (zeta < h = ln(10) / points per decade; spectral_ride.h). The trapezoid's error on
-// such a resonance, of either sign as the speed moves the grid across it, is 0.4 % of its share
-// at zeta = h, 1 % at 0.84 h, 9 % at h / 2 and 25 % at h / 3; the limits found between such
-// figures move with it.
-std::optional<std::string> unresolvedModeWarning(const RideOptions& opt,
-                                                 const dynamics::SpectralRide& ride, double low,
-                                                 double high) {
-  const double step = std::log(10.0) / opt.points_per_decade;
-  std::size_t count = 0;
-  double least = step;
-  const std::string listed = listModes(ride.modeDamping(), step, low, high, &count, &least);
-  if (count == 0)
-    return std::nullopt;
-  const double needed = std::ceil(std::log(10.0) / least);
-  std::ostringstream m;
-  m << std::setprecision(3) << count << " mode(s) in the band of the speeds asked for (" << low
-    << " .. " << high << " Hz) are damped too lightly for the frequency grid ("
-    << opt.points_per_decade << " points per decade resolve a damping ratio down to " << step
-    << "): " << listed
-    << ". The grid's error on such a resonance's share is 0.4 % at that ratio, 9 % at half of "
-       "it, and changes sign from one speed to the next, moving the limits found: ";
-  if (needed <= dynamics::SpectralRideOptions::kMaxPointsPerDecade)
-    m << "--points-per-decade " << static_cast<long long>(needed) << " resolves them";
-  else
-    m << "no grid does; give the vehicle more damping";
-  return m.str();
-}
-
 // With independent sides the left and right profiles meet at the road's centre line: an offset
 // that carries inputs across it puts them on the other track's profile.
 std::optional<std::string> sideCrossingWarning(const RideOptions& opt,
@@ -412,7 +383,6 @@ void runSpectralRide(const RideOptions& opt) {
   const double band_high =
       *std::max_element(sweep.begin(), sweep.end()) / kKmhPerMs * road.max_frequency;
   refuseUndampedModes(ride, band_low, band_high);
-  warn(&warnings, unresolvedModeWarning(opt, ride, band_low, band_high));
 
   RideRuns<Run> rate([&](double speed_kmh) {
     const dynamics::SpectralRideResult r = ride.evaluate(speed_kmh / kKmhPerMs);
