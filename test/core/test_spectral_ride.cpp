@@ -36,6 +36,18 @@ SpectralRide rideOf(const SecondOrderSystem& s, const std::vector<DofIndex>& row
                       coupled ? modalDamping(modal, s) : Matrix());
 }
 
+/// S_a(f) [(m/s^2)^2/Hz] of the base-excited oscillator test::oneDof(m, c, k, c) on `road` at
+/// `speed`: |-ω^2 (k + jωc) / (k - ω^2 m + jωc)|^2 S_h(f).
+std::function<double(double)> oneDofPsd(double m, double c, double k, const RoadSpectrum& road,
+                                        double speed) {
+  return [=](double f) {
+    const double w = kTwoPi * f;
+    const std::complex<double> h =
+        -w * w * std::complex<double>(k, w * c) / std::complex<double>(k - w * w * m, w * c);
+    return std::norm(h) * temporalRoadPsd(road, f, speed);
+  };
+}
+
 // A discrete damper c between DOFs i and j (an arm damper): C no longer a combination of M, K.
 void addDamper(SecondOrderSystem* s, int i, int j, double c) {
   s->damping(i, i) += c;
@@ -158,12 +170,7 @@ TEST_P(SpectralRideGrid, DefaultGridResolvesALightlyDampedResonance) {
   const std::vector<AnalogSection> power = absorbedPowerVerticalSections();
   for (double speed : {2.0, 8.0, 20.0}) {
     const SpectralRideResult r = ride.evaluate(speed);
-    auto s_a = [&](double f) {
-      const double w = kTwoPi * f;
-      const std::complex<double> h =
-          -w * w * std::complex<double>(k, w * c) / std::complex<double>(k - w * w * m, w * c);
-      return std::norm(h) * temporalRoadPsd(road, f, speed);
-    };
+    const auto s_a = oneDofPsd(m, c, k, road, speed);
     const double lo = speed * road.min_frequency, hi = speed * road.max_frequency;
     const int n = 200001;
     const double mean_square = simpsonLog(s_a, lo, hi, n);
@@ -210,12 +217,7 @@ TEST(SpectralRide, EachOutputTakesItsWeighting) {
   const SpectralRide ride(modal, Vector::Zero(1), {0, 0, 0}, road, options);
   const double speed = 6.0;
   const SpectralRideResult r = ride.evaluate(speed);
-  auto s_a = [&](double f) {
-    const double w = kTwoPi * f;
-    const std::complex<double> h =
-        -w * w * std::complex<double>(k, w * c) / std::complex<double>(k - w * w * m, w * c);
-    return std::norm(h) * temporalRoadPsd(road, f, speed);
-  };
+  const auto s_a = oneDofPsd(m, c, k, road, speed);
   const double lo = speed * road.min_frequency, hi = speed * road.max_frequency;
   std::vector<double> weighted;
   for (std::size_t o = 0; o < weightings.size(); ++o) {
