@@ -1,10 +1,10 @@
 #include "point_comfort.h"
 
-#include "simulation_layout.h"
-
 #include <cmath>
 #include <sstream>
 #include <utility>
+
+#include "simulation_layout.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
