@@ -25,9 +25,12 @@ constexpr double kMinPointsPerDecade = SpectralRideOptions::kMinPointsPerDecade;
 constexpr double kMaxPointsPerDecade = SpectralRideOptions::kMaxPointsPerDecade;
 constexpr double kMaxGridPoints = 1e6;
 // The local grid of a resonance the log grid does not resolve (grid()).
+constexpr double kRefineBelow = 1.5;    // for ζ < kRefineBelow h (h the log grid's step)
+constexpr double kRefineCut = 5.0;      // or ζ < kRefineCut h with a band end in
+constexpr double kCutWithin = 5.0;      // f_r (1 ± kCutWithin ζ)
 constexpr double kRefineInner = 2.0;    // evenly over f_r (1 ± kRefineInner ζ)
-constexpr int kRefineInnerPoints = 17;  // points there (8 per half-power band)
-constexpr double kRefineRatio = 1.05;   // then each point this many times farther out
+constexpr int kRefineInnerPoints = 33;  // points there (16 per half-power band)
+constexpr double kRefineRatio = 1.02;   // then each point this many times farther out
 constexpr double kRefineReach = 10.0;   // to f_r (1 ± kRefineReach h)
 
 [[noreturn]] void fail(const std::string& what) {
@@ -234,22 +237,29 @@ Vector SpectralRide::grid(double speed) const {
         low * std::pow(high / low, static_cast<double>(i) / static_cast<double>(count - 1));
   f.front() = low;
   f.back() = high;
-  // A resonance narrower than the log grid resolves (ζ < h, h = ln(10) / points per decade: its
-  // half-power band 2ζf spans fewer than two steps, and the trapezoid errs by 0.4 % of its share
-  // at ζ = h, 9 % at h/2, with a sign that changes with speed) gets points of its own:
-  // kRefineInnerPoints evenly over f_r (1 ± 2ζ), then geometrically (each kRefineRatio times
-  // farther) out to f_r (1 ± 10 h), where the log grid's step has become small beside the
-  // distance to the peak. The trapezoid then errs by under 5e-4 of the resonance's share for any
-  // ζ > 0 (a Lorentzian on this grid, 1e-5 <= ζ < h; spectral_ride's tests), at some 125-350
-  // more frequencies per such mode. Undamped modes (ζ = 0) are left alone: no grid integrates
-  // them.
+  // A resonance narrower than the log grid resolves well (ζ < 1.5 h, h = ln(10) / points per
+  // decade: at ζ = h its half-power band 2ζf spans two steps and the trapezoid errs by up to
+  // 4e-3 of its share, 9 % at h/2, with a sign that changes with speed), or one that a band end
+  // cuts (ζ < 5 h, the end within f_r (1 ± 5ζ): the end's interval misses the peak's flank),
+  // gets points of its own: kRefineInnerPoints evenly over f_r (1 ± 2ζ), then geometrically
+  // (each kRefineRatio times farther) out to f_r (1 ± 10 h), where the log grid's step has
+  // become small beside the distance to the peak. The trapezoid then errs by under 5e-4 of the
+  // band's integral (an oscillator with ζ from 1e-4 to 2 %, its peak whole or cut by the band's
+  // top; spectral_ride's tests), at some 300-850 more frequencies per such mode. Undamped modes
+  // (ζ = 0) are left alone: no grid integrates them.
   const double step = std::log(10.0) / options_.points_per_decade;
   const std::size_t base = f.size();
   for (const ModeDamping& mode : modeDamping()) {
     const double zeta = mode.ratio, f_r = mode.frequency_hz;
-    if (!(zeta > 0.0 && zeta < step) || f_r * (1.0 - kRefineReach * step) > high ||
-        f_r * (1.0 + kRefineReach * step) < low)
-      continue;
+    const bool narrow = zeta < kRefineBelow * step;
+    const bool cut =
+        zeta < kRefineCut * step &&
+        ((f_r * (1.0 - kCutWithin * zeta) < low && f_r * (1.0 + kCutWithin * zeta) > low) ||
+         (f_r * (1.0 - kCutWithin * zeta) < high && f_r * (1.0 + kCutWithin * zeta) > high));
+    const double reach = std::max(kRefineReach * step, 10.0 * zeta);
+    if (!(zeta > 0.0) || !(narrow || cut) || f_r * (1.0 - reach) > high ||
+        f_r * (1.0 + reach) < low)
+      continue;  // resolved, undamped, or far outside the band
     const auto add = [&](double x) {
       const double at = f_r * (1.0 + x);
       if (at > low && at < high)
@@ -258,7 +268,7 @@ Vector SpectralRide::grid(double speed) const {
     const double inner = kRefineInner * zeta;
     for (int k = 0; k < kRefineInnerPoints; ++k)
       add(-inner + 2.0 * inner * k / (kRefineInnerPoints - 1));
-    for (double x = inner * kRefineRatio; x < kRefineReach * step; x *= kRefineRatio) {
+    for (double x = inner * kRefineRatio; x < reach; x *= kRefineRatio) {
       add(x);
       add(-x);
     }

@@ -295,12 +295,15 @@ bool VehicleDynamicsNode::standingOnClearedGround() const {
 }
 
 void VehicleDynamicsNode::notePatchTaken(const ros::Time& stamp) {
+  // During a hold, a late patch of the pass before (stamped nearer the old time than the new,
+  // and not after the old pass's end: a source stamping in another time base counts as new)
+  // neither ends it nor starts the new run's terrain. Unstamped patches cannot be told apart.
+  if (hold_.active && !stamp.isZero() && stamp <= hold_.old_time + ros::Duration(1.0) &&
+      std::abs((stamp - hold_.old_time).toSec()) < std::abs((stamp - hold_.new_time).toSec()))
+    return;
   if (first_patch_lag_ < 0.0)
     first_patch_lag_ = run_start_.isZero() ? 0.0 : std::max(0.0, (now() - run_start_).toSec());
-  // A late patch of the pass before (stamped near the old time) does not end a hold: the new
-  // pass's terrain is still to come. Unstamped patches cannot be told apart and count.
-  if (hold_.active && (stamp.isZero() || std::abs((stamp - hold_.new_time).toSec()) <
-                                             std::abs((stamp - hold_.old_time).toSec())))
+  if (hold_.active)
     hold_.terrain = true;  // the hold ends at the next /clock (onClock)
 }
 
@@ -438,7 +441,8 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   hold_ = Hold();
   run_start_ = now();
-  first_patch_lag_ = -1.0;
+  // Terrain kept (~reset_to keep_terrain) is there from the run's start.
+  first_patch_lag_ = terrain == ResetTerrain::Keep && !vehicle_->terrain().empty() ? 0.0 : -1.0;
   patches_behind_at_restart_ = events_.patches_behind;
   ++events_.resets;
   return uncovered;
@@ -478,9 +482,12 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   ROS_WARN("%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0",
            nodeName(), (sample_time_ - now).toSec());
   // Held for if the run before had terrain from its start (or was itself held), and moving.
-  const bool hold_for_terrain = hold_.active || (!flat_since_restart_ && first_patch_lag_ >= 0.0 &&
-                                                 first_patch_lag_ <= holdLimit());
-  const bool had_speed = hold_.active ? hold_.awaiting_speed : vehicle_->commandedSpeed() > 0.0;
+  // A hold needs a catch-up of two steps at least (~catch_up_limit): the held steps are stepped
+  // in one tick at the release.
+  const bool hold_for_terrain = max_catch_up_steps_ >= 2 &&
+                                (hold_.active || (!flat_since_restart_ && first_patch_lag_ >= 0.0 &&
+                                                  first_patch_lag_ <= holdLimit()));
+  const bool had_speed = vehicle_->commandedSpeed() > 0.0 || (hold_.active && hold_.awaiting_speed);
   const ros::Time old_time = sample_time_;
   const std::uint64_t speeds_before = events_.speeds_reapplied;
   restart();
@@ -715,18 +722,25 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   if (due == 0)
     return;
   if (hold_.active) {
-    if (static_cast<double>(due) * static_cast<double>(step_ns_) * 1e-9 < holdLimit())
+    const bool inputs = hold_.terrain && (!hold_.awaiting_speed || hold_.speed);
+    const bool due_out =
+        static_cast<double>(due) * static_cast<double>(step_ns_) * 1e-9 >= holdLimit();
+    if (!inputs && !due_out)
       return;  // the steps wait for the new pass's inputs (restartAfterJump)
     const bool terrain = hold_.terrain;
     hold_ = Hold();
-    ++events_.terrain_holds_expired;
-    TVD_WARN_THROTTLE(kWarnPeriod,
-                      "%s: no %s within half ~catch_up_limit (%.3f s) of simulated time after ROS "
-                      "time jumped back, although the run before had %s: driving on from station "
-                      "%.2f m%s",
-                      nodeName(), terrain ? "speed message" : "terrain patch", holdLimit(),
-                      terrain ? "moved" : "terrain from its start", vehicle_->station(),
-                      terrain ? "" : " on flat ground");
+    if (!terrain) {
+      ++events_.terrain_holds_expired;
+      TVD_WARN_THROTTLE(kWarnPeriod,
+                        "%s: no terrain patch within half ~catch_up_limit (%.3f s) of simulated "
+                        "time after ROS time jumped back, although the run before had terrain "
+                        "from its start: driving on from station %.2f m on flat ground",
+                        nodeName(), holdLimit(), vehicle_->station());
+    } else if (!inputs) {
+      // The terrain came, the speed did not (a driver that sends it once, or latched): the
+      // vehicle goes on at the restart's speed, as it would have without the hold.
+      ++events_.speed_holds_expired;
+    }
   }
   if (due > 1 && !use_sim_time_)  // on simulated time the /clock period sets the steps per tick
     ++events_.late_ticks;

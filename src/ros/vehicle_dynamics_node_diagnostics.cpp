@@ -65,6 +65,7 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("speeds re-applied after a jump back (total)", events_.speeds_reapplied);
   status.add("restarts held for the loop's terrain (total)", events_.terrain_holds);
   status.add("holds ended without terrain (total)", events_.terrain_holds_expired);
+  status.add("holds ended without a speed (total)", events_.speed_holds_expired);
   status.add("non-finite resets (total)", events_.diverged);
   status.add("step time mean [us]", step_window_.mean() * 1e6);
   status.add("step time p99 [us]", step_p99 * 1e6);

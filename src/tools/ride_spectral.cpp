@@ -235,6 +235,22 @@ std::optional<std::string> bandCutWarning(const RideOptions& opt,
                                           const std::map<double, Run>& runs) {
   if (opt.max_frequency_given || !(road.max_frequency < kBandCheckFrequency))
     return std::nullopt;
+  // The wider band may hold an undamped mode the run's band does not: no integral exists there.
+  const double wide_low =
+      *std::min_element(sweep.begin(), sweep.end()) / kKmhPerMs * road.min_frequency;
+  const double wide_high =
+      *std::max_element(sweep.begin(), sweep.end()) / kKmhPerMs * kBandCheckFrequency;
+  for (const auto& mode : ride.modeDamping())
+    if (mode.ratio <= kUndampedRatio && mode.frequency_hz >= wide_low &&
+        mode.frequency_hz <= wide_high) {
+      std::ostringstream m;
+      m << std::setprecision(3) << "the road's band ends at " << road.max_frequency
+        << " cycles/m (ISO 8608's classification band); what a band reaching "
+        << kBandCheckFrequency << " cycles/m would add is not estimated: a mode without damping ("
+        << mode.frequency_hz << " Hz) lies in it, across which the PSD has no finite integral. "
+        << "--max-frequency sets the band your road has";
+      return m.str();
+    }
   dynamics::SpectralRideOptions options;
   options.points_per_decade = opt.points_per_decade;
   options.weightings = rated.weightings;
@@ -289,7 +305,9 @@ std::string listModes(const std::vector<dynamics::SpectralRide::ModeDamping>& mo
     ++*count;
     *least = std::min(*least, mode.ratio);
     std::ostringstream one;
-    one << std::setprecision(3) << mode.frequency_hz << " Hz (" << mode.ratio << ")";
+    // Round-off ratios of undamped modes (1e-14, -1e-13) print as 0, so that repeats merge.
+    one << std::setprecision(3) << mode.frequency_hz << " Hz ("
+        << (std::abs(mode.ratio) <= kUndampedRatio ? 0.0 : mode.ratio) << ")";
     if (!listed.empty() && listed.back().first == one.str())
       ++listed.back().second;
     else

@@ -1861,6 +1861,12 @@ class TvdCliTest(unittest.TestCase):
                                  "--iso8608", "C", "--speeds", "10,30", "--cache-dir", self.cache],
                                 "mode(s) without damping lie in the band", "2.14 Hz (0)",
                                 "no finite integral", "give the vehicle damping")
+        # At 1 and 2 km/h the band holds none, the band-top check's wider band does: not
+        # estimated, said so.
+        low = self.tvd_json("ride", "--vehicle", undamped, "--variant", "untracked", "--iso8608",
+                            "C", "--speeds", "1,2", "--cache-dir", self.cache)
+        self.assertTrue(any("would add is not estimated: a mode without damping (2.14 Hz)" in w
+                            for w in low["warnings"]), low["warnings"])
 
     def test_ride_spectral_bad_options_are_named_before_any_work(self):
         cache = self.path("cache_spectral_refused")

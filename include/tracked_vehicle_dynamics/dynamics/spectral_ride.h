@@ -37,10 +37,12 @@
 // 4000 per decade: 100x closer. Most of it is the wheelbase filter's ripple of |H_v|^2, period
 // v / L in f, which the grid samples 1 / (L h n_max) times per period at the top of the band (12
 // for L = 5 m). On the road alone the rule errs by h^2 w (w + 1) / 12 (1.7e-5 for w = 2).
-// A resonance with ζ < h (its half-power band spans fewer than two steps) would be integrated
-// 0.4 % wrong at ζ = h, 9 % at h/2, 25 % at h/3, with a sign that changes with speed; grid()
-// gives such a mode points of its own (evenly across f_r (1 ± 2ζ), then geometrically out to
-// f_r (1 ± 10h)), which bring the error under 5e-4 of its share for any ζ > 0.
+// A resonance with ζ near or below h (its half-power band spans about two steps or fewer) would
+// be integrated up to 0.4 % wrong at ζ = h, 9 % at h/2, 25 % at h/3, with a sign that changes with
+// speed, and a band end cutting a peak costs a few % too; grid() gives such a mode (ζ < 1.5 h, or
+// ζ < 5 h with a band end within f_r (1 ± 5ζ)) points of its own (33 evenly across
+// f_r (1 ± 2ζ), then geometrically, 2 % farther each, out to f_r (1 ± 10h)), which bring the error
+// under 5e-4 of the band's integral for any ζ > 0.
 // Cost per speed: the modal forces of a block of frequencies come from one real matrix product,
 // [Φ^T K_u | Φ^T C_u] (inputs grouped: those at one station and on one side share τ and are summed
 // once, at construction: the tracked model's 360 inputs lie at 30 stations) times [Re τ, Im τ;

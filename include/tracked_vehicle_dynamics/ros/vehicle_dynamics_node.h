@@ -109,6 +109,7 @@ class VehicleDynamicsNode {
     std::uint64_t patches_reapplied = 0, speeds_reapplied = 0;  // after a jump back
     // Restarts after a jump back held for the loop's first patch, and holds that ran out.
     std::uint64_t terrain_holds = 0, terrain_holds_expired = 0;
+    std::uint64_t speed_holds_expired = 0;  // the terrain came, an awaited speed did not
   };
   /// A terrain patch kept for kRewindWindow of wall time, in case ROS time jumps back to it.
   struct RecentPatch {
