@@ -31,7 +31,7 @@ constexpr double kCutWithin = 5.0;      // f_r (1 ± kCutWithin ζ)
 constexpr double kRefineInner = 2.0;    // evenly over f_r (1 ± kRefineInner ζ)
 constexpr int kRefineInnerPoints = 33;  // points there (16 per half-power band)
 constexpr double kRefineRatio = 1.02;   // then each point this many times farther out
-constexpr double kRefineReach = 10.0;   // to f_r (1 ± kRefineReach h)
+constexpr double kRefineReach = 10.0;   // to f_r (1 ± max(kRefineReach h, 10ζ))
 
 [[noreturn]] void fail(const std::string& what) {
   throw InputError("spectral ride: " + what);
@@ -242,11 +242,11 @@ Vector SpectralRide::grid(double speed) const {
   // 4e-3 of its share, 9 % at h/2, with a sign that changes with speed), or one that a band end
   // cuts (ζ < 5 h, the end within f_r (1 ± 5ζ): the end's interval misses the peak's flank),
   // gets points of its own: kRefineInnerPoints evenly over f_r (1 ± 2ζ), then geometrically
-  // (each kRefineRatio times farther) out to f_r (1 ± 10 h), where the log grid's step has
-  // become small beside the distance to the peak. The trapezoid then errs by under 5e-4 of the
-  // band's integral (an oscillator with ζ from 1e-4 to 2 %, its peak whole or cut by the band's
-  // top; spectral_ride's tests), at some 300-850 more frequencies per such mode. Undamped modes
-  // (ζ = 0) are left alone: no grid integrates them.
+  // (each kRefineRatio times farther) out to f_r (1 ± 10 h) (10ζ for a wider cut peak), where
+  // the log grid's step has become small beside the distance to the peak. The trapezoid then errs
+  // by under 5e-4 of the band's integral (an oscillator with ζ from 1e-4 to 2 %, its peak whole or
+  // cut by the band's top; spectral_ride's tests), at some 300-850 more frequencies per such mode.
+  // Undamped modes (ζ = 0) are left alone: no grid integrates them.
   const double step = std::log(10.0) / options_.points_per_decade;
   const std::size_t base = f.size();
   for (const ModeDamping& mode : modeDamping()) {

@@ -295,7 +295,7 @@ std::optional<std::string> bandCutWarning(const RideOptions& opt,
 // The modes in [low, high] Hz, their damping ratio below `below`, listed "f Hz (zeta)" with
 // repeated ones (a left and a right mode) once, "x2".
 std::string listModes(const std::vector<dynamics::SpectralRide::ModeDamping>& modes, double below,
-                      double low, double high, std::size_t* count, double* least) {
+                      double low, double high, std::size_t* count) {
   constexpr std::size_t kListed = 5;
   std::vector<std::pair<std::string, int>> listed;
   *count = 0;
@@ -303,7 +303,6 @@ std::string listModes(const std::vector<dynamics::SpectralRide::ModeDamping>& mo
     if (!(mode.frequency_hz >= low && mode.frequency_hz <= high && mode.ratio < below))
       continue;
     ++*count;
-    *least = std::min(*least, mode.ratio);
     std::ostringstream one;
     // Round-off ratios of undamped modes (1e-14, -1e-13) print as 0, so that repeats merge.
     one << std::setprecision(3) << mode.frequency_hz << " Hz ("
@@ -327,9 +326,7 @@ std::string listModes(const std::vector<dynamics::SpectralRide::ModeDamping>& mo
 // would the limits found between them). Refused before the sweep, naming the modes.
 void refuseUndampedModes(const dynamics::SpectralRide& ride, double low, double high) {
   std::size_t count = 0;
-  double least = 1.0;
-  const std::string listed =
-      listModes(ride.modeDamping(), kUndampedRatio, low, high, &count, &least);
+  const std::string listed = listModes(ride.modeDamping(), kUndampedRatio, low, high, &count);
   if (count == 0)
     return;
   std::ostringstream m;
