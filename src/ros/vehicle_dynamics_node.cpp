@@ -304,7 +304,7 @@ void VehicleDynamicsNode::notePatchTaken(const ros::Time& stamp) {
   if (first_patch_lag_ < 0.0)
     first_patch_lag_ = run_start_.isZero() ? 0.0 : std::max(0.0, (now() - run_start_).toSec());
   if (hold_.active)
-    hold_.terrain = true;  // the hold ends at the next /clock (onClock)
+    hold_.terrain = true;  // advanceTo ends the hold once its inputs are in
 }
 
 double VehicleDynamicsNode::holdLimit() const {
@@ -469,10 +469,6 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
   // by a restart at the next tick.
   if (clock_started_ && (msg->clock - sample_time_).toNSec() < -step_ns_)
     restartAfterJump(msg->clock);
-  // A held restart goes on at the first /clock after the loop's first patch: rosbag sends the
-  // loop's speed with it, on another connection, which has then arrived too.
-  else if (hold_.active && hold_.terrain && (!hold_.awaiting_speed || hold_.speed))
-    hold_ = Hold();
   latest_clock_ = msg->clock;
 }
 
@@ -499,8 +495,9 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   // A bag loop's first patches may reach the node after its /clock has moved on (a loaded
   // machine, separate connections): stepping meanwhile would drive the restarted vehicle over the
   // flat ground of the restart, unlike the first loop. So when the run before had terrain and
-  // none came back with the jump, the vehicle waits for it (at most ~catch_up_limit of simulated
-  // time, which the catch-up then steps exactly on the patches; onClock ends the hold).
+  // none came back with the jump, the vehicle waits for it, and for a speed when one is due (at
+  // most holdLimit() of simulated time, which the catch-up then steps exactly on the patches;
+  // advanceTo ends the hold).
   if (hold_for_terrain && vehicle_->terrain().empty()) {
     hold_.active = true;
     hold_.awaiting_speed = had_speed && events_.speeds_reapplied == speeds_before;

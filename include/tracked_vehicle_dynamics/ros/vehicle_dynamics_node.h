@@ -255,8 +255,7 @@ class VehicleDynamicsNode {
   // A restart after a jump back of ROS time (a bag loop) whose run before it had terrain from its
   // start, and none re-applied: the vehicle is held at its restart, unstepped, until the new
   // pass's first patch (and, if the run before moved and no speed came back with the jump, a
-  // speed) has arrived, then steps the held time on them from the next /clock on (onClock,
-  // advanceTo).
+  // speed) has arrived, then steps the held time on them (advanceTo).
   struct Hold {
     bool active = false;
     bool terrain = false;          // a patch of the new pass was taken
