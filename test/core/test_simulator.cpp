@@ -69,31 +69,74 @@ SimulatorOptions options(DiscretizationMethod method, InputHold hold, double dt 
   return o;
 }
 
+/// options() with the generalized force f_g (gravity) applied.
+SimulatorOptions options(DiscretizationMethod method, InputHold hold, const Vector& f_g) {
+  SimulatorOptions o = options(method, hold);
+  o.generalized_force = f_g;
+  return o;
+}
+
+/// The gravity load of the 14-DOF test vehicles (every DOF's mass) and their bump road: 1.5 s at
+/// 1 ms, 8 m/s over a 0.1 m bump.
+Vector gravityLoad(const SecondOrderSystem& s) {
+  return -kStandardGravity * s.mass * Vector::Ones(s.size());
+}
+Matrix bumpRoad(const SecondOrderSystem& s) {
+  return bumpInputs(s.input_stations, 1500, 1e-3, 8.0, 0.1, 1.5, 3.0);
+}
+
 }  // namespace
+
+// The outputs of the same input series through the dense augmented-exponential engine, and the
+// modal engine batched (simulate) and stepped, all from z0 (empty: static equilibrium at zero
+// road input), with their final states and the modal engine's off-diagonal damping ratio.
+struct EngineRuns {
+  Matrix dense, batch, stepped;
+  Vector dense_state, batch_state;
+  double off_diagonal = 0.0;
+  std::vector<std::string> dense_names, batch_names;
+};
+EngineRuns runEngines(const SecondOrderSystem& s, const Vector& f_g, const Matrix& w,
+                      InputHold hold = InputHold::FirstOrder, const Vector& z0_given = Vector()) {
+  const SimulatorOptions dense_options =
+      options(DiscretizationMethod::AugmentedExponential, hold, f_g);
+  const SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, hold, f_g);
+  Simulator dense(s, dense_options), batch(s, modal_options), stepped(s, modal_options);
+  const Vector z0 =
+      z0_given.size() > 0 ? z0_given : staticEquilibrium(s, Vector::Zero(s.inputCount()), f_g);
+  for (Simulator* sim : {&dense, &batch, &stepped})
+    sim->reset(z0, w.row(0).transpose());
+  EngineRuns runs{dense.simulate(w), batch.simulate(w), Matrix(w.rows(), 0)};
+  runs.stepped.resize(w.rows(), runs.batch.cols());
+  runs.stepped.row(0) = stepped.outputs().transpose();
+  for (DofIndex k = 1; k < w.rows(); ++k) {
+    stepped.step(w.row(k).transpose());
+    runs.stepped.row(k) = stepped.outputs().transpose();
+  }
+  runs.dense_state = dense.state();
+  runs.batch_state = batch.state();
+  runs.off_diagonal = batch.maxOffDiagonalDampingRatio();
+  runs.dense_names = dense.outputNames();
+  runs.batch_names = batch.outputNames();
+  return runs;
+}
 
 // Rayleigh damping C = alpha M + beta K (and C_u = beta K_u) is diagonalised by the modes, so
 // the modal-decoupled discretisation is exact as well: both engines agree to rounding, here on
 // a model with 2e10 N/m tyres, gravity and all three output quantities.
 TEST(Simulator, ModalEqualsAugmentedExponentialForRayleighDamping) {
   const SecondOrderSystem s = test::randomVehicle(14, 4, 6, 11);
-  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(14);
-  const Matrix w = bumpInputs(s.input_stations, 1500, 1e-3, 8.0, 0.1, 1.5, 3.0);
+  const Vector f_g = gravityLoad(s);
+  const Matrix w = bumpRoad(s);
+  const Vector z0 = staticEquilibrium(s, w.row(0).head(4).transpose(), f_g);
   for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
-    SimulatorOptions dense_options = options(DiscretizationMethod::AugmentedExponential, hold);
-    SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, hold);
-    dense_options.generalized_force = modal_options.generalized_force = f_g;
-    Simulator dense(s, dense_options);
-    Simulator modal(s, modal_options);
-    EXPECT_LT(modal.maxOffDiagonalDampingRatio(), 1e-8);
-    const Vector z0 = staticEquilibrium(s, w.row(0).head(4).transpose(), f_g);
-    dense.reset(z0, w.row(0).transpose());
-    modal.reset(z0, w.row(0).transpose());
-    const Matrix y_dense = dense.simulate(w);
-    const Matrix y_modal = modal.simulate(w);
-    EXPECT_LT(relativeBlockError(y_modal, y_dense, 6), kMethodAgreement);
-    EXPECT_LT((modal.state() - dense.state()).norm(), kMethodAgreement * dense.state().norm());
-    EXPECT_EQ(dense.outputNames(), modal.outputNames());
-    EXPECT_EQ(modal.outputNames()[13], "dof_1 uz/acc");
+    const EngineRuns runs = runEngines(s, f_g, w, hold, z0);
+    EXPECT_LT(runs.off_diagonal, 1e-8);
+    EXPECT_LT(relativeBlockError(runs.batch, runs.dense, 6), kMethodAgreement);
+    EXPECT_LT((runs.batch_state - runs.dense_state).norm(),
+              kMethodAgreement * runs.dense_state.norm());
+    EXPECT_EQ(runs.dense_names, runs.batch_names);
+    EXPECT_EQ(runs.batch_names[13], "dof_1 uz/acc");
   }
 }
 
@@ -281,31 +324,18 @@ TEST(Simulator, CoupledDampingIsSteppedWhole) {
     s.damping(j, i) -= c;
   }
   ASSERT_GT(ModalSystem(s).maxOffDiagonalDampingRatio(), 0.1);
-  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(14);
-  const Matrix w = bumpInputs(s.input_stations, 1500, 1e-3, 8.0, 0.1, 1.5, 3.0);
+  const Vector f_g = gravityLoad(s);
+  const Matrix w = bumpRoad(s);
   const Vector z0 = staticEquilibrium(s, w.row(0).head(4).transpose(), f_g);
   for (InputHold hold : {InputHold::ZeroOrder, InputHold::FirstOrder}) {
-    SimulatorOptions dense_options = options(DiscretizationMethod::AugmentedExponential, hold);
-    SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, hold);
-    dense_options.generalized_force = modal_options.generalized_force = f_g;
-    Simulator dense(s, dense_options);
-    Simulator modal(s, modal_options);
-    Simulator stepped(s, modal_options);
-    EXPECT_EQ(modal.maxOffDiagonalDampingRatio(), 0.0);
-    dense.reset(z0, w.row(0).transpose());
-    modal.reset(z0, w.row(0).transpose());
-    stepped.reset(z0, w.row(0).transpose());
-    const Matrix y_dense = dense.simulate(w);
-    const Matrix y_modal = modal.simulate(w);
-    EXPECT_LT(relativeBlockError(y_modal, y_dense, 6), kMethodAgreement);
-    EXPECT_LT((modal.state() - dense.state()).norm(), kMethodAgreement * dense.state().norm());
-    Matrix y_stepped(w.rows(), y_modal.cols());
-    y_stepped.row(0) = stepped.outputs().transpose();
-    for (DofIndex k = 1; k < w.rows(); ++k) {
-      stepped.step(w.row(k).transpose());
-      y_stepped.row(k) = stepped.outputs().transpose();
-    }
-    EXPECT_LT(relativeBlockError(y_stepped, y_modal, 6), 1e-10);
+    const SimulatorOptions modal_options = options(DiscretizationMethod::ModalDecoupled, hold, f_g);
+    const EngineRuns runs = runEngines(s, f_g, w, hold, z0);
+    const Matrix& y_dense = runs.dense;
+    EXPECT_EQ(runs.off_diagonal, 0.0);
+    EXPECT_LT(relativeBlockError(runs.batch, y_dense, 6), kMethodAgreement);
+    EXPECT_LT((runs.batch_state - runs.dense_state).norm(),
+              kMethodAgreement * runs.dense_state.norm());
+    EXPECT_LT(relativeBlockError(runs.stepped, runs.batch, 6), 1e-10);
 
     // Each mode on its own damping ratio (the approximation): reported, and off.
     SimulatorOptions ratios_options = modal_options;
@@ -335,7 +365,8 @@ TEST(Simulator, CoupledDampingIsSteppedWhole) {
                                 y_exact.leftCols(6).rowwise() - y_exact.row(0).leftCols(6), 6);
     };
     const SecondOrderSystem undamped = test::randomVehicle(14, 4, 6, 11);
-    Simulator undamped_cut(undamped, cut_options), undamped_dense(undamped, dense_options);
+    Simulator undamped_cut(undamped, cut_options),
+        undamped_dense(undamped, options(DiscretizationMethod::AugmentedExponential, hold, f_g));
     const Vector u0 = staticEquilibrium(undamped, w.row(0).head(4).transpose(), f_g);
     undamped_cut.reset(u0, w.row(0).transpose());
     undamped_dense.reset(u0, w.row(0).transpose());
@@ -344,8 +375,8 @@ TEST(Simulator, CoupledDampingIsSteppedWhole) {
     std::cout << "cut: " << error << " with dampers, " << own << " without\n";
     EXPECT_LT(error, 1.5 * own + 1e-5);
     // The cut state is the dense one's to that error as well (state() adds the same terms).
-    EXPECT_LT((cut.state() - dense.state()).head(14).cwiseAbs().maxCoeff(),
-              0.05 * dense.state().head(14).cwiseAbs().maxCoeff());
+    EXPECT_LT((cut.state() - runs.dense_state).head(14).cwiseAbs().maxCoeff(),
+              0.05 * runs.dense_state.head(14).cwiseAbs().maxCoeff());
   }
 }
 
@@ -570,31 +601,6 @@ TEST(Simulator, WatchedCoordinatesAreTheStatesRows) {
           << e.what();
     }
   }
-}
-
-// The outputs of the same input series through the dense augmented-exponential engine, and the
-// modal engine batched (simulate) and stepped, all from static equilibrium (first-order hold).
-struct EngineRuns {
-  Matrix dense, batch, stepped;
-};
-EngineRuns runEngines(const SecondOrderSystem& s, const Vector& f_g, const Matrix& w) {
-  SimulatorOptions dense_options =
-      options(DiscretizationMethod::AugmentedExponential, InputHold::FirstOrder);
-  SimulatorOptions modal_options =
-      options(DiscretizationMethod::ModalDecoupled, InputHold::FirstOrder);
-  dense_options.generalized_force = modal_options.generalized_force = f_g;
-  Simulator dense(s, dense_options), batch(s, modal_options), stepped(s, modal_options);
-  const Vector z0 = staticEquilibrium(s, Vector::Zero(s.inputCount()), f_g);
-  for (Simulator* sim : {&dense, &batch, &stepped})
-    sim->reset(z0, w.row(0).transpose());
-  EngineRuns runs{dense.simulate(w), batch.simulate(w), Matrix(w.rows(), 0)};
-  runs.stepped.resize(w.rows(), runs.batch.cols());
-  runs.stepped.row(0) = stepped.outputs().transpose();
-  for (DofIndex k = 1; k < w.rows(); ++k) {
-    stepped.step(w.row(k).transpose());
-    runs.stepped.row(k) = stepped.outputs().transpose();
-  }
-  return runs;
 }
 
 // Blocks where some of the inputs change at every sample and the others hold (non-zero) values:
