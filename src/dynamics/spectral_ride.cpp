@@ -171,6 +171,12 @@ SpectralRide::SpectralRide(const ModalSystem& modal, const Vector& input_lateral
     sides_.push_back(std::move(side));
   }
 
+  setComplexModes(modal, modal_damping);
+  // Once: grid() consults it at every speed.
+  mode_damping_ = computeModeDamping();
+}
+
+void SpectralRide::setComplexModes(const ModalSystem& modal, const Matrix& modal_damping) {
   const DofIndex n = modal.modeCount();
   if (modal_damping.size() == 0)
     return;
@@ -379,7 +385,7 @@ Matrix SpectralRide::complexModeGain(const Vector& f, double speed) const {
   return gain;
 }
 
-std::vector<SpectralRide::ModeDamping> SpectralRide::modeDamping() const {
+std::vector<SpectralRide::ModeDamping> SpectralRide::computeModeDamping() const {
   std::vector<ModeDamping> modes;
   if (complex_modes_) {
     // λ = -ζω ± jω sqrt(1 - ζ^2): one of each conjugate pair (overdamped pairs, on the real

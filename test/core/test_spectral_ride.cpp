@@ -287,7 +287,8 @@ TEST(SpectralRide, ModeDampingRatiosOfRealAndComplexModes) {
   addDamper(&s, 0, 1, 500.0);
   s.input_stiffness = s.stiffness;
   s.input_damping = Matrix::Zero(3, 3);
-  s.input_stations = Eigen::Vector3d(1.0, 0.0, -1.0);
+  s.input_stations =
+      (Vector(3) << 1.0, 0.0, -1.0).finished();  // not a Vector3d: GCC 12 warns (-Warray-bounds)
   s.input_lateral = Vector::Zero(3);
   s.output = Matrix::Identity(3, 3);
   s.output_names = {"a uz", "b uz", "c uz"};

@@ -157,7 +157,7 @@ class SpectralRide {
     double frequency_hz = 0.0;
     double ratio = 0.0;
   };
-  std::vector<ModeDamping> modeDamping() const;
+  const std::vector<ModeDamping>& modeDamping() const { return mode_damping_; }
 
   /// The frequency grid [Hz] at speed v [m/s]: log-spaced over [v n_min, v n_max], with local
   /// points around each resonance the log grid does not resolve (ζ < ln(10) / points per
@@ -183,6 +183,10 @@ class SpectralRide {
     Matrix complex_input_re, complex_input_im;
   };
 
+  /// The complex modes when modal_damping couples the modes (see the constructor); else nothing.
+  void setComplexModes(const ModalSystem& modal, const Matrix& modal_damping);
+  /// modeDamping()'s list, from the real or the complex modes.
+  std::vector<ModeDamping> computeModeDamping() const;
   /// Σ_sides |H_v,side|^2 [grid x outputs] by eq. 20 (real modes) or by the complex modes.
   Matrix realModeGain(const Vector& f, double speed) const;
   /// Throws InputError unless options_.weightings is empty or one per output.
@@ -196,6 +200,7 @@ class SpectralRide {
   bool complex_modes_ = false;
   ComplexVector eigenvalues_;     ///< λ_i of A [2 modes]
   ComplexMatrix complex_output_;  ///< rows of H Φ V_2 [n_outputs x 2 modes]
+  std::vector<ModeDamping> mode_damping_;  ///< modeDamping()
   RoadSpectrum road_;
   SpectralRideOptions options_;
 };
