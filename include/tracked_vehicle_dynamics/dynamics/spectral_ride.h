@@ -198,8 +198,8 @@ class SpectralRide {
   Vector damping_;        ///< d_r [1/s]
   Matrix output_;         ///< rows of H Φ [n_outputs x modes]
   bool complex_modes_ = false;
-  ComplexVector eigenvalues_;     ///< λ_i of A [2 modes]
-  ComplexMatrix complex_output_;  ///< rows of H Φ V_2 [n_outputs x 2 modes]
+  ComplexVector eigenvalues_;              ///< λ_i of A [2 modes]
+  ComplexMatrix complex_output_;           ///< rows of H Φ V_2 [n_outputs x 2 modes]
   std::vector<ModeDamping> mode_damping_;  ///< modeDamping()
   RoadSpectrum road_;
   SpectralRideOptions options_;
