@@ -9,6 +9,7 @@
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/travel_inertia.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
@@ -22,13 +23,29 @@ namespace {
 // Below this size every mode is found by the dense solver.
 constexpr DofIndex kDenseLimit = 400;
 
-// The modes of (K, M) up to `limit_hz`: Lanczos for a growing count until a mode lies above
-// the limit (or every mode was found).
+// The modes of (K, M) up to `limit_hz` and the next one above it. The modes below the limit are
+// counted first (Sylvester's law, one LDL^T: eigenvalue_count.h), so that one Lanczos run asks
+// for them and one more; the count grows (doubling) only when the highest mode found still lies
+// below the limit (a copy of a repeated eigenvalue skipped) or no count was had (the limit an
+// eigenvalue to working precision). Growing from 60 alone solved 266 modes of a six-axle tracked
+// vehicle as 60, 120, 240 and 480 (28 s against 2.6 s).
 fem::ModalBasis modesUpTo(const fem::System& system, double limit_hz, int max_modes) {
   const DofIndex n = system.size();
   if (n <= kDenseLimit)
     return fem::solveModesDense(Matrix(system.stiffness), Matrix(system.mass));
   int count = static_cast<int>(std::min<DofIndex>(60, n - 1));
+  try {
+    const int below =
+        fem::eigenvaluesBelow(system.stiffness, system.mass, std::pow(kTwoPi * limit_hz, 2));
+    if (below > max_modes)
+      throw InputError("full-model reference: " + std::to_string(below) + " modes below " +
+                       std::to_string(limit_hz) + " Hz, more than " + std::to_string(max_modes) +
+                       "; lower the frequency limit (tvd: --max-mode-hz), the modes above it "
+                       "enter statically");
+    count = static_cast<int>(std::min<DofIndex>(std::max(below + 1, 20), n - 1));
+  } catch (const SolverError&) {
+    // No count: the growing request below finds the limit all the same.
+  }
   for (;;) {
     fem::ModalRequest request;
     request.count = count;
