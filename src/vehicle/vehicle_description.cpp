@@ -742,15 +742,38 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
              ? std::string("give damping.modal_ratio, e.g. the bundled vehicle's 0.05")
              : std::string("give damping.rayleigh_alpha or damping.rayleigh_beta")) +
         ", or arm dampers: suspension.arm_damping > 0 on some damping.damped_stations)");
-  const double half_wheelbase = 0.5 * d.running_gear.axle_spacing * (d.running_gear.axle_count - 1);
-  if (std::abs(d.hull.cog_x) > half_wheelbase)
-    warnings.push_back(
-        "hull.cog_x: the centre of gravity (x = " + brief(d.hull.cog_x) + " m) lies " +
-        (d.hull.cog_x > 0 ? "ahead of the front" : "behind the rear") +
-        " axle (x = " + brief(d.hull.cog_x > 0 ? half_wheelbase : -half_wheelbase) +
-        " m): the suspensions at the other end then carry negative static loads, and the "
-        "linear model's ground holds those wheels down where a real vehicle would "
-        "tip");
+  // A rigid hull on n equal suspensions at x_i (sum x_i = 0) loads the one farthest from the
+  // CoG, at x_N = -sign(x_G) * half the wheelbase, with m_s g (1/n - |x_G| x_N / sum x_i^2):
+  // it unloads beyond |x_G| = sum x_i^2 / (n x_N) (1.04 m on the bundled 7 axles, well inside
+  // the wheelbase), and with the wheel's own weight m_u g its ground load goes negative beyond
+  // sum x_i^2 / x_N (1/n + m_u / m_s). The bonded linear model carries either on.
+  const int axles = d.running_gear.axle_count;
+  const double spacing = d.running_gear.axle_spacing;
+  const double half_wheelbase = 0.5 * spacing * (axles - 1);
+  double sum_x2 = 0.0;
+  for (int i = 0; i < axles; ++i)
+    sum_x2 += std::pow((i - 0.5 * (axles - 1)) * spacing, 2);
+  const double x_g = std::abs(d.hull.cog_x);
+  if (half_wheelbase > 0.0 && x_g > sum_x2 / (axles * half_wheelbase)) {
+    const double unload = sum_x2 / (axles * half_wheelbase);
+    const double lift = sum_x2 / half_wheelbase * (1.0 / axles + d.road_wheel.mass / d.hull.mass);
+    const std::string far_end = d.hull.cog_x > 0 ? "rear" : "front";
+    std::string text =
+        "hull.cog_x: the centre of gravity (x = " + brief(d.hull.cog_x) + " m) lies ";
+    if (x_g > half_wheelbase)
+      text += std::string(d.hull.cog_x > 0 ? "ahead of the front" : "behind the rear") +
+              " axle (x = " + brief(d.hull.cog_x > 0 ? half_wheelbase : -half_wheelbase) +
+              " m), where a real vehicle would tip";
+    else
+      text += "more than " + brief(unload) + " m (sum x_i^2 / (n x_N)) from the wheelbase centre";
+    text += ": a rigid hull on equal suspensions leaves the " + far_end +
+            " suspensions negative static loads (their torsion bars pulling the hull down)";
+    if (x_g > lift)
+      text += ", and beyond " + brief(lift) + " m the " + far_end +
+              " road wheels' ground loads too, where the linear model's ground holds down "
+              "wheels a real vehicle would lift";
+    warnings.push_back(text + " (tvd statics gives the loads)");
+  }
   const auto& h = d.hull;
   // The hull hangs on its suspension: its CoG lies above the arm pivots (0.53 m against 1.57 m on
   // the paper vehicle). One below them is almost always measured from another datum (the hull's

@@ -442,9 +442,31 @@ TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {
   w = veh::descriptionWarnings(d);
   ASSERT_EQ(w.size(), 3u);
   EXPECT_NE(w[0].find("less than 5 % of its smallest dimension 2.2 m"), std::string::npos) << w[0];
+  // A rigid hull on 7 equal suspensions 0.78 m apart unloads the farthest beyond
+  // sum x_i^2 / (n x_N) = 17.035 / (7 * 2.34) = 1.040 m, whose road wheel (m_u / m_s = 0.0396)
+  // lifts beyond 17.035 / 2.34 * (1/7 + 0.0396) = 1.328 m. The un-tracked model's rear
+  // suspension load, wheel load less m_u g, is +0.8 kN at 1.0 m and -1.2 kN at 1.1 m.
   d = veh::VehicleDescription{};
-  d.hull.cog_x = 2.34;  // on the front axle: still inside
+  d.hull.cog_x = 1.0;
   EXPECT_TRUE(veh::descriptionWarnings(d).empty());
+  d.hull.cog_x = 1.1;
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_EQ(
+      w[0],
+      "hull.cog_x: the centre of gravity (x = 1.1 m) lies more than 1.04 m (sum x_i^2 / "
+      "(n x_N)) from the wheelbase centre: a rigid hull on equal suspensions leaves the "
+      "rear suspensions negative static loads (their torsion bars pulling the hull down) (tvd "
+      "statics gives the loads)");
+  d.hull.cog_x = -1.4;
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_NE(w[0].find("the front suspensions negative static loads (their torsion bars "
+                      "pulling the hull down), and beyond 1.32"),
+            std::string::npos)
+      << w[0];
+  d.hull.cog_x = 1.3;  // below the wheels' lift
+  EXPECT_EQ(veh::descriptionWarnings(d)[0].find("road wheels' ground loads"), std::string::npos);
   // CoG from the hull floor (0.45 m clearance): 1.12 m above the ground is still above the arm
   // pivots, z_w + a sin(beta) = 0.093 + 0.34 + 0.58 sin 9 deg = 0.524 m; 0.5 m is not.
   d = veh::VehicleDescription{};
