@@ -147,11 +147,39 @@ class Builder {
                        ": raise the idler or lengthen the chain (track_assembly.count)");
   }
 
+  // The top run, a straight line tangent to the sprocket and the idler, passes over the road
+  // wheels: its link's wheel path, (upper_surface_height - pitch_line_height) inside the pitch
+  // line, must clear each wheel, the pitch line's distance from the wheel centre at least
+  // R + that depth. A low sprocket or idler beside large wheels would otherwise lay the chain
+  // through a wheel, which the model (no contact there) would carry without a word.
+  void checkTopRunClearance(const ChainPath& path) const {
+    const auto [s0, s1] = path.interval(ChainSegment::TopRun);
+    const Vector2 a = path.at(s0).position, b = path.at(s1).position;
+    const double depth =
+        d_.track_assembly.upper_surface_height - d_.track_assembly.pitch_line_height;
+    const double rw = d_.road_wheel.radius, zw = wheelCentreZ(d_);
+    for (int axle = 0; axle < d_.running_gear.axle_count; ++axle) {
+      const Vector2 c(axleX(d_, axle), zw);
+      const double u = std::clamp((c - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+      const double distance = (a + u * (b - a) - c).norm();
+      if (distance < rw + depth - 1e-9)
+        throw InputError(
+            "sprocket.centre_z / idler.centre_z: the chain's top run (pitch line from x = " +
+            brief(a.x()) + " m, z = " + brief(a.y()) + " m to x = " + brief(b.x()) +
+            " m, z = " + brief(b.y()) + " m) passes " + brief(distance) + " m from the centre of " +
+            roadWheelText(axle) + ", less than its radius plus the link's wheel path " +
+            brief(depth) + " m inside the pitch line: the chain would run through the wheel by " +
+            brief(rw + depth - distance) + " m; raise the sprocket or the idler");
+    }
+  }
+
   // The chain's path (the idler's x from the chain length), its sprocket and idler clear of the
-  // road wheels, and its return rollers between them, clear of the wheels and the ground run.
+  // road wheels, its top run over them, and its return rollers between them, clear of the
+  // wheels and the ground run.
   ChainPath checkedChainPath() const {
     ChainPath path(d_, solveIdlerX(d_));
     checkEndWheelClearance(path);
+    checkTopRunClearance(path);
     const bool idler_in_front = path.idlerCentre().x() > path.sprocketCentre().x();
     for (const double xr : d_.return_rollers.x) {
       if (idler_in_front ? xr >= path.idlerCentre().x() : xr <= path.idlerCentre().x())

@@ -341,6 +341,22 @@ TEST(VehicleDescription, ChainAndRollerGeometryIsChecked) {
   e = buildError(d);
   EXPECT_NE(e.find("sprocket.centre_x: the sprocket (centre x = -2.8 m"), std::string::npos) << e;
   EXPECT_NE(e.find("overlaps road wheel 7 (centre x = -2.34 m"), std::string::npos) << e;
+  // Sprocket and idler lowered to z = 0.45 m: the top run, tangent to their tops (0.784 and
+  // 0.78 m), passes below the front wheel's top plus the link's wheel path, z_w + R + 0.03 =
+  // 0.803 m; nearly level, it runs through the wheel by about 0.803 - 0.7806 = 0.022 m.
+  d = veh::VehicleDescription{};
+  d.sprocket.centre_z = 0.45;
+  d.idler.centre_z = 0.45;
+  e = buildError(d);
+  EXPECT_NE(e.find("sprocket.centre_z / idler.centre_z: the chain's top run"), std::string::npos)
+      << e;
+  EXPECT_NE(e.find("from the centre of road wheel 1 (centre x = 2.34 m"), std::string::npos) << e;
+  const std::string by = "run through the wheel by ";
+  ASSERT_NE(e.find(by), std::string::npos) << e;
+  EXPECT_NEAR(std::stod(e.substr(e.find(by) + by.size())), 0.0224, 1e-3) << e;
+  d.sprocket.centre_z = 0.78;  // the description's sprocket: the run clears the wheels again
+  d.idler.centre_z = 0.5;
+  EXPECT_EQ(buildError(d), "");
 }
 
 // A front drive sprocket (sprocket.centre_x > 0) puts the idler behind the ground run: the paper
