@@ -261,8 +261,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     // Krylov dimension: ARPACK's (and SciPy eigsh's) 2 nev + 1. A tighter nev + 30 saved nothing
     // at 40 modes and lost much more with many: on a spectrum crowded with near copies (a chain's
     // local modes above 100 Hz) each restart gains little, so 300 modes of the bundled tracked
-    // vehicle took 295 restarts (66 s) against 10 (17 s), and 400 of a six-axle one did not
-    // converge in 1000 (575 s) against 7 (22 s).
+    // vehicle took 295 restarts (66 s) against 10 (18 s), and 400 of a six-axle one did not
+    // converge in 1000 (575 s) against 7 (27 s).
     const int ncv = static_cast<int>(std::min<Eigen::Index>(std::max(2 * nev + 1, 20), n));
     Spectra::SymGEigsShiftSolver<ShiftInvertOp, MassProduct, Spectra::GEigsMode::ShiftInvert>
         solver(op, bop, nev, ncv, sigma);

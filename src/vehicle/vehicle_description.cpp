@@ -754,8 +754,8 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
   for (int i = 0; i < axles; ++i)
     sum_x2 += std::pow((i - 0.5 * (axles - 1)) * spacing, 2);
   const double x_g = std::abs(d.hull.cog_x);
-  if (half_wheelbase > 0.0 && x_g > sum_x2 / (axles * half_wheelbase)) {
-    const double unload = sum_x2 / (axles * half_wheelbase);
+  const double unload = half_wheelbase > 0.0 ? sum_x2 / (axles * half_wheelbase) : 0.0;
+  if (half_wheelbase > 0.0 && x_g > unload) {
     const double lift = sum_x2 / half_wheelbase * (1.0 / axles + d.road_wheel.mass / d.hull.mass);
     const std::string far_end = d.hull.cog_x > 0 ? "rear" : "front";
     std::string text =
