@@ -385,6 +385,16 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
       {t.link_beam_torsion_constant, t.link_beam_area, "link_beam_torsion_constant",
        "link_beam_area"},
   };
+  // An area in mm^2 typed as m^2 (1.2e-3 m^2 read as 1200) is a section no link could hold:
+  // larger than the square of the link's largest dimension. It would pass the gyration check
+  // below (sqrt(I / A) only shrinks) and leave a chain 1e6 times too stiff axially.
+  for (const auto& [area, key] :
+       {std::pair<double, const char*>{t.link_member_area, "link_member_area"},
+        {t.link_beam_area, "link_beam_area"}})
+    c.require(area <= link_size * link_size, std::string("track_assembly.") + key,
+              brief(area) + " m^2 is larger than the link itself (" + brief(link_size) +
+                  " m, the larger of pitch and width, squared: " + brief(link_size * link_size) +
+                  " m^2): mm^2 typed as m^2?");
   for (const auto& sec : sections) {
     const double gyration = std::sqrt(sec.inertia / sec.area);
     c.require(gyration <= link_size, std::string("track_assembly.") + sec.key,

@@ -145,6 +145,13 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "over link_member_area 0.0012 m^2 gives a radius of gyration sqrt(I / A) = 3027.65 m"},
       {"link_beam_torsion_constant: {value: 3.0e-7,", "link_beam_torsion_constant: {value: 3.0e5,",
        "track_assembly.link_beam_torsion_constant", "mm^4 typed as m^4?"},
+      // An area in mm^2 typed as m^2 (it ran, with a chain 1e6 times too stiff axially).
+      {"link_member_area: {value: 1.2e-3,", "link_member_area: {value: 1200,",
+       "track_assembly.link_member_area",
+       "1200 m^2 is larger than the link itself (0.62 m, the larger of pitch and width, squared: "
+       "0.3844 m^2): mm^2 typed as m^2?"},
+      {"link_beam_area: {value: 2.0e-3,", "link_beam_area: {value: 2000,",
+       "track_assembly.link_beam_area", "mm^2 typed as m^2?"},
       // A ground that carries nothing once left a free body, reported as a list of DOFs.
       {"ground_stiffness: {value: 2e10,", "ground_stiffness: {value: 1e-200,",
        "ties.ground_stiffness",
