@@ -304,7 +304,10 @@ void run(const FrfOptions& opt) {
     for (Eigen::Index i = 1; i + 1 < mag.size(); ++i) {
       if (maximum(mag, i, 0.1 * mag(top)))
         at.push_back(i);
-      if (maximum(displacement, i, 0.1 * top_displacement))
+      // |H| / omega^2 has no value at 0 Hz (0 / 0; the zero above stands in for it): the first
+      // frequency after it is the quasi-static limit, 1 for a heave FRF, and a travelled road's
+      // falls from there, which is no maximum (it listed 0.05 Hz as a resonance).
+      if (hz(i - 1) > 0.0 && maximum(displacement, i, 0.1 * top_displacement))
         at.push_back(climb(i));
     }
     std::sort(at.begin(), at.end());
