@@ -1396,6 +1396,32 @@ class TvdCliTest(unittest.TestCase):
         r = self.tvd("terrain", "--iso8608", "C", "--length", "46", "--out", self.path("46.csv"))
         self.assertNotIn("note", r.stderr)
 
+        # A length that is not a whole number of steps is raised to the next one (the road is
+        # L-periodic, its last station repeating the first), said; it once came out 599.93 m.
+        # And a spacing whose linear interpolation passes less than 80 % of the PSD at the
+        # band's top, sinc^4(n dx), is said with the spacing that keeps 80 %.
+        r = self.tvd("terrain", "--iso8608", "C", "--length", "600", "--spacing", "0.17",
+                     "--taper", "0", "--out", self.path("coarse.csv"), "--json")
+        coarse = json.loads(r.stdout)
+        self.assertAlmostEqual(coarse["end_station_m"], 600.1, places=9)
+        self.assertEqual(coarse["stations"], 3531)
+        self.assertAlmostEqual(coarse["rms_height_m"] / coarse["band_rms_height_m"], 1.0,
+                               places=9)  # periodic over its raised length, exactly
+        a = np.pi * n_high * 0.17
+        self.assertAlmostEqual(coarse["interpolated_psd_share_at_band_top"],
+                               (np.sin(a) / a) ** 4, places=9)
+        self.assertIn("tvd: note: --length 600 m is not a whole number of --spacing 0.17 m "
+                      "steps: the road is 600.1 m long", r.stderr)
+        self.assertIn("at --spacing 0.17 m only 19 % at the band's top (2.83 cycles/m), so the "
+                      "vehicle rides a smoother road than class C; --spacing 0.0647 m or less "
+                      "keeps 80 %", r.stderr)
+        r = self.tvd("terrain", "--iso8608", "C", "--length", "600", "--spacing", "0.0647",
+                     "--out", self.path("fine.csv"))
+        self.assertNotIn("smoother road", r.stderr)
+        r = self.tvd("terrain", "--iso8608", "C", "--length", "600", "--spacing", "0.0648",
+                     "--out", self.path("fine.csv"))
+        self.assertIn("at --spacing 0.0648 m only 79 %", r.stderr)
+
         # A band reaching below 1/(2 L) is generated from 1/(2 L) up, and said so.
         r = self.tvd("terrain", "--iso8608", "C", "--length", str(length), "--min-frequency",
                      "1e-5", "--out", self.path("long_waves.csv"), "--json")
