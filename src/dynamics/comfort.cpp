@@ -411,6 +411,11 @@ ComfortMetrics evaluateComfort(const Vector& acceleration, double sample_rate,
     peak = std::max(peak, mean_square);
   }
   metrics.mtvv = std::sqrt(peak);
+  LinearRunningMeanSquare window(sample_rate, options.running_rms_time);
+  double linear_peak = 0.0;
+  for (Eigen::Index i = 0; i < weighted.size(); ++i)
+    linear_peak = std::max(linear_peak, window.add(weighted(i) * weighted(i)));
+  metrics.mtvv_linear = std::sqrt(linear_peak);
   metrics.peak_weighted = weighted.cwiseAbs().maxCoeff();
   if (absorbed)
     metrics.absorbed_power = absorbed->filter(acceleration).squaredNorm() / n;
@@ -424,6 +429,7 @@ BasicMethodRatios basicMethodRatios(const ComfortMetrics& metrics) {
     return r;
   r.crest_factor = metrics.peak_weighted / rms;
   r.mtvv_ratio = metrics.mtvv / rms;
+  r.mtvv_linear_ratio = metrics.mtvv_linear / rms;
   // VDV^4 = Σ a_w^4 / fs; for a signal of constant a_w,rms the VDV is a_w T^(1/4) times a shape
   // factor (1 for a square wave, (3/2)^(1/4) for a sinusoid): the ratio is that shape factor.
   r.vdv_ratio = metrics.vdv / (rms * std::pow(metrics.duration, 0.25));
@@ -433,7 +439,8 @@ BasicMethodRatios basicMethodRatios(const ComfortMetrics& metrics) {
 ComfortMeter::ComfortMeter(double sample_rate, const ComfortOptions& options)
     : weighting_(validatedWeighting(sample_rate, options)),
       sample_rate_(sample_rate),
-      running_alpha_(-std::expm1(-1.0 / (sample_rate * options.running_rms_time))) {
+      running_alpha_(-std::expm1(-1.0 / (sample_rate * options.running_rms_time))),
+      linear_window_(sample_rate, options.running_rms_time) {
   if (!options.absorbed_power.empty()) {
     absorbed_power_.emplace(options.absorbed_power, sample_rate, options.discretisation);
   }
@@ -451,6 +458,7 @@ void ComfortMeter::add(double acceleration) {
   sum_fourth_ += y2 * y2;
   running_mean_square_ += running_alpha_ * (y2 - running_mean_square_);
   max_running_mean_square_ = std::max(max_running_mean_square_, running_mean_square_);
+  max_linear_mean_square_ = std::max(max_linear_mean_square_, linear_window_.add(y2));
   peak_weighted_ = std::max(peak_weighted_, std::abs(y));
   last_weighted_ = y;
   if (absorbed_power_) {
@@ -466,6 +474,8 @@ void ComfortMeter::reset() {
   count_ = 0;
   sum_squares_ = sum_fourth_ = sum_power_ = 0.0;
   running_mean_square_ = max_running_mean_square_ = peak_weighted_ = last_weighted_ = 0.0;
+  linear_window_.reset();
+  max_linear_mean_square_ = 0.0;
 }
 
 double ComfortMeter::weightedRms() const {
@@ -478,6 +488,10 @@ double ComfortMeter::vibrationDoseValue() const {
 
 double ComfortMeter::maximumTransientVibrationValue() const {
   return std::sqrt(max_running_mean_square_);
+}
+
+double ComfortMeter::maximumTransientVibrationValueLinear() const {
+  return std::sqrt(max_linear_mean_square_);
 }
 
 double ComfortMeter::runningRms() const {
@@ -499,6 +513,7 @@ ComfortMetrics ComfortMeter::metrics() const {
   metrics.weighted_rms = weightedRms();
   metrics.vdv = vibrationDoseValue();
   metrics.mtvv = maximumTransientVibrationValue();
+  metrics.mtvv_linear = maximumTransientVibrationValueLinear();
   metrics.peak_weighted = peak_weighted_;
   metrics.absorbed_power = absorbedPower();
   metrics.duration = duration();

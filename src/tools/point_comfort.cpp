@@ -31,9 +31,11 @@ void PointComfort::writeJson(io::JsonWriter& json) const {
       .field("weighted_rms_m_s2", meter_.vertical().weightedRms())
       .field("vdv_m_s1_75", meter_.vertical().vibrationDoseValue())
       .field("mtvv_m_s2", meter_.vertical().maximumTransientVibrationValue())
+      .field("mtvv_linear_m_s2", meter_.vertical().maximumTransientVibrationValueLinear())
       .field("peak_weighted_m_s2", meter_.vertical().peakWeighted())
       .field("crest_factor", r.crest_factor)
       .field("mtvv_ratio", r.mtvv_ratio)
+      .field("mtvv_linear_ratio", r.mtvv_linear_ratio)
       .field("vdv_ratio", r.vdv_ratio)
       .field("basic_method_sufficient", r.basicMethodSufficient())
       .field("absorbed_power_w", meter_.vertical().absorbedPower().value_or(0.0))
@@ -62,8 +64,10 @@ void PointComfort::writeText(std::ostream& out) const {
     return;
   // ISO 2631-1 6.2.1 and 6.3.3: whether a_wz alone describes this run.
   const dynamics::BasicMethodRatios r = dynamics::basicMethodRatios(meter_.vertical().metrics());
-  out << "      MTVV " << meter_.vertical().maximumTransientVibrationValue()
-      << " m/s^2, crest factor " << r.crest_factor << ", MTVV/a_wz " << r.mtvv_ratio
+  out << "      MTVV " << meter_.vertical().maximumTransientVibrationValue() << " m/s^2 ("
+      << meter_.vertical().maximumTransientVibrationValueLinear()
+      << " by a 1 s linear window), crest factor " << r.crest_factor << ", MTVV/a_wz "
+      << r.mtvv_ratio << " (" << r.mtvv_linear_ratio << ")"
       << ", VDV/(a_wz T^1/4) " << r.vdv_ratio << ": ";
   using L = dynamics::BasicMethodRatios;
   if (r.basicMethodSufficient())

@@ -322,6 +322,7 @@ TEST(Comfort, OnlineMeterAgreesWithBatch) {
     EXPECT_NEAR(online.weighted_rms / batch.weighted_rms, 1.0, kAgreementTolerance);
     EXPECT_NEAR(online.vdv / batch.vdv, 1.0, kAgreementTolerance);
     EXPECT_NEAR(online.mtvv / batch.mtvv, 1.0, kAgreementTolerance);
+    EXPECT_NEAR(online.mtvv_linear / batch.mtvv_linear, 1.0, kAgreementTolerance);
     EXPECT_NEAR(online.peak_weighted / batch.peak_weighted, 1.0, kAgreementTolerance);
     EXPECT_NEAR(*online.absorbed_power / *batch.absorbed_power, 1.0, kAgreementTolerance);
     EXPECT_DOUBLE_EQ(online.duration, batch.duration);
@@ -356,6 +357,9 @@ TEST(Comfort, BasicMethodRatiosOfASinusoidAndOfAShock) {
   const double g = std::abs(alpha / (1.0 - (1.0 - alpha) * std::polar(1.0, -4.0 * kPi * f / fs)));
   EXPECT_NEAR(r.mtvv_ratio / std::sqrt(1.0 + g), 1.0, kClosedFormTolerance);
   EXPECT_NEAR(r.vdv_ratio / std::pow(1.5, 0.25), 1.0, kClosedFormTolerance);
+  // The linear running r.m.s. over 1 s holds five whole periods: exactly the r.m.s. in steady
+  // state, so its MTVV ratio is 1 but for the Wk high-pass's start-up transient.
+  EXPECT_NEAR(r.mtvv_linear_ratio, 1.0, 0.02);
   EXPECT_TRUE(r.basicMethodSufficient());
 
   // A 0.1 m/s^2 sinusoid with one half-sine of 20 m/s^2 lasting 0.1 s at t = 30 s.
@@ -366,6 +370,18 @@ TEST(Comfort, BasicMethodRatiosOfASinusoidAndOfAShock) {
   const BasicMethodRatios s = basicMethodRatios(jolted);
   EXPECT_GT(s.crest_factor, BasicMethodRatios::kMaxCrestFactor);
   EXPECT_GT(s.mtvv_ratio, BasicMethodRatios::kMaxMtvvRatio);
+  // The shock lies wholly inside one 1 s window, which then holds the whole of its weighted
+  // energy at equal weight: the linear MTVV is at least the exponential one, and equal to the
+  // largest 1000-sample mean of the weighted squares, summed here directly.
+  const Vector w = WeightingFilter::iso2631(Weighting::Wk, fs).filter(shock);
+  double largest = 0.0;
+  for (Eigen::Index end = 1; end <= w.size(); ++end) {
+    const Eigen::Index begin = std::max<Eigen::Index>(0, end - 1000);
+    largest = std::max(largest, w.segment(begin, end - begin).squaredNorm() / 1000.0);
+  }
+  EXPECT_NEAR(jolted.mtvv_linear / std::sqrt(largest), 1.0, 1e-12);
+  EXPECT_GT(jolted.mtvv_linear, jolted.mtvv);
+  EXPECT_GT(s.mtvv_linear_ratio, BasicMethodRatios::kMaxMtvvRatio);
   EXPECT_GT(s.vdv_ratio, BasicMethodRatios::kMaxVdvRatio);
   EXPECT_FALSE(s.basicMethodSufficient());
   // Each limit alone decides: just over one limit, the others in range.
@@ -379,6 +395,12 @@ TEST(Comfort, BasicMethodRatiosOfASinusoidAndOfAShock) {
   EXPECT_FALSE(basicMethodRatios(edge).basicMethodSufficient());
   edge.mtvv = 1.49 * steady.weighted_rms;
   EXPECT_TRUE(basicMethodRatios(edge).basicMethodSufficient());
+  // Either running r.m.s. over 1.5 is enough (the standard allows both forms).
+  edge = steady;
+  edge.mtvv_linear = 1.51 * steady.weighted_rms;
+  EXPECT_FALSE(basicMethodRatios(edge).basicMethodSufficient());
+  edge.mtvv_linear = 1.49 * steady.weighted_rms;
+  EXPECT_TRUE(basicMethodRatios(edge).basicMethodSufficient());
   edge = steady;
   const double t4 = std::pow(duration, 0.25);
   edge.vdv = 1.76 * steady.weighted_rms * t4;
@@ -391,6 +413,34 @@ TEST(Comfort, BasicMethodRatiosOfASinusoidAndOfAShock) {
   EXPECT_DOUBLE_EQ(none.crest_factor, 0.0);
   EXPECT_DOUBLE_EQ(none.vdv_ratio, 0.0);
   EXPECT_TRUE(none.basicMethodSufficient());
+}
+
+// The linear running mean square is the mean of the last round(fs tau) squares, zeros before
+// the first, however many windows have passed (its running sum is re-added once per window).
+TEST(Comfort, LinearRunningWindowIsTheMeanOfTheLastSquares) {
+  LinearRunningMeanSquare window(1000.0, 0.0374);  // 37.4 samples: a window of 37
+  EXPECT_EQ(window.window(), 37u);
+  EXPECT_DOUBLE_EQ(window.value(), 0.0);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> square(0.0, 1e6);
+  std::vector<double> all;
+  for (int k = 0; k < 1000; ++k) {
+    all.push_back(square(rng));
+    const double got = window.add(all.back());
+    double sum = 0.0;
+    for (int j = std::max(0, k - 36); j <= k; ++j)
+      sum += all[static_cast<std::size_t>(j)];
+    ASSERT_NEAR(got / (sum / 37.0), 1.0, 1e-12) << "sample " << k;
+  }
+  window.reset();
+  EXPECT_DOUBLE_EQ(window.value(), 0.0);
+  EXPECT_DOUBLE_EQ(window.add(37.0), 1.0);
+  EXPECT_EQ(LinearRunningMeanSquare(1000.0, 1e-9).window(), 1u);
+  EXPECT_THROW(LinearRunningMeanSquare(1000.0, 1e5), InputError);  // 1e8 samples
+  // And a meter asked for such a window says so before it takes a sample.
+  ComfortOptions options;
+  options.running_rms_time = 1e5;
+  EXPECT_THROW(ComfortMeter(1000.0, options), InputError);
 }
 
 TEST(Comfort, EmptySeriesGivesZeros) {

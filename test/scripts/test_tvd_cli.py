@@ -1360,7 +1360,7 @@ class TvdCliTest(unittest.TestCase):
             np.testing.assert_allclose(d_col, 2 * c_col, rtol=0,
                                        atol=1e-7 * np.abs(d_col).max() + 1e-12 + digits,
                                        err_msg=name)
-        for key in ("weighted_rms_m_s2", "vdv_m_s1_75", "mtvv_m_s2"):
+        for key in ("weighted_rms_m_s2", "vdv_m_s1_75", "mtvv_m_s2", "mtvv_linear_m_s2"):
             self.assertAlmostEqual(d["comfort"][key] / c["comfort"][key], 2.0, places=7, msg=key)
         self.assertAlmostEqual(d["comfort"]["absorbed_power_w"] / c["comfort"]["absorbed_power_w"],
                                4.0, places=6)
@@ -1370,14 +1370,17 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(point["crest_factor"] * rms / point["peak_weighted_m_s2"], 1.0,
                                    places=8)
             self.assertAlmostEqual(point["mtvv_ratio"] * rms / point["mtvv_m_s2"], 1.0, places=8)
+            self.assertAlmostEqual(point["mtvv_linear_ratio"] * rms / point["mtvv_linear_m_s2"],
+                                   1.0, places=8)
             # T = samples / fs: one sample more than the steps simulated.
             self.assertAlmostEqual(point["vdv_ratio"] * rms * duration ** 0.25
                                    / point["vdv_m_s1_75"], 1.0, delta=1e-4)
             self.assertEqual(point["basic_method_sufficient"],
                              point["crest_factor"] <= 9 and point["mtvv_ratio"] <= 1.5
-                             and point["vdv_ratio"] <= 1.75)
+                             and point["mtvv_linear_ratio"] <= 1.5 and point["vdv_ratio"] <= 1.75)
             self.assertGreater(point["crest_factor"], np.sqrt(2))  # a random road, not a sinusoid
-        for key in ("crest_factor", "mtvv_ratio", "vdv_ratio", "basic_method_sufficient"):
+        for key in ("crest_factor", "mtvv_ratio", "mtvv_linear_ratio", "vdv_ratio",
+                    "basic_method_sufficient"):
             self.assertAlmostEqual(d["comfort"][key], c["comfort"][key], places=7, msg=key)
         self.assertAlmostEqual(d["comfort"]["peak_weighted_m_s2"]
                                / c["comfort"]["peak_weighted_m_s2"], 2.0, places=7)

@@ -45,10 +45,13 @@
 //   running r.m.s.    a_w(t0) = sqrt(1/τ ∫ a_w^2(t) exp((t - t0)/τ) dt),  τ = 1 s by default,
 //                     as ms_k = (1 - α) ms_{k-1} + α a_w,k^2, α = 1 - exp(-1/(fs τ))
 //   MTVV              max over t0 of the running r.m.s.                   [m/s^2]
+//   MTVV (linear)     the same of the linear running r.m.s., the mean of the last τ fs
+//                     squares (6.3.1's other form, running_window.h)     [m/s^2]
 //   peak              max |a_w|                                           [m/s^2]
 // and, from these, when the basic method (a_w,rms alone) suffices (BasicMethodRatios):
 //   crest factor   peak / a_w,rms            basic method normally sufficient up to 9 (6.2.1)
-//   MTVV ratio     MTVV / a_w,rms            additional methods to report above 1.5 (6.3.3)
+//   MTVV ratio     MTVV / a_w,rms            additional methods to report above 1.5 (6.3.3);
+//                  the standard allows either running r.m.s., so both ratios are tested
 //   VDV ratio      VDV / (a_w,rms T^(1/4))   the same above 1.75 (6.3.3)
 // (A steady sinusoid gives √2, sqrt(1 + G) ≈ 1 with G the running mean square's ripple at
 // twice its frequency, and (3/2)^(1/4) = 1.107.)
@@ -77,6 +80,7 @@
 #include <optional>
 #include <vector>
 
+#include "tracked_vehicle_dynamics/dynamics/running_window.h"
 #include "tracked_vehicle_dynamics/types.h"
 
 namespace tracked_vehicle_dynamics {
@@ -183,6 +187,7 @@ struct ComfortMetrics {
   double weighted_rms = 0.0;             ///< a_w,rms [m/s^2]
   double vdv = 0.0;                      ///< vibration dose value [m/s^1.75]
   double mtvv = 0.0;                     ///< maximum transient vibration value [m/s^2]
+  double mtvv_linear = 0.0;              ///< the same by linear integration over τ [m/s^2]
   double peak_weighted = 0.0;            ///< max |a_w| [m/s^2]
   std::optional<double> absorbed_power;  ///< [W], when ComfortOptions::absorbed_power is set
   double duration = 0.0;                 ///< N / fs [s]
@@ -214,11 +219,13 @@ struct BasicMethodRatios {
   static constexpr double kMaxVdvRatio = 1.75;    ///< 6.3.3, eq. (9)
   double crest_factor = 0.0;                      ///< peak |a_w| / a_w,rms
   double mtvv_ratio = 0.0;                        ///< MTVV / a_w,rms
+  double mtvv_linear_ratio = 0.0;                 ///< MTVV (linear) / a_w,rms
   double vdv_ratio = 0.0;                         ///< VDV / (a_w,rms T^(1/4))
-  /// True when no ratio exceeds its limit: a_w,rms alone is an adequate measure.
+  /// True when no ratio exceeds its limit: a_w,rms alone is an adequate measure (the MTVV's by
+  /// either running r.m.s.: a verdict should not hang on which one the standard let us pick).
   bool basicMethodSufficient() const {
     return crest_factor <= kMaxCrestFactor && mtvv_ratio <= kMaxMtvvRatio &&
-           vdv_ratio <= kMaxVdvRatio;
+           mtvv_linear_ratio <= kMaxMtvvRatio && vdv_ratio <= kMaxVdvRatio;
   }
 };
 BasicMethodRatios basicMethodRatios(const ComfortMetrics& metrics);
@@ -245,6 +252,7 @@ class ComfortMeter {
   double weightedRms() const;                             ///< [m/s^2]
   double vibrationDoseValue() const;                      ///< [m/s^1.75]
   double maximumTransientVibrationValue() const;          ///< MTVV [m/s^2]
+  double maximumTransientVibrationValueLinear() const;    ///< MTVV, linear form [m/s^2]
   double peakWeighted() const { return peak_weighted_; }  ///< max |a_w| [m/s^2]
   double runningRms() const;                              ///< running r.m.s. now [m/s^2]
   double lastWeighted() const { return last_weighted_; }  ///< a_w of the last sample [m/s^2]
@@ -264,6 +272,8 @@ class ComfortMeter {
   double sum_power_ = 0.0;
   double running_mean_square_ = 0.0;
   double max_running_mean_square_ = 0.0;
+  LinearRunningMeanSquare linear_window_;
+  double max_linear_mean_square_ = 0.0;
   double peak_weighted_ = 0.0;
   double last_weighted_ = 0.0;
 };
