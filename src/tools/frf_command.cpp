@@ -264,14 +264,17 @@ void run(const FrfOptions& opt) {
     Matrix table(hz.size(), static_cast<Eigen::Index>(data.size()));
     for (std::size_t k = 0; k < data.size(); ++k)
       table.col(static_cast<Eigen::Index>(k)) = data[k];
-    writeTable(opt.out_file, headers, table, 10,
-               {{"vehicle", description.name},
-                {"vehicle_file", opt.vehicle_file},
-                {"variant", vehicle::variantName(variant)},
-                {"model", opt.model},
-                {"excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous"},
-                {"sides", opt.sides},
-                {"speed_kmh", opt.speed_kmh}});
+    Metadata metadata = {{"vehicle", description.name},
+                         {"vehicle_file", opt.vehicle_file},
+                         {"variant", vehicle::variantName(variant)},
+                         {"model", opt.model},
+                         {"excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous"},
+                         {"sides", opt.sides},
+                         {"speed_kmh", opt.speed_kmh}};
+    // Which model file the FRF is of, as simulate records it (review 123: it was not said).
+    if (!opt.reduced.reducedFile().empty())
+      metadata.push_back({"reduced_model_file", opt.reduced.reducedFile()});
+    writeTable(opt.out_file, headers, table, 10, metadata);
   }
 
   // Per output: the largest peak and the resonances, the local maxima of the FRF at or above

@@ -2335,7 +2335,10 @@ class TvdCliTest(unittest.TestCase):
         columns = self.path("arm_damped_columns.mat")
         scipy.io.savemat(columns, scipy.io.loadmat(mat, squeeze_me=True), oned_as="column")
         self.tvd("frf", "--vehicle", damped, "--reduced", columns, "--max-hz", "2", "--out",
-                 self.path("x.csv"))
+                 self.path("x.mat"))
+        # The result file names the model file it is of, as simulate's do.
+        self.assertEqual(str(scipy.io.loadmat(self.path("x.mat"))["reduced_model_file"][0]),
+                         columns)
         # simulate: the modal method steps the coupled modes together (the whole C, as the
         # exact method) and says nothing; reduced modal and exact, and the full model (the
         # reference) by either method, agree within 2 % of each peak (issue 5; 0.2 % here).
