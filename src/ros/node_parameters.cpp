@@ -316,6 +316,15 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("comfort_point", "must not be empty");
   v.comfort_running_rms_time =
       in.positive("comfort_running_rms_time", v.comfort_running_rms_time, "s");
+  // Its linear form keeps the last rate x time squares (running_window.h): a time in ms typed
+  // as s (1000) at 1 kHz is a million; beyond ten million the meter refuses, named here.
+  try {
+    dynamics::ComfortOptions comfort;
+    comfort.running_rms_time = v.comfort_running_rms_time;
+    dynamics::ComfortMeter(v.rate, comfort);
+  } catch (const InputError& e) {
+    throw in.error("comfort_running_rms_time", e.what());
+  }
   v.terrain_keep_behind = in.nonNegative("terrain_keep_behind", v.terrain_keep_behind, "m");
   // Speed slew (online_vehicle.h): 0 and 0 = a new speed applies at once, without travel inertia.
   v.max_acceleration = in.nonNegative("max_acceleration", v.max_acceleration, "m/s^2");
