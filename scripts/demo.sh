@@ -58,7 +58,7 @@ for path, how in zip(sys.argv[1:], ("time domain, this 300 m road", "spectral, t
 PY
 echo; echo "== 9. Figures (PNG) =="
 /usr/bin/python3 scripts/plot_mac.py --mac-dir "$OUT/mac" --out "$OUT/mac.png" \
-  --freq-out "$OUT/mac_frequencies.png"
+  --freq-out "$OUT/mac_frequencies.png" --f-max 30
 /usr/bin/python3 scripts/plot_frf.py --out "$OUT/frf_tracked.png" --title "tracked vehicle" \
   full="$OUT/frf_tracked_full.csv" reduced="$OUT/frf_tracked_reduced.csv" \
   "reduced, 30 km/h"="$OUT/frf_tracked_reduced_30kmh.csv"

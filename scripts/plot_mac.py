@@ -2,16 +2,23 @@
 """MAC of the un-tracked and tracked vehicle modes, like Figs. 9 and 10 of Dimauro et al. (2024).
 
 --out (Fig. 9): the MAC matrix, un-tracked modes on x, tracked modes on y; gray scale below the
-threshold, red scale at or above it. --freq-out (Fig. 10): every pair with MAC >= threshold as a
-marker at (f_untracked, f_tracked), sized and coloured by MAC, with the iso-frequency line.
+threshold, red scale at or above it (blue where one of the two modes is not a global mode, when
+mac.mat says which are: a local mode of the chains that happens to share a shape on the common
+DOFs, which the reduction's pairing leaves out). --freq-out (Fig. 10): the mode selection, every
+pair of global modes whose MAC between eigenspaces (what the pairing uses) is >= threshold, as a
+marker at (f_untracked, f_tracked), sized and coloured by MAC, with the iso-frequency line; its
+tracked modes are those `tvd reduce` keeps. From a mac.mat without the global flags (older tvd):
+every pair with MAC >= threshold.
 
 Input: the directory written by
     build/devel/lib/tracked_vehicle_dynamics/tvd mac --vehicle config/vehicles/paper_vehicle.yaml \\
         --count 40 --out DIR
     scripts/plot_mac.py --mac-dir DIR --out fig9.png --freq-out fig10.png
 DIR/mac.csv: header 'untracked_mode' (un-tracked mode number of each row), then one
-column per tracked mode named by its number. DIR/mac.mat (read only for --freq-out): the vectors
-untracked_frequencies_hz and tracked_frequencies_hz [Hz], indexed by mode number - 1.
+column per tracked mode named by its number. DIR/mac.mat (needed for --freq-out; used when
+present for --out): the vectors untracked_frequencies_hz and tracked_frequencies_hz [Hz], and
+optionally untracked_global, tracked_global (1 for a global mode) and eigenspace_mac, indexed by
+mode number - 1.
 
 The figure type of --out and --freq-out follows the extension (.png, .pdf, .svg, ...). Bad input
 (missing or corrupt file, missing or repeated column or variable, non-numeric value, an option that
@@ -35,6 +42,8 @@ ROW_COLUMN = "untracked_mode"
 # Scales without their near-white ends, so that MAC = threshold is visibly red.
 RED = matplotlib.colors.ListedColormap(matplotlib.colormaps["Reds"](np.linspace(0.3, 1, 256)))
 GRAY = matplotlib.colors.ListedColormap(matplotlib.colormaps["Greys"](np.linspace(0, 0.85, 256)))
+BLUE = matplotlib.colors.ListedColormap(matplotlib.colormaps["Blues"](np.linspace(0.3, 0.8, 256)))
+GLOBAL_NAMES = ["untracked_global", "tracked_global", "eigenspace_mac"]
 
 
 MAX_MODE = 10**6  # far more modes than any MAT vector of frequencies holds
@@ -77,6 +86,17 @@ def load_frequencies(path, data, name, modes):
     return values[modes - 1]
 
 
+def load_pair_mac(path, values, untracked, tracked):
+    """The eigenspace MAC [untracked, tracked] of the plotted modes, from mac.mat."""
+    if (not isinstance(values, np.ndarray) or values.dtype.kind not in "iuf" or values.ndim != 2
+            or not np.all(np.isfinite(values))):
+        fail(f"{path}: variable 'eigenspace_mac' is not a matrix of finite numbers")
+    if untracked.max() > values.shape[0] or tracked.max() > values.shape[1]:
+        fail(f"{path}: variable 'eigenspace_mac' is {values.shape[0]} x {values.shape[1]}, "
+             f"mac.csv needs {untracked.max()} x {tracked.max()}")
+    return values[np.ix_(untracked - 1, tracked - 1)]
+
+
 def mode_ticks(ax, untracked, tracked):
     """Tick every mode up to 40 modes, every 5th beyond."""
     for axis, modes in ((ax.xaxis, untracked), (ax.yaxis, tracked)):
@@ -92,27 +112,42 @@ def band_edges(ax, f_untracked, f_tracked, f_max):
         inside = int(np.count_nonzero(frequencies <= f_max))
         if inside == frequencies.size:
             continue
-        line(inside - 0.5, color="tab:blue", linestyle="--", linewidth=1)
+        line(inside - 0.5, color="tab:green", linestyle="--", linewidth=1)
         if place == "x":  # in the top image row: the y axis counts the tracked modes
-            ax.text(inside - 0.3, f_tracked.size - 0.8, f"> {f_max:g} Hz", color="tab:blue",
+            ax.text(inside - 0.3, f_tracked.size - 0.8, f"> {f_max:g} Hz", color="tab:green",
                     fontsize=7, va="top")
         else:
             ax.text(0.2, inside - 0.3, f"> {f_max:g} Hz",
-                    color="tab:blue", fontsize=7, va="bottom")
+                    color="tab:green", fontsize=7, va="bottom")
 
 
-def plot_matrix(untracked, tracked, mac, threshold, frequencies=None, f_max=None):
-    """Fig. 9; with frequencies = (un-tracked, tracked) [Hz] and f_max, the band edges are drawn."""
-    fig, ax = plt.subplots(figsize=(9, 7.5))
+def plot_matrix(untracked, tracked, mac, threshold, frequencies=None, f_max=None,
+                global_modes=None):
+    """Fig. 9; with frequencies = (un-tracked, tracked) [Hz] and f_max, the band edges are drawn;
+    with global_modes = (un-tracked, tracked) flags, a pair at or above the threshold with a
+    local mode in it is drawn blue, not red."""
+    fig, ax = plt.subplots(figsize=(10.5 if global_modes is not None else 9, 7.5))
     shown = mac.T  # rows: tracked modes (y), columns: un-tracked modes (x)
+    local = np.zeros(shown.shape, dtype=bool)
+    if global_modes is not None:
+        local = ~np.outer(global_modes[1], global_modes[0])
     low = ax.imshow(np.ma.masked_where(shown >= threshold, shown), cmap=GRAY, vmin=0,
                     vmax=threshold, origin="lower", aspect="auto")
-    high = ax.imshow(np.ma.masked_where(shown < threshold, shown), cmap=RED, vmin=threshold,
-                     vmax=1, origin="lower", aspect="auto")
+    high = ax.imshow(np.ma.masked_where((shown < threshold) | local, shown), cmap=RED,
+                     vmin=threshold, vmax=1, origin="lower", aspect="auto")
+    off = None
+    if np.any((shown >= threshold) & local):
+        off = ax.imshow(np.ma.masked_where((shown < threshold) | ~local, shown), cmap=BLUE,
+                        vmin=threshold, vmax=1, origin="lower", aspect="auto")
     for y, x in np.argwhere(shown >= threshold):
         ax.text(x, y, f"{shown[y, x]:.2f}", ha="center", va="center", fontsize=5, color="w")
+    # Each colour bar takes its room from the axes' right side, so the last added sits nearest.
     fig.colorbar(low, ax=ax, pad=0.01, label=f"MAC < {threshold:g}")
-    fig.colorbar(high, ax=ax, pad=0.02, label=f"MAC $\\geq$ {threshold:g}")
+    if off is not None:
+        fig.colorbar(off, ax=ax, pad=0.01,
+                     label=f"MAC $\\geq$ {threshold:g} with a local mode (not paired)")
+    fig.colorbar(high, ax=ax, pad=0.02, label=f"MAC $\\geq$ {threshold:g}" +
+                 (" (global modes)" if global_modes is not None else ""))
     mode_ticks(ax, untracked, tracked)
     if frequencies is not None and f_max is not None:
         band_edges(ax, *frequencies, f_max)
@@ -122,10 +157,16 @@ def plot_matrix(untracked, tracked, mac, threshold, frequencies=None, f_max=None
     return fig
 
 
-def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold, f_max):
-    """Fig. 10; pairs with either frequency above f_max [Hz] (if given) are left out."""
+def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold, f_max,
+                     global_modes=None):
+    """Fig. 10; pairs with either frequency above f_max [Hz] (if given) are left out; with
+    global_modes = (un-tracked, tracked) flags, so are pairs with a local mode in them (the
+    selection), and `mac` should then be the eigenspace MAC the pairing uses."""
     fig, ax = plt.subplots(figsize=(7.5, 6.5))
-    pairs = np.argwhere(mac >= threshold)
+    paired = mac >= threshold
+    if global_modes is not None:
+        paired &= np.outer(global_modes[0], global_modes[1])
+    pairs = np.argwhere(paired)
     if f_max is not None:
         pairs = pairs[(f_untracked[pairs[:, 0]] <= f_max) & (f_tracked[pairs[:, 1]] <= f_max)]
     i, j = pairs[:, 0], pairs[:, 1]
@@ -158,7 +199,12 @@ def plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac, threshold,
     ax.set_ylim(0, limit)
     ax.set_xlabel("un-tracked (minimal track chain) model frequency [Hz]")
     ax.set_ylabel("tracked model frequency [Hz]")
-    ax.set_title(f"{len(pairs)} mode pairs with MAC $\\geq$ {threshold:g} (un-tracked/tracked #)")
+    if global_modes is None:
+        ax.set_title(f"{len(pairs)} mode pairs with MAC $\\geq$ {threshold:g} "
+                     "(un-tracked/tracked #)")
+    else:
+        ax.set_title(f"Mode selection: {len(pairs)} pairs of global modes with MAC $\\geq$ "
+                     f"{threshold:g},\n{len(set(j))} tracked modes kept (un-tracked/tracked #)")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper left")
     return fig
@@ -186,18 +232,28 @@ def main():
     csv_path = os.path.join(args.mac_dir, "mac.csv")
     untracked, tracked, mac = load_mac(csv_path)
     figures = []
+    mat_path = os.path.join(args.mac_dir, "mac.mat")
+    global_modes, pair_mac = None, mac
     if args.freq_out:
-        mat_path = os.path.join(args.mac_dir, "mac.mat")
         names = ["untracked_frequencies_hz", "tracked_frequencies_hz"]
-        data = load_mat(mat_path, names)
+        data = load_mat(mat_path, names + GLOBAL_NAMES)
         f_untracked = load_frequencies(mat_path, data, names[0], untracked)
         f_tracked = load_frequencies(mat_path, data, names[1], tracked)
+    elif os.path.isfile(mat_path):
+        data = load_mat(mat_path, GLOBAL_NAMES)
+    else:
+        data = {}
+    if all(name in data for name in GLOBAL_NAMES):
+        global_modes = (load_frequencies(mat_path, data, GLOBAL_NAMES[0], untracked) != 0,
+                        load_frequencies(mat_path, data, GLOBAL_NAMES[1], tracked) != 0)
+        pair_mac = load_pair_mac(mat_path, data[GLOBAL_NAMES[2]], untracked, tracked)
     band = (f_untracked, f_tracked) if args.freq_out else None
-    figures.append((plot_matrix(untracked, tracked, mac, args.threshold, band, args.f_max),
-                    args.out))
+    figures.append((plot_matrix(untracked, tracked, mac, args.threshold, band, args.f_max,
+                                global_modes), args.out))
     if args.freq_out:
-        figures.append((plot_frequencies(untracked, tracked, f_untracked, f_tracked, mac,
-                                         args.threshold, args.f_max), args.freq_out))
+        figures.append((plot_frequencies(untracked, tracked, f_untracked, f_tracked, pair_mac,
+                                         args.threshold, args.f_max, global_modes),
+                        args.freq_out))
     save(*figures)
 
 

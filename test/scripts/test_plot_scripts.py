@@ -270,6 +270,48 @@ class PlotScriptsTest(unittest.TestCase):
         fig = plot_mac.plot_matrix(untracked, tracked, mac, 0.7, (f_untracked, f_tracked), 50.0)
         self.assertEqual(len(fig.axes[0].lines), 0)
 
+    def test_mac_selection_keeps_pairs_of_global_modes(self):
+        """With mac.mat's global flags and eigenspace MAC (as tvd mac writes them), Fig. 10 shows
+        the pairs the reduction uses, pairs of global modes by eigenspace MAC, and Fig. 9 draws a
+        pair with a local mode in it blue, not red (review 126: both showed every raw pair)."""
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_mac
+        finally:
+            sys.path.remove(SCRIPTS)
+        mac_dir = write_mac_dir(self.path("mac"))  # pairs (i, i + 1), i = 0..5, MAC >= 0.75
+        data = scipy.io.loadmat(os.path.join(mac_dir, "mac.mat"))
+        untracked_global = np.array([1, 1, 0, 1, 1, 1])  # un-tracked mode 3 local
+        tracked_global = np.array([1, 1, 1, 1, 1, 0, 1, 1])  # tracked mode 6 local
+        eigenspace = data["mac"].copy()
+        eigenspace[0, 1] = 0.2  # raw MAC 0.75, but not the eigenspaces': not paired
+        data.update({"untracked_global": untracked_global.reshape(-1, 1),
+                     "tracked_global": tracked_global.reshape(-1, 1),
+                     "eigenspace_mac": eigenspace})
+        scipy.io.savemat(os.path.join(mac_dir, "mac.mat"),
+                         {k: v for k, v in data.items() if not k.startswith("__")})
+        out, freq_out = self.path("mac.png"), self.path("freq.png")
+        self.assert_png(self.run_script("plot_mac.py", "--mac-dir", mac_dir, "--out", out,
+                                        "--freq-out", freq_out), out, freq_out)
+        untracked, tracked, mac = plot_mac.load_mac(os.path.join(mac_dir, "mac.csv"))
+        f_u, f_t = np.linspace(2.0, 20.0, 6), np.linspace(0.7, 30.0, 8)
+        flags = (untracked_global != 0, tracked_global != 0)
+        fig = plot_mac.plot_frequencies(untracked, tracked, f_u, f_t, eigenspace, 0.7, None,
+                                        flags)
+        points = fig.axes[0].collections[0].get_offsets()
+        # Pairs (2, 3), (4, 5), (6, 7): (1, 2) by its eigenspace MAC, (3, 4) and (5, 6) by a
+        # local mode, are out.
+        np.testing.assert_allclose(points, np.column_stack([f_u[[1, 3, 5]], f_t[[2, 4, 6]]]))
+        self.assertIn("3 pairs of global modes", fig.axes[0].get_title())
+        fig = plot_mac.plot_matrix(untracked, tracked, mac, 0.7, None, None, flags)
+        self.assertEqual(len(fig.axes), 4)  # the matrix and three colour bars: red, blue, gray
+        blue = fig.axes[0].images[2].get_array()  # the local pairs' layer
+        self.assertEqual(sorted(map(tuple, np.argwhere(~np.ma.getmaskarray(blue)))),
+                         [(3, 2), (5, 4)])  # (tracked, un-tracked) image indices
+        # Without the flags (an older mac.mat): every raw pair, as before.
+        fig = plot_mac.plot_frequencies(untracked, tracked, f_u, f_t, mac, 0.7, None)
+        self.assertEqual(len(fig.axes[0].collections[0].get_offsets()), 6)
+
     def test_mac_matrix_needs_no_mat_file(self):
         mac_dir = write_mac_dir(self.path("mac"), with_mat=False)
         out = self.path("mac.png")
