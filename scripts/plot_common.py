@@ -62,10 +62,11 @@ def positive_float(text):
     return value
 
 
-def vehicle_view(ax, axis):
-    """Axes of a view of the vehicle: x forward against y (axis 1, top view) or z (axis 2, side
-    view), equal scales (REP-103 frame)."""
-    ax.set_xlabel("x [m] (forward)")
+def vehicle_view(ax, axis, horizontal=0):
+    """Axes of a view of the vehicle: x forward (horizontal 0) or y (1, a front view seen from
+    ahead: the vehicle's left, +y, on the right) against y (axis 1, top view) or z (axis 2),
+    equal scales (REP-103 frame)."""
+    ax.set_xlabel("x [m] (forward)" if horizontal == 0 else "y [m] (left)")
     ax.set_ylabel("z [m] (up)" if axis == 2 else "y [m] (left)")
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
@@ -335,7 +336,8 @@ def save(*figures):
     so far are removed and the error is one line."""
     rendered = []
     for fig, out in figures:
-        fig.tight_layout()
+        # A figure may keep room at its top for a suptitle of several lines (`tvd_rect`).
+        fig.tight_layout(rect=getattr(fig, "tvd_rect", (0, 0, 1, 1)))
         buffer = io.BytesIO()
         try:
             fig.savefig(buffer, dpi=150, format=os.path.splitext(out)[1][1:].lower())

@@ -3,7 +3,8 @@
 
 Reads what `tvd modes --vehicle ... --out DIR` writes (DIR/modes.csv and DIR/node_shapes.csv:
 every node's undeformed position and its translation in each mode, wheel centres and named points
-included) and draws each requested mode in a side view (x, z) and a top view (x, y): the
+included) and draws each requested mode in a side view (x, z), a top view (x, y) and a front
+view (y, z; the hull's roll shows there, in its suspension mounts and named points): the
 undeformed vehicle in grey, the deformed one coloured by the displacement magnitude, blue for
 none to red for the largest, as the paper does. Each LABEL=DIR:MODE is one row, e.g. a MAC pair
 of `tvd mac` (the un-tracked mode and its tracked partner):
@@ -95,22 +96,24 @@ def load(directory, mode):
     return positions, shape, parts, title
 
 
-def draw(ax, positions, shape, parts, scale, normalise, axis):
-    """One view: x against `axis` (1: y, top view; 2: z, side view)."""
+def draw(ax, positions, shape, parts, scale, normalise, axis, horizontal=0):
+    """One view: `horizontal` against `axis` (x against 1: y, top view; x against 2: z, side
+    view; y against z: front view)."""
     magnitude = np.linalg.norm(shape, axis=1)
     reference = reference_magnitude(parts, magnitude, normalise)
     moved = drawn_positions(positions, shape, scale, reference)
     colour = np.minimum(magnitude / reference, 1.0) if reference > 0 else magnitude
-    ax.scatter(positions[:, 0], positions[:, axis], s=3, color="0.8", zorder=1)
+    h = horizontal
+    ax.scatter(positions[:, h], positions[:, axis], s=3, color="0.8", zorder=1)
     order = np.argsort(magnitude)  # the largest on top
-    ax.scatter(moved[order, 0], moved[order, axis], s=6, zorder=2, cmap="jet", c=colour[order],
+    ax.scatter(moved[order, h], moved[order, axis], s=6, zorder=2, cmap="jet", c=colour[order],
                vmin=0.0, vmax=1.0)
     hull = [i for i, part in enumerate(parts) if part == HULL_PART]
-    ax.scatter(positions[hull, 0], positions[hull, axis], s=140, facecolor="none", edgecolor="k",
+    ax.scatter(positions[hull, h], positions[hull, axis], s=140, facecolor="none", edgecolor="k",
                zorder=3)
-    ax.scatter(moved[hull, 0], moved[hull, axis], s=140, c=colour[hull], cmap="jet", vmin=0.0,
+    ax.scatter(moved[hull, h], moved[hull, axis], s=140, c=colour[hull], cmap="jet", vmin=0.0,
                vmax=1.0, edgecolor="k", zorder=4)
-    vehicle_view(ax, axis)
+    vehicle_view(ax, axis, horizontal)
 
 
 def main():
@@ -129,16 +132,20 @@ def main():
     check_outputs(("--out", args.out))
 
     rows = [(label, *load(directory, mode)) for label, directory, mode in args.modes]
-    fig, axes = plt.subplots(len(rows), 2, figsize=(14, 3.8 * len(rows)), squeeze=False,
-                             gridspec_kw={"width_ratios": [1, 1]})
-    for (label, positions, shape, parts, title), (side, top) in zip(rows, axes):
+    fig, axes = plt.subplots(len(rows), 3, figsize=(18, 3.8 * len(rows) + 0.8), squeeze=False,
+                             gridspec_kw={"width_ratios": [1, 1, 0.5]})
+    for (label, positions, shape, parts, title), (side, top, front) in zip(rows, axes):
         draw(side, positions, shape, parts, args.scale, args.normalise, 2)
         draw(top, positions, shape, parts, args.scale, args.normalise, 1)
+        draw(front, positions, shape, parts, args.scale, args.normalise, 2, horizontal=1)
         side.set_title(f"{label}:\n{title}, side view")
         top.set_title("\ntop view")
+        front.set_title("\nfront view (from ahead)")
     fig.suptitle(f"grey: undeformed; colour: displacement |u| / {NORMALISE[args.normalise]},\n"
                  f"blue 0 to red 1, drawn {args.scale:g} m at red; large marker: the hull's CoG "
                  f"(hollow: at rest)")
+    # Room for the two-line title above the first row's titles (they touched).
+    fig.tvd_rect = (0, 0, 1, 1 - 0.55 / fig.get_figheight())
     save((fig, args.out))
 
 

@@ -15,8 +15,8 @@ CSV or .mat (one n x 1 variable per column, same names; the char variables are i
 Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
 rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Where a file has
-road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey in its panel (the paper's
-dashed h_F and h_R; once where the runs' roads are the same). One legend, in the first panel, names
+road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey and dashed in its panel
+(the paper's dashed h_F and h_R; once where the runs' roads are the same, dotted for a second road). One legend, in the first panel, names
 the runs; a roll panel that stays below 0.001 deg in every run says so. The figure type
 follows the extension of --out (.png, .pdf, .svg, ...). Bad input (missing or corrupt file, missing
 or repeated column, ragged row, non-numeric value, an output that cannot be written) exits with
@@ -51,6 +51,8 @@ PANELS = {
     "rear_left_wheel": "rear-left road wheel [m]",
 }
 LINE_STYLES = ["-", "--", "-.", ":"]
+# The roads under the wheels, grey: dashed as the paper draws h_F and h_R, then dotted, ...
+ROAD_STYLES = ["--", ":", "-."]
 # Roll below this in every run is no signal: a track uniform across its width does not excite it.
 NEGLIGIBLE_ROLL_DEG = 1e-3
 
@@ -122,8 +124,8 @@ def main():
             if road is not None and not any(np.array_equal(x, rx) and np.array_equal(road, r)
                                             for rx, r in roads):
                 roads.append((x, road))
-                ax.plot(x, road, color="grey", linewidth=0.8,
-                        linestyle=LINE_STYLES[(len(roads) - 1) % len(LINE_STYLES)])
+                ax.plot(x, road, color="grey", linewidth=0.9,
+                        linestyle=ROAD_STYLES[(len(roads) - 1) % len(ROAD_STYLES)])
                 road_drawn = True
         ax.set_ylabel(labels[key])
         low, high = ax.get_ylim()
@@ -145,7 +147,7 @@ def main():
     # that none covers the wheel panels' peaks; the road under the wheels is grey.
     handles, names = axes.flat[0].get_legend_handles_labels()
     if road_drawn:
-        handles.append(Line2D([], [], color="grey", linewidth=0.8))
+        handles.append(Line2D([], [], color="grey", linewidth=0.9, linestyle=ROAD_STYLES[0]))
         names.append("road under the wheel")
     if handles:
         axes.flat[0].legend(handles, names, fontsize="small")

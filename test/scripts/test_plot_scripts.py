@@ -600,6 +600,7 @@ class PlotScriptsTest(unittest.TestCase):
         front = panels["front-left road wheel [m]"]
         grey = [line for line in front.get_lines() if line.get_color() == "grey"]
         self.assertEqual(len(grey), 1)
+        self.assertEqual(grey[0].get_linestyle(), "--")  # dashed, as the paper's h_F and h_R
         legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
         self.assertEqual(len(legends), 1)
         self.assertIs(fig.axes[0].get_legend(), legends[0])
@@ -1030,6 +1031,26 @@ class PlotScriptsTest(unittest.TestCase):
         rewrite_lines(os.path.join(u, "node_shapes.csv"), not_a_number)
         result = self.run_script("plot_modes.py", "--out", out, f"{u}:1")
         self.assert_input_error(result, out, "node_shapes.csv", "z_m")
+
+    def test_modes_front_view_shows_roll(self):
+        """The front view plots y against z (review 126: the side and top views alone could not
+        show a roll): two mounts at y = +-1 m moving -+z are drawn where they moved."""
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_modes
+        finally:
+            sys.path.remove(SCRIPTS)
+        import matplotlib.pyplot as plt
+        parts = ["hull", "spider left", "spider right"]
+        positions = np.array([[0.0, 0.0, 1.5], [0.0, 1.0, 0.5], [0.0, -1.0, 0.5]])
+        shape = np.array([[0.0, 0.0, 0.0], [0.0, 0.0, 0.1], [0.0, 0.0, -0.1]])  # roll, left up
+        fig, ax = plt.subplots()
+        plot_modes.draw(ax, positions, shape, parts, 0.4, "mode", 2, horizontal=1)
+        moved = ax.collections[1].get_offsets()  # the deformed nodes, smallest first
+        np.testing.assert_allclose(sorted(map(tuple, moved)),
+                                   [(-1.0, 0.1), (0.0, 1.5), (1.0, 0.9)])
+        self.assertEqual((ax.get_xlabel(), ax.get_ylabel()), ("y [m] (left)", "z [m] (up)"))
+        plt.close(fig)
 
     def test_modes_vehicle_normalisation_scales_on_the_hull_and_clips_the_chain(self):
         sys.path.insert(0, SCRIPTS)
