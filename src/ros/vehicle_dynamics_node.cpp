@@ -47,6 +47,11 @@ constexpr std::uint32_t kTerrainQueue = 10000;
 // separate connections, so either may arrive first.
 constexpr double kRewindWindow = 0.25;
 
+// A negative speed this close to zero is a stopped vehicle as a physics engine reports it
+// (-1e-6 m/s), not reverse driving: taken as 0. Refused as reverse, it kept the last speed and
+// the vehicle crept on at it while the simulator stood still (review 125).
+constexpr double kStandstillNoise = 1e-3;  // [m/s]
+
 // Publisher queues hold at least this many messages; more when one tick may publish more.
 constexpr std::uint32_t kMinQueue = 10;
 
@@ -348,7 +353,7 @@ std::string VehicleDynamicsNode::speedProblem(double v) const {
 }
 
 void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
-  const double v = msg->data;
+  const double v = msg->data < 0.0 && msg->data >= -kStandstillNoise ? 0.0 : msg->data;
   const std::string why = speedProblem(v);
   if (!why.empty()) {
     ++events_.speeds_rejected;

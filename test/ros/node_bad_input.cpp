@@ -210,9 +210,12 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   EXPECT_EQ(diagnostics_.value(": loop", "non-finite resets (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
   // Stopped beyond the terrain's end (a driver gone, ~speed_timeout braking past the patches
-  // sent ahead): standing is not an underrun; the count stops where driving off left it.
-  publishSpeed(0.0);
+  // sent ahead): standing is not an underrun; the count stops where driving off left it. The
+  // stop comes as a physics engine reports standstill, -1e-6 m/s: taken as 0, not refused as
+  // reverse (which kept the last speed, and the vehicle crept on).
+  publishSpeed(-1e-6);
   ASSERT_TRUE(test::spinUntil([&] { return last_speed_ == 0.0; }, 5.0));
+  EXPECT_EQ(diagnostics_.value(": speed", "speeds rejected (total)"), bad_speeds);
   // Terrain ahead of its rear contacts only: stored (the buffer not empty, which was always
   // "waiting"), the rear contacts still off it.
   terrain_pub_.publish(test::flatProfile(station_ + 1.0, station_ + 20.0));
