@@ -13,6 +13,13 @@
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
 
+namespace {
+
+// Terrain starting this far [m] ahead of the front contact gets a hint at its stations.
+constexpr double kFarAhead = 1000.0;
+
+}  // namespace
+
 void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const double period = 1.0 / params_.vehicle_options.rate;
   const std::uint64_t resyncs = loop_resyncs_.delta(events_.resyncs);
@@ -89,6 +96,18 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t other_frame = terrain_other_frame_.delta(events_.patches_other_frame);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
+  // Terrain that starts a kilometre or more ahead of the vehicle is most often in a map's x, not
+  // along this vehicle's path from its start: said beside the waiting or the underrun (review
+  // 125: 5,000 patches from x = 5 km piled up with only "waiting" to show for it).
+  std::string far_ahead;
+  if (!buffer.empty() && buffer.coveredFrom() - vehicle_->frontContactStation() >= kFarAhead) {
+    std::ostringstream text;
+    text << "; the terrain starts "
+         << std::lround(buffer.coveredFrom() - vehicle_->frontContactStation())
+         << " m ahead of the front contact: stations along this vehicle's path from its start "
+            "(odom x), not a map's x?";
+    far_ahead = text.str();
+  }
   if (buffer.empty() && rejected > 0) {
     // A source wrong from its first message must not look like one that has not started.
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
@@ -112,8 +131,9 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
                                          "or reset"
                                        : "no terrain: holding the last heights");
   } else if (uncovered > 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
-                   "terrain underrun: contacts off the terrain held at their last height");
+    status.summary(
+        diagnostic_msgs::DiagnosticStatus::WARN,
+        "terrain underrun: contacts off the terrain held at their last height" + far_ahead);
   } else if (rejected > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "terrain patches rejected");
   } else if (behind > 0) {
@@ -140,7 +160,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     // are not counted as uncovered.
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    "waiting for terrain under the contacts: standing on flat ground since the "
-                   "start or reset");
+                   "start or reset" +
+                       far_ahead);
   } else if (last_uncovered_ > 0 && vehicle_->speed() == 0.0) {
     // Stopped with contacts off the terrain (beyond its end, a driver that timed out): they
     // hold the heights they stand on; the underrun was said while it drove there.

@@ -124,6 +124,25 @@ TEST_F(NodeResetTo, RestartsInEquilibriumOnTheTerrainAtTheStation) {
   const RigidPose flat = pose_;
   EXPECT_LT(flat.translation.z(), 0.0);  // the hull sags under gravity
 
+  // Terrain 5 km ahead alone (a stack sending a map's x): the waiting says where it starts.
+  terrain_pub_.publish(plateau(5000.0, half, 0.0));
+  test::spinFor(0.5);
+  for (int k = 0; k < 12; ++k)  // 1.2 s of steps: at least one diagnostics period
+    ASSERT_TRUE(advanceTo(t_ += ros::Duration(0.1)));
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.message(": terrain")
+                   .find(
+                       "m ahead of the front contact: stations "
+                       "along this vehicle's path from its start "
+                       "(odom x), not a map's x?") != std::string::npos;
+      },
+      10.0))
+      << diagnostics_.describe();
+  EXPECT_NE(diagnostics_.message(": terrain").find("; the terrain starts 4978 m ahead"),
+            std::string::npos)  // 5000 - 15 - the 5 m ramp, less the front contact at about 2.4 m
+      << diagnostics_.describe();
+
   terrain_pub_.publish(plateau(station, half, height));
   test::spinFor(0.5);
   ASSERT_TRUE(step());  // the patch is in the buffer (it is far ahead: the vehicle does not move)
