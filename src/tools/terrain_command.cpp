@@ -46,10 +46,10 @@ double rmsHeight(const terrain::Terrain& t, Eigen::Index first, Eigen::Index las
   return std::sqrt(block.squaredNorm() / static_cast<double>(block.size()));
 }
 
-// `value` > 0 to six significant digits, rounded down: a bound the user may type back as it is
-// (brief() rounds 1/6 up to 0.166667, which the bound then refuses).
-std::string roundedDown(double value) {
-  const double scale = std::pow(10.0, 5 - std::floor(std::log10(value)));
+// `value` > 0 to `digits` significant digits, rounded down: a bound the user may type back as it
+// is (brief() rounds 1/6 up to 0.166667, which the bound then refuses).
+std::string roundedDown(double value, int digits = 6) {
+  const double scale = std::pow(10.0, digits - 1 - std::floor(std::log10(value)));
   return brief(std::floor(value * scale) / scale);
 }
 
@@ -162,15 +162,14 @@ void run(TerrainOptions opt) {
   // seat's absorbed power 48 % low at 15 km/h at 0.17 m), so it is said.
   const double top_share = iso ? interpolatedPowerShare(opt.max_frequency, opt.spacing) : 1.0;
   if (top_share < 0.8) {
-    const double spacing_80 = kEightyPercentSpacing / opt.max_frequency;
-    const double scale = std::pow(10.0, 2 - std::floor(std::log10(spacing_80)));
     std::cerr << "tvd: note: simulate interpolates the road linearly "
               << "between stations, which passes sinc^4(n spacing) of its PSD: at --spacing "
               << brief(opt.spacing) << " m only " << std::floor(100.0 * top_share)
               << " % at the band's top (" << brief(opt.max_frequency)
               << " cycles/m), so the vehicle rides a smoother road "
               << "than class " << road_class << "; --spacing "
-              << brief(std::floor(spacing_80 * scale) / scale) << " m or less keeps 80 %\n";
+              << roundedDown(kEightyPercentSpacing / opt.max_frequency, 3)
+              << " m or less keeps 80 %\n";
   }
 
   if (opt.json) {
