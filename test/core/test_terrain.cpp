@@ -523,28 +523,34 @@ TEST(Tracks, LongHillClosedForms) {
   const double w = kTrackSmoothingWindow;
   const double s = kLongHillHeight / kLongHillRamp;  // ramp slope
   // Plateau: exactly the hill height at least W/2 away from the ramp corners, any y.
-  for (double x = kLongHillStart + kLongHillRamp + w / 2; x <= 18.9 + 1e-9; x += 0.05) {
+  const double top_end = kLongHillStart + kLongHillRamp + kLongHillTop;  // 21 m
+  for (double x = kLongHillStart + kLongHillRamp + w / 2; x <= top_end - w / 2 + 1e-9; x += 0.05) {
     for (double y : {-2.5, 0.0, 1.3})
       EXPECT_NEAR(t.height(x, y), kLongHillHeight, kRoundoff);
   }
   // Ramp midpoints and the linear stretch of the ramps.
   EXPECT_NEAR(t.height(10.5, 0.0), 0.5 * kLongHillHeight, kRoundoff);
-  EXPECT_NEAR(t.height(19.5, 0.0), 0.5 * kLongHillHeight, kRoundoff);
+  EXPECT_NEAR(t.height(21.5, 0.0), 0.5 * kLongHillHeight, kRoundoff);
   EXPECT_NEAR(t.height(10.3, 0.0), s * 0.3, kRoundoff);
   EXPECT_NEAR(t.slope(10.5, 0.0), s, kRoundoff);
-  EXPECT_NEAR(t.slope(19.5, 0.0), -s, kRoundoff);
-  EXPECT_NEAR(t.slope(15.0, 0.0), 0.0, kRoundoff);
+  EXPECT_NEAR(t.slope(21.5, 0.0), -s, kRoundoff);
+  EXPECT_NEAR(t.slope(16.0, 0.0), 0.0, kRoundoff);
+  // The top is 10 m long (the paper's "10 m long"), the ramps beside it: 12 m foot to foot.
+  EXPECT_DOUBLE_EQ(kLongHillLength, 12.0);
+  EXPECT_NEAR(t.height(11.1, 0.0), kLongHillHeight, kRoundoff);
+  EXPECT_NEAR(t.height(20.9, 0.0), kLongHillHeight, kRoundoff);
   // Smoothed corners: h = s (x - x_c + W/2)^2 / (2 W) near the foot, s W / 8 at the corner.
   EXPECT_NEAR(t.height(10.0, 0.0), s * w / 8.0, kRoundoff);
   EXPECT_NEAR(t.height(11.0, 0.0), kLongHillHeight - s * w / 8.0, kRoundoff);
-  EXPECT_NEAR(t.height(20.0, 0.0), s * w / 8.0, kRoundoff);
+  EXPECT_NEAR(t.height(21.0, 0.0), kLongHillHeight - s * w / 8.0, kRoundoff);
+  EXPECT_NEAR(t.height(22.0, 0.0), s * w / 8.0, kRoundoff);
   for (double x : {9.93, 9.95, 10.04, 10.07}) {
     const double d = x - (kLongHillStart - w / 2);
     EXPECT_NEAR(t.height(x, 0.0), s * d * d / (2.0 * w), kRoundoff) << "x = " << x;
   }
   // Flat run-in and run-out up to W/2 from the feet.
   EXPECT_DOUBLE_EQ(t.height(9.9, 0.0), 0.0);
-  EXPECT_DOUBLE_EQ(t.height(20.1, 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(t.height(22.1, 0.0), 0.0);
   EXPECT_DOUBLE_EQ(t.height(-3.0, 0.0), 0.0);
 }
 

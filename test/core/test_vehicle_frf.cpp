@@ -448,8 +448,22 @@ TEST(VehicleTimeResponse, ReducedMatchesFullOnLongHill) {
       EXPECT_LT((full.col(jf) - reduced.col(jr)).cwiseAbs().maxCoeff(), kTimeTolerance * peak)
           << name << " at " << speed_kmh << " km/h";
     }
-    // The hill lifts the hull by its height (0.4 m) at either speed.
-    EXPECT_NEAR(full.col(column(v.full.modal.output_names, "hull uz")).maxCoeff(), 0.4, 0.08);
+    // The hill lifts the hull by its height (0.4 m). At 5 km/h it sits still on the 10 m top
+    // while every wheel is on it (§4.2.2: "stationary ... on the hill"): reference station
+    // 11 + 2.34 to 21 - 2.34 m; here 14-18 m, past the entry's settling. At 50 km/h it swings
+    // about the hill height, above it.
+    const Vector heave = full.col(column(v.full.modal.output_names, "hull uz"));
+    if (speed_kmh == 5.0) {
+      for (long k = 0; k <= steps; ++k) {
+        const double station = track.startStation() + speed * dt * static_cast<double>(k);
+        if (station >= 14.0 && station <= 18.0) {
+          ASSERT_NEAR(heave(k), terrain::kLongHillHeight, 0.005) << "station " << station;
+        }
+      }
+    } else {
+      EXPECT_GT(heave.maxCoeff(), terrain::kLongHillHeight);
+      EXPECT_LT(heave.maxCoeff(), 1.5 * terrain::kLongHillHeight);
+    }
   }
 }
 

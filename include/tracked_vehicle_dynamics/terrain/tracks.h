@@ -3,9 +3,15 @@
 // 0.01 m and smoothed by a centred 0.2 m moving average (moving_average.h). Where the paper (or
 // NRMM) leaves a dimension open the choice is fixed here (constants below) and explained:
 //
-//  long_hill        0.4 m high, 10 m long including 1 m linear ramps in and out. The paper does
-//                   not place it; it is centred on the track: ramp up x = 10..11 m, plateau
-//                   11..19 m, ramp down 19..20 m, i.e. 10 m of flat run-in and run-out.
+//  long_hill        "A 0.4 m tall hill 10 m long with entering and exiting 1 m long linear
+//                   ramps": the 10 m is the top, the ramps come on either side (12 m foot to
+//                   foot). The paper's Fig. 18 holds the hull still on the hill over 7-12 m of
+//                   track location, about 5 m: a 10 m top less the paper vehicle's 4.68 m
+//                   between first and last axle leaves 5.32 m; an 8 m top (10 m foot to foot)
+//                   would leave 3.32 m. The paper does not place it: ramp up x = 10..11 m, top
+//                   11..21 m, ramp down 21..22 m, i.e. 10 m of flat run-in (as the half round's
+//                   below) and 8 m of run-out, where the rear wheel leaves the hill at 24.34 m
+//                   (2.34 m behind the reference station) with 5.66 m left to ring down.
 //                   Uniform across the width.
 //  separated_waves  10 full periods of a sinusoid of 1.8 m wavelength and 0.15 m "depth", read as
 //                   peak-to-trough and as hollows below the ground:
@@ -87,10 +93,12 @@ constexpr double kTrackSpacing = 0.01;         ///< sampling step [m]
 constexpr double kTrackSmoothingWindow = 0.2;  ///< centred moving average [m]
 constexpr double kTrackLateralSpacing = 0.5;   ///< spacing of the lateral lines [m]
 
-constexpr double kLongHillHeight = 0.4;   ///< [m]
-constexpr double kLongHillLength = 10.0;  ///< foot to foot, ramps included [m]
-constexpr double kLongHillRamp = 1.0;     ///< each linear ramp [m]
-constexpr double kLongHillStart = 10.0;   ///< foot of the entry ramp [m]
+constexpr double kLongHillHeight = 0.4;  ///< [m]
+constexpr double kLongHillTop = 10.0;    ///< the flat top, between the ramps [m]
+constexpr double kLongHillRamp = 1.0;    ///< each linear ramp [m]
+constexpr double kLongHillStart = 10.0;  ///< foot of the entry ramp [m]
+/// Foot to foot, ramps included [m].
+constexpr double kLongHillLength = kLongHillTop + 2.0 * kLongHillRamp;
 
 constexpr double kSeparatedWavesDepth = 0.15;      ///< peak-to-trough [m]
 constexpr double kSeparatedWavesWavelength = 1.8;  ///< [m]
