@@ -304,17 +304,27 @@ void run(const StaticsOptions& opt) {
   // Why the wheel loads need not sum to the weight (StaticSummary::chain_wheel_vertical).
   std::cout << "  together " << std::setprecision(2) << wheel_sum / 1e3 << " kN ("
             << wheel_sum / s.weight << " x the weight)";
-  if (model.layout.variant == vehicle::Variant::Tracked)
+  if (model.layout.variant == vehicle::Variant::Tracked) {
+    // Up: the loop hangs on them. Down: either bonded links pull on them (a contact in
+    // tension), or, every contact pressing, a tensioned loop wraps round them where their
+    // outward push points down (below a sprocket or idler centre).
+    const bool any_pulling = std::any_of(s.chain_wheel_loads.begin(), s.chain_wheel_loads.end(),
+                                         [](double n) { return n < 0.0; });
+    const bool up = s.chain_wheel_vertical >= 0.0;
     std::cout << ": the chain lies between them and the ground with its own weight ("
               << model.layout.mass.track_assemblies * model.model.gravity.norm() / 1e3
               << " kN),\n  and the sprockets, idlers and rollers "
-              // Up (the loop hanging on them) or, on a bilateral ground whose wheels pull, down.
-              << (s.chain_wheel_vertical >= 0.0 ? "push it up" : "pull it down") << " with "
-              << std::abs(s.chain_wheel_vertical) / 1e3 << " kN, with which it "
-              << (s.chain_wheel_vertical >= 0.0 ? "pushes the hull down" : "pulls the hull up")
-              << (s.chain_wheel_vertical >= 0.0 ? " (the loop hanging on them under gravity)"
-                                                : " (the bonded links pulling on them)");
-  else
+              << (up            ? "push it up"
+                  : any_pulling ? "pull it down"
+                                : "press it down")
+              << " with " << std::abs(s.chain_wheel_vertical) / 1e3 << " kN, with which it "
+              << (up            ? "pushes the hull down"
+                  : any_pulling ? "pulls the hull up"
+                                : "lifts the hull")
+              << (up            ? " (the loop hanging on them under gravity)"
+                  : any_pulling ? " (links bonded to them pulling on them)"
+                                : " (the tensioned loop wrapped round them)");
+  } else
     std::cout << ": the track assemblies under them add their own weight ("
               << model.layout.mass.track_assemblies * model.model.gravity.norm() / 1e3 << " kN)";
   std::cout << "\n";

@@ -82,7 +82,8 @@ std::vector<Field> fieldsOf(VehicleDescription& d) {
       {"suspension", "arm_angle", "deg", K::Angle, R::Any, &s.arm_angle},
       {"suspension", "pivot_y", "m", K::Real, R::Positive, &s.pivot_y},
       {"suspension", "contact_stiffness", "N/m", K::Real, R::Positive, &s.contact_stiffness},
-      {"suspension", "contact_shear_stiffness", "N/m", K::Real, R::NonNegative,
+      // Positive: it is the un-tracked hull's only longitudinal restraint (0 left it free).
+      {"suspension", "contact_shear_stiffness", "N/m", K::Real, R::Positive,
        &s.contact_shear_stiffness},
       {"suspension", "guide_contact_height", "m", K::Real, R::NonNegative, &s.guide_contact_height},
       {"suspension", "arm_damping", "N*m*s/rad", K::Real, R::NonNegative, &s.arm_damping},
@@ -422,6 +423,14 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
   c.require(t.count <= 999, "track_assembly.count",
             "at most 999 assemblies per side are supported (node numbering)");
   const double wheelbase = g.axle_spacing * (g.axle_count - 1);
+  // Longer than both the ground run and the hull: the wheelbase itself is what is wrong, not
+  // either of the two lengths a check below would otherwise name.
+  c.require(wheelbase < t.ground_length || wheelbase < d.hull.length, "running_gear.axle_spacing",
+            brief(g.axle_spacing) + " m between " + std::to_string(g.axle_count) +
+                " axles makes a wheelbase of " + brief(wheelbase) +
+                " m, longer than both the hull (hull.length " + brief(d.hull.length) +
+                " m) and the ground run (track_assembly.ground_length " + brief(t.ground_length) +
+                " m)");
   c.require(wheelbase < t.ground_length, "track_assembly.ground_length",
             "the ground run " + brief(t.ground_length) + " m is not longer than the wheelbase " +
                 brief(wheelbase) + " m");

@@ -152,6 +152,14 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "0.3844 m^2): mm^2 typed as m^2?"},
       {"link_beam_area: {value: 2.0e-3,", "link_beam_area: {value: 2000,",
        "track_assembly.link_beam_area", "mm^2 typed as m^2?"},
+      // A wheelbase longer than the hull and the ground run names the spacing, not a length.
+      {"axle_spacing: {value: 0.78,", "axle_spacing: {value: 1.5,", "running_gear.axle_spacing",
+       "1.5 m between 7 axles makes a wheelbase of 9 m, longer than both the hull (hull.length "
+       "7.6 m) and the ground run (track_assembly.ground_length 4.845 m)"},
+      // A rolling wheel taken to the limit: the un-tracked hull was left free fore and aft,
+      // reported by the solver as 21 mechanisms.
+      {"contact_shear_stiffness: {value: 2e10,", "contact_shear_stiffness: {value: 0,",
+       "suspension.contact_shear_stiffness", "must be positive, got 0"},
       // A ground that carries nothing once left a free body, reported as a list of DOFs.
       {"ground_stiffness: {value: 2e10,", "ground_stiffness: {value: 1e-200,",
        "ties.ground_stiffness",

@@ -429,6 +429,14 @@ class TvdCliTest(unittest.TestCase):
                       " with which it pulls the hull up", text)
         self.assertIn(f"rollers push it up with {u['chain_wheel_vertical_force_n'] / 1e3:.2f} kN",
                       self.tvd("statics", "--vehicle", VEHICLE).stdout)
+        # A tensioned loop, every contact pressing, can press them down: not "pull", not "bonded".
+        tensioned = os.path.join(ROOT, "test", "data", "six_axle_tensioned.yaml")
+        t = self.tvd_json("statics", "--vehicle", tensioned)
+        self.assertLess(t["chain_wheel_vertical_force_n"], 0.0)
+        self.assertGreaterEqual(min(c["load_n"] for c in t["chain_wheel_contacts"]), 0.0)
+        self.assertIn(f"rollers press it down with {-t['chain_wheel_vertical_force_n'] / 1e3:.2f} kN,"
+                      " with which it lifts the hull (the tensioned loop wrapped round them)",
+                      self.tvd("statics", "--vehicle", tensioned).stdout)
         self.assertIn(f"Rowland's empirical estimate {rowland / 1e3:.1f} kPa", text)
         text = self.tvd("statics", "--vehicle", VEHICLE, "--variant", "untracked").stdout
         self.assertIn("nominal ground pressure", text)
