@@ -2,8 +2,10 @@
 """Time response over a track, like Figs. 18-24 of Dimauro et al. (2024).
 
 Panels: hull heave [m], hull vertical acceleration [m/s^2], pitch [deg], roll [deg] (only if a file
-has hull_roll_deg), front-left and rear-left road wheel displacement [m]; x is station [m] or time
-[s]. Each LABEL=FILE becomes one line per panel, e.g. full/reduced (Figs. 18-19), untracked/
+has hull_roll_deg), front-left and rear-left road wheel displacement [m], and front-right and
+rear-right ones where a run's right wheels move otherwise than its left (by more than 1e-6 m: the
+out-of-phase waves, Fig. 22; on a track uniform across its width they are the left ones again);
+x is station [m] or time [s]. Each LABEL=FILE becomes one line per panel, e.g. full/reduced (Figs. 18-19), untracked/
 tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simulate --out` writes,
 CSV or .mat (one n x 1 variable per column, same names; the char variables are ignored):
 
@@ -14,7 +16,7 @@ CSV or .mat (one n x 1 variable per column, same names; the char variables are i
 
 Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
-rear one), and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Where a file has
+rear one), [road_wheel_right_<k>_m], and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Where a file has
 road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey and dashed in its panel
 (the paper's dashed h_F and h_R; once where the runs' roads are the same, dotted for a second road). One legend, in the first panel, names
 the runs; a roll panel that stays below 0.001 deg in every run says so. The figure type
@@ -49,7 +51,11 @@ PANELS = {
     "hull_roll_deg": "hull roll [deg, left up +]",
     "front_left_wheel": "front-left road wheel [m]",
     "rear_left_wheel": "rear-left road wheel [m]",
+    "front_right_wheel": "front-right road wheel [m]",
+    "rear_right_wheel": "rear-right road wheel [m]",
 }
+# Right wheels moving within this of the left ones in every run are not drawn again [m].
+SAME_SIDES_M = 1e-6
 LINE_STYLES = ["-", "--", "-.", ":"]
 # The roads under the wheels, grey: dashed as the paper draws h_F and h_R, then dotted, ...
 ROAD_STYLES = ["--", ":", "-."]
@@ -67,17 +73,34 @@ def load(path, x_column, points=()):
     columns = {key: key for key in PANELS if key.startswith("hull_")}
     columns["front_left_wheel"] = "road_wheel_left_1_m"
     columns["rear_left_wheel"] = f"road_wheel_left_{rear}_m"
+    for end, wheel in (("front", 1), ("rear", rear)):
+        if f"road_wheel_right_{wheel}_m" in header:
+            columns[f"{end}_right_wheel"] = f"road_wheel_right_{wheel}_m"
     if "hull_roll_deg" not in header:  # older files
         del columns["hull_roll_deg"]
     for point in points:
         columns[point_panel(point)] = f"{point}_accel_z_m_s2"
     # The road under each wheel (newer files), drawn dashed under its wheel like the paper's h_F
     # and h_R.
-    for key in ("front_left_wheel", "rear_left_wheel"):
+    for key in [k for k in columns if k.endswith("_wheel")]:
         if f"road_under_{columns[key]}" in header:
             columns[road_panel(key)] = f"road_under_{columns[key]}"
     x = table.column(x_column)
-    return x, {key: table.column(name) for key, name in columns.items()}
+    series = {key: table.column(name) for key, name in columns.items()}
+    return x, series
+
+
+def drop_right_wheels_like_left(runs):
+    """Removes the right-wheel panels (and their roads) from every run when in each run the right
+    wheels follow the left ones within SAME_SIDES_M: a track uniform across its width."""
+    def same(series):
+        return all(np.max(np.abs(series[f"{end}_right_wheel"] - series[f"{end}_left_wheel"]),
+                          initial=0.0) <= SAME_SIDES_M
+                   for end in ("front", "rear") if f"{end}_right_wheel" in series)
+    if all(same(series) for _, _, series in runs):
+        for _, _, series in runs:
+            for key in [k for k in series if "_right_wheel" in k]:
+                del series[key]
 
 
 def road_panel(key):
@@ -106,6 +129,7 @@ def main():
 
     x_column, x_label = X_AXES[args.x]
     runs = [(label, *load(path, x_column, args.point)) for label, path in args.files]
+    drop_right_wheels_like_left(runs)
     labels = dict(PANELS)
     for point in args.point:
         labels[point_panel(point)] = f"{point} vertical acceleration [m/s$^2$]"

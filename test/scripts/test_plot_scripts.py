@@ -616,6 +616,46 @@ class PlotScriptsTest(unittest.TestCase):
         roll = {ax.get_ylabel(): ax for ax in fig.axes}["hull roll [deg, left up +]"]
         self.assertEqual(len(roll.texts), 0)
 
+    def test_simulation_draws_right_wheels_only_where_they_differ(self):
+        # Out-of-phase waves (Fig. 22): the right wheels move opposite to the left ones and get
+        # their own panels, with the road under them; on a uniform track they would repeat the
+        # left ones and are left out (as in every other test here).
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_simulation
+        finally:
+            sys.path.remove(SCRIPTS)
+        columns = simulation_columns()
+        for wheel in (1, 7):
+            columns[f"road_wheel_right_{wheel}_m"] = -columns[f"road_wheel_left_{wheel}_m"]
+            columns[f"road_under_road_wheel_right_{wheel}_m"] = -hill(columns["station_m"] + wheel)
+        oop = write_csv(self.path("oop.csv"), columns)
+        uniform = write_csv(self.path("uniform.csv"), simulation_columns())
+
+        def panels(*files):
+            captured = []
+            original, argv = plot_simulation.save, sys.argv
+            plot_simulation.save = lambda *pairs: captured.extend(pairs)
+            sys.argv = ["plot_simulation.py", "--out", self.path("f.png")] + list(files)
+            try:
+                plot_simulation.main()
+            finally:
+                plot_simulation.save, sys.argv = original, argv
+            return {ax.get_ylabel(): ax for ax in captured[0][0].axes if ax.get_visible()}
+
+        right = panels(f"oop={oop}")
+        self.assertIn("front-right road wheel [m]", right)
+        rear = right["rear-right road wheel [m]"]
+        drawn = [line for line in rear.get_lines() if line.get_color() != "grey"][0]
+        np.testing.assert_allclose(drawn.get_ydata(), -columns["road_wheel_left_7_m"], atol=1e-9)
+        self.assertEqual(len([l for l in rear.get_lines() if l.get_color() == "grey"]), 1)
+        self.assertEqual(len(right), 8)
+        # One run differing is enough for both runs to get the panels.
+        self.assertIn("rear-right road wheel [m]", panels(f"a={oop}", f"b={uniform}"))
+        left_only = panels(f"u={uniform}")
+        self.assertNotIn("front-right road wheel [m]", left_only)
+        self.assertEqual(len(left_only), 6)
+
     def test_simulation_named_point_panel(self):
         columns = simulation_columns()
         columns["crew_seat_accel_z_m_s2"] = 1.3 * columns["hull_vertical_accel_m_s2"]
