@@ -15,6 +15,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/terrain/interpolation_loss.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
@@ -53,18 +54,8 @@ std::string roundedDown(double value, int digits = 6) {
   return brief(std::floor(value * scale) / scale);
 }
 
-// sinc^4(n dx): the share of a road harmonic's power (n cycles/m) that linear interpolation
-// between stations dx apart passes on, as `simulate` reads a terrain (its input is the
-// station samples convolved with a triangle of base 2 dx, whose transform is sinc^2).
-double interpolatedPowerShare(double n, double dx) {
-  const double a = kPi * n * dx;
-  const double sinc = a > 0.0 ? std::sin(a) / a : 1.0;
-  return std::pow(sinc, 4);
-}
-
-// n dx at which sinc^4 = 0.8 (pi n dx = 0.5753, solved numerically): the spacing that keeps
-// 80 % of the PSD at n is this over n (0.0647 m at ISO 8608's 2.83 cycles/m).
-constexpr double kEightyPercentSpacing = 0.183128;
+// The share of the band top's PSD a simulation's linear interpolation must keep before a note.
+constexpr double kKeptPowerShare = 0.8;
 
 void run(TerrainOptions opt) {
   const bool iso = !opt.iso_class.empty();
@@ -160,15 +151,17 @@ void run(TerrainOptions opt) {
   // passes sinc^4(n dx) of the PSD (19 % at 2.83 cycles/m and 0.17 m, 88 % at the default
   // 0.05 m). Below 80 % the vehicle rides a visibly smoother road than the class (the crew
   // seat's absorbed power 48 % low at 15 km/h at 0.17 m), so it is said.
-  const double top_share = iso ? interpolatedPowerShare(opt.max_frequency, opt.spacing) : 1.0;
-  if (top_share < 0.8) {
+  const double top_share =
+      iso ? terrain::interpolatedPowerShare(opt.max_frequency, opt.spacing) : 1.0;
+  if (top_share < kKeptPowerShare) {
     std::cerr << "tvd: note: simulate interpolates the road linearly "
               << "between stations, which passes sinc^4(n spacing) of its PSD: at --spacing "
               << brief(opt.spacing) << " m only " << std::floor(100.0 * top_share)
               << " % at the band's top (" << brief(opt.max_frequency)
               << " cycles/m), so the vehicle rides a smoother road "
               << "than class " << road_class << "; --spacing "
-              << roundedDown(kEightyPercentSpacing / opt.max_frequency, 3)
+              << roundedDown(terrain::spacingKeepingPowerShare(opt.max_frequency, kKeptPowerShare),
+                             3)
               << " m or less keeps 80 %\n";
   }
 
