@@ -106,7 +106,9 @@ EngineRuns runEngines(const SecondOrderSystem& s, const Vector& f_g, const Matri
       z0_given.size() > 0 ? z0_given : staticEquilibrium(s, Vector::Zero(s.inputCount()), f_g);
   for (Simulator* sim : {&dense, &batch, &stepped})
     sim->reset(z0, w.row(0).transpose());
-  EngineRuns runs{dense.simulate(w), batch.simulate(w), Matrix(w.rows(), 0)};
+  EngineRuns runs;
+  runs.dense = dense.simulate(w);
+  runs.batch = batch.simulate(w);
   runs.stepped.resize(w.rows(), runs.batch.cols());
   runs.stepped.row(0) = stepped.outputs().transpose();
   for (DofIndex k = 1; k < w.rows(); ++k) {
@@ -276,10 +278,18 @@ TEST(Newmark, UnconditionallyStableWithoutNumericalDamping) {
   const double k = 2e10, m = 30.0;
   newmark.reset(Vector::Constant(1, 1e-3), Vector::Zero(1), Vector::Zero(2));
   const double energy0 = 0.5 * k * 1e-6;
+  // The rule is the trapezoid (a Cayley transform) of q'' = -omega^2 q: in (omega q, v) an exact
+  // rotation by theta, tan(theta / 2) = omega h / 2 (here 3.0 rad a step, where the true motion
+  // turns by 25.8): q_n = q_0 cos(n theta), v_n = -omega q_0 sin(n theta). An integrator that
+  // did not move would keep the energy too; it would not turn.
+  const double omega = std::sqrt(k / m), theta = 2.0 * std::atan(0.5 * omega * 1e-3);
   for (int i = 0; i < 1000; ++i) {
     newmark.step(Vector::Zero(2));
     const double q = newmark.displacement()(0), v = newmark.velocity()(0);
     ASSERT_NEAR(0.5 * k * q * q + 0.5 * m * v * v, energy0, 1e-9 * energy0);
+    const double turned = theta * (i + 1);
+    ASSERT_NEAR(q, 1e-3 * std::cos(turned), 1e-9 * 1e-3) << "step " << i + 1;
+    ASSERT_NEAR(v, -omega * 1e-3 * std::sin(turned), 1e-9 * omega * 1e-3) << "step " << i + 1;
   }
   EXPECT_THROW(newmark.step(Vector::Zero(3)), InputError);
   EXPECT_THROW(NewmarkIntegrator(toSparse(s), 0.0), InputError);
@@ -304,6 +314,18 @@ TEST(Newmark, AverageAccelerationDissipatesExactlyTheDampersWork) {
     worst = std::max(worst, std::abs(e1 - e0 + h * c * v_bar * v_bar) / scale);
   }
   EXPECT_LT(worst, 1e-12);
+  // And the state itself: the trapezoid of x' = A x, x = (q, v), A = [0 1; -k/m -c/m], is
+  // x_{n+1} = (I - h A / 2)^-1 (I + h A / 2) x_n, iterated here on 2 x 2 matrices.
+  Eigen::Matrix2d a;
+  a << 0.0, 1.0, -k / m, -c / m;
+  const Eigen::Matrix2d step = (Eigen::Matrix2d::Identity() - 0.5 * h * a).inverse() *
+                               (Eigen::Matrix2d::Identity() + 0.5 * h * a);
+  Eigen::Vector2d x(0.1, 0.0);
+  for (int i = 0; i < 200; ++i)
+    x = step * x;
+  EXPECT_NEAR(newmark.displacement()(0), x(0), 1e-12);
+  EXPECT_NEAR(newmark.velocity()(0), x(1), 1e-11);
+  EXPECT_GT(std::abs(x(0)) + std::abs(x(1)) / std::sqrt(k / m), 1e-4);  // not yet at rest
 }
 
 // A single discrete damper at the chain's end is not proportional: the modal engine reports the

@@ -555,6 +555,66 @@ TEST(Tracks, LongHillClosedForms) {
   EXPECT_DOUBLE_EQ(t.height(-3.0, 0.0), 0.0);
 }
 
+// The paper's §4.2.1 dimensions, as literals measured on the built tracks (the other track tests
+// read tracks.h's constants, which a typo there would carry into both sides): 30 m x 5 m sampled
+// every 0.01 m; a 0.4 m hill with a 10 m top and 1 m ramps; 10 waves of 1.8 m, 0.15 m deep; 10
+// out-of-phase waves of 1.2 m, 0.6 m deep. The 0.2 m moving average scales a sinusoid of
+// wavelength L by sin(pi W / L) / (pi W / L) and leaves the hill's linear stretches alone.
+TEST(Tracks, DimensionsAreThePapers) {
+  const double w = 0.2;
+  const auto smoothing = [&](double wavelength) {
+    const double a = kPi * w / wavelength;
+    return std::sin(a) / a;
+  };
+  for (const char* name : {"long_hill", "separated_waves", "oop_waves"}) {
+    const Terrain t = makeTrack(name);
+    EXPECT_NEAR(t.length(), 30.0, 1e-12) << name;
+    EXPECT_NEAR(t.stations()(1) - t.stations()(0), 0.01, 1e-12) << name;
+    EXPECT_NEAR(t.lateral()(t.lateral().size() - 1) - t.lateral()(0), 5.0, 1e-12) << name;
+  }
+  // Long hill: the half-height crossings lie a ramp's midpoint in from each foot, i.e. top +
+  // one ramp = 11 m apart; the top stays at 0.4 m over 10 m less the window.
+  const Terrain hill = makeTrack("long_hill");
+  const std::vector<double> half = crossings(hill, 0.0, 0.2, 0.0, 30.0);
+  ASSERT_EQ(half.size(), 2u);
+  EXPECT_NEAR(half[1] - half[0], 11.0, 1e-6);
+  double top = 0.0, on_top = 0.0;
+  for (double x = 0.0; x <= 30.0; x += 0.001) {
+    const double h = hill.height(x, 0.0);
+    top = std::max(top, h);
+    on_top += (std::abs(h - 0.4) < 1e-9) ? 0.001 : 0.0;
+  }
+  EXPECT_NEAR(top, 0.4, 1e-12);
+  EXPECT_NEAR(on_top, 10.0 - w, 0.003);
+  // Separated waves: 10 troughs 1.8 m apart, 0.15 m deep before smoothing.
+  const Terrain waves = makeTrack("separated_waves");
+  // h = -(D/2)(1 - cos): its mean level -D/2 crosses where cos = 0, twice a period.
+  const std::vector<double> mid = crossings(waves, 0.0, -0.075, 0.0, 30.0);
+  ASSERT_EQ(mid.size(), 20u);  // two per period
+  EXPECT_NEAR((mid[19] - mid[1]) / 9.0, 1.8, 1e-6);
+  double lowest = 0.0;
+  for (double x = 0.0; x <= 30.0; x += 0.001)
+    lowest = std::min(lowest, waves.height(x, 0.0));
+  // -(D/2)(1 + sinc), less the linear interpolation's h'' dx^2 / 8 = 1.1e-5 m at the trough.
+  EXPECT_NEAR(-2.0 * lowest / (1.0 + smoothing(1.8)), 0.15, 2e-5);
+  // Out-of-phase waves: 1.2 m, 0.6 m peak-to-trough at the edges, left against right.
+  TrackOptions centred;  // the track's own frame: its edges at y = +-2.5 m
+  centred.lateral_offset = 0.0;
+  const Terrain oop = makeTrack("oop_waves", centred);
+  double high = 0.0, low = 0.0;
+  for (double x = 0.0; x <= 30.0; x += 0.001) {
+    high = std::max(high, oop.height(x, 2.5));
+    low = std::min(low, oop.height(x, 2.5));
+    EXPECT_NEAR(oop.height(x, -2.5), -oop.height(x, 2.5), 1e-12);
+  }
+  // Less the interpolation's h'' dx^2 / 8 = 1.0e-4 m at the crest and at the trough.
+  EXPECT_NEAR((high - low) / smoothing(1.2), 0.6, 3e-4);
+  const std::vector<double> zeros = crossings(oop, 2.5, 0.0, 1.0, 29.0);
+  ASSERT_GE(zeros.size(), 19u);
+  EXPECT_NEAR((zeros[zeros.size() - 2] - zeros[1]) / ((zeros.size() - 3) / 2.0), 1.2, 1e-6);
+  EXPECT_DOUBLE_EQ(defaultLateralOffset("oop_waves"), 1.0);  // "a lateral offset of 1 m"
+}
+
 TEST(Tracks, SeparatedWavesWavelengthAndDepth) {
   const Terrain t = makeTrack("separated_waves");
   const double d = kSeparatedWavesDepth;

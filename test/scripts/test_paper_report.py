@@ -114,9 +114,32 @@ class PaperReportTest(unittest.TestCase):
         for row in s["frf_agreement"]:
             self.assertLess(row["worst_db"], 1.0, row)
             self.assertGreater(row["fraction_compared"], 0.45, row)
+        # Heave, pitch and wheels are the 2 % target; the hull's acceleration, which the
+        # comfort metrics are taken from, is held to the same.
+        outputs = {row["output"] for row in s["full_vs_reduced"]}
+        self.assertIn("hull vertical acceleration", outputs)
         for row in s["full_vs_reduced"]:
-            if row["output"] != "hull vertical acceleration":
-                self.assertLess(row["relative_to_peak"], 0.02, row)
+            self.assertLess(row["relative_to_peak"], 0.02, row)
+
+    # The paper's §4.2 statements that ours does not reproduce (README, "Time domain", where each
+    # is explained); every other statement with a verdict must hold. A change of the model that
+    # turns a verdict fails here, not only as a README table to --update.
+    KNOWN_TIME_DOMAIN_DEVIATIONS = {
+        "UV long hill 5 km/h: peak hull vertical acceleration",
+        "UV long hill 50 km/h: peak hull vertical acceleration",
+        "same: wheel overshoot above the 0.4 m hill",
+        "long hill 30 km/h: hull pitch marginally higher with the track",
+        "OOP waves 30 km/h: larger roll, read as tracked > un-tracked",
+    }
+
+    def test_time_domain_statements_keep_their_verdicts(self):
+        rows = self.sections()["time_domain"]
+        judged = [r for r in rows if r["ok"] is not None]
+        self.assertGreaterEqual(len(judged), 15)
+        cases = {r["case"] for r in judged}
+        self.assertLessEqual(self.KNOWN_TIME_DOMAIN_DEVIATIONS, cases)
+        for r in judged:
+            self.assertEqual(r["ok"], r["case"] not in self.KNOWN_TIME_DOMAIN_DEVIATIONS, r)
 
     def test_commands_are_listed(self):
         runs = self.json["runs"] if self.json else []

@@ -404,8 +404,12 @@ class PlotScriptsTest(unittest.TestCase):
             import plot_frf
         finally:
             sys.path.remove(SCRIPTS)
-        full = write_csv(self.path("full.csv"), frf_columns())
-        delayed = write_csv(self.path("delayed.csv"), frf_columns(wheelbase_delay_s=0.2))
+        # The rear wheel scaled, so that no two outputs of a file share their magnitudes.
+        files = {"sync": frf_columns(), "30 km/h": frf_columns(wheelbase_delay_s=0.2)}
+        for columns in files.values():
+            columns["rear_wheel_acc_mag"] = 0.8 * columns["rear_wheel_acc_mag"]
+        full = write_csv(self.path("full.csv"), files["sync"])
+        delayed = write_csv(self.path("delayed.csv"), files["30 km/h"])
         captured = []
         original, argv = plot_frf.save, sys.argv
         plot_frf.save = lambda *pairs: captured.extend(pairs)
@@ -419,6 +423,19 @@ class PlotScriptsTest(unittest.TestCase):
         panels = [ax for ax in fig.axes if ax.get_visible() and ax.axison]
         self.assertEqual(len(panels), 4)
         self.assertTrue(all(ax.get_legend() is None for ax in panels))
+        # Each panel draws its output's magnitude column of each file, against frequency: not
+        # the phase, not another output.
+        by_title = {ax.get_title(): ax for ax in panels}
+        for name, (title, _) in plot_frf.OUTPUTS.items():
+            lines = {line.get_label(): line for line in by_title[title].get_lines()}
+            for label, columns in files.items():
+                # (the CSV keeps 8 significant digits)
+                np.testing.assert_allclose(lines[label].get_xdata(), columns["frequency_hz"],
+                                           rtol=1e-7, err_msg=(name, label))
+                np.testing.assert_allclose(lines[label].get_ydata(), columns[name + "_mag"],
+                                           rtol=1e-7, err_msg=(name, label))
+        self.assertFalse(np.allclose(files["30 km/h"]["hull_pitch_acc_mag"],
+                                     files["sync"]["hull_pitch_acc_mag"]))
         legends = [ax.get_legend() for ax in fig.axes if ax.get_legend() is not None]
         self.assertEqual(len(legends), 1)
         self.assertEqual([t.get_text() for t in legends[0].get_texts()],
