@@ -471,12 +471,21 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     std::ostringstream w;
     w << std::fixed << std::setprecision(2) << "global_modes " << options.global_modes << " end at "
       << global_hz(global_hz.size() - 1) << " Hz, below the band's " << brief(options.band_hz)
-      << " Hz: the mode selection saw those " << global_hz.size()
-      << " modes only (raise --global-modes, ~reduction/global_modes, to cover the band); the "
-      << "reduced model was checked against the " << rep.full_frequencies_hz.size()
-      << " full-model modes below " << brief(options.band_hz) << " Hz";
+      << " Hz: the mode selection saw those " << global_hz.size() << " modes only (";
+    // What covers the band: one mode past the band's last. Counted on this variant; the MAC's
+    // reference variant has its own count, and warns when it is reduced.
+    const auto below = static_cast<int>(rep.full_frequencies_hz.size());
+    if (!band_modes_capped && below + 1 <= kMaxGlobalModes)
+      w << "this variant has " << below << " modes below " << brief(options.band_hz)
+        << " Hz: --global-modes " << below + 1 << ", ~reduction/global_modes, covers the band";
+    else
+      w << "this variant has more than " << kMaxGlobalModes - 1 << " modes below "
+        << brief(options.band_hz) << " Hz, beyond what --global-modes takes: --rule band keeps "
+        << "every mode below the band";
+    w << "); the reduced model was checked against the " << below << " full-model modes below "
+      << brief(options.band_hz) << " Hz";
     if (band_modes_capped)
-      w << ", the lowest " << rep.full_frequencies_hz.size() << " of more";
+      w << ", the lowest " << below << " of more";
     rep.warnings.push_back(w.str());
   }
   reduced.warnings = rep.warnings;  // saved with it: a cached model warns again when loaded

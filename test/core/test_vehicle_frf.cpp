@@ -205,6 +205,18 @@ TEST(VehicleReduction, BandCheckCoversTheBandWhenTheGlobalModesEndBelowIt) {
         said || w.find("the reduced model was checked against the " + std::to_string(band.count()) +
                        " full-model modes below 30 Hz") != std::string::npos;
   EXPECT_TRUE(said);
+  // The warning names the count that covers the band, one mode past its last; with it the
+  // selection sees the whole band and the warning is gone.
+  const std::string cover = "--global-modes " + std::to_string(band.count() + 1) + ",";
+  bool named = false;
+  for (const std::string& w : report.warnings)
+    named = named || w.find(cover) != std::string::npos;
+  EXPECT_TRUE(named) << cover;
+  options.global_modes = band.count() + 1;
+  reduction::VehicleReductionReport covered;
+  reduction::reduceVehicle(d, vehicle::Variant::Tracked, options, &covered);
+  for (const std::string& w : covered.warnings)
+    EXPECT_EQ(w.find("below the band's"), std::string::npos) << w;
 }
 
 TEST(VehicleReduction, GlobalModesDoNotDependOnTheBasisOfAnEigenspace) {
