@@ -122,21 +122,22 @@ def figure_jobs(runs, vehicle, figures_dir, pairs):
     for speed, number in zip(MOR_SPEEDS_KMH, (18, 19)):
         name = f"fig{number}_untracked_long_hill_{speed}kmh_full_vs_reduced.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title", f"un-tracked, long hill, {speed} km/h",
+                     ["--layout", "paper", "--out", fig(name), "--title",
+                      f"un-tracked, long hill, {speed} km/h",
                       f"full={runs.sim_csv('untracked', 'full', 'long_hill', speed)}",
                       f"reduced={runs.sim_csv('untracked', 'reduced', 'long_hill', speed)}"]))
     for track, number in zip(TRACKS, (20, 21, 22)):
         v = COUPLING_SPEED_KMH
         name = f"fig{number}_{track}_{v}kmh_untracked_vs_tracked.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title",
+                     ["--layout", "paper", "--out", fig(name), "--title",
                       f"{TRACK_NAMES[track]}, {v} km/h (reduced models)",
                       f"un-tracked={runs.sim_csv('untracked', 'reduced', track, v)}",
                       f"tracked={runs.sim_csv('tracked', 'reduced', track, v)}"]))
     for track, number in (("long_hill", 23), ("separated_waves", 24)):
         name = f"fig{number}_tracked_{track}_speeds.png"
         jobs.append((name, "plot_simulation.py",
-                     ["--out", fig(name), "--title",
+                     ["--layout", "paper", "--out", fig(name), "--title",
                       f"tracked, {TRACK_NAMES[track]} (reduced model)"]
                      + [f"{s} km/h={runs.sim_csv('tracked', 'reduced', track, s)}"
                         for s in TRACKED_SPEEDS_KMH]))

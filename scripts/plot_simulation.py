@@ -20,7 +20,12 @@ rear one), [road_wheel_right_<k>_m], and with --point NAME, NAME_accel_z_m_s2 (e
 road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey and dashed in its panel
 (the paper's dashed h_F and h_R; once where the runs' roads are the same, dotted for a second road). One legend, in the first panel, names
 the runs; a roll panel that stays below 0.001 deg in every run says so. The figure type
-follows the extension of --out (.png, .pdf, .svg, ...). Bad input (missing or corrupt file, missing
+follows the extension of --out (.png, .pdf, .svg, ...).
+
+--layout paper draws the paper's three graphs instead (Figs. 18-24): the displacements (the hull's
+m_s black, the front and rear wheels' m_u,F orange and m_u,R cyan, the roads under them h_F red
+and h_R blue, dashed), the hull's vertical acceleration, and its roll and pitch; each run keeps
+one line style throughout. The right wheels and --point panels are the panel layout's only. Bad input (missing or corrupt file, missing
 or repeated column, ragged row, non-numeric value, an output that cannot be written) exits with
 status 2 and one line on stderr naming the file; no figure is written then.
 """
@@ -30,7 +35,7 @@ import re
 
 # First: plot_common selects the Agg backend before pyplot loads.
 from plot_common import (LABELLED_HELP, OUT_HELP, ArgumentParser, Table, check_outputs,
-                         check_unique_labels, labelled, save)
+                         check_unique_labels, fail, labelled, save)
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 import numpy as np
@@ -61,6 +66,16 @@ LINE_STYLES = ["-", "--", "-.", ":"]
 ROAD_STYLES = ["--", ":", "-."]
 # Roll below this in every run is no signal: a track uniform across its width does not excite it.
 NEGLIGIBLE_ROLL_DEG = 1e-3
+# The paper's colours (§4.2.2: black m_s, orange and cyan m_u,F and m_u,R, red and blue dashed
+# h_F and h_R; roll and pitch in the last graph).
+PAPER_COLOURS = {"hull_heave_m": "black", "front_left_wheel": "tab:orange",
+                 "rear_left_wheel": "tab:cyan", "front_left_wheel/road": "tab:red",
+                 "rear_left_wheel/road": "tab:blue", "hull_vertical_accel_m_s2": "black",
+                 "hull_roll_deg": "tab:green", "hull_pitch_deg": "tab:purple"}
+PAPER_NAMES = {"hull_heave_m": "$m_s$", "front_left_wheel": "$m_{u,F}$",
+               "rear_left_wheel": "$m_{u,R}$", "front_left_wheel/road": "$h_F$",
+               "rear_left_wheel/road": "$h_R$", "hull_roll_deg": r"$\varphi$ (roll)",
+               "hull_pitch_deg": r"$\theta$ (pitch)"}
 
 
 def load(path, x_column, points=()):
@@ -111,12 +126,57 @@ def point_panel(point):
     return f"{point}_accel_z_m_s2"
 
 
+def paper_figure(runs, x_label):
+    """The paper's three graphs: displacements with the roads, vertical acceleration, roll and
+    pitch. A road common to every run is drawn once."""
+    fig, axes = plt.subplots(3, 1, figsize=(10, 10), sharex=True)
+    several = len(runs) > 1
+
+    def name(key, label):
+        return PAPER_NAMES.get(key, "") + (f" ({label})" if several else "")
+
+    for k, (label, x, series) in enumerate(runs):
+        style = LINE_STYLES[k % len(LINE_STYLES)]
+        for key in ("hull_heave_m", "front_left_wheel", "rear_left_wheel"):
+            axes[0].plot(x, series[key], color=PAPER_COLOURS[key], linestyle=style,
+                         label=name(key, label))
+        axes[1].plot(x, series["hull_vertical_accel_m_s2"], color="black", linestyle=style,
+                     label=label if several else None)
+        for key in ("hull_roll_deg", "hull_pitch_deg"):
+            if key in series:
+                axes[2].plot(x, series[key], color=PAPER_COLOURS[key], linestyle=style,
+                             label=name(key, label))
+    for key in ("front_left_wheel/road", "rear_left_wheel/road"):
+        drawn = []
+        for label, x, series in runs:
+            road = series.get(key)
+            if road is None or any(np.array_equal(x, dx) and np.array_equal(road, d)
+                                   for dx, d in drawn):
+                continue
+            drawn.append((x, road))
+            common = all(np.array_equal(road, other.get(key, road)) for _, _, other in runs)
+            axes[0].plot(x, road, color=PAPER_COLOURS[key], linestyle="--", linewidth=0.9,
+                         label=PAPER_NAMES[key] + ("" if common or not several else f" ({label})"))
+    axes[0].set_ylabel("vertical displacement [m]")
+    axes[1].set_ylabel("hull vertical acceleration [m/s$^2$]")
+    axes[2].set_ylabel("angle [deg; pitch nose down +, roll left up +]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+        if ax.get_legend_handles_labels()[0]:
+            ax.legend(fontsize="small", ncol=2 if several else 1)
+    axes[2].set_xlabel(x_label)
+    return fig
+
+
 def main():
     parser = ArgumentParser(description=__doc__,
                             formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", required=True, help=f"figure file to write; {OUT_HELP}")
     parser.add_argument("--title", default="", help="figure title")
     parser.add_argument("--x", choices=X_AXES, default="station", help="x axis (default station)")
+    parser.add_argument("--layout", choices=("panels", "paper"), default="panels",
+                        help="panels: one quantity a panel (default); paper: the paper's three "
+                             "graphs of Figs. 18-24")
     parser.add_argument("--point", action="append", default=[], metavar="NAME",
                         help="add a panel of this named point's vertical acceleration (column "
                              "NAME_accel_z_m_s2, e.g. crew_seat); repeatable")
@@ -125,11 +185,19 @@ def main():
     args = parser.parse_args()
     check_unique_labels(args.files)
 
+    if args.layout == "paper" and args.point:
+        fail("--point applies to --layout panels; the paper's layout has no point panels")
     check_outputs(("--out", args.out))  # before reading: bad input writes no figure
 
     x_column, x_label = X_AXES[args.x]
     runs = [(label, *load(path, x_column, args.point)) for label, path in args.files]
     drop_right_wheels_like_left(runs)
+    if args.layout == "paper":
+        fig = paper_figure(runs, x_label)
+        if args.title:
+            fig.suptitle(args.title)
+        save((fig, args.out))
+        return
     labels = dict(PANELS)
     for point in args.point:
         labels[point_panel(point)] = f"{point} vertical acceleration [m/s$^2$]"

@@ -673,6 +673,60 @@ class PlotScriptsTest(unittest.TestCase):
         self.assertNotIn("front-right road wheel [m]", left_only)
         self.assertEqual(len(left_only), 6)
 
+    def test_simulation_paper_layout(self):
+        # --layout paper: the paper's three graphs (Figs. 18-24). The displacements graph holds
+        # each run's hull (black), front and rear wheels (orange, cyan) and the roads under them
+        # once (red, blue, dashed) when the runs share them; each run keeps its line style.
+        sys.path.insert(0, SCRIPTS)
+        try:
+            import plot_simulation
+        finally:
+            sys.path.remove(SCRIPTS)
+        columns = simulation_columns()
+        for wheel in (1, 7):
+            columns[f"road_under_road_wheel_left_{wheel}_m"] = hill(columns["station_m"] + wheel)
+        a = write_csv(self.path("a.csv"), columns)
+        b = write_csv(self.path("b.csv"), dict(columns, hull_heave_m=1.1 * columns["hull_heave_m"]))
+        captured = []
+        original, argv = plot_simulation.save, sys.argv
+        plot_simulation.save = lambda *pairs: captured.extend(pairs)
+        sys.argv = ["plot_simulation.py", "--layout", "paper", "--out", self.path("p.png"),
+                    f"full={a}", f"reduced={b}"]
+        try:
+            plot_simulation.main()
+        finally:
+            plot_simulation.save, sys.argv = original, argv
+        axes = captured[0][0].axes
+        self.assertEqual(len(axes), 3)
+        lines = {line.get_label(): line for line in axes[0].get_lines()}
+        self.assertEqual(sorted(lines), sorted([
+            "$m_s$ (full)", "$m_{u,F}$ (full)", "$m_{u,R}$ (full)", "$m_s$ (reduced)",
+            "$m_{u,F}$ (reduced)", "$m_{u,R}$ (reduced)", "$h_F$", "$h_R$"]))
+        np.testing.assert_allclose(lines["$m_s$ (reduced)"].get_ydata(),
+                                   1.1 * columns["hull_heave_m"], rtol=1e-7, atol=1e-12)
+        np.testing.assert_allclose(lines["$m_{u,R}$ (full)"].get_ydata(),
+                                   columns["road_wheel_left_7_m"], rtol=1e-7, atol=1e-12)
+        np.testing.assert_allclose(lines["$h_F$"].get_ydata(),
+                                   columns["road_under_road_wheel_left_1_m"], rtol=1e-7,
+                                   atol=1e-12)
+        self.assertEqual(lines["$m_s$ (full)"].get_color(), "black")
+        self.assertEqual((lines["$h_F$"].get_color(), lines["$h_F$"].get_linestyle()),
+                         ("tab:red", "--"))
+        self.assertEqual(lines["$m_s$ (full)"].get_linestyle(), "-")
+        self.assertEqual(lines["$m_s$ (reduced)"].get_linestyle(), "--")
+        accel = axes[1].get_lines()
+        self.assertEqual(len(accel), 2)
+        np.testing.assert_allclose(accel[0].get_ydata(), columns["hull_vertical_accel_m_s2"],
+                                   rtol=1e-7, atol=1e-9)
+        angles = {line.get_label(): line for line in axes[2].get_lines()}
+        np.testing.assert_allclose(angles[r"$\theta$ (pitch) (full)"].get_ydata(),
+                                   columns["hull_pitch_deg"], rtol=1e-7, atol=1e-9)
+        self.assertIn(r"$\varphi$ (roll) (reduced)", angles)
+        # Its graphs have no place for a named point's panel: refused, naming both options.
+        result = self.run_script("plot_simulation.py", "--layout", "paper", "--point",
+                                 "crew_seat", "--out", self.path("no.png"), f"full={a}")
+        self.assert_input_error(result, self.path("no.png"), "--point", "--layout panels")
+
     def test_simulation_named_point_panel(self):
         columns = simulation_columns()
         columns["crew_seat_accel_z_m_s2"] = 1.3 * columns["hull_vertical_accel_m_s2"]
