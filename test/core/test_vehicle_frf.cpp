@@ -71,6 +71,24 @@ DofIndex column(const std::vector<std::string>& names, const std::string& name) 
   return static_cast<DofIndex>(it - names.begin());
 }
 
+// The full FE model of the default vehicle's `variant`, its lowest `count` modes and their types.
+struct ClassifiedModes {
+  vehicle::VehicleModel model;
+  fem::System system;
+  fem::ModalBasis modes;
+  std::vector<vehicle::ModeClass> classes;
+};
+ClassifiedModes classifiedModes(vehicle::Variant variant, int count) {
+  ClassifiedModes c;
+  c.model = vehicle::buildVehicleModel(vehicle::loadVehicleDescription(kDescriptionFile), variant);
+  c.system = fem::assemble(c.model.model);
+  fem::ModalRequest request;
+  request.count = count;
+  c.modes = fem::solveModes(c.system.stiffness, c.system.mass, request);
+  c.classes = vehicle::classifyModes(c.model, c.system, c.modes);
+  return c;
+}
+
 Vector frequencies(double max_hz, double step) {
   const auto n = static_cast<Eigen::Index>(std::lround(max_hz / step)) + 1;
   return Vector::LinSpaced(n, 0.0, (n - 1) * step);
@@ -220,13 +238,11 @@ TEST(VehicleReduction, BandCheckCoversTheBandWhenTheGlobalModesEndBelowIt) {
 }
 
 TEST(VehicleReduction, GlobalModesDoNotDependOnTheBasisOfAnEigenspace) {
-  const vehicle::VehicleDescription d = vehicle::loadVehicleDescription(kDescriptionFile);
-  const vehicle::VehicleModel full = vehicle::buildVehicleModel(d, vehicle::Variant::Tracked);
-  const fem::System system = fem::assemble(full.model);
-  fem::ModalRequest request;
-  request.count = 40;
-  const fem::ModalBasis modes = fem::solveModes(system.stiffness, system.mass, request);
-  const std::vector<vehicle::ModeClass> classes = vehicle::classifyModes(full, system, modes);
+  const ClassifiedModes solved = classifiedModes(vehicle::Variant::Tracked, 40);
+  const vehicle::VehicleModel& full = solved.model;
+  const fem::System& system = solved.system;
+  const fem::ModalBasis& modes = solved.modes;
+  const std::vector<vehicle::ModeClass>& classes = solved.classes;
   const Vector share = vehicle::vehicleEnergy(full, system, modes.shapes).diagonal();
   const std::vector<bool> global = reduction::globalModes(full, system, modes);
   std::vector<int> carrier, idle;  // a mode with 1-5 % in the vehicle; modes with ~0
@@ -361,18 +377,13 @@ TEST(VehicleFrf, AntiPhaseRoadsRollTheHullAtItsRollMode) {
   // led by the hull's roll (classifyModes), within a grid step and the acceleration peak's shift
   // above the natural frequency for 5 % damping, 1/sqrt(1 - 2 zeta^2) - 1 = 0.25 %.
   {
-    const vehicle::VehicleDescription d = vehicle::loadVehicleDescription(kDescriptionFile);
-    const vehicle::VehicleModel model = vehicle::buildVehicleModel(d, vehicle::Variant::Untracked);
-    const fem::System system = fem::assemble(model.model);
-    fem::ModalRequest request;
-    request.count = 12;
-    const fem::ModalBasis modes = fem::solveModes(system.stiffness, system.mass, request);
-    const std::vector<vehicle::ModeClass> classes = vehicle::classifyModes(model, system, modes);
+    const ClassifiedModes solved = classifiedModes(vehicle::Variant::Untracked, 12);
     std::vector<double> roll_hz;
-    for (int j = 0; j < modes.count(); ++j)
-      if (classes[static_cast<std::size_t>(j)].kind == vehicle::ModeKind::Hull &&
-          classes[static_cast<std::size_t>(j)].hull_motions.front() == vehicle::HullMotion::Roll)
-        roll_hz.push_back(modes.frequencies_hz(j));
+    for (int j = 0; j < solved.modes.count(); ++j) {
+      const vehicle::ModeClass& c = solved.classes[static_cast<std::size_t>(j)];
+      if (c.kind == vehicle::ModeKind::Hull && c.hull_motions.front() == vehicle::HullMotion::Roll)
+        roll_hz.push_back(solved.modes.frequencies_hz(j));
+    }
     ASSERT_EQ(roll_hz.size(), 1u) << "one hull mode led by roll below mode 12";
     EXPECT_NEAR(hz(top), roll_hz[0] * 1.0025, 0.05 / 2 + 1e-9) << "roll FRF peak";
   }

@@ -7,6 +7,7 @@ Needs no C++ build: the inputs are written here in the formats of `tvd mac --out
     /usr/bin/python3 test/scripts/test_plot_scripts.py [--xml OUTDIR/plot_scripts.xml] [TEST ...]
 --xml writes a JUnit-style report (one <testcase> per test method); the exit status is 1 on failure.
 """
+import importlib
 import json
 import math
 import os
@@ -37,6 +38,30 @@ def write_csv(path, columns):
     np.savetxt(path, np.column_stack([columns[n] for n in names]), delimiter=",", fmt="%.9g",
                header=",".join(names), comments="")
     return path
+
+
+def script_module(name):
+    """Imports scripts/<name>.py as a module (to call its functions or main())."""
+    sys.path.insert(0, SCRIPTS)
+    try:
+        return importlib.import_module(name)
+    finally:
+        sys.path.remove(SCRIPTS)
+
+
+def drawn_figure(name, *args):
+    """Runs scripts/<name>.py's main() with `args` as its command line and returns the first
+    figure it would have saved (save() replaced, nothing written)."""
+    module = script_module(name)
+    captured = []
+    original, argv = module.save, sys.argv
+    module.save = lambda *pairs: captured.extend(pairs)
+    sys.argv = [f"{name}.py"] + list(args)
+    try:
+        module.main()
+    finally:
+        module.save, sys.argv = original, argv
+    return captured[0][0]
 
 
 def write_mat(path, columns, metadata=None):
@@ -246,11 +271,7 @@ class PlotScriptsTest(unittest.TestCase):
         self.assert_png(result, out, freq_out)
 
     def test_mac_matrix_marks_the_band_edge_after_the_last_mode_inside(self):
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_mac
-        finally:
-            sys.path.remove(SCRIPTS)
+        plot_mac = script_module("plot_mac")
         untracked, tracked = np.arange(1, 7), np.arange(1, 9)
         f_untracked = np.array([2.0, 4.0, 9.0, 10.0, 35.0, 35.0])  # 4 inside 10 Hz (edge included)
         f_tracked = np.array([1.0, 3.0, 5.0, 7.0, 9.5, 12.0, 30.0, 40.0])  # 5 inside
@@ -274,11 +295,7 @@ class PlotScriptsTest(unittest.TestCase):
         """With mac.mat's global flags and eigenspace MAC (as tvd mac writes them), Fig. 10 shows
         the pairs the reduction uses, pairs of global modes by eigenspace MAC, and Fig. 9 draws a
         pair with a local mode in it blue, not red (review 126: both showed every raw pair)."""
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_mac
-        finally:
-            sys.path.remove(SCRIPTS)
+        plot_mac = script_module("plot_mac")
         mac_dir = write_mac_dir(self.path("mac"))  # pairs (i, i + 1), i = 0..5, MAC >= 0.75
         data = scipy.io.loadmat(os.path.join(mac_dir, "mac.mat"))
         untracked_global = np.array([1, 1, 0, 1, 1, 1])  # un-tracked mode 3 local
@@ -399,27 +416,15 @@ class PlotScriptsTest(unittest.TestCase):
     def test_frf_shares_one_legend_under_the_panels(self):
         # The files are the same lines in every panel: one legend, in a row of its own under the
         # panels (no panel's curves covered), naming each file once and the band line.
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_frf
-        finally:
-            sys.path.remove(SCRIPTS)
+        plot_frf = script_module("plot_frf")  # its OUTPUTS below
         # The rear wheel scaled, so that no two outputs of a file share their magnitudes.
         files = {"sync": frf_columns(), "30 km/h": frf_columns(wheelbase_delay_s=0.2)}
         for columns in files.values():
             columns["rear_wheel_acc_mag"] = 0.8 * columns["rear_wheel_acc_mag"]
         full = write_csv(self.path("full.csv"), files["sync"])
         delayed = write_csv(self.path("delayed.csv"), files["30 km/h"])
-        captured = []
-        original, argv = plot_frf.save, sys.argv
-        plot_frf.save = lambda *pairs: captured.extend(pairs)
-        sys.argv = ["plot_frf.py", "--out", self.path("f.png"), f"sync={full}",
-                    f"30 km/h={delayed}"]
-        try:
-            plot_frf.main()
-        finally:
-            plot_frf.save, sys.argv = original, argv
-        fig = captured[0][0]
+        fig = drawn_figure("plot_frf", "--out", self.path("f.png"), f"sync={full}",
+                           f"30 km/h={delayed}")
         panels = [ax for ax in fig.axes if ax.get_visible() and ax.axison]
         self.assertEqual(len(panels), 4)
         self.assertTrue(all(ax.get_legend() is None for ax in panels))
@@ -587,11 +592,6 @@ class PlotScriptsTest(unittest.TestCase):
         # Two runs over the same road: one grey road line per wheel panel (not one per run), one
         # legend, in the first panel, naming both runs and the road; a roll below 0.001 deg in
         # both runs is said to be no signal. A third run on another road adds its own road line.
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_simulation
-        finally:
-            sys.path.remove(SCRIPTS)
         columns = simulation_columns()
         columns["hull_roll_deg"] = 1e-5 * np.sin(columns["station_m"])
         for wheel in (1, 7):
@@ -602,15 +602,7 @@ class PlotScriptsTest(unittest.TestCase):
         c = write_csv(self.path("c.csv"), other)
 
         def draw(*args):
-            captured = []
-            original, argv = plot_simulation.save, sys.argv
-            plot_simulation.save = lambda *pairs: captured.extend(pairs)
-            sys.argv = ["plot_simulation.py", "--out", self.path("f.png")] + list(args)
-            try:
-                plot_simulation.main()
-            finally:
-                plot_simulation.save, sys.argv = original, argv
-            return captured[0][0]
+            return drawn_figure("plot_simulation", "--out", self.path("f.png"), *args)
 
         fig = draw(f"a={a}", f"b={b}")
         panels = {ax.get_ylabel(): ax for ax in fig.axes if ax.get_visible()}
@@ -637,11 +629,6 @@ class PlotScriptsTest(unittest.TestCase):
         # Out-of-phase waves (Fig. 22): the right wheels move opposite to the left ones and get
         # their own panels, with the road under them; on a uniform track they would repeat the
         # left ones and are left out (as in every other test here).
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_simulation
-        finally:
-            sys.path.remove(SCRIPTS)
         columns = simulation_columns()
         for wheel in (1, 7):
             columns[f"road_wheel_right_{wheel}_m"] = -columns[f"road_wheel_left_{wheel}_m"]
@@ -650,15 +637,8 @@ class PlotScriptsTest(unittest.TestCase):
         uniform = write_csv(self.path("uniform.csv"), simulation_columns())
 
         def panels(*files):
-            captured = []
-            original, argv = plot_simulation.save, sys.argv
-            plot_simulation.save = lambda *pairs: captured.extend(pairs)
-            sys.argv = ["plot_simulation.py", "--out", self.path("f.png")] + list(files)
-            try:
-                plot_simulation.main()
-            finally:
-                plot_simulation.save, sys.argv = original, argv
-            return {ax.get_ylabel(): ax for ax in captured[0][0].axes if ax.get_visible()}
+            fig = drawn_figure("plot_simulation", "--out", self.path("f.png"), *files)
+            return {ax.get_ylabel(): ax for ax in fig.axes if ax.get_visible()}
 
         right = panels(f"oop={oop}")
         self.assertIn("front-right road wheel [m]", right)
@@ -677,26 +657,13 @@ class PlotScriptsTest(unittest.TestCase):
         # --layout paper: the paper's three graphs (Figs. 18-24). The displacements graph holds
         # each run's hull (black), front and rear wheels (orange, cyan) and the roads under them
         # once (red, blue, dashed) when the runs share them; each run keeps its line style.
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_simulation
-        finally:
-            sys.path.remove(SCRIPTS)
         columns = simulation_columns()
         for wheel in (1, 7):
             columns[f"road_under_road_wheel_left_{wheel}_m"] = hill(columns["station_m"] + wheel)
         a = write_csv(self.path("a.csv"), columns)
         b = write_csv(self.path("b.csv"), dict(columns, hull_heave_m=1.1 * columns["hull_heave_m"]))
-        captured = []
-        original, argv = plot_simulation.save, sys.argv
-        plot_simulation.save = lambda *pairs: captured.extend(pairs)
-        sys.argv = ["plot_simulation.py", "--layout", "paper", "--out", self.path("p.png"),
-                    f"full={a}", f"reduced={b}"]
-        try:
-            plot_simulation.main()
-        finally:
-            plot_simulation.save, sys.argv = original, argv
-        axes = captured[0][0].axes
+        axes = drawn_figure("plot_simulation", "--layout", "paper", "--out", self.path("p.png"),
+                            f"full={a}", f"reduced={b}").axes
         self.assertEqual(len(axes), 3)
         lines = {line.get_label(): line for line in axes[0].get_lines()}
         self.assertEqual(sorted(lines), sorted([
@@ -1146,11 +1113,7 @@ class PlotScriptsTest(unittest.TestCase):
     def test_modes_front_view_shows_roll(self):
         """The front view plots y against z (review 126: the side and top views alone could not
         show a roll): two mounts at y = +-1 m moving -+z are drawn where they moved."""
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_modes
-        finally:
-            sys.path.remove(SCRIPTS)
+        plot_modes = script_module("plot_modes")
         import matplotlib.pyplot as plt
         parts = ["hull", "spider left", "spider right"]
         positions = np.array([[0.0, 0.0, 1.5], [0.0, 1.0, 0.5], [0.0, -1.0, 0.5]])
@@ -1164,11 +1127,7 @@ class PlotScriptsTest(unittest.TestCase):
         plt.close(fig)
 
     def test_modes_vehicle_normalisation_scales_on_the_hull_and_clips_the_chain(self):
-        sys.path.insert(0, SCRIPTS)
-        try:
-            import plot_modes
-        finally:
-            sys.path.remove(SCRIPTS)
+        plot_modes = script_module("plot_modes")
         parts = ["hull", "road_wheel_left_1 centre", "track assembly left 3 link",
                  "track assembly left 4 sole"]
         positions = np.zeros((4, 3))
