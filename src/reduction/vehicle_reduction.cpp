@@ -479,7 +479,7 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
       w << "this variant has " << below << " modes below " << brief(options.band_hz)
         << " Hz: --global-modes " << below + 1 << ", ~reduction/global_modes, covers the band";
     else
-      w << "this variant has more than " << kMaxGlobalModes - 1 << " modes below "
+      w << "this variant has at least " << kMaxGlobalModes << " modes below "
         << brief(options.band_hz) << " Hz, beyond what --global-modes takes: --rule band keeps "
         << "every mode below the band";
     w << "); the reduced model was checked against the " << below << " full-model modes below "

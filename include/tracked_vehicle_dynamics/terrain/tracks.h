@@ -10,8 +10,8 @@
 //                   between first and last axle leaves 5.32 m; an 8 m top (10 m foot to foot)
 //                   would leave 3.32 m. The paper does not place it: ramp up x = 10..11 m, top
 //                   11..21 m, ramp down 21..22 m, i.e. 10 m of flat run-in (as the half round's
-//                   below) and 8 m of run-out, where the rear wheel leaves the hill at 24.34 m
-//                   (2.34 m behind the reference station) with 5.66 m left to ring down.
+//                   below) and 8 m of run-out: the rear wheel, 2.34 m behind the reference
+//                   station, leaves the hill with the station at 24.34 m, 5.66 m before the end.
 //                   Uniform across the width.
 //  separated_waves  10 full periods of a sinusoid of 1.8 m wavelength and 0.15 m "depth", read as
 //                   peak-to-trough and as hollows below the ground:
