@@ -47,6 +47,15 @@ constexpr std::uint32_t kTerrainQueue = 10000;
 // separate connections, so either may arrive first.
 constexpr double kRewindWindow = 0.25;
 
+// A speed change a driver would feel [m/s at once, or m/s per second between messages], which
+// without a slew carries no travel inertia: warned about once.
+constexpr double kUnslewedChange = 0.5;
+
+// On simulated time, a wait for the first /clock this long [s of wall time] is logged as a WARN,
+// again every kClockWaitWarnPeriod while it lasts.
+constexpr double kClockWaitWarnAfter = 10.0;
+constexpr double kClockWaitWarnPeriod = 30.0;
+
 // A negative speed this close to zero is a stopped vehicle as a physics engine reports it
 // (-1e-6 m/s), not reverse driving: taken as 0. Refused as reverse, it kept the last speed and
 // the vehicle crept on at it while the simulator stood still (review 125).
@@ -364,6 +373,7 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
                       vehicle_->commandedSpeed());
     return;
   }
+  warnOfUnslewedSpeedChange(v, now());
   vehicle_->setSpeed(v);
   if (hold_.active)
     hold_.speed = true;
@@ -372,6 +382,32 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
   markSpeedTime(now());
   recent_speed_ = v;
   recent_speed_arrival_ = ros::SteadyTime::now();
+}
+
+void VehicleDynamicsNode::warnOfUnslewedSpeedChange(double v, const ros::Time& t) {
+  // Without a slew (~max_acceleration and ~max_deceleration 0, the default) a new speed applies
+  // at once and carries no travel inertia: odom's twist follows a braking source, the IMU and the
+  // hull's pitch do not (review 130: a fused localisation saw the two disagree). Said once, at
+  // the first change a driver would feel: by more than kUnslewedChange at once, or at more than
+  // kUnslewedChange per second over the time since the previous speed message.
+  const online::OnlineVehicleOptions& o = params_.vehicle_options;
+  if (unslewed_change_warned_ || o.max_acceleration > 0.0 || o.max_deceleration > 0.0 ||
+      last_speed_time_.isZero())
+    return;
+  const double change = std::abs(v - vehicle_->commandedSpeed());
+  const double dt = (t - last_speed_time_).toSec();
+  if (change <= kStandstillNoise || (change <= kUnslewedChange && change <= kUnslewedChange * dt))
+    return;
+  unslewed_change_warned_ = true;
+  const std::string over =
+      dt > 0.0 ? "over " + brief(std::round(dt * 1000.0) / 1000.0) + " s" : "at once";
+  ROS_WARN(
+      "%s: the speed changes from %.3f to %.3f m/s %s, and without a slew (~max_acceleration and "
+      "~max_deceleration 0) it applies at once with no travel inertia: odom follows it, the IMU "
+      "and "
+      "the hull's pitch do not; set both to the vehicle's limits to feel braking and "
+      "accelerating (said once)",
+      nodeName(), vehicle_->commandedSpeed(), v, over.c_str());
 }
 
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
@@ -599,6 +635,20 @@ void VehicleDynamicsNode::reportOnWallTime(const ros::SteadyTime& wall) {
   if (wall < next_wall_report_)
     return;
   next_wall_report_ = wall + ros::WallDuration(params_.diagnostic_period);
+  // On simulated time with no /clock the vehicle waits, which /diagnostics say; a log read
+  // without them said nothing after the start-up line (review 130).
+  if (use_sim_time_ && !clock_started_) {
+    if (clock_wait_start_.isZero())
+      clock_wait_start_ = wall;
+    const double waited = (wall - clock_wait_start_).toSec();
+    if (waited >= kClockWaitWarnAfter && wall >= next_clock_warning_) {
+      ROS_WARN(
+          "%s: on simulated time (/use_sim_time true) with no /clock for %.0f s of wall time: "
+          "the vehicle waits at rest (is the simulator, or rosbag play --clock, running?)",
+          nodeName(), waited);
+      next_clock_warning_ = wall + ros::WallDuration(kClockWaitWarnPeriod);
+    }
+  }
   publishDiagnostics();
 }
 
@@ -686,6 +736,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   ++events_.ticks;
   if (!clock_started_) {
     clock_started_ = true;
+    clock_wait_start_ = ros::SteadyTime();  // a later wait (time reset to 0) counts afresh
     sample_time_ = now;
     if (run_start_.isZero())
       run_start_ = now;

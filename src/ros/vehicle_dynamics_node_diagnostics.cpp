@@ -15,8 +15,10 @@ namespace ros_layer {
 
 namespace {
 
-// Terrain starting this far [m] ahead of the front contact gets a hint at its stations.
-constexpr double kFarAhead = 1000.0;
+// Terrain starting this far [m] ahead of the front contact gets a hint at its stations: far
+// beyond any look-ahead a source sends (a stopping distance or a sensor's range), near a map's
+// offsets of a few hundred metres (review 130: 993 m ahead got no hint at 1 km).
+constexpr double kFarAhead = 100.0;
 
 }  // namespace
 
@@ -96,7 +98,7 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   const std::uint64_t other_frame = terrain_other_frame_.delta(events_.patches_other_frame);
   const terrain::TerrainBuffer& buffer = vehicle_->terrain();
   const double ahead = buffer.coveredUntil() - vehicle_->frontContactStation();
-  // Terrain that starts a kilometre or more ahead of the vehicle is most often in a map's x, not
+  // Terrain that starts 100 m or more ahead of the vehicle is most often in a map's x, not
   // along this vehicle's path from its start: said beside the waiting or the underrun (review
   // 125: 5,000 patches from x = 5 km piled up with only "waiting" to show for it).
   std::string far_ahead;
@@ -120,11 +122,16 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     status.summary(
         diagnostic_msgs::DiagnosticStatus::OK,
         "ROS time jumped back: holding the restarted vehicle for the loop's first patch");
-  } else if (buffer.empty() && flat_since_restart_ && vehicle_->speed() == 0.0) {
+  } else if (buffer.empty() && flat_since_restart_ &&
+             (vehicle_->speed() == 0.0 || !clock_started_)) {
     // Standing on the flat ground of a start or reset until the terrain source begins is the
-    // normal way to start, not a fault for an aggregator to flag.
+    // normal way to start, not a fault for an aggregator to flag. A speed given before the first
+    // /clock does not move the vehicle yet (review 130: "moving" was said).
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
-                   "waiting for terrain: standing on flat ground since the start or reset");
+                   clock_started_
+                       ? "waiting for terrain: standing on flat ground since the start or reset"
+                       : "waiting for terrain: standing on flat ground until ROS time (/clock) "
+                         "starts");
   } else if (buffer.empty()) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    flat_since_restart_ ? "no terrain yet: moving on flat ground since the start "

@@ -109,7 +109,17 @@ TEST_F(NodeSimTime, DiagnosticsSayWaitingBeforeTheClock) {
   std_msgs::Float64 v;
   v.data = test::requiredParam<double>(private_nh_, "speed");
   speed_pub_.publish(v);
-  test::spinFor(0.5);
+  test::spinFor(0.5);  // delivered before this fixture, and its latched publisher, go
+  // Given a speed but no /clock, the vehicle has not moved: its terrain status, reported after
+  // the speed came, says it waits for ROS time, not "moving on flat ground" (review 130).
+  const std::size_t reports = diagnostics_.arrays();
+  ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.arrays() >= reports + 2; }, 10.0));
+  const std::string said = diagnostics_.describe();
+  EXPECT_NE(said.find("waiting for terrain: standing on flat ground until ROS time (/clock) "
+                      "starts"),
+            std::string::npos)
+      << said;
+  EXPECT_EQ(said.find("moving on flat ground"), std::string::npos) << said;
 }
 
 TEST_F(NodeSimTime, StepsFollowTheClockCatchUpResynchroniseAndResetOnLoop) {

@@ -434,6 +434,19 @@ TEST_F(NodeSpeedSlew, SpeedStepsSlewAtTheSetRatesWithTheTravelInertia) {
                           s.hull_accel->norm()});
   }
   EXPECT_LE(imu_error, kAtRestAcceleration);  // gravity only: no travel inertia
+  // Which the unslewed node says, once, at its first change of speed, naming the parameters;
+  // the slewed node feels it and says nothing.
+  std::string said;
+  EXPECT_TRUE(test::spinUntil(
+      [&] { return !(said = logged("/unslewed/vehicle_dynamics", "no travel inertia")).empty(); },
+      10.0));
+  EXPECT_NE(said.find("~max_acceleration and ~max_deceleration 0"), std::string::npos) << said;
+  std::size_t times = 0;
+  for (const auto& m : log_)
+    times += m.name == "/unslewed/vehicle_dynamics" &&
+             m.msg.find("no travel inertia") != std::string::npos;
+  EXPECT_EQ(times, 1u);
+  EXPECT_EQ(logged("/slewed/vehicle_dynamics", "no travel inertia"), "");
   std::printf(
       "[ measured ] unslewed: |station - v t| %.3g m, IMU and hull/accel off gravity "
       "only %.3g m/s^2\n",

@@ -148,6 +148,8 @@ class VehicleDynamicsNode {
   bool onResetTo(ResetVehicle::Request& request, ResetVehicle::Response& response);
   /// Why a speed [m/s] is not accepted (not finite, negative, above ~max_speed); empty if it is.
   std::string speedProblem(double speed) const;
+  /// Once: a speed change a driver would feel, taken without a slew (no travel inertia).
+  void warnOfUnslewedSpeedChange(double speed, const ros::Time& now);
   void onClock(const rosgraph_msgs::Clock::ConstPtr& msg);
   /// The simulated-time loop thread: waits for /clock (and messages), then step().
   void run();
@@ -315,9 +317,12 @@ class VehicleDynamicsNode {
   ros::SteadyTime last_speed_steady_;     // the same on the monotonic clock
   ros::Time next_diagnostics_;            // ROS time of the next /diagnostics report
   bool stopped_by_timeout_ = false;       // ~speed_timeout stopped the vehicle; a speed clears it
+  bool unslewed_change_warned_ = false;   // warnOfUnslewedSpeedChange() said its once
   std::chrono::steady_clock::time_point tick_start_;  // before the tick's message callbacks
   ros::SteadyTime last_time_change_;                  // monotonic time at which ROS time last moved
   ros::SteadyTime next_wall_report_;                  // reportOnWallTime() publishes from then on
+  ros::SteadyTime clock_wait_start_;    // sim time: when the wait for /clock began (zero: none)
+  ros::SteadyTime next_clock_warning_;  // the next WARN of that wait, not before
   bool cached_ = false;                               // the reduced model is in the cache file
   std::string not_cached_reason_;
   std::int64_t max_steps_in_tick_ = 0;
