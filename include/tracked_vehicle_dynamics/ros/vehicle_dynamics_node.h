@@ -323,7 +323,7 @@ class VehicleDynamicsNode {
   ros::SteadyTime next_wall_report_;                  // reportOnWallTime() publishes from then on
   ros::SteadyTime clock_wait_start_;    // sim time: when the wait for /clock began (zero: none)
   ros::SteadyTime next_clock_warning_;  // the next WARN of that wait, not before
-  bool cached_ = false;                               // the reduced model is in the cache file
+  bool cached_ = false;                 // the reduced model is in the cache file
   std::string not_cached_reason_;
   std::int64_t max_steps_in_tick_ = 0;
   DurationStatistics step_window_, tick_window_, step_total_, tick_total_;
