@@ -5,9 +5,10 @@ Panels: hull heave [m], hull vertical acceleration [m/s^2], pitch [deg], roll [d
 has hull_roll_deg), front-left and rear-left road wheel displacement [m], and front-right and
 rear-right ones where a run's right wheels move otherwise than its left (by more than 1e-6 m: the
 out-of-phase waves, Fig. 22; on a track uniform across its width they are the left ones again);
-x is station [m] or time [s]. Each LABEL=FILE becomes one line per panel, e.g. full/reduced (Figs. 18-19), untracked/
-tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what `tvd simulate --out` writes,
-CSV or .mat (one n x 1 variable per column, same names; the char variables are ignored):
+x is station [m] or time [s]. Each LABEL=FILE becomes one line per panel, e.g. full/reduced
+(Figs. 18-19), untracked/tracked (Figs. 20-22) or 5 km/h / 50 km/h (Figs. 23-24). Input is what
+`tvd simulate --out` writes, CSV or .mat (one n x 1 variable per column, same names; the char
+variables are ignored):
 
     TVD=build/devel/lib/tracked_vehicle_dynamics/tvd; V=config/vehicles/paper_vehicle.yaml
     $TVD simulate --vehicle $V --variant untracked --track long_hill --speed-kmh 30 --out /tmp/u.csv
@@ -16,18 +17,21 @@ CSV or .mat (one n x 1 variable per column, same names; the char variables are i
 
 Columns are found by header name: time_s, station_m, hull_heave_m, hull_vertical_accel_m_s2,
 hull_pitch_deg, [hull_roll_deg], road_wheel_left_<k>_m (k = 1 is the front wheel, the largest k the
-rear one), [road_wheel_right_<k>_m], and with --point NAME, NAME_accel_z_m_s2 (e.g. --point crew_seat). Where a file has
-road_under_road_wheel_left_<k>_m, the road under the wheel is drawn grey and dashed in its panel
-(the paper's dashed h_F and h_R; once where the runs' roads are the same, dotted for a second road). One legend, in the first panel, names
-the runs; a roll panel that stays below 0.001 deg in every run says so. The figure type
-follows the extension of --out (.png, .pdf, .svg, ...).
+rear one), [road_wheel_right_<k>_m], and with --point NAME, NAME_accel_z_m_s2 (e.g. --point
+crew_seat). Where a file has road_under_road_wheel_<side>_<k>_m, the road under the wheel is drawn
+grey and dashed in its panel (the paper's dashed h_F and h_R; once where the runs' roads are the
+same, dotted for a second road). One legend, in the first panel, names the runs; a roll panel that
+stays below 0.001 deg in every run says so. The figure type follows the extension of --out (.png,
+.pdf, .svg, ...).
 
 --layout paper draws the paper's three graphs instead (Figs. 18-24): the displacements (the hull's
 m_s black, the front and rear wheels' m_u,F orange and m_u,R cyan, the roads under them h_F red
 and h_R blue, dashed), the hull's vertical acceleration, and its roll and pitch; each run keeps
-one line style throughout. The right wheels and --point panels are the panel layout's only. Bad input (missing or corrupt file, missing
-or repeated column, ragged row, non-numeric value, an output that cannot be written) exits with
-status 2 and one line on stderr naming the file; no figure is written then.
+one line style throughout. The right wheels and --point panels are the panel layout's only.
+
+Bad input (missing or corrupt file, missing or repeated column, ragged row, non-numeric value, an
+output that cannot be written) exits with status 2 and one line on stderr naming the file; no
+figure is written then.
 """
 import argparse
 import math
@@ -101,8 +105,7 @@ def load(path, x_column, points=()):
         if f"road_under_{columns[key]}" in header:
             columns[road_panel(key)] = f"road_under_{columns[key]}"
     x = table.column(x_column)
-    series = {key: table.column(name) for key, name in columns.items()}
-    return x, series
+    return x, {key: table.column(name) for key, name in columns.items()}
 
 
 def drop_right_wheels_like_left(runs):

@@ -404,8 +404,7 @@ void VehicleDynamicsNode::warnOfUnslewedSpeedChange(double v, const ros::Time& t
   ROS_WARN(
       "%s: the speed changes from %.3f to %.3f m/s %s, and without a slew (~max_acceleration and "
       "~max_deceleration 0) it applies at once with no travel inertia: odom follows it, the IMU "
-      "and "
-      "the hull's pitch do not; set both to the vehicle's limits to feel braking and "
+      "and the hull's pitch do not; set both to the vehicle's limits to feel braking and "
       "accelerating (said once)",
       nodeName(), vehicle_->commandedSpeed(), v, over.c_str());
 }
