@@ -10,9 +10,7 @@
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
 
-namespace {
-
-std::size_t windowSamples(double sample_rate, double time) {
+std::size_t LinearRunningMeanSquare::windowSamples(double sample_rate, double time) {
   const double n = std::round(sample_rate * time);
   if (!(n <= static_cast<double>(LinearRunningMeanSquare::kMaxWindow)))
     throw InputError("comfort: a running r.m.s. over " + brief(time) + " s at " +
@@ -21,8 +19,6 @@ std::size_t windowSamples(double sample_rate, double time) {
                      " (ISO 2631-1 recommends 1 s)");
   return std::max<std::size_t>(1, static_cast<std::size_t>(n));
 }
-
-}  // namespace
 
 LinearRunningMeanSquare::LinearRunningMeanSquare(double sample_rate, double time)
     : squares_(windowSamples(sample_rate, time), 0.0) {}

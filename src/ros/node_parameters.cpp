@@ -13,6 +13,7 @@
 #include <ros/names.h>
 
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
+#include "tracked_vehicle_dynamics/dynamics/running_window.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -317,11 +318,10 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   v.comfort_running_rms_time =
       in.positive("comfort_running_rms_time", v.comfort_running_rms_time, "s");
   // Its linear form keeps the last rate x time squares (running_window.h): a time in ms typed
-  // as s (1000) at 1 kHz is a million; beyond ten million the meter refuses, named here.
+  // as s (1000) at 1 kHz is a million; beyond ten million the meter refuses, named here (its
+  // window checked alone: not a whole meter built and dropped, nor its other checks named so).
   try {
-    dynamics::ComfortOptions comfort;
-    comfort.running_rms_time = v.comfort_running_rms_time;
-    dynamics::ComfortMeter(v.rate, comfort);
+    dynamics::LinearRunningMeanSquare::windowSamples(v.rate, v.comfort_running_rms_time);
   } catch (const InputError& e) {
     throw in.error("comfort_running_rms_time", e.what());
   }

@@ -23,6 +23,8 @@ class LinearRunningMeanSquare {
   /// window = round(sample_rate * time) samples, at least 1. Throws InputError when it exceeds
   /// kMaxWindow (naming both figures).
   LinearRunningMeanSquare(double sample_rate, double time);
+  /// The window the constructor would hold, checked as it checks it, without holding it.
+  static std::size_t windowSamples(double sample_rate, double time);
 
   /// Adds one squared sample; returns the mean square of the window ending with it.
   double add(double square);
