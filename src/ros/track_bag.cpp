@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <geometry_msgs/TwistStamped.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
 #include <rosgraph_msgs/Clock.h>
@@ -213,13 +214,25 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
     bag.write(options.terrain_topic, at(timed.time), msg);
     ++summary.patches;
   }
-  std_msgs::Float64 speed;
   const Motion motion(options);
+  const std::string speed_topic = speedTopic(options);
+  std_msgs::Float64 speed;
+  geometry_msgs::TwistStamped stamped;
+  stamped.header.frame_id = options.speed_frame_id;
   const auto speed_count = static_cast<long>(std::floor(run.duration * options.speed_rate)) + 1;
   for (long k = 0; k < speed_count; ++k) {
     const double t = static_cast<double>(k) / options.speed_rate;
-    speed.data = motion.speed(t);
-    bag.write(options.speed_topic, at(t), speed);
+    if (options.speed_message == BagSpeedMessage::Stamped) {
+      // Stamped at the time it is written: the node drives on it from there (in the run, the
+      // speed between two messages is the earlier one's, as the node holds it).
+      stamped.header.seq = static_cast<std::uint32_t>(k);
+      stamped.header.stamp = at(t);
+      stamped.twist.linear.x = motion.speed(t);
+      bag.write(speed_topic, at(t), stamped);
+    } else {
+      speed.data = motion.speed(t);
+      bag.write(speed_topic, at(t), speed);
+    }
     ++summary.speed_messages;
   }
   if (options.clock_rate > 0.0) {
@@ -235,19 +248,36 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
   return summary;
 }
 
+std::string speedTopic(const TrackBagOptions& options) {
+  if (!options.speed_topic.empty())
+    return options.speed_topic;
+  return options.speed_message == BagSpeedMessage::Stamped ? "/speed_stamped" : "/speed";
+}
+
 TrackBagContent readTrackBag(const std::string& path, const std::string& terrain_topic,
                              const std::string& speed_topic) {
   rosbag::Bag bag(path, rosbag::bagmode::Read);
-  rosbag::View view(bag, rosbag::TopicQuery({terrain_topic, speed_topic, "/clock"}));
+  std::vector<std::string> speed_topics = {speed_topic};
+  if (speed_topic.empty())
+    speed_topics = {"/speed_stamped", "/speed"};
+  std::vector<std::string> topics = speed_topics;
+  topics.push_back(terrain_topic);
+  topics.push_back("/clock");
+  rosbag::View view(bag, rosbag::TopicQuery(topics));
   TrackBagContent content;
   for (const rosbag::MessageInstance& m : view) {
     if (m.getTopic() == terrain_topic) {
       if (const auto msg = m.instantiate<TerrainProfile>()) {
         content.patches.emplace_back(m.getTime(), fromMsg(*msg));
       }
-    } else if (m.getTopic() == speed_topic) {
-      if (const auto msg = m.instantiate<std_msgs::Float64>()) {
+    } else if (std::find(speed_topics.begin(), speed_topics.end(), m.getTopic()) !=
+               speed_topics.end()) {
+      if (const auto msg = m.instantiate<geometry_msgs::TwistStamped>()) {
+        content.speeds.emplace_back(m.getTime(), msg->twist.linear.x);
+        content.speed_stamps.push_back(msg->header.stamp);
+      } else if (const auto msg = m.instantiate<std_msgs::Float64>()) {
         content.speeds.emplace_back(m.getTime(), msg->data);
+        content.speed_stamps.emplace_back();
       }
     } else if (const auto msg = m.instantiate<rosgraph_msgs::Clock>()) {
       content.clocks.push_back(msg->clock);

@@ -60,11 +60,19 @@ int main(int argc, char** argv) {
                                 "vehicle centre line on the track y_t [m] (default: the track's)");
   app.add_option("--start-time", options.start_time, "bag time of the start [s]")
       ->capture_default_str();
+  std::string speed_message = "stamped";
+  app.add_option("--speed-message", speed_message,
+                 "stamped: geometry_msgs/TwistStamped on /speed_stamped, taken by the node at "
+                 "its stamp (a replay repeats its stations); float64: std_msgs/Float64 on "
+                 "/speed, taken when it arrives")
+      ->check(CLI::IsMember({"stamped", "float64"}))
+      ->capture_default_str();
   std::string ns;
   app.add_option("--namespace", ns,
                  "write the topics in this namespace, e.g. /veh1: /veh1/terrain_profile and "
-                 "/veh1/speed, for a node in it; bags of several vehicles then play together "
-                 "from one rosbag play --clock (default: /terrain_profile, /speed)");
+                 "/veh1/speed_stamped, for a node in it; bags of several vehicles then play "
+                 "together from one rosbag play --clock (default: /terrain_profile, "
+                 "/speed_stamped)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -108,8 +116,12 @@ int main(int argc, char** argv) {
                 << ns << "'" << (why.empty() ? "" : ": " + why) << "\n";
       return 2;
     }
+  }
+  options.speed_message =
+      speed_message == "float64" ? rl::BagSpeedMessage::Float64 : rl::BagSpeedMessage::Stamped;
+  if (!ns.empty()) {
     options.terrain_topic = ns + options.terrain_topic;
-    options.speed_topic = ns + options.speed_topic;
+    options.speed_topic = ns + rl::speedTopic(options);
   }
   options.speed = speed_kmh / tracked_vehicle_dynamics::kKmhPerMs;
   if (offset->count() > 0)

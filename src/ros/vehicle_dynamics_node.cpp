@@ -14,21 +14,7 @@
 #include "tracked_vehicle_dynamics/terrain/terrain_plausibility.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 
-// ROS_WARN_THROTTLE on the monotonic wall clock. rosconsole's throttle reads ros::Time, which on
-// simulated time is the simulator's: a /clock that jumps back (two clock sources, a bag looping
-// fast) re-opens it at every jump, and the "throttled" warning floods the log; a paused clock would
-// hold it shut. One throttle per call site, as ROS_WARN_THROTTLE has.
-#define TVD_LOG_THROTTLE(log, period, ...)                                              \
-  do {                                                                                  \
-    static double tvd_warn_last_ = -1e300;                                              \
-    const double tvd_warn_now_ = ::ros::SteadyTime::now().toSec();                      \
-    if (tvd_warn_now_ >= tvd_warn_last_ + (period) || tvd_warn_now_ < tvd_warn_last_) { \
-      tvd_warn_last_ = tvd_warn_now_;                                                   \
-      log(__VA_ARGS__);                                                                 \
-    }                                                                                   \
-  } while (false)
-#define TVD_WARN_THROTTLE(period, ...) TVD_LOG_THROTTLE(ROS_WARN, period, __VA_ARGS__)
-#define TVD_ERROR_THROTTLE(period, ...) TVD_LOG_THROTTLE(ROS_ERROR, period, __VA_ARGS__)
+#include "node_logging.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -36,30 +22,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Throttle period of repeated warnings [s] of wall time.
-constexpr double kWarnPeriod = 5.0;
+using node_logging::kRewindWindow;
+using node_logging::kWarnPeriod;
+
 // Terrain messages queued: a source sending a whole track at start-up (hundreds of patches) must
 // not lose the oldest (roscpp drops them from a full queue without a count).
 constexpr std::uint32_t kTerrainQueue = 10000;
-
-// Wall time [s] for which inputs are kept in case simulated time jumps back to them. rosbag
-// play -l publishes a loop's first messages and its first /clock within milliseconds, on
-// separate connections, so either may arrive first.
-constexpr double kRewindWindow = 0.25;
-
-// A speed change a driver would feel [m/s at once, or m/s per second between messages], which
-// without a slew carries no travel inertia: warned about once.
-constexpr double kUnslewedChange = 0.5;
 
 // On simulated time, a wait for the first /clock this long [s of wall time] is logged as a WARN,
 // again every kClockWaitWarnPeriod while it lasts.
 constexpr double kClockWaitWarnAfter = 10.0;
 constexpr double kClockWaitWarnPeriod = 30.0;
-
-// A negative speed this close to zero is a stopped vehicle as a physics engine reports it
-// (-1e-6 m/s), not reverse driving: taken as 0. Refused as reverse, it kept the last speed and
-// the vehicle crept on at it while the simulator stood still (review 125).
-constexpr double kStandstillNoise = 1e-3;  // [m/s]
 
 // Publisher queues hold at least this many messages; more when one tick may publish more.
 constexpr std::uint32_t kMinQueue = 10;
@@ -148,6 +121,10 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
                          ros::TransportHints().tcpNoDelay());
   speed_sub_ = loop_nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
                                   ros::TransportHints().tcpNoDelay());
+  // Stamped speeds may be sent ahead of their time: a queue for a second of them at 100 Hz.
+  speed_stamped_sub_ =
+      loop_nh_.subscribe("speed_stamped", 100, &VehicleDynamicsNode::onSpeedStamped, this,
+                         ros::TransportHints().tcpNoDelay());
   if (use_sim_time_) {
     clock_sub_ = loop_nh_.subscribe("/clock", 10, &VehicleDynamicsNode::onClock, this,
                                     ros::TransportHints().tcpNoDelay());
@@ -350,65 +327,6 @@ void VehicleDynamicsNode::reportDroppedPatch(const std::string& where) {
                     nodeName(), where.c_str(), params_.vehicle_options.terrain_keep_behind);
 }
 
-std::string VehicleDynamicsNode::speedProblem(double v) const {
-  if (!std::isfinite(v))
-    return "speed is not finite";
-  if (v < 0.0)
-    return "negative speed " + brief(v) + " m/s (reverse driving is not modelled)";
-  if (v > params_.max_speed) {
-    return "speed " + brief(v) + " m/s above ~max_speed " + brief(params_.max_speed) + " m/s";
-  }
-  return "";
-}
-
-void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
-  const double v = msg->data < 0.0 && msg->data >= -kStandstillNoise ? 0.0 : msg->data;
-  const std::string why = speedProblem(v);
-  if (!why.empty()) {
-    ++events_.speeds_rejected;
-    last_speed_error_ = why;
-    // The last valid speed is kept: the commanded one (with a slew the current speed is still on
-    // its way there).
-    TVD_WARN_THROTTLE(kWarnPeriod, "%s: %s; keeping %.3f m/s", nodeName(), why.c_str(),
-                      vehicle_->commandedSpeed());
-    return;
-  }
-  warnOfUnslewedSpeedChange(v, now());
-  vehicle_->setSpeed(v);
-  if (hold_.active)
-    hold_.speed = true;
-  ++events_.speeds_accepted;
-  stopped_by_timeout_ = false;
-  markSpeedTime(now());
-  recent_speed_ = v;
-  recent_speed_arrival_ = ros::SteadyTime::now();
-}
-
-void VehicleDynamicsNode::warnOfUnslewedSpeedChange(double v, const ros::Time& t) {
-  // Without a slew (~max_acceleration and ~max_deceleration 0, the default) a new speed applies
-  // at once and carries no travel inertia: odom's twist follows a braking source, the IMU and the
-  // hull's pitch do not (review 130: a fused localisation saw the two disagree). Said once, at
-  // the first change a driver would feel: by more than kUnslewedChange at once, or at more than
-  // kUnslewedChange per second over the time since the previous speed message.
-  const online::OnlineVehicleOptions& o = params_.vehicle_options;
-  if (unslewed_change_warned_ || o.max_acceleration > 0.0 || o.max_deceleration > 0.0 ||
-      last_speed_time_.isZero())
-    return;
-  const double change = std::abs(v - vehicle_->commandedSpeed());
-  const double dt = (t - last_speed_time_).toSec();
-  if (change <= kStandstillNoise || (change <= kUnslewedChange && change <= kUnslewedChange * dt))
-    return;
-  unslewed_change_warned_ = true;
-  const std::string over =
-      dt > 0.0 ? "over " + brief(std::round(dt * 1000.0) / 1000.0) + " s" : "at once";
-  ROS_WARN(
-      "%s: the speed changes from %.3f to %.3f m/s %s, and without a slew (~max_acceleration and "
-      "~max_deceleration 0) it applies at once with no travel inertia: odom follows it, the IMU "
-      "and the hull's pitch do not; set both to the vehicle's limits to feel braking and "
-      "accelerating (said once)",
-      nodeName(), vehicle_->commandedSpeed(), v, over.c_str());
-}
-
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
   ROS_INFO("%s: reset requested: back to static equilibrium at station 0", nodeName());
   // Not published here: the current sample's stamp is already out, and tf2 discards a second
@@ -452,6 +370,7 @@ bool VehicleDynamicsNode::onResetTo(ResetVehicle::Request& request,
   // a second transform at it, TF_REPEATED_DATA); the next published sample shows the new state.
   // The requested speed counts as a speed message for ~speed_timeout.
   markSpeedTime(now());
+  last_speed_taken_ = now();
   std::ostringstream text;
   text.precision(10);  // the default 6 digits would print station 123456.7 m as 123457
   text << "at station " << request.station << " m, speed " << request.speed
@@ -479,6 +398,7 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
     stepped_patch_.clear();  // the offset terrain is gone
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
+  pending_speeds_.clear();      // the old run's schedule
   hold_ = Hold();
   run_start_ = now();
   // Terrain kept (~reset_to keep_terrain) is there from the run's start.
@@ -493,7 +413,7 @@ void VehicleDynamicsNode::forgetRecentInputs() {
     if (!recent.dropped.empty())
       reportDroppedPatch(recent.dropped);
   recent_patches_.clear();
-  recent_speed_arrival_ = ros::SteadyTime();
+  forgetRecentSpeeds();
 }
 
 VehicleDynamicsNode::~VehicleDynamicsNode() {
@@ -525,6 +445,8 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
                                                   first_patch_lag_ <= holdLimit()));
   const bool had_speed = vehicle_->commandedSpeed() > 0.0 || (hold_.active && hold_.awaiting_speed);
   const ros::Time old_time = sample_time_;
+  last_jump_old_time_ = old_time;
+  last_jump_arrival_ = ros::SteadyTime::now();
   const std::uint64_t speeds_before = events_.speeds_reapplied;
   restart();
   sample_time_ = now;
@@ -571,18 +493,6 @@ void VehicleDynamicsNode::publishDiagnostics() {
   }
 }
 
-void VehicleDynamicsNode::markSpeedTime(const ros::Time& now) {
-  last_speed_time_ = now;
-  last_speed_steady_ = ros::SteadyTime::now();
-}
-
-double VehicleDynamicsNode::secondsSinceSpeed(const ros::Time& now,
-                                              const ros::SteadyTime& steady) const {
-  // On real time ROS time is the system clock, which an NTP correction steps (back: the vehicle
-  // would drive on for the step's length; forward: stop at once): the monotonic clock instead.
-  return use_sim_time_ ? (now - last_speed_time_).toSec() : (steady - last_speed_steady_).toSec();
-}
-
 void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   // A patch of the new time (a bag's next loop) that arrived before the jump was stamped near
   // `now`, long before the old time it arrived at; one of the old time was stamped near the
@@ -619,15 +529,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
     }
   }
   recent_patches_.clear();
-  // std_msgs/Float64 carries no stamp: the last speed is taken if it arrived just before the
-  // jump (rosbag sends a loop's first speed with its first patches).
-  if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
-    vehicle_->setSpeed(recent_speed_);
-    stopped_by_timeout_ = false;
-    markSpeedTime(now);
-    ++events_.speeds_reapplied;
-  }
-  recent_speed_arrival_ = ros::SteadyTime();
+  reapplyRecentSpeeds(now);
 }
 
 void VehicleDynamicsNode::reportOnWallTime(const ros::SteadyTime& wall) {
@@ -692,6 +594,8 @@ void VehicleDynamicsNode::step() {
   const ros::SteadyTime wall = ros::SteadyTime::now();
   if (!recent_patches_.empty())
     expireRecentPatches();  // a patch dropped behind, with no jump back to re-apply it, is lost
+  if (!recent_stamped_speeds_.empty())
+    expireRecentSpeeds();
   if (t != last_step_time_) {
     last_step_time_ = t;
     last_time_change_ = wall;
@@ -821,6 +725,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   }
   max_steps_in_tick_ = std::max(max_steps_in_tick_, due);
   for (std::int64_t k = 0; k < due; ++k) {
+    applyDueSpeeds();  // the stamped speeds whose time has come: this step is driven by them
     const auto step_start = Clock::now();
     const StepResult result = vehicle_->step();
     const double step_seconds = secondsSince(step_start);

@@ -213,6 +213,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
 void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrapper& status) {
   const std::uint64_t rejected = speed_rejected_.delta(events_.speeds_rejected);
   const std::uint64_t timeouts = speed_timed_out_.delta(events_.speed_timeouts);
+  const std::uint64_t late = speed_late_.delta(events_.speeds_late);
+  const std::uint64_t other_time_base = speed_time_base_.delta(events_.speeds_other_time_base);
   if (timeouts > 0 || stopped_by_timeout_) {  // until the next speed message moves it again
     // With a speed slew the vehicle brakes at ~max_deceleration: "stopping" until it stands.
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
@@ -221,6 +223,9 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
                        : "no speed message within ~speed_timeout: vehicle stopped");
   } else if (rejected > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "speed messages rejected");
+  } else if (other_time_base > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "speed_stamped stamped in another time base: taken on arrival");
   } else {
     status.summary(diagnostic_msgs::DiagnosticStatus::OK, "ok");
   }
@@ -234,6 +239,18 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
   status.add("speeds rejected (total)", events_.speeds_rejected);
   status.add("speeds rejected (since last report)", rejected);
   status.add("last rejection", last_speed_error_);
+  // speed_stamped: applied at the step of its stamp; late ones (the sample already a step or
+  // more past the stamp) at once, which a replay does not repeat exactly.
+  status.add("stamped speeds (total)", events_.speeds_stamped);
+  status.add("stamped speeds waiting for their stamp", static_cast<long>(pending_speeds_.size()));
+  status.add("stamped speeds late (total)", events_.speeds_late);
+  status.add("stamped speeds late (since last report)", late);
+  status.add("largest lateness since last report [s]", max_speed_lateness_);
+  max_speed_lateness_ = 0.0;
+  status.add("stamped speeds in another time base (total)", events_.speeds_other_time_base);
+  status.add("last in another time base", last_other_time_base_);
+  status.add("stamped in the pass before a jump back, dropped (total)",
+             events_.speeds_of_pass_before);
   status.add("speed timeout [s]", params_.speed_timeout);
   status.add("stops after the speed timeout (total)", events_.speed_timeouts);
 }

@@ -13,6 +13,9 @@
 // and a last loop sends no inputs: the hold ends after half ~catch_up_limit.
 // Each loop must give the first loop's samples: the same stamps (none dropped on catch-up
 // bursts), stations and wheel displacements.
+// Then the same loops with the speed on speed_stamped, and a speed change in the middle of each
+// loop sent with its first messages (stamped ahead): each loop again gives the first stamped
+// loop's samples, the change at the same step, however the inputs and the jump interleave.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,6 +23,7 @@
 #include <numeric>
 #include <vector>
 
+#include <geometry_msgs/TwistStamped.h>
 #include <rosgraph_msgs/Clock.h>
 #include <std_msgs/Float64.h>
 
@@ -60,6 +64,7 @@ class NodeBagLoop : public ::testing::Test {
                                 ros::TransportHints().tcpNoDelay());
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10);
+    stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("speed_stamped", 10);
   }
 
   void onWheels(const RoadWheels::ConstPtr& msg) {
@@ -85,6 +90,18 @@ class NodeBagLoop : public ::testing::Test {
     for (TerrainProfile patch : patches_) {
       patch.header.stamp = start_;
       terrain_pub_.publish(patch);
+    }
+    if (change_at_ > 0.0) {
+      // The loop's speed, then its change, each stamped with the time it applies from.
+      geometry_msgs::TwistStamped v;
+      v.header.frame_id = "base_link";
+      v.header.stamp = start_;
+      v.twist.linear.x = speed_;
+      stamped_pub_.publish(v);
+      v.header.stamp = start_ + ros::Duration(change_at_);
+      v.twist.linear.x = changed_speed_;
+      stamped_pub_.publish(v);
+      return;
     }
     std_msgs::Float64 v;
     v.data = speed_;
@@ -117,13 +134,15 @@ class NodeBagLoop : public ::testing::Test {
 
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
-  ros::Publisher clock_pub_, terrain_pub_, speed_pub_;
+  ros::Publisher clock_pub_, terrain_pub_, speed_pub_, stamped_pub_;
   ros::Subscriber wheels_sub_;
   RoadWheels last_;
   std::size_t messages_ = 0;
   LoopRun* recording_ = nullptr;
   ros::Time start_;
   double speed_ = 0.0;
+  // Stamped speeds (> 0): the change's time after the loop's start [s], and its speed [m/s].
+  double change_at_ = 0.0, changed_speed_ = 0.0;
   std::vector<TerrainProfile> patches_;
   std::vector<int> bursts_;
 };
@@ -245,11 +264,51 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   }
   EXPECT_TRUE(waitForSample(tick)) << "the hold did not end";
 
+  // The stamped loops: speed_ from the start, changed_speed_ from 0.3037 s (off the 1 ms grid).
+  // Their own first loop (the jump back, then the inputs) is the reference.
+  change_at_ = 0.3037;
+  changed_speed_ = 0.5 * speed_;
+  test::spinFor(0.3);  // the sixth loop's kept inputs expire
+  ASSERT_TRUE(test::spinUntil([&] { return stamped_pub_.getNumSubscribers() > 0; }, 5.0));
+  LoopRun stamped_first;
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  publishInputs();
+  test::spinFor(0.1);
+  play(&stamped_first);
+  ASSERT_FALSE(stamped_first.empty());
+  // The change applies from the step that starts at the grid point after its stamp (0.304 s):
+  // the step to 0.305 s is the first to advance the station at it (v h, no slew).
+  const auto at = [&](int ms) { return stamped_first.find(std::int64_t{ms} * 1'000'000); };
+  ASSERT_TRUE(at(303) != stamped_first.end() && at(304) != stamped_first.end() &&
+              at(305) != stamped_first.end());
+  EXPECT_NEAR(at(304)->second.station - at(303)->second.station, speed_ * 1e-3, 1e-12);
+  EXPECT_NEAR(at(305)->second.station - at(304)->second.station, changed_speed_ * 1e-3, 1e-12);
+  for (const double pause : {0.0, 0.05}) {
+    LoopRun inputs_first;
+    publishInputs();
+    if (pause > 0.0)
+      test::spinFor(pause);
+    setClock(start_);
+    ASSERT_TRUE(waitForSample(start_));
+    test::spinFor(0.1);
+    play(&inputs_first);
+    expectSameRun(stamped_first, inputs_first, tolerance,
+                  pause > 0.0 ? "stamped: inputs handled before the jump back"
+                              : "stamped: inputs before the jump back");
+  }
+  LoopRun stamped_late;
+  setClock(start_);
+  ASSERT_TRUE(waitForSample(start_));
+  play(&stamped_late, 3);
+  expectSameRun(stamped_first, stamped_late, tolerance, "stamped: inputs 4 ms after the jump back");
+
   t = start_ + ros::Duration(5.0);  // let the diagnostics period pass on simulated time
   setClock(t);
   ASSERT_TRUE(test::spinUntil(
       [&] {
-        return diagnostics_.value(": loop", "time jumps back (total)") >= 5 &&
+        return diagnostics_.value(": loop", "time jumps back (total)") >= 9 &&
+               diagnostics_.value(": speed", "stamped speeds (total)") >= 8 &&
                diagnostics_.value(": loop", "holds ended without terrain (total)") >= 1;
       },
       10.0))
@@ -257,14 +316,17 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   // The third loop's inputs were re-applied after the jump (the second's may have been).
   EXPECT_GE(diagnostics_.value(": loop", "patches re-applied after a jump back (total)"),
             static_cast<double>(patches_.size()));
-  EXPECT_GE(diagnostics_.value(": loop", "speeds re-applied after a jump back (total)"), 1.0);
-  // The fifth and sixth loops were held (the fourth's inputs may have come before its first
-  // step); only the sixth's hold ran out.
-  EXPECT_GE(diagnostics_.value(": loop", "restarts held for the loop's terrain (total)"), 2.0);
+  // The third loop's speed, and the stamped third loop's two.
+  EXPECT_GE(diagnostics_.value(": loop", "speeds re-applied after a jump back (total)"), 3.0);
+  // The fifth, sixth and the last stamped loops were held (the fourth's inputs may have come
+  // before its first step); only the sixth's hold ran out.
+  EXPECT_GE(diagnostics_.value(": loop", "restarts held for the loop's terrain (total)"), 3.0);
   EXPECT_EQ(diagnostics_.value(": loop", "holds ended without terrain (total)"), 1.0);
   // The patches that arrived behind the vehicle before a jump were all re-applied: none is
   // counted (nor warned) as dropped, so a healthy loop keeps the terrain status OK.
   EXPECT_EQ(diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)"), 0.0);
+  // Every stamped speed was judged of its loop: none taken as another time base's.
+  EXPECT_EQ(diagnostics_.value(": speed", "stamped speeds in another time base (total)"), 0.0);
   std::printf("%s", diagnostics_.describe().c_str());
 }
 

@@ -389,6 +389,11 @@ TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
   EXPECT_NEAR(summary.duration, (terrain::kTrackLength + options.behind) / options.speed, 1e-9);
   for (const auto& [time, v] : bag.speeds)
     EXPECT_EQ(v, options.speed);
+  // geometry_msgs/TwistStamped by default, each stamped at the bag time it is played at: the
+  // node takes it at that time, whenever it arrives.
+  ASSERT_EQ(bag.speed_stamps.size(), bag.speeds.size());
+  for (std::size_t i = 0; i < bag.speeds.size(); ++i)
+    EXPECT_EQ(bag.speed_stamps[i], bag.speeds[i].first) << i;
 
   // The patches, fed to a buffer in bag order, reproduce the track on its grid, and the buffer
   // holds `lookahead` ahead of the vehicle whenever a patch arrives.
@@ -479,6 +484,32 @@ TEST(TrackBag, TerrainFileIsShiftedToTheStartAndTheCentreLine) {
   options.track = "moon_craters";
   const std::string unknown = inputErrorOf([&] { trackRun(options); });
   EXPECT_NE(unknown.find("neither a built-in track (long_hill"), std::string::npos) << unknown;
+}
+
+// --speed-message float64: the unstamped std_msgs/Float64 on /speed, the same values and times
+// as the stamped default on /speed_stamped.
+TEST(TrackBag, Float64SpeedsOnSpeedCarryTheStampedOnesValues) {
+  TrackBagOptions options;
+  options.track = "separated_waves";
+  options.speed_profile = dynamics::SpeedProfile({0.0, 2.0}, {4.0, 8.0});
+  const std::string stamped_path = temporaryPath("stamped.bag");
+  const std::string float_path = temporaryPath("float64.bag");
+  writeTrackBag(stamped_path, options);
+  options.speed_message = BagSpeedMessage::Float64;
+  EXPECT_EQ(speedTopic(options), "/speed");
+  writeTrackBag(float_path, options);
+  const TrackBagContent stamped = readTrackBag(stamped_path, "/terrain_profile", "/speed_stamped");
+  const TrackBagContent unstamped = readTrackBag(float_path, "/terrain_profile", "/speed");
+  const TrackBagContent misread = readTrackBag(float_path, "/terrain_profile", "/speed_stamped");
+  std::remove(stamped_path.c_str());
+  std::remove(float_path.c_str());
+  ASSERT_FALSE(stamped.speeds.empty());
+  ASSERT_EQ(unstamped.speeds, stamped.speeds);
+  EXPECT_TRUE(misread.speeds.empty());
+  for (std::size_t i = 0; i < unstamped.speeds.size(); ++i) {
+    EXPECT_TRUE(unstamped.speed_stamps[i].isZero()) << i;
+    EXPECT_EQ(stamped.speed_stamps[i], stamped.speeds[i].first) << i;
+  }
 }
 
 // A speed profile (brake from 10 to 2 m/s over the first 4 s, then hold): the run lasts until

@@ -226,8 +226,10 @@ class LaunchFilesTest(unittest.TestCase):
         remaps = dict(nodes["/veh1/track_player"][3])
         # (resolved by the player in its namespace, /veh1/terrain_profile)
         # and its relative "clock" to the master's /clock.
-        self.assertEqual({k: remaps[k] for k in ("/terrain_profile", "/speed", "clock")},
-                         {"/terrain_profile": "terrain_profile", "/speed": "speed",
+        self.assertEqual({k: remaps[k] for k in ("/terrain_profile", "/speed_stamped", "/speed",
+                                                 "clock")},
+                         {"/terrain_profile": "terrain_profile", "/speed_stamped": "speed_stamped",
+                          "/speed": "speed",
                           "clock": "/clock"})
         recorder = shlex.split(roslaunch("--args", "/veh1/output_recorder", wrapper))
         for topic in ("/tf", "/tf_static", "/diagnostics", "/veh1/odom", "/veh1/road_wheels",
@@ -409,6 +411,9 @@ class LaunchFilesTest(unittest.TestCase):
                                 "tvd_make_bag: error: --speed-kmh: 'abc' is not a number"),
                                (["--trak", "long_hill", "--out", "x.bag"],
                                 "tvd_make_bag: error: unknown option --trak (did you mean --track?)"),
+                               (["--speed-message", "twist", "--out", "x.bag"],
+                                "tvd_make_bag: error: --speed-message: twist not in "
+                                "{stamped,float64}"),
                                (["--out"], "tvd_make_bag: error: --out needs a value after it"),
                                (["--speed-kmh", "30"], "tvd_make_bag: error: --out is required")]:
             result = make_bag(*args)
@@ -422,13 +427,19 @@ class LaunchFilesTest(unittest.TestCase):
                           "/veh1", result.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.work, "x.bag")))
         # --namespace: the topics of a vehicle in it, for one player of several vehicles' bags.
-        result = make_bag("--namespace", "/veh1/", "--out", "ns.bag")
-        self.assertEqual(result.returncode, 0, result.stderr)
-        info = subprocess.run([ENV_SH, "rosbag", "info", "--yaml", "--key", "topics",
-                               os.path.join(self.work, "ns.bag")], capture_output=True, text=True,
-                              timeout=120)
-        self.assertEqual(sorted(t["topic"] for t in yaml.safe_load(info.stdout)),
-                         ["/veh1/speed", "/veh1/terrain_profile"], info.stderr)
+        # The speed as geometry_msgs/TwistStamped on speed_stamped, or with --speed-message
+        # float64 as std_msgs/Float64 on speed.
+        for extra, speed in (([], ("/veh1/speed_stamped", "geometry_msgs/TwistStamped")),
+                             (["--speed-message", "float64"], ("/veh1/speed", "std_msgs/Float64"))):
+            result = make_bag("--namespace", "/veh1/", "--out", "ns.bag", *extra)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            info = subprocess.run([ENV_SH, "rosbag", "info", "--yaml", "--key", "topics",
+                                   os.path.join(self.work, "ns.bag")], capture_output=True,
+                                  text=True, timeout=120)
+            self.assertEqual(sorted((t["topic"], t["type"]) for t in yaml.safe_load(info.stdout)),
+                             sorted([speed, ("/veh1/terrain_profile",
+                                             "tracked_vehicle_dynamics/TerrainProfile")]),
+                             info.stderr)
         result = make_bag("--speed-kmh", "90", "--peak-speed")
         self.assertEqual((result.returncode, float(result.stdout)), (0, 25.0), result.stderr)
         profile = os.path.join(self.work, "peak.csv")

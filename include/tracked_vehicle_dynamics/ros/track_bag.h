@@ -34,6 +34,11 @@ constexpr double kMaxTrackBagSpeed = dynamics::kMaxSpeedKmh / kKmhPerMs;
 /// steps of its default 1 ms; a longer one is a crawl or a stray far station, not a test drive.
 constexpr double kMaxTrackBagDuration = 1e4;
 
+/// How a track bag carries the speed: geometry_msgs/TwistStamped on /speed_stamped (the node
+/// takes each at its header.stamp, so a replay drives through the same stations every time), or
+/// std_msgs/Float64 on /speed (taken when it arrives).
+enum class BagSpeedMessage { Stamped, Float64 };
+
 struct TrackBagOptions {
   /// long_hill, separated_waves, oop_waves, half_round:H (tracks.h), or a terrain file
   /// (.csv/.yaml, terrain_io.h, e.g. from `tvd terrain --iso8608 C`): its first station becomes
@@ -54,8 +59,10 @@ struct TrackBagOptions {
   std::optional<double> lateral_offset;
   double start_time = 1000.0;  ///< bag time of the start [s] (> 0: time 0 means "no clock")
   std::string terrain_topic = "/terrain_profile";
-  std::string speed_topic = "/speed";
-  std::string frame_id = "odom";
+  BagSpeedMessage speed_message = BagSpeedMessage::Stamped;
+  std::string speed_topic;                   ///< empty: /speed_stamped or /speed, by speed_message
+  std::string frame_id = "odom";             ///< of the terrain patches
+  std::string speed_frame_id = "base_link";  ///< of a stamped speed (the node's, unprefixed)
 };
 
 struct TrackBagSummary {
@@ -94,15 +101,21 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
 /// What a track bag holds, in core terms, in bag order.
 struct TrackBagContent {
   std::vector<std::pair<ros::Time, TerrainPatch>> patches;
-  std::vector<std::pair<ros::Time, double>> speeds;  ///< [m/s]
+  std::vector<std::pair<ros::Time, double>> speeds;  ///< [m/s], at the bag's time
+  /// header.stamp of each speed, in the same order (zero for a std_msgs/Float64).
+  std::vector<ros::Time> speed_stamps;
   std::vector<ros::Time> clocks;
 };
 
+/// The topic the speeds are written on: options.speed_topic, or the message's default.
+std::string speedTopic(const TrackBagOptions& options);
+
 /// Reads the terrain, speed and /clock messages of a bag. Throws rosbag::BagException when the
-/// file cannot be read, InputError for a malformed terrain message.
+/// file cannot be read, InputError for a malformed terrain message. The speeds are read from
+/// `speed_topic` as either message; empty: from /speed_stamped and /speed.
 TrackBagContent readTrackBag(const std::string& path,
                              const std::string& terrain_topic = "/terrain_profile",
-                             const std::string& speed_topic = "/speed");
+                             const std::string& speed_topic = "");
 
 }  // namespace ros_layer
 }  // namespace tracked_vehicle_dynamics

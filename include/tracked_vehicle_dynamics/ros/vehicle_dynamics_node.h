@@ -1,7 +1,8 @@
 // vehicle_dynamics_node: the reduced vehicle model in real time on ROS time (doc/ros_node.md).
 //
 //   terrain_profile (TerrainProfile) ──► OnlineVehicle::addTerrain   (TerrainBuffer)
-//   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed
+//   speed (std_msgs/Float64, m/s)    ──► OnlineVehicle::setSpeed, when it arrives
+//   speed_stamped (TwistStamped)     ──► OnlineVehicle::setSpeed, at the step of its stamp
 //   ~reset, ~reset_to (ResetVehicle) ──► OnlineVehicle::reset, resetTo
 //   tick at ~rate on ROS time        ──► OnlineVehicle::step() for every step due
 //       ──► tf2 odom→base_link→{road wheels, moving named points}, odom (nav_msgs/Odometry),
@@ -100,8 +101,12 @@ class VehicleDynamicsNode {
     std::uint64_t patches_behind = 0;       // valid, but wholly behind the terrain kept: dropped
     std::uint64_t patches_other_frame = 0;  // header.frame_id set, not this vehicle's odom frame
     std::uint64_t speeds_accepted = 0, speeds_rejected = 0;
-    std::uint64_t speed_timeouts = 0;   // stops after ~speed_timeout without a speed message
-    std::uint64_t uncovered_steps = 0;  // steps with at least one contact off the terrain
+    std::uint64_t speeds_stamped = 0;  // of the accepted, on speed_stamped
+    std::uint64_t speeds_late = 0;     // stamped a whole step or more before the sample they met
+    std::uint64_t speeds_other_time_base = 0;  // stamped more than kStampRange from ROS time
+    std::uint64_t speeds_of_pass_before = 0;   // stamped in the pass before a jump back: dropped
+    std::uint64_t speed_timeouts = 0;          // stops after ~speed_timeout without a speed message
+    std::uint64_t uncovered_steps = 0;         // steps with at least one contact off the terrain
     std::uint64_t diverged = 0;
     std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
     std::uint64_t ticks = 0, late_ticks = 0;  // late: more than one step due at a tick
@@ -141,7 +146,33 @@ class VehicleDynamicsNode {
   /// " (a step takes X us …)" when the recent steps are slower than the period, else "".
   std::string slowStepCause() const;
   std::vector<std::string> judgePatch(const TerrainPatch& patch, bool* stepped) const;
+  /// `speed`: taken when it arrives (vehicle_dynamics_node_speed.cpp).
   void onSpeed(const std_msgs::Float64::ConstPtr& msg);
+  /// `speed_stamped`: twist.linear.x taken at header.stamp (scheduleSpeed).
+  void onSpeedStamped(const geometry_msgs::TwistStamped::ConstPtr& msg);
+  /// Why a stamped speed's frame is not one whose x is the vehicle's heading; empty if it is.
+  std::string speedFrameProblem(const std::string& frame) const;
+  /// A speed message refused: counted, kept for the diagnostics, warned (throttled).
+  void rejectSpeed(const std::string& why);
+  /// Which topic a valid speed came on; both in one run is warned about once.
+  void noteSpeedSource(bool stamped);
+  /// A stamped speed within reach of ROS time: taken now if its stamp is not after the current
+  /// sample (late when a whole step before it), else kept until the step at its stamp.
+  void scheduleSpeed(double speed, const ros::Time& stamp);
+  /// The kept stamped speeds due at the current sample, in stamp order.
+  void applyDueSpeeds();
+  /// The commanded speed from ROS time `t` on, with the hold's and the timeout's bookkeeping.
+  void takeSpeed(double speed, const ros::Time& t);
+  /// A stamped speed more than a second from ROS time `t`: taken now, counted and warned.
+  void takeSpeedOfOtherTimeBase(double speed, const ros::Time& stamp, const ros::Time& t);
+  /// The kept stamped speeds older than kRewindWindow are forgotten; one held back as maybe a
+  /// bag loop's next pass, with no jump back since, is taken now as another time base's.
+  void expireRecentSpeeds();
+  /// The speeds kept for a jump back belong to the run a reset ends.
+  void forgetRecentSpeeds();
+  /// After a jump back to `now`: the last unstamped speed if it arrived within kRewindWindow,
+  /// then each stamped one of the new time (stamped nearer `now` than its arrival's ROS time).
+  void reapplyRecentSpeeds(const ros::Time& now);
   bool onReset(std_srvs::Empty::Request& request, std_srvs::Empty::Response& response);
   /// ~reset_to: restart at a station in static equilibrium on its terrain (or on flat ground).
   /// An invalid request gets success = false naming the field, and changes nothing.
@@ -235,7 +266,7 @@ class VehicleDynamicsNode {
   };
   std::vector<HullLink> hull_links_;
 
-  ros::Subscriber terrain_sub_, speed_sub_, clock_sub_;
+  ros::Subscriber terrain_sub_, speed_sub_, speed_stamped_sub_, clock_sub_;
   // /tf is published like tf2_ros::TransformBroadcaster does, from a message kept between
   // publications (no per-sample allocation of frame ids).
   // Each with its subscriber count, kept by roscpp's connect/disconnect callbacks (on the spin
@@ -306,11 +337,32 @@ class VehicleDynamicsNode {
   Events events_;
   Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
       terrain_uncovered_, terrain_narrow_, terrain_implausible_, terrain_behind_,
-      terrain_other_frame_, speed_rejected_, speed_timed_out_;
+      terrain_other_frame_, speed_rejected_, speed_timed_out_, speed_late_, speed_time_base_;
   std::string last_patch_error_, last_speed_error_, last_narrow_patch_, last_behind_patch_,
       last_implausible_patch_, last_other_frame_patch_;
   std::deque<RecentPatch> recent_patches_;  // sim time only
   double recent_speed_ = 0.0;
+  /// A stamped speed kept until the step at its stamp.
+  struct PendingSpeed {
+    double speed;
+    ros::Time stamp;
+  };
+  std::deque<PendingSpeed> pending_speeds_;  // in stamp order
+  /// A stamped speed kept for kRewindWindow of wall time (sim time), for a jump back.
+  struct RecentSpeed {
+    double speed;
+    ros::Time stamp, ros_arrival;
+    ros::SteadyTime arrival;
+    bool deferred;  // far behind ROS time, not taken yet: maybe a bag loop's next pass
+  };
+  std::deque<RecentSpeed> recent_stamped_speeds_;
+  double max_speed_lateness_ = 0.0;  // [s] of the late stamped speeds since the last report
+  std::string last_other_time_base_;
+  bool stamped_speed_seen_ = false, unstamped_speed_seen_ = false, speed_sources_warned_ = false;
+  ros::Time last_speed_taken_;  // ROS time from which the commanded speed was last set
+  // The last jump back of simulated time: the time it left, and when (monotonic) it came.
+  ros::Time last_jump_old_time_;
+  ros::SteadyTime last_jump_arrival_;
   ros::SteadyTime recent_speed_arrival_;  // zero: none kept
   ros::Time last_step_time_;              // ROS time of the previous step() call
   ros::Time last_speed_time_;             // ROS time of the last valid speed message

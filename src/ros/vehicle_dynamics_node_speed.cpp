@@ -1,0 +1,308 @@
+// The node's speed inputs: `speed` (std_msgs/Float64, taken when it arrives) and `speed_stamped`
+// (geometry_msgs/TwistStamped, taken at its header.stamp), the speed timeout's bookkeeping, and
+// what a jump back of simulated time (a bag loop) re-applies of them.
+//
+// A stamped speed applies from the first step that starts at or after its stamp: a speed sent
+// ahead waits for its time, one that arrives after it (the vehicle's sample already past the
+// stamp) applies at once and is counted late. So a bag replay drives the vehicle through the
+// same stations every time, to within a step's v h, whatever the order in which its /clock and
+// speed messages reach the node on their separate connections (the unstamped speed applies at
+// the next tick, so its station wanders by the /clock period's worth of Δv, 10 ms at rosbag's
+// default 100 Hz clock).
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/ros/vehicle_dynamics_node.h"
+
+#include "node_logging.h"
+
+namespace tracked_vehicle_dynamics {
+namespace ros_layer {
+namespace {
+
+using node_logging::kRewindWindow;
+using node_logging::kWarnPeriod;
+
+// A speed change a driver would feel [m/s at once, or m/s per second between messages], which
+// without a slew carries no travel inertia: warned about once.
+constexpr double kUnslewedChange = 0.5;
+
+// A negative speed this close to zero is a stopped vehicle as a physics engine reports it
+// (-1e-6 m/s), not reverse driving: taken as 0. Refused as reverse, it kept the last speed and
+// the vehicle crept on at it while the simulator stood still (review 125).
+constexpr double kStandstillNoise = 1e-3;  // [m/s]
+
+// A stamp further than this [s] from ROS time now is not a schedule but another time base (wall
+// time stamps on simulated time, or the reverse): the speed is taken when it arrives, as an
+// unstamped one, and the mismatch said. Speeds are sent at tens of Hz; a second covers any
+// delivery delay and a catch-up.
+constexpr double kStampRange = 1.0;
+
+double standstill(double v) {
+  return v < 0.0 && v >= -kStandstillNoise ? 0.0 : v;
+}
+
+}  // namespace
+
+std::string VehicleDynamicsNode::speedProblem(double v) const {
+  if (!std::isfinite(v))
+    return "speed is not finite";
+  if (v < 0.0)
+    return "negative speed " + brief(v) + " m/s (reverse driving is not modelled)";
+  if (v > params_.max_speed) {
+    return "speed " + brief(v) + " m/s above ~max_speed " + brief(params_.max_speed) + " m/s";
+  }
+  return "";
+}
+
+std::string VehicleDynamicsNode::speedFrameProblem(const std::string& frame) const {
+  // twist.linear.x is the speed along the hull's path only in a frame whose x axis is the
+  // vehicle's heading: base_link, or the footprint. Another frame's x (odom, map) is the speed
+  // along that frame's axis, not the travel speed. Unprefixed names pass, as for terrain: a
+  // source that knows of no ~frame_prefix.
+  const std::string bare = !frame.empty() && frame.front() == '/' ? frame.substr(1) : frame;
+  if (bare.empty())
+    return "";
+  const std::string& prefix = params_.frame_prefix;
+  for (const std::string& own : {params_.base_frame, params_.footprint_frame}) {
+    if (own.empty())
+      continue;
+    if (bare == own || (!prefix.empty() && own.compare(0, prefix.size(), prefix) == 0 &&
+                        bare == own.substr(prefix.size())))
+      return "";
+  }
+  std::string allowed = "'" + params_.base_frame + "'";
+  if (!params_.footprint_frame.empty())
+    allowed += " or '" + params_.footprint_frame + "'";
+  return "speed_stamped in frame '" + frame + "': its twist.linear.x is taken as the forward " +
+         "speed, which it is in " + allowed + " (or an empty frame_id) only";
+}
+
+void VehicleDynamicsNode::rejectSpeed(const std::string& why) {
+  ++events_.speeds_rejected;
+  last_speed_error_ = why;
+  // The last valid speed is kept: the commanded one (with a slew the current speed is still on
+  // its way there).
+  TVD_WARN_THROTTLE(kWarnPeriod, "%s: %s; keeping %.3f m/s", nodeName(), why.c_str(),
+                    vehicle_->commandedSpeed());
+}
+
+void VehicleDynamicsNode::noteSpeedSource(bool stamped) {
+  (stamped ? stamped_speed_seen_ : unstamped_speed_seen_) = true;
+  if (speed_sources_warned_ || !stamped_speed_seen_ || !unstamped_speed_seen_)
+    return;
+  speed_sources_warned_ = true;
+  ROS_WARN(
+      "%s: speeds arrive on both speed (std_msgs/Float64) and speed_stamped "
+      "(geometry_msgs/TwistStamped): each is taken as it comes, the stamped ones at their stamp, "
+      "so the two sources override each other; publish on one (said once)",
+      nodeName());
+}
+
+void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
+  const double v = standstill(msg->data);
+  const std::string why = speedProblem(v);
+  if (!why.empty()) {
+    rejectSpeed(why);
+    return;
+  }
+  noteSpeedSource(false);
+  const ros::Time t = now();
+  takeSpeed(v, t);
+  ++events_.speeds_accepted;
+  markSpeedTime(t);
+  recent_speed_ = v;
+  recent_speed_arrival_ = ros::SteadyTime::now();
+}
+
+void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::ConstPtr& msg) {
+  const double v = standstill(msg->twist.linear.x);
+  std::string why = speedFrameProblem(msg->header.frame_id);
+  if (why.empty())
+    why = speedProblem(v);
+  if (!why.empty()) {
+    rejectSpeed(why);
+    return;
+  }
+  noteSpeedSource(true);
+  const ros::Time t = now();
+  const ros::Time& stamp = msg->header.stamp;
+  ++events_.speeds_accepted;
+  ++events_.speeds_stamped;
+  // Unstamped (0, "no time" in ROS), or before the vehicle's time started (simulated time with
+  // no /clock yet): taken now, as a Float64.
+  if (stamp.isZero() || t.isZero() || !clock_started_) {
+    takeSpeed(v, t);
+    markSpeedTime(t);
+    return;
+  }
+  const ros::SteadyTime arrival = ros::SteadyTime::now();
+  const double ahead = (stamp - t).toSec();
+  if (use_sim_time_ && ahead > kStampRange && !last_jump_arrival_.isZero() &&
+      arrival - last_jump_arrival_ < ros::WallDuration(kRewindWindow) &&
+      stamp <= last_jump_old_time_) {
+    // Just after a jump back, one stamped within the pass before: a late message of that pass,
+    // whose speed is not the new pass's.
+    ++events_.speeds_of_pass_before;
+    return;
+  }
+  if (std::abs(ahead) > kStampRange) {
+    // On simulated time a stamp far behind may be a bag loop's next pass, sent before the /clock
+    // message that jumps back: kept, and judged when the jump re-applies it or its window closes
+    // without one (expireRecentSpeeds).
+    if (use_sim_time_ && ahead < 0.0) {
+      recent_stamped_speeds_.push_back({v, stamp, t, arrival, true});
+      return;
+    }
+    takeSpeedOfOtherTimeBase(v, stamp, t);
+    return;
+  }
+  // The driver is alive (~speed_timeout) when the message arrives, whenever it applies.
+  markSpeedTime(t);
+  if (use_sim_time_) {
+    expireRecentSpeeds();
+    recent_stamped_speeds_.push_back({v, stamp, t, arrival, false});
+  }
+  scheduleSpeed(v, stamp);
+}
+
+void VehicleDynamicsNode::scheduleSpeed(double v, const ros::Time& stamp) {
+  if (stamp <= sample_time_) {
+    // The step at or after the stamp has been taken: applied at once, from the current sample.
+    const std::int64_t late_ns = (sample_time_ - stamp).toNSec();
+    if (late_ns >= step_ns_) {
+      ++events_.speeds_late;
+      max_speed_lateness_ = std::max(max_speed_lateness_, late_ns * 1e-9);
+    }
+    takeSpeed(v, sample_time_);
+    return;
+  }
+  // Kept in stamp order (a source may send out of order; equal stamps keep their arrival order).
+  const auto at =
+      std::upper_bound(pending_speeds_.begin(), pending_speeds_.end(), stamp,
+                       [](const ros::Time& s, const PendingSpeed& p) { return s < p.stamp; });
+  pending_speeds_.insert(at, {v, stamp});
+  if (hold_.active)
+    hold_.speed = true;  // it applies during the held steps, at its stamp
+}
+
+void VehicleDynamicsNode::applyDueSpeeds() {
+  while (!pending_speeds_.empty() && pending_speeds_.front().stamp <= sample_time_) {
+    takeSpeed(pending_speeds_.front().speed, pending_speeds_.front().stamp);
+    pending_speeds_.pop_front();
+  }
+}
+
+void VehicleDynamicsNode::takeSpeed(double v, const ros::Time& t) {
+  warnOfUnslewedSpeedChange(v, t);
+  vehicle_->setSpeed(v);
+  last_speed_taken_ = t;
+  if (hold_.active)
+    hold_.speed = true;
+  stopped_by_timeout_ = false;
+}
+
+void VehicleDynamicsNode::takeSpeedOfOtherTimeBase(double v, const ros::Time& stamp,
+                                                   const ros::Time& t) {
+  ++events_.speeds_other_time_base;
+  const double ahead = (stamp - t).toSec();
+  last_other_time_base_ =
+      "stamp " + brief(stamp.toSec()) + " s is " + brief(std::round(std::abs(ahead) * 1e3) / 1e3) +
+      " s " + (ahead > 0.0 ? "ahead of" : "behind") + " ROS time " + brief(t.toSec()) + " s";
+  TVD_WARN_THROTTLE(kWarnPeriod,
+                    "%s: speed_stamped: %s, more than %g s apart: another time base (a sender on "
+                    "wall time while this node is on /clock, or the reverse?); taken now, as an "
+                    "unstamped speed",
+                    nodeName(), last_other_time_base_.c_str(), kStampRange);
+  takeSpeed(v, t);
+  markSpeedTime(t);
+}
+
+void VehicleDynamicsNode::expireRecentSpeeds() {
+  const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
+  while (!recent_stamped_speeds_.empty() && recent_stamped_speeds_.front().arrival < oldest) {
+    const RecentSpeed recent = recent_stamped_speeds_.front();
+    recent_stamped_speeds_.pop_front();
+    // Far behind, and no jump back came for it: not a bag loop's next pass after all.
+    if (recent.deferred)
+      takeSpeedOfOtherTimeBase(recent.speed, recent.stamp, now());
+  }
+}
+
+void VehicleDynamicsNode::forgetRecentSpeeds() {
+  recent_stamped_speeds_.clear();
+  recent_speed_arrival_ = ros::SteadyTime();
+}
+
+void VehicleDynamicsNode::reapplyRecentSpeeds(const ros::Time& now) {
+  const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
+  // std_msgs/Float64 carries no stamp: the last speed is taken if it arrived just before the
+  // jump (rosbag sends a loop's first speed with its first patches).
+  if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
+    vehicle_->setSpeed(recent_speed_);
+    last_speed_taken_ = now;
+    stopped_by_timeout_ = false;
+    markSpeedTime(now);
+    ++events_.speeds_reapplied;
+  }
+  recent_speed_arrival_ = ros::SteadyTime();
+  // A stamped speed of the new time (stamped nearer it than the ROS time it arrived at, as a
+  // patch is judged) applies at its stamp: now if that has passed, later if it lies ahead.
+  for (const RecentSpeed& recent : recent_stamped_speeds_) {
+    if (recent.arrival < oldest || std::abs((recent.stamp - now).toSec()) >=
+                                       std::abs((recent.stamp - recent.ros_arrival).toSec()))
+      continue;  // the old pass's: gone with it
+    stopped_by_timeout_ = false;
+    markSpeedTime(now);
+    ++events_.speeds_reapplied;
+    if (recent.stamp <= now) {
+      vehicle_->setSpeed(recent.speed);
+      last_speed_taken_ = now;
+    } else {
+      scheduleSpeed(recent.speed, recent.stamp);
+    }
+  }
+  recent_stamped_speeds_.clear();
+}
+
+void VehicleDynamicsNode::warnOfUnslewedSpeedChange(double v, const ros::Time& t) {
+  // Without a slew (~max_acceleration and ~max_deceleration 0, the default) a new speed applies
+  // at once and carries no travel inertia: odom's twist follows a braking source, the IMU and the
+  // hull's pitch do not (review 130: a fused localisation saw the two disagree). Said once, at
+  // the first change a driver would feel: by more than kUnslewedChange at once, or at more than
+  // kUnslewedChange per second over the time since the previous speed took effect.
+  const online::OnlineVehicleOptions& o = params_.vehicle_options;
+  if (unslewed_change_warned_ || o.max_acceleration > 0.0 || o.max_deceleration > 0.0 ||
+      last_speed_taken_.isZero())
+    return;
+  const double change = std::abs(v - vehicle_->commandedSpeed());
+  const double dt = (t - last_speed_taken_).toSec();
+  if (change <= kStandstillNoise || (change <= kUnslewedChange && change <= kUnslewedChange * dt))
+    return;
+  unslewed_change_warned_ = true;
+  const std::string over =
+      dt > 0.0 ? "over " + brief(std::round(dt * 1000.0) / 1000.0) + " s" : "at once";
+  ROS_WARN(
+      "%s: the speed changes from %.3f to %.3f m/s %s, and without a slew (~max_acceleration and "
+      "~max_deceleration 0) it applies at once with no travel inertia: odom follows it, the IMU "
+      "and the hull's pitch do not; set both to the vehicle's limits to feel braking and "
+      "accelerating (said once)",
+      nodeName(), vehicle_->commandedSpeed(), v, over.c_str());
+}
+
+void VehicleDynamicsNode::markSpeedTime(const ros::Time& now) {
+  last_speed_time_ = now;
+  last_speed_steady_ = ros::SteadyTime::now();
+}
+
+double VehicleDynamicsNode::secondsSinceSpeed(const ros::Time& now,
+                                              const ros::SteadyTime& steady) const {
+  // On real time ROS time is the system clock, which an NTP correction steps (back: the vehicle
+  // would drive on for the step's length; forward: stop at once): the monotonic clock instead.
+  return use_sim_time_ ? (now - last_speed_time_).toSec() : (steady - last_speed_steady_).toSec();
+}
+
+}  // namespace ros_layer
+}  // namespace tracked_vehicle_dynamics

@@ -1,0 +1,249 @@
+// rostest tier 2 on simulated time (node_speed_stamped.test, use_sim_time): speed_stamped
+// (geometry_msgs/TwistStamped) through the running node. The test owns /clock, so every step's
+// time is known: a speed stamped at s applies from the first step starting at a sample time
+// t_k >= s, and the sample t_k + h is the first to carry it (road_wheels.speed), whenever the
+// message arrived before that step. Cases, each from the sample the last one ended on:
+//   schedule   two speeds sent 0.15 and 0.30 s ahead, the later one first, off the 1 ms grid:
+//              0 until the sample after the first stamp's grid point, then 3, then 6 m/s
+//   late       stamped 50 ms before the current sample: the next sample carries it; counted
+//   frame      frame_id odom: refused naming the frame, the speed kept
+//   time base  stamped 100 s ahead: taken at once, warned ("another time base"); 100 s behind
+//              (simulated time: maybe a bag loop's next pass, so held for 0.25 s of wall time
+//              for a jump back that does not come): taken then, warned
+//   reset      a speed due after ~reset is dropped with the run it belonged to
+//   mixed      a std_msgs/Float64 on speed as well: taken, and the mix warned about once
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <geometry_msgs/TwistStamped.h>
+#include <rosgraph_msgs/Log.h>
+#include <std_msgs/Float64.h>
+#include <std_srvs/Empty.h>
+
+#include "node_test_utils.h"
+#include "tracked_vehicle_dynamics/RoadWheels.h"
+
+using namespace tracked_vehicle_dynamics;
+using namespace tracked_vehicle_dynamics::ros_layer;
+
+namespace {
+
+constexpr double kBurst = 0.02;  // [s] of simulated time per /clock message
+
+class NodeSpeedStamped : public ::testing::Test {
+ protected:
+  NodeSpeedStamped() : private_nh_("~"), diagnostics_(nh_) {
+    const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+    clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
+    wheels_sub_ = nh_.subscribe("road_wheels", 20000, &NodeSpeedStamped::onWheels, this, hints);
+    rosout_sub_ = nh_.subscribe<rosgraph_msgs::Log>(
+        "/rosout", 1000, [this](const rosgraph_msgs::Log::ConstPtr& m) { log_.push_back(*m); });
+    stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("speed_stamped", 10);
+    speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10);
+    terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
+    // Every summary of the speed status (a WARN lasts one report).
+    diagnostics_sub_ = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
+        "/diagnostics", 100, [this](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
+          for (const auto& status : m->status)
+            if (status.name.size() >= 7 &&
+                status.name.compare(status.name.size() - 7, 7, ": speed") == 0)
+              speed_summaries_.insert(status.message);
+        });
+  }
+
+  void onWheels(const RoadWheels::ConstPtr& m) { speeds_[m->header.stamp] = m->speed; }
+
+  bool advanceTo(const ros::Time& t) {
+    test::publishClock(clock_pub_, t);
+    return test::spinUntil([&] { return speeds_.count(t) > 0; }, 10.0);
+  }
+  /// The clock on by `seconds` in bursts; false when a sample is missing.
+  bool runFor(double seconds) {
+    const ros::Time end = t_ + ros::Duration(seconds);
+    while (t_ < end) {
+      t_ = std::min(end, t_ + ros::Duration(kBurst));
+      if (!advanceTo(t_))
+        return false;
+    }
+    return true;
+  }
+  /// Sends a stamped speed; it reaches the node before the clock moves on.
+  void send(double v, const ros::Time& stamp, const std::string& frame = "base_link") {
+    ASSERT_TRUE(test::spinUntil([&] { return stamped_pub_.getNumSubscribers() > 0; }, 10.0));
+    geometry_msgs::TwistStamped msg;
+    msg.header.stamp = stamp;
+    msg.header.frame_id = frame;
+    msg.twist.linear.x = v;
+    msg.twist.angular.z = 0.3;  // a turning vehicle: ignored (the model drives straight)
+    stamped_pub_.publish(msg);
+    test::spinFor(0.3);
+  }
+  /// The first logged message of the node containing `text`; empty when none.
+  std::string logged(const std::string& text) const {
+    for (const auto& m : log_)
+      if (m.name == "/vehicle_dynamics" && m.msg.find(text) != std::string::npos)
+        return m.msg;
+    return "";
+  }
+  /// A counter of the node's `speed` diagnostics, once a report at or after `t_` is in.
+  double speedCounter(const std::string& key) {
+    EXPECT_TRUE(runFor(0.25));  // two reports at 0.1 s
+    return diagnostics_.value(": speed", key);
+  }
+  /// The speed of every sample in (from, to], in order.
+  std::vector<std::pair<ros::Time, double>> between(const ros::Time& from,
+                                                    const ros::Time& to) const {
+    std::vector<std::pair<ros::Time, double>> out;
+    for (auto it = speeds_.upper_bound(from); it != speeds_.end() && it->first <= to; ++it)
+      out.emplace_back(it->first, it->second);
+    return out;
+  }
+
+  ros::NodeHandle nh_, private_nh_;
+  test::DiagnosticsCache diagnostics_;
+  ros::Publisher clock_pub_, stamped_pub_, speed_pub_, terrain_pub_;
+  ros::Subscriber wheels_sub_, rosout_sub_, diagnostics_sub_;
+  std::set<std::string> speed_summaries_;
+  std::vector<rosgraph_msgs::Log> log_;
+  std::map<ros::Time, double> speeds_;
+  ros::Time t_{1000.0};
+};
+
+TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
+  const double h = 1.0 / test::requiredParam<double>(private_nh_, "rate");
+  const ros::Duration step(h);
+  ASSERT_TRUE(test::tickClockUntil(
+      clock_pub_, &t_, [&] { return !speeds_.empty(); }, 60.0))
+      << "the node published nothing";
+  t_ += step;
+  ASSERT_TRUE(advanceTo(t_));
+  terrain_pub_.publish(test::flatProfile(-20.0, 300.0));
+  test::spinFor(0.3);
+  ASSERT_TRUE(runFor(10 * h));
+  ASSERT_EQ(speeds_.at(t_), 0.0);
+
+  // --- schedule: the later stamp sent first; both off the grid (0.4 us past a step).
+  {
+    SCOPED_TRACE("schedule");
+    const ros::Time t0 = t_;
+    const ros::Time first = t0 + ros::Duration(0.1504), second = t0 + ros::Duration(0.3004);
+    send(6.0, second);
+    send(3.0, first);
+    ASSERT_TRUE(runFor(0.5));
+    // The grid point at or after each stamp starts the step the speed drives; the sample after
+    // it is the first to carry it.
+    const ros::Time first_sample = t0 + ros::Duration(0.151) + step;
+    const ros::Time second_sample = t0 + ros::Duration(0.301) + step;
+    std::size_t checked = 0;
+    for (const auto& [t, v] : between(t0, t_)) {
+      const double expected = t < first_sample ? 0.0 : t < second_sample ? 3.0 : 6.0;
+      EXPECT_EQ(v, expected) << "sample at " << (t - t0).toSec() << " s";
+      ++checked;
+    }
+    EXPECT_EQ(checked, static_cast<std::size_t>(std::lround(0.5 / h)));
+    std::printf(
+        "[ measured ] schedule: 3 m/s from the sample %.4f s after the start (stamp "
+        "%.4f s), 6 m/s from %.4f s (stamp %.4f s)\n",
+        (first_sample - t0).toSec(), (first - t0).toSec(), (second_sample - t0).toSec(),
+        (second - t0).toSec());
+    EXPECT_EQ(speedCounter("stamped speeds late (total)"), 0.0);
+  }
+
+  // --- late: stamped 50 ms before the current sample.
+  {
+    SCOPED_TRACE("late");
+    const ros::Time t0 = t_;
+    send(2.0, t0 - ros::Duration(0.05));
+    ASSERT_TRUE(runFor(0.05));
+    EXPECT_EQ(speeds_.at(t0), 6.0);
+    EXPECT_EQ(speeds_.at(t0 + step), 2.0);  // at once: the next sample
+    EXPECT_EQ(speedCounter("stamped speeds late (total)"), 1.0);
+  }
+
+  // --- frame: odom's x is not the heading; refused naming the frame, the speed kept.
+  {
+    SCOPED_TRACE("frame");
+    const double rejected = diagnostics_.value(": speed", "speeds rejected (total)");
+    send(9.0, t_, "odom");
+    ASSERT_TRUE(runFor(0.05));
+    EXPECT_EQ(speeds_.at(t_), 2.0);
+    EXPECT_EQ(speedCounter("speeds rejected (total)"), rejected + 1.0);
+    EXPECT_EQ(diagnostics_.text(": speed", "last rejection"),
+              "speed_stamped in frame 'odom': its twist.linear.x is taken as the forward speed, "
+              "which it is in 'base_link' (or an empty frame_id) only");
+    EXPECT_NE(logged("speed_stamped in frame 'odom'"), "");
+  }
+
+  // --- another time base, ahead: taken at once.
+  {
+    SCOPED_TRACE("time base ahead");
+    const ros::Time t0 = t_;
+    send(4.0, t0 + ros::Duration(100.0));
+    ASSERT_TRUE(runFor(0.05));
+    EXPECT_EQ(speeds_.at(t0 + step), 4.0);
+    EXPECT_EQ(speedCounter("stamped speeds in another time base (total)"), 1.0);
+    EXPECT_EQ(speed_summaries_.count("speed_stamped stamped in another time base: taken on "
+                                     "arrival"),
+              1u);
+    EXPECT_NE(logged("s ahead of ROS time"), "");
+  }
+
+  // --- another time base, behind: held for a jump back (0.25 s of wall time; send() waits
+  // 0.3 s, and the node's loop looks every 50 ms), then taken.
+  {
+    SCOPED_TRACE("time base behind");
+    const ros::Time t0 = t_;
+    send(1.0, t0 - ros::Duration(100.0));
+    test::spinFor(0.2);
+    ASSERT_TRUE(runFor(0.05));
+    EXPECT_EQ(speeds_.at(t0 + step), 1.0);
+    EXPECT_EQ(speedCounter("stamped speeds in another time base (total)"), 2.0);
+    // The warning is throttled (the one above was said less than 5 s ago): the status names it.
+    EXPECT_NE(diagnostics_.text(": speed", "last in another time base").find("s behind ROS time"),
+              std::string::npos)
+        << diagnostics_.text(": speed", "last in another time base");
+  }
+
+  // --- reset: the schedule belongs to the run it ends.
+  {
+    SCOPED_TRACE("reset");
+    send(5.0, t_ + ros::Duration(0.2));
+    std_srvs::Empty srv;
+    ASSERT_TRUE(ros::service::waitForService("vehicle_dynamics/reset", 10000));
+    ASSERT_TRUE(ros::service::call("vehicle_dynamics/reset", srv));
+    const ros::Time t0 = t_;
+    ASSERT_TRUE(runFor(0.4));
+    for (const auto& [t, v] : between(t0, t_))
+      EXPECT_EQ(v, 0.0) << "sample at " << (t - t0).toSec() << " s after the reset";
+    EXPECT_EQ(speedCounter("stamped speeds waiting for their stamp"), 0.0);
+  }
+
+  // --- mixed: a Float64 as well, taken at the next sample; the mix said once.
+  {
+    SCOPED_TRACE("mixed");
+    EXPECT_EQ(logged("speeds arrive on both"), "");
+    std_msgs::Float64 msg;
+    msg.data = 2.5;
+    ASSERT_TRUE(test::spinUntil([&] { return speed_pub_.getNumSubscribers() > 0; }, 10.0));
+    speed_pub_.publish(msg);
+    test::spinFor(0.3);
+    const ros::Time t0 = t_;
+    ASSERT_TRUE(runFor(0.05));
+    EXPECT_EQ(speeds_.at(t0 + step), 2.5);
+    ASSERT_TRUE(test::spinUntil([&] { return !logged("speeds arrive on both").empty(); }, 5.0));
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "node_speed_stamped");
+  ros::NodeHandle nh;
+  return RUN_ALL_TESTS();
+}
