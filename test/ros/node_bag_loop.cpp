@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <string>
 #include <vector>
 
 #include <geometry_msgs/TwistStamped.h>
@@ -54,6 +55,29 @@ TerrainProfile bumpProfile(double from, double to, double bump_from, double bump
     }
   }
   return msg;
+}
+
+void expectSameRun(const LoopRun& first, const LoopRun& loop, double tolerance, const char* what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(loop.size(), first.size()) << "samples in the loop and in the first run";
+  std::size_t missing = 0, compared = 0;
+  double worst = 0.0, worst_station = 0.0;
+  for (const auto& [ns, reference] : first) {
+    const auto it = loop.find(ns);
+    if (it == loop.end()) {
+      ++missing;
+      continue;
+    }
+    ++compared;
+    worst_station = std::max(worst_station, std::abs(it->second.station - reference.station));
+    ASSERT_EQ(it->second.wheels.size(), reference.wheels.size());
+    for (std::size_t i = 0; i < reference.wheels.size(); ++i)
+      worst = std::max(worst, std::abs(it->second.wheels[i] - reference.wheels[i]));
+  }
+  EXPECT_EQ(missing, 0u) << "samples of the first run missing in the loop";
+  ASSERT_GT(compared, 0u);
+  EXPECT_LE(worst_station, tolerance) << "largest station difference [m]";
+  EXPECT_LE(worst, tolerance) << "largest wheel displacement difference [m]";
 }
 
 class NodeBagLoop : public ::testing::Test {
@@ -132,6 +156,35 @@ class NodeBagLoop : public ::testing::Test {
     recording_ = nullptr;
   }
 
+  /// Two loops with the inputs sent before the /clock message of the jump back: with no pause
+  /// (either may reach the node first), then with one (the inputs surely handled first). Each
+  /// must repeat `reference`.
+  void loopsWithInputsFirst(const LoopRun& reference, double tolerance, const std::string& what) {
+    for (const double pause : {0.0, 0.05}) {
+      LoopRun inputs_first;
+      publishInputs();
+      if (pause > 0.0)
+        test::spinFor(pause);
+      setClock(start_);
+      ASSERT_TRUE(waitForSample(start_));
+      test::spinFor(0.1);
+      play(&inputs_first);
+      expectSameRun(reference, inputs_first, tolerance,
+                    (what + (pause > 0.0 ? "inputs handled before the jump back"
+                                         : "inputs before the jump back"))
+                        .c_str());
+    }
+  }
+  /// A loop with the jump back, then 4 ms of clock (the first three bursts), then the inputs:
+  /// the node holds the restarted vehicle for them. It must repeat `reference`.
+  void loopWithLateInputs(const LoopRun& reference, double tolerance, const std::string& what) {
+    LoopRun late;
+    setClock(start_);
+    ASSERT_TRUE(waitForSample(start_));
+    play(&late, 3);
+    expectSameRun(reference, late, tolerance, (what + "inputs 4 ms after the jump back").c_str());
+  }
+
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
   ros::Publisher clock_pub_, terrain_pub_, speed_pub_, stamped_pub_;
@@ -146,29 +199,6 @@ class NodeBagLoop : public ::testing::Test {
   std::vector<TerrainProfile> patches_;
   std::vector<int> bursts_;
 };
-
-void expectSameRun(const LoopRun& first, const LoopRun& loop, double tolerance, const char* what) {
-  SCOPED_TRACE(what);
-  EXPECT_EQ(loop.size(), first.size()) << "samples in the loop and in the first run";
-  std::size_t missing = 0, compared = 0;
-  double worst = 0.0, worst_station = 0.0;
-  for (const auto& [ns, reference] : first) {
-    const auto it = loop.find(ns);
-    if (it == loop.end()) {
-      ++missing;
-      continue;
-    }
-    ++compared;
-    worst_station = std::max(worst_station, std::abs(it->second.station - reference.station));
-    ASSERT_EQ(it->second.wheels.size(), reference.wheels.size());
-    for (std::size_t i = 0; i < reference.wheels.size(); ++i)
-      worst = std::max(worst, std::abs(it->second.wheels[i] - reference.wheels[i]));
-  }
-  EXPECT_EQ(missing, 0u) << "samples of the first run missing in the loop";
-  ASSERT_GT(compared, 0u);
-  EXPECT_LE(worst_station, tolerance) << "largest station difference [m]";
-  EXPECT_LE(worst, tolerance) << "largest wheel displacement difference [m]";
-}
 
 TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   speed_ = test::requiredParam<double>(private_nh_, "speed");
@@ -214,21 +244,8 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   EXPECT_EQ(first.size(),
             static_cast<std::size_t>(std::accumulate(bursts_.begin(), bursts_.end(), 0)));
 
-  // Second and third loops: the first patches and the speed before the clock jumps back, with no
-  // pause (either may reach the node first), then with one (the inputs surely handled first).
-  for (const double pause : {0.0, 0.05}) {
-    LoopRun inputs_first;
-    publishInputs();
-    if (pause > 0.0)
-      test::spinFor(pause);
-    setClock(start_);
-    ASSERT_TRUE(waitForSample(start_));
-    test::spinFor(0.1);
-    play(&inputs_first);
-    expectSameRun(
-        first, inputs_first, tolerance,
-        pause > 0.0 ? "inputs handled before the jump back" : "inputs before the jump back");
-  }
+  // Second and third loops: the first patches and the speed before the clock jumps back.
+  loopsWithInputsFirst(first, tolerance, "");
 
   // Fourth loop: the jump back first, then the inputs.
   LoopRun clock_first;
@@ -239,12 +256,8 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
   play(&clock_first);
   expectSameRun(first, clock_first, tolerance, "inputs after the jump back");
 
-  // Fifth loop: the jump back, then 4 ms of clock (the first three bursts), then the inputs.
-  LoopRun late;
-  setClock(start_);
-  ASSERT_TRUE(waitForSample(start_));
-  play(&late, 3);
-  expectSameRun(first, late, tolerance, "inputs 4 ms after the jump back");
+  // Fifth loop: the jump back, then 4 ms of clock, then the inputs.
+  loopWithLateInputs(first, tolerance, "");
 
   // Sixth loop: the jump back and no inputs at all. The hold ends after half ~catch_up_limit
   // (50 ms) of clock: the vehicle then steps on (on the restart's flat ground), every step
@@ -284,24 +297,8 @@ TEST_F(NodeBagLoop, EveryLoopGivesTheFirstLoopsSamples) {
               at(305) != stamped_first.end());
   EXPECT_NEAR(at(304)->second.station - at(303)->second.station, speed_ * 1e-3, 1e-12);
   EXPECT_NEAR(at(305)->second.station - at(304)->second.station, changed_speed_ * 1e-3, 1e-12);
-  for (const double pause : {0.0, 0.05}) {
-    LoopRun inputs_first;
-    publishInputs();
-    if (pause > 0.0)
-      test::spinFor(pause);
-    setClock(start_);
-    ASSERT_TRUE(waitForSample(start_));
-    test::spinFor(0.1);
-    play(&inputs_first);
-    expectSameRun(stamped_first, inputs_first, tolerance,
-                  pause > 0.0 ? "stamped: inputs handled before the jump back"
-                              : "stamped: inputs before the jump back");
-  }
-  LoopRun stamped_late;
-  setClock(start_);
-  ASSERT_TRUE(waitForSample(start_));
-  play(&stamped_late, 3);
-  expectSameRun(stamped_first, stamped_late, tolerance, "stamped: inputs 4 ms after the jump back");
+  loopsWithInputsFirst(stamped_first, tolerance, "stamped: ");
+  loopWithLateInputs(stamped_first, tolerance, "stamped: ");
 
   t = start_ + ros::Duration(5.0);  // let the diagnostics period pass on simulated time
   setClock(t);

@@ -191,17 +191,13 @@ class NodeSpeedSlew : public ::testing::Test {
   /// Moves the clock to `t` and waits for both nodes' complete samples at `t`.
   bool advanceTo(const ros::Time& t) {
     test::publishClock(clock_pub_, t);
-    return test::spinUntil([&] { return slewed_.has(t) && unslewed_.has(t); }, 10.0);
+    return test::spinUntil([&] { return has(t); }, 10.0);
   }
+  bool has(const ros::Time& t) const { return slewed_.has(t) && unslewed_.has(t); }
   /// Runs the clock on by `seconds` in bursts of kBurst; false when a sample is missing.
   bool runFor(double seconds) {
-    const ros::Time end = t_ + ros::Duration(seconds);
-    while (t_ < end) {
-      t_ = std::min(end, t_ + ros::Duration(kBurst));
-      if (!advanceTo(t_))
-        return false;
-    }
-    return true;
+    return test::runClockFor(clock_pub_, &t_, seconds, kBurst,
+                             [&](const ros::Time& t) { return has(t); });
   }
   /// Sends speed `v` to both nodes; it reaches them before the clock moves on.
   void command(double v) {

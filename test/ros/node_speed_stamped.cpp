@@ -64,13 +64,8 @@ class NodeSpeedStamped : public ::testing::Test {
   }
   /// The clock on by `seconds` in bursts; false when a sample is missing.
   bool runFor(double seconds) {
-    const ros::Time end = t_ + ros::Duration(seconds);
-    while (t_ < end) {
-      t_ = std::min(end, t_ + ros::Duration(kBurst));
-      if (!advanceTo(t_))
-        return false;
-    }
-    return true;
+    return test::runClockFor(clock_pub_, &t_, seconds, kBurst,
+                             [&](const ros::Time& t) { return speeds_.count(t) > 0; });
   }
   /// Sends a stamped speed; it reaches the node before the clock moves on.
   void send(double v, const ros::Time& stamp, const std::string& frame = "base_link") {

@@ -2,6 +2,7 @@
 // diagnostics per status name, flat terrain patches, and the model the node runs.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -54,6 +55,21 @@ inline bool tickClockUntil(const ros::Publisher& clock, ros::Time* t,
         return started();
       },
       timeout);
+}
+
+/// With use_sim_time: runs *t on by `seconds` of simulated time in /clock messages `burst` apart,
+/// waiting after each for `has(t)` (the node's samples up to it); false when one does not come
+/// within 10 s of wall time.
+inline bool runClockFor(const ros::Publisher& clock, ros::Time* t, double seconds, double burst,
+                        const std::function<bool(const ros::Time&)>& has) {
+  const ros::Time end = *t + ros::Duration(seconds);
+  while (*t < end) {
+    *t = std::min(end, *t + ros::Duration(burst));
+    publishClock(clock, *t);
+    if (!spinUntil([&] { return has(*t); }, 10.0))
+      return false;
+  }
+  return true;
 }
 
 /// Spins for `seconds` of wall time.
