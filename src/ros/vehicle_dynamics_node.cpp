@@ -239,7 +239,8 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     const std::string& prefix = params_.frame_prefix;
     const bool unprefixed_odom = !prefix.empty() && odom.compare(0, prefix.size(), prefix) == 0 &&
                                  bare == odom.substr(prefix.size());
-    if (!bare.empty() && bare != odom && !unprefixed_odom) {
+    latest_patch_other_frame_ = !bare.empty() && bare != odom && !unprefixed_odom;
+    if (latest_patch_other_frame_) {
       ++events_.patches_other_frame;
       last_other_frame_patch_ = "patch at x = " + brief(patch.start_station) + " m in frame '" +
                                 frame + "', not '" + params_.odom_frame + "'";
@@ -253,9 +254,10 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     // every contact reads as meant.
     const Vector& y = vehicle_->sampler().lateral();
     const double offset = params_.vehicle_options.lateral_offset;
-    if (y.size() > 0 && patch.lateral.size() > 1 &&
-        (y.minCoeff() + offset < patch.lateral(0) - 1e-9 ||
-         y.maxCoeff() + offset > patch.lateral(patch.lateral.size() - 1) + 1e-9)) {
+    latest_patch_narrow_ = y.size() > 0 && patch.lateral.size() > 1 &&
+                           (y.minCoeff() + offset < patch.lateral(0) - 1e-9 ||
+                            y.maxCoeff() + offset > patch.lateral(patch.lateral.size() - 1) + 1e-9);
+    if (latest_patch_narrow_) {
       ++events_.patches_narrow;
       std::ostringstream text;
       text << "patch at x = " << patch.start_station << " m spans y = " << patch.lateral(0)
@@ -289,8 +291,10 @@ void VehicleDynamicsNode::notePatchTaken(const ros::Time& stamp) {
   // During a hold, a late patch of the pass before (stamped nearer the old time than the new,
   // and not after the old pass's end: a source stamping in another time base counts as new)
   // neither ends it nor starts the new run's terrain. Unstamped patches cannot be told apart.
-  if (hold_.active && !stamp.isZero() && stamp <= hold_.old_time + ros::Duration(1.0) &&
-      std::abs((stamp - hold_.old_time).toSec()) < std::abs((stamp - hold_.new_time).toSec()))
+  // (Differences in double seconds: ros::Time's own throws beyond 2^31 s, for a wild stamp.)
+  const double s = stamp.toSec();
+  if (hold_.active && !stamp.isZero() && s <= hold_.old_time.toSec() + 1.0 &&
+      std::abs(s - hold_.old_time.toSec()) < std::abs(s - hold_.new_time.toSec()))
     return;
   if (first_patch_lag_ < 0.0)
     first_patch_lag_ = run_start_.isZero() ? 0.0 : std::max(0.0, (now() - run_start_).toSec());
@@ -396,6 +400,7 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
   if (terrain == ResetTerrain::Clear) {
     flat_since_restart_ = true;
     stepped_patch_.clear();  // the offset terrain is gone
+    latest_patch_other_frame_ = latest_patch_narrow_ = false;
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   pending_speeds_.clear();      // the old run's schedule
@@ -448,10 +453,17 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   last_jump_old_time_ = old_time;
   last_jump_arrival_ = ros::SteadyTime::now();
   const std::uint64_t speeds_before = events_.speeds_reapplied;
+  const std::uint64_t patches_before = events_.patches_reapplied;
+  const bool other_frame = latest_patch_other_frame_, narrow = latest_patch_narrow_;
   restart();
   sample_time_ = now;
   run_start_ = now;
   reapplyRecentInputs(now);
+  // The re-applied patches are the ones judged when they arrived: so are their faults.
+  if (events_.patches_reapplied > patches_before) {
+    latest_patch_other_frame_ = other_frame;
+    latest_patch_narrow_ = narrow;
+  }
   // The old pass's patches lost in the re-application belong to it, not to the new run.
   patches_behind_at_restart_ = events_.patches_behind;
   // A bag loop's first patches may reach the node after its /clock has moved on (a loaded
@@ -501,8 +513,10 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   for (const RecentPatch& recent : recent_patches_) {
     const ros::Time& stamp = recent.msg->header.stamp;
     // Not of the new time: a patch dropped as wholly behind is lost for good.
+    // (In double seconds: ros::Time's difference throws beyond 2^31 s, for a wild stamp.)
     if (recent.arrival < oldest || stamp.isZero() ||
-        std::abs((stamp - now).toSec()) >= std::abs((stamp - recent.ros_arrival).toSec())) {
+        std::abs(stamp.toSec() - now.toSec()) >=
+            std::abs(stamp.toSec() - recent.ros_arrival.toSec())) {
       if (!recent.dropped.empty())
         reportDroppedPatch(recent.dropped);
       continue;
@@ -610,15 +624,22 @@ void VehicleDynamicsNode::step() {
     last_speed_time_ = t;
   // A driver that stopped publishing must not leave the vehicle driving on: it stops where it is
   // and the next speed message moves it again. With a speed slew it brakes to a stop at
-  // ~max_deceleration (the commanded speed is what the timeout zeroes, once).
+  // ~max_deceleration (the commanded speed is what the timeout zeroes, once). The stamped speeds
+  // it sent ahead go with it: applied later, they would undo the stop.
   const double since_speed = params_.speed_timeout > 0.0 ? secondsSinceSpeed(t, wall) : 0.0;
-  if (params_.speed_timeout > 0.0 && vehicle_->commandedSpeed() > 0.0 &&
+  if (params_.speed_timeout > 0.0 &&
+      (vehicle_->commandedSpeed() > 0.0 || !pending_speeds_.empty()) &&
       since_speed > params_.speed_timeout) {
-    ROS_WARN("%s: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m", nodeName(),
+    const std::string schedule = pending_speeds_.empty()
+                                     ? std::string()
+                                     : " (dropping the " + std::to_string(pending_speeds_.size()) +
+                                           " stamped speeds still waiting for their stamps)";
+    ROS_WARN("%s: no speed message for %.3f s (~speed_timeout %.3f s): %s %.3f m%s", nodeName(),
              since_speed, params_.speed_timeout,
              vehicle_->slews() ? "braking to a stop at ~max_deceleration from station"
                                : "stopping the vehicle at station",
-             vehicle_->station());
+             vehicle_->station(), schedule.c_str());
+    pending_speeds_.clear();
     vehicle_->setSpeed(0.0);
     ++events_.speed_timeouts;
     stopped_by_timeout_ = true;

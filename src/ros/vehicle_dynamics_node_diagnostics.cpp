@@ -154,11 +154,11 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "terrain stepped off the ground since the start or reset (altitudes or units?): "
                    "the outputs on it are offset until ~reset");
-  } else if (other_frame > 0) {
+  } else if (other_frame > 0 || latest_patch_other_frame_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches in another frame than " + params_.odom_frame +
                        ": taken as stations along this vehicle's path");
-  } else if (narrow > 0) {
+  } else if (narrow > 0 || latest_patch_narrow_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "patches narrower than the contacts: the outer ones read the edge lines");
   } else if (last_uncovered_ > 0 && standingOnClearedGround()) {

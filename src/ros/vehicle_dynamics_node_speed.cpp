@@ -40,6 +40,10 @@ constexpr double kStandstillNoise = 1e-3;  // [m/s]
 // delivery delay and a catch-up.
 constexpr double kStampRange = 1.0;
 
+// Stamped speeds kept waiting for their stamps at most: a second of them at 1 kHz. Only a source
+// sending ahead while ROS time stands still (a paused /clock) fills it; beyond, refused.
+constexpr std::size_t kMaxPendingSpeeds = 1000;
+
 double standstill(double v) {
   return v < 0.0 && v >= -kStandstillNoise ? 0.0 : v;
 }
@@ -122,6 +126,9 @@ void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::Cons
   std::string why = speedFrameProblem(msg->header.frame_id);
   if (why.empty())
     why = speedProblem(v);
+  if (why.empty() && pending_speeds_.size() >= kMaxPendingSpeeds)
+    why = "speed_stamped: " + std::to_string(kMaxPendingSpeeds) +
+          " speeds already wait for their stamps (is ROS time standing still?)";
   if (!why.empty()) {
     rejectSpeed(why);
     return;
@@ -139,7 +146,9 @@ void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::Cons
     return;
   }
   const ros::SteadyTime arrival = ros::SteadyTime::now();
-  const double ahead = (stamp - t).toSec();
+  // In seconds as doubles: ros::Time's difference throws beyond 2^31 s, and a wild stamp must
+  // be judged, not end the callback.
+  const double ahead = stamp.toSec() - t.toSec();
   if (use_sim_time_ && ahead > kStampRange && !last_jump_arrival_.isZero() &&
       arrival - last_jump_arrival_ < ros::WallDuration(kRewindWindow) &&
       stamp <= last_jump_old_time_) {
@@ -169,23 +178,28 @@ void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::Cons
 }
 
 void VehicleDynamicsNode::scheduleSpeed(double v, const ros::Time& stamp) {
+  // Kept in stamp order (a source may send out of order); a second speed for the same stamp
+  // replaces the first (a re-sent plan).
+  const auto at =
+      std::lower_bound(pending_speeds_.begin(), pending_speeds_.end(), stamp,
+                       [](const PendingSpeed& p, const ros::Time& s) { return p.stamp < s; });
+  if (at != pending_speeds_.end() && at->stamp == stamp)
+    at->speed = v;
+  else
+    pending_speeds_.insert(at, {v, stamp});
+  if (hold_.active)
+    hold_.speed = true;  // it applies during the held steps, at its stamp
   if (stamp <= sample_time_) {
-    // The step at or after the stamp has been taken: applied at once, from the current sample.
+    // The step at or after the stamp has been taken: applied at once, from the current sample,
+    // with any other one now due, in stamp order (an older one still waiting for the next step
+    // must not override it then).
     const std::int64_t late_ns = (sample_time_ - stamp).toNSec();
     if (late_ns >= step_ns_) {
       ++events_.speeds_late;
       max_speed_lateness_ = std::max(max_speed_lateness_, late_ns * 1e-9);
     }
-    takeSpeed(v, sample_time_);
-    return;
+    applyDueSpeeds();
   }
-  // Kept in stamp order (a source may send out of order; equal stamps keep their arrival order).
-  const auto at =
-      std::upper_bound(pending_speeds_.begin(), pending_speeds_.end(), stamp,
-                       [](const ros::Time& s, const PendingSpeed& p) { return s < p.stamp; });
-  pending_speeds_.insert(at, {v, stamp});
-  if (hold_.active)
-    hold_.speed = true;  // it applies during the held steps, at its stamp
 }
 
 void VehicleDynamicsNode::applyDueSpeeds() {
@@ -207,7 +221,7 @@ void VehicleDynamicsNode::takeSpeed(double v, const ros::Time& t) {
 void VehicleDynamicsNode::takeSpeedOfOtherTimeBase(double v, const ros::Time& stamp,
                                                    const ros::Time& t) {
   ++events_.speeds_other_time_base;
-  const double ahead = (stamp - t).toSec();
+  const double ahead = stamp.toSec() - t.toSec();
   last_other_time_base_ =
       "stamp " + brief(stamp.toSec()) + " s is " + brief(std::round(std::abs(ahead) * 1e3) / 1e3) +
       " s " + (ahead > 0.0 ? "ahead of" : "behind") + " ROS time " + brief(t.toSec()) + " s";
@@ -250,19 +264,16 @@ void VehicleDynamicsNode::reapplyRecentSpeeds(const ros::Time& now) {
   recent_speed_arrival_ = ros::SteadyTime();
   // A stamped speed of the new time (stamped nearer it than the ROS time it arrived at, as a
   // patch is judged) applies at its stamp: now if that has passed, later if it lies ahead.
+  // scheduleSpeed() keeps them in stamp order, those not after `now` applied at once.
   for (const RecentSpeed& recent : recent_stamped_speeds_) {
-    if (recent.arrival < oldest || std::abs((recent.stamp - now).toSec()) >=
-                                       std::abs((recent.stamp - recent.ros_arrival).toSec()))
+    const double stamp = recent.stamp.toSec();
+    if (recent.arrival < oldest ||
+        std::abs(stamp - now.toSec()) >= std::abs(stamp - recent.ros_arrival.toSec()))
       continue;  // the old pass's: gone with it
     stopped_by_timeout_ = false;
     markSpeedTime(now);
     ++events_.speeds_reapplied;
-    if (recent.stamp <= now) {
-      vehicle_->setSpeed(recent.speed);
-      last_speed_taken_ = now;
-    } else {
-      scheduleSpeed(recent.speed, recent.stamp);
-    }
+    scheduleSpeed(recent.speed, recent.stamp);
   }
   recent_stamped_speeds_.clear();
 }

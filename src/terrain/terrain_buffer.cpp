@@ -101,29 +101,39 @@ const TerrainBuffer::Patch* TerrainBuffer::containing(double x) const {
 }
 
 bool TerrainBuffer::bridge(double x, const Patch** left, const Patch** right) const {
+  // The heights across the gap come from the newest patch at each side; whether the gap is
+  // bridged is judged on the coarsest spacing of all the patches ending (starting) there, the
+  // rule updateExtents() follows, so that x within coveredUntil() always has a height.
   *left = nullptr;
   *right = nullptr;
+  double left_spacing = 0.0, right_spacing = 0.0;
   const double gap_limit = bridgeableGap(max_spacing_);
   for (auto it = patches_.upper_bound(x); it != patches_.begin();) {
     --it;
     if (it->first < x - max_length_ - gap_limit)
       break;
     const Patch& patch = it->second;
-    if (patch.end() < x && patch.end() >= x - gap_limit &&
-        (*left == nullptr || patch.end() > (*left)->end() ||
-         (patch.end() == (*left)->end() && patch.sequence > (*left)->sequence))) {
+    if (patch.end() >= x || patch.end() < x - gap_limit)
+      continue;
+    if (*left == nullptr || patch.end() > (*left)->end()) {
       *left = &patch;
+      left_spacing = patch.spacing;
+    } else if (patch.end() == (*left)->end()) {
+      left_spacing = std::max(left_spacing, patch.spacing);
+      if (patch.sequence > (*left)->sequence)
+        *left = &patch;
     }
   }
   const auto next = patches_.upper_bound(x);
   if (*left == nullptr || next == patches_.end())
     return false;
   for (auto it = next; it != patches_.end() && it->first == next->first; ++it) {
+    right_spacing = std::max(right_spacing, it->second.spacing);
     if (*right == nullptr || it->second.sequence > (*right)->sequence)
       *right = &it->second;
   }
   const double gap = (*right)->grid.startStation() - (*left)->end();
-  return gap <= bridgeableGap(std::max((*left)->spacing, (*right)->spacing));
+  return gap <= bridgeableGap(std::max(left_spacing, right_spacing));
 }
 
 const Terrain* TerrainBuffer::gridFor(double x, double* from, double* until) const {
@@ -256,16 +266,28 @@ void TerrainBuffer::updateExtents() {
   covered_until_ = -std::numeric_limits<double>::infinity();
   if (empty())
     return;
+  // As bridge() judges a gap: on the coarsest spacing of the patches ending at the reach and of
+  // those starting after the gap (equal starts taken together).
   double reach = patches_.begin()->first;
-  double reach_spacing = patches_.begin()->second.spacing;
-  for (const auto& [start, patch] : patches_) {
-    const double gap_limit = bridgeableGap(std::max(reach_spacing, patch.spacing));
-    if (start > reach + gap_limit)
+  double reach_spacing = 0.0;
+  for (auto group = patches_.begin(); group != patches_.end();) {
+    const double start = group->first;
+    const auto group_end = patches_.upper_bound(start);
+    double group_spacing = 0.0;
+    for (auto it = group; it != group_end; ++it)
+      group_spacing = std::max(group_spacing, it->second.spacing);
+    if (start > reach + bridgeableGap(std::max(reach_spacing, group_spacing)))
       break;
-    if (patch.end() > reach) {
-      reach = patch.end();
-      reach_spacing = patch.spacing;
+    for (auto it = group; it != group_end; ++it) {
+      const Patch& patch = it->second;
+      if (patch.end() > reach) {
+        reach = patch.end();
+        reach_spacing = patch.spacing;
+      } else if (patch.end() == reach) {
+        reach_spacing = std::max(reach_spacing, patch.spacing);
+      }
     }
+    group = group_end;
   }
   covered_until_ = reach;
 }

@@ -1170,6 +1170,45 @@ TEST(TerrainBuffer, ContiguousPatchesActAsOneGrid) {
   EXPECT_TRUE(buffer.covers(5.5));
 }
 
+// Patches ending (or starting) at the same station with different spacings: whether the gap
+// after (before) them is bridged is judged the same way by the contiguous coverage and by the
+// height lookup, so every station up to coveredUntil() has a height (review 132: a fine patch
+// ending with a coarse one made the coverage bridge a gap the lookup refused, and every step of
+// the online vehicle threw there).
+TEST(TerrainBuffer, CoverageAndLookupAgreeOnPatchesEndingOrStartingTogether) {
+  const auto expectHeightsUpToCoverage = [](const TerrainBuffer& buffer, double until) {
+    EXPECT_NEAR(buffer.coveredUntil(), until, kRoundoff);
+    for (double x = buffer.coveredFrom(); x <= buffer.coveredUntil(); x += 0.01) {
+      ASSERT_TRUE(buffer.covers(x)) << "x = " << x;
+      EXPECT_NEAR(buffer.height(x, 0.0), 0.1 * x, 1e-9) << "x = " << x;
+    }
+  };
+  {
+    SCOPED_TRACE("equal ends");
+    TerrainBuffer buffer;
+    addPlane(&buffer, 0.0, 1.0, 11);   // 0 .. 10, coarse
+    addPlane(&buffer, 9.0, 0.1, 11);   // 9 .. 10, fine and newer: the heights near 10 m
+    addPlane(&buffer, 11.2, 0.1, 11);  // after a 1.2 m gap: within 1.5 of the coarse spacing
+    expectHeightsUpToCoverage(buffer, 12.2);
+  }
+  {
+    SCOPED_TRACE("equal starts");
+    TerrainBuffer buffer;
+    addPlane(&buffer, 0.0, 0.1, 11);  // 0 .. 1.0
+    addPlane(&buffer, 1.2, 1.0, 11);  // 1.2 .. 11.2, coarse: bridges the 0.2 m gap
+    addPlane(&buffer, 1.2, 0.05, 5);  // 1.2 .. 1.4, fine and newer: the heights after the gap
+    expectHeightsUpToCoverage(buffer, 11.2);
+  }
+  {
+    SCOPED_TRACE("a gap neither side bridges");
+    TerrainBuffer buffer;
+    addPlane(&buffer, 0.0, 0.1, 11);  // 0 .. 1.0
+    addPlane(&buffer, 1.2, 0.1, 11);  // a 0.2 m gap > 1.5 x 0.1 m
+    expectHeightsUpToCoverage(buffer, 1.0);
+    EXPECT_FALSE(buffer.covers(1.1));
+  }
+}
+
 TEST(TerrainBuffer, NewerPatchWinsAndFreesCoveredOnes) {
   TerrainBuffer buffer;
   addPlane(&buffer, 0.0, 0.1, 20);  // 0 .. 1.9

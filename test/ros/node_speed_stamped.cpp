@@ -10,7 +10,11 @@
 //   time base  stamped 100 s ahead: taken at once, warned ("another time base"); 100 s behind
 //              (simulated time: maybe a bag loop's next pass, so held for 0.25 s of wall time
 //              for a jump back that does not come): taken then, warned
+//   order      a speed arriving after its stamp, while an older one still waits for the next
+//              step, is applied after that one, not overridden by it
 //   reset      a speed due after ~reset is dropped with the run it belonged to
+//   timeout    (a second node, ~speed_timeout 0.5 s) the driver dies with a speed sent 0.8 s
+//              ahead: the vehicle stops at the timeout and the speed sent ahead never applies
 //   mixed      a std_msgs/Float64 on speed as well: taken, and the mix warned about once
 #include <gtest/gtest.h>
 
@@ -34,6 +38,8 @@ using namespace tracked_vehicle_dynamics::ros_layer;
 namespace {
 
 constexpr double kBurst = 0.02;  // [s] of simulated time per /clock message
+// The first node's speed status (the second is timeout_dynamics).
+const std::string kSpeedStatus = "vehicle_dynamics: speed";
 
 class NodeSpeedStamped : public ::testing::Test {
  protected:
@@ -41,6 +47,11 @@ class NodeSpeedStamped : public ::testing::Test {
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
     clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 10);
     wheels_sub_ = nh_.subscribe("road_wheels", 20000, &NodeSpeedStamped::onWheels, this, hints);
+    timeout_wheels_sub_ = nh_.subscribe<RoadWheels>(
+        "timeout/road_wheels", 20000,
+        [this](const RoadWheels::ConstPtr& m) { timeout_speeds_[m->header.stamp] = m->speed; },
+        ros::VoidConstPtr(), hints);
+    timeout_stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("timeout/speed_stamped", 10);
     rosout_sub_ = nh_.subscribe<rosgraph_msgs::Log>(
         "/rosout", 1000, [this](const rosgraph_msgs::Log::ConstPtr& m) { log_.push_back(*m); });
     stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("speed_stamped", 10);
@@ -50,8 +61,7 @@ class NodeSpeedStamped : public ::testing::Test {
     diagnostics_sub_ = nh_.subscribe<diagnostic_msgs::DiagnosticArray>(
         "/diagnostics", 100, [this](const diagnostic_msgs::DiagnosticArray::ConstPtr& m) {
           for (const auto& status : m->status)
-            if (status.name.size() >= 7 &&
-                status.name.compare(status.name.size() - 7, 7, ": speed") == 0)
+            if (status.name == kSpeedStatus)
               speed_summaries_.insert(status.message);
         });
   }
@@ -69,26 +79,30 @@ class NodeSpeedStamped : public ::testing::Test {
   }
   /// Sends a stamped speed; it reaches the node before the clock moves on.
   void send(double v, const ros::Time& stamp, const std::string& frame = "base_link") {
-    ASSERT_TRUE(test::spinUntil([&] { return stamped_pub_.getNumSubscribers() > 0; }, 10.0));
+    sendOn(stamped_pub_, v, stamp, frame);
+  }
+  void sendOn(const ros::Publisher& pub, double v, const ros::Time& stamp,
+              const std::string& frame = "base_link") {
+    ASSERT_TRUE(test::spinUntil([&] { return pub.getNumSubscribers() > 0; }, 10.0));
     geometry_msgs::TwistStamped msg;
     msg.header.stamp = stamp;
     msg.header.frame_id = frame;
     msg.twist.linear.x = v;
     msg.twist.angular.z = 0.3;  // a turning vehicle: ignored (the model drives straight)
-    stamped_pub_.publish(msg);
+    pub.publish(msg);
     test::spinFor(0.3);
   }
-  /// The first logged message of the node containing `text`; empty when none.
-  std::string logged(const std::string& text) const {
+  /// The first logged message of node `name` containing `text`; empty when none.
+  std::string logged(const std::string& text, const std::string& name = "/vehicle_dynamics") const {
     for (const auto& m : log_)
-      if (m.name == "/vehicle_dynamics" && m.msg.find(text) != std::string::npos)
+      if (m.name == name && m.msg.find(text) != std::string::npos)
         return m.msg;
     return "";
   }
   /// A counter of the node's `speed` diagnostics, once a report at or after `t_` is in.
   double speedCounter(const std::string& key) {
     EXPECT_TRUE(runFor(0.25));  // two reports at 0.1 s
-    return diagnostics_.value(": speed", key);
+    return diagnostics_.value(kSpeedStatus, key);
   }
   /// The speed of every sample in (from, to], in order.
   std::vector<std::pair<ros::Time, double>> between(const ros::Time& from,
@@ -101,8 +115,9 @@ class NodeSpeedStamped : public ::testing::Test {
 
   ros::NodeHandle nh_, private_nh_;
   test::DiagnosticsCache diagnostics_;
-  ros::Publisher clock_pub_, stamped_pub_, speed_pub_, terrain_pub_;
-  ros::Subscriber wheels_sub_, rosout_sub_, diagnostics_sub_;
+  ros::Publisher clock_pub_, stamped_pub_, speed_pub_, terrain_pub_, timeout_stamped_pub_;
+  ros::Subscriber wheels_sub_, rosout_sub_, diagnostics_sub_, timeout_wheels_sub_;
+  std::map<ros::Time, double> timeout_speeds_;  // the second node's
   std::set<std::string> speed_summaries_;
   std::vector<rosgraph_msgs::Log> log_;
   std::map<ros::Time, double> speeds_;
@@ -163,12 +178,12 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
   // --- frame: odom's x is not the heading; refused naming the frame, the speed kept.
   {
     SCOPED_TRACE("frame");
-    const double rejected = diagnostics_.value(": speed", "speeds rejected (total)");
+    const double rejected = diagnostics_.value(kSpeedStatus, "speeds rejected (total)");
     send(9.0, t_, "odom");
     ASSERT_TRUE(runFor(0.05));
     EXPECT_EQ(speeds_.at(t_), 2.0);
     EXPECT_EQ(speedCounter("speeds rejected (total)"), rejected + 1.0);
-    EXPECT_EQ(diagnostics_.text(": speed", "last rejection"),
+    EXPECT_EQ(diagnostics_.text(kSpeedStatus, "last rejection"),
               "speed_stamped in frame 'odom': its twist.linear.x is taken as the forward speed, "
               "which it is in 'base_link' (or an empty frame_id) only");
     EXPECT_NE(logged("speed_stamped in frame 'odom'"), "");
@@ -199,9 +214,51 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     EXPECT_EQ(speeds_.at(t0 + step), 1.0);
     EXPECT_EQ(speedCounter("stamped speeds in another time base (total)"), 2.0);
     // The warning is throttled (the one above was said less than 5 s ago): the status names it.
-    EXPECT_NE(diagnostics_.text(": speed", "last in another time base").find("s behind ROS time"),
-              std::string::npos)
-        << diagnostics_.text(": speed", "last in another time base");
+    EXPECT_NE(
+        diagnostics_.text(kSpeedStatus, "last in another time base").find("s behind ROS time"),
+        std::string::npos)
+        << diagnostics_.text(kSpeedStatus, "last in another time base");
+  }
+
+  // --- order: A stamped 15.5 ms on is still waiting when the sample at 16 ms is taken (a step
+  // applies the speeds due at its start, 15 ms); B, stamped 15.8 ms, arrives then: due at once,
+  // it is applied after A, and the step from 16 ms runs at B.
+  {
+    SCOPED_TRACE("order");
+    const ros::Time t0 = t_;
+    send(5.0, t0 + ros::Duration(0.0155));
+    t_ = t0 + ros::Duration(0.016);
+    ASSERT_TRUE(advanceTo(t_));
+    send(0.5, t0 + ros::Duration(0.0158));
+    ASSERT_TRUE(runFor(0.01));
+    EXPECT_EQ(speeds_.at(t0 + ros::Duration(0.016)), 1.0);  // the speed before both
+    EXPECT_EQ(speeds_.at(t0 + ros::Duration(0.017)), 0.5);
+    EXPECT_EQ(speeds_.at(t_), 0.5);
+  }
+
+  // --- timeout (the second node): the driver sends 4 m/s now and 8 m/s for 0.8 s on, then dies.
+  {
+    SCOPED_TRACE("timeout");
+    const ros::Time t0 = t_;
+    ASSERT_TRUE(timeout_speeds_.count(t0) > 0) << "the second node published nothing";
+    sendOn(timeout_stamped_pub_, 4.0, t0);
+    sendOn(timeout_stamped_pub_, 8.0, t0 + ros::Duration(0.8));
+    ASSERT_TRUE(runFor(1.2));
+    const auto samples = std::vector<std::pair<ros::Time, double>>(timeout_speeds_.upper_bound(t0),
+                                                                   timeout_speeds_.upper_bound(t_));
+    ASSERT_FALSE(samples.empty());
+    double stopped_at = -1.0;
+    for (const auto& [t, v] : samples) {
+      EXPECT_NE(v, 8.0) << "the dead driver's speed applied at " << (t - t0).toSec() << " s";
+      if (v == 0.0 && stopped_at < 0.0)
+        stopped_at = (t - t0).toSec();
+    }
+    EXPECT_EQ(samples.front().second, 4.0);
+    EXPECT_NEAR(stopped_at, 0.5, 0.002);  // the first step after 0.5 s without a message
+    EXPECT_EQ(samples.back().second, 0.0);
+    EXPECT_NE(logged("dropping the 1 stamped speeds still waiting for their stamps",
+                     "/timeout/timeout_dynamics"),
+              "");
   }
 
   // --- reset: the schedule belongs to the run it ends.

@@ -372,6 +372,26 @@ TEST_F(NodeStatic, APatchInAnotherFrameIsTakenAndWarnedAbout) {
   EXPECT_EQ(diagnostics_.text(": terrain", "last patch in another frame"),
             "patch at x = -20 m in frame 'veh2/odom', not '" + prefix_ + "odom'");
   EXPECT_GE(diagnostics_.value(": terrain", "patches accepted (total)"), 3.0);
+  // The WARN lasts while the latest patch is in another frame, reports with no new patch
+  // included (a source sending a patch every few periods must not flicker between WARN and OK)...
+  const std::size_t arrays = diagnostics_.arrays();
+  ASSERT_TRUE(test::spinUntil([&] { return diagnostics_.arrays() >= arrays + 3; }, 10.0));
+  EXPECT_EQ(diagnostics_.level(": terrain"), 1) << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.message(": terrain"),
+            "patches in another frame than " + prefix_ +
+                "odom: taken as stations along this vehicle's path");
+  // ... and ends with the next patch in its own frame.
+  TerrainProfile own = test::flatProfile(-20.0, 20.0);
+  own.header.frame_id = prefix_ + "odom";
+  terrain_pub_.publish(own);
+  ASSERT_TRUE(test::spinUntil(
+      [&] {
+        return diagnostics_.value(": terrain", "patches accepted (total)") >= 4.0 &&
+               diagnostics_.level(": terrain") == 0;
+      },
+      10.0))
+      << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.value(": terrain", "patches in another frame (total)"), 1.0);
 }
 
 }  // namespace

@@ -20,9 +20,9 @@
 // and a diagnostics entry.
 //
 // Threading: the vehicle is owned by one tick at a time, which takes its own callback queue
-// (terrain, speed, ~reset, ~reset_to and, with use_sim_time, /clock) first: no locks, a
-// deterministic step order, and a message is used at the next tick (latency <= one period plus
-// the step).
+// (terrain, speed, speed_stamped, ~reset, ~reset_to and, with use_sim_time, /clock) first: no
+// locks, a deterministic step order, and a message is used at the next tick (latency <= one
+// period plus the step; a stamped speed at the step of its stamp, if that comes later).
 // - Real time: the tick runs in roscpp's network thread (NetworkThreadTimer), one wake-up per
 //   tick where a thread of our own costs two and a hand-off (a ros::Timer costs more still).
 //   The step is microseconds, so the network thread's other work waits little.
@@ -312,6 +312,10 @@ class VehicleDynamicsNode {
   // the ground before it (empty: none): the terrain after it, and every output on it, sit that
   // far off (absolute altitudes, units) until a reset clears the terrain.
   std::string stepped_patch_;
+  // The last patch taken named another frame than the odom frame, or was narrower than the
+  // contacts: the terrain status WARNs until a patch without the fault is taken (a source that
+  // sends one patch per few report periods would otherwise flicker between WARN and OK).
+  bool latest_patch_other_frame_ = false, latest_patch_narrow_ = false;
   diagnostic_updater::Updater updater_;
 
   // Messages reused every publication.
