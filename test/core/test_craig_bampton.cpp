@@ -3,14 +3,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <utility>
 
+#include "expect_input_error.h"
 #include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/reduction/craig_bampton.h"
+#include "tracked_vehicle_dynamics/reduction/reduced_damping.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
@@ -250,6 +253,40 @@ TEST(CraigBampton, ModalDampingGivesTheRatioInEveryReducedMode) {
 
   options.damping.modal_ratios = Vector::Constant(3, 0.02);  // 8 reduced modes, not 3
   EXPECT_THROW(craigBampton(system, m, options), InputError);
+}
+
+// reducedDamping() refuses what no damping model means, naming the coefficient and its value
+// (the vehicle description refuses them first; a caller of the core alone meets these).
+TEST(ReducedDamping, RefusesNegativeOrNonFiniteCoefficientsAndMismatchedSizes) {
+  const Matrix m = Matrix::Identity(2, 2);
+  const Matrix k = Eigen::Vector2d(4.0, 9.0).asDiagonal();
+  const Matrix c = Matrix::Zero(2, 2);
+  DampingOptions rayleigh;
+  rayleigh.model = DampingModel::Rayleigh;
+  rayleigh.alpha = -0.1;
+  expectInputError([&] { reducedDamping(m, k, c, rayleigh); },
+                   {"reducedDamping: alpha = -0.1", "finite and non-negative"});
+  rayleigh.alpha = 0.0;
+  rayleigh.beta = std::numeric_limits<double>::quiet_NaN();
+  expectInputError([&] { reducedDamping(m, k, c, rayleigh); }, "reducedDamping: beta = nan");
+  DampingOptions modal;
+  modal.model = DampingModel::Modal;
+  modal.modal_ratios = Eigen::Vector2d(0.02, -0.01);
+  expectInputError([&] { reducedDamping(m, k, c, modal); },
+                   "reducedDamping: modal damping ratio = -0.01");
+  modal.modal_ratios = Vector::Constant(3, 0.02);
+  expectInputError([&] { reducedDamping(m, k, c, modal); },
+                   "3 modal damping ratios for 2 reduced modes");
+  expectInputError([&] { reducedDamping(m, k, Matrix::Zero(3, 3), DampingOptions()); },
+                   "M_R 2x2, K_R 2x2 and C_R 3x3 must be square of one size");
+  // Zero coefficients are no damping at all, not an error; a valid ratio gives 2 zeta omega.
+  rayleigh.beta = 0.0;
+  EXPECT_EQ(reducedDamping(m, k, c, rayleigh), c);
+  modal.modal_ratios = Eigen::Vector2d(0.05, 0.1);
+  const Matrix modal_c = reducedDamping(m, k, c, modal);
+  EXPECT_NEAR(modal_c(0, 0), 2.0 * 0.05 * 2.0, 1e-12);  // omega = 2 rad/s
+  EXPECT_NEAR(modal_c(1, 1), 2.0 * 0.1 * 3.0, 1e-12);   // omega = 3 rad/s
+  EXPECT_NEAR(modal_c(0, 1), 0.0, 1e-12);
 }
 
 TEST(CraigBampton, BareMatricesGiveTheSameReducedSystem) {
