@@ -296,6 +296,7 @@ void VehicleDynamicsNode::notePatchTaken(const ros::Time& stamp) {
   if (hold_.active && !stamp.isZero() && s <= hold_.old_time.toSec() + 1.0 &&
       std::abs(s - hold_.old_time.toSec()) < std::abs(s - hold_.new_time.toSec()))
     return;
+  alignRestart(stamp);  // a bag loop's first patch after the jump back: the loop's start
   if (first_patch_lag_ < 0.0)
     first_patch_lag_ = run_start_.isZero() ? 0.0 : std::max(0.0, (now() - run_start_).toSec());
   if (hold_.active)
@@ -403,7 +404,9 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
     latest_patch_other_frame_ = latest_patch_narrow_ = false;
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
+  restart_movable_ = false;     // restartAfterJump() allows it for its own restart
   pending_speeds_.clear();      // the old run's schedule
+  applied_speed_stamp_ = ros::Time();
   hold_ = Hold();
   run_start_ = now();
   // Terrain kept (~reset_to keep_terrain) is there from the run's start.
@@ -451,6 +454,7 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   const bool had_speed = vehicle_->commandedSpeed() > 0.0 || (hold_.active && hold_.awaiting_speed);
   const ros::Time old_time = sample_time_;
   last_jump_old_time_ = old_time;
+  last_jump_new_time_ = now;
   last_jump_arrival_ = ros::SteadyTime::now();
   const std::uint64_t speeds_before = events_.speeds_reapplied;
   const std::uint64_t patches_before = events_.patches_reapplied;
@@ -458,6 +462,8 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   restart();
   sample_time_ = now;
   run_start_ = now;
+  restart_movable_ = !now.isZero();
+  alignRestart(earliestRecentStamp(now));
   reapplyRecentInputs(now);
   // The re-applied patches are the ones judged when they arrived: so are their faults.
   if (events_.patches_reapplied > patches_before) {
@@ -489,6 +495,41 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   }
   publishState();
   reportDiagnostics(now);
+}
+
+ros::Time VehicleDynamicsNode::earliestRecentStamp(const ros::Time& now) const {
+  // The inputs reapplyRecentInputs() takes as the new time's (stamped nearer `now` than the ROS
+  // time they arrived at), stamped at or before `now`.
+  const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
+  const double t = now.toSec();
+  ros::Time earliest;
+  const auto consider = [&](const ros::Time& stamp, const ros::Time& ros_arrival,
+                            const ros::SteadyTime& arrival) {
+    const double s = stamp.toSec();
+    if (arrival < oldest || stamp.isZero() || stamp > now ||
+        std::abs(s - t) >= std::abs(s - ros_arrival.toSec()))
+      return;
+    if (earliest.isZero() || stamp < earliest)
+      earliest = stamp;
+  };
+  for (const RecentPatch& recent : recent_patches_)
+    consider(recent.msg->header.stamp, recent.ros_arrival, recent.arrival);
+  for (const RecentSpeed& recent : recent_stamped_speeds_)
+    consider(recent.stamp, recent.ros_arrival, recent.arrival);
+  return earliest;
+}
+
+void VehicleDynamicsNode::alignRestart(const ros::Time& stamp) {
+  // rosbag play's /clock follows the wall clock: the first /clock after a loop's jump back is a
+  // few milliseconds past the loop's start (6 to 9 ms measured, review 131), and the restart,
+  // stamped there, put every later loop that much behind the first and off its step grid (35 to
+  // 41 mm of station at 20 km/h). The loop's first inputs are stamped at its start: before any
+  // step, the restart moves back to them (at most holdLimit(), which the catch-up then steps).
+  if (!restart_movable_ || stamp.isZero() || stamp >= sample_time_ ||
+      last_jump_new_time_.toSec() - stamp.toSec() > holdLimit())
+    return;
+  sample_time_ = stamp;
+  run_start_ = stamp;
 }
 
 void VehicleDynamicsNode::reportDiagnostics(const ros::Time& now) {
@@ -746,6 +787,7 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   }
   max_steps_in_tick_ = std::max(max_steps_in_tick_, due);
   for (std::int64_t k = 0; k < due; ++k) {
+    restart_movable_ = false;  // stepped: the restart's time is taken
     applyDueSpeeds();  // the stamped speeds whose time has come: this step is driven by them
     const auto step_start = Clock::now();
     const StepResult result = vehicle_->step();

@@ -251,6 +251,8 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
   status.add("last in another time base", last_other_time_base_);
   status.add("stamped in the pass before a jump back, dropped (total)",
              events_.speeds_of_pass_before);
+  status.add("stamped before the stamped speed in force, dropped (total)",
+             events_.speeds_superseded);
   status.add("speed timeout [s]", params_.speed_timeout);
   status.add("stops after the speed timeout (total)", events_.speed_timeouts);
 }

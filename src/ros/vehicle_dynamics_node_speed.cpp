@@ -11,6 +11,7 @@
 // default 100 Hz clock).
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -80,8 +81,10 @@ std::string VehicleDynamicsNode::speedFrameProblem(const std::string& frame) con
   std::string allowed = "'" + params_.base_frame + "'";
   if (!params_.footprint_frame.empty())
     allowed += " or '" + params_.footprint_frame + "'";
+  if (!prefix.empty())
+    allowed += " (with or without '" + prefix + "')";
   return "speed_stamped in frame '" + frame + "': its twist.linear.x is taken as the forward " +
-         "speed, which it is in " + allowed + " (or an empty frame_id) only";
+         "speed, which it is in " + allowed + " or an empty frame_id only";
 }
 
 void VehicleDynamicsNode::rejectSpeed(const std::string& why) {
@@ -124,8 +127,8 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
 void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::ConstPtr& msg) {
   const double v = standstill(msg->twist.linear.x);
   std::string why = speedFrameProblem(msg->header.frame_id);
-  if (why.empty())
-    why = speedProblem(v);
+  if (why.empty() && !speedProblem(v).empty())
+    why = "speed_stamped: " + speedProblem(v);
   if (why.empty() && pending_speeds_.size() >= kMaxPendingSpeeds)
     why = "speed_stamped: " + std::to_string(kMaxPendingSpeeds) +
           " speeds already wait for their stamps (is ROS time standing still?)";
@@ -149,11 +152,14 @@ void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::Cons
   // In seconds as doubles: ros::Time's difference throws beyond 2^31 s, and a wild stamp must
   // be judged, not end the callback.
   const double ahead = stamp.toSec() - t.toSec();
-  if (use_sim_time_ && ahead > kStampRange && !last_jump_arrival_.isZero() &&
+  if (use_sim_time_ && !last_jump_arrival_.isZero() &&
       arrival - last_jump_arrival_ < ros::WallDuration(kRewindWindow) &&
-      stamp <= last_jump_old_time_) {
-    // Just after a jump back, one stamped within the pass before: a late message of that pass,
-    // whose speed is not the new pass's.
+      stamp <= last_jump_old_time_ &&
+      std::abs(stamp.toSec() - last_jump_old_time_.toSec()) <
+          std::abs(stamp.toSec() - last_jump_new_time_.toSec())) {
+    // Just after a jump back, one stamped nearer the time it left than the time it went to, and
+    // not after it: a late message of the pass before, whose speed is not the new pass's. (One
+    // stamped after the old pass's last sample was sent ahead for the new pass, a plan.)
     ++events_.speeds_of_pass_before;
     return;
   }
@@ -174,10 +180,17 @@ void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::Cons
     expireRecentSpeeds();
     recent_stamped_speeds_.push_back({v, stamp, t, arrival, false});
   }
+  alignRestart(stamp);  // a bag loop's first speed after the jump back: the loop's start
   scheduleSpeed(v, stamp);
 }
 
 void VehicleDynamicsNode::scheduleSpeed(double v, const ros::Time& stamp) {
+  // Older than the stamped speed in force: a stale command (reordered on the way, or from a
+  // second sender), which must not replace the newer one.
+  if (!applied_speed_stamp_.isZero() && stamp < applied_speed_stamp_) {
+    ++events_.speeds_superseded;
+    return;
+  }
   // Kept in stamp order (a source may send out of order); a second speed for the same stamp
   // replaces the first (a re-sent plan).
   const auto at =
@@ -205,6 +218,7 @@ void VehicleDynamicsNode::scheduleSpeed(double v, const ros::Time& stamp) {
 void VehicleDynamicsNode::applyDueSpeeds() {
   while (!pending_speeds_.empty() && pending_speeds_.front().stamp <= sample_time_) {
     takeSpeed(pending_speeds_.front().speed, pending_speeds_.front().stamp);
+    applied_speed_stamp_ = pending_speeds_.front().stamp;
     pending_speeds_.pop_front();
   }
 }
@@ -222,9 +236,11 @@ void VehicleDynamicsNode::takeSpeedOfOtherTimeBase(double v, const ros::Time& st
                                                    const ros::Time& t) {
   ++events_.speeds_other_time_base;
   const double ahead = stamp.toSec() - t.toSec();
-  last_other_time_base_ =
-      "stamp " + brief(stamp.toSec()) + " s is " + brief(std::round(std::abs(ahead) * 1e3) / 1e3) +
-      " s " + (ahead > 0.0 ? "ahead of" : "behind") + " ROS time " + brief(t.toSec()) + " s";
+  // Fixed decimals: epoch-sized times (wall-clock stamps) lose everything in 6 digits.
+  char text[160];
+  std::snprintf(text, sizeof(text), "stamp %.3f s is %.3f s %s ROS time %.3f s", stamp.toSec(),
+                std::abs(ahead), ahead > 0.0 ? "ahead of" : "behind", t.toSec());
+  last_other_time_base_ = text;
   TVD_WARN_THROTTLE(kWarnPeriod,
                     "%s: speed_stamped: %s, more than %g s apart: another time base (a sender on "
                     "wall time while this node is on /clock, or the reverse?); taken now, as an "
@@ -240,8 +256,8 @@ void VehicleDynamicsNode::expireRecentSpeeds() {
     const RecentSpeed recent = recent_stamped_speeds_.front();
     recent_stamped_speeds_.pop_front();
     // Far behind, and no jump back came for it: not a bag loop's next pass after all.
-    if (recent.deferred)
-      takeSpeedOfOtherTimeBase(recent.speed, recent.stamp, now());
+    if (recent.deferred)  // judged against the ROS time it arrived at
+      takeSpeedOfOtherTimeBase(recent.speed, recent.stamp, recent.ros_arrival);
   }
 }
 

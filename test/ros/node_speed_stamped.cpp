@@ -16,6 +16,7 @@
 //   timeout    (a second node, ~speed_timeout 0.5 s) the driver dies with a speed sent 0.8 s
 //              ahead: the vehicle stops at the timeout and the speed sent ahead never applies
 //   mixed      a std_msgs/Float64 on speed as well: taken, and the mix warned about once
+//   pass before  after a jump back of the clock, a late speed of the pass before is dropped
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -185,7 +186,7 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     EXPECT_EQ(speedCounter("speeds rejected (total)"), rejected + 1.0);
     EXPECT_EQ(diagnostics_.text(kSpeedStatus, "last rejection"),
               "speed_stamped in frame 'odom': its twist.linear.x is taken as the forward speed, "
-              "which it is in 'base_link' (or an empty frame_id) only");
+              "which it is in 'base_link' or an empty frame_id only");
     EXPECT_NE(logged("speed_stamped in frame 'odom'"), "");
   }
 
@@ -234,6 +235,11 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     EXPECT_EQ(speeds_.at(t0 + ros::Duration(0.016)), 1.0);  // the speed before both
     EXPECT_EQ(speeds_.at(t0 + ros::Duration(0.017)), 0.5);
     EXPECT_EQ(speeds_.at(t_), 0.5);
+    // Older than B, which is in force: stale (reordered, or a second sender), dropped.
+    send(9.0, t0 + ros::Duration(0.0157));
+    ASSERT_TRUE(runFor(0.01));
+    EXPECT_EQ(speeds_.at(t_), 0.5);
+    EXPECT_EQ(speedCounter("stamped before the stamped speed in force, dropped (total)"), 1.0);
   }
 
   // --- timeout (the second node): the driver sends 4 m/s now and 8 m/s for 0.8 s on, then dies.
@@ -288,6 +294,21 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     ASSERT_TRUE(runFor(0.05));
     EXPECT_EQ(speeds_.at(t0 + step), 2.5);
     ASSERT_TRUE(test::spinUntil([&] { return !logged("speeds arrive on both").empty(); }, 5.0));
+  }
+
+  // --- pass before: the clock jumps back 0.5 s (a loop); then a late speed of the pass before,
+  // stamped at the time the clock left, arrives: dropped, not scheduled 0.5 s into the new pass.
+  {
+    SCOPED_TRACE("pass before");
+    const ros::Time old = t_;
+    t_ = old - ros::Duration(0.5);
+    speeds_.erase(speeds_.lower_bound(t_), speeds_.end());  // wait for the restart's sample
+    ASSERT_TRUE(advanceTo(t_));
+    send(9.0, old);
+    ASSERT_TRUE(runFor(0.6));  // past the old time
+    for (const auto& [t, v] : between(old - ros::Duration(0.5), t_))
+      EXPECT_EQ(v, 0.0) << "sample at " << (t - old).toSec() << " s from the old time";
+    EXPECT_EQ(speedCounter("stamped in the pass before a jump back, dropped (total)"), 1.0);
   }
 }
 

@@ -105,6 +105,7 @@ class VehicleDynamicsNode {
     std::uint64_t speeds_late = 0;     // stamped a whole step or more before the sample they met
     std::uint64_t speeds_other_time_base = 0;  // stamped more than kStampRange from ROS time
     std::uint64_t speeds_of_pass_before = 0;   // stamped in the pass before a jump back: dropped
+    std::uint64_t speeds_superseded = 0;       // stamped before the stamped speed in force: dropped
     std::uint64_t speed_timeouts = 0;          // stops after ~speed_timeout without a speed message
     std::uint64_t uncovered_steps = 0;         // steps with at least one contact off the terrain
     std::uint64_t diverged = 0;
@@ -219,6 +220,12 @@ class VehicleDynamicsNode {
   /// stamped nearer `now` than the ROS time they arrived at, and the last speed if it arrived in
   /// that window, go to the restarted vehicle. Clears the kept inputs.
   void reapplyRecentInputs(const ros::Time& now);
+  /// The earliest stamp of the kept inputs that belong to the new time `now` after a jump back
+  /// (as reapplyRecentInputs judges them) and are not after it; zero when none.
+  ros::Time earliestRecentStamp(const ros::Time& now) const;
+  /// Before the first step after a jump back: moves the restart's time back to `stamp`, a new
+  /// input's, when it lies at most holdLimit() before the jump's time (a bag loop's start).
+  void alignRestart(const ros::Time& stamp);
   /// Standing (speed 0) where the last start or reset put it, on the flat ground it cleared to.
   bool standingOnClearedGround() const;
   /// Keeps an accepted patch for reapplyRecentInputs: taken (dropped empty), or dropped as
@@ -363,9 +370,11 @@ class VehicleDynamicsNode {
   double max_speed_lateness_ = 0.0;  // [s] of the late stamped speeds since the last report
   std::string last_other_time_base_;
   bool stamped_speed_seen_ = false, unstamped_speed_seen_ = false, speed_sources_warned_ = false;
-  ros::Time last_speed_taken_;  // ROS time from which the commanded speed was last set
+  ros::Time last_speed_taken_;     // ROS time from which the commanded speed was last set
+  ros::Time applied_speed_stamp_;  // stamp of the stamped speed in force (zero: none this run)
   // The last jump back of simulated time: the time it left, and when (monotonic) it came.
-  ros::Time last_jump_old_time_;
+  ros::Time last_jump_old_time_, last_jump_new_time_;
+  bool restart_movable_ = false;  // restarted after a jump back, not stepped yet (alignRestart)
   ros::SteadyTime last_jump_arrival_;
   ros::SteadyTime recent_speed_arrival_;  // zero: none kept
   ros::Time last_step_time_;              // ROS time of the previous step() call
