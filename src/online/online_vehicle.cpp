@@ -312,6 +312,19 @@ void OnlineVehicle::setSpeed(double speed) {
     speed_ = commanded_speed_;
 }
 
+void OnlineVehicle::setSpeedSince(double speed, long steps) {
+  if (slews() || speed_ != 0.0 || commanded_speed_ != 0.0)
+    throw InputError("online vehicle: setSpeedSince needs a vehicle standing still (speed " +
+                     brief(speed_) + " m/s) without a speed slew");
+  if (steps < 0)
+    throw InputError("online vehicle: setSpeedSince: " + std::to_string(steps) +
+                     " steps must not be negative");
+  setSpeed(speed);
+  // As the steps advance it: s += v h each (step()), the same product summed.
+  for (long k = 0; k < steps; ++k)
+    station_ += speed_ * time_step_;
+}
+
 int OnlineVehicle::sampleInput() {
   const int uncovered =
       sampler_.sample(terrain_, station_, speed_, options_.lateral_offset, &road_input_);

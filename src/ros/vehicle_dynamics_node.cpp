@@ -407,6 +407,7 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
   restart_movable_ = false;     // restartAfterJump() allows it for its own restart
   pending_speeds_.clear();      // the old run's schedule
   applied_speed_stamp_ = ros::Time();
+  last_speed_taken_ = ros::Time();  // the restart's speed is no message's (~reset_to sets it)
   hold_ = Hold();
   run_start_ = now();
   // Terrain kept (~reset_to keep_terrain) is there from the run's start.
@@ -682,6 +683,7 @@ void VehicleDynamicsNode::step() {
              vehicle_->station(), schedule.c_str());
     pending_speeds_.clear();
     vehicle_->setSpeed(0.0);
+    last_speed_taken_ = t;
     ++events_.speed_timeouts;
     stopped_by_timeout_ = true;
   }

@@ -253,6 +253,8 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
              events_.speeds_of_pass_before);
   status.add("stamped before the stamped speed in force, dropped (total)",
              events_.speeds_superseded);
+  status.add("late to a vehicle standing still, the missed steps made up (total)",
+             events_.speeds_caught_up);
   status.add("speed timeout [s]", params_.speed_timeout);
   status.add("stops after the speed timeout (total)", events_.speed_timeouts);
 }

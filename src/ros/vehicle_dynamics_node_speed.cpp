@@ -217,15 +217,29 @@ void VehicleDynamicsNode::scheduleSpeed(double v, const ros::Time& stamp) {
 
 void VehicleDynamicsNode::applyDueSpeeds() {
   while (!pending_speeds_.empty() && pending_speeds_.front().stamp <= sample_time_) {
-    takeSpeed(pending_speeds_.front().speed, pending_speeds_.front().stamp);
-    applied_speed_stamp_ = pending_speeds_.front().stamp;
+    const PendingSpeed due = pending_speeds_.front();
     pending_speeds_.pop_front();
+    // Late by whole steps to a vehicle standing still since before its stamp (and since the
+    // run's start), without a slew: the steps it missed are made up at once (setSpeedSince), so
+    // a standing start that learns of its speed a few steps late (a replay's first speed behind
+    // the first /clock) drives on from where, and as, it would have on level ground.
+    const ros::Time from = std::max(due.stamp, run_start_);
+    const std::int64_t missed = from < sample_time_ ? (sample_time_ - from).toNSec() / step_ns_ : 0;
+    const bool standing = !vehicle_->slews() && vehicle_->speed() == 0.0 &&
+                          vehicle_->commandedSpeed() == 0.0 && last_speed_taken_ <= due.stamp;
+    takeSpeed(due.speed, due.stamp, standing ? missed : std::int64_t{0});
+    applied_speed_stamp_ = due.stamp;
   }
 }
 
-void VehicleDynamicsNode::takeSpeed(double v, const ros::Time& t) {
+void VehicleDynamicsNode::takeSpeed(double v, const ros::Time& t, std::int64_t catch_up_steps) {
   warnOfUnslewedSpeedChange(v, t);
-  vehicle_->setSpeed(v);
+  if (catch_up_steps > 0) {
+    vehicle_->setSpeedSince(v, static_cast<long>(catch_up_steps));
+    ++events_.speeds_caught_up;
+  } else {
+    vehicle_->setSpeed(v);
+  }
   last_speed_taken_ = t;
   if (hold_.active)
     hold_.speed = true;

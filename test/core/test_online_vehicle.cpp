@@ -294,6 +294,48 @@ TEST(OnlineVehicle, ADivergedVehicleRestartsAtRestOnTheTerrainUnderIt) {
   EXPECT_LT(speeding.speed(), 10.0);
 }
 
+// A speed that should have applied 3 steps ago, to a vehicle at rest on level ground since:
+// setSpeedSince leaves it where, and as, the steps with that speed would have (the node's late
+// stamped speed from a standstill, vehicle_dynamics_node_speed.cpp); then both drive on alike,
+// over the bump too. A moving or slewing vehicle is refused.
+TEST(OnlineVehicle, ASpeedSinceStepsAgoFromRestIsTheOnTimeRun) {
+  const reduction::ReducedModel model = test::toyModel();
+  const OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  OnlineVehicle on_time(model, test::toyGeometry(), o), late(model, test::toyGeometry(), o);
+  for (OnlineVehicle* v : {&on_time, &late})
+    for (const TerrainPatch& patch : patches(bump(), 50))
+      v->addTerrain(patch);
+  on_time.setSpeed(4.0);
+  for (int k = 0; k < 3; ++k) {
+    on_time.step();
+    late.step();
+  }
+  late.setSpeedSince(4.0, 3);
+  EXPECT_EQ(late.station(), on_time.station());
+  EXPECT_EQ(late.speed(), 4.0);
+  double worst = 0.0;
+  for (int k = 0; k < 1500; ++k) {  // 6 m, over the bump
+    on_time.step();
+    late.step();
+    worst = std::max(worst, (late.hullDisplacement() - on_time.hullDisplacement()).norm());
+  }
+  EXPECT_EQ(late.station(), on_time.station());
+  EXPECT_GT(on_time.hullDisplacement().norm(), 0.0);
+  EXPECT_LT(worst, 1e-12);
+
+  EXPECT_THROW(late.setSpeedSince(2.0, 1), InputError);  // moving
+  OnlineVehicleOptions slewing = o;
+  slewing.max_acceleration = 1.0;
+  OnlineVehicle slewed(model, test::toyGeometry(), slewing);
+  EXPECT_THROW(slewed.setSpeedSince(2.0, 1), InputError);
+  EXPECT_EQ(slewed.commandedSpeed(), 0.0);
+  OnlineVehicle standing(model, test::toyGeometry(), o);
+  EXPECT_THROW(standing.setSpeedSince(2.0, -1), InputError);
+  EXPECT_THROW(standing.setSpeedSince(-2.0, 1), InputError);
+  EXPECT_EQ(standing.station(), 0.0);
+  EXPECT_EQ(standing.commandedSpeed(), 0.0);
+}
+
 TEST(OnlineVehicle, InvalidTerrainAndSpeedAreRejectedWithoutChange) {
   OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(),
                         options(dynamics::DiscretizationMethod::ModalDecoupled));

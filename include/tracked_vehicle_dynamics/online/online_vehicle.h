@@ -145,6 +145,12 @@ class OnlineVehicle {
   /// Commanded speed [m/s]: used from the next step on, or, with a slew, approached at the
   /// bounded rate from the next step on. Throws InputError if negative or not finite.
   void setSpeed(double speed);
+  /// A speed that should have applied `steps` steps ago, to a vehicle standing still since then
+  /// (speed 0, no slew): set now, and the reference point moved on by speed * steps * h at once,
+  /// the vibration state kept. On level ground that is exactly where those steps would have left
+  /// it, at rest (no travel inertia without a slew). Throws InputError if the vehicle is moving,
+  /// slews, or the speed or step count is invalid; nothing changes then.
+  void setSpeedSince(double speed, long steps);
   /// One fixed step (see the file comment). No allocation.
   StepResult step();
 

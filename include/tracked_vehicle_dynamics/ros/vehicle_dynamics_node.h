@@ -106,8 +106,9 @@ class VehicleDynamicsNode {
     std::uint64_t speeds_other_time_base = 0;  // stamped more than kStampRange from ROS time
     std::uint64_t speeds_of_pass_before = 0;   // stamped in the pass before a jump back: dropped
     std::uint64_t speeds_superseded = 0;       // stamped before the stamped speed in force: dropped
-    std::uint64_t speed_timeouts = 0;          // stops after ~speed_timeout without a speed message
-    std::uint64_t uncovered_steps = 0;         // steps with at least one contact off the terrain
+    std::uint64_t speeds_caught_up = 0;  // late to a standing vehicle: the missed steps made up
+    std::uint64_t speed_timeouts = 0;    // stops after ~speed_timeout without a speed message
+    std::uint64_t uncovered_steps = 0;   // steps with at least one contact off the terrain
     std::uint64_t diverged = 0;
     std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
     std::uint64_t ticks = 0, late_ticks = 0;  // late: more than one step due at a tick
@@ -163,7 +164,9 @@ class VehicleDynamicsNode {
   /// The kept stamped speeds due at the current sample, in stamp order.
   void applyDueSpeeds();
   /// The commanded speed from ROS time `t` on, with the hold's and the timeout's bookkeeping.
-  void takeSpeed(double speed, const ros::Time& t);
+  /// `catch_up_steps` > 0: the vehicle stood still while that many steps missed the speed, which
+  /// OnlineVehicle::setSpeedSince makes up.
+  void takeSpeed(double speed, const ros::Time& t, std::int64_t catch_up_steps = 0);
   /// A stamped speed more than a second from ROS time `t`: taken now, counted and warned.
   void takeSpeedOfOtherTimeBase(double speed, const ros::Time& stamp, const ros::Time& t);
   /// The kept stamped speeds older than kRewindWindow are forgotten; one held back as maybe a
