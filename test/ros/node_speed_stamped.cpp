@@ -13,6 +13,8 @@
 //   order      a speed arriving after its stamp, while an older one still waits for the next
 //              step, is applied after that one, not overridden by it
 //   reset      a speed due after ~reset is dropped with the run it belonged to
+//   standing   a speed 30 ms late to a vehicle at rest since before its stamp makes up the
+//              30 steps it missed (the station jumps by them, the motion goes on alike)
 //   timeout    (a second node, ~speed_timeout 0.5 s) the driver dies with a speed sent 0.8 s
 //              ahead: the vehicle stops at the timeout and the speed sent ahead never applies
 //   mixed      a std_msgs/Float64 on speed as well: taken, and the mix warned about once
@@ -67,7 +69,10 @@ class NodeSpeedStamped : public ::testing::Test {
         });
   }
 
-  void onWheels(const RoadWheels::ConstPtr& m) { speeds_[m->header.stamp] = m->speed; }
+  void onWheels(const RoadWheels::ConstPtr& m) {
+    speeds_[m->header.stamp] = m->speed;
+    stations_[m->header.stamp] = m->station;
+  }
 
   bool advanceTo(const ros::Time& t) {
     test::publishClock(clock_pub_, t);
@@ -121,7 +126,7 @@ class NodeSpeedStamped : public ::testing::Test {
   std::map<ros::Time, double> timeout_speeds_;  // the second node's
   std::set<std::string> speed_summaries_;
   std::vector<rosgraph_msgs::Log> log_;
-  std::map<ros::Time, double> speeds_;
+  std::map<ros::Time, double> speeds_, stations_;
   ros::Time t_{1000.0};
 };
 
@@ -279,6 +284,20 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     for (const auto& [t, v] : between(t0, t_))
       EXPECT_EQ(v, 0.0) << "sample at " << (t - t0).toSec() << " s after the reset";
     EXPECT_EQ(speedCounter("stamped speeds waiting for their stamp"), 0.0);
+  }
+
+  // --- standing: at rest since the reset, a speed stamped 30 ms before the current sample
+  // makes up the 30 steps it missed: the next sample is 31 steps of it on.
+  {
+    SCOPED_TRACE("standing");
+    const ros::Time t0 = t_;
+    ASSERT_EQ(speeds_.at(t0), 0.0);
+    send(2.0, t0 - ros::Duration(0.03));
+    ASSERT_TRUE(runFor(0.02));
+    EXPECT_NEAR(stations_.at(t0 + step) - stations_.at(t0), 2.0 * 31 * h, 1e-9);
+    EXPECT_NEAR(stations_.at(t0 + step + step) - stations_.at(t0 + step), 2.0 * h, 1e-9);
+    EXPECT_EQ(speedCounter("late to a vehicle standing still, the missed steps made up (total)"),
+              1.0);
   }
 
   // --- mixed: a Float64 as well, taken at the next sample; the mix said once.
