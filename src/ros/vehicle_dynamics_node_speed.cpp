@@ -3,12 +3,13 @@
 // what a jump back of simulated time (a bag loop) re-applies of them.
 //
 // A stamped speed applies from the first step that starts at or after its stamp: a speed sent
-// ahead waits for its time, one that arrives after it (the vehicle's sample already past the
-// stamp) applies at once and is counted late. So a bag replay drives the vehicle through the
-// same stations every time, to within a step's v h, whatever the order in which its /clock and
-// speed messages reach the node on their separate connections (the unstamped speed applies at
-// the next tick, so its station wanders by the /clock period's worth of Δv, 10 ms at rosbag's
-// default 100 Hz clock).
+// ahead waits for its time; one that arrives after it (the vehicle's sample already past the
+// stamp) applies at once and is counted late, unless an even newer stamped speed is in force
+// (then it is dropped), and makes up the steps it missed if the vehicle stood still meanwhile
+// (OnlineVehicle::setSpeedSince). So a bag replay drives the vehicle through the same stations
+// every time, whatever the order in which its /clock and speed messages reach the node on their
+// separate connections (the unstamped speed applies at the next tick, so its station wanders by
+// the /clock period's worth of Δv, 10 ms at rosbag's default 100 Hz clock).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
