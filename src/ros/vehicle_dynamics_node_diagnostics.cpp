@@ -240,7 +240,8 @@ void VehicleDynamicsNode::diagnoseInput(diagnostic_updater::DiagnosticStatusWrap
   status.add("speeds rejected (since last report)", rejected);
   status.add("last rejection", last_speed_error_);
   // speed_stamped: applied at the step of its stamp; late ones (the sample already a step or
-  // more past the stamp) at once, which a replay does not repeat exactly.
+  // more past the stamp) at once, which a replay repeats exactly only at a standstill (where the
+  // missed steps are made up).
   status.add("stamped speeds (total)", events_.speeds_stamped);
   status.add("stamped speeds waiting for their stamp", static_cast<long>(pending_speeds_.size()));
   status.add("stamped speeds late (total)", events_.speeds_late);

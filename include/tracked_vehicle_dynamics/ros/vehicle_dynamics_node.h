@@ -158,8 +158,9 @@ class VehicleDynamicsNode {
   void rejectSpeed(const std::string& why);
   /// Which topic a valid speed came on; both in one run is warned about once.
   void noteSpeedSource(bool stamped);
-  /// A stamped speed within reach of ROS time: taken now if its stamp is not after the current
-  /// sample (late when a whole step before it), else kept until the step at its stamp.
+  /// A stamped speed within reach of ROS time: dropped if older than the stamped speed in force;
+  /// taken now if its stamp is not after the current sample (late when a whole step before it),
+  /// else kept until the step at its stamp.
   void scheduleSpeed(double speed, const ros::Time& stamp);
   /// The kept stamped speeds due at the current sample, in stamp order.
   void applyDueSpeeds();
