@@ -234,12 +234,9 @@ void VehicleDynamicsNode::onTerrain(const TerrainProfile::ConstPtr& msg) {
     // without ~frame_prefix passes: a terrain source (or a bag made by tvd_make_bag) that
     // knows of no prefix.
     const std::string& frame = msg->header.frame_id;
-    const std::string bare = !frame.empty() && frame.front() == '/' ? frame.substr(1) : frame;
-    const std::string& odom = params_.odom_frame;
-    const std::string& prefix = params_.frame_prefix;
-    const bool unprefixed_odom = !prefix.empty() && odom.compare(0, prefix.size(), prefix) == 0 &&
-                                 bare == odom.substr(prefix.size());
-    latest_patch_other_frame_ = !bare.empty() && bare != odom && !unprefixed_odom;
+    latest_patch_other_frame_ =
+        !frame.empty() && frame != "/" &&
+        !node_logging::namesOwnFrame(frame, params_.odom_frame, params_.frame_prefix);
     if (latest_patch_other_frame_) {
       ++events_.patches_other_frame;
       last_other_frame_patch_ = "patch at x = " + brief(patch.start_station) + " m in frame '" +
@@ -502,13 +499,10 @@ ros::Time VehicleDynamicsNode::earliestRecentStamp(const ros::Time& now) const {
   // The inputs reapplyRecentInputs() takes as the new time's (stamped nearer `now` than the ROS
   // time they arrived at), stamped at or before `now`.
   const ros::SteadyTime oldest = ros::SteadyTime::now() - ros::WallDuration(kRewindWindow);
-  const double t = now.toSec();
   ros::Time earliest;
   const auto consider = [&](const ros::Time& stamp, const ros::Time& ros_arrival,
                             const ros::SteadyTime& arrival) {
-    const double s = stamp.toSec();
-    if (arrival < oldest || stamp.isZero() || stamp > now ||
-        std::abs(s - t) >= std::abs(s - ros_arrival.toSec()))
+    if (arrival < oldest || stamp > now || !node_logging::ofNewTime(stamp, ros_arrival, now))
       return;
     if (earliest.isZero() || stamp < earliest)
       earliest = stamp;
@@ -555,10 +549,7 @@ void VehicleDynamicsNode::reapplyRecentInputs(const ros::Time& now) {
   for (const RecentPatch& recent : recent_patches_) {
     const ros::Time& stamp = recent.msg->header.stamp;
     // Not of the new time: a patch dropped as wholly behind is lost for good.
-    // (In double seconds: ros::Time's difference throws beyond 2^31 s, for a wild stamp.)
-    if (recent.arrival < oldest || stamp.isZero() ||
-        std::abs(stamp.toSec() - now.toSec()) >=
-            std::abs(stamp.toSec() - recent.ros_arrival.toSec())) {
+    if (recent.arrival < oldest || !node_logging::ofNewTime(stamp, recent.ros_arrival, now)) {
       if (!recent.dropped.empty())
         reportDroppedPatch(recent.dropped);
       continue;

@@ -68,17 +68,11 @@ std::string VehicleDynamicsNode::speedFrameProblem(const std::string& frame) con
   // vehicle's heading: base_link, or the footprint. Another frame's x (odom, map) is the speed
   // along that frame's axis, not the travel speed. Unprefixed names pass, as for terrain: a
   // source that knows of no ~frame_prefix.
-  const std::string bare = !frame.empty() && frame.front() == '/' ? frame.substr(1) : frame;
-  if (bare.empty())
-    return "";
   const std::string& prefix = params_.frame_prefix;
-  for (const std::string& own : {params_.base_frame, params_.footprint_frame}) {
-    if (own.empty())
-      continue;
-    if (bare == own || (!prefix.empty() && own.compare(0, prefix.size(), prefix) == 0 &&
-                        bare == own.substr(prefix.size())))
-      return "";
-  }
+  if (frame.empty() || frame == "/" ||
+      node_logging::namesOwnFrame(frame, params_.base_frame, prefix) ||
+      node_logging::namesOwnFrame(frame, params_.footprint_frame, prefix))
+    return "";
   std::string allowed = "'" + params_.base_frame + "'";
   if (!params_.footprint_frame.empty())
     allowed += " or '" + params_.footprint_frame + "'";
@@ -128,8 +122,11 @@ void VehicleDynamicsNode::onSpeed(const std_msgs::Float64::ConstPtr& msg) {
 void VehicleDynamicsNode::onSpeedStamped(const geometry_msgs::TwistStamped::ConstPtr& msg) {
   const double v = standstill(msg->twist.linear.x);
   std::string why = speedFrameProblem(msg->header.frame_id);
-  if (why.empty() && !speedProblem(v).empty())
-    why = "speed_stamped: " + speedProblem(v);
+  if (why.empty()) {
+    why = speedProblem(v);
+    if (!why.empty())
+      why = "speed_stamped: " + why;
+  }
   if (why.empty() && pending_speeds_.size() >= kMaxPendingSpeeds)
     why = "speed_stamped: " + std::to_string(kMaxPendingSpeeds) +
           " speeds already wait for their stamps (is ROS time standing still?)";
@@ -297,9 +294,7 @@ void VehicleDynamicsNode::reapplyRecentSpeeds(const ros::Time& now) {
   // patch is judged) applies at its stamp: now if that has passed, later if it lies ahead.
   // scheduleSpeed() keeps them in stamp order, those not after `now` applied at once.
   for (const RecentSpeed& recent : recent_stamped_speeds_) {
-    const double stamp = recent.stamp.toSec();
-    if (recent.arrival < oldest ||
-        std::abs(stamp - now.toSec()) >= std::abs(stamp - recent.ros_arrival.toSec()))
+    if (recent.arrival < oldest || !node_logging::ofNewTime(recent.stamp, recent.ros_arrival, now))
       continue;  // the old pass's: gone with it
     stopped_by_timeout_ = false;
     markSpeedTime(now);
