@@ -143,6 +143,13 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   if (!std::isfinite(options.terrain_keep_behind) || options.terrain_keep_behind < 0.0) {
     throw InputError("online vehicle: terrain_keep_behind must be >= 0 and finite");
   }
+  // Below 1 MB (12 m of a 9-line terrain at 1 cm) the value is more likely typed in GB than
+  // meant; 1e9 MB is a petabyte, and keeps the byte count far inside size_t.
+  if (!(options.terrain_max_memory_mb >= 1.0) || !(options.terrain_max_memory_mb <= 1e9)) {
+    throw InputError("online vehicle: terrain_max_memory_mb must be within 1 .. 1e9 MB, got " +
+                     brief(options.terrain_max_memory_mb));
+  }
+  terrain_.setMemoryLimit(static_cast<std::size_t>(options.terrain_max_memory_mb * 1e6));
   if (sampler_.size() != model.system.inputCount()) {
     throw InputError("online vehicle: the model has " + std::to_string(model.system.inputCount()) +
                      " road inputs but " + std::to_string(sampler_.size()) + " input stations");
@@ -290,6 +297,9 @@ void OnlineVehicle::checkGroundContact() {
 
 bool OnlineVehicle::addTerrain(const TerrainPatch& patch) {
   const double keep_from = rearContactStation() - options_.terrain_keep_behind;
+  // What lies behind the vehicle since the last patch goes first, so that the memory limit
+  // judges the terrain it still needs (a second call below is cheap: nothing more to cut).
+  terrain_.dropBehind(keep_from);
   terrain_.addPatch(patch.start_station, patch.spacing, patch.lateral, patch.heights);
   // A patch the call below frees at once: the caller hears of it instead of counting it as
   // terrain.

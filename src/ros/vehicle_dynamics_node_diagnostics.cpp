@@ -196,13 +196,19 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   status.add("steps with uncovered contacts (since last report)", uncovered);
   status.add("contacts off the terrain now", last_uncovered_);
   status.add("patches stored", buffer.patchCount());
+  status.add("stored [MB]", std::round(static_cast<double>(buffer.storedBytes()) / 1e4) / 100.0);
+  status.add("stored limit [MB]", static_cast<double>(buffer.memoryLimit()) / 1e6);
   if (buffer.empty()) {  // not the buffer's +-inf sentinels
     status.add("covered from [m]", "none");
     status.add("covered until [m]", "none");
+    status.add("stored until [m]", "none");
     status.add("coverage ahead of the front contact [m]", "none");
   } else {
     status.add("covered from [m]", buffer.coveredFrom());
     status.add("covered until [m]", buffer.coveredUntil());
+    // Beyond the contiguous coverage too: patches far ahead (stations not along the path?)
+    // hold memory without covering the vehicle.
+    status.add("stored until [m]", buffer.furthestEnd());
     status.add("coverage ahead of the front contact [m]", ahead);
   }
   // What a terrain source must cover now: from the rearmost contact to the frontmost one.

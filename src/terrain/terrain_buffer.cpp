@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -21,7 +22,32 @@ double bridgeableGap(double spacing) {
   return TerrainBuffer::kBridgeFactor * spacing * (1.0 + kSlack);
 }
 
+std::size_t gridBytes(const Terrain& grid) {
+  return TerrainBuffer::patchBytes(static_cast<std::size_t>(grid.lateral().size()),
+                                   static_cast<std::size_t>(grid.stations().size()));
+}
+
+// A memory size for the messages: MB (1e6 bytes, as ~terrain_max_memory), kB or bytes, to one
+// decimal.
+std::string memoryText(std::size_t bytes) {
+  const double b = static_cast<double>(bytes);
+  if (b >= 1e6)
+    return brief(std::round(b / 1e5) / 10.0) + " MB";
+  if (b >= 1e3)
+    return brief(std::round(b / 1e2) / 10.0) + " kB";
+  return std::to_string(bytes) + " bytes";
+}
+
 }  // namespace
+
+std::size_t TerrainBuffer::patchBytes(std::size_t n_lines, std::size_t n_samples) {
+  // Saturating: a count no buffer can hold compares above any limit instead of wrapping.
+  constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();
+  constexpr std::size_t kDouble = sizeof(double);
+  if (n_lines != 0 && n_samples > (kMax / kDouble - n_lines) / (n_lines + 1))
+    return kMax;
+  return kDouble * (n_samples * (n_lines + 1) + n_lines);
+}
 
 void TerrainBuffer::addPatch(double start_station, double spacing, const Vector& lateral,
                              const Matrix& heights) {
@@ -69,6 +95,30 @@ void TerrainBuffer::addPatch(double start_station, double spacing, const Vector&
     }
   }
 
+  // The memory limit, judged before anything is copied: what stays of the stored patches (the
+  // ones lying entirely under this one are freed below) and this one.
+  const std::size_t bytes = patchBytes(static_cast<std::size_t>(heights.rows()),
+                                       static_cast<std::size_t>(heights.cols()));
+  if (memory_limit_ != std::numeric_limits<std::size_t>::max()) {
+    std::size_t freed = 0;
+    for (auto it = patches_.lower_bound(start_station);
+         it != patches_.end() && it->first <= last_station; ++it) {
+      if (it->second.end() <= last_station)
+        freed += gridBytes(it->second.grid);
+    }
+    const std::size_t kept = stored_bytes_ - freed;
+    if (bytes > memory_limit_ || kept > memory_limit_ - bytes) {
+      const std::string stored = kept == 0 ? std::string()
+                                           : " with the " + memoryText(kept) +
+                                                 " stored (stations " + brief(coveredFrom()) +
+                                                 " .. " + brief(furthestEnd()) + " m)";
+      throw InputError(where + memoryText(bytes) + stored + " exceed" + (kept == 0 ? "s" : "") +
+                       " the terrain buffer's limit of " + memoryText(memory_limit_) +
+                       ": terrain sent far ahead of the vehicle, or stations that are not "
+                       "along its path?");
+    }
+  }
+
   Vector stations(heights.cols());
   for (Eigen::Index k = 0; k < stations.size(); ++k) {
     stations(k) = start_station + static_cast<double>(k) * spacing;
@@ -80,9 +130,15 @@ void TerrainBuffer::addPatch(double start_station, double spacing, const Vector&
   const double end = patch.end();
   // Older patches lying entirely under the new one can never win a query again.
   for (auto it = patches_.lower_bound(start_station); it != patches_.end() && it->first <= end;) {
-    it = it->second.end() <= end ? patches_.erase(it) : std::next(it);
+    if (it->second.end() <= end) {
+      stored_bytes_ -= gridBytes(it->second.grid);
+      it = patches_.erase(it);
+    } else {
+      ++it;
+    }
   }
   patches_.emplace(start_station, std::move(patch));
+  stored_bytes_ += bytes;
   updateExtents();
 }
 
@@ -215,6 +271,7 @@ void TerrainBuffer::dropBehind(double station) {
   for (auto it = patches_.begin(); it != patches_.end() && it->first < station;) {
     Patch& patch = it->second;
     if (dropsPatchEnding(patch.end(), patch.spacing, station)) {
+      stored_bytes_ -= gridBytes(patch.grid);
       it = patches_.erase(it);
       continue;
     }
@@ -233,6 +290,8 @@ void TerrainBuffer::dropBehind(double station) {
     trimmed.push_back(Patch{Terrain(x.tail(kept), patch.grid.lateral(),
                                     patch.grid.heights().rightCols(kept), patch.grid.name()),
                             patch.spacing, patch.sequence});
+    stored_bytes_ -= gridBytes(patch.grid);
+    stored_bytes_ += gridBytes(trimmed.back().grid);
     it = patches_.erase(it);
   }
   for (Patch& patch : trimmed) {
@@ -246,8 +305,16 @@ double TerrainBuffer::coveredFrom() const {
   return empty() ? std::numeric_limits<double>::infinity() : patches_.begin()->first;
 }
 
+double TerrainBuffer::furthestEnd() const {
+  double end = -std::numeric_limits<double>::infinity();
+  for (const auto& entry : patches_)
+    end = std::max(end, entry.second.end());
+  return end;
+}
+
 void TerrainBuffer::clear() {
   patches_.clear();
+  stored_bytes_ = 0;
   updateExtents();
 }
 

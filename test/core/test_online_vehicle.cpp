@@ -383,6 +383,44 @@ TEST(OnlineVehicle, PatchWhollyBehindTheKeptTerrainIsReportedDropped) {
   EXPECT_DOUBLE_EQ(vehicle.terrain().coveredUntil(), keep_from + 0.5);
 }
 
+// terrain_max_memory_mb bounds the stored terrain: a patch beyond it is refused, nothing
+// changes; what lies behind the vehicle is freed before the patch is judged.
+TEST(OnlineVehicle, TerrainMemoryLimitRefusesAPatchBeyondItAfterFreeingWhatLiesBehind) {
+  OnlineVehicleOptions o = options(dynamics::DiscretizationMethod::ModalDecoupled);
+  for (double bad : {0.5, 2e9, std::numeric_limits<double>::quiet_NaN()}) {
+    o.terrain_max_memory_mb = bad;
+    EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), o), InputError) << bad;
+  }
+  o.terrain_max_memory_mb = 1.0;
+  OnlineVehicle vehicle(test::toyModel(), test::toyGeometry(), o);
+  EXPECT_EQ(vehicle.terrain().memoryLimit(), 1000000u);
+  TerrainPatch p;
+  p.spacing = 0.001;
+  p.lateral = Eigen::Vector2d(-1.0, 1.0);
+  p.heights = Matrix::Zero(2, 30000);  // 30 m: 8 (3 x 30000 + 2) bytes = 720 kB
+  p.start_station = -5.0;
+  ASSERT_TRUE(vehicle.addTerrain(p));
+  EXPECT_EQ(vehicle.terrain().storedBytes(), terrain::TerrainBuffer::patchBytes(2, 30000));
+  p.start_station = 100.0;
+  try {
+    vehicle.addTerrain(p);
+    FAIL() << "a patch beyond the memory limit was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("720 kB with the 720 kB stored (stations -5 .. 24.999 m) "
+                                         "exceed the terrain buffer's limit of 1 MB"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_NEAR(vehicle.terrain().coveredUntil(), 24.999, 1e-9);
+  EXPECT_FALSE(vehicle.terrain().covers(100.5));
+  // The vehicle moved on past the first patch: it is freed before the second one is judged.
+  vehicle.resetTo(60.0, 0.0, ResetTerrain::Keep);
+  ASSERT_GT(vehicle.rearContactStation() - o.terrain_keep_behind, 25.0);
+  EXPECT_TRUE(vehicle.addTerrain(p));
+  EXPECT_EQ(vehicle.terrain().patchCount(), 1u);
+  EXPECT_TRUE(vehicle.terrain().covers(100.5));
+}
+
 TEST(OnlineVehicle, UnknownOutputsAreNamed) {
   reduction::ReducedModel model = test::toyModel();
   model.system.output_names[7] = "road_wheel_left_9 uz";

@@ -1320,6 +1320,63 @@ TEST(TerrainBuffer, ALongPatchIsCutByHalvesNotAtEveryArrival) {
   EXPECT_LE(cuts, 12);
 }
 
+// The memory limit: storedBytes() counts every stored grid as patchBytes() does, through adds,
+// replacements, cuts and drops; a patch that would take it beyond the limit is refused, naming
+// the sizes, and nothing changes; one replacing stored patches counts what it frees.
+TEST(TerrainBuffer, MemoryLimitRefusesAPatchBeyondItAndCountsWhatIsFreed) {
+  EXPECT_EQ(TerrainBuffer::patchBytes(1, 20), 8u * (20 * 2 + 1));
+  EXPECT_EQ(TerrainBuffer::patchBytes(9, 1000), 8u * (1000 * 10 + 9));
+  // Saturates instead of wrapping.
+  EXPECT_EQ(TerrainBuffer::patchBytes(1u << 20, std::size_t{1} << 60),
+            std::numeric_limits<std::size_t>::max());
+  TerrainBuffer buffer;
+  EXPECT_EQ(buffer.storedBytes(), 0u);
+  const std::size_t plane = TerrainBuffer::patchBytes(3, 10);  // addPlane: three lines
+  for (int p = 0; p < 3; ++p)
+    addPlane(&buffer, p * 1.0, 0.1, 10);  // 0 .. 2.9
+  EXPECT_EQ(buffer.storedBytes(), 3 * plane);
+  EXPECT_NEAR(buffer.furthestEnd(), 2.9, kRoundoff);
+  buffer.setMemoryLimit(4 * plane);
+  addPlane(&buffer, 3.0, 0.1, 10);  // exactly the limit: taken
+  EXPECT_EQ(buffer.storedBytes(), 4 * plane);
+  const std::uint64_t revision = buffer.revision();
+  try {
+    addPlane(&buffer, 100.0, 0.1, 10);
+    FAIL() << "a patch beyond the limit was taken";
+  } catch (const InputError& e) {
+    const std::string text = e.what();
+    for (const char* part : {"patch at station 100 m", "stored (stations 0 .. 3.9 m)",
+                             "exceed the terrain buffer's limit", "far ahead of the vehicle"})
+      EXPECT_NE(text.find(part), std::string::npos) << part << " in: " << text;
+  }
+  EXPECT_EQ(buffer.revision(), revision);  // nothing changed
+  EXPECT_EQ(buffer.patchCount(), 4u);
+  EXPECT_FALSE(buffer.covers(100.5));
+  // A patch over the first two frees them: 4 - 2 + 1 patches' worth, within the limit.
+  addPlane(&buffer, 0.0, 0.1, 20);  // 0 .. 1.9
+  EXPECT_EQ(buffer.patchCount(), 3u);
+  EXPECT_EQ(buffer.storedBytes(), 2 * plane + TerrainBuffer::patchBytes(3, 20));
+  // Cuts count what they keep: the 20-sample patch cut at 1.0 m keeps 10 samples.
+  buffer.dropBehind(1.05);
+  EXPECT_EQ(buffer.storedBytes(), 3 * plane);
+  // Drops free (the patch from 2 m, cut to its last sample on the way): now the far patch fits.
+  buffer.dropBehind(3.05);
+  EXPECT_EQ(buffer.storedBytes(), plane + TerrainBuffer::patchBytes(3, 1));
+  buffer.dropBehind(3.2);
+  EXPECT_EQ(buffer.patchCount(), 1u);
+  EXPECT_EQ(buffer.storedBytes(), plane);
+  addPlane(&buffer, 100.0, 0.1, 10);
+  EXPECT_EQ(buffer.storedBytes(), 2 * plane);
+  EXPECT_NEAR(buffer.furthestEnd(), 100.9, kRoundoff);
+  // A patch larger than the limit alone says so without a stored part.
+  buffer.clear();
+  EXPECT_EQ(buffer.storedBytes(), 0u);
+  EXPECT_EQ(buffer.furthestEnd(), -std::numeric_limits<double>::infinity());
+  expectInputError([&] { addPlane(&buffer, 0.0, 0.1, 100); },
+                   {"patch at station 0 m: 3.2 kB exceeds the terrain buffer's limit of 1.4 kB"});
+  EXPECT_TRUE(buffer.empty());
+}
+
 TEST(TerrainBuffer, RejectsBadPatches) {
   TerrainBuffer buffer;
   Vector y(2);

@@ -139,7 +139,10 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
   bad = test::flatProfile(terrain_end, terrain_end + 20.0);
   bad.spacing = 0.0;
   terrain_pub_.publish(bad);
-  const int bad_patches = 6;  // with the first one
+  // Valid, but beyond ~terrain_max_memory (1 MB here): 12,501 samples x 11 lines, 1.2 MB, far
+  // ahead (a map's x instead of the path's).
+  terrain_pub_.publish(test::flatProfile(terrain_end + 2000.0, terrain_end + 2625.0));
+  const int bad_patches = 7;  // with the first one
   // Valid, but 1 m wide: the road wheels at +-1.4 m would read its edge lines (a unit mistake).
   TerrainProfile narrow = test::flatProfile(terrain_end + 40.0, terrain_end + 50.0);
   narrow.lateral = {-0.5, 0.5};
@@ -193,6 +196,13 @@ TEST_F(NodeBadInput, NodeStaysAliveFiniteAndDiagnosed) {
       5.0))
       << diagnostics_.describe();
   EXPECT_EQ(diagnostics_.value(": terrain", "patches rejected (total)"), bad_patches);
+  EXPECT_NE(diagnostics_.text(": terrain", "last rejection")
+                .find("1.2 MB with the 34.7 kB stored (stations -10 .. 8 m) exceed the "
+                      "terrain buffer's limit of 1 MB"),
+            std::string::npos)
+      << diagnostics_.describe();
+  EXPECT_EQ(diagnostics_.value(": terrain", "stored limit [MB]"), 1.0);
+  EXPECT_LT(diagnostics_.value(": terrain", "stored [MB]"), 1.0);
   EXPECT_EQ(diagnostics_.value(": speed", "speeds rejected (total)"), bad_speeds);
   EXPECT_EQ(diagnostics_.value(": terrain", "patches narrower than the contacts (total)"), 1.0);
   EXPECT_EQ(diagnostics_.value(": terrain", "patches behind the vehicle, dropped (total)"), 1.0);
@@ -288,6 +298,14 @@ void expectRefused(const std::string& name, const std::string& arguments,
   const NodeRun run = runNamed(name, arguments);
   EXPECT_EQ(run.exit_status, 1) << run.output;
   EXPECT_NE(run.output.find(message), std::string::npos) << run.output;
+}
+
+// ~terrain_max_memory: 1 .. 1e9 MB (less is more likely a value typed in GB).
+TEST(NodeBadParameters, TerrainMaxMemoryOutOfRangeIsNamed) {
+  expectRefused("small_terrain_memory", "_terrain_max_memory:=0.5",
+                "/small_terrain_memory/terrain_max_memory: must be within 1 .. 1e9 MB, got 0.5");
+  expectRefused("zero_terrain_memory", "_terrain_max_memory:=0",
+                "/zero_terrain_memory/terrain_max_memory: must be > 0 MB");
 }
 
 // ~diagnostic_period <= 0 made diagnostic_updater publish at every tick; not finite is no period.

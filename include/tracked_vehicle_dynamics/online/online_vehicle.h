@@ -71,6 +71,10 @@ struct OnlineVehicleOptions {
   double comfort_running_rms_time = 1.0;
   /// Terrain kept behind the rearmost contact when patches are dropped [m].
   double terrain_keep_behind = 1.0;
+  /// Largest memory the stored terrain may hold [MB = 1e6 bytes] (TerrainBuffer::setMemoryLimit):
+  /// a patch beyond it is refused. 1,000 MB hold 625 km of a one-line terrain sampled every 1 cm,
+  /// 125 km of a 9-line one.
+  double terrain_max_memory_mb = 1000.0;
   /// Largest rate [m/s^2] at which the speed rises towards the commanded one, and at which it
   /// falls. Both 0: no slew (a new speed applies at once) and no travel inertia. One of them 0
   /// and the other > 0: the 0 one takes the other's value (a slewing vehicle with one direction
@@ -141,6 +145,8 @@ class OnlineVehicle {
   /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.
   /// Returns false for a valid patch ending wholly behind the terrain kept (more than
   /// terrain_keep_behind behind the rear contact, beyond the bridged gap): it was dropped.
+  /// A patch that would take the stored terrain beyond terrain_max_memory_mb (what lies behind
+  /// the vehicle freed first) is invalid too.
   bool addTerrain(const TerrainPatch& patch);
   /// Commanded speed [m/s]: used from the next step on, or, with a slew, approached at the
   /// bounded rate from the next step on. Throws InputError if negative or not finite.

@@ -12,6 +12,7 @@
 // Not thread-safe: the owner serialises access.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -29,8 +30,20 @@ class TerrainBuffer {
   /// Stores a patch; the newest patch wins where patches overlap, and older patches it covers
   /// entirely are freed. start_station [m], spacing [m] > 0, lateral [n_y] strictly increasing
   /// [m], heights [n_y x n_samples] [m], n_samples >= 1. Throws InputError (naming the patch
-  /// start and the offending index) for non-finite values, size mismatches, spacing <= 0.
+  /// start and the offending index) for non-finite values, size mismatches, spacing <= 0, and
+  /// when the patches stored with it would hold more than memoryLimit(); nothing changes then.
   void addPatch(double start_station, double spacing, const Vector& lateral, const Matrix& heights);
+
+  /// Memory a patch of n_lines x n_samples holds in the buffer [bytes]: its stations, lateral
+  /// positions and heights (8 bytes each; the container's own few hundred bytes not counted).
+  static std::size_t patchBytes(std::size_t n_lines, std::size_t n_samples);
+  /// Largest memory the stored patches may hold together [bytes] (default: no limit). An online
+  /// source streaming stations the vehicle never reaches (a map's x instead of the path's)
+  /// would otherwise grow the buffer for as long as it runs. Patches already stored stay.
+  void setMemoryLimit(std::size_t bytes) { memory_limit_ = bytes; }
+  std::size_t memoryLimit() const { return memory_limit_; }
+  /// Memory the stored patches hold [bytes], as patchBytes() counts it.
+  std::size_t storedBytes() const { return stored_bytes_; }
 
   /// True when height(x, ·) is defined: x inside a patch or inside a bridged gap.
   bool covers(double x) const;
@@ -63,6 +76,8 @@ class TerrainBuffer {
   double coveredUntil() const { return covered_until_; }
   /// First covered station [m]; +infinity when empty.
   double coveredFrom() const;
+  /// Last station of any stored patch [m] (beyond gaps too); -infinity when empty.
+  double furthestEnd() const;
 
   std::size_t patchCount() const { return patches_.size(); }
   bool empty() const { return patches_.empty(); }
@@ -89,6 +104,8 @@ class TerrainBuffer {
   double max_length_ = 0.0;   // longest stored patch [m], bounds the backward search
   double max_spacing_ = 0.0;  // largest stored spacing [m]
   double covered_until_ = -std::numeric_limits<double>::infinity();  // coveredUntil()
+  std::size_t stored_bytes_ = 0;                                     // storedBytes()
+  std::size_t memory_limit_ = std::numeric_limits<std::size_t>::max();
 };
 
 }  // namespace terrain
