@@ -23,6 +23,9 @@ constexpr double kLowPassLimit = 0.4;
 constexpr int kFitGridPoints = 240;
 constexpr double kFitKnee = 0.25;
 constexpr double kFitTopWeight = 0.03;
+// A section of two finite zeros and two poles, all within |s| T <= this (below fs / 12.6): its
+// zeros are mapped as its poles are (matched z-transform) instead of fitted.
+constexpr double kMatchedRootLimit = 0.5;
 
 const char* weightingName(Weighting weighting) {
   switch (weighting) {
@@ -203,6 +206,41 @@ WeightingFilter::Biquad WeightingFilter::matchedMagnitude(const AnalogSection& a
   }
   // Zeros of H at s = 0 stay exact zeros at z = 1: B(z) = (1 - z^-1)^m R(z), deg R = 2 - m.
   const int m = a.b0 != 0.0 ? 0 : (a.b1 != 0.0 ? 1 : 2);
+
+  // Two finite zeros and two poles, all well below Nyquist (Wk's upward step): the zeros too are
+  // mapped exactly, z = exp(s_z T), and the gain matched at DC, B(1)/A(1) = H(0). With equal
+  // degrees the mapping distorts numerator and denominator alike and the two cancel: for the
+  // upward step within 0.002 dB of |H| up to fs/10 at fs = 30 Hz, 1e-5 dB at 1 kHz. The fit below
+  // cannot recover such zeros at a high fs, whose radius differs from 1 by 2 zeta omega T ~ 1e-4
+  // (the 8 Hz weighted 11 dB low at fs = 100 kHz; review 133). (1 - z) = -expm1(s T) keeps the
+  // DC products accurate when every root is near z = 1.
+  if (m == 0 && a.b2 != 0.0 && p.size() == 2) {
+    const std::complex<double> root =
+        std::sqrt(std::complex<double>(a.b1 * a.b1 - 4.0 * a.b2 * a.b0));
+    const std::complex<double> s1 = (-a.b1 + root) / (2.0 * a.b2);
+    const std::complex<double> s2 = (-a.b1 - root) / (2.0 * a.b2);
+    double largest = 0.0;
+    for (const std::complex<double>& r : {s1, s2, p[0], p[1]})
+      largest = std::max(largest, std::abs(r) * t);
+    if (largest <= kMatchedRootLimit) {
+      const auto expm1 = [](const std::complex<double>& x) {
+        // exp(x) - 1 accurate for small |x|: expm1 of the real part, the rotation apart.
+        const double e = std::expm1(x.real());
+        return std::complex<double>(
+            e * std::cos(x.imag()) - 2.0 * std::pow(std::sin(0.5 * x.imag()), 2),
+            (e + 1.0) * std::sin(x.imag()));
+      };
+      const std::complex<double> z1 = std::exp(s1 * t);
+      const std::complex<double> z2 = std::exp(s2 * t);
+      const double numerator_dc = (expm1(s1 * t) * expm1(s2 * t)).real();  // (1 - z1)(1 - z2)
+      const double denominator_dc = (expm1(p[0] * t) * expm1(p[1] * t)).real();
+      const double gain = (a.b0 / a.a0) * denominator_dc / numerator_dc;
+      q.b0 = gain;
+      q.b1 = -gain * (z1 + z2).real();
+      q.b2 = gain * (z1 * z2).real();
+      return q;
+    }
+  }
 
   // Log grid from well below the section's slowest root to Nyquist (and DC when H(0) != 0).
   double slowest = 0.5 * sample_rate;

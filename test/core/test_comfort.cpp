@@ -134,7 +134,9 @@ double worstErrorDb(const WeightingFilter& filter, Weighting weighting, double f
 
 TEST(Iso2631, MatchedFilterMatchesAnalogueUpToTenthOfSampleRate) {
   for (Weighting weighting : kWeightings) {
-    for (double fs : {30.0, 100.0, 200.0, 1000.0, 5000.0}) {
+    // Up to 100 kHz, the node's and simulate's highest rate (the fit of Wk's upward step lost
+    // its numerator above 60 kHz once: 11 dB low at 8 Hz at 100 kHz).
+    for (double fs : {30.0, 100.0, 200.0, 1000.0, 5000.0, 20000.0, 50000.0, 100000.0}) {
       const WeightingFilter filter = WeightingFilter::iso2631(weighting, fs);
       EXPECT_LT(worstErrorDb(filter, weighting, 0.1 * fs), kFilterToleranceDb) << "fs = " << fs;
     }
@@ -149,13 +151,14 @@ TEST(Iso2631, MatchedFilterPhaseIsAnalogueUpToATimeShift) {
   // arg(H_d / W) = 2π f τ for one constant τ (a shift the metrics are blind to), over the
   // standard's band 0.5 .. 80 Hz below fs/10.
   for (Weighting weighting : kWeightings) {
-    for (double fs : {100.0, 1000.0, 5000.0}) {
+    for (double fs : {100.0, 1000.0, 5000.0, 100000.0}) {
       const WeightingFilter filter = WeightingFilter::iso2631(weighting, fs);
       const auto phase_error = [&](double f) {
         return std::arg(filter.response(f) / iso2631Response(weighting, f));
       };
       const double advance = phase_error(1.0) / (2.0 * kPi * 1.0);  // τ [s]
-      EXPECT_LT(std::abs(advance) * fs, 1.5) << "fs = " << fs;
+      // About a sample; at 100 kHz up to 2.7 (27 us, from a phase of 1.7e-4 rad at 1 Hz).
+      EXPECT_LT(std::abs(advance) * fs, fs > 10000.0 ? 3.0 : 1.5) << "fs = " << fs;
       for (double f = 0.5; f <= std::min(80.0, 0.1 * fs); f *= std::pow(10.0, 0.1)) {
         EXPECT_NEAR(phase_error(f), 2.0 * kPi * f * advance, kPhaseTolerance)
             << "fs = " << fs << " Hz, f = " << f << " Hz";
