@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -25,15 +26,37 @@ std::string trim(std::string_view text) {
 
 }  // namespace
 
-std::optional<double> parseNumber(const std::string& cell) {
+namespace {
+
+// A number's digits with a leading '+' dropped (from_chars refuses it), and what from_chars
+// makes of them: errc() with the value, result_out_of_range for a number beyond double's range,
+// invalid_argument for anything else.
+std::errc scanNumber(const std::string& cell, double* value) {
   std::string_view digits(cell);
   if (digits.size() > 1 && digits.front() == '+')
     digits.remove_prefix(1);
   if (digits.empty())
-    return std::nullopt;
+    return std::errc::invalid_argument;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), *value);
+  if (end != digits.data() + digits.size())
+    return std::errc::invalid_argument;
+  if (error == std::errc::result_out_of_range) {
+    // A subnormal (a save's 4.9e-324) is a double all the same, as the YAML reader takes it;
+    // only overflow and underflow to zero are out of range.
+    const double subnormal = std::strtod(cell.c_str(), nullptr);
+    if (subnormal != 0.0 && std::abs(subnormal) < 1.0) {
+      *value = subnormal;
+      return std::errc();
+    }
+  }
+  return error;
+}
+
+}  // namespace
+
+std::optional<double> parseNumber(const std::string& cell) {
   double value = 0.0;
-  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (error != std::errc() || end != digits.data() + digits.size())
+  if (scanNumber(cell, &value) != std::errc())
     return std::nullopt;
   return value;
 }
@@ -111,7 +134,14 @@ std::string printable(const std::string& cell) {
 
 double CsvReader::number(const CsvRow& row, std::size_t column, const std::string& what) const {
   const std::string& cell = row.cells[column];
-  const std::optional<double> value = parseNumber(cell);
+  double parsed = 0.0;
+  const std::errc error = scanNumber(cell, &parsed);
+  if (error == std::errc::result_out_of_range) {
+    fail(row, column,
+         what + " '" + printable(cell) + "' is out of range (a double holds 4.9e-324 .. 1.8e308)");
+  }
+  const std::optional<double> value =
+      error == std::errc() ? std::optional<double>(parsed) : std::nullopt;
   if (!value)
     fail(row, column, what + " '" + printable(cell) + "' is not a number");
   if (!std::isfinite(*value))

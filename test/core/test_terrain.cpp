@@ -1072,6 +1072,9 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
       {"x,-1,1\n0,0,0\n2,0,0\n1,0,0\n", {"row 4", "stations must be strictly increasing"}},
       {"x,-1,1\n0,0,0\n1,0\n", {"row 3", "expected 3 columns (x and 2 heights), got 2"}},
       {"x,-1,1\n0,0,0\n1,abc,0\n", {"row 3, column 2", "height 'abc' is not a number"}},
+      // Beyond a double's range either way: out of range, as the YAML reader says it.
+      {"x,-1,1\n0,0,0\n1,1e400,0\n", {"row 3, column 2", "height '1e400' is out of range"}},
+      {"x,-1,1\n0,0,0\n1,0,-1e-400\n", {"row 3, column 3", "height '-1e-400' is out of range"}},
       {"# only a comment\n\n", {"empty (no header or data rows)"}},
       {"x,-1,1\n", {"no data rows (only a header)"}},
       {"0,0,0\n1,0,0\n", {"row 1", "need a header row"}},
@@ -1085,6 +1088,10 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
     SCOPED_TRACE(cases[i].content);
     expectInputError([&] { loadTerrainCsv(path); }, parts);
   }
+  // A subnormal is a double all the same (what a save of a tiny value writes).
+  EXPECT_EQ(loadTerrainCsv(dir.file("subnormal.csv", "x,-1,1\n0,0,0\n1,1e-320,0\n"))
+                .heights()(0, 1),
+            1e-320);
   // The bound itself is a station like any other.
   EXPECT_EQ(loadTerrainCsv(dir.file("bound.csv", "x,-1,1\n0,0,0\n1e8,0,0\n")).endStation(), 1e8);
   expectInputError([&] { loadTerrain(dir.file("missing.csv")); },
