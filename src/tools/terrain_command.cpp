@@ -37,6 +37,7 @@ struct TerrainOptions {
   double min_frequency = terrain::Iso8608Options{}.min_frequency;
   bool min_frequency_given = false;  // the note on a band cut by the length is for a chosen one
   double max_frequency = terrain::Iso8608Options{}.max_frequency;
+  double waviness = terrain::Iso8608Options{}.waviness;
   std::string out_file;
   bool json = false;
 };
@@ -102,6 +103,7 @@ void run(TerrainOptions opt) {
     }
     iso_options.min_frequency = opt.min_frequency;
     iso_options.max_frequency = opt.max_frequency;
+    iso_options.waviness = opt.waviness;
     iso_options.taper_length = opt.taper;
     iso_options.correlation = opt.independent_sides ? terrain::LateralCorrelation::IndependentSides
                                                     : terrain::LateralCorrelation::Uniform;
@@ -123,7 +125,8 @@ void run(TerrainOptions opt) {
   // The band generated: a road of length L holds no wavelength longer than 2 L.
   const double n_low = std::max(opt.min_frequency, 0.5 / opt.length);
   if (iso) {
-    expected_rms = std::sqrt(terrain::iso8608Variance(road_class, n_low, opt.max_frequency));
+    expected_rms =
+        std::sqrt(terrain::iso8608Variance(road_class, n_low, opt.max_frequency, opt.waviness));
     if (n_low > opt.min_frequency && opt.min_frequency_given)
       std::cerr << "tvd: note: --min-frequency " << brief(opt.min_frequency)
                 << " cycles/m is below 1/(2 --length) = " << brief(n_low) << ": a road of "
@@ -131,8 +134,8 @@ void run(TerrainOptions opt) {
     else if (n_low > opt.min_frequency) {
       // The default band's longest waves (90 m) do not fit: the road is smoother than its class
       // over the default band. Said when that costs more than 1 % of the r.m.s. height.
-      const double full_rms =
-          std::sqrt(terrain::iso8608Variance(road_class, opt.min_frequency, opt.max_frequency));
+      const double full_rms = std::sqrt(
+          terrain::iso8608Variance(road_class, opt.min_frequency, opt.max_frequency, opt.waviness));
       if (expected_rms < 0.99 * full_rms) {
         const std::streamsize precision = std::cerr.precision();
         std::cerr << std::setprecision(3) << "tvd: note: a road of " << opt.length
@@ -172,6 +175,7 @@ void run(TerrainOptions opt) {
       json.field("iso8608_class", std::string(1, road_class))
           .field("seed", static_cast<long long>(opt.seed))
           .field("psd_at_n0_m3", terrain::iso8608ReferencePsd(road_class))
+          .field("waviness", opt.waviness)
           .field("band_cycles_per_m", std::vector<double>{n_low, opt.max_frequency})
           .field("taper_m", opt.taper)
           .field("band_rms_height_m", expected_rms)
@@ -191,8 +195,9 @@ void run(TerrainOptions opt) {
             << t.heights().minCoeff() << " .. " << t.heights().maxCoeff() << " m, r.m.s. " << rms
             << " m";
   if (iso)
-    std::cout << " (ISO 8608 class " << road_class << ": " << expected_rms
-              << " m r.m.s. in the band, untapered)";
+    std::cout << " (ISO 8608 class " << road_class
+              << (opt.waviness != 2.0 ? ", waviness " + brief(opt.waviness) : std::string()) << ": "
+              << expected_rms << " m r.m.s. in the band, untapered)";
   std::cout << "\n  wrote " << opt.out_file << "\n";
 }
 
@@ -247,7 +252,12 @@ void registerTerrainCommand(CLI::App& app) {
             ->check(positiveNumber()),
         cmd->add_option("--max-frequency", opt->max_frequency,
                         "random road: highest spatial frequency [cycles/m]")
-            ->check(positiveNumber())})
+            ->check(positiveNumber()),
+        // As ride --iso8608's (measured roads: 1.5 .. 3.5), so that a spectral ride has its
+        // time-domain road.
+        cmd->add_option("--waviness", opt->waviness,
+                        "random road: PSD slope w in G_d(n0) (n/n0)^-w (ISO 8608: 2)")
+            ->check(numberIn(0.5, 5.0))})
     o->needs(iso);
   cmd->add_option("--out", opt->out_file, "terrain file to write (.csv, .yaml or .yml)")
       ->required()

@@ -1322,6 +1322,40 @@ class TvdCliTest(unittest.TestCase):
                           "road wheels (0.5-1 m apart) and the track pads see no feature shorter "
                           "than 4 m; stations in mm read as m?"], d["warnings"])
 
+    def test_terrain_iso8608_waviness(self):
+        """tvd terrain --waviness w (as ride --iso8608's): the road's spectrum falls as n^-w. Over
+        one period, untapered, its variance in each band of the periodogram is the closed form
+        G_d(n0) n0^w (n_a^(1-w) - n_b^(1-w)) / (w - 1); w = 3 halves it per octave twice as
+        fast as ISO 8608's w = 2."""
+        length, n0, n_low, n_high, spacing = 400.0, 0.1, 0.011, 2.83, 0.05
+        road = self.path("wavy.csv")
+        d = self.tvd_json("terrain", "--iso8608", "C", "--waviness", "3", "--length",
+                          str(length), "--taper", "0", "--seed", "3", "--out", road)
+        self.assertEqual(d["waviness"], 3)
+
+        def band(a, b, w=3.0):
+            return 256e-6 * n0 ** w * (a ** (1 - w) - b ** (1 - w)) / (w - 1)
+
+        self.assertAlmostEqual(d["band_rms_height_m"] / np.sqrt(band(n_low, n_high)), 1.0, places=8)
+        self.assertAlmostEqual(d["rms_height_m"] / d["band_rms_height_m"], 1.0, places=9)
+        _, stations, heights = read_terrain_csv(road)
+        profile = heights[:-1, 0]  # one period: the last station repeats the first
+        self.assertEqual(len(profile), round(length / spacing))
+        spectrum = np.abs(np.fft.rfft(profile)) ** 2 * 2 / len(profile) ** 2  # one-sided variance
+        n = np.fft.rfftfreq(len(profile), spacing)
+        for a in (0.05, 0.1, 0.2, 0.4, 0.8):
+            # Octaves [a, 2a) hold whole bins (a multiple of 1/L): each is the closed form
+            # within the discrete band's share at its edges (bins of width 1/L = 2.5e-3).
+            inside = (n >= a - 1.25e-3) & (n < 2 * a - 1.25e-3)
+            self.assertAlmostEqual(spectrum[inside].sum() / band(a - 1.25e-3, 2 * a - 1.25e-3),
+                                   1.0, delta=0.01, msg=f"octave from {a} cycles/m")
+        r = self.tvd("terrain", "--iso8608", "C", "--waviness", "9", "--out", self.path("w9.csv"),
+                     status=2)
+        self.assertIn("--waviness", r.stderr)
+        r = self.tvd("terrain", "--track", "long_hill", "--waviness", "3",
+                     "--out", self.path("w3.csv"), status=2)
+        self.assertIn("--waviness requires --iso8608", r.stderr)
+
     def test_terrain_iso8608_road_and_ride_on_it(self):
         """tvd terrain --iso8608: the road's r.m.s. height is the PSD's over the generated band
         (closed form); simulated on it, a class-D road (4x the PSD of C, same seed, so every height
