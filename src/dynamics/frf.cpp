@@ -109,6 +109,17 @@ ComplexMatrix frfModal(const ModalSystem& modal, const Vector& frequencies_hz,
   const Vector& d_r = modal.dampingCoefficients();
   ComplexMatrix frf(frequencies_hz.size(), modal.outputCount());
   ComplexVector eta(modal.modeCount());
+  // At f = 0 a rigid-body mode's term of eq. 20 is 0/0 (the displacement under a static load on
+  // a free body is unbounded; the acceleration's limit depends on its damping): said, not
+  // returned as NaN. The vehicles' ground ties leave them none.
+  if ((frequencies_hz.array() == 0.0).any()) {
+    for (DofIndex r = 0; r < modal.modeCount(); ++r) {
+      if (omega_r(r) == 0.0)
+        throw SolverError("frfModal: mode " + std::to_string(r) +
+                          " is a rigid-body mode (0 Hz) and the grid holds 0 Hz, where its term "
+                          "of the modal sum is 0/0: start the grid above 0 Hz");
+    }
+  }
   for (DofIndex i = 0; i < frequencies_hz.size(); ++i) {
     const double omega = kTwoPi * frequencies_hz(i);
     const ComplexVector tau = delay.at(omega, modal.inputCount());

@@ -23,8 +23,9 @@ constexpr double kSymmetryTolerance = 1e-8;
 // with no stiffness left to hold it.
 constexpr double kRigidBodyTolerance = 1e-12;
 // Negative ones down to this fraction are a rigid-body mode's rounding too (set to 0); below it,
-// K is indefinite.
-constexpr double kIndefiniteTolerance = 1e-10;
+// K is indefinite. The same bound: 1e-10 of the tracked vehicle's lambda_max passed an unstable
+// omega^2 of -17 rad^2/s^2 as a rigid mode (review 134), a thousand times the rounding.
+constexpr double kIndefiniteTolerance = kRigidBodyTolerance;
 
 void requireSymmetric(const Matrix& x, const std::string& what) {
   const double norm = x.norm();

@@ -306,6 +306,14 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     selection_options.reference_name = std::string(vehicle::variantName(other_variant));
     selection = selectModes(model.modes.frequencies_hz, selection_options, &reference);
   } else {
+    const auto solved = static_cast<int>(model.modes.frequencies_hz.size());
+    if (options.mode_count > solved)
+      throw ReductionOptionsError(
+          "reduction: mode_count " + std::to_string(options.mode_count) +
+          " (tvd --modes, ~reduction/mode_count) with rule band also selects the lowest " +
+          std::to_string(options.mode_count) + " global modes, but only " + std::to_string(solved) +
+          " were solved (tvd --global-modes, ~reduction/global_modes): raise that, or give "
+          "mode_count 0 to select the modes below the band");
     selection_options.rule =
         options.mode_count > 0 ? ModeSelectionRule::Count : ModeSelectionRule::FrequencyBand;
     selection_options.count = options.mode_count;

@@ -51,7 +51,8 @@ void ReductionFlags::addTo(CLI::App* command) {
           ->add_option(
               "--modes", o.mode_count,
               "fixed-interface modes (0: twice the selected, more until the modes below --band "
-              "are within 2 %; ~reduction/mode_count)")
+              "are within 2 %; ~reduction/mode_count); with --rule band a positive N also "
+              "selects the lowest N global modes instead of those below --band")
           ->check(CLI::Range(0, kMaxReductionCount)),
   };
   // (0, 1] as the node's ~reduction/mac_threshold: at 0 every mode would correlate.
@@ -150,7 +151,9 @@ ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& descriptio
     s.options = loaded.options;
     s.warnings = s.model.warnings;  // as the run that reduced it warned
   } catch (const reduction::StaleCacheError& e) {
-    throw InputError(e.what() + again);
+    // Once: some of the file's own checks already end in that advice.
+    const std::string what = e.what();
+    throw InputError(what.find("tvd reduce") == std::string::npos ? what + again : what);
   }
   if (variant_given && s.variant != variant)
     throw InputError(command + ": --reduced " + file + " is the " +

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "dynamics_test_models.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
@@ -26,6 +28,18 @@ double relativeError(const ComplexMatrix& a, const ComplexMatrix& b, double floo
       if (std::abs(b(i, j)) > floor * peak)
         worst = std::max(worst, std::abs(a(i, j) - b(i, j)) / std::abs(b(i, j)));
   return worst;
+}
+
+// The call throws SolverError naming every part.
+template <typename Call>
+void expectSolverError(Call call, const std::vector<std::string>& parts) {
+  try {
+    call();
+    ADD_FAILURE() << "no SolverError thrown";
+  } catch (const SolverError& e) {
+    for (const std::string& part : parts)
+      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
@@ -80,6 +94,40 @@ TEST(Frf, SlowModeBesideAStiffTieIsNotRigid) {
   EXPECT_NEAR(std::abs(by_modes(0, 0)), 1.0, 1e-9);
   for (int i = 0; i < f.size(); ++i)
     EXPECT_LT(std::abs(by_modes(i, 0) - direct(i, 0)), 1e-6 * std::abs(direct(i, 0))) << f(i);
+}
+
+// A free body (a rigid-body mode) driven by a force k u: x/h = k / (-w^2 m) away from 0 Hz; at
+// 0 Hz the modal sum's term is 0/0, refused with its cause instead of returned as NaN.
+TEST(Frf, RigidBodyModeGivesTheMassLineAndRefusesZeroHertz) {
+  const double m = 40.0, k = 3e5;
+  SecondOrderSystem s = test::oneDof(m, 0.0, k, 0.0);
+  s.stiffness(0, 0) = 0.0;  // the input still acts as the force k u
+  const ModalSystem modal(s);
+  EXPECT_EQ(modal.naturalFrequencies()(0), 0.0);
+  const Vector f = (Vector(2) << 1.0, 7.5).finished();
+  const ComplexMatrix x =
+      frfModal(modal, f, InputDelay::synchronous(), OutputQuantity::Displacement);
+  for (int i = 0; i < f.size(); ++i) {
+    const double w = kTwoPi * f(i);
+    EXPECT_NEAR(std::abs(x(i, 0) - Complex(-k / (w * w * m), 0.0)), 0.0, 1e-12 * k / (w * w * m));
+  }
+  expectSolverError([&] { frfModal(modal, Vector::Zero(1), InputDelay::synchronous()); },
+                    {"mode 0 is a rigid-body mode", "start the grid above 0 Hz"});
+}
+
+// omega^2 below -1e-12 of the largest is an indefinite K, not a rigid-body mode's rounding
+// (1e-10 of a reduced vehicle's 1.7e11 rad^2/s^2 let -17 rad^2/s^2 pass as a rigid mode).
+TEST(Frf, ModalSystemRefusesANegativeOmegaSquaredBeyondRounding) {
+  SecondOrderSystem s = test::quarterCar();
+  s.stiffness.setZero();
+  s.input_stiffness.setZero();
+  s.damping.setZero();
+  s.stiffness(1, 1) = 1e10;  // omega^2 = 1e10 / 30 on the unsprung mass
+  const double lambda_max = 1e10 / 30.0;
+  s.stiffness(0, 0) = -5e-13 * lambda_max * 300.0;  // rounding: a rigid-body mode
+  EXPECT_EQ(ModalSystem(s).naturalFrequencies()(0), 0.0);
+  s.stiffness(0, 0) = -5e-12 * lambda_max * 300.0;
+  expectSolverError([&] { ModalSystem{s}; }, {"stiffness K is indefinite"});
 }
 
 // Rayleigh damping: the modal superposition of eq. 20 equals the direct solution of eq. 18.

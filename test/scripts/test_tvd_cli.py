@@ -651,6 +651,18 @@ class TvdCliTest(unittest.TestCase):
             np.testing.assert_allclose(np.array(by_part["hull"][5 + 3 * k:8 + 3 * k], dtype=float),
                                        u_g, rtol=0, atol=1e-12)
 
+    def test_reduce_band_rule_mode_count_beyond_the_solved_modes_is_named(self):
+        """With --rule band, --modes N also selects the lowest N global modes (help and README
+        say so): more than --global-modes solved is refused naming both options, not as the
+        selection's 'count 60 is not in 1..40'."""
+        r = self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                     "--modes", "60", "--out", self.path("m.mat"), status=2)
+        self.assertIn("mode_count 60 (tvd --modes, ~reduction/mode_count) with rule band also "
+                      "selects the lowest 60 global modes, but only 40 were solved (tvd "
+                      "--global-modes", r.stderr)
+        self.assertIn("with --rule band a positive N also selects the lowest N global modes",
+                      " ".join(self.tvd("reduce", "--help").stdout.split()))
+
     def test_reduce_json_and_mat(self):
         out = self.path("untracked.mat")
         d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", out)
@@ -2562,6 +2574,18 @@ class TvdCliTest(unittest.TestCase):
                 self.assertIn("reduced from another description", lines[0])
             else:
                 self.assertIn("truncated", lines[0])
+        # A file whose checksum holds but whose K_R is not positive definite (edited and signed
+        # again): refused by the file's own check, its advice given once.
+        edited = self.path("band40_edited.mat")
+        values = {k: v for k, v in scipy.io.loadmat(mat).items() if not k.startswith("__")}
+        values["K_R"][0, 0] = -values["K_R"][0, 0]
+        scipy.io.savemat(edited, values)
+        values["checksum"] = documented_checksum(edited)
+        scipy.io.savemat(edited, values)
+        result = self.tvd("frf", "--vehicle", VEHICLE, "--reduced", edited,
+                          status=INPUT_ERROR_STATUS)
+        self.assertIn("K_R is not positive definite", result.stderr)
+        self.assertEqual(result.stderr.count("tvd reduce"), 1, result.stderr)
 
     def test_reduced_file_conflicts_are_named(self):
         mat, _ = self.band_model()

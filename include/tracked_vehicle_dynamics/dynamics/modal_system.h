@@ -54,7 +54,8 @@ class ModalSystem {
   DofIndex inputCount() const { return modal_input_stiffness_.cols(); }
   DofIndex outputCount() const { return modal_output_.rows(); }
 
-  /// omega_r [rad/s], ascending; rigid-body modes (|omega^2| < 1e-10 max omega^2) are exactly 0.
+  /// omega_r [rad/s], ascending; rigid-body modes (|omega^2| <= 1e-12 max |omega^2|) are exactly 0;
+  /// below -1e-12 max |omega^2| K is indefinite (SolverError).
   const Vector& naturalFrequencies() const { return frequencies_; }
   /// d_r = 2 zeta_r omega_r [1/s]: the modal damping coefficient (defined for rigid modes too).
   const Vector& dampingCoefficients() const { return damping_coefficients_; }
