@@ -1089,9 +1089,9 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
     expectInputError([&] { loadTerrainCsv(path); }, parts);
   }
   // A subnormal is a double all the same (what a save of a tiny value writes).
-  EXPECT_EQ(loadTerrainCsv(dir.file("subnormal.csv", "x,-1,1\n0,0,0\n1,1e-320,0\n"))
-                .heights()(0, 1),
-            1e-320);
+  EXPECT_EQ(
+      loadTerrainCsv(dir.file("subnormal.csv", "x,-1,1\n0,0,0\n1,1e-320,0\n")).heights()(0, 1),
+      1e-320);
   // The bound itself is a station like any other.
   EXPECT_EQ(loadTerrainCsv(dir.file("bound.csv", "x,-1,1\n0,0,0\n1e8,0,0\n")).endStation(), 1e8);
   expectInputError([&] { loadTerrain(dir.file("missing.csv")); },
