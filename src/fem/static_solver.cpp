@@ -7,12 +7,6 @@
 namespace tracked_vehicle_dynamics {
 namespace fem {
 
-namespace {
-// Below this reciprocal condition number the factorisation of K is treated as singular: the
-// displacement of a free motion would be round-off amplified by 1/rcond.
-constexpr double kSingularRcond = 1e-14;
-}  // namespace
-
 StaticResult solveStatic(const System& system, const Vector& load) {
   const DofIndex n = system.size();
   if (load.size() != n)

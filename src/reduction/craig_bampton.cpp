@@ -238,7 +238,11 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
   if (s > 0 && m > 0) {
     stage = Clock::now();
     fem::SparseCholesky cholesky;
-    if (!cholesky.factorize(k_ss))
+    // CHOLMOD refuses a zero or negative pivot only: a singular K_ss whose pivot rounds to a
+    // tiny positive value factorised, and the constraint modes then carried an arbitrary free
+    // motion (review 134: a free-free beam with its rotation about one master left free, T off
+    // by 2.6). rcond = (min L_ii / max L_ii)^2 of the vehicles' K_ss is 1e-6 .. 1e-7.
+    if (!cholesky.factorize(k_ss) || cholesky.rcond() < fem::kSingularRcond)
       throw SolverError("craigBampton: K_ss (" + std::to_string(s) +
                         " slave DOFs) is not positive "
                         "definite: the " +

@@ -10,6 +10,12 @@
 namespace tracked_vehicle_dynamics {
 namespace fem {
 
+/// Below this rcond() a factorisation that succeeded is treated as singular: CHOLMOD refuses
+/// only a pivot that is zero or negative, and a singular matrix's pivot may round to a tiny
+/// positive one; a free motion's displacement is then round-off amplified by 1/rcond. The
+/// vehicles' stiffness matrices have 1e-6 .. 1e-8.
+constexpr double kSingularRcond = 1e-14;
+
 class SparseCholesky {
  public:
   SparseCholesky();
