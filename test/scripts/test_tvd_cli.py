@@ -656,7 +656,7 @@ class TvdCliTest(unittest.TestCase):
         say so): more than --global-modes solved is refused naming both options, not as the
         selection's 'count 60 is not in 1..40'."""
         r = self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
-                     "--modes", "60", "--out", self.path("m.mat"), status=2)
+                     "--modes", "60", "--out", self.path("band_modes_60.mat"), status=2)
         self.assertIn("mode_count 60 (tvd --modes, ~reduction/mode_count) with rule band also "
                       "selects the lowest 60 global modes, but only 40 were solved (tvd "
                       "--global-modes", r.stderr)
