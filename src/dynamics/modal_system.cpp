@@ -17,15 +17,15 @@ namespace {
 // Relative asymmetry tolerated in M and K (rounding of a reduction), ||X - X^T|| / ||X||.
 constexpr double kSymmetryTolerance = 1e-8;
 // Eigenvalues with |omega^2| below this fraction of the largest are rigid-body modes (set to 0):
-// the dense solver's rounding, a few n eps lambda_max. Not more: a reduced vehicle's lambda_max
-// is ~1.7e11 rad^2/s^2 (the 2e10 N/m wheel ties on light soles), so 1e-10 of it took any real
-// chain mode below ~0.6 Hz for a rigid one (a lighter vehicle's top run has them at 0.51 Hz),
-// with no stiffness left to hold it.
+// the dense solver's rounding, a few n eps lambda_max; below minus it, K is indefinite. Not
+// more: a reduced vehicle's lambda_max is ~1.7e11 rad^2/s^2 (the 2e10 N/m wheel ties on light
+// soles), so 1e-10 of it took any real chain mode below ~0.6 Hz for a rigid one (a lighter
+// vehicle's top run has them at 0.51 Hz), with no stiffness left to hold it, and passed an
+// unstable omega^2 of -17 rad^2/s^2 as a rigid mode (review 134).
 constexpr double kRigidBodyTolerance = 1e-12;
-// Negative ones down to this fraction are a rigid-body mode's rounding too (set to 0); below it,
-// K is indefinite. The same bound: 1e-10 of the tracked vehicle's lambda_max passed an unstable
-// omega^2 of -17 rad^2/s^2 as a rigid mode (review 134), a thousand times the rounding.
-constexpr double kIndefiniteTolerance = kRigidBodyTolerance;
+// |phi^T C phi| below this fraction of the largest is rounding (beta K on a rigid-body mode):
+// taken as >= 0; more negative, C is not positive semi-definite.
+constexpr double kDampingRoundoff = 1e-10;
 
 void requireSymmetric(const Matrix& x, const std::string& what) {
   const double norm = x.norm();
@@ -60,8 +60,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
   Vector lambda = solver.eigenvalues();
   const double lambda_max = std::max(lambda.cwiseAbs().maxCoeff(), 0.0);
   for (DofIndex r = 0; r < n; ++r) {
-    if (std::abs(lambda(r)) <= kRigidBodyTolerance * lambda_max ||
-        (lambda(r) < 0.0 && -lambda(r) <= kIndefiniteTolerance * lambda_max)) {
+    if (std::abs(lambda(r)) <= kRigidBodyTolerance * lambda_max) {
       lambda(r) = 0.0;
     } else if (lambda(r) < 0.0) {
       throw SolverError("ModalSystem: stiffness K is indefinite: mode " + std::to_string(r) +
@@ -83,7 +82,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
     const double d_max = damping_coefficients_.cwiseAbs().maxCoeff();
     for (DofIndex r = 0; r < n; ++r) {
       double& d = damping_coefficients_(r);
-      if (std::abs(d) <= kIndefiniteTolerance * d_max)
+      if (std::abs(d) <= kDampingRoundoff * d_max)
         d = std::max(d, 0.0);
       if (d < 0.0)
         throw InputError("ModalSystem: damping C is not positive semi-definite: mode " +

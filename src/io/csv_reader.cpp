@@ -24,10 +24,6 @@ std::string trim(std::string_view text) {
   return std::string(text.substr(first, last - first + 1));
 }
 
-}  // namespace
-
-namespace {
-
 // A number's digits with a leading '+' dropped (from_chars refuses it), and what from_chars
 // makes of them: errc() with the value, result_out_of_range for a number beyond double's range,
 // invalid_argument for anything else.
