@@ -126,6 +126,11 @@ def main():
                   % (comfort.vibration_total_value, comfort.weighted_rms_roll,
                      comfort.weighted_rms_pitch, comfort.weighted_rms_yaw,
                      comfort.seat_surface_total_value))
+        if hasattr(comfort, "mtvv_linear"):  # a bag of version 0.5.1 or later
+            print("  MTVV (linear) %.3f m/s^2, crest factor %.2f"
+                  % (comfort.mtvv_linear,
+                     comfort.peak_weighted / comfort.weighted_rms if comfort.weighted_rms > 0
+                     else float("nan")))
     if loop:
         mean_us = float(loop.get("step time mean [us]", "nan"))
         rate = float(loop.get("rate [Hz]", "1000"))

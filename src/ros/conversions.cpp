@@ -79,6 +79,8 @@ void toMsg(const ComfortReport& report, Comfort* msg) {
   msg->weighted_rms = report.metrics.weighted_rms;
   msg->vdv = report.metrics.vdv;
   msg->mtvv = report.metrics.mtvv;
+  msg->mtvv_linear = report.metrics.mtvv_linear;
+  msg->peak_weighted = report.metrics.peak_weighted;
   msg->running_rms = report.running_rms;
   msg->running_rms_time = report.running_rms_time;
   msg->has_absorbed_power = report.metrics.absorbed_power.has_value();
@@ -121,6 +123,8 @@ ComfortReport fromMsg(const Comfort& msg) {
   report.metrics.weighted_rms = msg.weighted_rms;
   report.metrics.vdv = msg.vdv;
   report.metrics.mtvv = msg.mtvv;
+  report.metrics.mtvv_linear = msg.mtvv_linear;
+  report.metrics.peak_weighted = msg.peak_weighted;
   if (msg.has_absorbed_power)
     report.metrics.absorbed_power = msg.absorbed_power;
   report.metrics.duration = msg.duration;

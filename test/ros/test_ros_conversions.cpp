@@ -142,6 +142,8 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
   report.metrics.weighted_rms = 0.42;
   report.metrics.vdv = 1.7;
   report.metrics.mtvv = 0.9;
+  report.metrics.mtvv_linear = 0.95;
+  report.metrics.peak_weighted = 1.3;
   report.metrics.duration = 4.25;
   report.metrics.samples = 4250;
   report.running_rms = 0.33;
@@ -167,6 +169,8 @@ TEST(ComfortConversion, RoundTripWithAndWithoutAbsorbedPower) {
     EXPECT_EQ(back.metrics.weighted_rms, report.metrics.weighted_rms);
     EXPECT_EQ(back.metrics.vdv, report.metrics.vdv);
     EXPECT_EQ(back.metrics.mtvv, report.metrics.mtvv);
+    EXPECT_EQ(back.metrics.mtvv_linear, report.metrics.mtvv_linear);
+    EXPECT_EQ(back.metrics.peak_weighted, report.metrics.peak_weighted);
     EXPECT_EQ(back.metrics.absorbed_power, report.metrics.absorbed_power);
     EXPECT_EQ(back.metrics.duration, report.metrics.duration);
     EXPECT_EQ(back.metrics.samples, report.metrics.samples);
