@@ -37,18 +37,26 @@ struct ModesOptions {
   std::string out_dir;
 };
 
+// classes: a vehicle's (one per mode), with the kinetic-energy shares that name each type;
+// empty for a generic model.
 void printTable(const std::string& name, DofIndex dofs, double mass, const fem::ModalBasis& basis,
-                double build_seconds, const std::vector<std::string>& types) {
+                double build_seconds, const std::vector<vehicle::ModeClass>& classes) {
+  const bool typed = !classes.empty();
   std::cout << "model: " << name << "\n"
             << "active DOFs: " << dofs << "   mass: " << std::fixed << std::setprecision(1) << mass
             << " kg   modes: " << basis.count() << "   assembly: " << std::setprecision(3)
             << build_seconds << " s   solve: " << basis.seconds << " s\n\n"
-            << "  mode   frequency [Hz]" << (types.empty() ? "" : "   type") << "\n";
+            << "  mode   frequency [Hz]"
+            << (typed ? "   hull [%]  wheels [%]  track [%]   type" : "") << "\n";
   for (int i = 0; i < basis.count(); ++i) {
     std::cout << std::setw(6) << i + 1 << std::setw(17) << std::setprecision(4)
               << basis.frequencies_hz(i);
-    if (!types.empty())
-      std::cout << "   " << types[i];
+    if (typed) {
+      const vehicle::ModeClass& c = classes[static_cast<std::size_t>(i)];
+      std::cout << std::setprecision(1) << std::setw(11) << 100.0 * c.hull_share << std::setw(12)
+                << 100.0 * c.wheel_share << std::setw(11) << 100.0 * c.track_share << "   "
+                << c.label;
+    }
     std::cout << "\n";
   }
 }
@@ -175,7 +183,7 @@ void runVehicle(const ModesOptions& opt) {
     types.push_back(c.label);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
-    writeModeFiles(opt.out_dir, a.system, a.modes, types,
+    writeModeFiles(opt.out_dir, a.system, a.modes, a.classes,
                    {{"vehicle", description.name},
                     {"vehicle_file", opt.vehicle_file},
                     {"variant", vehicle::variantName(variant)}},
@@ -198,8 +206,16 @@ void runVehicle(const ModesOptions& opt) {
         .field("mass_kg", a.vehicle.model.totalMass())
         .field("track_tension_n", vehicle::modelTrackTension(description, variant));
     writeMassBreakdown(json, m);
-    json.field("frequencies_hz", a.modes.frequencies_hz)
-        .field("mode_types", types)
+    json.field("frequencies_hz", a.modes.frequencies_hz).field("mode_types", types);
+    // What names each type: the shares of each mode's kinetic energy (mode_classification.h).
+    json.key("energy_shares").beginObject();
+    for (std::size_t k = 0; k < kEnergyShareNames.size(); ++k) {
+      std::vector<double> column;
+      for (const auto& c : a.classes)
+        column.push_back(energyShares(c)[k]);
+      json.field(kEnergyShareNames[k], column);
+    }
+    json.endObject()
         .field("build_seconds", a.build_seconds)
         .field("solve_seconds", a.modes.seconds)
         .key("static")
@@ -217,7 +233,7 @@ void runVehicle(const ModesOptions& opt) {
     return;
   }
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
-             a.vehicle.model.totalMass(), a.modes, a.build_seconds, types);
+             a.vehicle.model.totalMass(), a.modes, a.build_seconds, a.classes);
   std::cout << massBreakdownText(m) << "\n";
   if (const std::string tension = vehicle::trackTensionText(description, variant); !tension.empty())
     std::cout << tension << "\n";

@@ -32,21 +32,48 @@ void writeMetadata(io::MatWriter& mat, const Metadata& metadata) {
   }
 }
 
+const std::vector<std::string> kEnergyShareNames = {
+    "hull",        "wheels",    "track",      "hull_longitudinal", "hull_lateral",
+    "hull_bounce", "hull_roll", "hull_pitch", "hull_yaw"};
+
+std::vector<double> energyShares(const vehicle::ModeClass& mode) {
+  std::vector<double> out = {mode.hull_share, mode.wheel_share, mode.track_share};
+  out.insert(out.end(), mode.hull_energy.begin(), mode.hull_energy.end());
+  return out;
+}
+
 void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::ModalBasis& basis,
-                    const std::vector<std::string>& mode_types, const Metadata& metadata,
+                    const std::vector<vehicle::ModeClass>& classes, const Metadata& metadata,
                     OutputFileSet& written) {
   makeOutputDirectory(dir);
   const std::filesystem::path root(dir);
-  const bool typed = static_cast<int>(mode_types.size()) == basis.count();
+  const bool typed = static_cast<int>(classes.size()) == basis.count();
+  std::vector<std::string> mode_types;
+  Matrix shares(typed ? basis.count() : 0, static_cast<Eigen::Index>(kEnergyShareNames.size()));
+  for (int i = 0; typed && i < basis.count(); ++i) {
+    mode_types.push_back(classes[static_cast<std::size_t>(i)].label);
+    const std::vector<double> row = energyShares(classes[static_cast<std::size_t>(i)]);
+    for (std::size_t k = 0; k < row.size(); ++k)
+      shares(i, static_cast<Eigen::Index>(k)) = row[k];
+  }
   written.write((root / "modes.csv").string(), [&](const std::string& path) {
     io::AtomicTextFile file(path);
     std::ostream& out = file.stream();
     out << std::setprecision(12);
-    out << "mode,frequency_hz,eigenvalue_rad2_s2" << (typed ? ",type" : "") << "\n";
+    out << "mode,frequency_hz,eigenvalue_rad2_s2";
+    if (typed) {
+      out << ",type";
+      for (const std::string& name : kEnergyShareNames)
+        out << "," << name << "_energy_share";
+    }
+    out << "\n";
     for (int i = 0; i < basis.count(); ++i) {
       out << i + 1 << "," << basis.frequencies_hz(i) << "," << basis.eigenvalues(i);
-      if (typed)
-        out << "," << mode_types[i];
+      if (typed) {
+        out << "," << mode_types[static_cast<std::size_t>(i)];
+        for (Eigen::Index k = 0; k < shares.cols(); ++k)
+          out << "," << shares(i, k);
+      }
       out << "\n";
     }
     file.commit();
@@ -84,8 +111,11 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
     mat.writeMatrix("dof_node", node);
     mat.writeMatrix("dof_direction", direction);
     mat.writeStrings("dof_labels", labels);
-    if (typed)
+    if (typed) {
       mat.writeStrings("mode_types", mode_types);
+      mat.writeMatrix("energy_shares", shares.leftCols(3));
+      mat.writeMatrix("hull_component_energy_shares", shares.rightCols(6));
+    }
     writeMetadata(mat, metadata);
     mat.close();
   });

@@ -10,6 +10,7 @@
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -53,14 +54,21 @@ using Metadata = std::vector<MetadataEntry>;
 /// Writes each entry as a variable of `mat` (names as MatWriter checks them).
 void writeMetadata(io::MatWriter& mat, const Metadata& metadata);
 
-/// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type]), DIR/shapes.csv (one row per
-/// active DOF: node, direction, then one column per mode) and DIR/modes.mat (frequencies_hz,
-/// eigenvalues, shapes, dof_node, dof_direction, dof_labels[, mode_types], then `metadata`).
-/// Creates DIR. Each file is staged in `written` (the caller commits); InputError names a file
-/// that cannot be written.
+/// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type and the kinetic-energy shares]),
+/// DIR/shapes.csv (one row per active DOF: node, direction, then one column per mode) and
+/// DIR/modes.mat (frequencies_hz, eigenvalues, shapes, dof_node, dof_direction, dof_labels[,
+/// mode_types, energy_shares, hull_component_energy_shares], then `metadata`). `classes`: one
+/// per mode for a vehicle (classifyModes), empty for a generic model. Creates DIR. Each file is
+/// staged in `written` (the caller commits); InputError names a file that cannot be written.
 void writeModeFiles(const std::string& dir, const fem::System& system, const fem::ModalBasis& basis,
-                    const std::vector<std::string>& mode_types, const Metadata& metadata,
+                    const std::vector<vehicle::ModeClass>& classes, const Metadata& metadata,
                     OutputFileSet& written);
+
+/// The energy-share columns of modes.csv and of tvd modes --json, in order: the hull (with what
+/// rides rigidly on it), the road wheels' own motion, the track; then the hull's six components.
+extern const std::vector<std::string> kEnergyShareNames;
+/// Those shares of one mode, in kEnergyShareNames' order.
+std::vector<double> energyShares(const vehicle::ModeClass& mode);
 
 /// Writes a table of named columns: MATLAB/Octave/SciPy .mat when `path` ends in ".mat" (one n x 1
 /// variable per column, named by its header, plus the `metadata` variables), CSV

@@ -211,6 +211,36 @@ class TvdCliTest(unittest.TestCase):
         stored = [k for k in m if "freq" in k]
         self.assertTrue(stored, sorted(m))
         np.testing.assert_allclose(np.ravel(m[stored[0]])[:count], f, rtol=1e-9)
+        # The kinetic-energy shares that name each type: hull (with what rides on it), wheels
+        # and track add up to the mode's energy; the hull's own components are m phi^2 of its
+        # node (the first six DOFs, at its CoG: Table 1's mass and inertias) of the mass-
+        # normalised shapes; the types follow them; the JSON, modes.csv and modes.mat agree.
+        e = d["energy_shares"]
+        total = np.array(e["hull"]) + np.array(e["wheels"]) + np.array(e["track"])
+        np.testing.assert_allclose(total, 1.0, atol=1e-9)
+        hull_mass = np.array([30300.0] * 3 + [3.9e4, 1.4e5, 1.6e5])
+        components = np.array([e["hull_" + c] for c in ("longitudinal", "lateral", "bounce",
+                                                         "roll", "pitch", "yaw")]).T
+        np.testing.assert_allclose(components, hull_mass * m["shapes"][:6, :count].T ** 2,
+                                   rtol=0, atol=1e-9)
+        self.assertTrue(np.all(components.sum(axis=1) <= np.array(e["hull"]) + 1e-12))
+        for j, label in enumerate(d["mode_types"]):
+            shares = (e["hull"][j], e["wheels"][j], e["track"][j])
+            if label.startswith("wheel bounce"):
+                self.assertGreater(e["wheels"][j], 0.9, label)
+            elif not label.startswith("track"):
+                self.assertEqual(max(shares), e["hull"][j], label)
+                # The named (strongest) component is the largest of the hull's.
+                strongest = ("longitudinal", "lateral", "bounce", "roll", "pitch", "yaw")[
+                    int(np.argmax(components[j]))]
+                self.assertTrue(label.startswith(strongest), (label, components[j]))
+        np.testing.assert_allclose(m["energy_shares"],
+                                   np.array([e["hull"], e["wheels"], e["track"]]).T, atol=1e-10)
+        with open(os.path.join(self.path("modes"), "modes.csv")) as stream:
+            rows = list(csv.DictReader(stream))
+        np.testing.assert_allclose([float(r["hull_pitch_energy_share"]) for r in rows],
+                                   e["hull_pitch"], atol=1e-10)
+        self.assertEqual([r["type"] for r in rows], d["mode_types"])
 
     def test_hand_estimate_beside_the_model_and_its_warnings(self):
         """modes and statics give the hull on its torsion bars alone (wheel rate k_t / (a cos b)^2
