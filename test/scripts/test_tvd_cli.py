@@ -1367,8 +1367,8 @@ class TvdCliTest(unittest.TestCase):
     def test_terrain_iso8608_waviness(self):
         """tvd terrain --waviness w (as ride --iso8608's): the road's spectrum falls as n^-w. Over
         one period, untapered, its variance in each band of the periodogram is the closed form
-        G_d(n0) n0^w (n_a^(1-w) - n_b^(1-w)) / (w - 1); w = 3 halves it per octave twice as
-        fast as ISO 8608's w = 2."""
+        G_d(n0) n0^w (n_a^(1-w) - n_b^(1-w)) / (w - 1), which falls by 2^(w-1) per octave: 4
+        for w = 3, 2 for ISO 8608's w = 2."""
         length, n0, n_low, n_high, spacing = 400.0, 0.1, 0.011, 2.83, 0.05
         road = self.path("wavy.csv")
         d = self.tvd_json("terrain", "--iso8608", "C", "--waviness", "3", "--length",
