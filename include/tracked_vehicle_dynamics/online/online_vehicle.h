@@ -142,7 +142,8 @@ class OnlineVehicle {
   /// finite.
   int resetTo(double station, double speed, ResetTerrain terrain);
   /// Stores a patch (newest wins where patches overlap) and frees terrain behind the vehicle.
-  /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then.
+  /// Throws InputError (naming the field or index) for an invalid patch; nothing changes then
+  /// but the terrain lying behind the vehicle, which every patch frees first.
   /// Returns false for a valid patch ending wholly behind the terrain kept (more than
   /// terrain_keep_behind behind the rear contact, beyond the bridged gap): it was dropped.
   /// A patch that would take the stored terrain beyond terrain_max_memory_mb (what lies behind
