@@ -155,16 +155,19 @@ double WeightingFilter::Biquad::step(double x) {
 
 namespace {
 
-/// Roots of a2 s^2 + a1 s + a0 (one or none when the polynomial is of lower degree).
-std::vector<std::complex<double>> poles(const AnalogSection& a) {
-  if (a.a2 != 0.0) {
-    const std::complex<double> root =
-        std::sqrt(std::complex<double>(a.a1 * a.a1 - 4.0 * a.a2 * a.a0));
-    return {(-a.a1 + root) / (2.0 * a.a2), (-a.a1 - root) / (2.0 * a.a2)};
+/// Roots of c2 s^2 + c1 s + c0 (one or none when the polynomial is of lower degree).
+std::vector<std::complex<double>> roots(double c2, double c1, double c0) {
+  if (c2 != 0.0) {
+    const std::complex<double> root = std::sqrt(std::complex<double>(c1 * c1 - 4.0 * c2 * c0));
+    return {(-c1 + root) / (2.0 * c2), (-c1 - root) / (2.0 * c2)};
   }
-  if (a.a1 != 0.0)
-    return {std::complex<double>(-a.a0 / a.a1, 0.0)};
+  if (c1 != 0.0)
+    return {std::complex<double>(-c0 / c1, 0.0)};
   return {};
+}
+
+std::vector<std::complex<double>> poles(const AnalogSection& a) {
+  return roots(a.a2, a.a1, a.a0);
 }
 
 /// Weighted least squares min Σ_i w_i^2 ((features_i · x - target_i) / target_i)^2.
@@ -215,10 +218,9 @@ WeightingFilter::Biquad WeightingFilter::matchedMagnitude(const AnalogSection& a
   // (the 8 Hz weighted 11 dB low at fs = 100 kHz; review 133). (1 - z) = -expm1(s T) keeps the
   // DC products accurate when every root is near z = 1.
   if (m == 0 && a.b2 != 0.0 && p.size() == 2) {
-    const std::complex<double> root =
-        std::sqrt(std::complex<double>(a.b1 * a.b1 - 4.0 * a.b2 * a.b0));
-    const std::complex<double> s1 = (-a.b1 + root) / (2.0 * a.b2);
-    const std::complex<double> s2 = (-a.b1 - root) / (2.0 * a.b2);
+    const std::vector<std::complex<double>> zeros = roots(a.b2, a.b1, a.b0);
+    const std::complex<double>& s1 = zeros[0];
+    const std::complex<double>& s2 = zeros[1];
     double largest = 0.0;
     for (const std::complex<double>& r : {s1, s2, p[0], p[1]})
       largest = std::max(largest, std::abs(r) * t);

@@ -143,9 +143,8 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
   if (!std::isfinite(options.terrain_keep_behind) || options.terrain_keep_behind < 0.0) {
     throw InputError("online vehicle: terrain_keep_behind must be >= 0 and finite");
   }
-  // Below 1 MB (12 m of a 9-line terrain at 1 cm) the value is more likely typed in GB than
-  // meant; 1e9 MB is a petabyte, and keeps the byte count far inside size_t.
-  if (!(options.terrain_max_memory_mb >= 1.0) || !(options.terrain_max_memory_mb <= 1e9)) {
+  if (!(options.terrain_max_memory_mb >= OnlineVehicleOptions::kMinTerrainMemoryMb) ||
+      !(options.terrain_max_memory_mb <= OnlineVehicleOptions::kMaxTerrainMemoryMb)) {
     throw InputError("online vehicle: terrain_max_memory_mb must be within 1 .. 1e9 MB, got " +
                      brief(options.terrain_max_memory_mb));
   }

@@ -260,14 +260,14 @@ void checkConsistency(const ReducedModel& model, const std::string& where,
   if (Eigen::LLT<Matrix>(s.stiffness).info() != Eigen::Success)
     throw InputError(where +
                      ": K_R is not positive definite (a vehicle on its ground springs "
-                     "has no free motion); reduce the vehicle again (tvd reduce)");
+                     "has no free motion)");
   const Eigen::LDLT<Matrix> damping(s.damping);  // k x k: checkSize above
   const double scale = damping.vectorD().cwiseAbs().maxCoeff();
   if (damping.info() != Eigen::Success ||
       damping.vectorD().minCoeff() < -kDampingDefiniteness * scale)
     throw InputError(where +
                      ": C_R is not positive semi-definite (damping that feeds energy "
-                     "in); reduce the vehicle again (tvd reduce)");
+                     "in)");
 }
 
 double integer(const std::string& where, const char* name, double value) {
@@ -298,7 +298,7 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
   if (in.names().empty())
     throw InputError(where +
                      ": holds no variables (an empty MAT file, or one cut after its 128-byte "
-                     "header: an interrupted write?); run tvd reduce again");
+                     "header: an interrupted write?)");
   // A .mat of another command (tvd frf, statics, modes) lacks the model's marker altogether.
   if (!in.has("format_version"))
     throw InputError(where +

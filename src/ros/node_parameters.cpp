@@ -327,7 +327,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   }
   v.terrain_keep_behind = in.nonNegative("terrain_keep_behind", v.terrain_keep_behind, "m");
   v.terrain_max_memory_mb = in.positive("terrain_max_memory", v.terrain_max_memory_mb, "MB");
-  if (v.terrain_max_memory_mb < 1.0 || v.terrain_max_memory_mb > 1e9)
+  if (v.terrain_max_memory_mb < online::OnlineVehicleOptions::kMinTerrainMemoryMb ||
+      v.terrain_max_memory_mb > online::OnlineVehicleOptions::kMaxTerrainMemoryMb)
     throw in.error("terrain_max_memory",
                    "must be within 1 .. 1e9 MB, got " + Reader::text(v.terrain_max_memory_mb));
   // Speed slew (online_vehicle.h): 0 and 0 = a new speed applies at once, without travel inertia.

@@ -151,9 +151,7 @@ ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& descriptio
     s.options = loaded.options;
     s.warnings = s.model.warnings;  // as the run that reduced it warned
   } catch (const reduction::StaleCacheError& e) {
-    // Once: some of the file's own checks already end in that advice.
-    const std::string what = e.what();
-    throw InputError(what.find("tvd reduce") == std::string::npos ? what + again : what);
+    throw InputError(e.what() + again);
   }
   if (variant_given && s.variant != variant)
     throw InputError(command + ": --reduced " + file + " is the " +

@@ -1,5 +1,5 @@
-// The core tests' check of bad input: the call throws InputError and its message names what is
-// wrong (contains every expected part).
+// The core tests' check of bad input: the call throws InputError (or SolverError) and its
+// message names what is wrong (contains every expected part).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -11,17 +11,28 @@
 
 namespace tracked_vehicle_dynamics {
 
-template <typename Call>
-void expectInputError(Call call, const std::vector<std::string>& parts) {
+/// The call throws Error (InputError, SolverError) whose message contains every part.
+template <typename Error, typename Call>
+void expectErrorNaming(Call call, const std::vector<std::string>& parts, const char* name) {
   try {
     call();
-    ADD_FAILURE() << "no InputError thrown (expected one mentioning '" << parts.front() << "')";
-  } catch (const InputError& e) {
+    ADD_FAILURE() << "no " << name << " thrown (expected one mentioning '" << parts.front() << "')";
+  } catch (const Error& e) {
     for (const std::string& part : parts) {
       EXPECT_NE(std::string(e.what()).find(part), std::string::npos)
           << "message \"" << e.what() << "\" lacks \"" << part << "\"";
     }
   }
+}
+
+template <typename Call>
+void expectInputError(Call call, const std::vector<std::string>& parts) {
+  expectErrorNaming<InputError>(call, parts, "InputError");
+}
+
+template <typename Call>
+void expectSolverError(Call call, const std::vector<std::string>& parts) {
+  expectErrorNaming<SolverError>(call, parts, "SolverError");
 }
 
 /// One expected part (a literal: a std::string overload would make {"a", "b"} ambiguous with

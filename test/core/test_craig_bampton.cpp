@@ -271,7 +271,7 @@ TEST(ReducedDamping, RefusesNegativeOrNonFiniteCoefficientsAndMismatchedSizes) {
   expectInputError([&] { reducedDamping(m, k, c, rayleigh); }, "reducedDamping: beta = nan");
   DampingOptions modal;
   modal.model = DampingModel::Modal;
-  modal.modal_ratios = Eigen::Vector2d(0.02, -0.01);
+  modal.modal_ratios = (Vector(2) << 0.02, -0.01).finished();
   expectInputError([&] { reducedDamping(m, k, c, modal); },
                    "reducedDamping: modal damping ratio = -0.01");
   modal.modal_ratios = Vector::Constant(3, 0.02);
@@ -282,7 +282,9 @@ TEST(ReducedDamping, RefusesNegativeOrNonFiniteCoefficientsAndMismatchedSizes) {
   // Zero coefficients are no damping at all, not an error; a valid ratio gives 2 zeta omega.
   rayleigh.beta = 0.0;
   EXPECT_EQ(reducedDamping(m, k, c, rayleigh), c);
-  modal.modal_ratios = Eigen::Vector2d(0.05, 0.1);
+  // (Filled in place: a fixed-size temporary assigned to it drew a false -Warray-bounds from
+  // GCC 12.)
+  modal.modal_ratios = (Vector(2) << 0.05, 0.1).finished();
   const Matrix modal_c = reducedDamping(m, k, c, modal);
   EXPECT_NEAR(modal_c(0, 0), 2.0 * 0.05 * 2.0, 1e-12);  // omega = 2 rad/s
   EXPECT_NEAR(modal_c(1, 1), 2.0 * 0.1 * 3.0, 1e-12);   // omega = 3 rad/s

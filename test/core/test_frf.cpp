@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dynamics_test_models.h"
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/frf.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 #include "tracked_vehicle_dynamics/error.h"
@@ -28,18 +29,6 @@ double relativeError(const ComplexMatrix& a, const ComplexMatrix& b, double floo
       if (std::abs(b(i, j)) > floor * peak)
         worst = std::max(worst, std::abs(a(i, j) - b(i, j)) / std::abs(b(i, j)));
   return worst;
-}
-
-// The call throws SolverError naming every part.
-template <typename Call>
-void expectSolverError(Call call, const std::vector<std::string>& parts) {
-  try {
-    call();
-    ADD_FAILURE() << "no SolverError thrown";
-  } catch (const SolverError& e) {
-    for (const std::string& part : parts)
-      EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
-  }
 }
 
 }  // namespace

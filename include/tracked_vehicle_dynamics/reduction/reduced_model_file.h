@@ -46,7 +46,8 @@ constexpr int kReducedModelFormatVersion = 5;
 
 /// A reduced model file that cannot be used: missing, unreadable, truncated, corrupted,
 /// inconsistent, or built from another description, software version or reduction. A cache
-/// rebuilds it; a file the user named (`tvd frf --reduced`) is refused with the message.
+/// rebuilds it; a file the user named (`tvd frf --reduced`, the node's ~reduced_model) is
+/// refused with the message, to which the caller adds its own advice (the message gives none).
 class StaleCacheError : public InputError {
  public:
   using InputError::InputError;
