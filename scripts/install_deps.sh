@@ -12,6 +12,7 @@ PACKAGES=(
   libdiagnostic-updater-dev libdiagnostic-msgs-dev libtf2-msgs-dev libros-rosgraph-msgs-dev python3-rostest librostest-dev tf2-tools python3-rosbag python3-roslaunch python3-rostopic
   catkin-lint  # ctest catkin_lint: CMakeLists.txt checked against package.xml
   clang-format  # ctest format: every C++ file as .clang-format says
+  faketime  # rostest node_clock_step: the system clock stepped under a running node
   rosbash  # rosrun (a Recommends of ros-core-dev, which --no-install-recommends leaves out)
   # the command-line tools load the Python bindings of the types they handle: rosservice call
   # ~reset (std_srvs/Empty), rostopic echo /diagnostics, odom and imu/<point>

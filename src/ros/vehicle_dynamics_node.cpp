@@ -621,6 +621,12 @@ void VehicleDynamicsNode::tick() {
   // The tick's time includes handling the messages that arrived: a huge terrain patch is copied
   // and checked here, on the loop's thread, and delays the steps.
   tick_start_ = Clock::now();
+  // A step of the system clock is followed before the messages' stamps are judged against the
+  // vehicle's time (a new stamped speed would be dropped as older than the one in force).
+  ros::Time t;
+  ros::SteadyTime wall;
+  if (readClocks(&t, &wall))
+    followClockStep(t, wall);
   handleMessages(ros::WallDuration(0));
   step();
 }
@@ -637,8 +643,9 @@ void VehicleDynamicsNode::handleMessages(const ros::WallDuration& wait) {
 }
 
 void VehicleDynamicsNode::step() {
-  const ros::Time t = now();
-  const ros::SteadyTime wall = ros::SteadyTime::now();
+  ros::Time t;
+  ros::SteadyTime wall;
+  const bool paired = readClocks(&t, &wall);
   if (!recent_patches_.empty())
     expireRecentPatches();  // a patch dropped behind, with no jump back to re-apply it, is lost
   if (!recent_stamped_speeds_.empty())
@@ -651,6 +658,8 @@ void VehicleDynamicsNode::step() {
   }
   if (t.isZero())
     return;  // use_sim_time and no /clock yet
+  if (paired)
+    followClockStep(t, wall);  // real time: the system clock stepped since the last tick?
   // A speed (or ~reset_to) received before simulated time started was stamped 0: its timeout
   // counts from the first /clock, not from the epoch (it would stop the vehicle at once).
   if (!clock_started_ && last_speed_time_.isZero())
@@ -714,15 +723,9 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
       restartAfterJump(now);
       return;
     }
-    // The wall clock stepped back (e.g. an NTP correction): the vehicle's motion is not
-    // affected, so only the time base is re-anchored.
-    ++events_.time_jumps_back;
-    ++events_.resyncs;
-    TVD_WARN_THROTTLE(kWarnPeriod,
-                      "%s: the wall clock stepped back by %.3f s: "
-                      "resynchronising (the vehicle state is kept)",
-                      nodeName(), -ahead_ns * 1e-9);
-    sample_time_ = now;
+    // The system clock stepped back unseen by followClockStep() (a tick whose clocks could not
+    // be read as a pair): the vehicle's time follows it as far as the last sample shows.
+    moveTime(ahead_ns, now);
     return;
   }
   // On the wall clock the ticks come from the monotonic timer; rounding absorbs its wake-up

@@ -27,6 +27,7 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   const std::uint64_t resyncs = loop_resyncs_.delta(events_.resyncs);
   const std::uint64_t late = loop_late_.delta(events_.late_ticks);
   const std::uint64_t jumps = loop_jumps_.delta(events_.time_jumps_back);
+  const std::uint64_t clock_steps = loop_clock_steps_.delta(events_.clock_steps);
   const std::uint64_t diverged = loop_diverged_.delta(events_.diverged);
   const double step_p99 = step_window_.percentile(0.99);
   // ROS time that stopped moving (a paused or dead simulator, a bag at its end) is said: the
@@ -52,6 +53,10 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   } else if (jumps > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "ROS time jumped backwards: vehicle reset");
+  } else if (clock_steps > 0) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
+                   "the system clock stepped (" + last_clock_step_ +
+                       "): the vehicle's time stepped with it, its motion went on");
   } else if (step_p99 > period) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "step time p99 exceeds the period");
   } else {
@@ -69,6 +74,10 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("resynchronisations (total)", events_.resyncs);
   status.add("skipped time [s]", events_.skipped_steps * period);
   status.add("time jumps back (total)", events_.time_jumps_back);
+  if (!use_sim_time_) {
+    status.add("system clock steps (total)", events_.clock_steps);
+    status.add("last system clock step", last_clock_step_.empty() ? "none" : last_clock_step_);
+  }
   status.add("resets (total)", events_.resets);
   status.add("patches re-applied after a jump back (total)", events_.patches_reapplied);
   status.add("speeds re-applied after a jump back (total)", events_.speeds_reapplied);

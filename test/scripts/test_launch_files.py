@@ -81,7 +81,7 @@ def launch_nodes(launch_path, *args):
             "c = roslaunch.config.load_config_default([(sys.argv[1], sys.argv[2:])], None)\n"
             "for n in c.nodes:\n"
             "    print(repr((n.namespace + n.name, n.required, n.respawn, n.respawn_delay,\n"
-            "                n.remap_args)))\n")
+            "                n.remap_args, n.launch_prefix)))\n")
     result = subprocess.run([ENV_SH, "/usr/bin/python3", "-c", code, launch_path, *args],
                             capture_output=True, text=True, timeout=120)
     if result.returncode != 0:
@@ -207,6 +207,13 @@ class LaunchFilesTest(unittest.TestCase):
                             (("respawn:=true", "respawn_delay:=3"), (False, True, 3.0)),
                             (("required:=false",), (False, False, 1.0))):
             self.assertEqual(launch_nodes(path, *args)[NODE][:3], flags, args)
+
+    def test_launch_prefix_runs_the_node_under_a_command(self):
+        # launch_prefix:=COMMAND reaches the node's launch-prefix (chrt, taskset, gdb); none by
+        # default (roslaunch reads the empty attribute as none).
+        path = launch_path("vehicle_dynamics.launch")
+        self.assertFalse(launch_nodes(path)[NODE][4])
+        self.assertEqual(launch_nodes(path, "launch_prefix:=taskset -c 1")[NODE][4], "taskset -c 1")
 
     def test_replay_track_in_a_namespace(self):
         # Included under <group ns="veh1">: /use_sim_time stays global, the player plays the bag's

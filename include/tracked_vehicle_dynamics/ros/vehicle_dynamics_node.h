@@ -111,6 +111,7 @@ class VehicleDynamicsNode {
     std::uint64_t uncovered_steps = 0;   // steps with at least one contact off the terrain
     std::uint64_t diverged = 0;
     std::uint64_t time_jumps_back = 0, resyncs = 0, skipped_steps = 0;
+    std::uint64_t clock_steps = 0;            // real time: steps of the system clock, either way
     std::uint64_t ticks = 0, late_ticks = 0;  // late: more than one step due at a tick
     std::uint64_t resets = 0;
     std::uint64_t patches_reapplied = 0, speeds_reapplied = 0;  // after a jump back
@@ -193,6 +194,17 @@ class VehicleDynamicsNode {
   void tick();
   /// Steps to ROS time now, publishes, diagnoses.
   void step();
+  /// ROS time and monotonic time now. On real time the pair is read within 1 ms of each other;
+  /// false when a few tries could not (a loaded machine), and then followClockStep() judges the
+  /// next pair afresh.
+  bool readClocks(ros::Time* ros_now, ros::SteadyTime* steady_now);
+  /// Real time: a step of the system clock since the last tick (the offset between ROS and
+  /// monotonic time changed by more than 20 ms) is followed by moveTime().
+  void followClockStep(const ros::Time& ros_now, const ros::SteadyTime& steady_now);
+  /// The system clock stepped by `step_ns` (found at ROS time `ros_now`): the vehicle's time
+  /// and what is kept in ROS time (stamped speeds waiting, the stamp of the one in force, the
+  /// run's start) move by as much; counted and said.
+  void moveTime(std::int64_t step_ns, const ros::Time& ros_now);
   /// /diagnostics on monotonic wall time while ROS time stands still (use_sim_time with no /clock
   /// yet, or a paused one): the reports paced on ROS time would say nothing, not even why.
   void reportOnWallTime(const ros::SteadyTime& wall);
@@ -350,8 +362,8 @@ class VehicleDynamicsNode {
   std::int64_t steps_since_start_ = 0;
 
   Events events_;
-  Window loop_resyncs_, loop_late_, loop_jumps_, loop_diverged_, terrain_rejected_,
-      terrain_uncovered_, terrain_narrow_, terrain_implausible_, terrain_behind_,
+  Window loop_resyncs_, loop_late_, loop_jumps_, loop_clock_steps_, loop_diverged_,
+      terrain_rejected_, terrain_uncovered_, terrain_narrow_, terrain_implausible_, terrain_behind_,
       terrain_other_frame_, speed_rejected_, speed_timed_out_, speed_late_, speed_time_base_;
   std::string last_patch_error_, last_speed_error_, last_narrow_patch_, last_behind_patch_,
       last_implausible_patch_, last_other_frame_patch_;
@@ -385,8 +397,13 @@ class VehicleDynamicsNode {
   ros::Time last_speed_time_;             // ROS time of the last valid speed message
   ros::SteadyTime last_speed_steady_;     // the same on the monotonic clock
   ros::Time next_diagnostics_;            // ROS time of the next /diagnostics report
-  bool stopped_by_timeout_ = false;       // ~speed_timeout stopped the vehicle; a speed clears it
-  bool unslewed_change_warned_ = false;   // warnOfUnslewedSpeedChange() said its once
+  // Real time: ROS time minus monotonic time at the last tick [ns] (followClockStep), and the
+  // last step of the system clock it found ("+0.300 s at ROS time …"; empty: none).
+  std::int64_t clock_offset_ns_ = 0;
+  bool clock_offset_known_ = false;
+  std::string last_clock_step_;
+  bool stopped_by_timeout_ = false;      // ~speed_timeout stopped the vehicle; a speed clears it
+  bool unslewed_change_warned_ = false;  // warnOfUnslewedSpeedChange() said its once
   std::chrono::steady_clock::time_point tick_start_;  // before the tick's message callbacks
   ros::SteadyTime last_time_change_;                  // monotonic time at which ROS time last moved
   ros::SteadyTime next_wall_report_;                  // reportOnWallTime() publishes from then on
