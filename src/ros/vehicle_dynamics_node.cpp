@@ -121,9 +121,11 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
                          ros::TransportHints().tcpNoDelay());
   speed_sub_ = loop_nh_.subscribe("speed", 10, &VehicleDynamicsNode::onSpeed, this,
                                   ros::TransportHints().tcpNoDelay());
-  // Stamped speeds may be sent ahead of their time: a queue for a second of them at 100 Hz.
+  // Stamped speeds may be sent ahead of their time, a whole plan in one burst: the queue holds
+  // as many as may wait for their stamps (a second of them at 1 kHz), so roscpp drops none of
+  // them unsaid between two ticks (the ones beyond are refused and counted).
   speed_stamped_sub_ =
-      loop_nh_.subscribe("speed_stamped", 100, &VehicleDynamicsNode::onSpeedStamped, this,
+      loop_nh_.subscribe("speed_stamped", 1000, &VehicleDynamicsNode::onSpeedStamped, this,
                          ros::TransportHints().tcpNoDelay());
   if (use_sim_time_) {
     clock_sub_ = loop_nh_.subscribe("/clock", 10, &VehicleDynamicsNode::onClock, this,
