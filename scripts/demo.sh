@@ -52,8 +52,11 @@ for path, how in zip(sys.argv[1:], ("time domain, this 300 m road", "spectral, t
         for kind in ("absorbed_power", "peak_acceleration"):
             if kind in l:
                 x = l[kind]
+                # speed_kmh only where the limit is crossed; else the speed run at the bracket
+                at = (f"at {x['speed_kmh']:.1f} km/h" if x["status"] == "reached" else
+                      f"(run at {x['bracket_kmh'][1]:.1f} km/h)")
                 print(f"  {how}: {l['point']}: {x['limit']:g} {x['unit']} "
-                      f"{x['status'].replace('_', ' ')} at {x['speed_kmh']:.1f} km/h")
+                      f"{x['status'].replace('_', ' ')} {at}")
     print(f"  {how}: {d['wall_seconds']:.1f} s")
 PY
 echo; echo "== 9. Figures (PNG) =="

@@ -76,8 +76,10 @@ def load(path):
             if not isinstance(limit, dict) or limit.get("status") not in (
                     "reached", "at_lowest_speed", "not_reached"):
                 fail(f"{path}: limits[{i}].{kind} has no status")
-            limits[name][kind] = (limit["status"],
-                                  json_number(path, f"limits[{i}].{kind}.speed_kmh", limit.get("speed_kmh")))
+            # A speed only where the limit is crossed (null for at_lowest_speed, not_reached).
+            limits[name][kind] = (limit["status"], json_number(
+                path, f"limits[{i}].{kind}.speed_kmh", limit.get("speed_kmh"))
+                if limit["status"] == "reached" else None)
     figures = {k: json_number(path, k, doc[k]) for k in keys[3:]}
     road = doc.get("road")
     figures["track"] = str(doc.get("track", road.get("name", "") if isinstance(road, dict) else ""))

@@ -44,7 +44,8 @@ bool hasPartner(const CorrelationRow& r) {
 }
 
 void run(const MacOptions& opt) {
-  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
+  std::vector<std::string> warnings;
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
   const VehicleAnalysis uv = analyseVehicle(description, vehicle::Variant::Untracked, opt.count);
   const VehicleAnalysis tv = analyseVehicle(description, vehicle::Variant::Tracked, opt.count);
   // MAC on the translations of the nodes both variants share (rotations ignored, paper §3.1.1).
@@ -171,7 +172,12 @@ void run(const MacOptions& opt) {
       json.endArray().endObject();
     }
     json.endArray();
-    json.endObject();
+    // The description's warnings, then each variant's (statics and modes), named.
+    for (const auto& [name, analysis] :
+         {std::make_pair("untracked", &uv), std::make_pair("tracked", &tv)})
+      for (const std::string& w : analysis->warnings)
+        warnings.push_back(std::string(name) + ": " + w);
+    json.field("warnings", warnings).endObject();
     return;
   }
 

@@ -12,6 +12,7 @@
 #include "node_shapes.h"
 #include "output_files.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/static_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -20,6 +21,7 @@
 #include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
 #include "vehicle_analysis.h"
+#include "warning_list.h"
 #include "wheel_rate_report.h"
 
 namespace tracked_vehicle_dynamics {
@@ -27,11 +29,15 @@ namespace tools {
 
 namespace {
 
+// The most modes tvd modes returns (one variant's; the MAC and the reduction solve at most 200).
+constexpr int kMaxModesCount = 500;
+
 struct ModesOptions {
   std::string model_file;
   std::string vehicle_file;
   std::string variant = "untracked";
   int count = 20;
+  bool count_given = false;  // --count on the command line (with --max-frequency: a cap)
   double max_frequency_hz = 0.0;
   bool json = false;
   std::string out_dir;
@@ -121,6 +127,31 @@ GravitySag gravitySag(const fem::System& sys) {
   return sag;
 }
 
+// With --max-frequency F: the modes below F that the count left out ("" when none). A count
+// that stopped below F may have cut some: Sylvester's law counts them (eigenvalue_count.h).
+std::string modesBeyondCountWarning(const fem::System& sys, const fem::ModalBasis& basis,
+                                    const fem::ModalRequest& request) {
+  const Eigen::Index found = basis.frequencies_hz.size();
+  if (request.max_frequency_hz <= 0.0 || found < request.count ||
+      basis.frequencies_hz(found - 1) >= request.max_frequency_hz)
+    return "";
+  int below = 0;
+  try {
+    below = fem::eigenvaluesBelow(sys.stiffness, sys.mass,
+                                  std::pow(kTwoPi * request.max_frequency_hz, 2));
+  } catch (const SolverError&) {
+    return "";  // F is an eigenvalue to working precision: no count, no claim
+  }
+  if (below <= found)
+    return "";
+  return std::to_string(below) + " modes lie below " + brief(request.max_frequency_hz) +
+         " Hz: the lowest " + std::to_string(found) + " are returned (--count " +
+         std::to_string(request.count) +
+         (request.count < kMaxModesCount
+              ? "; raise it, at most " + std::to_string(kMaxModesCount) + ")"
+              : ", the most tvd modes returns)");
+}
+
 void runModel(const ModesOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const fem::Model model = io::loadModelYaml(opt.model_file);
@@ -133,12 +164,15 @@ void runModel(const ModesOptions& opt) {
   const double build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   fem::ModalRequest request;
-  request.count = opt.count;
+  // "Every mode below F": up to --count when it is given, else up to the largest count (a
+  // default of 20 cut a 100 kHz request at 20 modes without a word, review 137).
+  request.count = opt.max_frequency_hz > 0.0 && !opt.count_given ? kMaxModesCount : opt.count;
   request.max_frequency_hz = opt.max_frequency_hz;
   const fem::ModalBasis basis = fem::solveModes(sys.stiffness, sys.mass, request);
-  for (const std::string& w : {fem::missedModesWarning(basis), fem::unstableModesWarning(basis)})
-    if (!w.empty())
-      std::cerr << "tvd: warning: " << w << "\n";
+  std::vector<std::string> warnings;
+  warn(&warnings, fem::missedModesWarning(basis));
+  warn(&warnings, fem::unstableModesWarning(basis));
+  warn(&warnings, modesBeyondCountWarning(sys, basis, request));
   const GravitySag sag = gravitySag(sys);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
@@ -162,7 +196,7 @@ void runModel(const ModesOptions& opt) {
       json.field("max_translation_m", sag.max_translation).field("at", sag.at);
     else
       json.field("note", sag.note);
-    json.endObject().endObject();
+    json.endObject().field("warnings", warnings).endObject();
   } else {
     printTable(model.name.empty() ? opt.model_file : model.name, sys.size(), model.totalMass(),
                basis, build_seconds, {});
@@ -175,9 +209,11 @@ void runModel(const ModesOptions& opt) {
 }
 
 void runVehicle(const ModesOptions& opt) {
-  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
+  std::vector<std::string> warnings;
+  const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file, &warnings);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   const VehicleAnalysis a = analyseVehicle(description, variant, opt.count);
+  warnings.insert(warnings.end(), a.warnings.begin(), a.warnings.end());
   std::vector<std::string> types;
   for (const auto& c : a.classes)
     types.push_back(c.label);
@@ -229,7 +265,7 @@ void runVehicle(const ModesOptions& opt) {
         .field("road_wheel_loads_n", a.statics.wheel_loads)
         .endObject();
     writeWheelRateEstimate(json, vehicle::wheelRateEstimate(description, variant));
-    json.endObject();
+    json.field("warnings", warnings).endObject();
     return;
   }
   printTable(description.name + " (" + vehicle::variantName(variant) + ")", a.system.size(),
@@ -264,12 +300,13 @@ void registerModesCommand(CLI::App& app) {
   CLI::Option* variant =
       addVariantOption(cmd, &opt->variant, "vehicle variant: untracked | tracked");
   // At most 500: one variant's modes (the MAC and the reduction solve both: at most 200).
-  cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")
-      ->check(CLI::Range(1, 500));
+  CLI::Option* count = cmd->add_option("--count,-n", opt->count, "number of modes (1 .. 500)")
+                           ->check(CLI::Range(1, kMaxModesCount));
   CLI::Option* max_frequency =
-      cmd->add_option(
-             "--max-frequency", opt->max_frequency_hz,
-             "return every mode below this frequency [Hz] (> 0; at most --count; --model only)")
+      cmd->add_option("--max-frequency", opt->max_frequency_hz,
+                      "return every mode below this frequency [Hz] (> 0; --model only): at most "
+                      "--count when it is given, else at most 500, and a warning when more lie "
+                      "below")
           ->check(positiveNumber())
           ->default_str("none: --count modes");
   max_frequency->needs(model);
@@ -277,11 +314,13 @@ void registerModesCommand(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the table");
   cmd->add_option(
          "--out", opt->out_dir,
-         "write modes.csv, shapes.csv and modes.mat to this directory (created if missing)")
+         "write modes.csv, shapes.csv and modes.mat to this directory (created if missing; a "
+         "vehicle's also node_shapes.csv)")
       ->check(outputDirectory());
-  cmd->callback([opt, model, vehicle]() {
+  cmd->callback([opt, model, vehicle, count]() {
     if (model->count() == 0 && vehicle->count() == 0)
       throw InputError("modes: give --model FILE or --vehicle FILE");
+    opt->count_given = count->count() > 0;
     if (vehicle->count())
       runVehicle(*opt);
     else

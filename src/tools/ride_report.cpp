@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "point_list.h"
@@ -88,7 +89,12 @@ void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, doub
       .field("limit", limit)
       .field("unit", std::string(unit))
       .field("status", std::string(dynamics::limitStatusName(c.status)))
-      .field("speed_kmh", c.speed)
+      // A speed only where the limit is crossed: the lowest (at_lowest_speed) or highest
+      // (not_reached) speed run is no crossing speed, and a script reading speed_kmh alone
+      // would take it for one (review 137). The bracket keeps the speeds run either way.
+      .field("speed_kmh", c.status == dynamics::LimitCrossing::Status::Reached
+                              ? c.speed
+                              : std::numeric_limits<double>::quiet_NaN())
       .field("bracket_kmh", std::vector<double>{c.lower, c.upper})
       .field("refinements", static_cast<long long>(c.refinements))
       .endObject();

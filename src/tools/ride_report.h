@@ -108,7 +108,8 @@ dynamics::LimitCrossing lowestCrossing(const std::function<std::vector<double>()
                                        const std::function<double(double)>& metric, double limit,
                                        double tolerance);
 
-/// {limit, unit, status, speed_kmh, bracket_kmh, refinements} of one crossing.
+/// {limit, unit, status, speed_kmh, bracket_kmh, refinements} of one crossing; speed_kmh is null
+/// unless the status is reached (bracket_kmh then holds the lowest, or the highest, speed run).
 void writeLimitJson(io::JsonWriter& json, const dynamics::LimitCrossing& c, double limit,
                     const char* unit);
 

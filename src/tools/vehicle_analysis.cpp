@@ -10,6 +10,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/wheel_rate_estimate.h"
+#include "warning_list.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -21,11 +22,9 @@ using Clock = std::chrono::steady_clock;
 vehicle::VehicleDescription loadVehicle(const std::string& file,
                                         std::vector<std::string>* warnings) {
   vehicle::VehicleDescription description = vehicle::loadVehicleDescription(file);
-  for (const std::string& w : vehicle::descriptionWarnings(description)) {
-    std::cerr << "tvd: warning: " << file << ": " << w << "\n";
-    if (warnings)
-      warnings->push_back(file + ": " + w);
-  }
+  std::vector<std::string> unkept;
+  for (const std::string& w : vehicle::descriptionWarnings(description))
+    warn(warnings ? warnings : &unkept, file + ": " + w);
   return description;
 }
 
@@ -39,35 +38,29 @@ VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
 
   const auto t1 = Clock::now();
   a.statics = vehicle::computeStaticSummary(a.vehicle, a.system);
-  std::vector<std::string> warnings = vehicle::staticWarnings(a.statics, description);
-  for (std::string& w :
+  for (const std::string& w : vehicle::staticWarnings(a.statics, description))
+    warn(&a.warnings, w);
+  for (const std::string& w :
        vehicle::restWarnings(a.statics.hull_sag, a.statics.hull_pitch, description, variant))
-    warnings.push_back(std::move(w));
-  for (const std::string& w : warnings)
-    std::cerr << "tvd: warning: " << w << "\n";
+    warn(&a.warnings, w);
   a.statics_seconds = std::chrono::duration<double>(Clock::now() - t1).count();
 
   fem::ModalRequest request;
   request.count = count;
   a.modes = fem::solveModes(a.system.stiffness, a.system.mass, request);
-  const std::string missed = fem::missedModesWarning(a.modes);
-  if (!missed.empty())
-    std::cerr << "tvd: warning: " << missed << "\n";
+  warn(&a.warnings, fem::missedModesWarning(a.modes));
   // A vehicle's only compressive pre-load is the hull's, which a track tension far beyond its
   // suspension's hold turns into a pitch instability.
   const std::string unstable = fem::unstableModesWarning(a.modes);
   if (!unstable.empty()) {
     const double tension = vehicle::modelTrackTension(description, variant);
-    std::cerr << "tvd: warning: " << unstable
-              << (tension > 0.0 ? "; here track_assembly.static_tension (" + brief(tension) + " N)"
-                                : std::string())
-              << "\n";
+    warn(&a.warnings, unstable + (tension > 0.0 ? "; here track_assembly.static_tension (" +
+                                                      brief(tension) + " N)"
+                                                : std::string()));
   }
   a.classes = vehicle::classifyModes(a.vehicle, a.system, a.modes);
-  const std::string stiff =
-      vehicle::bounceWarning(description, variant, a.classes, a.modes.frequencies_hz);
-  if (!stiff.empty())
-    std::cerr << "tvd: warning: " << stiff << "\n";
+  warn(&a.warnings,
+       vehicle::bounceWarning(description, variant, a.classes, a.modes.frequencies_hz));
   return a;
 }
 

@@ -22,6 +22,8 @@ struct VehicleAnalysis {
   vehicle::StaticSummary statics;  ///< equilibrium under gravity
   double statics_seconds = 0.0;
   double build_seconds = 0.0;  ///< vehicle build + assembly [s]
+  /// What the statics and modes gave to warn of (said on stderr as they arose).
+  std::vector<std::string> warnings;
 };
 
 /// Loads a vehicle description and prints its physical warnings (vehicle::descriptionWarnings)
@@ -29,7 +31,8 @@ struct VehicleAnalysis {
 vehicle::VehicleDescription loadVehicle(const std::string& file,
                                         std::vector<std::string>* warnings = nullptr);
 
-/// Builds, assembles, solves statics and the lowest `count` modes, and classifies them.
+/// Builds, assembles, solves statics and the lowest `count` modes, and classifies them; its
+/// warnings are printed on stderr and kept in VehicleAnalysis::warnings.
 VehicleAnalysis analyseVehicle(const vehicle::VehicleDescription& description,
                                vehicle::Variant variant, int count);
 

@@ -932,7 +932,7 @@ class PlotScriptsTest(unittest.TestCase):
     def write_ride(self, name, **changes):
         """A small `tvd ride --json` document: two points, three runs, one limit of each kind."""
         limit = {"reached": {"status": "reached", "speed_kmh": 15.0},
-                 "not": {"status": "not_reached", "speed_kmh": 20.0}}
+                 "not": {"status": "not_reached", "speed_kmh": None, "bracket_kmh": [20.0, 20.0]}}
         doc = {"track": "road_C", "points": ["hull", "crew_seat"], "power_limit_w": 6.0,
                "peak_limit_g": 2.5, "peak_lowpass_hz": 30.0,
                "runs": [{"speed_kmh": v, "in_sweep": v != 15.0,

@@ -302,6 +302,18 @@ class TvdCliTest(unittest.TestCase):
         r = self.tvd("modes", "--vehicle", OWN_VEHICLE, "--variant", "tracked", "--count", "8")
         self.assertIn("tvd: warning: the hull sags 1.19 mm under its weight, less than a fifth of "
                       "the 39.5 mm of the hull with its chain wheels (10200 kg)", r.stderr)
+        # ... and in its JSON, as statics does; mac names the variant.
+        sag = ("the hull sags 1.19 mm under its weight, less than a fifth of the 39.5 mm of the "
+               "hull with its chain wheels (10200 kg)")
+        modes = self.tvd_json("modes", "--vehicle", OWN_VEHICLE, "--variant", "tracked",
+                              "--count", "8")
+        self.assertEqual(len([w for w in modes["warnings"] if w.startswith(sag)]), 1,
+                         modes["warnings"])
+        mac = self.tvd_json("mac", "--vehicle", OWN_VEHICLE, "--count", "8")
+        self.assertEqual(len([w for w in mac["warnings"] if w.startswith("tracked: " + sag)]), 1,
+                         mac["warnings"])
+        self.assertEqual(self.tvd_json("modes", "--vehicle", VEHICLE, "--count", "6")["warnings"],
+                         [])
         # Under braking the statics are another load case: no verdict on the sag there.
         braking = self.tvd_json("statics", "--vehicle", OWN_VEHICLE, "--variant", "tracked",
                                 "--accel", "-1")
@@ -1614,13 +1626,16 @@ class TvdCliTest(unittest.TestCase):
                 l = limits[point][name]
                 outcomes.add(l["status"])
                 sweep_values = [by_speed[v][point][key] for v in d["speeds_kmh"]]
+                # No crossing, no speed: the bracket holds the speed run.
                 if l["status"] == "at_lowest_speed":
                     self.assertGreaterEqual(sweep_values[0], limit)
-                    self.assertEqual(l["speed_kmh"], 10)
+                    self.assertIsNone(l["speed_kmh"])
+                    self.assertEqual(l["bracket_kmh"], [10, 10])
                     continue
                 if l["status"] == "not_reached":
                     self.assertLess(max(sweep_values), limit)
-                    self.assertEqual(l["speed_kmh"], 40)
+                    self.assertIsNone(l["speed_kmh"])
+                    self.assertEqual(l["bracket_kmh"], [40, 40])
                     continue
                 self.assertEqual(l["status"], "reached")
                 lo, hi = l["bracket_kmh"]
@@ -3137,6 +3152,27 @@ class TvdCliTest(unittest.TestCase):
             resource.setrlimit(resource.RLIMIT_FSIZE, (max_bytes, max_bytes))
         return subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240,
                               preexec_fn=limit)
+
+    def test_modes_max_frequency_returns_every_mode_below(self):
+        """modes --model --max-frequency F: every mode below F (not the default --count's 20);
+        a --count given caps them, with a warning naming the Sylvester count below F."""
+        model = os.path.join(ROOT, "config", "models", "cantilever_beam.yaml")
+        limit = 20000.0
+        everything = self.tvd_json("modes", "--model", model, "--count", "500")["frequencies_hz"]
+        below = [f for f in everything if f < limit]
+        self.assertGreater(len(below), 20)
+        self.assertLess(len(below), len(everything))
+        d = self.tvd_json("modes", "--model", model, "--max-frequency", repr(limit))
+        self.assertEqual(len(d["frequencies_hz"]), len(below))
+        for f, g in zip(d["frequencies_hz"], below):
+            self.assertAlmostEqual(f / g, 1.0, delta=1e-9)
+        self.assertEqual(d["warnings"], [])
+        capped = self.tvd_json("modes", "--model", model, "--max-frequency", repr(limit),
+                               "--count", "5")
+        self.assertEqual(len(capped["frequencies_hz"]), 5)
+        self.assertEqual(capped["warnings"],
+                         [f"{len(below)} modes lie below 20000 Hz: the lowest 5 are returned "
+                          "(--count 5; raise it, at most 500)"])
 
     def test_output_files_are_written_whole_or_not_at_all(self):
         """#2: a CSV through a symlink to /dev/full is replaced by the whole file (as a .mat);
