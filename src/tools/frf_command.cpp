@@ -327,8 +327,10 @@ void run(const FrfOptions& opt) {
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("model", opt.model)  // reduced | full, as simulate's
-        .field("model_description", source)
-        .field("dofs", static_cast<long long>(dofs))
+        .field("model_description", source);
+    if (!opt.reduced.reducedFile().empty())
+      json.field("reduced_model_file", opt.reduced.reducedFile());
+    json.field("dofs", static_cast<long long>(dofs))
         .field("full_dofs", static_cast<long long>(full_dofs))
         .field("excitation", opt.speed_kmh > 0 ? "travelled" : "synchronous")
         .field("sides", opt.sides)
@@ -421,7 +423,8 @@ void registerFrfCommand(CLI::App& app) {
                   "full (FE modes + static residual)")
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh,
-                  "travelled excitation at this speed [km/h] (wheelbase filter); 0: synchronous");
+                  "travelled excitation at this speed [km/h] (wheelbase filter), 0 .. 200; 0: "
+                  "synchronous");
   cmd->add_option("--sides", opt->sides,
                   "in_phase: both tracks' roads alike (the paper's) | anti_phase: left +h, "
                   "right -h, which rolls the hull (adds hull_lateral_acc, hull_roll_acc, "

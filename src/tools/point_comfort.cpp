@@ -28,8 +28,12 @@ void PointComfort::writeJson(io::JsonWriter& json) const {
   const dynamics::BasicMethodRatios r = dynamics::basicMethodRatios(meter_.vertical().metrics());
   json.beginObject()
       .field("point", point_)
+      // The vertical ones also by ride's names, with the axis as the other axes' keys have it;
+      // the first two names are kept for scripts written before 0.5.2.
       .field("weighted_rms_m_s2", meter_.vertical().weightedRms())
       .field("vdv_m_s1_75", meter_.vertical().vibrationDoseValue())
+      .field("weighted_rms_z_m_s2", meter_.vertical().weightedRms())
+      .field("vdv_z_m_s1_75", meter_.vertical().vibrationDoseValue())
       .field("mtvv_m_s2", meter_.vertical().maximumTransientVibrationValue())
       .field("mtvv_linear_m_s2", meter_.vertical().maximumTransientVibrationValueLinear())
       .field("peak_weighted_m_s2", meter_.vertical().peakWeighted())

@@ -5,6 +5,7 @@
 // models' "6 W speed" on a rough course and "2.5 g speed" over an obstacle), is bracketed by the
 // sweep and narrowed by bisection (limit_crossing.h). With --iso8608 CLASS instead of a track,
 // the road is that class's PSD and every speed is evaluated spectrally (ride_spectral.cpp).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -29,6 +30,7 @@
 #include "simulation_layout.h"
 #include "speed_sweep.h"
 #include "terrain_coverage.h"
+#include "track_option.h"
 #include "tracked_vehicle_dynamics/dynamics/limit_crossing.h"
 #include "tracked_vehicle_dynamics/dynamics/road_excitation.h"
 #include "tracked_vehicle_dynamics/dynamics/shock_meter.h"
@@ -83,7 +85,7 @@ std::vector<std::string> rideHeaders(const std::vector<std::string>& points) {
 
 void run(const RideOptions& opt) {
   const std::vector<double> sweep = parseSpeedSweep(opt.speeds);
-  const terrain::Terrain track = terrain::loadTrack(opt.track);
+  const terrain::Terrain track = loadTrackOption("ride", opt.track);
   const double distance = track.endStation() - track.startStation();
   if (!(distance > 0))
     throw InputError(opt.track + ": the terrain has a single station; a track must cover a length");
@@ -223,13 +225,19 @@ void run(const RideOptions& opt) {
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
         .field("track", track.name())
-        .field("travelled_m", distance)
+        .field("track_argument", opt.track)  // the file or built-in name given to --track
+        .field("lateral_offset_m", opt.lateral_offset);
+    if (!opt.reduced.reducedFile().empty())
+      json.field("reduced_model_file", opt.reduced.reducedFile());
+    json.field("travelled_m", distance)
         .field("warnings", warnings)
         .field("time_step_s", opt.dt)
         .field("power_limit_w", opt.power_limit_w)
         .field("peak_limit_g", opt.peak_limit_g)
         .field("peak_lowpass_hz", opt.lowpass_hz)
-        .field("peak_lowpass_order", static_cast<long long>(shock.lowpass_order))
+        // 0 with --lowpass-hz 0: the peaks are of the unfiltered acceleration.
+        .field("peak_lowpass_order",
+               static_cast<long long>(opt.lowpass_hz > 0.0 ? shock.lowpass_order : 0))
         .field("tolerance_kmh", opt.tolerance_kmh)
         .field("reduced_dofs", static_cast<long long>(sys.size()));
     writeReductionJson(json.key("reduction"), reduced);
@@ -300,7 +308,8 @@ void run(const RideOptions& opt) {
                 << m.peak_up_g;
     std::cout << "\n";
   }
-  std::cout << "  (* speeds the bisection added)\n";
+  if (std::any_of(runs.begin(), runs.end(), [](const auto& run) { return !run.second.in_sweep; }))
+    std::cout << "  (* speeds the bisection added)\n";
   std::ostringstream power_limit, peak_limit;
   power_limit << std::defaultfloat << opt.power_limit_w << " W";
   peak_limit << std::defaultfloat << opt.peak_limit_g << " g";
@@ -336,10 +345,13 @@ void registerRideCommand(CLI::App& app) {
                                      "no peaks, no VDV)");
   cmd->add_option("--speeds", opt->speeds,
                   "speeds [km/h]: FIRST:LAST:STEP (STEP must land on LAST) or a list 5,10,20");
-  CLI::Option* points = cmd->add_option(
-      "--points", opt->points,
-      "points of the hull, comma-separated: hull (the CoG) and the description's named "
-      "points (default: all)");
+  CLI::Option* points =
+      cmd->add_option("--points", opt->points,
+                      "points of the hull, comma-separated or repeated (as frf's): hull (the CoG) "
+                      "and the description's named points (default: all)")
+          ->type_name("NAME[,NAME...]")
+          ->expected(1)
+          ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--power-limit-w", opt->power_limit_w, "absorbed-power limit [W]")
       ->check(positiveNumber());
   // The time-domain run's own options, refused with --iso8608.
@@ -355,10 +367,11 @@ void registerRideCommand(CLI::App& app) {
       cmd->add_option("--dt", opt->dt, "time step [s] (1e-4 .. 0.002)")
           ->check(numberIn(1e-4, 0.002, "s"))};
   cmd->add_option("--tolerance-kmh", opt->tolerance_kmh,
-                  "bisection stops at this bracket width [km/h]")
+                  "bisection stops at this bracket width [km/h] (0.001 .. 10)")
       ->check(numberIn(1e-3, 10.0, "km/h"));
   cmd->add_option("--lateral-offset", opt->lateral_offset,
-                  "lateral offset of the path [m] (y left)")
+                  "lateral offset of the path [m] (y left) on the terrain's lines (oop_waves: "
+                  "beyond the paper's 1 m, built into the track)")
       ->check(finiteNumber());
   // The road spectrum's options (those of tvd terrain --iso8608, and the grid), refused without
   // --iso8608.
@@ -379,7 +392,7 @@ void registerRideCommand(CLI::App& app) {
                       "--iso8608: highest spatial frequency [cycles/m]")
           ->check(numberIn(1e-3, 100.0, "cycles/m")),
       cmd->add_option("--points-per-decade", opt->points_per_decade,
-                      "--iso8608: frequencies per decade of the integration grid")
+                      "--iso8608: frequencies per decade of the integration grid (10 .. 1e5)")
           ->check(numberIn(10.0, 1e5)),
       cmd->add_option(
              "--psd-out", opt->psd_out,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "reduction_options.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
@@ -17,8 +18,8 @@ struct RideOptions {
   bool variant_given = false;
   std::string track;
   std::string speeds = "5:70:5";
-  std::string points;
-  bool points_given = false;  // false: the hull's CoG and every named point
+  std::vector<std::string> points;  // --points, each comma-separated (repeated: all of them)
+  bool points_given = false;        // false: the hull's CoG and every named point
   double power_limit_w = 6.0;
   double peak_limit_g = 2.5;
   double lowpass_hz = 30.0;

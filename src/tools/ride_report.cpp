@@ -61,14 +61,14 @@ void checkMatColumns(const std::string& option, const std::string& file,
                        "name may be (63): write .csv, or shorten the point's name");
 }
 
-std::vector<std::string> choosePoints(const std::string& spec, bool given,
+std::vector<std::string> choosePoints(const std::vector<std::string>& specs, bool given,
                                       const std::vector<std::string>& named) {
   std::vector<std::string> known = {"hull"};
   known.insert(known.end(), named.begin(), named.end());
   if (!given)
     return known;
   std::vector<std::string> chosen;
-  for (const std::string& name : splitPointList("ride", {spec})) {
+  for (const std::string& name : splitPointList("ride", specs)) {
     if (std::find(known.begin(), known.end(), name) == known.end()) {
       std::string list;
       for (const std::string& k : known)

@@ -15,10 +15,10 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// The points the user asked for (`spec`, comma-separated), or "hull" and every named point when
-/// --points was not `given`. Throws InputError for a point the model lacks, one listed twice or an
-/// empty name (an empty `spec` included).
-std::vector<std::string> choosePoints(const std::string& spec, bool given,
+/// The points the user asked for (`specs`: each --points given, comma-separated), or "hull" and
+/// every named point when --points was not `given`. Throws InputError for a point the model
+/// lacks, one listed twice or an empty name (an empty spec included).
+std::vector<std::string> choosePoints(const std::vector<std::string>& specs, bool given,
                                       const std::vector<std::string>& named);
 
 /// What both methods rate: the points (checked against the description before any work) and the

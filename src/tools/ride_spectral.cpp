@@ -474,8 +474,10 @@ void runSpectralRide(const RideOptions& opt) {
         .endObject();
     json.field("warnings", warnings)
         .field("points_per_decade", opt.points_per_decade)
-        .field("lateral_offset_m", opt.lateral_offset)
-        .field("power_limit_w", opt.power_limit_w)
+        .field("lateral_offset_m", opt.lateral_offset);
+    if (!opt.reduced.reducedFile().empty())
+      json.field("reduced_model_file", opt.reduced.reducedFile());
+    json.field("power_limit_w", opt.power_limit_w)
         .field("tolerance_kmh", opt.tolerance_kmh)
         .field("reduced_dofs", static_cast<long long>(sys.size()))
         .field("solution", std::string(ride.complexModes() ? "complex_modes" : "modal"))
@@ -560,7 +562,8 @@ void runSpectralRide(const RideOptions& opt) {
                 << m.z.weighted_rms << std::setw(12) << m.seat_surface_total_value;
     std::cout << "\n";
   }
-  std::cout << "  (* speeds the bisection added)\n";
+  if (std::any_of(runs.begin(), runs.end(), [](const auto& run) { return !run.second.in_sweep; }))
+    std::cout << "  (* speeds the bisection added)\n";
   std::ostringstream power_limit;
   power_limit << std::defaultfloat << opt.power_limit_w << " W";
   for (std::size_t i = 0; i < points.size(); ++i)

@@ -22,6 +22,7 @@
 #include "reduction_options.h"
 #include "simulation_layout.h"
 #include "terrain_coverage.h"
+#include "track_option.h"
 #include "tracked_vehicle_dynamics/dynamics/comfort.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact.h"
 #include "tracked_vehicle_dynamics/dynamics/ground_contact_forces.h"
@@ -202,7 +203,7 @@ void run(const SimulateOptions& opt) {
         " s, more than a tracked vehicle's brakes or traction give (under 1 g): times in ms "
         "read as s? The model applies it as a travel acceleration on the hull");
   }
-  const terrain::Terrain track = terrain::loadTrack(opt.track);
+  const terrain::Terrain track = loadTrackOption("simulate", opt.track);
   for (std::string& w : terrain::terrainWarnings(opt.track, track))
     warnings.push_back(std::move(w));
   for (const std::string& w : warnings)
@@ -472,6 +473,11 @@ void run(const SimulateOptions& opt) {
                 .cwiseAbs()
                 .maxCoeff();
 
+  // The modes integrated, up to this (0: every mode); above it quasi-static.
+  const double max_mode_hz = !full ? sim_options.max_mode_frequency_hz
+                             : opt.max_mode_hz >= 0
+                                 ? opt.max_mode_hz
+                                 : reduction::FullReferenceOptions().max_frequency_hz;
   if (!opt.out_file.empty()) {
     std::vector<std::string> headers = {"time_s", "station_m"};
     for (const SimulationColumn& col : layout.columns)
@@ -490,11 +496,7 @@ void run(const SimulateOptions& opt) {
                          {"model", full ? "full" : "reduced"},
                          {"method", opt.method},
                          {"dt_s", opt.dt},
-                         // the modes integrated, up to this (0: every mode); above it quasi-static
-                         {"max_mode_hz", !full ? sim_options.max_mode_frequency_hz
-                                         : opt.max_mode_hz >= 0
-                                             ? opt.max_mode_hz
-                                             : reduction::FullReferenceOptions().max_frequency_hz},
+                         {"max_mode_hz", max_mode_hz},
                          {"lateral_offset_m", opt.lateral_offset}};
     if (!opt.reduced.reducedFile().empty())
       metadata.push_back({"reduced_model_file", opt.reduced.reducedFile()});
@@ -510,7 +512,12 @@ void run(const SimulateOptions& opt) {
         .field("vehicle", description.name)
         .field("vehicle_file", opt.vehicle_file)
         .field("variant", vehicle::variantName(variant))
-        .field("track", track.name());
+        .field("track", track.name())
+        .field("track_argument", opt.track)  // the file or built-in name given to --track
+        .field("lateral_offset_m", opt.lateral_offset)
+        .field("max_mode_hz", max_mode_hz);
+    if (!opt.reduced.reducedFile().empty())
+      json.field("reduced_model_file", opt.reduced.reducedFile());
     if (profile) {
       json.field("speed_profile", opt.speed_profile)
           .field("mean_speed_kmh", travelled / simulated * kKmhPerMs)
@@ -631,8 +638,10 @@ void registerSimulateCommand(CLI::App& app) {
       addVariantOption(cmd, &opt->variant, "untracked | tracked (with --reduced: the file's)");
   cmd->add_option("--track", opt->track,
                   "long_hill | separated_waves | oop_waves | half_round:H (obstacle, H in m) | "
-                  "terrain file (CSV/YAML)");
-  CLI::Option* speed = cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h]");
+                  "terrain file (CSV/YAML); oop_waves is laid out for the paper's 1 m offset "
+                  "towards +y: --lateral-offset adds to it");
+  CLI::Option* speed =
+      cmd->add_option("--speed-kmh", opt->speed_kmh, "constant speed [km/h], (0, 200]");
   cmd->add_option("--speed-profile", opt->speed_profile,
                   "speed varying in time instead: CSV time_s,speed_kmh (or speed_m_s), linear "
                   "between rows; the run ends at the track's end or the profile's; its "
@@ -644,7 +653,8 @@ void registerSimulateCommand(CLI::App& app) {
   cmd->add_option("--dt", opt->dt, "time step [s] (1e-5 .. 0.01, default 0.001)")
       ->check(numberIn(1e-5, 0.01, "s"));
   cmd->add_option("--lateral-offset", opt->lateral_offset,
-                  "lateral offset of the path [m] (y left)")
+                  "lateral offset of the path [m] (y left) on the terrain's lines (oop_waves: "
+                  "beyond the paper's 1 m, built into the track)")
       ->check(finiteNumber());
   cmd->add_option("--method", opt->method,
                   "discretisation: modal (the modes, fast; the default) | exact (augmented "

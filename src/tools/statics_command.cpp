@@ -382,7 +382,7 @@ void registerStaticsCommand(CLI::App& app) {
   cmd->add_option("--accel", opt->accel,
                   "steady forward acceleration of the vehicle [m/s^2], braking negative (e.g. "
                   "-2.94 for 0.3 g): the travel inertia -m a at every mass moves the load to the "
-                  "front pads and pitches the nose down; 0 (default): at rest")
+                  "front pads and pitches the nose down; -15 .. 15; 0 (default): at rest")
       ->check(numberIn(-15.0, 15.0, "m/s^2"));
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the tables");
   cmd->callback([opt]() { run(*opt); });

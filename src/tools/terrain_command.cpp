@@ -227,7 +227,8 @@ void registerTerrainCommand(CLI::App& app) {
       cmd->add_option(
              "--track", opt->track,
              "built-in track: long_hill | separated_waves | oop_waves | half_round:H (the NRMM "
-             "half-round obstacle, H its height in m, e.g. half_round:0.2)")
+             "half-round obstacle, H its height in m, e.g. half_round:0.2); oop_waves is written "
+             "with the paper's 1 m offset built in (lines at y -3.5 .. 1.5 m)")
           ->check(builtInTrack());
   CLI::Option* iso =
       cmd->add_option("--iso8608", opt->iso_class, "random road of ISO 8608 class A..H instead");

@@ -1605,7 +1605,9 @@ class TvdCliTest(unittest.TestCase):
                               ("sensor_mount", "sensor_mount_accel_z_m_s2")):
             r = by_speed[20][point]
             for ride_key, sim_key in (("absorbed_power_w", "absorbed_power_w"),
+                                      ("weighted_rms_z_m_s2", "weighted_rms_z_m_s2"),
                                       ("weighted_rms_z_m_s2", "weighted_rms_m_s2"),
+                                      ("vdv_z_m_s1_75", "vdv_z_m_s1_75"),
                                       ("vdv_z_m_s1_75", "vdv_m_s1_75"),
                                       ("vibration_total_value_m_s2", "vibration_total_value_m_s2"),
                                       ("weighted_rms_x_m_s2", "weighted_rms_x_m_s2"),
@@ -1674,6 +1676,25 @@ class TvdCliTest(unittest.TestCase):
                             (l["point"], c, [(v, runs[v][l["point"]]["peak_up_g"]) for v in below]))
             self.assertGreaterEqual(runs[hi][l["point"]]["peak_up_g"], 2.5)
 
+    def test_ride_unfiltered_peaks(self):
+        """ride --lowpass-hz 0: the peaks are the unfiltered acceleration's, simulate's peak
+        |a| of the same run; no filter order is reported; no bisection, no footnote for it."""
+        ride = ("ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "half_round:0.1",
+                "--speeds", "10", "--points", "hull", "--lowpass-hz", "0", "--cache-dir",
+                self.cache)
+        d = self.tvd_json(*ride)
+        self.assertEqual(d["peak_lowpass_hz"], 0.0)
+        self.assertEqual(d["peak_lowpass_order"], 0)
+        s = self.tvd_json("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track",
+                          "half_round:0.1", "--speed-kmh", "10", "--cache-dir", self.cache,
+                          "--out", self.path("unfiltered.csv"))
+        hull = d["runs"][0]["points"][0]
+        self.assertAlmostEqual(hull["peak_abs_g"] * 9.80665 / s["peak_hull_vertical_accel_m_s2"],
+                               1.0, delta=1e-8)
+        text = self.tvd(*ride).stdout
+        self.assertIn("unfiltered", text)
+        self.assertNotIn("bisection added", text)
+
     def test_ride_bad_options_are_named_before_any_work(self):
         ride = ["ride", "--vehicle", VEHICLE, "--variant", "untracked", "--track", self.ride_road(),
                 "--cache-dir", self.cache]
@@ -1688,6 +1709,11 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(ride + ["--points", "moon"], "--points", "unknown point 'moon'",
                                 "(the vehicle has: hull, crew_seat, sensor_mount)")
         self.assert_input_error(ride + ["--points", "hull,hull"], "'hull' is listed twice")
+        # Repeated, as frf's: every one is read (the second one judged too).
+        self.assert_input_error(ride + ["--points", "hull", "--points", "hull"],
+                                "'hull' is listed twice")
+        self.assert_input_error(ride + ["--points", "hull", "--points", "moon"],
+                                "unknown point 'moon'")
         self.assert_input_error(ride + ["--points", "hull,"], "an empty name")
         self.assert_input_error(ride + ["--dt", "0.005"], "--dt", "[0.0001, 0.002] s")
         self.assert_input_error(ride + ["--dt", "0.002", "--lowpass-hz", "300"], "--lowpass-hz 300",
@@ -2047,8 +2073,13 @@ class TvdCliTest(unittest.TestCase):
             args = (command, "--vehicle", VEHICLE, "--variant", "untracked", "--cache-dir",
                     self.cache, *extra)
             csv_file, mat_file = self.path(command + ".csv"), self.path(command + ".mat")
-            self.tvd(*args, "--out", csv_file)
+            summary = self.tvd_json(*args, "--out", csv_file)
             self.tvd(*args, "--out", mat_file)
+            # The JSON summary names the same settings (review 137: the track's file, the
+            # offset and the modal cut-off were in the .mat only).
+            for name in ("track_argument", "lateral_offset_m", "max_mode_hz"):
+                if name in settings[command]:
+                    self.assertEqual(summary[name], settings[command][name], name)
             header, rows = read_csv(csv_file)
             m = scipy.io.loadmat(mat_file)
             self.assertEqual(str(m["variant"][0]), "untracked")
@@ -2435,9 +2466,11 @@ class TvdCliTest(unittest.TestCase):
         scipy.io.savemat(columns, scipy.io.loadmat(mat, squeeze_me=True), oned_as="column")
         self.tvd("frf", "--vehicle", damped, "--reduced", columns, "--max-hz", "2", "--out",
                  self.path("x.mat"))
-        # The result file names the model file it is of, as simulate's do.
+        # The result file names the model file it is of, as simulate's do; so does its JSON.
         self.assertEqual(str(scipy.io.loadmat(self.path("x.mat"))["reduced_model_file"][0]),
                          columns)
+        self.assertEqual(self.tvd_json("frf", "--vehicle", damped, "--reduced", columns,
+                                       "--max-hz", "2")["reduced_model_file"], columns)
         # simulate: the modal method steps the coupled modes together (the whole C, as the
         # exact method) and says nothing; reduced modal and exact, and the full model (the
         # reference) by either method, agree within 2 % of each peak (issue 5; 0.2 % here).
@@ -3044,9 +3077,17 @@ class TvdCliTest(unittest.TestCase):
                                     f"track '{spec}': ", fault)
             self.assert_input_error(["simulate", "--vehicle", VEHICLE, "--variant", "untracked",
                                      "--track", spec, "--cache-dir", self.cache],
-                                    f"track '{spec}': ", fault)
+                                    f"simulate: --track: track '{spec}': ", fault)
         self.assert_input_error(["terrain", "--track", "moon", "--out", self.path("x.csv")],
                                 "unknown track 'moon'", "long_hill", "half_round:H")
+        # simulate's and ride's name the command and option too, for a missing file as well.
+        for command in ("simulate", "ride"):
+            self.assert_input_error([command, "--vehicle", VEHICLE, "--track", "half_round:15",
+                                     "--cache-dir", self.cache],
+                                    f"{command}: --track: track 'half_round:15': ")
+            self.assert_input_error([command, "--vehicle", VEHICLE, "--track",
+                                     self.path("missing.csv"), "--cache-dir", self.cache],
+                                    f"{command}: --track: {self.path('missing.csv')}: file not found")
 
     def test_road_under_each_wheel_is_the_terrain_at_the_wheel(self):
         # The out-of-phase waves differ left and right and along the track: each column must be
