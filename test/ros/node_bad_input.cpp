@@ -727,7 +727,10 @@ TEST(NodeBadParameters, InterruptedWhileBuildingTheModelExitsCleanly) {
 
 // A step slower than the period (~method exact at 100 kHz on the un-tracked model: its 254
 // states take about 25-40 us per 10 us step here) cannot keep up: the "behind ROS time" warning
-// says why and what to do, with the mean step time.
+// says why and what to do, with the mean step time. The node reduces the model into a fresh
+// cache first: its first warning came 0.7-0.9 s after the start on an idle machine, 5.5-6.5 s
+// with eight busy loops and a compile beside it (review 138), so it gets 8 s (the warnings after
+// the first are throttled to one in 5 s: a first one missed is not made up).
 TEST(NodeBadParameters, AStepSlowerThanThePeriodIsSaid) {
   ros::NodeHandle private_nh("~");
   char cache[] = "/tmp/tvd_slow_XXXXXX";
@@ -736,7 +739,7 @@ TEST(NodeBadParameters, AStepSlowerThanThePeriodIsSaid) {
       "__name:=slow_exact _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
           " _variant:=untracked _cache_dir:=" + std::string(cache) +
           " _method:=exact _rate:=100000",
-      4);
+      8);
   std::filesystem::remove_all(cache);
   EXPECT_NE(run.output.find("behind ROS time, more than ~catch_up_limit"), std::string::npos)
       << run.output;

@@ -65,6 +65,9 @@ class NodeClockStep : public ::testing::Test {
     offset_file_ = test::requiredParam<std::string>(private_nh_, "offset_file");
   }
 
+  // The run's own offset file goes with it (the node is stopped after the test).
+  ~NodeClockStep() override { std::remove(offset_file_.c_str()); }
+
   /// Steps the node's system clock to `offset` [s] from the true one.
   void setOffset(double offset) {
     const std::string tmp = offset_file_ + ".test";
