@@ -9,7 +9,6 @@
 // Before, a step back left the stamped speeds sent ahead waiting Δ longer and dropped every new
 // one as older than the one in force until the clock caught up; a step forward was stepped (up
 // to ~catch_up_limit of motion in one tick) or skipped as "behind ROS time".
-#include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -23,7 +22,7 @@ namespace ros_layer {
 namespace {
 
 // A change of the offset beyond this [ns] between two ticks is a step of the clock. Far above
-// a slew's (0.5 ms/s) and the reading's error (clockPair: under kPairSpread), far below the
+// a slew's (0.5 ms/s) and the reading's error (readClocks: under kPairSpreadNs), far below the
 // steps NTP daemons make (ntpd steps beyond 128 ms; smaller offsets are slewed).
 constexpr std::int64_t kClockStepNs = 20'000'000;
 // ROS time is read between two readings of the monotonic clock at most this far apart [ns]: a
