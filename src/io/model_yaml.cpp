@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/yaml_file_kind.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
@@ -311,6 +312,7 @@ std::vector<fem::DofRef> readSet(const YamlValue& value) {
 }
 
 fem::Model readModel(const YamlValue& root) {
+  expectNotOtherYamlFile(root, YamlFileKind::FeModel);
   root.expectMap({"name", "gravity", "nodes", "materials", "sections", "beams", "springs", "masses",
                   "rigid_joints", "fixed", "ties", "body_preloads", "sets"});
   fem::Model model;

@@ -88,6 +88,10 @@ YamlValue YamlValue::loadFile(const std::string& path) {
 }
 
 YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
+  // A MATLAB Level 5 file opens with this text (tvd's reduced models and results are such files).
+  if (text.rfind("MATLAB 5.0 MAT-file", 0) == 0)
+    throw InputError(file + ": not a YAML text file: a MATLAB .mat file (a reduced model or a " +
+                     "result of tvd)");
   if (text.find('\0') != std::string::npos) {
     throw InputError(file + ": not a YAML text file (binary content)");
   }

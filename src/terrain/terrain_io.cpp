@@ -12,6 +12,7 @@
 #include "tracked_vehicle_dynamics/io/csv_reader.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/number_text.h"
+#include "tracked_vehicle_dynamics/io/yaml_file_kind.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
@@ -150,6 +151,7 @@ Terrain loadTerrainCsv(const std::string& path) {
 
 Terrain loadTerrainYaml(const std::string& path) {
   const io::YamlValue root = io::YamlValue::loadFile(path);
+  io::expectNotOtherYamlFile(root, io::YamlFileKind::Terrain);
   root.expectMap({"name", "spacing", "start", "x", "y", "heights"});
   const std::string name = root.has("name") ? root["name"].asString() : stem(path);
   const bool has_spacing = root.has("spacing");

@@ -13,6 +13,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/fnv1a.h"
+#include "tracked_vehicle_dynamics/io/yaml_file_kind.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
 namespace tracked_vehicle_dynamics {
@@ -580,8 +581,32 @@ void collectKeyLines(const io::YamlValue& node, const std::string& prefix,
   }
 }
 
+/// Refuses, as a whole, another of the package's files, or one that has none of a description's
+/// sections (its first key would be "unknown", as if misspelt).
+void expectDescription(const io::YamlValue& root) {
+  io::expectNotOtherYamlFile(root, io::YamlFileKind::VehicleDescription);
+  std::string sections;
+  for (const char* s : kSections)
+    sections += (sections.empty() ? "" : ", ") + std::string(s);
+  const std::string expected = "a vehicle description has the sections " + sections +
+                               " (e.g. config/vehicles/paper_vehicle.yaml)";
+  if (!root.isMap())
+    throw InputError(root.file() + ": not a vehicle description: its top level is not a map of " +
+                     "sections; " + expected);
+  std::string given;
+  for (const auto& [key, value] : root.entries()) {
+    for (const char* s : kSections)
+      if (key == s)
+        return;
+    given += (given.empty() ? "" : ", ") + key;
+  }
+  throw InputError(root.file() + ": not a vehicle description: none of its top-level keys (" +
+                   (given.empty() ? std::string("none") : given) + ") is a section; " + expected);
+}
+
 VehicleDescription fromYaml(const io::YamlValue& root) {
   const std::string& file = root.file();
+  expectDescription(root);
   std::set<std::string> top = {"name", "named_points"};
   for (const char* s : kSections)
     top.insert(s);

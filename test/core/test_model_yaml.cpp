@@ -470,6 +470,17 @@ TEST_F(ModelYamlTest, RejectsGravityBeyondAHundredG) {
   }
 }
 
+// Another of the package's files is named for what it is, not by its first "unknown key".
+TEST_F(ModelYamlTest, NamesAnotherKindOfFile) {
+  expectLoadError("vehicle.yaml", readText(sourcePath("config/vehicles/paper_vehicle.yaml")),
+                  {"not an FE model file", "this is a vehicle description"});
+  expectLoadError("terrain.yaml", readText(sourcePath("config/tracks/bump.yaml")),
+                  {"not an FE model file", "this is a terrain file"});
+  // A model file's own keys decide: a typo beside them is still named key by key.
+  expectLoadError("with_heights.yaml", std::string(kBase) + "heights: [0, 1]\n",
+                  {"heights: unknown key"});
+}
+
 TEST_F(ModelYamlTest, RejectsUnknownAndRepeatedKeys) {
   expectLoadError("top_typo.yaml", replaced("beams:\n", "beam:\n"),
                   {"beam: unknown key (allowed keys: name, gravity, nodes,", "(line 9)"});

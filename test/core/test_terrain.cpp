@@ -1118,6 +1118,11 @@ TEST(TerrainIo, BadYamlNamesFileAndKey) {
       {"spacing: -0.1\nheights: [0, 0, 0]\n", {"spacing", "must be > 0"}},
       {"spacing: 0.1\n", {"heights", "required key is missing"}},
       {"spacing: 0.1\nheights: [0, 0]\nwidth: 3\n", {"width", "unknown key"}},
+      // Another of the package's files is named for what it is (its first key was "unknown").
+      {"name: beam\nnodes:\n  - {id: 1, x: [0, 0, 0]}\n",
+       {"not a terrain file", "this is an FE model file"}},
+      {"hull:\n  mass: {value: 30300, unit: kg, source: x}\n",
+       {"not a terrain file", "this is a vehicle description"}},
       {"spacing: 0.1\ny: [1, -1]\nheights: [[0], [0]]\n",
        {"y[1]", "lateral positions must be strictly increasing"}},
       {"spacing: 0.1\nheights: []\n", {"heights", "at least one height"}},

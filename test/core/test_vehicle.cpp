@@ -197,6 +197,46 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
 
 // The model builder's geometric checks (chain path, end wheels, rollers) run after loading; a
 // description read from a file still gets the key's line in their messages.
+// The package's other files given where a description belongs are named for what they are (the
+// first "unknown key" of such a file sent users hunting for a typo), from the shipped files.
+TEST(VehicleDescription, OtherFilesAreNamedForWhatTheyAre) {
+  const std::string dir = std::string(TVD_SOURCE_DIR) + "/config/";
+  const std::pair<std::string, std::string> cases[] = {
+      {"models/cantilever_beam.yaml", "this is an FE model file"},
+      {"tracks/bump.yaml", "this is a terrain file"},
+      {"vehicle_dynamics.yaml", "this is the node's parameter file"},
+      {"paper_reference.yaml", "this is the file of the paper's reference figures"},
+      {"tracks/twist.csv",
+       "its top level is not a map of sections; a vehicle description has "
+       "the sections hull, running_gear,"},
+  };
+  for (const auto& [file, what] : cases) {
+    std::string message;
+    try {
+      veh::loadVehicleDescription(dir + file);
+    } catch (const tvd::InputError& e) {
+      message = e.what();
+    }
+    EXPECT_EQ(message.rfind(dir + file + ": not a vehicle description", 0), 0u) << message;
+    EXPECT_NE(message.find(what), std::string::npos) << file << ": " << message;
+  }
+  EXPECT_NE(loadError("speed: 3\nlength: 2\n")
+                .find("none of its top-level keys (speed, length) is a section"),
+            std::string::npos)
+      << loadError("speed: 3\nlength: 2\n");
+  // A .mat file's header (tvd's reduced models and results), binary bytes after it.
+  const std::string mat = std::string("MATLAB 5.0 MAT-file, written by tvd") + '\0' + "\x01\x02";
+  EXPECT_NE(loadError(mat).find("edited.yaml: not a YAML text file: a MATLAB .mat file"),
+            std::string::npos)
+      << loadError(mat);
+  // One misspelt section among the others is still a description: its key is named.
+  const std::string text = readFile(kDescriptionFile);
+  std::string misspelt = text;
+  misspelt.replace(misspelt.find("\nidler:"), 7, "\nidlr:");
+  EXPECT_NE(loadError(misspelt).find("idlr: unknown key"), std::string::npos)
+      << loadError(misspelt);
+}
+
 TEST(VehicleDescription, BuilderErrorsGiveTheKeysLine) {
   const std::string text = readFile(kDescriptionFile);
   const std::string from = "  centre_z: {value: 0.78, unit: m,";
