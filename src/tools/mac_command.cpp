@@ -237,8 +237,11 @@ void registerMacCommand(CLI::App& app) {
                   "modes of each variant, 1 .. " + std::to_string(reduction::kMaxGlobalModes) +
                       " (paper: 40)")
       ->check(CLI::Range(1, reduction::kMaxGlobalModes));
-  // (0, 1] as reduce's --mac-threshold: at 0 every mode would correlate.
-  cmd->add_option("--threshold", opt->threshold, "MAC threshold of a match, in (0, 1] (paper: 0.7)")
+  // (0, 1] as reduce's --mac-threshold, which it also answers to (the same threshold: a user
+  // checking reduce's selection types the option reduce took): at 0 every mode would correlate.
+  cmd->add_option("--threshold,--mac-threshold", opt->threshold,
+                  "MAC threshold of a match, in (0, 1] (paper: 0.7; also --mac-threshold, as "
+                  "reduce)")
       ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= 1.0; }, "a number in (0, 1]",
                                 "NUMBER"));
   cmd->add_option("--band", opt->band_hz, "bandwidth of the correlation table [Hz]")

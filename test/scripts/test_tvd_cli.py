@@ -2145,6 +2145,14 @@ class TvdCliTest(unittest.TestCase):
         roll = next(r for r in rows if r["type"] == "roll")
         self.assertEqual(roll["tracked_type"], "roll")
         self.assertGreater(roll["mac"], 0.9)
+        # reduce's name of the threshold is taken too, and moves the matches with it.
+        strict = self.tvd_json("mac", "--vehicle", VEHICLE, "--count", "40", "--mac-threshold",
+                               "0.95")
+        self.assertEqual(strict["threshold"], 0.95)
+        for r in strict["correlation"]:
+            self.assertEqual(r["matched"], r["mac"] >= 0.95, r)
+        self.assertLess(sum(r["matched"] for r in strict["correlation"]),
+                        sum(r["matched"] for r in rows))
 
     def test_frf_csv_columns_and_grid(self):
         out = self.path("frf.csv")
