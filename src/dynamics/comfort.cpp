@@ -213,7 +213,8 @@ WeightingFilter::Biquad WeightingFilter::matchedMagnitude(const AnalogSection& a
   // Two finite zeros and two poles, all well below Nyquist (Wk's upward step): the zeros too are
   // mapped exactly, z = exp(s_z T), and the gain matched at DC, B(1)/A(1) = H(0). With equal
   // degrees the mapping distorts numerator and denominator alike and the two cancel: for the
-  // upward step within 0.002 dB of |H| up to fs/10 at fs = 30 Hz, 1e-5 dB at 1 kHz. The fit below
+  // upward step within 0.002 dB of |H| up to fs/10 from fs ≈ 42 Hz (the lowest rate at which its
+  // roots satisfy |s| T <= kMatchedRootLimit), 1e-5 dB at 1 kHz. The fit below
   // cannot recover such zeros at a high fs, whose radius differs from 1 by 2 zeta omega T ~ 1e-4
   // (the 8 Hz weighted 11 dB low at fs = 100 kHz; review 133). (1 - z) = -expm1(s T) keeps the
   // DC products accurate when every root is near z = 1.

@@ -18,7 +18,7 @@ namespace {
 constexpr double kSymmetryTolerance = 1e-8;
 // Eigenvalues with |omega^2| below this fraction of the largest are rigid-body modes (set to 0):
 // the dense solver's rounding, a few n eps lambda_max; below minus it, K is indefinite. Not
-// more: a reduced vehicle's lambda_max is ~1.7e11 rad^2/s^2 (the 2e10 N/m wheel ties on light
+// more: a reduced vehicle's lambda_max is ~1.3e11 rad^2/s^2 (the 2e10 N/m wheel ties on light
 // soles), so 1e-10 of it took any real chain mode below ~0.6 Hz for a rigid one (a lighter
 // vehicle's top run has them at 0.51 Hz), with no stiffness left to hold it, and passed an
 // unstable omega^2 of -17 rad^2/s^2 as a rigid mode (review 134).

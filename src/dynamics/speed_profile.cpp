@@ -7,8 +7,6 @@
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
-namespace {}  // namespace
-
 SpeedProfile::SpeedProfile(std::vector<double> time, std::vector<double> speed,
                            const std::string& name)
     : time_(std::move(time)), speed_(std::move(speed)) {

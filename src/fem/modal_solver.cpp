@@ -412,7 +412,6 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
 
   ModalBasis basis = sortAndNormalise(values, vectors, &mass, nullptr);
   basis.missed = missed;
-  basis.converged = basis.count();
   basis.iterations = iterations;
   if (request.max_frequency_hz > 0) {
     int keep = 0;
@@ -467,7 +466,6 @@ ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass) {
   if (es.info() != Eigen::Success)
     throw SolverError("dense modal solver: M is not positive definite or the solve failed");
   ModalBasis basis = sortAndNormalise(es.eigenvalues(), es.eigenvectors(), nullptr, &mass);
-  basis.converged = basis.count();
   basis.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return basis;
 }

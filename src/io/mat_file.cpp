@@ -283,7 +283,7 @@ bool emptyMat73(const std::string& path) {
 // The variables' headers are read once, in file order, when the file is opened. matio's reads by
 // name (Mat_VarRead, Mat_VarReadInfo) rewind and walk every header before the one they look for,
 // and a compressed cell's walk inflates the header of each of its elements: loading a reduced model
-// (40 variables, three cells of 360-431 strings) that way made 19,000 seeks and 4,600 reads, most
+// (30 variables, three cells of 360-431 strings) that way made 19,000 seeks and 4,600 reads, most
 // of the load time. Data is read from the kept header: numeric values into our own buffer on each
 // request, text once (kept for a second request).
 struct MatReader::Impl {

@@ -1,11 +1,10 @@
-// Writing of model files (schema: doc/model_file.md): one flow-style line per item, numbers in
-// shortest round-trip form so that load(save(m)) == m bit for bit.
+// Writing of model files (schema: doc/model_file.md): one flow-style line per item (a body
+// pre-load as a block), numbers in shortest round-trip form so that load(save(m)) == m bit for
+// bit.
 #include <yaml-cpp/yaml.h>
 
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
 #include <string>
 
 #include "tracked_vehicle_dynamics/error.h"

@@ -51,10 +51,6 @@ bool hasAnyKey(const YamlValue& root, const KindKeys& kind) {
 
 }  // namespace
 
-const char* yamlFileKindName(YamlFileKind kind) {
-  return entryOf(kind).name;
-}
-
 void expectNotOtherYamlFile(const YamlValue& root, YamlFileKind expected) {
   if (!root.isMap() || hasAnyKey(root, entryOf(expected)))
     return;

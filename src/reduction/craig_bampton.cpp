@@ -45,11 +45,6 @@ SparseMatrix selection(DofIndex n, const std::vector<DofIndex>& rows) {
   return p;
 }
 
-// T^T A T for a symmetric sparse A, exactly symmetric. Only the rows where A has entries
-// contribute (the dampers touch few DOFs), and only the lower triangle is multiplied. The rows go
-// in blocks: with R the block's rows, (A T)(R, :) = A(:, R)^T T (A symmetric) and
-// T^T A T = sum over blocks of T(R, :)^T (A T)(R, :), so no n x k product A T is formed (50 MB on
-// the tracked vehicle), only a block of it.
 // The rows where a sparse matrix has entries, ascending.
 std::vector<DofIndex> rowsWithEntries(const SparseMatrix& a) {
   std::vector<char> used(static_cast<std::size_t>(a.rows()), 0);
@@ -63,6 +58,11 @@ std::vector<DofIndex> rowsWithEntries(const SparseMatrix& a) {
   return rows;
 }
 
+// T^T A T for a symmetric sparse A, exactly symmetric. Only the rows where A has entries
+// contribute (the dampers touch few DOFs), and only the lower triangle is multiplied. The rows go
+// in blocks: with R the block's rows, (A T)(R, :) = A(:, R)^T T (A symmetric) and
+// T^T A T = sum over blocks of T(R, :)^T (A T)(R, :), so no n x k product A T is formed (50 MB on
+// the tracked vehicle), only a block of it.
 Matrix congruence(const SparseMatrix& a, const Matrix& t) {
   const DofIndex k = t.cols();
   Matrix out = Matrix::Zero(k, k);
@@ -131,8 +131,6 @@ void checkOptions(DofIndex n, DofIndex master_count, const CraigBamptonOptions& 
                        " is not an active DOF (0.." + std::to_string(n - 1) + ")");
 }
 
-// The leading r.count of ascending modes, cut at r.max_frequency_hz when it is set (as
-// fem::solveModes() cuts): what a solve for r gives, from a solve for at least as many.
 // How many of the ascending `frequencies_hz` (at least r.count of them) the request keeps.
 DofIndex leadingCount(const Vector& frequencies_hz, const FixedInterfaceModes& r) {
   DofIndex keep = r.count;
@@ -144,6 +142,8 @@ DofIndex leadingCount(const Vector& frequencies_hz, const FixedInterfaceModes& r
   return keep;
 }
 
+// The leading r.count of ascending modes, cut at r.max_frequency_hz when it is set (as
+// fem::solveModes() cuts): what a solve for r gives, from a solve for at least as many.
 fem::ModalBasis leadingModes(const fem::ModalBasis& modes, const FixedInterfaceModes& r) {
   const DofIndex keep = leadingCount(modes.frequencies_hz, r);
   fem::ModalBasis out;

@@ -10,7 +10,7 @@ namespace vehicle {
 
 namespace {
 
-/// Bisection stops when the loop length matches the chain to this length [m].
+/// Bisection stops when the idler's position is bracketed to this width [m].
 constexpr double kClosureTolerance = 1e-10;
 
 Vector2 rotate(const Vector2& v, double angle) {

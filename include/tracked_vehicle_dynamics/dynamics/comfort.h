@@ -26,10 +26,11 @@
 //       A0 = (b0 + b1 + b2)^2, A1 = (b0 - b1 + b2)^2, A2 = -4 b0 b2 (M. Vicanek, "Matched
 //       second order digital filters", 2016); the larger root b0 keeps the zeros minimum-phase.
 //       A section of two finite zeros as well as two poles, all below fs/12.6 (Wk's upward step
-//       from fs = 30 Hz), has its zeros mapped exactly too, z = exp(s_z T), and its gain matched
-//       at DC: the fit cannot place zeros whose radius differs from 1 by 2 zeta omega T ~ 1e-4
-//       (at 100 kHz it weighted 8 Hz 11 dB low), while the matched z-transform of equal degrees
-//       is within 0.002 dB of this section up to fs/10 at 30 Hz, 1e-5 dB from 1 kHz.
+//       from fs ≈ 42 Hz: its poles have |p| = ω6 = 21 rad/s), has its zeros mapped exactly too,
+//       z = exp(s_z T), and its gain matched at DC: the fit cannot place zeros whose radius
+//       differs from 1 by 2 zeta omega T ~ 1e-4 (at 100 kHz it weighted 8 Hz 11 dB low), while
+//       the matched z-transform of equal degrees is within 0.002 dB of this section up to fs/10,
+//       1e-5 dB from 1 kHz.
 //       For fs from 30 Hz to 100 kHz: within 0.01 dB of |W| up to fs/10 (test_comfort.cpp checks
 //       0.1 dB) and 0.05 dB up to fs/4 (0.3 dB for 150 < fs < 250 Hz, from the omitted low-pass
 //       below); about 1.5 dB off near Nyquist, where |W| is below -30 dB for fs >= 250 Hz. The
@@ -160,7 +161,6 @@ class WeightingFilter {
   std::complex<double> response(double frequency) const;
   /// The response of the analogue sections it discretises, at frequency f [Hz].
   std::complex<double> analogResponse(double frequency) const;
-  double sampleRate() const { return sample_rate_; }
   const std::vector<AnalogSection>& sections() const { return sections_; }
 
  private:

@@ -6,8 +6,8 @@
 // In mass-normalised modal coordinates q = Phi eta (Phi^T M Phi = I, Phi^T K Phi = Omega^2):
 //   eta'' + D eta' + Omega^2 eta = Phi^T (K_u u + C_u u'),   D = Phi^T C Phi (full, not diagonal)
 // and with the state y = [Omega eta; eta'] (both halves in the units of a modal velocity, so
-// the state matrix holds omega_r, not omega_r^2: entries up to 1e4 rad/s on the tracked model
-// instead of 1e8):
+// the state matrix holds omega_r, not omega_r^2: entries up to 3.7e5 rad/s on the tracked model,
+// the ground ties, instead of 1.3e11 rad^2/s^2):
 //   y' = A y + [0; Phi^T F],   A = [0  Omega; -Omega  -D]
 // A = Q H Q^T once (H upper Hessenberg, Q orthogonal); per frequency
 //   (j omega I - H) w = Q_2^T Phi^T F(omega),   y = Q w          (Q_2: Q's lower n rows)

@@ -2,8 +2,8 @@
 //
 // A bonded model ties each contact coordinate m(i) to the road by a stiff spring k_i
 // (ground_contact.h; the bundled vehicles: 2e10 N/m). Each tie makes one mode of its own, the
-// contact mass on its spring (9-10 kHz on the bundled vehicles, far above the ride band). A
-// damping that acts on absolute velocities (modal damping, eq. 20, or the mass-proportional part
+// contact mass on its spring (about 9 to 58 kHz on the bundled vehicles, far above the ride band).
+// A damping that acts on absolute velocities (modal damping, eq. 20, or the mass-proportional part
 // of Rayleigh damping) damps these modes too, i.e. it puts a damper between every contact and an
 // inertial frame. When such a mode is integrated dynamically (the exact method, or a modal cut-off
 // above it), the road has to drive that damper at the road's own vertical speed, so the contact

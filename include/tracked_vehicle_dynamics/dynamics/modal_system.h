@@ -40,8 +40,9 @@ class ModalSystem {
   /// Solves the dense generalised eigenproblem K phi = omega^2 M phi (O(n^3)).
   /// damping_ratios: zeta_r per mode [-], ascending-frequency order; empty = derived from C.
   /// Throws InputError for inconsistent sizes, a wrong number of or negative damping ratios, or
-  /// M/K not symmetric; SolverError when M is not positive definite, K has a clearly negative
-  /// eigenvalue, or the eigensolver fails.
+  /// M/K not symmetric, or (damping derived from C) C not positive semi-definite; SolverError
+  /// when M is not positive definite, K has a clearly negative eigenvalue, or the eigensolver
+  /// fails.
   explicit ModalSystem(const SecondOrderSystem& system, const Vector& damping_ratios = Vector());
 
   /// The same decomposition with other outputs y = H q: H [n_outputs x n], one name per row

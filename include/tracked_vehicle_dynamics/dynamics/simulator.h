@@ -14,7 +14,7 @@
 //     system (discrete_modes.h), modal forces p = Phi^T (K_u u + C_u u' + f_g) and outputs
 //     H Phi eta; O(n (n_w + n_y)) per step, less where few inputs change from one sample to the
 //     next (road inputs on flat terrain): the input terms are then updated by the changed inputs'
-//     columns only, exactly (simulator.cpp). Exact for proportional damping. Damping that
+//     columns only, exactly (modal_engine.cpp). Exact for proportional damping. Damping that
 //     couples the modes (discrete dampers) is kept whole among the dynamic modes, which are then
 //     stepped together by the exact discretisation of their coupled block, O(n^2) per step
 //     (modal_engine.cpp); given modal_damping_ratios, each mode keeps its own

@@ -3,7 +3,9 @@
 //   M q'' + C q' + K q = K_u u + C_u u'          q [n], u [n_inputs] road heights [m]
 //   y = H q
 //
-// fem::System converts directly: {mass, damping, stiffness, input_stiffness, input_damping, H}.
+// Built from a fem::System's mass, damping, stiffness, input_stiffness and input_damping with an
+// output matrix H of the caller's (e.g. reduction::outputTerms), or from a dense system by
+// toSparse().
 #pragma once
 
 #include <string>

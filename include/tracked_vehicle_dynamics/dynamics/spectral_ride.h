@@ -41,7 +41,8 @@
 // be integrated up to 0.4 % wrong at ζ = h, 9 % at h/2, 25 % at h/3, with a sign that changes with
 // speed, and a band end cutting a peak costs a few % too; grid() gives such a mode (ζ < 1.5 h, or
 // ζ < 5 h with a band end within f_r (1 ± 5ζ)) points of its own (33 evenly across
-// f_r (1 ± 2ζ), then geometrically, 2 % farther each, out to f_r (1 ± 10h)), which bring the error
+// f_r (1 ± 2ζ), then geometrically, 2 % farther each, out to f_r (1 ± max(10h, 10ζ))), which bring
+// the error
 // under 5e-4 of the band's integral for any ζ > 0.
 // Cost per speed: the modal forces of a block of frequencies come from one real matrix product,
 // [Φ^T K_u | Φ^T C_u] (inputs grouped: those at one station and on one side share τ and are summed
@@ -150,9 +151,10 @@ class SpectralRide {
   SpectralRideResult evaluate(double speed) const;
   /// Each mode above 0 Hz, by ascending frequency: its natural frequency ω_r / 2π and damping
   /// ratio d_r / (2 ω_r), or with the complex modes, of each conjugate pair λ = -ζω ± jω_d,
-  /// ω_d / 2π and -Re λ / |λ|. The log grid resolves a resonance whose half-power band, 2ζ f,
-  /// spans two steps (ζ ≥ ln(10) / points_per_decade); grid() adds points around the others. An
-  /// undamped one (ζ = 0) has no finite integral at all.
+  /// ω_d / 2π and -Re λ / |λ|. The log grid (step h = ln(10) / points_per_decade) resolves a
+  /// resonance whose half-power band, 2ζ f, spans a few steps; grid() adds points around those
+  /// with ζ < 1.5 h, and around those a band end cuts. An undamped one (ζ = 0) has no finite
+  /// integral at all.
   struct ModeDamping {
     double frequency_hz = 0.0;
     double ratio = 0.0;
@@ -160,8 +162,9 @@ class SpectralRide {
   const std::vector<ModeDamping>& modeDamping() const { return mode_damping_; }
 
   /// The frequency grid [Hz] at speed v [m/s]: log-spaced over [v n_min, v n_max], with local
-  /// points around each resonance the log grid does not resolve (ζ < ln(10) / points per
-  /// decade; see the file comment), ascending.
+  /// points around each resonance the log grid does not resolve (ζ < 1.5 ln(10) /
+  /// points_per_decade, or ζ < 5 h with a band end within f_r (1 ± 5ζ); see the file comment),
+  /// ascending.
   Vector grid(double speed) const;
   /// Input groups per side after merging inputs that share a station (and side weight).
   std::vector<DofIndex> inputGroupCounts() const;

@@ -84,8 +84,8 @@ Vector roadInput(const Vector& heights, const Vector& rates);
 
 /// Input time series W [n_samples x 2 n_inputs] = [U, U'] from sampled heights
 /// U [n_samples x n_inputs] at a fixed step dt [s]. U' by central differences
-/// (u[k+1] - u[k-1]) / (2 dt), one-sided at both ends: second-order accurate for smooth
-/// profiles. Throws InputError for dt <= 0 or fewer than 2 samples.
+/// (u[k+1] - u[k-1]) / (2 dt), second-order accurate inside, one-sided (first-order) at both
+/// ends. Throws InputError for dt <= 0 or fewer than 2 samples.
 Matrix roadInputSeries(const Matrix& heights, double dt);
 
 }  // namespace dynamics

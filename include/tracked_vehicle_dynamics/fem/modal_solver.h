@@ -19,20 +19,16 @@ struct ModalRequest {
   int max_iterations = 1000;
 };
 
-enum class ModalStatus { Converged, NotConverged, NumericalIssue };
-
 /// Modes sorted by increasing frequency; shapes are mass-normalised (Phi^T M Phi = I).
 struct ModalBasis {
   Vector eigenvalues;     ///< omega^2 [rad^2/s^2]
   Vector frequencies_hz;  ///< omega / 2 pi [Hz]; rigid-body modes give ~0
   ModeShapes shapes;      ///< [n x modes]
-  ModalStatus status = ModalStatus::Converged;
-  int converged = 0;  ///< number of converged Ritz pairs
   /// Modes below the highest one returned that the solver could not find (the count of
   /// eigenvalues below it by Sylvester's law, less the modes returned below it): 0 when none is
   /// missing. Not counted (0) when K - lambda M cannot be factorised there.
   int missed = 0;
-  int iterations = 0;
+  int iterations = 0;    ///< Arnoldi iterations summed over the solves (informational)
   double seconds = 0.0;  ///< wall time of the solve [s]
 
   int count() const { return static_cast<int>(eigenvalues.size()); }

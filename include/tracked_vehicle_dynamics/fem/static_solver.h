@@ -14,8 +14,9 @@ struct StaticResult {
 };
 
 /// Solves K x = f. A singular K (a free rigid-body motion or a mechanism) throws SolverError
-/// naming the DOFs that move freely, e.g. "stiffness matrix is singular: free motion involving
-/// node 3 ux, node 4 ux (unconstrained rigid-body translation or mechanism)".
+/// naming the motion, e.g. "stiffness matrix is singular: free motion: a mechanism involving
+/// node 3 ux, node 4 ux (add supports or springs that restrain it)" or "...: free motion:
+/// rigid-body translation along x (...)".
 StaticResult solveStatic(const System& system, const Vector& load);
 
 /// Nodal displacement of a physical DOF from an active-DOF vector (through the constraint

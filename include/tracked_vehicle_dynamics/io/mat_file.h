@@ -40,7 +40,7 @@ class MatWriter {
   void writeMatrix(const std::string& name, const Matrix& value);
   /// A 1 x 1 double.
   void writeScalar(const std::string& name, double value);
-  /// A 1 x n char array (UTF-8).
+  /// A 1 x n char array of the UTF-16 code units of UTF-8 `value` ('' as 0 x 0).
   void writeString(const std::string& name, const std::string& value);
   /// An n x 1 cell array of 1 x k char arrays.
   void writeStrings(const std::string& name, const std::vector<std::string>& values);

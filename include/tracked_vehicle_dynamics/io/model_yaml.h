@@ -21,7 +21,7 @@ fem::Model loadModelYaml(const std::string& path);
 fem::Model parseModelYaml(const std::string& text, const std::string& where);
 
 /// Writes every item of `model` so that loadModelYaml(path) reproduces it exactly (numbers in
-/// shortest round-trip form; keys equal to their default are left out). The model is not
+/// shortest round-trip form; optional keys at their defaults are mostly left out). The model is not
 /// validated, so an invalid one can still be written for inspection. Written through a temporary
 /// file and a rename; throws InputError (an Error) when the file cannot be written.
 void saveModelYaml(const fem::Model& model, const std::string& path);

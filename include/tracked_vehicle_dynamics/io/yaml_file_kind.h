@@ -15,8 +15,5 @@ enum class YamlFileKind { VehicleDescription, FeModel, Terrain, NodeParameters, 
 /// the kind's own reader names what is wrong key by key.
 void expectNotOtherYamlFile(const YamlValue& root, YamlFileKind expected);
 
-/// "a vehicle description", "an FE model file", ... with where such a file is used.
-const char* yamlFileKindName(YamlFileKind kind);
-
 }  // namespace io
 }  // namespace tracked_vehicle_dynamics

@@ -75,7 +75,7 @@ struct OnlineVehicleOptions {
   /// a patch beyond it is refused. 1,000 MB hold 625 km of a one-line terrain sampled every 1 cm,
   /// 125 km of a 9-line one.
   double terrain_max_memory_mb = 1000.0;
-  /// Its range [MB]: below 1 MB (12 m of a 9-line terrain at 1 cm) a value is more likely typed
+  /// Its range [MB]: below 1 MB (125 m of a 9-line terrain at 1 cm) a value is more likely typed
   /// in GB than meant; 1e9 MB is a petabyte, and keeps the byte count far inside size_t.
   /// (The messages of the core and of the node's ~terrain_max_memory say "1 .. 1e9".)
   static constexpr double kMinTerrainMemoryMb = 1.0, kMaxTerrainMemoryMb = 1e9;

@@ -20,9 +20,9 @@
 // u' = 0 and is counted, so the state stays finite and the node can warn.
 //
 // Speed: at 1 kHz the same contacts are looked up again and again in the same patches.
-// - Contacts at the same station (the pads of one track assembly: 4 per station on the tracked
-//   vehicle) are sampled together: one search for the patch and the station cell, then each
-//   contact's lateral blend (Terrain::StationWeight, LateralCell).
+// - Contacts at the same station (the soles of the two assemblies, left and right, at one
+//   station: 12 per station on the bundled vehicles) are sampled together: one search for the patch
+//   and the station cell, then each contact's lateral blend (Terrain::StationWeight, LateralCell).
 // - Each station remembers the patch grid that answered it and the station interval over which
 //   that grid keeps answering (TerrainBuffer::gridFor), each contact its lateral cell in that
 //   grid, until the buffer changes (TerrainBuffer::revision).

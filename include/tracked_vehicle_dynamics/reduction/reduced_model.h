@@ -79,7 +79,8 @@ struct ReductionRequest {
   std::string reduction;  ///< ReducedModel::reduction
   std::string creator;
   /// Where each road input reads the road [m] (x forward), one per input; empty: its node's x.
-  /// (A vehicle's pad ground nodes read it at their pad's centre, vehicle_model.h.)
+  /// (A vehicle's pad ground nodes read it at their pad's centre by default,
+  /// ties.road_input_station; vehicle_model.h.)
   Vector input_stations;
 };
 

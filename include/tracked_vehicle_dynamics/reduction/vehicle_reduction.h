@@ -103,7 +103,9 @@ std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& vehicle,
 /// What was done and how long it took, for logs and `tvd reduce --json`.
 struct VehicleReductionReport {
   DofIndex full_dofs = 0;
-  DofIndex interface_dofs = 0;  ///< masters imposed (road inputs' nodes, hull)
+  /// The ground interface: the uz of every road-input node (the hull's six DOFs and the wheel
+  /// arms' ry, MoGeSeC's other imposed masters, are not counted here).
+  DofIndex interface_dofs = 0;
   DofIndex mogesec_dofs = 0;
   /// Each MoGeSeC pick, in pick order (built models only): its weights at the moment it was
   /// picked, and vehicle::nodePart() of its node.

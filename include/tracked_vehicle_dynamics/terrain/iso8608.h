@@ -33,8 +33,9 @@ constexpr double kIso8608ReferenceFrequency = 0.1;
 enum class LateralCorrelation {
   /// One profile across the whole width (lines at y = ±W/2).
   Uniform,
-  /// Right half (y < 0) and left half (y > 0) independent; lines at ±W/2 and ±kSideGap/2, the
-  /// height blends linearly across the centre strip |y| < kSideGap/2.
+  /// Right half (y < 0) and left half (y > 0) independent; lines at ±W/2 and ±side_gap/2
+  /// (Iso8608Options::side_gap), the height blends linearly across the centre strip
+  /// |y| < side_gap/2.
   IndependentSides,
 };
 
@@ -64,7 +65,9 @@ double iso8608Variance(char road_class, double n_low, double n_high, double wavi
 /// A random road of class road_class ('A'..'H'), stations 0, spacing, ..., length [m], lateral
 /// lines spanning width [m] centred on y = 0, deterministic for a seed. Throws InputError for an
 /// invalid class, length <= 0, width < 0, spacing <= 0 or > length, a band outside
-/// (0, 1/(2 spacing)] or empty, waviness <= 0, taper_length < 0 or > length / 2.
+/// (0, 1/(2 spacing)] or empty, waviness <= 0, taper_length < 0 or > length / 2, with
+/// IndependentSides a side_gap outside (0, width), and a length and spacing beyond 2e7 stations
+/// or 1e10 station-harmonic terms.
 Terrain makeIso8608(char road_class, double length, double width, double spacing,
                     std::uint64_t seed, const Iso8608Options& options = {});
 

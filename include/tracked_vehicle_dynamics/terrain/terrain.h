@@ -90,7 +90,6 @@ class Terrain {
   Vector profile(double y) const;
 
   const std::string& name() const { return name_; }
-  void setName(std::string name) { name_ = std::move(name); }
   const Vector& stations() const { return stations_; }
   const Vector& lateral() const { return lateral_; }
   /// [n_y x n_x] [m].

@@ -1,6 +1,6 @@
 // Terrain files. Every error throws InputError naming the file and the row (CSV) or key (YAML):
 //   "<file>: row 7, column 3: height 'nan' is not a finite number"
-//   "<file>: heights[1]: expected 3001 heights (one per station), got 3000 entries (line 9)"
+//   "<file>: heights[1]: expected 3001 heights (one per station, as heights[0]), got 3000 (line 9)"
 //
 // CSV (comma separated; blank lines and lines starting with '#' are ignored; "row" counts file
 // lines from 1):
@@ -45,11 +45,13 @@ Terrain loadTerrain(const std::string& path);
 /// directory before it, "./half_round:0.2.csv"), or the file's own error.
 Terrain loadTrack(const std::string& track, const TrackOptions& options = {});
 
-/// Writes `terrain` as CSV (17 significant digits: a save/load round trip is exact).
+/// Writes `terrain` as CSV (every value in its shortest round-trip text, io::roundTripText: a
+/// save/load round trip is exact).
 /// Written through a temporary file and a rename (io::AtomicTextFile); throws InputError when the
 /// file cannot be written, leaving no partial file.
 void saveTerrainCsv(const Terrain& terrain, const std::string& path);
-/// Writes `terrain` as YAML (17 significant digits). Throws InputError when it cannot be written.
+/// Writes `terrain` as YAML (shortest round-trip text, as the CSV). Throws InputError when it
+/// cannot be written.
 void saveTerrainYaml(const Terrain& terrain, const std::string& path);
 
 }  // namespace terrain

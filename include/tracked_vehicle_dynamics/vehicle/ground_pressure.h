@@ -56,8 +56,9 @@ struct GroundPressure {
   int lifting = 0;                  ///< assemblies with a downward (negative) reaction
 };
 
-/// Groups the static ground reactions by assembly and computes the pressures. `statics` must come
-/// from computeStaticSummary on `vehicle`; `description` is the one it was built from. Throws
+/// Groups the static ground reactions by assembly and computes the pressures. `statics` must be a
+/// summary of `vehicle` (computeStaticSummary, or computeContactStatics' summary with its
+/// vehicle); `description` is the one it was built from. Throws
 /// std::logic_error when the reactions do not match the model's road inputs.
 GroundPressure groundPressure(const VehicleModel& vehicle, const VehicleDescription& description,
                               const StaticSummary& statics);

@@ -81,7 +81,9 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
 /// Finds pad spring constants that give the description's k_x, k_y, k_z and k_ry on the
 /// assembly model (fixed-point iteration on the measured stiffnesses, converged to 1e-9).
 /// Throws InputError "track_assembly.pad_column_offset" when the columns are too close together
-/// for k_ry, SolverError if the iteration does not converge.
+/// for k_ry, and InputError naming the stiffness key farthest off when the iteration does not
+/// converge in 100 steps; SolverError when the assembly's stiffness matrix is not positive
+/// definite.
 PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& description);
 
 /// One assembly alone, soles held in translation (their rotations follow the pad core), as in the

@@ -211,11 +211,14 @@ struct VehicleDescription {
 /// line is known (VehicleDescription::key_lines); otherwise unchanged.
 std::string withKeyLine(const VehicleDescription& description, const std::string& message);
 
-/// Reads a description file. Every key is required; each value is a map
-/// {value: <number or list>, unit: <string>, source: <string>} and the unit must be the one the
-/// key expects (e.g. "m", not "mm"). Throws InputError "<file>: <key path>: <what> (line N)" for a
-/// missing or unknown key, a wrong unit, a non-finite or out-of-range value, and, through
-/// validateDescription(), for inconsistent values.
+/// Reads a description file. Every key is required except suspension.guide_stiffness and
+/// track_assembly.static_tension; each value is a map
+/// {value: <number or list>, unit: <string>, source: <string>} (damping.model and
+/// ties.road_input_station, names: {value, source}) and the unit must be the one the key expects
+/// (e.g. "m", not "mm"). Another of the package's files (a model, a terrain) is named as such.
+/// Throws InputError "<file>: <key path>: <what> (line N)" for a missing or unknown key, a wrong
+/// unit, a non-finite or out-of-range value, and, through validateDescription(), for inconsistent
+/// values.
 VehicleDescription loadVehicleDescription(const std::string& path);
 
 /// Same from YAML text; `file` names the source in messages.
@@ -231,8 +234,12 @@ double wheelCentreZ(const VehicleDescription& d);
 
 /// What a valid description may still get physically wrong, one sentence each, starting with the
 /// key (the tools print them as warnings; nothing is changed): no damping at all (resonances
-/// without bound, vibrations that never decay), and a hull centre of gravity outside the
-/// wheelbase (end wheels loaded negatively: the linear model's ground pulls the vehicle down).
+/// without bound, vibrations that never decay); a hull centre of gravity far enough off the
+/// wheelbase centre to unload the far suspensions (sum x_i^2 / (n x_N)) or lift the far wheels
+/// (the linear model's ground then pulls the vehicle down); a CoG below the arm pivots; a hull
+/// mass or inertia that reads as another unit (a mass below the road wheels', a radius of
+/// gyration beyond the hull's diagonal or below 5 % of its smallest dimension); a static
+/// tension above half the weight.
 std::vector<std::string> descriptionWarnings(const VehicleDescription& d);
 
 /// Checks ranges and consistency (chain length = pitch x count, ground-contact assemblies not
