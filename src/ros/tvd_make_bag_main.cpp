@@ -18,7 +18,9 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
   namespace rl = tracked_vehicle_dynamics::ros_layer;
   rl::TrackBagOptions options;
   std::string out;
@@ -155,4 +157,17 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // The commands' set-up (CLI11 refuses a duplicate or malformed option by throwing) runs before
+  // the parse's own handlers: an exception there is reported, not an abort without a word.
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << "tvd_make_bag: internal error: " << e.what() << "\n";
+    return 1;
+  }
 }

@@ -46,7 +46,11 @@ std::string leadingName(const std::string& message) {
 std::string nearestOption(const CLI::App& command, const std::string& name) {
   std::string best;
   std::size_t best_distance = 3;  // within two edits
-  const std::string typed = name.substr(name.find_first_not_of('-'));
+  // "---" or the "-" of "-=3" is dashes only: nothing typed to compare (substr(npos) threw).
+  const std::size_t start = name.find_first_not_of('-');
+  if (start == std::string::npos)
+    return {};
+  const std::string typed = name.substr(start);
   for (const CLI::Option* option : command.get_options()) {
     for (const std::string& lname : option->get_lnames()) {
       const std::size_t d = lname.rfind(typed, 0) == 0 ? 1 : editDistance(typed, lname);
@@ -59,10 +63,8 @@ std::string nearestOption(const CLI::App& command, const std::string& name) {
   return best;
 }
 
-}  // namespace
-
-std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
-                               const std::vector<std::string>& args, const std::string& program) {
+std::string describe(const CLI::App& app, const CLI::ParseError& error,
+                     const std::vector<std::string>& args, const std::string& program) {
   std::string message = error.what();
   const std::vector<CLI::App*> parsed = app.get_subcommands();
   const bool has_subcommands = !app.get_subcommands({}).empty();
@@ -144,6 +146,19 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
            ": every value follows its option (a value with spaces is quoted)";
   }
   return prefix + message;
+}
+
+}  // namespace
+
+std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
+                               const std::vector<std::string>& args, const std::string& program) {
+  // Called from the programs' catch handlers, where an exception would end in std::terminate:
+  // the plain CLI11 message rather than an abort, whatever the rewording trips over.
+  try {
+    return describe(app, error, args, program);
+  } catch (const std::exception&) {
+    return error.what();
+  }
 }
 
 }  // namespace tools

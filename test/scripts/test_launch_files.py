@@ -422,6 +422,8 @@ class LaunchFilesTest(unittest.TestCase):
                                 "tvd_make_bag: error: --speed-message: twist not in "
                                 "{stamped,float64}"),
                                (["--out"], "tvd_make_bag: error: --out needs a value after it"),
+                               (["---"], "tvd_make_bag: error: unknown option --- ("),
+                               (["-=1"], "tvd_make_bag: error: unknown option - ("),
                                (["--speed-kmh", "30"], "tvd_make_bag: error: --out is required")]:
             result = make_bag(*args)
             self.assertEqual(result.returncode, 2, result.stdout + result.stderr)

@@ -3422,6 +3422,9 @@ class TvdCliTest(unittest.TestCase):
                  "tvd: error: modes: --count: Value 0 not in range 1 to 500"),
                 (["--frob"], "tvd: error: unknown option --frob: a subcommand is required (one "
                              "of: modes, statics,"),
+                # Dashes only: nothing to compare with the options (it aborted the program).
+                (["modes", "---"], "tvd: error: modes: unknown option --- (tvd modes --help"),
+                (["modes", "-=3"], "tvd: error: modes: unknown option - (tvd modes --help"),
                 (["simulate", "--vehicle", VEHICLE, "--track", "long_hill", "--speed-kmh", "5",
                   "--speed-kmh", "6"],
                  "tvd: error: simulate: --speed-kmh is given 2 times: give it once"),
