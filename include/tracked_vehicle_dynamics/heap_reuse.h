@@ -2,15 +2,16 @@
 //
 // glibc serves an allocation above its mmap threshold (128 KiB, raised on its own up to 32 MiB)
 // with a fresh anonymous mapping and unmaps it when it is freed. The dense matrices of the tracked
-// vehicle's Craig-Bampton reduction are larger than that (T_CMS: 14,372 x 431 doubles = 50 MB; the
-// constraint modes and K_sm 43 MB each), so each is mapped anew and every one of its 4 KiB pages
+// vehicle's Craig-Bampton reduction are larger than that (T_m: 14,372 x 389 doubles = 45 MB;
+// T_CMS, when a caller forms it, 50 MB), so each is mapped anew and every one of its 4 KiB pages
 // faults on first touch: some 12,000 faults per matrix. On a virtual machine a fault costs
 // microseconds; on this project's 2-core VM `tvd reduce --variant tracked` spent 0.87 s of its
 // 2.9 s in the kernel. HeapReuse raises the mmap and trim thresholds for its lifetime, so a freed
 // matrix stays in the heap and the next one reuses pages already mapped; and it grows the heap by
 // 512 MB of address space at once with transparent huge pages asked for (madvise), so the pages
 // the reduction does touch fault 2 MiB at a time: 1,000 faults instead of 92,000, 0.73 s instead of
-// 2.8 s wall, peak memory 166 MB instead of 247 MB (with the blocked solves of craig_bampton.cpp).
+// 2.8 s wall, peak memory 166 MB instead of 247 MB (with the blocked solves of craig_bampton.cpp;
+// 119 MB since the constraint modes are solved into T_m).
 // Its destructor returns the free memory to the system (malloc_trim) and leaves the thresholds at
 // the ceiling of glibc's dynamic rule (32 MiB mmap, 64 MiB trim), which no mallopt() can switch
 // back on: for a long-running process (the ROS node) that needs the large blocks only while it

@@ -52,23 +52,26 @@ class ShiftInvertOp {
   }
   void perform_op(const double* x, double* y) const {
     chol_.solveInPlace(x, y);
-    if (deflation_.cols() == 0)
+    if (!deflation_)
       return;
     // y <- P y with the M-orthogonal projector P = I - Phi Phi^T M onto the complement of the
     // modes already found: they get nu = 0 and the Lanczos run finds the next ones, including
     // further copies of a repeated eigenvalue (rigid-body modes) that one Krylov space misses.
     Eigen::Map<Vector> out(y, rows());
     coeffs_.noalias() = mass_deflation_.transpose() * out;
-    out.noalias() -= deflation_ * coeffs_;
+    out.noalias() -= *deflation_ * coeffs_;
   }
   /// Restricts the operator to the M-orthogonal complement of `shapes` (mass-normalised).
+  /// `shapes` must outlive the deflation (the caller's basis; deflate(Matrix()) ends it).
   void deflate(const Matrix& shapes) {
     if (shapes.cols() == 0) {
-      deflation_.resize(0, 0);
+      deflation_ = nullptr;
+      mass_deflation_.resize(0, 0);  // n x k: not kept beyond the deflated runs
       return;
     }
-    deflation_ = shapes;
-    mass_deflation_ = m_ * shapes;
+    deflation_ = &shapes;
+    mass_deflation_.resize(shapes.rows(), shapes.cols());
+    mass_deflation_.noalias() = m_ * shapes;
     coeffs_.resize(shapes.cols());
   }
 
@@ -78,7 +81,7 @@ class ShiftInvertOp {
   SparseCholesky chol_;
   double sigma_ = 0.0;
   bool factorised_ = false;
-  Matrix deflation_;
+  const Matrix* deflation_ = nullptr;
   Matrix mass_deflation_;
   mutable Vector coeffs_;
 };

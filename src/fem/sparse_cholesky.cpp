@@ -122,7 +122,9 @@ Matrix SparseCholesky::solve(const Matrix& rhs) const {
   return out;
 }
 
-Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
+void SparseCholesky::solve(
+    const SparseMatrix& rhs,
+    const std::function<void(DofIndex first, const Eigen::Ref<const Matrix>& x)>& sink) const {
   if (!impl_->factorised)
     throw SolverError("sparse Cholesky: solve before a successful factorisation");
   if (rhs.rows() != rows_)
@@ -141,7 +143,6 @@ Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
     }
   } block{nullptr, &impl_->common}, x{nullptr, &impl_->common}, y{nullptr, &impl_->common},
       e{nullptr, &impl_->common};  // y, e: CHOLMOD's workspaces, apart from solveInPlace's
-  Matrix out(rows_, rhs.cols());
   for (DofIndex first = 0; first < rhs.cols(); first += kBlock) {
     const DofIndex width = std::min<DofIndex>(kBlock, rhs.cols() - first);
     if (!block.d || static_cast<DofIndex>(block.d->ncol) != width) {
@@ -160,9 +161,15 @@ Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
                         &impl_->common) ||
         !x.d)
       throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
-    out.middleCols(first, width) =
-        Eigen::Map<const Matrix>(static_cast<double*>(x.d->x), rows_, width);
+    sink(first, Eigen::Map<const Matrix>(static_cast<double*>(x.d->x), rows_, width));
   }
+}
+
+Matrix SparseCholesky::solve(const SparseMatrix& rhs) const {
+  Matrix out(rows_, rhs.cols());
+  solve(rhs, [&](DofIndex first, const Eigen::Ref<const Matrix>& x) {
+    out.middleCols(first, x.cols()) = x;
+  });
   return out;
 }
 

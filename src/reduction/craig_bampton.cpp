@@ -234,7 +234,11 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
   seconds.partition = since(stage);
 
   // Constraint modes (eq. 4): one factorisation of K_ss, one solve for all m columns.
-  Matrix phi_c(s, m);
+  // T_m = [I; Phi_C] in the original DOF order: the constraint modes are written into its slave
+  // rows block by block as they are solved, so no separate s x m Phi_C exists.
+  t_m = Matrix::Zero(n, m);
+  for (DofIndex i = 0; i < m; ++i)
+    t_m(masters[static_cast<std::size_t>(i)], i) = 1.0;
   if (s > 0 && m > 0) {
     stage = Clock::now();
     fem::SparseCholesky cholesky;
@@ -251,10 +255,14 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
                         "motion or a mechanism of the slave DOFs free");
     seconds.factorisation = since(stage);
     stage = Clock::now();
-    // Solved from the sparse K_sm in blocks, negated in place: no dense K_sm and no second
-    // s x m copy (43 MB each on the tracked vehicle).
-    phi_c = cholesky.solve(k_sm_sparse);
-    phi_c *= -1.0;
+    // Solved from the sparse K_sm in blocks, each block negated into T_m's slave rows: no dense
+    // K_sm and no s x m Phi_C beside T_m (43 MB each on the tracked vehicle; the copy once kept
+    // set the reduction's peak memory).
+    cholesky.solve(k_sm_sparse, [&](DofIndex first, const Eigen::Ref<const Matrix>& x) {
+      for (DofIndex c = 0; c < x.cols(); ++c)
+        for (DofIndex j = 0; j < s; ++j)
+          t_m(slaves[static_cast<std::size_t>(j)], first + c) = -x(j, c);
+    });
     seconds.constraint_modes = since(stage);
   }
 
@@ -265,16 +273,13 @@ CraigBamptonReducer::State::State(const Inputs& matrices, std::vector<DofIndex> 
   stage = Clock::now();
   stiffness_mm = Matrix::Zero(m, m);
   if (m > 0) {
+    // K_sm^T Phi_C from T_m's slave rows: K_sm scattered to the slave rows of T_m (same terms in
+    // the same order as with a separate Phi_C).
+    const SparseMatrix k_sm_rows = p_s * k_sm_sparse;  // n x m
     const Matrix schur =
-        Matrix(SparseMatrix(p_m.transpose() * in.k * p_m)) + k_sm_sparse.transpose() * phi_c;
+        Matrix(SparseMatrix(p_m.transpose() * in.k * p_m)) + k_sm_rows.transpose() * t_m;
     stiffness_mm = 0.5 * (schur + schur.transpose());
   }
-  t_m = Matrix::Zero(n, m);
-  for (DofIndex i = 0; i < m; ++i)
-    t_m(masters[static_cast<std::size_t>(i)], i) = 1.0;
-  for (DofIndex j = 0; j < s; ++j)
-    t_m.row(slaves[static_cast<std::size_t>(j)]) = phi_c.row(j);
-  phi_c.resize(0, 0);  // its rows are in t_m
   mass_mm = congruence(in.m, t_m);
   has_dampers = in.c.size() != 0;
   if (has_dampers) {

@@ -3,6 +3,7 @@
 // and check its status (STYLE.md #9).
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "tracked_vehicle_dynamics/types.h"
@@ -37,6 +38,11 @@ class SparseCholesky {
   /// into the result: neither a dense copy of b nor a second copy of x is made (b and x of the
   /// tracked vehicle's constraint modes are 43 MB each).
   Matrix solve(const SparseMatrix& b) const;
+  /// The same solve, handing each block of solution columns [first, first + x.cols()) to `sink`
+  /// instead of gathering them: the caller stores them where it wants them (no n x k result).
+  void solve(
+      const SparseMatrix& b,
+      const std::function<void(DofIndex first, const Eigen::Ref<const Matrix>& x)>& sink) const;
   /// y = A^-1 x on raw buffers of length rows() (the Lanczos hot path).
   void solveInPlace(const double* x, double* y) const;
   DofIndex rows() const { return rows_; }
