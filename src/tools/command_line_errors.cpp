@@ -161,5 +161,14 @@ std::string describeParseError(const CLI::App& app, const CLI::ParseError& error
   }
 }
 
+int runReportingErrors(const char* program, int (*run)(int, char**), int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::cerr << program << ": internal error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

@@ -21,5 +21,11 @@ namespace tools {
 std::string describeParseError(const CLI::App& app, const CLI::ParseError& error,
                                const std::vector<std::string>& args, const std::string& program);
 
+/// Runs a program's `run(argc, argv)` and returns its status; an exception that escapes it (the
+/// commands' set-up: CLI11 refuses a duplicate or malformed option by throwing, before the
+/// parse's own handlers) is reported as "<program>: internal error: ..." with status 1, not an
+/// abort without a word.
+int runReportingErrors(const char* program, int (*run)(int, char**), int argc, char** argv);
+
 }  // namespace tools
 }  // namespace tracked_vehicle_dynamics

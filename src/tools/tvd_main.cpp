@@ -89,12 +89,5 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // The commands' set-up (CLI11 refuses a duplicate or malformed option by throwing) runs before
-  // the parse's own handlers: an exception there is reported, not an abort without a word.
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "tvd: internal error: " << e.what() << "\n";
-    return 1;
-  }
+  return tracked_vehicle_dynamics::tools::runReportingErrors("tvd", run, argc, argv);
 }

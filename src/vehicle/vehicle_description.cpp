@@ -585,6 +585,14 @@ void collectKeyLines(const io::YamlValue& node, const std::string& prefix,
 /// sections (its first key would be "unknown", as if misspelt).
 void expectDescription(const io::YamlValue& root) {
   io::expectNotOtherYamlFile(root, io::YamlFileKind::VehicleDescription);
+  std::string given;
+  if (root.isMap())
+    for (const auto& [key, value] : root.entries()) {
+      for (const char* s : kSections)
+        if (key == s)
+          return;
+      given += (given.empty() ? "" : ", ") + key;
+    }
   std::string sections;
   for (const char* s : kSections)
     sections += (sections.empty() ? "" : ", ") + std::string(s);
@@ -593,13 +601,6 @@ void expectDescription(const io::YamlValue& root) {
   if (!root.isMap())
     throw InputError(root.file() + ": not a vehicle description: its top level is not a map of " +
                      "sections; " + expected);
-  std::string given;
-  for (const auto& [key, value] : root.entries()) {
-    for (const char* s : kSections)
-      if (key == s)
-        return;
-    given += (given.empty() ? "" : ", ") + key;
-  }
   throw InputError(root.file() + ": not a vehicle description: none of its top-level keys (" +
                    (given.empty() ? std::string("none") : given) + ") is a section; " + expected);
 }

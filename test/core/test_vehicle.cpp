@@ -195,8 +195,6 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
   }
 }
 
-// The model builder's geometric checks (chain path, end wheels, rollers) run after loading; a
-// description read from a file still gets the key's line in their messages.
 // The package's other files given where a description belongs are named for what they are (the
 // first "unknown key" of such a file sent users hunting for a typo), from the shipped files.
 TEST(VehicleDescription, OtherFilesAreNamedForWhatTheyAre) {
@@ -237,6 +235,8 @@ TEST(VehicleDescription, OtherFilesAreNamedForWhatTheyAre) {
       << loadError(misspelt);
 }
 
+// The model builder's geometric checks (chain path, end wheels, rollers) run after loading; a
+// description read from a file still gets the key's line in their messages.
 TEST(VehicleDescription, BuilderErrorsGiveTheKeysLine) {
   const std::string text = readFile(kDescriptionFile);
   const std::string from = "  centre_z: {value: 0.78, unit: m,";
