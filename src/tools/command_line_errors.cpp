@@ -137,12 +137,19 @@ std::string describe(const CLI::App& app, const CLI::ParseError& error,
         return prefix + name + ": '" + value + "' is not " + wanted(option);
     }
   } else if (dynamic_cast<const CLI::ExtrasError*>(&error)) {
-    // Only stray values are left (unknown options were named above).
-    const std::string marker = "not expected: ";
-    const std::size_t at = message.find(marker);
-    return prefix + "unexpected argument" +
-           (at == std::string::npos ? std::string()
-                                    : " '" + message.substr(at + marker.size()) + "'") +
+    // Only stray values are left (unknown options were named above). CLI11's message lists them
+    // in reverse order, joined by spaces; remaining() has them as given, each whole.
+    const std::vector<std::string> strays = command.remaining();
+    std::string listed;
+    for (const std::string& stray : strays)
+      listed += (listed.empty() ? " '" : ", '") + stray + "'";
+    if (listed.empty()) {
+      const std::string marker = "not expected: ";
+      const std::size_t at = message.find(marker);
+      if (at != std::string::npos)
+        listed = " '" + message.substr(at + marker.size()) + "'";
+    }
+    return prefix + (strays.size() > 1 ? "unexpected arguments" : "unexpected argument") + listed +
            ": every value follows its option (a value with spaces is quoted)";
   }
   return prefix + message;

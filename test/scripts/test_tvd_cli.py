@@ -3429,7 +3429,11 @@ class TvdCliTest(unittest.TestCase):
                   "--speed-kmh", "6"],
                  "tvd: error: simulate: --speed-kmh is given 2 times: give it once"),
                 (["simulate", "--vehicle", VEHICLE, "--track", "long_hill", "stray"],
-                 "tvd: error: simulate: unexpected argument 'stray': every value follows its")):
+                 "tvd: error: simulate: unexpected argument 'stray': every value follows its"),
+                # Several, named as given and each whole (CLI11 lists them reversed, joined).
+                (["simulate", "--vehicle", VEHICLE, "--track", "long_hill", "[--model", "full]",
+                  "two words"],
+                 "tvd: error: simulate: unexpected arguments '[--model', 'full]', 'two words': ")):
             r = self.tvd(*args, status=INPUT_ERROR_STATUS)
             self.assertTrue(r.stderr.startswith(expected), (args, r.stderr))
             self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
