@@ -438,6 +438,13 @@ TEST(Comfort, LinearRunningWindowIsTheMeanOfTheLastSquares) {
   window.reset();
   EXPECT_DOUBLE_EQ(window.value(), 0.0);
   EXPECT_DOUBLE_EQ(window.add(37.0), 1.0);
+  // A shock (10^8 m/s^2 squared) then small samples: once it has left the window the mean is
+  // theirs, exactly, however far the running sum's round-off strayed while it was in it.
+  window.reset();
+  window.add(1e16);
+  for (int k = 0; k < 3 * 37; ++k)
+    window.add(1e-2);
+  EXPECT_NEAR(window.value(), 1e-2, 1e-15);
   EXPECT_EQ(LinearRunningMeanSquare(1000.0, 1e-9).window(), 1u);
   EXPECT_THROW(LinearRunningMeanSquare(1000.0, 1e5), InputError);  // 1e8 samples
   // And a meter asked for such a window says so before it takes a sample.

@@ -86,6 +86,14 @@ TEST(GeometricStiffness, BeyondTheEulerLoadTheModesAndTheStaticsSayUnstable) {
     return tvd::fem::solveModesDense(Matrix(s.stiffness), Matrix(s.mass));
   };
   EXPECT_EQ(tvd::fem::unstableModesWarning(dense(simplySupported(20, -0.5 * euler))), "");
+  // A free body's rigid-body modes come out as round-off either side of 0: not unstable, to
+  // -1e-8 of the largest |omega^2| (here -4e-5); beyond that, one is.
+  tvd::fem::ModalBasis free_body;
+  free_body.eigenvalues = (Vector(3) << -1e-6, 2e-7, 4e3).finished();
+  EXPECT_EQ(tvd::fem::unstableModesWarning(free_body), "");
+  free_body.eigenvalues(0) = -1e-4;
+  EXPECT_NE(tvd::fem::unstableModesWarning(free_body).find("1 mode has omega^2 < 0"),
+            std::string::npos);
   // At twice the weak axis's Euler load omega_1^2 = -omega_0^2, one mode (the strong axis, 4
   // times stiffer, and the weak axis's second mode, 16 - 8 > 0, hold).
   const tvd::fem::ModalBasis buckled = dense(simplySupported(20, -2.0 * euler));
@@ -126,6 +134,27 @@ TEST(GeometricStiffness, BeamMatrixIsSymmetricAndFreeOfRigidMotionButTheTurn) {
     turn.segment<3>(9) = a;
     EXPECT_NEAR(turn.dot(k * turn), n * l * a.cross(e).squaredNorm(), 1e-9 * n * l);
   }
+}
+
+// Twisted by phi over its length, a bar's fibre at radius r tilts by r phi / L; the axial stress
+// N / A acting through that tilt stores 2 V = (N / A) I_p phi^2 / L, I_p = I_y + I_z (the term
+// that lowers a column's torsional buckling load): in local axes, and about the member's own
+// axis in global ones.
+TEST(GeometricStiffness, AUniformTwistStoresTheAxialStressThroughTheFibresTilt) {
+  const tvd::fem::Section bar{"bar", kArea, kIy, kIz, 2e-6, 0.0, 0.0};
+  const double n = 7e3, l = 0.8, phi = 0.3;
+  const double expected = n / kArea * (kIy + kIz) * phi * phi / l;
+  Vector12 twist = Vector12::Zero();
+  twist(9) = phi;  // rx2: node 2 turned about the member's axis, node 1 held
+  const tvd::Matrix12 local = tvd::fem::beamLocalGeometricStiffness(bar, l, n);
+  EXPECT_NEAR(twist.dot(local * twist), expected, 1e-12 * expected);
+  const Vector3 x1(0.1, -0.2, 0.3), x2(0.5, 0.4, 0.1);
+  const Vector3 e = (x2 - x1).normalized();
+  Vector12 turned = Vector12::Zero();
+  turned.segment<3>(9) = phi * e;
+  const tvd::Matrix12 global = tvd::fem::beamGeometricStiffness(x1, x2, Vector3::UnitZ(), bar, n);
+  const double along = n / kArea * (kIy + kIz) * phi * phi / (x2 - x1).norm();
+  EXPECT_NEAR(turned.dot(global * turned), along, 1e-9 * along);
 }
 
 /// N beads of mass m, spacing h, on ties of tension T between fixed ends: the beaded string,
@@ -213,6 +242,15 @@ TEST(GeometricStiffness, AnUnbalancedBodyPreloadOrAPointlessTieIsRefusedByName) 
   unbalanced.body_preloads.front().forces.pop_back();
   unbalanced.body_preloads.front().points.pop_back();
   tvd::expectInputError([&] { tvd::fem::assemble(unbalanced); },
+                        {"body_preloads[0]", "not self-equilibrated"});
+  // Forces that sum to nothing but turn the body (a couple) are no self-equilibrated pre-load.
+  Model couple = tensionedSquare(3e3, 1.5, true);
+  auto& p = couple.body_preloads.front();
+  p.points.push_back(p.points[0]);
+  p.forces.push_back(Vector3(0.0, 0.0, 1e3));
+  p.points.push_back(p.points[1]);  // 1.5 m along x from the first: a couple about y
+  p.forces.push_back(Vector3(0.0, 0.0, -1e3));
+  tvd::expectInputError([&] { tvd::fem::assemble(couple); },
                         {"body_preloads[0]", "not self-equilibrated"});
   Model short_tie = tensionedSquare(3e3, 1.5, false);
   short_tie.ties.push_back({1, 1, 10.0, "loop"});

@@ -935,6 +935,17 @@ TEST(RoadInputSampler, RateAcrossPatchesIsTheCellAheadNeverAStep) {
   behind.addPatch(0.0, 0.5, lines, Matrix::Zero(2, 21));
   sampler.sample(behind, 10.0, 10.0, 0.0, &w);
   EXPECT_EQ(w(1), 0.0);
+  // A newer patch ending inside an older one where that one rises: the older grid's cell ahead,
+  // times the speed (0.1 m/m at 10 m/s).
+  Matrix rise(2, 21);  // 0 .. 10 m: flat to 6 m, then 0.1 m/m
+  for (int j = 0; j <= 20; ++j)
+    rise.col(j).setConstant(j <= 12 ? 0.0 : 0.05 * (j - 12));
+  terrain::TerrainBuffer rising;
+  rising.addPatch(0.0, 0.5, lines, rise);
+  rising.addPatch(3.0, 0.5, lines, Matrix::Zero(2, 7));  // newer: 3 .. 6 m, flat
+  RoadInputSampler onto_rise(Vector::Zero(1), Vector::Zero(1));
+  onto_rise.sample(rising, 6.0, 10.0, 0.0, &w);
+  EXPECT_NEAR(w(1), 10.0 * 0.1, 1e-9);
 
   // The end of coverage: 0, 0, 0.1 on stations 0, 1, 2.
   Matrix end(2, 3);

@@ -158,10 +158,12 @@ TEST(SpectralRide, BaseExcitedOscillatorMatchesClosedForm) {
 // resonance it does not resolve (zeta < 1.5 h) or that a band end cuts: zeta 2 % (resolved),
 // 0.69 % (1.2 h), 0.29 % (h/2), 0.2 % and 0.01 %, at speeds whose band holds the 1.3 Hz peak
 // whole (2, 8, 20 m/s) and at speeds whose top end cuts it (the end 3 zeta below the peak, on it,
-// 1.5 zeta above); within 1e-5 where the log grid alone resolves the peak whole, else 5e-4.
+// 1.5 zeta above; or as far about the peak, the bottom end); within 1e-5 where the log grid
+// alone resolves the peak whole, else 5e-4.
 struct GridCase {
   double zeta;
   bool cut;
+  bool bottom = false;  // the band's bottom end cuts the peak, not its top
 };
 class SpectralRideGrid : public ::testing::TestWithParam<GridCase> {};
 INSTANTIATE_TEST_SUITE_P(Damping, SpectralRideGrid,
@@ -169,7 +171,8 @@ INSTANTIATE_TEST_SUITE_P(Damping, SpectralRideGrid,
                                            GridCase{0.0069, false}, GridCase{0.0069, true},
                                            GridCase{0.00288, false}, GridCase{0.002, false},
                                            GridCase{0.002, true}, GridCase{1e-4, false},
-                                           GridCase{1e-4, true}));
+                                           GridCase{1e-4, true}, GridCase{0.02, true, true},
+                                           GridCase{0.002, true, true}));
 
 TEST_P(SpectralRideGrid, DefaultGridResolvesALightlyDampedResonance) {
   const double zeta = GetParam().zeta;
@@ -181,11 +184,13 @@ TEST_P(SpectralRideGrid, DefaultGridResolvesALightlyDampedResonance) {
   const RoadSpectrum road;  // class C, ISO band
   const SpectralRide ride = rideOf(s, {0}, road);
   const std::vector<AnalogSection> power = absorbedPowerVerticalSections();
-  const double n_max = road.max_frequency;
+  const double n_max = road.max_frequency, n_min = road.min_frequency;
   const std::vector<double> speeds =
-      cut ? std::vector<double>{f_n * (1.0 - 3.0 * zeta) / n_max, f_n / n_max,
-                                f_n * (1.0 + 1.5 * zeta) / n_max}
-          : std::vector<double>{2.0, 8.0, 20.0};
+      !cut                ? std::vector<double>{2.0, 8.0, 20.0}
+      : GetParam().bottom ? std::vector<double>{f_n * (1.0 + 3.0 * zeta) / n_min, f_n / n_min,
+                                                f_n * (1.0 - 1.5 * zeta) / n_min}
+                          : std::vector<double>{f_n * (1.0 - 3.0 * zeta) / n_max, f_n / n_max,
+                                                f_n * (1.0 + 1.5 * zeta) / n_max};
   for (double speed : speeds) {
     const SpectralRideResult r = ride.evaluate(speed);
     const auto s_a = oneDofPsd(m, c, k, road, speed);
@@ -300,6 +305,18 @@ TEST(SpectralRide, ModeDampingRatiosOfRealAndComplexModes) {
   EXPECT_GT(modes[1].ratio, 1e-3);
   EXPECT_NEAR(modes[2].frequency_hz, 4.0, 1e-9);  // untouched by the damper
   EXPECT_LT(modes[2].ratio, 1e-12);
+  // The coupled pair are roots of the characteristic equation det(λ² M + λ C + K) = 0 at
+  // λ = -ζ ω_d / sqrt(1 - ζ²) + j ω_d, ω_d = 2π f: the header's ω_d / 2π and -Re λ / |λ| (not
+  // |λ| / 2π, nor -Re λ / Im λ, each off by a factor sqrt(1 - ζ²)).
+  for (std::size_t r = 0; r < 2; ++r) {
+    const double zeta = modes[r].ratio, omega_d = kTwoPi * modes[r].frequency_hz;
+    const Complex lambda(-zeta * omega_d / std::sqrt(1.0 - zeta * zeta), omega_d);
+    const ComplexMatrix d = (lambda * lambda * s.mass.cast<Complex>() +
+                             lambda * s.damping.cast<Complex>() + s.stiffness.cast<Complex>())
+                                .topLeftCorner(2, 2);
+    EXPECT_LT(std::abs(d.determinant()) / std::norm(lambda * lambda * m), 1e-9)
+        << "mode " << r << ", zeta " << zeta;
+  }
 }
 
 // The PSD is Σ_sides |H_v,side|^2 S_h with H_v the travelled FRF (frfDirect), on a random

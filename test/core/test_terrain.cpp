@@ -1204,6 +1204,14 @@ TEST(TerrainBuffer, CoverageAndLookupAgreeOnPatchesEndingOrStartingTogether) {
     expectHeightsUpToCoverage(buffer, 12.2);
   }
   {
+    SCOPED_TRACE("equal ends, the coarse patch starting later");
+    TerrainBuffer buffer;
+    addPlane(&buffer, 0.0, 0.125, 81);  // 0 .. 10, fine (binary fractions: the ends are equal)
+    addPlane(&buffer, 9.0, 1.0, 2);     // 9 .. 10, coarse and newer, ending with it
+    addPlane(&buffer, 11.2, 0.1, 11);   // after a 1.2 m gap: within 1.5 of the coarse spacing
+    expectHeightsUpToCoverage(buffer, 12.2);
+  }
+  {
     SCOPED_TRACE("equal starts");
     TerrainBuffer buffer;
     addPlane(&buffer, 0.0, 0.1, 11);  // 0 .. 1.0

@@ -13,6 +13,7 @@
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
+#include "tracked_vehicle_dynamics/vehicle/track_tension.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_description.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
@@ -114,6 +115,13 @@ TEST(TrackTension, ATensionBeyondHalfTheWeightIsQuestioned) {
   };
   EXPECT_FALSE(questioned(60e3));  // the paper vehicle weighs 546 kN
   EXPECT_TRUE(questioned(20e6));   // 20 kN typed in mN
+  // The limit itself: half the weight of every mass the tracked model carries (hull, wheels,
+  // both chains, sprockets and idlers).
+  const veh::VehicleModel vm =
+      veh::buildVehicleModel(veh::VehicleDescription{}, veh::Variant::Tracked);
+  const double weight = tvd::kStandardGravity * vm.model.totalMass();
+  EXPECT_FALSE(questioned(0.499 * weight)) << weight;
+  EXPECT_TRUE(questioned(0.501 * weight)) << weight;
 }
 
 TEST(TrackTension, TheUntrackedVehicleHasNoLoopToTension) {
@@ -151,6 +159,17 @@ TEST(TrackTension, TheKeyIsOptionalCheckedAndHashedOnlyWhenGiven) {
   EXPECT_EQ(veh::descriptionHash(veh::parseVehicleDescription(paperVehicleText(), "paper.yaml")),
             veh::descriptionHash(veh::VehicleDescription{}));
   EXPECT_NE(veh::descriptionHash(given), veh::descriptionHash(veh::VehicleDescription{}));
+  // Given as 0 it is read, hashed (it was given) and said to leave the chain a free-length loop;
+  // the model is the untensioned one.
+  const veh::VehicleDescription slack = veh::parseVehicleDescription(
+      withTrackLine("static_tension: {value: 0, unit: N, source: \"slack chain\"}"), "slack.yaml");
+  ASSERT_TRUE(slack.track_assembly.static_tension.has_value());
+  EXPECT_EQ(*slack.track_assembly.static_tension, 0.0);
+  EXPECT_NE(veh::descriptionHash(slack), veh::descriptionHash(veh::VehicleDescription{}));
+  EXPECT_EQ(veh::trackTensionText(slack, veh::Variant::Tracked),
+            "track tension 0 N: the chain is a free-length beam loop");
+  EXPECT_EQ(Matrix(assembled(slack, veh::Variant::Tracked).stiffness),
+            Matrix(assembled(veh::VehicleDescription{}, veh::Variant::Tracked).stiffness));
   tvd::expectInputError(
       [] {
         veh::parseVehicleDescription(

@@ -152,6 +152,10 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "0.3844 m^2): mm^2 typed as m^2?"},
       {"link_beam_area: {value: 2.0e-3,", "link_beam_area: {value: 2000,",
        "track_assembly.link_beam_area", "mm^2 typed as m^2?"},
+      // The bound itself is the square of the link's larger dimension: 0.39 m^2 is not a link's
+      // section though smaller than 0.62 (m, not m^2).
+      {"link_member_area: {value: 1.2e-3,", "link_member_area: {value: 0.39,",
+       "track_assembly.link_member_area", "0.39 m^2 is larger than the link itself"},
       // A wheelbase longer than the hull and the ground run names the spacing, not a length.
       {"axle_spacing: {value: 0.78,", "axle_spacing: {value: 1.5,", "running_gear.axle_spacing",
        "1.5 m between 7 axles makes a wheelbase of 9 m, longer than both the hull (hull.length "

@@ -440,6 +440,26 @@ TEST(WheelRateEstimate, AttitudeClosedFormOnThePaperVehicle) {
   EXPECT_NEAR(pitch / r.pitch, 1.0, 0.01);
 }
 
+// Tracked, the return rollers ride with the hull as the sprocket and idler do: the sprung mass's
+// CoG is the mass-weighted mean x of every body on the torsion bars, both sides' rollers
+// included. One roller a side ahead of the wheelbase's middle moves it forward.
+TEST(WheelRateEstimate, TheTrackedCogHoldsTheReturnRollers) {
+  veh::VehicleDescription d;
+  d.return_rollers.x = {1.2};
+  d.return_rollers.mass = 60.0;
+  const veh::WheelRateEstimate t = veh::wheelRateEstimate(d, veh::Variant::Tracked);
+  const veh::VehicleModel tracked = veh::buildVehicleModel(d, veh::Variant::Tracked);
+  const double idler_x =
+      tracked.model.nodes[tracked.model.nodeIndex().at(tracked.layout.idlers[0])].position.x();
+  const double rollers = 2.0 * 60.0;  // one a side
+  EXPECT_EQ(t.sprung_mass, 30300.0 + 2.0 * (d.sprocket.mass + d.idler.mass) + rollers);
+  EXPECT_NEAR(t.cog_x * t.sprung_mass,
+              30300.0 * 0.12 +
+                  2.0 * (d.sprocket.mass * d.sprocket.centre_x + d.idler.mass * idler_x) +
+                  rollers * 1.2,
+              1e-6 * t.sprung_mass);
+}
+
 // A light front-drive carrier, its chain bending a hundredth of the paper's (1e-10 m^4): even
 // so its bonded tracked model (what
 // modes, frf and simulate linearise about) sits nose up, where its torsion bars would hold it

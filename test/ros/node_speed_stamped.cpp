@@ -57,7 +57,8 @@ class NodeSpeedStamped : public ::testing::Test {
     timeout_stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("timeout/speed_stamped", 10);
     rosout_sub_ = nh_.subscribe<rosgraph_msgs::Log>(
         "/rosout", 1000, [this](const rosgraph_msgs::Log::ConstPtr& m) { log_.push_back(*m); });
-    stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("speed_stamped", 10);
+    // A queue for a whole burst (the bound's case below): none lost on a loaded machine.
+    stamped_pub_ = nh_.advertise<geometry_msgs::TwistStamped>("speed_stamped", 1100);
     speed_pub_ = nh_.advertise<std_msgs::Float64>("speed", 10);
     terrain_pub_ = nh_.advertise<TerrainProfile>("terrain_profile", 10, true);
     // Every summary of the speed status (a WARN lasts one report).
@@ -178,6 +179,13 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     ASSERT_TRUE(runFor(0.05));
     EXPECT_EQ(speeds_.at(t0), 6.0);
     EXPECT_EQ(speeds_.at(t0 + step), 2.0);  // at once: the next sample
+    EXPECT_EQ(speedCounter("stamped speeds late (total)"), 1.0);
+    // Stamped less than a step before the sample: the step at or after its stamp, the one
+    // from this sample, is still to come: on time, not late.
+    const ros::Time t1 = t_;
+    send(2.0, t1 - ros::Duration(0.4 * h));
+    ASSERT_TRUE(runFor(0.05));
+    EXPECT_EQ(speeds_.at(t1 + step), 2.0);
     EXPECT_EQ(speedCounter("stamped speeds late (total)"), 1.0);
   }
 
@@ -328,6 +336,28 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
     for (const auto& [t, v] : between(old - ros::Duration(0.5), t_))
       EXPECT_EQ(v, 0.0) << "sample at " << (t - old).toSec() << " s from the old time";
     EXPECT_EQ(speedCounter("stamped in the pass before a jump back, dropped (total)"), 1.0);
+  }
+
+  // --- bound: while ROS time stands still, 1000 speeds (the bound) wait for their stamps, all
+  // within a second ahead; the 1001st is refused, named, the waiting ones kept.
+  {
+    SCOPED_TRACE("bound");
+    const double rejected = diagnostics_.value(kSpeedStatus, "speeds rejected (total)");
+    ASSERT_TRUE(test::spinUntil([&] { return stamped_pub_.getNumSubscribers() > 0; }, 10.0));
+    geometry_msgs::TwistStamped msg;
+    msg.header.frame_id = "base_link";
+    msg.twist.linear.x = 0.0;  // the speed in force: the run goes on as it was
+    for (int k = 0; k <= 1000; ++k) {
+      msg.header.stamp = t_ + ros::Duration(0.0009 * (k + 1));
+      stamped_pub_.publish(msg);
+      if (k % 10 == 9)
+        test::spinFor(0.02);  // the node takes them as they come (its queue: 1000)
+    }
+    test::spinFor(1.0);  // on wall time: ROS time must stand still until all have arrived
+    EXPECT_EQ(speedCounter("speeds rejected (total)"), rejected + 1.0);
+    EXPECT_EQ(diagnostics_.text(kSpeedStatus, "last rejection"),
+              "speed_stamped: 1000 speeds already wait for their stamps (is ROS time standing "
+              "still?)");
   }
 }
 

@@ -236,6 +236,7 @@ class TvdCliTest(unittest.TestCase):
                 self.assertTrue(label.startswith(strongest), (label, components[j]))
         np.testing.assert_allclose(m["energy_shares"],
                                    np.array([e["hull"], e["wheels"], e["track"]]).T, atol=1e-10)
+        np.testing.assert_allclose(m["hull_component_energy_shares"], components, atol=1e-10)
         with open(os.path.join(self.path("modes"), "modes.csv")) as stream:
             rows = list(csv.DictReader(stream))
         np.testing.assert_allclose([float(r["hull_pitch_energy_share"]) for r in rows],
@@ -702,6 +703,11 @@ class TvdCliTest(unittest.TestCase):
         self.assertIn("mode_count 60 (tvd --modes, ~reduction/mode_count) with rule band also "
                       "selects the lowest 60 global modes, but only 40 were solved (tvd "
                       "--global-modes", r.stderr)
+        # The bound itself: one mode more than were solved.
+        r = self.tvd("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--rule", "band",
+                     "--modes", "41", "--out", self.path("band_modes_41.mat"), status=2)
+        self.assertIn("mode_count 41 (tvd --modes, ~reduction/mode_count) with rule band also "
+                      "selects the lowest 41 global modes, but only 40 were solved", r.stderr)
         self.assertIn("with --rule band a positive N also selects the lowest N global modes",
                       " ".join(self.tvd("reduce", "--help").stdout.split()))
 
@@ -1179,6 +1185,31 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(p["rotational_total_value_m_s2"] / rotational, 1.0, delta=1e-8)
             self.assertAlmostEqual(p["seat_surface_total_value_m_s2"] / np.hypot(total, rotational),
                                    1.0, delta=1e-8)
+
+    def test_simulate_text_gives_the_basic_methods_verdict_of_the_json(self):
+        """ISO 2631-1 6.2.1 and 6.3.3 in the text output: per point, in the JSON's order (the
+        hull, then the named points), 'a_wz suffices' where the JSON's basic_method_sufficient
+        is true, else the limits and 'report the VDV and MTVV beside a_wz'; on a class C road
+        (where the points differ) and over an obstacle."""
+        road = self.path("verdict_road_C.csv")
+        self.tvd("terrain", "--iso8608", "C", "--length", "300", "--seed", "2", "--out", road)
+        seen = set()
+        for track, speed in ((road, "40"), ("half_round:0.1", "10")):
+            args = ("simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", track,
+                    "--speed-kmh", speed, "--cache-dir", self.cache)
+            d = self.tvd_json(*args)
+            text = self.tvd(*args).stdout
+            verdicts = [line for line in text.splitlines()
+                        if "a_wz suffices" in line or "beside a_wz" in line]
+            expected = [p["basic_method_sufficient"]
+                        for p in [d["comfort"]] + d["comfort_at_points"]]
+            self.assertEqual(["a_wz suffices (ISO 2631-1 6.2.1, 6.3.3)" in line
+                              for line in verdicts], expected, text)
+            for line in verdicts:
+                if "beside a_wz" in line:
+                    self.assertIn("over ISO 2631-1's limits (9, 1.5, 1.75; 6.2.1, 6.3.3)", line)
+            seen.update(expected)
+        self.assertEqual(seen, {True, False})  # both verdicts checked
 
     def test_simulate_braking_travel_inertia(self):
         """A braking profile loads the model with the travel inertia a(t) f_a: on a flat track at
@@ -2015,12 +2046,35 @@ class TvdCliTest(unittest.TestCase):
                                  "--iso8608", "C", "--speeds", "10,30", "--cache-dir", self.cache],
                                 "mode(s) without damping lie in the band", "2.14 Hz (0)",
                                 "no finite integral", "give the vehicle damping")
+        # Repeated modes are listed once and counted: the 14 road wheels hop at one frequency.
+        self.assert_input_error(["ride", "--vehicle", undamped, "--variant", "untracked",
+                                 "--iso8608", "C", "--speeds", "40", "--min-frequency", "0.9",
+                                 "--cache-dir", self.cache],
+                                "14 mode(s) without damping", ": 18.6 Hz (0) x14. Across")
         # At 1 and 2 km/h the band holds none, the band-top check's wider band does: not
         # estimated, said so.
         low = self.tvd_json("ride", "--vehicle", undamped, "--variant", "untracked", "--iso8608",
                             "C", "--speeds", "1,2", "--cache-dir", self.cache)
         self.assertTrue(any("would add is not estimated: a mode without damping (2.14 Hz)" in w
                             for w in low["warnings"]), low["warnings"])
+
+    def test_ride_spectral_takes_every_iso_class_a_to_h(self):
+        """ISO 8608's eight classes, A to H, either case: each is G_d(n0) = 16e-6 * 4^i m^3
+        (i = 0 for A), so on the same band its absorbed power is 4^i / 4^2 times class C's and
+        its r.m.s. values 2^i / 2^2 times, exactly (the scale law, at the JSON's 10 digits)."""
+        c = self.spectral_ride("--iso8608", "C", "--speeds", "20", "--power-limit-w", "1e9")
+        for given, index in (("A", 0), ("h", 7), ("H", 7)):
+            d = self.spectral_ride("--iso8608", given, "--speeds", "20", "--power-limit-w", "1e9")
+            self.assertEqual(d["road"]["iso8608_class"], given.upper())
+            self.assertAlmostEqual(d["road"]["psd_at_n0_m3"] / (16e-6 * 4 ** index), 1.0, places=9)
+            for p, q in zip(d["runs"][0]["points"], c["runs"][0]["points"]):
+                self.assertAlmostEqual(p["absorbed_power_w"] / q["absorbed_power_w"]
+                                       / 4.0 ** (index - 2), 1.0, places=8)
+                self.assertAlmostEqual(p["weighted_rms_z_m_s2"] / q["weighted_rms_z_m_s2"]
+                                       / 2.0 ** (index - 2), 1.0, places=8)
+        self.assert_input_error(["ride", "--vehicle", VEHICLE, "--variant", "untracked",
+                                 "--cache-dir", self.cache, "--iso8608", "I"],
+                                "--iso8608 must be one road class A..H, got 'I'")
 
     def test_ride_spectral_bad_options_are_named_before_any_work(self):
         cache = self.path("cache_spectral_refused")
@@ -3408,6 +3462,9 @@ class TvdCliTest(unittest.TestCase):
         for args, expected in (
                 (["simulate", "--trak", "long_hill"],
                  "tvd: error: simulate: unknown option --trak (did you mean --track?)"),
+                # Two edits away (two letters swapped): still named.
+                (["simulate", "--tarck", "long_hill"],
+                 "tvd: error: simulate: unknown option --tarck (did you mean --track?)"),
                 (["simulate", "--vehicle", VEHICLE, "--track=long_hill", "--speed", "5"],
                  "tvd: error: simulate: unknown option --speed (did you mean --speed-kmh?)"),
                 (["modes", "--vehicle", VEHICLE, "--frobnicate"],
