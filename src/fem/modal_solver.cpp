@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
@@ -464,6 +465,13 @@ ModalBasis solveModesDense(const Matrix& stiffness, const Matrix& mass) {
   if (stiffness.rows() != stiffness.cols() || mass.rows() != mass.cols() ||
       stiffness.rows() != mass.rows())
     throw InputError("dense modal solver: K and M must be square and of the same size");
+  // An infinite entry (a spring of 1e308 N/m summed with others) would surface as "M is not
+  // positive definite" below: name the matrix that has it.
+  for (const auto& [matrix, name] : {std::pair<const Matrix*, const char*>{&stiffness, "K"},
+                                     std::pair<const Matrix*, const char*>{&mass, "M"}})
+    if (!matrix->allFinite())
+      throw InputError(std::string("dense modal solver: ") + name +
+                       " has a non-finite entry (a stiffness or mass too large for a double?)");
   const auto start = std::chrono::steady_clock::now();
   Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> es(stiffness, mass);
   if (es.info() != Eigen::Success)

@@ -178,11 +178,22 @@ Vector SparseCholesky::solve(const Vector& rhs) const {
 }
 
 void SparseCholesky::solveInPlace(const double* in, double* out) const {
+  if (!impl_->factorised)
+    throw SolverError("sparse Cholesky: solve before a successful factorisation");
+  // b is kept between calls; a refactorisation of another size (analyze()) needs a new one.
+  // cholmod_solve2 resizes x, y and e itself.
+  if (impl_->b && impl_->b->nrow != static_cast<std::size_t>(rows_))
+    cholmod_free_dense(&impl_->b, &impl_->common);
   if (!impl_->b)
     impl_->b = cholmod_allocate_dense(rows_, 1, rows_, CHOLMOD_REAL, &impl_->common);
+  if (!impl_->b)
+    throw SolverError("sparse Cholesky: no memory for a solve of " + std::to_string(rows_) +
+                      " rows (CHOLMOD)");
   std::memcpy(impl_->b->x, in, sizeof(double) * rows_);
-  cholmod_solve2(CHOLMOD_A, impl_->factor, impl_->b, nullptr, &impl_->x, nullptr, &impl_->y,
-                 &impl_->e, &impl_->common);
+  if (!cholmod_solve2(CHOLMOD_A, impl_->factor, impl_->b, nullptr, &impl_->x, nullptr, &impl_->y,
+                      &impl_->e, &impl_->common) ||
+      !impl_->x)
+    throw SolverError("sparse Cholesky: solve failed (CHOLMOD)");
   std::memcpy(out, impl_->x->x, sizeof(double) * rows_);
 }
 

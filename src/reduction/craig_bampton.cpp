@@ -1,6 +1,7 @@
 #include "tracked_vehicle_dynamics/reduction/craig_bampton.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <memory>
@@ -185,6 +186,7 @@ struct CraigBamptonReducer::State {
   State(const Inputs& matrices, std::vector<DofIndex> master_dofs);
 
   Inputs in;
+  std::shared_ptr<const std::array<SparseMatrix, 3>> owned;  // what `in` refers to, if copied
   std::vector<DofIndex> masters;
   std::vector<DofIndex> slaves;
   std::vector<DofIndex> slave_index;  // per DOF: its row of Phi_S, -1 for a master
@@ -342,8 +344,16 @@ CraigBamptonReducer::CraigBamptonReducer(const fem::System& system, std::vector<
     : state_(std::make_unique<State>(systemInputs(system), std::move(masters))) {}
 
 CraigBamptonReducer::CraigBamptonReducer(const SparseMatrix& stiffness, const SparseMatrix& mass,
-                                         const SparseMatrix& damping, std::vector<DofIndex> masters)
-    : state_(std::make_unique<State>(Inputs{stiffness, mass, damping}, std::move(masters))) {}
+                                         const SparseMatrix& damping,
+                                         std::vector<DofIndex> masters) {
+  // Bare matrices are copied (sparse: small beside the reduction's dense blocks), so a caller's
+  // temporary, e.g. a SparseMatrix() for no damping, cannot dangle; a System is referenced.
+  auto owned = std::make_shared<const std::array<SparseMatrix, 3>>(
+      std::array<SparseMatrix, 3>{stiffness, mass, damping});
+  state_ =
+      std::make_unique<State>(Inputs{(*owned)[0], (*owned)[1], (*owned)[2]}, std::move(masters));
+  state_->owned = std::move(owned);
+}
 
 CraigBamptonReducer::~CraigBamptonReducer() = default;
 CraigBamptonReducer::CraigBamptonReducer(CraigBamptonReducer&&) noexcept = default;

@@ -305,6 +305,19 @@ TEST(CraigBampton, BareMatricesGiveTheSameReducedSystem) {
   EXPECT_EQ(b.input_stiffness.cols(), 0);
   EXPECT_EQ(b.gravity_load, Vector::Zero(b.size()));
   EXPECT_EQ(b.travel_load, Vector::Zero(b.size()));
+  // Temporaries (a scaled K, no damping) are copied, not referenced: the reducer outlives them.
+  const CraigBamptonReducer reducer(SparseMatrix(2.0 * system.stiffness), system.mass,
+                                    SparseMatrix(), m);
+  const std::vector<double> overwrite(4096, 1e300);  // reuses the temporaries' memory, if freed
+  const CraigBamptonResult c = reducer.reduce(options);
+  const SparseMatrix k2 = 2.0 * system.stiffness, none;
+  const CraigBamptonResult d = craigBampton(k2, system.mass, none, m, options);
+  EXPECT_EQ(c.stiffness, d.stiffness);
+  EXPECT_EQ(c.mass, d.mass);
+  EXPECT_EQ(c.damping, d.damping);
+  EXPECT_LT((c.stiffness - 2.0 * a.stiffness).cwiseAbs().maxCoeff(),
+            1e-12 * a.stiffness.cwiseAbs().maxCoeff());
+  EXPECT_EQ(overwrite.size(), 4096U);
 }
 
 // The reducer does the partition, constraint modes and master blocks once (vehicle_reduction.cpp

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -496,4 +497,23 @@ TEST(SpringElement, OffsetBushingActsAtTheMidpointOfItsNodes) {
   permutation.topRightCorner<6, 6>().setIdentity();
   permutation.bottomLeftCorner<6, 6>().setIdentity();
   EXPECT_LT((permutation * swapped * permutation - stiffness).norm(), kRelTolerance * k);
+}
+
+// An infinite entry (springs of 1e308 N/m summed) is named as such, in K or M, not reported as
+// "M is not positive definite".
+TEST(DenseModalSolver, NamesTheMatrixWithANonFiniteEntry) {
+  tvd::Matrix k = tvd::Matrix::Identity(3, 3), m = tvd::Matrix::Identity(3, 3);
+  k(1, 1) = 1e308;
+  k(1, 1) += 1e308;  // overflows to +inf
+  for (const auto& [kk, mm, name] :
+       {std::make_tuple(k, m, std::string("K")), std::make_tuple(m, k, std::string("M"))}) {
+    try {
+      tvd::fem::solveModesDense(kk, mm);
+      ADD_FAILURE() << "accepted a non-finite " << name;
+    } catch (const tvd::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(name + " has a non-finite entry"), std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_EQ(tvd::fem::solveModesDense(m, m).count(), 3);
 }

@@ -71,3 +71,19 @@ TEST(SparseCholesky, SparseSolveRefusesAWrongSizeOrAMissingFactorisation) {
   ASSERT_TRUE(cholesky.factorize(k));
   tvd::expectInputError([&] { cholesky.solve(sparseLoads(11, 3)); }, "right-hand side has 11 rows");
 }
+
+// The Lanczos hot path's in-place solve keeps its right-hand-side buffer between calls: after a
+// refactorisation of another size it must solve the new system (it wrote past the old, smaller
+// buffer), and without a factorisation it refuses (it read a null solution).
+TEST(SparseCholesky, InPlaceSolveFollowsARefactorisationOfAnotherSize) {
+  tvd::fem::SparseCholesky cholesky;
+  std::vector<double> in(40, 1.0), out(40, 0.0);
+  EXPECT_THROW(cholesky.solveInPlace(in.data(), out.data()), tvd::SolverError);
+  for (const tvd::DofIndex n : {10, 40, 25}) {
+    const tvd::SparseMatrix k = springChain(n);
+    ASSERT_TRUE(cholesky.factorize(k));
+    cholesky.solveInPlace(in.data(), out.data());
+    const tvd::Vector x = Eigen::Map<const tvd::Vector>(out.data(), n);
+    EXPECT_LT((k * x - tvd::Vector::Ones(n)).cwiseAbs().maxCoeff(), 1e-12) << n << " rows";
+  }
+}

@@ -104,10 +104,10 @@ struct FixedInterfaceProjection {
 ///   T_m^T M T_r = T_m^T (M T_r),  T_r^T M T_r = Phi_S^T M_ss Phi_S (= I, computed),
 /// and the same for C, and Phi_S^T on the slave rows of K_u, C_u, f_g, f_a: products with r
 /// columns, against the n m^2 of the master block. A caller that raises r until a check passes
-/// (vehicle_reduction.cpp) pays for the shared stages once. Keeps references to the matrices it
-/// was built from, which must outlive it (a temporary System is refused at compile time); reduce()
-/// is const and may run from several threads. A moved-from reducer may only be assigned to or
-/// destroyed.
+/// (vehicle_reduction.cpp) pays for the shared stages once. Keeps references to the System it was
+/// built from, which must outlive it (a temporary System is refused at compile time), and copies
+/// bare matrices (a temporary is safe); reduce() is const and may run from several threads. A
+/// moved-from reducer may only be assigned to or destroyed.
 class CraigBamptonReducer {
  public:
   /// Throws InputError for a repeated or out-of-range master or inconsistent matrix sizes, and
