@@ -186,7 +186,7 @@ struct CraigBamptonReducer::State {
   State(const Inputs& matrices, std::vector<DofIndex> master_dofs);
 
   Inputs in;
-  std::shared_ptr<const std::array<SparseMatrix, 3>> owned;  // what `in` refers to, if copied
+  std::unique_ptr<const std::array<SparseMatrix, 3>> owned;  // what `in` refers to, if copied
   std::vector<DofIndex> masters;
   std::vector<DofIndex> slaves;
   std::vector<DofIndex> slave_index;  // per DOF: its row of Phi_S, -1 for a master
@@ -348,7 +348,7 @@ CraigBamptonReducer::CraigBamptonReducer(const SparseMatrix& stiffness, const Sp
                                          std::vector<DofIndex> masters) {
   // Bare matrices are copied (sparse: small beside the reduction's dense blocks), so a caller's
   // temporary, e.g. a SparseMatrix() for no damping, cannot dangle; a System is referenced.
-  auto owned = std::make_shared<const std::array<SparseMatrix, 3>>(
+  auto owned = std::make_unique<const std::array<SparseMatrix, 3>>(
       std::array<SparseMatrix, 3>{stiffness, mass, damping});
   state_ =
       std::make_unique<State>(Inputs{(*owned)[0], (*owned)[1], (*owned)[2]}, std::move(masters));
