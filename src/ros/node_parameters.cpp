@@ -341,6 +341,11 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("max_speed", "must be at most " + brief(dynamics::kMaxSpeedKmh / kKmhPerMs) +
                                     " m/s (" + brief(dynamics::kMaxSpeedKmh) +
                                     " km/h, as tvd's --speed-kmh), got " + brief(p.max_speed));
+  // Checked as a speed message is (speedProblem): within 0 .. ~max_speed.
+  p.initial_speed = in.nonNegative("initial_speed", p.initial_speed, "m/s");
+  if (p.initial_speed > p.max_speed)
+    throw in.error("initial_speed", "must be at most ~max_speed (" + brief(p.max_speed) +
+                                        " m/s), got " + brief(p.initial_speed));
   p.speed_timeout = in.nonNegative("speed_timeout", p.speed_timeout, "s");
   p.catch_up_limit = in.nonNegative("catch_up_limit", p.catch_up_limit, "s");
   // Less than one step would skip time at every tick that is a step late (on real time, most).

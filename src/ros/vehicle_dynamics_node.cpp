@@ -75,6 +75,13 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
   const double rate = params_.vehicle_options.rate;
   step_ns_ = std::max<std::int64_t>(1, std::llround(1e9 / rate));
   max_catch_up_steps_ = std::max<std::int64_t>(1, std::llround(params_.catch_up_limit * rate));
+  // The run starts at ~initial_speed (at rest relative to it: no travel inertia), as a speed
+  // message would set it now (on simulated time, ~speed_timeout counts from the first /clock).
+  if (params_.initial_speed > 0.0) {
+    vehicle_->resetTo(0.0, params_.initial_speed, ResetTerrain::Clear);
+    takeInitialSpeed(now());
+    holdForFirstPatch();
+  }
   publish_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.publish_rate));
   comfort_every_ = std::max<std::int64_t>(1, std::llround(rate / params_.comfort_rate));
   if (params_.ground_contact_rate > 0.0)
@@ -332,12 +339,15 @@ void VehicleDynamicsNode::reportDroppedPatch(const std::string& where) {
 }
 
 bool VehicleDynamicsNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
-  ROS_INFO("%s: reset requested: back to static equilibrium at station 0", nodeName());
+  ROS_INFO("%s: reset requested: back to static equilibrium at station 0%s", nodeName(),
+           initialSpeedText().c_str());
   // Not published here: the current sample's stamp is already out, and tf2 discards a second
   // transform at the same stamp (TF_REPEATED_DATA). The next published sample shows the reset.
   // The old run's kept inputs first: a patch of it dropped behind is counted to it.
   forgetRecentInputs();
-  restart();
+  restart(0.0, params_.initial_speed);
+  takeInitialSpeed(now());
+  holdForFirstPatch();
   return true;
 }
 
@@ -416,6 +426,37 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
   return uncovered;
 }
 
+void VehicleDynamicsNode::takeInitialSpeed(const ros::Time& t) {
+  // The run's ~initial_speed counts as a speed message at `t`: ~speed_timeout runs from here (on
+  // simulated time before the first /clock, t = 0: from the first /clock, as a speed message's).
+  if (params_.initial_speed <= 0.0)
+    return;
+  markSpeedTime(t);
+  last_speed_taken_ = t;
+}
+
+void VehicleDynamicsNode::holdForFirstPatch() {
+  // A vehicle at rest waits for its terrain where it stands; one started moving would drive off
+  // over the flat ground of the start before the source's first patches are in (a bag's come on
+  // their own connection, a few /clock ticks after the first: 2 steps of "terrain underrun" at
+  // the start of a replay entered at speed). It is held for the first patch, at most
+  // holdLimit(), as a bag loop's restart is (the held steps are then stepped on it exactly);
+  // beyond, it drives on over the flat ground, which the terrain diagnostics say.
+  if (params_.initial_speed <= 0.0 || !vehicle_->terrain().empty() || max_catch_up_steps_ < 2 ||
+      hold_.active)
+    return;
+  hold_ = Hold();
+  hold_.active = true;
+  hold_.at_start = true;
+  ++events_.start_holds;
+}
+
+std::string VehicleDynamicsNode::initialSpeedText() const {
+  return params_.initial_speed > 0.0
+             ? ", speed " + brief(params_.initial_speed) + " m/s (~initial_speed)"
+             : std::string();
+}
+
 void VehicleDynamicsNode::forgetRecentInputs() {
   for (const RecentPatch& recent : recent_patches_)
     if (!recent.dropped.empty())
@@ -443,14 +484,16 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
 void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   ++events_.time_jumps_back;
   // Every reset is said (not throttled): each one loses the vehicle's state and speed.
-  ROS_WARN("%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0",
-           nodeName(), (sample_time_ - now).toSec());
+  ROS_WARN(
+      "%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0%s",
+      nodeName(), (sample_time_ - now).toSec(), initialSpeedText().c_str());
   // Held for if the run before had terrain from its start (or was itself held), and moving.
   // A hold needs a catch-up of two steps at least (~catch_up_limit): the held steps are stepped
   // in one tick at the release.
-  const bool hold_for_terrain = max_catch_up_steps_ >= 2 &&
-                                (hold_.active || (!flat_since_restart_ && first_patch_lag_ >= 0.0 &&
-                                                  first_patch_lag_ <= holdLimit()));
+  const bool hold_for_terrain =
+      max_catch_up_steps_ >= 2 &&
+      ((hold_.active && !hold_.at_start) ||
+       (!flat_since_restart_ && first_patch_lag_ >= 0.0 && first_patch_lag_ <= holdLimit()));
   const bool had_speed = vehicle_->commandedSpeed() > 0.0 || (hold_.active && hold_.awaiting_speed);
   const ros::Time old_time = sample_time_;
   last_jump_old_time_ = old_time;
@@ -459,7 +502,10 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   const std::uint64_t speeds_before = events_.speeds_reapplied;
   const std::uint64_t patches_before = events_.patches_reapplied;
   const bool other_frame = latest_patch_other_frame_, narrow = latest_patch_narrow_;
-  restart();
+  // Each pass starts as the first did: at ~initial_speed, as if a speed message had come now.
+  // (A speed that came back with the jump, re-applied below, overrides it.)
+  restart(0.0, params_.initial_speed);
+  takeInitialSpeed(now);
   sample_time_ = now;
   run_start_ = now;
   restart_movable_ = !now.isZero();
@@ -484,6 +530,8 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
     hold_.old_time = old_time;
     hold_.new_time = now;
     ++events_.terrain_holds;
+  } else {
+    holdForFirstPatch();  // the start's hold, at ~initial_speed with no terrain re-applied
   }
   if (now.isZero()) {
     // Back to time 0 (a simulator's world reset): ROS time 0 means "no time yet", as before the
@@ -743,9 +791,12 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
         static_cast<double>(due) * static_cast<double>(step_ns_) * 1e-9 >= holdLimit();
     if (!inputs && !due_out)
       return;  // the steps wait for the new pass's inputs (restartAfterJump)
-    const bool terrain = hold_.terrain;
+    const bool terrain = hold_.terrain, at_start = hold_.at_start;
     hold_ = Hold();
-    if (!terrain) {
+    if (at_start) {
+      if (!terrain)
+        ++events_.start_holds_expired;  // no terrain source yet: the diagnostics say "moving"
+    } else if (!terrain) {
       ++events_.terrain_holds_expired;
       TVD_WARN_THROTTLE(kWarnPeriod,
                         "%s: no terrain patch within half ~catch_up_limit (%.3f s) of simulated "

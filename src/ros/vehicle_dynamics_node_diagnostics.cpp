@@ -84,6 +84,8 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("restarts held for the loop's terrain (total)", events_.terrain_holds);
   status.add("holds ended without terrain (total)", events_.terrain_holds_expired);
   status.add("holds ended without a speed (total)", events_.speed_holds_expired);
+  status.add("runs at ~initial_speed held for their first patch (total)", events_.start_holds);
+  status.add("start holds ended without terrain (total)", events_.start_holds_expired);
   status.add("non-finite resets (total)", events_.diverged);
   status.add("step time mean [us]", step_window_.mean() * 1e6);
   status.add("step time p99 [us]", step_p99 * 1e6);
@@ -128,9 +130,11 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
                    "no terrain: the patches received lay wholly behind the vehicle (dropped)");
   } else if (hold_.active) {
     // A bag loop's first patches due any moment: the restarted vehicle waits for them, unstepped.
-    status.summary(
-        diagnostic_msgs::DiagnosticStatus::OK,
-        "ROS time jumped back: holding the restarted vehicle for the loop's first patch");
+    status.summary(diagnostic_msgs::DiagnosticStatus::OK,
+                   hold_.at_start
+                       ? "holding the vehicle, started at ~initial_speed, for the first patch"
+                       : "ROS time jumped back: holding the restarted vehicle for the loop's "
+                         "first patch");
   } else if (buffer.empty() && flat_since_restart_ &&
              (vehicle_->speed() == 0.0 || !clock_started_)) {
     // Standing on the flat ground of a start or reset until the terrain source begins is the

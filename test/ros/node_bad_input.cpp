@@ -347,6 +347,14 @@ TEST(NodeBadParameters, MaxSpeedBeyondTheModelsRangeIsRefused) {
                 "--speed-kmh), got 100");
 }
 
+// ~initial_speed: a speed as a speed message is, 0 .. ~max_speed; each bound named.
+TEST(NodeBadParameters, InitialSpeedOutsideZeroToMaxSpeedIsNamed) {
+  expectRefused("negative_initial_speed", "_initial_speed:=-1",
+                "/negative_initial_speed/initial_speed: must be >= 0 m/s, got -1");
+  expectRefused("fast_initial_speed", "_max_speed:=10 _initial_speed:=12.5",
+                "/fast_initial_speed/initial_speed: must be at most ~max_speed (10 m/s), got 12.5");
+}
+
 // ~imu_points: each entry a published point frame, once (~points: once); every bad entry is
 // named.
 TEST(NodeBadParameters, BadImuPointsAreNamed) {

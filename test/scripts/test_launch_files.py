@@ -493,6 +493,18 @@ class LaunchFilesTest(unittest.TestCase):
         p = params("replay_track.launch", "max_acceleration:=1", "max_deceleration:=2.5")
         self.assertEqual((p["max_acceleration"], p["max_deceleration"]), (1.0, 2.5))
 
+    def test_initial_speed_is_passed_through_in_its_units(self):
+        self.assertEqual(params("vehicle_dynamics.launch")["initial_speed"], 0.0)  # the file's
+        p = params("vehicle_dynamics.launch", "initial_speed:=5")
+        self.assertEqual(p["initial_speed"], 5.0)
+        self.assertIsInstance(p["initial_speed"], float)
+        # The replay takes km/h, as its speed_kmh: 50 km/h is 50 / 3.6 m/s.
+        p = params("replay_track.launch", "initial_speed_kmh:=50")
+        self.assertAlmostEqual(p["initial_speed"], 50 / 3.6, places=12)
+        p = params("replay_track.launch", "initial_speed_kmh:=12.6")
+        self.assertAlmostEqual(p["initial_speed"], 3.5, places=12)
+        self.assertEqual(params("replay_track.launch")["initial_speed"], 0.0)
+
 
 if __name__ == "__main__":
     sys.exit(junit_runner.main(LaunchFilesTest, "launch_files", __doc__,

@@ -52,6 +52,10 @@ struct NodeParameters {
   /// model beyond its range, OnlineVehicle::checkGroundContact); 0: never.
   double ground_contact_rate = 50.0;
   double max_speed = 30.0;  ///< ~max_speed [m/s]; faster speed messages are rejected
+  /// ~initial_speed [m/s], at most ~max_speed: the speed a run starts at (the start, ~reset and a
+  /// jump back of simulated time), as if a speed message had set it then: a replay entered at
+  /// speed, braking with its travel inertia (a slew) without first accelerating from rest.
+  double initial_speed = 0.0;
   /// ~speed_timeout [s] of ROS time without a valid speed message after which the vehicle stops
   /// where it is (a driver that died must not leave it driving on); 0: never.
   double speed_timeout = 0.0;

@@ -117,6 +117,8 @@ class VehicleDynamicsNode {
     std::uint64_t patches_reapplied = 0, speeds_reapplied = 0;  // after a jump back
     // Restarts after a jump back held for the loop's first patch, and holds that ran out.
     std::uint64_t terrain_holds = 0, terrain_holds_expired = 0;
+    // Runs started at ~initial_speed held for their first patch, and those it did not reach.
+    std::uint64_t start_holds = 0, start_holds_expired = 0;
     std::uint64_t speed_holds_expired = 0;  // the terrain came, an awaited speed did not
   };
   /// A terrain patch kept for kRewindWindow of wall time, in case ROS time jumps back to it.
@@ -226,6 +228,14 @@ class VehicleDynamicsNode {
   /// A new run: the vehicle restarts (OnlineVehicle::resetTo, by default station 0 on flat
   /// ground) and the old run's speed timeout is forgotten. Returns the uncovered contacts.
   int restart(double station = 0.0, double speed = 0.0, ResetTerrain terrain = ResetTerrain::Clear);
+  /// A run started at ~initial_speed (the start, ~reset, a jump back) takes it as a speed message
+  /// at `t` (~speed_timeout, the unslewed-change warning); nothing at 0.
+  void takeInitialSpeed(const ros::Time& t);
+  /// A run started at ~initial_speed with no terrain waits for its first patch (a hold, at most
+  /// holdLimit()) instead of driving off over flat ground; nothing at 0 or with terrain.
+  void holdForFirstPatch();
+  /// ", speed V m/s (~initial_speed)" for the reset messages; empty at 0.
+  std::string initialSpeedText() const;
   /// A reset the user asked for (~reset, ~reset_to): the inputs kept for a bag loop belong to
   /// the old run.
   void forgetRecentInputs();
@@ -314,9 +324,12 @@ class VehicleDynamicsNode {
   // speed) has arrived, then steps the held time on them (advanceTo).
   struct Hold {
     bool active = false;
-    bool terrain = false;          // a patch of the new pass was taken
-    bool awaiting_speed = false;   // a speed message is awaited too
-    bool speed = false;            // and has arrived
+    bool terrain = false;         // a patch of the new pass was taken
+    bool awaiting_speed = false;  // a speed message is awaited too
+    bool speed = false;           // and has arrived
+    // A run started moving at ~initial_speed, held for its first patch (holdForFirstPatch), not a
+    // loop's restart: its end without terrain is no loop's fault.
+    bool at_start = false;
     ros::Time old_time, new_time;  // the jump's: a patch stamped nearer new_time is the new pass's
   };
   Hold hold_;
