@@ -12,6 +12,8 @@
 //            it, the station does not (before: 1 s of motion stepped in one tick, 3 m at 3 m/s)
 //   said     two system clock steps in the loop diagnostics, the last +1.000 s, its WARN, no
 //            jump back of ROS time (no reset), a WARN line for each step.
+//   standing the vehicle stopped, the clock steps back 5 s: a speed stamped 0.2 s before now
+//            finds it standing since before its stamp and makes up the steps it missed.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -30,10 +32,12 @@ using namespace tracked_vehicle_dynamics::ros_layer;
 
 namespace {
 
-constexpr double kBack = -10.0;   // [s] the first step of the node's clock
-constexpr double kForward = 1.0;  // [s] the second
-constexpr double kAhead = 0.6;    // [s] how far ahead the waiting speed is stamped
-constexpr double kLatency = 0.4;  // [s] a loaded machine's delivery and scheduling delays
+constexpr double kBack = -10.0;         // [s] the first step of the node's clock
+constexpr double kForward = 1.0;        // [s] the second
+constexpr double kAhead = 0.6;          // [s] how far ahead the waiting speed is stamped
+constexpr double kLatency = 0.4;        // [s] a loaded machine's delivery and scheduling delays
+constexpr double kStandingBack = -5.0;  // [s] a third step, back, with the vehicle standing
+constexpr double kLate = 0.2;           // [s] how late the speed after it is stamped
 
 struct Sample {
   ros::Time stamp;
@@ -227,6 +231,35 @@ TEST_F(NodeClockStep, TheVehicleFollowsAStepOfTheSystemClock) {
                logged("the system clock stepped forward by 1.000 s");
       },
       5.0));
+
+  // --- standing through a step back: stopped before the clock steps back kStandingBack, the
+  // vehicle has stood since before a speed stamped kLate ago in the new time, which therefore
+  // makes up the steps it missed (the time of the last speed taken moved with the clock: left in
+  // the old time, kStandingBack ahead, the vehicle would count as moving since then and set off
+  // from the speed's arrival instead, about kLate v short).
+  send(0.0, nodeNow());
+  ASSERT_FALSE(awaitSpeed(0.0, 5.0).isZero()) << "the stop was not taken";
+  test::spinFor(0.2);
+  const ros::Time before_step = samples_.back().stamp;
+  setOffset(offset_ + kStandingBack);
+  ASSERT_TRUE(test::spinUntil(
+      [&] { return samples_.back().stamp < before_step + ros::Duration(kStandingBack + 1.0); },
+      5.0))
+      << "the node's samples did not step back with its clock";
+  test::spinFor(0.1);
+  const double stood_at = samples_.back().station;
+  const ros::Time stamp = nodeNow() - ros::Duration(kLate);
+  const std::size_t before_late = samples_.size();
+  send(2.0, stamp);
+  ASSERT_FALSE(awaitSpeed(2.0, 5.0).isZero()) << "the late speed was not taken";
+  const Sample* first = nullptr;
+  for (std::size_t i = before_late; i < samples_.size() && first == nullptr; ++i)
+    if (samples_[i].speed == 2.0)
+      first = &samples_[i];
+  ASSERT_NE(first, nullptr);
+  // Moving since the stamp: within two steps (1 ms each) of 2 m/s.
+  EXPECT_NEAR(first->station - stood_at, 2.0 * (first->stamp - stamp).toSec(), 2.0 * 2.0 * 0.001)
+      << "the steps missed since the speed's stamp were not made up";
 }
 
 }  // namespace
