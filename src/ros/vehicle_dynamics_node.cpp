@@ -414,7 +414,8 @@ int VehicleDynamicsNode::restart(double station, double speed, ResetTerrain terr
   }
   stopped_by_timeout_ = false;  // a new run: the old one's driver timed out, not this one's
   restart_movable_ = false;     // restartAfterJump() allows it for its own restart
-  pending_speeds_.clear();      // the old run's schedule
+  speed_message_in_run_ = false;
+  pending_speeds_.clear();  // the old run's schedule
   applied_speed_stamp_ = ros::Time();
   last_speed_taken_ = ros::Time();  // the restart's speed is no message's (~reset_to sets it)
   hold_ = Hold();
@@ -442,13 +443,27 @@ void VehicleDynamicsNode::holdForFirstPatch() {
   // the start of a replay entered at speed). It is held for the first patch, at most
   // holdLimit(), as a bag loop's restart is (the held steps are then stepped on it exactly);
   // beyond, it drives on over the flat ground, which the terrain diagnostics say.
-  if (params_.initial_speed <= 0.0 || !vehicle_->terrain().empty() || max_catch_up_steps_ < 2 ||
-      hold_.active)
+  // On real time there is no replay to wait for, and the held steps would be caught up in one
+  // late tick: a live source's patches reach the node as it runs (the contacts hold flat ground
+  // until they do, which the terrain diagnostics say).
+  if (!use_sim_time_ || params_.initial_speed <= 0.0 || !vehicle_->terrain().empty() ||
+      max_catch_up_steps_ < 2 || hold_.active)
     return;
   hold_ = Hold();
   hold_.active = true;
   hold_.at_start = true;
-  ++events_.start_holds;
+}
+
+bool VehicleDynamicsNode::terrainCoversHeldSteps(std::int64_t steps) const {
+  // A held restart steps on once the terrain reaches every contact over the held steps: from the
+  // rearmost contact now to the frontmost after `steps` steps at the speed (a bag's first patches
+  // come in a burst, its first one alone 2 m behind the vehicle: released on it, the held steps
+  // ran off its front, review 147).
+  const auto& terrain = vehicle_->terrain();
+  const double ahead = std::max(vehicle_->speed(), vehicle_->commandedSpeed()) *
+                       static_cast<double>(steps) * static_cast<double>(step_ns_) * 1e-9;
+  return !terrain.empty() && terrain.coveredFrom() <= vehicle_->rearContactStation() &&
+         terrain.coveredUntil() >= vehicle_->frontContactStation() + ahead;
 }
 
 std::string VehicleDynamicsNode::initialSpeedText() const {
@@ -494,7 +509,11 @@ void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
       max_catch_up_steps_ >= 2 &&
       ((hold_.active && !hold_.at_start) ||
        (!flat_since_restart_ && first_patch_lag_ >= 0.0 && first_patch_lag_ <= holdLimit()));
-  const bool had_speed = vehicle_->commandedSpeed() > 0.0 || (hold_.active && hold_.awaiting_speed);
+  // A speed is awaited only from a run that a speed message moved: one moving at ~initial_speed
+  // or a ~reset_to's speed alone restarts as it started (review 147: every loop waited out the
+  // hold for a speed that never came).
+  const bool had_speed = (speed_message_in_run_ && vehicle_->commandedSpeed() > 0.0) ||
+                         (hold_.active && hold_.awaiting_speed);
   const ros::Time old_time = sample_time_;
   last_jump_old_time_ = old_time;
   last_jump_new_time_ = now;
@@ -786,16 +805,28 @@ void VehicleDynamicsNode::advanceTo(const ros::Time& now) {
   if (due == 0)
     return;
   if (hold_.active) {
-    const bool inputs = hold_.terrain && (!hold_.awaiting_speed || hold_.speed);
+    // A run entered at speed that a speed 0 stopped needs no terrain ahead: nothing to wait for.
+    // (A loop's restart stands until its speed comes: it waits for its terrain all the same.)
+    const bool standing =
+        hold_.at_start && vehicle_->speed() == 0.0 && vehicle_->commandedSpeed() == 0.0;
+    const bool covered = hold_.terrain && terrainCoversHeldSteps(due);
+    const bool inputs = standing || (covered && (!hold_.awaiting_speed || hold_.speed));
     const bool due_out =
         static_cast<double>(due) * static_cast<double>(step_ns_) * 1e-9 >= holdLimit();
-    if (!inputs && !due_out)
+    if (!inputs && !due_out) {
+      if (hold_.at_start && !hold_.counted) {  // counted once it holds a step
+        hold_.counted = true;
+        ++events_.start_holds;
+      }
       return;  // the steps wait for the new pass's inputs (restartAfterJump)
+    }
     const bool terrain = hold_.terrain, at_start = hold_.at_start;
     hold_ = Hold();
     if (at_start) {
-      if (!terrain)
-        ++events_.start_holds_expired;  // no terrain source yet: the diagnostics say "moving"
+      // Ran out: no terrain source yet (the diagnostics say "moving"), or one whose patches do
+      // not reach the contacts.
+      if (!inputs)
+        ++events_.start_holds_expired;
     } else if (!terrain) {
       ++events_.terrain_holds_expired;
       TVD_WARN_THROTTLE(kWarnPeriod,

@@ -128,11 +128,12 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
   } else if (buffer.empty() && behind > 0) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no terrain: the patches received lay wholly behind the vehicle (dropped)");
-  } else if (hold_.active) {
+  } else if (hold_.active && (clock_started_ || !hold_.at_start)) {
     // A bag loop's first patches due any moment: the restarted vehicle waits for them, unstepped.
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    hold_.at_start
-                       ? "holding the vehicle, started at ~initial_speed, for the first patch"
+                       ? "holding the vehicle, started at ~initial_speed, until the terrain "
+                         "covers its contacts"
                        : "ROS time jumped back: holding the restarted vehicle for the loop's "
                          "first patch");
   } else if (buffer.empty() && flat_since_restart_ &&

@@ -239,6 +239,7 @@ void VehicleDynamicsNode::takeSpeed(double v, const ros::Time& t, std::int64_t c
     vehicle_->setSpeed(v);
   }
   last_speed_taken_ = t;
+  speed_message_in_run_ = true;
   if (hold_.active)
     hold_.speed = true;
   stopped_by_timeout_ = false;
@@ -285,6 +286,7 @@ void VehicleDynamicsNode::reapplyRecentSpeeds(const ros::Time& now) {
   if (!recent_speed_arrival_.isZero() && recent_speed_arrival_ >= oldest) {
     vehicle_->setSpeed(recent_speed_);
     last_speed_taken_ = now;
+    speed_message_in_run_ = true;
     stopped_by_timeout_ = false;
     markSpeedTime(now);
     ++events_.speeds_reapplied;

@@ -347,7 +347,8 @@ TEST(NodeBadParameters, MaxSpeedBeyondTheModelsRangeIsRefused) {
                 "--speed-kmh), got 100");
 }
 
-// ~initial_speed: a speed as a speed message is, 0 .. ~max_speed; each bound named.
+// ~initial_speed: 0 .. ~max_speed (a parameter has no standstill noise: -0.0005 is refused as
+// well); each bound named.
 TEST(NodeBadParameters, InitialSpeedOutsideZeroToMaxSpeedIsNamed) {
   expectRefused("negative_initial_speed", "_initial_speed:=-1",
                 "/negative_initial_speed/initial_speed: must be >= 0 m/s, got -1");

@@ -231,9 +231,12 @@ class VehicleDynamicsNode {
   /// A run started at ~initial_speed (the start, ~reset, a jump back) takes it as a speed message
   /// at `t` (~speed_timeout, the unslewed-change warning); nothing at 0.
   void takeInitialSpeed(const ros::Time& t);
-  /// A run started at ~initial_speed with no terrain waits for its first patch (a hold, at most
-  /// holdLimit()) instead of driving off over flat ground; nothing at 0 or with terrain.
+  /// On simulated time, a run started at ~initial_speed with no terrain waits until its terrain
+  /// covers the contacts (a hold, at most holdLimit()) instead of driving off over flat ground;
+  /// nothing at 0, with terrain, or on real time.
   void holdForFirstPatch();
+  /// The stored terrain reaches every contact from now over `steps` steps at the current speed.
+  bool terrainCoversHeldSteps(std::int64_t steps) const;
   /// ", speed V m/s (~initial_speed)" for the reset messages; empty at 0.
   std::string initialSpeedText() const;
   /// A reset the user asked for (~reset, ~reset_to): the inputs kept for a bag loop belong to
@@ -330,6 +333,7 @@ class VehicleDynamicsNode {
     // A run started moving at ~initial_speed, held for its first patch (holdForFirstPatch), not a
     // loop's restart: its end without terrain is no loop's fault.
     bool at_start = false;
+    bool counted = false;          // held a step: counted in events_.start_holds
     ros::Time old_time, new_time;  // the jump's: a patch stamped nearer new_time is the new pass's
   };
   Hold hold_;
@@ -404,6 +408,7 @@ class VehicleDynamicsNode {
   // The last jump back of simulated time: the time it left, and when (monotonic) it came.
   ros::Time last_jump_old_time_, last_jump_new_time_;
   bool restart_movable_ = false;  // restarted after a jump back, not stepped yet (alignRestart)
+  bool speed_message_in_run_ = false;  // a speed message was taken since the last (re)start
   ros::SteadyTime last_jump_arrival_;
   ros::SteadyTime recent_speed_arrival_;  // zero: none kept
   ros::Time last_step_time_;              // ROS time of the previous step() call
