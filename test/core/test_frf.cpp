@@ -119,6 +119,32 @@ TEST(Frf, ModalSystemRefusesANegativeOmegaSquaredBeyondRounding) {
   expectSolverError([&] { ModalSystem{s}; }, {"stiffness K is indefinite"});
 }
 
+// Modal damping ratios: finite and >= 0, so an undamped mode (zeta = 0) is accepted as given.
+TEST(Frf, ModalSystemTakesZeroDampingRatios) {
+  const SecondOrderSystem s = test::quarterCar();
+  const ModalSystem modal(s, Vector::Zero(s.size()));
+  EXPECT_EQ(modal.dampingRatios(), Vector::Zero(s.size()));
+  expectInputError([&] { ModalSystem(s, Vector::Constant(s.size(), -0.01)); },
+                   {"damping ratios must be finite and >= 0"});
+}
+
+// phi^T C phi >= 0 for every mode of a positive semi-definite C: a C that adds energy is refused.
+TEST(Frf, ModalSystemRefusesDampingThatIsNotPositiveSemiDefinite) {
+  SecondOrderSystem s = test::quarterCar();
+  s.damping = -0.01 * s.stiffness;
+  expectInputError([&] { ModalSystem{s}; }, {"damping C is not positive semi-definite"});
+}
+
+// The coupling of modal damping c = Phi^T C Phi is max |c_rs| / sqrt(|c_rr c_ss|):
+// [[1, 0.5], [0.5, 4]] gives 0.5 / sqrt(1 * 4) = 0.25.
+TEST(Frf, OffDiagonalDampingRatioIsNormalisedByBothDiagonals) {
+  Matrix c(2, 2);
+  c << 1.0, 0.5, 0.5, 4.0;
+  EXPECT_EQ(maxOffDiagonalRatio(c), 0.25);
+  c(1, 1) = 0.0;  // a coupled mode without damping of its own
+  EXPECT_TRUE(std::isinf(maxOffDiagonalRatio(c)));
+}
+
 // Rayleigh damping: the modal superposition of eq. 20 equals the direct solution of eq. 18.
 TEST(Frf, DirectEqualsModalForRayleighDamping) {
   const SecondOrderSystem s = test::randomVehicle(24, 6, 8, 17);

@@ -225,6 +225,16 @@ TEST_F(ModelYamlTest, SaveThenLoadReproducesTheModelExactly) {
   EXPECT_EQ(formatModelYaml(loaded), readText(path));  // a fixed point after one save
 }
 
+// YAML 1.1 (PyYAML, ROS's rosparam) reads 1e-05 as a string: a float needs its '.', which the
+// writer puts before the exponent.
+TEST_F(ModelYamlTest, WrittenExponentsAreYaml11Floats) {
+  const fem::Model model =
+      loadModelYaml(write("tiny_x.yaml", replaced("x: [1, 0, 0]", "x: [1e-05, 0, 0]")));
+  const std::string text = formatModelYaml(model);
+  EXPECT_NE(text.find("1.0e-05"), std::string::npos) << text;
+  EXPECT_EQ(text.find("[1e-05"), std::string::npos) << text;
+}
+
 TEST_F(ModelYamlTest, EmptyModelRoundTrips) {
   fem::Model empty;
   empty.gravity = Vector3(0.0, -0.0, -1.62);  // the Moon; -0.0 must survive too
@@ -436,6 +446,9 @@ TEST_F(ModelYamlTest, RejectsBadDofs) {
                   {"rigid_joints[0].dofs: no DOFs given"});
   expectLoadError("set_dof.yaml", replaced("dof: uz", "dof: 7"),
                   {"sets.tip[0].dof: unknown DOF '7'"});
+  // A set item names one DOF: two digits are not the first of them.
+  expectLoadError("set_dofs_digits.yaml", replaced("dof: uz", "dof: \"12\""),
+                  {"sets.tip[0].dof: unknown DOF '12'"});
   expectLoadError("set_dof_key.yaml", replaced("dof: uz", "dofs: uz"),
                   {"sets.tip[0].dofs: unknown key (allowed keys: node, dof)"});
 }
@@ -462,8 +475,9 @@ TEST_F(ModelYamlTest, RejectsGravityBeyondAHundredG) {
   // Just beyond the bound reads as typed, not as the bound.
   expectLoadError("gravity_edge.yaml", std::string(kBase) + "gravity: [0, 0, -1000.0001]\n",
                   {"gravity: magnitude 1000.0001 m/s^2 is beyond 1000 m/s^2"});
-  // The Moon, Jupiter and a 100 g shock stay accepted.
-  for (const char* gravity : {"[0, 0, -1.62]", "[0, 0, -24.79]", "[0, 0, -980.665]"}) {
+  // The Moon, Jupiter, a 100 g shock and the bound itself stay accepted.
+  for (const char* gravity :
+       {"[0, 0, -1.62]", "[0, 0, -24.79]", "[0, 0, -980.665]", "[0, 0, -1000]"}) {
     const std::string path =
         write("gravity_ok.yaml", std::string(kBase) + "gravity: " + gravity + "\n");
     EXPECT_NO_THROW(loadModelYaml(path)) << gravity;
@@ -498,6 +512,13 @@ TEST_F(ModelYamlTest, RejectsUnknownAndRepeatedKeys) {
       {"materials[0]: give either G (shear modulus) or nu (Poisson's ratio), not both"});
   expectLoadError("bad_nu.yaml", replaced("nu: 0.3", "nu: 0.7"),
                   {"materials[0].nu: Poisson's ratio 0.7 is outside (-1, 0.5]"});
+  // Both ends of (-1, 0.5]: -1 (G = E / 0) refused by its range, 0.5 (incompressible) taken with
+  // G = E / (2 (1 + nu)) = E / 3.
+  expectLoadError("nu_minus_one.yaml", replaced("nu: 0.3", "nu: -1"),
+                  {"materials[0].nu: Poisson's ratio -1 is outside (-1, 0.5]"});
+  const fem::Model incompressible =
+      loadModelYaml(write("nu_half.yaml", replaced("nu: 0.3", "nu: 0.5")));
+  EXPECT_EQ(incompressible.materials[0].shear_modulus, 2.1e11 / 3.0);
   expectLoadError("k_and_kx.yaml",
                   replaced("k: [1, 1, 1, 0, 0, 0]", "k: [1, 1, 1, 0, 0, 0], kx: 3"),
                   {"springs[0]: give either k: [6 values] or the keys kx..krz, not both"});

@@ -117,6 +117,7 @@ TEST_P(MatFileTest, RoundTripOfEveryKind) {
   EXPECT_EQ(in.readStrings("names", 3), (std::vector<std::string>{"hull uz", "", "node 12 uz"}));
   EXPECT_TRUE(in.readStrings("no_names").empty());
   EXPECT_THROW(in.readMatrix("A", 7, 4), InputError);
+  EXPECT_THROW(in.readMatrix("A", 8, 3), InputError);  // the rows are checked as the columns
   EXPECT_THROW(in.readMatrix("missing"), InputError);
   EXPECT_THROW(in.readMatrix("text"), InputError);
   EXPECT_THROW(in.readString("A"), InputError);
@@ -374,6 +375,9 @@ TEST(MatFile, WriterChecksNamesAndLeavesNothingWithoutClose) {
     io::MatWriter out(path);
     EXPECT_THROW(out.writeScalar("1abc", 1.0), InputError);
     EXPECT_THROW(out.writeScalar("a b", 1.0), InputError);
+    // MATLAB's namelengthmax: 63 characters, not 64.
+    EXPECT_NO_THROW(out.writeScalar(std::string(63, 'a'), 1.0));
+    EXPECT_THROW(out.writeScalar(std::string(64, 'b'), 1.0), InputError);
     out.writeScalar("x", 1.0);
     EXPECT_THROW(out.writeScalar("x", 2.0), InputError);
   }

@@ -347,6 +347,16 @@ TEST(NodeBadParameters, MaxSpeedBeyondTheModelsRangeIsRefused) {
                 "--speed-kmh), got 100");
 }
 
+// Rates and frames that cannot be meant: each named (review 145).
+TEST(NodeBadParameters, ImpossibleRatesFramesAndThresholdsAreNamed) {
+  expectRefused("fast_publish", "_rate:=100 _publish_rate:=200",
+                "/fast_publish/publish_rate: must not exceed ~rate (100 Hz), got 200");
+  expectRefused("same_frames", "_odom_frame:=base_link",
+                "/same_frames/base_frame: must differ from ~odom_frame");
+  expectRefused("mac_above_one", "_reduction/mac_threshold:=1.5",
+                "/mac_above_one/reduction/mac_threshold: must be <= 1");
+}
+
 // ~initial_speed: 0 .. ~max_speed (a parameter has no standstill noise: -0.0005 is refused as
 // well); each bound named.
 TEST(NodeBadParameters, InitialSpeedOutsideZeroToMaxSpeedIsNamed) {
@@ -565,7 +575,10 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
       runNode("__name:=said _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
                   " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
                   " _rate:=40 _publish_rate:=15 _speed_timout:=1 _frame_prefix:=veh1"
-                  " _tf_prefix:=veh1/",
+                  " _tf_prefix:=veh1/ _sped_timout:=2"
+                  // accepted: 0 turns the ground-contact check off; one step (1/40 s) typed
+                  // to rounding
+                  " _ground_contact_rate:=0 _catch_up_limit:=0.02499999",
               test::requiredParam<int>(private_nh, "bad_parameter_timeout"));
   EXPECT_EQ(run.exit_status, 124) << "the node should run until `timeout` stops it:\n"
                                   << run.output;
@@ -575,6 +588,11 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
       run.output.find(
           "parameter ~speed_timout (did you mean ~speed_timeout?) is set but not a parameter"),
       std::string::npos)
+      << run.output;
+  // Two edits away (a letter dropped, another one) is still suggested.
+  EXPECT_NE(run.output.find(
+                "parameter ~sped_timout (did you mean ~speed_timeout?) is set but not a parameter"),
+            std::string::npos)
       << run.output;
   // ROS 1's retired tf_prefix, what ~frame_prefix does here.
   EXPECT_NE(run.output.find("parameter ~tf_prefix (did you mean ~frame_prefix?) is set but not"),

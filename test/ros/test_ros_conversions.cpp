@@ -391,6 +391,12 @@ TEST(TrackBag, SaveLoadRoundTripAndCoverageAhead) {
   ASSERT_EQ(bag.speeds.size(), summary.speed_messages);
   ASSERT_EQ(bag.clocks.size(), summary.clock_messages);
   EXPECT_NEAR(summary.duration, (terrain::kTrackLength + options.behind) / options.speed, 1e-9);
+  // Speeds at k / rate for k = 0 .. floor(T rate): the run's whole length [0, T] is commanded.
+  EXPECT_EQ(summary.speed_messages,
+            static_cast<std::size_t>(std::floor(summary.duration * options.speed_rate)) + 1);
+  ASSERT_FALSE(bag.speeds.empty());
+  EXPECT_GE((bag.speeds.back().first - ros::Time(options.start_time)).toSec(),
+            summary.duration - 1.0 / options.speed_rate);
   for (const auto& [time, v] : bag.speeds)
     EXPECT_EQ(v, options.speed);
   // geometry_msgs/TwistStamped by default, each stamped at the bag time it is played at: the
@@ -583,6 +589,12 @@ TEST(TrackBag, InvalidOptionsNameTheField) {
   const std::string never = inputErrorOf([&] { trackRun(options); });
   EXPECT_NE(never.find("never ends"), std::string::npos) << never;
   options.speed = 5.0;
+  // A bag starting at time 0 would be refused by rosbag itself ("less than ros::TIME_MIN"):
+  // named here, as the option it is.
+  options.start_time = 0.0;
+  const std::string at_zero = inputErrorOf([&] { trackRun(options); });
+  EXPECT_NE(at_zero.find("start_time"), std::string::npos) << at_zero;
+  options.start_time = 1000.0;
   options.track = "moon_craters";
   EXPECT_THROW(writeTrackBag(temporaryPath("never.bag"), options), InputError);
 }

@@ -293,6 +293,11 @@ class TvdCliTest(unittest.TestCase):
                                 *(["--count", "6"] if command == "modes" else []))
                 self.assertIn(line, text.stdout, command)
                 self.assertNotIn("torsion bars", text.stderr, command)
+            # The sag is down (z < 0), printed as a positive sag beside its z.
+            sag = statics["hull_sag_m"]
+            self.assertLess(sag, 0.0)
+            self.assertIn(f"hull at rest: sag {-sag * 1e3:.3f} mm (z {sag * 1e3:.3f} mm)",
+                          text.stdout)
         self.assertAlmostEqual(modes["wheel_rate_estimate"]["sag_m"], 0.0162, delta=5e-5)
 
         light = self.tvd_json("statics", "--vehicle", OWN_VEHICLE, "--variant", "tracked")
@@ -2189,6 +2194,8 @@ class TvdCliTest(unittest.TestCase):
             self.assertAlmostEqual(space[i, j], best, places=12)
             for m in r["other_matches"]:
                 self.assertTrue(tv_global[m["tracked_mode"] - 1], m)
+            # "best tracked match, then (other matches ...)": the best is not among the others.
+            self.assertNotIn(r["tracked_mode"], [m["tracked_mode"] for m in r["other_matches"]])
             # matched: the best MAC reaches the threshold (0.7), else it is shown, not a match.
             self.assertEqual(r["matched"], r["mac"] >= d["threshold"], r)
         pitch = next(r for r in rows if r["type"] == "pitch")
@@ -2199,6 +2206,10 @@ class TvdCliTest(unittest.TestCase):
         roll = next(r for r in rows if r["type"] == "roll")
         self.assertEqual(roll["tracked_type"], "roll")
         self.assertGreater(roll["mac"], 0.9)
+        # The text gives a repeated frequency's modes as one row "a-b", b - a + 1 of them.
+        text = self.tvd("mac", "--vehicle", VEHICLE, "--count", "40").stdout
+        a = wheels[0]["untracked_mode"]
+        self.assertRegex(text, rf"\n\s*{a}-{a + 10}\s+[0-9.]+\s+wheel bounce x11\s")
         # reduce's name of the threshold is taken too, and moves the matches with it.
         strict = self.tvd_json("mac", "--vehicle", VEHICLE, "--count", "40", "--mac-threshold",
                                "0.95")
@@ -3204,6 +3215,10 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(result["static"]["solved"])
         self.assertEqual(result["static"]["at"], "node 21 uz")
         self.assertAlmostEqual(result["static"]["max_translation_m"] * 1e3, 2.54214, delta=2e-5)
+        # The text gives the same number in mm.
+        text = self.tvd("modes", "--model", model, "--count", "2").stdout
+        self.assertIn(f"largest translation {result['static']['max_translation_m'] * 1e3:.6f} mm "
+                      f"at node 21 uz", text)
         # Without gravity there is nothing to solve, and the report says so.
         weightless = self.path("weightless.yaml")
         with open(model) as f, open(weightless, "w") as g:
@@ -3223,13 +3238,22 @@ class TvdCliTest(unittest.TestCase):
                     "springs:\n  - {nodes: [1, ground], k: [100, 100, 100, 0, 0, 0]}\n")
         self.assert_input_error(["modes", "--model", model], "offset_mass.yaml",
                                 "the mass matrix is singular", "has no mass or inertia")
+        # The same on a skewed offset, whose pivot is not exactly 0 but rounding (1e-12 of the
+        # largest): refused too, not 6 modes that do not exist.
+        skewed = self.path("skewed_offset_mass.yaml")
+        with open(skewed, "w") as f:
+            f.write("nodes:\n  - {id: 1, x: [0, 0, 0]}\n"
+                    "masses:\n  - {node: 1, mass: 1.7, offset: [0.3, -0.7, 0.11]}\n"
+                    "springs:\n  - {nodes: [1, ground], k: [100, 100, 100, 0, 0, 0]}\n")
+        self.assert_input_error(["modes", "--model", skewed], "skewed_offset_mass.yaml",
+                                "the mass matrix is singular")
 
     def test_free_dof_without_mass_is_named(self):
         model = self.path("no_mass.yaml")
         with open(model, "w") as f:
             f.write("nodes:\n  - {id: 1, x: [0, 0, 0]}\nsprings:\n  - {nodes: [1, ground], kz: 1e4}\n")
         self.assert_input_error(["modes", "--model", model], "no_mass.yaml", "node 1 uz",
-                                "no mass or inertia")
+                                "is free but has no mass or inertia")
 
     def test_eigenvalues_beyond_double_range_are_a_solver_error_with_a_hint(self):
         # A pad of 1e-300 kg passes the description's checks (positive) but puts eigenvalues
