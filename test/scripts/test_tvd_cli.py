@@ -3215,6 +3215,17 @@ class TvdCliTest(unittest.TestCase):
         self.assertTrue(result["static"]["solved"])
         self.assertEqual(result["static"]["at"], "node 21 uz")
         self.assertAlmostEqual(result["static"]["max_translation_m"] * 1e3, 2.54214, delta=2e-5)
+        # The same beam along y bends about x: its tip rotation rx (3.58e-3 rad) is larger than
+        # its deflection in m and must not be taken for the largest translation.
+        along_y = self.path("cantilever_along_y.yaml")
+        with open(model) as f, open(along_y, "w") as g:
+            g.write(re.sub(r"x: \[([0-9.e+-]+), 0, 0\]", r"x: [0, \1, 0]", f.read()))
+        with open(along_y) as f:
+            self.assertIn("{id: 21, x: [0, 1, 0]}", f.read())
+        turned = self.tvd_json("modes", "--model", along_y, "--count", "2")
+        self.assertEqual(turned["static"]["at"], "node 21 uz")
+        self.assertAlmostEqual(turned["static"]["max_translation_m"],
+                               result["static"]["max_translation_m"], delta=1e-12)
         # The text gives the same number in mm.
         text = self.tvd("modes", "--model", model, "--count", "2").stdout
         self.assertIn(f"largest translation {result['static']['max_translation_m'] * 1e3:.6f} mm "
