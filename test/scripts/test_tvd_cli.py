@@ -2206,6 +2206,15 @@ class TvdCliTest(unittest.TestCase):
         roll = next(r for r in rows if r["type"] == "roll")
         self.assertEqual(roll["tracked_type"], "roll")
         self.assertGreater(roll["mac"], 0.9)
+        # A MAC equal to the threshold matches ("reaches the threshold"): the roll row's MAC, at
+        # full precision from mac.mat, given as the threshold.
+        self.tvd("mac", "--vehicle", VEHICLE, "--count", "40", "--out", self.path("mac_full"))
+        exact = scipy.io.loadmat(os.path.join(self.path("mac_full"), "mac.mat"))["eigenspace_mac"]
+        edge = repr(float(exact[roll["untracked_mode"] - 1, roll["tracked_mode"] - 1]))
+        at_edge = self.tvd_json("mac", "--vehicle", VEHICLE, "--count", "40", "--mac-threshold",
+                                edge)
+        edge_roll = next(r for r in at_edge["correlation"] if r["type"] == "roll")
+        self.assertTrue(edge_roll["matched"], (edge, edge_roll))
         # The text gives a repeated frequency's modes as one row "a-b", b - a + 1 of them.
         text = self.tvd("mac", "--vehicle", VEHICLE, "--count", "40").stdout
         a = wheels[0]["untracked_mode"]
