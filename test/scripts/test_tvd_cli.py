@@ -661,7 +661,14 @@ class TvdCliTest(unittest.TestCase):
         self.assertEqual([c["name"] for c in b["chain_wheel_contacts"]],
                          [c["name"] for c in contacts])
         text = self.tvd("statics", "--vehicle", rollers, "--contact", "bilateral").stdout
-        self.assertIn("chain wheel contacts pulling (would leave the wheel): left sprocket", text)
+        # "pulling": the bilateral contacts whose load is negative, counted per side and wheel.
+        btotal = {k: sum(c["side"] == "left" and c["wheel"] == k for c in b["chain_wheel_contacts"])
+                  for k in kinds}
+        pulling = {k: sum(c["side"] == "left" and c["wheel"] == k and c["load_n"] < 0.0
+                          for c in b["chain_wheel_contacts"]) for k in kinds}
+        self.assertGreater(pulling["sprocket"], 0, b["chain_wheel_contacts"])
+        self.assertIn("chain wheel contacts pulling (would leave the wheel): left "
+                      + ", ".join(f"{k} {pulling[k]} of {btotal[k]}" for k in kinds), text)
         t = self.tvd_json("statics", "--vehicle", VEHICLE, "--variant", "untracked")
         self.assertEqual(t["chain_wheel_contacts"], [])
         self.assertEqual(t["released_chain_wheel_contacts"], 0)
