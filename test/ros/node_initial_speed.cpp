@@ -234,20 +234,20 @@ TEST_F(NodeInitialSpeed, EveryRunStartsAtTheInitialSpeedAndTimesOutFromItsStart)
       },
       10.0))
       << diagnostics_.describe();
-  EXPECT_EQ(diagnostics_.value(": loop", held_runs), held_at_start + 2.0)
-      << diagnostics_.describe();
-  EXPECT_EQ(diagnostics_.value(": loop", "holds ended without a speed (total)"), 0.0)
-      << diagnostics_.describe();
-  EXPECT_EQ(diagnostics_.value(": loop", "start holds ended without terrain (total)"),
-            expired_at_start)
-      << diagnostics_.describe();
-  EXPECT_EQ(diagnostics_.value(": loop", "restarts held for the loop's terrain (total)"), 1.0)
-      << diagnostics_.describe();
-  EXPECT_EQ(diagnostics_.value(": loop", "holds ended without terrain (total)"), 0.0)
-      << diagnostics_.describe();
-  EXPECT_EQ(diagnostics_.value(": terrain", "steps with uncovered contacts (total)"),
-            uncovered_at_start)
-      << diagnostics_.describe();
+  struct Count {
+    std::string status, key;
+    double expected;
+  };
+  const std::vector<Count> counts = {
+      {": loop", held_runs, held_at_start + 2.0},
+      {": loop", "holds ended without a speed (total)", 0.0},
+      {": loop", "start holds ended without terrain (total)", expired_at_start},
+      {": loop", "restarts held for the loop's terrain (total)", 1.0},
+      {": loop", "holds ended without terrain (total)", 0.0},
+      {": terrain", "steps with uncovered contacts (total)", uncovered_at_start}};
+  for (const Count& c : counts)
+    EXPECT_EQ(diagnostics_.value(c.status, c.key), c.expected) << c.key << "\n"
+                                                               << diagnostics_.describe();
 }
 
 }  // namespace
