@@ -259,10 +259,17 @@ TEST_F(NodeSpeedStamped, StampedSpeedsApplyAtTheStepOfTheirStamp) {
   {
     SCOPED_TRACE("timeout");
     const ros::Time t0 = t_;
-    ASSERT_TRUE(timeout_speeds_.count(t0) > 0) << "the second node published nothing";
+    // runFor() waits for the first node's samples: the second may lag a few /clock ticks behind
+    // on a loaded machine (it once had not published t0 yet). Its sample at t0 also puts its
+    // ROS time at t0 when the speed arrives, from which ~speed_timeout counts.
+    const auto second_at = [&](const ros::Time& t) {
+      return test::spinUntil([&] { return timeout_speeds_.count(t) > 0; }, 10.0);
+    };
+    ASSERT_TRUE(second_at(t0)) << "the second node published nothing";
     sendOn(timeout_stamped_pub_, 4.0, t0);
     sendOn(timeout_stamped_pub_, 8.0, t0 + ros::Duration(0.8));
     ASSERT_TRUE(runFor(1.2));
+    ASSERT_TRUE(second_at(t_)) << "the second node fell behind the clock";
     const auto samples = std::vector<std::pair<ros::Time, double>>(timeout_speeds_.upper_bound(t0),
                                                                    timeout_speeds_.upper_bound(t_));
     ASSERT_FALSE(samples.empty());
