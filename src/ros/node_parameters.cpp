@@ -341,7 +341,8 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("max_speed", "must be at most " + brief(dynamics::kMaxSpeedKmh / kKmhPerMs) +
                                     " m/s (" + brief(dynamics::kMaxSpeedKmh) +
                                     " km/h, as tvd's --speed-kmh), got " + brief(p.max_speed));
-  // Checked as a speed message is (speedProblem): within 0 .. ~max_speed.
+  // Within 0 .. ~max_speed, as a speed message (speedProblem), but without its standstill noise
+  // (-0.0005 is a typed value, not a physics engine's stopped vehicle).
   p.initial_speed = in.nonNegative("initial_speed", p.initial_speed, "m/s");
   if (p.initial_speed > p.max_speed)
     throw in.error("initial_speed", "must be at most ~max_speed (" + brief(p.max_speed) +

@@ -439,10 +439,11 @@ void VehicleDynamicsNode::takeInitialSpeed(const ros::Time& t) {
 void VehicleDynamicsNode::holdForFirstPatch() {
   // A vehicle at rest waits for its terrain where it stands; one started moving would drive off
   // over the flat ground of the start before the source's first patches are in (a bag's come on
-  // their own connection, a few /clock ticks after the first: 2 steps of "terrain underrun" at
-  // the start of a replay entered at speed). It is held for the first patch, at most
-  // holdLimit(), as a bag loop's restart is (the held steps are then stepped on it exactly);
-  // beyond, it drives on over the flat ground, which the terrain diagnostics say.
+  // their own connection, a few /clock ticks after the first: up to 10 steps of "terrain
+  // underrun" at the start of a replay entered at speed). It is held until its terrain covers
+  // the contacts (terrainCoversHeldSteps), at most holdLimit(), as a bag loop's restart is (the
+  // held steps are then stepped on it exactly); beyond, it drives on over the flat ground, which
+  // the terrain diagnostics say.
   // On real time there is no replay to wait for, and the held steps would be caught up in one
   // late tick: a live source's patches reach the node as it runs (the contacts hold flat ground
   // until they do, which the terrain diagnostics say).

@@ -129,7 +129,8 @@ void VehicleDynamicsNode::diagnoseTerrain(diagnostic_updater::DiagnosticStatusWr
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "no terrain: the patches received lay wholly behind the vehicle (dropped)");
   } else if (hold_.active && (clock_started_ || !hold_.at_start)) {
-    // A bag loop's first patches due any moment: the restarted vehicle waits for them, unstepped.
+    // A bag loop's first patches due any moment (or a run entered at speed, its terrain): the
+    // restarted vehicle waits for them, unstepped. (Before the first /clock nothing steps yet.)
     status.summary(diagnostic_msgs::DiagnosticStatus::OK,
                    hold_.at_start
                        ? "holding the vehicle, started at ~initial_speed, until the terrain "

@@ -117,7 +117,8 @@ class VehicleDynamicsNode {
     std::uint64_t patches_reapplied = 0, speeds_reapplied = 0;  // after a jump back
     // Restarts after a jump back held for the loop's first patch, and holds that ran out.
     std::uint64_t terrain_holds = 0, terrain_holds_expired = 0;
-    // Runs started at ~initial_speed held for their first patch, and those it did not reach.
+    // Runs started at ~initial_speed held (a step or more) until their terrain covered the
+    // contacts, and holds that ran out before it did.
     std::uint64_t start_holds = 0, start_holds_expired = 0;
     std::uint64_t speed_holds_expired = 0;  // the terrain came, an awaited speed did not
   };
