@@ -76,13 +76,11 @@ class NodeInitialSpeed : public ::testing::Test {
   /// Runs the clock on by `seconds` a step at a time (the timeout is checked at every tick: a
   /// step per /clock puts its onset on the step after it passes).
   bool runFor(double seconds) {
-    const auto steps = static_cast<int>(std::lround(seconds / h_));
-    for (int k = 0; k < steps; ++k) {
-      t_ += ros::Duration(h_);
-      if (!advanceTo(t_))
-        return false;
-    }
-    return true;
+    // A whole number of steps: a /clock between two steps would wait for a sample never published.
+    const ros::Duration whole = ros::Duration(h_) * static_cast<double>(std::lround(seconds / h_));
+    return test::runClockFor(clock_pub_, &t_, whole.toSec(), h_, [&](const ros::Time& t) {
+      return !samples_.empty() && samples_.back().stamp == t;
+    });
   }
 
   /// Runs the clock on by `steps` steps while the node holds its restart for the terrain (it
