@@ -8,6 +8,8 @@
 
 #include <pthread.h>
 
+#include <ros/topic_manager.h>
+
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/ros/online_names.h"
@@ -172,10 +174,13 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
 template <class M>
 void VehicleDynamicsNode::advertise(const std::string& topic, std::uint32_t queue_size,
                                     CountedPublisher* out) {
-  // The callbacks run on the spin thread, which starts after the constructor: `publisher` is
-  // assigned by then.
-  const auto recount = [out](const ros::SingleSubscriberPublisher&) {
-    out->subscribers.store(out->publisher.getNumSubscribers(), std::memory_order_relaxed);
+  // The count is read by the topic's name, as Publisher::getNumSubscribers() does, not through
+  // `publisher`: that is assigned when advertise() returns, and where a spinner already runs (the
+  // node embedded in another process) a subscriber's connect callback may come before.
+  const auto recount = [out](const ros::SingleSubscriberPublisher& link) {
+    out->subscribers.store(static_cast<std::uint32_t>(
+                               ros::TopicManager::instance()->getNumSubscribers(link.getTopic())),
+                           std::memory_order_relaxed);
   };
   out->publisher = nh_.advertise<M>(topic, queue_size, recount, recount);
   // A shutdown after the check that follows loadVehicle() leaves an invalid publisher, which a
