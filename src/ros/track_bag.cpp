@@ -1,7 +1,12 @@
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -48,8 +53,10 @@ void checkOptions(const TrackBagOptions& o) {
   require(std::isfinite(o.speed_rate) && o.speed_rate > 0.0, "speed_rate", o.speed_rate, "> 0 Hz");
   require(std::isfinite(o.clock_rate) && o.clock_rate >= 0.0, "clock_rate", o.clock_rate,
           ">= 0 Hz");
-  require(std::isfinite(o.start_time) && o.start_time > 0.0 && o.start_time < 4e9, "start_time",
-          o.start_time, "in (0, 4e9) s");
+  // At least ros::TIME_MIN (1 ns): rosbag refuses a message stamped before it, and a smaller
+  // start rounds to time 0.
+  require(std::isfinite(o.start_time) && o.start_time >= 1e-9 && o.start_time < 4e9, "start_time",
+          o.start_time, "in [1e-9, 4e9) s");
 }
 
 /// The run's terrain in the vehicle path frame (terrain_io.h: loadTrack), its first station moved
@@ -194,16 +201,14 @@ TrackRun trackRun(const TrackBagOptions& options) {
   return std::move(extent.run);
 }
 
-TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options) {
-  const TrackRun run = trackRun(options);
-  TrackBagSummary summary;
-  summary.end_station = run.end_station;
-  summary.duration = run.duration;
-  summary.covered_from = run.covered_from;
-  summary.covered_until = run.covered_until;
+namespace {
+
+// The messages of `run`, in a bag at `path`.
+void writeTrackBagFile(const std::string& path, const TrackRun& run, const TrackBagOptions& options,
+                       TrackBagSummary* out) {
+  TrackBagSummary& summary = *out;
   const ros::Time start(options.start_time);
   const auto at = [&](double t) { return start + ros::Duration(t); };
-
   rosbag::Bag bag(path, rosbag::bagmode::Write);
   TerrainProfile msg;
   msg.header.frame_id = options.frame_id;
@@ -245,6 +250,35 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
     }
   }
   bag.close();
+}
+
+}  // namespace
+
+TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& options) {
+  const TrackRun run = trackRun(options);
+  TrackBagSummary summary;
+  summary.end_station = run.end_station;
+  summary.duration = run.duration;
+  summary.covered_from = run.covered_from;
+  summary.covered_until = run.covered_until;
+  // Written under a temporary name next to `path` and renamed onto it once closed, as tvd's
+  // outputs are: a run that fails half way (a full disk, rosbag refusing a message) leaves no
+  // partial bag under the final name, nor an older bag there damaged.
+  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+  try {
+    writeTrackBagFile(temporary, run, options, &summary);
+  } catch (const rosbag::BagException& e) {
+    std::remove(temporary.c_str());
+    throw InputError("cannot write the bag " + path + ": " + e.what());
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    std::remove(temporary.c_str());
+    throw InputError("cannot move the written bag onto " + path + ": " + std::strerror(error));
+  }
   return summary;
 }
 

@@ -14,6 +14,7 @@
 #include <ros/names.h>
 
 #include "command_line_errors.h"
+#include "commands.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
@@ -41,7 +42,8 @@ int run(int argc, char** argv) {
       ->check(CLI::ExistingFile)
       ->excludes(speed_option);
   CLI::Option* out_option =
-      app.add_option("--out", out, "bag file to write (required unless --peak-speed)");
+      app.add_option("--out", out, "bag file to write (required unless --peak-speed)")
+          ->check(tracked_vehicle_dynamics::tools::outputFile({".bag"}));
   bool peak_only = false;
   app.add_flag("--peak-speed", peak_only,
                "print the run's highest speed [m/s] (the constant speed, or the profile's largest "
@@ -75,6 +77,16 @@ int run(int argc, char** argv) {
                  "/veh1/speed_stamped, for a node in it; bags of several vehicles then play "
                  "together from one rosbag play --clock (default: /terrain_profile, "
                  "/speed_stamped)");
+  // An empty number ("--lookahead ''", a shell variable left unset) is not read as 0, as in tvd.
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    if (type == "FLOAT" || type == "INT" || type == "UINT")
+      option->check(CLI::Validator(
+          [](std::string& text) {
+            return text.empty() ? std::string("'' is not a number") : std::string();
+          },
+          ""));
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -129,6 +141,9 @@ int run(int argc, char** argv) {
   if (offset->count() > 0)
     options.lateral_offset = lateral_offset;
   try {
+    // The track may be a terrain file: a bag written over it, or over the profile, destroys it.
+    tracked_vehicle_dynamics::tools::refuseOutputOverInput(
+        "", "--out", out, {{"--track", options.track}, {"--speed-profile", profile_file}});
     if (!profile_file.empty())
       options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
     if (peak_only) {

@@ -123,7 +123,8 @@ inline CLI::Validator outputFile(const std::vector<std::string>& extensions) {
 
 /// Refuses, before any work, an output file that is one of the command's input files (the same
 /// file however spelt: std::filesystem::equivalent), which writing it would destroy. `inputs`:
-/// (option, path) pairs; empty paths and names of no file (built-in tracks) pass.
+/// (option, path) pairs; empty paths and names of no file (built-in tracks) pass. `command`
+/// prefixes the message (a tvd subcommand; empty for a program of one command).
 inline void refuseOutputOverInput(const std::string& command, const std::string& out_option,
                                   const std::string& out,
                                   const std::vector<std::pair<std::string, std::string>>& inputs) {
@@ -132,7 +133,8 @@ inline void refuseOutputOverInput(const std::string& command, const std::string&
   for (const auto& [option, path] : inputs) {
     std::error_code ec;
     if (!path.empty() && std::filesystem::equivalent(out, path, ec) && !ec)
-      throw InputError(command + ": " + out_option + " " + out + " is the " + option +
+      throw InputError((command.empty() ? "" : command + ": ") + out_option + " " + out +
+                       " is the " + option +
                        " file: writing it would destroy the input; write elsewhere");
   }
 }

@@ -320,6 +320,12 @@ void registerModesCommand(CLI::App& app) {
   cmd->callback([opt, model, vehicle, count]() {
     if (model->count() == 0 && vehicle->count() == 0)
       throw InputError("modes: give --model FILE or --vehicle FILE");
+    // The files the directory receives: none of them may be the input.
+    if (!opt->out_dir.empty())
+      for (const char* name : {"modes.csv", "shapes.csv", "modes.mat", "node_shapes.csv"})
+        refuseOutputOverInput("modes", "--out",
+                              (std::filesystem::path(opt->out_dir) / name).string(),
+                              {{"--model", opt->model_file}, {"--vehicle", opt->vehicle_file}});
     opt->count_given = count->count() > 0;
     if (vehicle->count())
       runVehicle(*opt);

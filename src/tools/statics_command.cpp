@@ -385,7 +385,10 @@ void registerStaticsCommand(CLI::App& app) {
                   "front pads and pitches the nose down; -15 .. 15; 0 (default): at rest")
       ->check(numberIn(-15.0, 15.0, "m/s^2"));
   cmd->add_flag("--json", opt->json, "print a JSON document instead of the tables");
-  cmd->callback([opt]() { run(*opt); });
+  cmd->callback([opt]() {
+    refuseOutputOverInput("statics", "--out", opt->out_file, {{"--vehicle", opt->vehicle_file}});
+    run(*opt);
+  });
 }
 
 }  // namespace tools

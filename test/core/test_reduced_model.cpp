@@ -351,6 +351,61 @@ TEST(MatFile, ImpossibleDimensionsReadAsACorruptedFile) {
   std::remove(path.c_str());
 }
 
+// matio allocates what an array's header claims before it reads: a cell of texts claiming 1e9
+// entries (8 GB and 44 s) or a name of 2^31 bytes (2 GB) is refused from the element's own size
+// first, naming the variable, or where it starts when its name cannot be read.
+TEST(MatFile, HeadersClaimingMoreThanTheirElementHoldsAreCorrupted) {
+  const std::string path = tempPath("cell_dims.mat");
+  {
+    io::MatWriter out(path, io::MatFormat::Mat5, /*compress=*/false);
+    out.writeStrings("names", {"a", "bb", "ccc"});
+    out.close();
+  }
+  const std::string bytes = readBytes(path);
+  // miMATRIX tag (8), array flags (8 + 8), dimensions tag (8), then the dimensions.
+  constexpr std::size_t kDims = 128 + 8 + 16 + 8;
+  constexpr std::size_t kName = kDims + 8;
+  std::int32_t stored[2];
+  std::memcpy(stored, bytes.data() + kDims, sizeof(stored));
+  ASSERT_EQ(stored[0], 3);  // the layout above
+  ASSERT_EQ(stored[1], 1);
+  const auto refusal = [&](const std::string& damaged) {
+    writeBytes(path, damaged);
+    std::string what;
+    try {
+      const io::MatReader in(path);
+      in.readStrings("names");
+    } catch (const InputError& e) {
+      what = e.what();
+    }
+    return what;
+  };
+  std::string damaged = bytes;
+  const std::int32_t claimed[2] = {1000000000, 1};
+  std::memcpy(damaged.data() + kDims, claimed, sizeof(claimed));
+  const std::uint64_t element_bytes = bytes.size() - 128 - 8;  // the one variable's data
+  EXPECT_EQ(refusal(damaged),
+            path + ": variable 'names' claims 1000000000x1 elements, more than its " +
+                std::to_string(element_bytes) + " bytes hold (corrupted file)");
+  // One entry more than written: the fourth lies beyond the variable.
+  damaged = bytes;
+  const std::int32_t one_more[2] = {4, 1};
+  std::memcpy(damaged.data() + kDims, one_more, sizeof(one_more));
+  EXPECT_EQ(refusal(damaged),
+            path + ": variable 'names' has its cell element 4 beyond its end (corrupted file)");
+  // The name: a full tag (type miINT8, count) whose count is 2^31.
+  damaged = bytes;
+  const std::uint32_t name_tag[2] = {1, 0x80000000u};
+  std::memcpy(damaged.data() + kName, name_tag, sizeof(name_tag));
+  EXPECT_EQ(refusal(damaged), path +
+                                  ": the variable at byte 128 has its name claiming 2147483648 "
+                                  "bytes, beyond its end (corrupted file)");
+  // Untouched, it reads back.
+  writeBytes(path, bytes);
+  EXPECT_EQ(io::MatReader(path).readStrings("names"), (std::vector<std::string>{"a", "bb", "ccc"}));
+  std::remove(path.c_str());
+}
+
 TEST(MatFile, RefusesNonFiniteValuesNamingTheEntry) {
   const std::string path = tempPath("nan.mat");
   Matrix a = Matrix::Ones(3, 3);

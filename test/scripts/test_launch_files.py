@@ -424,7 +424,12 @@ class LaunchFilesTest(unittest.TestCase):
                                (["--out"], "tvd_make_bag: error: --out needs a value after it"),
                                (["---"], "tvd_make_bag: error: unknown option --- ("),
                                (["-=1"], "tvd_make_bag: error: unknown option - ("),
-                               (["--speed-kmh", "30"], "tvd_make_bag: error: --out is required")]:
+                               (["--speed-kmh", "30"], "tvd_make_bag: error: --out is required"),
+                               (["--lookahead", "", "--out", "x.bag"],
+                                "tvd_make_bag: error: --lookahead: '' is not a number"),
+                               (["--out", "x.txt"], "'x.txt' must end in .bag"),
+                               (["--start-time", "1e-308", "--out", "x.bag"],
+                                "start_time = 1e-308 must be in [1e-9, 4e9) s")]:
             result = make_bag(*args)
             self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
             self.assertIn(expected, result.stderr)
@@ -435,6 +440,28 @@ class LaunchFilesTest(unittest.TestCase):
             self.assertIn("tvd_make_bag: error: --namespace must be a global namespace such as "
                           "/veh1", result.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.work, "x.bag")))
+        # A bag over its own terrain file or speed profile is refused, and the input left as it
+        # was: by its extension, or (an input named .bag) as the same file however spelt.
+        track = os.path.join(self.work, "own_track.csv")
+        with open(track, "w") as f:
+            f.write("x,h\n0,0\n10,0.1\n20,0\n")
+        profile = os.path.join(self.work, "own_profile.bag")
+        with open(profile, "w") as f:
+            f.write("time_s,speed_kmh\n0,30\n5,30\n")
+        for args, path, expected in (
+                (["--track", track, "--out", track], track, f"--out: '{track}' must end in .bag"),
+                (["--track", profile, "--out", "./own_profile.bag"], profile,
+                 "--out ./own_profile.bag is the --track file: writing it would destroy the input"),
+                (["--speed-profile", profile, "--out", profile], profile,
+                 f"--out {profile} is the --speed-profile file: writing it would destroy the "
+                 "input")):
+            with open(path) as f:
+                before = f.read()
+            result = make_bag(*args)
+            self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+            self.assertIn("tvd_make_bag: error: " + expected, result.stderr)
+            with open(path) as f:
+                self.assertEqual(f.read(), before)
         # --namespace: the topics of a vehicle in it, for one player of several vehicles' bags.
         # The speed as geometry_msgs/TwistStamped on speed_stamped, or with --speed-message
         # float64 as std_msgs/Float64 on speed.

@@ -2888,6 +2888,29 @@ class TvdCliTest(unittest.TestCase):
                                 f"--out {profile} is the --speed-profile file", "write elsewhere")
         with open(profile) as f:
             self.assertEqual(f.read(), "t,v\n0,5\n10,5\n")
+        # statics' table over its description (its name may end in .csv: the kind is read from
+        # the content), and modes' directory holding a model named as one of its output files.
+        with open(VEHICLE) as f:
+            description = f.read()
+        own = self.path("own_vehicle.csv")
+        with open(own, "w") as f:
+            f.write(description)
+        self.assert_input_error(["statics", "--vehicle", own, "--out", own],
+                                f"statics: --out {own} is the --vehicle file", "write elsewhere")
+        with open(own) as f:
+            self.assertEqual(f.read(), description)
+        directory = self.path("modes_over_input")
+        os.makedirs(directory, exist_ok=True)
+        model = os.path.join(directory, "shapes.csv")
+        with open(os.path.join(ROOT, "config", "models", "spring_mass_chain.yaml")) as f:
+            chain = f.read()
+        with open(model, "w") as f:
+            f.write(chain)
+        self.assert_input_error(["modes", "--model", model, "--count", "2", "--out", directory],
+                                f"modes: --out {model} is the --model file")
+        with open(model) as f:
+            self.assertEqual(f.read(), chain)
+        self.assertFalse(os.path.exists(os.path.join(directory, "modes.csv")))
 
     def test_random_road_and_reduction_errors_name_the_options(self):
         """tvd terrain --iso8608 names --taper and --length, --max-frequency and --spacing (its
