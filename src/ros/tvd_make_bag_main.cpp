@@ -77,16 +77,7 @@ int run(int argc, char** argv) {
                  "/veh1/speed_stamped, for a node in it; bags of several vehicles then play "
                  "together from one rosbag play --clock (default: /terrain_profile, "
                  "/speed_stamped)");
-  // An empty number ("--lookahead ''", a shell variable left unset) is not read as 0, as in tvd.
-  for (CLI::Option* option : app.get_options()) {
-    const std::string type = option->get_type_name();
-    if (type == "FLOAT" || type == "INT" || type == "UINT")
-      option->check(CLI::Validator(
-          [](std::string& text) {
-            return text.empty() ? std::string("'' is not a number") : std::string();
-          },
-          ""));
-  }
+  tracked_vehicle_dynamics::tools::checkNumberTexts(app.get_options());
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -77,6 +77,42 @@ inline CLI::Validator finiteNumber() {
   return finiteNumberWhere([](double) { return true; }, "a finite number", "FINITE");
 }
 
+/// The number options of `options`. One without a check of its own refuses an empty value
+/// ("--speed-kmh ''", a shell variable left unset), which CLI11 reads as 0 (frf then took it for
+/// synchronous excitation without a word). Every integer is read in decimal: CLI11 reads "010"
+/// as octal 8 and "0x10" as 16 (--seed 010 gave another road than --seed 10); leading zeros are
+/// dropped and a base prefix refused, in front of the option's own checks, which then read the
+/// decimal text.
+inline void checkNumberTexts(const std::vector<CLI::Option*>& options) {
+  for (CLI::Option* option : options) {
+    // "INT", or with the names of its checks: "INT:INT in [1 - 500]".
+    const std::string type = option->get_type_name();
+    const std::string base = type.substr(0, type.find(':'));
+    if (base == "INT" || base == "UINT")
+      option->transform(CLI::Validator(
+          [](std::string& text) {
+            const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
+            if (text.size() > sign + 1 && text[sign] == '0') {
+              const std::size_t first = text.find_first_not_of('0', sign);
+              if (first != std::string::npos &&
+                  !std::isdigit(static_cast<unsigned char>(text[first])))
+                return "must be a decimal integer, got " + text;
+              text.erase(sign, (first == std::string::npos ? text.size() : first) - sign);
+              if (text.size() == sign)
+                text += '0';
+            }
+            return std::string();
+          },
+          ""));  // no text of its own in --help: the option's type says it
+    if (type == "FLOAT" || type == "INT" || type == "UINT")  // no check of its own
+      option->check(CLI::Validator(
+          [](std::string& text) {
+            return text.empty() ? std::string("'' is not a number") : std::string();
+          },
+          ""));
+  }
+}
+
 /// Empty when a file can be created in `dir`, else why not. access(W_OK) is not enough: it says
 /// yes to root on /sys or /proc, where creating a file fails, and the run would then lose its
 /// results at the end. So a file is made and removed (mkstemp: never one that exists).

@@ -34,19 +34,8 @@ int run(int argc, char** argv) {
   tvd::tools::registerSimulateCommand(app);
   tvd::tools::registerRideCommand(app);
   tvd::tools::registerTerrainCommand(app);
-  // CLI11 reads an empty value of a plain number option ("--speed-kmh ''", a shell variable
-  // left unset) as 0, which frf then took for synchronous excitation without a word: every
-  // number option without a check of its own refuses it.
   for (CLI::App* command : app.get_subcommands({}))
-    for (CLI::Option* option : command->get_options()) {
-      const std::string type = option->get_type_name();
-      if (type == "FLOAT" || type == "INT" || type == "UINT")
-        option->check(CLI::Validator(
-            [](std::string& text) {
-              return text.empty() ? std::string("'' is not a number") : std::string();
-            },
-            ""));  // no text of its own in --help: the option's type says it
-    }
+    tvd::tools::checkNumberTexts(command->get_options());
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

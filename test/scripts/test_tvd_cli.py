@@ -2837,6 +2837,27 @@ class TvdCliTest(unittest.TestCase):
                      ["simulate", "--vehicle", VEHICLE, "--speed-kmh", ""]):
             self.assert_input_error(args, "--speed-kmh: '' is not a number")
 
+    def test_integers_are_read_in_decimal(self):
+        """CLI11 reads an integer with a leading 0 as octal and 0x as hex: --seed 010 gave seed
+        8's road and --count 010 eight modes. A leading zero is dropped; a base prefix refused."""
+        model = os.path.join(ROOT, "config", "models", "spring_mass_chain.yaml")
+        counts = []
+        for count in ("010", "10", "+0010"):
+            result = self.tvd("modes", "--model", model, "--count", count, "--json")
+            counts.append(len(json.loads(result.stdout)["frequencies_hz"]))
+        self.assertEqual(counts, [10, 10, 10])
+        roads = []
+        for seed in ("010", "10"):
+            out = self.path(f"seed_{seed}.csv")
+            self.tvd("terrain", "--iso8608", "C", "--length", "20", "--seed", seed, "--out", out)
+            with open(out) as f:
+                roads.append(f.read())
+        self.assertEqual(roads[0], roads[1])
+        for args in (["modes", "--model", model, "--count", "0x10"],
+                     ["terrain", "--iso8608", "C", "--seed", "0b11", "--out", self.path("b.csv")]):
+            self.assert_input_error(args, "0x10" if "0x10" in args else "0b11")
+        self.assertFalse(os.path.exists(self.path("b.csv")))
+
     def test_ride_mat_output_with_a_long_point_name_is_refused_before_the_sweep(self):
         """A 40-character point name (the description's limit) loads, but ride's longest MAT
         variable from it would have 67 characters: refused before any run, not after the sweep."""
