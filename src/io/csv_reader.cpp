@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/message_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace io {
@@ -111,19 +112,10 @@ std::vector<CsvRow> CsvReader::readRows() const {
 
 namespace {
 
-// A cell as a message shows it: control bytes (a NUL would end the message there) as \xNN.
-std::string printable(const std::string& cell) {
-  std::string out;
-  for (const char c : cell) {
-    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-      char hex[8];
-      std::snprintf(hex, sizeof(hex), "\\x%02x", static_cast<unsigned char>(c));
-      out += hex;
-    } else {
-      out += c;
-    }
-  }
-  return out;
+// A cell as a message shows it: control bytes as \xNN, at most 60 characters.
+std::string shownCell(const std::string& cell) {
+  constexpr std::size_t kShown = 60;
+  return printable(cell, kShown);
 }
 
 }  // namespace
@@ -134,14 +126,14 @@ double CsvReader::number(const CsvRow& row, std::size_t column, const std::strin
   const std::errc error = scanNumber(cell, &parsed);
   if (error == std::errc::result_out_of_range) {
     fail(row, column,
-         what + " '" + printable(cell) + "' is out of range (a double holds 4.9e-324 .. 1.8e308)");
+         what + " '" + shownCell(cell) + "' is out of range (a double holds 4.9e-324 .. 1.8e308)");
   }
   const std::optional<double> value =
       error == std::errc() ? std::optional<double>(parsed) : std::nullopt;
   if (!value)
-    fail(row, column, what + " '" + printable(cell) + "' is not a number");
+    fail(row, column, what + " '" + shownCell(cell) + "' is not a number");
   if (!std::isfinite(*value))
-    fail(row, column, what + " '" + printable(cell) + "' is not a finite number");
+    fail(row, column, what + " '" + shownCell(cell) + "' is not a finite number");
   return *value;
 }
 

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/message_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace io {
@@ -95,12 +96,19 @@ YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
   if (text.find('\0') != std::string::npos) {
     throw InputError(file + ": not a YAML text file (binary content)");
   }
+  // A lone CR (old Mac line endings) is a line break in YAML (1.2, §5.4) but not to yaml-cpp,
+  // which read such a file as one line: "the file is empty" after a first comment line, or an
+  // illegal map value. Read as LF, as the CSV readers do; CR LF is left to yaml-cpp.
+  std::string lines = text;
+  for (std::size_t i = lines.find('\r'); i != std::string::npos; i = lines.find('\r', i + 1))
+    if (i + 1 == lines.size() || lines[i + 1] != '\n')
+      lines[i] = '\n';
   std::vector<YAML::Node> documents;
   try {
-    documents = YAML::LoadAll(text);
+    documents = YAML::LoadAll(lines);
   } catch (const YAML::Exception& e) {
-    throw InputError(file + ": line " + std::to_string(e.mark.line + 1) + ", column " +
-                     std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg);
+    throw InputError(printable(file + ": line " + std::to_string(e.mark.line + 1) + ", column " +
+                               std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg));
   }
   if (documents.empty() || documents.front().IsNull()) {
     throw InputError(file + ": the file is empty (no YAML document)");
@@ -127,7 +135,8 @@ void YamlValue::fail(const std::string& what) const {
   message += what;
   if (line() > 0)
     message += " (line " + std::to_string(line()) + ")";
-  throw InputError(message);
+  // Keys and values come from the file: one line whatever they hold.
+  throw InputError(printable(message));
 }
 
 YamlValue YamlValue::child(const YAML::Node& node, const std::string& path, int line) const {

@@ -64,6 +64,10 @@ void checkIncreasing(const std::vector<io::YamlValue>& items, const std::vector<
       items[i].fail(what + " " + brief(values[i]) + " m is less than the previous one (" +
                     brief(values[i - 1]) + " m); " + what + "s must be strictly increasing");
     }
+    if (values[i] - values[i - 1] < kMinTerrainSpacing) {
+      items[i].fail(what + " " + brief(values[i]) + " m is " + brief(values[i] - values[i - 1]) +
+                    " m from the previous one; at least " + brief(kMinTerrainSpacing) + " m apart");
+    }
   }
 }
 
@@ -135,6 +139,11 @@ Terrain loadTerrainCsv(const std::string& path) {
       reader.fail(row, "station x = " + brief(x(i)) + " m is less than the previous station " +
                            brief(x(i - 1)) + " m; stations must be strictly increasing");
     }
+    if (i > 0 && x(i) - x(i - 1) < kMinTerrainSpacing) {
+      reader.fail(row, "station x = " + brief(x(i)) + " m is " + brief(x(i) - x(i - 1)) +
+                           " m from the previous station; at least " + brief(kMinTerrainSpacing) +
+                           " m apart");
+    }
     for (std::size_t c = 1; c < columns; ++c) {
       const double height = reader.number(row, c, "height");
       if (!(std::abs(height) <= kMaxTerrainHeight))
@@ -197,8 +206,9 @@ Terrain loadTerrainYaml(const std::string& path) {
   if (has_spacing) {
     const io::YamlValue spacing_value = root["spacing"];
     const double spacing = spacing_value.asNumber();
-    if (spacing <= 0.0)
-      spacing_value.fail("spacing " + brief(spacing) + " m must be > 0");
+    if (!(spacing >= kMinTerrainSpacing))
+      spacing_value.fail("spacing " + brief(spacing) + " m must be at least " +
+                         brief(kMinTerrainSpacing) + " m");
     const double start = root.has("start") ? root["start"].asNumber() : 0.0;
     for (std::size_t i = 0; i < count; ++i) {
       const auto k = static_cast<Eigen::Index>(i);

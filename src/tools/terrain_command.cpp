@@ -17,6 +17,7 @@
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 #include "tracked_vehicle_dynamics/terrain/interpolation_loss.h"
 #include "tracked_vehicle_dynamics/terrain/iso8608.h"
+#include "tracked_vehicle_dynamics/terrain/terrain.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
 
@@ -238,8 +239,9 @@ void registerTerrainCommand(CLI::App& app) {
        {cmd->add_option("--length", opt->length, "random road: length [m]")
             ->check(positiveNumber()),
         cmd->add_option("--width", opt->width, "random road: width [m]")->check(positiveNumber()),
-        cmd->add_option("--spacing", opt->spacing, "random road: station step [m]")
-            ->check(positiveNumber()),
+        cmd->add_option("--spacing", opt->spacing, "random road: station step [m], >= 1e-6")
+            ->check(finiteNumberWhere([](double v) { return v >= terrain::kMinTerrainSpacing; },
+                                      "at least 1e-06 m (terrain stations 1 um apart)", "SPACING")),
         // Up to 2^53: every seed is then exact in the JSON summary (a double in most readers).
         cmd->add_option("--seed", opt->seed, "random road: seed of the phases, 0 .. 2^53")
             ->check(unsignedIn(std::uint64_t{1} << 53)),

@@ -591,6 +591,43 @@ TEST_F(ModelYamlTest, RejectsUnreadableOrNonYamlFiles) {
   }
 }
 
+// An error message is one line whatever the file holds: a newline, CR or escape sequence from a
+// key or a value is shown as \xNN (raw, a CR sent the cursor back over the message's start).
+TEST_F(ModelYamlTest, ControlCharactersInTheFileAreShownEscaped) {
+  expectLoadError("newline_value.yaml", replaced("x: [1, 0, 0]", "x: [1, 0, \"0\\n tvd: ok\\r\"]"),
+                  {"nodes[1].x[2]: expected a number, got the string \"0\\x0a tvd: ok\\x0d\""});
+  expectLoadError("escape_key.yaml", replaced("name: base", "\"bad\\nkey\\e[31m\": base"),
+                  {"bad\\x0akey\\x1b[31m: unknown key"});
+  for (const std::string name : {"newline_value.yaml", "escape_key.yaml"}) {
+    try {
+      loadModelYaml((directory_ / name).string());
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find_first_of("\n\r\x1b"), std::string::npos) << message;
+    }
+  }
+}
+
+// A lone CR is a line break in YAML 1.2 (old Mac line endings), as in the CSV readers: the
+// document reads as with LF (yaml-cpp alone read one line: "the file is empty" after a comment).
+TEST_F(ModelYamlTest, CarriageReturnLineEndingsRead) {
+  std::string mac = std::string("# a model saved with CR line endings\n") + kBase;
+  for (char& c : mac)
+    if (c == '\n')
+      c = '\r';
+  const fem::Model from_cr = loadModelYaml(write("cr.yaml", mac));
+  const fem::Model from_lf = loadModelYaml(write("lf.yaml", kBase));
+  EXPECT_EQ(from_cr.name, "base");
+  EXPECT_EQ(from_cr.nodes.size(), from_lf.nodes.size());
+  EXPECT_EQ(from_cr.springs.size(), from_lf.springs.size());
+  EXPECT_EQ(from_cr.masses.size(), from_lf.masses.size());
+  // CR LF stays one break: the lines (named in messages) are those of the LF file.
+  std::string dos;
+  for (const char c : replaced("mass: 1.5}", "mass: 1.5, colour: red}"))
+    dos += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  expectLoadError("dos.yaml", dos, {"colour: unknown key", "(line 14)"});
+}
+
 TEST_F(ModelYamlTest, SaveToAnUnwritablePathThrows) {
   const std::string path = (directory_ / "no_such_dir" / "model.yaml").string();
   EXPECT_THROW(saveModelYaml(awkwardModel(), path), Error);

@@ -1070,6 +1070,17 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
        {"row 3, column 2", "height '0\\x00' is not a number"}},
       {"x,-1,1\n0,0,0\n1,0,0\n1,0,0\n", {"row 4", "duplicate station x = 1 m (also on row 3)"}},
       {"x,-1,1\n0,0,0\n2,0,0\n1,0,0\n", {"row 4", "stations must be strictly increasing"}},
+      {"x,-1,1\n0,0,0\n1e-300,0.1,0\n2,0.1,0\n",
+       {"row 3",
+        "station x = 1e-300 m is 1e-300 m from the previous station; at least 1e-06 m "
+        "apart"}},
+      {"x,-1,-0.9999999999\n0,0,0\n1,0,0\n",
+       {"lateral line 1 (-0.9999999999 m) is 1e-10 m from lateral line 0; at least 1e-06 m apart"}},
+      // A cell is shown up to 60 characters (a 500,000-digit one made a 500 kB line).
+      {"x,-1,1\n0,0,0\n1," + std::string(500000, '3') + ",0\n",
+       {"row 3, column 2", "height '" + std::string(60, '3') +
+                               "... (500000 characters)' is out of "
+                               "range"}},
       {"x,-1,1\n0,0,0\n1,0\n", {"row 3", "expected 3 columns (x and 2 heights), got 2"}},
       {"x,-1,1\n0,0,0\n1,abc,0\n", {"row 3, column 2", "height 'abc' is not a number"}},
       // Beyond a double's range either way: out of range, as the YAML reader says it.
@@ -1115,7 +1126,13 @@ TEST(TerrainIo, BadYamlNamesFileAndKey) {
       {"x: [0, 2, 1]\nheights: [0, 0, 0]\n", {"x[2]", "stations must be strictly increasing"}},
       {"x: [0, 1]\nheights: [0, 0, 0]\n", {"x", "got 2 entries"}},
       {"spacing: 0.1\nx: [0, 1, 2]\nheights: [0, 0, 0]\n", {"exactly one of 'spacing'"}},
-      {"spacing: -0.1\nheights: [0, 0, 0]\n", {"spacing", "must be > 0"}},
+      {"spacing: -0.1\nheights: [0, 0, 0]\n", {"spacing", "must be at least 1e-06 m"}},
+      // Stations closer than 1 um: a subnormal spacing made the slope infinite, and the run
+      // failed late naming no file.
+      {"spacing: 1e-300\nheights: [0, 0, 0]\n",
+       {"spacing: spacing 1e-300 m must be at least 1e-06 m"}},
+      {"x: [0, 1e-9, 2]\nheights: [0, 0.1, 0.1]\n",
+       {"x[1]", "station 1e-09 m is 1e-09 m from the previous one; at least 1e-06 m apart"}},
       {"spacing: 0.1\n", {"heights", "required key is missing"}},
       {"spacing: 0.1\nheights: [0, 0]\nwidth: 3\n", {"width", "unknown key"}},
       // Another of the package's files is named for what it is (its first key was "unknown").

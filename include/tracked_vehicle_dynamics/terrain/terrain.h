@@ -23,6 +23,9 @@ constexpr double kMaxTerrainHeight = 1e4;
 /// Stations and lateral positions beyond +-1e8 m (100,000 km, more than twice round the Earth)
 /// are a mistake too; near the double range they overflowed the track's length to inf [m].
 constexpr double kMaxTerrainCoordinate = 1e8;
+/// Stations (and lateral lines) closer than 1 um are a mistake as well: at 1e-320 m the slope
+/// between them was infinite and the run failed late, naming no file [m].
+constexpr double kMinTerrainSpacing = 1e-6;
 
 class Terrain {
  public:
