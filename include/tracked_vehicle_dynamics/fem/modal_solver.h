@@ -30,6 +30,10 @@ struct ModalBasis {
   int missed = 0;
   int iterations = 0;    ///< Arnoldi iterations summed over the solves (informational)
   double seconds = 0.0;  ///< wall time of the solve [s]
+  /// |omega^2| [rad^2/s^2] within which the solve cannot tell an eigenvalue from 0 (a rigid-body
+  /// mode's), from the whole problem, not the modes returned: 1e-6 of the shift-invert solve's
+  /// |sigma|, or 1e-12 of the dense solve's largest |omega^2| (about 4500 eps).
+  double zero_tolerance = 0.0;
 
   int count() const { return static_cast<int>(eigenvalues.size()); }
 };
@@ -44,7 +48,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
 /// sentence for the user saying how many are missing below which frequency.
 std::string missedModesWarning(const ModalBasis& basis);
 
-/// "" when every eigenvalue of `basis` is >= 0 (to round-off: -1e-8 of the largest |omega^2|),
+/// "" when every eigenvalue of `basis` is >= 0 (to round-off: -1e-8 of the largest |omega^2|, or
+/// -ModalBasis::zero_tolerance when more),
 /// else a sentence saying how many are negative and the lowest: the structure is unstable (a
 /// compressive pre-load beyond buckling), and those modes' frequencies read 0 Hz.
 std::string unstableModesWarning(const ModalBasis& basis);
