@@ -273,6 +273,10 @@ class Validator {
     }
     // Its stiffness is that of a self-equilibrated load (the body's internal stress); a resultant
     // would be a load on the model, which a pre-load is not.
+    // Forces whose sum overflows (1e155 N: its norm is inf, and inf > 1e-9 inf is false) would
+    // pass as balanced.
+    if (!std::isfinite(total) || !std::isfinite(force.norm()) || !std::isfinite(moment.norm()))
+      fail(label, "the forces are too large to sum in a double (" + brief(total) + " N in all)");
     if (force.norm() > kPreloadBalanceTolerance * total ||
         moment.norm() > kPreloadBalanceTolerance * total * scale_) {
       fail(label, "the forces are not self-equilibrated (resultant " + brief(force.norm()) +

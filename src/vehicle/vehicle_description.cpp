@@ -518,6 +518,11 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
             "the arm pivot lies below the ground (z = " + brief(pivot_z) + " m)");
   c.require(d.suspension.arm_length < d.hull.length, "suspension.arm_length",
             "an arm of " + brief(d.suspension.arm_length) + " m is longer than the hull");
+  // The wheel rate goes as k_t / a^2: an arm of 1e-300 m made it infinite and the statics NaN.
+  constexpr double kMinArmLength = 0.01;
+  c.require(d.suspension.arm_length >= kMinArmLength, "suspension.arm_length",
+            "an arm of " + brief(d.suspension.arm_length) +
+                " m is shorter than 1 cm (a road-wheel arm is tens of cm long)");
   std::set<std::string> names;
   for (const NamedPoint& p : d.named_points) {
     const std::string key = "named_points." + p.name;

@@ -252,6 +252,11 @@ TEST(GeometricStiffness, AnUnbalancedBodyPreloadOrAPointlessTieIsRefusedByName) 
   p.forces.push_back(Vector3(0.0, 0.0, -1e3));
   tvd::expectInputError([&] { tvd::fem::assemble(couple); },
                         {"body_preloads[0]", "not self-equilibrated"});
+  // One force of 1e155 N: the sum's norm overflows to inf, which no tolerance of it refused.
+  Model overflow = tensionedSquare(3e3, 1.5, true);
+  overflow.body_preloads.front().forces.front() = Vector3(1e155, 1e155, 0.0);
+  tvd::expectInputError([&] { tvd::fem::assemble(overflow); },
+                        {"body_preloads[0]", "too large to sum in a double"});
   Model short_tie = tensionedSquare(3e3, 1.5, false);
   short_tie.ties.push_back({1, 1, 10.0, "loop"});
   tvd::expectInputError([&] { tvd::fem::assemble(short_tie); }, {"ties[4]", "zero-length tie"});

@@ -104,6 +104,8 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "hull.yaw_inertia", "missing"},
       {"  arm_length: {value: 0.58, unit: m,", "  arm_length: {value: 580, unit: mm,",
        "suspension.arm_length.unit", "'mm' is not the expected 'm'"},
+      {"  arm_length: {value: 0.58, unit: m,", "  arm_length: {value: 1e-300, unit: m,",
+       "suspension.arm_length", "an arm of 1e-300 m is shorter than 1 cm"},
       {"  mass: {value: 30300, unit: kg,", "  mass: {value: 30,300, unit: kg,", "hull.mass.300",
        "a number with a thousands separator? Write 14000, not 14,000"},
       {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: -5.2e5,",
