@@ -488,8 +488,8 @@ class LaunchFilesTest(unittest.TestCase):
             f.write("time_s,speed_kmh\n0,30\n3,250\n")
         result = make_bag("--speed-profile", profile, "--peak-speed")
         self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
-        self.assertIn("tvd_make_bag: error: track bag: the speed profile reaches 250 km/h; at most "
-                      "200 km/h", result.stderr)
+        self.assertIn(f"tvd_make_bag: error: {profile}: the speed profile reaches 250 km/h; at "
+                      "most 200 km/h", result.stderr)
         # It writes nothing, so it takes no file to write.
         result = make_bag("--speed-kmh", "30", "--peak-speed", "--out", "x.bag")
         self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
