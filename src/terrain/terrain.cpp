@@ -31,7 +31,7 @@ void checkIncreasing(const Vector& values, const std::string& what, const std::s
                        std::to_string(i - 1) + " (" + brief(values(i - 1)) +
                        " m); they must be strictly increasing");
     }
-    if (i > 0 && values(i) - values(i - 1) < kMinTerrainSpacing) {
+    if (i > 0 && closerThanMinSpacing(values(i - 1), values(i))) {
       throw InputError("terrain '" + name + "': " + what + " " + std::to_string(i) + " (" +
                        brief(values(i)) + " m) is " + brief(values(i) - values(i - 1)) +
                        " m from " + what + " " + std::to_string(i - 1) + "; at least " +

@@ -64,7 +64,7 @@ void checkIncreasing(const std::vector<io::YamlValue>& items, const std::vector<
       items[i].fail(what + " " + brief(values[i]) + " m is less than the previous one (" +
                     brief(values[i - 1]) + " m); " + what + "s must be strictly increasing");
     }
-    if (values[i] - values[i - 1] < kMinTerrainSpacing) {
+    if (closerThanMinSpacing(values[i - 1], values[i])) {
       items[i].fail(what + " " + brief(values[i]) + " m is " + brief(values[i] - values[i - 1]) +
                     " m from the previous one; at least " + brief(kMinTerrainSpacing) + " m apart");
     }
@@ -139,7 +139,7 @@ Terrain loadTerrainCsv(const std::string& path) {
       reader.fail(row, "station x = " + brief(x(i)) + " m is less than the previous station " +
                            brief(x(i - 1)) + " m; stations must be strictly increasing");
     }
-    if (i > 0 && x(i) - x(i - 1) < kMinTerrainSpacing) {
+    if (i > 0 && closerThanMinSpacing(x(i - 1), x(i))) {
       reader.fail(row, "station x = " + brief(x(i)) + " m is " + brief(x(i) - x(i - 1)) +
                            " m from the previous station; at least " + brief(kMinTerrainSpacing) +
                            " m apart");

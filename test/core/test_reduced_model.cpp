@@ -43,6 +43,19 @@ void writeBytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
 
+// The message of the InputError that opening `path` and reading it with `read` throws; "" when
+// none is thrown.
+std::string readError(const std::string& path,
+                      const std::function<void(const io::MatReader&)>& read) {
+  try {
+    const io::MatReader in(path);
+    read(in);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // Expects a StaleCacheError whose message names the file and contains `what`.
 void expectStale(const std::string& path, const std::string& hash, const std::string& what,
                  const ReducedModelLoadOptions& options = {}) {
@@ -338,13 +351,7 @@ TEST(MatFile, ImpossibleDimensionsReadAsACorruptedFile) {
     const std::int32_t claimed[2] = {huge, huge};
     std::memcpy(damaged.data() + kDims, claimed, sizeof(claimed));
     writeBytes(path, damaged);
-    std::string what;
-    try {
-      const io::MatReader in(path);
-      in.readMatrix("A");
-    } catch (const InputError& e) {
-      what = e.what();
-    }
+    const std::string what = readError(path, [](const io::MatReader& in) { in.readMatrix("A"); });
     EXPECT_EQ(what.rfind(path + ": variable 'A' ", 0), 0u) << what;
     EXPECT_NE(what.find("(corrupted file)"), std::string::npos) << what;
   }
@@ -371,14 +378,7 @@ TEST(MatFile, HeadersClaimingMoreThanTheirElementHoldsAreCorrupted) {
   ASSERT_EQ(stored[1], 1);
   const auto refusal = [&](const std::string& damaged) {
     writeBytes(path, damaged);
-    std::string what;
-    try {
-      const io::MatReader in(path);
-      in.readStrings("names");
-    } catch (const InputError& e) {
-      what = e.what();
-    }
-    return what;
+    return readError(path, [](const io::MatReader& in) { in.readStrings("names"); });
   };
   std::string damaged = bytes;
   const std::int32_t claimed[2] = {1000000000, 1};

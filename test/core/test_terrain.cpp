@@ -1099,6 +1099,18 @@ TEST(TerrainIo, BadCsvNamesFileAndRow) {
     SCOPED_TRACE(cases[i].content);
     expectInputError([&] { loadTerrainCsv(path); }, parts);
   }
+  // Stations exactly 1 um apart load, in either format, though their differences round either
+  // side of 1e-6 (3e-6 - 2e-6 = 9.999999999999999e-7), far out too (1e8 m: 1.5e-8 m a bit).
+  EXPECT_EQ(loadTerrainCsv(dir.file("micron.csv", "x,h\n0,0\n1e-6,0\n2e-6,0\n3e-6,0\n"))
+                .stations()
+                .size(),
+            4);
+  EXPECT_EQ(loadTerrain(dir.file("micron.yaml",
+                                 "spacing: 1e-6\nstart: 99999999\nheights: [0, 0, "
+                                 "0, 0, 0, 0, 0, 0, 0, 0]\n"))
+                .stations()
+                .size(),
+            10);
   // A subnormal is a double all the same (what a save of a tiny value writes).
   EXPECT_EQ(
       loadTerrainCsv(dir.file("subnormal.csv", "x,-1,1\n0,0,0\n1,1e-320,0\n")).heights()(0, 1),

@@ -9,6 +9,9 @@
 // u' = v dh/dx (vehicle speed v), hence slope().
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +29,15 @@ constexpr double kMaxTerrainCoordinate = 1e8;
 /// Stations (and lateral lines) closer than 1 um are a mistake as well: at 1e-320 m the slope
 /// between them was infinite and the run failed late, naming no file [m].
 constexpr double kMinTerrainSpacing = 1e-6;
+
+/// Whether consecutive stations (or lateral lines) `before` < `after` lie closer than
+/// kMinTerrainSpacing, to the round-off of stations written as start + k spacing: 3e-6 - 2e-6 is
+/// 9.999999999999999e-7, and far out a station's last bit is worth more (1.5e-8 m at 1e8 m).
+inline bool closerThanMinSpacing(double before, double after) {
+  const double round_off =
+      4.0 * std::numeric_limits<double>::epsilon() * std::max(std::abs(before), std::abs(after));
+  return after - before < kMinTerrainSpacing * (1.0 - 1e-9) - round_off;
+}
 
 class Terrain {
  public:
