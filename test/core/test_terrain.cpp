@@ -853,9 +853,10 @@ TEST(Iso8608, ClassReferencePsd) {
   expectInputError([] { makeIso8608('Z', 100.0, 5.0, 0.05, 1); }, {"class 'Z'"});
   expectInputError([] { makeIso8608('C', 100.0, 5.0, 0.25, 1); }, {"Nyquist"});
   expectInputError([] { makeIso8608('C', -1.0, 5.0, 0.05, 1); }, {"length -1 m"});
-  // A length typed with three zeros too many is refused at once, not computed for hours.
-  expectInputError([] { makeIso8608('C', 200e3, 5.0, 0.05, 1); },
-                   {"length 200000 m", "station-harmonic terms", "generate a shorter road"});
+  // A length typed in millimetres (2000 km) is refused at once, not left to exhaust the memory.
+  expectInputError(
+      [] { makeIso8608('C', 2e6, 5.0, 0.05, 1); },
+      {"length 2e+06 m", "40000001 stations; at most 2e+07", "generate a shorter road"});
 }
 
 TEST(Iso8608, VarianceIsThePsdIntegralInClosedForm) {

