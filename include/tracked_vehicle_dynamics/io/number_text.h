@@ -11,5 +11,11 @@ namespace io {
 /// compares equal, and "-0" in a table reads as a sign error); infinities "inf"/"-inf", NaN "nan".
 std::string roundTripText(double value);
 
+/// Appends `value` as printf's "%.{precision}g" (what an ostream with setprecision(precision)
+/// writes: "nan", "-nan", "inf", "-0" included) by std::to_chars, which C++17 specifies as that
+/// printf conversion, at a fraction of the stream's cost: a result table of 28 million numbers
+/// is written in seconds rather than a quarter of a minute. precision in [1, 17].
+void appendGeneral(std::string& text, double value, int precision);
+
 }  // namespace io
 }  // namespace tracked_vehicle_dynamics
