@@ -10,6 +10,9 @@
 #include <map>
 #include <sstream>
 #include <utility>
+#include <vector>
+
+#include <yaml-cpp/eventhandler.h>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/message_text.h"
@@ -50,6 +53,47 @@ bool isNonFiniteSpelling(const std::string& text) {
   const std::string lower = lowercase(std::string(word));
   return lower == ".nan" || lower == "nan" || lower == ".inf" || lower == "inf" ||
          lower == "infinity";
+}
+
+/// Events of a document walk that keep only where each document starts.
+class DocumentStarts : public YAML::EventHandler {
+ public:
+  std::vector<YAML::Mark> starts;
+  void OnDocumentStart(const YAML::Mark& mark) override { starts.push_back(mark); }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+/// yaml-cpp 0.7's parser does not consume a ',' where a document or the text after a document's
+/// flow collection should start ("[1],", "{a: 1},", a stray ',' on the first line): every
+/// further document it is asked for is another empty one at the same place, and LoadAll asks
+/// until memory runs out (bad_alloc after gigabytes). Walk the documents' events first, and
+/// refuse a document that starts where the one before it did. Costs a second parse of the text;
+/// large terrain files in the tools' layout never come here (terrain_yaml_plain.h).
+void refuseStalledDocuments(const std::string& text, const std::string& file) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  DocumentStarts walk;
+  while (parser.HandleNextDocument(walk)) {
+    const std::size_t n = walk.starts.size();
+    if (n >= 2 && walk.starts[n - 1].pos == walk.starts[n - 2].pos) {
+      const YAML::Mark& at = walk.starts.back();
+      const auto pos = static_cast<std::size_t>(at.pos);
+      const std::string found = pos < text.size() ? "'" + text.substr(pos, 1) + "'" : "the end";
+      throw InputError(printable(file + ": line " + std::to_string(at.line + 1) + ", column " +
+                                 std::to_string(at.column + 1) + ": invalid YAML: unexpected " +
+                                 found + " (not a value, nor after one)"));
+    }
+  }
 }
 
 std::string joined(std::initializer_list<const char*> words) {
@@ -105,6 +149,7 @@ YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
       lines[i] = '\n';
   std::vector<YAML::Node> documents;
   try {
+    refuseStalledDocuments(lines, file);
     documents = YAML::LoadAll(lines);
   } catch (const YAML::Exception& e) {
     throw InputError(printable(file + ": line " + std::to_string(e.mark.line + 1) + ", column " +

@@ -1,15 +1,19 @@
 // Model files: round trips are exact, the shipped examples and the documented example load, and
 // every kind of bad input is rejected with a message naming the file, the key path and the cause.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "sanitizer_build.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/model.h"
@@ -661,6 +665,44 @@ TEST_F(ModelYamlTest, CarriageReturnLineEndingsRead) {
   for (const char c : replaced("mass: 1.5}", "mass: 1.5, colour: red}"))
     dos += c == '\n' ? std::string("\r\n") : std::string(1, c);
   expectLoadError("dos.yaml", dos, {"colour: unknown key", "(line 14)"});
+}
+
+/// Loads `path` with at most 1 GB of address space (not under a sanitizer, whose shadow memory
+/// needs more) and exits 0 when it is refused with exactly `expected`.
+[[noreturn]] void exitOnRefusal(const std::string& path, const std::string& expected) {
+#ifndef TVD_SANITIZER_BUILD
+  const rlim_t gigabyte = rlim_t{1} << 30;
+  const rlimit limit{gigabyte, gigabyte};
+  ::setrlimit(RLIMIT_AS, &limit);
+#endif
+  try {
+    loadModelYaml(path);
+  } catch (const InputError& e) {
+    std::exit(e.what() == expected ? 0 : 2);
+  } catch (...) {
+    std::exit(3);
+  }
+  std::exit(4);
+}
+
+// yaml-cpp never got past a ',' where a document, or what follows a flow collection, should
+// start ("[1],": a typo of a list's end): it yielded empty documents there until memory ran out.
+// Now it is refused at its place. Each case runs in a child limited to 1 GB, so that a
+// regression fails the test at once instead of exhausting the machine.
+TEST_F(ModelYamlTest, AStrayCommaIsRefusedNotParsedForever) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {",\n", "line 1, column 1"},
+      {"# a model\n,name: base\n", "line 2, column 1"},
+      {"[1],\n", "line 1, column 4"},
+      {"{name: base},\n", "line 1, column 13"},
+      {"name: base\n...\n,\n", "line 3, column 1"},
+  };
+  for (const auto& [text, place] : cases) {
+    const std::string path = write("comma.yaml", text);
+    const std::string expected =
+        path + ": " + place + ": invalid YAML: unexpected ',' (not a value, nor after one)";
+    EXPECT_EXIT(exitOnRefusal(path, expected), ::testing::ExitedWithCode(0), "") << text;
+  }
 }
 
 TEST_F(ModelYamlTest, SaveToAnUnwritablePathThrows) {
