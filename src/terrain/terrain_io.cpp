@@ -5,6 +5,7 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -14,6 +15,7 @@
 #include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/io/yaml_file_kind.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
+#include "tracked_vehicle_dynamics/terrain/terrain_yaml_plain.h"
 
 namespace tracked_vehicle_dynamics {
 namespace terrain {
@@ -159,6 +161,12 @@ Terrain loadTerrainCsv(const std::string& path) {
 }
 
 Terrain loadTerrainYaml(const std::string& path) {
+  if (std::optional<Terrain> plain = readPlainTerrainYaml(path))
+    return std::move(*plain);
+  return loadTerrainYamlGeneral(path);
+}
+
+Terrain loadTerrainYamlGeneral(const std::string& path) {
   const io::YamlValue root = io::YamlValue::loadFile(path);
   io::expectNotOtherYamlFile(root, io::YamlFileKind::Terrain);
   root.expectMap({"name", "spacing", "start", "x", "y", "heights"});

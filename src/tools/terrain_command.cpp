@@ -114,18 +114,8 @@ void run(TerrainOptions opt) {
   if (io::lowerExtension(opt.out_file) ==
       ".csv")  // else .yaml / .yml: checked by --out's validator
     terrain::saveTerrainCsv(t, opt.out_file);
-  else {
+  else
     terrain::saveTerrainYaml(t, opt.out_file);
-    // Reading YAML builds a yaml-cpp node per height (about 0.8 kB each: review 148 measured
-    // 2.2 GB for 2.8 million heights, 0.4 GB as CSV).
-    constexpr double kLargeYamlHeights = 1e6;
-    const double heights = static_cast<double>(t.heights().size());
-    if (heights > kLargeYamlHeights)
-      std::cerr << "tvd: note: " << opt.out_file << " holds " << brief(heights)
-                << " heights: reading it back as YAML takes about "
-                << brief(std::ceil(heights * 8e-7))
-                << " GB of memory; a .csv of the same road, about a fifth\n";
-  }
 
   const Eigen::Index n = t.stations().size();
   // The ISO road is periodic over its length, its last station repeating the first: over one

@@ -1,0 +1,297 @@
+#include "tracked_vehicle_dynamics/terrain/terrain_yaml_plain.h"
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
+
+namespace tracked_vehicle_dynamics {
+namespace terrain {
+namespace {
+
+using Numbers = std::vector<double>;
+
+/// What the file's lines gave; each key at most once.
+struct PlainFile {
+  std::optional<std::string> name;
+  std::optional<double> spacing;
+  std::optional<double> start;
+  std::optional<Numbers> x;
+  std::optional<Numbers> y;
+  std::optional<Numbers> flat_heights;              // heights: [..]
+  std::optional<std::vector<Numbers>> height_rows;  // heights: then "- [..]" lines
+};
+
+/// Thrown inside this file only: the file is not (entirely) in the plain layout.
+struct NotPlain {};
+
+std::string_view trimmedLeft(std::string_view text) {
+  while (!text.empty() && text.front() == ' ')
+    text.remove_prefix(1);
+  return text;
+}
+
+/// After a value: nothing but blanks, or blanks then a comment ("# ..." after at least one).
+void expectEndOfLine(std::string_view rest) {
+  const std::string_view after = trimmedLeft(rest);
+  if (after.empty())
+    return;
+  if (after.front() == '#' && after.size() < rest.size())
+    return;
+  throw NotPlain();
+}
+
+/// A plain decimal, -?(d+(.d*)?|.d+)([eE][+-]?d+)?, finite, not subnormal: the texts YamlValue::
+/// asNumber reads to the same value by the same from_chars (it also takes '+', YAML's non-finite
+/// spellings to refuse, and subnormals by strtod; those go to the general reader).
+double plainNumber(std::string_view text) {
+  std::size_t i = 0;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < text.size() && text[i] >= '0' && text[i] <= '9')
+      ++i;
+    return i - from;
+  };
+  if (i < text.size() && text[i] == '-')
+    ++i;
+  std::size_t mantissa = digits();
+  if (i < text.size() && text[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0)
+    throw NotPlain();
+  if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-'))
+      ++i;
+    if (digits() == 0)
+      throw NotPlain();
+  }
+  if (i != text.size())
+    throw NotPlain();
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    throw NotPlain();
+  return value;
+}
+
+/// "[a, b, c]" then the end of the line.
+Numbers flowList(std::string_view text) {
+  if (text.empty() || text.front() != '[')
+    throw NotPlain();
+  const std::size_t close = text.find(']');
+  if (close == std::string_view::npos)
+    throw NotPlain();
+  expectEndOfLine(text.substr(close + 1));
+  std::string_view items = text.substr(1, close - 1);
+  Numbers values;
+  if (trimmedLeft(items).empty())
+    return values;
+  while (true) {
+    const std::size_t comma = items.find(',');
+    std::string_view item = trimmedLeft(items.substr(0, comma));
+    while (!item.empty() && item.back() == ' ')
+      item.remove_suffix(1);
+    values.push_back(plainNumber(item));
+    if (comma == std::string_view::npos)
+      return values;
+    items.remove_prefix(comma + 1);
+  }
+}
+
+/// A number alone on its line (spacing, start).
+double scalarNumber(std::string_view text) {
+  const std::size_t end = text.find(' ');
+  const double value = plainNumber(text.substr(0, end));
+  if (end != std::string_view::npos)
+    expectEndOfLine(text.substr(end));
+  return value;
+}
+
+/// "text" of printable ASCII without '"' or '\\' (no escapes to interpret), then the line's end.
+std::string quotedName(std::string_view text) {
+  if (text.size() < 2 || text.front() != '"')
+    throw NotPlain();
+  const std::size_t close = text.find('"', 1);
+  if (close == std::string_view::npos)
+    throw NotPlain();
+  const std::string_view inside = text.substr(1, close - 1);
+  for (const char c : inside)
+    if (c < 0x20 || c > 0x7e || c == '\\')
+      throw NotPlain();
+  expectEndOfLine(text.substr(close + 1));
+  return std::string(inside);
+}
+
+template <typename T>
+void setOnce(std::optional<T>& slot, T value) {
+  if (slot)
+    throw NotPlain();  // a key given twice: the general reader names it
+  slot = std::move(value);
+}
+
+PlainFile parse(const std::string& text) {
+  PlainFile file;
+  bool in_heights_block = false;
+  std::size_t item_indent = std::string::npos;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string::npos)
+      end = text.size();
+    std::string_view line(text.data() + at, end - at);
+    at = end + 1;
+    if (!line.empty() && line.back() == '\r')
+      line.remove_suffix(1);
+    for (const char c : line)  // tabs, a lone CR, other controls, non-ASCII: the general reader
+      if (c < 0x20 || c > 0x7e)
+        throw NotPlain();
+    const std::string_view content = trimmedLeft(line);
+    if (content.empty() || content.front() == '#')
+      continue;
+    const std::size_t indent = line.size() - content.size();
+    if (content.front() == '-') {
+      // An item of the heights block: "- [..]", every one at the same indentation.
+      if (!in_heights_block || content.size() < 2 || content[1] != ' ')
+        throw NotPlain();
+      if (item_indent == std::string::npos)
+        item_indent = indent;
+      else if (indent != item_indent)
+        throw NotPlain();
+      file.height_rows->push_back(flowList(trimmedLeft(content.substr(2))));
+      continue;
+    }
+    if (indent != 0)
+      throw NotPlain();
+    if (in_heights_block && file.height_rows->empty())
+      throw NotPlain();  // "heights:" with no items under it
+    in_heights_block = false;
+    const std::size_t colon = content.find(':');
+    if (colon == std::string_view::npos)
+      throw NotPlain();
+    const std::string_view key = content.substr(0, colon);
+    const std::string_view rest = content.substr(colon + 1);
+    if (!rest.empty() && rest.front() != ' ')
+      throw NotPlain();  // "key:value" is one plain scalar in YAML, not a key and its value
+    const std::string_view value = trimmedLeft(rest);
+    if (key == "heights" && (value.empty() || value.front() == '#')) {
+      setOnce(file.height_rows, std::vector<Numbers>());
+      in_heights_block = true;
+      item_indent = std::string::npos;
+    } else if (value.empty() || value.front() == '#') {
+      throw NotPlain();
+    } else if (key == "name") {
+      setOnce(file.name, quotedName(value));
+    } else if (key == "spacing") {
+      setOnce(file.spacing, scalarNumber(value));
+    } else if (key == "start") {
+      setOnce(file.start, scalarNumber(value));
+    } else if (key == "x") {
+      setOnce(file.x, flowList(value));
+    } else if (key == "y") {
+      setOnce(file.y, flowList(value));
+    } else if (key == "heights") {
+      setOnce(file.flat_heights, flowList(value));
+    } else {
+      throw NotPlain();
+    }
+  }
+  if (in_heights_block && file.height_rows->empty())
+    throw NotPlain();
+  if (file.flat_heights && file.height_rows)
+    throw NotPlain();
+  return file;
+}
+
+/// Strictly increasing and at least kMinTerrainSpacing apart (loadTerrainYaml's checkIncreasing).
+void expectIncreasing(const Numbers& values) {
+  for (std::size_t i = 1; i < values.size(); ++i)
+    if (!(values[i] > values[i - 1]) || closerThanMinSpacing(values[i - 1], values[i]))
+      throw NotPlain();
+}
+
+/// loadTerrainYaml's checks, in the same terms; any failure leaves the file to it.
+Terrain build(PlainFile file, const std::string& path) {
+  if (file.spacing.has_value() == file.x.has_value() || (file.x && file.start))
+    throw NotPlain();
+  Vector lateral = Vector::Zero(1);
+  std::vector<Numbers> rows;
+  if (file.y) {
+    // A list of lists, one per lateral line.
+    if (file.y->empty() || !file.height_rows || file.height_rows->size() != file.y->size())
+      throw NotPlain();
+    expectIncreasing(*file.y);
+    lateral = Eigen::Map<const Vector>(file.y->data(), static_cast<Eigen::Index>(file.y->size()));
+    rows = std::move(*file.height_rows);
+  } else {
+    if (!file.flat_heights)
+      throw NotPlain();
+    rows.push_back(std::move(*file.flat_heights));
+  }
+  const std::size_t count = rows.front().size();
+  if (count == 0)
+    throw NotPlain();
+  for (const Numbers& row : rows)
+    if (row.size() != count)
+      throw NotPlain();
+
+  const auto stations = static_cast<Eigen::Index>(count);
+  Vector x(stations);
+  if (file.spacing) {
+    const double spacing = *file.spacing;
+    if (!(spacing >= kMinTerrainSpacing))
+      throw NotPlain();
+    const double start = file.start.value_or(0.0);
+    for (Eigen::Index k = 0; k < stations; ++k) {
+      x(k) = start + static_cast<double>(k) * spacing;
+      if (!std::isfinite(x(k)) || (k > 0 && !(x(k) > x(k - 1))))
+        throw NotPlain();
+    }
+  } else {
+    if (file.x->size() != count)
+      throw NotPlain();
+    expectIncreasing(*file.x);
+    x = Eigen::Map<const Vector>(file.x->data(), stations);
+  }
+
+  Matrix h(lateral.size(), stations);
+  for (std::size_t j = 0; j < rows.size(); ++j)
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!(std::abs(rows[j][i]) <= kMaxTerrainHeight))
+        throw NotPlain();
+      h(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = rows[j][i];
+    }
+  const std::string name = file.name ? *file.name : std::filesystem::path(path).stem().string();
+  try {
+    return Terrain(x, lateral, h, name);
+  } catch (const InputError&) {
+    throw NotPlain();  // the general reader gives the message, with the file's name
+  }
+}
+
+}  // namespace
+
+std::optional<Terrain> readPlainTerrainYaml(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    return std::nullopt;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad())
+    return std::nullopt;
+  try {
+    return build(parse(text), path);
+  } catch (const NotPlain&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace terrain
+}  // namespace tracked_vehicle_dynamics
