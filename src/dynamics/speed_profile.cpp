@@ -9,7 +9,7 @@ namespace tracked_vehicle_dynamics {
 namespace dynamics {
 SpeedProfile::SpeedProfile(std::vector<double> time, std::vector<double> speed,
                            const std::string& name)
-    : time_(std::move(time)), speed_(std::move(speed)) {
+    : time_(std::move(time)), speed_(std::move(speed)), name_(name) {
   if (time_.size() != speed_.size())
     throw InputError(name + ": " + std::to_string(time_.size()) + " times but " +
                      std::to_string(speed_.size()) + " speeds");

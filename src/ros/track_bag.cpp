@@ -43,7 +43,7 @@ void checkOptions(const TrackBagOptions& o) {
       std::isfinite(o.speed) && o.speed > 0.0 && o.speed <= kMaxTrackBagSpeed, "speed", o.speed,
       "in (0, " + brief(kMaxTrackBagSpeed) + "] m/s (" + brief(dynamics::kMaxSpeedKmh) + " km/h)");
   if (o.speed_profile && o.speed_profile->maxSpeed() > kMaxTrackBagSpeed)
-    throw InputError("track bag: the speed profile reaches " +
+    throw InputError(o.speed_profile->name() + ": the speed profile reaches " +
                      beyond(o.speed_profile->maxSpeed() * kKmhPerMs, dynamics::kMaxSpeedKmh) +
                      " km/h; at most " + brief(dynamics::kMaxSpeedKmh) + " km/h");
   require(std::isfinite(o.patch_length) && o.patch_length > 0.0, "patch_length", o.patch_length,

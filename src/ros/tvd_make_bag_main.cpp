@@ -137,16 +137,6 @@ int run(int argc, char** argv) {
         "", "--out", out, {{"--track", options.track}, {"--speed-profile", profile_file}});
     if (!profile_file.empty()) {
       options.speed_profile = tracked_vehicle_dynamics::dynamics::loadSpeedProfile(profile_file);
-      // Said naming the file here; writeTrackBag's own check knows no file.
-      const double fastest = options.speed_profile->maxSpeed();
-      if (fastest > rl::kMaxTrackBagSpeed)
-        throw tracked_vehicle_dynamics::InputError(
-            profile_file + ": the speed profile reaches " +
-            tracked_vehicle_dynamics::beyond(fastest * tracked_vehicle_dynamics::kKmhPerMs,
-                                             tracked_vehicle_dynamics::dynamics::kMaxSpeedKmh) +
-            " km/h; at most " +
-            tracked_vehicle_dynamics::brief(tracked_vehicle_dynamics::dynamics::kMaxSpeedKmh) +
-            " km/h");
     }
     if (peak_only) {
       // The run is checked as for writing (speeds up to 200 km/h, the track, the duration), so a

@@ -42,6 +42,8 @@ class SpeedProfile {
 
   const std::vector<double>& times() const { return time_; }
   const std::vector<double>& speeds() const { return speed_; }
+  /// What the profile was made from (its file, for one loaded): the start of later messages.
+  const std::string& name() const { return name_; }
 
  private:
   /// Index k of the segment [t_k, t_{k+1}) that holds t (the last sample for t >= endTime()).
@@ -50,6 +52,7 @@ class SpeedProfile {
   std::vector<double> time_;
   std::vector<double> speed_;
   std::vector<double> station_;  // S_k at each sample
+  std::string name_;
 };
 
 }  // namespace dynamics
