@@ -110,6 +110,10 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "a number with a thousands separator? Write 14000, not 14,000"},
       {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: -5.2e5,",
        "suspension.torsion_bar_stiffness", "positive"},
+      // It once left the un-tracked model singular: "a mechanism involving node 1001 ry".
+      {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: 1e-300,",
+       "suspension.torsion_bar_stiffness",
+       "less than 1e-9 of suspension.contact_stiffness 2e+10 N/m in series with it: at least "},
       {"ground_count: {value: 30,", "ground_count: {value: 93,", "track_assembly.ground_count",
        "only 92"},
       {"chain_length: {value: 14.858,", "chain_length: {value: 15.5,",
