@@ -350,6 +350,20 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
             "pads longer than the pitch overlap their neighbours");
   c.require(t.pad_lateral_offset < 0.5 * t.width, "track_assembly.pad_lateral_offset",
             "pads lie outside the track width " + brief(t.width) + " m");
+  // A pad's offsets and rubber layers of less than a millimetre are no pad: at 1e-300 m a zero
+  // offset put two nodes of the link's beam on one point, and a rubber layer's stiffness, which
+  // goes as 1 / its thickness, made the assembly's stiffness matrix indefinite (the message
+  // blamed "a track_assembly stiffness"). The bundled vehicles' are 10 mm and more.
+  constexpr double kMinPadDimension = 1e-3;
+  for (const auto& [value, key] :
+       {std::pair<double, const char*>{t.pad_lateral_offset, "pad_lateral_offset"},
+        {t.pad_column_offset, "pad_column_offset"},
+        {t.pad_rubber_below_core, "pad_rubber_below_core"},
+        {t.pad_rubber_above_core, "pad_rubber_above_core"}})
+    c.require(value >= kMinPadDimension, std::string("track_assembly.") + key,
+              brief(value) +
+                  " m is less than 1 mm (at least 0.001 m: a pad's offsets and rubber "
+                  "layers are centimetres)");
   const double pad_height =
       t.pad_rubber_below_core + t.pad_core_thickness + t.pad_rubber_above_core;
   c.require(t.pitch_line_height > pad_height, "track_assembly.pitch_line_height",
