@@ -150,9 +150,18 @@ Vector frequencyGrid(double max_hz, double step_hz) {
 
 void run(const FrfOptions& opt) {
   vehicle::Variant variant = vehicle::parseVariant(opt.variant);
-  if (!(opt.speed_kmh >= 0) || opt.speed_kmh > dynamics::kMaxSpeedKmh)
-    throw InputError("frf: --speed-kmh must be in [0, " + brief(dynamics::kMaxSpeedKmh) +
-                     "] (0: synchronous), got " + beyond(opt.speed_kmh, dynamics::kMaxSpeedKmh));
+  // The travelled excitation delays each input by L_q / v. Slower than 0.01 km/h (3 mm/s) a
+  // vehicle is at rest for any ride question, and the delay (1700 s over the paper's 4.7 m) only
+  // grows until e^(-j omega L / v) stops being a number: 1e-300 km/h gave another FRF (the phase
+  // lost to round-off), 1e-308 an infinite delay ("an undamped mode lies on the grid").
+  constexpr double kMinTravelKmh = 0.01;
+  if (!(opt.speed_kmh >= 0) || opt.speed_kmh > dynamics::kMaxSpeedKmh ||
+      (opt.speed_kmh > 0 && opt.speed_kmh < kMinTravelKmh))
+    throw InputError("frf: --speed-kmh must be 0 (synchronous) or in [" + brief(kMinTravelKmh) +
+                     ", " + brief(dynamics::kMaxSpeedKmh) + "], got " +
+                     (opt.speed_kmh < kMinTravelKmh
+                          ? beyond(opt.speed_kmh, kMinTravelKmh)
+                          : beyond(opt.speed_kmh, dynamics::kMaxSpeedKmh)));
   if (!(opt.max_hz > 0) || !std::isfinite(opt.max_hz))
     throw InputError("frf: --max-hz must be positive and finite, got " + brief(opt.max_hz));
   if (!(opt.step_hz > 0))
@@ -423,7 +432,7 @@ void registerFrfCommand(CLI::App& app) {
                   "full (FE modes + static residual)")
       ->check(CLI::IsMember({"reduced", "full"}));
   cmd->add_option("--speed-kmh", opt->speed_kmh,
-                  "travelled excitation at this speed [km/h] (wheelbase filter), 0 .. 200; 0: "
+                  "travelled excitation at this speed [km/h] (wheelbase filter), 0.01 .. 200; 0: "
                   "synchronous");
   cmd->add_option("--sides", opt->sides,
                   "in_phase: both tracks' roads alike (the paper's) | anti_phase: left +h, "

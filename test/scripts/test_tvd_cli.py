@@ -3670,17 +3670,19 @@ class TvdCliTest(unittest.TestCase):
 
     def test_documented_ranges_are_refused_at_their_bounds(self):
         """The ranges the help texts give, refused just outside each bound and named: simulate's
-        speed in (0, 200] km/h (0 would never leave the start), frf's in [0, 200] (0 is
-        synchronous), mac's count in 1 .. 200, ride's step in [1e-4, 2e-3] s."""
+        speed in (0, 200] km/h (0 would never leave the start), frf's 0 (synchronous) or in
+        [0.01, 200], mac's count in 1 .. 200, ride's step in [1e-4, 2e-3] s."""
         sim = ["simulate", "--vehicle", VEHICLE, "--variant", "untracked", "--track", "long_hill"]
         for value in ("0", "200.1"):
             self.assert_input_error(sim + ["--speed-kmh", value],
                                     "simulate: --speed-kmh must be in (0, 200], got " + value)
-        for value in ("-0.1", "200.1"):
+        # Above 0 and below 0.01 km/h: 1e-308 once read as an infinite delay ("an undamped mode
+        # lies on the grid"), 1e-300 as another FRF.
+        for value in ("-0.1", "200.1", "1e-308", "1e-300", "0.0099"):
             self.assert_input_error(["frf", "--vehicle", VEHICLE, "--variant", "untracked",
                                      "--speed-kmh", value],
-                                    "frf: --speed-kmh must be in [0, 200] (0: synchronous), got "
-                                    + value)
+                                    "frf: --speed-kmh must be 0 (synchronous) or in [0.01, 200], "
+                                    "got " + value)
         for value in ("0", "201"):
             self.assert_input_error(["mac", "--vehicle", VEHICLE, "--count", value],
                                     "mac: --count", value + " not in range 1 to 200")
