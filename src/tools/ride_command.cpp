@@ -99,6 +99,14 @@ void run(const RideOptions& opt) {
       << " (raise the lowest speed)";
     throw InputError(m.str());
   }
+  // The shock criterion's low-pass is 30 Hz; below 0.1 Hz its settling (several 1 / f_c, tens of
+  // seconds) outlasts a run over an obstacle, so the peak read would be the filter's own start,
+  // and toward 1e-308 Hz the analogue design's w_c^2 underflowed to a zero numerator ("weighting
+  // filter section 0: numerator is zero", naming no option). 0 keeps its meaning: unfiltered.
+  constexpr double kMinLowpassHz = 0.1;
+  if (opt.lowpass_hz > 0.0 && opt.lowpass_hz < kMinLowpassHz)
+    throw InputError("ride: --lowpass-hz " + brief(opt.lowpass_hz) +
+                     " must be 0 (unfiltered) or at least " + brief(kMinLowpassHz) + " Hz");
   if (opt.lowpass_hz >= 0.5 / opt.dt) {
     std::ostringstream m;
     m << "ride: --lowpass-hz " << opt.lowpass_hz
@@ -358,9 +366,9 @@ void registerRideCommand(CLI::App& app) {
   const std::vector<CLI::Option*> time_only = {
       cmd->add_option("--peak-limit-g", opt->peak_limit_g, "peak upward acceleration limit [g]")
           ->check(positiveNumber()),
-      cmd->add_option(
-             "--lowpass-hz", opt->lowpass_hz,
-             "Butterworth (4th order) low-pass before the peak is read [Hz]; 0: unfiltered")
+      cmd->add_option("--lowpass-hz", opt->lowpass_hz,
+                      "Butterworth (4th order) low-pass before the peak is read [Hz], >= 0.1; 0: "
+                      "unfiltered")
           ->check(nonNegativeNumber()),
       // At most 2 ms: the 30 Hz low-pass and the absorbed-power filter (peaking at 4.5 Hz, K up
       // to 80 Hz) need fs well above 60 Hz.

@@ -1761,6 +1761,10 @@ class TvdCliTest(unittest.TestCase):
         self.assert_input_error(ride + ["--dt", "0.005"], "--dt", "[0.0001, 0.002] s")
         self.assert_input_error(ride + ["--dt", "0.002", "--lowpass-hz", "300"], "--lowpass-hz 300",
                                 "Nyquist frequency 1/(2 dt) = 250 Hz")
+        # 1e-308 Hz once failed as "weighting filter section 0: numerator is zero".
+        for value in ("1e-308", "0.099"):
+            self.assert_input_error(ride + ["--lowpass-hz", value], "ride: --lowpass-hz " + value +
+                                    " must be 0 (unfiltered) or at least 0.1 Hz")
         self.assert_input_error(ride + ["--tolerance-kmh", "0"], "--tolerance-kmh")
         self.assert_input_error(ride + ["--power-limit-w", "-1"], "--power-limit-w", "positive")
         self.assert_input_error(ride + ["--peak-limit-g", "nan"], "--peak-limit-g", "positive")
