@@ -56,6 +56,11 @@ std::string roundedDown(double value, int digits = 6) {
   return brief(std::floor(value * scale) / scale);
 }
 
+// --width's bound [m]: a road's, with room for any vehicle and lateral offset.
+constexpr double kMaxRoadWidth = 1000.0;
+// --max-frequency's bound [cycles/m]: the Nyquist frequency of the finest --spacing.
+constexpr double kMaxRoadFrequency = 0.5 / terrain::kMinTerrainSpacing;
+
 // The share of the band top's PSD a simulation's linear interpolation must keep before a note.
 constexpr double kKeptPowerShare = 0.8;
 
@@ -238,7 +243,12 @@ void registerTerrainCommand(CLI::App& app) {
   for (CLI::Option* o :
        {cmd->add_option("--length", opt->length, "random road: length [m]")
             ->check(positiveNumber()),
-        cmd->add_option("--width", opt->width, "random road: width [m]")->check(positiveNumber()),
+        // At most 1 km: the lines carry a vehicle a few metres wide (a width in mm typed as m,
+        // 5000, is refused); 1e20 m was refused by the terrain, naming its lateral line, not
+        // --width.
+        cmd->add_option("--width", opt->width, "random road: width [m], at most 1000")
+            ->check(finiteNumberWhere([](double v) { return v > 0.0 && v <= kMaxRoadWidth; },
+                                      "positive and at most 1000 m (a road's width)", "WIDTH")),
         cmd->add_option("--spacing", opt->spacing, "random road: station step [m], >= 1e-6")
             ->check(finiteNumberWhere([](double v) { return v >= terrain::kMinTerrainSpacing; },
                                       "at least 1e-06 m (terrain stations 1 um apart)", "SPACING")),
@@ -253,9 +263,14 @@ void registerTerrainCommand(CLI::App& app) {
         cmd->add_option("--min-frequency", opt->min_frequency,
                         "random road: lowest spatial frequency [cycles/m]")
             ->check(positiveNumber()),
+        // At most 1 / (2 x the finest --spacing): no grid holds more, and 1e308 once asked for
+        // "--spacing at most nan m".
         cmd->add_option("--max-frequency", opt->max_frequency,
-                        "random road: highest spatial frequency [cycles/m]")
-            ->check(positiveNumber()),
+                        "random road: highest spatial frequency [cycles/m], at most 5e5")
+            ->check(finiteNumberWhere(
+                [](double v) { return v > 0.0 && v <= kMaxRoadFrequency; },
+                "positive and at most 5e+05 cycles/m (1 / (2 x 1e-06 m), the finest --spacing)",
+                "FREQUENCY")),
         // As ride --iso8608's (measured roads: 1.5 .. 3.5), so that a spectral ride has its
         // time-domain road.
         cmd->add_option("--waviness", opt->waviness,

@@ -2939,7 +2939,8 @@ class TvdCliTest(unittest.TestCase):
 
     def test_random_road_and_reduction_errors_name_the_options(self):
         """tvd terrain --iso8608 names --taper and --length, --max-frequency and --spacing (its
-        suggested spacing is accepted as printed); a MoGeSeC count beyond the candidates and a
+        suggested spacing is accepted as printed), --max-frequency and --width beyond their finite
+        bounds; a MoGeSeC count beyond the candidates and a
         MAC selection that pairs nothing name the options that set them."""
         road = self.path("named_road.csv")
         iso = ["terrain", "--iso8608", "C", "--out", road]
@@ -2953,6 +2954,17 @@ class TvdCliTest(unittest.TestCase):
                       "1 / (2 spacing) = 2.5 cycles/m: give --spacing at most 0.166666 m", r.stderr)
         self.tvd(*iso, "--max-frequency", "3", "--spacing", "0.166666", "--length", "20")
         self.assertTrue(os.path.exists(road))
+        # Finite bounds named by their option: 1e308 once suggested "--spacing at most nan m",
+        # and --width 1e20 was refused naming the terrain's lateral line.
+        for value in ("1e308", "5.1e5"):
+            self.assert_input_error(iso + ["--max-frequency", value],
+                                    "terrain: --max-frequency: must be positive and at most "
+                                    "5e+05 cycles/m (1 / (2 x 1e-06 m), the finest --spacing), "
+                                    "got " + value)
+        for value in ("1e20", "1000.5"):
+            self.assert_input_error(iso + ["--width", value],
+                                    "terrain: --width: must be positive and at most 1000 m (a "
+                                    "road's width), got " + value)
         reduce = ["reduce", "--vehicle", VEHICLE, "--variant", "untracked"]
         self.assert_input_error(reduce + ["--masters", "1000"],
                                 "MoGeSeC masters of the untracked variant, mogesec_masters 1000 "
