@@ -1,5 +1,6 @@
 #include "reduction_options.h"
 
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -160,6 +161,24 @@ ReducedModelSource loadReducedFile(const vehicle::VehicleDescription& descriptio
   return s;
 }
 
+// Why the cache directory `dir` cannot be created, when a file stands in its way (it or a
+// parent): "--cache-dir X is a file, not a directory", where the filesystem's own message read
+// "filesystem error: cannot create directories: Not a directory [X]". Empty otherwise.
+std::string cacheDirBlocked(const std::string& dir, bool given) {
+  std::error_code error;
+  const std::string what = given ? "--cache-dir " + dir : "the cache directory " + dir;
+  for (std::filesystem::path p = dir; !p.empty(); p = p.parent_path()) {
+    const auto status = std::filesystem::status(p, error);
+    if (std::filesystem::exists(status) && !std::filesystem::is_directory(status))
+      return p == std::filesystem::path(dir)
+                 ? what + " is a file, not a directory"
+                 : what + ": " + p.string() + " is a file, not a directory";
+    if (std::filesystem::exists(status) || p == p.parent_path())
+      break;
+  }
+  return std::string();
+}
+
 // The warnings and notes on stderr (the text and JSON outputs carry them too).
 void printWarnings(const ReducedModelSource& s) {
   for (const std::string& w : s.warnings)
@@ -183,17 +202,17 @@ ReducedModelSource obtainReducedModel(const vehicle::VehicleDescription& descrip
   s.variant = variant;
   s.options = flags.reduction().options(command);
   reduction::VehicleReductionReport report;
-  s.model = reduction::loadOrReduceVehicle(
-      description, variant, flags.cacheDir().empty() ? defaultCacheDir() : flags.cacheDir(),
-      s.options, &report);
+  const std::string cache_dir = flags.cacheDir().empty() ? defaultCacheDir() : flags.cacheDir();
+  s.model = reduction::loadOrReduceVehicle(description, variant, cache_dir, s.options, &report);
   s.kind = report.from_cache ? ReducedModelSource::Kind::Cache : ReducedModelSource::Kind::Computed;
   s.warnings = report.warnings;
   // A cache that cannot be written (a --cache-dir that is a file, a read-only directory) costs
   // the whole reduction on every run: said once, with the reason.
-  if (!report.cache_error.empty())
+  if (!report.cache_error.empty()) {
+    const std::string blocked = cacheDirBlocked(cache_dir, !flags.cacheDir().empty());
     s.warnings.push_back("the reduced-model cache is not used (every run reduces again): " +
-                         report.cache_error);
-  else
+                         (blocked.empty() ? report.cache_error : blocked));
+  } else
     s.file = report.cache_file;
   if (report.cache_rebuilt)
     s.notes.push_back(report.cache_note);
