@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -151,6 +152,14 @@ YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
   try {
     refuseStalledDocuments(lines, file);
     documents = YAML::LoadAll(lines);
+  } catch (const YAML::DeepRecursion& e) {
+    // yaml-cpp's guard against a stack overflow (2000 calls deep, about 500 levels) says only
+    // "bad file".
+    throw InputError(printable(file + ": line " + std::to_string(e.mark.line + 1) + ", column " +
+                               std::to_string(e.mark.column + 1) +
+                               ": invalid YAML: nested too deep (lists and maps more than about "
+                               "500 levels within one another; the package's files need fewer "
+                               "than 10)"));
   } catch (const YAML::Exception& e) {
     throw InputError(printable(file + ": line " + std::to_string(e.mark.line + 1) + ", column " +
                                std::to_string(e.mark.column + 1) + ": invalid YAML: " + e.msg));

@@ -705,6 +705,23 @@ TEST_F(ModelYamlTest, AStrayCommaIsRefusedNotParsedForever) {
   }
 }
 
+// yaml-cpp refuses a document nested about 500 deep (its guard against a stack overflow) as
+// "bad file": the message says what is wrong, for lists and for block maps.
+TEST_F(ModelYamlTest, DeeplyNestedFileIsNamedAsSuch) {
+  const std::string lists = "name: " + std::string(1000, '[') + std::string(1000, ']') + "\n";
+  expectLoadError("deep_lists.yaml", lists,
+                  {"line 1, column ",
+                   "invalid YAML: nested too deep (lists and maps more than "
+                   "about 500 levels within one another"});
+  std::string maps;
+  for (int i = 0; i < 1000; ++i)
+    maps += std::string(2 * i, ' ') + "k" + std::to_string(i) + ":\n";
+  expectLoadError("deep_maps.yaml", maps, {"invalid YAML: nested too deep"});
+  // 100 levels read, and fail on the schema instead.
+  const std::string shallow = "name: " + std::string(100, '[') + std::string(100, ']') + "\n";
+  expectLoadError("shallow.yaml", shallow, {"name"});
+}
+
 TEST_F(ModelYamlTest, SaveToAnUnwritablePathThrows) {
   const std::string path = (directory_ / "no_such_dir" / "model.yaml").string();
   EXPECT_THROW(saveModelYaml(awkwardModel(), path), Error);
