@@ -624,6 +624,28 @@ void requireRoadInputs(const std::string& path, const ReducedModel& model) {
                           " input_lateral: where each input reads the road is missing");
 }
 
+// The outputs vehicleOutputs() gives the description's vehicle (the file holds its hash): the
+// hull's six, each road wheel's uz and each named point's three. A file edited and signed again
+// with renamed outputs passed the file's checks and failed later as "frf: the model has no
+// output 'hull uz'", naming neither the file nor what is wrong with it.
+void requireVehicleOutputs(const std::string& path, const ReducedModel& model,
+                           const vehicle::VehicleDescription& description) {
+  std::vector<std::string> expected;
+  for (int d = 0; d < kDofsPerNode; ++d)
+    expected.push_back(std::string("hull ") + directionName(d));
+  for (const char* side : {"left", "right"})
+    for (int axle = 1; axle <= description.running_gear.axle_count; ++axle)
+      expected.push_back(std::string("road_wheel_") + side + "_" + std::to_string(axle) + " uz");
+  for (const vehicle::NamedPoint& point : description.named_points)
+    for (int d = 0; d < 3; ++d)
+      expected.push_back(point.name + " " + directionName(d));
+  const std::vector<std::string>& names = model.system.output_names;
+  for (const std::string& name : expected)
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      throw StaleCacheError(path + ": the model has no output '" + name +
+                            "', which the vehicle's reduced model has (output_names edited?)");
+}
+
 }  // namespace
 
 VehicleModelFile loadVehicleModelFile(const std::string& path,
@@ -635,6 +657,7 @@ VehicleModelFile loadVehicleModelFile(const std::string& path,
   load.require_same_version = false;
   f.model = loadReducedModel(path, vehicle::descriptionHashHex(description), load);
   requireRoadInputs(path, f.model);
+  requireVehicleOutputs(path, f.model, description);
   if (!parseReductionKey(f.model.reduction, &f.variant, &f.options))
     throw StaleCacheError(path + ": its reduction '" + f.model.reduction +
                           "' is not one tvd reduce writes");
@@ -666,6 +689,7 @@ ReducedModel loadOrReduceVehicle(const vehicle::VehicleDescription& description,
       load.expected_reduction = reductionKey(variant, options);
       ReducedModel cached = loadReducedModel(path.string(), hash, load);
       requireRoadInputs(path.string(), cached);
+      requireVehicleOutputs(path.string(), cached, description);
       rep.from_cache = true;
       rep.cache_note = "loaded " + path.string();
       rep.reduced_dofs = cached.size();

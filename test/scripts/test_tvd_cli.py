@@ -2757,6 +2757,25 @@ class TvdCliTest(unittest.TestCase):
                           status=INPUT_ERROR_STATUS)
         self.assertIn("K_R is not positive definite", result.stderr)
         self.assertEqual(result.stderr.count("tvd reduce"), 1, result.stderr)
+        # Outputs renamed and the file signed again: refused naming the file, not as "frf: the
+        # model has no output 'hull uz'" once the run had started.
+        renamed = self.path("band40_renamed.mat")
+        values = {k: v for k, v in scipy.io.loadmat(mat).items() if not k.startswith("__")}
+        names = values["output_names"]
+        for i in range(names.shape[0]):
+            names[i, 0] = np.array([str(names[i, 0][0]).replace("hull", "body")])
+        scipy.io.savemat(renamed, values)
+        values["checksum"] = documented_checksum(renamed)
+        scipy.io.savemat(renamed, values)
+        for command in ("frf", "simulate"):
+            result = self.tvd(command, "--vehicle", VEHICLE, "--reduced", renamed,
+                              *(["--track", "long_hill", "--speed-kmh", "10"]
+                                if command == "simulate" else []),
+                              status=INPUT_ERROR_STATUS)
+            self.assertEqual(result.stderr.strip(),
+                             f"tvd: error: {renamed}: the model has no output 'hull ux', which "
+                             "the vehicle's reduced model has (output_names edited?); run tvd "
+                             "reduce again")
 
     def test_reduced_file_conflicts_are_named(self):
         mat, _ = self.band_model()
