@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -178,8 +179,18 @@ class Validator {
       requirePositive(label, section.iy, "second moment Iy", "m^4");
       requirePositive(label, section.iz, "second moment Iz", "m^4");
       requirePositive(label, section.torsion, "torsion constant J", "m^4");
-      requireNonNegative(label, section.shear_factor_y, "shear factor shear_factor_y", "");
-      requireNonNegative(label, section.shear_factor_z, "shear factor shear_factor_z", "");
+      // The shear area factor x A cannot exceed the section's area (uniform shear: 1; 5/6 a
+      // rectangle, 0.5 a thin tube): 9.2e18 was accepted, a typo that only made the beam
+      // Euler-Bernoulli (Phi -> 0), which 0 says.
+      for (const auto& [factor, key] :
+           {std::pair<double, const char*>{section.shear_factor_y, "shear_factor_y"},
+            {section.shear_factor_z, "shear_factor_z"}}) {
+        requireNonNegative(label, factor, std::string("shear factor ") + key, "");
+        if (factor > 1.0)
+          fail(label, std::string("shear factor ") + key + " " + brief(factor) +
+                          " is above 1: the shear area (factor x A) cannot exceed the section's "
+                          "area (5/6 for a rectangle, 0.5 for a thin tube; 0 for Euler-Bernoulli)");
+      }
     }
   }
 

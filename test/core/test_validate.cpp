@@ -197,6 +197,8 @@ TEST(Validate, RejectsNonPhysicalProperties) {
        "non-positive torsion constant J"},
       {"shear factor", [](Model& m) { m.sections[0].shear_factor_y = -0.5; }, "sections[0]",
        "negative shear factor shear_factor_y -0.5"},
+      {"large shear factor", [](Model& m) { m.sections[0].shear_factor_z = 9.2e18; }, "sections[0]",
+       "shear factor shear_factor_z 9.2e+18 is above 1: the shear area"},
       {"stiffness", [](Model& m) { m.springs[0].stiffness[2] = -2e6; }, "springs[0]",
        "negative stiffness kz -2e+06 N/m"},
       {"rotational damping", [](Model& m) { m.springs[1].damping[5] = -1.0; }, "springs[1]",
