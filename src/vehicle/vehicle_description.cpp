@@ -13,6 +13,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/fnv1a.h"
+#include "tracked_vehicle_dynamics/io/message_text.h"
 #include "tracked_vehicle_dynamics/io/yaml_file_kind.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
@@ -553,6 +554,17 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
                 " N/m, less than 1e-9 of suspension.contact_stiffness " +
                 brief(d.suspension.contact_stiffness) + " N/m in series with it: at least " +
                 brief(min_torsion) + " N*m/rad (a value in another unit?)");
+  // The name is printed in every report and written into results: an escape code or a newline
+  // in it reached the terminal raw.
+  c.require(std::none_of(d.name.begin(), d.name.end(),
+                         [](char ch) {
+                           const auto u = static_cast<unsigned char>(ch);
+                           return u < 0x20 || u == 0x7f;
+                         }),
+            "name",
+            "the vehicle's name must not hold control characters (a newline, a tab, an escape "
+            "code), got \"" +
+                io::printable(d.name, 60) + "\"");
   std::set<std::string> names;
   for (const NamedPoint& p : d.named_points) {
     const std::string key = "named_points." + p.name;

@@ -110,6 +110,10 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "a number with a thousands separator? Write 14000, not 14,000"},
       {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: -5.2e5,",
        "suspension.torsion_bar_stiffness", "positive"},
+      // Printed in every report: an escape code reached the terminal raw.
+      {"name: paper_vehicle", "name: \"paper\\e[31mvehicle\\n\"", "name",
+       "must not hold control characters (a newline, a tab, an escape code), got "
+       "\"paper\\x1b[31mvehicle\\x0a\""},
       // It once left the un-tracked model singular: "a mechanism involving node 1001 ry".
       {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: 1e-300,",
        "suspension.torsion_bar_stiffness",
