@@ -380,6 +380,19 @@ std::string YamlValue::asString() const {
   return node_.Scalar();
 }
 
+bool YamlValue::isPlainNumber() const {
+  if (!node_.IsScalar() || node_.Tag() != kPlainTag)
+    return false;
+  const std::string& text = node_.Scalar();
+  if (isNonFiniteSpelling(text))
+    return true;
+  const std::string_view digits = withoutPlus(text);
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+  return !digits.empty() && end == digits.data() + digits.size() &&
+         (error == std::errc() || error == std::errc::result_out_of_range);
+}
+
 Vector3 YamlValue::asVector3() const {
   const std::vector<YamlValue> items = elements(3, "a list of 3 numbers [x, y, z]");
   return Vector3(items[0].asNumber(), items[1].asNumber(), items[2].asNumber());

@@ -215,6 +215,12 @@ io::YamlValue quantity(const io::YamlValue& entry, const char* expected_unit,
                 "' (convert the value)");
   }
   const io::YamlValue source = entry["source"];
+  // A number names no origin: a value typed under source (5.2e5), or a source cut to its number.
+  if (source.isPlainNumber())
+    source.fail(
+        "source must name where the value comes from (a text, e.g. \"Table 1, k_t\" or "
+        "\"estimated\"), got the number " +
+        source.asString() + " (quote it if it is one: \"" + source.asString() + "\")");
   const std::string text = source.asString();
   if (text.empty())
     source.fail("source must name where the value comes from");

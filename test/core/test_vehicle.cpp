@@ -110,6 +110,12 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "a number with a thousands separator? Write 14000, not 14,000"},
       {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: -5.2e5,",
        "suspension.torsion_bar_stiffness", "positive"},
+      // A number names no origin (it was accepted as the text "5.2e5").
+      {"torsion_bar_stiffness: {value: 5.2e5, unit: N*m/rad, source: \"Table 1, k_t\"}",
+       "torsion_bar_stiffness: {value: 5.2e5, unit: N*m/rad, source: 5.2e5}",
+       "suspension.torsion_bar_stiffness.source",
+       "source must name where the value comes from (a text, e.g. \"Table 1, k_t\" or "
+       "\"estimated\"), got the number 5.2e5"},
       // Printed in every report: an escape code reached the terminal raw.
       {"name: paper_vehicle", "name: \"paper\\e[31mvehicle\\n\"", "name",
        "must not hold control characters (a newline, a tab, an escape code), got "

@@ -71,6 +71,9 @@ class YamlValue {
   std::int64_t asInteger() const;
   /// Any scalar, quoted or not.
   std::string asString() const;
+  /// An unquoted scalar that reads as a number ("5", "-1e3", ".inf"): where a text is expected,
+  /// most likely a value typed under the wrong key.
+  bool isPlainNumber() const;
   /// A list of 3 numbers.
   Vector3 asVector3() const;
   /// A list of numbers of any length.
