@@ -473,6 +473,15 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
     c.require(2.0 * i <= inertia_sum, key,
               brief(i) + " kg*m^2 exceeds the sum of the other two principal inertias (" +
                   brief(inertia_sum - i) + "), which no rigid body has");
+  // Stiffness-proportional damping gives a mode of omega the ratio beta omega / 2: beta = 1 s is
+  // already 3 times critical at the hull's 1 Hz bounce, and every mode above it more (structural
+  // values are 1e-4 .. 1e-2 s). Beyond it a value is a typo (1e10 s was accepted).
+  constexpr double kMaxRayleighBeta = 1.0;
+  c.require(d.damping.rayleigh_beta <= kMaxRayleighBeta, "damping.rayleigh_beta",
+            brief(d.damping.rayleigh_beta) +
+                " s is more than 1 s: it damps a 1 Hz mode beta omega / 2 = " +
+                brief(d.damping.rayleigh_beta * kPi) +
+                " times critically (typical: 1e-4 .. 1e-2 s)");
   std::set<int> damped;
   for (int s : d.damping.damped_stations) {
     c.require(s >= 1 && s <= g.axle_count, "damping.damped_stations",

@@ -110,6 +110,9 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
        "a number with a thousands separator? Write 14000, not 14,000"},
       {"torsion_bar_stiffness: {value: 5.2e5,", "torsion_bar_stiffness: {value: -5.2e5,",
        "suspension.torsion_bar_stiffness", "positive"},
+      {"rayleigh_beta: {value: 0,", "rayleigh_beta: {value: 1e10,", "damping.rayleigh_beta",
+       "1e+10 s is more than 1 s: it damps a 1 Hz mode beta omega / 2 = 3.14159e+10 times "
+       "critically"},
       // A number names no origin (it was accepted as the text "5.2e5").
       {"torsion_bar_stiffness: {value: 5.2e5, unit: N*m/rad, source: \"Table 1, k_t\"}",
        "torsion_bar_stiffness: {value: 5.2e5, unit: N*m/rad, source: 5.2e5}",
