@@ -482,6 +482,14 @@ void validateDescription(const VehicleDescription& d, const std::string& where) 
                 " s is more than 1 s: it damps a 1 Hz mode beta omega / 2 = " +
                 brief(d.damping.rayleigh_beta * kPi) +
                 " times critically (typical: 1e-4 .. 1e-2 s)");
+  // The arm dampers sit on the damped stations only: without any, arm_damping was silently
+  // unused (a description's value that would be ignored is refused, as the tools' options are).
+  c.require(d.suspension.arm_damping == 0.0 || !d.damping.damped_stations.empty(),
+            "suspension.arm_damping",
+            brief(d.suspension.arm_damping) +
+                " N*m*s/rad would be unused: damping.damped_stations lists no station with an arm "
+                "damper (list the axles, e.g. [1, " +
+                std::to_string(g.axle_count) + "], or give arm_damping 0)");
   std::set<int> damped;
   for (int s : d.damping.damped_stations) {
     c.require(s >= 1 && s <= g.axle_count, "damping.damped_stations",

@@ -113,6 +113,9 @@ TEST(VehicleDescription, ErrorsNameTheKey) {
       {"rayleigh_beta: {value: 0,", "rayleigh_beta: {value: 1e10,", "damping.rayleigh_beta",
        "1e+10 s is more than 1 s: it damps a 1 Hz mode beta omega / 2 = 3.14159e+10 times "
        "critically"},
+      {"arm_damping: {value: 0,", "arm_damping: {value: 2e4,", "suspension.arm_damping",
+       "20000 N*m*s/rad would be unused: damping.damped_stations lists no station with an arm "
+       "damper (list the axles, e.g. [1, 7], or give arm_damping 0)"},
       // A number names no origin (it was accepted as the text "5.2e5").
       {"torsion_bar_stiffness: {value: 5.2e5, unit: N*m/rad, source: \"Table 1, k_t\"}",
        "torsion_bar_stiffness: {value: 5.2e5, unit: N*m/rad, source: 5.2e5}",
