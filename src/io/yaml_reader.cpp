@@ -144,14 +144,22 @@ YamlValue YamlValue::parse(const std::string& text, const std::string& file) {
   // A lone CR (old Mac line endings) is a line break in YAML (1.2, §5.4) but not to yaml-cpp,
   // which read such a file as one line: "the file is empty" after a first comment line, or an
   // illegal map value. Read as LF, as the CSV readers do; CR LF is left to yaml-cpp.
-  std::string lines = text;
-  for (std::size_t i = lines.find('\r'); i != std::string::npos; i = lines.find('\r', i + 1))
-    if (i + 1 == lines.size() || lines[i + 1] != '\n')
-      lines[i] = '\n';
+  // The text is copied only when it holds one (a road of millions of heights is tens of MB).
+  std::string lines;
+  const std::string* source = &text;
+  for (std::size_t i = text.find('\r'); i != std::string::npos; i = text.find('\r', i + 1)) {
+    if (i + 1 < text.size() && text[i + 1] == '\n')
+      continue;
+    if (source == &text) {
+      lines = text;
+      source = &lines;
+    }
+    lines[i] = '\n';
+  }
   std::vector<YAML::Node> documents;
   try {
-    refuseStalledDocuments(lines, file);
-    documents = YAML::LoadAll(lines);
+    refuseStalledDocuments(*source, file);
+    documents = YAML::LoadAll(*source);
   } catch (const YAML::DeepRecursion& e) {
     // yaml-cpp's guard against a stack overflow (2000 calls deep, about 500 levels) says only
     // "bad file".
