@@ -122,7 +122,8 @@ std::string describe(const CLI::App& app, const CLI::ParseError& error,
       return prefix + name + " needs " + wanted(option) + " after it";
   } else if (dynamic_cast<const CLI::ValidationError*>(&error) && option != nullptr &&
              takesInteger(option)) {
-    // A range check on an integer option runs on the text: "1.5" reads "not in range 1 to 500".
+    // A range check on an integer option runs on the text: "1.5" reads "not in range 1 to 500";
+    // checkNumberTexts() refuses a base prefix ("0x10") with a bare refusal worded here.
     for (std::size_t i = 0; i < args.size(); ++i) {
       std::string value;
       if (args[i] == name && i + 1 < args.size())

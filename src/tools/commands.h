@@ -94,9 +94,12 @@ inline void checkNumberTexts(const std::vector<CLI::Option*>& options) {
             const std::size_t sign = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
             if (text.size() > sign + 1 && text[sign] == '0') {
               const std::size_t first = text.find_first_not_of('0', sign);
+              // A bare refusal: describeParseError() words every refused integer text from the
+              // option's type, "--count: '0x10' is not an integer" (test_tvd_cli.py
+              // test_integers_are_read_in_decimal), so no message written here is shown.
               if (first != std::string::npos &&
                   !std::isdigit(static_cast<unsigned char>(text[first])))
-                return "must be a decimal integer, got " + text;
+                return std::string("base prefix");
               text.erase(sign, (first == std::string::npos ? text.size() : first) - sign);
               if (text.size() == sign)
                 text += '0';

@@ -2876,9 +2876,17 @@ class TvdCliTest(unittest.TestCase):
             with open(out) as f:
                 roads.append(f.read())
         self.assertEqual(roads[0], roads[1])
-        for args in (["modes", "--model", model, "--count", "0x10"],
-                     ["terrain", "--iso8608", "C", "--seed", "0b11", "--out", self.path("b.csv")]):
-            self.assert_input_error(args, "0x10" if "0x10" in args else "0b11")
+        # The whole message, as describeParseError words it (checkNumberTexts' own refusal is
+        # bare; its old text, "must be a decimal integer", was never shown).
+        for args, message in (
+                (["modes", "--model", model, "--count", "0x10"],
+                 "tvd: error: modes: --count: '0x10' is not an integer"),
+                (["terrain", "--iso8608", "C", "--seed", "0b11", "--out", self.path("b.csv")],
+                 "tvd: error: terrain: --seed: '0b11' is not a non-negative integer"),
+                (["modes", "--model", model, "--count", "-0x10"],
+                 "tvd: error: modes: --count: '-0x10' is not an integer")):
+            result = self.tvd(*args, status=INPUT_ERROR_STATUS)
+            self.assertEqual(result.stderr.strip(), message)
         self.assertFalse(os.path.exists(self.path("b.csv")))
 
     def test_ride_mat_output_with_a_long_point_name_is_refused_before_the_sweep(self):
