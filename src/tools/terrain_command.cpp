@@ -168,10 +168,18 @@ void run(TerrainOptions opt) {
               << brief(opt.spacing) << " m only " << std::floor(100.0 * top_share)
               << " % at the band's top (" << brief(opt.max_frequency)
               << " cycles/m), so the vehicle rides a smoother road "
-              << "than class " << road_class << "; --spacing "
-              << roundedDown(terrain::spacingKeepingPowerShare(opt.max_frequency, kKeptPowerShare),
-                             3)
-              << " m or less keeps 80 %\n";
+              << "than class " << road_class << "; ";
+    // The share depends on n dx alone: the spacing keeping 80 % at the band's top, or, when that
+    // is finer than any terrain's (1 um), the band's top keeping it at this spacing.
+    const double spacing = terrain::spacingKeepingPowerShare(opt.max_frequency, kKeptPowerShare);
+    if (spacing >= terrain::kMinTerrainSpacing)
+      std::cerr << "--spacing " << roundedDown(spacing, 3) << " m or less keeps 80 %\n";
+    else
+      std::cerr << "--max-frequency "
+                << roundedDown(
+                       terrain::spacingKeepingPowerShare(1.0, kKeptPowerShare) / opt.spacing, 3)
+                << " cycles/m or less keeps 80 % (--spacing cannot be finer than "
+                << brief(terrain::kMinTerrainSpacing) << " m)\n";
   }
 
   if (opt.json) {

@@ -1563,6 +1563,15 @@ class TvdCliTest(unittest.TestCase):
         r = self.tvd("terrain", "--iso8608", "C", "--length", "600", "--spacing", "0.0648",
                      "--out", self.path("fine.csv"))
         self.assertIn("at --spacing 0.0648 m only 79 %", r.stderr)
+        # At the finest spacing (1 um) no finer one can keep 80 %: the band's top is named
+        # instead (sinc^4 depends on n dx alone: 0.1831 / 1e-6 m).
+        r = self.tvd("terrain", "--iso8608", "C", "--length", "0.01", "--spacing", "1e-6",
+                     "--min-frequency", "1000", "--max-frequency", "5e5", "--taper", "0",
+                     "--out", self.path("micro.csv"))
+        self.assertIn("at --spacing 1e-06 m only 16 % at the band's top (500000 cycles/m), so "
+                      "the vehicle rides a smoother road than class C; --max-frequency 183000 "
+                      "cycles/m or less keeps 80 % (--spacing cannot be finer than 1e-06 m)",
+                      r.stderr)
 
         # A band reaching below 1/(2 L) is generated from 1/(2 L) up, and said so.
         r = self.tvd("terrain", "--iso8608", "C", "--length", str(length), "--min-frequency",
