@@ -16,11 +16,11 @@ using Complex = std::complex<double>;
 // |m| below which m^2 is exact in a double (2^53).
 constexpr long long kMaxChirpIndex = 94906265;
 
-/// w_m = e^{i π r m^2}. The phase r m^2 grows to about (N + K)^2 r: its rounding alone would
-/// cost ~1e-9 rad on a 2e7-station road. Split exactly as hi + lo (the rounded product and its
-/// error by fma) and reduce hi modulo 2 (fmod is exact), so every chirp carries the error of r's
-/// own rounding only, and that cancels between the three chirps of a term: their phases add up
-/// to 2π r k j for the one r used.
+/// w_m = e^{i π r m^2}. The phase r m^2 grows to about (N + K)^2 r, 3e7 half-turns on a
+/// 2e7-station road: its rounding alone would cost ~1e-8 rad there. Split exactly as hi + lo (the
+/// rounded product and its error by fma) and reduce hi modulo 2 (fmod is exact), so every chirp
+/// carries the error of r's own rounding only, and that cancels between the three chirps of a
+/// term: their phases add up to 2π r k j for the one r used.
 Complex chirp(double r, long long m) {
   const double m2 = static_cast<double>(m * m);
   const double hi = m2 * r;

@@ -120,8 +120,8 @@ Terrain makeIso8608(char road_class, double length, double width, double spacing
   }
 
   // Harmonics k Δn whose bins [(k - 1/2) Δn, (k + 1/2) Δn] meet the band, below Nyquist (they
-  // number fewer than half the stations): k_first, k_first + 1, ..., a zero amplitude for a bin
-  // that misses the band.
+  // number fewer than half the stations): k_first, k_first + 1, ..., kNoBin for a bin that misses
+  // the band (at most one at either end, by round-off).
   const double dn = 1.0 / length;
   const auto k_first =
       std::max<long long>(1, static_cast<long long>(std::floor(options.min_frequency / dn + 0.5)));
