@@ -47,8 +47,10 @@ std::size_t fftSize(std::size_t n) {
 }  // namespace
 
 Vector harmonicSum(const std::vector<Complex>& c, long long first, double r, Eigen::Index count) {
-  if (count < 1 || first < 0 || !std::isfinite(r))
-    throw std::invalid_argument("harmonicSum: count >= 1, first >= 0 and a finite r needed");
+  // |r| <= 1 (a road's spacing over its length): beyond it r m^2 leaves the range where the
+  // chirps' phases are exact.
+  if (count < 1 || first < 0 || !(std::abs(r) <= 1.0))
+    throw std::invalid_argument("harmonicSum: count >= 1, first >= 0 and |r| <= 1 needed");
   const auto harmonics = static_cast<long long>(c.size());
   if (harmonics == 0)
     return Vector::Zero(count);
@@ -59,7 +61,9 @@ Vector harmonicSum(const std::vector<Complex>& c, long long first, double r, Eig
   // H_j = w_j y_j,  y_j = Σ_p A_p b_{j+K-1-p},  A_p = c_p w_{first+p},
   // b_q = conj(w_{q-(first+K-1)}) for q = 0 .. N+K-2: a linear convolution, taken as a circular
   // one of size P >= N + K - 1 (its indices j + K - 1 - p stay in [0, N + K - 2]: no wrap).
-  const std::size_t size = fftSize(static_cast<std::size_t>(stations + harmonics - 1));
+  // At least 2: kissfft fails on a transform of one point (one station and one harmonic).
+  const std::size_t size =
+      fftSize(std::max<std::size_t>(2, static_cast<std::size_t>(stations + harmonics - 1)));
   Eigen::FFT<double> fft;
   std::vector<Complex> a_spectrum;
   {

@@ -47,9 +47,10 @@ void expectEndOfLine(std::string_view rest) {
   throw NotPlain();
 }
 
-/// A plain decimal, -?(d+(.d*)?|.d+)([eE][+-]?d+)?, finite, not subnormal: the texts YamlValue::
-/// asNumber reads to the same value by the same from_chars (it also takes '+', YAML's non-finite
-/// spellings to refuse, and subnormals by strtod; those go to the general reader).
+/// A plain decimal, -?(d+(.d*)?|.d+)([eE][+-]?d+)?, finite: the texts YamlValue::asNumber reads
+/// to the same value by the same from_chars (it also takes '+', and YAML's non-finite spellings
+/// to refuse them). A subnormal that from_chars reports out of range (some standard libraries
+/// do; GCC 12's reads it) asNumber reads by strtod: here it goes to the general reader.
 double plainNumber(std::string_view text) {
   std::size_t i = 0;
   const auto digits = [&] {
@@ -280,6 +281,11 @@ Terrain build(PlainFile file, const std::string& path) {
 }  // namespace
 
 std::optional<Terrain> readPlainTerrainYaml(const std::string& path) {
+  // A regular file only: the general reader opens the file again, and a named pipe read here
+  // would leave it nothing (it waited for a writer for ever).
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error))
+    return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   if (!in)
     return std::nullopt;

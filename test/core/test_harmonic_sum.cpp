@@ -62,6 +62,8 @@ TEST(HarmonicSum, EqualsTheTermByTermSum) {
       {2001, 3, 563, 0.05 / 100.3},           // a length not a multiple of the spacing
       {1000, 0, 1, std::sqrt(2.0) / 1000.0},  // a single harmonic, the constant one
       {1, 5, 40, 0.001},                      // a single station: Re Σ c_p
+      {1, 0, 1, 0.1},                         // one station, one harmonic: a transform of 2
+      {1, 1000000, 1, 0.1},                   // the same far up
       {777, 4000, 300, 1.0 / 776.0},          // harmonics above Nyquist alias, as in the sum
       {50, 2, 1000, 0.013},                   // more harmonics than stations
       {4097, 17, 2049, 1.0 / 4096.0},         // N + K - 1 just above a power of two
@@ -100,6 +102,7 @@ TEST(HarmonicSum, NoHarmonicsIsZeroAndBadArgumentsThrow) {
   EXPECT_THROW(harmonicSum({Complex(1.0, 0.0)}, 0, 0.01, 0), std::invalid_argument);
   EXPECT_THROW(harmonicSum({Complex(1.0, 0.0)}, -1, 0.01, 5), std::invalid_argument);
   EXPECT_THROW(harmonicSum({Complex(1.0, 0.0)}, 0, std::nan(""), 5), std::invalid_argument);
+  EXPECT_THROW(harmonicSum({Complex(1.0, 0.0)}, 0, 1.5, 5), std::invalid_argument);
 }
 
 }  // namespace

@@ -2,15 +2,18 @@
 // accepts must read to exactly the general reader's terrain, and anything else it must leave to
 // the general reader.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cfloat>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
@@ -62,7 +65,9 @@ TEST(PlainTerrainYaml, WhatTheToolsWriteReadsAsTheGeneralReaderReadsIt) {
   const std::vector<Terrain> terrains = {makeTrack("long_hill"), makeTrack("oop_waves"),
                                          makeIso8608('D', 50.0, 4.0, 0.03, 5, sides),
                                          Terrain(Vector::LinSpaced(3, 0.0, 2.0), Vector::Zero(1),
-                                                 Matrix::Constant(1, 3, -1e-310), "it's \"odd\"")};
+                                                 Matrix::Constant(1, 3, -1e-310), "it's \"odd\""),
+                                         Terrain(Vector::LinSpaced(3, 0.0, 2.0), Vector::Zero(1),
+                                                 Matrix::Constant(1, 3, 4.9e-324), "tiny")};
   for (const Terrain& terrain : terrains) {
     const std::string path = writeFile("saved.yaml", "");
     saveTerrainYaml(terrain, path);
@@ -72,12 +77,14 @@ TEST(PlainTerrainYaml, WhatTheToolsWriteReadsAsTheGeneralReaderReadsIt) {
     std::filesystem::remove(path);
     expectSameTerrain(loaded, general, terrain.name());
     expectSameTerrain(general, terrain, terrain.name());
-    // A name with a quote or a backslash is escaped, and subnormal heights are read by strtod:
-    // both are the general reader's.
+    // A name with a quote or a backslash is escaped: the general reader's. A subnormal height is
+    // the plain reader's where from_chars reads it (GCC 12), else the general one's: either way
+    // the same terrain.
     const bool plain_name = terrain.name().find_first_of("\"\\") == std::string::npos;
     const bool subnormal =
         ((terrain.heights().array().abs() < DBL_MIN) && (terrain.heights().array() != 0.0)).any();
-    ASSERT_EQ(plain.has_value(), plain_name && !subnormal) << terrain.name();
+    if (!subnormal || !plain_name)
+      ASSERT_EQ(plain.has_value(), plain_name) << terrain.name();
     if (plain)
       expectSameTerrain(*plain, general, terrain.name());
   }
@@ -210,6 +217,27 @@ TEST(PlainTerrainYaml, RandomEditsNeverReadDifferently) {
 TEST(PlainTerrainYaml, NoFileIsNoTerrain) {
   EXPECT_FALSE(readPlainTerrainYaml("/nonexistent/road.yaml").has_value());
   EXPECT_FALSE(readBoth("").plain.has_value());
+}
+
+/// Loads the named pipe `path` while a thread writes a terrain the plain reader hands over into
+/// it; exits 0 when it reads. A pipe drained by the plain reader left the general one waiting
+/// for a second writer for ever: the alarm ends such a child.
+[[noreturn]] void loadFromPipe(const std::string& path) {
+  ::alarm(20);
+  std::thread writer([&path] { std::ofstream(path) << "spacing: +1\nheights: [0, 1]\n"; });
+  const Terrain road = loadTerrainYaml(path);
+  writer.join();
+  std::exit(road.stations().size() == 2 && road.heights()(0, 1) == 1.0 ? 0 : 1);
+}
+
+TEST(PlainTerrainYaml, ANamedPipeIsReadOnce) {
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() /
+      ("tvd_plain_yaml_" + std::to_string(::getpid()) + "_pipe.yaml");
+  std::filesystem::remove(path);
+  ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+  EXPECT_EXIT(loadFromPipe(path.string()), ::testing::ExitedWithCode(0), "");
+  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ namespace terrain {
 /// Re Σ_{p=0}^{K-1} c[p] e^{i 2π r (first + p) j} for j = 0 .. count-1, by the chirp
 /// z-transform: the same as the term-by-term sum to round-off of order 1e-15 Σ|c_p| (the chirp
 /// phases are reduced exactly, so long roads lose nothing to phase growth). Requires count >= 1,
-/// first >= 0, finite r; an empty c gives zeros.
+/// first >= 0 and |r| <= 1 (std::invalid_argument otherwise); an empty c gives zeros.
 Vector harmonicSum(const std::vector<std::complex<double>>& c, long long first, double r,
                    Eigen::Index count);
 

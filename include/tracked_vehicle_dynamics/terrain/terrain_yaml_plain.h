@@ -25,7 +25,8 @@ namespace tracked_vehicle_dynamics {
 namespace terrain {
 
 /// The terrain of a plain-layout YAML file at `path` that passes every check of
-/// loadTerrainYaml, or nullopt (any other file, or none at that path).
+/// loadTerrainYaml, or nullopt (any other file, none at that path, or not a regular file: a
+/// named pipe is left whole to the general reader).
 std::optional<Terrain> readPlainTerrainYaml(const std::string& path);
 
 }  // namespace terrain
