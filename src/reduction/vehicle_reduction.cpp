@@ -633,9 +633,9 @@ void requireVehicleOutputs(const std::string& path, const ReducedModel& model,
   std::vector<std::string> expected;
   for (int d = 0; d < kDofsPerNode; ++d)
     expected.push_back(std::string("hull ") + directionName(d));
-  for (const char* side : {"left", "right"})
+  for (int side = 0; side < 2; ++side)
     for (int axle = 1; axle <= description.running_gear.axle_count; ++axle)
-      expected.push_back(std::string("road_wheel_") + side + "_" + std::to_string(axle) + " uz");
+      expected.push_back(vehicle::roadWheelName(side, axle) + " uz");
   for (const vehicle::NamedPoint& point : description.named_points)
     for (int d = 0; d < 3; ++d)
       expected.push_back(point.name + " " + directionName(d));

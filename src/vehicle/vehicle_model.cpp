@@ -20,6 +20,10 @@ std::string assemblyName(int side, int index) {
   return std::string("track_") + sideName(side) + "_" + std::to_string(index);
 }
 
+std::string roadWheelName(int side, int axle) {
+  return std::string("road_wheel_") + sideName(side) + "_" + std::to_string(axle);
+}
+
 namespace {
 
 /// Un-tracked assemblies sit centred under their wheel, apart from the chain's: own id block.
@@ -233,7 +237,7 @@ class Builder {
     const Vector3 pivot(x + s.arm_length * std::cos(s.arm_angle), (side == 0 ? 1 : -1) * s.pivot_y,
                         zw + s.arm_length * std::sin(s.arm_angle));
     WheelStation st;
-    st.name = std::string("road_wheel_") + sideName(side) + "_" + std::to_string(axle + 1);
+    st.name = roadWheelName(side, axle + 1);
     st.side = side;
     st.axle = axle;
     st.pivot = model().addNode(stationNode(side, axle, 0), pivot);

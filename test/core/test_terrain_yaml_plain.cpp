@@ -83,8 +83,9 @@ TEST(PlainTerrainYaml, WhatTheToolsWriteReadsAsTheGeneralReaderReadsIt) {
     const bool plain_name = terrain.name().find_first_of("\"\\") == std::string::npos;
     const bool subnormal =
         ((terrain.heights().array().abs() < DBL_MIN) && (terrain.heights().array() != 0.0)).any();
-    if (!subnormal || !plain_name)
+    if (!subnormal || !plain_name) {
       ASSERT_EQ(plain.has_value(), plain_name) << terrain.name();
+    }
     if (plain)
       expectSameTerrain(*plain, general, terrain.name());
   }

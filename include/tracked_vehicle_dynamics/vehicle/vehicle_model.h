@@ -50,6 +50,9 @@ const char* sideName(int side);
 /// The name of a side's track assembly `index` (AssemblyRecord::index, its place in the chain
 /// loop), e.g. "track_left_0"; the names of its springs start with it.
 std::string assemblyName(int side, int index);
+/// The name of a side's road wheel on axle `axle` (1 = front), e.g. "road_wheel_left_1": its
+/// WheelStation's, and with " uz" its centre's output in a reduced model.
+std::string roadWheelName(int side, int axle);
 
 constexpr NodeId kHullNode = 1;
 
