@@ -175,6 +175,57 @@ class InstallSpaceTest(unittest.TestCase):
             line = next((l for l in libraries.splitlines() if library in l), "")
             self.assertIn(os.path.join(self.prefix, "lib", library), line, libraries)
 
+    def test_a_program_built_from_the_pkg_config_file_shares_eigen_objects(self):
+        # A make-based user takes Cflags and Libs from the installed .pc. Debian's own
+        # rosbag_storage.pc names a pluginlib.pc that Debian does not ship, so `pkg-config` fails
+        # on any package requiring rosbag; the fields are read from the file, as pkg-config would.
+        pc_file = os.path.join(self.prefix, "lib", "pkgconfig", f"{PACKAGE}.pc")
+        fields, variables = {}, {}
+        with open(pc_file) as f:
+            for line in f:
+                line = line.strip().replace("\\$", "$")
+                for name, value in variables.items():
+                    line = line.replace("${" + name + "}", value)
+                if re.match(r"^\w+=", line):
+                    name, value = line.split("=", 1)
+                    # The prefix written is the configured one: the staged copy is under stage.
+                    variables[name] = self.stage + value if name == "prefix" else value
+                elif re.match(r"^[A-Za-z.]+:", line):
+                    name, value = line.split(":", 1)
+                    fields[name] = value.split()
+        # The SIMD flag is the one the CMake configuration exports (extras file): Eigen's
+        # allocation and layout must match tvd_core's on both sides.
+        with open(os.path.join(self.share, "cmake", f"{PACKAGE}-extras.cmake")) as f:
+            flag = re.search(r'SIMD_FLAG "([^"]*)"', f.read()).group(1)
+        if flag:
+            self.assertIn(flag, fields["Cflags"], pc_file)
+        program = os.path.join(self.work, "pkg_config_check")
+        source = program + ".cpp"
+        with open(source, "w") as f:
+            f.write("""
+#include <cstdio>
+#include <tracked_vehicle_dynamics/fem/system.h>
+#include <tracked_vehicle_dynamics/vehicle/vehicle_description.h>
+#include <tracked_vehicle_dynamics/vehicle/vehicle_model.h>
+namespace tvd = tracked_vehicle_dynamics;
+int main(int, char** argv) {
+  const auto d = tvd::vehicle::loadVehicleDescription(argv[1]);
+  const auto model = tvd::vehicle::buildVehicleModel(d, tvd::vehicle::Variant::Untracked);
+  tvd::fem::System system = tvd::fem::assemble(model.model);  // made in tvd_core, freed here
+  tvd::SparseMatrix k = system.stiffness;
+  k.makeCompressed();
+  std::printf("%ld %.0f\\n", static_cast<long>(system.size()), model.model.totalMass());
+}
+""")
+        compile_command = ["g++", "-std=c++17", *fields["Cflags"], source, "-o", program,
+                           *fields["Libs"], "-Wl,-rpath-link=/usr/lib/x86_64-linux-gnu"]
+        result = subprocess.run(compile_command, capture_output=True, text=True, timeout=300)
+        self.assertEqual(result.returncode, 0, f"{' '.join(compile_command)}\n{result.stderr}")
+        vehicle = os.path.join(self.share, "config/vehicles/paper_vehicle.yaml")
+        out = self.run_installed(program, vehicle).stdout.split()
+        self.assertGreater(int(out[0]), 6)
+        self.assertGreater(float(out[1]), 3.0e4)
+
     def test_the_installed_launch_file_starts_the_node_from_a_read_only_install(self):
         before = self.listing(self.stage)
         port = free_port()
