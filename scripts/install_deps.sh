@@ -19,6 +19,7 @@ PACKAGES=(
   python3-rosservice python3-std-srvs python3-diagnostic-msgs python3-nav-msgs python3-sensor-msgs
   # numerics and I/O
   libeigen3-dev libspectra-dev libsuitesparse-dev libyaml-cpp-dev libmatio-dev libhdf5-dev libcli11-dev
+  zlib1g-dev  # compressed MAT elements are inflated to check their headers before matio reads them
   # an optimised BLAS for CHOLMOD's supernodal factorisations and dense products (serial: the
   # solvers are single-threaded and the machines have 2 cores)
   libopenblas0-serial

@@ -6,17 +6,16 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <new>
 #include <set>
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/mat_structure.h"
 #include "tracked_vehicle_dynamics/io/utf8.h"
 
 namespace tracked_vehicle_dynamics {
@@ -24,28 +23,10 @@ namespace io {
 
 namespace {
 
-// MATLAB's limit on identifier length (namelengthmax).
-constexpr std::size_t kMaxNameLength = 63;
-// MAT 5 layout (MathWorks, "MAT-File Format", 2023): a 128-byte header whose last four bytes
-// hold the version (0x0100, or 0x0200 for a 7.3 HDF5 file) and the endian indicator "IM",
-// followed by top-level data elements, each an 8-byte tag (type, byte count) and its data.
-constexpr std::size_t kMat5HeaderBytes = 128;
-constexpr std::uint32_t kMiMatrix = 14;
-constexpr std::uint32_t kMiCompressed = 15;
 constexpr const char* kMat5HeaderText = "MATLAB 5.0 MAT-file, written by tracked_vehicle_dynamics";
 
 std::string dims(std::size_t rows, std::size_t cols) {
   return std::to_string(rows) + "x" + std::to_string(cols);
-}
-
-bool isIdentifier(const std::string& name) {
-  if (name.empty() || name.size() > kMaxNameLength)
-    return false;
-  if (!std::isalpha(static_cast<unsigned char>(name[0])))
-    return false;
-  return std::all_of(name.begin(), name.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-  });
 }
 
 struct VarDeleter {
@@ -55,192 +36,6 @@ struct VarDeleter {
   }
 };
 using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
-
-std::uint32_t readU32(const unsigned char* p, bool swap) {
-  std::uint32_t v = static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
-                    static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
-  if (swap)
-    v = (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
-  return v;
-}
-
-constexpr std::uint32_t kMiInt32 = 5;
-constexpr std::uint32_t kMiUint32 = 6;
-constexpr std::uint32_t kCellClass = 1;    // mxCELL_CLASS
-constexpr std::uint32_t kSparseClass = 5;  // mxSPARSE_CLASS
-// Cells within cells checked (ours hold texts: one level).
-constexpr int kMaxCheckedDepth = 8;
-
-// A data element's tag inside an uncompressed array: the full form (type, byte count; data
-// padded to 8 bytes) or the small one (byte count in the upper 16 bits of the first word, up to
-// 4 bytes of data in the second).
-struct SubTag {
-  std::uint32_t type = 0;
-  std::uint64_t bytes = 0;
-  std::uint64_t data = 0;  // file offset of the data
-  std::uint64_t next = 0;  // file offset after the element
-};
-
-// The headers inside an uncompressed array element (type miMATRIX): its dimensions and its name
-// must fit in the element's own bytes. matio trusts them and allocates before it reads: a cell
-// claiming 1e9 elements took 8 GB and 44 s, a name length of 2^31 2 GB. Every array but a sparse
-// one (dimensions independent of its stored non-zeros) stores at least one byte per element, a
-// cell at least one 8-byte tag; the cell's elements are checked in turn.
-class ArrayHeaderCheck {
- public:
-  ArrayHeaderCheck(std::ifstream& in, bool big, const std::string& path)
-      : in_(in), big_(big), path_(path) {}
-
-  // The array whose data (after its miMATRIX tag) spans [begin, end); `where` names it in the
-  // messages: "variable 'X'", a cell's element "variable 'X'{3}", or "" for a top-level one,
-  // named by its own name once that is read.
-  void check(std::uint64_t begin, std::uint64_t end, int depth, std::string where) {
-    if (begin == end)
-      return;  // an empty element: MATLAB's empty cell entries
-    if (where.empty())
-      where = "the variable at byte " + std::to_string(begin - 8);
-    const SubTag flags = tag(begin, end, where, "array flags");
-    if (flags.type != kMiUint32 || flags.bytes != 8)
-      corrupted(where, "has array flags other than two 32-bit words");
-    const std::uint32_t array_class = word(flags.data) & 0xFFu;
-    const SubTag dims_tag = tag(flags.next, end, where, "dimensions");
-    if (dims_tag.type != kMiInt32 || dims_tag.bytes < 8 || dims_tag.bytes % 4 != 0)
-      corrupted(where, "has dimensions other than two or more 32-bit integers");
-    const SubTag name = tag(dims_tag.next, end, where, "name");
-    if (depth == 0 && name.bytes > 0 && name.bytes <= kMaxNameLength) {
-      std::string text(name.bytes, '\0');
-      in_.seekg(static_cast<std::streamoff>(name.data));
-      in_.read(text.data(), static_cast<std::streamsize>(name.bytes));
-      if (isIdentifier(text))
-        where = "variable '" + text + "'";
-    }
-    std::uint64_t elements = 1;
-    std::string shape;
-    const std::uint64_t capacity = end - begin;
-    for (std::uint64_t at = dims_tag.data; at < dims_tag.data + dims_tag.bytes; at += 4) {
-      const std::uint32_t dim = word(at);
-      shape += (shape.empty() ? "" : "x") + std::to_string(static_cast<std::int32_t>(dim));
-      if (dim > 0x7FFFFFFFu)
-        corrupted(where, "has a negative dimension (" + shape + ")");
-      elements =
-          dim == 0 || elements == 0 ? 0 : std::min<std::uint64_t>(elements * dim, capacity + 1);
-    }
-    const std::uint64_t per_element = array_class == kCellClass ? 8 : 1;
-    if (array_class != kSparseClass && elements > capacity / per_element)
-      corrupted(where, "claims " + shape + " elements, more than its " + std::to_string(capacity) +
-                           " bytes hold");
-    if (array_class != kCellClass || depth >= kMaxCheckedDepth)
-      return;
-    std::uint64_t at = name.next;
-    for (std::uint64_t k = 0; k < elements; ++k) {
-      const std::string element_where = where + "{" + std::to_string(k + 1) + "}";
-      const SubTag element = tag(at, end, where, "cell element " + std::to_string(k + 1));
-      if (element.type != kMiMatrix)
-        corrupted(element_where, "is not an array");
-      check(element.data, element.data + element.bytes, depth + 1, element_where);
-      at = element.next;
-    }
-  }
-
- private:
-  std::uint32_t word(std::uint64_t offset) {
-    unsigned char bytes[4];
-    in_.seekg(static_cast<std::streamoff>(offset));
-    in_.read(reinterpret_cast<char*>(bytes), 4);
-    return readU32(bytes, big_);
-  }
-  SubTag tag(std::uint64_t offset, std::uint64_t end, const std::string& where,
-             const std::string& what) {
-    if (offset + 8 > end)
-      corrupted(where, "has its " + what + " beyond its end");
-    SubTag t;
-    const std::uint32_t first = word(offset);
-    if (first >> 16 != 0) {  // small data element
-      t.type = first & 0xFFFFu;
-      t.bytes = first >> 16;
-      t.data = offset + 4;
-      t.next = offset + 8;
-      if (t.bytes > 4)
-        corrupted(where, "has its " + what + " as a small element of more than 4 bytes");
-      return t;
-    }
-    t.type = first;
-    t.bytes = word(offset + 4);
-    t.data = offset + 8;
-    if (t.data + t.bytes > end)
-      corrupted(where, "has its " + what + " claiming " + std::to_string(t.bytes) +
-                           " bytes, beyond its end");
-    t.next = std::min(t.data + (t.bytes + 7) / 8 * 8, end);
-    return t;
-  }
-  [[noreturn]] void corrupted(const std::string& where, const std::string& why) {
-    throw InputError(path_ + ": " + where + " " + why + " (corrupted file)");
-  }
-
-  std::ifstream& in_;
-  bool big_;
-  const std::string& path_;
-};
-
-// Walks the top-level element tags of a MAT 5 file and checks that every element lies inside
-// the file. matio trusts these byte counts, so a truncated or overwritten file is refused here,
-// before matio reads past the end. 7.3 files are left to the HDF5 library's own checks. Returns
-// the file's format (the header's version field).
-MatFormat checkMatStructure(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in)
-    throw InputError(path + ": cannot be opened for reading");
-  const auto size = static_cast<std::uint64_t>(in.tellg());
-  if (size < kMat5HeaderBytes)
-    throw InputError(path + ": not a MAT file (" + std::to_string(size) +
-                     " bytes, shorter than the 128-byte MAT header)");
-  unsigned char header[kMat5HeaderBytes];
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(header), kMat5HeaderBytes);
-  const bool little = header[126] == 'I' && header[127] == 'M';
-  const bool big = header[126] == 'M' && header[127] == 'I';
-  if (!little && !big)
-    throw InputError(path +
-                     ": not a MAT 5 or 7.3 file (no endian indicator in the header; Octave's "
-                     "default text format and -v4 are not: save with -v7 or -v6)");
-  const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
-  if (version == 0x0200)
-    return MatFormat::Mat73;
-  if (version != 0x0100)
-    throw InputError(path + ": unsupported MAT file version 0x" + std::to_string(version));
-  std::uint64_t offset = kMat5HeaderBytes;
-  while (offset < size) {
-    unsigned char tag[8];
-    if (offset + 8 > size)
-      throw InputError(path +
-                       ": truncated (or bytes appended after its last variable): a data "
-                       "element starts at byte " +
-                       std::to_string(offset) + " but the file ends at byte " +
-                       std::to_string(size));
-    in.seekg(static_cast<std::streamoff>(offset));
-    in.read(reinterpret_cast<char*>(tag), 8);
-    const std::uint32_t type = readU32(tag, big);
-    const std::uint64_t bytes = readU32(tag + 4, big);
-    if (type != kMiMatrix && type != kMiCompressed)
-      throw InputError(path + ": corrupted: data element at byte " + std::to_string(offset) +
-                       " has type " + std::to_string(type) + " (expected a matrix)");
-    std::uint64_t end = offset + 8 + bytes;
-    if (type == kMiMatrix)
-      end = (end + 7) / 8 * 8;  // uncompressed elements are 8-byte aligned
-    if (offset + 8 + bytes > size)
-      throw InputError(path +
-                       ": truncated (or bytes appended after its last variable): the "
-                       "data element at byte " +
-                       std::to_string(offset) + " needs " + std::to_string(bytes) +
-                       " bytes but the file ends at byte " + std::to_string(size));
-    // The arrays' own headers (a compressed element is left to matio and zlib: its headers are
-    // inside the compressed stream; the files we read back, reduced models, are not compressed).
-    if (type == kMiMatrix)
-      ArrayHeaderCheck(in, big, path).check(offset + 8, offset + 8 + bytes, 0, "");
-    offset = std::min(end, size);
-  }
-  return MatFormat::Mat5;
-}
 
 }  // namespace
 
@@ -284,7 +79,7 @@ MatWriter::~MatWriter() {
 void MatWriter::checkName(const std::string& name) {
   if (!impl_->mat)
     throw InputError(path_ + ": write after close()");
-  if (!isIdentifier(name))
+  if (!isMatIdentifier(name))
     throw InputError(path_ + ": '" + name +
                      "' is not a valid MAT variable name (a letter, then letters, digits or _, "
                      "at most 63 characters)");

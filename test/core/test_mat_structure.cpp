@@ -1,0 +1,258 @@
+// The MAT structure check on compressed variables (MATLAB's default save -v7, scipy.io.savemat
+// with do_compression=True): the array headers inside the zlib stream are checked as an
+// uncompressed element's are, before matio allocates what they claim, and a damaged or short
+// stream is named as such.
+#include <gtest/gtest.h>
+#include <zlib.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/io/mat_structure.h"
+
+namespace tracked_vehicle_dynamics {
+namespace io {
+namespace {
+
+constexpr std::size_t kHeader = 128;         // the MAT 5 file header
+constexpr std::uint32_t kMiCompressed = 15;  // a top-level element's type
+
+std::string tempPath(const std::string& name) {
+  return testing::TempDir() + "tvd_test_mat_structure_" + name;
+}
+
+std::string readBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+std::uint32_t u32(const std::string& bytes, std::size_t at) {
+  std::uint32_t v;
+  std::memcpy(&v, bytes.data() + at, 4);
+  return v;
+}
+
+void setU32(std::string& bytes, std::size_t at, std::uint32_t v) {
+  std::memcpy(bytes.data() + at, &v, 4);
+}
+
+std::string inflateAll(const std::string& z) {
+  z_stream s{};
+  EXPECT_EQ(inflateInit(&s), Z_OK);
+  std::string out;
+  char buffer[4096];
+  s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(z.data()));
+  s.avail_in = static_cast<uInt>(z.size());
+  int status = Z_OK;
+  while (status == Z_OK) {
+    s.next_out = reinterpret_cast<Bytef*>(buffer);
+    s.avail_out = sizeof(buffer);
+    status = inflate(&s, Z_NO_FLUSH);
+    out.append(buffer, sizeof(buffer) - s.avail_out);
+  }
+  EXPECT_EQ(status, Z_STREAM_END);
+  inflateEnd(&s);
+  return out;
+}
+
+std::string deflateAll(const std::string& raw) {
+  uLongf size = compressBound(static_cast<uLong>(raw.size()));
+  std::string out(size, '\0');
+  EXPECT_EQ(compress(reinterpret_cast<Bytef*>(out.data()), &size,
+                     reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size())),
+            Z_OK);
+  out.resize(size);
+  return out;
+}
+
+// A file holding one compressed variable: its header, and the zlib stream of its one element.
+struct OneVariable {
+  std::string header;
+  std::string stream;
+  // The file with `stream` as the element's data (its tag's byte count set to the stream's).
+  std::string file() const {
+    std::string bytes = header;
+    bytes.append(8, '\0');
+    setU32(bytes, kHeader, kMiCompressed);
+    setU32(bytes, kHeader + 4, static_cast<std::uint32_t>(stream.size()));
+    return bytes + stream;
+  }
+};
+
+OneVariable split(const std::string& bytes) {
+  EXPECT_EQ(u32(bytes, kHeader), kMiCompressed);
+  EXPECT_EQ(kHeader + 8 + u32(bytes, kHeader + 4), bytes.size());  // one variable only
+  return {bytes.substr(0, kHeader), bytes.substr(kHeader + 8)};
+}
+
+// The message of the InputError the structure check throws on `bytes` ("" when none is), and
+// that MatReader throws the same one.
+std::string refusal(const std::string& path, const std::string& bytes) {
+  writeBytes(path, bytes);
+  std::string what;
+  try {
+    checkMatStructure(path);
+  } catch (const InputError& e) {
+    what = e.what();
+  }
+  try {
+    MatReader reader(path);
+    EXPECT_EQ("", what) << "MatReader opened what the check refused";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), what);
+  }
+  return what;
+}
+
+std::string writeCompressed(const std::string& path, const std::vector<std::string>& names) {
+  MatWriter out(path, MatFormat::Mat5, /*compress=*/true);
+  out.writeStrings("names", names);
+  out.close();
+  return readBytes(path);
+}
+
+TEST(MatStructure, CompressedVariablesReadBack) {
+  const std::string path = tempPath("round_trip.mat");
+  Matrix a(37, 23);
+  for (Eigen::Index k = 0; k < a.size(); ++k)
+    a.data()[k] = std::sin(0.37 * static_cast<double>(k)) * 1e3;
+  const std::vector<std::string> names = {"hull_heave", "", "road_wheel_left_1"};
+  {
+    MatWriter out(path, MatFormat::Mat5, /*compress=*/true);
+    out.writeMatrix("A", a);
+    out.writeStrings("names", names);
+    out.writeString("text", "Dimauro et al.");
+    out.close();
+  }
+  const std::string bytes = readBytes(path);
+  ASSERT_EQ(u32(bytes, kHeader), kMiCompressed);  // the variables are compressed
+  EXPECT_EQ(checkMatStructure(path), MatFormat::Mat5);
+  const MatReader in(path);
+  EXPECT_EQ(in.readMatrix("A"), a);
+  EXPECT_EQ(in.readStrings("names"), names);
+  EXPECT_EQ(in.readString("text"), "Dimauro et al.");
+  std::remove(path.c_str());
+}
+
+// A cell of texts claiming 1e9 entries: matio allocates 8 GB for their pointers before it reads
+// one (4e8 took 3.1 GB and 9 s). The inflated headers are checked against the element's bytes
+// first, and the message names the variable as for an uncompressed one.
+TEST(MatStructure, ACompressedCellClaimingMoreThanItsBytesIsRefusedFirst) {
+  const std::string path = tempPath("cell_dims.mat");
+  const OneVariable original = split(writeCompressed(path, {"a", "bb", "ccc"}));
+  const std::string element = inflateAll(original.stream);
+  // The inflated element: its miMATRIX tag (8), array flags (16), dimensions tag (8), dims.
+  constexpr std::size_t kDims = 8 + 16 + 8;
+  ASSERT_EQ(u32(element, 0), 14u);
+  ASSERT_EQ(u32(element, kDims), 3u);
+  const std::uint32_t claimed = u32(element, 4);
+  const auto withRows = [&](std::uint32_t rows) {
+    std::string damaged = element;
+    setU32(damaged, kDims, rows);
+    return OneVariable{original.header, deflateAll(damaged)}.file();
+  };
+  EXPECT_EQ(refusal(path, withRows(1000000000)),
+            path + ": variable 'names' claims 1000000000x1 elements, more than its " +
+                std::to_string(claimed) + " bytes hold (corrupted file)");
+  EXPECT_EQ(refusal(path, withRows(4)),
+            path + ": variable 'names' has its cell element 4 beyond its end (corrupted file)");
+  EXPECT_EQ(refusal(path, withRows(3)), "");
+  EXPECT_EQ(MatReader(path).readStrings("names"), (std::vector<std::string>{"a", "bb", "ccc"}));
+  std::remove(path.c_str());
+}
+
+TEST(MatStructure, AStreamShorterThanItsHeadersClaimIsNamed) {
+  const std::string path = tempPath("short.mat");
+  const OneVariable original = split(writeCompressed(path, {"a", "bb", "ccc"}));
+  std::string element = inflateAll(original.stream);
+  const std::uint32_t claimed = u32(element, 4);
+  setU32(element, 4, claimed + 4096);
+  EXPECT_EQ(refusal(path, OneVariable{original.header, deflateAll(element)}.file()),
+            path + ": variable 'names' has compressed data that ends after " +
+                std::to_string(element.size()) +
+                " bytes, 4096 short of what its headers claim (corrupted file)");
+  std::remove(path.c_str());
+}
+
+// zlib's own faults: a header that is not zlib's, a check value that does not match the data,
+// a stream cut before its end; and an inflated element that is not an array.
+TEST(MatStructure, DamagedStreamsAreNamedAsSuch) {
+  const std::string path = tempPath("damaged.mat");
+  const OneVariable original = split(writeCompressed(path, {"a", "bb", "ccc"}));
+  const std::string where = path + ": the compressed variable at byte 128 ";
+  OneVariable damaged = original;
+  damaged.stream[0] = '\0';  // CMF 0: not a multiple of 31 with FLG
+  EXPECT_EQ(refusal(path, damaged.file()),
+            where + "has damaged compressed data (zlib: incorrect header check) (corrupted file)");
+  // The Adler-32 value of the inflated bytes closes the stream: checked once the headers are,
+  // so the variable has its name.
+  damaged = original;
+  damaged.stream.back() = static_cast<char>(damaged.stream.back() ^ 1);
+  EXPECT_EQ(refusal(path, damaged.file()),
+            path +
+                ": variable 'names' has damaged compressed data (zlib: incorrect data check) "
+                "(corrupted file)");
+  damaged = original;
+  damaged.stream.resize(damaged.stream.size() - 2);
+  EXPECT_EQ(refusal(path, damaged.file()),
+            path +
+                ": variable 'names' has its compressed data cut short (the zlib stream does "
+                "not end within its element) (corrupted file)");
+  damaged = original;
+  damaged.stream.resize(4);
+  EXPECT_EQ(refusal(path, damaged.file()),
+            where +
+                "has its compressed data cut short (the zlib stream does not end within its "
+                "element) (corrupted file)");
+  std::string element = inflateAll(original.stream);
+  setU32(element, 0, 9);  // miDOUBLE
+  EXPECT_EQ(refusal(path, OneVariable{original.header, deflateAll(element)}.file()),
+            where + "holds data of type 9, not a matrix (corrupted file)");
+  EXPECT_EQ(refusal(path, original.file()), "");
+  std::remove(path.c_str());
+}
+
+// Bytes inflated past what the element's tag claims are left alone, as matio leaves them.
+TEST(MatStructure, BytesPastTheClaimedElementAreIgnored) {
+  const std::string path = tempPath("trailing.mat");
+  const OneVariable original = split(writeCompressed(path, {"a", "bb"}));
+  const std::string element = inflateAll(original.stream) + std::string(24, '\0');
+  EXPECT_EQ(refusal(path, OneVariable{original.header, deflateAll(element)}.file()), "");
+  EXPECT_EQ(MatReader(path).readStrings("names"), (std::vector<std::string>{"a", "bb"}));
+  std::remove(path.c_str());
+}
+
+// A cell of 6,000 texts (480 kB inflated) read through the check's two 64 KiB buffers: the header
+// walk and the skip to its end cross many refills.
+TEST(MatStructure, LargeCompressedVariablesAreCheckedAcrossBuffers) {
+  const std::string path = tempPath("large.mat");
+  std::vector<std::string> names;
+  for (int k = 0; k < 6000; ++k)
+    names.push_back("name_" + std::to_string(k * 7919 % 100003));
+  const OneVariable original = split(writeCompressed(path, names));
+  EXPECT_EQ(refusal(path, original.file()), "");
+  EXPECT_EQ(MatReader(path).readStrings("names"), names);
+  // One entry more claimed: found only after inflating every one before it.
+  std::string element = inflateAll(original.stream);
+  ASSERT_GT(element.size(), 4u * 65536u);
+  setU32(element, 8 + 16 + 8, 6001);
+  EXPECT_EQ(refusal(path, OneVariable{original.header, deflateAll(element)}.file()),
+            path + ": variable 'names' has its cell element 6001 beyond its end (corrupted file)");
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace io
+}  // namespace tracked_vehicle_dynamics
