@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "file_bytes.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 #include "tracked_vehicle_dynamics/io/mat_structure.h"
@@ -27,15 +28,6 @@ constexpr std::uint32_t kMiCompressed = 15;  // a top-level element's type
 
 std::string tempPath(const std::string& name) {
   return testing::TempDir() + "tvd_test_mat_structure_" + name;
-}
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
 }
 
 std::uint32_t u32(const std::string& bytes, std::size_t at) {

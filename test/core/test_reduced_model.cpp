@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "expect_input_error.h"
+#include "file_bytes.h"
 #include "steel_cantilever.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
@@ -32,15 +33,6 @@ constexpr const char* kHash = "sha256:0123abcd";
 
 std::string tempPath(const std::string& name) {
   return testing::TempDir() + "tvd_test_reduced_model_" + name;
-}
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
 }
 
 // The message of the InputError that opening `path` and reading it with `read` throws; "" when

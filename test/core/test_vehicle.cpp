@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "expect_input_error.h"
+#include "file_bytes.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -40,13 +41,6 @@ constexpr double kBalanceTolerance = 1e-6;
 constexpr double kUntrackedTolerance = 0.10;
 constexpr double kTrackedTolerance = 0.15;
 constexpr int kModeCount = 40;
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// Replaces the single occurrence of `from` in `text` (the test fails if it is not unique).
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
@@ -91,7 +85,7 @@ TEST(VehicleDescription, HashIsStableAndFollowsValuesNotSources) {
 }
 
 TEST(VehicleDescription, ErrorsNameTheKey) {
-  const std::string text = readFile(kDescriptionFile);
+  const std::string text = tvd::readBytes(kDescriptionFile);
   ASSERT_FALSE(text.empty()) << kDescriptionFile;
   ASSERT_EQ(loadError(text), "");
   struct Case {
@@ -263,7 +257,7 @@ TEST(VehicleDescription, OtherFilesAreNamedForWhatTheyAre) {
             std::string::npos)
       << loadError(mat);
   // One misspelt section among the others is still a description: its key is named.
-  const std::string text = readFile(kDescriptionFile);
+  const std::string text = tvd::readBytes(kDescriptionFile);
   std::string misspelt = text;
   misspelt.replace(misspelt.find("\nidler:"), 7, "\nidlr:");
   EXPECT_NE(loadError(misspelt).find("idlr: unknown key"), std::string::npos)
@@ -273,7 +267,7 @@ TEST(VehicleDescription, OtherFilesAreNamedForWhatTheyAre) {
 // The model builder's geometric checks (chain path, end wheels, rollers) run after loading; a
 // description read from a file still gets the key's line in their messages.
 TEST(VehicleDescription, BuilderErrorsGiveTheKeysLine) {
-  const std::string text = readFile(kDescriptionFile);
+  const std::string text = tvd::readBytes(kDescriptionFile);
   const std::string from = "  centre_z: {value: 0.78, unit: m,";
   const std::string to = "  centre_z: {value: 0.30, unit: m,";
   const std::string edited = replaced(text, from, to);

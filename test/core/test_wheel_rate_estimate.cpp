@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "expect_input_error.h"
+#include "file_bytes.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
 #include "tracked_vehicle_dynamics/vehicle/mode_classification.h"
@@ -31,20 +32,13 @@ namespace {
 const std::string kPaperFile = std::string(TVD_SOURCE_DIR) + "/config/vehicles/paper_vehicle.yaml";
 const std::string kLightFile = std::string(TVD_SOURCE_DIR) + "/test/data/light_5_axle.yaml";
 
-std::string readFile(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
 // The paper's description with `line` added after the suspension's contact_shear_stiffness entry.
 std::string withSuspensionLine(const std::string& line) {
-  std::string text = readFile(kPaperFile);
+  std::string text = readBytes(kPaperFile);
   const std::size_t key = text.find("  contact_shear_stiffness:");
   const std::size_t next = text.find("  guide_contact_height:", key);
   EXPECT_NE(key, std::string::npos);
