@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iterator>
 #include <limits>
 #include <new>
 #include <set>
@@ -251,6 +252,18 @@ bool MatReader::has(const std::string& name) const {
   return std::find(names_.begin(), names_.end(), name) != names_.end();
 }
 
+std::string MatReader::className(const std::string& name) const {
+  static const char* const kNames[] = {
+      "empty",  "cell",   "struct",          "object", "char",   "sparse", "double",
+      "single", "int8",   "uint8",           "int16",  "uint16", "int32",  "uint32",
+      "int64",  "uint64", "function_handle", "opaque"};
+  const matvar_t* var = header(name, false);
+  const auto k = static_cast<std::size_t>(var->class_type);
+  const std::string base = k < std::size(kNames) ? kNames[k] : "unknown";
+  // logical arrays are stored as uint8 with a flag; complex ones as their class with a flag.
+  return var->isLogical ? "logical" : var->isComplex ? "complex " + base : base;
+}
+
 const matvar_t* MatReader::header(const std::string& name, bool with_data) const {
   const auto found = std::find(names_.begin(), names_.end(), name);
   if (found == names_.end())
@@ -312,7 +325,7 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
   const matvar_t* var = header(name, false);
   const std::string where = path_ + ": variable '" + name + "'";
   if (var->class_type != MAT_C_DOUBLE || var->isComplex || var->isLogical)
-    throw InputError(where + " is not a real double matrix");
+    throw InputError(where + " is of class " + className(name) + ", expected a real double matrix");
   if (var->rank != 2)
     throw InputError(where + " has " + std::to_string(var->rank) + " dimensions, expected 2");
   const auto r = static_cast<DofIndex>(var->dims[0]);
@@ -322,8 +335,8 @@ Matrix MatReader::readMatrix(const std::string& name, DofIndex rows, DofIndex co
     // loadmat(squeeze_me=True) makes 1-D arrays of columns), unless told oned_as='column'.
     const bool row_for_column = cols == 1 && r == 1 && c != 1 && (rows == kAnySize || c == rows);
     throw InputError(where + " is " + dims(r, c) + ", expected " +
-                     (rows == kAnySize ? std::string("any") : std::to_string(rows)) + "x" +
-                     (cols == kAnySize ? std::string("any") : std::to_string(cols)) +
+                     (rows == kAnySize ? std::string("n") : std::to_string(rows)) + "x" +
+                     (cols == kAnySize ? std::string("n") : std::to_string(cols)) +
                      (row_for_column ? " (a row saved for a column: SciPy's savemat writes 1-D "
                                        "arrays as rows unless given oned_as='column')"
                                      : ""));

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <new>
@@ -349,6 +350,30 @@ void checkCompressed(std::ifstream& in, bool big, const std::string& path, std::
   }
 }
 
+// What a file that is not a MAT 5 or 7.3 one is, from its first bytes, for the files MATLAB and
+// Octave write in their other formats; "" when it is none of those.
+std::string otherFormat(const unsigned char* start, std::uint64_t size) {
+  const auto startsWith = [&](const char* text, std::size_t n) {
+    return size >= n && std::memcmp(start, text, n) == 0;
+  };
+  if (startsWith("\x89HDF\r\n\x1a\n", 8))
+    return "an HDF5 file without the MAT header (Octave's -hdf5 format?)";
+  if (startsWith("Octave-1-L", 10) || startsWith("Octave-1-B", 10))
+    return "Octave's binary format (-binary)";
+  if (startsWith("\x1f\x8b", 2))
+    return "a gzip file (Octave's -zip with a format other than -v7?)";
+  if (startsWith("# Created by Octave", 19))
+    return "Octave's text format (its default)";
+  return "";
+}
+
+// 0x and four hex digits, as MAT versions are written.
+std::string hex4(unsigned value) {
+  char text[8];
+  std::snprintf(text, sizeof(text), "0x%04X", value & 0xFFFFu);
+  return text;
+}
+
 }  // namespace
 
 bool isMatIdentifier(const std::string& name) {
@@ -366,23 +391,29 @@ MatFormat checkMatStructure(const std::string& path) {
   if (!in)
     throw InputError(path + ": cannot be opened for reading");
   const auto size = static_cast<std::uint64_t>(in.tellg());
+  unsigned char header[kMat5HeaderBytes] = {};
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(header),
+          static_cast<std::streamsize>(std::min<std::uint64_t>(size, kMat5HeaderBytes)));
+  const std::string other = otherFormat(header, size);
+  if (!other.empty())
+    throw InputError(path + ": not a MAT 5 or 7.3 file but " + other +
+                     ": save with -v7 or -v6 (MATLAB, Octave)");
   if (size < kMat5HeaderBytes)
     throw InputError(path + ": not a MAT file (" + std::to_string(size) +
                      " bytes, shorter than the 128-byte MAT header)");
-  unsigned char header[kMat5HeaderBytes];
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(header), kMat5HeaderBytes);
   const bool little = header[126] == 'I' && header[127] == 'M';
   const bool big = header[126] == 'M' && header[127] == 'I';
   if (!little && !big)
     throw InputError(path +
-                     ": not a MAT 5 or 7.3 file (no endian indicator in the header; Octave's "
-                     "default text format and -v4 are not: save with -v7 or -v6)");
+                     ": not a MAT 5 or 7.3 file (no endian indicator in its header: a MAT 4 "
+                     "file, -v4, or no MAT file at all): save with -v7 or -v6 (MATLAB, Octave)");
   const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
   if (version == 0x0200)
     return MatFormat::Mat73;
   if (version != 0x0100)
-    throw InputError(path + ": unsupported MAT file version 0x" + std::to_string(version));
+    throw InputError(path + ": unsupported MAT file version " + hex4(version) +
+                     " (MAT 5 files have 0x0100, 7.3 ones 0x0200)");
   std::uint64_t offset = kMat5HeaderBytes;
   while (offset < size) {
     unsigned char tag[8];

@@ -300,6 +300,13 @@ ReducedModel readModel(const io::MatReader& in, const std::string& expected_hash
                      ": holds no variables (an empty MAT file, or one cut after its 128-byte "
                      "header: an interrupted write?)");
   // A .mat of another command (tvd frf, statics, modes) lacks the model's marker altogether.
+  // MATLAB's and Octave's save without -struct keep the loaded struct as one variable.
+  if (!in.has("format_version") && in.names().size() == 1 &&
+      in.className(in.names().front()) == "struct")
+    throw InputError(where + ": holds one struct '" + in.names().front() +
+                     "' and no variable 'format_version': saved without -struct? Save its "
+                     "fields as variables: save(FILE, '-struct', '" +
+                     in.names().front() + "', '-v7')");
   if (!in.has("format_version"))
     throw InputError(where +
                      ": not a reduced model file (no variable 'format_version'; written "

@@ -3,6 +3,7 @@
 // uncompressed element's are, before matio allocates what they claim, and a damaged or short
 // stream is named as such.
 #include <gtest/gtest.h>
+#include <matio.h>
 #include <zlib.h>
 
 #include <cmath>
@@ -242,6 +243,92 @@ TEST(MatStructure, LargeCompressedVariablesAreCheckedAcrossBuffers) {
   setU32(element, 8 + 16 + 8, 6001);
   EXPECT_EQ(refusal(path, OneVariable{original.header, deflateAll(element)}.file()),
             path + ": variable 'names' has its cell element 6001 beyond its end (corrupted file)");
+  std::remove(path.c_str());
+}
+
+// The other formats MATLAB and Octave save in are named from their first bytes, and a MAT
+// version that is neither 5 nor 7.3 is shown as the header writes it.
+TEST(MatStructure, OtherFormatsAreNamedFromTheirFirstBytes) {
+  const std::string path = tempPath("other.mat");
+  const std::string padding(300, '\0');
+  const auto check = [&](const std::string& start, const std::string& what) {
+    writeBytes(path, start + padding);
+    try {
+      checkMatStructure(path);
+      ADD_FAILURE() << what << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": " + what);
+    }
+  };
+  const std::string save = ": save with -v7 or -v6 (MATLAB, Octave)";
+  check(std::string("\x89HDF\r\n\x1a\n", 8),
+        "not a MAT 5 or 7.3 file but an HDF5 file without the MAT header (Octave's -hdf5 "
+        "format?)" +
+            save);
+  check("Octave-1-L", "not a MAT 5 or 7.3 file but Octave's binary format (-binary)" + save);
+  check(std::string("\x1f\x8b\x08", 3),
+        "not a MAT 5 or 7.3 file but a gzip file (Octave's -zip with a format other than "
+        "-v7?)" +
+            save);
+  check("# Created by Octave 7.3.0, Mon Dec 07 18:40:00 2026 UTC <root@host>\n",
+        "not a MAT 5 or 7.3 file but Octave's text format (its default)" + save);
+  // A MAT 4 file starts with its first matrix's type and sizes: no MAT 5 header.
+  check(std::string("\x00\x00\x00\x00\x01\x00\x00\x00", 8),
+        "not a MAT 5 or 7.3 file (no endian indicator in its header: a MAT 4 file, -v4, or no "
+        "MAT file at all): save with -v7 or -v6 (MATLAB, Octave)");
+  std::string header(128, ' ');
+  header.replace(124, 4, std::string("\x00\x03IM", 4));
+  check(header, "unsupported MAT file version 0x0300 (MAT 5 files have 0x0100, 7.3 ones 0x0200)");
+  std::remove(path.c_str());
+}
+
+// A number saved as another class is refused naming the class found (MATLAB may store whole
+// numbers as integers; SciPy's loadmat then returns them so unless mat_dtype=True).
+TEST(MatStructure, AVariableOfAnotherClassIsNamedByIt) {
+  const std::string path = tempPath("classes.mat");
+  {
+    mat_t* mat = Mat_CreateVer(path.c_str(), nullptr, MAT_FT_MAT5);
+    ASSERT_NE(mat, nullptr);
+    std::size_t d[2] = {2, 1};
+    std::int32_t integers[2] = {1, 2};
+    float singles[2] = {1.5f, 2.5f};
+    double reals[2] = {1, 2}, imaginaries[2] = {0, 1};
+    std::uint8_t flags[2] = {1, 0};
+    mat_complex_split_t complex{reals, imaginaries};
+    matvar_t* vars[] = {
+        Mat_VarCreate("a", MAT_C_INT32, MAT_T_INT32, 2, d, integers, 0),
+        Mat_VarCreate("b", MAT_C_SINGLE, MAT_T_SINGLE, 2, d, singles, 0),
+        Mat_VarCreate("c", MAT_C_UINT8, MAT_T_UINT8, 2, d, flags, MAT_F_LOGICAL),
+        Mat_VarCreate("d", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, &complex, MAT_F_COMPLEX),
+        Mat_VarCreate("e", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, reals, 0)};
+    for (matvar_t* v : vars) {
+      ASSERT_NE(v, nullptr);
+      ASSERT_EQ(Mat_VarWrite(mat, v, MAT_COMPRESSION_NONE), 0);
+      Mat_VarFree(v);
+    }
+    Mat_Close(mat);
+  }
+  const MatReader in(path);
+  const std::vector<std::pair<std::string, std::string>> classes = {
+      {"a", "int32"}, {"b", "single"}, {"c", "logical"}, {"d", "complex double"}};
+  for (const auto& [name, class_name] : classes) {
+    EXPECT_EQ(in.className(name), class_name);
+    try {
+      in.readMatrix(name);
+      ADD_FAILURE() << name << " read as a real double matrix";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": variable '" + name + "' is of class " +
+                                           class_name + ", expected a real double matrix");
+    }
+  }
+  EXPECT_EQ(in.className("e"), "double");
+  EXPECT_EQ(in.readMatrix("e", kAnySize, 1), (Matrix(2, 1) << 1, 2).finished());
+  try {
+    in.readMatrix("e", 1, kAnySize);
+    ADD_FAILURE() << "a column read as a row";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": variable 'e' is 2x1, expected 1xn");
+  }
   std::remove(path.c_str());
 }
 

@@ -675,6 +675,28 @@ TEST_F(ReducedModelFileTest, TruncatedFilesAreRefused) {
   expectStale(path_, kHash, "not a MAT file");
 }
 
+// MATLAB's and Octave's `m = load(F); save(F2, 'm')` keep the model as one struct: the message
+// says so and how to save its fields instead.
+TEST_F(ReducedModelFileTest, AModelSavedAsOneStructIsNamedAsSuch) {
+  {
+    mat_t* mat = Mat_CreateVer(path_.c_str(), nullptr, MAT_FT_MAT5);
+    ASSERT_NE(mat, nullptr);
+    std::size_t one[2] = {1, 1};
+    const char* fields[] = {"format_version"};
+    matvar_t* m = Mat_VarCreateStruct("m", 2, one, fields, 1);
+    double version = 1;
+    Mat_VarSetStructFieldByName(
+        m, "format_version", 0,
+        Mat_VarCreate("format_version", MAT_C_DOUBLE, MAT_T_DOUBLE, 2, one, &version, 0));
+    ASSERT_EQ(Mat_VarWrite(mat, m, MAT_COMPRESSION_NONE), 0);
+    Mat_VarFree(m);
+    Mat_Close(mat);
+  }
+  expectStale(path_, kHash,
+              ": holds one struct 'm' and no variable 'format_version': saved without -struct? "
+              "Save its fields as variables: save(FILE, '-struct', 'm', '-v7')");
+}
+
 TEST_F(ReducedModelFileTest, CorruptedBytesAreRefused) {
   const std::string bytes = readBytes(path_);
   // Overwrite 16 bytes in the middle (inside the compressed matrices).

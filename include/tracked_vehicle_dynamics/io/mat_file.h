@@ -72,6 +72,9 @@ class MatReader {
   /// Names of the variables in file order.
   const std::vector<std::string>& names() const { return names_; }
   bool has(const std::string& name) const;
+  /// A variable's class as MATLAB names it: "double", "single", "int32", "char", "cell",
+  /// "struct", "sparse", "logical", "complex double", ... (InputError when there is none).
+  std::string className(const std::string& name) const;
 
   /// A real, finite double matrix; `rows`/`cols` are checked unless kAnySize.
   Matrix readMatrix(const std::string& name, DofIndex rows = kAnySize,
