@@ -132,6 +132,29 @@ std::string quotedName(std::string_view text) {
   return std::string(inside);
 }
 
+/// A name as PyYAML and hand writers leave it unquoted: a letter, digit or '_', then those and
+/// ". - / ( ) +" and single spaces, then the line's end (" # comment" allowed). yaml-cpp reads
+/// any such plain scalar as its own text, except YAML's nulls, which are left to the general
+/// reader (it refuses them).
+std::string plainName(std::string_view text) {
+  const std::size_t comment = text.find(" #");
+  std::string_view name = text.substr(0, comment);
+  while (!name.empty() && name.back() == ' ')
+    name.remove_suffix(1);
+  const auto word = [](char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+  };
+  if (name.empty() || !word(name.front()) || name == "null" || name == "Null" || name == "NULL")
+    throw NotPlain();
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const char c = name[i];
+    const bool space = c == ' ' && name[i - 1] != ' ';
+    if (!word(c) && !space && std::string_view("._-/()+").find(c) == std::string_view::npos)
+      throw NotPlain();
+  }
+  return std::string(name);
+}
+
 template <typename T>
 void setOnce(std::optional<T>& slot, T value) {
   if (slot)
@@ -139,10 +162,16 @@ void setOnce(std::optional<T>& slot, T value) {
   slot = std::move(value);
 }
 
-PlainFile parse(const std::string& text) {
-  PlainFile file;
-  bool in_heights_block = false;
-  std::size_t item_indent = std::string::npos;
+/// A line with content: its text after the indentation, and the indentation (spaces).
+struct Line {
+  std::string_view content;
+  std::size_t indent = 0;
+};
+
+/// The lines with content, blank ones and comment lines left out (both are only white space
+/// and comments within a list, block or flow, as between keys).
+std::vector<Line> contentLines(const std::string& text) {
+  std::vector<Line> lines;
   std::size_t at = 0;
   while (at < text.size()) {
     std::size_t end = text.find('\n', at);
@@ -156,25 +185,111 @@ PlainFile parse(const std::string& text) {
       if (c < 0x20 || c > 0x7e)
         throw NotPlain();
     const std::string_view content = trimmedLeft(line);
-    if (content.empty() || content.front() == '#')
-      continue;
-    const std::size_t indent = line.size() - content.size();
-    if (content.front() == '-') {
-      // An item of the heights block: "- [..]", every one at the same indentation.
-      if (!in_heights_block || content.size() < 2 || content[1] != ' ')
-        throw NotPlain();
-      if (item_indent == std::string::npos)
-        item_indent = indent;
-      else if (indent != item_indent)
-        throw NotPlain();
-      file.height_rows->push_back(flowList(trimmedLeft(content.substr(2))));
-      continue;
-    }
-    if (indent != 0)
+    if (!content.empty() && content.front() != '#')
+      lines.push_back({content, line.size() - content.size()});
+  }
+  return lines;
+}
+
+/// Reads the lines from `at` on: past what it takes when a reader returns.
+class LineCursor {
+ public:
+  explicit LineCursor(const std::vector<Line>& lines) : lines_(lines) {}
+  bool done() const { return at_ == lines_.size(); }
+  const Line& peek() const { return lines_[at_]; }
+  const Line& take() { return lines_[at_++]; }
+
+  /// A flow list that starts with `first` ("[a, b," ...) and goes on over the following lines,
+  /// each indented more than `parent`, up to the line holding its ']' (PyYAML wraps long lists
+  /// so). A '#' inside the list (a comment between its lines) is left to the general reader.
+  Numbers flowListFrom(std::string_view first, std::size_t parent) {
+    if (first.find(']') != std::string_view::npos)
+      return flowList(first);
+    if (first.find('#') != std::string_view::npos)
       throw NotPlain();
-    if (in_heights_block && file.height_rows->empty())
-      throw NotPlain();  // "heights:" with no items under it
-    in_heights_block = false;
+    std::string joined(first);
+    while (true) {
+      if (done() || peek().indent <= parent)
+        throw NotPlain();
+      const std::string_view more = take().content;
+      const std::size_t close = more.find(']');
+      if (more.substr(0, close).find('#') != std::string_view::npos)
+        throw NotPlain();
+      joined += ' ';
+      joined += more;
+      if (close != std::string_view::npos)
+        return flowList(joined);
+    }
+  }
+
+  /// "- number" lines at one indentation, from the next line on, while they last (at least
+  /// one): a block list of numbers.
+  Numbers blockNumbers(std::size_t indent) {
+    Numbers values;
+    while (!done() && peek().indent == indent && isItem(peek().content))
+      values.push_back(scalarNumber(trimmedLeft(take().content.substr(2))));
+    if (values.empty())
+      throw NotPlain();
+    return values;
+  }
+
+  static bool isItem(std::string_view content) {
+    return content.size() >= 2 && content[0] == '-' && content[1] == ' ';
+  }
+
+ private:
+  const std::vector<Line>& lines_;
+  std::size_t at_ = 0;
+};
+
+/// The items of "heights:" given as a block (its lines indented, or "- " at column 0): rows as
+/// flow lists ("- [..]", over one line or more) or as nested blocks ("- - a" then "  - b" lines),
+/// or numbers ("- a": a flat list, no y). One form throughout.
+void heightsBlock(LineCursor& lines, PlainFile& file) {
+  if (lines.done() || !LineCursor::isItem(lines.peek().content))
+    throw NotPlain();  // "heights:" with no items under it
+  const std::size_t indent = lines.peek().indent;
+  std::vector<Numbers> rows;
+  Numbers flat;
+  while (!lines.done() && lines.peek().indent == indent &&
+         LineCursor::isItem(lines.peek().content)) {
+    const std::string_view content = lines.take().content;
+    const std::string_view item = trimmedLeft(content.substr(2));
+    if (!item.empty() && item.front() == '[') {
+      rows.push_back(lines.flowListFrom(item, indent));
+    } else if (LineCursor::isItem(item)) {
+      // "- - a": the row's first number; its inner items stand where this inner '-' does.
+      const std::size_t inner = indent + (content.size() - item.size());
+      Numbers row{scalarNumber(trimmedLeft(item.substr(2)))};
+      if (!lines.done() && lines.peek().indent == inner) {
+        const Numbers rest = lines.blockNumbers(inner);
+        row.insert(row.end(), rest.begin(), rest.end());
+      }
+      rows.push_back(std::move(row));
+    } else {
+      flat.push_back(scalarNumber(item));
+    }
+    if (!rows.empty() && !flat.empty())
+      throw NotPlain();
+  }
+  // Anything left under "heights:" (a deeper line that no item took) is another form.
+  if (!lines.done() && (lines.peek().indent != 0 || lines.peek().content.front() == '-'))
+    throw NotPlain();
+  if (rows.empty())
+    setOnce(file.flat_heights, std::move(flat));
+  else
+    setOnce(file.height_rows, std::move(rows));
+}
+
+PlainFile parse(const std::string& text) {
+  PlainFile file;
+  const std::vector<Line> all = contentLines(text);
+  LineCursor lines(all);
+  while (!lines.done()) {
+    const Line& line = lines.take();
+    const std::string_view content = line.content;
+    if (line.indent != 0 || content.front() == '-')
+      throw NotPlain();
     const std::size_t colon = content.find(':');
     if (colon == std::string_view::npos)
       throw NotPlain();
@@ -183,30 +298,35 @@ PlainFile parse(const std::string& text) {
     if (!rest.empty() && rest.front() != ' ')
       throw NotPlain();  // "key:value" is one plain scalar in YAML, not a key and its value
     const std::string_view value = trimmedLeft(rest);
-    if (key == "heights" && (value.empty() || value.front() == '#')) {
-      setOnce(file.height_rows, std::vector<Numbers>());
-      in_heights_block = true;
-      item_indent = std::string::npos;
-    } else if (value.empty() || value.front() == '#') {
-      throw NotPlain();
+    if (value.empty() || value.front() == '#') {
+      // A block under the key: "- " items, indented or at column 0.
+      if (key == "heights") {
+        heightsBlock(lines, file);
+      } else if ((key == "x" || key == "y") && !lines.done()) {
+        const std::size_t indent = lines.peek().indent;
+        Numbers values = lines.blockNumbers(indent);
+        if (!lines.done() && (lines.peek().indent != 0 || lines.peek().content.front() == '-'))
+          throw NotPlain();
+        setOnce(key == "x" ? file.x : file.y, std::move(values));
+      } else {
+        throw NotPlain();
+      }
     } else if (key == "name") {
-      setOnce(file.name, quotedName(value));
+      setOnce(file.name, value.front() == '"' ? quotedName(value) : plainName(value));
     } else if (key == "spacing") {
       setOnce(file.spacing, scalarNumber(value));
     } else if (key == "start") {
       setOnce(file.start, scalarNumber(value));
     } else if (key == "x") {
-      setOnce(file.x, flowList(value));
+      setOnce(file.x, lines.flowListFrom(value, 0));
     } else if (key == "y") {
-      setOnce(file.y, flowList(value));
+      setOnce(file.y, lines.flowListFrom(value, 0));
     } else if (key == "heights") {
-      setOnce(file.flat_heights, flowList(value));
+      setOnce(file.flat_heights, lines.flowListFrom(value, 0));
     } else {
       throw NotPlain();
     }
   }
-  if (in_heights_block && file.height_rows->empty())
-    throw NotPlain();
   if (file.flat_heights && file.height_rows)
     throw NotPlain();
   return file;

@@ -99,6 +99,22 @@ TEST(PlainTerrainYaml, HandWrittenPlainFilesRead) {
       "# a bump\r\n\r\nname: \"bump\"\r\nx: [0, 1, 2.5]\r\ny: [-1, 1]\r\nheights:\r\n"
       "- [0, 1e-2, 0]\r\n# the left line\r\n- [0, .5, -0.]\r\n",
       "heights:   # two lines\n    - [1, 2]\n    - [3, 4]\ny: [0, 2.5]\nx: [10, 11]\n",
+      "spacing: 1\nheights:\n  - 0\n  - 1\n",  // a block list of numbers
+      "spacing: 1\nheights: [0,\n  1]\n",      // a flow list over two lines
+      "name: plain\nspacing: 1\nheights: [0, 1]\n",
+      "name: Long hill (0.4 m) # c\nspacing: 1\nheights: [0, 1]\n",
+      // yaml.safe_dump(d) of PyYAML: block lists, keys sorted, an unquoted name.
+      "heights:\n- - 0.0\n  - -2.4059304981671113e-07\n  - 1.0e-05\n- - 0.5\n  - 0.25\n"
+      "  - -0.125\nname: road_1\nx:\n- 0.0\n- 0.01\n- 0.02\ny:\n- -2.5\n- 2.5\n",
+      // yaml.dump(d, default_flow_style=None): rows as flow lists wrapped at 80 columns.
+      "heights:\n- [0.0, -2.4059304981671113e-07, -9.53899338654784e-07, -2.125346804862843e-06,\n"
+      "  -5.774207963110057e-06]\n- [1, 2, 3, 4,\n  5]\nname: iso8608_C_seed1\n"
+      "x: [0.0, 0.01, 0.02, 0.03,\n  0.04]\ny: [-2.5,\n  2.5]\n",
+      // Blank and comment lines inside lists; lists indented under their keys.
+      "x:\n  - 0\n\n  # the middle\n  - 1\n  - 2\nheights:\n  - - 0\n    # c\n    - 1\n"
+      "    - 2\n  - [3,\n\n     4, 5]\ny: [0, 1]\n",
+      "x:\n- 0\n- 1\nheights:\n- [0, 1]\n- - 2\n  - 3\ny: [0, 1]\n",  // rows of two forms
+      "spacing: 1\ny: [0]\nheights:\n- [0,\n  # c\n  1]\n",  // a comment line in a flow list
   };
   for (const std::string& content : files) {
     const BothReads reads = readBoth(content);
@@ -111,14 +127,14 @@ TEST(PlainTerrainYaml, HandWrittenPlainFilesRead) {
 // Valid YAML in other forms goes to the general reader, which reads it.
 TEST(PlainTerrainYaml, OtherYamlFormsAreLeftToTheGeneralReader) {
   const std::vector<std::string> files = {
-      "spacing: 1\nheights:\n  - 0\n  - 1\n",                   // a block list of numbers
-      "spacing: 1\nheights: [0,\n  1]\n",                       // a flow list over two lines
+      "spacing: 1\nheights: [0, # c\n  1]\n",                   // a comment inside a flow list
+      "spacing: 1\nheights: [0,\n1]\n",                         // a flow list's line not indented
       "spacing: +1\nheights: [0, 1]\n",                         // YAML's '+'
       "---\nspacing: 1\nheights: [0, 1]\n",                     // a document marker
       "spacing: 1\nheights: [0,\t1]\n",                         // a tab
       "\xEF\xBB\xBFspacing: 1\nheights: [0, 1]\n",              // a byte-order mark
       "name: 'single'\nspacing: 1\nheights: [0, 1]\n",          // single quotes
-      "name: plain\nspacing: 1\nheights: [0, 1]\n",             // a plain name
+      "name: -x\nspacing: 1\nheights: [0, 1]\n",                // a name starting with '-'
       "{spacing: 1, heights: [0, 1]}\n",                        // a flow map
       "spacing: 1\nheights: [0, 1] # c\nname: \"d\\u00e9\"\n",  // an escape in the name
   };
@@ -126,6 +142,22 @@ TEST(PlainTerrainYaml, OtherYamlFormsAreLeftToTheGeneralReader) {
     const BothReads reads = readBoth(content);
     EXPECT_FALSE(reads.plain.has_value()) << content;
     EXPECT_TRUE(reads.general.has_value()) << content;
+  }
+}
+
+// Files neither reader takes: the plain one leaves them, and the general one names the fault.
+TEST(PlainTerrainYaml, FaultsInTheNewFormsAreTheGeneralReadersToName) {
+  const std::vector<std::string> files = {
+      "x: [0, 1]\nheights:\n- - 0\n  - - 1\n",               // a list in a list in a list
+      "spacing: 1\nheights: [0, 1]\nname: Null\n",           // YAML's null for the name
+      "spacing: 1\nheights: [0, 1]\nname: a: b\n",           // a map in a plain scalar
+      "spacing: 1\nheights:\n  - 0\n   - 1\n",               // an item deeper than the one before
+      "x:\n- 0\n- 1\nheights:\n- [0, 1]\n- 2\ny: [0, 1]\n",  // a row and a number
+  };
+  for (const std::string& content : files) {
+    const BothReads reads = readBoth(content);
+    EXPECT_FALSE(reads.plain.has_value()) << content;
+    EXPECT_FALSE(reads.general.has_value()) << content;
   }
 }
 
@@ -138,6 +170,12 @@ TEST(PlainTerrainYaml, RandomEditsNeverReadDifferently) {
       "  - [0, 1e-3, 2E+1, 0]\n  - [0, 0.25, 0.125, 0]\n",
       "spacing: 0.01\nstart: 3\nheights: [0, -1, 2.5, 1e4, -1e4]  # m\n",
       "# c\r\nspacing: 2e-6\r\ny: [0, 1e-6]\r\nheights:\r\n- [1, 2]\r\n- [3, 4]\r\n",
+      // PyYAML's block and wrapped flow lists, an unquoted name.
+      "heights:\n- - 0.0\n  - -2.5e-07\n  - 1.0e-05\n- - 0.5\n  - 0.25\n  - -0.125\n"
+      "name: road_1\nx:\n- 0.0\n- 0.01\n- 0.02\ny:\n- -2.5\n- 2.5\n",
+      "heights:\n- [0.0, -2.4e-07, -9.5e-07,\n  -5.7e-06]\n- [1, 2, 3,\n  4]\n"
+      "name: iso C (1)\nx: [0.0, 0.01,\n  0.02, 0.03]\ny: [-2.5,\n  2.5]\n",
+      "spacing: 0.5\nheights:\n  - 0\n  - 1.5\n  # c\n  - -2\n",
   };
   const std::vector<std::string> tokens = {"nan", ".inf", "-inf", "1e400", "1e-400", "+1",   "abc",
                                            "",    "1,",   "'1'",  "\"1\"", "-",      "0x10", "1_0",
@@ -146,7 +184,7 @@ TEST(PlainTerrainYaml, RandomEditsNeverReadDifferently) {
   const std::string characters = " ,[]#-:\t\r\n\"\\e.0-+yx";
   std::mt19937 random(20261207);
   int accepted = 0, handed_over = 0, refused = 0;
-  for (int trial = 0; trial < 4000; ++trial) {
+  for (int trial = 0; trial < 6000; ++trial) {
     std::string text = bases[static_cast<std::size_t>(trial) % bases.size()];
     const int edits = random() % 4 == 0 ? 2 : 1;
     for (int e = 0; e < edits && !text.empty(); ++e) {

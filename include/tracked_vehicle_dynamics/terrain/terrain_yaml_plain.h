@@ -1,12 +1,18 @@
-// A fast reader of YAML terrain files in the plain layout that saveTerrainYaml writes.
+// A fast reader of YAML terrain files in the plain layouts that saveTerrainYaml and PyYAML write.
 //
 // The general reader (terrain_io.h) builds a yaml-cpp node per height, about 0.8 kB each: a
-// 7 km road at 1 cm with four lines (2.8 million heights, 74 MB) took 2.2 GB and 23 s. Files in
-// the layout the tools write are read here line by line into the arrays themselves instead:
-//   # comment lines, blank lines
-//   name: "text"                       (printable ASCII, no quote or backslash inside)
-//   spacing: 0.01 / start: 0 / x: [..] / y: [..]    (each list on its one line)
-//   heights: [..]                      (no y), or heights: then one "  - [..]" line per y
+// 7 km road at 1 cm with four lines (2.8 million heights, 74 MB) took 2.2 GB and 23 s, and a
+// 2 km road with two lines written by PyYAML's yaml.safe_dump 7.5 s and 0.57 GB. Files in these
+// layouts are read here line by line into the arrays themselves instead:
+//   # comment lines, blank lines (anywhere, lists included)
+//   name: "text" or name: text        (printable ASCII, no quote or backslash inside; unquoted:
+//                                      a letter, digit or '_', then those, ". - / ( ) +" and
+//                                      single spaces)
+//   spacing: 0.01 / start: 0
+//   x: / y: a flow list [..], on one line or wrapped over more (each indented), or a block list
+//      of "- number" lines at one indentation
+//   heights: a flat list as x's (no y), or a block of rows, one per y: "- [..]" (wrapped or
+//      not), or "- - a" followed by "  - b" lines (PyYAML's list of lists)
 // each key at most once, in any order, values followed only by blanks or " # comment", LF or
 // CR LF line ends, numbers in plain decimal ("-1.5e-3"; no '+', no quotes).
 //
