@@ -235,6 +235,13 @@ MatReader::MatReader(const std::string& path) : impl_(std::make_unique<Impl>()),
     throw InputError(path + ": the list of variables cannot be read");
   while (matvar_t* header = Mat_VarReadNextInfo(impl_->mat)) {
     VarPtr owned(header);
+    // MATLAB's class objects (string, table, datetime) and function handles: matio lists them,
+    // without a name, and cannot read them. They are passed over, and counted for the message
+    // of a variable that is then missing (a text saved as a string, not a char array).
+    if (header->class_type == MAT_C_OPAQUE || header->class_type == MAT_C_FUNCTION) {
+      ++objects_passed_over_;
+      continue;
+    }
     if (!header->name)
       throw InputError(path + ": variable " + std::to_string(names_.size() + 1) +
                        " has no name (corrupted file)");
@@ -267,7 +274,12 @@ std::string MatReader::className(const std::string& name) const {
 const matvar_t* MatReader::header(const std::string& name, bool with_data) const {
   const auto found = std::find(names_.begin(), names_.end(), name);
   if (found == names_.end())
-    throw InputError(path_ + ": variable '" + name + "' is missing");
+    throw InputError(path_ + ": variable '" + name + "' is missing" +
+                     (objects_passed_over_ > 0
+                          ? " (the file holds " + std::to_string(objects_passed_over_) +
+                                " MATLAB class object(s), e.g. strings, which are not read: save "
+                                "texts as char arrays, 'text' rather than \"text\")"
+                          : std::string()));
   const auto i = static_cast<std::size_t>(found - names_.begin());
   matvar_t* var = impl_->headers[i].get();
   if (with_data && !impl_->data_read[i]) {

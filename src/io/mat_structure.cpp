@@ -29,10 +29,17 @@ constexpr std::uint32_t kMiInt32 = 5;
 constexpr std::uint32_t kMiUint32 = 6;
 constexpr std::uint32_t kMiMatrix = 14;
 constexpr std::uint32_t kMiCompressed = 15;
-constexpr std::uint32_t kCellClass = 1;    // mxCELL_CLASS
-constexpr std::uint32_t kSparseClass = 5;  // mxSPARSE_CLASS
-// Cells within cells checked (ours hold texts: one level).
-constexpr int kMaxCheckedDepth = 8;
+constexpr std::uint32_t kCellClass = 1;       // mxCELL_CLASS
+constexpr std::uint32_t kSparseClass = 5;     // mxSPARSE_CLASS
+constexpr std::uint32_t kStructClass = 2;     // mxSTRUCT_CLASS
+constexpr std::uint32_t kObjectClass = 3;     // mxOBJECT_CLASS
+constexpr std::uint32_t kFunctionClass = 16;  // mxFUNCTION_CLASS
+constexpr std::uint32_t kOpaqueClass = 17;    // mxOPAQUE_CLASS (MATLAB's class objects)
+// Arrays nested in cells and structs deeper than this are refused rather than walked (ours hold
+// texts in cells: one level; matio recurses as deep as the file goes).
+constexpr int kMaxDepth = 32;
+// More dimensions than any variable needs (MATLAB's own arrays rarely pass 10).
+constexpr std::uint64_t kMaxDimensions = 64;
 // Dimensions shown in a message; a damaged header may claim millions.
 constexpr std::size_t kShownDimensions = 8;
 // Bytes read from the file, and inflated, at a time.
@@ -232,13 +239,27 @@ class ArrayHeaderCheck {
   void checkArray(std::uint64_t begin, std::uint64_t end, int depth, std::string where) {
     if (begin == end)
       return;  // an empty element: MATLAB's empty cell entries
+    if (depth > kMaxDepth)
+      throw InputError(path_ + ": " + top_ + " holds arrays nested more than " +
+                       std::to_string(kMaxDepth) + " deep (not read)");
     const SubTag flags = tag(begin, end, where, "array flags");
     if (flags.type != kMiUint32 || flags.bytes != 8)
       corrupted(where, "has array flags other than two 32-bit words");
     const std::uint32_t array_class = word(flags.data) & 0xFFu;
+    // MATLAB's class objects (string, table, datetime: opaque) and function handles have no
+    // dimensions of this layout; matio lists them without reading their contents.
+    if (array_class == kFunctionClass || array_class == kOpaqueClass)
+      return;
     const SubTag dims_tag = tag(flags.next, end, where, "dimensions");
+    // (miUINT32 dimensions, which a writer in SciPy's tests uses, matio 1.5 stops listing at:
+    // the variable and every one after it would vanish.)
     if (dims_tag.type != kMiInt32 || dims_tag.bytes < 8 || dims_tag.bytes % 4 != 0)
       corrupted(where, "has dimensions other than two or more 32-bit integers");
+    // matio keeps 12 bytes per dimension: a compressed run of a billion ones would cost 12 GB.
+    if (dims_tag.bytes / 4 > kMaxDimensions)
+      throw InputError(path_ + ": " + where + " has " + std::to_string(dims_tag.bytes / 4) +
+                       " dimensions (more than " + std::to_string(kMaxDimensions) +
+                       " are not read)");
     // The dimensions are read before the name that follows them (a compressed stream is read
     // forward), and judged once the name can say whose they are.
     std::uint64_t elements = 1;
@@ -267,16 +288,42 @@ class ArrayHeaderCheck {
     }
     if (negative)
       corrupted(where, "has a negative dimension (" + shape + ")");
-    const std::uint64_t per_element = array_class == kCellClass ? 8 : 1;
-    if (array_class != kSparseClass && elements > capacity / per_element)
+    // What each element stores at least: a byte of a numeric or text array, a cell's 8-byte
+    // tag, a struct's (or object's) tag per field. matio allocates by the dimensions (and a
+    // struct's field count by its names) before it reads.
+    std::uint64_t at = name.next;
+    std::uint64_t fields = 1;
+    std::uint64_t per_element = array_class == kCellClass ? 8 : 1;
+    if (array_class == kStructClass || array_class == kObjectClass) {
+      if (array_class == kObjectClass)
+        at = tag(at, end, where, "class name").next;
+      const SubTag length = tag(at, end, where, "field name length");
+      if (length.type != kMiInt32 || length.bytes != 4)
+        corrupted(where, "has a field name length other than one 32-bit integer");
+      const std::uint32_t name_length = word(length.data);
+      const SubTag names = tag(length.next, end, where, "field names");
+      if (name_length == 0 ? names.bytes != 0 : names.bytes % name_length != 0)
+        corrupted(where, "has field names of " + std::to_string(names.bytes) +
+                             " bytes, not a whole number of " + std::to_string(name_length) +
+                             "-byte names");
+      fields = name_length == 0 ? 0 : names.bytes / name_length;
+      per_element = 8 * fields;
+      at = names.next;
+    }
+    if (array_class != kSparseClass && per_element > 0 && elements > capacity / per_element)
       corrupted(where, "claims " + shape + " elements, more than its " + std::to_string(capacity) +
                            " bytes hold");
-    if (array_class != kCellClass || depth >= kMaxCheckedDepth)
+    if (array_class != kCellClass && array_class != kStructClass && array_class != kObjectClass)
       return;
-    std::uint64_t at = name.next;
-    for (std::uint64_t k = 0; k < elements; ++k) {
-      const std::string element_where = where + "{" + std::to_string(k + 1) + "}";
-      const SubTag element = tag(at, end, where, "cell element " + std::to_string(k + 1));
+    // A cell's elements, or a struct's fields element by element, each an array of its own.
+    const bool cell = array_class == kCellClass;
+    for (std::uint64_t k = 0; k < elements * fields; ++k) {
+      const std::string what = cell ? "cell element " + std::to_string(k + 1)
+                                    : "field " + std::to_string(k % fields + 1) + " of element " +
+                                          std::to_string(k / fields + 1);
+      const std::string element_where =
+          cell ? where + "{" + std::to_string(k + 1) + "}" : where + " (" + what + ")";
+      const SubTag element = tag(at, end, where, what);
       if (element.type != kMiMatrix)
         corrupted(element_where, "is not an array");
       checkArray(element.data, element.data + element.bytes, depth + 1, element_where);
@@ -350,20 +397,21 @@ void checkCompressed(std::ifstream& in, bool big, const std::string& path, std::
   }
 }
 
-// What a file that is not a MAT 5 or 7.3 one is, from its first bytes, for the files MATLAB and
-// Octave write in their other formats; "" when it is none of those.
+// What a file that is not a MAT 5 or 7.3 one is, from its first bytes, and how to save it, for
+// the files MATLAB and Octave write in their other formats; "" when it is none of those.
 std::string otherFormat(const unsigned char* start, std::uint64_t size) {
+  const std::string save = ": save with -v7 or -v6 (MATLAB, Octave)";
   const auto startsWith = [&](const char* text, std::size_t n) {
     return size >= n && std::memcmp(start, text, n) == 0;
   };
   if (startsWith("\x89HDF\r\n\x1a\n", 8))
-    return "an HDF5 file without the MAT header (Octave's -hdf5 format?)";
+    return "an HDF5 file without the MAT header (Octave's -hdf5 format?)" + save;
   if (startsWith("Octave-1-L", 10) || startsWith("Octave-1-B", 10))
-    return "Octave's binary format (-binary)";
+    return "Octave's binary format (-binary)" + save;
   if (startsWith("\x1f\x8b", 2))
-    return "a gzip file (Octave's -zip with a format other than -v7?)";
+    return "a gzip file (Octave's -zip): save with -v7, or with -v6 without -zip";
   if (startsWith("# Created by Octave", 19))
-    return "Octave's text format (its default)";
+    return "Octave's text format (its default)" + save;
   return "";
 }
 
@@ -397,11 +445,11 @@ MatFormat checkMatStructure(const std::string& path) {
           static_cast<std::streamsize>(std::min<std::uint64_t>(size, kMat5HeaderBytes)));
   const std::string other = otherFormat(header, size);
   if (!other.empty())
-    throw InputError(path + ": not a MAT 5 or 7.3 file but " + other +
-                     ": save with -v7 or -v6 (MATLAB, Octave)");
+    throw InputError(path + ": not a MAT 5 or 7.3 file but " + other);
   if (size < kMat5HeaderBytes)
-    throw InputError(path + ": not a MAT file (" + std::to_string(size) +
-                     " bytes, shorter than the 128-byte MAT header)");
+    throw InputError(path + ": not a MAT 5 or 7.3 file (" + std::to_string(size) +
+                     " bytes, shorter than their 128-byte header: a MAT 4 file, -v4, or no MAT "
+                     "file at all): save with -v7 or -v6 (MATLAB, Octave)");
   const bool little = header[126] == 'I' && header[127] == 'M';
   const bool big = header[126] == 'M' && header[127] == 'I';
   if (!little && !big)

@@ -672,7 +672,9 @@ TEST_F(ReducedModelFileTest, TruncatedFilesAreRefused) {
   writeBytes(path_, bytes.substr(0, 128));
   expectStale(path_, kHash, "holds no variables");
   writeBytes(path_, bytes.substr(0, 60));
-  expectStale(path_, kHash, "not a MAT file");
+  expectStale(path_, kHash,
+              "not a MAT 5 or 7.3 file (60 bytes, shorter than their 128-byte header: a MAT 4 "
+              "file, -v4, or no MAT file at all)");
 }
 
 // MATLAB's and Octave's `m = load(F); save(F2, 'm')` keep the model as one struct: the message

@@ -69,7 +69,8 @@ class MatReader {
   MatReader& operator=(const MatReader&) = delete;
 
   const std::string& path() const { return path_; }
-  /// Names of the variables in file order.
+  /// Names of the variables in file order (MATLAB class objects, e.g. strings, left out: matio
+  /// cannot read them).
   const std::vector<std::string>& names() const { return names_; }
   bool has(const std::string& name) const;
   /// A variable's class as MATLAB names it: "double", "single", "int32", "char", "cell",
@@ -96,6 +97,7 @@ class MatReader {
   std::unique_ptr<Impl> impl_;
   std::string path_;
   std::vector<std::string> names_;
+  int objects_passed_over_ = 0;  // MATLAB class objects and function handles, not listed
 };
 
 }  // namespace io

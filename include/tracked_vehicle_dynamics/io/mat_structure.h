@@ -17,10 +17,13 @@ constexpr std::size_t kMaxMatNameLength = 63;
 bool isMatIdentifier(const std::string& name);
 
 /// Checks a MAT 5 file's elements against its size, and every array's headers (dimensions, name,
-/// a cell's elements in turn) against the bytes its element holds, in compressed elements too
-/// (inflated on the way, one buffer at a time, to the end their headers claim). A 7.3 (HDF5)
-/// file is left to the HDF5 library's own checks. Returns the file's format; throws InputError
-/// naming the file and the variable (or the byte where its element starts) on a damaged one.
+/// a cell's elements and a struct's or object's field names and fields in turn) against the
+/// bytes its element holds, in compressed elements too (inflated on the way, one buffer at a
+/// time, to the end their headers claim and the stream's check value). Arrays with more than 64
+/// dimensions or nested more than 32 deep are refused; MATLAB's class objects (strings, tables)
+/// and function handles are passed over. A 7.3 (HDF5) file is left to the HDF5 library's own
+/// checks; other formats MATLAB and Octave write are named. Returns the file's format; throws
+/// InputError naming the file and the variable (or the byte where its element starts).
 MatFormat checkMatStructure(const std::string& path);
 
 }  // namespace io
