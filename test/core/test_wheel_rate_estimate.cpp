@@ -38,7 +38,7 @@ bool contains(const std::string& text, const std::string& part) {
 
 // The paper's description with `line` added after the suspension's contact_shear_stiffness entry.
 std::string withSuspensionLine(const std::string& line) {
-  std::string text = readBytes(kPaperFile);
+  std::string text = tvd::readBytes(kPaperFile);
   const std::size_t key = text.find("  contact_shear_stiffness:");
   const std::size_t next = text.find("  guide_contact_height:", key);
   EXPECT_NE(key, std::string::npos);
