@@ -30,9 +30,9 @@ constexpr std::uint32_t kMiUint32 = 6;
 constexpr std::uint32_t kMiMatrix = 14;
 constexpr std::uint32_t kMiCompressed = 15;
 constexpr std::uint32_t kCellClass = 1;       // mxCELL_CLASS
-constexpr std::uint32_t kSparseClass = 5;     // mxSPARSE_CLASS
 constexpr std::uint32_t kStructClass = 2;     // mxSTRUCT_CLASS
 constexpr std::uint32_t kObjectClass = 3;     // mxOBJECT_CLASS
+constexpr std::uint32_t kSparseClass = 5;     // mxSPARSE_CLASS
 constexpr std::uint32_t kFunctionClass = 16;  // mxFUNCTION_CLASS
 constexpr std::uint32_t kOpaqueClass = 17;    // mxOPAQUE_CLASS (MATLAB's class objects)
 // Arrays nested in cells and structs deeper than this are refused rather than walked (ours hold
@@ -211,8 +211,9 @@ struct SubTag {
 // The headers inside an array element (type miMATRIX): its dimensions and its name must fit in
 // the element's own bytes. matio trusts them and allocates before it reads: a cell claiming 1e9
 // elements took 8 GB and 44 s, a name length of 2^31 2 GB, and 4e8 in a compressed cell 3.1 GB
-// and 9 s. Every array but a sparse one (dimensions independent of its stored non-zeros) stores
-// at least one byte per element, a cell at least one 8-byte tag; the cell's elements are
+// and 9 s, a struct field claiming 2e8 entries 1.5 GB. Every array but a sparse one (dimensions
+// independent of its stored non-zeros) stores at least one byte per element, a cell one 8-byte
+// tag, a struct or object one per field; the cell's elements and the struct's fields are arrays
 // checked in turn.
 class ArrayHeaderCheck {
  public:
@@ -220,8 +221,9 @@ class ArrayHeaderCheck {
       : bytes_(bytes), big_(big), path_(path) {}
 
   // The array whose data (after its miMATRIX tag) spans [begin, end); `where` names it in the
-  // messages ("the variable at byte N", a cell's element "variable 'X'{3}"), a top-level one
-  // (depth 0) by its own name once that is read.
+  // messages ("the variable at byte N", a cell's element "variable 'X'{3}", a struct's field
+  // "variable 'X' (field 2 of element 1)"), a top-level one (depth 0) by its own name once that
+  // is read.
   void check(std::uint64_t begin, std::uint64_t end, int depth, std::string where) {
     if (depth == 0)
       top_ = where;
