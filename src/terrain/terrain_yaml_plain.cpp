@@ -233,6 +233,13 @@ class LineCursor {
     return values;
   }
 
+  /// After a block: the next line, if any, is a key at column 0. A deeper line that no item
+  /// took (a multi-line scalar, a deeper list) is another form.
+  void expectKeyOrEnd() const {
+    if (!done() && (peek().indent != 0 || peek().content.front() == '-'))
+      throw NotPlain();
+  }
+
   static bool isItem(std::string_view content) {
     return content.size() >= 2 && content[0] == '-' && content[1] == ' ';
   }
@@ -272,9 +279,7 @@ void heightsBlock(LineCursor& lines, PlainFile& file) {
     if (!rows.empty() && !flat.empty())
       throw NotPlain();
   }
-  // Anything left under "heights:" (a deeper line that no item took) is another form.
-  if (!lines.done() && (lines.peek().indent != 0 || lines.peek().content.front() == '-'))
-    throw NotPlain();
+  lines.expectKeyOrEnd();
   if (rows.empty())
     setOnce(file.flat_heights, std::move(flat));
   else
@@ -305,8 +310,7 @@ PlainFile parse(const std::string& text) {
       } else if ((key == "x" || key == "y") && !lines.done()) {
         const std::size_t indent = lines.peek().indent;
         Numbers values = lines.blockNumbers(indent);
-        if (!lines.done() && (lines.peek().indent != 0 || lines.peek().content.front() == '-'))
-          throw NotPlain();
+        lines.expectKeyOrEnd();
         setOnce(key == "x" ? file.x : file.y, std::move(values));
       } else {
         throw NotPlain();

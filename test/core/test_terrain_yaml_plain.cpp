@@ -59,6 +59,15 @@ BothReads readBoth(const std::string& content, const std::string& name = "road.y
   return reads;
 }
 
+/// Each file is left by the plain reader; the general one reads it, or refuses it.
+void expectLeftToTheGeneralReader(const std::vector<std::string>& files, bool general_reads) {
+  for (const std::string& content : files) {
+    const BothReads reads = readBoth(content);
+    EXPECT_FALSE(reads.plain.has_value()) << content;
+    EXPECT_EQ(reads.general.has_value(), general_reads) << content;
+  }
+}
+
 TEST(PlainTerrainYaml, WhatTheToolsWriteReadsAsTheGeneralReaderReadsIt) {
   Iso8608Options sides;
   sides.correlation = LateralCorrelation::IndependentSides;
@@ -138,11 +147,7 @@ TEST(PlainTerrainYaml, OtherYamlFormsAreLeftToTheGeneralReader) {
       "{spacing: 1, heights: [0, 1]}\n",                        // a flow map
       "spacing: 1\nheights: [0, 1] # c\nname: \"d\\u00e9\"\n",  // an escape in the name
   };
-  for (const std::string& content : files) {
-    const BothReads reads = readBoth(content);
-    EXPECT_FALSE(reads.plain.has_value()) << content;
-    EXPECT_TRUE(reads.general.has_value()) << content;
-  }
+  expectLeftToTheGeneralReader(files, /*general_reads=*/true);
 }
 
 // Files neither reader takes: the plain one leaves them, and the general one names the fault.
@@ -154,11 +159,7 @@ TEST(PlainTerrainYaml, FaultsInTheNewFormsAreTheGeneralReadersToName) {
       "spacing: 1\nheights:\n  - 0\n   - 1\n",               // an item deeper than the one before
       "x:\n- 0\n- 1\nheights:\n- [0, 1]\n- 2\ny: [0, 1]\n",  // a row and a number
   };
-  for (const std::string& content : files) {
-    const BothReads reads = readBoth(content);
-    EXPECT_FALSE(reads.plain.has_value()) << content;
-    EXPECT_FALSE(reads.general.has_value()) << content;
-  }
+  expectLeftToTheGeneralReader(files, /*general_reads=*/false);
 }
 
 // Random edits of plain files: every file the plain reader accepts, the general one reads to the

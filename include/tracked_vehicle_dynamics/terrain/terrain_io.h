@@ -33,9 +33,9 @@ namespace terrain {
 /// Reads a CSV terrain; the Terrain is named after the file stem. Throws InputError.
 Terrain loadTerrainCsv(const std::string& path);
 /// Reads a YAML terrain; named by its `name` key, else the file stem. Throws InputError.
-/// A file in the layout saveTerrainYaml writes is read line by line (terrain_yaml_plain.h: a
-/// 74 MB road read and simulated in 2-3 s, in the memory of its arrays), any other by
-/// loadTerrainYamlGeneral(), which also names every fault.
+/// A file in the layouts saveTerrainYaml and PyYAML write is read line by line
+/// (terrain_yaml_plain.h: a 74 MB road read and simulated in 2-3 s, in the memory of its
+/// arrays), any other by loadTerrainYamlGeneral(), which also names every fault.
 Terrain loadTerrainYaml(const std::string& path);
 /// Reads any YAML terrain through a yaml-cpp tree: about 0.8 kB per height (a 2.8-million-height
 /// road, 2.2 GB). Throws InputError naming the file, key and line of a fault.
