@@ -24,6 +24,7 @@ PACKAGES=(
   # solvers are single-threaded and the machines have 2 cores)
   libopenblas0-serial
   googletest
+  locales  # test_locale_independence compiles de_DE (a comma locale) with localedef from its sources
   # plots and side-by-side benchmarks
   python3-numpy python3-scipy python3-matplotlib python3-yaml
 )

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <vector>
+
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 
@@ -18,23 +18,23 @@ std::string brief(double value) {
   // Six digits, unless the value is exactly one of up to ten: a value the user typed (200.0001
   // against a bound of 200) must not be shown as the bound it breaks, while a computed value
   // (0.1 + 0.2), which no short decimal gives exactly, keeps its six.
-  char buffer[64];
   for (int digits = 6; digits <= 10; ++digits) {
-    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-    if (std::strtod(buffer, nullptr) == value)
-      return buffer;
+    std::string text;
+    io::appendGeneral(text, value, digits);
+    if (io::strtodC(text.c_str(), nullptr) == value)
+      return text;
   }
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-  return buffer;
+  std::string text;
+  io::appendGeneral(text, value, 6);
+  return text;
 }
 
 std::string beyond(double value, double bound) {
   const std::string shown_bound = brief(bound);
   std::string shown = brief(value);
-  char buffer[64];
   for (int digits = 7; shown == shown_bound && value != bound && digits <= 17; ++digits) {
-    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
-    shown = buffer;
+    shown.clear();
+    io::appendGeneral(shown, value, digits);
   }
   return shown;
 }

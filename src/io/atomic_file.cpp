@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <locale>
 
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -21,6 +22,9 @@ std::string reason(int error) {
 
 AtomicTextFile::AtomicTextFile(const std::string& path)
     : path_(path), temporary_(path + ".tmp" + std::to_string(::getpid())) {
+  // Numbers as every reader of the file expects them ("1234.5", not the "1.234,5" a program's
+  // std::locale::global(std::locale("de_DE.UTF-8")) would give every stream made after it).
+  out_.imbue(std::locale::classic());
   errno = 0;
   out_.open(temporary_, std::ios::out | std::ios::trunc);
   if (!out_)

@@ -12,6 +12,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/message_text.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace io {
@@ -40,7 +41,7 @@ std::errc scanNumber(const std::string& cell, double* value) {
   if (error == std::errc::result_out_of_range) {
     // A subnormal (a save's 4.9e-324) is a double all the same, as the YAML reader takes it;
     // only overflow and underflow to zero are out of range.
-    const double subnormal = std::strtod(cell.c_str(), nullptr);
+    const double subnormal = strtodC(cell.c_str(), nullptr);
     if (subnormal != 0.0 && std::abs(subnormal) < 1.0) {
       *value = subnormal;
       return std::errc();

@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/io/json_writer.h"
 
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/io/utf8.h"
 
 #include <cmath>
@@ -60,16 +61,16 @@ JsonWriter& JsonWriter::value(double v) {
   if (!std::isfinite(v)) {
     out_ << "null";
   } else {
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%.10g", v);
-    out_ << buf;
+    std::string text;
+    appendGeneral(text, v, 10);  // "%.10g" in every locale
+    out_ << text;
   }
   return *this;
 }
 
 JsonWriter& JsonWriter::value(long long v) {
   separator();
-  out_ << v;
+  out_ << std::to_string(v);  // no digit grouping whatever locale the stream has
   return *this;
 }
 

@@ -17,6 +17,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/message_text.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace io {
@@ -345,7 +346,7 @@ double YamlValue::asNumber() const {
   if (error == std::errc::result_out_of_range) {
     // Subnormal values (e.g. written by a save) are representable; only overflow is an error.
     char* strtod_end = nullptr;
-    const double subnormal = std::strtod(text.c_str(), &strtod_end);
+    const double subnormal = strtodC(text.c_str(), &strtod_end);
     if (*strtod_end == '\0' && subnormal != 0.0 && std::abs(subnormal) < 1.0) {
       return subnormal;
     }

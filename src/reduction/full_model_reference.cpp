@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 
 #include "tracked_vehicle_dynamics/dynamics/frf_state_space.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
@@ -12,6 +11,7 @@
 #include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
@@ -164,13 +164,10 @@ FullModelReference buildFullReference(const fem::System& system,
   while (k < modes.count() && modes.frequencies_hz(k) <= options.max_frequency_hz)
     ++k;
   if (k == 0) {
-    char text[200];
-    std::snprintf(
-        text, sizeof(text),
+    throw InputError(io::formatC(
         "full-model reference: no mode lies below %g Hz (the lowest is at %.4g Hz); raise "
         "the frequency limit (tvd: --max-mode-hz)",
-        options.max_frequency_hz, modes.count() > 0 ? modes.frequencies_hz(0) : 0.0);
-    throw InputError(text);
+        options.max_frequency_hz, modes.count() > 0 ? modes.frequencies_hz(0) : 0.0));
   }
   const Matrix phi = modes.shapes.leftCols(k);
   const Vector omega2 = modes.eigenvalues.head(k).cwiseMax(0.0);

@@ -1,25 +1,19 @@
 #include "tracked_vehicle_dynamics/reduction/mode_selection.h"
 
 #include <algorithm>
-#include <cstdio>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
 
 namespace {
 
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), pattern, value);
-  return buffer;
-}
-
 /// Three significant figures, trailing zeros kept: 24.98 Hz reads "25.0 Hz" like its neighbours'
 /// "6.95 Hz", not "25 Hz"; 120.4 Hz reads "120 Hz".
 std::string hz(double f) {
-  std::string text = format("%#.3g", f);
+  std::string text = io::formatC("%#.3g", f);
   if (text.back() == '.')
     text.pop_back();
   return text + " Hz";
@@ -46,12 +40,12 @@ ModeSelection byCorrelation(const Vector& f, const ModeSelectionOptions& o,
     if (c.matches.empty() || !inBand(f(c.mode), o))
       continue;
     const ModeMatch& best = c.matches.front();
-    std::string reason = "MAC " + format("%.2f", best.mac) + " with " + o.reference_name +
+    std::string reason = "MAC " + io::formatC("%.2f", best.mac) + " with " + o.reference_name +
                          " mode " + std::to_string(best.mode + 1) + " (" +
                          hz(reference->frequencies_hz(best.mode)) + ")";
     for (std::size_t i = 1; i < c.matches.size(); ++i)
-      reason += (i == 1 ? "; also " : ", ") + format("%.2f", c.matches[i].mac) + " with mode " +
-                std::to_string(c.matches[i].mode + 1);
+      reason += (i == 1 ? "; also " : ", ") + io::formatC("%.2f", c.matches[i].mac) +
+                " with mode " + std::to_string(c.matches[i].mode + 1);
     selection.modes.push_back(SelectedMode{c.mode, f(c.mode), reason});
   }
   return selection;
@@ -88,8 +82,8 @@ ModeSelection selectModes(const Vector& frequencies_hz, const ModeSelectionOptio
     case ModeSelectionRule::FrequencyBand: {
       if (o.max_frequency_hz <= 0.0)
         throw InputError("selectModes: the FrequencyBand rule needs max_frequency_hz > 0");
-      const std::string band = "in the band [" + format("%g", o.min_frequency_hz) + ", " +
-                               format("%g", o.max_frequency_hz) + "] Hz";
+      const std::string band = "in the band [" + io::formatC("%g", o.min_frequency_hz) + ", " +
+                               io::formatC("%g", o.max_frequency_hz) + "] Hz";
       for (int i = 0; i < frequencies_hz.size(); ++i)
         if (inBand(frequencies_hz(i), o))
           selection.modes.push_back(

@@ -1,10 +1,10 @@
 #include "tracked_vehicle_dynamics/reduction/reduced_damping.h"
 
 #include <cmath>
-#include <cstdio>
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
@@ -18,9 +18,7 @@ void checkCoefficient(double value, const char* name) {
 }
 
 std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%g", value);
-  return buffer;
+  return io::formatC("%g", value);
 }
 
 }  // namespace

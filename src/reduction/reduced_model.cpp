@@ -1,6 +1,5 @@
 #include "tracked_vehicle_dynamics/reduction/reduced_model.h"
 
-#include <cstdio>
 #include <ctime>
 #include <functional>
 #include <map>
@@ -9,6 +8,7 @@
 #include <string>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace reduction {
@@ -20,10 +20,7 @@ std::string label(const fem::DofRef& d) {
 }
 
 std::string modeLabel(DofIndex mode, double frequency_hz) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "mode %ld (%.3g Hz)", static_cast<long>(mode + 1),
-                frequency_hz);
-  return buffer;
+  return io::formatC("mode %ld (%.3g Hz)", static_cast<long>(mode + 1), frequency_hz);
 }
 
 std::string utcNow() {

@@ -534,8 +534,8 @@ namespace {
 std::string number(double value, bool legacy) {
   if (!legacy)
     return io::roundTripText(value);
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.17g", value);
+  std::string text;
+  io::appendGeneral(text, value, 17);
   return text;
 }
 
@@ -563,12 +563,12 @@ bool parseReductionKey(const std::string& key, vehicle::Variant* variant,
   char variant_name[16] = {}, rule[8] = {};
   VehicleReductionOptions o;
   int end = 0;
-  const int fields = std::sscanf(
-      key.c_str(),
-      "variant %15[a-z]; rule %7[a-z]; global_modes %d; band_hz %lf; mac_threshold %lf; "
-      "mogesec_masters %d; modes %d%n",
-      variant_name, rule, &o.global_modes, &o.band_hz, &o.mac_threshold, &o.mogesec_masters,
-      &o.mode_count, &end);
+  const int fields =
+      io::scanC(key.c_str(),
+                "variant %15[a-z]; rule %7[a-z]; global_modes %d; band_hz %lf; mac_threshold %lf; "
+                "mogesec_masters %d; modes %d%n",
+                variant_name, rule, &o.global_modes, &o.band_hz, &o.mac_threshold,
+                &o.mogesec_masters, &o.mode_count, &end);
   if (fields != 7 || static_cast<std::size_t>(end) != key.size())
     return false;
   const std::string name = variant_name;

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -12,7 +13,7 @@ namespace {
 /// Whether `token` reads as a number ("-5", "-1e3"): a value, not an option.
 bool isNumber(const std::string& token) {
   char* end = nullptr;
-  std::strtod(token.c_str(), &end);
+  io::strtodC(token.c_str(), &end);
   return !token.empty() && end == token.c_str() + token.size();
 }
 

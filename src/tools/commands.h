@@ -5,6 +5,7 @@
 
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/file_type.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/vehicle/vehicle_model.h"
 
 #include <unistd.h>
@@ -52,10 +53,8 @@ inline CLI::Validator numberIn(double lo, double hi, const std::string& unit = "
       [lo, hi, unit](std::string& text) -> std::string {
         double v = 0.0;
         if (!CLI::detail::lexical_cast(text, v) || !(v >= lo && v <= hi)) {
-          char bounds[80];
-          std::snprintf(bounds, sizeof(bounds), "[%.16g, %.16g]", lo, hi);
-          return "must be a number in " + std::string(bounds) + (unit.empty() ? "" : " " + unit) +
-                 ", got " + text;
+          return "must be a number in " + io::formatC("[%.16g, %.16g]", lo, hi) +
+                 (unit.empty() ? "" : " " + unit) + ", got " + text;
         }
         return std::string();
       },

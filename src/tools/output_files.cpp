@@ -203,7 +203,9 @@ OutputFileSet::~OutputFileSet() {
 std::string defaultCacheDir() {
   const char* xdg = std::getenv("XDG_CACHE_HOME");
   const char* home = std::getenv("HOME");
-  if (xdg && *xdg)
+  // The XDG base directory specification: a relative value is invalid and ignored (it would put
+  // the cache wherever the command happens to run).
+  if (xdg && *xdg == '/')
     return std::string(xdg) + "/tracked_vehicle_dynamics";
   if (home && *home)
     return std::string(home) + "/.cache/tracked_vehicle_dynamics";

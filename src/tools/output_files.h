@@ -78,8 +78,8 @@ std::vector<double> energyShares(const vehicle::ModeClass& mode);
 void writeTable(const std::string& path, const std::vector<std::string>& names, const Matrix& data,
                 int precision, const Metadata& metadata = {});
 
-/// Where reduced models are cached: $XDG_CACHE_HOME/tracked_vehicle_dynamics, else
-/// ~/.cache/tracked_vehicle_dynamics, else /tmp/tracked_vehicle_dynamics.
+/// Where reduced models are cached: $XDG_CACHE_HOME/tracked_vehicle_dynamics when it is an
+/// absolute path, else ~/.cache/tracked_vehicle_dynamics, else /tmp/tracked_vehicle_dynamics.
 std::string defaultCacheDir();
 
 /// Creates DIR (and parents); throws InputError naming it when that fails.

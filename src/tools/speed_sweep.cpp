@@ -7,6 +7,7 @@
 
 #include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -20,7 +21,7 @@ namespace {
 
 double number(const std::string& text, const std::string& field) {
   char* end = nullptr;
-  const double v = std::strtod(field.c_str(), &end);
+  const double v = io::strtodC(field.c_str(), &end);
   if (field.empty() || end != field.c_str() + field.size() || !std::isfinite(v))
     reject(text, "'" + field + "' is not a number");
   return v;

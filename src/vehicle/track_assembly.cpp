@@ -5,6 +5,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/sparse_cholesky.h"
 #include "tracked_vehicle_dynamics/fem/system.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace vehicle {
@@ -298,9 +299,8 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
     }
   }
   // Ten digits: the two differ in the seventh when the calibration stalls on round-off.
-  char reached[96];
-  std::snprintf(reached, sizeof(reached), "%.10g (the assembly gives %.10g", worst_target,
-                worst_measured);
+  const std::string reached =
+      io::formatC("%.10g (the assembly gives %.10g", worst_target, worst_measured);
   throw InputError("track_assembly." + worst_key +
                    ": the pad springs' calibration does not reach " + reached + ", off by " +
                    brief(worst_error) + " relative after " +

@@ -14,6 +14,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/fnv1a.h"
 #include "tracked_vehicle_dynamics/io/message_text.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/io/yaml_file_kind.h"
 #include "tracked_vehicle_dynamics/io/yaml_reader.h"
 
@@ -167,11 +168,12 @@ const char* roadInputStationName(RoadInputStation s) {
   return s == RoadInputStation::PadCentre ? "pad_centre" : "sole";
 }
 
-/// Full precision, for the canonical text.
+/// Full precision, for the canonical text: "%.17g" in every locale (the hash must not change
+/// with the process's locale).
 std::string format(double v) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
-  return buffer;
+  std::string text;
+  io::appendGeneral(text, v, 17);
+  return text;
 }
 
 // ------------------------------------------------------------------------------------------

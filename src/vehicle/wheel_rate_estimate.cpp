@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <utility>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 #include "tracked_vehicle_dynamics/vehicle/chain_path.h"
 
 namespace tracked_vehicle_dynamics {
@@ -13,9 +13,7 @@ namespace vehicle {
 namespace {
 
 std::string fixed(double value, int digits) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof(buffer), "%.*f", digits, value);
-  return buffer;
+  return io::formatC("%.*f", digits, value);
 }
 
 // "the hull (30300 kg) on its 14 road wheels' torsion bars and pads alone (wheel rate

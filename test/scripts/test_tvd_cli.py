@@ -155,19 +155,24 @@ class TvdCliTest(unittest.TestCase):
     def test_default_cache_directory_follows_xdg(self):
         """Without --cache-dir the reduced model is cached under $XDG_CACHE_HOME/tracked_vehicle_dynamics,
         else ~/.cache/tracked_vehicle_dynamics (README), one <variant>_<hash>.mat; the second run
-        reads it instead of reducing again."""
+        reads it instead of reducing again. A relative XDG_CACHE_HOME is ignored, as the XDG
+        specification says: the cache does not follow the working directory."""
         args = ("frf", "--vehicle", VEHICLE, "--variant", "untracked", "--max-hz", "5", "--json")
+        work = self.path("work")
+        os.makedirs(work)
         for name, env in (("xdg", {"XDG_CACHE_HOME": self.path("xdg_cache")}),
-                          ("home", {"HOME": self.path("home")})):
+                          ("home", {"HOME": self.path("home")}),
+                          ("relative xdg", {"XDG_CACHE_HOME": "relcache",
+                                            "HOME": self.path("home2")})):
             environment = {k: v for k, v in os.environ.items() if k != "XDG_CACHE_HOME"}
             environment.update(env)
             expected = (os.path.join(env["XDG_CACHE_HOME"], "tracked_vehicle_dynamics")
-                        if "XDG_CACHE_HOME" in env
+                        if os.path.isabs(env.get("XDG_CACHE_HOME", ""))
                         else os.path.join(env["HOME"], ".cache", "tracked_vehicle_dynamics"))
             runs = []
             for _ in range(2):
                 result = subprocess.run([TVD, *args], capture_output=True, text=True, timeout=240,
-                                        env=environment)
+                                        env=environment, cwd=work)
                 self.assertEqual(result.returncode, 0, result.stderr)
                 runs.append(json.loads(result.stdout))
             files = os.listdir(expected)
@@ -177,6 +182,7 @@ class TvdCliTest(unittest.TestCase):
             for r in runs:
                 self.assertEqual(r["reduction"]["file"], os.path.join(expected, files[0]), name)
             self.assertEqual(runs[0]["outputs"], runs[1]["outputs"], name)
+        self.assertEqual(os.listdir(work), [])
 
     def test_modes_json_and_statics(self):
         count = 12
