@@ -213,6 +213,76 @@ TEST(Simulator, RigidBodyFreeFallIsExact) {
     }
 }
 
+// Heavy masses on soft springs over light pads held by ground ties of 1e15 N/m (the vehicle's
+// pads on a very stiff road): lambda_max ~ 5e15 rad^2/s^2 while the masses' modes lie at 10-50.
+// The dense solver alone gave those to an absolute few n eps lambda_max, below 1e-12 lambda_max,
+// and took them for rigid-body modes (0 Hz): the modal simulator let the masses drift off and the
+// modal FRF refused "mode 0 is a rigid-body mode" (review 157). Closed form in the limit of rigid
+// ties (the ties' compliance shifts them by k_s / k_g = 1e-11): a fixed-fixed chain of masses m,
+// neighbours and both ends joined by k_c, each mass on k_s,
+//   lambda_j = (k_s + 4 k_c sin^2(j pi / (2 (N + 1)))) / m.
+TEST(Simulator, StiffGroundTiesKeepTheLowModes) {
+  const int count = 10;
+  const double m = 1000.0, m_pad = 0.2, k_s = 1e4, k_c = 2e4, k_g = 1e15;
+  const int n = 2 * count;  // mass i at 2 i, its pad at 2 i + 1
+  SecondOrderSystem s;
+  s.mass = Matrix::Zero(n, n);
+  s.stiffness = Matrix::Zero(n, n);
+  s.input_stiffness = Matrix::Zero(n, count);
+  const auto spring = [&](int a, int b, double k) {
+    s.stiffness(a, a) += k;
+    if (b >= 0) {
+      s.stiffness(b, b) += k;
+      s.stiffness(a, b) -= k;
+      s.stiffness(b, a) -= k;
+    }
+  };
+  for (int i = 0; i < count; ++i) {
+    s.mass(2 * i, 2 * i) = m;
+    s.mass(2 * i + 1, 2 * i + 1) = m_pad;
+    spring(2 * i, 2 * i + 1, k_s);
+    spring(2 * i + 1, -1, k_g);
+    s.input_stiffness(2 * i + 1, i) = k_g;
+    spring(2 * i, i + 1 < count ? 2 * i + 2 : -1, k_c);
+  }
+  spring(0, -1, k_c);
+  s.damping = Matrix::Zero(n, n);
+  s.input_damping = Matrix::Zero(n, count);
+  s.output = Matrix::Identity(n, n);
+  s.input_stations = Vector::Zero(count);
+  const ModalSystem modal(s);
+  const Vector& omega = modal.naturalFrequencies();
+  for (int j = 1; j <= count; ++j) {
+    const double sine = std::sin(j * M_PI / (2.0 * (count + 1)));
+    const double expected = (k_s + 4.0 * k_c * sine * sine) / m;
+    EXPECT_NEAR(omega(j - 1) * omega(j - 1) / expected, 1.0, 1e-9) << "mode " << j;
+  }
+  for (int r = 1; r < n; ++r)
+    EXPECT_LE(omega(r - 1), omega(r)) << "mode " << r;
+  // Still a modal basis: Phi^T M Phi = I and Phi^T K Phi = diag(omega^2), the refined low block
+  // against the solver's high one included (K's terms to its own size, ~1e16).
+  const Matrix& phi = modal.shapes();
+  const Matrix identity = phi.transpose() * s.mass * phi;
+  EXPECT_LT((identity - Matrix::Identity(n, n)).cwiseAbs().maxCoeff(), 1e-9);
+  const Matrix low = phi.leftCols(count).transpose() * s.stiffness * phi.leftCols(count);
+  const Vector low_squared = omega.head(count).cwiseAbs2();
+  EXPECT_LT((low - Matrix(low_squared.asDiagonal())).cwiseAbs().maxCoeff() / low_squared.maxCoeff(),
+            1e-6);
+  // At rest on level ground and pushed by gravity the masses sink k-statically and stay: the
+  // modal engine equals the augmented exponential (which never needed the modes).
+  const Vector f_g = -kStandardGravity * s.mass * Vector::Ones(n);
+  Matrix runs[2];
+  int which = 0;
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled}) {
+    Simulator sim(s, options(method, InputHold::FirstOrder, f_g));
+    runs[which++] = sim.simulate(Matrix::Zero(2001, 2 * count));
+  }
+  const double sag = runs[0].col(0).cwiseAbs().maxCoeff();
+  ASSERT_GT(sag, 0.1 * kStandardGravity * m / (k_s + 2.0 * k_c));
+  EXPECT_LT((runs[1].leftCols(n) - runs[0].leftCols(n)).cwiseAbs().maxCoeff(), 1e-6 * sag);
+}
+
 // K q0 = K_u u0 + f_g exactly, and the simulation started there stays there (both engines).
 TEST(Simulator, StaticEquilibriumIsAFixedPoint) {
   const SecondOrderSystem s = test::randomVehicle(9, 3, 3, 3);
