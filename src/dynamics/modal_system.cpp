@@ -34,7 +34,6 @@ constexpr double kRefineBelow = 1e-6;
 // the factorisation as a pivot of rounding size), not a structure held to ground; the modes
 // are then left as the dense solver gives them. Nastran's MAXRATIO warns at 1e7.
 constexpr double kMaxPivotRatio = 1e10;
-constexpr int kRefineIterations = 2;
 
 void requireSymmetric(const Matrix& x, const std::string& what) {
   const double norm = x.norm();
@@ -69,31 +68,32 @@ bool refineLowModes(const Matrix& stiffness, const Matrix& mass, double lambda_m
   for (DofIndex i = 0; i < n; ++i)
     if (!(pivots(i) * kMaxPivotRatio >= stiffness(i, i)))
       return false;
-  Matrix x = shapes->leftCols(p);
-  Vector refined;
-  for (int iteration = 0; iteration < kRefineIterations; ++iteration) {
-    const Matrix y = mass * x;
-    const Matrix x1 = k_factor.solve(y);
-    Matrix k_p = x1.transpose() * y;
-    Matrix m_p = x1.transpose() * mass * x1;
-    k_p = 0.5 * (k_p + k_p.transpose()).eval();
-    m_p = 0.5 * (m_p + m_p.transpose()).eval();
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(
-        k_p, m_p, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
-    if (ritz.info() != Eigen::Success)
-      return false;
-    refined = ritz.eigenvalues();
-    x = x1 * ritz.eigenvectors();  // M-normalised: Z^T M_p Z = I
-  }
+  // One step: the solver's low subspace is accurate (its error is eps lambda_max over the gap
+  // to the high modes, itself of the order of lambda_max); only the modes within it are not,
+  // and the Rayleigh-Ritz step on K^-1 M X sorts them out.
+  const Matrix y = mass * shapes->leftCols(p);
+  const Matrix x1 = k_factor.solve(y);
+  const Matrix m_x1 = mass * x1;
+  Matrix k_p = x1.transpose() * y;
+  Matrix m_p = x1.transpose() * m_x1;
+  k_p = 0.5 * (k_p + k_p.transpose()).eval();
+  m_p = 0.5 * (m_p + m_p.transpose()).eval();
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(
+      k_p, m_p, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
+  if (ritz.info() != Eigen::Success)
+    return false;
+  const Matrix x = x1 * ritz.eigenvectors();  // M-normalised: Z^T M_p Z = I
   // The solver's high modes were M-orthogonal to its low ones; to the refined ones only to
   // ~1e-11, which a state projected on the modes and back (eta = Phi^T M q, q = Phi eta) would
-  // lose. Make them M-orthogonal again: the change is of that order, the high modes' Rayleigh
-  // quotients move by its square.
+  // lose. Make them M-orthogonal again, h -= X c with c = X^T M h, and unit again,
+  // h^T M h = 1 - |c|^2: the change is of that order, the high modes' Rayleigh quotients move by
+  // its square.
   Matrix high = shapes->rightCols(n - p);
-  high -= x * (x.transpose() * (mass * high));
+  const Matrix c = (m_x1 * ritz.eigenvectors()).transpose() * high;
+  high -= x * c;
   for (DofIndex j = 0; j < n - p; ++j)
-    high.col(j) /= std::sqrt(high.col(j).dot(mass * high.col(j)));
-  lambda->head(p) = refined;
+    high.col(j) /= std::sqrt(1.0 - c.col(j).squaredNorm());
+  lambda->head(p) = ritz.eigenvalues();
   shapes->leftCols(p) = x;
   shapes->rightCols(n - p) = high;
   return true;
