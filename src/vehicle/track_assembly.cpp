@@ -15,6 +15,11 @@ namespace {
 /// Calibration stops when every stiffness matches its target to this relative error.
 constexpr double kCalibrationTolerance = 1e-9;
 constexpr int kMaxCalibrationIterations = 100;
+/// A pad spring the calibration has scaled this far (up or down) from the rigid-link start is
+/// chasing a target the assembly cannot give. Well before the stiffness matrix loses definiteness
+/// to round-off (springs ~1e16 times the link's, in the tests), and well beyond a slow but
+/// converging run (about 1.14^100 = 5e5 when it stalls 14 % short).
+constexpr double kRunawayFactor = 1e8;
 
 // Local node numbers inside an assembly's id span.
 constexpr NodeId kLink = 0, kFrontPin = 10, kRearPin = 20, kSole = 30, kCore = 40, kTop = 50;
@@ -251,12 +256,71 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
   double worst_target = 0.0, worst_measured = 0.0, worst_error = -1.0;
   s.shear_x = t.shear_stiffness_x / 6.0;
   s.shear_y = t.shear_stiffness_y / 6.0;
+  // Each spring group against the stiffness it mainly sets: the end columns carry k_ry, the
+  // middle ones the rest of k_z. `measured` is the last measurement, for the message.
+  struct Group {
+    const char* key;
+    const char* unit;
+    double target, start, measured;
+  };
+  Group groups[4] = {{"shear_stiffness_x", "N/m", t.shear_stiffness_x, s.shear_x, 0.0},
+                     {"shear_stiffness_y", "N/m", t.shear_stiffness_y, s.shear_y, 0.0},
+                     {"compression_stiffness", "N/m", t.compression_stiffness,
+                      (1.0 - end_share) * normal_sum / 2.0, 0.0},
+                     {"torsional_stiffness_y", "N*m/rad", t.torsional_stiffness_y,
+                      end_share * normal_sum / 4.0, 0.0}};
+  // A target the steel link in series with the pads (or the pads' other springs in parallel)
+  // cannot give sends its springs towards infinity (or zero) until the stiffness matrix is no
+  // longer positive definite: name that target, not the matrix.
+  const auto unreachable = [&](int group, double factor) {
+    const Group& g = groups[group];
+    const bool up = factor > 1.0;
+    return InputError(
+        std::string("track_assembly.") + g.key + ": " + brief(g.target) + " " + g.unit +
+        (up ? " may be stiffer than the steel link in series with the pad springs allows"
+            : " may be softer than the pad springs in parallel with these allow") +
+        ": calibrating the pad springs to it scaled them " + brief(up ? factor : 1.0 / factor) +
+        " times " + (up ? "up" : "down") + " and the assembly still gives " + brief(g.measured) +
+        " " + g.unit + " (they would have to be " + (up ? "infinite" : "negative") + "); " +
+        (up ? "lower " : "raise ") + g.key +
+        (group == 0 ? " (an x load on the link also tilts the pads, so a low torsional_stiffness_y "
+                      "caps it)"
+                    : "") +
+        ", or check the other track_assembly stiffnesses, the link sections and "
+        "steel_young_modulus");
+  };
   for (int it = 1; it <= kMaxCalibrationIterations; ++it) {
     s.normal_end = end_share * normal_sum / 4.0;
     s.normal_middle = (1.0 - end_share) * normal_sum / 2.0;
     s.iterations = it;
+    // The group scaled farthest from its start (either way), and by how much.
+    const double current[4] = {s.shear_x, s.shear_y, s.normal_middle, s.normal_end};
+    int runaway = 0;
+    double runaway_factor = 1.0;
+    for (int i = 0; i < 4; ++i) {
+      const double factor = current[i] / groups[i].start;
+      if (std::abs(std::log(factor)) > std::abs(std::log(runaway_factor))) {
+        runaway = i;
+        runaway_factor = factor;
+      }
+    }
+    if (std::abs(std::log(runaway_factor)) > std::log(kRunawayFactor))
+      throw unreachable(runaway, runaway_factor);
     TrackAssemblyNodes nodes;
-    const TrackAssemblyStiffness k = measureTrackAssembly(standaloneModel(t, s, nodes), nodes);
+    TrackAssemblyStiffness k;
+    try {
+      k = measureTrackAssembly(standaloneModel(t, s, nodes), nodes);
+    } catch (const SolverError&) {
+      // The start estimate failing is the description's own doing (a stiffness or section many
+      // orders of magnitude off): the measurement's message says so.
+      if (it == 1)
+        throw;
+      throw unreachable(runaway, runaway_factor);
+    }
+    groups[0].measured = k.kx;
+    groups[1].measured = k.ky;
+    groups[2].measured = k.kz;
+    groups[3].measured = k.kry;
     const double rx = t.shear_stiffness_x / k.kx, ry = t.shear_stiffness_y / k.ky;
     const double rz = t.compression_stiffness / k.kz, rr = t.torsional_stiffness_y / k.kry;
     if (std::max({std::abs(rx - 1), std::abs(ry - 1), std::abs(rz - 1), std::abs(rr - 1)}) <

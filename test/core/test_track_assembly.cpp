@@ -119,6 +119,43 @@ TEST(TrackAssemblyCalibration, AStiffnessInAnotherUnitIsNamed) {
   }
 }
 
+// A target stiffer than the steel link in series with the pads lets them give (the assembly
+// tops out near 3.5e8 N/m in k_z): the calibration scales the springs towards infinity. It
+// used to go on until the stiffness matrix was no longer positive definite and reported a
+// SolverError naming no key; the refusal names the key, its value and what the assembly gives.
+TEST(TrackAssemblyCalibration, ATargetStifferThanTheLinkAllowsIsNamed) {
+  tvd::vehicle::TrackAssemblyDescription d;
+  for (double kz : {7e8, 1.895e9}) {
+    d.compression_stiffness = kz;
+    tvd::expectInputError([&] { tvd::vehicle::calibrateTrackAssembly(d); },
+                          {"track_assembly.compression_stiffness: " + tvd::brief(kz) +
+                               " N/m may be stiffer than the steel link in series with the pad "
+                               "springs allows",
+                           "the assembly still gives 3.5", "would have to be infinite",
+                           "lower compression_stiffness"});
+  }
+  tvd::vehicle::TrackAssemblyDescription shear;
+  shear.shear_stiffness_x = 1.4e8;
+  tvd::expectInputError([&] { tvd::vehicle::calibrateTrackAssembly(shear); },
+                        {"track_assembly.shear_stiffness_x: 1.4e+08 N/m may be stiffer"});
+  // A soft k_ry caps k_x (an x load on the link tilts the pads): k_x is what cannot be reached,
+  // and the message points at torsional_stiffness_y.
+  tvd::vehicle::TrackAssemblyDescription soft;
+  soft.torsional_stiffness_y = 630.0;
+  tvd::expectInputError([&] { tvd::vehicle::calibrateTrackAssembly(soft); },
+                        {"track_assembly.shear_stiffness_x: 1.4e+06 N/m may be stiffer",
+                         "a low torsional_stiffness_y caps it"});
+}
+
+// A link many orders of magnitude too soft fails at the start estimate: that is still the
+// stiffness matrix's message, not a calibration target's.
+TEST(TrackAssemblyCalibration, ALinkFarTooSoftIsStillReportedAsTheMatrix) {
+  tvd::vehicle::TrackAssemblyDescription d;
+  d.steel_young_modulus = 1e-300;
+  tvd::expectSolverError([&] { tvd::vehicle::calibrateTrackAssembly(d); },
+                         {"track assembly: the stiffness matrix is not positive definite"});
+}
+
 // The refusal says what the columns can give and where they would give the target (k_ry ~ f k_z
 // c^2): 2 % below the first, and at 2 % beyond the second, the calibration succeeds.
 TEST(TrackAssemblyCalibration, RefusalSaysWhatWouldFit) {

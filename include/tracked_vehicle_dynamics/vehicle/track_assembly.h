@@ -81,9 +81,11 @@ TrackAssemblyNodes addTrackAssembly(fem::Model& model, const TrackAssemblyDescri
 /// Finds pad spring constants that give the description's k_x, k_y, k_z and k_ry on the
 /// assembly model (fixed-point iteration on the measured stiffnesses, converged to 1e-9).
 /// Throws InputError "track_assembly.pad_column_offset" when the columns are too close together
-/// for k_ry, and InputError naming the stiffness key farthest off when the iteration does not
-/// converge in 100 steps; SolverError when the assembly's stiffness matrix is not positive
-/// definite.
+/// for k_ry, InputError naming the stiffness key whose springs the iteration scales 1e8 times
+/// away from the start (a target the steel link in series cannot give), and InputError naming
+/// the stiffness key farthest off when the iteration does not converge in 100 steps;
+/// SolverError when the assembly's stiffness matrix is not positive definite at the start
+/// estimate (a stiffness or section many orders of magnitude too small).
 PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& description);
 
 /// One assembly alone, soles held in translation (their rotations follow the pad core), as in the
