@@ -68,6 +68,27 @@ dynamics::SecondOrderSystem simulatedSystem(const reduction::ReducedModel& model
 
 }  // namespace
 
+std::string resolveComfortPoint(const std::string& requested,
+                                const std::vector<std::string>& point_names) {
+  const bool named =
+      std::find(point_names.begin(), point_names.end(), requested) != point_names.end();
+  if (requested == "hull" || named)
+    return requested;
+  // Unset, the crew seat where the vehicle names one (the bundled vehicle's), else the hull: a
+  // vehicle of one's own runs with the defaults.
+  if (requested.empty())
+    return std::find(point_names.begin(), point_names.end(), kCrewSeatPoint) != point_names.end()
+               ? kCrewSeatPoint
+               : "hull";
+  std::string known = "hull";
+  for (const std::string& name : point_names)
+    known += ", " + name;
+  throw InputError("online vehicle: comfort_point: unknown point '" + requested +
+                   "' (the vehicle has: " + known +
+                   "); set comfort_point to one of these, or leave it empty for " + kCrewSeatPoint +
+                   " where the vehicle names it, else the hull");
+}
+
 dynamics::SimulatorOptions simulatorOptions(const reduction::ReducedModel& model,
                                             const OnlineVehicleOptions& options) {
   if (!std::isfinite(options.rate) || options.rate <= 0.0) {
@@ -135,7 +156,6 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
       sampler_(model.system.input_stations, model.system.input_lateral,
                inputsWithRate(model.system, simulator_.quasiStaticModeCount() > 0)),
       comfort_(options.rate, options.comfort_running_rms_time),
-      comfort_point_(options.comfort_point),
       equilibrium_solver_(model.system, model.gravity_load) {
   if (!std::isfinite(options.lateral_offset)) {
     throw InputError("online vehicle: lateral_offset is not finite");
@@ -169,8 +189,10 @@ OnlineVehicle::OnlineVehicle(const reduction::ReducedModel& model, VehicleGeomet
       point_rows_.push_back(outputRow(point.name + " " + t));
     point_rigid_.push_back(movesWithHull(model.system.output, point.position));
   }
-  if (comfort_point_.empty())
-    comfort_point_ = "hull";
+  std::vector<std::string> point_names;
+  for (const auto& point : geometry_.points)
+    point_names.push_back(point.name);
+  comfort_point_ = resolveComfortPoint(options.comfort_point, point_names);
   comfort_row_ = acc_offset_ + outputRow(comfort_point_ + " uz");
   comfort_x_row_ = acc_offset_ + outputRow(comfort_point_ + " ux");
   comfort_y_row_ = acc_offset_ + outputRow(comfort_point_ + " uy");

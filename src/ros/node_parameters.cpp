@@ -313,7 +313,9 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   v.lateral_offset = in.number("lateral_offset", v.lateral_offset);
   p.comfort_point_given = in.has("comfort_point");
   v.comfort_point = in.string("comfort_point", v.comfort_point);
-  if (v.comfort_point.empty())
+  // Unset it stays empty, OnlineVehicle's "crew_seat if the vehicle names it, else the hull";
+  // set, it names a point.
+  if (p.comfort_point_given && v.comfort_point.empty())
     throw in.error("comfort_point", "must not be empty");
   v.comfort_running_rms_time =
       in.positive("comfort_running_rms_time", v.comfort_running_rms_time, "s");

@@ -50,27 +50,27 @@ void VehicleDynamicsNode::loadVehicle() {
     for (const std::string& w : vehicle::descriptionWarnings(description))
       ROS_WARN("%s: %s: %s", nodeName(), params_.vehicle.c_str(), w.c_str());
     // The comfort point is a parameter of its own: name it, not the vehicle, when it is unknown.
+    // Resolved here, before the reduction, by OnlineVehicle's rule (resolveComfortPoint()):
+    // unset (empty), the crew seat where the description names one, else the hull's CoG.
     std::string& point = params_.vehicle_options.comfort_point;
-    std::string known = "hull";
-    bool found = point == "hull";
-    for (const vehicle::NamedPoint& p : description.named_points) {
-      known += ", " + p.name;
-      found = found || p.name == point;
-    }
-    // Unset, the comfort point is the crew seat where the description names one (the bundled
-    // vehicle's), else the hull's CoG: every vehicle starts without a comfort_point of its own.
-    if (!found && !params_.comfort_point_given) {
-      ROS_INFO(
-          "%s: ~comfort_point unset and %s names no '%s' point: ride comfort "
-          "at the hull's CoG (set ~comfort_point to one of its points for a seat)",
-          nodeName(), params_.vehicle.c_str(), point.c_str());
-      point = "hull";
-      found = true;
-    }
-    if (!found)
+    std::vector<std::string> point_names;
+    for (const vehicle::NamedPoint& p : description.named_points)
+      point_names.push_back(p.name);
+    try {
+      point = resolveComfortPoint(point, point_names);
+    } catch (const InputError&) {
+      std::string known = "hull";
+      for (const std::string& name : point_names)
+        known += ", " + name;
       throw ParameterError(private_nh_.resolveName("comfort_point") + ": unknown point '" + point +
                            "' (" + known + " in " + params_.vehicle +
                            "); set ~comfort_point (launch argument comfort_point) to one of these");
+    }
+    if (!params_.comfort_point_given && point == "hull")
+      ROS_INFO(
+          "%s: ~comfort_point unset and %s names no '%s' point: ride comfort "
+          "at the hull's CoG (set ~comfort_point to one of its points for a seat)",
+          nodeName(), params_.vehicle.c_str(), kCrewSeatPoint);
     // The reduction's large matrices reuse freed pages (heap_reuse.h) until the model is loaded,
     // before the stepping starts; the free memory then goes back to the system (declared before
     // the model: it outlives it).

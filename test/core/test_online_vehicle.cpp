@@ -429,6 +429,37 @@ TEST(OnlineVehicle, UnknownOutputsAreNamed) {
   EXPECT_THROW(OnlineVehicle(test::toyModel(), test::toyGeometry(), o), InputError);
 }
 
+// The default comfort point is the crew seat where the vehicle has one, else the hull: a vehicle
+// of one's own without a crew seat runs with default options (it used to throw, the default
+// naming "crew_seat"). A point named explicitly that the vehicle lacks is refused, listing those
+// it has.
+TEST(OnlineVehicle, DefaultComfortPointIsTheCrewSeatWhenPresentElseTheHull) {
+  EXPECT_EQ(OnlineVehicle(test::toyModel(), test::toyGeometry()).comfortPoint(), "crew_seat");
+  // The toy vehicle with its point renamed, in the geometry and in the model's outputs.
+  reduction::ReducedModel model = test::toyModel();
+  for (std::string& name : model.system.output_names)
+    if (name.rfind("crew_seat ", 0) == 0)
+      name.replace(0, 9, "driver_seat");
+  VehicleGeometry geometry = test::toyGeometry();
+  geometry.points[0].name = "driver_seat";
+  OnlineVehicle seatless(model, geometry);
+  EXPECT_EQ(seatless.comfortPoint(), "hull");
+  OnlineVehicleOptions o;
+  o.comfort_point = "crew_seat";
+  expectInputError(
+      [&] { OnlineVehicle(model, geometry, o); },
+      {"comfort_point: unknown point 'crew_seat' (the vehicle has: hull, driver_seat)"});
+  o.comfort_point = "driver_seat";
+  EXPECT_EQ(OnlineVehicle(model, geometry, o).comfortPoint(), "driver_seat");
+  // The rule itself, as the node applies it before its reduction.
+  EXPECT_EQ(resolveComfortPoint("", {"sensor_mount", "crew_seat"}), "crew_seat");
+  EXPECT_EQ(resolveComfortPoint("", {"sensor_mount"}), "hull");
+  EXPECT_EQ(resolveComfortPoint("", {}), "hull");
+  EXPECT_EQ(resolveComfortPoint("hull", {"crew_seat"}), "hull");
+  expectInputError([] { resolveComfortPoint("seat", {}); },
+                   {"unknown point 'seat' (the vehicle has: hull)"});
+}
+
 // comfort_point "hull" (the node's default for a vehicle without a crew seat): the meter reads
 // the hull's vertical acceleration, sample for sample, not a named point's.
 TEST(OnlineVehicle, HullComfortPointWeighsTheHullsVerticalAcceleration) {

@@ -65,8 +65,9 @@ struct OnlineVehicleOptions {
   /// Position of the vehicle centre line on the terrain's lateral axis [m] (y left).
   double lateral_offset = 0.0;
   /// Output whose accelerations feed the comfort meter: a named point, or "hull" for the hull
-  /// centre of gravity.
-  std::string comfort_point = "crew_seat";
+  /// centre of gravity. Empty (the default): kCrewSeatPoint when the vehicle names it, else the
+  /// hull (resolveComfortPoint()), so a vehicle without a crew seat runs with the defaults.
+  std::string comfort_point;
   /// Running r.m.s. integration time of the comfort meter [s].
   double comfort_running_rms_time = 1.0;
   /// Terrain kept behind the rearmost contact when patches are dropped [m].
@@ -86,6 +87,17 @@ struct OnlineVehicleOptions {
   double max_acceleration = 0.0;
   double max_deceleration = 0.0;
 };
+
+/// The named point an unset comfort_point watches when the vehicle has it (the bundled
+/// vehicle's crew seat).
+constexpr const char* kCrewSeatPoint = "crew_seat";
+
+/// The point the comfort meter watches for OnlineVehicleOptions::comfort_point `requested` on a
+/// vehicle with these named points: empty, kCrewSeatPoint when it is one of them, else "hull";
+/// "hull" or one of them, itself. Throws InputError for any other name, listing "hull" and the
+/// points.
+std::string resolveComfortPoint(const std::string& requested,
+                                const std::vector<std::string>& point_names);
 
 /// The Simulator configuration of an OnlineVehicle: step 1/rate, method, hold, the cut-off of
 /// quasi-static modes, displacement/velocity/acceleration outputs, gravity. Shared with the
@@ -124,7 +136,8 @@ struct StepResult {
 class OnlineVehicle {
  public:
   /// Throws InputError when the model lacks an output the geometry names ("hull ux".."hull rz",
-  /// "<wheel> uz", "<point> ux|uy|uz"), the comfort point is unknown, or the options are invalid
+  /// "<wheel> uz", "<point> ux|uy|uz"), the comfort point is not "hull", empty or one of the
+  /// geometry's points (resolveComfortPoint()), or the options are invalid
   /// (rate <= 0, ...); SolverError from the simulator or the static equilibrium.
   /// contact_groups: per road input of the model, the pad (track assembly) its contact belongs
   /// to, numbered from 0 (-1: none, watched as a pad of its own), for the ground-contact check's
@@ -210,7 +223,8 @@ class OnlineVehicle {
   const dynamics::ComfortMeter& comfort() const { return comfort_.vertical(); }
   /// Every axis of the comfort point, and the totals (dynamics/seat_comfort.h).
   const dynamics::SeatComfortMeter& seatComfort() const { return comfort_; }
-  /// The point the comfort meter watches (options.comfort_point).
+  /// The point the comfort meter watches: options.comfort_point, resolved (resolveComfortPoint():
+  /// never empty).
   const std::string& comfortPoint() const { return comfort_point_; }
   /// Largest |vertical acceleration| at the comfort point since reset [m/s^2].
   double peakAcceleration() const { return peak_acceleration_; }

@@ -45,8 +45,9 @@ struct NodeParameters {
   std::string reduced_model;
   double publish_rate = 0.0;   ///< ~publish_rate [Hz], default ~rate
   double comfort_rate = 10.0;  ///< ~comfort_rate [Hz]
-  /// ~comfort_point was set (vehicle_options.comfort_point holds it). Unset, the node watches the
-  /// description's `crew_seat` point when it names one, else the hull's CoG.
+  /// ~comfort_point was set (vehicle_options.comfort_point holds it). Unset, that stays empty and
+  /// the node watches the description's `crew_seat` point when it names one, else the hull's CoG
+  /// (online::resolveComfortPoint()).
   bool comfort_point_given = false;
   /// ~ground_contact_rate [Hz]: how often the contact forces are checked for a pull (the bonded
   /// model beyond its range, OnlineVehicle::checkGroundContact); 0: never.
