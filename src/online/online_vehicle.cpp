@@ -441,8 +441,34 @@ const std::vector<WheelState>& OnlineVehicle::wheels() const {
   return wheel_states_;
 }
 
+namespace {
+
+// An index the caller passed (e.g. from its own list of frames) for `count` of `what`: an
+// InputError naming it and the count, as the package's other errors do (not .at()'s
+// std::out_of_range, which names neither).
+std::size_t checkedIndex(std::size_t i, std::size_t count, const char* what, const char* call) {
+  if (i < count)
+    return i;
+  const std::string has = count == 0   ? std::string("none")
+                          : count == 1 ? "1 " + std::string(what) + " (index 0)"
+                                       : std::to_string(count) + " " + what + "s (0 .. " +
+                                             std::to_string(count - 1) + ")";
+  throw InputError(std::string("online vehicle: ") + call + ": " + what + " index " +
+                   std::to_string(i) + " is out of range: the vehicle has " + has);
+}
+
+}  // namespace
+
+std::size_t OnlineVehicle::checkedWheel(std::size_t i, const char* call) const {
+  return checkedIndex(i, geometry_.wheels.size(), "road wheel", call);
+}
+
+std::size_t OnlineVehicle::checkedPoint(std::size_t i, const char* call) const {
+  return checkedIndex(i, geometry_.points.size(), "named point", call);
+}
+
 Vector3 OnlineVehicle::wheelPosition(std::size_t i) const {
-  const Vector3& p = geometry_.wheels.at(i).position;
+  const Vector3& p = geometry_.wheels[checkedWheel(i, "wheelPosition")].position;
   const Vector6 hull = hullDisplacement();
   const double uz = simulator_.outputs()(disp_offset_ + wheel_rows_[i]);
   // Only the vertical displacement of a wheel centre is an output; along x and y it moves with
@@ -454,17 +480,17 @@ Vector3 OnlineVehicle::wheelPosition(std::size_t i) const {
 Vector3 OnlineVehicle::pointBlock(std::size_t i, Eigen::Index offset) const {
   const Vector& y = simulator_.outputs();
   const std::size_t first = 3 * i;
-  return Vector3(y(offset + point_rows_.at(first)), y(offset + point_rows_.at(first + 1)),
-                 y(offset + point_rows_.at(first + 2)));
+  return Vector3(y(offset + point_rows_[first]), y(offset + point_rows_[first + 1]),
+                 y(offset + point_rows_[first + 2]));
 }
 
 Vector3 OnlineVehicle::pointPosition(std::size_t i) const {
-  const Vector3& p = geometry_.points.at(i).position;
+  const Vector3& p = geometry_.points[checkedPoint(i, "pointPosition")].position;
   return relativePosition(geometry_.cog, hullDisplacement(), p, pointBlock(i, disp_offset_));
 }
 
 Vector3 OnlineVehicle::pointAcceleration(std::size_t i) const {
-  const Vector3& p = geometry_.points.at(i).position;
+  const Vector3& p = geometry_.points[checkedPoint(i, "pointAcceleration")].position;
   const Vector6 u = hullDisplacement(), du = hullVelocity(), ddu = hullAcceleration();
   // The model's (linear) point acceleration less its rigid part u_G'' + theta'' x r is the
   // elastic part, zero for a point on the rigid hull; the rigid part is then taken exactly.

@@ -460,6 +460,27 @@ TEST(OnlineVehicle, DefaultComfortPointIsTheCrewSeatWhenPresentElseTheHull) {
                    {"unknown point 'seat' (the vehicle has: hull)"});
 }
 
+// An index past the wheels or named points is an InputError naming it and the count (it was
+// .at()'s std::out_of_range, which names neither and which the node's handlers do not catch).
+TEST(OnlineVehicle, OutOfRangeWheelAndPointIndicesAreNamed) {
+  const OnlineVehicle vehicle(test::toyModel(), test::toyGeometry());  // 2 wheels, 1 point
+  expectInputError([&] { vehicle.wheelPosition(2); },
+                   {"wheelPosition: road wheel index 2 is out of range: the vehicle has 2 road "
+                    "wheels (0 .. 1)"});
+  expectInputError([&] { vehicle.pointPosition(1); },
+                   {"pointPosition: named point index 1 is out of range: the vehicle has 1 named "
+                    "point (index 0)"});
+  expectInputError([&] { vehicle.pointAcceleration(7); },
+                   {"pointAcceleration: named point index 7"});
+  VehicleGeometry pointless = test::toyGeometry();
+  pointless.points.clear();
+  expectInputError([&] { OnlineVehicle(test::toyModel(), pointless).pointPosition(0); },
+                   {"pointPosition: named point index 0 is out of range: the vehicle has none"});
+  expectInputError([&] { vehicle.pointIsRigid(1); }, {"pointIsRigid: named point index 1"});
+  EXPECT_NO_THROW(vehicle.wheelPosition(1));
+  EXPECT_NO_THROW(vehicle.pointAcceleration(0));
+}
+
 // comfort_point "hull" (the node's default for a vehicle without a crew seat): the meter reads
 // the hull's vertical acceleration, sample for sample, not a named point's.
 TEST(OnlineVehicle, HullComfortPointWeighsTheHullsVerticalAcceleration) {

@@ -205,7 +205,9 @@ class OnlineVehicle {
   /// step): valid until the next call, and not to be called from two threads at once although
   /// it is const.
   const std::vector<WheelState>& wheels() const;
-  /// Position [m] in base_link of wheel centre i (vertical motion relative to the hull).
+  /// Position [m] in base_link of wheel centre i (vertical motion relative to the hull). Throws
+  /// InputError, naming i and the wheel count, when i is not below geometry().wheels.size(); so
+  /// do the named points' calls below for geometry().points.size().
   Vector3 wheelPosition(std::size_t i) const;
   /// Position [m] in base_link of named point i.
   Vector3 pointPosition(std::size_t i) const;
@@ -217,7 +219,7 @@ class OnlineVehicle {
   /// True when named point i moves rigidly with the hull in the model (its output rows are
   /// u_G + theta x (p - p_G) of the hull rows, to rounding): its base_link position is then its
   /// static position, geometry().points[i].position, at every step.
-  bool pointIsRigid(std::size_t i) const { return point_rigid_.at(i); }
+  bool pointIsRigid(std::size_t i) const { return point_rigid_[checkedPoint(i, "pointIsRigid")]; }
 
   /// The vertical meter (Wk, absorbed power) of the comfort point.
   const dynamics::ComfortMeter& comfort() const { return comfort_.vertical(); }
@@ -265,6 +267,9 @@ class OnlineVehicle {
 
  private:
   Vector6 block(const std::vector<Eigen::Index>& rows, Eigen::Index offset) const;
+  /// i, when below the number of road wheels (named points); else InputError naming `call`.
+  std::size_t checkedWheel(std::size_t i, const char* call) const;
+  std::size_t checkedPoint(std::size_t i, const char* call) const;
   /// Named point i's three outputs of the block starting at `offset`.
   Vector3 pointBlock(std::size_t i, Eigen::Index offset) const;
   Eigen::Index outputRow(const std::string& name) const;
