@@ -1,6 +1,7 @@
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -101,36 +102,54 @@ Simulator::~Simulator() = default;
 Simulator::Simulator(Simulator&&) noexcept = default;
 Simulator& Simulator::operator=(Simulator&&) noexcept = default;
 
+namespace {
+
+// Out of line, so the check in engine() stays a compare and a branch on the step path.
+[[noreturn, gnu::cold, gnu::noinline]] void throwMovedFrom() {
+  throw std::logic_error(
+      "Simulator: used after being moved from (it has no engine); assign it another Simulator "
+      "before calling it again");
+}
+
+}  // namespace
+
+SimulatorEngine& Simulator::engine() const {
+  if (!engine_)
+    throwMovedFrom();
+  return *engine_;
+}
+
 void Simulator::reset() {
-  engine_->reset(Vector::Zero(stateCount()), Vector::Zero(inputCount()));
+  engine().reset(Vector::Zero(stateCount()), Vector::Zero(inputCount()));
 }
 
 void Simulator::reset(const Vector& state, const Vector& input) {
   detail::requireLength("Simulator::reset", "state z0", state, stateCount());
   if (input.size() == 0) {
-    engine_->reset(state, Vector::Zero(inputCount()));
+    engine().reset(state, Vector::Zero(inputCount()));
     return;
   }
   detail::requireLength("Simulator::reset", "input w0", input, inputCount());
-  engine_->reset(state, input);
+  engine().reset(state, input);
 }
 
 void Simulator::step(const Vector& input_next) {
-  if (input_next.size() != inputCount())
-    detail::requireLength("Simulator::step", "input w", input_next, inputCount());
-  engine_->advance(input_next);
+  SimulatorEngine& engine = this->engine();  // one check per step
+  if (input_next.size() != engine.w_.size())
+    detail::requireLength("Simulator::step", "input w", input_next, engine.w_.size());
+  engine.advance(input_next);
 }
 
 void Simulator::step(const Vector& input_begin, const Vector& input_end) {
   detail::requireLength("Simulator::step", "input w_begin", input_begin, inputCount());
   detail::requireLength("Simulator::step", "input w_end", input_end, inputCount());
-  engine_->setInput(input_begin);
-  engine_->advance(input_end);
+  engine().setInput(input_begin);
+  engine().advance(input_end);
 }
 
 Matrix Simulator::simulate(const Matrix& inputs) {
   detail::requireSize("Simulator::simulate", "input series", inputs, inputs.rows(), inputCount());
-  return engine_->simulate(inputs);
+  return engine().simulate(inputs);
 }
 
 Matrix Simulator::simulate(const HeldInputSeries& inputs) {
@@ -139,65 +158,67 @@ Matrix Simulator::simulate(const HeldInputSeries& inputs) {
                      std::to_string(inputs.inputCount()) + " inputs, the system " +
                      std::to_string(inputCount()));
   inputs.validate();
-  return engine_->simulate(inputs);
+  return engine().simulate(inputs);
 }
 
 const Vector& Simulator::outputs() const {
-  return engine_->y_;
+  return engine().y_;
 }
 Vector Simulator::state() const {
-  return engine_->state();
+  return engine().state();
 }
 void Simulator::watchCoordinates(const std::vector<DofIndex>& rows) {
-  const DofIndex n = engine_->state_count_ / 2;
+  const DofIndex n = engine().state_count_ / 2;
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (rows[i] < 0 || rows[i] >= n)
       throw InputError("Simulator::watchCoordinates: coordinate " + std::to_string(rows[i]) +
                        " (entry " + std::to_string(i) + ") is outside the " + std::to_string(n) +
                        " coordinates of q");
-  engine_->watchCoordinates(rows);
+  engine().watchCoordinates(rows);
 }
 void Simulator::coordinates(Vector* z) const {
-  engine_->coordinates(z);
+  engine().coordinates(z);
 }
 const Vector& Simulator::input() const {
-  return engine_->w_;
+  return engine().w_;
 }
 double Simulator::time() const {
-  return static_cast<double>(engine_->steps_) * engine_->dt_;
+  const SimulatorEngine& engine = this->engine();
+  return static_cast<double>(engine.steps_) * engine.dt_;
 }
 long Simulator::stepCount() const {
-  return engine_->steps_;
+  return engine().steps_;
 }
 DofIndex Simulator::stateCount() const {
-  return engine_->state_count_;
+  return engine().state_count_;
 }
 DofIndex Simulator::inputCount() const {
-  return engine_->w_.size();
+  return engine().w_.size();
 }
 DofIndex Simulator::outputCount() const {
-  return engine_->y_.size();
+  return engine().y_.size();
 }
 const std::vector<std::string>& Simulator::outputNames() const {
-  return engine_->names_;
+  return engine().names_;
 }
 double Simulator::timeStep() const {
-  return engine_->dt_;
+  return engine().dt_;
 }
 InputHold Simulator::hold() const {
-  return engine_->hold_;
+  return engine().hold_;
 }
 DiscretizationMethod Simulator::method() const {
-  return engine_->method_;
+  return engine().method_;
 }
 double Simulator::maxOffDiagonalDampingRatio() const {
-  return engine_->off_diagonal_ratio_;
+  return engine().off_diagonal_ratio_;
 }
 DofIndex Simulator::dynamicModeCount() const {
-  return engine_->dynamic_modes_ >= 0 ? engine_->dynamic_modes_ : engine_->state_count_ / 2;
+  const SimulatorEngine& engine = this->engine();
+  return engine.dynamic_modes_ >= 0 ? engine.dynamic_modes_ : engine.state_count_ / 2;
 }
 DofIndex Simulator::quasiStaticModeCount() const {
-  return engine_->quasi_static_modes_;
+  return engine().quasi_static_modes_;
 }
 
 }  // namespace dynamics

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
+#include <string>
 #include <tuple>
+#include <utility>
 
 #include "dynamics_test_models.h"
 #include "tracked_vehicle_dynamics/dynamics/discretization.h"
@@ -519,6 +522,40 @@ TEST(Simulator, RejectsBadArguments) {
   bad.generalized_force = Vector::Zero(5);
   EXPECT_THROW(Simulator(s, bad), InputError);
   EXPECT_THROW(Simulator(fromSecondOrder(s)), InputError);  // continuous
+}
+
+// A moved-from simulator has no engine: its calls throw std::logic_error saying so (outputs()
+// and step() dereferenced the null engine and crashed). Assigned another simulator, it runs.
+TEST(Simulator, AMovedFromSimulatorRefusesCallsUntilAssigned) {
+  const SecondOrderSystem s = test::quarterCar();
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled}) {
+    Simulator sim(s, options(method, InputHold::ZeroOrder));
+    const Simulator taker = std::move(sim);
+    const Vector w = Vector::Zero(taker.inputCount());
+    const auto expectMovedFrom = [](auto call) {
+      try {
+        call();
+        ADD_FAILURE() << "no std::logic_error from a moved-from Simulator";
+      } catch (const std::logic_error& e) {
+        EXPECT_NE(std::string(e.what()).find("Simulator: used after being moved from"),
+                  std::string::npos)
+            << e.what();
+      }
+    };
+    expectMovedFrom([&] { sim.outputs(); });
+    expectMovedFrom([&] { sim.step(w); });
+    expectMovedFrom([&] { sim.step(w, w); });
+    expectMovedFrom([&] { sim.reset(); });
+    expectMovedFrom([&] { sim.state(); });
+    expectMovedFrom([&] { sim.time(); });
+    expectMovedFrom([&] { sim.simulate(Matrix::Zero(3, w.size())); });
+    expectMovedFrom([&] { sim.dynamicModeCount(); });
+    sim = Simulator(s, options(method, InputHold::ZeroOrder));
+    sim.step(w);
+    EXPECT_EQ(sim.stepCount(), 1);
+    EXPECT_EQ(sim.outputs().size(), taker.outputCount());
+  }
 }
 
 // Given modal damping ratios replace C in the modal engine: equal to the augmented exponential

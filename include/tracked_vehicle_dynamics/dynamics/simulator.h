@@ -108,6 +108,8 @@ class Simulator {
   Simulator(const SecondOrderSystem& system, const ModalSystem& modal,
             const SimulatorOptions& options);
   ~Simulator();
+  /// A moved-from simulator may only be destroyed or assigned to: every other call throws
+  /// std::logic_error.
   Simulator(Simulator&&) noexcept;
   Simulator& operator=(Simulator&&) noexcept;
 
@@ -173,6 +175,9 @@ class Simulator {
   DofIndex quasiStaticModeCount() const;
 
  private:
+  /// *engine_; throws std::logic_error when moved from (engine_ null).
+  SimulatorEngine& engine() const;
+
   std::unique_ptr<SimulatorEngine> engine_;
 };
 
