@@ -4,6 +4,10 @@
 #include <cctype>
 
 namespace tracked_vehicle_dynamics {
+
+// The one alignment symbol the library defines: its own build's (types.h).
+const int abi::TVD_ABI_ALIGNMENT_SYMBOL = EIGEN_MAX_ALIGN_BYTES;
+
 namespace {
 
 constexpr std::array<const char*, kDofsPerNode> kDirectionNames = {"ux", "uy", "uz",

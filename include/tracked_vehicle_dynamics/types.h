@@ -7,7 +7,29 @@
 #include <cstdint>
 #include <string>
 
+// Eigen lays out its objects and aligns its heap blocks by the instruction set it is compiled
+// for (EIGEN_MAX_ALIGN_BYTES: 16 with SSE2, 32 with AVX, 64 with AVX-512), so code that
+// exchanges Eigen objects with tvd_core must be compiled for the same level: a program built
+// without -march=x86-64-v3 against the x86-64-v3 library aborted at its first call ("double
+// free or corruption"). Every translation unit that includes this header refers to a symbol
+// named after its own alignment, and the library defines only the one of its build, so a
+// mismatch fails at link time and says what to do: "undefined reference to
+// `tracked_vehicle_dynamics::abi::eigen_max_align_bytes_16_compile_with_tvd_core_simd_flag'"
+// (README, "SIMD": the flag is in the package's CMake extras and .pc Cflags).
+#define TVD_ABI_JOIN_(a, b) a##b
+#define TVD_ABI_JOIN(a, b) TVD_ABI_JOIN_(a, b)
+#define TVD_ABI_ALIGNMENT_SYMBOL                                            \
+  TVD_ABI_JOIN(TVD_ABI_JOIN(eigen_max_align_bytes_, EIGEN_MAX_ALIGN_BYTES), \
+               _compile_with_tvd_core_simd_flag)
+
 namespace tracked_vehicle_dynamics {
+namespace abi {
+extern const int TVD_ABI_ALIGNMENT_SYMBOL;
+namespace {
+// Kept in every object file (gnu::used), unused or not: the reference is the check.
+[[gnu::used]] const int* const kAlignmentCheck = &TVD_ABI_ALIGNMENT_SYMBOL;
+}  // namespace
+}  // namespace abi
 
 using Vector = Eigen::VectorXd;
 using Matrix = Eigen::MatrixXd;

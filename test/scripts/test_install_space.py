@@ -225,6 +225,17 @@ int main(int, char** argv) {
         out = self.run_installed(program, vehicle).stdout.split()
         self.assertGreater(int(out[0]), 6)
         self.assertGreater(float(out[1]), 3.0e4)
+        # Built for another level, the same program does not link, and the error says why
+        # (types.h): it used to link and abort at its first call ("double free or corruption").
+        other = ([c for c in fields["Cflags"] if not c.startswith("-march=")] if flag
+                 else fields["Cflags"] + ["-march=x86-64-v3"])
+        mismatched = ["g++", "-std=c++17", *other, source, "-o", program + "_other",
+                      *fields["Libs"], "-Wl,-rpath-link=/usr/lib/x86_64-linux-gnu"]
+        result = subprocess.run(mismatched, capture_output=True, text=True, timeout=300)
+        self.assertNotEqual(result.returncode, 0, " ".join(mismatched))
+        self.assertRegex(result.stderr,
+                         r"undefined reference to .*tracked_vehicle_dynamics::abi::"
+                         r"eigen_max_align_bytes_\d+_compile_with_tvd_core_simd_flag")
 
     def test_the_installed_launch_file_starts_the_node_from_a_read_only_install(self):
         before = self.listing(self.stage)
