@@ -173,5 +173,15 @@ ComplexMatrix frfStateSpace(const SecondOrderSystem& system, const ModalSystem& 
   return frf;
 }
 
+ComplexMatrix frfExact(const SecondOrderSystem& system, const ModalSystem& modal,
+                       const Vector& frequencies_hz, const InputDelay& delay,
+                       OutputQuantity quantity, bool* used_modal) {
+  const bool diagonal = modal.maxOffDiagonalDampingRatio() <= kModalDampingCouplingTolerance;
+  if (used_modal != nullptr)
+    *used_modal = diagonal;
+  return diagonal ? frfModal(modal, frequencies_hz, delay, quantity)
+                  : frfStateSpace(system, modal, frequencies_hz, delay, quantity);
+}
+
 }  // namespace dynamics
 }  // namespace tracked_vehicle_dynamics

@@ -204,11 +204,10 @@ void run(const FrfOptions& opt) {
     damping_coupling = modal.maxOffDiagonalDampingRatio();
     const dynamics::InputDelay delay =
         delayFor(model.system.input_stations, model.system.input_lateral);
-    solution = damping_coupling > dynamics::kModalDampingCouplingTolerance ? "direct" : "modal";
-    h = solution == "direct"
-            ? dynamics::frfStateSpace(model.system, modal, hz, delay,
-                                      dynamics::OutputQuantity::Acceleration)
-            : dynamics::frfModal(modal, hz, delay, dynamics::OutputQuantity::Acceleration);
+    bool used_modal = false;
+    h = dynamics::frfExact(model.system, modal, hz, delay, dynamics::OutputQuantity::Acceleration,
+                           &used_modal);
+    solution = used_modal ? "modal" : "direct";
     dofs = model.size();
     full_dofs = model.full_dof_count;
     source = reduced->kind == ReducedModelSource::Kind::Cache  ? "reduced (cached)"

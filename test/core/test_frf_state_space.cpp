@@ -66,6 +66,32 @@ TEST(FrfStateSpace, EqualsTheDirectSolutionWhenDampersCoupleTheModes) {
   }
 }
 
+// frfExact takes the state space where dampers couple the modes and eq. 20 where they do not
+// (Rayleigh damping), and says which.
+TEST(FrfStateSpace, FrfExactChoosesTheRouteByTheCoupling) {
+  const Vector f = Vector::LinSpaced(121, 0.0, 60.0);
+  const InputDelay delay = InputDelay::synchronous();
+  SecondOrderSystem coupled = test::randomVehicle(30, 4, 6, 5);
+  addDamper(&coupled, 2, 17, 3e4);
+  const ModalSystem coupled_modes(coupled);
+  bool used_modal = true;
+  const ComplexMatrix exact =
+      frfExact(coupled, coupled_modes, f, delay, OutputQuantity::Acceleration, &used_modal);
+  EXPECT_FALSE(used_modal);
+  const ComplexMatrix direct = frfDirect(coupled, f, delay, OutputQuantity::Acceleration);
+  EXPECT_LT(errorOverPeak(exact, direct), 1e-9);
+  EXPECT_GT(errorOverPeak(frfModal(coupled_modes, f, delay), direct), 1e-3);
+
+  const SecondOrderSystem rayleigh = test::randomVehicle(30, 4, 6, 5);
+  const ModalSystem rayleigh_modes(rayleigh);
+  ASSERT_LE(rayleigh_modes.maxOffDiagonalDampingRatio(), kModalDampingCouplingTolerance);
+  const ComplexMatrix modal_route =
+      frfExact(rayleigh, rayleigh_modes, f, delay, OutputQuantity::Acceleration, &used_modal);
+  EXPECT_TRUE(used_modal);
+  EXPECT_EQ(modal_route, frfModal(rayleigh_modes, f, delay));
+  EXPECT_LT(errorOverPeak(modal_route, frfDirect(rayleigh, f, delay)), 1e-9);
+}
+
 // The quarter car with a suspension damper and an undamped 2e10 N/m tyre (non-proportional):
 // the static limit x/h = 1 at 0 Hz for both masses, and the direct solution at every frequency.
 TEST(FrfStateSpace, QuarterCarOnAStiffTyreKeepsTheStaticLimit) {

@@ -37,8 +37,11 @@ ComplexMatrix frfDirect(const SparseSecondOrderSystem& system, const Vector& fre
                         OutputQuantity quantity = OutputQuantity::Acceleration);
 
 /// Modal superposition (eq. 20) over all modes of `modal`: O(n (n_inputs + n_outputs)) per
-/// frequency. Throws InputError for negative frequencies or a delay of the wrong size,
-/// SolverError for 0 Hz on the grid of a system with a rigid-body mode (its term is 0/0 there).
+/// frequency. Exact for proportional damping; with discrete dampers it keeps only the diagonal of
+/// Phi^T C Phi (modal.maxOffDiagonalDampingRatio() says how much is dropped): frfExact()
+/// (frf_state_space.h) chooses for you. Throws InputError for negative frequencies or a delay of
+/// the wrong size, SolverError for 0 Hz on the grid of a system with a rigid-body mode (its term is
+/// 0/0 there).
 ComplexMatrix frfModal(const ModalSystem& modal, const Vector& frequencies_hz,
                        const InputDelay& delay,
                        OutputQuantity quantity = OutputQuantity::Acceleration);
