@@ -252,8 +252,8 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
   double end_share = std::min(1.0, t.torsional_stiffness_y / (t.compression_stiffness * c2));
   PadSprings s;
   // The target furthest from what the last iteration measured, for the message if it fails.
-  std::string worst_key;
-  double worst_target = 0.0, worst_measured = 0.0, worst_error = -1.0;
+  int worst = 0;  // the group farthest off its target at the last step, for the message
+  double worst_error = -1.0;
   s.shear_x = t.shear_stiffness_x / 6.0;
   s.shear_y = t.shear_stiffness_y / 6.0;
   // Each spring group against the stiffness it mainly sets: the end columns carry k_ry, the
@@ -327,17 +327,13 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
         kCalibrationTolerance)
       return s;
     worst_error = -1.0;
-    for (const auto& [key, ratio, target, measured] :
-         {std::make_tuple("shear_stiffness_x", rx, t.shear_stiffness_x, k.kx),
-          std::make_tuple("shear_stiffness_y", ry, t.shear_stiffness_y, k.ky),
-          std::make_tuple("compression_stiffness", rz, t.compression_stiffness, k.kz),
-          std::make_tuple("torsional_stiffness_y", rr, t.torsional_stiffness_y, k.kry)})
-      if (std::abs(ratio - 1.0) > worst_error) {
-        worst_error = std::abs(ratio - 1.0);
-        worst_key = key;
-        worst_target = target;
-        worst_measured = measured;
+    for (int i = 0; i < 4; ++i) {
+      const double error = std::abs(groups[i].target / groups[i].measured - 1.0);
+      if (error > worst_error) {
+        worst_error = error;
+        worst = i;
       }
+    }
     // Each stiffness is governed mainly by its own spring group (series with the nearly rigid
     // link): scale the group by target / measured.
     s.shear_x *= rx;
@@ -364,8 +360,8 @@ PadSprings calibrateTrackAssembly(const TrackAssemblyDescription& t) {
   }
   // Ten digits: the two differ in the seventh when the calibration stalls on round-off.
   const std::string reached =
-      io::formatC("%.10g (the assembly gives %.10g", worst_target, worst_measured);
-  throw InputError("track_assembly." + worst_key +
+      io::formatC("%.10g (the assembly gives %.10g", groups[worst].target, groups[worst].measured);
+  throw InputError(std::string("track_assembly.") + groups[worst].key +
                    ": the pad springs' calibration does not reach " + reached + ", off by " +
                    brief(worst_error) + " relative after " +
                    std::to_string(kMaxCalibrationIterations) + " steps; tolerance " +
