@@ -33,6 +33,19 @@ void requireLength(const std::string& where, const std::string& what, const Vect
                      " entries, expected " + std::to_string(length));
 }
 
+/// Throws InputError "<where>: <what> entry i is nan" at the first non-finite entry: a NaN or
+/// infinite input would enter the state and every later sample. The test is one vectorised pass.
+template <typename VectorType>
+void requireFinite(const std::string& where, const std::string& what, const VectorType& v) {
+  if (v.allFinite())
+    return;
+  Eigen::Index i = 0;
+  while (std::isfinite(v(i)))
+    ++i;
+  throw InputError(where + ": " + what + " entry " + std::to_string(i) + " is " + brief(v(i)) +
+                   "; only finite values are accepted (nothing was changed)");
+}
+
 /// Throws InputError unless 0 < dt < inf.
 inline void requireTimeStep(const std::string& where, double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt))

@@ -125,11 +125,13 @@ void Simulator::reset() {
 
 void Simulator::reset(const Vector& state, const Vector& input) {
   detail::requireLength("Simulator::reset", "state z0", state, stateCount());
+  detail::requireFinite("Simulator::reset", "state z0", state);
   if (input.size() == 0) {
     engine().reset(state, Vector::Zero(inputCount()));
     return;
   }
   detail::requireLength("Simulator::reset", "input w0", input, inputCount());
+  detail::requireFinite("Simulator::reset", "input w0", input);
   engine().reset(state, input);
 }
 
@@ -137,18 +139,28 @@ void Simulator::step(const Vector& input_next) {
   SimulatorEngine& engine = this->engine();  // one check per step
   if (input_next.size() != engine.w_.size())
     detail::requireLength("Simulator::step", "input w", input_next, engine.w_.size());
+  detail::requireFinite("Simulator::step", "input w", input_next);
   engine.advance(input_next);
 }
 
 void Simulator::step(const Vector& input_begin, const Vector& input_end) {
   detail::requireLength("Simulator::step", "input w_begin", input_begin, inputCount());
   detail::requireLength("Simulator::step", "input w_end", input_end, inputCount());
+  detail::requireFinite("Simulator::step", "input w_begin", input_begin);
+  detail::requireFinite("Simulator::step", "input w_end", input_end);
   engine().setInput(input_begin);
   engine().advance(input_end);
 }
 
 Matrix Simulator::simulate(const Matrix& inputs) {
   detail::requireSize("Simulator::simulate", "input series", inputs, inputs.rows(), inputCount());
+  if (!inputs.allFinite()) {
+    Eigen::Index row = 0;
+    while (inputs.row(row).allFinite())
+      ++row;
+    detail::requireFinite("Simulator::simulate", "input series row " + std::to_string(row),
+                          inputs.row(row));
+  }
   return engine().simulate(inputs);
 }
 

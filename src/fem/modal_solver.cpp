@@ -238,8 +238,8 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
   const Eigen::Index n = stiffness.rows();
   const double sigma = request.shift != 0.0 ? request.shift : automaticShift(stiffness, mass);
 
-  // Small problems: the dense solver is exact and faster than Lanczos.
-  if (n <= 200) {
+  // The dense solver, cut to the request: exact, and faster than Lanczos on small problems.
+  const auto dense = [&] {
     ModalBasis all = solveModesDense(Matrix(stiffness), Matrix(mass));
     int keep = std::min<int>(request.count, all.count());
     if (request.max_frequency_hz > 0) {
@@ -253,7 +253,11 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
     all.shapes.conservativeResize(Eigen::NoChange, keep);
     all.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return all;
-  }
+  };
+  // Every mode asked for: Lanczos finds at most n - 1 (its Krylov space is at most n wide and
+  // one vector short of the last), and the shapes are a dense n x n matrix anyway.
+  if (n <= 200 || (request.count >= n && request.max_frequency_hz <= 0))
+    return dense();
 
   ShiftInvertOp op(stiffness, mass);
   MassProduct bop(mass);
@@ -413,6 +417,11 @@ ModalBasis solveModes(const SparseMatrix& stiffness, const SparseMatrix& mass,
       break;
     keepLowest(current, extra_values, extra_vectors, added, mass, keep_union, &values, &vectors);
   }
+
+  // A frequency limit at or above the highest mode with a count as large as the model: every
+  // mode is asked for, and Lanczos stops one short (above).
+  if (request.count >= n && values.size() == n - 1 && values.maxCoeff() <= limit)
+    return dense();
 
   ModalBasis basis = sortAndNormalise(values, vectors, &mass, nullptr);
   // Shift-invert: the eigenvalues near 0 come out within ~1e-9 of |sigma| (3.6e-9 on the

@@ -1,5 +1,6 @@
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
 
+#include <stdlib.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -20,8 +21,20 @@ std::string reason(int error) {
 }
 }  // namespace
 
+std::string createTemporaryBeside(const std::string& path, const std::string& suffix,
+                                  const std::string& tag) {
+  std::string name = path + tag + ".XXXXXX" + suffix;
+  errno = 0;
+  const int fd = ::mkstemps(name.data(), static_cast<int>(suffix.size()));
+  if (fd < 0)
+    throw InputError("cannot write " + path + reason(errno) +
+                     " (directory missing or not writable?)");
+  ::close(fd);
+  return name;
+}
+
 AtomicTextFile::AtomicTextFile(const std::string& path)
-    : path_(path), temporary_(path + ".tmp" + std::to_string(::getpid())) {
+    : path_(path), temporary_(createTemporaryBeside(path)) {
   // Numbers as every reader of the file expects them ("1234.5", not the "1.234,5" a program's
   // std::locale::global(std::locale("de_DE.UTF-8")) would give every stream made after it).
   out_.imbue(std::locale::classic());

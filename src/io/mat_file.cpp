@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/mat_structure.h"
 #include "tracked_vehicle_dynamics/io/utf8.h"
 
@@ -62,12 +63,14 @@ struct MatWriter::Impl {
 
 MatWriter::MatWriter(const std::string& path, MatFormat format, bool compress)
     : impl_(std::make_unique<Impl>()), path_(path) {
-  impl_->temporary = path + ".tmp" + std::to_string(::getpid());
+  impl_->temporary = createTemporaryBeside(path);  // matio reopens (truncates) the empty file
   impl_->compression = compress ? MAT_COMPRESSION_ZLIB : MAT_COMPRESSION_NONE;
   impl_->mat = Mat_CreateVer(impl_->temporary.c_str(), kMat5HeaderText,
                              format == MatFormat::Mat73 ? MAT_FT_MAT73 : MAT_FT_MAT5);
-  if (!impl_->mat)
+  if (!impl_->mat) {
+    std::remove(impl_->temporary.c_str());
     throw InputError(path + ": cannot create the file (directory missing or not writable?)");
+  }
 }
 
 MatWriter::~MatWriter() {
@@ -95,6 +98,44 @@ void MatWriter::writeMatrix(const std::string& name, const Matrix& value) {
   void* data = value.size() ? const_cast<double*>(value.data()) : nullptr;
   impl_->write(
       Mat_VarCreate(name.c_str(), MAT_C_DOUBLE, MAT_T_DOUBLE, 2, d, data, MAT_F_DONT_COPY_DATA),
+      name, path_);
+}
+
+void MatWriter::writeSparse(const std::string& name, const SparseMatrix& value) {
+  checkName(name);
+  // MAT 5 keeps compressed columns with 32-bit row indices (ir) and column starts (jc).
+  constexpr auto kMaxIndex = static_cast<Eigen::Index>(std::numeric_limits<mat_uint32_t>::max());
+  if (value.nonZeros() > kMaxIndex || value.rows() > kMaxIndex || value.cols() >= kMaxIndex)
+    throw InputError(path_ + ": variable '" + name + "' is too large for a MAT file's sparse " +
+                     "matrix (" + std::to_string(value.nonZeros()) + " entries)");
+  std::vector<mat_uint32_t> ir, jc(static_cast<std::size_t>(value.cols()) + 1, 0);
+  std::vector<double> data;
+  ir.reserve(static_cast<std::size_t>(value.nonZeros()));
+  data.reserve(ir.capacity());
+  for (Eigen::Index c = 0; c < value.outerSize(); ++c) {
+    for (SparseMatrix::InnerIterator it(value, c); it; ++it) {
+      ir.push_back(static_cast<mat_uint32_t>(it.row()));
+      data.push_back(it.value());
+    }
+    jc[static_cast<std::size_t>(c) + 1] = static_cast<mat_uint32_t>(ir.size());
+  }
+  // MATLAB allocates at least one entry (nzmax >= 1), also for an all-zero matrix.
+  if (ir.empty()) {
+    ir.push_back(0);
+    data.push_back(0.0);
+  }
+  mat_sparse_t sparse{};
+  sparse.nzmax = static_cast<mat_uint32_t>(ir.size());
+  sparse.ir = ir.data();
+  sparse.nir = jc.back();
+  sparse.jc = jc.data();
+  sparse.njc = static_cast<mat_uint32_t>(jc.size());
+  sparse.ndata = jc.back();
+  sparse.data = data.data();
+  std::size_t d[2] = {static_cast<std::size_t>(value.rows()),
+                      static_cast<std::size_t>(value.cols())};
+  impl_->write(
+      Mat_VarCreate(name.c_str(), MAT_C_SPARSE, MAT_T_DOUBLE, 2, d, &sparse, MAT_F_DONT_COPY_DATA),
       name, path_);
 }
 

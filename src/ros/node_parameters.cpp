@@ -16,6 +16,8 @@
 #include "tracked_vehicle_dynamics/dynamics/running_window.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/home_path.h"
+#include "tracked_vehicle_dynamics/io/number_text.h"
 
 namespace tracked_vehicle_dynamics {
 namespace ros_layer {
@@ -240,6 +242,16 @@ void requireFoundFile(const Reader& in, const std::string& key, const std::strin
                           path + " in a launch file");
 }
 
+// roslaunch passes a path as written: "~/x" would name a directory "~" in $ROS_HOME. Expanded
+// as a shell would (io/home_path.h).
+std::string expandedPath(const Reader& in, const std::string& key, const std::string& path) {
+  try {
+    return io::expandHome(path, "the path");
+  } catch (const InputError& e) {
+    throw in.error(key, e.what());
+  }
+}
+
 }  // namespace
 
 NodeParameters readParameters(const ros::NodeHandle& private_nh) {
@@ -250,6 +262,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
     throw in.error("vehicle", "required: the vehicle description file (e.g. " +
                                   std::string("config/vehicles/paper_vehicle.yaml)"));
   }
+  p.vehicle = expandedPath(in, "vehicle", p.vehicle);
   requireFoundFile(in, "vehicle", p.vehicle);
   const std::string variant = in.string("variant", vehicle::variantName(p.variant));
   try {
@@ -260,6 +273,7 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
   p.cache_dir = in.string("cache_dir", defaultCacheDirectory());
   if (p.cache_dir.empty())
     throw in.error("cache_dir", "must not be empty");
+  p.cache_dir = expandedPath(in, "cache_dir", p.cache_dir);
 
   OnlineVehicleOptions& v = p.vehicle_options;
   v.rate = in.positive("rate", v.rate, "Hz");
@@ -271,6 +285,17 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
                                " Hz (a step of the model takes tens of microseconds: the node "
                                "could not keep up), got " +
                                Reader::text(v.rate));
+  // The node steps on whole nanoseconds of ROS time (ros::Duration): the model integrates with
+  // that step, or its clock would run off the stamps by the rounding, 1e9 / rate - round(1e9 /
+  // rate) ns a step (30 kHz: 1e-5, 36 ms an hour, and the odometry ahead with it).
+  const double stepped = 1e9 / static_cast<double>(std::llround(1e9 / v.rate));
+  if (stepped != v.rate) {
+    p.warnings.push_back(in.name("rate") + " " + Reader::text(v.rate) +
+                         " Hz is not a whole number of nanoseconds a step: stepping every " +
+                         std::to_string(std::llround(1e9 / v.rate)) + " ns, at " +
+                         io::formatC("%.10g", stepped) + " Hz");
+    v.rate = stepped;
+  }
   // The comfort meter filters the vertical acceleration at ~rate (ISO 2631-1 Wk needs more than
   // 25 Hz): refused here, naming ~rate, rather than later as an error of the vehicle.
   try {
@@ -429,8 +454,10 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
       in.integer("reduction/mogesec_masters", r.mogesec_masters, 0, reduction::kMaxReductionCount);
   r.mode_count = in.integer("reduction/mode_count", r.mode_count, 0, reduction::kMaxReductionCount);
   p.reduced_model = in.string("reduced_model", "");
-  if (!p.reduced_model.empty())
+  if (!p.reduced_model.empty()) {
+    p.reduced_model = expandedPath(in, "reduced_model", p.reduced_model);
     requireFoundFile(in, "reduced_model", p.reduced_model);
+  }
   // Every key above has been asked for: what else is set in the private namespace is unknown
   // (a misspelt ~speed_timout would leave the dead-driver stop off without a word).
   for (const std::string& key : in.unread()) {

@@ -20,6 +20,7 @@
 
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
@@ -264,7 +265,8 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
   // Written under a temporary name next to `path` and renamed onto it once closed, as tvd's
   // outputs are: a run that fails half way (a full disk, rosbag refusing a message) leaves no
   // partial bag under the final name, nor an older bag there damaged.
-  const std::string temporary = path + ".tmp" + std::to_string(::getpid());
+  // A name of its own (io::createTemporaryBeside): two writers of one bag never share it.
+  const std::string temporary = io::createTemporaryBeside(path);
   try {
     writeTrackBagFile(temporary, run, options, &summary);
   } catch (const rosbag::BagException& e) {

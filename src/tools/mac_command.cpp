@@ -96,6 +96,18 @@ void run(const MacOptions& opt) {
       mat.writeStrings("untracked_mode_types", uv_types);
       mat.writeStrings("tracked_mode_types", tv_types);
       mat.writeScalar("threshold", opt.threshold);
+      // What the MAC is computed on, to recompute it: the common DOFs and both variants' shapes
+      // there (rows in the same order).
+      Matrix common_node(static_cast<Eigen::Index>(common.size()), 1);
+      Matrix common_direction(common_node.rows(), 1);
+      for (std::size_t i = 0; i < common.size(); ++i) {
+        common_node(static_cast<Eigen::Index>(i), 0) = static_cast<double>(common[i].node);
+        common_direction(static_cast<Eigen::Index>(i), 0) = common[i].direction;
+      }
+      mat.writeMatrix("common_dof_node", common_node);
+      mat.writeMatrix("common_dof_direction", common_direction);
+      mat.writeMatrix("untracked_common_shapes", uv_shapes);
+      mat.writeMatrix("tracked_common_shapes", tv_shapes);
       // 1 for a global mode (global_modes.h), one per mode.
       for (const auto& [name, global] : {std::make_pair("untracked_global", &uv_global),
                                          std::make_pair("tracked_global", &tv_global)}) {

@@ -11,6 +11,7 @@
 #include "mass_breakdown_report.h"
 #include "node_shapes.h"
 #include "output_files.h"
+#include "system_matrices_file.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/fem/eigenvalue_count.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
@@ -41,6 +42,7 @@ struct ModesOptions {
   double max_frequency_hz = 0.0;
   bool json = false;
   std::string out_dir;
+  bool matrices = false;  // also DIR/matrices.mat
 };
 
 // classes: a vehicle's (one per mode), with the kinetic-energy shares that name each type;
@@ -152,6 +154,10 @@ std::string modesBeyondCountWarning(const fem::System& sys, const fem::ModalBasi
               : ", the most tvd modes returns)");
 }
 
+std::string matricesFile(const ModesOptions& opt) {
+  return (std::filesystem::path(opt.out_dir) / "matrices.mat").string();
+}
+
 void runModel(const ModesOptions& opt) {
   const auto t0 = std::chrono::steady_clock::now();
   const fem::Model model = io::loadModelYaml(opt.model_file);
@@ -176,8 +182,12 @@ void runModel(const ModesOptions& opt) {
   const GravitySag sag = gravitySag(sys);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
-    writeModeFiles(opt.out_dir, sys, basis, {},
-                   {{"model", model.name}, {"model_file", opt.model_file}}, written);
+    const Metadata metadata = {{"model", model.name}, {"model_file", opt.model_file}};
+    writeModeFiles(opt.out_dir, sys, basis, {}, metadata, written);
+    if (opt.matrices)
+      written.write(matricesFile(opt), [&](const std::string& path) {
+        writeSystemMatrices(path, model, sys, nullptr, metadata);
+      });
     written.commit();
   }
   if (opt.json) {
@@ -219,11 +229,18 @@ void runVehicle(const ModesOptions& opt) {
     types.push_back(c.label);
   if (!opt.out_dir.empty()) {
     OutputFileSet written;
-    writeModeFiles(opt.out_dir, a.system, a.modes, a.classes,
-                   {{"vehicle", description.name},
-                    {"vehicle_file", opt.vehicle_file},
-                    {"variant", vehicle::variantName(variant)}},
-                   written);
+    const Metadata metadata = {{"vehicle", description.name},
+                               {"vehicle_file", opt.vehicle_file},
+                               {"variant", vehicle::variantName(variant)}};
+    writeModeFiles(opt.out_dir, a.system, a.modes, a.classes, metadata, written);
+    if (opt.matrices) {
+      const VehicleMatrixExtras extras{
+          vehicle::roadInputStations(a.vehicle.layout, a.system.ground_inputs),
+          description.damping};
+      written.write(matricesFile(opt), [&](const std::string& path) {
+        writeSystemMatrices(path, a.vehicle.model, a.system, &extras, metadata);
+      });
+    }
     const std::string node_shapes =
         (std::filesystem::path(opt.out_dir) / "node_shapes.csv").string();
     written.write(node_shapes, [&](const std::string& path) {
@@ -317,12 +334,17 @@ void registerModesCommand(CLI::App& app) {
          "write modes.csv, shapes.csv and modes.mat to this directory (created if missing; a "
          "vehicle's also node_shapes.csv)")
       ->check(outputDirectory());
+  cmd->add_flag("--matrices", opt->matrices,
+                "with --out: also DIR/matrices.mat, the assembled model (sparse M, K, C, K_u, C_u, "
+                "gravity and travel loads, DOF and node tables; README)")
+      ->needs("--out");
   cmd->callback([opt, model, vehicle, count]() {
     if (model->count() == 0 && vehicle->count() == 0)
       throw InputError("modes: give --model FILE or --vehicle FILE");
     // The files the directory receives: none of them may be the input.
     if (!opt->out_dir.empty())
-      for (const char* name : {"modes.csv", "shapes.csv", "modes.mat", "node_shapes.csv"})
+      for (const char* name :
+           {"modes.csv", "shapes.csv", "modes.mat", "node_shapes.csv", "matrices.mat"})
         refuseOutputOverInput("modes", "--out",
                               (std::filesystem::path(opt->out_dir) / name).string(),
                               {{"--model", opt->model_file}, {"--vehicle", opt->vehicle_file}});

@@ -33,6 +33,20 @@ void writeMetadata(io::MatWriter& mat, const Metadata& metadata) {
   }
 }
 
+void writeDofTable(io::MatWriter& mat, const fem::System& sys) {
+  Matrix node(sys.size(), 1), direction(sys.size(), 1);
+  std::vector<std::string> labels;
+  for (DofIndex r = 0; r < sys.size(); ++r) {
+    const fem::DofRef d = sys.dofs.dofOf(r);
+    node(r, 0) = static_cast<double>(d.node);
+    direction(r, 0) = d.direction;
+    labels.push_back(sys.dofs.label(r));
+  }
+  mat.writeMatrix("dof_node", node);
+  mat.writeMatrix("dof_direction", direction);
+  mat.writeStrings("dof_labels", labels);
+}
+
 const std::vector<std::string> kEnergyShareNames = {
     "hull",        "wheels",    "track",      "hull_longitudinal", "hull_lateral",
     "hull_bounce", "hull_roll", "hull_pitch", "hull_yaw"};
@@ -101,17 +115,7 @@ void writeModeFiles(const std::string& dir, const fem::System& sys, const fem::M
     mat.writeMatrix("frequencies_hz", basis.frequencies_hz);
     mat.writeMatrix("eigenvalues", basis.eigenvalues);
     mat.writeMatrix("shapes", basis.shapes);
-    Matrix node(sys.size(), 1), direction(sys.size(), 1);
-    std::vector<std::string> labels;
-    for (DofIndex r = 0; r < sys.size(); ++r) {
-      const fem::DofRef d = sys.dofs.dofOf(r);
-      node(r, 0) = static_cast<double>(d.node);
-      direction(r, 0) = d.direction;
-      labels.push_back(sys.dofs.label(r));
-    }
-    mat.writeMatrix("dof_node", node);
-    mat.writeMatrix("dof_direction", direction);
-    mat.writeStrings("dof_labels", labels);
+    writeDofTable(mat, sys);
     if (typed) {
       mat.writeStrings("mode_types", mode_types);
       mat.writeMatrix("energy_shares", shares.leftCols(3));
@@ -158,10 +162,13 @@ void writeTable(const std::string& path, const std::vector<std::string>& names, 
 
 void OutputFileSet::write(const std::string& path,
                           const std::function<void(const std::string&)>& write) {
-  const std::string staged = stagedName(path);
   for (const auto& entry : staged_)
     if (entry.second == path)
       throw std::logic_error("OutputFileSet: " + path + " written twice");
+  // A name of its own, extension kept (it chooses the format): two runs writing one file never
+  // write the same staged one.
+  const std::string staged =
+      io::createTemporaryBeside(path, std::filesystem::path(path).extension().string(), ".partial");
   staged_.emplace_back(staged, path);
   try {
     write(staged);
@@ -173,13 +180,6 @@ void OutputFileSet::write(const std::string& path,
       message.replace(at, staged.size(), path);
     throw InputError(message);
   }
-}
-
-std::string OutputFileSet::stagedName(const std::string& path) {
-  std::filesystem::path p(path);
-  const std::string extension = p.extension().string();
-  p.replace_filename(p.stem().string() + ".partial" + extension);
-  return p.string();
 }
 
 void OutputFileSet::commit() {

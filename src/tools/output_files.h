@@ -15,8 +15,9 @@
 namespace tracked_vehicle_dynamics {
 namespace tools {
 
-/// The files of one command, written all or none: each is written under a staged name next to
-/// it ("modes.partial.csv": the extension, which chooses the format, is kept) and commit()
+/// The files of one command, written all or none: each is written under a staged name of its
+/// own next to it ("modes.csv.partial.Ab3xYz.csv": the extension, which chooses the format, is
+/// kept; io::createTemporaryBeside) and commit()
 /// renames them all onto their names once every one was written; without commit() (an
 /// exception unwinding) the destructor removes the staged files.
 /// A failed run into a directory of an earlier one thus leaves the earlier files as they were,
@@ -35,9 +36,6 @@ class OutputFileSet {
   /// directory (before any rename) or whose rename fails.
   void commit();
 
-  /// "dir/modes.csv" -> "dir/modes.partial.csv".
-  static std::string stagedName(const std::string& path);
-
  private:
   std::vector<std::pair<std::string, std::string>> staged_;  // (staged, final)
   bool committed_ = false;
@@ -53,6 +51,10 @@ using Metadata = std::vector<MetadataEntry>;
 
 /// Writes each entry as a variable of `mat` (names as MatWriter checks them).
 void writeMetadata(io::MatWriter& mat, const Metadata& metadata);
+
+/// Writes the rows of the active DOFs: dof_node, dof_direction (0..5: ux uy uz rx ry rz) as
+/// n x 1 doubles and dof_labels ("node 12 uz") as a cell array.
+void writeDofTable(io::MatWriter& mat, const fem::System& system);
 
 /// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type and the kinetic-energy shares]),
 /// DIR/shapes.csv (one row per active DOF: node, direction, then one column per mode) and

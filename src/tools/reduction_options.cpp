@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "output_files.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/home_path.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 
 namespace tracked_vehicle_dynamics {
@@ -94,10 +95,19 @@ void ReducedModelFlags::addTo(CLI::App* command) {
               "reduced-model cache (default $XDG_CACHE_HOME/tracked_vehicle_dynamics, else "
               "~/.cache/tracked_vehicle_dynamics; not used with --reduced)")
           // Not checked for writing: an unwritable cache warns and the run goes
-          // on. An empty one silently meant the default.
-          ->check(CLI::Validator(
+          // on. An empty one silently meant the default. "~" is expanded: bash leaves it in
+          // --cache-dir=~/x, which made a directory "~" where tvd ran (a transform: check()
+          // would drop the expanded text).
+          ->transform(CLI::Validator(
               [](std::string& text) {
-                return text.empty() ? std::string("must name a directory, got ''") : std::string();
+                if (text.empty())
+                  return std::string("must name a directory, got ''");
+                try {
+                  text = io::expandHome(text, "the directory");
+                } catch (const InputError& e) {
+                  return std::string(e.what());
+                }
+                return std::string();
               },
               "DIR"));
   reduction_.addTo(command);

@@ -63,6 +63,34 @@ TEST_F(AtomicTextFileTest, WithoutCommitTheOldFileStaysAndNothingIsLeft) {
   EXPECT_EQ(fileCount(dir_), 1);
 }
 
+// Two writers of one file in one process (two threads: the same pid, as two containers' pid 1s
+// are) each stage apart: their temporary was path + ".tmp" + pid, shared, and the two writes
+// interleaved in it; the rename put the mix in place and the other writer's rename failed.
+// Here both interleave on purpose (the first is still open when the second writes and commits):
+// both commit, and the file is one of them whole.
+TEST_F(AtomicTextFileTest, TwoWritersOfOneFileStageApart) {
+  const fs::path path = dir_ / "cache.csv";
+  const std::string a(100000, 'a'), b(50000, 'b');
+  io::AtomicTextFile first(path.string());
+  first.stream() << a << std::flush;
+  {
+    io::AtomicTextFile second(path.string());
+    second.stream() << b;
+    second.commit();
+  }
+  EXPECT_EQ(readAll(path), b);
+  first.stream() << "\n";
+  first.commit();
+  EXPECT_EQ(readAll(path), a + "\n");
+  EXPECT_EQ(fileCount(dir_), 1);
+  const std::string one = io::createTemporaryBeside(path.string(), ".mat");
+  const std::string two = io::createTemporaryBeside(path.string(), ".mat");
+  EXPECT_NE(one, two);
+  EXPECT_EQ(one.substr(0, path.string().size() + 5), path.string() + ".tmp.");
+  EXPECT_EQ(one.substr(one.size() - 4), ".mat");
+  EXPECT_TRUE(fs::is_regular_file(one));
+}
+
 TEST_F(AtomicTextFileTest, MissingDirectoryIsNamed) {
   const std::string path = (dir_ / "missing" / "a.csv").string();
   expectInputError([&] { io::AtomicTextFile file(path); }, {"cannot write", path});

@@ -5,12 +5,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include "dynamics_test_models.h"
+#include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/dynamics/discretization.h"
 #include "tracked_vehicle_dynamics/dynamics/modal_system.h"
 #include "tracked_vehicle_dynamics/dynamics/newmark.h"
@@ -522,6 +524,36 @@ TEST(Simulator, RejectsBadArguments) {
   bad.generalized_force = Vector::Zero(5);
   EXPECT_THROW(Simulator(s, bad), InputError);
   EXPECT_THROW(Simulator(fromSecondOrder(s)), InputError);  // continuous
+}
+
+// A NaN or infinite input stepped in stayed in the state for good and every later output was
+// NaN, silently. Refused before anything changes, naming the entry; both engines.
+TEST(Simulator, NonFiniteInputsAreRefusedAndChangeNothing) {
+  const SecondOrderSystem s = test::randomVehicle(8, 2, 3, 21);
+  for (DiscretizationMethod method :
+       {DiscretizationMethod::AugmentedExponential, DiscretizationMethod::ModalDecoupled}) {
+    Simulator sim(s, options(method, InputHold::FirstOrder));
+    const Vector w = Vector::Constant(4, 0.01);
+    sim.step(w);
+    const Vector state = sim.state(), outputs = sim.outputs();
+    Vector bad = w;
+    bad(2) = std::numeric_limits<double>::quiet_NaN();
+    expectInputError([&] { sim.step(bad); }, {"Simulator::step", "input w entry 2 is nan"});
+    expectInputError([&] { sim.step(w, bad); }, {"input w_end entry 2"});
+    bad(2) = -std::numeric_limits<double>::infinity();
+    expectInputError([&] { sim.step(bad, w); }, {"input w_begin entry 2 is -inf"});
+    expectInputError([&] { sim.reset(state, bad); }, {"Simulator::reset", "input w0 entry 2"});
+    Vector bad_state = state;
+    bad_state(5) = std::numeric_limits<double>::infinity();
+    expectInputError([&] { sim.reset(bad_state); }, {"state z0 entry 5 is inf"});
+    Matrix series = Matrix::Constant(6, 4, 0.01);
+    series(4, 1) = std::numeric_limits<double>::quiet_NaN();
+    expectInputError([&] { sim.simulate(series); }, {"input series row 4 entry 1 is nan"});
+    EXPECT_EQ(sim.state(), state) << methodName(method);
+    EXPECT_EQ(sim.outputs(), outputs) << methodName(method);
+    EXPECT_EQ(sim.input(), w) << methodName(method);
+    EXPECT_EQ(sim.stepCount(), 1) << methodName(method);
+  }
 }
 
 // A moved-from simulator has no engine: its calls throw std::logic_error saying so (outputs()

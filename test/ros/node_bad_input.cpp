@@ -524,6 +524,18 @@ TEST(NodeBadParameters, RelativeFilesNotFoundSayWhereTheNodeLooked) {
               std::string::npos)
         << run.output;
   }
+  // "~/" as a shell expands it (roslaunch passes it as written: it was looked for under a
+  // directory "~" in $ROS_HOME). Quoted, so that the shell running the node leaves it alone.
+  const char* home = std::getenv("HOME");
+  ASSERT_NE(home, nullptr);
+  const NodeRun run = runNode(
+      "__name:=tilde_vehicle _cache_dir:=" + cache_dir + " '_vehicle:=~/no_such_tvd_vehicle.yaml'",
+      timeout);
+  EXPECT_EQ(run.exit_status, 1) << run.output;
+  EXPECT_NE(run.output.find(std::string(home) + "/no_such_tvd_vehicle.yaml"), std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("relative to the node's working directory"), std::string::npos)
+      << run.output;
 }
 
 // Integers must be integers (roscpp would round 2.5 to 3 and build another model); frame ids
@@ -608,6 +620,24 @@ TEST(NodeBadParameters, MisspeltParametersAndRoundedRatesAreSaid) {
       << run.output;
   EXPECT_EQ(run.output.find("while the node runs in the namespace"), std::string::npos)
       << run.output;  // at the root
+}
+
+// The node steps on whole nanoseconds: a ~rate whose period is not one (3 kHz: 333333.3 ns)
+// is integrated at the rate of the step it takes, and said; the vehicle's clock ran 1e-6 fast
+// against the stamps. ~publish_rate (100 Hz, every 30 steps) is not said to be rounded for it.
+TEST(NodeBadParameters, ARateOfNoWholeNanosecondsIsSteppedAsTakenAndSaid) {
+  ros::NodeHandle private_nh("~");
+  const NodeRun run = runNode(
+      "__name:=rate_ns _vehicle:=" + test::requiredParam<std::string>(private_nh, "vehicle") +
+          " _cache_dir:=" + test::requiredParam<std::string>(private_nh, "cache_dir") +
+          " _rate:=3000 _publish_rate:=100",
+      test::requiredParam<int>(private_nh, "bad_parameter_timeout"));
+  EXPECT_EQ(run.exit_status, 124) << run.output;
+  EXPECT_NE(run.output.find("/rate_ns/rate 3000 Hz is not a whole number of nanoseconds a step: "
+                            "stepping every 333333 ns, at 3000.003 Hz"),
+            std::string::npos)
+      << run.output;
+  EXPECT_EQ(run.output.find("does not divide"), std::string::npos) << run.output;
 }
 
 // Two vehicles pushed into namespaces without ~frame_prefix share every frame in the tf tree:

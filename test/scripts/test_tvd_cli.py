@@ -182,7 +182,70 @@ class TvdCliTest(unittest.TestCase):
             for r in runs:
                 self.assertEqual(r["reduction"]["file"], os.path.join(expected, files[0]), name)
             self.assertEqual(runs[0]["outputs"], runs[1]["outputs"], name)
+        # --cache-dir=~/x: bash leaves the "~" after "=" (it made a directory "~" in the working
+        # directory); tvd expands it as a shell would.
+        result = subprocess.run([TVD, *args, "--cache-dir=~/tilde_cache"], capture_output=True,
+                                text=True, timeout=240, env=dict(os.environ, HOME=self.path("home3")),
+                                cwd=work)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertEqual(os.path.dirname(json.loads(result.stdout)["reduction"]["file"]),
+                         os.path.join(self.path("home3"), "tilde_cache"))
         self.assertEqual(os.listdir(work), [])
+
+    def test_modes_matrices_reproduce_the_modes_and_statics(self):
+        """--matrices writes the assembled model (matrices.mat): with SciPy alone, its sparse
+        (K, M) give the modes tvd reports, K q = f_g the static sag, and the identities of a
+        rigid lift hold: K r_z = K_u 1 (every spring to ground at rest), r_z' M r_z = the mass,
+        r_z' f_g = -m g, r_x' f_a = -m."""
+        import scipy.sparse
+        import scipy.sparse.linalg
+        out = self.path("matrices")
+        d = self.tvd_json("modes", "--vehicle", VEHICLE, "--variant", "untracked", "--count", "12",
+                          "--out", out, "--matrices")
+        m = scipy.io.loadmat(os.path.join(out, "matrices.mat"))
+        modes = scipy.io.loadmat(os.path.join(out, "modes.mat"))
+        K, M, C, K_u = (scipy.sparse.csc_matrix(m[k]) for k in ("K", "M", "C", "K_u"))
+        self.assertTrue(scipy.sparse.issparse(m["K"]))
+        n = d["active_dofs"]
+        self.assertEqual(K.shape, (n, n))
+        self.assertEqual((M.shape, C.shape), ((n, n), (n, n)))
+        self.assertEqual(abs(K - K.T).max(), 0.0)
+        self.assertEqual(abs(M - M.T).max(), 0.0)
+        np.testing.assert_array_equal(m["dof_node"], modes["dof_node"])
+        np.testing.assert_array_equal(m["dof_direction"], modes["dof_direction"])
+        # The lowest modes by shift-invert Lanczos on the exported matrices.
+        values = np.sort(scipy.sparse.linalg.eigsh(K, 12, M, sigma=-1.0, which="LM")[0])
+        np.testing.assert_allclose(values, modes["eigenvalues"].ravel(), rtol=1e-7)
+        # Statics (every contact bonded: the linear model's, as tvd modes reports it).
+        q = scipy.sparse.linalg.spsolve(K, m["gravity_load"].ravel())
+        direction, node = m["dof_direction"].ravel(), m["dof_node"].ravel()
+        hull_uz = np.flatnonzero((node == 1) & (direction == 2))
+        self.assertEqual(len(hull_uz), 1)
+        self.assertAlmostEqual(q[hull_uz[0]] / d["static"]["hull_sag_m"], 1.0, delta=1e-9)
+        r_z, r_x = (direction == 2).astype(float), (direction == 0).astype(float)
+        lift = K_u @ np.ones(K_u.shape[1])
+        self.assertLess(np.linalg.norm(K @ r_z - lift), 1e-9 * np.linalg.norm(lift))
+        self.assertAlmostEqual(r_z @ (M @ r_z) / d["mass_kg"], 1.0, delta=1e-12)
+        self.assertAlmostEqual(-(r_z @ m["gravity_load"].ravel()) / (9.81 * d["mass_kg"]), 1.0,
+                               delta=1e-3)  # g as the description gives it, ~9.81
+        self.assertAlmostEqual(-(r_x @ m["travel_load"].ravel()) / d["mass_kg"], 1.0, delta=1e-12)
+        inputs = K_u.shape[1]
+        self.assertEqual(m["input_node"].shape, (inputs, 1))
+        self.assertEqual(m["input_station"].shape, (inputs, 1))
+        self.assertEqual(m["node_position"].shape, (m["node_id"].size, 3))
+        # Each input samples the road at its station: an un-tracked wheel's three contact springs
+        # (0.07 m apart) all at the wheel centre's, the middle one's x.
+        x = dict(zip(m["node_id"].ravel(), m["node_position"][:, 0]))
+        node_x = np.array([x[i] for i in m["input_node"].ravel()])
+        station = m["input_station"].ravel()
+        self.assertLessEqual(np.abs(station - node_x).max(), 0.07 + 1e-12)
+        np.testing.assert_array_equal(station[1::3], node_x[1::3])
+        self.assertEqual((str(m["damping_model"][0]), float(m["modal_damping_ratio"][0, 0])),
+                         ("modal", 0.05))
+        self.assertEqual(str(m["variant"][0]), "untracked")
+        # Without --out there is nowhere to write it.
+        self.assertIn("--matrices requires --out",
+                      self.tvd("modes", "--vehicle", VEHICLE, "--matrices", status=2).stderr)
 
     def test_modes_json_and_statics(self):
         count = 12
@@ -2235,7 +2298,20 @@ class TvdCliTest(unittest.TestCase):
         # A MAC equal to the threshold matches ("reaches the threshold"): the roll row's MAC, at
         # full precision from mac.mat, given as the threshold.
         self.tvd("mac", "--vehicle", VEHICLE, "--count", "40", "--out", self.path("mac_full"))
-        exact = scipy.io.loadmat(os.path.join(self.path("mac_full"), "mac.mat"))["eigenspace_mac"]
+        mac_file = scipy.io.loadmat(os.path.join(self.path("mac_full"), "mac.mat"))
+        exact = mac_file["eigenspace_mac"]
+        # The MAC recomputed from the shapes on the common DOFs mac.mat holds (eq. 11), shapes
+        # that do not move there (below 1e-8 of their set's largest norm) giving 0.
+        a, b = mac_file["untracked_common_shapes"], mac_file["tracked_common_shapes"]
+        self.assertEqual(a.shape, (d["common_dofs"], 40))
+        self.assertEqual(mac_file["common_dof_node"].shape, (d["common_dofs"], 1))
+        self.assertTrue(set(mac_file["common_dof_direction"].ravel()) <= {0.0, 1.0, 2.0})
+        na, nb = np.linalg.norm(a, axis=0), np.linalg.norm(b, axis=0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            recomputed = (a.T @ b) ** 2 / np.outer(na**2, nb**2)
+        recomputed[na <= 1e-8 * na.max(), :] = 0.0
+        recomputed[:, nb <= 1e-8 * nb.max()] = 0.0
+        np.testing.assert_allclose(recomputed, mac_file["mac"], atol=1e-10)
         edge = repr(float(exact[roll["untracked_mode"] - 1, roll["tracked_mode"] - 1]))
         at_edge = self.tvd_json("mac", "--vehicle", VEHICLE, "--count", "40", "--mac-threshold",
                                 edge)

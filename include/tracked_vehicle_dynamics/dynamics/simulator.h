@@ -117,10 +117,11 @@ class Simulator {
   void reset();
   /// t = 0, state z0 = [q; q'] [2n] (e.g. staticEquilibrium()), current input w0 [n_w] (empty
   /// means zero). For the modal engine z0 is projected on the modes (exact: all modes kept).
-  /// Throws InputError for wrong lengths.
+  /// Throws InputError for wrong lengths or a non-finite entry.
   void reset(const Vector& state, const Vector& input = Vector());
   /// Advances one step to the input sample w_next [n_w] at the end of the step (see the time
-  /// convention above). No allocation. Throws InputError for a wrong length.
+  /// convention above). No allocation. Throws InputError for a wrong length or a NaN or infinite
+  /// entry, before anything changes: such an input would poison the state for good.
   void step(const Vector& input_next);
   /// Same, first replacing the current input by `input_begin` (the value at the start of the
   /// step, for a first-order hold whose previous end value differs).
@@ -128,7 +129,7 @@ class Simulator {
   /// Runs the whole input series W [n_samples x n_w], row k sampled at t + k h, from the current
   /// state: row 0 replaces the current input, then one step per further row. Returns the outputs
   /// Y [n_samples x n_y], row k at t + k h. The simulator ends at the last sample.
-  /// Throws InputError for a wrong number of columns.
+  /// Throws InputError for a wrong number of columns or a non-finite entry (naming its row).
   Matrix simulate(const Matrix& inputs);
   /// Same, from a series stored by its changes (held_input_series.h): equal to
   /// simulate(inputs.dense()) up to rounding, at a cost that grows with the events, not with

@@ -38,6 +38,11 @@ class MatWriter {
   /// A real double matrix (any size, including 0 x n). Throws InputError on a bad or repeated
   /// name or a write failure.
   void writeMatrix(const std::string& name, const Matrix& value);
+  /// A real double sparse matrix (MATLAB's sparse class; scipy.io.loadmat gives a csc_matrix):
+  /// the stored entries as they are, explicit zeros included. Throws InputError on a bad or
+  /// repeated name, more than 2^32 - 1 entries or rows (the format's 32-bit indices), or a
+  /// write failure.
+  void writeSparse(const std::string& name, const SparseMatrix& value);
   /// A 1 x 1 double.
   void writeScalar(const std::string& name, double value);
   /// A 1 x n char array of the UTF-16 code units of UTF-8 `value` ('' as 0 x 0).

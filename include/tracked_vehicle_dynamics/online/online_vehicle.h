@@ -167,7 +167,8 @@ class OnlineVehicle {
   /// the vehicle freed first) is invalid too.
   bool addTerrain(const TerrainPatch& patch);
   /// Commanded speed [m/s]: used from the next step on, or, with a slew, approached at the
-  /// bounded rate from the next step on. Throws InputError if negative or not finite.
+  /// bounded rate from the next step on. Throws InputError if negative, not finite or above
+  /// dynamics::kMaxSpeedKmh (200 km/h, 55.6 m/s).
   void setSpeed(double speed);
   /// A speed that should have applied `steps` steps ago, to a vehicle standing still since then
   /// (speed 0, no slew): set now, and the reference point moved on by speed * steps * h at once,
@@ -273,6 +274,8 @@ class OnlineVehicle {
   /// Named point i's three outputs of the block starting at `offset`.
   Vector3 pointBlock(std::size_t i, Eigen::Index offset) const;
   Eigen::Index outputRow(const std::string& name) const;
+  /// station_ += advance, compensated (Kahan): no rounding builds up over millions of steps.
+  void advanceStation(double advance);
   /// Samples the road at the current station and speed into road_input_ and the simulator's
   /// input_ (widened with the travel acceleration when slewing); returns the uncovered contacts.
   int sampleInput();
@@ -315,6 +318,7 @@ class OnlineVehicle {
   double max_acceleration_ = 0.0;  // a_max [m/s^2]; 0: no slew
   double max_deceleration_ = 0.0;  // d_max [m/s^2]
   double station_ = 0.0;
+  double station_carry_ = 0.0;  ///< what the last addition to station_ lost (advanceStation)
   double speed_ = 0.0;
   double commanded_speed_ = 0.0;
   double travel_acceleration_ = 0.0;
