@@ -927,6 +927,27 @@ std::vector<std::string> descriptionWarnings(const VehicleDescription& d) {
                               : "less than 5 % of its smallest dimension " + brief(smallest)) +
                          " m: the mass or the inertia in another unit (t, t*m^2)?");
   }
+  // The wheels likewise: a wheel's radius of gyration about its axle is at most its radius (a
+  // ring), and a value for the wheel with its arm lumped in stays within twice it; one below
+  // 5 % of the radius is no wheel either. A 1 kg wheel of 69 kg*m^2 (8.3 m) was taken silently.
+  const std::tuple<double, double, double, const char*, const char*> wheels[] = {
+      {d.road_wheel.spin_inertia, d.road_wheel.mass, d.road_wheel.radius, "road_wheel.spin_inertia",
+       "road_wheel.mass"},
+      {d.road_wheel.tilt_inertia, d.road_wheel.mass, d.road_wheel.radius, "road_wheel.tilt_inertia",
+       "road_wheel.mass"},
+      {d.sprocket.inertia, d.sprocket.mass, d.sprocket.radius, "sprocket.inertia", "sprocket.mass"},
+      {d.idler.inertia, d.idler.mass, d.idler.radius, "idler.inertia", "idler.mass"}};
+  for (const auto& [inertia, mass, radius, key, mass_key] : wheels) {
+    if (!(mass > 0.0) || !(radius > 0.0))
+      continue;
+    const double k = std::sqrt(inertia / mass);
+    if (k > 2.0 * radius || k < 0.05 * radius)
+      warnings.push_back(std::string(key) + ": " + brief(inertia) + " kg*m^2 on " + mass_key + " " +
+                         brief(mass) + " kg is a radius of gyration of " + brief(k) + " m, " +
+                         (k > 2.0 * radius ? "more than twice" : "less than 5 % of") +
+                         " the wheel's radius " + brief(radius) +
+                         " m: the mass or the inertia in another unit (t, t*m^2)?");
+  }
   // The tensioner's pre-load against the vehicle's weight: beyond half of it, a value meant in
   // another unit rather than a track. The model stays linear either way, but far beyond the
   // weight the hull's share of the pre-stress outweighs its suspension (an unstable pitch).

@@ -534,6 +534,22 @@ TEST(VehicleDescription, WarningsNameWhatIsPhysicallyWrong) {
             0u)
       << w[1];
   EXPECT_NE(w[1].find("more than the hull's diagonal 8.61954 m"), std::string::npos) << w[1];
+  // A road wheel's mass in tonnes: radii of gyration of 7.6 m (spin) and 6.1 m (tilt) on a
+  // 0.34 m wheel; the sprocket's inertia in t*m^2: 7 mm on a 0.334 m one.
+  d = veh::VehicleDescription{};
+  d.road_wheel.mass = 1.2;
+  d.sprocket.inertia = 0.055;
+  w = veh::descriptionWarnings(d);
+  ASSERT_EQ(w.size(), 3u);
+  EXPECT_EQ(w[0],
+            "road_wheel.spin_inertia: 69 kg*m^2 on road_wheel.mass 1.2 kg is a radius of "
+            "gyration of 7.58288 m, more than twice the wheel's radius 0.34 m: the mass or the "
+            "inertia in another unit (t, t*m^2)?");
+  EXPECT_EQ(w[1].rfind("road_wheel.tilt_inertia: 45 kg*m^2", 0), 0u) << w[1];
+  EXPECT_NE(w[2].find("sprocket.inertia: 0.055 kg*m^2 on sprocket.mass 1100 kg is a radius of "
+                      "gyration of 0.00707107 m, less than 5 % of the wheel's radius 0.334 m"),
+            std::string::npos)
+      << w[2];
   // Inertias in t*m^2: radii of gyration of 3 to 7 cm on a 2.2 m high hull.
   d = veh::VehicleDescription{};
   d.hull.roll_inertia /= 1000.0;
