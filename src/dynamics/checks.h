@@ -46,6 +46,14 @@ void requireFinite(const std::string& where, const std::string& what, const Vect
                    "; only finite values are accepted (nothing was changed)");
 }
 
+/// Throws InputError naming entry (row, column) of an input series as non-finite.
+[[noreturn]] inline void throwNonFiniteSeriesEntry(Eigen::Index row, Eigen::Index column,
+                                                   double value) {
+  throw InputError("Simulator::simulate: input series row " + std::to_string(row) + " entry " +
+                   std::to_string(column) + " is " + brief(value) +
+                   "; only finite values are accepted (nothing was changed)");
+}
+
 /// Throws InputError unless 0 < dt < inf.
 inline void requireTimeStep(const std::string& where, double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt))

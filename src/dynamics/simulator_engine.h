@@ -5,10 +5,12 @@
 //     its exact 2x2 transition, for DiscretizationMethod::ModalDecoupled.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/simulator.h"
 
 namespace tracked_vehicle_dynamics {
@@ -41,11 +43,18 @@ class SimulatorEngine {
     }
   }
 
-  /// Default: one advance() per row.
+  /// Default: one advance() per row, the series checked first (O(n_w) a row against the step's
+  /// O(n^2)). Throws InputError for a non-finite entry, nothing changed.
   virtual Matrix simulate(const Matrix& inputs) {
     Matrix outputs(inputs.rows(), y_.size());
     if (inputs.rows() == 0)
       return outputs;
+    if (!inputs.allFinite()) {
+      for (DofIndex k = 0; k < inputs.rows(); ++k)
+        for (DofIndex j = 0; j < inputs.cols(); ++j)
+          if (!std::isfinite(inputs(k, j)))
+            detail::throwNonFiniteSeriesEntry(k, j, inputs(k, j));
+    }
     Vector w = inputs.row(0).transpose();
     setInput(w);
     outputs.row(0) = y_.transpose();

@@ -1,12 +1,13 @@
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
 
-#include <stdlib.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <locale>
+#include <random>
 
 #include "tracked_vehicle_dynamics/error.h"
 
@@ -23,14 +24,31 @@ std::string reason(int error) {
 
 std::string createTemporaryBeside(const std::string& path, const std::string& suffix,
                                   const std::string& tag) {
-  std::string name = path + tag + ".XXXXXX" + suffix;
-  errno = 0;
-  const int fd = ::mkstemps(name.data(), static_cast<int>(suffix.size()));
-  if (fd < 0)
-    throw InputError("cannot write " + path + reason(errno) +
-                     " (directory missing or not writable?)");
-  ::close(fd);
-  return name;
+  // Not mkstemps: it creates the file 0600, which the rename would give the result (a cache or
+  // output another user can no longer read). Six characters of 62 from the system's entropy: a
+  // collision only retries.
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  std::random_device entropy;
+  std::uniform_int_distribution<int> pick(0, static_cast<int>(sizeof kAlphabet) - 2);
+  int error = 0;
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    std::string name = path + tag;
+    for (int i = 0; i < 6; ++i)
+      name += kAlphabet[pick(entropy)];
+    name += suffix;
+    const int fd = ::open(name.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return name;
+    }
+    error = errno;
+    if (error != EEXIST)
+      break;
+  }
+  const bool directory = error == ENOENT || error == ENOTDIR || error == EACCES || error == EROFS;
+  throw InputError("cannot write " + path + reason(error) +
+                   (directory ? " (directory missing or not writable?)" : ""));
 }
 
 AtomicTextFile::AtomicTextFile(const std::string& path)

@@ -8,8 +8,13 @@ namespace tracked_vehicle_dynamics {
 namespace io {
 
 std::string expandHome(const std::string& path, const std::string& what) {
-  if (path.empty() || path[0] != '~' || (path.size() > 1 && path[1] != '/'))
+  if (path.empty() || path[0] != '~')
     return path;
+  // "~user/x" is another user's home to a shell; taken literally it would name a directory
+  // "~user" where the program runs, the very surprise this function exists for.
+  if (path.size() > 1 && path[1] != '/')
+    throw InputError(what + " '" + path + "': only a leading ~ or ~/ is expanded (to $HOME), " +
+                     "not ~user: give the directory in full");
   const char* home = std::getenv("HOME");
   if (home == nullptr || *home != '/')
     throw InputError(what + " '" + path + "' starts with ~ but $HOME is " +

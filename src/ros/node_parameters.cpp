@@ -286,14 +286,18 @@ NodeParameters readParameters(const ros::NodeHandle& private_nh) {
                                "could not keep up), got " +
                                Reader::text(v.rate));
   // The node steps on whole nanoseconds of ROS time (ros::Duration): the model integrates with
-  // that step, or its clock would run off the stamps by the rounding, 1e9 / rate - round(1e9 /
-  // rate) ns a step (30 kHz: 1e-5, 36 ms an hour, and the odometry ahead with it).
-  const double stepped = 1e9 / static_cast<double>(std::llround(1e9 / v.rate));
+  // that step, or its clock would run off the stamps by the rounding of 1e9 / rate ns a step
+  // (30 kHz: 1e-5, 36 ms an hour, and the odometry ahead with it). Rounded down, so the rate
+  // stepped is never below the one asked for, which every check here compares with (a
+  // ~publish_rate equal to ~rate, ~rate just above the Wk filter's 25 Hz).
+  p.requested_rate = v.rate;
+  const auto step_ns = static_cast<long long>(std::floor(1e9 / v.rate));
+  const double stepped = 1e9 / static_cast<double>(step_ns);
   if (stepped != v.rate) {
-    p.warnings.push_back(in.name("rate") + " " + Reader::text(v.rate) +
+    p.warnings.push_back(in.name("rate") + " " + io::formatC("%.10g", v.rate) +
                          " Hz is not a whole number of nanoseconds a step: stepping every " +
-                         std::to_string(std::llround(1e9 / v.rate)) + " ns, at " +
-                         io::formatC("%.10g", stepped) + " Hz");
+                         std::to_string(step_ns) + " ns, at " + io::formatC("%.10g", stepped) +
+                         " Hz");
     v.rate = stepped;
   }
   // The comfort meter filters the vertical acceleration at ~rate (ISO 2631-1 Wk needs more than

@@ -141,10 +141,11 @@ VehicleDynamicsNode::VehicleDynamicsNode(ros::NodeHandle nh, ros::NodeHandle pri
                                     ros::TransportHints().tcpNoDelay());
   }
   // Publishing happens every round(rate / publish_rate) steps: the rate it gives is the one
-  // logged, and a requested rate that does not divide ~rate is said to be rounded (not for
-  // ~rate's own rounding to whole nanoseconds, below 5e-5 of it and said on its own).
+  // logged, and a requested rate that does not divide ~rate is said to be rounded (against ~rate
+  // as given: its own rounding to whole nanoseconds is said on its own).
   const double published_rate = rate / static_cast<double>(publish_every_);
-  if (std::abs(published_rate - params_.publish_rate) > 1e-4 * params_.publish_rate)
+  if (std::abs(params_.requested_rate / static_cast<double>(publish_every_) -
+               params_.publish_rate) > 1e-9 * params_.requested_rate)
     ROS_WARN(
         "%s: ~publish_rate %g Hz does not divide ~rate %g Hz: publishing "
         "every %lld steps, at %g Hz",

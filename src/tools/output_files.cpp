@@ -165,10 +165,23 @@ void OutputFileSet::write(const std::string& path,
   for (const auto& entry : staged_)
     if (entry.second == path)
       throw std::logic_error("OutputFileSet: " + path + " written twice");
-  // A name of its own, extension kept (it chooses the format): two runs writing one file never
-  // write the same staged one.
-  const std::string staged =
-      io::createTemporaryBeside(path, std::filesystem::path(path).extension().string(), ".partial");
+  // A name of its own, "modes~Ab3xYz.csv" (the extension chooses the format): two runs writing
+  // one file never write the same staged one. Short: the writer's own temporary adds 8 more
+  // characters, and the two stay within the 17 or so the older names added (a name near
+  // NAME_MAX, 255 bytes, that worked still works).
+  std::filesystem::path stem(path);
+  const std::string extension = stem.extension().string();
+  stem.replace_extension();
+  std::string staged;
+  try {
+    staged = io::createTemporaryBeside(stem.string(), extension, "~");
+  } catch (const InputError& e) {
+    std::string message = e.what();  // "cannot write <stem>: why": name the file asked for
+    const std::string named = "cannot write " + stem.string();
+    if (message.rfind(named, 0) == 0)
+      message.replace(0, named.size(), "cannot write " + path);
+    throw InputError(message);
+  }
   staged_.emplace_back(staged, path);
   try {
     write(staged);

@@ -16,8 +16,8 @@ namespace tracked_vehicle_dynamics {
 namespace tools {
 
 /// The files of one command, written all or none: each is written under a staged name of its
-/// own next to it ("modes.csv.partial.Ab3xYz.csv": the extension, which chooses the format, is
-/// kept; io::createTemporaryBeside) and commit()
+/// own next to it ("modes~Ab3xYz.csv": the extension, which chooses the format, is kept;
+/// io::createTemporaryBeside) and commit()
 /// renames them all onto their names once every one was written; without commit() (an
 /// exception unwinding) the destructor removes the staged files.
 /// A failed run into a directory of an earlier one thus leaves the earlier files as they were,

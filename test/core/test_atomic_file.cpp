@@ -1,6 +1,7 @@
 // io::AtomicTextFile: a text file appears complete under its name or not at all.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -86,8 +87,16 @@ TEST_F(AtomicTextFileTest, TwoWritersOfOneFileStageApart) {
   const std::string one = io::createTemporaryBeside(path.string(), ".mat");
   const std::string two = io::createTemporaryBeside(path.string(), ".mat");
   EXPECT_NE(one, two);
-  EXPECT_EQ(one.substr(0, path.string().size() + 5), path.string() + ".tmp.");
+  EXPECT_EQ(one.size(), path.string().size() + 2 + 6 + 4);  // ".~" + six characters + ".mat"
+  EXPECT_EQ(one.substr(0, path.string().size() + 2), path.string() + ".~");
   EXPECT_EQ(one.substr(one.size() - 4), ".mat");
+  // Created as a file written in place is (0666 less the umask), not mkstemps' 0600, which the
+  // rename gave every output and cache entry: another user could not read a shared cache.
+  const mode_t mask = ::umask(022);
+  const std::string shared = io::createTemporaryBeside(path.string());
+  ::umask(mask);
+  EXPECT_EQ(fs::status(shared).permissions(), fs::perms::owner_read | fs::perms::owner_write |
+                                                  fs::perms::group_read | fs::perms::others_read);
   EXPECT_TRUE(fs::is_regular_file(one));
 }
 

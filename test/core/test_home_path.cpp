@@ -48,8 +48,16 @@ TEST(ExpandHome, ALeadingTildeIsTheHomeDirectory) {
 
 TEST(ExpandHome, OtherPathsAreUnchanged) {
   const HomeVariable home(std::string("/home/driver"));
-  for (const std::string path : {"", "/abs/~/x", "rel/x", "~user/x", "~~", "x~", "./~"})
+  for (const std::string path : {"", "/abs/~/x", "rel/x", "x~", "./~", "./~user"})
     EXPECT_EQ(tvd::io::expandHome(path, "cache"), path);
+}
+
+TEST(ExpandHome, AnotherUsersHomeIsRefusedNotTakenLiterally) {
+  const HomeVariable home(std::string("/home/driver"));
+  for (const std::string path : {"~root/c", "~~", "~user"})
+    tvd::expectInputError(
+        [&] { tvd::io::expandHome(path, "--cache-dir"); },
+        {"--cache-dir '" + path + "': only a leading ~ or ~/ is expanded", "not ~user"});
 }
 
 TEST(ExpandHome, ATildeWithoutAnAbsoluteHomeIsNamed) {

@@ -1967,7 +1967,7 @@ class TvdCliTest(unittest.TestCase):
         self.assertFalse(os.path.exists(blocked))
         with open(out, "rb") as f:
             self.assertEqual(f.read(), before)
-        self.assertEqual([n for n in os.listdir(self.work) if ".partial" in n], [])
+        self.assertEqual([n for n in os.listdir(self.work) if "~" in n], [])  # no staged file
         self.assertEqual(c["road"]["iso8608_class"], "C")
         self.assertEqual(c["road"]["lateral_correlation"], "uniform")
         self.assertEqual(c["road"]["band_cycles_per_m"], [0.011, 2.83])
@@ -3536,7 +3536,7 @@ class TvdCliTest(unittest.TestCase):
         r = self.run_limited(["modes", "--model", model, "--count", "3", "--out", d], 2000)
         self.assertEqual(r.returncode, INPUT_ERROR_STATUS, r.stderr)
         self.assertIn(os.path.join(d, "shapes.csv") + ":", r.stderr)
-        self.assertNotIn(".partial", r.stderr)
+        self.assertNotIn("~", r.stderr)  # the staged name, "shapes~Ab3xYz.csv", is not shown
         after = {}
         for name in sorted(os.listdir(d)):
             with open(os.path.join(d, name), "rb") as f:

@@ -8,14 +8,15 @@
 namespace tracked_vehicle_dynamics {
 namespace io {
 
-/// Creates an empty file of a name no other writer has, next to `path`: `path` + `tag` + "." +
-/// six random characters + `suffix` (mkstemps, O_EXCL), and returns its name. Each writer of `path`
-/// then stages its data apart: a name made of the process id alone was shared by two threads of
-/// a process, or by processes of two containers (each its own pid 1) writing one cache, whose
-/// writes then interleaved in one file that a rename put in place torn.
+/// Creates an empty file of a name no other writer has, next to `path`: `path` + `tag` + six
+/// random letters and digits + `suffix` (O_CREAT | O_EXCL, mode 0666 less the umask, as a file
+/// written in place gets), and returns its name. Each writer of `path` then stages its data
+/// apart: a name made of the process id alone was shared by two threads of a process, or by
+/// processes of two containers (each its own pid 1) writing one cache, whose writes then
+/// interleaved in one file that a rename put in place torn.
 /// Throws InputError naming `path` and the reason when it cannot be created.
 std::string createTemporaryBeside(const std::string& path, const std::string& suffix = "",
-                                  const std::string& tag = ".tmp");
+                                  const std::string& tag = ".~");
 
 /// Writes text to a temporary file next to `path` (createTemporaryBeside) (same directory, so the
 /// rename is atomic on POSIX file systems); commit() checks the stream and renames it onto `path`.

@@ -9,9 +9,10 @@
 namespace tracked_vehicle_dynamics {
 namespace io {
 
-/// `path` with a leading "~" alone or "~/" replaced by $HOME, as a shell does; any other path
-/// unchanged ("~user/x" too: no user database lookup). Throws InputError naming `what` when the
-/// path needs $HOME and it is unset or not absolute.
+/// `path` with a leading "~" alone or "~/" replaced by $HOME, as a shell does; a path not
+/// starting with "~" unchanged. Throws InputError naming `what` for "~user..." (not looked up:
+/// refused rather than taken as a directory "~user" here) and when the path needs $HOME and it
+/// is unset or not absolute.
 std::string expandHome(const std::string& path, const std::string& what);
 
 }  // namespace io

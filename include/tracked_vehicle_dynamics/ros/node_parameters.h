@@ -38,7 +38,10 @@ struct NodeParameters {
   std::string vehicle;  ///< ~vehicle: description YAML file (required)
   vehicle::Variant variant = vehicle::Variant::Tracked;  ///< ~variant
   std::string cache_dir;  ///< ~cache_dir; default $ROS_HOME/tracked_vehicle_dynamics (~/.ros/...)
-  OnlineVehicleOptions vehicle_options;  ///< ~rate, ~method, ~hold, ~lateral_offset, ...
+  /// ~rate, ~method, ~hold, ~lateral_offset, ...; its rate is the one stepped, 1e9 / floor(1e9 /
+  /// ~rate) (whole nanoseconds a step, never below ~rate).
+  OnlineVehicleOptions vehicle_options;
+  double requested_rate = 0.0;                           ///< ~rate as given [Hz]
   reduction::VehicleReductionOptions reduction_options;  ///< ~reduction/*
   /// ~reduced_model: a file written by `tvd reduce --out`, run instead of the cache (its own
   /// reduction options replace ~reduction/*); empty: the cache.
