@@ -59,13 +59,9 @@ std::string singularStaticsMessage(const Model& model) {
   return std::string();
 }
 
-}  // namespace
-
-TEST(SpringMassChain, EigenvaluesMatchClosedForm) {
-  // n equal masses in a line, the first tied to ground, the last free:
-  // omega_j^2 = 4 k/m sin^2((2j - 1) pi / (2 (2n + 1))), j = 1..n.
-  const int n = 10;
-  const double k = 1e5, m = 2.0;
+// n masses m in a vertical line on springs k, the first to ground (uz free only): the chains
+// whose closed-form eigenvalues the SpringMassChain tests check.
+tvd::fem::System groundedChain(int n, double k, double m) {
   Model model;
   for (int i = 1; i <= n; ++i) {
     model.addNode(i, tvd::Vector3(0, 0, 0.1 * i));
@@ -73,7 +69,17 @@ TEST(SpringMassChain, EigenvaluesMatchClosedForm) {
     model.fixed.push_back(allBut(i, 2));
     model.springs.push_back(springAlong(i, i == 1 ? tvd::fem::kGround : i - 1, 2, k));
   }
-  const tvd::fem::System sys = tvd::fem::assemble(model);
+  return tvd::fem::assemble(model);
+}
+
+}  // namespace
+
+TEST(SpringMassChain, EigenvaluesMatchClosedForm) {
+  // n equal masses in a line, the first tied to ground, the last free:
+  // omega_j^2 = 4 k/m sin^2((2j - 1) pi / (2 (2n + 1))), j = 1..n.
+  const int n = 10;
+  const double k = 1e5, m = 2.0;
+  const tvd::fem::System sys = groundedChain(n, k, m);
   ASSERT_EQ(sys.size(), n);
   tvd::fem::ModalRequest req;
   req.count = n;
@@ -91,14 +97,7 @@ TEST(SpringMassChain, EigenvaluesMatchClosedForm) {
 TEST(SpringMassChain, LargeChainUsesLanczosAndMatchesClosedForm) {
   const int n = 400;
   const double k = 2e6, m = 5.0;
-  Model model;
-  for (int i = 1; i <= n; ++i) {
-    model.addNode(i, tvd::Vector3(0, 0, 0.1 * i));
-    model.masses.push_back(pointMass(i, m));
-    model.fixed.push_back(allBut(i, 2));
-    model.springs.push_back(springAlong(i, i == 1 ? tvd::fem::kGround : i - 1, 2, k));
-  }
-  const tvd::fem::System sys = tvd::fem::assemble(model);
+  const tvd::fem::System sys = groundedChain(n, k, m);
   tvd::fem::ModalRequest req;
   req.count = 15;
   const tvd::fem::ModalBasis basis = tvd::fem::solveModes(sys.stiffness, sys.mass, req);
@@ -113,14 +112,7 @@ TEST(SpringMassChain, EveryModeOfALargeChainIsReturned) {
   // n - 1: Lanczos cannot deliver the last. The closed form above holds for the highest too.
   const int n = 250;
   const double k = 2e6, m = 5.0;
-  Model model;
-  for (int i = 1; i <= n; ++i) {
-    model.addNode(i, tvd::Vector3(0, 0, 0.1 * i));
-    model.masses.push_back(pointMass(i, m));
-    model.fixed.push_back(allBut(i, 2));
-    model.springs.push_back(springAlong(i, i == 1 ? tvd::fem::kGround : i - 1, 2, k));
-  }
-  const tvd::fem::System sys = tvd::fem::assemble(model);
+  const tvd::fem::System sys = groundedChain(n, k, m);
   ASSERT_EQ(sys.size(), n);
   tvd::fem::ModalRequest by_count;
   by_count.count = n + 5;
