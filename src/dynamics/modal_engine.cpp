@@ -317,8 +317,10 @@ class ModalEngine : public SimulatorEngine {
         flag(0, c);
     // The input changes of every block, found input by input in one streaming pass over the
     // column-major series (each input's samples are contiguous). A block where more than
-    // 1/kDenseFraction of the inputs change, or one changes to or from a non-finite value (it
-    // must not leak into later samples through the sums), takes the dense product instead.
+    // 1/kDenseFraction of the inputs change, or one changes by a non-finite difference (non-finite
+    // values are refused above; two finite ones can still differ by more than a double holds, and
+    // an infinite delta must not leak into later samples through the sums), takes the dense
+    // product instead.
     struct Change {
       DofIndex step;   // sample index in the series
       DofIndex input;  // column of input_map_

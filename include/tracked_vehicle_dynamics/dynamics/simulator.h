@@ -130,8 +130,8 @@ class Simulator {
   /// state: row 0 replaces the current input, then one step per further row. Returns the outputs
   /// Y [n_samples x n_y], row k at t + k h. The simulator ends at the last sample.
   /// Throws InputError for a wrong number of columns or a non-finite entry (naming its row),
-  /// nothing changed; the modal engine reads no column its model does not use (zeros in its
-  /// input map, e.g. u' without ground damping), whatever it holds.
+  /// nothing changed; of a column its model does not use (zeros in its input map, e.g. u'
+  /// without ground damping) the modal engine reads row 0 only, whatever the others hold.
   Matrix simulate(const Matrix& inputs);
   /// Same, from a series stored by its changes (held_input_series.h): equal to
   /// simulate(inputs.dense()) up to rounding, at a cost that grows with the events, not with
