@@ -215,7 +215,8 @@ std::vector<OutputDof> vehicleOutputs(const vehicle::VehicleModel& v,
 }
 
 ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehicle::Variant variant,
-                           const VehicleReductionOptions& options, VehicleReductionReport* report) {
+                           const VehicleReductionOptions& options, VehicleReductionReport* report,
+                           ReductionBasis* basis) {
   if (options.global_modes <= 0)
     throw InputError("reduction: global_modes must be positive");
   if (!(options.band_hz > 0))
@@ -497,6 +498,16 @@ ReducedModel reduceVehicle(const vehicle::VehicleDescription& description, vehic
     rep.warnings.push_back(w.str());
   }
   reduced.warnings = rep.warnings;  // saved with it: a cached model warns again when loaded
+  if (basis != nullptr) {
+    // The last build's reduction again, keeping T: on the projection it used (neither the
+    // eigen-solve nor the projection is repeated), or, with --modes N, the same eigen-solve of
+    // the same count, so the modes and their signs are those of M_R and K_R.
+    CraigBamptonOptions o = request.craig_bampton;
+    o.keep_transformation = true;
+    o.recovery_dofs.clear();
+    basis->transformation = (phi_s ? reducer.reduce(o, *phi_s) : reducer.reduce(o)).transformation;
+    basis->dofs = model.system.dofs;
+  }
   rep.reduce_seconds = secondsSince(reduce_start);
   rep.flexible_modes = static_cast<int>(reduced.modeCount());
   rep.reduced_dofs = reduced.size();

@@ -34,13 +34,18 @@ void writeMetadata(io::MatWriter& mat, const Metadata& metadata) {
 }
 
 void writeDofTable(io::MatWriter& mat, const fem::System& sys) {
-  Matrix node(sys.size(), 1), direction(sys.size(), 1);
+  writeDofTable(mat, sys.dofs);
+}
+
+void writeDofTable(io::MatWriter& mat, const fem::DofMap& dofs) {
+  const DofIndex n = dofs.activeCount();
+  Matrix node(n, 1), direction(n, 1);
   std::vector<std::string> labels;
-  for (DofIndex r = 0; r < sys.size(); ++r) {
-    const fem::DofRef d = sys.dofs.dofOf(r);
+  for (DofIndex r = 0; r < n; ++r) {
+    const fem::DofRef d = dofs.dofOf(r);
     node(r, 0) = static_cast<double>(d.node);
     direction(r, 0) = d.direction;
-    labels.push_back(sys.dofs.label(r));
+    labels.push_back(dofs.label(r));
   }
   mat.writeMatrix("dof_node", node);
   mat.writeMatrix("dof_direction", direction);

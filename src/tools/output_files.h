@@ -55,6 +55,8 @@ void writeMetadata(io::MatWriter& mat, const Metadata& metadata);
 /// Writes the rows of the active DOFs: dof_node, dof_direction (0..5: ux uy uz rx ry rz) as
 /// n x 1 doubles and dof_labels ("node 12 uz") as a cell array.
 void writeDofTable(io::MatWriter& mat, const fem::System& system);
+/// The same for the active DOFs of a DOF map (a system's rows).
+void writeDofTable(io::MatWriter& mat, const fem::DofMap& dofs);
 
 /// Writes DIR/modes.csv (mode, frequency_hz, eigenvalue[, type and the kinetic-energy shares]),
 /// DIR/shapes.csv (one row per active DOF: node, direction, then one column per mode) and

@@ -1,14 +1,17 @@
 // `tvd reduce`: the Craig-Bampton reduced model of a vehicle (paper §3, Table 5), saved as .mat.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <utility>
 
 #include "commands.h"
+#include "output_files.h"
 #include "reduction_options.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/json_writer.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
 #include "tracked_vehicle_dynamics/reduction/global_modes.h"
 #include "tracked_vehicle_dynamics/reduction/reduced_model_file.h"
 #include "tracked_vehicle_dynamics/reduction/vehicle_reduction.h"
@@ -26,17 +29,47 @@ struct ReduceOptions {
   ReductionFlags reduction_flags;
   bool json = false;
   std::string out_file;
+  std::string basis_file;  // --basis: T_CMS and the full model's DOF table
 };
+
+// basis.mat: x = T x_R (paper eq. 8) over the full model's active DOFs, rows named as
+// `tvd modes --matrices` names them (the same assembly), columns as the reduced model's.
+void writeBasis(const std::string& path, const reduction::ReductionBasis& basis,
+                const reduction::ReducedModel& model, const Metadata& metadata) {
+  io::MatWriter mat(path);
+  mat.writeMatrix("T", basis.transformation);
+  writeDofTable(mat, basis.dofs);
+  mat.writeStrings("reduced_dof_labels", model.dof_labels);
+  mat.writeString("description_hash", model.description_hash);
+  mat.writeString("reduction", model.reduction);
+  mat.writeString("version", model.version);
+  writeMetadata(mat, metadata);
+  mat.close();
+}
 
 void run(const ReduceOptions& opt) {
   const reduction::VehicleReductionOptions options = opt.reduction_flags.options("reduce");
   const vehicle::VehicleDescription description = loadVehicle(opt.vehicle_file);
   const vehicle::Variant variant = vehicle::parseVariant(opt.variant);
   reduction::VehicleReductionReport report;
-  reduction::ReducedModel model = reduction::reduceVehicle(description, variant, options, &report);
+  reduction::ReductionBasis basis;
+  reduction::ReducedModel model = reduction::reduceVehicle(
+      description, variant, options, &report, opt.basis_file.empty() ? nullptr : &basis);
   model.creator = "tvd reduce";
+  // Both files or neither: staged, then moved into place together.
+  OutputFileSet written;
   if (!opt.out_file.empty())
-    reduction::saveReducedModel(model, opt.out_file);
+    written.write(opt.out_file,
+                  [&](const std::string& path) { reduction::saveReducedModel(model, path); });
+  if (!opt.basis_file.empty()) {
+    const Metadata metadata = {{"vehicle", description.name},
+                               {"vehicle_file", opt.vehicle_file},
+                               {"variant", vehicle::variantName(variant)}};
+    written.write(opt.basis_file,
+                  [&](const std::string& path) { writeBasis(path, basis, model, metadata); });
+    basis = {};  // 50 MB on the tracked vehicle: not kept through the report
+  }
+  written.commit();
   // On stderr as every command's (the text and JSON outputs carry them too).
   for (const std::string& w : report.warnings)
     std::cerr << "tvd: warning: " << w << "\n";
@@ -120,6 +153,8 @@ void run(const ReduceOptions& opt) {
         .field("description_hash", model.description_hash);
     if (!opt.out_file.empty())
       json.field("out", opt.out_file);
+    if (!opt.basis_file.empty())
+      json.field("basis", opt.basis_file);
     ReducedModelSource source;
     source.model = std::move(model);  // not used after the JSON
     source.file = opt.out_file;
@@ -182,6 +217,9 @@ void run(const ReduceOptions& opt) {
     std::cout << "  warning: " << w << "\n";
   if (!opt.out_file.empty())
     std::cout << "  wrote " << opt.out_file << "\n";
+  if (!opt.basis_file.empty())
+    std::cout << "  wrote " << opt.basis_file << " (T_CMS, " << report.full_dofs << " x "
+              << report.reduced_dofs << ")\n";
 }
 
 }  // namespace
@@ -196,8 +234,18 @@ void registerReduceCommand(CLI::App& app) {
   cmd->add_flag("--json", opt->json, "print a JSON document");
   cmd->add_option("--out", opt->out_file, "write the reduced model (.mat)")
       ->check(outputFile({".mat"}));
+  cmd->add_option("--basis", opt->basis_file,
+                  "write the Craig-Bampton basis T (x = T x_R over the full model's active "
+                  "DOFs, as tvd modes --matrices numbers them) and its DOF table (.mat)")
+      ->check(outputFile({".mat"}));
   cmd->callback([opt]() {
-    refuseOutputOverInput("reduce", "--out", opt->out_file, {{"--vehicle", opt->vehicle_file}});
+    for (const auto& [name, out] :
+         {std::make_pair("--out", opt->out_file), std::make_pair("--basis", opt->basis_file)})
+      refuseOutputOverInput("reduce", name, out, {{"--vehicle", opt->vehicle_file}});
+    if (!opt->basis_file.empty() && !opt->out_file.empty() &&
+        std::filesystem::path(opt->basis_file).lexically_normal() ==
+            std::filesystem::path(opt->out_file).lexically_normal())
+      throw InputError("reduce: --basis and --out name the same file " + opt->out_file);
     run(*opt);
   });
 }

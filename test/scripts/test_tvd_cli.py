@@ -921,6 +921,51 @@ class TvdCliTest(unittest.TestCase):
         self.assertLess(np.abs(accel[:100]).max(), 1e-6)  # flat entry: at rest
         self.assertGreater(d["peak_hull_vertical_accel_m_s2"], 1.0)  # the hill is felt
 
+    def test_reduce_basis_projects_the_exported_full_model(self):
+        """--basis writes T_CMS (paper eq. 8) over the rows `tvd modes --matrices` exports: with
+        them alone, T' M T and T' K T are M_R and K_R (eq. 9), T' K_u, T' f_g and T' f_a the
+        reduced inputs and loads, T is the identity on the master rows, and H's rows are T's rows
+        of the output DOFs."""
+        import scipy.sparse
+        work = self.path("basis")
+        os.makedirs(work)
+        reduced, basis = os.path.join(work, "reduced.mat"), os.path.join(work, "basis.mat")
+        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", reduced,
+                          "--basis", basis)
+        self.assertEqual(d["basis"], basis)
+        self.tvd("modes", "--vehicle", VEHICLE, "--variant", "untracked", "--count", "1", "--out",
+                 work, "--matrices")
+        r, b = scipy.io.loadmat(reduced), scipy.io.loadmat(basis)
+        m = scipy.io.loadmat(os.path.join(work, "matrices.mat"))
+        T = b["T"]
+        self.assertEqual(T.shape, (d["full_dofs"], d["reduced_dofs"]))
+        np.testing.assert_array_equal(b["dof_node"], m["dof_node"])
+        np.testing.assert_array_equal(b["dof_direction"], m["dof_direction"])
+        self.assertEqual([str(np.ravel(x)[0]) for x in np.ravel(b["reduced_dof_labels"])],
+                         [str(np.ravel(x)[0]) for x in np.ravel(r["dof_labels"])])
+        self.assertEqual(str(b["description_hash"][0]), d["description_hash"])
+        M, K = scipy.sparse.csc_matrix(m["M"]), scipy.sparse.csc_matrix(m["K"])
+
+        def close(projected, stored, rtol):
+            self.assertLessEqual(abs(projected - stored).max(), rtol * abs(stored).max())
+
+        close(T.T @ (M @ T), r["M_R"], 1e-12)
+        close(T.T @ (K @ T), r["K_R"], 1e-11)
+        close(T.T @ scipy.sparse.csc_matrix(m["K_u"]).toarray(), r["K_u"], 1e-12)
+        close(T.T @ m["gravity_load"], r["gravity_load"], 1e-12)
+        close(T.T @ m["travel_load"], r["travel_load"], 1e-12)
+        row = {(int(n), int(k)): i for i, (n, k) in
+               enumerate(zip(m["dof_node"].ravel(), m["dof_direction"].ravel()))}
+        masters = [row[(int(n), int(k))] for n, k in r["masters"]]
+        np.testing.assert_array_equal(T[masters, :len(masters)], np.eye(len(masters)))
+        np.testing.assert_array_equal(T[masters, len(masters):], 0.0)
+        names = [str(np.ravel(x)[0]) for x in np.ravel(r["output_names"])]
+        hull_uz = names.index("hull uz")
+        close(T[row[(1, 2)]], r["H"][hull_uz], 1e-15)
+        # One file cannot be both.
+        self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", reduced, "--basis",
+                                 reduced], "--basis and --out name the same file")
+
     def test_reduced_model_file_doc_is_current_and_its_example_runs(self):
         # doc/reduced_model_file.md: its table lists exactly the file's variables, and its SciPy
         # example, run on a fresh file, gives the full model's frequencies and static sag.
