@@ -8,6 +8,7 @@
 
 #include "checks.h"
 #include "tracked_vehicle_dynamics/dynamics/validation.h"
+#include "tracked_vehicle_dynamics/fem/low_mode_refinement.h"
 
 namespace tracked_vehicle_dynamics {
 namespace dynamics {
@@ -26,77 +27,11 @@ constexpr double kRigidBodyTolerance = 1e-12;
 // |phi^T C phi| below this fraction of the largest is rounding (beta K on a rigid-body mode):
 // taken as >= 0; more negative, C is not positive semi-definite.
 constexpr double kDampingRoundoff = 1e-10;
-// Modes below this fraction of lambda_max are refined by inverse subspace iteration when K is
-// positive definite: the dense solver gives them to an absolute n eps lambda_max, a relative
-// error of 1e-8 and more below it (400 coordinates).
-constexpr double kRefineBelow = 1e-6;
-// K_ii / (Cholesky pivot)^2 above this: a near-mechanism (a free body's rigid motion survives
-// the factorisation as a pivot of rounding size), not a structure held to ground; the modes
-// are then left as the dense solver gives them. Nastran's MAXRATIO warns at 1e7.
-constexpr double kMaxPivotRatio = 1e10;
-
 void requireSymmetric(const Matrix& x, const std::string& what) {
   const double norm = x.norm();
   if (norm > 0.0 && (x - x.transpose()).norm() > kSymmetryTolerance * norm)
     throw InputError("ModalSystem: " + what + " is not symmetric (relative asymmetry " +
                      brief((x - x.transpose()).norm() / norm) + ")");
-}
-
-/// The dense solver (Cholesky of M, then a symmetric tridiagonal QR) has an absolute eigenvalue
-/// error of a few n eps lambda_max. A vehicle on stiff ties spans more decades than that
-/// resolves: ground springs of 9e14 N/m under pads of a few hundred grams give lambda_max ~ 1e15
-/// rad^2/s^2, and its 0.7 Hz chain modes (omega^2 = 18) came out within a few rad^2/s^2, below
-/// 1e-12 lambda_max, so they were taken for rigid-body modes and the hull drifted off on flat road
-/// (review 157). When K is positive definite (held to ground), inverse subspace iteration gives
-/// the low modes to their own relative accuracy: with K = L L^T, accurate on such graded matrices
-/// (the stiff ties sit on the diagonal), X' = K^-1 M X and the Rayleigh-Ritz pair
-///   K_p = X'^T (M X) (= X'^T K X' with no product by K, whose cancellation is the error),
-///   M_p = X'^T M X'.
-/// Returns whether the modes below kRefineBelow lambda_max were refined (then none is rigid).
-bool refineLowModes(const Matrix& stiffness, const Matrix& mass, double lambda_max, Vector* lambda,
-                    Matrix* shapes) {
-  const DofIndex n = lambda->size();
-  DofIndex p = 0;
-  while (p < n && (*lambda)(p) <= kRefineBelow * lambda_max)
-    ++p;
-  if (p == 0 || p == n)
-    return false;
-  const Eigen::LLT<Matrix> k_factor(stiffness);
-  if (k_factor.info() != Eigen::Success)
-    return false;
-  const Vector pivots = k_factor.matrixLLT().diagonal().cwiseAbs2();
-  for (DofIndex i = 0; i < n; ++i)
-    if (!(pivots(i) * kMaxPivotRatio >= stiffness(i, i)))
-      return false;
-  // One step: the solver's low subspace is accurate (its error is eps lambda_max over the gap
-  // to the high modes, itself of the order of lambda_max); only the modes within it are not,
-  // and the Rayleigh-Ritz step on K^-1 M X sorts them out.
-  const Matrix y = mass * shapes->leftCols(p);
-  const Matrix x1 = k_factor.solve(y);
-  const Matrix m_x1 = mass * x1;
-  Matrix k_p = x1.transpose() * y;
-  Matrix m_p = x1.transpose() * m_x1;
-  k_p = 0.5 * (k_p + k_p.transpose()).eval();
-  m_p = 0.5 * (m_p + m_p.transpose()).eval();
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix> ritz(
-      k_p, m_p, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
-  if (ritz.info() != Eigen::Success)
-    return false;
-  const Matrix x = x1 * ritz.eigenvectors();  // M-normalised: Z^T M_p Z = I
-  // The solver's high modes were M-orthogonal to its low ones; to the refined ones only to
-  // ~1e-11, which a state projected on the modes and back (eta = Phi^T M q, q = Phi eta) would
-  // lose. Make them M-orthogonal again, h -= X c with c = X^T M h, and unit again,
-  // h^T M h = 1 - |c|^2: the change is of that order, the high modes' Rayleigh quotients move by
-  // its square.
-  Matrix high = shapes->rightCols(n - p);
-  const Matrix c = (m_x1 * ritz.eigenvectors()).transpose() * high;
-  high -= x * c;
-  for (DofIndex j = 0; j < n - p; ++j)
-    high.col(j) /= std::sqrt(1.0 - c.col(j).squaredNorm());
-  lambda->head(p) = ritz.eigenvalues();
-  shapes->leftCols(p) = x;
-  shapes->rightCols(n - p) = high;
-  return true;
 }
 
 }  // namespace
@@ -126,7 +61,7 @@ ModalSystem::ModalSystem(const SecondOrderSystem& system, const Vector& damping_
   shapes_ = solver.eigenvectors();
   const double lambda_max = std::max(lambda.cwiseAbs().maxCoeff(), 0.0);
   // Held to ground (K positive definite): no rigid-body mode, and the low ones refined.
-  const bool held = refineLowModes(stiffness, mass, lambda_max, &lambda, &shapes_);
+  const bool held = fem::refineLowModes(stiffness, mass, &lambda, &shapes_);
   for (DofIndex r = 0; r < n; ++r) {
     if (held && lambda(r) > 0.0)
       continue;

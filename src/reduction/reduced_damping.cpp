@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/fem/low_mode_refinement.h"
 #include "tracked_vehicle_dynamics/fem/modal_solver.h"
 #include "tracked_vehicle_dynamics/io/number_text.h"
 
@@ -47,7 +48,13 @@ Matrix reducedDamping(const Matrix& m_r, const Matrix& k_r, const Matrix& c_disc
                          " modal damping ratios for " + std::to_string(k) + " reduced modes");
       for (DofIndex i = 0; i < k; ++i)
         checkCoefficient(zeta(i), "modal damping ratio");
-      const fem::ModalBasis modes = fem::solveModesDense(k_r, m_r);
+      // C = M Phi diag(2 zeta omega) Phi^T M: diagonal in the modes Phi it is built on, and in
+      // the modes a later solve of (K_R, M_R) finds only as far as both agree. The dense solve
+      // mixes the low modes of a vehicle on stiff ground ties by eps lambda_max over their gap
+      // (low_mode_refinement.h): refined, as ModalSystem refines them, the modal damping stays
+      // uncoupled in ModalSystem's modes to ~1e-10 instead of ~1e-5 on a light vehicle.
+      fem::ModalBasis modes = fem::solveModesDense(k_r, m_r);
+      fem::refineLowModes(k_r, m_r, &modes.eigenvalues, &modes.shapes);
       const Vector omega = modes.eigenvalues.cwiseMax(0.0).cwiseSqrt();
       const Matrix mphi = m_r * modes.shapes;
       Matrix c = mphi * (2.0 * zeta.cwiseProduct(omega)).asDiagonal() * mphi.transpose();
