@@ -41,10 +41,17 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help/--version exit 0; every other command-line error is bad input: status 2, reported
     // on one line like every other error (CLI11's own report adds "Run with --help ...").
-    if (e.get_exit_code() == 0)
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    // CLI11 answers --help (or --version) before it meets a command it does not know, so
+    // "tvd chek --help" printed the program's help and passed; it is refused as "tvd chek" is.
+    const bool unknown_command =
+        app.get_subcommands().empty() && !args.empty() && !args[0].empty() && args[0][0] != '-';
+    if (e.get_exit_code() == 0 && !unknown_command)
       return app.exit(e);
-    std::string message = tvd::tools::describeParseError(
-        app, e, std::vector<std::string>(argv + 1, argv + argc), "tvd");
+    std::string message =
+        e.get_exit_code() == 0
+            ? tvd::tools::describeParseError(app, CLI::RequiredError("SUBCOMMAND"), args, "tvd")
+            : tvd::tools::describeParseError(app, e, args, "tvd");
     for (char& c : message)
       if (c == '\n')
         c = ' ';

@@ -759,9 +759,9 @@ VehicleDescription fromYaml(const io::YamlValue& root) {
 
 // The consistency checks and the model builder's geometric checks run on the loaded values,
 // where the file's lines are gone; their messages start "<file>: <key path>: " like the
-// loader's, so the key's line is looked up and appended as the loader does ("(line N)"). A path
-// that is not a key of the document (a check naming two keys in prose) leaves the message as it
-// is.
+// loader's, so the key's line is looked up and appended as the loader does ("(line N)"); a check
+// of two keys names them "<key> / <key>" and gets both lines ("(lines N, M)"). A path that is
+// not a key of the document leaves the message as it is.
 std::string withKeyLine(const VehicleDescription& d, const std::string& message) {
   const std::string prefix = d.origin + ": ";
   if (message.compare(0, prefix.size(), prefix) != 0 || message.find("(line ") != std::string::npos)
@@ -769,10 +769,24 @@ std::string withKeyLine(const VehicleDescription& d, const std::string& message)
   const std::size_t end = message.find(": ", prefix.size());
   if (end == std::string::npos)
     return message;
-  const auto it = d.key_lines.find(message.substr(prefix.size(), end - prefix.size()));
-  if (it == d.key_lines.end())
-    return message;
-  return message + " (line " + std::to_string(it->second) + ")";
+  const std::string path = message.substr(prefix.size(), end - prefix.size());
+  std::vector<int> lines;
+  for (std::size_t from = 0;;) {
+    const std::size_t to = path.find(" / ", from);
+    const auto it = d.key_lines.find(path.substr(from, to - from));
+    if (it == d.key_lines.end())
+      return message;
+    lines.push_back(it->second);
+    if (to == std::string::npos)
+      break;
+    from = to + 3;
+  }
+  if (lines.size() == 1)
+    return message + " (line " + std::to_string(lines[0]) + ")";
+  std::string text = " (lines ";
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    text += (i ? ", " : "") + std::to_string(lines[i]);
+  return message + text + ")";
 }
 
 VehicleDescription parseVehicleDescription(const std::string& text, const std::string& file) {

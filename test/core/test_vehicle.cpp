@@ -289,6 +289,13 @@ TEST(VehicleDescription, BuilderErrorsGiveTheKeysLine) {
   // Only a message that starts with the description's origin and one of its keys is extended.
   EXPECT_EQ(veh::withKeyLine(d, "edited.yaml: sprocket.centre_z and idler.centre_z: differ"),
             "edited.yaml: sprocket.centre_z and idler.centre_z: differ");
+  // A check of two keys, "<key> / <key>", gets both lines; one unknown key, neither.
+  EXPECT_EQ(veh::withKeyLine(d, "edited.yaml: sprocket.centre_z / idler.centre_z: low"),
+            "edited.yaml: sprocket.centre_z / idler.centre_z: low (lines " + std::to_string(line) +
+                ", " + std::to_string(d.key_lines.at("idler.centre_z")) + ")");
+  EXPECT_GT(d.key_lines.at("idler.centre_z"), line);
+  EXPECT_EQ(veh::withKeyLine(d, "edited.yaml: sprocket.centre_z / idler.moon: low"),
+            "edited.yaml: sprocket.centre_z / idler.moon: low");
   EXPECT_EQ(veh::withKeyLine(d, "other.yaml: sprocket.centre_z: x"),
             "other.yaml: sprocket.centre_z: x");
   EXPECT_EQ(

@@ -3723,9 +3723,15 @@ class TvdCliTest(unittest.TestCase):
     def test_messages_name_what_is_wrong(self):
         """#10: unknown subcommand, a .mat that is not a reduced model, ranges as accepted, one
         line with the tvd: error: prefix for option checks."""
-        r = self.tvd("foo", status=INPUT_ERROR_STATUS)
-        self.assertIn("tvd: error: unknown subcommand 'foo'", r.stderr)
-        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        # With --help or --version after it too (CLI11 answers those first): not the program's
+        # help and status 0 for a misspelt command.
+        for extra in ((), ("--help",), ("--version",)):
+            r = self.tvd("foo", *extra, status=INPUT_ERROR_STATUS)
+            self.assertIn("tvd: error: unknown subcommand 'foo' (one of: modes,", r.stderr)
+            self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+            self.assertEqual(r.stdout, "")
+        self.assertIn("Usage:", self.tvd("reduce", "--help").stdout)
+        self.assertIn("Usage:", self.tvd("--help").stdout)
         r = self.tvd("simulate", "--vehicle", VEHICLE, "--track", "long_hill", "--dt", "0",
                      status=INPUT_ERROR_STATUS)
         self.assertTrue(r.stderr.startswith("tvd: error: "), r.stderr)
