@@ -73,6 +73,24 @@ for a in "$@"; do
     *) args+=("$a") ;;
   esac
 done
+# replay_track.launch records the node's topics by their global names in the namespace its ns:=
+# argument names (rosbag record stores a relative name as given, without its namespace), and
+# passes that argument here as TVD_RECORD_NS when it records. Included in a namespace without
+# ns:= (or with another), the recorder would record none of the node's topics, and say nothing
+# (review 165): refused here, where roslaunch's ROS_NAMESPACE tells where the launch runs.
+if [ -n "${TVD_RECORD_NS+set}" ]; then
+  here=${ROS_NAMESPACE:-/}
+  here=/${here#/}
+  here=${here%/}
+  wanted=/${TVD_RECORD_NS#/}
+  wanted=${wanted%/}
+  if [ "$here" != "$wanted" ]; then
+    echo "play_track_bag.sh: replay_track.launch runs in the namespace ${here:-/} but its ns" \
+      "argument is '${TVD_RECORD_NS}': the recorder would record ${wanted}/odom ..., not" \
+      "${here}/odom ...; include it with ns:=${here:-/} (or record:=false)" >&2
+    exit 2
+  fi
+fi
 track=${args[0]:-long_hill}
 speed=${args[1]:-30}
 dir=${args[2]:-/tmp/tvd_bags}

@@ -506,10 +506,20 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
 
 void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   ++events_.time_jumps_back;
-  // Every reset is said (not throttled): each one loses the vehicle's state and speed.
-  ROS_WARN(
-      "%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0%s",
-      nodeName(), (sample_time_ - now).toSec(), initialSpeedText().c_str());
+  // Every reset is said: each one loses the vehicle's state and speed. Not when two /clock
+  // publishers jump the time back and forth hundreds of times a second: then once a second, and
+  // the diagnostics name the cause.
+  const std::uint32_t clock_publishers = clock_sub_.getNumPublishers();
+  if (clock_publishers > 1)
+    ROS_WARN_THROTTLE(1.0,
+                      "%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium "
+                      "at station 0%s (/clock has %u publishers; %llu jumps back so far)",
+                      nodeName(), (sample_time_ - now).toSec(), initialSpeedText().c_str(),
+                      clock_publishers, static_cast<unsigned long long>(events_.time_jumps_back));
+  else
+    ROS_WARN(
+        "%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium at station 0%s",
+        nodeName(), (sample_time_ - now).toSec(), initialSpeedText().c_str());
   // Held for if the run before had terrain from its start (or was itself held), and moving.
   // A hold needs a catch-up of two steps at least (~catch_up_limit): the held steps are stepped
   // in one tick at the release.

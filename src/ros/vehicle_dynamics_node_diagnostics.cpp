@@ -33,8 +33,20 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   // ROS time that stopped moving (a paused or dead simulator, a bag at its end) is said: the
   // frozen step count alone reads like a healthy loop.
   const double stalled = (ros::SteadyTime::now() - last_time_change_).toSec();
+  // More than one /clock: each jumps the other's time back, and every jump resets the vehicle
+  // (review 165: two replays on one master reset it 2,460 times in 20 s, said only as jumps).
+  const std::uint32_t clock_publishers = use_sim_time_ ? clock_sub_.getNumPublishers() : 0;
+  const std::string two_clocks =
+      "/clock has " + std::to_string(clock_publishers) +
+      " publishers: ROS time jumps between their clocks, resetting the vehicle at each jump "
+      "back (a simulator and a rosbag play --clock, or two replays? one time source per master)";
+  if (clock_publishers > 1 && clock_publishers != clock_publishers_said_)
+    ROS_WARN("%s: %s", nodeName(), two_clocks.c_str());
+  clock_publishers_said_ = clock_publishers > 1 ? clock_publishers : 0;
   if (!clock_started_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for ROS time (/clock)");
+  } else if (clock_publishers > 1) {
+    status.summary(diagnostic_msgs::DiagnosticStatus::WARN, two_clocks);
   } else if (use_sim_time_ && stalled > params_.diagnostic_period) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "/clock has not advanced for " + brief(std::round(stalled * 10.0) / 10.0) +
@@ -74,6 +86,8 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   status.add("resynchronisations (total)", events_.resyncs);
   status.add("skipped time [s]", events_.skipped_steps * period);
   status.add("time jumps back (total)", events_.time_jumps_back);
+  if (use_sim_time_)
+    status.add("/clock publishers", clock_publishers);
   if (!use_sim_time_) {
     status.add("system clock steps (total)", events_.clock_steps);
     status.add("last system clock step", last_clock_step_.empty() ? "none" : last_clock_step_);

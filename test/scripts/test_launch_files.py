@@ -81,7 +81,7 @@ def launch_nodes(launch_path, *args):
             "c = roslaunch.config.load_config_default([(sys.argv[1], sys.argv[2:])], None)\n"
             "for n in c.nodes:\n"
             "    print(repr((n.namespace + n.name, n.required, n.respawn, n.respawn_delay,\n"
-            "                n.remap_args, n.launch_prefix)))\n")
+            "                n.remap_args, n.launch_prefix, n.env_args)))\n")
     result = subprocess.run([ENV_SH, "/usr/bin/python3", "-c", code, launch_path, *args],
                             capture_output=True, text=True, timeout=120)
     if result.returncode != 0:
@@ -243,6 +243,29 @@ class LaunchFilesTest(unittest.TestCase):
                       "/veh1/comfort", "/veh1/imu/sensor_mount"):
             self.assertIn(topic, recorder)
         self.assertNotIn("/odom", recorder)
+        # The player is told where the recorder records (and refuses another namespace, below);
+        # not when nothing is recorded.
+        self.assertEqual(dict(nodes["/veh1/track_player"][5])["TVD_RECORD_NS"], "/veh1")
+        replay = launch_path("replay_track.launch")
+        self.assertEqual(dict(launch_nodes(replay)["/track_player"][5])["TVD_RECORD_NS"], "")
+        self.assertNotIn("TVD_RECORD_NS",
+                         dict(launch_nodes(replay, "record:=false")["/track_player"][5]))
+
+    def test_player_refuses_a_namespace_the_recorder_does_not_record(self):
+        # replay_track.launch included in /veh1 without ns:= would record /odom ..., none of its
+        # node's topics, without a word (review 165): the player stops it before any bag is
+        # made. ROS_NAMESPACE as roslaunch sets it (with or without the trailing slash).
+        bag_dir = os.path.join(self.work, "ns_bags")
+        result = make_track_bag("long_hill", "30", bag_dir,
+                                dict(os.environ, ROS_NAMESPACE="/veh1/", TVD_RECORD_NS=""))
+        self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+        self.assertIn("runs in the namespace /veh1 but its ns argument is ''", result.stderr)
+        self.assertIn("include it with ns:=/veh1", result.stderr)
+        self.assertFalse(os.path.exists(bag_dir))
+        for ns, recorded in (("/veh1", "/veh1/"), ("/", ""), ("/", "/")):
+            result = make_track_bag("long_hill", "30", bag_dir,
+                                    dict(os.environ, ROS_NAMESPACE=ns, TVD_RECORD_NS=recorded))
+            self.assertEqual(result.returncode, 0, (ns, recorded, result.stderr))
 
     def test_parameters_of_an_earlier_launch_are_cleared(self):
         # Without clear_params a parameter the launch does not set (reduced_model, cache_dir,

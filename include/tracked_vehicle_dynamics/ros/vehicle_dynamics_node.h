@@ -372,6 +372,9 @@ class VehicleDynamicsNode {
   bool use_sim_time_ = false;
   ros::Time latest_clock_;
   bool clock_started_ = false;
+  // Publishers of /clock the last report saw more than one of (0 otherwise): two time sources
+  // (a simulator and a rosbag play --clock, two replays) make ROS time jump back and forth.
+  std::uint32_t clock_publishers_said_ = 0;
   ros::Time sample_time_;
   std::int64_t step_ns_ = 0;
   std::int64_t max_catch_up_steps_ = 1;
