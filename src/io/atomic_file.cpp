@@ -10,6 +10,7 @@
 #include <random>
 
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/staged_files.h"
 
 namespace tracked_vehicle_dynamics {
 namespace io {
@@ -40,6 +41,7 @@ std::string createTemporaryBeside(const std::string& path, const std::string& su
     const int fd = ::open(name.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
+      trackStagedFile(name);  // removed if a signal stops the process (staged_files.h)
       return name;
     }
     error = errno;
@@ -67,7 +69,7 @@ AtomicTextFile::~AtomicTextFile() {
   if (committed_)
     return;
   out_.close();
-  std::remove(temporary_.c_str());
+  removeStagedFile(temporary_);
 }
 
 void AtomicTextFile::commit() {
@@ -77,13 +79,13 @@ void AtomicTextFile::commit() {
   out_.close();
   const int error = flush_error ? flush_error : errno;
   if (!out_) {
-    std::remove(temporary_.c_str());
+    removeStagedFile(temporary_);
     committed_ = true;  // nothing left to clean up
     throw InputError("cannot write " + path_ + reason(error) + "; no file written");
   }
-  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+  if (renameStagedFile(temporary_, path_) != 0) {
     const int rename_error = errno;
-    std::remove(temporary_.c_str());
+    removeStagedFile(temporary_);
     committed_ = true;
     throw InputError("cannot move the written file onto " + path_ + reason(rename_error));
   }

@@ -18,6 +18,7 @@
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
 #include "tracked_vehicle_dynamics/io/mat_structure.h"
+#include "tracked_vehicle_dynamics/io/staged_files.h"
 #include "tracked_vehicle_dynamics/io/utf8.h"
 
 namespace tracked_vehicle_dynamics {
@@ -68,7 +69,7 @@ MatWriter::MatWriter(const std::string& path, MatFormat format, bool compress)
   impl_->mat = Mat_CreateVer(impl_->temporary.c_str(), kMat5HeaderText,
                              format == MatFormat::Mat73 ? MAT_FT_MAT73 : MAT_FT_MAT5);
   if (!impl_->mat) {
-    std::remove(impl_->temporary.c_str());
+    removeStagedFile(impl_->temporary);
     throw InputError(path + ": cannot create the file (directory missing or not writable?)");
   }
 }
@@ -76,7 +77,7 @@ MatWriter::MatWriter(const std::string& path, MatFormat format, bool compress)
 MatWriter::~MatWriter() {
   if (impl_->mat) {
     Mat_Close(impl_->mat);
-    std::remove(impl_->temporary.c_str());
+    removeStagedFile(impl_->temporary);
   }
 }
 
@@ -184,11 +185,11 @@ void MatWriter::close() {
   const int status = Mat_Close(impl_->mat);
   impl_->mat = nullptr;
   if (status != 0) {
-    std::remove(impl_->temporary.c_str());
+    removeStagedFile(impl_->temporary);
     throw InputError(path_ + ": error while closing the file (disk full?)");
   }
-  if (std::rename(impl_->temporary.c_str(), path_.c_str()) != 0) {
-    std::remove(impl_->temporary.c_str());
+  if (renameStagedFile(impl_->temporary, path_) != 0) {
+    removeStagedFile(impl_->temporary);
     throw InputError(path_ + ": cannot move the written file into place");
   }
 }

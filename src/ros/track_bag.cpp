@@ -21,6 +21,7 @@
 #include "tracked_vehicle_dynamics/TerrainProfile.h"
 #include "tracked_vehicle_dynamics/error.h"
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
+#include "tracked_vehicle_dynamics/io/staged_files.h"
 #include "tracked_vehicle_dynamics/ros/conversions.h"
 #include "tracked_vehicle_dynamics/terrain/terrain_io.h"
 #include "tracked_vehicle_dynamics/terrain/tracks.h"
@@ -270,15 +271,15 @@ TrackBagSummary writeTrackBag(const std::string& path, const TrackBagOptions& op
   try {
     writeTrackBagFile(temporary, run, options, &summary);
   } catch (const rosbag::BagException& e) {
-    std::remove(temporary.c_str());
+    io::removeStagedFile(temporary);
     throw InputError("cannot write the bag " + path + ": " + e.what());
   } catch (...) {
-    std::remove(temporary.c_str());
+    io::removeStagedFile(temporary);
     throw;
   }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+  if (io::renameStagedFile(temporary, path) != 0) {
     const int error = errno;
-    std::remove(temporary.c_str());
+    io::removeStagedFile(temporary);
     throw InputError("cannot move the written bag onto " + path + ": " + std::strerror(error));
   }
   return summary;

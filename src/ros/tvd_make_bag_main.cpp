@@ -17,12 +17,16 @@
 #include "commands.h"
 #include "tracked_vehicle_dynamics/dynamics/speed_profile_io.h"
 #include "tracked_vehicle_dynamics/error.h"
+#include "tracked_vehicle_dynamics/io/staged_files.h"
 #include "tracked_vehicle_dynamics/ros/track_bag.h"
 
 namespace {
 
 int run(int argc, char** argv) {
   namespace rl = tracked_vehicle_dynamics::ros_layer;
+  // A bag stopped half way (Ctrl-C, or play_track_bag.sh stopped by roslaunch) leaves no staged
+  // "BAG.~XXXXXX" of tens of MB beside it (staged_files.h).
+  tracked_vehicle_dynamics::io::removeStagedFilesOnSignals();
   rl::TrackBagOptions options;
   std::string out;
   double speed_kmh = options.speed * tracked_vehicle_dynamics::kKmhPerMs;

@@ -13,6 +13,7 @@
 #include "tracked_vehicle_dynamics/io/file_type.h"
 #include "tracked_vehicle_dynamics/io/mat_file.h"
 #include "tracked_vehicle_dynamics/io/number_text.h"
+#include "tracked_vehicle_dynamics/io/staged_files.h"
 
 namespace tracked_vehicle_dynamics {
 namespace tools {
@@ -206,7 +207,7 @@ void OutputFileSet::commit() {
     if (std::filesystem::is_directory(path))
       throw InputError(path + ": is a directory; cannot write the file there");
   for (const auto& [staged, path] : staged_)
-    if (std::rename(staged.c_str(), path.c_str()) != 0)
+    if (io::renameStagedFile(staged, path) != 0)
       throw InputError(path + ": cannot move the written file into place: " + std::strerror(errno));
   committed_ = true;
 }
@@ -215,7 +216,7 @@ OutputFileSet::~OutputFileSet() {
   if (committed_)
     return;
   for (const auto& staged : staged_)
-    std::remove(staged.first.c_str());
+    io::removeStagedFile(staged.first);
 }
 
 std::string defaultCacheDir() {

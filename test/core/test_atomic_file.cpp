@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -12,6 +13,8 @@
 
 #include "expect_input_error.h"
 #include "tracked_vehicle_dynamics/io/atomic_file.h"
+#include "tracked_vehicle_dynamics/io/mat_file.h"
+#include "tracked_vehicle_dynamics/io/staged_files.h"
 
 namespace tracked_vehicle_dynamics {
 namespace {
@@ -98,6 +101,79 @@ TEST_F(AtomicTextFileTest, TwoWritersOfOneFileStageApart) {
   EXPECT_EQ(fs::status(shared).permissions(), fs::perms::owner_read | fs::perms::owner_write |
                                                   fs::perms::group_read | fs::perms::others_read);
   EXPECT_TRUE(fs::is_regular_file(one));
+}
+
+// Every staged file is recorded while it is staged and forgotten once committed or dropped, so
+// the signal handler removes exactly the writers' leftovers.
+TEST_F(AtomicTextFileTest, StagedFilesAreRecordedUntilCommittedOrDropped) {
+  const std::size_t before = io::stagedFileCount();
+  {
+    io::AtomicTextFile kept((dir_ / "kept.csv").string());
+    io::AtomicTextFile dropped((dir_ / "dropped.csv").string());
+    io::MatWriter mat((dir_ / "kept.mat").string());
+    EXPECT_EQ(io::stagedFileCount(), before + 3);
+    kept.stream() << "x\n";
+    kept.commit();
+    mat.writeScalar("x", 1.0);
+    mat.close();
+    EXPECT_EQ(io::stagedFileCount(), before + 1);
+  }
+  EXPECT_EQ(io::stagedFileCount(), before);
+  EXPECT_EQ(fileCount(dir_), 2);  // kept.csv and kept.mat
+  // A failed rename (onto a directory) removes the staged file and forgets it too.
+  fs::create_directories(dir_ / "taken.csv");
+  {
+    io::AtomicTextFile blocked((dir_ / "taken.csv").string());
+    EXPECT_THROW(blocked.commit(), InputError);
+  }
+  EXPECT_EQ(io::stagedFileCount(), before);
+  EXPECT_EQ(fileCount(dir_), 3);
+}
+
+// A process stopped by SIGINT, SIGTERM or SIGHUP while it writes (Ctrl-C on a long tvd run, or
+// roslaunch stopping tvd_make_bag) leaves no staged file, keeps the old file, and still ends by
+// the signal (a shell sees 128 + n). Run in a child process, which the signal ends.
+TEST_F(AtomicTextFileTest, ASignalRemovesTheStagedFilesAndEndsTheProcess) {
+  {
+    std::ofstream old(dir_ / "out.csv");
+    old << "old\n";
+  }
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      io::removeStagedFilesOnSignals();
+      io::AtomicTextFile text((dir_ / "out.csv").string());
+      text.stream() << "half written";
+      text.stream().flush();
+      io::MatWriter mat((dir_ / "out.mat").string());
+      mat.writeScalar("x", 1.0);
+      ::raise(signal_number);
+      ::_exit(0);  // not reached: the signal ends the child
+    }
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "signal " << signal_number << ", status " << status;
+    EXPECT_EQ(WTERMSIG(status), signal_number);
+    EXPECT_EQ(fileCount(dir_), 1) << "signal " << signal_number;  // out.csv alone, as it was
+    EXPECT_EQ(readAll(dir_ / "out.csv"), "old\n");
+  }
+  // An ignored signal stays ignored (a background job's SIGINT): the child writes on.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::signal(SIGINT, SIG_IGN);
+    io::removeStagedFilesOnSignals();
+    io::AtomicTextFile text((dir_ / "out.csv").string());
+    text.stream() << "new\n";
+    ::raise(SIGINT);
+    text.commit();
+    ::_exit(0);
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(readAll(dir_ / "out.csv"), "new\n");
 }
 
 TEST_F(AtomicTextFileTest, MissingDirectoryIsNamed) {
