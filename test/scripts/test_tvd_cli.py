@@ -925,43 +925,46 @@ class TvdCliTest(unittest.TestCase):
         """--basis writes T_CMS (paper eq. 8) over the rows `tvd modes --matrices` exports: with
         them alone, T' M T and T' K T are M_R and K_R (eq. 9), T' K_u, T' f_g and T' f_a the
         reduced inputs and loads, T is the identity on the master rows, and H's rows are T's rows
-        of the output DOFs."""
+        of the output DOFs. The same with a count given (--modes: no projection kept, the
+        eigen-solve made again) and with the band rule."""
         import scipy.sparse
         work = self.path("basis")
         os.makedirs(work)
-        reduced, basis = os.path.join(work, "reduced.mat"), os.path.join(work, "basis.mat")
-        d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out", reduced,
-                          "--basis", basis)
-        self.assertEqual(d["basis"], basis)
         self.tvd("modes", "--vehicle", VEHICLE, "--variant", "untracked", "--count", "1", "--out",
                  work, "--matrices")
-        r, b = scipy.io.loadmat(reduced), scipy.io.loadmat(basis)
         m = scipy.io.loadmat(os.path.join(work, "matrices.mat"))
-        T = b["T"]
-        self.assertEqual(T.shape, (d["full_dofs"], d["reduced_dofs"]))
-        np.testing.assert_array_equal(b["dof_node"], m["dof_node"])
-        np.testing.assert_array_equal(b["dof_direction"], m["dof_direction"])
-        self.assertEqual([str(np.ravel(x)[0]) for x in np.ravel(b["reduced_dof_labels"])],
-                         [str(np.ravel(x)[0]) for x in np.ravel(r["dof_labels"])])
-        self.assertEqual(str(b["description_hash"][0]), d["description_hash"])
         M, K = scipy.sparse.csc_matrix(m["M"]), scipy.sparse.csc_matrix(m["K"])
+        row = {(int(n), int(k)): i for i, (n, k) in
+               enumerate(zip(m["dof_node"].ravel(), m["dof_direction"].ravel()))}
 
         def close(projected, stored, rtol):
             self.assertLessEqual(abs(projected - stored).max(), rtol * abs(stored).max())
 
-        close(T.T @ (M @ T), r["M_R"], 1e-12)
-        close(T.T @ (K @ T), r["K_R"], 1e-11)
-        close(T.T @ scipy.sparse.csc_matrix(m["K_u"]).toarray(), r["K_u"], 1e-12)
-        close(T.T @ m["gravity_load"], r["gravity_load"], 1e-12)
-        close(T.T @ m["travel_load"], r["travel_load"], 1e-12)
-        row = {(int(n), int(k)): i for i, (n, k) in
-               enumerate(zip(m["dof_node"].ravel(), m["dof_direction"].ravel()))}
-        masters = [row[(int(n), int(k))] for n, k in r["masters"]]
-        np.testing.assert_array_equal(T[masters, :len(masters)], np.eye(len(masters)))
-        np.testing.assert_array_equal(T[masters, len(masters):], 0.0)
-        names = [str(np.ravel(x)[0]) for x in np.ravel(r["output_names"])]
-        hull_uz = names.index("hull uz")
-        close(T[row[(1, 2)]], r["H"][hull_uz], 1e-15)
+        reduced, basis = os.path.join(work, "reduced.mat"), os.path.join(work, "basis.mat")
+        for extra in ((), ("--modes", "9"), ("--rule", "band")):
+            d = self.tvd_json("reduce", "--vehicle", VEHICLE, "--variant", "untracked", "--out",
+                              reduced, "--basis", basis, *extra)
+            self.assertEqual(d["basis"], basis)
+            r, b = scipy.io.loadmat(reduced), scipy.io.loadmat(basis)
+            T = b["T"]
+            self.assertEqual(T.shape, (d["full_dofs"], d["reduced_dofs"]), extra)
+            if extra[:1] == ("--modes",):
+                self.assertEqual(d["flexible_modes"], 9)
+            np.testing.assert_array_equal(b["dof_node"], m["dof_node"])
+            np.testing.assert_array_equal(b["dof_direction"], m["dof_direction"])
+            self.assertEqual([str(np.ravel(x)[0]) for x in np.ravel(b["reduced_dof_labels"])],
+                             [str(np.ravel(x)[0]) for x in np.ravel(r["dof_labels"])])
+            self.assertEqual(str(b["description_hash"][0]), d["description_hash"])
+            close(T.T @ (M @ T), r["M_R"], 1e-12)
+            close(T.T @ (K @ T), r["K_R"], 1e-11)
+            close(T.T @ scipy.sparse.csc_matrix(m["K_u"]).toarray(), r["K_u"], 1e-12)
+            close(T.T @ m["gravity_load"], r["gravity_load"], 1e-12)
+            close(T.T @ m["travel_load"], r["travel_load"], 1e-12)
+            masters = [row[(int(n), int(k))] for n, k in r["masters"]]
+            np.testing.assert_array_equal(T[masters, :len(masters)], np.eye(len(masters)))
+            np.testing.assert_array_equal(T[masters, len(masters):], 0.0)
+            names = [str(np.ravel(x)[0]) for x in np.ravel(r["output_names"])]
+            close(T[row[(1, 2)]], r["H"][names.index("hull uz")], 1e-15)
         # One file cannot be both.
         self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", reduced, "--basis",
                                  reduced], "--basis and --out name the same file")
