@@ -79,6 +79,14 @@ done
 # ns:= (or with another), the recorder would record none of the node's topics, and say nothing
 # (review 165): refused here, where roslaunch's ROS_NAMESPACE tells where the launch runs.
 if [ -n "${TVD_RECORD_NS+set}" ]; then
+  # The recorder is given ns + "/odom": a relative ns (veh1) makes it veh1/odom, which rosbag
+  # record resolves in its own namespace, /veh1/veh1/odom (review 166).
+  if [ -n "$TVD_RECORD_NS" ] && [ "${TVD_RECORD_NS#/}" = "$TVD_RECORD_NS" ]; then
+    echo "play_track_bag.sh: replay_track.launch's ns argument '${TVD_RECORD_NS}' must be a" \
+      "global name, /${TVD_RECORD_NS}: the recorder would record ${TVD_RECORD_NS}/odom ...," \
+      "which it resolves in its namespace (${ROS_NAMESPACE:-/})" >&2
+    exit 2
+  fi
   here=${ROS_NAMESPACE:-/}
   here=/${here#/}
   here=${here%/}

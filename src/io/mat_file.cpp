@@ -46,8 +46,53 @@ using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
 // MatWriter
 // ---------------------------------------------------------------------------------------------
 
+namespace {
+
+// What a MAT 5 file holds, walked from its elements' tags: the 128-byte header, then data
+// elements of an 8-byte tag (type, byte count) and that many bytes (a miMATRIX padded to 8
+// bytes, a miCOMPRESSED not). Returns why `path` is not `variables` whole elements ending at its
+// last byte, or "" when it is.
+std::string mat5Incompleteness(const std::string& path, std::size_t variables) {
+  constexpr std::uint32_t kMiMatrix = 14;
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr)
+    return "it cannot be read back";
+  std::fseek(file, 0, SEEK_END);
+  const long size = std::ftell(file);
+  long offset = 128;
+  std::size_t elements = 0;
+  bool complete = size >= offset;
+  while (complete && offset < size) {
+    unsigned char tag[8];
+    if (std::fseek(file, offset, SEEK_SET) != 0 || std::fread(tag, 1, 8, file) != 8) {
+      complete = false;
+      break;
+    }
+    // Written by this machine, little-endian (the header says "IM").
+    const auto word = [&](int at) {
+      return static_cast<std::uint32_t>(tag[at]) | static_cast<std::uint32_t>(tag[at + 1]) << 8 |
+             static_cast<std::uint32_t>(tag[at + 2]) << 16 |
+             static_cast<std::uint32_t>(tag[at + 3]) << 24;
+    };
+    std::uint64_t bytes = word(4);
+    if (word(0) == kMiMatrix)
+      bytes = (bytes + 7) / 8 * 8;
+    offset += 8 + static_cast<long>(bytes);
+    ++elements;
+  }
+  std::fclose(file);
+  if (!complete || offset != size)
+    return std::to_string(size) + " bytes, ending inside a variable";
+  if (elements != variables)
+    return std::to_string(elements) + " of the " + std::to_string(variables) + " variables";
+  return "";
+}
+
+}  // namespace
+
 struct MatWriter::Impl {
   mat_t* mat = nullptr;
+  bool mat5 = true;
   std::string temporary;
   matio_compression compression = MAT_COMPRESSION_NONE;
   std::set<std::string> names;
@@ -66,6 +111,7 @@ MatWriter::MatWriter(const std::string& path, MatFormat format, bool compress)
     : impl_(std::make_unique<Impl>()), path_(path) {
   impl_->temporary = createTemporaryBeside(path);  // matio reopens (truncates) the empty file
   impl_->compression = compress ? MAT_COMPRESSION_ZLIB : MAT_COMPRESSION_NONE;
+  impl_->mat5 = format != MatFormat::Mat73;
   impl_->mat = Mat_CreateVer(impl_->temporary.c_str(), kMat5HeaderText,
                              format == MatFormat::Mat73 ? MAT_FT_MAT73 : MAT_FT_MAT5);
   if (!impl_->mat) {
@@ -187,6 +233,17 @@ void MatWriter::close() {
   if (status != 0) {
     removeStagedFile(impl_->temporary);
     throw InputError(path_ + ": error while closing the file (disk full?)");
+  }
+  // matio reports no failed write (fwrite's ENOSPC is dropped and the file closes clean): a full
+  // disk put an empty or truncated file in place, status 0 (review 166). Checked here, on the
+  // file's own layout; a 7.3 file's HDF5 library reports its errors.
+  if (impl_->mat5) {
+    const std::string why = mat5Incompleteness(impl_->temporary, impl_->names.size());
+    if (!why.empty()) {
+      removeStagedFile(impl_->temporary);
+      throw InputError(path_ + ": the file written is incomplete (" + why +
+                       "): disk full or a file size limit? no file written");
+    }
   }
   if (renameStagedFile(impl_->temporary, path_) != 0) {
     removeStagedFile(impl_->temporary);

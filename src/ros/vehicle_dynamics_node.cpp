@@ -507,11 +507,12 @@ void VehicleDynamicsNode::onClock(const rosgraph_msgs::Clock::ConstPtr& msg) {
 void VehicleDynamicsNode::restartAfterJump(const ros::Time& now) {
   ++events_.time_jumps_back;
   // Every reset is said: each one loses the vehicle's state and speed. Not when two /clock
-  // publishers jump the time back and forth hundreds of times a second: then once a second, and
-  // the diagnostics name the cause.
+  // publishers jump the time back and forth hundreds of times a second: then once a second of
+  // wall time (rosconsole's throttle reads ROS time, which each jump re-opens), and the
+  // diagnostics name the cause.
   const std::uint32_t clock_publishers = clock_sub_.getNumPublishers();
   if (clock_publishers > 1)
-    ROS_WARN_THROTTLE(1.0,
+    TVD_WARN_THROTTLE(1.0,
                       "%s: ROS time jumped back by %.3f s: resetting the vehicle to equilibrium "
                       "at station 0%s (/clock has %u publishers; %llu jumps back so far)",
                       nodeName(), (sample_time_ - now).toSec(), initialSpeedText().c_str(),

@@ -45,14 +45,14 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   clock_publishers_said_ = clock_publishers > 1 ? clock_publishers : 0;
   if (!clock_started_) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, "waiting for ROS time (/clock)");
+  } else if (diverged > 0) {  // the one ERROR: before any WARN
+    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite outputs: reset");
   } else if (clock_publishers > 1) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN, two_clocks);
   } else if (use_sim_time_ && stalled > params_.diagnostic_period) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "/clock has not advanced for " + brief(std::round(stalled * 10.0) / 10.0) +
                        " s of wall time: the simulation is paused or stopped");
-  } else if (diverged > 0) {
-    status.summary(diagnostic_msgs::DiagnosticStatus::ERROR, "non-finite outputs: reset");
   } else if (resyncs > 0 && step_window_.mean() > period) {
     status.summary(diagnostic_msgs::DiagnosticStatus::WARN,
                    "cannot keep up: a step takes longer than the period (lower ~rate, or use "

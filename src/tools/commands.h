@@ -177,6 +177,20 @@ inline void refuseOutputOverInput(const std::string& command, const std::string&
   }
 }
 
+/// Whether two output paths name one file however spelt ("r.mat" and "/abs/dir/r.mat", or
+/// through a link to the directory): the same once made absolute and normal with the links of
+/// their existing parts resolved (std::filesystem::weakly_canonical), or, when both exist, one
+/// file (std::filesystem::equivalent: hard links too). Two outputs staged under one name would
+/// both be renamed onto it, the second replacing the first.
+inline bool sameOutputFile(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code ea, eb, ee;
+  const fs::path ca = fs::weakly_canonical(a, ea), cb = fs::weakly_canonical(b, eb);
+  if (!ea && !eb && ca == cb)
+    return true;
+  return fs::equivalent(a, b, ee) && !ee;
+}
+
 /// An output directory, checked before any work: an existing writable directory, or one that can
 /// be created (its nearest existing ancestor is a writable directory).
 inline CLI::Validator outputDirectory() {

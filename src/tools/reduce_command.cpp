@@ -1,7 +1,6 @@
 // `tvd reduce`: the Craig-Bampton reduced model of a vehicle (paper §3, Table 5), saved as .mat.
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <utility>
@@ -243,8 +242,7 @@ void registerReduceCommand(CLI::App& app) {
          {std::make_pair("--out", opt->out_file), std::make_pair("--basis", opt->basis_file)})
       refuseOutputOverInput("reduce", name, out, {{"--vehicle", opt->vehicle_file}});
     if (!opt->basis_file.empty() && !opt->out_file.empty() &&
-        std::filesystem::path(opt->basis_file).lexically_normal() ==
-            std::filesystem::path(opt->out_file).lexically_normal())
+        sameOutputFile(opt->basis_file, opt->out_file))
       throw InputError("reduce: --basis and --out name the same file " + opt->out_file);
     run(*opt);
   });

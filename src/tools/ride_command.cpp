@@ -437,8 +437,7 @@ void registerRideCommand(CLI::App& app) {
                              {"--track", opt->track},
                              {"--reduced", opt->reduced.reducedFile()}});
     if (!opt->psd_out.empty() && !opt->out_file.empty() &&
-        std::filesystem::path(opt->psd_out).lexically_normal() ==
-            std::filesystem::path(opt->out_file).lexically_normal())
+        sameOutputFile(opt->psd_out, opt->out_file))
       throw InputError("ride: --psd-out and --out name the same file " + opt->out_file);
     opt->variant_given = variant->count() > 0;
     opt->points_given = points->count() > 0;

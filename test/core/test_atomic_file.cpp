@@ -103,6 +103,47 @@ TEST_F(AtomicTextFileTest, TwoWritersOfOneFileStageApart) {
   EXPECT_TRUE(fs::is_regular_file(one));
 }
 
+// matio drops a failed write (its fwrite's EFBIG or ENOSPC) and closes clean: a file size limit or
+// a full disk put a truncated .mat in place with no error (review 166). close() checks the file's
+// layout and throws, naming the file; the old file stays, no staged file is left.
+TEST_F(AtomicTextFileTest, AMatFileCutShortByTheDiskIsRefusedAtClose) {
+  const fs::path path = dir_ / "big.mat";
+  std::ofstream(path) << "old\n";
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  std::string message;
+  for (const rlim_t limit : {rlim_t{100}, rlim_t{4096}, rlim_t{20000}}) {
+    rlimit limited = saved;
+    limited.rlim_cur = limit;
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limited), 0);
+    message.clear();
+    try {
+      io::MatWriter mat(path.string());
+      mat.writeScalar("first", 1.0);
+      mat.writeMatrix("big", Matrix::Random(100, 100));  // 80 kB that do not compress
+      mat.writeScalar("last", 2.0);
+      mat.close();
+    } catch (const InputError& e) {
+      message = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &saved);
+    EXPECT_NE(message.find(path.string() + ": "), std::string::npos) << limit << ": " << message;
+    EXPECT_EQ(readAll(path), "old\n") << limit;
+    EXPECT_EQ(fileCount(dir_), 1) << limit;
+  }
+  std::signal(SIGXFSZ, previous_handler);
+  // Within the limit it is written whole, compressed too.
+  for (const bool compress : {false, true}) {
+    io::MatWriter mat(path.string(), io::MatFormat::Mat5, compress);
+    mat.writeScalar("first", 1.0);
+    mat.writeMatrix("big", Matrix::Constant(100, 100, 0.5));
+    mat.writeString("text", "abc");
+    mat.close();
+    EXPECT_EQ(io::MatReader(path.string()).readMatrix("big")(99, 99), 0.5);
+  }
+}
+
 // Every staged file is recorded while it is staged and forgotten once committed or dropped, so
 // the signal handler removes exactly the writers' leftovers.
 TEST_F(AtomicTextFileTest, StagedFilesAreRecordedUntilCommittedOrDropped) {

@@ -262,7 +262,13 @@ class LaunchFilesTest(unittest.TestCase):
         self.assertIn("runs in the namespace /veh1 but its ns argument is ''", result.stderr)
         self.assertIn("include it with ns:=/veh1", result.stderr)
         self.assertFalse(os.path.exists(bag_dir))
-        for ns, recorded in (("/veh1", "/veh1/"), ("/", ""), ("/", "/")):
+        # A relative ns: the recorder would resolve veh1/odom in /veh1, as /veh1/veh1/odom.
+        result = make_track_bag("long_hill", "30", bag_dir,
+                                dict(os.environ, ROS_NAMESPACE="/veh1", TVD_RECORD_NS="veh1"))
+        self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
+        self.assertIn("ns argument 'veh1' must be a global name, /veh1", result.stderr)
+        self.assertFalse(os.path.exists(bag_dir))
+        for ns, recorded in (("/veh1", "/veh1/"), ("/", ""), ("/", "/"), ("/a/b", "/a/b")):
             result = make_track_bag("long_hill", "30", bag_dir,
                                     dict(os.environ, ROS_NAMESPACE=ns, TVD_RECORD_NS=recorded))
             self.assertEqual(result.returncode, 0, (ns, recorded, result.stderr))

@@ -966,8 +966,20 @@ class TvdCliTest(unittest.TestCase):
             names = [str(np.ravel(x)[0]) for x in np.ravel(r["output_names"])]
             close(T[row[(1, 2)]], r["H"][names.index("hull uz")], 1e-15)
         # One file cannot be both.
-        self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", reduced, "--basis",
-                                 reduced], "--basis and --out name the same file")
+        # However spelt: through a link to the directory, or relative to it (review 166: both
+        # were written and the basis replaced the model, status 0).
+        link = self.path("basis_link")
+        os.symlink(work, link)
+        for other in (reduced, os.path.join(link, "reduced.mat"),
+                      os.path.join(work, ".", "sub", "..", "reduced.mat")):
+            os.makedirs(os.path.join(work, "sub"), exist_ok=True)
+            self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", reduced, "--basis",
+                                     other], "--basis and --out name the same file")
+        fresh = os.path.join(work, "fresh.mat")  # a file that does not exist yet too
+        self.assert_input_error(["reduce", "--vehicle", VEHICLE, "--out", fresh, "--basis",
+                                 os.path.join(link, "fresh.mat")],
+                                "--basis and --out name the same file")
+        self.assertFalse(os.path.exists(fresh))
 
     def test_reduced_model_file_doc_is_current_and_its_example_runs(self):
         # doc/reduced_model_file.md: its table lists exactly the file's variables, and its SciPy
