@@ -82,9 +82,13 @@ if [ -n "${TVD_RECORD_NS+set}" ]; then
   # The recorder is given ns + "/odom": a relative ns (veh1) makes it veh1/odom, which rosbag
   # record resolves in its own namespace, /veh1/veh1/odom (review 166).
   if [ -n "$TVD_RECORD_NS" ] && [ "${TVD_RECORD_NS#/}" = "$TVD_RECORD_NS" ]; then
+    running=${ROS_NAMESPACE:-/}
+    running=/${running#/}
+    running=${running%/}
+    running=${running:-/}
     echo "play_track_bag.sh: replay_track.launch's ns argument '${TVD_RECORD_NS}' must be a" \
-      "global name, /${TVD_RECORD_NS}: the recorder would record ${TVD_RECORD_NS}/odom ...," \
-      "which it resolves in its namespace (${ROS_NAMESPACE:-/})" >&2
+      "global name: the recorder would record ${TVD_RECORD_NS%/}/odom ..., which it resolves" \
+      "in its namespace; this launch runs in ${running}: give ns:=${running}" >&2
     exit 2
   fi
   here=${ROS_NAMESPACE:-/}

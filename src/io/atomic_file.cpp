@@ -38,10 +38,13 @@ std::string createTemporaryBeside(const std::string& path, const std::string& su
     for (int i = 0; i < 6; ++i)
       name += kAlphabet[pick(entropy)];
     name += suffix;
+    // Created and recorded with the stopping signals held: one delivered between the two would
+    // find a file its handler does not know (staged_files.h).
+    const SignalsHeld held;
     const int fd = ::open(name.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0666);
     if (fd >= 0) {
       ::close(fd);
-      trackStagedFile(name);  // removed if a signal stops the process (staged_files.h)
+      trackStagedFile(name);  // removed if a signal stops the process
       return name;
     }
     error = errno;
@@ -60,9 +63,12 @@ AtomicTextFile::AtomicTextFile(const std::string& path)
   out_.imbue(std::locale::classic());
   errno = 0;
   out_.open(temporary_, std::ios::out | std::ios::trunc);
-  if (!out_)
-    throw InputError("cannot write " + path_ + reason(errno) +
+  if (!out_) {
+    const int error = errno;
+    removeStagedFile(temporary_);  // no destructor runs for a constructor that throws
+    throw InputError("cannot write " + path_ + reason(error) +
                      " (directory missing or not writable?)");
+  }
 }
 
 AtomicTextFile::~AtomicTextFile() {

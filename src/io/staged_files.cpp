@@ -1,10 +1,12 @@
 #include "tracked_vehicle_dynamics/io/staged_files.h"
 
+#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 
@@ -14,8 +16,10 @@ namespace io {
 namespace {
 
 // Fixed slots, no allocation: the handler may only read them and call unlink (async-signal-safe).
-// A slot is free (0), being written or cleared (1), or holds a staged path (2); the handler
-// reads a path only in state 2, which is set after the path is complete.
+// A slot is free (0), being written or cleared (1), holds a staged path (2), or holds one that
+// untrackStagedFile() is comparing (3: still staged, its path unchanged, so the handler removes
+// it; review 167: a slot hidden while another writer's was looked up kept its file). The
+// handler reads a path only in states 2 and 3, set after the path is complete.
 constexpr int kSlots = 64;
 constexpr std::size_t kMaxPath = 4096;
 struct Slot {
@@ -24,13 +28,15 @@ struct Slot {
 };
 Slot slots[kSlots];
 
-enum : int { kFree = 0, kBusy = 1, kStaged = 2 };
+enum : int { kFree = 0, kBusy = 1, kStaged = 2, kComparing = 3 };
 
 extern "C" void removeAndDie(int signal_number) {
   const int saved = errno;
-  for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == kStaged)
+  for (Slot& slot : slots) {
+    const int state = slot.state.load(std::memory_order_acquire);
+    if (state == kStaged || state == kComparing)
       ::unlink(slot.path);
+  }
   errno = saved;
   // The default action: the process ends by the signal, as it would have without the handler.
   struct sigaction action = {};
@@ -41,6 +47,18 @@ extern "C" void removeAndDie(int signal_number) {
 }
 
 }  // namespace
+
+SignalsHeld::SignalsHeld() {
+  sigset_t stopping;
+  sigemptyset(&stopping);
+  for (const int signal_number : {SIGINT, SIGTERM, SIGHUP})
+    sigaddset(&stopping, signal_number);
+  ::pthread_sigmask(SIG_BLOCK, &stopping, &saved_);
+}
+
+SignalsHeld::~SignalsHeld() {
+  ::pthread_sigmask(SIG_SETMASK, &saved_, nullptr);
+}
 
 void trackStagedFile(const std::string& path) {
   if (path.size() >= kMaxPath)
@@ -58,8 +76,9 @@ void trackStagedFile(const std::string& path) {
 void untrackStagedFile(const std::string& path) {
   for (Slot& slot : slots) {
     int expected = kStaged;
-    // Claimed before it is compared: another thread's untrack of the same slot cannot race it.
-    if (!slot.state.compare_exchange_strong(expected, kBusy, std::memory_order_acquire))
+    // Claimed before it is compared (another thread's untrack of the same slot cannot race it),
+    // and still removed by the handler meanwhile.
+    if (!slot.state.compare_exchange_strong(expected, kComparing, std::memory_order_acquire))
       continue;
     if (path == slot.path) {
       slot.state.store(kFree, std::memory_order_release);
@@ -98,6 +117,10 @@ void removeStagedFilesOnSignals() {
   // Not the others while one runs: each would unlink and re-raise on its own.
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP})
     sigaddset(&action.sa_mask, signal_number);
+  // A file size limit (ulimit -f) would end the process by SIGXFSZ at the write that crosses it,
+  // leaving its staged files (review 167); ignored, that write fails with EFBIG, which the
+  // writers report, naming the file, and clean up after (atomic_file.h, mat_file.h).
+  std::signal(SIGXFSZ, SIG_IGN);
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
     // An ignored signal stays ignored (a job a shell started in the background ignores SIGINT,
     // nohup SIGHUP): the handler would make it end the process.

@@ -199,6 +199,32 @@ TEST_F(AtomicTextFileTest, ASignalRemovesTheStagedFilesAndEndsTheProcess) {
     EXPECT_EQ(fileCount(dir_), 1) << "signal " << signal_number;  // out.csv alone, as it was
     EXPECT_EQ(readAll(dir_ / "out.csv"), "old\n");
   }
+  // A file size limit (ulimit -f) ends a process by SIGXFSZ at the write that crosses it, its
+  // staged files left (review 167): with the handlers installed the write fails instead, and the
+  // writer reports it and cleans up. The child exits 3 when close() threw.
+  const pid_t limited = ::fork();
+  ASSERT_GE(limited, 0);
+  if (limited == 0) {
+    io::removeStagedFilesOnSignals();
+    rlimit small{};
+    ::getrlimit(RLIMIT_FSIZE, &small);
+    small.rlim_cur = 4096;
+    ::setrlimit(RLIMIT_FSIZE, &small);
+    try {
+      io::MatWriter mat((dir_ / "out.mat").string());
+      mat.writeMatrix("big", Matrix::Random(100, 100));
+      mat.close();
+    } catch (const InputError&) {
+      ::_exit(3);
+    }
+    ::_exit(0);
+  }
+  int limited_status = 0;
+  ASSERT_EQ(::waitpid(limited, &limited_status, 0), limited);
+  ASSERT_TRUE(WIFEXITED(limited_status)) << "ended by signal " << WTERMSIG(limited_status);
+  EXPECT_EQ(WEXITSTATUS(limited_status), 3);
+  EXPECT_EQ(fileCount(dir_), 1);  // out.csv alone
+
   // An ignored signal stays ignored (a background job's SIGINT): the child writes on.
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);

@@ -266,7 +266,8 @@ class LaunchFilesTest(unittest.TestCase):
         result = make_track_bag("long_hill", "30", bag_dir,
                                 dict(os.environ, ROS_NAMESPACE="/veh1", TVD_RECORD_NS="veh1"))
         self.assertEqual(result.returncode, 2, result.stdout + result.stderr)
-        self.assertIn("ns argument 'veh1' must be a global name, /veh1", result.stderr)
+        self.assertIn("ns argument 'veh1' must be a global name", result.stderr)
+        self.assertIn("this launch runs in /veh1: give ns:=/veh1", result.stderr)
         self.assertFalse(os.path.exists(bag_dir))
         for ns, recorded in (("/veh1", "/veh1/"), ("/", ""), ("/", "/"), ("/a/b", "/a/b")):
             result = make_track_bag("long_hill", "30", bag_dir,

@@ -49,7 +49,10 @@ class MatWriter {
   void writeString(const std::string& name, const std::string& value);
   /// An n x 1 cell array of 1 x k char arrays.
   void writeStrings(const std::string& name, const std::vector<std::string>& values);
-  /// Closes the file and renames it onto `path`. Throws InputError when either step fails.
+  /// Closes the file, checks that a MAT 5 file holds every variable written, whole (matio drops
+  /// a failed write: a full disk or a file size limit left it cut short), and renames it onto
+  /// `path`. Throws InputError naming `path` when a step fails ("the file written is incomplete"
+  /// for a cut); nothing is put in place then.
   void close();
 
   const std::string& path() const { return path_; }

@@ -7,6 +7,8 @@
 // removeStagedFilesOnSignals() removes them before it dies of the signal.
 #pragma once
 
+#include <signal.h>
+
 #include <cstddef>
 #include <string>
 
@@ -26,9 +28,26 @@ int renameStagedFile(const std::string& path, const std::string& to);
 /// The number of files recorded now (tests).
 std::size_t stagedFileCount();
 
+/// Holds SIGINT, SIGTERM and SIGHUP back in this thread while it lives (they are delivered when
+/// it ends): around the creation and recording of a staged file, so a signal between the two
+/// cannot leave a file the handler does not know (createTemporaryBeside).
+class SignalsHeld {
+ public:
+  SignalsHeld();
+  ~SignalsHeld();
+  SignalsHeld(const SignalsHeld&) = delete;
+  SignalsHeld& operator=(const SignalsHeld&) = delete;
+
+ private:
+  sigset_t saved_;
+};
+
 /// Installs handlers of SIGINT, SIGTERM and SIGHUP that remove every staged file and then end
-/// the process by the signal as its default action does (a shell sees status 128 + n). For a
-/// program's main(): a handler another library installed for these signals is replaced.
+/// the process by the signal as its default action does (a shell sees status 128 + n), and
+/// ignores SIGXFSZ, so a write beyond a file size limit (ulimit -f) fails with EFBIG, which the
+/// writers report naming the file, instead of ending the process with its staged files left.
+/// For a program's main(): a handler another library installed for these signals is replaced;
+/// an ignored signal stays ignored.
 void removeStagedFilesOnSignals();
 
 }  // namespace io
