@@ -105,8 +105,10 @@ int renameStagedFile(const std::string& path, const std::string& to) {
 
 std::size_t stagedFileCount() {
   std::size_t count = 0;
-  for (const Slot& slot : slots)
-    count += slot.state.load(std::memory_order_acquire) == kStaged;
+  for (const Slot& slot : slots) {
+    const int state = slot.state.load(std::memory_order_acquire);
+    count += state == kStaged || state == kComparing;
+  }
   return count;
 }
 

@@ -22,7 +22,8 @@ int run(int argc, char** argv) {
   // Large matrices reuse the pages of freed ones instead of faulting in fresh mappings
   // (heap_reuse.h): a tracked reduction in 0.73 s instead of 2.8 s on a virtual machine.
   const tvd::HeapReuse heap_reuse;
-  // Ctrl-C (or a kill) during a write leaves no staged file beside the output (staged_files.h).
+  // Ctrl-C, SIGTERM or SIGHUP during a write leaves no staged file beside the output, and a file
+  // size limit fails the write instead of killing tvd (staged_files.h).
   tvd::io::removeStagedFilesOnSignals();
   CLI::App app{"tvd: tracked vehicle vertical dynamics from a reduced finite-element model"};
   app.set_version_flag("--version", std::string(tvd::reduction::softwareVersion()));
