@@ -46,50 +46,6 @@ using VarPtr = std::unique_ptr<matvar_t, VarDeleter>;
 // MatWriter
 // ---------------------------------------------------------------------------------------------
 
-namespace {
-
-// What a MAT 5 file holds, walked from its elements' tags: the 128-byte header, then data
-// elements of an 8-byte tag (type, byte count) and that many bytes (a miMATRIX padded to 8
-// bytes, a miCOMPRESSED not). Returns why `path` is not `variables` whole elements ending at its
-// last byte, or "" when it is.
-std::string mat5Incompleteness(const std::string& path, std::size_t variables) {
-  constexpr std::uint32_t kMiMatrix = 14;
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr)
-    return "it cannot be read back";
-  std::fseek(file, 0, SEEK_END);
-  const long size = std::ftell(file);
-  long offset = 128;
-  std::size_t elements = 0;
-  bool complete = size >= offset;
-  while (complete && offset < size) {
-    unsigned char tag[8];
-    if (std::fseek(file, offset, SEEK_SET) != 0 || std::fread(tag, 1, 8, file) != 8) {
-      complete = false;
-      break;
-    }
-    // Written by this machine, little-endian (the header says "IM").
-    const auto word = [&](int at) {
-      return static_cast<std::uint32_t>(tag[at]) | static_cast<std::uint32_t>(tag[at + 1]) << 8 |
-             static_cast<std::uint32_t>(tag[at + 2]) << 16 |
-             static_cast<std::uint32_t>(tag[at + 3]) << 24;
-    };
-    std::uint64_t bytes = word(4);
-    if (word(0) == kMiMatrix)
-      bytes = (bytes + 7) / 8 * 8;
-    offset += 8 + static_cast<long>(bytes);
-    ++elements;
-  }
-  std::fclose(file);
-  if (!complete || offset != size)
-    return std::to_string(size) + " bytes, ending inside a variable";
-  if (elements != variables)
-    return std::to_string(elements) + " of the " + std::to_string(variables) + " variables";
-  return "";
-}
-
-}  // namespace
-
 struct MatWriter::Impl {
   mat_t* mat = nullptr;
   bool mat5 = true;
@@ -238,7 +194,18 @@ void MatWriter::close() {
   // disk put an empty or truncated file in place, status 0 (review 166). Checked here, on the
   // file's own layout; a 7.3 file's HDF5 library reports its errors.
   if (impl_->mat5) {
-    const std::string why = mat5Incompleteness(impl_->temporary, impl_->names.size());
+    // The top-level elements must end at the file's last byte and be as many as the variables.
+    std::string why;
+    try {
+      const std::size_t written = countMat5Variables(impl_->temporary);
+      if (written != impl_->names.size())
+        why = std::to_string(written) + " of the " + std::to_string(impl_->names.size()) +
+              " variables";
+    } catch (const InputError&) {
+      struct stat info = {};
+      const long long size = ::stat(impl_->temporary.c_str(), &info) == 0 ? info.st_size : 0;
+      why = std::to_string(size) + " bytes, ending inside a variable";
+    }
     if (!why.empty()) {
       removeStagedFile(impl_->temporary);
       throw InputError(path_ + ": the file written is incomplete (" + why +

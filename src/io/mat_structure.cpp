@@ -436,11 +436,16 @@ bool isMatIdentifier(const std::string& name) {
   });
 }
 
-MatFormat checkMatStructure(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in)
-    throw InputError(path + ": cannot be opened for reading");
-  const auto size = static_cast<std::uint64_t>(in.tellg());
+namespace {
+
+// The header of a MAT file: its format and, for MAT 5, whether its numbers are big-endian.
+// Throws InputError naming a file that is neither MAT 5 nor 7.3.
+struct MatHeader {
+  MatFormat format = MatFormat::Mat5;
+  bool big = false;
+};
+
+MatHeader readHeader(std::ifstream& in, std::uint64_t size, const std::string& path) {
   unsigned char header[kMat5HeaderBytes] = {};
   in.seekg(0);
   in.read(reinterpret_cast<char*>(header),
@@ -460,10 +465,19 @@ MatFormat checkMatStructure(const std::string& path) {
                      "file, -v4, or no MAT file at all): save with -v7 or -v6 (MATLAB, Octave)");
   const unsigned version = little ? header[124] | header[125] << 8 : header[125] | header[124] << 8;
   if (version == 0x0200)
-    return MatFormat::Mat73;
+    return {MatFormat::Mat73, big};
   if (version != 0x0100)
     throw InputError(path + ": unsupported MAT file version " + hex4(version) +
                      " (MAT 5 files have 0x0100, 7.3 ones 0x0200)");
+  return {MatFormat::Mat5, big};
+}
+
+// Each top-level data element of a MAT 5 file, in order: visit(type, offset of its tag, byte
+// count). Throws InputError for an element the file's end cuts (or bytes appended after the
+// last) and for one that is not a matrix.
+template <typename Visit>
+void forEachElement(std::ifstream& in, std::uint64_t size, bool big, const std::string& path,
+                    Visit visit) {
   std::uint64_t offset = kMat5HeaderBytes;
   while (offset < size) {
     unsigned char tag[8];
@@ -489,17 +503,52 @@ MatFormat checkMatStructure(const std::string& path) {
                        "data element at byte " +
                        std::to_string(offset) + " needs " + std::to_string(bytes) +
                        " bytes but the file ends at byte " + std::to_string(size));
-    if (type == kMiMatrix) {
-      FileBytes file(in);
-      ArrayHeaderCheck(file, big, path)
-          .check(offset + 8, offset + 8 + bytes, 0,
-                 "the variable at byte " + std::to_string(offset));
-    } else {
-      checkCompressed(in, big, path, offset, bytes);
-    }
+    visit(type, offset, bytes);
     offset = std::min(end, size);
   }
+}
+
+std::ifstream openForStructure(const std::string& path, std::uint64_t* size) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in)
+    throw InputError(path + ": cannot be opened for reading");
+  *size = static_cast<std::uint64_t>(in.tellg());
+  return in;
+}
+
+}  // namespace
+
+MatFormat checkMatStructure(const std::string& path) {
+  std::uint64_t size = 0;
+  std::ifstream in = openForStructure(path, &size);
+  const MatHeader header = readHeader(in, size, path);
+  if (header.format == MatFormat::Mat73)
+    return MatFormat::Mat73;
+  const bool big = header.big;
+  forEachElement(in, size, big, path,
+                 [&](std::uint32_t type, std::uint64_t offset, std::uint64_t bytes) {
+                   if (type == kMiMatrix) {
+                     FileBytes file(in);
+                     ArrayHeaderCheck(file, big, path)
+                         .check(offset + 8, offset + 8 + bytes, 0,
+                                "the variable at byte " + std::to_string(offset));
+                   } else {
+                     checkCompressed(in, big, path, offset, bytes);
+                   }
+                 });
   return MatFormat::Mat5;
+}
+
+std::size_t countMat5Variables(const std::string& path) {
+  std::uint64_t size = 0;
+  std::ifstream in = openForStructure(path, &size);
+  const MatHeader header = readHeader(in, size, path);
+  if (header.format != MatFormat::Mat5)
+    throw InputError(path + ": a MAT 7.3 file, not a MAT 5 one");
+  std::size_t count = 0;
+  forEachElement(in, size, header.big, path,
+                 [&](std::uint32_t, std::uint64_t, std::uint64_t) { ++count; });
+  return count;
 }
 
 }  // namespace io

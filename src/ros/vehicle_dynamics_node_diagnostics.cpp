@@ -37,9 +37,12 @@ void VehicleDynamicsNode::diagnoseLoop(diagnostic_updater::DiagnosticStatusWrapp
   // (review 165: two replays on one master reset it 2,460 times in 20 s, said only as jumps).
   const std::uint32_t clock_publishers = use_sim_time_ ? clock_sub_.getNumPublishers() : 0;
   const std::string two_clocks =
-      "/clock has " + std::to_string(clock_publishers) +
-      " publishers: ROS time jumps between their clocks, resetting the vehicle at each jump "
-      "back (a simulator and a rosbag play --clock, or two replays? one time source per master)";
+      clock_publishers > 1
+          ? "/clock has " + std::to_string(clock_publishers) +
+                " publishers: ROS time jumps between their clocks, resetting the vehicle at each "
+                "jump back (a simulator and a rosbag play --clock, or two replays? one time "
+                "source per master)"
+          : std::string();
   if (clock_publishers > 1 && clock_publishers != clock_publishers_said_)
     ROS_WARN("%s: %s", nodeName(), two_clocks.c_str());
   clock_publishers_said_ = clock_publishers > 1 ? clock_publishers : 0;

@@ -3,6 +3,7 @@
 // truncated or damaged file would make it read past the end or allocate gigabytes.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include "tracked_vehicle_dynamics/io/mat_file.h"
@@ -25,6 +26,11 @@ bool isMatIdentifier(const std::string& name);
 /// checks; other formats MATLAB and Octave write are named. Returns the file's format; throws
 /// InputError naming the file and the variable (or the byte where its element starts).
 MatFormat checkMatStructure(const std::string& path);
+
+/// The variables of a MAT 5 file, counted from its top-level elements' tags alone (nothing
+/// inflated): what MatWriter::close() compares with the variables it wrote. Throws InputError as
+/// checkMatStructure() does for a file that is not MAT 5, or whose end cuts an element.
+std::size_t countMat5Variables(const std::string& path);
 
 }  // namespace io
 }  // namespace tracked_vehicle_dynamics
